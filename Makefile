@@ -1,0 +1,97 @@
+# adhere: build, test, install. `make run` opens the TUI, `make check` runs
+# every test; both first install missing Debian packages (as root).
+PREFIX  ?= /usr/local
+DESTDIR ?=
+BINDIR   = $(PREFIX)/bin
+DATADIR  = $(PREFIX)/share/adhere
+MANDIR   = $(PREFIX)/share/man
+
+CC      ?= cc
+CFLAGS  ?= -O2 -g
+WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter
+PKGS     = gsl ncursesw inih openblas
+DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux
+
+# GSL through OpenBLAS's CBLAS, not the reference gslcblas (DESIGN.md section 4).
+PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl \
+             $(shell pkg-config --libs openblas ncursesw inih 2>/dev/null) -lpthread -lm
+CPPFLAGS += -Iinclude -Isrc -D_POSIX_C_SOURCE=200809L -DADH_DATADIR='"$(DATADIR)"' -DADH_SRCDATA='"$(CURDIR)/share/adhere"'
+ALL_CFLAGS = -std=c11 $(WARN) $(CFLAGS) $(PKG_CFLAGS)
+
+BUILD   ?= build
+LIB_SRC  = $(wildcard src/core/*.c src/scene/*.c src/plot/*.c)
+APP_SRC  = $(wildcard src/cli/*.c src/tui/*.c)
+LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
+APP_OBJ  = $(APP_SRC:%.c=$(BUILD)/%.o)
+LIB      = $(BUILD)/libadhere.a
+UNIT_SRC = $(wildcard tests/unit/*.c)
+UNIT_BIN = $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
+HARD_SRC = $(wildcard tests/hard/*.c)
+HARD_BIN = $(HARD_SRC:tests/hard/%.c=$(BUILD)/tests/hard-%)
+BENCH_SRC = $(wildcard tests/bench/*.c)
+BENCH_BIN = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/tests/bench-%)
+
+.PHONY: all deps run check check-unit check-hard check-cli check-replay check-man \
+        check-asan bench install uninstall clean
+
+all: deps adhere
+
+# Installs what is missing and nothing else: a no-op when every package is there.
+deps:
+	@missing=""; for p in $(DEBS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" != 0 ]; then echo "adhere needs:$$missing (run 'make deps' as root, or apt-get install them)" >&2; exit 1; fi; \
+	  echo "installing:$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null || exit 1; \
+	fi
+
+adhere: $(APP_OBJ) $(LIB)
+	$(CC) $(ALL_CFLAGS) -o $@ $(APP_OBJ) $(LIB) $(PKG_LIBS) $(LDFLAGS)
+
+$(LIB): $(LIB_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -Itests/unit $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
+
+$(BUILD)/tests/hard-%: tests/hard/%.c tests/unit/tap.h $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -Itests/unit $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
+
+$(BUILD)/tests/bench-%: tests/bench/%.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
+
+run: all
+	./adhere
+
+check: all $(UNIT_BIN) $(HARD_BIN)
+	@tests/run-all.sh $(BUILD)
+
+bench: all $(BENCH_BIN)
+	@tests/bench/run.sh $(BUILD)
+
+install: all
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(DATADIR)/scenes $(DESTDIR)$(DATADIR)/gnuplot \
+	  $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
+	install -m 755 adhere $(DESTDIR)$(BINDIR)/adhere
+	for f in share/adhere/scenes/*.scene; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/scenes/; done; true
+	for f in share/adhere/gnuplot/*.gp; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/gnuplot/; done; true
+	install -m 644 man/adhere.1 $(DESTDIR)$(MANDIR)/man1/adhere.1
+	[ ! -e man/adhere-scene.5 ] || install -m 644 man/adhere-scene.5 $(DESTDIR)$(MANDIR)/man5/adhere-scene.5
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/adhere $(DESTDIR)$(MANDIR)/man1/adhere.1 $(DESTDIR)$(MANDIR)/man5/adhere-scene.5
+	rm -rf $(DESTDIR)$(DATADIR)
+
+clean:
+	rm -rf $(BUILD) adhere
+
+-include $(LIB_OBJ:.o=.d) $(APP_OBJ:.o=.d)

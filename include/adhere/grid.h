@@ -1,0 +1,22 @@
+/* The radial grid r_n = (n - 1/2) dr, n = 1..N (paper section B). */
+#ifndef ADHERE_GRID_H
+#define ADHERE_GRID_H
+
+#include <stddef.h>
+#include "adhere/params.h"
+
+typedef struct adh_grid {
+    size_t n;      /* number of nodes N */
+    double dr;     /* spacing Delta, m */
+    double rmax;   /* N * dr, m */
+    double *r;     /* node radii, length n */
+} adh_grid;
+
+/* The paper's Delta = 1.5 nm at R = 10 um, z0 = 0.5 nm, scaled with sqrt(R z0)
+ * so that the grid resolves the same physics at every R and z0. */
+double adh_grid_default_spacing(const adh_material *m);
+
+adh_grid *adh_grid_alloc(size_t n, double dr);
+void adh_grid_free(adh_grid *g);
+
+#endif

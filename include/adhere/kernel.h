@@ -1,0 +1,34 @@
+/* The discretised elastic half-space kernel (paper eqs 9, 18-21, or the exact
+ * ring-integrated form of DESIGN.md section 2). It depends on the grid alone:
+ * material changes never rebuild it. */
+#ifndef ADHERE_KERNEL_H
+#define ADHERE_KERNEL_H
+
+#include "adhere/grid.h"
+
+typedef enum adh_kernel_type {
+    ADH_KERNEL_PAPER = 0,   /* point collocation, log singularity per eqs 19-21 */
+    ADH_KERNEL_RING = 1     /* exact for piecewise-constant pressure on rings */
+} adh_kernel_type;
+
+typedef struct adh_kernel adh_kernel;
+
+adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type);
+void adh_kernel_free(adh_kernel *k);
+adh_kernel_type adh_kernel_kind(const adh_kernel *k);
+const char *adh_kernel_name(adh_kernel_type type);
+/* 0 on success, -1 when name is neither "paper" nor "ring". */
+int adh_kernel_parse(const char *name, adh_kernel_type *type);
+
+/* out_n = integral_0^Rmax p(t) k(r_n, t) t dt, discretised; the deformation
+ * is then u = -(2/E) out (eq 11). scratch: N doubles of the caller's, so one
+ * kernel can serve several threads. */
+void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double *scratch);
+
+/* The complete disk integral D(r, a) = int_0^a k(r, t) t dt (closed form). */
+double adh_disk_integral(double r, double a);
+
+/* Row n of the dense influence matrix W (out = W p), for tests and Jacobians. */
+double adh_kernel_entry(const adh_kernel *k, size_t n, size_t j);
+
+#endif

@@ -1,0 +1,62 @@
+/* The paper's relaxation solver (section B): after a drive step the
+ * deformation is iterated from eq 11 with adaptive mixing until the change
+ * falls below eps. The number of iterations is the model's time.
+ *
+ * Use: alloc, set (material, settings, start position), then per drive step
+ * move + iterate until it returns something other than ADH_CONTINUE. */
+#ifndef ADHERE_RELAX_H
+#define ADHERE_RELAX_H
+
+#include <stddef.h>
+#include "adhere/grid.h"
+#include "adhere/kernel.h"
+#include "adhere/params.h"
+#include "adhere/state.h"
+
+typedef struct adh_relax_settings {
+    double eps;          /* convergence: sqrt(sum (u_new - u_old)^2) / N < eps, m */
+    double mix_max;      /* largest mixing ratio (paper: 0.2) */
+    double mix_min;      /* the ratio never falls below this */
+    double mix_down;     /* factor applied on oscillation or growth */
+    double mix_up;       /* factor applied otherwise, up to mix_max */
+    size_t max_iter;     /* cap per drive step; reaching it is reported */
+} adh_relax_settings;
+
+adh_relax_settings adh_relax_settings_default(void);
+int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t whylen);
+
+typedef struct adh_relax adh_relax;
+
+/* The grid and kernel are borrowed and must outlive the solver. */
+adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k);
+void adh_relax_free(adh_relax *w);
+
+/* Undeformed surfaces (u = 0) at position h0. Material may be changed later
+ * with this call again without rebuilding anything. */
+int adh_relax_set(adh_relax *w, const adh_material *m, const adh_relax_settings *s, double h0);
+
+/* Step the drive to h0_new at constant gap: u shifts by h0_new - h0 (paper:
+ * "the deformation was changed to u(r) - d"). Resets the step's iteration count. */
+void adh_relax_move(adh_relax *w, double h0_new);
+
+/* Up to max_batch iterations (0: until done). ADH_SUCCESS when converged,
+ * ADH_CONTINUE when the batch ended first, ADH_EMAXITER at the cap,
+ * ADH_ENAN when the solution stopped being finite. */
+int adh_relax_iterate(adh_relax *w, size_t max_batch);
+
+/* Exactly n more iterations at the current position, converged or not: a
+ * pause (dwell) at the turning point. ADH_ENAN if the solution breaks. */
+int adh_relax_dwell(adh_relax *w, size_t n);
+
+/* The current state (borrowed), and replacing it (for undo / restoring a turn). */
+const adh_state *adh_relax_state(const adh_relax *w);
+void adh_relax_restore(adh_relax *w, const adh_state *s);
+
+size_t adh_relax_step_iterations(const adh_relax *w);   /* since the last move */
+double adh_relax_change(const adh_relax *w);            /* last convergence measure, m */
+double adh_relax_mixing(const adh_relax *w);            /* current mixing ratio */
+
+/* Recompute h and p from u at the current h0 (after restore or material change). */
+void adh_relax_refresh(adh_relax *w);
+
+#endif

@@ -1,0 +1,22 @@
+/* The solution at one drive position: deformation u, gap h, pressure p.
+ * Snapshots are plain copies, so stepping back is restoring a copy. */
+#ifndef ADHERE_STATE_H
+#define ADHERE_STATE_H
+
+#include <stddef.h>
+
+typedef struct adh_state {
+    size_t n;
+    double h0;     /* drive position: closest approach of the undeformed surfaces, m */
+    double *u;     /* total deformation u(r_n), m (eq 6); negative is flattening */
+    double *h;     /* local gap h(r_n) = h0 + r^2/2R - u, m (eq 5) */
+    double *p;     /* pressure p_s(h(r_n)), Pa (eq 10) */
+} adh_state;
+
+adh_state *adh_state_alloc(size_t n);
+void adh_state_free(adh_state *s);
+adh_state *adh_state_clone(const adh_state *s);
+/* dst and src must have the same n. */
+void adh_state_copy(adh_state *dst, const adh_state *src);
+
+#endif

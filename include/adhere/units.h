@@ -1,0 +1,27 @@
+/* Numbers with optional SI unit suffix: "1GPa", "0.5nm", "10um", "1e-19J". */
+#ifndef ADHERE_UNITS_H
+#define ADHERE_UNITS_H
+
+#include <stddef.h>
+
+typedef enum adh_quantity {
+    ADH_Q_NONE = 0,      /* a pure number: no unit allowed */
+    ADH_Q_LENGTH,        /* m */
+    ADH_Q_PRESSURE,      /* Pa */
+    ADH_Q_ENERGY,        /* J */
+    ADH_Q_SPEED,         /* m/s */
+    ADH_Q_FORCE          /* N */
+} adh_quantity;
+
+/* Parses text as a finite number in quantity q's SI unit, with an optional
+ * metric prefix and unit ("nm", "um", "GPa", "zJ"...). Returns 0, or -1 with a
+ * message in why (naming the text and what is allowed). */
+int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *why, size_t whylen);
+/* A whole number in [lo, hi]. */
+int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, size_t whylen);
+/* The SI unit symbol of q ("m", "Pa", ...), "" for ADH_Q_NONE. */
+const char *adh_quantity_unit(adh_quantity q);
+/* Formats value with the best metric prefix, e.g. 3e8 Pa -> "300 MPa". */
+void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, size_t len);
+
+#endif

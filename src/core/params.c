@@ -1,0 +1,48 @@
+#include "adhere/params.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "adhere/models.h"
+#include "adhere/status.h"
+
+adh_material adh_material_default(void)
+{
+    adh_material m = { .E = 1e9, .A = 1e-19, .z0 = 0.5e-9, .R = 10e-6 };
+    return m;
+}
+
+/* Each quantity must be finite and positive; the upper bounds reject values
+ * that are surely a unit slip (a 1 km sphere, a 1e15 Pa modulus) rather than
+ * physics, so the message can say so before a solve produces garbage. */
+static int check(const char *name, double v, double lo, double hi, const char *unit,
+                 char *why, size_t n)
+{
+    if (isfinite(v) && v >= lo && v <= hi)
+        return 0;
+    if (why)
+        snprintf(why, n, "%s = %g %s is out of range: allowed %g to %g %s", name, v, unit,
+                 lo, hi, unit);
+    return 1;
+}
+
+int adh_material_validate(const adh_material *m, char *why, size_t whylen)
+{
+    if (check("E (modulus)", m->E, 1e3, 1e13, "Pa", why, whylen) ||
+        check("A (Hamaker constant)", m->A, 1e-24, 1e-15, "J", why, whylen) ||
+        check("z0 (equilibrium separation)", m->z0, 1e-12, 1e-7, "m", why, whylen) ||
+        check("R (effective radius)", m->R, 1e-9, 10.0, "m", why, whylen))
+        return ADH_EINVAL;
+    return ADH_SUCCESS;
+}
+
+void adh_material_derive(const adh_material *m, adh_derived *d)
+{
+    d->gamma = m->A / (16.0 * M_PI * m->z0 * m->z0);
+    d->sigma = d->gamma * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / m->E;
+    d->mu = cbrt(4.0) * pow(d->sigma, 2.0 / 3.0);
+    d->Estar = m->E / 2.0;
+    d->F_jkr = adh_jkr_pulloff(m);
+    d->F_dmt = adh_dmt_pulloff(m);
+    d->h_star = adh_jump_separation(m);
+}

@@ -1,0 +1,158 @@
+#include "adhere/units.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const struct { const char *sym; double factor; } prefixes[] = {
+    { "f", 1e-15 }, { "p", 1e-12 }, { "n", 1e-9 }, { "u", 1e-6 }, { "\xc2\xb5", 1e-6 },
+    { "m", 1e-3 }, { "c", 1e-2 }, { "k", 1e3 }, { "M", 1e6 }, { "G", 1e9 }, { "T", 1e12 },
+    { "z", 1e-21 }, { "a", 1e-18 }, { "", 1.0 },
+};
+
+static const char *const unit_sym[] = {
+    [ADH_Q_NONE] = "", [ADH_Q_LENGTH] = "m", [ADH_Q_PRESSURE] = "Pa",
+    [ADH_Q_ENERGY] = "J", [ADH_Q_SPEED] = "m/s", [ADH_Q_FORCE] = "N",
+};
+
+static const char *const quantity_name[] = {
+    [ADH_Q_NONE] = "a plain number", [ADH_Q_LENGTH] = "a length (m, nm, um, ...)",
+    [ADH_Q_PRESSURE] = "a pressure (Pa, MPa, GPa, ...)", [ADH_Q_ENERGY] = "an energy (J, zJ, ...)",
+    [ADH_Q_SPEED] = "a speed (m/s, um/s, ...)", [ADH_Q_FORCE] = "a force (N, uN, nN, ...)",
+};
+
+const char *adh_quantity_unit(adh_quantity q)
+{
+    return unit_sym[q];
+}
+
+/* Which quantity a bare unit symbol names, so "5nm" given for a modulus can be
+ * reported as "a length where a pressure is wanted" rather than as garbage. */
+static int unit_of(const char *suffix, adh_quantity *q, double *factor)
+{
+    for (int k = ADH_Q_LENGTH; k <= ADH_Q_FORCE; k++) {
+        size_t ul = strlen(unit_sym[k]), sl = strlen(suffix);
+        if (sl < ul || strcmp(suffix + sl - ul, unit_sym[k]) != 0)
+            continue;
+        size_t pl = sl - ul;
+        for (size_t i = 0; i < sizeof prefixes / sizeof prefixes[0]; i++) {
+            if (strlen(prefixes[i].sym) == pl && strncmp(suffix, prefixes[i].sym, pl) == 0) {
+                /* "m" alone is metres, not a milli-prefix on nothing. */
+                *q = (adh_quantity)k;
+                *factor = prefixes[i].factor;
+                return 0;
+            }
+        }
+    }
+    return -1;
+}
+
+static void trim(const char *text, char *buf, size_t len)
+{
+    while (*text == ' ' || *text == '\t')
+        text++;
+    snprintf(buf, len, "%s", text);
+    size_t n = strlen(buf);
+    while (n > 0 && (buf[n - 1] == ' ' || buf[n - 1] == '\t' || buf[n - 1] == '\n' || buf[n - 1] == '\r'))
+        buf[--n] = '\0';
+}
+
+int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *why, size_t whylen)
+{
+    char buf[128];
+    if (!text || strlen(text) >= sizeof buf - 1) {
+        if (why)
+            snprintf(why, whylen, "value is missing or longer than %zu characters; expected %s",
+                     sizeof buf - 2, quantity_name[q]);
+        return -1;
+    }
+    trim(text, buf, sizeof buf);
+    /* strtod accepts "nan", "inf" and hex floats; none is a physical value here. */
+    const char *c = buf;
+    if (*c == '+' || *c == '-')
+        c++;
+    if (!((*c >= '0' && *c <= '9') || *c == '.') || strpbrk(buf, "xX")) {
+        if (why)
+            snprintf(why, whylen, "'%s' is not a number; expected %s", buf, quantity_name[q]);
+        return -1;
+    }
+    errno = 0;
+    char *end;
+    double v = strtod(buf, &end);
+    if (end == buf) {
+        if (why)
+            snprintf(why, whylen, "'%s' is not a number; expected %s", buf, quantity_name[q]);
+        return -1;
+    }
+    while (*end == ' ')
+        end++;
+    double factor = 1.0;
+    if (*end) {
+        adh_quantity got;
+        if (unit_of(end, &got, &factor) != 0) {
+            if (why)
+                snprintf(why, whylen, "'%s': unknown unit '%s'; expected %s", buf, end, quantity_name[q]);
+            return -1;
+        }
+        if (got != q) {
+            if (why)
+                snprintf(why, whylen, "'%s' is %s, but %s is wanted here", buf,
+                         quantity_name[got], q == ADH_Q_NONE ? "a plain number" : quantity_name[q]);
+            return -1;
+        }
+    }
+    v *= factor;
+    if (!isfinite(v) || errno == ERANGE) {
+        if (why)
+            snprintf(why, whylen, "'%s' is out of the range of finite numbers", buf);
+        return -1;
+    }
+    *value = v;
+    return 0;
+}
+
+int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, size_t whylen)
+{
+    char buf[64];
+    if (!text || strlen(text) >= sizeof buf - 1) {
+        if (why)
+            snprintf(why, whylen, "expected a whole number from %ld to %ld", lo, hi);
+        return -1;
+    }
+    trim(text, buf, sizeof buf);
+    errno = 0;
+    char *end;
+    long v = strtol(buf, &end, 10);
+    if (end == buf || *end || errno == ERANGE || v < lo || v > hi) {
+        if (why)
+            snprintf(why, whylen, "'%s' is not allowed: expected a whole number from %ld to %ld",
+                     buf, lo, hi);
+        return -1;
+    }
+    *value = v;
+    return 0;
+}
+
+void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, size_t len)
+{
+    static const struct { const char *sym; double f; } pick[] = {
+        { "T", 1e12 }, { "G", 1e9 }, { "M", 1e6 }, { "k", 1e3 }, { "", 1 },
+        { "m", 1e-3 }, { "u", 1e-6 }, { "n", 1e-9 }, { "p", 1e-12 }, { "f", 1e-15 },
+    };
+    if (q == ADH_Q_NONE || !isfinite(value) || value == 0) {
+        snprintf(buf, len, "%.*g %s", digits, value, unit_sym[q]);
+        return;
+    }
+    double a = fabs(value);
+    size_t i = 0, n = sizeof pick / sizeof pick[0];
+    while (i + 1 < n && a < pick[i].f * 0.9995)
+        i++;
+    /* Energies read better in plain J with an exponent (1e-19 J, not 100 zJ). */
+    if (q == ADH_Q_ENERGY) {
+        snprintf(buf, len, "%.*g J", digits, value);
+        return;
+    }
+    snprintf(buf, len, "%.*g %s%s", digits, value / pick[i].f, pick[i].sym, unit_sym[q]);
+}
