@@ -8,7 +8,7 @@ MANDIR   = $(PREFIX)/share/man
 
 CC      ?= cc
 CFLAGS  ?= -O2 -g
-WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter
+WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wno-format-truncation
 PKGS     = gsl ncursesw inih openblas
 DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux
 
@@ -16,7 +16,8 @@ DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox man
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl \
              $(shell pkg-config --libs openblas ncursesw inih 2>/dev/null) -lpthread -lm
-CPPFLAGS += -Iinclude -Isrc -D_POSIX_C_SOURCE=200809L -DADH_DATADIR='"$(DATADIR)"' -DADH_SRCDATA='"$(CURDIR)/share/adhere"'
+ADH_VERSION = 0.1.0
+CPPFLAGS += -Iinclude -Isrc -DADH_VERSION='"$(ADH_VERSION)"' -D_POSIX_C_SOURCE=200809L -DADH_DATADIR='"$(DATADIR)"' -DADH_SRCDATA='"$(CURDIR)/share/adhere"'
 ALL_CFLAGS = -std=c11 $(WARN) $(CFLAGS) $(PKG_CFLAGS)
 
 BUILD   ?= build

@@ -15,6 +15,9 @@ typedef struct adh_grid {
 /* The paper's Delta = 1.5 nm at R = 10 um, z0 = 0.5 nm, scaled with sqrt(R z0)
  * so that the grid resolves the same physics at every R and z0. */
 double adh_grid_default_spacing(const adh_material *m);
+/* The paper's grid radius, N = 1000 nodes of that spacing (1.5 um at the
+ * paper's R and z0). Changing N alone keeps this radius and refines the grid. */
+double adh_grid_default_rmax(const adh_material *m);
 
 adh_grid *adh_grid_alloc(size_t n, double dr);
 void adh_grid_free(adh_grid *g);

@@ -12,6 +12,11 @@ double adh_grid_default_spacing(const adh_material *m)
     return ref * sqrt(m->R * m->z0);
 }
 
+double adh_grid_default_rmax(const adh_material *m)
+{
+    return 1000.0 * adh_grid_default_spacing(m);
+}
+
 adh_grid *adh_grid_alloc(size_t n, double dr)
 {
     if (n == 0 || !(dr > 0))

@@ -40,10 +40,10 @@ double adh_disk_integral(double r, double a)
     }
     /* E(m) - (1-m) K(m) = m [RF - RD/3]: no cancellation for small m. */
     double m = (a / r) * (a / r), om = (r - a) * (r + a) / (r * r);
-    double rf = gsl_sf_ellint_RF(0.0, om, 1.0, GSL_PREC_DOUBLE);
-    double rd = om > 0 ? gsl_sf_ellint_RD(0.0, om, 1.0, GSL_PREC_DOUBLE) : 0.0;
     if (om <= 0)
         return 4.0 * r / M_PI; /* r == a: E(1) = 1 */
+    double rf = gsl_sf_ellint_RF(0.0, om, 1.0, GSL_PREC_DOUBLE);
+    double rd = gsl_sf_ellint_RD(0.0, om, 1.0, GSL_PREC_DOUBLE);
     return 4.0 * r / M_PI * m * (rf - rd / 3.0);
 }
 

@@ -76,8 +76,8 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
         return ADH_EINVAL;
     }
     double lateral = sqrt(m->R * m->z0);
-    if (g->dr > 0.2 * lateral) {
-        snprintf(why, whylen, "grid spacing %g m is too coarse: the contact edge needs at most 0.2 sqrt(R z0) = %g m", g->dr, 0.2 * lateral);
+    if (g->dr > 0.25 * lateral) {
+        snprintf(why, whylen, "grid spacing %g m is too coarse: the contact edge needs at most 0.25 sqrt(R z0) = %g m; use more nodes", g->dr, 0.25 * lateral);
         return ADH_EGRID;
     }
     if (g->rmax > 0.3 * m->R) {

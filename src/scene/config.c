@@ -25,5 +25,5 @@ void adh_config_default(adh_config *c)
 
 double adh_config_spacing(const adh_config *c)
 {
-    return isnan(c->spacing) ? adh_grid_default_spacing(&c->mat) : c->spacing;
+    return isnan(c->spacing) ? adh_grid_default_rmax(&c->mat) / (double)c->nodes : c->spacing;
 }

@@ -28,7 +28,7 @@ enum adh_plot_kind {
 typedef struct adh_config {
     adh_material mat;
     size_t nodes;                  /* N */
-    double spacing;                /* m; NAN = adh_grid_default_spacing */
+    double spacing;                /* m; NAN = adh_grid_default_rmax / nodes */
     adh_kernel_type kernel;
     adh_relax_settings relax;
     adh_protocol_settings proto;
@@ -56,7 +56,8 @@ typedef struct adh_config {
  * grid scaled with sqrt(R z0), eps = 1 pm, d = 0.05 nm, turn at -5 nm. */
 void adh_config_default(adh_config *c);
 
-/* The grid spacing in use (the explicit one, or the scaled default). */
+/* The grid spacing in use: the explicit one, or the paper's grid radius
+ * (scaled with sqrt(R z0)) divided by N. */
 double adh_config_spacing(const adh_config *c);
 
 #endif

@@ -1,0 +1,117 @@
+/* The static limit the paper could not compute (DESIGN.md section 2):
+ * equilibrium at every drive position, G(u, h0) = u + (2/E) W p(h0 + r^2/2R - u) = 0,
+ * solved by Newton's method and followed along the whole S-shaped curve
+ * F(h0) by pseudo-arclength continuation in (u, h0) through its folds,
+ * unstable parts included.
+ *
+ * The Jacobian is J = I - (2/E) W diag(p'(h)). p'(h) falls off as h^-4, so
+ * only the nodes in and near the interaction zone (an index prefix S) enter
+ * a dense LU; the rest of J is left out of the linear solve (an inexact
+ * Newton whose residual is still the exact one). J has real eigenvalues
+ * (it is W times a symmetric Hessian), det J changes sign at each fold, and
+ * a point is stable under displacement control when det J > 0 (no negative
+ * eigen-direction; one contact line gives at most one).
+ *
+ * Use: alloc, set (solves the start point), then iterate until it returns
+ * something other than ADH_CONTINUE; or adh_static_run for the whole curve. */
+#ifndef ADHERE_EQUILIBRIUM_H
+#define ADHERE_EQUILIBRIUM_H
+
+#include <stddef.h>
+#include "adhere/grid.h"
+#include "adhere/kernel.h"
+#include "adhere/params.h"
+#include "adhere/protocol.h"
+#include "adhere/state.h"
+
+typedef struct adh_static_settings {
+    double tol;          /* Newton: max_n |u_n + (2/E)(W p)_n| < tol * z0 */
+    double ds_init;      /* first arclength step, in units of z0 */
+    double ds_min;       /* below this the continuation stalls (ADH_ESTALL) */
+    double ds_max;       /* largest arclength step */
+    double u_weight;     /* weight of every u_n against h0 in the arclength metric */
+    double max_angle;    /* largest turn of the tangent per step, rad */
+    double active_tol;   /* node j enters the dense solve when
+                            (2/E) |p'(h_j)| sum_n |W_nj| exceeds this */
+    double h0_start;     /* first position, m; NAN = adh_protocol_auto_start(m, 0.05 nm) */
+    double h0_end;       /* turning depth, m: the curve ends there, going down */
+    size_t max_points;   /* cap on accepted points (ADH_EMAXITER beyond) */
+    size_t max_newton;   /* Newton iterations per attempted step */
+} adh_static_settings;
+
+adh_static_settings adh_static_settings_default(void);
+/* ADH_SUCCESS, or ADH_EINVAL with a sentence naming the bad value. */
+int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t whylen);
+
+/* Up to this many folds are kept with their position and force. */
+#define ADH_STATIC_MAX_FOLDS 4096
+
+typedef struct adh_static_fold {
+    double h0;           /* where the drive turns, m (interpolated between points) */
+    double F;            /* force there, N */
+    int kind;            /* -1: h0 has a local minimum (approach jumps in here);
+                            +1: a local maximum (retraction jumps here) */
+} adh_static_fold;
+
+typedef struct adh_static_result {
+    double jump_in_h0;     /* first fold, where the outer branch ends; NAN if none */
+    double jump_out_h0;    /* the retraction fold with the largest h0; NAN if none */
+    double pulloff_F;      /* load-controlled pull-off: minimum force of the curve, N */
+    double pulloff_h0;     /* where that minimum is, m */
+    double pulloff_F_disp; /* force at the jump-out fold, N; NAN if none */
+    size_t folds;          /* folds traversed (lattice-trapping folds included) */
+    size_t points;         /* accepted points (rows) */
+    size_t rejected;       /* rejected step attempts */
+    size_t newton_iterations;
+    size_t factorizations; /* dense LU factorizations */
+    double seconds;        /* wall time of the solves */
+} adh_static_result;
+
+/* One accepted point of the curve. */
+typedef struct adh_static_point {
+    double s;            /* arclength from the start in the solver's metric, units of z0 */
+    double tangent_h0;   /* d h0 / ds, dimensionless (|.| <= 1) */
+    int direction;       /* +1 when h0 decreases along the curve here, -1 otherwise */
+    int stable;          /* 1: det J > 0, stable under displacement control */
+    size_t newton;       /* Newton iterations spent reaching it (rejected attempts too) */
+    size_t active;       /* nodes in the dense solve */
+    double residual;     /* max_n |u_n + (2/E)(W p)_n|, m */
+} adh_static_point;
+
+typedef struct adh_static adh_static;
+
+/* The grid and kernel are borrowed and must outlive the solver. Copies W
+ * densely (N^2 doubles) once; material changes do not rebuild it. */
+adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k);
+void adh_static_free(adh_static *w);
+
+/* Solves the start point (u = 0 as the first guess) and resets the curve.
+ * ADH_EINVAL on bad settings, ADH_EMAXITER / ADH_ENAN when it fails. */
+int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settings *s);
+
+/* Advances by one accepted point. ADH_CONTINUE: more to come; ADH_SUCCESS:
+ * this point is the end (h0 = h0_end); otherwise an error (ADH_ESTALL when
+ * the step fell below ds_min, ADH_EMAXITER past max_points, ADH_ENAN,
+ * ADH_EGRID when the contact reaches 0.9 Rmax). */
+int adh_static_iterate(adh_static *w);
+
+/* The current point (borrowed; u, h, p, h0) and its continuation data. */
+const adh_state *adh_static_state(const adh_static *w);
+adh_static_point adh_static_current(const adh_static *w);
+/* The summary so far (folds, jumps, pull-off, counts). */
+void adh_static_summary(const adh_static *w, adh_static_result *res);
+/* The folds found so far: their number, and a borrowed array. */
+size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds);
+
+/* The whole curve from h0_start down to h0_end: appends one row per point to
+ * run (adh_observe plus branch = direction, path 0, converged 1, stable,
+ * iters = Newton iterations), calls cb after each (nonzero stops it:
+ * run->interrupted), and fills res (may be NULL). run->start and
+ * run->jump_in_h0 are set; run->turns is left empty (one curve, no unloading
+ * branches). Returns ADH_SUCCESS or the error that stopped it (the rows so
+ * far are kept; run->status says the same). */
+int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
+                   const adh_static_settings *s, adh_step_cb cb, void *ctx,
+                   adh_run *run, adh_static_result *res);
+
+#endif

@@ -1,0 +1,163 @@
+#include "cli/batch.h"
+
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "adhere/grid.h"
+#include "adhere/kernel.h"
+#include "adhere/protocol.h"
+#include "adhere/status.h"
+#include "cli/tables.h"
+#include "plot/plot.h"
+
+static volatile sig_atomic_t stop_signal;
+
+static void on_signal(int sig)
+{
+    stop_signal = sig;
+}
+
+typedef struct batch_ctx {
+    const adh_config *cfg;
+    FILE *stream;           /* force rows as they come (no --out), or NULL */
+    int progress;           /* draw a progress bar on stderr */
+    double last_draw;
+} batch_ctx;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
+{
+    batch_ctx *ctx = vctx;
+    if (ctx->stream) {
+        adh_force_row(ctx->stream, o);
+        fflush(ctx->stream);
+    }
+    if (ctx->progress) {
+        double t = now();
+        if (t - ctx->last_draw > 0.1) {
+            ctx->last_draw = t;
+            fprintf(stderr, "\r  %s step %5zu  h0 %+8.3f nm  F %+10.4g uN  iters %7zu  total %9zu ",
+                    o->branch > 0 ? "loading  " : "unloading", run->nrows, o->h0 * 1e9, o->F * 1e6,
+                    o->iters, run->iterations);
+        }
+    }
+    return stop_signal != 0;
+}
+
+static int make_dir(const char *dir, char *why, size_t n)
+{
+    char buf[PATH_MAX];
+    snprintf(buf, sizeof buf, "%s", dir);
+    /* mkdir -p: each parent in turn, tolerating ones that exist. */
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
+            snprintf(why, n, "cannot create directory %s: %s", buf, strerror(errno));
+            return -1;
+        }
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
+        snprintf(why, n, "cannot create directory %s: %s", buf, strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode) || access(buf, W_OK) != 0) {
+        snprintf(why, n, "cannot write into %s: not a writable directory", buf);
+        return -1;
+    }
+    return 0;
+}
+
+int adh_batch_main(const adh_cli *cli)
+{
+    const adh_config *cfg = &cli->cfg;
+    char why[1024];
+    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
+    if (out && make_dir(out, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return ADH_EXIT_USAGE;
+    }
+    if (cfg->mode == ADH_MODE_STATIC) {
+        fprintf(stderr, "adhere: --mode=static: the equilibrium solver is not in this build yet\n");
+        return ADH_EXIT_USAGE;
+    }
+    adh_grid *g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
+    adh_kernel *k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;
+    if (!k) {
+        fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
+        adh_grid_free(g);
+        return ADH_EXIT_SOLVER;
+    }
+
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+
+    batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2), 0 };
+    if (ctx.stream) {
+        fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
+        adh_force_header(ctx.stream);
+    }
+    adh_run run;
+    adh_run_init(&run);
+    int rc = adh_protocol_run(g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
+    if (ctx.progress)
+        fprintf(stderr, "\r%*s\r", 100, "");
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+
+    int status = ADH_EXIT_OK;
+    char note[512] = "";
+    if (run.interrupted) {
+        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", (int)stop_signal, run.nrows);
+        status = ADH_EXIT_INTERRUPTED;
+    } else if (rc != ADH_SUCCESS) {
+        snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run.nrows, adh_strerror(rc));
+        status = ADH_EXIT_SOLVER;
+    }
+    if (note[0])
+        fprintf(stderr, "adhere: %s\n", note);
+    if (run.unconverged && !cfg->quiet)
+        fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0\n",
+                run.unconverged, run.nrows, cfg->relax.max_iter, cfg->relax.eps);
+
+    adh_tables tables = { cfg, &run, NULL, 0, status != ADH_EXIT_OK, note };
+    if (ctx.stream && tables.partial)
+        fprintf(ctx.stream, "# PARTIAL: %s\n", note);
+    if (out) {
+        if (adh_write_atomic(out, "force.tsv", adh_write_force, &tables, why, sizeof why) != 0 ||
+            adh_write_atomic(out, "summary.tsv", adh_write_summary, &tables, why, sizeof why) != 0 ||
+            (run.nturns && adh_write_atomic(out, "turns.tsv", adh_write_turns, &tables, why, sizeof why) != 0)) {
+            fprintf(stderr, "adhere: %s\n", why);
+            status = ADH_EXIT_USAGE;
+        } else if (cfg->plot && status == ADH_EXIT_OK) {
+            char msg[1024] = "";
+            int prc = adh_plots_write(cfg, &run, out, msg, sizeof msg);
+            if (prc != 0) {
+                fprintf(stderr, "adhere: plots not written: %s\n", msg);
+                status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
+            }
+        }
+    }
+    adh_run_free(&run);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+    return status;
+}

@@ -1,0 +1,19 @@
+/* The batch driver: runs the configured protocol with no TUI, streams or
+ * writes the tables, then the plots. Returns the process exit status. */
+#ifndef ADH_CLI_BATCH_H
+#define ADH_CLI_BATCH_H
+
+#include "cli/options.h"
+
+/* Exit statuses shared by every driver. */
+enum {
+    ADH_EXIT_OK = 0,
+    ADH_EXIT_SOLVER = 1,     /* the solver failed (NaN, grid overflow): partial tables */
+    ADH_EXIT_USAGE = 2,      /* bad input: nothing was run or written */
+    ADH_EXIT_PLOT = 3,       /* tables written, plots not */
+    ADH_EXIT_INTERRUPTED = 130
+};
+
+int adh_batch_main(const adh_cli *cli);
+
+#endif

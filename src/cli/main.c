@@ -1,0 +1,45 @@
+/* adhere: the command line. Parses options, then hands over to the batch
+ * runner, the plan or cost reports, or the TUI. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/batch.h"
+#include "cli/options.h"
+#include "tui/tui.h"
+
+int main(int argc, char **argv)
+{
+    static adh_cli cli;
+    char why[1024];
+    if (adh_cli_parse(argc, argv, &cli, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return ADH_EXIT_USAGE;
+    }
+    switch (cli.action) {
+    case ADH_ACT_HELP:
+        adh_cli_usage(stdout);
+        return ADH_EXIT_OK;
+    case ADH_ACT_VERSION:
+        printf("adhere %s\n", ADH_VERSION);
+        return ADH_EXIT_OK;
+    case ADH_ACT_LIST_KEYS:
+        adh_tui_print_keys(stdout);
+        return ADH_EXIT_OK;
+    default:
+        break;
+    }
+    if (adh_cli_validate(&cli.cfg, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return ADH_EXIT_USAGE;
+    }
+    switch (cli.action) {
+    case ADH_ACT_BATCH:
+        return adh_batch_main(&cli);
+    case ADH_ACT_PLAN:
+    case ADH_ACT_COST:
+        fprintf(stderr, "adhere: --%s is not in this build yet\n", cli.action == ADH_ACT_PLAN ? "plan" : "cost");
+        return ADH_EXIT_USAGE;
+    default:
+        return adh_tui_main(&cli.cfg);
+    }
+}

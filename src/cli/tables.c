@@ -1,0 +1,145 @@
+#include "cli/tables.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "adhere/grid.h"
+#include "adhere/status.h"
+
+#define VERSION_LINE "# adhere " ADH_VERSION "\n"
+
+void adh_force_header(FILE *f)
+{
+    fputs("h0\tF\tdelta\thc\ta\tangle\titers\tbranch\tpath\tconverged\tstable\tF_rigid\tseconds\n", f);
+}
+
+void adh_force_row(FILE *f, const adh_obs *o)
+{
+    fprintf(f, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%+d\t%d\t%d\t%d\t%.17g\t%.6g\n",
+            o->h0, o->F, o->delta, o->hc, o->a, o->angle, o->iters, o->branch, o->path,
+            o->converged, o->stable, o->F_rigid, o->seconds);
+}
+
+static void comment_head(FILE *f, const adh_tables *t, const char *what)
+{
+    fprintf(f, VERSION_LINE "# %s, SI units (m, N, Pa, J, s, rad)\n", what);
+    if (t->cfg->scene[0])
+        fprintf(f, "# scene: %s\n", t->cfg->scene);
+    if (t->partial)
+        fprintf(f, "# PARTIAL: %s\n", t->note ? t->note : "the run did not finish");
+}
+
+int adh_write_force(FILE *f, const void *ctx)
+{
+    const adh_tables *t = ctx;
+    comment_head(f, t, "force table: one row per drive step; branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading branch");
+    adh_force_header(f);
+    for (size_t i = 0; i < t->run->nrows; i++)
+        adh_force_row(f, &t->run->rows[i]);
+    return 0;
+}
+
+static void kv(FILE *f, const char *k, double v)
+{
+    fprintf(f, "%s\t%.17g\n", k, v);
+}
+
+int adh_write_summary(FILE *f, const void *ctx)
+{
+    const adh_tables *t = ctx;
+    const adh_config *c = t->cfg;
+    const adh_run *r = t->run;
+    adh_derived d;
+    adh_material_derive(&c->mat, &d);
+    comment_head(f, t, "run summary: key<TAB>value");
+    fputs("key\tvalue\n", f);
+    kv(f, "sigma", d.sigma);
+    kv(f, "gamma", d.gamma);
+    kv(f, "mu", d.mu);
+    kv(f, "Estar", d.Estar);
+    kv(f, "E", c->mat.E);
+    kv(f, "A", c->mat.A);
+    kv(f, "z0", c->mat.z0);
+    kv(f, "R", c->mat.R);
+    kv(f, "nodes", (double)c->nodes);
+    kv(f, "spacing", adh_config_spacing(c));
+    kv(f, "rmax", (double)c->nodes * adh_config_spacing(c));
+    fprintf(f, "kernel\t%s\n", adh_kernel_name(c->kernel));
+    fprintf(f, "mode\t%s\n", c->mode == ADH_MODE_STATIC ? "static" : "relax");
+    kv(f, "eps", c->relax.eps);
+    kv(f, "step", c->proto.step);
+    kv(f, "start", r->start);
+    kv(f, "dwell", (double)c->proto.dwell);
+    kv(f, "F_jkr", d.F_jkr);
+    kv(f, "F_dmt", d.F_dmt);
+    kv(f, "h_star", d.h_star);
+    kv(f, "jump_in_h0", r->jump_in_h0);
+    const adh_turn_result *mt = adh_run_main_turn(r);
+    kv(f, "turn_h0", mt ? mt->h0 : NAN);
+    kv(f, "max_load", mt ? mt->max_load : NAN);
+    kv(f, "a_turn", mt ? mt->a_turn : NAN);
+    kv(f, "pulloff_F", mt ? mt->pulloff_F : NAN);
+    kv(f, "pulloff_h0", mt ? mt->pulloff_h0 : NAN);
+    kv(f, "jump_out_h0", mt ? mt->jump_out_h0 : NAN);
+    for (size_t i = 0; i < t->nextra; i++)
+        kv(f, t->extra[i].key, t->extra[i].value);
+    kv(f, "steps", (double)r->nrows);
+    kv(f, "iterations", (double)r->iterations);
+    kv(f, "unconverged_steps", (double)r->unconverged);
+    kv(f, "seconds", r->seconds);
+    kv(f, "converged", (r->unconverged == 0 && r->status == ADH_SUCCESS) ? 1 : 0);
+    kv(f, "complete", t->partial ? 0 : 1);
+    fprintf(f, "status\t%s\n", r->interrupted ? "interrupted" : adh_strerror(r->status));
+    return 0;
+}
+
+int adh_write_turns(FILE *f, const void *ctx)
+{
+    const adh_tables *t = ctx;
+    comment_head(f, t, "turning points: the adhesion (-pulloff_F) against the maximum load (Figures 5, 6 insets)");
+    fputs("turn_h0\tmax_load\ta_turn\tpulloff_F\tpulloff_h0\tjump_out_h0\tpath\n", f);
+    for (size_t i = 0; i < t->run->nturns; i++) {
+        const adh_turn_result *tr = &t->run->turns[i];
+        fprintf(f, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%d\n", tr->h0, tr->max_load, tr->a_turn,
+                tr->pulloff_F, tr->pulloff_h0, tr->jump_out_h0, tr->path);
+    }
+    return 0;
+}
+
+int adh_write_atomic(const char *dir, const char *name, adh_table_writer writer, const void *ctx,
+                     char *why, size_t whylen)
+{
+    char path[PATH_MAX + 64], tmp[PATH_MAX + 80];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    snprintf(tmp, sizeof tmp, "%s/.%s.%ld.tmp", dir, name, (long)getpid());
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        snprintf(why, whylen, "cannot write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    int rc = writer(f, ctx);
+    /* fflush + fsync-free close: a full disk shows up here, before the rename. */
+    if (fflush(f) != 0 || ferror(f))
+        rc = -1;
+    int saved = errno;
+    if (fclose(f) != 0 && rc == 0) {
+        rc = -1;
+        saved = errno;
+    }
+    if (rc != 0) {
+        unlink(tmp);
+        snprintf(why, whylen, "cannot write %s: %s", path, strerror(saved ? saved : EIO));
+        return -1;
+    }
+    if (rename(tmp, path) != 0) {
+        saved = errno;
+        unlink(tmp);
+        snprintf(why, whylen, "cannot write %s: %s", path, strerror(saved));
+        return -1;
+    }
+    return 0;
+}

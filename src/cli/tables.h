@@ -1,0 +1,39 @@
+/* The tab-separated tables a batch run writes: force.tsv (one row per drive
+ * step), summary.tsv (key<TAB>value), turns.tsv (one row per turning point).
+ * Files are written under a temporary name and renamed into place, so a
+ * reader never sees half a table. */
+#ifndef ADH_CLI_TABLES_H
+#define ADH_CLI_TABLES_H
+
+#include <stdio.h>
+
+#include "adhere/protocol.h"
+#include "scene/config.h"
+
+typedef struct adh_summary_extra {
+    const char *key;
+    double value;
+} adh_summary_extra;
+
+void adh_force_header(FILE *f);
+void adh_force_row(FILE *f, const adh_obs *o);
+
+/* Writes dir/name atomically through writer(f, ctx). 0, or -1 with why. */
+typedef int (*adh_table_writer)(FILE *f, const void *ctx);
+int adh_write_atomic(const char *dir, const char *name, adh_table_writer writer, const void *ctx,
+                     char *why, size_t whylen);
+
+typedef struct adh_tables {
+    const adh_config *cfg;
+    const adh_run *run;
+    const adh_summary_extra *extra;  /* more summary keys (static mode...), may be NULL */
+    size_t nextra;
+    int partial;                     /* the run was interrupted or failed */
+    const char *note;                /* why, for the comment lines */
+} adh_tables;
+
+int adh_write_force(FILE *f, const void *tables);
+int adh_write_summary(FILE *f, const void *tables);
+int adh_write_turns(FILE *f, const void *tables);
+
+#endif

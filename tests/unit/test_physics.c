@@ -1,0 +1,210 @@
+/* The relaxation solver against the paper's closed forms and figures:
+ * rigid spheres (eq 22), the precontact bulge (eq 23, Figure 2), the jump
+ * separation (eq 24, Figure 3), Figure 1 and Figure 4. Small grids: the
+ * grid radius stays the paper's (1.5 um scaled), only the spacing grows. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/models.h"
+#include "adhere/protocol.h"
+#include "adhere/status.h"
+#include "tap.h"
+
+typedef struct setup {
+    adh_material m;
+    adh_grid *g;
+    adh_kernel *k;
+    adh_relax_settings rs;
+    adh_protocol_settings ps;
+    adh_run run;
+} setup;
+
+static void setup_init(setup *s, double E, size_t n, double eps)
+{
+    memset(s, 0, sizeof *s);
+    s->m = adh_material_default();
+    s->m.E = E;
+    s->g = adh_grid_alloc(n, adh_grid_default_rmax(&s->m) / (double)n);
+    s->k = adh_kernel_alloc(s->g, ADH_KERNEL_PAPER);
+    s->rs = adh_relax_settings_default();
+    s->rs.eps = eps;
+    s->ps = adh_protocol_settings_default();
+    s->ps.nturns = 0; /* precontact: load until contact */
+    s->ps.unload = 0;
+    adh_run_init(&s->run);
+}
+
+static int setup_run(setup *s)
+{
+    return adh_protocol_run(s->g, s->k, &s->m, &s->rs, &s->ps, NULL, NULL, &s->run);
+}
+
+static void setup_free(setup *s)
+{
+    adh_run_free(&s->run);
+    adh_kernel_free(s->k);
+    adh_grid_free(s->g);
+}
+
+static void rigid_limit(void)
+{
+    /* sigma = 2e-4: deformation below 0.1 pm down to h0 = 1 nm. The grid ends
+     * at Rmax; for rigid spheres the force beyond it is exactly eq 22 at the
+     * gap there, 2 pi R W(h0 + Rmax^2/2R), so the comparison is exact. */
+    setup s;
+    setup_init(&s, 1e13, 200, 1e-15);
+    s.ps.start = 10e-9;
+    s.ps.nturns = 1;
+    s.ps.turns[0] = 0.3e-9;
+    double lip = s.g->rmax * s.g->rmax / (2 * s.m.R);
+    int rc = setup_run(&s);
+    ok(rc == ADH_SUCCESS, "rigid run completes (%s)", adh_strerror(rc));
+    /* Even at 1e13 Pa the surfaces bulge ~1 pm at 0.75 nm (eq 23), which moves
+     * an h^-2 force by 2 delta/h ~ 0.3 %: hence two tolerances. */
+    double worst_far = 0, worst_near = 0;
+    for (size_t i = 0; i < s.run.nrows; i++) {
+        const adh_obs *o = &s.run.rows[i];
+        double want = o->F_rigid - adh_rigid_force(&s.m, o->h0 + lip);
+        double e = fabs(o->F - want) / fabs(want);
+        if (o->h0 >= 2e-9)
+            worst_far = fmax(worst_far, e);
+        else if (o->h0 >= 0.7e-9)
+            worst_near = fmax(worst_near, e);
+    }
+    ok(worst_far < 5e-4, "E = 1e13 Pa: force equals eq 22 (less the tail beyond Rmax) within 0.05%% for h0 >= 2 nm (worst %.2e)", worst_far);
+    ok(worst_near < 5e-3, "E = 1e13 Pa: within 0.5%% for 0.7 <= h0 < 2 nm (worst %.2e)", worst_near);
+    const adh_obs *last = &s.run.rows[s.run.nrows - 1];
+    ok(last->F > 0 && last->F_rigid > 0, "at h0 = 0.3 nm < z0/4^(1/6) both forces are repulsive (%.3g, %.3g N)", last->F, last->F_rigid);
+    ok(last->F < last->F_rigid, "in the steep repulsion flattening relieves the force (%.3g < %.3g N)", last->F, last->F_rigid);
+    setup_free(&s);
+}
+
+static void bulge(void)
+{
+    /* Figure 1 material; eps small enough that the 5 pm far bulge is resolved. */
+    setup s;
+    setup_init(&s, 1e9, 100, 1e-15);
+    setup_run(&s);
+    adh_derived d;
+    adh_material_derive(&s.m, &d);
+    double worst_far = 0;
+    int over_near = 0, near = 0;
+    for (size_t i = 0; i + 1 < s.run.nrows; i++) {
+        const adh_obs *o = &s.run.rows[i];
+        if (o->a > 0)
+            break;
+        double want = adh_bulge(&s.m, o->hc);
+        if (o->hc > 2.0 * d.h_star)
+            worst_far = fmax(worst_far, fabs(o->delta - want) / fabs(want));
+        else if (o->hc < 1.3 * d.h_star) {
+            near++;
+            over_near += fabs(want) > fabs(o->delta);
+        }
+    }
+    ok(worst_far < 0.02, "Figure 2: bulge within 2%% of eq 23 for h > 2 h* (worst %.3f)", worst_far);
+    ok(near > 0 && over_near == near, "Figure 2: just before the jump eq 23 overestimates the bulge (%d of %d)", over_near, near);
+    setup_free(&s);
+}
+
+static void jump_separation(void)
+{
+    /* Figure 3: the last separation before the jump against eq 24, over 2.5
+     * decades of sigma (E from 22.5 GPa to 75 MPa at the Figure 1 R, A, z0). */
+    const double sigmas[] = { 0.1, 0.3, 1.0, 2.25, 7.5, 30.0 };
+    for (size_t i = 0; i < sizeof sigmas / sizeof sigmas[0]; i++) {
+        setup s;
+        setup_init(&s, 2.25e9 / sigmas[i] * (2.2507907903927652 / 2.25), 100, 1e-12);
+        int rc = setup_run(&s);
+        adh_derived d;
+        adh_material_derive(&s.m, &d);
+        size_t n = s.run.nrows;
+        const adh_obs *before = &s.run.rows[n - 2], *after = &s.run.rows[n - 1];
+        double ratio = before->hc / d.h_star;
+        ok(rc == ADH_SUCCESS && ratio > 0.8 && ratio < 1.1,
+           "Figure 3, sigma = %.2f: separation before the jump %.3f nm vs eq 24 %.3f nm (ratio %.3f, allowed 0.8-1.1)",
+           d.sigma, before->hc * 1e9, d.h_star * 1e9, ratio);
+        if (sigmas[i] >= 1.0)
+            ok(before->hc - after->hc > 0.5 * before->hc && after->a > 0,
+               "sigma = %.2f: one step of %.2f nm closes the gap from %.2f to %.2f nm (a jump)",
+               d.sigma, s.ps.step * 1e9, before->hc * 1e9, after->hc * 1e9);
+        setup_free(&s);
+    }
+}
+
+static void figure1(void)
+{
+    setup s;
+    setup_init(&s, 1e9, 100, 1e-12);
+    adh_derived d;
+    adh_material_derive(&s.m, &d);
+    ok(fabs(d.sigma - 2.25) < 0.005, "Figure 1: sigma = %.4f (paper 2.25)", d.sigma);
+    ok(fabs(d.gamma - 7.96e-3) < 0.005e-3, "Figure 1: gamma = %.4f mN/m (paper 7.96)", d.gamma * 1e3);
+    s.ps.nturns = 1;
+    s.ps.turns[0] = -5e-9;
+    int rc = setup_run(&s);
+    ok(rc == ADH_SUCCESS && s.run.unconverged == 0, "Figure 1 approach to -5 nm converges at every step");
+    ok(isfinite(s.run.jump_in_h0) && s.run.jump_in_h0 > 0, "Figure 1: jumps into contact at h0 = %.2f nm > 0", s.run.jump_in_h0 * 1e9);
+    double fmin = 0, flast = s.run.rows[s.run.nrows - 1].F;
+    int repulsive_at = 0;
+    for (size_t i = 0; i < s.run.nrows; i++) {
+        fmin = fmin < s.run.rows[i].F ? fmin : s.run.rows[i].F;
+        if (!repulsive_at && s.run.rows[i].F > 0 && s.run.rows[i].a > 0)
+            repulsive_at = (int)i;
+    }
+    ok(repulsive_at > 0 && flast > 0, "Figure 1: in contact the force turns repulsive (F = %.3g uN at -5 nm)", flast * 1e6);
+    /* Before the jump the elastic attraction exceeds the rigid one (bulge). */
+    const adh_obs *pre = NULL;
+    for (size_t i = 0; i < s.run.nrows && s.run.rows[i].a == 0; i++)
+        pre = &s.run.rows[i];
+    ok(pre && pre->F < pre->F_rigid, "Figure 1 inset: just before the jump |F| %.3g > rigid %.3g N", -pre->F, -pre->F_rigid);
+    ok(fmin < 0 && fmin > 1.5 * d.F_dmt, "Figure 1: the most attractive force %.3g uN is of the order of 2 pi gamma R", fmin * 1e6);
+    setup_free(&s);
+}
+
+static void figure4(void)
+{
+    /* sigma = 7.50: hysteresis between loading and unloading in contact. */
+    setup s;
+    setup_init(&s, 3e8, 100, 1e-12);
+    s.ps.nturns = 1;
+    s.ps.turns[0] = -5e-9;
+    s.ps.unload = 1;
+    int rc = setup_run(&s);
+    const adh_turn_result *t = adh_run_main_turn(&s.run);
+    ok(rc == ADH_SUCCESS && t && isfinite(t->jump_out_h0), "Figure 4 cycle completes and jumps out (at %.2f nm)", t ? t->jump_out_h0 * 1e9 : NAN);
+    size_t pairs = 0, lower = 0, wider = 0;
+    for (size_t i = 0; i < s.run.nrows; i++) {
+        const adh_obs *u = &s.run.rows[i];
+        if (u->branch > 0 || u->a == 0 || u->h0 == t->h0)
+            continue;
+        for (size_t j = 0; j < s.run.nrows; j++) {
+            const adh_obs *l = &s.run.rows[j];
+            if (l->branch < 0 || l->a == 0 || fabs(l->h0 - u->h0) > 1e-3 * s.ps.step)
+                continue;
+            pairs++;
+            lower += u->F < l->F;
+            wider += u->a > l->a;
+        }
+    }
+    ok(pairs > 50, "Figure 4: %zu positions in contact on both branches", pairs);
+    ok(lower == pairs, "Figure 4: unloading force below loading force at every one (%zu of %zu)", lower, pairs);
+    ok(wider == pairs, "Figure 4: contact radius larger on unloading at every one (%zu of %zu)", wider, pairs);
+    ok(t && t->jump_out_h0 > s.run.jump_in_h0, "Figure 4: jump out (%.2f nm) after the jump-in position (%.2f nm)",
+       t->jump_out_h0 * 1e9, s.run.jump_in_h0 * 1e9);
+    adh_derived d;
+    adh_material_derive(&s.m, &d);
+    ok(t && t->pulloff_F < d.F_jkr, "Figure 4: pull-off %.3g uN beyond the JKR static value %.3g uN (dynamic hysteresis)",
+       t->pulloff_F * 1e6, d.F_jkr * 1e6);
+    setup_free(&s);
+}
+
+int main(void)
+{
+    rigid_limit();
+    bulge();
+    jump_separation();
+    figure1();
+    figure4();
+    return tap_done();
+}
