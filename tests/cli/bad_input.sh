@@ -1,0 +1,54 @@
+#!/bin/sh
+# Every bad input named in the core issue: exit status 2, one message naming
+# the value and what is allowed, and no output file left behind.
+. "$(dirname "$0")/lib.sh"
+
+bad() { # bad "expected text" args...
+    want=$1; shift
+    out="$TMP/out$T"
+    "$ADHERE" --batch -q -o "$out" "$@" >"$TMP/stdout" 2>"$TMP/stderr"
+    rc=$?
+    msg=$(cat "$TMP/stderr")
+    if [ "$rc" -eq 2 ] && grep -q -- "$want" "$TMP/stderr" && [ ! -e "$out/force.tsv" ] && [ ! -e "$out/summary.tsv" ] \
+        && [ "$(wc -l <"$TMP/stderr")" -eq 1 ]; then
+        ok "$* -> exit 2: $msg"
+    else
+        not_ok "$* -> exit $rc (want 2 and '$want', no tables): $msg"
+    fi
+}
+
+bad "E (modulus) = 0 Pa is out of range" -E 0
+bad "E (modulus) = -1e+09 Pa is out of range" -E -1GPa
+bad "A (Hamaker constant) = 0 J is out of range" -A 0
+bad "z0 (equilibrium separation) = -5e-10 m" --z0=-0.5nm
+bad "R (effective radius) = 0 m is out of range" -R 0
+bad "expected a whole number from 10 to 20000" -N 5
+bad "expected a whole number from 10 to 20000" --nodes=1e3
+bad "too coarse" -N 20
+bad "too short" --spacing=0.5nm
+bad "unknown option '--frobnicate'" --frobnicate
+bad "unknown option '-x'" -x
+bad "needs a value" --modulus
+bad "'abc' is not a number" -E abc
+bad "'nan' is not a number" -E nan
+bad "'inf' is not a number" -R inf
+bad "unknown unit 'parsecs'" -R 5parsecs
+bad "is a length (m, nm, um, ...), but a pressure" -E 5nm
+bad "is a pressure (Pa, MPa, GPa, ...), but a length" --eps=1GPa
+bad "must lie below the start" --turn=50nm
+bad "must lie below the start" --start=5nm --turn=-1nm,6nm
+bad "eps = 0 m is not allowed" --eps=0
+bad "eps = -1e-12 m is not allowed" --eps=-1pm
+bad "'paperish' is not a kernel" --kernel=paperish
+bad "out of the range of finite numbers" -E 1e999
+bad "step d = 0 m is not allowed" --step=0
+bad "more than one scene" fig1 fig2
+bad "no scene named 'nosuchscene'" nosuchscene
+
+# An output path that cannot be a directory.
+touch "$TMP/afile"
+"$ADHERE" --batch -q -N 100 --turn=none -o "$TMP/afile/sub" >/dev/null 2>"$TMP/stderr"
+rc=$?
+if [ "$rc" -eq 2 ] && grep -q "cannot create directory" "$TMP/stderr"; then ok "unwritable --out -> exit 2: $(cat "$TMP/stderr")"; else not_ok "unwritable --out -> exit $rc"; fi
+
+done_testing

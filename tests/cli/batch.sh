@@ -1,0 +1,48 @@
+#!/bin/sh
+# A batch run writes the tables the core issue names, with their columns and
+# keys; without --out the force table streams to standard output; SIGINT
+# leaves valid tables that say they are partial.
+. "$(dirname "$0")/lib.sh"
+
+out="$TMP/run"
+"$ADHERE" --batch -q --no-plot -N 100 --eps=3pm --turn=-2nm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
+rc=$?
+check "batch run exits 0 (got $rc: $(head -c 300 "$TMP/stderr"))" [ "$rc" -eq 0 ]
+header=$(grep -v '^#' "$out/force.tsv" | head -1)
+for col in h0 F delta hc a iters branch F_rigid converged; do
+    check "force.tsv has column $col" sh -c "printf '%s\n' '$header' | tr '\t' '\n' | grep -qx '$col'"
+done
+for key in sigma gamma mu jump_in_h0 max_load pulloff_F jump_out_h0 iterations seconds converged; do
+    check "summary.tsv has key $key" grep -q "^$key	" "$out/summary.tsv"
+done
+check "summary says converged 1" grep -qx "converged	1" "$out/summary.tsv"
+check "summary sigma is 7.50 for the default scene" awk -F'\t' '$1=="sigma" && $2>7.49 && $2<7.51 {f=1} END {exit !f}' "$out/summary.tsv"
+check "both branches are in force.tsv" sh -c "grep -v '^#' '$out/force.tsv' | cut -f8 | sort -u | tr '\n' ' ' | grep -q -- '+1' && grep -v '^#' '$out/force.tsv' | cut -f8 | grep -q -- '-1'"
+check "numbers are written at full precision" awk -F'\t' 'NR>4 && length($1) >= 15 {f=1} END {exit !f}' "$out/force.tsv"
+check "no temporary files are left" sh -c "! ls -a '$out' | grep -q tmp"
+check "turns.tsv names the turning point" awk -F'\t' '!/^#/ && NR>3 && $1 < -1.99e-9 && $1 > -2.01e-9 {f=1} END {exit !f}' "$out/turns.tsv"
+
+# Standard output when there is no --out.
+"$ADHERE" --batch -q -N 100 --eps=3pm --turn=none >"$TMP/stdout" 2>"$TMP/stderr"
+rc=$?
+check "stdout run exits 0" [ "$rc" -eq 0 ]
+check "the force table goes to stdout with its header" grep -q "^h0	F	delta" "$TMP/stdout"
+rows=$(grep -cv '^#' "$TMP/stdout")
+check "precontact run stops at the jump into contact ($rows lines)" [ "$rows" -gt 100 ]
+last_a=$(grep -v '^#' "$TMP/stdout" | tail -1 | cut -f5)
+check "its last row is in contact (a = $last_a)" awk "BEGIN {exit !($last_a > 0)}"
+
+# SIGINT halfway: tables valid, marked partial, exit 130.
+"$ADHERE" --batch -q --no-plot -N 200 --eps=0.5pm -o "$TMP/int" >/dev/null 2>"$TMP/stderr" &
+pid=$!
+sleep 2
+kill -INT $pid
+wait $pid
+rc=$?
+check "SIGINT ends the batch with status 130 (got $rc)" [ "$rc" -eq 130 ]
+check "force.tsv says it is partial" grep -q "^# PARTIAL: interrupted" "$TMP/int/force.tsv"
+check "summary.tsv says complete 0" grep -qx "complete	0" "$TMP/int/summary.tsv"
+n=$(grep -cv '^#' "$TMP/int/force.tsv")
+check "the rows computed so far are kept ($n lines)" [ "$n" -gt 10 ]
+check "every kept row has all 13 columns" awk -F'\t' '!/^#/ && NF != 13 {bad=1} END {exit bad}' "$TMP/int/force.tsv"
+done_testing

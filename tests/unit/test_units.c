@@ -1,0 +1,71 @@
+/* Numbers with units: every accepted form, and every rejection naming why. */
+#include <string.h>
+
+#include "adhere/units.h"
+#include "tap.h"
+
+static void accepts(const char *text, adh_quantity q, double want)
+{
+    double v = 0;
+    char why[256] = "";
+    int rc = adh_parse_quantity(text, q, &v, why, sizeof why);
+    ok(rc == 0 && fabs(v - want) <= 1e-12 * fabs(want), "'%s' parses to %g (got %g) %s", text, want, v, why);
+}
+
+static void rejects(const char *text, adh_quantity q, const char *mentions)
+{
+    double v = 12345;
+    char why[256] = "";
+    int rc = adh_parse_quantity(text, q, &v, why, sizeof why);
+    ok(rc != 0 && v == 12345 && strstr(why, mentions), "'%s' is rejected, message mentions '%s': %s", text, mentions, why);
+}
+
+int main(void)
+{
+    accepts("1e9", ADH_Q_PRESSURE, 1e9);
+    accepts("1GPa", ADH_Q_PRESSURE, 1e9);
+    accepts("0.3 GPa", ADH_Q_PRESSURE, 3e8);
+    accepts("300MPa", ADH_Q_PRESSURE, 3e8);
+    accepts("0.5nm", ADH_Q_LENGTH, 0.5e-9);
+    accepts("10um", ADH_Q_LENGTH, 10e-6);
+    accepts("10\xc2\xb5m", ADH_Q_LENGTH, 10e-6);
+    accepts("1.5cm", ADH_Q_LENGTH, 1.5e-2);
+    accepts("2mm", ADH_Q_LENGTH, 2e-3);
+    accepts("3m", ADH_Q_LENGTH, 3);
+    accepts("1pm", ADH_Q_LENGTH, 1e-12);
+    accepts("-5nm", ADH_Q_LENGTH, -5e-9);
+    accepts("1e-19J", ADH_Q_ENERGY, 1e-19);
+    accepts("100zJ", ADH_Q_ENERGY, 1e-19);
+    accepts("1um/s", ADH_Q_SPEED, 1e-6);
+    accepts(" 7 ", ADH_Q_NONE, 7);
+    rejects("5nm", ADH_Q_PRESSURE, "a length");
+    rejects("1GPa", ADH_Q_LENGTH, "a pressure");
+    rejects("abc", ADH_Q_LENGTH, "not a number");
+    rejects("nan", ADH_Q_LENGTH, "not a number");
+    rejects("inf", ADH_Q_PRESSURE, "not a number");
+    rejects("-inf", ADH_Q_PRESSURE, "not a number");
+    rejects("0x10", ADH_Q_LENGTH, "not a number");
+    rejects("1e999", ADH_Q_LENGTH, "range");
+    rejects("5 furlongs", ADH_Q_LENGTH, "unknown unit");
+    rejects("", ADH_Q_LENGTH, "not a number");
+    rejects("5nm", ADH_Q_NONE, "plain number");
+    char longtext[300];
+    memset(longtext, '1', sizeof longtext - 1);
+    longtext[sizeof longtext - 1] = '\0';
+    rejects(longtext, ADH_Q_LENGTH, "longer than");
+    rejects("\x01\x02\xff", ADH_Q_LENGTH, "not a number");
+
+    long n = -1;
+    char why[256];
+    ok(adh_parse_count("1000", 10, 20000, &n, why, sizeof why) == 0 && n == 1000, "count 1000 parses");
+    ok(adh_parse_count("5", 10, 20000, &n, why, sizeof why) != 0 && strstr(why, "from 10 to 20000"), "count 5 below 10 is rejected: %s", why);
+    ok(adh_parse_count("12.5", 10, 20000, &n, why, sizeof why) != 0, "count 12.5 is rejected");
+    ok(adh_parse_count("99999999999999999999999", 10, 20000, &n, why, sizeof why) != 0, "an overflowing count is rejected");
+
+    char buf[64];
+    adh_format_quantity(3e8, ADH_Q_PRESSURE, 3, buf, sizeof buf);
+    ok(strcmp(buf, "300 MPa") == 0, "3e8 Pa formats as '300 MPa' (got '%s')", buf);
+    adh_format_quantity(-5e-9, ADH_Q_LENGTH, 3, buf, sizeof buf);
+    ok(strcmp(buf, "-5 nm") == 0, "-5e-9 m formats as '-5 nm' (got '%s')", buf);
+    return tap_done();
+}
