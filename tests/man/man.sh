@@ -1,0 +1,31 @@
+#!/bin/sh
+# The man pages lint clean and match the program: every long option that
+# --help lists and every key --list-keys prints is documented in adhere.1.
+. "$(dirname "$0")/../cli/lib.sh"
+cd "${ADHERE_SRC:-.}"
+for page in man/*.[0-9]; do
+    out=$(mandoc -Tlint -W warning "$page" 2>&1)
+    if [ -z "$out" ]; then ok "mandoc -Tlint -W warning $page is clean"; else not_ok "mandoc lint $page: $out"; fi
+done
+opts=$("$ADHERE" --help | grep -oE -- '--[a-z][a-z0-9-]+' | sort -u)
+check "--help lists at least 30 long options" [ "$(echo "$opts" | wc -l)" -ge 30 ]
+for o in $opts; do
+    name=${o#--}
+    # mdoc writes --name as \-name inside Fl, or \-\-name in text.
+    esc=$(printf '%s' "$name" | sed 's/-/\\\\-/g')
+    if grep -q -- "Fl \\\\-$esc" man/adhere.1; then ok "$o is documented in adhere.1"; else not_ok "$o is missing from adhere.1 OPTIONS"; fi
+done
+# Every option the parser accepts is in --help: the table is the same one, but
+# check that an option from each family is accepted, so the table is live.
+for o in --no-clock --quiet --no-plot; do
+    "$ADHERE" "$o" --help >/dev/null 2>&1 && ok "$o is accepted" || not_ok "$o is not accepted"
+done
+keys=$("$ADHERE" --list-keys | cut -f1)
+check "--list-keys prints the key table" [ -n "$keys" ]
+keysec=$(sed -n '/^\.Sh KEYS/,/^\.Sh /p' man/adhere.1)
+printf '%s\n' "$keys" | while IFS= read -r k; do
+    [ -n "$k" ] || continue
+    esc=$(printf '%s' "$k" | sed 's/[][\.*^$]/\\&/g; s/-/\\\\-/g')
+    if printf '%s' "$keysec" | grep -q -- "$esc"; then echo "ok - key '$k' is in the KEYS section"; else echo "not ok - key '$k' is missing from the KEYS section"; fi
+done
+done_testing
