@@ -8,10 +8,26 @@
 #include "adhere/protocol.h"
 #include "scene/config.h"
 
-/* Writes the plots cfg->plots asks for into dir. Returns 0, or 3 when gnuplot
- * is missing, dies or reports an error (msg says what; the tables are still
- * written), or 2 when dir cannot be written. */
+/* Writes the plots cfg->plots asks for into dir, beside profiles.tsv and
+ * contact.tsv (always written, also with cfg->plot == 0 or no gnuplot).
+ * Returns 0 (msg names the files written and any figure skipped for lack of
+ * data), or 3 when gnuplot is missing, dies or reports an error (msg says
+ * what, quoting gnuplot; the tables are still written), or 2 when dir cannot
+ * be written. gnuplot's stderr goes to dir/gnuplot.log, kept only when it
+ * holds something. */
 int adh_plots_write(const adh_config *cfg, const adh_run *run, const char *dir,
                     char *msg, size_t msglen);
+
+/* The installed data directory holding sub ("gnuplot", "scenes"): the first
+ * that exists of $ADHERE_DATADIR/sub, ADH_DATADIR/sub (the install prefix)
+ * and ADH_SRCDATA/sub (the source tree, so an uninstalled build works).
+ * 0, or -1 when none exists (buf then holds the last candidate). */
+int adh_data_dir(const char *sub, char *buf, size_t len);
+
+/* The gnuplot style file in use: cfg->gnuplot_style (a file, or a directory
+ * holding style.gp) if set, else style.gp in adh_data_dir("gnuplot").
+ * 0; 1 when no style is set and none is installed (buf = "", the built-in
+ * defaults serve); -1 when cfg->gnuplot_style names nothing readable (msg). */
+int adh_plot_style_file(const adh_config *cfg, char *buf, size_t len, char *msg, size_t msglen);
 
 #endif

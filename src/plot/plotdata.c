@@ -1,0 +1,173 @@
+#include "plot/plotdata.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "adhere/params.h"
+
+long adh_row_next_on_path(const adh_run *run, size_t i)
+{
+    for (size_t j = i + 1; j < run->nrows; j++)
+        if (run->rows[j].path == run->rows[i].path)
+            return (long)j;
+    return -1;
+}
+
+long adh_row_prev_on_path(const adh_run *run, size_t i)
+{
+    for (size_t j = i; j-- > 0;)
+        if (run->rows[j].path == run->rows[i].path)
+            return (long)j;
+    return -1;
+}
+
+/* Slope between two rows, NAN when either is out of contact or h0 did not
+ * move (a dwell leaves h0 fixed: no drive, no defined da/dh0). */
+static double slope(const adh_obs *x, const adh_obs *y)
+{
+    double dh = y->h0 - x->h0;
+    if (!(x->a > 0) || !(y->a > 0) || fabs(dh) < 1e-18)
+        return NAN;
+    return (y->a - x->a) / dh;
+}
+
+void adh_contact_speed(const adh_run *run, double drive_speed, double *dadh0, double *dadt)
+{
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        long p = adh_row_prev_on_path(run, i), n = adh_row_next_on_path(run, i);
+        double d = NAN;
+        if (o->a > 0) {
+            double back = p >= 0 ? slope(&run->rows[p], o) : NAN;
+            double fwd = n >= 0 ? slope(o, &run->rows[n]) : NAN;
+            if (!isnan(back) && !isnan(fwd) && p >= 0 && n >= 0) {
+                /* the central difference over both neighbours, second order
+                 * on a uniform drive and still exact on a non-uniform one */
+                d = slope(&run->rows[p], &run->rows[n]);
+                if (isnan(d))
+                    d = 0.5 * (back + fwd);
+            } else {
+                d = !isnan(fwd) ? fwd : back;
+            }
+        }
+        dadh0[i] = d;
+        /* loading drives h0 down (dh0/dt = -v), unloading up (+v) */
+        double dh0dt = (o->branch > 0 ? -1.0 : 1.0) * drive_speed;
+        dadt[i] = d * dh0dt;
+    }
+}
+
+double adh_profile_radius(const adh_config *cfg, size_t n)
+{
+    return ((double)n + 0.5) * adh_config_spacing(cfg);
+}
+
+void adh_table_preamble(FILE *f, const adh_config *cfg, const char *what)
+{
+    adh_derived d;
+    adh_material_derive(&cfg->mat, &d);
+    fprintf(f, "# adhere: %s\n", what);
+    fprintf(f, "# E = %.17g Pa, A = %.17g J, z0 = %.17g m, R = %.17g m\n", cfg->mat.E,
+            cfg->mat.A, cfg->mat.z0, cfg->mat.R);
+    fprintf(f, "# sigma = %.6g, gamma = %.6g J/m^2, N = %zu, spacing = %.17g m\n", d.sigma,
+            d.gamma, cfg->nodes, adh_config_spacing(cfg));
+}
+
+/* Writes to path.tmp and renames, so a reader never sees half a table. */
+static FILE *open_tmp(const char *path, char *tmp, size_t tmplen, char *msg, size_t msglen)
+{
+    snprintf(tmp, tmplen, "%s.tmp%ld", path, (long)getpid());
+    FILE *f = fopen(tmp, "w");
+    if (!f)
+        snprintf(msg, msglen, "cannot write %s: %s", path, strerror(errno));
+    return f;
+}
+
+static int close_tmp(FILE *f, const char *tmp, const char *path, char *msg, size_t msglen)
+{
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        snprintf(msg, msglen, "cannot write %s: %s", path, strerror(errno ? errno : EIO));
+        unlink(tmp);
+        return -1;
+    }
+    if (rename(tmp, path) != 0) {
+        snprintf(msg, msglen, "cannot rename %s to %s: %s", tmp, path, strerror(errno));
+        unlink(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+int adh_write_profiles_table(const adh_config *cfg, const adh_run *run, const char *path,
+                             char *msg, size_t msglen)
+{
+    char tmp[PATH_MAX + 32];
+    FILE *f = open_tmp(path, tmp, sizeof tmp, msg, msglen);
+    if (!f)
+        return -1;
+    adh_table_preamble(f, cfg, "surface profiles at the stored drive positions");
+    fprintf(f, "# branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading "
+               "branch\n");
+    for (size_t t = 0; t < run->nturns; t++)
+        fprintf(f, "# path %d unloads from the turn at h0 = %.17g m\n", run->turns[t].path,
+                run->turns[t].h0);
+    fprintf(f, "# h gap, u deformation, p pressure (positive repulsive), "
+               "h_sphere = h0 + r^2/(2R) the undeformed gap\n");
+    if (run->nprofiles == 0)
+        fprintf(f, "# no profiles stored: ask for positions with --profiles=M[,M...]\n");
+    fprintf(f, "h0_m\tbranch\tpath\tr_m\th_m\tu_m\tp_Pa\th_sphere_m\n");
+    for (size_t k = 0; k < run->nprofiles; k++) {
+        const adh_profile *pr = &run->profiles[k];
+        for (size_t n = 0; n < cfg->nodes; n++) {
+            double r = adh_profile_radius(cfg, n);
+            fprintf(f, "%.17g\t%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", pr->h0,
+                    pr->branch, pr->path, r, pr->h[n], pr->u[n], pr->p[n],
+                    pr->h0 + r * r / (2.0 * cfg->mat.R));
+        }
+    }
+    return close_tmp(f, tmp, path, msg, msglen);
+}
+
+int adh_write_contact_table(const adh_config *cfg, const adh_run *run, const char *path,
+                            char *msg, size_t msglen)
+{
+    double *dadh0 = NULL, *dadt = NULL;
+    if (run->nrows) {
+        dadh0 = malloc(run->nrows * sizeof *dadh0);
+        dadt = malloc(run->nrows * sizeof *dadt);
+        if (!dadh0 || !dadt) {
+            free(dadh0);
+            free(dadt);
+            snprintf(msg, msglen, "cannot write %s: out of memory", path);
+            return -1;
+        }
+        adh_contact_speed(run, cfg->drive_speed, dadh0, dadt);
+    }
+    char tmp[PATH_MAX + 32];
+    FILE *f = open_tmp(path, tmp, sizeof tmp, msg, msglen);
+    if (!f) {
+        free(dadh0);
+        free(dadt);
+        return -1;
+    }
+    adh_table_preamble(f, cfg, "contact radius and contact-line speed");
+    fprintf(f, "# in contact where the gap is below %.2g z0; a = 0 out of contact\n",
+            ADH_CONTACT_FACTOR);
+    fprintf(f, "# drive speed |dh0/dt| = %.17g m/s (h0 falls on loading, rises on "
+               "unloading); da_dt = da/dh0 * dh0/dt, positive while the contact spreads, "
+               "nan out of contact\n", cfg->drive_speed);
+    fprintf(f, "h0_m\tbranch\tpath\ta_m\tda_dh0\tda_dt_m_per_s\n");
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        fprintf(f, "%.17g\t%d\t%d\t%.17g\t%.17g\t%.17g\n", o->h0, o->branch, o->path, o->a,
+                dadh0[i], dadt[i]);
+    }
+    free(dadh0);
+    free(dadt);
+    return close_tmp(f, tmp, path, msg, msglen);
+}

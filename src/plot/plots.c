@@ -1,0 +1,912 @@
+/* The three figures (force.png, profile.png, contact.png) as gnuplot
+ * commands over temporary data files, and adh_plots_write tying tables,
+ * style and gnuplot process together. */
+#include "plot/plot.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "adhere/params.h"
+#include "plot/gnuplot.h"
+#include "plot/plotdata.h"
+
+#define SYNC_TIMEOUT_S 60.0
+#define MAX_LABELLED_UNLOADS 8
+
+/* Defaults sent before the style file, so a style may set only what it
+ * changes and a missing style still gives the same figures. */
+static const char *const builtin_style[] = {
+    "set terminal pngcairo size 900,600 enhanced font \"DejaVu Sans,11\" linewidth 1",
+    "set encoding utf8",
+    "set grid lc rgb \"#dddddd\"",
+    "set tics out nomirror",
+    "set key box opaque samplen 2.5 spacing 1.1 font \",10\"",
+    "adh_loading_color = \"#1f3f8f\"",
+    "adh_unload_colors = \"#c0392b #e67e22 #27ae60 #8e44ad #16a085 #d35400 #2c3e50\"",
+    "adh_profile_colors = \"#1f3f8f #2e6fb7 #3aa0c8 #27ae60 #8bc34a #c9b600 #e67e22 #d35400 "
+    "#c0392b #8e44ad\"",
+    "adh_loading_width = 2.5",
+    "adh_unloading_width = 1.6",
+    "adh_unstable_dash = 2",
+    "set style line 1 lc rgb adh_loading_color lw adh_loading_width",
+    "set style line 2 lc rgb \"#000000\" lw 1.2",
+    "set style line 3 lc rgb \"#2e7d32\" lw 1.4 dt 3",
+    "set style line 4 lc rgb \"#6a1b9a\" lw 1.4 dt 4",
+    "set style line 5 lc rgb \"#000000\" lw 1.2 dt 3",
+    "set style line 6 lc rgb \"#c0392b\" lw 1.6 pt 7 ps 0.9",
+    "set style line 7 lc rgb \"#888888\" lw 1",
+};
+
+typedef struct plotter {
+    const adh_config *cfg;
+    const adh_run *run;
+    const char *dir;
+    adh_gnuplot *gp;
+    adh_derived d;
+    char style[PATH_MAX];     /* "" = built-in defaults only */
+    char tmpdir[PATH_MAX];    /* data files for gnuplot, removed at the end */
+    char done[512];           /* files written, for msg */
+    char notes[512];          /* figures skipped for lack of data */
+    char error[1024];         /* the first gnuplot failure */
+} plotter;
+
+static void append(char *buf, size_t len, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static void append(char *buf, size_t len, const char *fmt, ...)
+{
+    size_t n = strlen(buf);
+    if (n + 1 >= len)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf + n, len - n, fmt, ap);
+    va_end(ap);
+}
+
+/* A gnuplot single-quoted string: nothing is special inside but the quote
+ * itself, which is doubled, so any path survives. */
+static const char *quoted(const char *s, char *buf, size_t len)
+{
+    size_t j = 0;
+    if (len < 3)
+        return "''";
+    buf[j++] = '\'';
+    for (; *s && j + 3 < len; s++) {
+        if (*s == '\'')
+            buf[j++] = '\'';
+        buf[j++] = *s;
+    }
+    buf[j++] = '\'';
+    buf[j] = '\0';
+    return buf;
+}
+
+/* A force unit that keeps the plotted numbers between about 0.1 and 1000. */
+static void force_unit(double fmax, double *scale, const char **name)
+{
+    if (fmax >= 1e-4) {
+        *scale = 1e3; *name = "mN";
+    } else if (fmax >= 1e-7) {
+        *scale = 1e6; *name = "µN";
+    } else if (fmax >= 1e-10) {
+        *scale = 1e9; *name = "nN";
+    } else {
+        *scale = 1e12; *name = "pN";
+    }
+}
+
+/* 1, 2 or 5 times a power of ten, at least x */
+static double nice_step(double x)
+{
+    double p = pow(10.0, floor(log10(x)));
+    return x <= p ? p : x <= 2 * p ? 2 * p : x <= 5 * p ? 5 * p : 10 * p;
+}
+
+/* A length with a prefix chosen for it, e.g. "10 µm", "1.5 cm". */
+static void format_length(double v, char *buf, size_t len)
+{
+    double a = fabs(v);
+    if (a >= 1e-2)
+        snprintf(buf, len, "%.3g cm", v * 1e2);
+    else if (a >= 1e-3)
+        snprintf(buf, len, "%.3g mm", v * 1e3);
+    else if (a >= 1e-6)
+        snprintf(buf, len, "%.3g µm", v * 1e6);
+    else
+        snprintf(buf, len, "%.3g nm", v * 1e9);
+}
+
+static void format_modulus(double v, char *buf, size_t len)
+{
+    if (v >= 1e9)
+        snprintf(buf, len, "%.3g GPa", v * 1e-9);
+    else if (v >= 1e6)
+        snprintf(buf, len, "%.3g MPa", v * 1e-6);
+    else
+        snprintf(buf, len, "%.3g kPa", v * 1e-3);
+}
+
+/* "σ = 7.50, γ = 7.96 mJ/m², R = 10 µm, E = 0.3 GPa" for titles. */
+static void material_line(const plotter *pl, char *buf, size_t len)
+{
+    char r[32], e[32];
+    format_length(pl->cfg->mat.R, r, sizeof r);
+    format_modulus(pl->cfg->mat.E, e, sizeof e);
+    snprintf(buf, len, "σ = %.3g, γ = %.3g mJ/m^2, R = %s, E = %s", pl->d.sigma,
+             pl->d.gamma * 1e3, r, e);
+}
+
+static const adh_turn_result *turn_of_path(const adh_run *run, int path)
+{
+    for (size_t t = 0; t < run->nturns; t++)
+        if (run->turns[t].path == path)
+            return &run->turns[t];
+    return NULL;
+}
+
+static int max_path(const adh_run *run)
+{
+    int m = 0;
+    for (size_t i = 0; i < run->nrows; i++)
+        if (run->rows[i].path > m)
+            m = run->rows[i].path;
+    return m;
+}
+
+static FILE *data_file(plotter *pl, const char *name, char *path, size_t len)
+{
+    snprintf(path, len, "%s/%s", pl->tmpdir, name);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        append(pl->error, sizeof pl->error, "%scannot write %s: %s", *pl->error ? "; " : "",
+               path, strerror(errno));
+    return f;
+}
+
+static int data_close(plotter *pl, FILE *f, const char *path)
+{
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        append(pl->error, sizeof pl->error, "%scannot write %s", *pl->error ? "; " : "", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* gnuplot merges runs of blank lines, so an empty dataset would shift every
+ * later `index`: each set is collected apart and only non-empty ones are
+ * written, each getting the next index. */
+typedef struct datafile {
+    FILE *f;          /* the file gnuplot reads */
+    FILE *cur;        /* the set being collected */
+    char *buf;
+    size_t buflen, points;
+    int nsets, broken, bad;
+} datafile;
+
+static int set_begin(datafile *df)
+{
+    df->buf = NULL;
+    df->buflen = 0;
+    df->points = 0;
+    df->broken = 1;
+    df->cur = open_memstream(&df->buf, &df->buflen);
+    if (!df->cur)
+        df->bad = 1;
+    return df->cur ? 0 : -1;
+}
+
+static void set_point(datafile *df, double x, double y)
+{
+    if (!df->cur)
+        return;
+    fprintf(df->cur, "%.17g\t%.17g\n", x, y);
+    df->points++;
+    df->broken = 0;
+}
+
+/* A single blank line: the curve is broken here but the set goes on. */
+static void set_break(datafile *df)
+{
+    if (df->cur && !df->broken)
+        fputs("\n", df->cur);
+    df->broken = 1;
+}
+
+/* The set's index, or -1 when it had no points (and was not written). */
+static int set_end(datafile *df)
+{
+    if (!df->cur)
+        return -1;
+    fclose(df->cur);
+    df->cur = NULL;
+    int idx = -1;
+    if (df->points > 0) {
+        if (fwrite(df->buf, 1, df->buflen, df->f) != df->buflen)
+            df->bad = 1;
+        fputs("\n\n", df->f);
+        idx = df->nsets++;
+    }
+    free(df->buf);
+    df->buf = NULL;
+    return idx;
+}
+
+/* reset, defaults, the style, and the output to a temporary name in dir
+ * (renamed into place only when gnuplot reports success). */
+static void begin_figure(plotter *pl, const char *figure, const char *tmp_png)
+{
+    char q[PATH_MAX + 8];
+    adh_gnuplot_cmd(pl->gp, "reset");
+    for (size_t i = 0; i < sizeof builtin_style / sizeof builtin_style[0]; i++)
+        adh_gnuplot_cmd(pl->gp, "%s", builtin_style[i]);
+    adh_gnuplot_cmd(pl->gp, "adh_figure = \"%s\"", figure);
+    if (pl->style[0])
+        adh_gnuplot_cmd(pl->gp, "load %s", quoted(pl->style, q, sizeof q));
+    adh_gnuplot_cmd(pl->gp, "set output %s", quoted(tmp_png, q, sizeof q));
+}
+
+static int png_nonempty(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 8;
+}
+
+/* Closes the PNG, waits for gnuplot's verdict, and moves the file into place. */
+static int finish_figure(plotter *pl, const char *name, const char *tmp_png)
+{
+    char final[PATH_MAX + 64], why[1024];
+    adh_gnuplot_cmd(pl->gp, "unset output");
+    snprintf(final, sizeof final, "%s/%s", pl->dir, name);
+    int rc = adh_gnuplot_sync(pl->gp, SYNC_TIMEOUT_S, why, sizeof why);
+    if (rc == 0 && !png_nonempty(tmp_png)) {
+        snprintf(why, sizeof why, "gnuplot wrote no image to %s", tmp_png);
+        rc = -1;
+    }
+    if (rc == 0 && rename(tmp_png, final) != 0) {
+        snprintf(why, sizeof why, "cannot rename %s to %s: %s", tmp_png, final,
+                 strerror(errno));
+        rc = -1;
+    }
+    if (rc != 0) {
+        unlink(tmp_png);
+        if (!*pl->error)
+            snprintf(pl->error, sizeof pl->error, "%s: %s", name, why);
+        return -1;
+    }
+    append(pl->done, sizeof pl->done, "%s%s", *pl->done ? ", " : "", name);
+    return 0;
+}
+
+static void tmp_png_name(const plotter *pl, const char *name, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s/.%s.tmp%ld", pl->dir, name, (long)getpid());
+}
+
+/* ---------------------------------------------------------------- force */
+
+/* One dataset: the rows of path whose stability is `stable`, plus the row
+ * after each such stretch so dashed and solid stretches meet; a blank line
+ * breaks the curve between stretches. Returns its index or -1 if empty. */
+static int write_force_set(datafile *df, const adh_run *run, int path, int stable)
+{
+    int prev_stable = -1;
+    if (set_begin(df) < 0)
+        return -1;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        if (o->path != path)
+            continue;
+        if (o->stable == stable || prev_stable == stable)
+            set_point(df, o->h0, o->F);
+        else
+            set_break(df);
+        prev_stable = o->stable;
+    }
+    return set_end(df);
+}
+
+static void unload_color(int path, char *buf, size_t len)
+{
+    snprintf(buf, len, "lc rgb word(adh_unload_colors, 1 + %d %% words(adh_unload_colors))",
+             path - 1);
+}
+
+static int plot_force(plotter *pl)
+{
+    const adh_run *run = pl->run;
+    const adh_derived *d = &pl->d;
+    if (run->nrows < 2) {
+        append(pl->notes, sizeof pl->notes, "%sforce.png skipped: fewer than 2 rows",
+               *pl->notes ? "; " : "");
+        return 0;
+    }
+    char dat[PATH_MAX + 32], adh[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    FILE *f = data_file(pl, "force.dat", dat, sizeof dat);
+    if (!f)
+        return -1;
+
+    /* set[2k + (1 - stable)]: the index of path k's stable / unstable rows */
+    int np = max_path(run);
+    int *set = malloc(2 * ((size_t)np + 1) * sizeof *set);
+    if (!set) {
+        fclose(f);
+        return -1;
+    }
+    datafile df = { .f = f };
+    for (int p = 0; p <= np; p++)
+        for (int s = 1; s >= 0; s--)
+            set[2 * p + (1 - s)] = write_force_set(&df, run, p, s);
+    double flo = INFINITY, fhi = -INFINITY, xmin = INFINITY, xmax = -INFINITY;
+    set_begin(&df);
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        flo = fmin(flo, o->F);
+        fhi = fmax(fhi, o->F);
+        xmin = fmin(xmin, o->h0);
+        xmax = fmax(xmax, o->h0);
+        /* eq 22 only means something while the rigid surfaces are apart */
+        if (o->path == 0 && o->h0 > 0 && isfinite(o->F_rigid))
+            set_point(&df, o->h0, o->F_rigid);
+    }
+    int rigid_set = df.points > 1 ? set_end(&df) : (set_end(&df), -1);
+    if (data_close(pl, f, dat) < 0 || df.bad) {
+        free(set);
+        return -1;
+    }
+
+    /* Adhesion against maximum load, one point per turn, in load order. */
+    size_t nadh = 0;
+    f = data_file(pl, "adhesion.dat", adh, sizeof adh);
+    if (!f) {
+        free(set);
+        return -1;
+    }
+    size_t order[ADH_MAX_TURNS];
+    for (size_t t = 0; t < run->nturns; t++)
+        if (isfinite(run->turns[t].pulloff_F) && isfinite(run->turns[t].max_load))
+            order[nadh++] = t;
+    for (size_t a = 1; a < nadh; a++)
+        for (size_t b = a; b > 0 && run->turns[order[b]].max_load <
+                                    run->turns[order[b - 1]].max_load; b--) {
+            size_t x = order[b];
+            order[b] = order[b - 1];
+            order[b - 1] = x;
+        }
+    for (size_t k = 0; k < nadh; k++)
+        fprintf(f, "%.17g\t%.17g\n", run->turns[order[k]].max_load,
+                -run->turns[order[k]].pulloff_F);
+    if (data_close(pl, f, adh) < 0) {
+        free(set);
+        return -1;
+    }
+
+    double fscale;
+    const char *funit;
+    double big = fmax(fabs(flo), fmax(fabs(fhi), fabs(d->F_dmt)));
+    force_unit(big, &fscale, &funit);
+    /* The key sits top right, where the force has decayed to about zero;
+     * the top of the frame is raised until the key clears every curve in
+     * the right 60 % (the rigid force rises steeply only near h0 = z0). */
+    int nunload = 0;
+    for (int p = 1; p <= np; p++)
+        nunload += set[2 * p] >= 0 || set[2 * p + 1] >= 0;
+    int nkey = (set[0] >= 0) + (set[1] >= 0) + (rigid_set >= 0) + 2 +
+               (nunload > MAX_LABELLED_UNLOADS ? 1 : nunload);
+    double right = 0, xcut = xmin + 0.4 * (xmax - xmin);
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        if (o->h0 < xcut)
+            continue;
+        right = fmax(right, o->F);
+        if (o->path == 0 && o->h0 > 0 && isfinite(o->F_rigid))
+            right = fmax(right, o->F_rigid);
+    }
+    double lo = fmin(flo, d->F_dmt);
+    double frac = fmin(0.6, (17.0 * nkey + 16.0) / 470.0);
+    double hi = fmax(fhi, (right - frac * lo) / (1.0 - frac));
+    lo -= 0.04 * (hi - lo);
+    hi += 0.02 * (hi - lo);
+    double pad = 0;
+    double xpad = 0.02 * (xmax - xmin);
+    char mat[160];
+    material_line(pl, mat, sizeof mat);
+
+    tmp_png_name(pl, "force.png", tmp_png, sizeof tmp_png);
+    begin_figure(pl, "force", tmp_png);
+    adh_gnuplot_cmd(pl->gp, "Fu = %.17g", fscale);
+    adh_gnuplot_cmd(pl->gp, "Fjkr = %.17g", d->F_jkr);
+    adh_gnuplot_cmd(pl->gp, "Fdmt = %.17g", d->F_dmt);
+    int panel = nadh >= 2;
+    if (panel) {
+        adh_gnuplot_cmd(pl->gp, "set multiplot title \"Force vs position: %s\"", mat);
+        adh_gnuplot_cmd(pl->gp, "set origin 0,0");
+        adh_gnuplot_cmd(pl->gp, "set size 0.64,0.96");
+    } else {
+        adh_gnuplot_cmd(pl->gp, "set title \"Force vs position: %s\"", mat);
+    }
+    adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
+    adh_gnuplot_cmd(pl->gp, "set ylabel \"force F (%s)\"", funit);
+    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (xmin - xpad) * 1e9,
+                    (xmax + xpad) * 1e9);
+    adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", (lo - pad) * fscale,
+                    (hi + pad) * fscale);
+    adh_gnuplot_cmd(pl->gp, "set key top right");
+
+    /* one plot command, built up clause by clause */
+    char *cmd = NULL;
+    size_t cmdcap = 0;
+    FILE *c = open_memstream(&cmd, &cmdcap);
+    if (!c) {
+        free(set);
+        return -1;
+    }
+    fprintf(c, "plot 0 ls 7 notitle");
+    const char *qdat = quoted(dat, q, sizeof q);
+    int labelled = 0;
+    for (int p = 0; p <= np; p++) {
+        for (int s = 1; s >= 0; s--) {
+            int idx = set[2 * p + (1 - s)];
+            if (idx < 0)
+                continue;
+            char style[160], title[160];
+            if (p == 0) {
+                snprintf(style, sizeof style, "ls 1%s",
+                         s ? "" : " lw 1.2 dt adh_unstable_dash");
+                snprintf(title, sizeof title, "title \"loading%s\"", s ? "" : " (unstable)");
+            } else {
+                char lc[128];
+                unload_color(p, lc, sizeof lc);
+                snprintf(style, sizeof style, "%s lw %s%s", lc,
+                         s ? "adh_unloading_width" : "1", s ? "" : " dt adh_unstable_dash");
+                const adh_turn_result *tr = turn_of_path(run, p);
+                if (!s)
+                    snprintf(title, sizeof title, "notitle");
+                else if (nunload > MAX_LABELLED_UNLOADS)
+                    snprintf(title, sizeof title, labelled++ ? "notitle"
+                             : "title \"unloading (%d branches)\"", nunload);
+                else if (tr)
+                    snprintf(title, sizeof title, "title \"unloading from h_0 = %.3g nm\"",
+                             tr->h0 * 1e9);
+                else
+                    snprintf(title, sizeof title, "title \"unloading\"");
+            }
+            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines %s %s", qdat,
+                    idx, style, title);
+        }
+    }
+    if (rigid_set >= 0)
+        fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 2 "
+                   "title \"rigid spheres (eq 22)\"", qdat, rigid_set);
+    fprintf(c, ", \\\n  Fjkr*Fu with lines ls 3 title sprintf(\"JKR −(3/2)πγR = %%.3g %s\", "
+               "Fjkr*Fu)", funit);
+    fprintf(c, ", \\\n  Fdmt*Fu with lines ls 4 title sprintf(\"DMT −2πγR = %%.3g %s\", "
+               "Fdmt*Fu)", funit);
+    fclose(c);
+    adh_gnuplot_cmd(pl->gp, "%s", cmd);
+    free(cmd);
+    free(set);
+
+    if (panel) {
+        adh_gnuplot_cmd(pl->gp, "set origin 0.64,0");
+        adh_gnuplot_cmd(pl->gp, "set size 0.36,0.96");
+        adh_gnuplot_cmd(pl->gp, "unset title");
+        adh_gnuplot_cmd(pl->gp, "set autoscale");
+        adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
+        adh_gnuplot_cmd(pl->gp, "set xlabel \"maximum load (%s)\"", funit);
+        /* a narrow panel: about three ticks, or their labels collide */
+        double lmin = INFINITY, lmax = -INFINITY;
+        for (size_t k = 0; k < nadh; k++) {
+            lmin = fmin(lmin, run->turns[order[k]].max_load * fscale);
+            lmax = fmax(lmax, run->turns[order[k]].max_load * fscale);
+        }
+        if (lmax > lmin)
+            adh_gnuplot_cmd(pl->gp, "set xtics %.17g", nice_step((lmax - lmin) / 3.0));
+        adh_gnuplot_cmd(pl->gp, "set ylabel \"adhesion −F_{min} (%s)\"", funit);
+        adh_gnuplot_cmd(pl->gp, "set key bottom right");
+        adh_gnuplot_cmd(pl->gp,
+                        "plot %s using ($1*Fu):($2*Fu) with linespoints ls 6 title \"adhesion\", "
+                        "-Fjkr*Fu with lines ls 3 title \"JKR\", "
+                        "-Fdmt*Fu with lines ls 4 title \"DMT\"",
+                        quoted(adh, q, sizeof q));
+        adh_gnuplot_cmd(pl->gp, "unset multiplot");
+    }
+    return finish_figure(pl, "force.png", tmp_png);
+}
+
+/* -------------------------------------------------------------- profile */
+
+static int cmp_desc(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x < y) - (x > y);
+}
+
+static int plot_profile(plotter *pl)
+{
+    const adh_run *run = pl->run;
+    const adh_config *cfg = pl->cfg;
+    /* Loading and the unloading branch of the deepest turn: with several
+     * turns the other branches would bury the comparison Figure 4B makes. */
+    const adh_turn_result *main_turn = adh_run_main_turn(run);
+    int unload_path = main_turn ? main_turn->path : -1;
+    size_t nsel = 0, *sel = malloc((run->nprofiles + 1) * sizeof *sel);
+    double *pos = malloc((run->nprofiles + 1) * sizeof *pos);
+    if (!sel || !pos) {
+        free(sel);
+        free(pos);
+        return -1;
+    }
+    for (size_t k = 0; k < run->nprofiles; k++)
+        if (run->profiles[k].path == 0 || run->profiles[k].path == unload_path)
+            sel[nsel++] = k;
+    if (nsel == 0) {
+        append(pl->notes, sizeof pl->notes, "%sprofile.png skipped: no profiles stored "
+               "(ask with --profiles=M[,M...])", *pl->notes ? "; " : "");
+        free(sel);
+        free(pos);
+        return 0;
+    }
+    /* distinct positions, top of the figure first, each with one colour */
+    size_t npos = 0;
+    for (size_t k = 0; k < nsel; k++) {
+        double h0 = run->profiles[sel[k]].h0;
+        size_t j = 0;
+        while (j < npos && fabs(pos[j] - h0) > 1e-15)
+            j++;
+        if (j == npos)
+            pos[npos++] = h0;
+    }
+    qsort(pos, npos, sizeof *pos, cmp_desc);
+
+    char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    FILE *f = data_file(pl, "profile.dat", dat, sizeof dat);
+    if (!f) {
+        free(sel);
+        free(pos);
+        return -1;
+    }
+    double amax = 0, rgrid = adh_profile_radius(cfg, cfg->nodes - 1);
+    for (size_t k = 0; k < nsel; k++) {
+        const adh_profile *pr = &run->profiles[sel[k]];
+        for (size_t n = 0; n < cfg->nodes; n++) {
+            double r = adh_profile_radius(cfg, n);
+            fprintf(f, "%.17g\t%.17g\n", r, pr->h[n]);
+            if (pr->h[n] < ADH_CONTACT_FACTOR * cfg->mat.z0 && r > amax)
+                amax = r;
+        }
+        fprintf(f, "\n\n");
+    }
+    if (data_close(pl, f, dat) < 0) {
+        free(sel);
+        free(pos);
+        return -1;
+    }
+
+    /* Frame: wide enough to show the contact and the flank beyond it, high
+     * enough that every position's parabola enters from the top. */
+    double R = cfg->mat.R, top = pos[0], bottom = pos[npos - 1];
+    double rise = fmax(top - bottom, 10.0 * cfg->mat.z0);
+    double xmax = sqrt(2.0 * R * rise);
+    if (xmax < 1.6 * amax)
+        xmax = 1.6 * amax;
+    if (xmax > rgrid)
+        xmax = rgrid;
+    double ymax = top + xmax * xmax / (2.0 * R);
+    char mat[160];
+    material_line(pl, mat, sizeof mat);
+
+    tmp_png_name(pl, "profile.png", tmp_png, sizeof tmp_png);
+    begin_figure(pl, "profile", tmp_png);
+    adh_gnuplot_cmd(pl->gp, "set title \"Surface profiles: %s\"", mat);
+    adh_gnuplot_cmd(pl->gp, "set xlabel \"radial distance r (µm)\"");
+    adh_gnuplot_cmd(pl->gp, "set ylabel \"local separation h(r) (nm)\"");
+    adh_gnuplot_cmd(pl->gp, "set xrange [0:%.17g]", xmax * 1e6);
+    adh_gnuplot_cmd(pl->gp, "set yrange [0:%.17g]", ymax * 1e9);
+    adh_gnuplot_cmd(pl->gp, "set key outside right top");
+    adh_gnuplot_cmd(pl->gp, "set samples 400");
+    adh_gnuplot_cmd(pl->gp, "R = %.17g", R);
+    adh_gnuplot_cmd(pl->gp, "htop = %.17g", top);
+
+    char *cmd = NULL;
+    size_t cmdcap = 0;
+    FILE *c = open_memstream(&cmd, &cmdcap);
+    if (!c) {
+        free(sel);
+        free(pos);
+        return -1;
+    }
+    const char *qdat = quoted(dat, q, sizeof q);
+    fprintf(c, "plot (htop + (x*1e-6)**2/(2*R))*1e9 with lines ls 5 "
+               "title \"undeformed sphere, h_0 = %.3g nm\"", top * 1e9);
+    int titled[ADH_MAX_PROFILES * 2] = { 0 };
+    int any_unload = 0;
+    /* loading first so each position's key entry is its solid curve */
+    for (int pass = 0; pass < 2; pass++) {
+        for (size_t k = 0; k < nsel; k++) {
+            const adh_profile *pr = &run->profiles[sel[k]];
+            int loading = pr->path == 0;
+            if (loading != (pass == 0))
+                continue;
+            size_t j = 0;
+            while (j + 1 < npos && fabs(pos[j] - pr->h0) > 1e-15)
+                j++;
+            char title[96] = "notitle";
+            if (j < sizeof titled / sizeof titled[0] && !titled[j]) {
+                snprintf(title, sizeof title, "title \"h_0 = %.3g nm\"", pr->h0 * 1e9);
+                titled[j] = 1;
+            }
+            any_unload |= !loading;
+            fprintf(c, ", \\\n  %s index %zu using ($1*1e6):($2*1e9) with lines "
+                       "lc rgb word(adh_profile_colors, 1 + %zu %% words(adh_profile_colors)) "
+                       "lw %s dt %d %s", qdat, k, j, loading ? "2" : "1.6", loading ? 1 : 2,
+                    title);
+        }
+    }
+    fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 2 dt 1 title \"loading\"");
+    if (any_unload)
+        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 1.6 dt 2 "
+                   "title \"unloading from %.3g nm\"", main_turn->h0 * 1e9);
+    fclose(c);
+    adh_gnuplot_cmd(pl->gp, "%s", cmd);
+    free(cmd);
+    free(sel);
+    free(pos);
+    return finish_figure(pl, "profile.png", tmp_png);
+}
+
+/* -------------------------------------------------------------- contact */
+
+static int plot_contact(plotter *pl)
+{
+    const adh_run *run = pl->run;
+    size_t n = run->nrows;
+    double *dadh0 = n ? malloc(n * sizeof *dadh0) : NULL;
+    double *dadt = n ? malloc(n * sizeof *dadt) : NULL;
+    int np = max_path(run);
+    int *set = malloc(2 * ((size_t)np + 1) * sizeof *set);
+    char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    int rc = -1;
+    FILE *f = NULL;
+    if ((n && (!dadh0 || !dadt)) || !set)
+        goto out;
+    adh_contact_speed(run, pl->cfg->drive_speed, dadh0, dadt);
+    double xmin = INFINITY, xmax = -INFINITY;
+    for (size_t i = 0; i < n; i++)
+        if (run->rows[i].a > 0) {
+            xmin = fmin(xmin, run->rows[i].h0);
+            xmax = fmax(xmax, run->rows[i].h0);
+        }
+    if (!(xmax >= xmin)) {
+        append(pl->notes, sizeof pl->notes, "%scontact.png skipped: never in contact",
+               *pl->notes ? "; " : "");
+        rc = 0;
+        goto out;
+    }
+    f = data_file(pl, "contact.dat", dat, sizeof dat);
+    if (!f)
+        goto out;
+    /* set[2p]: speed on path p (broken where undefined); set[2p+1]: radius
+     * on path p, in contact plus the row either side so the jumps show */
+    datafile df = { .f = f };
+    for (int p = 0; p <= np; p++) {
+        set_begin(&df);
+        for (size_t i = 0; i < n; i++) {
+            if (run->rows[i].path != p)
+                continue;
+            if (isfinite(dadt[i]))
+                set_point(&df, run->rows[i].h0, dadt[i]);
+            else
+                set_break(&df);
+        }
+        set[2 * p] = set_end(&df);
+        set_begin(&df);
+        for (size_t i = 0; i < n; i++) {
+            if (run->rows[i].path != p)
+                continue;
+            long a = adh_row_prev_on_path(run, i), b = adh_row_next_on_path(run, i);
+            if (run->rows[i].a > 0 || (a >= 0 && run->rows[a].a > 0) ||
+                (b >= 0 && run->rows[b].a > 0))
+                set_point(&df, run->rows[i].h0, run->rows[i].a);
+            else
+                set_break(&df);
+        }
+        set[2 * p + 1] = set_end(&df);
+    }
+    f = NULL;
+    if (data_close(pl, df.f, dat) < 0 || df.bad)
+        goto out;
+
+    double step = fabs(pl->cfg->proto.step);
+    double xpad = fmax(0.03 * (xmax - xmin), 2 * step);
+    char mat[160];
+    material_line(pl, mat, sizeof mat);
+    tmp_png_name(pl, "contact.png", tmp_png, sizeof tmp_png);
+    begin_figure(pl, "contact", tmp_png);
+    adh_gnuplot_cmd(pl->gp, "set multiplot title \"Contact line at drive speed %.3g µm/s: "
+                    "%s\"", pl->cfg->drive_speed * 1e6, mat);
+    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (xmin - xpad) * 1e9,
+                    (xmax + xpad) * 1e9);
+
+    for (int panel = 0; panel < 2; panel++) {
+        const char *qdat = quoted(dat, q, sizeof q);
+        if (panel == 0) {
+            adh_gnuplot_cmd(pl->gp, "set origin 0,0.42");
+            adh_gnuplot_cmd(pl->gp, "set size 1,0.53");
+            adh_gnuplot_cmd(pl->gp, "set format x \"\"");
+            adh_gnuplot_cmd(pl->gp, "unset xlabel");
+            adh_gnuplot_cmd(pl->gp, "set bmargin 1");
+            adh_gnuplot_cmd(pl->gp, "set ylabel \"contact-line speed da/dt (µm/s)\"");
+            adh_gnuplot_cmd(pl->gp, "set key bottom left");
+        } else {
+            adh_gnuplot_cmd(pl->gp, "set origin 0,0");
+            adh_gnuplot_cmd(pl->gp, "set size 1,0.44");
+            adh_gnuplot_cmd(pl->gp, "set format x \"%% g\"");
+            adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
+            adh_gnuplot_cmd(pl->gp, "set tmargin 1");
+            adh_gnuplot_cmd(pl->gp, "set bmargin");
+            adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
+            adh_gnuplot_cmd(pl->gp, "set ylabel \"contact radius a (µm)\"");
+            adh_gnuplot_cmd(pl->gp, "unset key");
+        }
+        /* both panels share the left margin so their x axes line up */
+        adh_gnuplot_cmd(pl->gp, "set lmargin 11");
+        char *cmd = NULL;
+        size_t cmdcap = 0;
+        FILE *c = open_memstream(&cmd, &cmdcap);
+        if (!c)
+            goto out;
+        fprintf(c, "plot %s", panel == 0 ? "0 ls 7 notitle" : "NaN notitle");
+        int nunload = 0, labelled = 0;
+        for (int p = 1; p <= np; p++)
+            nunload += set[2 * p + panel] >= 0;
+        for (int p = 0; p <= np; p++) {
+            int idx = set[2 * p + panel];
+            if (idx < 0)
+                continue;
+            char style[160], title[128];
+            const adh_turn_result *tr = turn_of_path(run, p);
+            if (p == 0) {
+                snprintf(style, sizeof style, "ls 1");
+                snprintf(title, sizeof title, "title \"loading\"");
+            } else {
+                char lc[128];
+                unload_color(p, lc, sizeof lc);
+                snprintf(style, sizeof style, "%s lw adh_unloading_width", lc);
+                if (nunload > MAX_LABELLED_UNLOADS)
+                    snprintf(title, sizeof title, labelled++ ? "notitle"
+                             : "title \"unloading (%d branches)\"", nunload);
+                else if (tr)
+                    snprintf(title, sizeof title, "title \"unloading from h_0 = %.3g nm\"",
+                             tr->h0 * 1e9);
+                else
+                    snprintf(title, sizeof title, "title \"unloading\"");
+            }
+            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s %s", qdat,
+                    idx, style, title);
+        }
+        fclose(c);
+        adh_gnuplot_cmd(pl->gp, "%s", cmd);
+        free(cmd);
+    }
+    adh_gnuplot_cmd(pl->gp, "unset multiplot");
+    rc = finish_figure(pl, "contact.png", tmp_png);
+out:
+    free(dadh0);
+    free(dadt);
+    free(set);
+    return rc;
+}
+
+/* ------------------------------------------------------------- the lot */
+
+static void remove_tmpdir(plotter *pl)
+{
+    static const char *const names[] = { "force.dat", "adhesion.dat", "profile.dat",
+                                         "contact.dat" };
+    char p[PATH_MAX + 32];
+    if (!pl->tmpdir[0])
+        return;
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        snprintf(p, sizeof p, "%s/%s", pl->tmpdir, names[i]);
+        unlink(p);
+    }
+    rmdir(pl->tmpdir);
+}
+
+static int file_empty(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && st.st_size == 0;
+}
+
+int adh_plots_write(const adh_config *cfg, const adh_run *run, const char *dir,
+                    char *msg, size_t msglen)
+{
+    char path[PATH_MAX + 32], why[1024];
+    if (msglen)
+        msg[0] = '\0';
+    if (!dir || !*dir)
+        dir = ".";
+    struct stat st;
+    errno = 0;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || access(dir, W_OK | X_OK) != 0) {
+        snprintf(msg, msglen, "cannot write plots in %s: %s", dir,
+                 errno ? strerror(errno) : "not a writable directory");
+        return 2;
+    }
+    snprintf(path, sizeof path, "%s/profiles.tsv", dir);
+    if (adh_write_profiles_table(cfg, run, path, why, sizeof why) != 0) {
+        snprintf(msg, msglen, "%s", why);
+        return 2;
+    }
+    snprintf(path, sizeof path, "%s/contact.tsv", dir);
+    if (adh_write_contact_table(cfg, run, path, why, sizeof why) != 0) {
+        snprintf(msg, msglen, "%s", why);
+        return 2;
+    }
+    unsigned want = cfg->plots & ADH_PLOT_ALL;
+    if (!cfg->plot || !want) {
+        snprintf(msg, msglen, "wrote profiles.tsv, contact.tsv in %s (plots off)", dir);
+        return 0;
+    }
+
+    plotter pl;
+    memset(&pl, 0, sizeof pl);
+    pl.cfg = cfg;
+    pl.run = run;
+    pl.dir = dir;
+    adh_material_derive(&cfg->mat, &pl.d);
+    if (adh_plot_style_file(cfg, pl.style, sizeof pl.style, why, sizeof why) < 0) {
+        snprintf(msg, msglen, "%s; no plots made, tables written in %s", why, dir);
+        return 3;
+    }
+    const char *tmp = getenv("TMPDIR");
+    snprintf(pl.tmpdir, sizeof pl.tmpdir, "%s/adhere-plot-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    if (!mkdtemp(pl.tmpdir)) {
+        snprintf(msg, msglen, "cannot make a temporary directory %s: %s; no plots made, "
+                 "tables written in %s", pl.tmpdir, strerror(errno), dir);
+        return 3;
+    }
+    char log[PATH_MAX + 32];
+    snprintf(log, sizeof log, "%s/gnuplot.log", dir);
+    unlink(log);   /* each run's log holds only its own complaints */
+    pl.gp = adh_gnuplot_open(log, why, sizeof why);
+    if (!pl.gp) {
+        remove_tmpdir(&pl);
+        snprintf(msg, msglen, "%s; no plots made, tables written in %s", why, dir);
+        if (file_empty(log))
+            unlink(log);
+        return 3;
+    }
+    /* Figures are independent: a failure in one does not stop the others
+     * while gnuplot lives. */
+    if ((want & ADH_PLOT_FORCE) && adh_gnuplot_alive(pl.gp))
+        plot_force(&pl);
+    if ((want & ADH_PLOT_PROFILE) && adh_gnuplot_alive(pl.gp))
+        plot_profile(&pl);
+    if ((want & ADH_PLOT_CONTACT) && adh_gnuplot_alive(pl.gp))
+        plot_contact(&pl);
+    if (!*pl.error && !adh_gnuplot_alive(pl.gp))
+        snprintf(pl.error, sizeof pl.error, "gnuplot stopped");
+    adh_gnuplot_close(pl.gp);
+    remove_tmpdir(&pl);
+    if (file_empty(log))
+        unlink(log);
+
+    if (*pl.error) {
+        snprintf(msg, msglen, "plotting failed: %s; %s%stables written in %s", pl.error,
+                 *pl.done ? pl.done : "", *pl.done ? " written, " : "", dir);
+        return 3;
+    }
+    snprintf(msg, msglen, "wrote %s%sprofiles.tsv, contact.tsv in %s%s%s", pl.done,
+             *pl.done ? ", " : "", dir, *pl.notes ? "; " : "", pl.notes);
+    return 0;
+}

@@ -1,0 +1,60 @@
+/* Where the gnuplot styles live: installed, or in the source tree. */
+#include "plot/plot.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#ifndef ADH_DATADIR
+#define ADH_DATADIR "/usr/local/share/adhere"
+#endif
+#ifndef ADH_SRCDATA
+#define ADH_SRCDATA "share/adhere"
+#endif
+
+static int is_dir(const char *p)
+{
+    struct stat st;
+    return stat(p, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+int adh_data_dir(const char *sub, char *buf, size_t len)
+{
+    const char *env = getenv("ADHERE_DATADIR");
+    const char *roots[] = { env && *env ? env : NULL, ADH_DATADIR, ADH_SRCDATA };
+    for (size_t i = 0; i < sizeof roots / sizeof roots[0]; i++) {
+        if (!roots[i])
+            continue;
+        snprintf(buf, len, "%s/%s", roots[i], sub);
+        if (is_dir(buf))
+            return 0;
+    }
+    return -1;
+}
+
+int adh_plot_style_file(const adh_config *cfg, char *buf, size_t len, char *msg, size_t msglen)
+{
+    if (cfg->gnuplot_style[0]) {
+        if (is_dir(cfg->gnuplot_style))
+            snprintf(buf, len, "%s/style.gp", cfg->gnuplot_style);
+        else
+            snprintf(buf, len, "%s", cfg->gnuplot_style);
+        if (access(buf, R_OK) != 0) {
+            snprintf(msg, msglen, "gnuplot style %s: %s", buf, strerror(errno));
+            return -1;
+        }
+        return 0;
+    }
+    char dir[4096];
+    if (adh_data_dir("gnuplot", dir, sizeof dir) == 0) {
+        snprintf(buf, len, "%s/style.gp", dir);
+        if (access(buf, R_OK) == 0)
+            return 0;
+    }
+    if (len)
+        buf[0] = '\0';
+    return 1;
+}
