@@ -302,7 +302,11 @@ int adh_gnuplot_sync(adh_gnuplot *gp, double timeout_s, char *msg, size_t msglen
             if (found) {
                 if (err == 0)
                     return 0;
-                snprintf(msg, msglen, "gnuplot error: %s (log: %s)", errmsg, gp->logpath);
+                /* the log's line also names the file and line (a style file) */
+                char last[512];
+                adh_gnuplot_log_last_line(gp->logpath, last, sizeof last);
+                snprintf(msg, msglen, "gnuplot error: %s (log: %s)",
+                         *errmsg && strstr(last, errmsg) ? last : errmsg, gp->logpath);
                 return -1;
             }
         }
@@ -310,7 +314,7 @@ int adh_gnuplot_sync(adh_gnuplot *gp, double timeout_s, char *msg, size_t msglen
             gp->inlen = 0;
         double left = deadline - now_s();
         if (left <= 0) {
-            snprintf(msg, msglen, "gnuplot did not answer within %.0f s; stopped it (log: %s)",
+            snprintf(msg, msglen, "gnuplot did not answer within %.3g s; stopped it (log: %s)",
                      timeout_s, gp->logpath);
             gp->broken = 1;
             if (gp->pid > 0)

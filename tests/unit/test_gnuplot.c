@@ -1,0 +1,496 @@
+/* The gnuplot process (handshake, error detection, death, hang, missing
+ * program), the contact-line speed, and adh_plots_write on a synthetic run:
+ * valid PNGs of the style's size, tables intact when gnuplot is absent. */
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "adhere/params.h"
+#include "plot/gnuplot.h"
+#include "plot/plot.h"
+#include "plot/plotdata.h"
+#include "scene/config.h"
+#include "tap.h"
+
+static char work[256];
+
+static int have_gnuplot(void)
+{
+    char msg[512];
+    adh_gnuplot *gp = adh_gnuplot_open("/dev/null", msg, sizeof msg);
+    int ok = gp && adh_gnuplot_sync(gp, 20, msg, sizeof msg) == 0;
+    adh_gnuplot_close(gp);
+    return ok;
+}
+
+static int no_children_left(void)
+{
+    return waitpid(-1, NULL, WNOHANG) == -1 && errno == ECHILD;
+}
+
+static void path_in(char *buf, size_t len, const char *dir, const char *name)
+{
+    snprintf(buf, len, "%s/%s", dir, name);
+}
+
+static int exists(const char *p)
+{
+    struct stat st;
+    return stat(p, &st) == 0;
+}
+
+/* PNG signature and IHDR size; 0 when the file is a PNG. */
+static int png_size(const char *path, unsigned *w, unsigned *h)
+{
+    static const unsigned char sig[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
+    unsigned char b[24];
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return -1;
+    size_t n = fread(b, 1, sizeof b, f);
+    fclose(f);
+    if (n != sizeof b || memcmp(b, sig, 8) != 0 || memcmp(b + 12, "IHDR", 4) != 0)
+        return -1;
+    *w = (unsigned)b[16] << 24 | (unsigned)b[17] << 16 | (unsigned)b[18] << 8 | b[19];
+    *h = (unsigned)b[20] << 24 | (unsigned)b[21] << 16 | (unsigned)b[22] << 8 | b[23];
+    return 0;
+}
+
+/* Counts data lines (not comments, not the header) of a table, -1 if absent;
+ * *header gets the header line. */
+static long table_rows(const char *path, char *header, size_t hlen)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    char line[4096];
+    long n = -1;
+    header[0] = '\0';
+    while (fgets(line, sizeof line, f)) {
+        if (line[0] == '#')
+            continue;
+        if (n < 0) {
+            snprintf(header, hlen, "%s", line);
+            n = 0;
+        } else {
+            n++;
+        }
+    }
+    fclose(f);
+    return n;
+}
+
+/* Files in dir whose name contains part. */
+static int count_matching(const char *dir, const char *part)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    if (!d)
+        return -1;
+    struct dirent *e;
+    while ((e = readdir(d)))
+        if (strstr(e->d_name, part))
+            n++;
+    closedir(d);
+    return n;
+}
+
+/* ------------------------------------------------------- synthetic run */
+
+enum { NODES = 60 };
+
+typedef struct synthetic {
+    adh_config cfg;
+    adh_run run;
+    double store[4][3][NODES];
+} synthetic;
+
+static void add_row(adh_run *run, double h0, double F, double a, int branch, int path,
+                    const adh_material *m)
+{
+    adh_obs *o = &run->rows[run->nrows++];
+    memset(o, 0, sizeof *o);
+    o->h0 = h0;
+    o->F = F;
+    o->a = a;
+    o->branch = branch;
+    o->path = path;
+    o->converged = 1;
+    o->stable = 1;
+    o->F_rigid = h0 > 0 ? m->A * m->R / (6 * h0 * h0) * (pow(m->z0 / h0, 6) / 4 - 1) : 0;
+}
+
+/* Loading from 10 nm to -5 nm (contact below 2 nm, a growing linearly), an
+ * unloading branch back out with a wider contact, two profile positions. */
+static void make_synthetic(synthetic *s)
+{
+    memset(s, 0, sizeof *s);
+    adh_config_default(&s->cfg);
+    s->cfg.nodes = NODES;
+    s->cfg.spacing = 10e-9;
+    s->cfg.drive_speed = 1e-6;
+    adh_run_init(&s->run);
+    s->run.rows = calloc(400, sizeof *s->run.rows);
+    s->run.rows_cap = 400;
+    const adh_material *m = &s->cfg.mat;
+    const double d = 0.1e-9;
+    for (int k = 0; k <= 150; k++) {
+        double h0 = 10e-9 - k * d;
+        double a = h0 < 2e-9 ? 0.1e-6 + (2e-9 - h0) * 30 : 0;
+        double F = a > 0 ? -2e-7 + (2e-9 - h0) * 40 : -1e-9 / (h0 * 1e9);
+        add_row(&s->run, h0, F, a, +1, 0, m);
+    }
+    for (int k = 0; k <= 120; k++) {
+        double h0 = -5e-9 + k * d;
+        double a = h0 < 6e-9 ? 0.35e-6 - (h0 + 5e-9) * 20 : 0;
+        double F = a > 0 ? 1e-7 - (h0 + 5e-9) * 80 : -1e-9;
+        add_row(&s->run, h0, F, a, -1, 1, m);
+    }
+    s->run.nturns = 1;
+    s->run.turns[0] = (adh_turn_result){ .h0 = -5e-9, .max_load = 1e-7, .a_turn = 0.35e-6,
+                                         .pulloff_F = -7.8e-7, .pulloff_h0 = 5.9e-9,
+                                         .jump_out_h0 = 6e-9, .path = 1 };
+    s->run.profiles = calloc(4, sizeof *s->run.profiles);
+    s->run.profiles_cap = 4;
+    const double pos[2] = { 4e-9, -2e-9 };
+    for (int k = 0; k < 4; k++) {
+        adh_profile *pr = &s->run.profiles[s->run.nprofiles++];
+        pr->h0 = pos[k % 2];
+        pr->branch = k < 2 ? 1 : -1;
+        pr->path = k < 2 ? 0 : 1;
+        pr->u = s->store[k][0];
+        pr->h = s->store[k][1];
+        pr->p = s->store[k][2];
+        for (size_t n = 0; n < NODES; n++) {
+            double r = adh_profile_radius(&s->cfg, n);
+            double h = pr->h0 + r * r / (2 * m->R);
+            pr->h[n] = h < m->z0 ? m->z0 : h;
+            pr->u[n] = pr->h[n] - h;
+            pr->p[n] = 0;
+        }
+    }
+}
+
+static void free_synthetic(synthetic *s)
+{
+    free(s->run.rows);
+    free(s->run.profiles);
+}
+
+/* ------------------------------------------------------------- tests */
+
+static void test_process(void)
+{
+    char log[300], msg[1024], last[512];
+    path_in(log, sizeof log, work, "proc.log");
+    adh_gnuplot *gp = adh_gnuplot_open(log, msg, sizeof msg);
+    ok(gp != NULL, "gnuplot starts (%s)", gp ? "ok" : msg);
+    if (!gp)
+        return;
+    adh_gnuplot_cmd(gp, "x = 1 + 1");
+    ok(adh_gnuplot_sync(gp, 20, msg, sizeof msg) == 0, "a clean batch syncs");
+    adh_gnuplot_cmd(gp, "plot no_such_function(x)");
+    int rc = adh_gnuplot_sync(gp, 20, msg, sizeof msg);
+    ok(rc == -1 && strstr(msg, "undefined function"),
+       "an error in a batch is reported with gnuplot's words: %s", msg);
+    ok(adh_gnuplot_alive(gp), "gnuplot keeps running after an error");
+    adh_gnuplot_cmd(gp, "y = 2");
+    ok(adh_gnuplot_sync(gp, 20, msg, sizeof msg) == 0,
+       "the next clean batch syncs again (errors reset)");
+    adh_gnuplot_log_last_line(log, last, sizeof last);
+    ok(strstr(last, "undefined function") != NULL,
+       "gnuplot's stderr went to the log: last line \"%s\"", last);
+    adh_gnuplot_close(gp);
+    ok(no_children_left(), "closing reaps gnuplot");
+}
+
+static void test_missing(void)
+{
+    char log[300], msg[1024];
+    path_in(log, sizeof log, work, "missing.log");
+    setenv("ADHERE_GNUPLOT", "/nonexistent/gnuplot", 1);
+    adh_gnuplot *gp = adh_gnuplot_open(log, msg, sizeof msg);
+    ok(gp == NULL && strstr(msg, "/nonexistent/gnuplot"),
+       "a missing program is reported at open: %s", msg);
+    unsetenv("ADHERE_GNUPLOT");
+    char *old = getenv("PATH") ? strdup(getenv("PATH")) : NULL;
+    setenv("PATH", "/nonexistent", 1);
+    gp = adh_gnuplot_open(log, msg, sizeof msg);
+    ok(gp == NULL && strstr(msg, "not found on PATH"), "gnuplot off the PATH: %s", msg);
+    if (old) {
+        setenv("PATH", old, 1);
+        free(old);
+    }
+    ok(no_children_left(), "the failed child is reaped");
+}
+
+static void test_death_and_hang(void)
+{
+    char log[300], msg[1024], script[300];
+    path_in(log, sizeof log, work, "death.log");
+
+    /* a "gnuplot" that complains on stderr and dies */
+    path_in(script, sizeof script, work, "dying-gnuplot");
+    FILE *f = fopen(script, "w");
+    fprintf(f, "#!/bin/sh\necho 'fatal: out of ink' >&2\nexit 7\n");
+    fclose(f);
+    chmod(script, 0755);
+    setenv("ADHERE_GNUPLOT", script, 1);
+    adh_gnuplot *gp = adh_gnuplot_open(log, msg, sizeof msg);
+    ok(gp != NULL, "a dying gnuplot still starts");
+    /* SIGPIPE must be ignored only while writing: the caller's handler stays */
+    struct sigaction mine, seen;
+    memset(&mine, 0, sizeof mine);
+    mine.sa_handler = SIG_DFL;
+    sigaction(SIGPIPE, &mine, NULL);
+    sleep(1);   /* let it die first, so the writes meet a closed pipe */
+    for (int i = 0; i < 2000; i++)
+        adh_gnuplot_cmd(gp, "set title \"%d filling the pipe past its buffer\"", i);
+    int rc = adh_gnuplot_sync(gp, 5, msg, sizeof msg);
+    ok(rc == -1 && strstr(msg, "status 7") && strstr(msg, "out of ink"),
+       "death is reported with the exit status and the log's last line: %s", msg);
+    sigaction(SIGPIPE, NULL, &seen);
+    ok(seen.sa_handler == SIG_DFL, "SIGPIPE disposition restored after writing");
+    ok(!adh_gnuplot_alive(gp), "a dead gnuplot is not alive");
+    ok(adh_gnuplot_sync(gp, 5, msg, sizeof msg) == -1, "later syncs fail at once");
+    adh_gnuplot_close(gp);
+
+    /* a "gnuplot" that never answers */
+    path_in(script, sizeof script, work, "hung-gnuplot");
+    f = fopen(script, "w");
+    fprintf(f, "#!/bin/sh\nexec sleep 30\n");
+    fclose(f);
+    chmod(script, 0755);
+    setenv("ADHERE_GNUPLOT", script, 1);
+    gp = adh_gnuplot_open(log, msg, sizeof msg);
+    rc = adh_gnuplot_sync(gp, 0.5, msg, sizeof msg);
+    ok(rc == -1 && strstr(msg, "did not answer"), "a hung gnuplot times out: %s", msg);
+    adh_gnuplot_close(gp);
+    ok(no_children_left(), "the hung child is killed and reaped");
+    unsetenv("ADHERE_GNUPLOT");
+}
+
+static void test_contact_speed(void)
+{
+    synthetic s;
+    make_synthetic(&s);
+    size_t n = s.run.nrows;
+    double *dadh0 = malloc(n * sizeof *dadh0), *dadt = malloc(n * sizeof *dadt);
+    adh_contact_speed(&s.run, 1e-6, dadh0, dadt);
+    /* loading: a = 0.1 um + 30 (2 nm - h0), so da/dh0 = -30, da/dt = +30 um/s */
+    size_t load_mid = 100, unload_mid = 151 + 50, out = 10, turn = 151;
+    ok_rel(dadh0[load_mid], -30.0, 1e-6, "loading da/dh0");
+    ok_rel(dadt[load_mid], 30e-6, 1e-6, "loading contact line spreads at 30 um/s");
+    /* unloading: a = 0.35 um - 20 (h0 + 5 nm): da/dh0 = -20, h0 rising: -20 um/s */
+    ok_rel(dadt[unload_mid], -20e-6, 1e-6, "unloading contact line recedes at 20 um/s");
+    ok(isnan(dadt[out]), "no speed out of contact");
+    ok_rel(dadt[turn], -20e-6, 1e-6, "one-sided at the start of a branch");
+    ok_rel(adh_profile_radius(&s.cfg, 0), 5e-9, 1e-12, "first node at dr/2");
+    free(dadh0);
+    free(dadt);
+    free_synthetic(&s);
+}
+
+static void check_pngs(const char *dir, unsigned w, unsigned h, const char *what)
+{
+    const char *names[] = { "force.png", "profile.png", "contact.png" };
+    for (int i = 0; i < 3; i++) {
+        char p[400];
+        unsigned pw = 0, ph = 0;
+        path_in(p, sizeof p, dir, names[i]);
+        int rc = png_size(p, &pw, &ph);
+        ok(rc == 0 && pw == w && ph == h, "%s: %s is a %ux%u PNG (got %s %ux%u)", what,
+           names[i], w, h, rc == 0 ? "PNG" : "no PNG", pw, ph);
+    }
+}
+
+static void check_tables(const char *dir, const synthetic *s, const char *what)
+{
+    char p[400], header[512];
+    path_in(p, sizeof p, dir, "profiles.tsv");
+    long n = table_rows(p, header, sizeof header);
+    ok(n == (long)(s->run.nprofiles * NODES) && strncmp(header, "h0_m\tbranch\tpath\tr_m\th_m",
+                                                         22) == 0,
+       "%s: profiles.tsv has its header and %zu rows (got %ld)", what,
+       s->run.nprofiles * NODES, n);
+    path_in(p, sizeof p, dir, "contact.tsv");
+    n = table_rows(p, header, sizeof header);
+    ok(n == (long)s->run.nrows && strstr(header, "da_dt_m_per_s"),
+       "%s: contact.tsv has its header and one row per step (got %ld)", what, n);
+}
+
+static void test_plots(void)
+{
+    synthetic s;
+    make_synthetic(&s);
+    char dir[300], msg[2048], p[400];
+
+    path_in(dir, sizeof dir, work, "plots");
+    mkdir(dir, 0755);
+    int rc = adh_plots_write(&s.cfg, &s.run, dir, msg, sizeof msg);
+    ok(rc == 0, "plots written: rc %d, %s", rc, msg);
+    check_pngs(dir, 900, 600, "installed style");
+    check_tables(dir, &s, "with gnuplot");
+    ok(count_matching(dir, ".tmp") == 0, "no temporary files left in the output dir");
+    ok(count_matching(work, "adhere-plot-") == 0, "the data temp dir is removed");
+    path_in(p, sizeof p, dir, "gnuplot.log");
+    ok(!exists(p), "an empty gnuplot.log is not left behind");
+
+    /* profiles.tsv carries full precision */
+    path_in(p, sizeof p, dir, "profiles.tsv");
+    FILE *f = fopen(p, "r");
+    char line[1024] = "";
+    while (f && fgets(line, sizeof line, f) && (line[0] == '#' || line[0] == 'h'))
+        ;
+    if (f)
+        fclose(f);
+    double h0, r;
+    int b, pa;
+    ok(sscanf(line, "%lg\t%d\t%d\t%lg", &h0, &b, &pa, &r) == 4 && h0 == s.run.profiles[0].h0 &&
+       r == adh_profile_radius(&s.cfg, 0), "table numbers round-trip exactly");
+
+    /* a style of another size, given as a file */
+    char style[300], dir2[300];
+    path_in(style, sizeof style, work, "small.gp");
+    f = fopen(style, "w");
+    fprintf(f, "set terminal pngcairo size 640,480\n");
+    fclose(f);
+    snprintf(s.cfg.gnuplot_style, sizeof s.cfg.gnuplot_style, "%s", style);
+    path_in(dir2, sizeof dir2, work, "small");
+    mkdir(dir2, 0755);
+    rc = adh_plots_write(&s.cfg, &s.run, dir2, msg, sizeof msg);
+    ok(rc == 0, "custom style: rc %d, %s", rc, msg);
+    check_pngs(dir2, 640, 480, "--gnuplot-style");
+
+    /* a style with an error: reported, nothing half-written */
+    f = fopen(style, "w");
+    fprintf(f, "set no_such_option 1\n");
+    fclose(f);
+    path_in(dir2, sizeof dir2, work, "badstyle");
+    mkdir(dir2, 0755);
+    rc = adh_plots_write(&s.cfg, &s.run, dir2, msg, sizeof msg);
+    ok(rc == 3 && strstr(msg, "gnuplot error"), "an error in the style returns 3 and quotes "
+       "gnuplot: %s", msg);
+    ok(count_matching(dir2, ".png") == 0, "no PNG, not even a temporary one, after an error");
+    path_in(p, sizeof p, dir2, "gnuplot.log");
+    ok(exists(p), "gnuplot.log is kept when gnuplot complained");
+    check_tables(dir2, &s, "bad style");
+
+    /* a style that does not exist */
+    snprintf(s.cfg.gnuplot_style, sizeof s.cfg.gnuplot_style, "%s/nope.gp", work);
+    rc = adh_plots_write(&s.cfg, &s.run, dir2, msg, sizeof msg);
+    ok(rc == 3 && strstr(msg, "nope.gp"), "a missing style file is named: %s", msg);
+    s.cfg.gnuplot_style[0] = '\0';
+
+    /* gnuplot missing: exit code 3, tables intact */
+    path_in(dir2, sizeof dir2, work, "nognuplot");
+    mkdir(dir2, 0755);
+    setenv("ADHERE_GNUPLOT", "/nonexistent/gnuplot", 1);
+    rc = adh_plots_write(&s.cfg, &s.run, dir2, msg, sizeof msg);
+    unsetenv("ADHERE_GNUPLOT");
+    ok(rc == 3 && strstr(msg, "tables written"), "no gnuplot: rc 3 and says so: %s", msg);
+    ok(count_matching(dir2, ".png") == 0, "no gnuplot: no PNG");
+    check_tables(dir2, &s, "no gnuplot");
+
+    /* plots off: tables only */
+    path_in(dir2, sizeof dir2, work, "noplot");
+    mkdir(dir2, 0755);
+    s.cfg.plot = 0;
+    rc = adh_plots_write(&s.cfg, &s.run, dir2, msg, sizeof msg);
+    ok(rc == 0 && count_matching(dir2, ".png") == 0, "--no-plot: rc 0, no PNG");
+    check_tables(dir2, &s, "no plot");
+    s.cfg.plot = 1;
+
+    /* a selection */
+    path_in(dir2, sizeof dir2, work, "select");
+    mkdir(dir2, 0755);
+    s.cfg.plots = ADH_PLOT_CONTACT;
+    rc = adh_plots_write(&s.cfg, &s.run, dir2, msg, sizeof msg);
+    path_in(p, sizeof p, dir2, "contact.png");
+    ok(rc == 0 && exists(p) && count_matching(dir2, ".png") == 1,
+       "--plots=contact makes contact.png alone");
+    s.cfg.plots = ADH_PLOT_ALL;
+
+    /* no profiles stored: profile.png skipped with a note */
+    path_in(dir2, sizeof dir2, work, "noprof");
+    mkdir(dir2, 0755);
+    size_t keep = s.run.nprofiles;
+    s.run.nprofiles = 0;
+    rc = adh_plots_write(&s.cfg, &s.run, dir2, msg, sizeof msg);
+    path_in(p, sizeof p, dir2, "profile.png");
+    ok(rc == 0 && !exists(p) && strstr(msg, "--profiles"),
+       "no profiles: profile.png skipped and the message says how: %s", msg);
+    s.run.nprofiles = keep;
+
+    /* several turns: the adhesion panel is drawn */
+    path_in(dir2, sizeof dir2, work, "turns");
+    mkdir(dir2, 0755);
+    s.run.nturns = 2;
+    s.run.turns[1] = s.run.turns[0];
+    s.run.turns[1].h0 = -1e-9;
+    s.run.turns[1].max_load = -5e-8;
+    s.run.turns[1].pulloff_F = -6e-7;
+    s.run.turns[1].path = 2;
+    rc = adh_plots_write(&s.cfg, &s.run, dir2, msg, sizeof msg);
+    ok(rc == 0, "two turns: force.png with the adhesion panel: %s", msg);
+    s.run.nturns = 1;
+
+    /* an unwritable output directory */
+    rc = adh_plots_write(&s.cfg, &s.run, "/nonexistent/dir", msg, sizeof msg);
+    ok(rc == 2, "an unwritable dir returns 2: %s", msg);
+    ok(no_children_left(), "no gnuplot left running");
+    free_synthetic(&s);
+}
+
+static void test_data_dir(void)
+{
+    char buf[512], d[300];
+    path_in(d, sizeof d, work, "data");
+    mkdir(d, 0755);
+    path_in(buf, sizeof buf, d, "gnuplot");
+    mkdir(buf, 0755);
+    setenv("ADHERE_DATADIR", d, 1);
+    ok(adh_data_dir("gnuplot", buf, sizeof buf) == 0 && strstr(buf, work) == buf,
+       "$ADHERE_DATADIR comes first: %s", buf);
+    unsetenv("ADHERE_DATADIR");
+    ok(adh_data_dir("gnuplot", buf, sizeof buf) == 0, "an installed or source style dir: %s",
+       buf);
+    adh_config cfg;
+    adh_config_default(&cfg);
+    char msg[256];
+    int rc = adh_plot_style_file(&cfg, buf, sizeof buf, msg, sizeof msg);
+    ok(rc == 0 && strstr(buf, "style.gp"), "the installed style.gp is found: %s", buf);
+}
+
+int main(void)
+{
+    snprintf(work, sizeof work, "/tmp/adhere-test-gnuplot-XXXXXX");
+    if (!mkdtemp(work)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    setenv("TMPDIR", work, 1);
+    test_contact_speed();
+    test_data_dir();
+    test_missing();
+    if (!have_gnuplot()) {
+        printf("# gnuplot is not installed: process and PNG checks skipped\n");
+        ok(1, "skipped: no gnuplot");
+        return tap_done();
+    }
+    test_process();
+    test_death_and_hang();
+    test_plots();
+    char cmd[400];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);
+    if (!tap_failed && system(cmd) != 0)
+        printf("# could not remove %s\n", work);
+    return tap_done();
+}
