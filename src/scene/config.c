@@ -25,5 +25,49 @@ void adh_config_default(adh_config *c)
 
 double adh_config_spacing(const adh_config *c)
 {
-    return isnan(c->spacing) ? adh_grid_default_rmax(&c->mat) / (double)c->nodes : c->spacing;
+    /* The paper's radius, but never past 0.3 R where the paraboloid gap
+     * (eq 3) stops describing a sphere. */
+    double rmax = fmin(adh_grid_default_rmax(&c->mat), 0.3 * c->mat.R);
+    return isnan(c->spacing) ? rmax / (double)c->nodes : c->spacing;
+}
+
+const char *adh_sweep_name(adh_sweep_kind kind)
+{
+    switch (kind) {
+    case ADH_SWEEP_E: return "E";
+    case ADH_SWEEP_SIGMA: return "sigma";
+    case ADH_SWEEP_EPS: return "eps";
+    case ADH_SWEEP_NONE: break;
+    }
+    return "";
+}
+
+size_t adh_config_nruns(const adh_config *c)
+{
+    return c->sweep.kind == ADH_SWEEP_NONE ? 1 : c->sweep.n;
+}
+
+void adh_config_sweep_run(const adh_config *c, size_t i, adh_config *run)
+{
+    *run = *c;
+    memset(&run->sweep, 0, sizeof run->sweep);
+    if (c->sweep.kind == ADH_SWEEP_NONE || i >= c->sweep.n)
+        return;
+    double v = c->sweep.values[i];
+    switch (c->sweep.kind) {
+    case ADH_SWEEP_E:
+        run->mat.E = v;
+        break;
+    case ADH_SWEEP_SIGMA: {
+        /* eq 17 solved for E: sigma = gamma sqrt(R/z0^3) / E */
+        double gamma = c->mat.A / (16.0 * M_PI * c->mat.z0 * c->mat.z0);
+        run->mat.E = gamma * sqrt(c->mat.R / (c->mat.z0 * c->mat.z0 * c->mat.z0)) / v;
+        break;
+    }
+    case ADH_SWEEP_EPS:
+        run->relax.eps = v;
+        break;
+    case ADH_SWEEP_NONE:
+        break;
+    }
 }

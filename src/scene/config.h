@@ -16,14 +16,44 @@
 #define PATH_MAX 4096
 #endif
 
-typedef enum adh_mode { ADH_MODE_RELAX = 0, ADH_MODE_STATIC = 1 } adh_mode;
+/* RIGID: eq 22 at the drive positions, no kernel and no elastic solve. */
+typedef enum adh_mode { ADH_MODE_RELAX = 0, ADH_MODE_STATIC = 1, ADH_MODE_RIGID = 2 } adh_mode;
 
 enum adh_plot_kind {
     ADH_PLOT_FORCE = 1u << 0,
     ADH_PLOT_PROFILE = 1u << 1,
     ADH_PLOT_CONTACT = 1u << 2,
-    ADH_PLOT_ALL = 7u
+    ADH_PLOT_ALL = 7u,             /* the plot module's three figures */
+    /* Scene figures drawn by the CLI from force.tsv's columns: */
+    ADH_PLOT_PRECONTACT = 1u << 3, /* Figure 1 inset: force before contact vs eq 22 at h0 and at h (eq 23) */
+    ADH_PLOT_BULGE = 1u << 4       /* Figure 2: central bulge vs central gap, against eq 23 */
 };
+
+/* A sweep: one parameter takes a list of values, each an independent run
+ * (Figure 3's sigma, Figure 7's eps). Every other value is the scene's. */
+typedef enum adh_sweep_kind {
+    ADH_SWEEP_NONE = 0,
+    ADH_SWEEP_E,       /* combined modulus, Pa */
+    ADH_SWEEP_SIGMA,   /* sets E = gamma sqrt(R/z0^3) / sigma (eq 17) */
+    ADH_SWEEP_EPS      /* convergence parameter, m */
+} adh_sweep_kind;
+
+/* Combined figures of a sweep, drawn from every run at once. */
+typedef enum adh_sweep_plot {
+    ADH_SWEEP_PLOT_NONE = 0,
+    ADH_SWEEP_PLOT_JUMP,   /* Figure 3: jump separation vs sigma against eq 24 (jump.png) */
+    ADH_SWEEP_PLOT_FORCE   /* Figure 7: every run's force curve and the JKR curve (force.png) */
+} adh_sweep_plot;
+
+#define ADH_MAX_SWEEP 32
+
+typedef struct adh_sweep {
+    adh_sweep_kind kind;
+    size_t n;
+    double values[ADH_MAX_SWEEP];
+    int jobs;                      /* runs at once; 0 = one per core */
+    adh_sweep_plot plot;
+} adh_sweep;
 
 typedef struct adh_config {
     adh_material mat;
@@ -33,6 +63,7 @@ typedef struct adh_config {
     adh_relax_settings relax;
     adh_protocol_settings proto;
     adh_mode mode;
+    adh_sweep sweep;               /* kind ADH_SWEEP_NONE: a single run */
 
     /* outputs */
     char out_dir[PATH_MAX];        /* "" = force table to standard output */
@@ -55,6 +86,17 @@ typedef struct adh_config {
 /* The built-in default scene: Figure 4's material (E = 0.3 GPa), the paper's
  * grid scaled with sqrt(R z0), eps = 1 pm, d = 0.05 nm, turn at -5 nm. */
 void adh_config_default(adh_config *c);
+
+/* Name of a sweep parameter as scenes and tables spell it ("E", "sigma",
+ * "eps"), "" for none. */
+const char *adh_sweep_name(adh_sweep_kind kind);
+
+/* The configuration of run i of cfg's sweep: cfg with the swept value set
+ * and the sweep removed. A config without a sweep is its own run 0. */
+void adh_config_sweep_run(const adh_config *cfg, size_t i, adh_config *run);
+
+/* Number of runs: the sweep's length, or 1. */
+size_t adh_config_nruns(const adh_config *cfg);
 
 /* The grid spacing in use: the explicit one, or the paper's grid radius
  * (scaled with sqrt(R z0)) divided by N. */

@@ -16,12 +16,13 @@ typedef struct scene_parse {
     const char *file;
     char why[512];
     int line;                    /* line of the first error, from inih */
+    int unload_given;            /* an explicit unload = wins over the one turns implies */
     char seen[128][64];          /* "section.key" already given: duplicates are errors */
     size_t nseen;
 } scene_parse;
 
 typedef enum { K_LEN, K_PRESS, K_ENERGY, K_SPEED, K_COUNT, K_LENLIST, K_KERNEL, K_MODE,
-               K_PLOTS, K_BOOL, K_TEXT } key_kind;
+               K_PLOTS, K_BOOL, K_TEXT, K_SWEEP, K_SWEEP_PLOT } key_kind;
 
 typedef struct scene_key {
     const char *section, *key;
@@ -39,6 +40,8 @@ static const scene_key keys[] = {
     { "protocol", "dwell", K_COUNT }, { "protocol", "unload", K_BOOL },
     { "output", "plots", K_PLOTS }, { "output", "profiles", K_LENLIST },
     { "output", "drive_speed", K_SPEED },
+    { "sweep", "E", K_SWEEP }, { "sweep", "sigma", K_SWEEP }, { "sweep", "eps", K_SWEEP },
+    { "sweep", "jobs", K_COUNT }, { "sweep", "plot", K_SWEEP_PLOT },
 };
 
 static int fail(scene_parse *sp, const char *fmt, const char *a, const char *b)
@@ -49,21 +52,56 @@ static int fail(scene_parse *sp, const char *fmt, const char *a, const char *b)
     return 0; /* inih: 0 = error at this line */
 }
 
-static int parse_list(scene_parse *sp, const char *key, const char *value, double *out, size_t cap, size_t *count)
+/* A comma-separated list of quantities q ("none": empty when allow_none). */
+static int parse_qlist(scene_parse *sp, const char *key, const char *value, adh_quantity q, int allow_none,
+                       double *out, size_t cap, size_t *count)
 {
     char buf[1024], msg[256];
     *count = 0;
-    if (strcasecmp(value, "none") == 0)
+    if (allow_none && strcasecmp(value, "none") == 0)
         return 1;
+    if (strlen(value) >= sizeof buf)
+        return fail(sp, "%s: list longer than 1023 characters%s", key, "");
     snprintf(buf, sizeof buf, "%s", value);
     char *save = NULL;
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        if (*count == cap)
-            return fail(sp, "%s: too many values%s", key, "");
-        if (adh_parse_quantity(t, ADH_Q_LENGTH, &out[(*count)++], msg, sizeof msg) != 0)
+        if (*count == cap) {
+            snprintf(msg, sizeof msg, "%zu", cap);
+            return fail(sp, "%s: more than %s values", key, msg);
+        }
+        while (*t == ' ' || *t == '\t')
+            t++;
+        if (adh_parse_quantity(t, q, &out[(*count)++], msg, sizeof msg) != 0)
             return fail(sp, "%s: %s", key, msg);
     }
-    return *count ? 1 : fail(sp, "%s: expected lengths separated by commas, or none%s", key, "");
+    if (*count)
+        return 1;
+    return fail(sp, "%s: expected values separated by commas%s", key, allow_none ? ", or none" : "");
+}
+
+static int parse_list(scene_parse *sp, const char *key, const char *value, double *out, size_t cap, size_t *count)
+{
+    return parse_qlist(sp, key, value, ADH_Q_LENGTH, 1, out, cap, count);
+}
+
+/* [sweep] E / sigma / eps: one parameter, a list of positive values. */
+static int parse_sweep(scene_parse *sp, const char *name, const char *value)
+{
+    adh_sweep *sw = &sp->cfg->sweep;
+    adh_sweep_kind kind = !strcmp(name, "E") ? ADH_SWEEP_E : !strcmp(name, "sigma") ? ADH_SWEEP_SIGMA : ADH_SWEEP_EPS;
+    if (sw->kind != ADH_SWEEP_NONE && sw->kind != kind)
+        return fail(sp, "sweep: '%s' and '%s' both given: a sweep varies one parameter", adh_sweep_name(sw->kind), name);
+    adh_quantity q = kind == ADH_SWEEP_E ? ADH_Q_PRESSURE : kind == ADH_SWEEP_EPS ? ADH_Q_LENGTH : ADH_Q_NONE;
+    if (!parse_qlist(sp, name, value, q, 0, sw->values, ADH_MAX_SWEEP, &sw->n))
+        return 0;
+    for (size_t i = 0; i < sw->n; i++)
+        if (!(sw->values[i] > 0)) {
+            char msg[64];
+            snprintf(msg, sizeof msg, "%g", sw->values[i]);
+            return fail(sp, "%s: the swept value %s is not allowed: every value must be above 0", name, msg);
+        }
+    sw->kind = kind;
+    return 1;
 }
 
 static int handler(void *user, const char *section, const char *name, const char *value)
@@ -80,7 +118,7 @@ static int handler(void *user, const char *section, const char *name, const char
             k = &keys[i];
     }
     if (!known_section)
-        return fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output%s", section, "");
+        return fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep%s", section, "");
     if (!k)
         return fail(sp, "unknown key '%s' in [%s] (see adhere-scene(5))", name, section);
     char full[64];
@@ -119,10 +157,12 @@ static int handler(void *user, const char *section, const char *name, const char
         return 1;
     }
     case K_COUNT: {
-        int nodes = !strcmp(name, "nodes");
-        if (adh_parse_count(value, nodes ? 10 : !strcmp(name, "dwell") ? 0 : 1, nodes ? 20000 : 100000000, &n, msg, sizeof msg) != 0)
+        int nodes = !strcmp(name, "nodes"), jobs = !strcmp(name, "jobs");
+        if (adh_parse_count(value, nodes ? 10 : !strcmp(name, "dwell") ? 0 : 1,
+                            nodes ? 20000 : jobs ? 64 : 100000000, &n, msg, sizeof msg) != 0)
             return fail(sp, "%s: %s", name, msg);
         if (nodes) c->nodes = (size_t)n;
+        else if (jobs) c->sweep.jobs = (int)n;
         else if (!strcmp(name, "dwell")) c->proto.dwell = (size_t)n;
         else c->relax.max_iter = (size_t)n;
         return 1;
@@ -131,7 +171,8 @@ static int handler(void *user, const char *section, const char *name, const char
         if (!strcmp(name, "turns")) {
             if (!parse_list(sp, name, value, c->proto.turns, ADH_MAX_TURNS, &c->proto.nturns))
                 return 0;
-            c->proto.unload = c->proto.nturns > 0;
+            if (!sp->unload_given)
+                c->proto.unload = c->proto.nturns > 0;
             return 1;
         }
         return parse_list(sp, name, value, c->proto.profiles, ADH_MAX_PROFILES, &c->proto.nprofiles);
@@ -142,28 +183,46 @@ static int handler(void *user, const char *section, const char *name, const char
     case K_MODE:
         if (!strcmp(value, "relax")) c->mode = ADH_MODE_RELAX;
         else if (!strcmp(value, "static")) c->mode = ADH_MODE_STATIC;
-        else return fail(sp, "mode: '%s' is not a mode: use relax or static%s", value, "");
+        else if (!strcmp(value, "rigid")) c->mode = ADH_MODE_RIGID;
+        else return fail(sp, "mode: '%s' is not a mode: use relax, static or rigid%s", value, "");
         return 1;
     case K_BOOL:
+        sp->unload_given = 1;
         if (!strcasecmp(value, "yes") || !strcmp(value, "1") || !strcasecmp(value, "true")) c->proto.unload = 1;
         else if (!strcasecmp(value, "no") || !strcmp(value, "0") || !strcasecmp(value, "false")) c->proto.unload = 0;
         else return fail(sp, "%s: '%s' is not yes or no", name, value);
         return 1;
     case K_PLOTS: {
         unsigned mask = 0;
+        int none = 0;
         char buf[256], *save = NULL;
         snprintf(buf, sizeof buf, "%s", value);
         for (char *t = strtok_r(buf, ", ", &save); t; t = strtok_r(NULL, ", ", &save)) {
             if (!strcmp(t, "force")) mask |= ADH_PLOT_FORCE;
             else if (!strcmp(t, "profile")) mask |= ADH_PLOT_PROFILE;
             else if (!strcmp(t, "contact")) mask |= ADH_PLOT_CONTACT;
-            else if (!strcmp(t, "none")) c->plot = 0;
-            else return fail(sp, "plots: '%s' is not a plot: use force, profile, contact or none%s", t, "");
+            else if (!strcmp(t, "precontact")) mask |= ADH_PLOT_PRECONTACT;
+            else if (!strcmp(t, "bulge")) mask |= ADH_PLOT_BULGE;
+            /* none: no figure of a single run; a sweep's combined figure
+             * ([sweep] plot) still follows --no-plot alone */
+            else if (!strcmp(t, "none")) none = 1;
+            else return fail(sp, "plots: '%s' is not a plot: use force, profile, contact, precontact, bulge or none%s", t, "");
         }
-        if (mask)
-            c->plots = mask;
+        if (!none && !mask)
+            return fail(sp, "plots: name at least one of force, profile, contact, precontact, bulge, or none%s%s", "", "");
+        if (none && mask)
+            return fail(sp, "plots: 'none' cannot be combined with other plots%s%s", "", "");
+        c->plots = mask;
         return 1;
     }
+    case K_SWEEP:
+        return parse_sweep(sp, name, value);
+    case K_SWEEP_PLOT:
+        if (!strcmp(value, "jump")) c->sweep.plot = ADH_SWEEP_PLOT_JUMP;
+        else if (!strcmp(value, "force")) c->sweep.plot = ADH_SWEEP_PLOT_FORCE;
+        else if (!strcmp(value, "none")) c->sweep.plot = ADH_SWEEP_PLOT_NONE;
+        else return fail(sp, "plot: '%s' is not a sweep plot: use jump, force or none%s", value, "");
+        return 1;
     case K_TEXT:
         snprintf(c->title, sizeof c->title, "%s", value);
         return 1;

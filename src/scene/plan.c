@@ -1,0 +1,326 @@
+#include "scene/plan.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "adhere/models.h"
+#include "adhere/observe.h"
+#include "adhere/protocol.h"
+#include "adhere/units.h"
+
+static void note(adh_plan_note *list, size_t *n, const char *what, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+static void note(adh_plan_note *list, size_t *n, const char *what, const char *fmt, ...)
+{
+    if (*n == ADH_PLAN_MAX_NOTES)
+        return;
+    adh_plan_note *x = &list[(*n)++];
+    snprintf(x->what, sizeof x->what, "%s", what);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(x->why, sizeof x->why, fmt, ap);
+    va_end(ap);
+}
+
+double adh_plan_start(const adh_config *cfg)
+{
+    return isnan(cfg->proto.start) ? adh_protocol_auto_start(&cfg->mat, cfg->proto.step) : cfg->proto.start;
+}
+
+static double deepest_turn(const adh_config *cfg)
+{
+    double t = INFINITY;
+    for (size_t i = 0; i < cfg->proto.nturns; i++)
+        t = fmin(t, cfg->proto.turns[i]);
+    return t;
+}
+
+double adh_plan_rigid_end(const adh_config *cfg)
+{
+    double floor_h = 0.7 * cfg->mat.z0;
+    return cfg->proto.nturns ? fmax(deepest_turn(cfg), floor_h) : floor_h;
+}
+
+int adh_plan_jobs(const adh_config *cfg)
+{
+    size_t runs = adh_config_nruns(cfg);
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    long jobs = cfg->sweep.jobs > 0 ? cfg->sweep.jobs : (cores > 0 ? cores : 1);
+    if ((size_t)jobs > runs)
+        jobs = (long)runs;
+    return jobs < 1 ? 1 : (int)jobs;
+}
+
+/* Whether x is one of the positions base + k d (k >= 0) the core steps to:
+ * it computes each afresh as base +- k d and matches profiles within 1e-6 d. */
+static int on_drive(double x, double base, double dir, double step)
+{
+    double k = dir * (x - base) / step;
+    return k > -1e-6 && fabs(k - nearbyint(k)) < 1e-6;
+}
+
+static size_t ceil_steps(double span, double step)
+{
+    return span > 0 ? (size_t)ceil(span / step - 1e-6) : 0;
+}
+
+/* Jump into contact on approach: eq 24 gives the central gap at the
+ * instability; when that is inside the contact threshold (hard spheres), the
+ * contact is reached first. Eq 23 turns that gap into a drive position. */
+static double jump_position(const adh_material *m)
+{
+    double h = fmax(adh_jump_separation(m), ADH_CONTACT_FACTOR * m->z0);
+    return adh_bulge_position(m, h);
+}
+
+static void plan_run(const adh_config *rc, const adh_plan *p, adh_plan_run *r)
+{
+    adh_derived d;
+    adh_material_derive(&rc->mat, &d);
+    r->E = rc->mat.E;
+    r->sigma = d.sigma;
+    r->eps = rc->relax.eps;
+    r->start = adh_plan_start(rc);
+    double step = rc->proto.step;
+    if (!p->elastic) {
+        r->end = adh_plan_rigid_end(rc);
+        r->loading_steps = 1 + (size_t)floor((r->start - r->end) / step + 1e-6);
+        r->unloading_steps = 0;
+        return;
+    }
+    r->end = p->stop_at_contact ? jump_position(&rc->mat) : deepest_turn(rc);
+    r->loading_steps = 1 + ceil_steps(r->start - r->end, step);
+    /* a turn off the step grid adds its own row */
+    for (size_t i = 0; i < rc->proto.nturns; i++)
+        if (!on_drive(rc->proto.turns[i], r->start, -1, step))
+            r->loading_steps++;
+    r->unloading_steps = 0;
+    if (p->unloading_branches)
+        for (size_t i = 0; i < rc->proto.nturns; i++)
+            r->unloading_steps += 1 + (size_t)floor((r->start - rc->proto.turns[i]) / step + 1e-6);
+}
+
+static void fmt_len(double v, char *buf, size_t len)
+{
+    adh_format_quantity(v, ADH_Q_LENGTH, 4, buf, len);
+}
+
+/* Which profile positions some branch passes through. */
+static void plan_profiles(const adh_config *cfg, adh_plan *p)
+{
+    const adh_plan_run *r0 = &p->runs[0];
+    double step = cfg->proto.step;
+    p->profiles_asked = cfg->proto.nprofiles;
+    p->profiles_stored = 0;
+    if (!cfg->proto.nprofiles) {
+        note(p->skipped, &p->nskipped, "profiles", "no positions asked ([output] profiles): no u, h, p profile is kept");
+        return;
+    }
+    if (!p->elastic) {
+        note(p->skipped, &p->nskipped, "profiles", "rigid spheres do not deform: no profile is kept");
+        return;
+    }
+    for (size_t i = 0; i < cfg->proto.nprofiles; i++) {
+        double x = cfg->proto.profiles[i];
+        size_t hits = 0;
+        if (x <= r0->start + 1e-6 * step && (p->stop_at_contact ? x >= r0->end : x >= r0->end - 1e-6 * step) &&
+            on_drive(x, r0->start, -1, step))
+            hits++;
+        for (size_t t = 0; p->unloading_branches && t < cfg->proto.nturns; t++)
+            if (on_drive(x, cfg->proto.turns[t], +1, step) && x <= r0->start + 1e-6 * step)
+                hits++;
+        p->profiles_stored += hits;
+        p->profiles_reached += hits > 0;
+        if (!hits) {
+            char b[64];
+            fmt_len(x, b, sizeof b);
+            char what[64];
+            snprintf(what, sizeof what, "profile at %s", b);
+            note(p->skipped, &p->nskipped, what, "no branch steps there (drive positions are start - k d on loading, turn + k d on unloading)%s",
+                 p->stop_at_contact ? " or it lies past the jump into contact" : "");
+        }
+    }
+}
+
+void adh_plan_make(const adh_config *cfg, adh_plan *p)
+{
+    memset(p, 0, sizeof *p);
+    p->nruns = adh_config_nruns(cfg);
+    p->jobs = adh_plan_jobs(cfg);
+    p->elastic = cfg->mode != ADH_MODE_RIGID;
+    p->static_mode = cfg->mode == ADH_MODE_STATIC;
+    p->loading_branches = 1;
+    p->stop_at_contact = p->elastic && cfg->proto.nturns == 0;
+    p->snapshots = p->elastic && cfg->proto.unload ? cfg->proto.nturns : 0;
+    p->unloading_branches = p->elastic && cfg->proto.unload ? cfg->proto.nturns : 0;
+    /* every swept parameter leaves the grid alone: one kernel serves all */
+    p->shared_kernel = p->elastic;
+    p->kernels = p->elastic ? 1 : 0;
+    p->contact_speeds = cfg->plot && (cfg->plots & ADH_PLOT_CONTACT);
+
+    for (size_t i = 0; i < p->nruns; i++) {
+        adh_config rc;
+        adh_config_sweep_run(cfg, i, &rc);
+        plan_run(&rc, p, &p->runs[i]);
+        p->runs[i].value = cfg->sweep.kind ? cfg->sweep.values[i] : NAN;
+        p->loading_steps += p->runs[i].loading_steps;
+        p->unloading_steps += p->runs[i].unloading_steps;
+    }
+
+    /* what is skipped, and why */
+    if (!p->elastic)
+        note(p->skipped, &p->nskipped, "elastic solve", "mode = rigid: the force is eq 22 at each drive position; no kernel, no relaxation");
+    if (p->stop_at_contact)
+        note(p->skipped, &p->nskipped, "loading past contact", "no turning point (turns = none): loading stops at the jump into contact");
+    if (p->elastic && !p->unloading_branches)
+        note(p->skipped, &p->nskipped, "unloading", "%s",
+             cfg->proto.nturns ? "unload = no: the turns end the loading branch only" : "no turning point asked (turns = none)");
+    if (p->elastic && cfg->proto.nturns > 1 && p->unloading_branches)
+        note(p->skipped, &p->nskipped, "reloading per turn", "the %zu turns share one loading branch: a state snapshot at each turn starts its unloading",
+             cfg->proto.nturns);
+    if (cfg->proto.dwell && !p->unloading_branches)
+        note(p->skipped, &p->nskipped, "dwell", "no unloading branch to dwell before");
+    plan_profiles(cfg, p);
+    if (!p->contact_speeds)
+        note(p->skipped, &p->nskipped, "contact-line speeds", "contact is not in [output] plots (the contact radius of each row is kept: one pass over the gap per step)");
+    if (!cfg->plot)
+        note(p->skipped, &p->nskipped, "plots", "--no-plot: no PNG is drawn");
+    else if (!(cfg->plots & (ADH_PLOT_ALL | ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
+        note(p->skipped, &p->nskipped, "plots of each run", "plots = none");
+    if (cfg->sweep.plot && !cfg->sweep.kind)
+        note(p->skipped, &p->nskipped, "sweep plot", "no swept parameter in [sweep]");
+    if (p->static_mode)
+        note(p->skipped, &p->nskipped, "relaxation", "mode = static: the equilibrium curve is followed by continuation, no eps steps");
+
+    /* what is stored */
+    const char *prefix = p->nruns > 1 ? "run-K/" : "";
+    char what[64];
+    snprintf(what, sizeof what, "%sforce.tsv", prefix);
+    note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
+    snprintf(what, sizeof what, "%ssummary.tsv", prefix);
+    note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star, jump_in_h0, pull-off, total iterations and seconds");
+    if (p->unloading_branches || (p->elastic && cfg->proto.nturns)) {
+        snprintf(what, sizeof what, "%sturns.tsv", prefix);
+        note(p->stored, &p->nstored, what, "one row per turning point: maximum load, contact radius, pull-off (adhesion vs load)");
+    }
+    if (p->profiles_stored) {
+        snprintf(what, sizeof what, "%sprofiles.tsv", prefix);
+        note(p->stored, &p->nstored, what, "u, h, p at %zu of the %zu positions asked (at most %zu profiles over the branches)",
+             p->profiles_reached, p->profiles_asked, p->profiles_stored);
+    }
+    if (cfg->plot) {
+        static const struct { unsigned bit; const char *file, *what; } figs[] = {
+            { ADH_PLOT_FORCE, "force.png", "force vs position, rigid eq 22, JKR and DMT; adhesion vs maximum load with 2+ turns" },
+            { ADH_PLOT_PROFILE, "profile.png", "surface profiles at the stored positions" },
+            { ADH_PLOT_CONTACT, "contact.png", "contact-line speed and contact radius (contact.tsv)" },
+            { ADH_PLOT_PRECONTACT, "precontact.png", "force before contact vs eq 22 at h0 and at h from eq 23 (Figure 1 inset)" },
+            { ADH_PLOT_BULGE, "bulge.png", "central bulge before contact vs eq 23 (Figure 2)" },
+        };
+        for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++)
+            if (cfg->plots & figs[i].bit) {
+                snprintf(what, sizeof what, "%s%s", prefix, figs[i].file);
+                note(p->stored, &p->nstored, what, "%s", figs[i].what);
+            }
+    }
+    if (p->nruns > 1 || cfg->sweep.kind) {
+        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: %s, sigma, jump_in_h0, h_before, h_star, pulloff_F, iterations, seconds",
+             adh_sweep_name(cfg->sweep.kind));
+        if (cfg->plot && cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP)
+            note(p->stored, &p->nstored, "jump.png", "jump separation vs sigma against eq 24 (Figure 3)");
+        if (cfg->plot && cfg->sweep.plot == ADH_SWEEP_PLOT_FORCE)
+            note(p->stored, &p->nstored, "force.png", "every run's force curve with the JKR prediction (Figure 7)");
+    }
+}
+
+static void list_lengths(FILE *f, const double *v, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        fprintf(f, "%s%g", i ? ", " : "", v[i] * 1e9);
+    fputs(" nm", f);
+}
+
+static adh_quantity sweep_quantity(adh_sweep_kind k)
+{
+    return k == ADH_SWEEP_E ? ADH_Q_PRESSURE : k == ADH_SWEEP_EPS ? ADH_Q_LENGTH : ADH_Q_NONE;
+}
+
+void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
+{
+    char a[64], b[64];
+    fprintf(f, "plan: %s\n", cfg->title[0] ? cfg->title : "(untitled)");
+    fprintf(f, "scene: %s\n", cfg->scene[0] ? cfg->scene : "(built-in default)");
+    fprintf(f, "runs: %zu\n", p->nruns);
+    if (cfg->sweep.kind) {
+        fprintf(f, "sweep: %s =", adh_sweep_name(cfg->sweep.kind));
+        for (size_t i = 0; i < cfg->sweep.n; i++) {
+            if (cfg->sweep.kind == ADH_SWEEP_SIGMA)
+                snprintf(a, sizeof a, "%g", cfg->sweep.values[i]);
+            else
+                adh_format_quantity(cfg->sweep.values[i], sweep_quantity(cfg->sweep.kind), 4, a, sizeof a);
+            fprintf(f, "%s %s", i ? "," : "", a);
+        }
+        fprintf(f, " (each an independent run)\n");
+        fprintf(f, "parallel: %d run%s at once%s\n", p->jobs, p->jobs == 1 ? "" : "s",
+                p->jobs > 1 ? " (one thread each; BLAS single-threaded)" : "");
+    }
+    if (!p->elastic)
+        fprintf(f, "mode: rigid (eq 22 only)\n");
+    else if (p->static_mode)
+        fprintf(f, "mode: static (equilibrium continuation)\n");
+    else {
+        adh_format_quantity(cfg->relax.eps, ADH_Q_LENGTH, 3, a, sizeof a);
+        fprintf(f, "mode: relax (the paper's relaxation, eps = %s%s)\n", a,
+                cfg->sweep.kind == ADH_SWEEP_EPS ? " unless swept" : "");
+    }
+    if (p->elastic) {
+        double dr = adh_config_spacing(cfg);
+        fmt_len(dr, a, sizeof a);
+        fmt_len(dr * (double)cfg->nodes, b, sizeof b);
+        fprintf(f, "kernel: %s, N = %zu, spacing %s, Rmax %s; %zu built%s\n", adh_kernel_name(cfg->kernel),
+                cfg->nodes, a, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "");
+    } else {
+        fprintf(f, "kernel: none (no elastic solve)\n");
+    }
+    const adh_plan_run *r0 = &p->runs[0];
+    fmt_len(r0->start, a, sizeof a);
+    fmt_len(r0->end, b, sizeof b);
+    fprintf(f, "loading branches: %zu%s (from %s to %s%s, %s%zu steps)\n", p->loading_branches,
+            p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "about " : "", b,
+            p->stop_at_contact ? "ends at the jump into contact, about " : "", r0->loading_steps);
+    if (p->elastic && cfg->proto.nturns) {
+        fprintf(f, "turning points: %zu (", cfg->proto.nturns);
+        list_lengths(f, cfg->proto.turns, cfg->proto.nturns);
+        fprintf(f, ")\n");
+    } else {
+        fprintf(f, "turning points: none\n");
+    }
+    fprintf(f, "snapshots: %zu%s\n", p->snapshots, p->snapshots ? " (the state at each turn, where its unloading starts)" : "");
+    fprintf(f, "unloading branches: %zu%s", p->unloading_branches, p->nruns > 1 && p->unloading_branches ? " per run" : "");
+    if (p->unloading_branches)
+        fprintf(f, " (each from its turn until the surfaces jump apart, at most %zu steps in all)", r0->unloading_steps);
+    fputc('\n', f);
+    if (p->unloading_branches)
+        fprintf(f, "dwell: %zu iterations at each turn before unloading\n", cfg->proto.dwell);
+    if (p->elastic) {
+        adh_format_quantity(cfg->drive_speed, ADH_Q_SPEED, 3, a, sizeof a);
+        fprintf(f, "drive speed: %s (turns d a / d h0 into contact-line speeds)\n", a);
+    }
+    for (size_t i = 0; p->nruns > 1 && i < p->nruns; i++) {
+        const adh_plan_run *r = &p->runs[i];
+        fmt_len(r->start, a, sizeof a);
+        fmt_len(r->end, b, sizeof b);
+        fprintf(f, "run %zu: E = %.4g Pa, sigma = %.4g, eps = %g pm: from %s to %s%s, %zu loading + at most %zu unloading steps\n",
+                i + 1, r->E, r->sigma, r->eps * 1e12, a,
+                p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
+    }
+    fprintf(f, "steps: %s%zu loading + at most %zu unloading\n", p->stop_at_contact ? "about " : "",
+            p->loading_steps, p->unloading_steps);
+    for (size_t i = 0; i < p->nstored; i++)
+        fprintf(f, "stored: %s: %s\n", p->stored[i].what, p->stored[i].why);
+    for (size_t i = 0; i < p->nskipped; i++)
+        fprintf(f, "skip: %s: %s\n", p->skipped[i].what, p->skipped[i].why);
+}
