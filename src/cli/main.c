@@ -5,6 +5,7 @@
 
 #include "cli/batch.h"
 #include "cli/options.h"
+#include "scene/plan.h"
 #include "tui/tui.h"
 
 int main(int argc, char **argv)
@@ -35,9 +36,14 @@ int main(int argc, char **argv)
     switch (cli.action) {
     case ADH_ACT_BATCH:
         return adh_batch_main(&cli);
-    case ADH_ACT_PLAN:
+    case ADH_ACT_PLAN: {
+        adh_plan plan;
+        adh_plan_make(&cli.cfg, &plan);
+        adh_plan_print(stdout, &cli.cfg, &plan);
+        return ADH_EXIT_OK;
+    }
     case ADH_ACT_COST:
-        fprintf(stderr, "adhere: --%s is not in this build yet\n", cli.action == ADH_ACT_PLAN ? "plan" : "cost");
+        fprintf(stderr, "adhere: --cost is not in this build yet\n");
         return ADH_EXIT_USAGE;
     default:
         return adh_tui_main(&cli.cfg);

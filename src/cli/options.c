@@ -40,7 +40,7 @@ static const option_doc options[] = {
     { { "start", required_argument, 0, OPT_START }, "M", "first drive position h0 (default: where the force is negligible)" },
     { { "turn", required_argument, 0, OPT_TURN }, "M[,M...]", "turning points (default -5nm); 'none' loads to contact only" },
     { { "dwell", required_argument, 0, OPT_DWELL }, "N", "iterations held at each turning point before unloading (default 0)" },
-    { { "mode", required_argument, 0, OPT_MODE }, "relax|static", "paper's relaxation, or the static equilibrium curve (default relax)" },
+    { { "mode", required_argument, 0, OPT_MODE }, "relax|static|rigid", "paper's relaxation, the static equilibrium curve, or rigid spheres only (eq 22, no elastic solve) (default relax)" },
     { { "reference", required_argument, 0, OPT_REFERENCE }, "static", "also compute the static curve as a reference in relaxation mode" },
     { { "batch", no_argument, 0, 'b' }, NULL, "run the protocol without the TUI and write tables" },
     { { "out", required_argument, 0, 'o' }, "DIR", "write force.tsv, summary.tsv, turns.tsv and plots into DIR (created)" },
@@ -174,8 +174,10 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
             cfg->mode = ADH_MODE_RELAX;
         else if (strcmp(arg, "static") == 0)
             cfg->mode = ADH_MODE_STATIC;
+        else if (strcmp(arg, "rigid") == 0)
+            cfg->mode = ADH_MODE_RIGID;
         else {
-            snprintf(why, n, "--mode: '%s' is not a mode: use relax or static", arg);
+            snprintf(why, n, "--mode: '%s' is not a mode: use relax, static or rigid", arg);
             return 2;
         }
         return 0;
@@ -312,7 +314,27 @@ int adh_cli_parse(int argc, char **argv, adh_cli *cli, char *why, size_t whylen)
     return 0;
 }
 
+static int validate_run(const adh_config *cfg, char *why, size_t whylen);
+
+/* A sweep is valid when every one of its runs is (each sets its own E or eps). */
 int adh_cli_validate(const adh_config *cfg, char *why, size_t whylen)
+{
+    if (cfg->sweep.kind == ADH_SWEEP_NONE)
+        return validate_run(cfg, why, whylen);
+    for (size_t i = 0; i < cfg->sweep.n; i++) {
+        adh_config run;
+        char msg[1024];
+        adh_config_sweep_run(cfg, i, &run);
+        if (validate_run(&run, msg, sizeof msg) != 0) {
+            snprintf(why, whylen, "sweep run %zu (%s = %g): %s", i + 1, adh_sweep_name(cfg->sweep.kind),
+                     cfg->sweep.values[i], msg);
+            return 2;
+        }
+    }
+    return 0;
+}
+
+static int validate_run(const adh_config *cfg, char *why, size_t whylen)
 {
     if (adh_material_validate(&cfg->mat, why, whylen) != ADH_SUCCESS)
         return 2;
