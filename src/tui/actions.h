@@ -1,0 +1,43 @@
+/* The TUI's action table: every key, what it does, and the sentence the help
+ * screen, --list-keys and the man page's KEYS section show for it. Key
+ * handling looks keys up here, so a key cannot work without being listed. */
+#ifndef ADH_TUI_ACTIONS_H
+#define ADH_TUI_ACTIONS_H
+
+#include <stdio.h>
+
+typedef enum adh_action {
+    ACT_NONE = 0,
+    ACT_FORWARD,      /* approach by d */
+    ACT_BACK,         /* retract by d */
+    ACT_RUN,          /* continuous: to the turning point, or until pull-off */
+    ACT_UNDO,
+    ACT_REDO,
+    ACT_RESET,
+    ACT_SELECT_UP,
+    ACT_SELECT_DOWN,
+    ACT_EDIT,
+    ACT_SCALE_UP,
+    ACT_SCALE_DOWN,
+    ACT_COMMAND,      /* the ':' prompt, same commands as a replay script */
+    ACT_PLOTS,
+    ACT_HELP,
+    ACT_REDRAW,
+    ACT_CANCEL,
+    ACT_QUIT
+} adh_action;
+
+typedef struct adh_key_binding {
+    int key;              /* curses key code, as in tui/replay.h */
+    adh_action action;
+    const char *what;     /* one line for help, --list-keys and the man page */
+} adh_key_binding;
+
+/* The table, terminated by an entry with action ACT_NONE. */
+extern const adh_key_binding adh_key_table[];
+
+/* The action bound to key, ACT_NONE when none. Digits are not in the table:
+ * they make a count prefix (see the help screen's first line). */
+adh_action adh_action_for_key(int key);
+
+#endif

@@ -1,0 +1,370 @@
+#define NCURSES_WIDECHAR 1
+#include "tui/screen.h"
+
+#include <curses.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <wchar.h>
+
+#include "adhere/units.h"
+#include "tui/actions.h"
+#include "tui/replay.h"
+
+/* Text at (y, x), clipped to w columns and to the screen. Every label is
+ * one column per character (Greek letters included), so characters are
+ * columns. */
+static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
+{
+    char buf[1024];
+    wchar_t wbuf[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    if (y < 0 || y >= LINES || x >= COLS || w <= 0)
+        return;
+    if (x + w > COLS)
+        w = COLS - x;
+    size_t n = mbstowcs(wbuf, buf, sizeof wbuf / sizeof wbuf[0] - 1);
+    if (n == (size_t)-1) {   /* not UTF-8 after all: show bytes as they are */
+        attron(attr);
+        mvaddnstr(y, x, buf, w);
+        attroff(attr);
+        return;
+    }
+    attron(attr);
+    mvaddnwstr(y, x, wbuf, (int)n < w ? (int)n : w);
+    attroff(attr);
+}
+
+/* s padded with blanks to w columns (s may hold 2-byte Greek letters, one
+ * column each): printf's %-*s counts bytes. */
+static const char *pad(const char *s, int w, char *buf, size_t len)
+{
+    size_t cols = mbstowcs(NULL, s, 0);
+    if (cols == (size_t)-1)
+        cols = strlen(s);
+    snprintf(buf, len, "%s%*s", s, (int)cols < w ? w - (int)cols : 0, "");
+    return buf;
+}
+
+static const char *gk(const tui_view *v, const char *utf8, const char *ascii)
+{
+    return v->utf8 ? utf8 : ascii;
+}
+
+static void q(double value, adh_quantity kind, char *buf, size_t len)
+{
+    adh_format_quantity(value, kind, 4, buf, len);
+}
+
+static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w)
+{
+    put(y, x, w, A_BOLD, " Parameters  (%s select, Enter edit, +/- x2)",
+        gk(v, "\xe2\x86\x91\xe2\x86\x93", "Up/Down"));
+    for (int p = 0; p < P_COUNT; p++) {
+        char val[64];
+        tui_sim_param_text(s, (tui_param)p, val, sizeof val);
+        const tui_param_info *pi = &tui_params[p];
+        int sel = p == v->sel;
+        char lab[32];
+        /* the spacing follows sqrt(R z0) until it is set */
+        int autosp = p == P_SPACING && isnan(s->spacing);
+        put(y + 1 + p, x, w, sel ? A_REVERSE : A_NORMAL, "%s%s %-12s %s%s", sel ? " >" : "  ",
+            pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), val, pi->what, autosp ? ", auto" : "");
+    }
+}
+
+static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int w)
+{
+    const adh_derived *d = &s->der;
+    char g[64], es[64], jkr[64], dmt[64];
+    /* gamma is an energy per area: J/m^2, shown in mJ/m^2 where it lives */
+    snprintf(g, sizeof g, "%.4g mJ/m%s", d->gamma * 1e3, gk(v, "\xc2\xb2", "^2"));
+    q(d->Estar, ADH_Q_PRESSURE, es, sizeof es);
+    q(d->F_jkr, ADH_Q_FORCE, jkr, sizeof jkr);
+    q(d->F_dmt, ADH_Q_FORCE, dmt, sizeof dmt);
+    put(y, x, w, A_BOLD, " Derived (before any solve)");
+    put(y + 1, x, w, A_NORMAL, "  %s %.4g   %s %.4g   %s %s", gk(v, "\xcf\x83", "sigma"), d->sigma,
+        gk(v, "\xce\xbc", "mu"), d->mu, gk(v, "\xce\xb3", "gamma"), g);
+    put(y + 2, x, w, A_NORMAL, "  E* %s (Johnson's, E/2)", es);
+    put(y + 3, x, w, A_NORMAL, "  pull-off JKR %s DMT %s", jkr, dmt);
+}
+
+static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
+{
+    const adh_obs *o = tui_sim_row(s);
+    char a[64], b[64];
+    size_t nrows;
+    const adh_obs *rows = tui_sim_rows(s, &nrows);
+    put(y, x, w, A_BOLD, " State");
+    if (!o) {
+        q(s->start, ADH_Q_LENGTH, a, sizeof a);
+        put(y + 1, x, w, A_NORMAL, "  h0     %-12s start position, not solved yet", a);
+        put(y + 2, x, w, A_NORMAL, "  Press f to approach by d, r to run to the turning point,");
+        put(y + 3, x, w, A_NORMAL, "  ? for every key. Edits change the numbers at the left");
+        put(y + 4, x, w, A_NORMAL, "  at once; a solve starts only when you step.");
+    } else {
+        q(o->h0, ADH_Q_LENGTH, a, sizeof a);
+        q(o->F_rigid, ADH_Q_FORCE, b, sizeof b);
+        put(y + 1, x, w, A_NORMAL, "  h0     %-12s drive position", a);
+        q(o->F, ADH_Q_FORCE, a, sizeof a);
+        /* eq 22 only means something apart, where it is the reference */
+        if (o->a > 0)
+            put(y + 2, x, w, A_NORMAL, "  F      %-12s force (positive repels)", a);
+        else
+            put(y + 2, x, w, A_NORMAL, "  F      %-12s force (rigid spheres %s)", a, b);
+        q(o->delta, ADH_Q_LENGTH, a, sizeof a);
+        char lab[32];
+        put(y + 3, x, w, A_NORMAL, "  %s %-12s central deformation", pad(gk(v, "\xce\xb4", "delta"), 6, lab, sizeof lab), a);
+        q(o->hc, ADH_Q_LENGTH, a, sizeof a);
+        put(y + 4, x, w, A_NORMAL, "  gap    %-12s central gap h(0)", a);
+        q(o->a, ADH_Q_LENGTH, a, sizeof a);
+        put(y + 5, x, w, A_NORMAL, "  a      %-12s contact radius%s", a, o->a > 0 ? "" : " (not in contact)");
+        if (v->no_clock)
+            snprintf(b, sizeof b, "time masked");
+        else if (o->seconds < 1e-3)
+            snprintf(b, sizeof b, "%.0f us", o->seconds * 1e6);
+        else if (o->seconds < 1)
+            snprintf(b, sizeof b, "%.1f ms", o->seconds * 1e3);
+        else
+            snprintf(b, sizeof b, "%.2f s", o->seconds);
+        put(y + 6, x, w, A_NORMAL, "  step   %zu iteration%s, %s%s", o->iters, o->iters == 1 ? "" : "s", b,
+            o->converged ? "" : ", NOT converged");
+        if (o->branch > 0)
+            put(y + 7, x, w, A_NORMAL, "  branch loading (approaching)");
+        else
+            put(y + 7, x, w, A_NORMAL, "  branch unloading (retracting), path %d", o->path);
+    }
+    put(y + 8, x, w, A_NORMAL, "  mode   relaxation, %s", v->activity);
+    size_t bad = 0;
+    for (size_t i = 0; i < nrows; i++)
+        bad += !rows[i].converged;
+    q(s->start, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 9, x, w, A_NORMAL, "  path   %zu state%s, %zu to redo; start %s", nrows, nrows == 1 ? "" : "s",
+        tui_sim_redoable(s), a);
+    if (s->warn[0])
+        put(y + 10, x, w, A_BOLD, "  ! %s", s->warn);
+    else if (bad)
+        put(y + 10, x, w, A_BOLD, "  ! %zu step%s on this path did not converge", bad, bad == 1 ? "" : "s");
+}
+
+/* The force-position curve so far, drawn with characters: '+' loading,
+ * 'o' unloading, '@' the current state, '-' the zero-force line. */
+static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, int h, int w)
+{
+    size_t n;
+    const adh_obs *rows = tui_sim_rows(s, &n);
+    const adh_obs *cur = tui_sim_row(s);
+    if (h < 4 || w < 30)
+        return;
+    put(y0, x0, w, A_BOLD, " Force F against drive position h0   + loading  o unloading  @ now");
+    const int lab = 11;
+    int pw = w - lab - 1, ph = h - 2;
+    if (n == 0) {
+        put(y0 + ph / 2, x0 + lab, pw, A_NORMAL, "(the force-position curve appears here as you step)");
+        return;
+    }
+    double xmin = INFINITY, xmax = -INFINITY, ymin = 0, ymax = 0;
+    for (size_t i = 0; i < n; i++) {
+        xmin = fmin(xmin, rows[i].h0);
+        xmax = fmax(xmax, rows[i].h0);
+        ymin = fmin(ymin, rows[i].F);
+        ymax = fmax(ymax, rows[i].F);
+    }
+    if (xmax - xmin < s->step) {
+        xmin -= s->step;
+        xmax += s->step;
+    }
+    if (ymax - ymin <= 0) {
+        ymax = 1e-12;
+        ymin = -1e-12;
+    }
+    char *grid = malloc((size_t)(pw * ph));
+    if (!grid)
+        return;
+    memset(grid, ' ', (size_t)(pw * ph));
+    int zero = (int)lround(ymax / (ymax - ymin) * (ph - 1));
+    for (int c = 0; c < pw; c++)
+        grid[zero * pw + c] = '-';
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t i = 0; i < n; i++) {
+            if ((pass == 0) != (rows[i].branch > 0))
+                continue;
+            int c = (int)lround((rows[i].h0 - xmin) / (xmax - xmin) * (pw - 1));
+            int r = (int)lround((ymax - rows[i].F) / (ymax - ymin) * (ph - 1));
+            grid[r * pw + c] = rows[i].branch > 0 ? '+' : 'o';
+        }
+    if (cur) {
+        int c = (int)lround((cur->h0 - xmin) / (xmax - xmin) * (pw - 1));
+        int r = (int)lround((ymax - cur->F) / (ymax - ymin) * (ph - 1));
+        grid[r * pw + c] = '@';
+    }
+    char lbl[64];
+    for (int r = 0; r < ph; r++) {
+        lbl[0] = '\0';
+        if (r == 0)
+            q(ymax, ADH_Q_FORCE, lbl, sizeof lbl);
+        else if (r == ph - 1)
+            q(ymin, ADH_Q_FORCE, lbl, sizeof lbl);
+        else if (r == zero)
+            snprintf(lbl, sizeof lbl, "0");
+        put(y0 + 1 + r, x0, lab, A_NORMAL, "%*s", lab - 1, lbl);
+        put(y0 + 1 + r, x0 + lab - 1, 1, A_NORMAL, "|");
+        put(y0 + 1 + r, x0 + lab, pw, A_NORMAL, "%.*s", pw, grid + r * pw);
+    }
+    free(grid);
+    char lo[64], hi[64];
+    q(xmin, ADH_Q_LENGTH, lo, sizeof lo);
+    q(xmax, ADH_Q_LENGTH, hi, sizeof hi);
+    int y = y0 + 1 + ph;
+    put(y, x0 + lab, pw, A_NORMAL, "%s", lo);
+    put(y, x0 + lab + pw / 2 - 14, 28, A_NORMAL, "h0 (approach <- -> retract)");
+    put(y, x0 + lab + pw - (int)strlen(hi), (int)strlen(hi), A_NORMAL, "%s", hi);
+    (void)v;
+}
+
+void tui_draw(const tui_sim *s, const tui_view *v)
+{
+    erase();
+    int W = COLS, H = LINES;
+    put(0, 0, W, A_REVERSE, "%-*s", W, " adhere: two elastic spheres held by a Lennard-Jones surface force");
+    put(0, W - 17 > 0 ? W - 17 : 0, 17, A_REVERSE, "  ? help  q quit ");
+    int y;
+    if (W >= 80) {
+        int lw = W / 2 - 2 < 44 ? W / 2 - 2 : 44;
+        draw_params(s, v, 1, 0, lw);
+        draw_derived(s, v, 11, 0, lw);
+        draw_state(s, v, 1, lw + 1, W - lw - 1);
+        y = 15;
+    } else {
+        /* Narrow: one column, the state first, parameters below it. */
+        draw_state(s, v, 1, 0, W);
+        draw_params(s, v, 12, 0, W);
+        draw_derived(s, v, 22, 0, W);
+        y = 26;
+    }
+    if (H - 2 - y >= 5)
+        draw_preview(s, v, y, 0, H - 2 - y, W);
+    /* the status line in plain words, then the prompt or the key hints */
+    if (v->status && v->status[0])
+        put(H - 2, 0, W, v->status_error ? A_BOLD : A_NORMAL, "%s%s", v->status_error ? "error: " : "",
+            v->status);
+    if (v->prompt)
+        put(H - 1, 0, W, A_REVERSE, "%-*s", W, v->prompt);
+    else if (v->count)
+        put(H - 1, 0, W, A_REVERSE, "%-*s", W, "");
+    else
+        put(H - 1, 0, W, A_REVERSE, "%-*s", W,
+            " f in  b out  r run  u undo  U redo  x reset  p plots  : command  ? help  q quit");
+    if (v->count)
+        put(H - 1, 0, W, A_REVERSE, " count %ld: f, b, u, U, + or - repeats that many times; Esc cancels", v->count);
+}
+
+/* Appends "  KEY      what" to lines, the description wrapped at blanks to
+ * fit w columns, continuation lines indented under it. */
+static int help_entry(char lines[][256], int n, int max, int w, const char *key, const char *what)
+{
+    const int indent = 11;
+    int room = w - indent > 20 ? w - indent : 20;
+    const char *p = what;
+    int first = 1;
+    while (*p && n < max) {
+        int len = (int)strlen(p);
+        int take = len;
+        if (len > room) {
+            take = room;
+            while (take > 0 && p[take] != ' ')
+                take--;
+            if (take == 0)
+                take = room;
+        }
+        snprintf(lines[n++], 256, "  %-8s %.*s", first ? key : "", take, p);
+        first = 0;
+        p += take;
+        while (*p == ' ')
+            p++;
+    }
+    return n;
+}
+
+int tui_draw_help(const tui_view *v)
+{
+    erase();
+    int W = COLS, H = LINES;
+    char name[32], msg[256];
+    /* Lines first, so the screen can start anywhere in them. */
+    enum { MAX = 160 };
+    static char lines[MAX][256];
+    int n = 0;
+    for (const adh_key_binding *b = adh_key_table; b->action != ACT_NONE; b++) {
+        adh_replay_key_name(b->key, name, sizeof name);
+        n = help_entry(lines, n, MAX, W, name, b->what);
+    }
+    n = help_entry(lines, n, MAX, W, "1-9", "digits before f, b, u, U, + or - make a count: 10f steps ten times");
+    if (n < MAX)
+        snprintf(lines[n++], 256, " ");
+    n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn; "
+                   "values take units: 2GPa 0.4nm 1e-19J 10um");
+    snprintf(msg, sizeof msg, "changing E, A, z0, R, %s, d, N or the spacing starts a new path from the "
+             "start; turn only moves where r stops loading", gk(v, "\xce\xb5", "eps"));
+    n = help_entry(lines, n, MAX, W, "", msg);
+    put(0, 0, W, A_REVERSE, "%-*s", W, " adhere keys  (PgUp/PgDn scroll, any other key returns)");
+    int top = v->help_top;
+    if (top > n - 1)
+        top = n - 1;
+    if (top < 0)
+        top = 0;
+    for (int i = 0; i + top < n && 1 + i < H; i++)
+        put(1 + i, 0, W, A_NORMAL, "%s", lines[i + top]);
+    return n;
+}
+
+int tui_dump_screen(const char *path, char *why, size_t whylen)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(why, whylen, "cannot write the screen to %s: %s", path, strerror(errno));
+        return -1;
+    }
+    mbstate_t mbs;
+    char line[8192];
+    for (int y = 0; y < LINES; y++) {
+        size_t len = 0, keep = 0;
+        for (int x = 0; x < COLS; x++) {
+            cchar_t cc;
+            wchar_t wch[CCHARW_MAX + 1];
+            attr_t attr;
+            short pair;
+            if (mvwin_wch(curscr, y, x, &cc) == ERR || getcchar(&cc, wch, &attr, &pair, NULL) == ERR)
+                wch[0] = L' ', wch[1] = 0;
+            for (int k = 0; wch[k] && k < CCHARW_MAX; k++) {
+                char mb[MB_LEN_MAX];
+                memset(&mbs, 0, sizeof mbs);
+                size_t m = wcrtomb(mb, wch[k], &mbs);
+                if (m == (size_t)-1) {
+                    mb[0] = '?';
+                    m = 1;
+                }
+                if (len + m < sizeof line) {
+                    memcpy(line + len, mb, m);
+                    len += m;
+                }
+            }
+            if (wch[0] != L' ')
+                keep = len;
+        }
+        fprintf(f, "%.*s\n", (int)keep, line);
+    }
+    if (fclose(f) != 0) {
+        snprintf(why, whylen, "cannot write the screen to %s: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,433 @@
+#include "tui/sim.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "adhere/observe.h"
+#include "adhere/protocol.h"
+#include "adhere/status.h"
+
+const tui_param_info tui_params[P_COUNT] = {
+    [P_E] = { "E", "E", "E", "combined modulus", ADH_Q_PRESSURE },
+    [P_A] = { "A", "A", "A", "Hamaker constant", ADH_Q_ENERGY },
+    [P_Z0] = { "z0", "z0", "z0", "equilibrium gap", ADH_Q_LENGTH },
+    [P_R] = { "R", "R", "R", "sphere radius", ADH_Q_LENGTH },
+    [P_EPS] = { "eps", "\xce\xb5", "eps", "convergence (eps)", ADH_Q_LENGTH },
+    [P_D] = { "d", "d", "d", "drive step", ADH_Q_LENGTH },
+    [P_N] = { "N", "N", "N", "grid nodes", ADH_Q_NONE },
+    [P_SPACING] = { "spacing", "\xce\x94", "dr", "grid spacing", ADH_Q_LENGTH },
+    [P_TURN] = { "turn", "turn", "turn", "turning point", ADH_Q_LENGTH },
+};
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+double tui_sim_spacing(const tui_sim *s)
+{
+    return isnan(s->spacing) ? adh_grid_default_spacing(&s->mat) : s->spacing;
+}
+
+static void free_solver(tui_sim *s)
+{
+    adh_relax_free(s->w);
+    adh_kernel_free(s->k);
+    adh_grid_free(s->g);
+    adh_history_free(s->hist);
+    s->w = NULL;
+    s->k = NULL;
+    s->g = NULL;
+    s->hist = NULL;
+}
+
+/* A change to the physics: the old path no longer belongs to these
+ * parameters, so it is dropped and the next step starts at the start. */
+static void new_path(tui_sim *s)
+{
+    s->start = isnan(s->start_opt) ? adh_protocol_auto_start(&s->mat, s->step) : s->start_opt;
+    s->busy = 0;
+    s->solving_start = 0;
+    s->unconverged = 0;
+    s->warn[0] = '\0';
+    if (s->hist)
+        adh_history_clear(s->hist);
+    if (s->w)
+        adh_relax_set(s->w, &s->mat, &s->relax, s->start);
+    /* An automatic spacing follows sqrt(R z0): when R or z0 moved it, the
+     * grid is a different grid and the kernel must follow. E and A never
+     * get here with a changed spacing, so they never rebuild it. */
+    if (s->g && (s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s)))
+        s->grid_stale = 1;
+}
+
+int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
+{
+    memset(s, 0, sizeof *s);
+    s->mat = cfg->mat;
+    s->nodes = cfg->nodes;
+    s->spacing = cfg->spacing;
+    s->kernel = cfg->kernel;
+    s->relax = cfg->relax;
+    s->step = cfg->proto.step;
+    s->start_opt = cfg->proto.start;
+    s->turn = NAN;
+    for (size_t i = 0; i < cfg->proto.nturns; i++)
+        s->turn = isnan(s->turn) ? cfg->proto.turns[i] : fmin(s->turn, cfg->proto.turns[i]);
+    if (adh_material_validate(&s->mat, why, whylen) != ADH_SUCCESS ||
+        adh_relax_settings_validate(&s->relax, why, whylen) != ADH_SUCCESS)
+        return -1;
+    if (s->nodes < 10) {
+        snprintf(why, whylen, "N = %zu nodes is not allowed: at least 10 are needed", s->nodes);
+        return -1;
+    }
+    adh_material_derive(&s->mat, &s->der);
+    s->grid_stale = 1;
+    new_path(s);
+    return 0;
+}
+
+void tui_sim_free(tui_sim *s)
+{
+    free_solver(s);
+}
+
+static int ensure_solver(tui_sim *s, char *why, size_t whylen)
+{
+    if (s->w && !s->grid_stale)
+        return 0;
+    free_solver(s);
+    s->g = adh_grid_alloc(s->nodes, tui_sim_spacing(s));
+    s->k = s->g ? adh_kernel_alloc(s->g, s->kernel) : NULL;
+    s->w = s->k ? adh_relax_alloc(s->g, s->k) : NULL;
+    s->hist = s->w ? adh_history_alloc(s->nodes) : NULL;
+    if (!s->hist) {
+        free_solver(s);
+        snprintf(why, whylen, "out of memory for a grid of N = %zu nodes: try fewer", s->nodes);
+        return -1;
+    }
+    s->grid_stale = 0;
+    adh_relax_set(s->w, &s->mat, &s->relax, s->start);
+    return 0;
+}
+
+void tui_sim_param_text(const tui_sim *s, tui_param p, char *buf, size_t len)
+{
+    switch (p) {
+    case P_E: adh_format_quantity(s->mat.E, ADH_Q_PRESSURE, 4, buf, len); break;
+    case P_A: adh_format_quantity(s->mat.A, ADH_Q_ENERGY, 4, buf, len); break;
+    case P_Z0: adh_format_quantity(s->mat.z0, ADH_Q_LENGTH, 4, buf, len); break;
+    case P_R: adh_format_quantity(s->mat.R, ADH_Q_LENGTH, 4, buf, len); break;
+    case P_EPS: adh_format_quantity(s->relax.eps, ADH_Q_LENGTH, 4, buf, len); break;
+    case P_D: adh_format_quantity(s->step, ADH_Q_LENGTH, 4, buf, len); break;
+    case P_N: snprintf(buf, len, "%zu", s->nodes); break;
+    case P_SPACING: {
+        char q[64];
+        adh_format_quantity(tui_sim_spacing(s), ADH_Q_LENGTH, 4, q, sizeof q);
+        snprintf(buf, len, "%s", q);
+        break;
+    }
+    case P_TURN:
+        if (isnan(s->turn))
+            snprintf(buf, len, "none");
+        else
+            adh_format_quantity(s->turn, ADH_Q_LENGTH, 4, buf, len);
+        break;
+    default: snprintf(buf, len, "?"); break;
+    }
+}
+
+int tui_sim_param_lookup(const char *name)
+{
+    for (int p = 0; p < P_COUNT; p++)
+        if (strcmp(name, tui_params[p].name) == 0)
+            return p;
+    return -1;
+}
+
+/* Every parameter change goes through here, from typed text or a scale key. */
+static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
+{
+    const char *name = tui_params[p].name;
+    adh_material m = s->mat;
+    adh_relax_settings rs = s->relax;
+    char msg[256];
+    switch (p) {
+    case P_E: case P_A: case P_Z0: case P_R:
+        *(p == P_E ? &m.E : p == P_A ? &m.A : p == P_Z0 ? &m.z0 : &m.R) = v;
+        if (adh_material_validate(&m, msg, sizeof msg) != ADH_SUCCESS) {
+            snprintf(why, whylen, "%s", msg);
+            return -1;
+        }
+        s->mat = m;
+        adh_material_derive(&s->mat, &s->der);
+        break;
+    case P_EPS:
+        rs.eps = v;
+        if (adh_relax_settings_validate(&rs, msg, sizeof msg) != ADH_SUCCESS) {
+            snprintf(why, whylen, "%s", msg);
+            return -1;
+        }
+        s->relax = rs;
+        break;
+    case P_D:
+        if (!(v >= 1e-14 && v <= 1e-8)) {
+            snprintf(why, whylen, "d = %g m is not allowed: the drive step must be from 0.01 pm to 10 nm", v);
+            return -1;
+        }
+        s->step = v;
+        break;
+    case P_N:
+        if (!(v >= 10 && v <= 20000)) {
+            snprintf(why, whylen, "N = %.0f is not allowed: use 10 to 20000 nodes", v);
+            return -1;
+        }
+        s->nodes = (size_t)llround(v);
+        break;
+    case P_SPACING: {
+        double hi = 0.2 * sqrt(s->mat.R * s->mat.z0);
+        if (!isnan(v) && !(v > 0 && v <= hi)) {
+            snprintf(why, whylen, "spacing = %g m is not allowed: it must be above 0 and at most "
+                     "0.2 sqrt(R z0) = %g m (or auto)", v, hi);
+            return -1;
+        }
+        s->spacing = v;
+        break;
+    }
+    case P_TURN:
+        if (!(v < s->start && v >= -0.01 * s->mat.R)) {
+            snprintf(why, whylen, "turn = %g m is not allowed: it must lie below the start %g m "
+                     "and not below -R/100 = %g m", v, s->start, -0.01 * s->mat.R);
+            return -1;
+        }
+        s->turn = v;
+        return 0;   /* where a run stops is not physics: the path stays */
+    default:
+        snprintf(why, whylen, "%s cannot be set", name);
+        return -1;
+    }
+    new_path(s);
+    return 0;
+}
+
+int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t whylen)
+{
+    const tui_param_info *pi = &tui_params[p];
+    char msg[256];
+    double v;
+    if (p == P_N) {
+        long n;
+        if (adh_parse_count(text, 10, 20000, &n, msg, sizeof msg) != 0) {
+            snprintf(why, whylen, "%s: %s", pi->name, msg);
+            return -1;
+        }
+        v = (double)n;
+    } else if (p == P_SPACING && strcmp(text, "auto") == 0) {
+        v = NAN;
+    } else if (adh_parse_quantity(text, pi->q, &v, msg, sizeof msg) != 0) {
+        snprintf(why, whylen, "%s: %s", pi->name, msg);
+        return -1;
+    }
+    return set_value(s, p, v, why, whylen);
+}
+
+int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whylen)
+{
+    double v;
+    switch (p) {
+    case P_E: v = s->mat.E; break;
+    case P_A: v = s->mat.A; break;
+    case P_Z0: v = s->mat.z0; break;
+    case P_R: v = s->mat.R; break;
+    case P_EPS: v = s->relax.eps; break;
+    case P_D: v = s->step; break;
+    case P_N: v = (double)s->nodes; break;
+    case P_SPACING: v = tui_sim_spacing(s); break;
+    case P_TURN: v = s->turn; break;
+    default: return -1;
+    }
+    if (isnan(v)) {
+        snprintf(why, whylen, "%s is not set: type a value first", tui_params[p].name);
+        return -1;
+    }
+    return set_value(s, p, p == P_N ? round(v * factor) : v * factor, why, whylen);
+}
+
+static int next_path(const tui_sim *s, int dir)
+{
+    size_t n = adh_history_length(s->hist);
+    const adh_obs *rows = adh_history_rows(s->hist);
+    if (dir > 0)
+        return 0;
+    if (n && rows[n - 1].branch < 0)
+        return rows[n - 1].path;
+    int top = 0;
+    for (size_t i = 0; i < n; i++)
+        top = rows[i].path > top ? rows[i].path : top;
+    return top + 1;
+}
+
+static void move_to(tui_sim *s, double h0)
+{
+    s->target = h0;
+    adh_relax_move(s->w, h0);
+    s->t0 = now();
+}
+
+int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
+{
+    if (s->busy) {
+        snprintf(why, whylen, "a step is already being solved");
+        return -1;
+    }
+    if (ensure_solver(s, why, whylen) != 0)
+        return -1;
+    s->dir = dir;
+    const adh_obs *cur = adh_history_row(s->hist);
+    if (!cur) {
+        /* The path begins with the relaxed state at the start, as in --batch. */
+        adh_relax_set(s->w, &s->mat, &s->relax, s->start);
+        s->solving_start = 1;
+        s->then_dir = dir;
+        move_to(s, s->start);
+        s->busy = 1;
+        return 0;
+    }
+    /* Positions are start - k d, never accumulated, so they stay on the
+     * batch run's positions however the path went back and forth. */
+    double k = round((s->start - cur->h0) / s->step) + dir;
+    double h0 = s->start - k * s->step;
+    if (fabs(h0) > 0.01 * s->mat.R) {
+        snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/100 = %g m",
+                 h0, 0.01 * s->mat.R);
+        return -1;
+    }
+    move_to(s, h0);
+    s->busy = 1;
+    return 0;
+}
+
+void tui_sim_cancel(tui_sim *s)
+{
+    if (!s->busy)
+        return;
+    s->busy = 0;
+    s->solving_start = 0;
+    const adh_state *st = adh_history_state(s->hist);
+    if (st)
+        adh_relax_restore(s->w, st);
+    else
+        adh_relax_set(s->w, &s->mat, &s->relax, s->start);
+}
+
+int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
+{
+    if (!s->busy)
+        return ADH_SUCCESS;
+    int rc = adh_relax_iterate(s->w, batch);
+    if (rc == ADH_CONTINUE)
+        return rc;
+    if (rc != ADH_SUCCESS && rc != ADH_EMAXITER) {
+        snprintf(why, whylen, "the step to h0 = %g m failed: %s; back to the previous state "
+                 "(try a smaller d or a larger eps)", s->target, adh_strerror(rc));
+        tui_sim_cancel(s);
+        return rc;
+    }
+    const adh_state *st = adh_relax_state(s->w);
+    adh_obs o;
+    memset(&o, 0, sizeof o);
+    adh_observe(s->g, &s->mat, st, &o);
+    o.iters = adh_relax_step_iterations(s->w);
+    o.seconds = now() - s->t0;
+    o.branch = s->solving_start ? +1 : s->dir;
+    o.path = s->solving_start ? 0 : next_path(s, s->dir);
+    o.converged = rc == ADH_SUCCESS;
+    o.stable = 1;
+    if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a))) {
+        snprintf(why, whylen, "the step to h0 = %g m gave a non-finite force; back to the previous state", s->target);
+        tui_sim_cancel(s);
+        return ADH_ENAN;
+    }
+    if (adh_history_push(s->hist, st, &o) != ADH_SUCCESS) {
+        snprintf(why, whylen, "out of memory for the history");
+        tui_sim_cancel(s);
+        return ADH_ENOMEM;
+    }
+    s->warn[0] = '\0';
+    if (!o.converged) {
+        s->unconverged++;
+        snprintf(s->warn, sizeof s->warn, "not converged: %zu iterations (the cap) at h0 = %g nm, change %.3g m > eps",
+                 o.iters, o.h0 * 1e9, adh_relax_change(s->w));
+    }
+    if (o.a >= 0.9 * s->g->rmax) {
+        s->busy = 0;
+        s->solving_start = 0;
+        snprintf(why, whylen, "the contact reaches the grid edge (a = %.3g nm, Rmax = %.3g nm): "
+                 "use more nodes (N) or a larger spacing", o.a * 1e9, s->g->rmax * 1e9);
+        return ADH_EGRID;
+    }
+    if (s->solving_start) {
+        s->solving_start = 0;
+        double h0 = s->start - (double)s->then_dir * s->step;
+        s->dir = s->then_dir;
+        move_to(s, h0);
+        return ADH_CONTINUE;
+    }
+    s->busy = 0;
+    return ADH_SUCCESS;
+}
+
+static void restore_current(tui_sim *s)
+{
+    adh_relax_restore(s->w, adh_history_state(s->hist));
+    s->warn[0] = '\0';
+}
+
+int tui_sim_undo(tui_sim *s)
+{
+    tui_sim_cancel(s);
+    if (!s->hist || adh_history_undo(s->hist) != ADH_SUCCESS)
+        return ADH_EINVAL;
+    restore_current(s);
+    return ADH_SUCCESS;
+}
+
+int tui_sim_redo(tui_sim *s)
+{
+    tui_sim_cancel(s);
+    if (!s->hist || adh_history_redo(s->hist) != ADH_SUCCESS)
+        return ADH_EINVAL;
+    restore_current(s);
+    return ADH_SUCCESS;
+}
+
+void tui_sim_reset(tui_sim *s)
+{
+    new_path(s);
+}
+
+const adh_obs *tui_sim_row(const tui_sim *s)
+{
+    return s->hist ? adh_history_row(s->hist) : NULL;
+}
+
+const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
+{
+    *n = s->hist ? adh_history_length(s->hist) : 0;
+    return s->hist ? adh_history_rows(s->hist) : NULL;
+}
+
+size_t tui_sim_redoable(const tui_sim *s)
+{
+    return s->hist ? adh_history_redoable(s->hist) : 0;
+}
+
+size_t tui_sim_progress(const tui_sim *s, double *change)
+{
+    *change = s->w ? adh_relax_change(s->w) : 0;
+    return s->w ? adh_relax_step_iterations(s->w) : 0;
+}

@@ -1,0 +1,770 @@
+/* The TUI's loop: reads keys (terminal or replay script), turns them into
+ * actions on the session, solves steps in batches so a key can interrupt
+ * them, and redraws. Handlers set the status line; the loop draws when idle
+ * and, during a long solve, a few times a second. */
+#define NCURSES_WIDECHAR 1
+#include "tui/tui.h"
+
+#include <curses.h>
+#include <errno.h>
+#include <langinfo.h>
+#include <locale.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "adhere/status.h"
+#include "plot/plot.h"
+#include "tui/actions.h"
+#include "tui/keysrc.h"
+#include "tui/screen.h"
+#include "tui/sim.h"
+
+static volatile sig_atomic_t got_signal;
+
+/* Only a flag here: curses is not async-signal-safe; the loop ends cleanly. */
+static void on_signal(int sig)
+{
+    got_signal = sig;
+}
+
+enum { EDIT_NONE = 0, EDIT_PARAM, EDIT_COMMAND };
+
+typedef struct tui {
+    adh_config cfg;
+    tui_sim sim;
+    tui_keysrc keys;
+    tui_view view;
+    int headless;
+    SCREEN *scr;
+    FILE *fout, *fin;
+
+    char status[768];
+    int status_error;
+    int editing;
+    char text[128];
+    size_t textlen;
+    char prompt[200];
+    long count;
+
+    int pending;        /* steps still to start after the current one */
+    int pending_dir;
+    int pending_key;    /* the key that asked for them: held down, it repeats */
+    int run_dir;        /* a continuous run: +1 loading, -1 unloading, 0 none */
+    int run_touched;    /* the run has been in contact (for pull-off) */
+    int waiting;        /* replay: :wait until the run ends */
+    int help;
+    int help_lines;
+    int quit;
+    int exit_code;
+    char fatal[1024];   /* printed on stderr once the terminal is restored */
+    double last_draw;
+} tui;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void say(tui *t, int error, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static void say(tui *t, int error, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(t->status, sizeof t->status, fmt, ap);
+    va_end(ap);
+    t->status_error = error;
+}
+
+static void fmtq(double v, adh_quantity q, char *buf, size_t len)
+{
+    adh_format_quantity(v, q, 4, buf, len);
+}
+
+static const char *activity(const tui *t)
+{
+    if (t->run_dir > 0)
+        return "running to the turn";
+    if (t->run_dir < 0)
+        return "running to pull-off";
+    if (t->sim.busy)
+        return t->pending ? "stepping" : "solving a step";
+    return "idle";
+}
+
+static void draw(tui *t)
+{
+    tui_view *v = &t->view;
+    v->status = t->status;
+    v->status_error = t->status_error;
+    v->count = t->count;
+    v->activity = activity(t);
+    v->prompt = NULL;
+    if (t->editing) {
+        if (t->editing == EDIT_PARAM)
+            snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (a value with its unit; Enter sets, Esc cancels)",
+                     tui_params[v->sel].name, t->text);
+        else
+            snprintf(t->prompt, sizeof t->prompt, ":%s_", t->text);
+        v->prompt = t->prompt;
+    }
+    if (t->help)
+        t->help_lines = tui_draw_help(v);
+    else
+        tui_draw(&t->sim, v);
+    refresh();
+    t->last_draw = now();
+}
+
+static void stop_all(tui *t)
+{
+    t->pending = 0;
+    t->run_dir = 0;
+    t->waiting = 0;
+}
+
+static void start_step(tui *t, int dir)
+{
+    char why[512];
+    if (!t->sim.w && !t->headless) {
+        /* The kernel is built on the first step; at large N that takes a
+         * moment, so say so before the screen goes quiet. */
+        say(t, 0, "building the kernel for N = %zu nodes...", t->sim.nodes);
+        draw(t);
+    }
+    if (tui_sim_begin(&t->sim, dir, why, sizeof why) != 0) {
+        stop_all(t);
+        say(t, 1, "%s", why);
+    }
+}
+
+/* Plain words about the step just done, naming jumps in and out. */
+static void describe_step(tui *t)
+{
+    size_t n;
+    const adh_obs *rows = tui_sim_rows(&t->sim, &n);
+    const adh_obs *o = &rows[n - 1];
+    char h0[64], F[64], a[64];
+    fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+    fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
+    fmtq(o->a, ADH_Q_LENGTH, a, sizeof a);
+    int was = n >= 2 && rows[n - 2].a > 0;
+    if (o->a > 0 && !was && n >= 2)
+        say(t, 0, "jumped into contact at h0 = %s: contact radius %s, force %s", h0, a, F);
+    else if (o->a == 0 && was)
+        say(t, 0, "pulled off at h0 = %s: the surfaces jumped apart, force now %s", h0, F);
+    else
+        say(t, 0, "%s to h0 = %s: force %s%s%s", o->branch > 0 ? "approached" : "retracted", h0, F,
+            o->a > 0 ? ", contact radius " : ", not in contact", o->a > 0 ? a : "");
+}
+
+/* Whether a continuous run has reached its goal after the step just done. */
+static int run_done(tui *t)
+{
+    const adh_obs *o = tui_sim_row(&t->sim);
+    char h0[64], F[64];
+    fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+    fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
+    if (t->run_dir > 0) {
+        if (!isnan(t->sim.turn) && o->h0 <= t->sim.turn + 1e-6 * t->sim.step) {
+            say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until pull-off", h0, F);
+            return 1;
+        }
+        if (isnan(t->sim.turn) && o->a > 0) {
+            say(t, 0, "in contact at h0 = %s (no turning point set: :set turn VALUE)", h0);
+            return 1;
+        }
+        return 0;
+    }
+    if (o->a > 0)
+        t->run_touched = 1;
+    else if (t->run_touched) {
+        say(t, 0, "pulled off at h0 = %s: the surfaces jumped apart; force now %s", h0, F);
+        return 1;
+    }
+    if (o->h0 >= t->sim.start - 1e-6 * t->sim.step) {
+        say(t, 0, "back at the start h0 = %s%s", h0, t->run_touched ? "" : " without having been in contact");
+        return 1;
+    }
+    return 0;
+}
+
+static void after_step(tui *t, int rc, const char *why)
+{
+    if (rc != ADH_SUCCESS) {
+        stop_all(t);
+        say(t, 1, "%s", why);
+        return;
+    }
+    describe_step(t);
+    if (t->pending > 0) {
+        t->pending--;
+        start_step(t, t->pending_dir);
+    } else if (t->run_dir && run_done(t)) {
+        stop_all(t);
+    }
+    /* a run that goes on starts its next step from the loop, after a look
+     * at the keys (any key pauses) */
+}
+
+static int resize_to(tui *t, int cols, int rows, char *why, size_t whylen)
+{
+    if (!t->headless) {
+        snprintf(why, whylen, "resize the terminal window instead: :resize is for replay scripts");
+        return -1;
+    }
+    resizeterm(rows, cols);
+    return 0;
+}
+
+static void plot_names(unsigned mask, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s%s%s", mask & ADH_PLOT_FORCE ? " force.png" : "",
+             mask & ADH_PLOT_PROFILE ? " profile.png" : "", mask & ADH_PLOT_CONTACT ? " contact.png" : "");
+}
+
+static void write_plots(tui *t)
+{
+    size_t n;
+    const adh_obs *rows = tui_sim_rows(&t->sim, &n);
+    if (n == 0) {
+        say(t, 1, "nothing to plot yet: step first (f, or r to run)");
+        return;
+    }
+    /* The plots describe what is on screen: the current parameters. */
+    adh_config c = t->cfg;
+    tui_sim *s = &t->sim;
+    c.mat = s->mat;
+    c.nodes = s->nodes;
+    c.spacing = tui_sim_spacing(s);
+    c.kernel = s->kernel;
+    c.relax = s->relax;
+    c.proto.step = s->step;
+    c.proto.start = s->start;
+    c.proto.nturns = isnan(s->turn) ? 0 : 1;
+    c.proto.turns[0] = s->turn;
+    c.plot = 1;
+
+    adh_run run;
+    adh_run_init(&run);
+    run.rows = (adh_obs *)rows;   /* borrowed: never adh_run_free()d */
+    run.nrows = run.rows_cap = n;
+    run.start = s->start;
+    for (size_t i = 0; i < n; i++) {
+        run.iterations += rows[i].iters;
+        run.seconds += rows[i].seconds;
+        run.unconverged += !rows[i].converged;
+        if (isnan(run.jump_in_h0) && rows[i].branch > 0 && rows[i].a > 0)
+            run.jump_in_h0 = rows[i].h0;
+    }
+    const adh_state *st = adh_history_state(s->hist);
+    const adh_obs *cur = tui_sim_row(s);
+    adh_profile pr = { .h0 = st->h0, .branch = cur->branch, .path = cur->path,
+                       .u = st->u, .h = st->h, .p = st->p };
+    run.profiles = &pr;
+    run.nprofiles = run.profiles_cap = 1;
+
+    const char *dir = c.out_dir[0] ? c.out_dir : "adhere-plots";
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+        say(t, 1, "cannot create the plot directory %s: %s", dir, strerror(errno));
+        return;
+    }
+    if (!t->headless) {
+        say(t, 0, "writing plots to %s/ through gnuplot...", dir);
+        draw(t);
+    }
+    char msg[512] = "", names[64];
+    int rc = adh_plots_write(&c, &run, dir, msg, sizeof msg);
+    plot_names(c.plots, names, sizeof names);
+    if (rc == 0)
+        say(t, 0, "plots written to %s/:%s", dir, names);
+    else
+        say(t, 1, "plots not written to %s/: %s", dir, msg[0] ? msg : "gnuplot failed");
+}
+
+static void param_changed(tui *t, tui_param p)
+{
+    char val[64];
+    int u = t->view.utf8;
+    tui_sim_param_text(&t->sim, p, val, sizeof val);
+    if (p == P_TURN)
+        say(t, 0, "turn = %s: r now loads to there (the path is kept)", val);
+    else
+        say(t, 0, "%s = %s: %s = %.4g, %s = %.4g mJ/m%s; a new path starts from the start", tui_params[p].name,
+            val, u ? "\xcf\x83" : "sigma", t->sim.der.sigma, u ? "\xce\xb3" : "gamma", t->sim.der.gamma * 1e3,
+            u ? "\xc2\xb2" : "^2");
+}
+
+/* A :set / :dump / :wait / :resize, from a script or the ':' prompt.
+ * 0, or -1 with a sentence in why. */
+static int run_command(tui *t, const adh_replay_item *it, char *why, size_t whylen)
+{
+    switch (it->kind) {
+    case ADH_REPLAY_SET: {
+        int p = tui_sim_param_lookup(it->name);
+        if (p < 0) {
+            snprintf(why, whylen, "unknown parameter '%s' for set; the names are E A z0 R eps d N spacing turn",
+                     it->name);
+            return -1;
+        }
+        if (p != P_TURN) {
+            tui_sim_cancel(&t->sim);
+            stop_all(t);
+        }
+        if (tui_sim_set(&t->sim, (tui_param)p, it->value, why, whylen) != 0)
+            return -1;
+        param_changed(t, (tui_param)p);
+        return 0;
+    }
+    case ADH_REPLAY_DUMP:
+        draw(t);
+        return tui_dump_screen(it->value, why, whylen);
+    case ADH_REPLAY_WAIT:
+        t->waiting = t->run_dir != 0;
+        return 0;
+    case ADH_REPLAY_RESIZE:
+        return resize_to(t, it->cols, it->rows, why, whylen);
+    default:
+        snprintf(why, whylen, "not a command: the commands are set NAME VALUE, dump FILE");
+        return -1;
+    }
+}
+
+static void edit_key(tui *t, int key)
+{
+    char why[512];
+    if (key == 27) {
+        t->editing = EDIT_NONE;
+        say(t, 0, "edit cancelled; nothing changed");
+        return;
+    }
+    if (key == KEY_BACKSPACE || key == KEY_DC) {
+        if (t->textlen)
+            t->text[--t->textlen] = '\0';
+        return;
+    }
+    if (key != '\n') {
+        if (key >= ' ' && key < 127 && t->textlen + 1 < sizeof t->text) {
+            t->text[t->textlen++] = (char)key;
+            t->text[t->textlen] = '\0';
+        }
+        return;
+    }
+    int mode = t->editing;
+    t->editing = EDIT_NONE;
+    if (mode == EDIT_PARAM) {
+        tui_param p = (tui_param)t->view.sel;
+        if (p != P_TURN) {
+            tui_sim_cancel(&t->sim);
+            stop_all(t);
+        }
+        if (tui_sim_set(&t->sim, p, t->text, why, sizeof why) != 0)
+            say(t, 1, "%s; nothing changed", why);
+        else
+            param_changed(t, p);
+        return;
+    }
+    /* The ':' prompt takes what a script's command line takes. */
+    char line[160];
+    snprintf(line, sizeof line, ":%s", t->text);
+    adh_replay_script sc;
+    int errline;
+    if (t->textlen == 0)
+        return;
+    if (adh_replay_parse(line, strlen(line), &sc, &errline, why, sizeof why) != 0) {
+        say(t, 1, "%s", why);
+        return;
+    }
+    int bad = 0;
+    for (size_t i = 0; i < sc.n && !bad; i++) {
+        if (sc.items[i].kind == ADH_REPLAY_WAIT)
+            continue;
+        bad = run_command(t, &sc.items[i], why, sizeof why) != 0;
+    }
+    if (bad)
+        say(t, 1, "%s", why);
+    else if (sc.n && sc.items[0].kind == ADH_REPLAY_DUMP)
+        say(t, 0, "screen written to %s", sc.items[0].value);
+    adh_replay_free(&sc);
+}
+
+static void move_history(tui *t, int redo, long n)
+{
+    long done = 0;
+    stop_all(t);
+    while (done < n && (redo ? tui_sim_redo(&t->sim) : tui_sim_undo(&t->sim)) == ADH_SUCCESS)
+        done++;
+    const adh_obs *o = tui_sim_row(&t->sim);
+    char h0[64];
+    if (!done) {
+        say(t, 1, "nothing to %s", redo ? "redo" : "undo: this is the first state of the path");
+        return;
+    }
+    fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+    say(t, 0, "%s %ld step%s: back at h0 = %s, exactly as it was", redo ? "redid" : "undid", done,
+        done == 1 ? "" : "s", h0);
+}
+
+static void handle_key(tui *t, int key)
+{
+    char why[512], name[32];
+    if (key == KEY_RESIZE) {
+        clearok(curscr, TRUE);
+        return;
+    }
+    if (t->help) {
+        if (key == KEY_NPAGE || key == KEY_PPAGE) {
+            int page = LINES - 2 > 1 ? LINES - 2 : 1;
+            t->view.help_top += key == KEY_NPAGE ? page : -page;
+            if (t->view.help_top > t->help_lines - page)
+                t->view.help_top = t->help_lines - page;
+            if (t->view.help_top < 0)
+                t->view.help_top = 0;
+        } else {
+            t->help = 0;
+        }
+        return;
+    }
+    if (t->editing) {
+        edit_key(t, key);
+        return;
+    }
+    if (key >= '0' && key <= '9' && (key != '0' || t->count > 0)) {
+        t->count = t->count * 10 + (key - '0');
+        if (t->count > 99999)
+            t->count = 99999;
+        return;
+    }
+    long n = t->count ? t->count : 1;
+    t->count = 0;
+    adh_action a = adh_action_for_key(key);
+    switch (a) {
+    case ACT_FORWARD:
+    case ACT_BACK:
+        t->pending = (int)n - 1;
+        t->pending_dir = a == ACT_FORWARD ? +1 : -1;
+        t->pending_key = key;
+        t->run_dir = 0;
+        start_step(t, t->pending_dir);
+        break;
+    case ACT_RUN: {
+        const adh_obs *o = tui_sim_row(&t->sim);
+        int unload = o && (o->branch < 0 ||
+                           (!isnan(t->sim.turn) && o->h0 <= t->sim.turn + 1e-6 * t->sim.step));
+        t->pending = 0;
+        t->run_dir = unload ? -1 : +1;
+        t->run_touched = o && o->a > 0;
+        say(t, 0, "%s", unload ? "unloading until pull-off; any key pauses"
+                                : "loading to the turning point; any key pauses");
+        start_step(t, t->run_dir);
+        break;
+    }
+    case ACT_UNDO: move_history(t, 0, n); break;
+    case ACT_REDO: move_history(t, 1, n); break;
+    case ACT_RESET: {
+        char st[64];
+        stop_all(t);
+        tui_sim_reset(&t->sim);
+        fmtq(t->sim.start, ADH_Q_LENGTH, st, sizeof st);
+        say(t, 0, "reset: the path is forgotten; the next step starts at h0 = %s", st);
+        break;
+    }
+    case ACT_SELECT_UP: t->view.sel = (t->view.sel + P_COUNT - 1) % P_COUNT; break;
+    case ACT_SELECT_DOWN: t->view.sel = (t->view.sel + 1) % P_COUNT; break;
+    case ACT_EDIT:
+    case ACT_COMMAND:
+        t->editing = a == ACT_EDIT ? EDIT_PARAM : EDIT_COMMAND;
+        t->text[0] = '\0';
+        t->textlen = 0;
+        break;
+    case ACT_SCALE_UP:
+    case ACT_SCALE_DOWN: {
+        tui_param p = (tui_param)t->view.sel;
+        double f = pow(a == ACT_SCALE_UP ? 2.0 : 0.5, (double)n);
+        if (p != P_TURN) {
+            tui_sim_cancel(&t->sim);
+            stop_all(t);
+        }
+        if (tui_sim_scale(&t->sim, p, f, why, sizeof why) != 0)
+            say(t, 1, "%s; nothing changed", why);
+        else
+            param_changed(t, p);
+        break;
+    }
+    case ACT_PLOTS: write_plots(t); break;
+    case ACT_HELP:
+        t->help = 1;
+        t->view.help_top = 0;
+        break;
+    case ACT_REDRAW: clearok(curscr, TRUE); break;
+    case ACT_CANCEL: say(t, 0, "%s", ""); break;
+    case ACT_QUIT: t->quit = 1; break;
+    case ACT_NONE:
+        adh_replay_key_name(key, name, sizeof name);
+        say(t, 1, "the key %s does nothing here; ? lists the keys", name);
+        break;
+    }
+}
+
+/* A key while a step is being solved (terminal only): the key that started
+ * the steps, held down, asks for one more; any other key pauses. */
+static void busy_key(tui *t, int key)
+{
+    if (key == KEY_RESIZE) {
+        clearok(curscr, TRUE);
+        return;
+    }
+    if (!t->run_dir && key == t->pending_key) {
+        if (t->pending < 1)
+            t->pending = 1;
+        return;
+    }
+    tui_sim_cancel(&t->sim);
+    stop_all(t);
+    const adh_obs *o = tui_sim_row(&t->sim);
+    char h0[64] = "the start";
+    if (o)
+        fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+    say(t, 0, "paused at h0 = %s (the unfinished step was dropped)", h0);
+    if (adh_action_for_key(key) == ACT_QUIT)
+        t->quit = 1;
+}
+
+static void handle_item(tui *t, const adh_replay_item *it)
+{
+    char why[512];
+    if (it->kind == ADH_REPLAY_KEY) {
+        handle_key(t, it->key);
+        return;
+    }
+    if (run_command(t, it, why, sizeof why) != 0) {
+        /* A script that asks for the impossible is a broken script. */
+        snprintf(t->fatal, sizeof t->fatal, "%s:%d: %s", t->keys.file, it->line, why);
+        t->exit_code = 2;
+        t->quit = 1;
+    }
+}
+
+/* A run between two steps: a replay reads its next item here (a key pauses,
+ * a command runs, :wait lets the run finish); a terminal checks for a key. */
+static void run_next(tui *t)
+{
+    adh_replay_item it;
+    if (!t->waiting) {
+        int got = tui_keysrc_next(&t->keys, 0, &it);
+        if (got == KEYSRC_END) {
+            stop_all(t);
+            t->quit = 1;
+            return;
+        }
+        if (got == KEYSRC_ITEM) {
+            if (it.kind == ADH_REPLAY_KEY) {
+                stop_all(t);
+                if (it.key == KEY_RESIZE)
+                    clearok(curscr, TRUE);
+                say(t, 0, "paused; r goes on");
+                if (adh_action_for_key(it.key) == ACT_QUIT)
+                    t->quit = 1;
+                return;
+            }
+            handle_item(t, &it);
+            if (!t->run_dir || t->quit)
+                return;
+        }
+    }
+    start_step(t, t->run_dir);
+}
+
+static void progress(tui *t)
+{
+    double change;
+    size_t it = tui_sim_progress(&t->sim, &change);
+    char h0[64], c[64], e[64];
+    fmtq(t->sim.target, ADH_Q_LENGTH, h0, sizeof h0);
+    fmtq(change, ADH_Q_LENGTH, c, sizeof c);
+    fmtq(t->sim.relax.eps, ADH_Q_LENGTH, e, sizeof e);
+    say(t, 0, "relaxing at h0 = %s: iteration %zu, change %s (done below %s); any key stops", h0, it, c, e);
+    draw(t);
+}
+
+static void loop(tui *t)
+{
+    adh_replay_item it;
+    while (!t->quit) {
+        if (got_signal) {
+            t->exit_code = 128 + got_signal;
+            snprintf(t->fatal, sizeof t->fatal, "adhere: stopped by signal %d", (int)got_signal);
+            break;
+        }
+        if (t->sim.busy) {
+            if (!t->headless) {
+                if (tui_keysrc_next(&t->keys, 0, &it) == KEYSRC_ITEM)
+                    busy_key(t, it.key);
+                if (!t->sim.busy)
+                    continue;
+                if (now() - t->last_draw > 0.15)
+                    progress(t);
+            }
+            char why[512];
+            /* Batches keep a terminal responsive; a replay never reads keys
+             * inside a step, so its batch size changes nothing it shows. */
+            int rc = tui_sim_work(&t->sim, t->headless ? 5000 : 200, why, sizeof why);
+            if (rc != ADH_CONTINUE)
+                after_step(t, rc, why);
+            continue;
+        }
+        if (t->run_dir) {
+            if (!t->headless)
+                draw(t);
+            run_next(t);
+            continue;
+        }
+        draw(t);
+        int got = tui_keysrc_next(&t->keys, 250, &it);  /* wakes up to see signals */
+        if (got == KEYSRC_END)
+            break;
+        if (got == KEYSRC_ITEM)
+            handle_item(t, &it);
+    }
+    tui_sim_cancel(&t->sim);
+}
+
+static int screen_open(tui *t, char *why, size_t whylen)
+{
+    if (t->headless) {
+        t->fout = fopen("/dev/null", "w");
+        t->fin = fopen("/dev/null", "r");
+        if (!t->fout || !t->fin) {
+            snprintf(why, whylen, "cannot open /dev/null for the headless screen: %s", strerror(errno));
+            return -1;
+        }
+        /* A fixed terminal type and size, whatever TERM, LINES and COLUMNS
+         * say: the same script must give the same screen anywhere. */
+        use_env(FALSE);
+        t->scr = newterm("vt100", t->fout, t->fin);
+        if (!t->scr) {
+            snprintf(why, whylen, "cannot start curses headless (no vt100 terminfo entry?)");
+            return -1;
+        }
+        set_term(t->scr);
+        resizeterm(t->cfg.rows, t->cfg.cols);
+    } else {
+        if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
+            snprintf(why, whylen, "the TUI needs a terminal; use --batch, or --replay=FILE for a keystroke script");
+            return -1;
+        }
+        const char *term = getenv("TERM");
+        t->scr = newterm(NULL, stdout, stdin);
+        if (!t->scr) {
+            snprintf(why, whylen, "cannot use the terminal type TERM=%s; set TERM, or use --batch",
+                     term ? term : "(unset)");
+            return -1;
+        }
+        set_term(t->scr);
+        curs_set(0);
+    }
+    cbreak();   /* not raw(): C-c must stay SIGINT */
+    noecho();
+    nonl();
+    keypad(stdscr, TRUE);
+    set_escdelay(25);
+    return 0;
+}
+
+static void screen_close(tui *t)
+{
+    if (t->scr) {
+        endwin();
+        delscreen(t->scr);
+        t->scr = NULL;
+    }
+    if (t->fout)
+        fclose(t->fout);
+    if (t->fin)
+        fclose(t->fin);
+    t->fout = t->fin = NULL;
+}
+
+static int locale_utf8(int headless)
+{
+    setlocale(LC_ALL, "");
+    if (strcmp(nl_langinfo(CODESET), "UTF-8") == 0)
+        return 1;
+    /* A replay's screen is written as UTF-8 text whatever the caller's
+     * locale; a real terminal keeps its own and gets ASCII labels. */
+    if (headless && setlocale(LC_CTYPE, "C.UTF-8"))
+        return strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
+    return 0;
+}
+
+int adh_tui_main(const adh_config *cfg)
+{
+    static tui t;   /* large; and the signal handler's flag lives beside it */
+    char why[1024];
+    memset(&t, 0, sizeof t);
+    t.cfg = *cfg;
+    t.headless = cfg->replay[0] != '\0';
+    if (t.cfg.cols < 40 || t.cfg.rows < 12) {
+        t.cfg.cols = 100;
+        t.cfg.rows = 32;
+    }
+    if (t.headless) {
+        if (tui_keysrc_replay(&t.keys, cfg->replay, why, sizeof why) != 0) {
+            fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
+            return 2;
+        }
+    } else {
+        tui_keysrc_terminal(&t.keys);
+    }
+    if (tui_sim_init(&t.sim, cfg, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        tui_keysrc_free(&t.keys);
+        return 2;
+    }
+    t.view.utf8 = locale_utf8(t.headless);
+    t.view.no_clock = cfg->no_clock;
+
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    got_signal = 0;
+    /* Before newterm: curses then leaves these handlers alone. */
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+
+    if (screen_open(&t, why, sizeof why) != 0) {
+        screen_close(&t);
+        sigaction(SIGINT, &old_int, NULL);
+        sigaction(SIGTERM, &old_term, NULL);
+        fprintf(stderr, "adhere: %s\n", why);
+        tui_sim_free(&t.sim);
+        tui_keysrc_free(&t.keys);
+        return 1;
+    }
+    say(&t, 0, "Welcome. f steps the spheres together, r runs to the turning point, ? lists every key.");
+    loop(&t);
+    if (cfg->screen[0] && t.exit_code == 0) {
+        draw(&t);
+        if (tui_dump_screen(cfg->screen, why, sizeof why) != 0) {
+            snprintf(t.fatal, sizeof t.fatal, "adhere: %s", why);
+            t.exit_code = 1;
+        }
+    }
+    screen_close(&t);
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+    if (t.fatal[0])
+        fprintf(stderr, "%s\n", t.fatal);
+    tui_sim_free(&t.sim);
+    tui_keysrc_free(&t.keys);
+    return t.exit_code;
+}

@@ -1,0 +1,151 @@
+#!/bin/sh
+# Replay tests, tig/vis style: every cases/NAME.keys runs headless (no tty,
+# stdin at EOF, TERM unset) and its final screen must equal cases/NAME.screen,
+# each screen it :dumps (FILE.txt) must equal cases/FILE.txt, its exit status
+# cases/NAME.status (default 0) and its stderr cases/NAME.stderr (default
+# empty). Then checks that say why the screens matter. Prints TAP.
+#   tests/replay/run.sh            run
+#   tests/replay/run.sh --update   rewrite the expected files (then read them!)
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+src=${ADHERE_SRC:-$(cd "$here/../.." && pwd)}
+bin=${ADHERE_BIN:-$src/adhere}
+update=0
+[ "${1:-}" = --update ] && update=1
+# What a screen looks like must not depend on the caller's terminal.
+export LC_ALL=C.UTF-8 OPENBLAS_NUM_THREADS=1
+unset TERM LINES COLUMNS
+work=$(mktemp -d)
+[ -n "${KEEP:-}" ] || trap 'rm -rf "$work"' EXIT
+echo "# work in $work"
+n=0
+pass() { n=$((n + 1)); echo "ok $n - $*"; }
+fail() { n=$((n + 1)); echo "not ok $n - $*"; }
+check() { what=$1; shift; if "$@"; then pass "$what"; else fail "$what"; fi; }
+
+if [ ! -x "$bin" ]; then
+    echo "not ok 1 - $bin is not built"
+    echo "1..1"
+    exit 1
+fi
+
+# run_case NAME [DIR]: runs cases/NAME.keys in DIR (default $work/NAME); sets rc.
+run_case() {
+    d=${2:-$work/$1}
+    mkdir -p "$d"
+    cp "$here/cases/$1.keys" "$d/"
+    args=""
+    [ -f "$here/cases/$1.args" ] && args=$(cat "$here/cases/$1.args")
+    t0=$(date +%s)
+    # shellcheck disable=SC2086
+    (cd "$d" && timeout 60 "$bin" --replay="$1.keys" --screen="$1.screen" --no-clock $args \
+        </dev/null >stdout 2>stderr)
+    rc=$?
+    echo "# $1: exit $rc in $(($(date +%s) - t0)) s"
+}
+
+same_file() {  # expected got
+    if [ -f "$1" ] && [ -f "$2" ] && cmp -s "$1" "$2"; then return 0; fi
+    diff -u "$1" "$2" 2>&1 | head -40 | sed 's/^/#   /'
+    return 1
+}
+
+for keys in "$here"/cases/*.keys; do
+    name=$(basename "$keys" .keys)
+    run_case "$name"
+    d=$work/$name
+    want_rc=0
+    [ -f "$here/cases/$name.status" ] && want_rc=$(cat "$here/cases/$name.status")
+    if [ "$update" = 1 ]; then
+        [ "$rc" = 0 ] || echo "$rc" >"$here/cases/$name.status"
+        if [ -s "$d/stderr" ]; then cp "$d/stderr" "$here/cases/$name.stderr"; else rm -f "$here/cases/$name.stderr"; fi
+        [ -f "$d/$name.screen" ] && cp "$d/$name.screen" "$here/cases/"
+        for f in "$d"/*.txt; do [ -f "$f" ] && cp "$f" "$here/cases/"; done
+        want_rc=$rc
+    fi
+    check "$name: exit status $rc, want $want_rc" [ "$rc" = "$want_rc" ]
+    if [ -f "$here/cases/$name.stderr" ]; then
+        check "$name: stderr as expected" same_file "$here/cases/$name.stderr" "$d/stderr"
+    else
+        check "$name: nothing on stderr" sh -c "[ ! -s '$d/stderr' ] || { sed 's/^/#   /' '$d/stderr'; false; }"
+    fi
+    if [ -f "$here/cases/$name.screen" ]; then
+        check "$name: final screen as expected" same_file "$here/cases/$name.screen" "$d/$name.screen"
+    else
+        check "$name: no screen written (the script failed)" [ ! -e "$d/$name.screen" ]
+    fi
+    for f in "$d"/*.txt; do
+        [ -f "$f" ] || continue
+        check "$name: :dump $(basename "$f") as expected" same_file "$here/cases/$(basename "$f")" "$f"
+    done
+done
+
+# --- what the screens mean -------------------------------------------------
+W=$work
+sigma() { grep -o 'σ [0-9.e+-]*' "$1" | head -1; }
+gamma() { grep -o 'γ [0-9.e+-]* mJ/m²' "$1" | head -1; }
+# The State panel's numbers (h0, F, delta, gap, a, iterations) with no
+# status line, no history counts: what undo must restore exactly.
+state() { sed -n '3,8p' "$1"; }
+
+check "the first screen shows sigma 7.503 (Figure 4) and gamma" \
+    sh -c "grep -q 'σ 7.503' '$W/start/start.screen' && grep -q 'γ 7.958 mJ/m²' '$W/start/start.screen'"
+check ":set E 1GPa changes sigma" [ "$(sigma "$W/set-e/set-e.screen")" != "$(sigma "$W/start/start.screen")" ]
+check ":set E 1GPa leaves gamma (it has no E in it)" [ "$(gamma "$W/set-e/set-e.screen")" = "$(gamma "$W/start/start.screen")" ]
+P=$W/panel-edit
+check "editing R in the panel changes sigma" [ "$(sigma "$P/panel-R.txt")" != "$(sigma "$P/panel-0.txt")" ]
+check "editing z0 in the panel changes sigma" [ "$(sigma "$P/panel-z0.txt")" != "$(sigma "$P/panel-R.txt")" ]
+check "editing z0 in the panel changes gamma" [ "$(gamma "$P/panel-z0.txt")" != "$(gamma "$P/panel-R.txt")" ]
+check "editing A in the panel changes sigma" [ "$(sigma "$P/panel-A.txt")" != "$(sigma "$P/panel-z0.txt")" ]
+check "editing A in the panel changes gamma" [ "$(gamma "$P/panel-A.txt")" != "$(gamma "$P/panel-z0.txt")" ]
+check "a bad typed value is named on the status line" grep -q "error: A: '5nm' is a length (m, nm, um, ...), but an energy" "$P/panel-edit.screen"
+check "a bad typed value changes nothing" sh -c "grep -q '>A     2e-19 J' '$P/panel-edit.screen' && [ \"\$(sed -n 3,15p '$P/panel-edit.screen')\" = \"\$(sed -n 3,15p '$P/panel-A.txt')\" ]"
+
+S=$W/steps
+check "30 steps of 0.5 nm reach contact" sh -c "grep 'contact radius' '$S/steps-in.txt' | grep -vq 'not in contact'"
+check "3 steps back are on the unloading branch" grep -q "branch unloading" "$S/steps.screen"
+C=$W/contact
+check "r stops at the turning point, in contact" sh -c "grep -q 'at the turning point h0 = -2 nm' '$C/contact-turn.txt' && grep 'contact radius' '$C/contact-turn.txt' | grep -vq 'not in'"
+check "r again unloads until pull-off, out of contact" sh -c "grep -q 'pulled off at h0' '$C/contact.screen' && grep -q 'not in contact' '$C/contact.screen'"
+check "the preview shows both branches" sh -c "grep -q 'o' '$C/contact.screen' && sed -n '16,30p' '$C/contact.screen' | grep -q '+'"
+U=$W/undo
+check "undo gives back the earlier state's numbers exactly" [ "$(state "$U/undo-back.txt")" = "$(state "$U/undo-32.txt")" ]
+check "redo gives back the later state's numbers exactly" [ "$(state "$U/undo-redo.txt")" = "$(state "$U/undo-33.txt")" ]
+check "the two states differ (the check above can fail)" [ "$(state "$U/undo-33.txt")" != "$(state "$U/undo-32.txt")" ]
+check "undo says how far it went" grep -q "undid 3 steps" "$U/undo-30.txt"
+check "a new step drops what could be redone" grep -q "error: nothing to redo" "$U/undo.screen"
+
+PL=$W/plots/adhere-plots
+for f in force.png profile.png contact.png; do
+    check "p wrote $f as a PNG" sh -c "[ \"\$(head -c 8 '$PL/$f' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ]"
+done
+check "p says where the plots went" grep -q "plots written to adhere-plots/: force.png profile.png contact.png" "$W/plots/plots.screen"
+
+R=$W/resize
+check "after :resize 80x24 the screen is 24 lines of at most 80 columns" \
+    sh -c "[ \$(wc -l <'$R/resize.screen') = 24 ] && [ \$(wc -L <'$R/resize.screen') -le 80 ]"
+check "at 60x40 the screen is 40 lines of at most 60 columns" \
+    sh -c "[ \$(wc -l <'$R/resize-60x40.txt') = 40 ] && [ \$(wc -L <'$R/resize-60x40.txt') -le 60 ]"
+
+check "a bad token names FILE:LINE and the token" grep -q "^bad-token.keys:3: unknown key <Foo>" "$W/bad-token/stderr"
+check "a bad :set value names FILE:LINE, the value and what is wanted" \
+    grep -q "^bad-set.keys:3: E: '5nm' is a length (m, nm, um, ...), but a pressure" "$W/bad-set/stderr"
+check "an unknown :set name lists the names" grep -q "^bad-name.keys:1: unknown parameter 'sigma'.*E A z0 R eps d N spacing turn" "$W/bad-name/stderr"
+
+# Determinism, and independence from the caller's terminal settings.
+run_case steps "$work/again"
+check "the same script gives the same screen" same_file "$S/steps.screen" "$work/again/steps.screen"
+mkdir -p "$work/env"
+cp "$here/cases/start.keys" "$work/env/"
+(cd "$work/env" && TERM=dumb LINES=10 COLUMNS=20 "$bin" --replay=start.keys --screen=start.screen --no-clock </dev/null >/dev/null 2>&1)
+check "TERM, LINES and COLUMNS do not change a replay's screen" same_file "$W/start/start.screen" "$work/env/start.screen"
+
+# A signal ends a replay cleanly with 128 + its number.
+mkdir -p "$work/sig"
+printf 'r :wait\n' >"$work/sig/long.keys"
+(cd "$work/sig" && timeout --preserve-status -s TERM 1 "$bin" --replay=long.keys --screen=s.txt </dev/null >/dev/null 2>err)
+rc=$?
+check "SIGTERM during a solve exits 143 (got $rc)" [ "$rc" = 143 ]
+check "and says so" grep -q "stopped by signal 15" "$work/sig/err"
+
+echo "1..$n"
