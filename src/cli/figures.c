@@ -1,0 +1,382 @@
+#include "cli/figures.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "adhere/models.h"
+#include "cli/sweep.h"
+#include "plot/gnuplot.h"
+#include "plot/plot.h"
+
+#define SYNC_TIMEOUT_S 60.0
+
+typedef struct figure {
+    adh_gnuplot *gp;
+    const char *dir;
+    char tmpdir[PATH_MAX];
+    char log[PATH_MAX + 32];
+    char style[PATH_MAX];
+    char *msg;
+    size_t msglen;
+} figure;
+
+/* gnuplot single quotes: only the quote itself is special, and doubled. */
+static const char *quoted(const char *s, char *buf, size_t len)
+{
+    size_t j = 0;
+    buf[j++] = '\'';
+    for (; *s && j + 3 < len; s++) {
+        if (*s == '\'')
+            buf[j++] = '\'';
+        buf[j++] = *s;
+    }
+    buf[j++] = '\'';
+    buf[j] = '\0';
+    return buf;
+}
+
+static void force_unit(double fmax, double *scale, const char **name)
+{
+    if (fmax >= 1e-4) { *scale = 1e3; *name = "mN"; }
+    else if (fmax >= 1e-7) { *scale = 1e6; *name = "µN"; }
+    else if (fmax >= 1e-10) { *scale = 1e9; *name = "nN"; }
+    else { *scale = 1e12; *name = "pN"; }
+}
+
+static int fig_open(figure *fg, const adh_config *cfg, const char *dir, char *msg, size_t msglen)
+{
+    memset(fg, 0, sizeof *fg);
+    fg->dir = dir;
+    fg->msg = msg;
+    fg->msglen = msglen;
+    char why[1024];
+    if (adh_plot_style_file(cfg, fg->style, sizeof fg->style, why, sizeof why) < 0) {
+        snprintf(msg, msglen, "%s", why);
+        return -1;
+    }
+    const char *tmp = getenv("TMPDIR");
+    snprintf(fg->tmpdir, sizeof fg->tmpdir, "%s/adhere-fig-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    if (!mkdtemp(fg->tmpdir)) {
+        snprintf(msg, msglen, "cannot make a temporary directory %s: %s", fg->tmpdir, strerror(errno));
+        return -1;
+    }
+    snprintf(fg->log, sizeof fg->log, "%s/gnuplot-figures.log", dir);
+    unlink(fg->log);
+    fg->gp = adh_gnuplot_open(fg->log, why, sizeof why);
+    if (!fg->gp) {
+        snprintf(msg, msglen, "%s", why);
+        rmdir(fg->tmpdir);
+        return -1;
+    }
+    return 0;
+}
+
+static void fig_close(figure *fg)
+{
+    adh_gnuplot_close(fg->gp);
+    static const char *const names[] = { "a.dat", "b.dat", "c.dat" };
+    char p[PATH_MAX + 16];
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        snprintf(p, sizeof p, "%s/%s", fg->tmpdir, names[i]);
+        unlink(p);
+    }
+    rmdir(fg->tmpdir);
+    struct stat st;
+    if (stat(fg->log, &st) == 0 && st.st_size == 0)
+        unlink(fg->log);
+}
+
+static FILE *fig_data(figure *fg, const char *name, char *path, size_t len)
+{
+    snprintf(path, len, "%s/%s", fg->tmpdir, name);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        snprintf(fg->msg, fg->msglen, "cannot write %s: %s", path, strerror(errno));
+    return f;
+}
+
+static void fig_begin(figure *fg, const char *name, char *tmp_png, size_t len)
+{
+    char q[PATH_MAX + 80];
+    snprintf(tmp_png, len, "%s/.%s.tmp%ld", fg->dir, name, (long)getpid());
+    adh_gnuplot_cmd(fg->gp, "reset");
+    adh_gnuplot_cmd(fg->gp, "set terminal pngcairo size 900,600 enhanced font \"DejaVu Sans,11\"");
+    adh_gnuplot_cmd(fg->gp, "set encoding utf8");
+    adh_gnuplot_cmd(fg->gp, "set grid lc rgb \"#dddddd\"");
+    adh_gnuplot_cmd(fg->gp, "set tics out nomirror");
+    adh_gnuplot_cmd(fg->gp, "set key box opaque");
+    adh_gnuplot_cmd(fg->gp, "adh_figure = \"%s\"", name);
+    if (fg->style[0])
+        adh_gnuplot_cmd(fg->gp, "load %s", quoted(fg->style, q, sizeof q));
+    adh_gnuplot_cmd(fg->gp, "set output %s", quoted(tmp_png, q, sizeof q));
+}
+
+static int fig_end(figure *fg, const char *name, const char *tmp_png)
+{
+    char final[PATH_MAX + 64], why[1024];
+    adh_gnuplot_cmd(fg->gp, "unset output");
+    snprintf(final, sizeof final, "%s/%s", fg->dir, name);
+    struct stat st;
+    int rc = adh_gnuplot_sync(fg->gp, SYNC_TIMEOUT_S, why, sizeof why);
+    if (rc == 0 && !(stat(tmp_png, &st) == 0 && st.st_size > 8)) {
+        snprintf(why, sizeof why, "gnuplot wrote no image for %s", name);
+        rc = -1;
+    }
+    if (rc == 0 && rename(tmp_png, final) != 0) {
+        snprintf(why, sizeof why, "cannot rename %s to %s: %s", tmp_png, final, strerror(errno));
+        rc = -1;
+    }
+    if (rc != 0) {
+        unlink(tmp_png);
+        snprintf(fg->msg, fg->msglen, "%s: %s", name, why);
+    }
+    return rc;
+}
+
+static int data_done(figure *fg, FILE *f, const char *path)
+{
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        snprintf(fg->msg, fg->msglen, "cannot write %s", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* Figure 1's inset: the computed force before contact against eq 22 at the
+ * nominal position, F(h0), and at the gap eq 23 gives, F(h). */
+static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
+{
+    const adh_material *m = &cfg->mat;
+    char dat[PATH_MAX + 16], eq[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40], q2[PATH_MAX + 40];
+    FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
+    if (!f)
+        return -1;
+    double xmin = INFINITY, xmax = -INFINITY, fbig = 0, hmin = INFINITY;
+    size_t pts = 0;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        if (o->path != 0 || o->a > 0)
+            break; /* the loading rows before contact come first */
+        fprintf(f, "%.17g\t%.17g\t%.17g\n", o->h0, o->F, adh_rigid_force(m, o->h0));
+        xmin = fmin(xmin, o->h0), xmax = fmax(xmax, o->h0);
+        hmin = fmin(hmin, o->hc);
+        fbig = fmax(fbig, fabs(o->F));
+        pts++;
+    }
+    if (data_done(fg, f, dat) < 0)
+        return -1;
+    if (pts < 2)
+        return 0;
+    /* F(h) along eq 23: positions h0 = h - delta(h) for gaps down to the
+     * smallest one computed */
+    f = fig_data(fg, "b.dat", eq, sizeof eq);
+    if (!f)
+        return -1;
+    for (int k = 0; k <= 400; k++) {
+        double h = hmin + (xmax - hmin) * k / 400.0;
+        double x = adh_bulge_position(m, h);
+        if (x >= xmin && x <= xmax)
+            fprintf(f, "%.17g\t%.17g\n", x, adh_rigid_force(m, h));
+    }
+    if (data_done(fg, f, eq) < 0)
+        return -1;
+    double fs;
+    const char *fu;
+    force_unit(fbig, &fs, &fu);
+    fig_begin(fg, "precontact.png", tmp_png, sizeof tmp_png);
+    adh_gnuplot_cmd(fg->gp, "set title \"Force before contact (Figure 1 inset), E = %.3g Pa\"", m->E);
+    adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
+    adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
+    adh_gnuplot_cmd(fg->gp, "set key bottom right");
+    adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*%.17g) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
+                    "'' using ($1*1e9):($3*%.17g) with lines lw 2.5 lc rgb \"#000000\" title \"rigid F(h_0) (eq 22)\", "
+                    "%s using ($1*1e9):($2*%.17g) with lines dt 3 lw 2 lc rgb \"#1f3f8f\" title \"F(h), h from eq 23\"",
+                    quoted(dat, q, sizeof q), fs, fs, quoted(eq, q2, sizeof q2), fs);
+    return fig_end(fg, "precontact.png", tmp_png);
+}
+
+/* Figure 2: the central bulge before contact against the gap, with eq 23. */
+static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
+{
+    const adh_material *m = &cfg->mat;
+    char dat[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    FILE *f = fig_data(fg, "c.dat", dat, sizeof dat);
+    if (!f)
+        return -1;
+    size_t pts = 0;
+    double hmin = INFINITY, hmax = -INFINITY;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        if (o->path != 0 || o->a > 0)
+            break;
+        fprintf(f, "%.17g\t%.17g\n", o->hc, o->delta);
+        hmin = fmin(hmin, o->hc), hmax = fmax(hmax, o->hc);
+        pts++;
+    }
+    if (data_done(fg, f, dat) < 0)
+        return -1;
+    if (pts < 2)
+        return 0;
+    fig_begin(fg, "bulge.png", tmp_png, sizeof tmp_png);
+    adh_gnuplot_cmd(fg->gp, "set title \"Bulge before contact (Figure 2), E = %.3g Pa\"", m->E);
+    adh_gnuplot_cmd(fg->gp, "set xlabel \"central gap h (nm)\"");
+    adh_gnuplot_cmd(fg->gp, "set ylabel \"central deformation δ (nm)\"");
+    adh_gnuplot_cmd(fg->gp, "set key bottom right");
+    adh_gnuplot_cmd(fg->gp, "A = %.17g; R = %.17g; E = %.17g", m->A, m->R, m->E);
+    adh_gnuplot_cmd(fg->gp, "set xrange [%.17g:%.17g]", hmin * 1e9 * 0.95, hmax * 1e9);
+    adh_gnuplot_cmd(fg->gp, "set samples 400");
+    adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*1e9) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
+                    "-A*sqrt(2*R)/(8*E*(x*1e-9)**2.5)*1e9 with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 23\"",
+                    quoted(dat, q, sizeof q));
+    return fig_end(fg, "bulge.png", tmp_png);
+}
+
+int adh_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen)
+{
+    if (msglen)
+        msg[0] = '\0';
+    if (!cfg->plot || !(cfg->plots & (ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
+        return 0;
+    figure fg;
+    if (fig_open(&fg, cfg, dir, msg, msglen) != 0)
+        return -1;
+    int rc = 0;
+    if ((cfg->plots & ADH_PLOT_PRECONTACT) && precontact(&fg, cfg, run) != 0)
+        rc = -1;
+    if ((cfg->plots & ADH_PLOT_BULGE) && adh_gnuplot_alive(fg.gp) && bulge(&fg, cfg, run) != 0)
+        rc = -1;
+    fig_close(&fg);
+    return rc;
+}
+
+/* Figure 3: the gap just before the jump against sigma, with eq 24. */
+static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n)
+{
+    char dat[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
+    if (!f)
+        return -1;
+    double smin = INFINITY, smax = -INFINITY;
+    for (size_t i = 0; i < n; i++) {
+        adh_config rc;
+        adh_config_sweep_run(cfg, i, &rc);
+        adh_derived d;
+        adh_material_derive(&rc.mat, &d);
+        double h = adh_sweep_gap_before_jump(&runs[i]);
+        smin = fmin(smin, d.sigma), smax = fmax(smax, d.sigma);
+        if (isfinite(h))
+            fprintf(f, "%.17g\t%.17g\t%.17g\n", d.sigma, h, d.h_star);
+    }
+    /* eq 24 as a curve of sigma: h* = (3 A sqrt(2R) / 8E)^(2/7), E from eq 17 */
+    fprintf(f, "\n\n");
+    const adh_material *m = &cfg->mat;
+    double gamma = m->A / (16.0 * M_PI * m->z0 * m->z0);
+    for (int k = 0; k <= 200; k++) {
+        double s = smin * pow(smax / smin, k / 200.0);
+        double E = gamma * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / s;
+        fprintf(f, "%.17g\t%.17g\n", s, pow(3.0 * m->A * sqrt(2.0 * m->R) / (8.0 * E), 2.0 / 7.0));
+    }
+    if (data_done(fg, f, dat) < 0)
+        return -1;
+    fig_begin(fg, "jump.png", tmp_png, sizeof tmp_png);
+    adh_gnuplot_cmd(fg->gp, "set title \"Jump into contact (Figure 3), z_0 = %.3g nm\"", m->z0 * 1e9);
+    adh_gnuplot_cmd(fg->gp, "set logscale xy");
+    adh_gnuplot_cmd(fg->gp, "set xlabel \"adhesion–elasticity parameter σ (eq 17)\"");
+    adh_gnuplot_cmd(fg->gp, "set ylabel \"gap before the jump h (nm)\"");
+    adh_gnuplot_cmd(fg->gp, "set key top left");
+    adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($2*1e9) with points pt 7 ps 1.2 lc rgb \"#c0392b\" title \"computed\", "
+                    "'' index 1 using 1:($2*1e9) with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 24\"",
+                    quoted(dat, q, sizeof q));
+    return fig_end(fg, "jump.png", tmp_png);
+}
+
+/* Figure 7: every run's loading and unloading curves, with the JKR
+ * equilibrium curve when the runs share one material. */
+static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n)
+{
+    char dat[PATH_MAX + 16], jkr[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
+    if (!f)
+        return -1;
+    double fbig = 0, amax = 0;
+    int same_material = cfg->sweep.kind == ADH_SWEEP_EPS;
+    for (size_t i = 0; i < n; i++) {
+        for (size_t j = 0; j < runs[i].nrows; j++) {
+            const adh_obs *o = &runs[i].rows[j];
+            if (j > 0 && o->path != runs[i].rows[j - 1].path)
+                fputc('\n', f); /* a break between branches */
+            fprintf(f, "%.17g\t%.17g\n", o->h0, o->F);
+            fbig = fmax(fbig, fabs(o->F));
+            amax = fmax(amax, o->a);
+        }
+        fprintf(f, "\n\n");
+    }
+    if (data_done(fg, f, dat) < 0)
+        return -1;
+    f = fig_data(fg, "b.dat", jkr, sizeof jkr);
+    if (!f)
+        return -1;
+    if (same_material && amax > 0)
+        for (int k = 1; k <= 300; k++) {
+            double a = 1.1 * amax * k / 300.0, F, overlap;
+            adh_jkr(&cfg->mat, a, &F, &overlap);
+            fprintf(f, "%.17g\t%.17g\n", -overlap, F);
+        }
+    if (data_done(fg, f, jkr) < 0)
+        return -1;
+    double fs;
+    const char *fu;
+    force_unit(fbig, &fs, &fu);
+    fig_begin(fg, "force.png", tmp_png, sizeof tmp_png);
+    adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", adh_sweep_name(cfg->sweep.kind));
+    adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
+    adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
+    adh_gnuplot_cmd(fg->gp, "set key bottom right");
+    adh_gnuplot_cmd(fg->gp, "set yrange [%.17g:%.17g]", -1.15 * fbig * fs, 1.15 * fbig * fs);
+    char *cmd = NULL;
+    size_t cap = 0;
+    FILE *c = open_memstream(&cmd, &cap);
+    if (!c) {
+        snprintf(fg->msg, fg->msglen, "out of memory");
+        return -1;
+    }
+    fprintf(c, "plot 0 lc rgb \"#888888\" notitle");
+    for (size_t i = 0; i < n; i++) {
+        char label[64];
+        if (cfg->sweep.kind == ADH_SWEEP_EPS)
+            snprintf(label, sizeof label, "ε = %g pm", cfg->sweep.values[i] * 1e12);
+        else
+            snprintf(label, sizeof label, "%s = %g", adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i]);
+        /* light to heavy, as the paper's eps = 1, 0.5, 0.1 pm */
+        fprintf(c, ", %s index %zu using ($1*1e9):($2*%.17g) with lines lw %.2g title \"%s\"",
+                quoted(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1), label);
+    }
+    if (same_material && amax > 0)
+        fprintf(c, ", %s using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" title \"JKR\"",
+                quoted(jkr, q, sizeof q), fs);
+    fclose(c);
+    adh_gnuplot_cmd(fg->gp, "%s", cmd);
+    free(cmd);
+    return fig_end(fg, "force.png", tmp_png);
+}
+
+int adh_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, const char *dir,
+                      char *msg, size_t msglen)
+{
+    if (msglen)
+        msg[0] = '\0';
+    if (!cfg->plot || cfg->sweep.plot == ADH_SWEEP_PLOT_NONE || n == 0)
+        return 0;
+    figure fg;
+    if (fig_open(&fg, cfg, dir, msg, msglen) != 0)
+        return -1;
+    int rc = cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP ? jump(&fg, cfg, runs, n) : force_overlay(&fg, cfg, runs, n);
+    fig_close(&fg);
+    return rc;
+}

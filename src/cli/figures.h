@@ -1,0 +1,23 @@
+/* The scene figures the plot module does not draw, made from the rows of a
+ * run through the same gnuplot wrapper: Figure 1's inset (precontact.png),
+ * Figure 2 (bulge.png), and a sweep's combined figure: Figure 3 (jump.png)
+ * or Figure 7 (force.png). */
+#ifndef ADH_CLI_FIGURES_H
+#define ADH_CLI_FIGURES_H
+
+#include <stddef.h>
+
+#include "adhere/protocol.h"
+#include "scene/config.h"
+
+/* precontact.png and bulge.png in dir when cfg->plots asks for them. 0 (also
+ * when none is asked or there is nothing to draw: msg says so), or -1 with
+ * msg when gnuplot is missing or fails. */
+int adh_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen);
+
+/* The sweep's combined figure (cfg->sweep.plot) from runs[0..n) in dir.
+ * 0, or -1 with msg. */
+int adh_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, const char *dir,
+                      char *msg, size_t msglen);
+
+#endif

@@ -1,0 +1,312 @@
+#include "cli/sweep.h"
+
+#include <errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "adhere/grid.h"
+#include "adhere/kernel.h"
+#include "adhere/status.h"
+#include "cli/batch.h"
+#include "cli/figures.h"
+#include "cli/rigid.h"
+#include "cli/tables.h"
+#include "plot/plot.h"
+#include "scene/plan.h"
+
+/* OpenBLAS's own threads would fight the sweep's for the same cores. */
+void openblas_set_num_threads(int n);
+
+static volatile sig_atomic_t stop_signal;
+
+static void on_signal(int sig)
+{
+    stop_signal = sig;
+}
+
+static int on_step(const adh_obs *o, const adh_run *run, void *ctx)
+{
+    (void)o, (void)run, (void)ctx;
+    return stop_signal != 0;
+}
+
+typedef struct sweep_job {
+    const adh_config *cfg;
+    const adh_grid *grid;      /* shared, read-only */
+    const adh_kernel *kernel;  /* shared, read-only: apply takes a scratch per call */
+    adh_run *runs;
+    int *status;               /* adh status of each run */
+    size_t next;               /* the next run to start, under lock */
+    size_t done;
+    pthread_mutex_t lock;
+} sweep_job;
+
+static void *worker(void *arg)
+{
+    sweep_job *job = arg;
+    const adh_config *cfg = job->cfg;
+    for (;;) {
+        pthread_mutex_lock(&job->lock);
+        size_t i = job->next < cfg->sweep.n && !stop_signal ? job->next++ : cfg->sweep.n;
+        pthread_mutex_unlock(&job->lock);
+        if (i >= cfg->sweep.n)
+            break;
+        adh_config rc;
+        adh_config_sweep_run(cfg, i, &rc);
+        adh_run *run = &job->runs[i];
+        job->status[i] = rc.mode == ADH_MODE_RIGID
+                       ? adh_rigid_run(&rc, on_step, NULL, run)
+                       : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, on_step, NULL, run);
+        pthread_mutex_lock(&job->lock);
+        job->done++;
+        if (!cfg->quiet)
+            fprintf(stderr, "adhere: run %zu of %zu (%s = %g) %s: %zu steps, %zu iterations, %.3g s\n", i + 1,
+                    cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i],
+                    run->interrupted ? "interrupted" : job->status[i] == ADH_SUCCESS ? "done" : adh_strerror(job->status[i]),
+                    run->nrows, run->iterations, run->seconds);
+        pthread_mutex_unlock(&job->lock);
+    }
+    return NULL;
+}
+
+double adh_sweep_gap_before_jump(const adh_run *run)
+{
+    long prev = -1;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        if (o->path != 0)
+            continue;
+        if (o->a > 0)
+            return prev >= 0 ? run->rows[prev].hc : NAN;
+        prev = (long)i;
+    }
+    return NAN;
+}
+
+int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const int *status)
+{
+    const char *name = adh_sweep_name(cfg->sweep.kind);
+    fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (run-K/ holds its tables), SI units (m, N, Pa, s)\n");
+    if (cfg->scene[0])
+        fprintf(f, "# scene: %s\n", cfg->scene);
+    fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n");
+    fprintf(f, "# swept: the parameter the sweep varies (%s), value: its value in this run\n", name);
+    fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tstatus\n");
+    for (size_t i = 0; i < cfg->sweep.n; i++) {
+        adh_config rc;
+        adh_config_sweep_run(cfg, i, &rc);
+        adh_derived d;
+        adh_material_derive(&rc.mat, &d);
+        const adh_run *r = &runs[i];
+        const adh_turn_result *mt = adh_run_main_turn(r);
+        fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%s\n",
+                i + 1, name, cfg->sweep.values[i], rc.mat.E, d.sigma, rc.relax.eps, r->jump_in_h0,
+                adh_sweep_gap_before_jump(r), d.h_star, mt ? mt->max_load : NAN, mt ? mt->pulloff_F : NAN,
+                mt ? mt->jump_out_h0 : NAN, r->nrows, r->iterations, r->seconds,
+                r->interrupted ? "interrupted" : adh_strerror(status[i]));
+    }
+    return 0;
+}
+
+typedef struct sweep_tables {
+    const adh_config *cfg;
+    const adh_run *runs;
+    const int *status;
+} sweep_tables;
+
+static int write_sweep(FILE *f, const void *ctx)
+{
+    const sweep_tables *t = ctx;
+    return adh_write_sweep_table(f, t->cfg, t->runs, t->status);
+}
+
+/* mkdir -p */
+static int make_dir(const char *dir, char *why, size_t n)
+{
+    char buf[PATH_MAX];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1;; p++) {
+        if (*p && *p != '/')
+            continue;
+        char c = *p;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
+            snprintf(why, n, "cannot create directory %s: %s", buf, strerror(errno));
+            return -1;
+        }
+        *p = c;
+        if (!c)
+            break;
+    }
+    struct stat st;
+    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode) || access(buf, W_OK) != 0) {
+        snprintf(why, n, "cannot write into %s: not a writable directory", buf);
+        return -1;
+    }
+    return 0;
+}
+
+/* Tables and figures of run i in out/run-K. Returns an exit status. */
+static int write_run(const adh_config *cfg, size_t i, const adh_run *run, int rc, const char *out)
+{
+    char dir[PATH_MAX + 32], why[1024], note[256] = "";
+    adh_config rcfg;
+    adh_config_sweep_run(cfg, i, &rcfg);
+    snprintf(dir, sizeof dir, "%s/run-%zu", out, i + 1);
+    if (make_dir(dir, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return ADH_EXIT_USAGE;
+    }
+    int partial = run->interrupted || rc != ADH_SUCCESS;
+    if (run->interrupted)
+        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", (int)stop_signal, run->nrows);
+    else if (rc != ADH_SUCCESS)
+        snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(rc));
+    adh_tables t = { &rcfg, run, NULL, 0, partial, note };
+    if (adh_write_atomic(dir, "force.tsv", adh_write_force, &t, why, sizeof why) != 0 ||
+        adh_write_atomic(dir, "summary.tsv", adh_write_summary, &t, why, sizeof why) != 0 ||
+        (run->nturns && adh_write_atomic(dir, "turns.tsv", adh_write_turns, &t, why, sizeof why) != 0)) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return ADH_EXIT_USAGE;
+    }
+    if (partial)
+        return run->interrupted ? ADH_EXIT_INTERRUPTED : ADH_EXIT_SOLVER;
+    if (!cfg->plot)
+        return ADH_EXIT_OK;
+    char msg[1024] = "";
+    int status = ADH_EXIT_OK;
+    /* the plot module's figures only when one is asked: a sweep of many runs
+     * should not draw what nobody wants */
+    if (rcfg.plots & ADH_PLOT_ALL) {
+        int prc = adh_plots_write(&rcfg, run, dir, msg, sizeof msg);
+        if (prc != 0) {
+            fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
+            status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
+        }
+    }
+    if (adh_figures_run(&rcfg, run, dir, msg, sizeof msg) != 0) {
+        fprintf(stderr, "adhere: run %zu: %s\n", i + 1, msg);
+        status = status ? status : ADH_EXIT_PLOT;
+    }
+    return status;
+}
+
+static int worse(int a, int b)
+{
+    /* usage/output errors first, then interruption, solver failure, plots */
+    static const int rank[] = { ADH_EXIT_OK, ADH_EXIT_PLOT, ADH_EXIT_SOLVER, ADH_EXIT_INTERRUPTED, ADH_EXIT_USAGE };
+    int ra = 0, rb = 0;
+    for (int k = 0; k < 5; k++) {
+        if (rank[k] == a) ra = k;
+        if (rank[k] == b) rb = k;
+    }
+    return ra >= rb ? a : b;
+}
+
+int adh_sweep_main(const adh_cli *cli)
+{
+    const adh_config *cfg = &cli->cfg;
+    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
+    char why[1024];
+    size_t n = cfg->sweep.n;
+    if (out && make_dir(out, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return ADH_EXIT_USAGE;
+    }
+    if (cfg->mode == ADH_MODE_STATIC) {
+        fprintf(stderr, "adhere: a sweep in mode = static is not in this build yet\n");
+        return ADH_EXIT_USAGE;
+    }
+
+    /* Every swept parameter (E, sigma, eps) leaves the grid alone, so one
+     * kernel serves every run; rigid runs need none. */
+    adh_grid *g = NULL;
+    adh_kernel *k = NULL;
+    if (cfg->mode != ADH_MODE_RIGID) {
+        g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
+        k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;
+        if (!k) {
+            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
+            adh_grid_free(g);
+            return ADH_EXIT_SOLVER;
+        }
+    }
+    adh_run *runs = calloc(n, sizeof *runs);
+    int *status = calloc(n, sizeof *status);
+    int jobs = adh_plan_jobs(cfg);
+    pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
+    if (!runs || !status || !threads) {
+        fprintf(stderr, "adhere: out of memory for %zu runs\n", n);
+        free(runs), free(status), free(threads);
+        adh_kernel_free(k), adh_grid_free(g);
+        return ADH_EXIT_SOLVER;
+    }
+    for (size_t i = 0; i < n; i++) {
+        adh_run_init(&runs[i]);
+        status[i] = ADH_SUCCESS;
+    }
+    if (jobs > 1)
+        openblas_set_num_threads(1);
+
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+
+    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .status = status };
+    pthread_mutex_init(&job.lock, NULL);
+    int started = 0;
+    for (int t = 0; t < jobs; t++)
+        if (pthread_create(&threads[t], NULL, worker, &job) == 0)
+            started++;
+        else
+            break;
+    if (!started) /* no thread at all: run them here, one after another */
+        worker(&job);
+    for (int t = 0; t < started; t++)
+        pthread_join(threads[t], NULL);
+    pthread_mutex_destroy(&job.lock);
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+
+    int exit_status = ADH_EXIT_OK;
+    for (size_t i = 0; i < n; i++) {
+        /* a run never started (interrupted before its turn) counts as interrupted */
+        if (stop_signal && runs[i].nrows == 0)
+            runs[i].interrupted = 1;
+        if (runs[i].interrupted)
+            exit_status = worse(exit_status, ADH_EXIT_INTERRUPTED);
+        else if (status[i] != ADH_SUCCESS)
+            exit_status = worse(exit_status, ADH_EXIT_SOLVER);
+    }
+    sweep_tables st = { cfg, runs, status };
+    if (!out) {
+        adh_write_sweep_table(stdout, cfg, runs, status);
+    } else {
+        for (size_t i = 0; i < n; i++)
+            exit_status = worse(exit_status, write_run(cfg, i, &runs[i], status[i], out));
+        if (adh_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
+            fprintf(stderr, "adhere: %s\n", why);
+            exit_status = worse(exit_status, ADH_EXIT_USAGE);
+        } else if (cfg->plot && exit_status == ADH_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
+            char msg[1024] = "";
+            if (adh_figures_sweep(cfg, runs, n, out, msg, sizeof msg) != 0) {
+                fprintf(stderr, "adhere: sweep plot not written: %s\n", msg);
+                exit_status = worse(exit_status, ADH_EXIT_PLOT);
+            }
+        }
+    }
+    for (size_t i = 0; i < n; i++)
+        adh_run_free(&runs[i]);
+    free(runs), free(status), free(threads);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+    return exit_status;
+}

@@ -1,0 +1,25 @@
+/* A sweep ([sweep] in a scene): several independent runs, one per swept
+ * value, run in parallel on the cores, each written to DIR/run-K/ (its own
+ * force.tsv, summary.tsv, turns.tsv and plots), with DIR/sweep.tsv holding
+ * one row per run and the sweep's combined figure. */
+#ifndef ADH_CLI_SWEEP_H
+#define ADH_CLI_SWEEP_H
+
+#include <stdio.h>
+
+#include "adhere/protocol.h"
+#include "cli/options.h"
+
+/* Runs cli->cfg's sweep; returns the process exit status (batch.h). Without
+ * --out, only sweep.tsv is written, to standard output. */
+int adh_sweep_main(const adh_cli *cli);
+
+/* The central gap on the last loading row before the jump into contact:
+ * the separation at which the surfaces jump (Figure 3). NAN when the
+ * loading branch never reached contact or began in it. */
+double adh_sweep_gap_before_jump(const adh_run *run);
+
+/* sweep.tsv: one row per run. runs[i] is run i of cfg's sweep. */
+int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const int *status);
+
+#endif
