@@ -13,6 +13,9 @@
 #include "adhere/kernel.h"
 #include "adhere/protocol.h"
 #include "adhere/status.h"
+#include "cli/figures.h"
+#include "cli/rigid.h"
+#include "cli/sweep.h"
 #include "cli/tables.h"
 #include "plot/plot.h"
 
@@ -96,9 +99,13 @@ int adh_batch_main(const adh_cli *cli)
         fprintf(stderr, "adhere: --mode=static: the equilibrium solver is not in this build yet\n");
         return ADH_EXIT_USAGE;
     }
-    adh_grid *g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
+    if (cfg->sweep.kind != ADH_SWEEP_NONE)
+        return adh_sweep_main(cli);
+    /* Rigid spheres need eq 22 alone: no grid, no kernel. */
+    int rigid = cfg->mode == ADH_MODE_RIGID;
+    adh_grid *g = rigid ? NULL : adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
     adh_kernel *k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;
-    if (!k) {
+    if (!rigid && !k) {
         fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
         adh_grid_free(g);
         return ADH_EXIT_SOLVER;
@@ -117,7 +124,8 @@ int adh_batch_main(const adh_cli *cli)
     }
     adh_run run;
     adh_run_init(&run);
-    int rc = adh_protocol_run(g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
+    int rc = rigid ? adh_rigid_run(cfg, on_step, &ctx, &run)
+                   : adh_protocol_run(g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
     if (ctx.progress)
         fprintf(stderr, "\r%*s\r", 100, "");
     sigaction(SIGINT, &old_int, NULL);
@@ -153,6 +161,12 @@ int adh_batch_main(const adh_cli *cli)
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
                 status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
+            }
+            /* the scene figures (Figure 1 inset, Figure 2) when asked */
+            if (adh_figures_run(cfg, &run, out, msg, sizeof msg) != 0) {
+                fprintf(stderr, "adhere: plots not written: %s\n", msg);
+                if (status == ADH_EXIT_OK)
+                    status = ADH_EXIT_PLOT;
             }
         }
     }
