@@ -533,7 +533,7 @@ static void busy_key(tui *t, int key)
     char h0[64] = "the start";
     if (o)
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
-    say(t, 0, "paused at h0 = %s (the unfinished step was dropped)", h0);
+    say(t, 0, "paused at h0 = %s (the unfinished step was dropped); r goes on", h0);
     if (adh_action_for_key(key) == ACT_QUIT)
         t->quit = 1;
 }
@@ -570,7 +570,10 @@ static void run_next(tui *t)
                 stop_all(t);
                 if (it.key == KEY_RESIZE)
                     clearok(curscr, TRUE);
-                say(t, 0, "paused; r goes on");
+                const adh_obs *o = tui_sim_row(&t->sim);
+                char h0[64];
+                fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+                say(t, 0, "paused at h0 = %s; r goes on", h0);
                 if (adh_action_for_key(it.key) == ACT_QUIT)
                     t->quit = 1;
                 return;

@@ -1,0 +1,116 @@
+#!/bin/sh
+# Through a real terminal, as a person would: tmux runs adhere, send-keys
+# types, capture-pane reads the screen. Skipped only when tmux is absent.
+# Prints TAP.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+src=${ADHERE_SRC:-$(cd "$here/../.." && pwd)}
+bin=${ADHERE_BIN:-$src/adhere}
+if ! command -v tmux >/dev/null 2>&1; then
+    echo "ok 1 # SKIP tmux is not installed"
+    echo "1..1"
+    exit 0
+fi
+work=$(mktemp -d)
+# One server per session started: a server being killed cannot take the next.
+k=0
+sock=adhere-test-$$-$k
+T() { tmux -L "$sock" -f /dev/null "$@"; }
+trap 'T kill-server 2>/dev/null; rm -rf "$work"' EXIT
+n=0
+pass() { n=$((n + 1)); echo "ok $n - $*"; }
+fail() { n=$((n + 1)); echo "not ok $n - $*"; }
+
+screen() { T capture-pane -p -t t; }
+# wait_for TEXT [SECONDS]: until the pane shows TEXT (a fixed string).
+wait_for() {
+    i=0
+    limit=$((${2:-10} * 10))
+    while [ "$i" -lt "$limit" ]; do
+        screen | grep -qF -- "$1" && return 0
+        sleep 0.1
+        i=$((i + 1))
+    done
+    echo "#   waited in vain for: $1"
+    screen | sed 's/^/#   | /'
+    return 1
+}
+check() { what=$1; shift; if "$@"; then pass "$what"; else fail "$what"; fi; }
+# start: a fresh session running adhere in a 100x32 terminal; its exit
+# status lands in $work/exit.
+start() {
+    rm -f "$work/exit"
+    T kill-server 2>/dev/null
+    k=$((k + 1))
+    sock=adhere-test-$$-$k
+    T new-session -d -s t -x 100 -y 32 \
+        "cd '$work' && LC_ALL=C.UTF-8 OPENBLAS_NUM_THREADS=1 '$bin' 2>'$work/stderr'; echo \$? >'$work/exit'; sleep 60"
+}
+exit_status() {
+    i=0
+    while [ ! -s "$work/exit" ] && [ "$i" -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+    cat "$work/exit" 2>/dev/null
+}
+type_cmd() { T send-keys -t t ':'; T send-keys -t t -l "$1"; T send-keys -t t Enter; }
+
+start
+check "the TUI opens in a terminal" wait_for "Welcome. f steps the spheres together"
+type_cmd "set N 100"
+type_cmd "set spacing 10nm"
+type_cmd "set eps 10pm"
+type_cmd "set d 0.5nm"
+check "the : prompt sets parameters" wait_for "d = 500 pm:"
+T send-keys -t t f
+check "f steps in" wait_for "approached to h0 = 16.5 nm"
+T send-keys -t t -l 10f
+check "a count repeats: 10f" wait_for "approached to h0 = 11.5 nm"
+T send-keys -t t u
+check "u undoes" wait_for "undid 1 step: back at h0 = 12 nm"
+T send-keys -t t Enter
+T send-keys -t t -l 1GPa
+T send-keys -t t Enter
+check "Enter edits E, sigma follows" wait_for "σ 2.251"
+T send-keys -t t Enter
+T send-keys -t t -l abc
+T send-keys -t t Enter
+check "a bad typed value is named" wait_for "error: E: 'abc' is not a number"
+check "and changes nothing" sh -c "tmux -L '$sock' capture-pane -p -t t | grep -qF '>E     1 GPa'"
+T send-keys -t t '?'
+check "? shows the help" wait_for "adhere keys"
+T send-keys -t t Space
+check "any key leaves the help" wait_for "Parameters"
+
+# A long run (small d, tight eps) so there is time to pause it.
+type_cmd "set d 0.05nm"
+type_cmd "set eps 0.1pm"
+T send-keys -t t r
+check "r runs" wait_for "running to the turn"
+T send-keys -t t Space
+check "a key pauses the run" wait_for "paused at h0"
+
+T resize-window -t t -x 80 -y 24
+sleep 0.3
+check "a resize redraws at the new size" sh -c "tmux -L '$sock' capture-pane -p -t t | head -1 | grep -q ' ? help  q quit *\$' && [ \$(tmux -L '$sock' capture-pane -p -t t | wc -L) -le 80 ]"
+
+T send-keys -t t q
+check "q quits with status 0" [ "$(exit_status)" = 0 ]
+check "the terminal is restored (the TUI is gone from the screen)" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
+
+start
+wait_for "Welcome." >/dev/null
+T send-keys -t t C-c
+check "C-c (SIGINT) ends it with status 130" [ "$(exit_status)" = 130 ]
+check "and the terminal is restored" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
+check "and it says why on stderr" grep -q "stopped by signal 2" "$work/stderr"
+
+start
+wait_for "Welcome." >/dev/null
+T send-keys -t t r
+wait_for "running to the turn" >/dev/null
+# the pane runs sh, whose child is adhere
+pid=$(pgrep -P "$(T display -p -t t '#{pane_pid}')" | head -1)
+check "found the running adhere" [ -n "$pid" ]
+kill -TERM "$pid" 2>/dev/null
+check "SIGTERM during a run ends it with status 143" [ "$(exit_status)" = 143 ]
+check "and the terminal is restored" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
+echo "1..$n"
