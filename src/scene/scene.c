@@ -237,13 +237,74 @@ static void finish_error(scene_parse *sp, int rc, char *why, size_t whylen)
     snprintf(why, whylen, "%s:%d: %s", sp->file, rc, sp->why);
 }
 
+/* What inih would pass over or misplace, checked line by line first: a
+ * section header is checked where it stands (inih reports nothing for an
+ * empty unknown section), a key before any section, an indented line (inih
+ * would glue it onto the previous value), a line longer than inih's buffer. */
+static int prescan(const char *text, scene_parse *sp)
+{
+    int line = 0, in_section = 0;
+    for (const char *p = text; *p;) {
+        const char *eol = strchr(p, '\n');
+        size_t len = eol ? (size_t)(eol - p) : strlen(p);
+        line++;
+        char buf[512];
+        if (len >= 199) {
+            fail(sp, "line longer than 198 characters%s%s", "", "");
+            return line;
+        }
+        memcpy(buf, p, len);
+        buf[len] = '\0';
+        if (len && buf[len - 1] == '\r')
+            buf[--len] = '\0';
+        p = eol ? eol + 1 : p + len;
+        const char *t = buf;
+        if (line == 1 && (unsigned char)t[0] == 0xEF && (unsigned char)t[1] == 0xBB && (unsigned char)t[2] == 0xBF)
+            t += 3; /* a UTF-8 byte order mark */
+        int indented = *t == ' ' || *t == '\t';
+        while (*t == ' ' || *t == '\t')
+            t++;
+        if (!*t || *t == '#' || *t == ';')
+            continue;
+        if (indented) {
+            fail(sp, "indented line: write each key = value at the start of its own line%s%s", "", "");
+            return line;
+        }
+        if (*t == '[') {
+            const char *close = strchr(t, ']');
+            if (!close) {
+                fail(sp, "syntax error: section header without ']'%s%s", "", "");
+                return line;
+            }
+            char name[64];
+            snprintf(name, sizeof name, "%.*s", (int)(close - t - 1), t + 1);
+            int known = 0;
+            for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
+                known |= strcmp(keys[i].section, name) == 0;
+            if (!known) {
+                fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep%s", name, "");
+                return line;
+            }
+            in_section = 1;
+            continue;
+        }
+        if (!in_section) {
+            fail(sp, "'%s' comes before any [section]%s", t, "");
+            return line;
+        }
+    }
+    return 0;
+}
+
 int adh_scene_parse_string(const char *text, const char *name, adh_config *cfg, char *why, size_t whylen)
 {
     scene_parse sp;
     memset(&sp, 0, sizeof sp);
     sp.cfg = cfg;
     sp.file = name;
-    int rc = ini_parse_string(text, handler, &sp);
+    int rc = prescan(text, &sp);
+    if (rc == 0)
+        rc = ini_parse_string(text, handler, &sp);
     if (rc != 0) {
         finish_error(&sp, rc, why, whylen);
         return -1;
@@ -286,24 +347,43 @@ int adh_scene_load(const char *arg, adh_config *cfg, char *why, size_t whylen)
     char path[PATH_MAX];
     if (adh_scene_find(arg, path, sizeof path, why, whylen) != 0)
         return -1;
+    /* read whole, so the same checks as for text in memory apply */
     FILE *f = fopen(path, "r");
     if (!f) {
-        snprintf(why, whylen, "cannot read scene %s: %s", path, strerror(errno));
+        snprintf(why, whylen, "%s: cannot read scene: %s", path, strerror(errno));
         return -1;
     }
-    scene_parse sp;
-    memset(&sp, 0, sizeof sp);
-    sp.cfg = cfg;
-    sp.file = path;
-    int rc = ini_parse_file(f, handler, &sp);
+    char *text = NULL;
+    size_t cap = 0, len = 0;
+    for (;;) {
+        if (len + 4096 + 1 > cap) {
+            cap = cap ? 2 * cap : 8192;
+            char *grown = cap <= (1u << 20) ? realloc(text, cap) : NULL;
+            if (!grown) {
+                free(text);
+                fclose(f);
+                snprintf(why, whylen, "%s: cannot read scene: larger than 1 MiB or out of memory", path);
+                return -1;
+            }
+            text = grown;
+        }
+        size_t got = fread(text + len, 1, 4096, f);
+        len += got;
+        if (got < 4096)
+            break;
+    }
+    int bad = ferror(f);
     fclose(f);
-    if (rc != 0) {
-        if (rc < 0)
-            snprintf(why, whylen, "cannot read scene %s", path);
-        else
-            finish_error(&sp, rc, why, whylen);
+    text[len] = '\0';
+    if (bad || memchr(text, '\0', len)) {
+        free(text);
+        snprintf(why, whylen, "%s: cannot read scene: %s", path, bad ? "read error" : "not a text file");
         return -1;
     }
+    int rc = adh_scene_parse_string(text, path, cfg, why, whylen);
+    free(text);
+    if (rc != 0)
+        return -1;
     snprintf(cfg->scene, sizeof cfg->scene, "%s", path);
     return 0;
 }

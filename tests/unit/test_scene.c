@@ -1,0 +1,230 @@
+/* Scene files and the planner: every shipped scene carries its figure's
+ * parameters and plans the least work; every bad scene names file:line. */
+#include <string.h>
+
+#include "adhere/params.h"
+#include "scene/plan.h"
+#include "scene/scene.h"
+#include "tap.h"
+
+/* equal up to the rounding of a unit conversion ("0.5nm" is 0.5 x 1e-9) */
+static int same(double a, double b)
+{
+    return fabs(a - b) <= 1e-12 * fabs(b);
+}
+
+static int load(const char *name, adh_config *c)
+{
+    char why[1024] = "";
+    adh_config_default(c);
+    int rc = adh_scene_load(name, c, why, sizeof why);
+    ok(rc == 0, "shipped scene %s parses %s", name, why);
+    return rc;
+}
+
+static double sigma_of(const adh_config *c)
+{
+    adh_derived d;
+    adh_material_derive(&c->mat, &d);
+    return d.sigma;
+}
+
+/* A bad scene: rejected, and the message is "name:LINE: ..." naming what. */
+static void bad(const char *text, int line, const char *mentions)
+{
+    adh_config c;
+    adh_config_default(&c);
+    char why[1024] = "", want[64];
+    int rc = adh_scene_parse_string(text, "bad.scene", &c, why, sizeof why);
+    snprintf(want, sizeof want, "bad.scene:%d: ", line);
+    ok(rc != 0 && strncmp(why, want, strlen(want)) == 0 && strstr(why, mentions),
+       "rejected at line %d, mentions '%s': %s", line, mentions, why);
+}
+
+static int has_skip(const adh_plan *p, const char *what)
+{
+    for (size_t i = 0; i < p->nskipped; i++)
+        if (strstr(p->skipped[i].what, what))
+            return 1;
+    return 0;
+}
+
+static int has_stored(const adh_plan *p, const char *what)
+{
+    for (size_t i = 0; i < p->nstored; i++)
+        if (strcmp(p->stored[i].what, what) == 0)
+            return 1;
+    return 0;
+}
+
+static void default_scene_is_builtin_default(void)
+{
+    adh_config c, d;
+    if (load("default", &c))
+        return;
+    adh_config_default(&d);
+    ok(same(c.mat.E, d.mat.E) && same(c.mat.A, d.mat.A) && same(c.mat.z0, d.mat.z0) && same(c.mat.R, d.mat.R),
+       "default.scene's material is the built-in default's (E = %g)", c.mat.E);
+    ok(c.nodes == d.nodes && isnan(c.spacing) && c.kernel == d.kernel, "default.scene's grid is the built-in default's");
+    ok(same(c.relax.eps, d.relax.eps) && c.relax.max_iter == d.relax.max_iter, "default.scene's solver is the built-in default's");
+    ok(isnan(c.proto.start) && same(c.proto.step, d.proto.step) && c.proto.nturns == 1 &&
+       same(c.proto.turns[0], d.proto.turns[0]) && c.proto.unload == 1 && c.proto.dwell == 0 && c.proto.nprofiles == 0,
+       "default.scene's protocol is the built-in default's (turn %g m)", c.proto.turns[0]);
+    ok(c.plots == d.plots && c.plot == 1 && same(c.drive_speed, d.drive_speed) && c.sweep.kind == ADH_SWEEP_NONE,
+       "default.scene's outputs are the built-in default's");
+    ok_rel(sigma_of(&c), 7.50, 2e-3, "default sigma (Figure 4)");
+}
+
+static void figure_parameters(void)
+{
+    adh_config c;
+    adh_plan p;
+    if (!load("fig1", &c)) {
+        ok_rel(sigma_of(&c), 2.25, 3e-3, "fig1 sigma");
+        adh_plan_make(&c, &p);
+        ok(p.loading_branches == 1 && p.unloading_branches == 0 && p.snapshots == 0 && !p.stop_at_contact,
+           "fig1: approach into contact, no unloading (unload %zu)", p.unloading_branches);
+        ok(c.plots == (ADH_PLOT_FORCE | ADH_PLOT_PRECONTACT) && has_stored(&p, "precontact.png"),
+           "fig1 draws the force and its eq 23 inset");
+    }
+    if (!load("fig2", &c)) {
+        adh_plan_make(&c, &p);
+        ok(same(c.mat.E, 1e9) && p.stop_at_contact && p.unloading_branches == 0 && has_skip(&p, "loading past contact"),
+           "fig2: approach only, stops at the jump into contact");
+        ok(c.plots == ADH_PLOT_BULGE && !p.contact_speeds && p.profiles_stored == 0, "fig2 keeps only the bulge figure");
+    }
+    if (!load("fig3", &c)) {
+        adh_plan_make(&c, &p);
+        ok(c.sweep.kind == ADH_SWEEP_SIGMA && c.sweep.n >= 7 && c.sweep.values[0] <= 0.03 &&
+           c.sweep.values[c.sweep.n - 1] >= 30, "fig3 sweeps sigma over three decades (%zu values)", c.sweep.n);
+        ok(p.nruns == c.sweep.n && p.stop_at_contact && p.unloading_branches == 0, "fig3: %zu approach-only runs", p.nruns);
+        ok(p.kernels == 1 && p.shared_kernel, "fig3: one kernel shared by every run");
+        ok(p.jobs >= 1 && c.sweep.plot == ADH_SWEEP_PLOT_JUMP && has_stored(&p, "jump.png") && has_stored(&p, "sweep.tsv"),
+           "fig3 writes sweep.tsv and jump.png (%d jobs)", p.jobs);
+        adh_config r;
+        for (size_t i = 0; i < c.sweep.n; i++) {
+            adh_config_sweep_run(&c, i, &r);
+            if (fabs(sigma_of(&r) - c.sweep.values[i]) > 1e-9 * c.sweep.values[i])
+                break;
+            if (i + 1 == c.sweep.n)
+                ok(1, "every fig3 run has the sigma it names (E from eq 17)");
+        }
+        ok(same(c.mat.z0, 0.5e-9), "fig3: z0 = 0.5 nm");
+    }
+    if (!load("fig4", &c)) {
+        static const double want[] = { -5, -3.5, -2, -0.5, 1, 2.5, 4, 5.5, 7, 8.5 };
+        int listed = c.proto.nprofiles == 10;
+        for (size_t i = 0; listed && i < 10; i++)
+            listed = same(c.proto.profiles[i], want[i] * 1e-9);
+        ok(listed, "fig4 stores profiles at the caption's ten positions");
+        adh_plan_make(&c, &p);
+        ok(p.profiles_reached == 10 && p.profiles_stored >= 10, "fig4: every profile position is on a branch (%zu stored)", p.profiles_stored);
+        ok_rel(sigma_of(&c), 7.50, 2e-3, "fig4 sigma");
+        ok(c.proto.nturns == 1 && same(c.proto.turns[0], -5e-9) && p.unloading_branches == 1, "fig4 turns at -5 nm and unloads");
+    }
+    if (!load("fig5", &c)) {
+        ok_rel(sigma_of(&c), 4.36, 3e-3, "fig5 sigma");
+        ok(same(c.mat.R, 1.5e-2) && same(c.mat.E, 1e11) && same(c.mat.A, 5e-19) && c.proto.nturns == 8, "fig5: R = 1.5 cm, 8 turns");
+        adh_plan_make(&c, &p);
+        ok(p.loading_branches == 1 && p.snapshots == 8 && p.unloading_branches == 8,
+           "fig5 plan: one loading branch, 8 snapshots, 8 unloading branches");
+        ok(same(p.runs[0].end, -10e-9), "fig5 loads only to the deepest turn");
+    }
+    if (!load("fig6", &c)) {
+        ok_rel(sigma_of(&c), 17.43, 3e-3, "fig6 sigma");
+        adh_plan_make(&c, &p);
+        ok(c.proto.nturns == 9 && p.loading_branches == 1 && p.unloading_branches == 9, "fig6: 9 turns on one loading branch");
+    }
+    if (!load("fig7", &c)) {
+        ok(c.sweep.kind == ADH_SWEEP_EPS && c.sweep.n == 3 && same(c.sweep.values[0], 1e-12) &&
+           same(c.sweep.values[1], 0.5e-12) && same(c.sweep.values[2], 1e-13), "fig7 sweeps eps = 1, 0.5, 0.1 pm");
+        adh_plan_make(&c, &p);
+        ok(p.nruns == 3 && p.unloading_branches == 1 && c.sweep.plot == ADH_SWEEP_PLOT_FORCE, "fig7: 3 loops, combined force figure");
+        ok_rel(sigma_of(&c), 7.50, 2e-3, "fig7 sigma (Figure 4's material)");
+    }
+    if (!load("fig8", &c)) {
+        adh_plan_make(&c, &p);
+        ok(same(c.drive_speed, 1e-6) && p.contact_speeds && c.plots == ADH_PLOT_CONTACT, "fig8 tracks the contact line at 1 um/s");
+    }
+}
+
+static void planner(void)
+{
+    adh_config c;
+    adh_plan p;
+    char why[1024];
+    adh_config_default(&c);
+    ok(adh_scene_parse_string("[scene]\nmode = rigid\n[protocol]\nturns = none\n", "rigid", &c, why, sizeof why) == 0,
+       "mode = rigid parses");
+    adh_plan_make(&c, &p);
+    ok(!p.elastic && p.kernels == 0 && p.unloading_branches == 0 && has_skip(&p, "elastic solve"),
+       "a rigid scene builds no kernel and does no elastic solve");
+    ok(p.runs[0].end == adh_plan_rigid_end(&c) && p.runs[0].end > 0, "rigid spheres stop above h0 = 0");
+
+    adh_config_default(&c);
+    adh_scene_parse_string("[output]\nprofiles = 1.02nm, 2nm\n", "p", &c, why, sizeof why);
+    adh_plan_make(&c, &p);
+    ok(p.profiles_asked == 2 && p.profiles_reached == 1 && has_skip(&p, "profile at 1.02 nm"),
+       "a profile between drive positions is reported as skipped");
+
+    adh_config_default(&c);
+    adh_scene_parse_string("[protocol]\nturns = -1nm\ndwell = 500\nunload = no\n", "d", &c, why, sizeof why);
+    adh_plan_make(&c, &p);
+    ok(p.unloading_branches == 0 && has_skip(&p, "dwell"), "a dwell without unloading is skipped");
+
+    adh_config_default(&c);
+    adh_scene_parse_string("[protocol]\nunload = no\nturns = -1nm, -2nm\n", "u", &c, why, sizeof why);
+    ok(c.proto.unload == 0 && c.proto.nturns == 2, "unload = no holds whatever the order of the keys");
+
+    adh_config_default(&c);
+    adh_scene_parse_string("[sweep]\nE = 1GPa, 2GPa\njobs = 1\n", "e", &c, why, sizeof why);
+    adh_plan_make(&c, &p);
+    ok(p.nruns == 2 && p.jobs == 1 && same(p.runs[1].E, 2e9), "[sweep] E = list, jobs = 1: two runs one at a time");
+    adh_config_default(&c);
+    adh_scene_parse_string("[sweep]\neps = 2pm, 1pm, 3pm, 4pm\n", "e", &c, why, sizeof why);
+    adh_plan_make(&c, &p);
+    ok(p.jobs >= 1 && p.jobs <= 4 && p.kernels == 1, "an eps sweep runs on at most the cores, one kernel (%d jobs)", p.jobs);
+
+    adh_config_default(&c);
+    adh_scene_parse_string("[output]\nplots = none\n", "n", &c, why, sizeof why);
+    ok(c.plots == 0 && c.plot == 1, "plots = none draws no figure of the run");
+}
+
+static void bad_scenes(void)
+{
+    bad("[scene]\ntitle = x\n[materials]\nE = 1GPa\n", 3, "unknown section [materials]");
+    bad("[material]\nE = 1GPa\nYoung = 3\n", 3, "unknown key 'Young'");
+    bad("[material]\nE = 1GPa\nE = 2GPa\n", 3, "given twice");
+    bad("[material]\n\nA = abc\n", 3, "'abc' is not a number");
+    bad("[material]\nR = 5parsecs\n", 2, "unknown unit");
+    bad("[material]\nE = 5nm\n", 2, "a pressure");
+    bad("[grid]\nnodes = 5\n", 2, "from 10 to 20000");
+    bad("[protocol]\nturns = -1nm, xyz\n", 2, "'xyz' is not a number");
+    bad("[scene]\nmode = fast\n", 2, "not a mode");
+    bad("[output]\nplots = force, pie\n", 2, "'pie' is not a plot");
+    bad("[output]\nplots = none, force\n", 2, "cannot be combined");
+    bad("[sweep]\nsigma = 1, 2\nE = 1GPa\n", 3, "a sweep varies one parameter");
+    bad("[sweep]\nsigma = 1, -2\n", 2, "above 0");
+    bad("[sweep]\neps = 1GPa\n", 2, "a length");
+    bad("[sweep]\nplot = pie\n", 2, "not a sweep plot");
+    bad("[sweep]\njobs = 0\n", 2, "jobs");
+    bad("[solver]\neps 1pm\n", 2, "syntax error");
+    bad("[protocol\nstep = 1nm\n", 1, "syntax error");
+
+    adh_config c;
+    char why[1024] = "";
+    adh_config_default(&c);
+    ok(adh_scene_load("/nonexistent/dir/x.scene", &c, why, sizeof why) != 0 && strstr(why, "/nonexistent/dir/x.scene"),
+       "a missing scene file is named: %s", why);
+    ok(adh_scene_load("nosuchfigure", &c, why, sizeof why) != 0 && strstr(why, "no scene named 'nosuchfigure'"),
+       "an unknown scene name is reported: %s", why);
+}
+
+int main(void)
+{
+    default_scene_is_builtin_default();
+    figure_parameters();
+    planner();
+    bad_scenes();
+    return tap_done();
+}
