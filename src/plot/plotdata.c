@@ -120,7 +120,8 @@ int adh_write_profiles_table(const adh_config *cfg, const adh_run *run, const ch
                "h_sphere = h0 + r^2/(2R) the undeformed gap\n");
     if (run->nprofiles == 0)
         fprintf(f, "# no profiles stored: ask for positions with --profiles=M[,M...]\n");
-    fprintf(f, "h0_m\tbranch\tpath\tr_m\th_m\tu_m\tp_Pa\th_sphere_m\n");
+    fprintf(f, "# SI units: h0, r, h, u, h_sphere in m, p in Pa\n");
+    fprintf(f, "h0\tbranch\tpath\tr\th\tu\tp\th_sphere\n");
     for (size_t k = 0; k < run->nprofiles; k++) {
         const adh_profile *pr = &run->profiles[k];
         for (size_t n = 0; n < cfg->nodes; n++) {
@@ -161,7 +162,8 @@ int adh_write_contact_table(const adh_config *cfg, const adh_run *run, const cha
     fprintf(f, "# drive speed |dh0/dt| = %.17g m/s (h0 falls on loading, rises on "
                "unloading); da_dt = da/dh0 * dh0/dt, positive while the contact spreads, "
                "nan out of contact\n", cfg->drive_speed);
-    fprintf(f, "h0_m\tbranch\tpath\ta_m\tda_dh0\tda_dt_m_per_s\n");
+    fprintf(f, "# SI units: h0, a in m, da_dh0 dimensionless, da_dt in m/s\n");
+    fprintf(f, "h0\tbranch\tpath\ta\tda_dh0\tda_dt\n");
     for (size_t i = 0; i < run->nrows; i++) {
         const adh_obs *o = &run->rows[i];
         fprintf(f, "%.17g\t%d\t%d\t%.17g\t%.17g\t%.17g\n", o->h0, o->branch, o->path, o->a,

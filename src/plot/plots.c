@@ -614,6 +614,12 @@ static int plot_profile(plotter *pl)
     adh_gnuplot_cmd(pl->gp, "set samples 400");
     adh_gnuplot_cmd(pl->gp, "R = %.17g", R);
     adh_gnuplot_cmd(pl->gp, "htop = %.17g", top);
+    /* few positions take colours spread over the whole list, not its first
+     * (similar) few; more positions than colours cycle */
+    adh_gnuplot_cmd(pl->gp, "adh_ncol = words(adh_profile_colors)");
+    adh_gnuplot_cmd(pl->gp, "adh_pcol(j) = word(adh_profile_colors, %zu > 1 && %zu <= adh_ncol "
+                    "? 1 + int(j * (adh_ncol - 1.0) / %zu + 0.5) : 1 + j %% adh_ncol)",
+                    npos, npos, npos > 1 ? npos - 1 : 1);
 
     char *cmd = NULL;
     size_t cmdcap = 0;
@@ -645,7 +651,7 @@ static int plot_profile(plotter *pl)
             }
             any_unload |= !loading;
             fprintf(c, ", \\\n  %s index %zu using ($1*1e6):($2*1e9) with lines "
-                       "lc rgb word(adh_profile_colors, 1 + %zu %% words(adh_profile_colors)) "
+                       "lc rgb adh_pcol(%zu) "
                        "lw %s dt %d %s", qdat, k, j, loading ? "2" : "1.6", loading ? 1 : 2,
                     title);
         }

@@ -15,7 +15,7 @@ set key box opaque samplen 2.5 spacing 1.1 font ",10"
 # adh_profile_colors. Unstable (static mode) stretches are dashed and thin.
 adh_loading_color = "#1f3f8f"
 adh_unload_colors = "#c0392b #e67e22 #27ae60 #8e44ad #16a085 #d35400 #2c3e50 #b7950b #7f8c8d"
-adh_profile_colors = "#1f3f8f #2e6fb7 #3aa0c8 #27ae60 #8bc34a #c9b600 #e67e22 #d35400 #c0392b #8e44ad #555555"
+adh_profile_colors = "#1f3f8f #2e6fb7 #3aa0c8 #27ae60 #8bc34a #c9b600 #e67e22 #d35400 #c0392b #8e44ad"
 adh_loading_width = 2.5
 adh_unloading_width = 1.6
 adh_unstable_dash = 2

@@ -1,0 +1,112 @@
+#!/bin/sh
+# Batch runs with --out make valid PNGs of the style's size beside their
+# tables; --no-plot, --plots and --gnuplot-style are obeyed; with gnuplot off
+# the PATH (or dying) the run exits 3 with every table intact and gnuplot's
+# own stderr never printed raw. Prints TAP.
+BIN=${ADHERE_BIN:-./adhere}
+SRC=${ADHERE_SRC:-.}
+export LC_ALL=C.UTF-8
+T=$(mktemp -d "${TMPDIR:-/tmp}/adhere-plots-XXXXXX") || exit 1
+trap 'rm -rf "$T"' EXIT
+n=0 failed=0
+ok() { n=$((n + 1)); echo "ok $n - $1"; }
+no() { n=$((n + 1)); failed=$((failed + 1)); echo "not ok $n - $1"; }
+check() { if eval "$1"; then ok "$2"; else no "$2"; fi; }
+
+if ! command -v gnuplot >/dev/null 2>&1; then
+    echo "ok 1 - # SKIP gnuplot is not installed"
+    echo "1..1"
+    exit 0
+fi
+
+RUN="--batch --quiet --nodes=100 --eps=1e-11"
+
+# "W H" of a PNG, or "bad" when the file is not a PNG.
+png_size() {
+    [ -f "$1" ] || { echo missing; return; }
+    sig=$(od -An -tx1 -N8 "$1" | tr -d ' \n')
+    ihdr=$(od -An -c -j12 -N4 "$1" | tr -d ' \n')
+    if [ "$sig" != 89504e470d0a1a0a ] || [ "$ihdr" != IHDR ]; then echo bad; return; fi
+    set -- $(od -An -tu1 -j16 -N8 "$1")
+    echo "$(( ($1 << 24) + ($2 << 16) + ($3 << 8) + $4 )) $(( ($5 << 24) + ($6 << 16) + ($7 << 8) + $8 ))"
+}
+
+# data rows of a table: lines that are neither comments nor the header
+rows() { grep -v '^#' "$1" 2>/dev/null | tail -n +2 | wc -l; }
+
+# The size the installed style asks for.
+size=$(sed -n 's/^set terminal pngcairo size \([0-9]*\),\([0-9]*\).*/\1 \2/p' \
+       "$SRC/share/adhere/gnuplot/style.gp" | head -1)
+check '[ -n "$size" ]' "the installed style sets a PNG size ($size)"
+
+# --- a full run ---------------------------------------------------------
+D=$T/full
+"$BIN" $RUN --profiles=-5nm,-2nm,1nm,4nm -o "$D" 2>"$T/full.err"
+rc=$?
+check '[ $rc -eq 0 ]' "batch with plots exits 0 (got $rc)"
+for p in force profile contact; do
+    s=$(png_size "$D/$p.png")
+    check '[ "$s" = "$size" ]' "$p.png is a valid PNG of $size (got $s)"
+done
+check '[ "$(grep -v "^#" "$D/profiles.tsv" | head -1)" = "$(printf "h0\tbranch\tpath\tr\th\tu\tp\th_sphere")" ]' \
+    "profiles.tsv starts with its header"
+check '[ "$(rows "$D/profiles.tsv")" -eq $((100 * 8)) ]' \
+    "profiles.tsv holds 4 positions x 2 branches x 100 nodes ($(rows "$D/profiles.tsv") rows)"
+check '[ "$(rows "$D/contact.tsv")" -eq "$(rows "$D/force.tsv")" ]' \
+    "contact.tsv has a row for every force.tsv row"
+check '! ls -a "$D" | grep -q "tmp"' "no temporary file left in the output dir"
+check '[ ! -s "$T/full.err" ]' "nothing on stderr"
+# the contact line spreads while loading and recedes while unloading
+check 'awk -F"\t" "!/^#/ && \$2 == 1 && \$6 != \"nan\" && \$6 < 0 {bad++} END {exit bad > 3}" "$D/contact.tsv"' \
+    "loading contact-line speeds are positive (bar lattice hops)"
+check 'awk -F"\t" "!/^#/ && \$2 == -1 && \$6 != \"nan\" && \$6 + 0 < 0 {neg++} END {exit !(neg > 10)}" "$D/contact.tsv"' \
+    "unloading has receding (negative) speeds"
+
+# --- several turns: the adhesion panel -----------------------------------
+D=$T/turns
+"$BIN" $RUN --turn=-3nm,0 --plots=force -o "$D" 2>"$T/turns.err"
+rc=$?
+s=$(png_size "$D/force.png")
+check '[ $rc -eq 0 ] && [ "$s" = "$size" ]' "two turns: force.png with its adhesion panel ($rc, $s)"
+check '[ ! -e "$D/profile.png" ] && [ ! -e "$D/contact.png" ]' "--plots=force makes force.png alone"
+
+# --- --no-plot ------------------------------------------------------------
+D=$T/noplot
+"$BIN" $RUN --no-plot -o "$D" 2>/dev/null
+rc=$?
+check '[ $rc -eq 0 ] && ! ls "$D" | grep -q "\.png$"' "--no-plot: exit 0 and no PNG"
+
+# --- --gnuplot-style --------------------------------------------------------
+printf 'set terminal pngcairo size 640,400\n' >"$T/small.gp"
+D=$T/style
+"$BIN" $RUN --plots=contact --gnuplot-style="$T/small.gp" -o "$D" 2>/dev/null
+rc=$?
+s=$(png_size "$D/contact.png")
+check '[ $rc -eq 0 ] && [ "$s" = "640 400" ]' "--gnuplot-style sets the size (got $rc, $s)"
+
+# --- gnuplot off the PATH ---------------------------------------------------
+D=$T/nognuplot
+PATH=/nonexistent "$BIN" $RUN -o "$D" 2>"$T/nognuplot.err"
+rc=$?
+check '[ $rc -eq 3 ]' "gnuplot off the PATH: exit 3 (got $rc)"
+check 'grep -q "gnuplot not found" "$T/nognuplot.err"' \
+    "and says so: $(head -1 "$T/nognuplot.err")"
+for t in force.tsv summary.tsv profiles.tsv contact.tsv; do
+    check '[ "$(rows "$D/$t")" -gt 0 ] || [ $t = profiles.tsv -a -s "$D/$t" ]' "$t still written"
+done
+check '! ls "$D" | grep -q "png"' "no PNG, not even a partial one"
+
+# --- a gnuplot that dies, shouting on stderr -----------------------------
+printf '#!/bin/sh\necho "fatal: out of ink" >&2\nexit 7\n' >"$T/dying-gnuplot"
+chmod +x "$T/dying-gnuplot"
+D=$T/dying
+ADHERE_GNUPLOT=$T/dying-gnuplot "$BIN" $RUN -o "$D" 2>"$T/dying.err"
+rc=$?
+check '[ $rc -eq 3 ]' "a dying gnuplot: exit 3 (got $rc)"
+check 'grep -q "status 7.*out of ink" "$T/dying.err"' "its death and last words are quoted once"
+check '! grep -qx "fatal: out of ink" "$T/dying.err"' "its raw stderr never reaches the terminal"
+check '[ -s "$D/gnuplot.log" ]' "its stderr is kept in gnuplot.log"
+check '[ "$(rows "$D/force.tsv")" -gt 0 ] && [ -s "$D/contact.tsv" ]' "tables intact"
+
+echo "1..$n"
+[ $failed -eq 0 ]
