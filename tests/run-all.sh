@@ -8,7 +8,7 @@ export LC_ALL=C.UTF-8 ADHERE_BIN="$PWD/adhere" ADHERE_SRC="$PWD" OPENBLAS_NUM_TH
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 pass=0 fail=0
-for t in "$BUILD"/tests/* tests/cli/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh tests/asan/*.sh; do
+for t in "$BUILD"/tests/* tests/cli/*.sh tests/scenes/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh tests/asan/*.sh; do
     [ -f "$t" ] && [ -x "$t" ] || continue
     case "$t" in *bench-*) continue ;; esac
     echo "# $t"

@@ -1,0 +1,93 @@
+#!/bin/sh
+# Every shipped scene parses and its --plan is minimal: approach-only figures
+# simulate no unloading, precontact ones stop at the jump, Figure 5's eight
+# turns share one loading branch, sweeps run in parallel on one kernel.
+. "$(dirname "$0")/../cli/lib.sh"
+
+plan() { # plan NAME [flags...]: the plan of a shipped scene into $TMP/NAME.plan
+    name=$1; shift
+    "$ADHERE" --plan "$name" "$@" >"$TMP/$name.plan" 2>"$TMP/$name.err"
+    rc=$?
+    check "adhere --plan $name $* exits 0 (got $rc: $(head -c 200 "$TMP/$name.err"))" [ "$rc" -eq 0 ]
+}
+has() { # has NAME "line" : the plan holds that exact line
+    check "$1 plan: $2" grep -qxF -- "$2" "$TMP/$1.plan"
+}
+has_re() { # has_re NAME regex
+    check "$1 plan matches /$2/" grep -qE -- "$2" "$TMP/$1.plan"
+}
+lacks_re() {
+    check "$1 plan has no /$2/" sh -c "! grep -qE -- '$2' '$TMP/$1.plan'"
+}
+
+for s in default fig1 fig2 fig3 fig4 fig5 fig6 fig7 fig8; do
+    plan $s
+    has_re $s "^scene: .*/scenes/$s\\.scene$"
+    n=$(grep -c '^loading branches: 1' "$TMP/$s.plan")
+    check "$s: exactly one loading branch line, of one branch ($n)" [ "$n" -eq 1 ]
+done
+
+# Figures 1-3: approach only.
+for s in fig1 fig2 fig3; do
+    has_re $s '^unloading branches: 0$'
+    has_re $s '^snapshots: 0$'
+    has_re $s '^skip: unloading: '
+done
+# Figures 2 and 3 end at the jump into contact.
+for s in fig2 fig3; do
+    has_re $s '^loading branches: 1.*ends at the jump into contact'
+    has_re $s '^skip: loading past contact: '
+    lacks_re $s 'turns\.tsv'
+done
+has_re fig1 '^loading branches: 1 \(from .* to -2 nm, [0-9]+ steps\)$'
+
+# Figure 5: one loading branch to the deepest turn, then eight unloadings.
+has_re fig5 '^loading branches: 1 \(from .* to -10 nm, [0-9]+ steps\)$'
+has fig5 'turning points: 8 (-10, -5, -2, -1, 0, 1, 1.5, 2 nm)'
+has_re fig5 '^snapshots: 8 '
+has_re fig5 '^unloading branches: 8 '
+has_re fig5 '^skip: reloading per turn: the 8 turns share one loading branch'
+has_re fig6 '^unloading branches: 9 '
+has_re fig6 '^kernel: paper, N = 1000, spacing 58\.09 nm'
+
+# Sweeps: independent runs, in parallel, one kernel.
+has fig3 'runs: 13'
+has_re fig3 '^parallel: [0-9]+ run'
+has_re fig3 '; 1 built, shared read-only by every run$'
+has_re fig3 '^stored: sweep\.tsv: '
+has_re fig3 '^stored: jump\.png: '
+has fig7 'runs: 3'
+has fig7 'sweep: eps = 1 pm, 500 fm, 100 fm (each an independent run)'
+has_re fig7 '^stored: force\.png: every run'
+has_re fig7 '^unloading branches: 1 per run'
+
+# Stored only where asked: profiles in fig4 only, contact speeds in fig8 and default.
+has_re fig4 '^stored: profiles\.tsv: u, h, p at 10 of the 10 positions asked'
+for s in fig1 fig2 fig3 fig5 fig6 fig7 fig8; do
+    has_re $s '^skip: profiles: no positions asked'
+done
+for s in fig1 fig2 fig3 fig4 fig5 fig6 fig7; do
+    has_re $s '^skip: contact-line speeds: '
+done
+has_re fig8 '^stored: contact\.png: '
+lacks_re fig8 'skip: contact-line speeds'
+
+# Rigid spheres: no kernel, no elastic solve.
+plan default --mode=rigid
+has default 'kernel: none (no elastic solve)'
+has_re default '^skip: elastic solve: mode = rigid'
+has_re default '^unloading branches: 0$'
+
+# Flags override the scene; a profile off the drive positions is reported.
+plan fig4 --turn=-3nm --profiles=1.02nm,2nm
+has fig4 'turning points: 1 (-3 nm)'
+has_re fig4 '^skip: profile at 1.02 nm: '
+has_re fig4 '^stored: profiles\.tsv: u, h, p at 1 of the 2 positions asked'
+plan fig2 --turn=-1nm
+has_re fig2 '^unloading branches: 1 '
+
+# --plan runs nothing and writes nothing.
+"$ADHERE" --plan fig4 -o "$TMP/noplan" >/dev/null 2>&1
+check "--plan writes no output directory" [ ! -e "$TMP/noplan" ]
+
+done_testing
