@@ -54,6 +54,26 @@ static const char *pad(const char *s, int w, char *buf, size_t len)
     return buf;
 }
 
+/* text word-wrapped into at most maxlines lines of w columns from (y, x). */
+static void put_wrapped(int y, int x, int w, int maxlines, attr_t attr, const char *text)
+{
+    const char *p = text;
+    for (int line = 0; line < maxlines && *p; line++) {
+        int len = (int)strlen(p), take = len;
+        if (len > w) {
+            take = w;
+            while (take > 0 && p[take] != ' ')
+                take--;
+            if (take == 0)
+                take = w;
+        }
+        put(y + line, x, w, attr, "%.*s", take, p);
+        p += take;
+        while (*p == ' ')
+            p++;
+    }
+}
+
 static const char *gk(const tui_view *v, const char *utf8, const char *ascii)
 {
     return v->utf8 ? utf8 : ascii;
@@ -153,6 +173,11 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
         put(y + 10, x, w, A_BOLD, "  ! %s", s->warn);
     else if (bad)
         put(y + 10, x, w, A_BOLD, "  ! %zu step%s on this path did not converge", bad, bad == 1 ? "" : "s");
+    else if (s->gridwarn[0]) {
+        char msg[600];
+        snprintf(msg, sizeof msg, "! %s", s->gridwarn);
+        put_wrapped(y + 10, x + 2, w - 2, 4, A_BOLD, msg);
+    }
 }
 
 /* The force-position curve so far, drawn with characters: '+' loading,

@@ -45,6 +45,23 @@ static void free_solver(tui_sim *s)
     s->hist = NULL;
 }
 
+/* The batch run's own check of grid and protocol, as advice before any
+ * solve: a newcomer who sets N = 100 learns the contact will not fit
+ * before stepping into it. Only n, dr and rmax of the grid are read. */
+static void check_grid(tui_sim *s)
+{
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.start = s->start;
+    ps.step = s->step;
+    ps.nturns = isnan(s->turn) ? 0 : 1;
+    ps.turns[0] = s->turn;
+    adh_grid g = { .n = s->nodes, .dr = tui_sim_spacing(s), .r = NULL };
+    g.rmax = (double)g.n * g.dr;
+    s->gridwarn[0] = '\0';
+    if (adh_protocol_check(&ps, &s->mat, &g, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
+        s->gridwarn[0] = '\0';
+}
+
 /* A change to the physics: the old path no longer belongs to these
  * parameters, so it is dropped and the next step starts at the start. */
 static void new_path(tui_sim *s)
@@ -63,6 +80,7 @@ static void new_path(tui_sim *s)
      * get here with a changed spacing, so they never rebuild it. */
     if (s->g && (s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s)))
         s->grid_stale = 1;
+    check_grid(s);
 }
 
 int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
@@ -205,6 +223,7 @@ static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen
             return -1;
         }
         s->turn = v;
+        check_grid(s);
         return 0;   /* where a run stops is not physics: the path stays */
     default:
         snprintf(why, whylen, "%s cannot be set", name);
@@ -360,8 +379,7 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
     s->warn[0] = '\0';
     if (!o.converged) {
         s->unconverged++;
-        snprintf(s->warn, sizeof s->warn, "not converged: %zu iterations (the cap) at h0 = %g nm, change %.3g m > eps",
-                 o.iters, o.h0 * 1e9, adh_relax_change(s->w));
+        snprintf(s->warn, sizeof s->warn, "not converged: the cap of %zu iterations was hit", o.iters);
     }
     if (o.a >= 0.9 * s->g->rmax) {
         s->busy = 0;

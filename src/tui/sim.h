@@ -60,6 +60,7 @@ typedef struct tui_sim {
     double t0;
     size_t unconverged;        /* steps on the path that hit the iteration cap */
     char warn[256];            /* about the last step; "" when fine */
+    char gridwarn[512];        /* why the grid may not hold the run to the turn; "" */
 } tui_sim;
 
 int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen);

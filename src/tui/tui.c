@@ -753,7 +753,13 @@ int adh_tui_main(const adh_config *cfg)
         tui_keysrc_free(&t.keys);
         return 1;
     }
-    say(&t, 0, "Welcome. f steps the spheres together, r runs to the turning point, ? lists every key.");
+    if (cfg->mode != ADH_MODE_RELAX)
+        say(&t, 0, "The screen relaxes step by step as the paper does; --mode=%s is for --batch. ? lists every key.",
+            cfg->mode == ADH_MODE_STATIC ? "static" : "rigid");
+    else if (cfg->title[0])
+        say(&t, 0, "%s. f steps in, r runs, ? lists every key.", cfg->title);
+    else
+        say(&t, 0, "Welcome. f steps the spheres together, r runs to the turning point, ? lists every key.");
     loop(&t);
     if (cfg->screen[0] && t.exit_code == 0) {
         draw(&t);

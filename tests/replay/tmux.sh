@@ -54,7 +54,7 @@ exit_status() {
 type_cmd() { T send-keys -t t ':'; T send-keys -t t -l "$1"; T send-keys -t t Enter; }
 
 start
-check "the TUI opens in a terminal" wait_for "Welcome. f steps the spheres together"
+check "the TUI opens in a terminal" wait_for "? lists every key"
 type_cmd "set N 100"
 type_cmd "set spacing 10nm"
 type_cmd "set eps 10pm"
@@ -97,14 +97,14 @@ check "q quits with status 0" [ "$(exit_status)" = 0 ]
 check "the terminal is restored (the TUI is gone from the screen)" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
 
 start
-wait_for "Welcome." >/dev/null
+wait_for "? lists every key" >/dev/null
 T send-keys -t t C-c
 check "C-c (SIGINT) ends it with status 130" [ "$(exit_status)" = 130 ]
 check "and the terminal is restored" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
 check "and it says why on stderr" grep -q "stopped by signal 2" "$work/stderr"
 
 start
-wait_for "Welcome." >/dev/null
+wait_for "? lists every key" >/dev/null
 T send-keys -t t r
 wait_for "running to the turn" >/dev/null
 # the pane runs sh, whose child is adhere
