@@ -132,6 +132,11 @@ check "a bad :set value names FILE:LINE, the value and what is wanted" \
     grep -q "^bad-set.keys:3: E: '5nm' is a length (m, nm, um, ...), but a pressure" "$W/bad-set/stderr"
 check "an unknown :set name lists the names" grep -q "^bad-name.keys:1: unknown parameter 'sigma'.*E A z0 R eps d N spacing turn" "$W/bad-name/stderr"
 
+check "a grid too short for the turn is flagged before any solve" \
+    sh -c "grep -q '! grid radius Rmax = 1.5e-07 m is too short' '$W/grid-warn/grid-warn.screen' && grep -q 'use' '$W/grid-warn/grid-warn.screen' && grep -q 'path   0 states' '$W/grid-warn/grid-warn.screen'"
+check "an unwritable :dump names FILE:LINE and the file" \
+    grep -q "^bad-dump.keys:2: cannot write the screen to no-such-dir/screen.txt: No such file" "$W/bad-dump/stderr"
+
 # Determinism, and independence from the caller's terminal settings.
 run_case steps "$work/again"
 check "the same script gives the same screen" same_file "$S/steps.screen" "$work/again/steps.screen"
