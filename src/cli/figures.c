@@ -271,7 +271,7 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
         double h = adh_sweep_gap_before_jump(&runs[i]);
         smin = fmin(smin, d.sigma), smax = fmax(smax, d.sigma);
         if (isfinite(h))
-            fprintf(f, "%.17g\t%.17g\t%.17g\n", d.sigma, h, d.h_star);
+            fprintf(f, "%.17g\t%.17g\t%.17g\t%d\n", d.sigma, h, d.h_star, adh_sweep_jumped(&runs[i], rc.proto.step));
     }
     /* eq 24 as a curve of sigma: h* = (3 A sqrt(2R) / 8E)^(2/7), E from eq 17 */
     fprintf(f, "\n\n");
@@ -290,7 +290,9 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     adh_gnuplot_cmd(fg->gp, "set xlabel \"adhesion–elasticity parameter σ (eq 17)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"gap before the jump h (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set key top left");
-    adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($2*1e9) with points pt 7 ps 1.2 lc rgb \"#c0392b\" title \"computed\", "
+    /* filled: a jump; open: contact came gradually, the last gap before it (as the paper) */
+    adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($4 == 1 ? $2*1e9 : NaN) with points pt 7 ps 1.2 lc rgb \"#c0392b\" title \"jump (computed)\", "
+                    "'' index 0 using 1:($4 == 1 ? NaN : $2*1e9) with points pt 6 ps 1.2 lc rgb \"#c0392b\" title \"last gap before contact, no jump\", "
                     "'' index 1 using 1:($2*1e9) with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 24\"",
                     quoted(dat, q, sizeof q));
     return fig_end(fg, "jump.png", tmp_png);

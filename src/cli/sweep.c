@@ -89,15 +89,30 @@ double adh_sweep_gap_before_jump(const adh_run *run)
     return NAN;
 }
 
+int adh_sweep_jumped(const adh_run *run, double step)
+{
+    long prev = -1;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        if (o->path != 0)
+            continue;
+        if (o->a > 0)
+            return prev >= 0 && run->rows[prev].hc - o->hc > 2.0 * step ? 1 : 0;
+        prev = (long)i;
+    }
+    return -1;
+}
+
 int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const int *status)
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
     fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (run-K/ holds its tables), SI units (m, N, Pa, s)\n");
     if (cfg->scene[0])
         fprintf(f, "# scene: %s\n", cfg->scene);
-    fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n");
+    fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n"
+               "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n");
     fprintf(f, "# swept: the parameter the sweep varies (%s), value: its value in this run\n", name);
-    fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tstatus\n");
+    fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tjumped\tstatus\n");
     for (size_t i = 0; i < cfg->sweep.n; i++) {
         adh_config rc;
         adh_config_sweep_run(cfg, i, &rc);
@@ -105,10 +120,10 @@ int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, c
         adh_material_derive(&rc.mat, &d);
         const adh_run *r = &runs[i];
         const adh_turn_result *mt = adh_run_main_turn(r);
-        fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%s\n",
+        fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%d\t%s\n",
                 i + 1, name, cfg->sweep.values[i], rc.mat.E, d.sigma, rc.relax.eps, r->jump_in_h0,
                 adh_sweep_gap_before_jump(r), d.h_star, mt ? mt->max_load : NAN, mt ? mt->pulloff_F : NAN,
-                mt ? mt->jump_out_h0 : NAN, r->nrows, r->iterations, r->seconds,
+                mt ? mt->jump_out_h0 : NAN, r->nrows, r->iterations, r->seconds, adh_sweep_jumped(r, rc.proto.step),
                 r->interrupted ? "interrupted" : adh_strerror(status[i]));
     }
     return 0;

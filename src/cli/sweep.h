@@ -19,6 +19,12 @@ int adh_sweep_main(const adh_cli *cli);
  * loading branch never reached contact or began in it. */
 double adh_sweep_gap_before_jump(const adh_run *run);
 
+/* Whether the surfaces jumped: 1 when the central gap fell by more than
+ * two drive steps on the step into contact (an elastic instability), 0 when
+ * the contact came gradually (hard spheres: no jump can be identified, the
+ * paper's open symbols in Figure 3), -1 when there was no contact. */
+int adh_sweep_jumped(const adh_run *run, double step);
+
 /* sweep.tsv: one row per run. runs[i] is run i of cfg's sweep. */
 int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const int *status);
 

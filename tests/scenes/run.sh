@@ -62,10 +62,11 @@ done
 check "fig3 runs draw no figure of their own (plots = none)" sh -c "! ls '$d'/run-*/*.png >/dev/null 2>&1"
 check "fig3 wrote jump.png" [ -s "$d/jump.png" ]
 header=$(grep -v '^#' "$d/sweep.tsv" | head -1)
-for col in value sigma jump_in_h0 h_before h_star pulloff_F iterations seconds; do
+for col in value sigma jump_in_h0 h_before h_star pulloff_F iterations seconds jumped; do
     check "sweep.tsv has column $col" sh -c "printf '%s\n' '$header' | tr '\t' '\n' | grep -qx '$col'"
 done
 check "fig3: for sigma >= 1 the jump gap is within 25% of eq 24" sh -c "grep -v '^#' '$d/sweep.tsv' | awk -F'\t' 'NR > 1 && \$5 >= 1 {n++; r = \$8 / \$9; if (r < 0.75 || r > 1.25) bad = 1} END {exit bad || n < 5}'"
+check "fig3: soft spheres jump, the hardest come into contact gradually" sh -c "grep -v '^#' '$d/sweep.tsv' | awk -F'\t' 'NR > 1 && \$5 >= 1 && \$16 != 1 {bad = 1} NR == 2 && \$16 != 0 {bad = 1} END {exit bad}'"
 check "fig3: the jump gap grows with sigma" sh -c "grep -v '^#' '$d/sweep.tsv' | awk -F'\t' 'NR > 1 && \$5 >= 0.3 {if (\$8 <= prev) bad = 1; prev = \$8} END {exit bad}'"
 check "fig3: each run's sigma is the one it names" sh -c "grep -v '^#' '$d/sweep.tsv' | awk -F'\t' 'NR > 1 {r = \$5 / \$3; if (r < 0.999999 || r > 1.000001) bad = 1} END {exit bad}'"
 
