@@ -356,8 +356,10 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
         else
             snprintf(label, sizeof label, "%s = %g", adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i]);
         /* light to heavy, as the paper's eps = 1, 0.5, 0.1 pm */
-        fprintf(c, ", %s index %zu using ($1*1e9):($2*%.17g) with lines lw %.2g title \"%s\"",
-                quoted(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1), label);
+        static const char *const colors[] = { "#8fb8de", "#4a7fc1", "#1f3f8f", "#c0392b", "#e67e22", "#27ae60", "#8e44ad" };
+        fprintf(c, ", %s index %zu using ($1*1e9):($2*%.17g) with lines lw %.2g lc rgb \"%s\" title \"%s\"",
+                quoted(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1),
+                colors[i % (sizeof colors / sizeof colors[0])], label);
     }
     if (same_material && amax > 0)
         fprintf(c, ", %s using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" title \"JKR\"",
