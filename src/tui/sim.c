@@ -297,7 +297,7 @@ static void move_to(tui_sim *s, double h0)
     s->t0 = now();
 }
 
-int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
+int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen)
 {
     if (s->busy) {
         snprintf(why, whylen, "a step is already being solved");
@@ -316,10 +316,28 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
         s->busy = 1;
         return 0;
     }
-    /* Positions are start - k d, never accumulated, so they stay on the
-     * batch run's positions however the path went back and forth. */
-    double k = round((s->start - cur->h0) / s->step) + dir;
-    double h0 = s->start - k * s->step;
+    /* Positions are never accumulated: loading goes to start - k d and
+     * unloading to turn + k d, the turn being the last loading position
+     * before this unloading branch. Those are --batch's positions to the
+     * last bit, so the same script gives the batch run's numbers. */
+    double h0;
+    if (dir > 0) {
+        double k = round((s->start - cur->h0) / s->step) + (stay ? 0 : 1);
+        h0 = s->start - k * s->step;
+        /* the turning point itself, exactly, as --batch hits it */
+        double tol = 1e-6 * s->step;
+        if (!isnan(s->turn) && cur->h0 > s->turn + tol && h0 <= s->turn + tol)
+            h0 = s->turn;
+    } else {
+        size_t n = adh_history_length(s->hist);
+        const adh_obs *rows = adh_history_rows(s->hist);
+        size_t i = n - 1;
+        while (i > 0 && rows[i].branch < 0)
+            i--;
+        double turn = rows[i].h0;
+        double k = round((cur->h0 - turn) / s->step) + (stay ? 0 : 1);
+        h0 = turn + k * s->step;
+    }
     if (fabs(h0) > 0.01 * s->mat.R) {
         snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/100 = %g m",
                  h0, 0.01 * s->mat.R);

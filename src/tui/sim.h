@@ -80,8 +80,10 @@ int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whyl
 
 /* Starts a drive step in direction dir (+1 approach, -1 retract). Builds the
  * grid and kernel first if needed (which can take a second at large N).
- * 0, or -1 with why. */
-int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen);
+ * With stay, the drive does not move: the state is relaxed again where it
+ * is, as the first row of a new branch (how --batch begins unloading at a
+ * turn). 0, or -1 with why. */
+int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen);
 /* Up to batch iterations of the step in progress. ADH_CONTINUE while not
  * done; ADH_SUCCESS when the step is done and on the history (a step that
  * hit the iteration cap is done too, with s->warn saying so); an error code

@@ -131,7 +131,7 @@ static void stop_all(tui *t)
     t->waiting = 0;
 }
 
-static void start_step(tui *t, int dir)
+static void start_step(tui *t, int dir, int stay)
 {
     char why[512];
     if (!t->sim.w && !t->headless) {
@@ -140,7 +140,7 @@ static void start_step(tui *t, int dir)
         say(t, 0, "building the kernel for N = %zu nodes...", t->sim.nodes);
         draw(t);
     }
-    if (tui_sim_begin(&t->sim, dir, why, sizeof why) != 0) {
+    if (tui_sim_begin(&t->sim, dir, stay, why, sizeof why) != 0) {
         stop_all(t);
         say(t, 1, "%s", why);
     }
@@ -207,7 +207,7 @@ static void after_step(tui *t, int rc, const char *why)
     describe_step(t);
     if (t->pending > 0) {
         t->pending--;
-        start_step(t, t->pending_dir);
+        start_step(t, t->pending_dir, 0);
     } else if (t->run_dir && run_done(t)) {
         stop_all(t);
     }
@@ -453,7 +453,7 @@ static void handle_key(tui *t, int key)
         t->pending_dir = a == ACT_FORWARD ? +1 : -1;
         t->pending_key = key;
         t->run_dir = 0;
-        start_step(t, t->pending_dir);
+        start_step(t, t->pending_dir, 0);
         break;
     case ACT_RUN: {
         const adh_obs *o = tui_sim_row(&t->sim);
@@ -464,7 +464,10 @@ static void handle_key(tui *t, int key)
         t->run_touched = o && o->a > 0;
         say(t, 0, "%s", unload ? "unloading until pull-off; any key pauses"
                                 : "loading to the turning point; any key pauses");
-        start_step(t, t->run_dir);
+        /* Unloading from the loading branch begins, as in --batch, by
+         * relaxing again at the turn as the branch's first row: the same
+         * script then gives the batch run's rows. */
+        start_step(t, t->run_dir, unload && o->branch > 0);
         break;
     }
     case ACT_UNDO: move_history(t, 0, n); break;
@@ -583,7 +586,7 @@ static void run_next(tui *t)
                 return;
         }
     }
-    start_step(t, t->run_dir);
+    start_step(t, t->run_dir, 0);
 }
 
 static void progress(tui *t)

@@ -108,6 +108,31 @@ C=$W/contact
 check "r stops at the turning point, in contact" sh -c "grep -q 'at the turning point h0 = -2 nm' '$C/contact-turn.txt' && grep 'contact radius' '$C/contact-turn.txt' | grep -vq 'not in'"
 check "r again unloads until pull-off, out of contact" sh -c "grep -q 'pulled off at h0' '$C/contact.screen' && grep -q 'not in contact' '$C/contact.screen'"
 check "the preview shows both branches" sh -c "grep -q 'o' '$C/contact.screen' && sed -n '16,30p' '$C/contact.screen' | grep -q '+'"
+# The screen and --batch drive the same core with the same positions: the
+# same settings must give the same rows (iterations exactly, F to 4 digits).
+B=$work/batch
+"$bin" --batch --nodes=100 --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm --no-plot -o "$B" \
+    </dev/null >/dev/null 2>"$work/batch.err"
+# col NAME: the column of force.tsv named NAME in its header
+col() { awk -F'\t' -v name="$1" '/^#/ { next } { for (i = 1; i <= NF; i++) if ($i == name) print i; exit }' "$B/force.tsv"; }
+if [ -s "$B/force.tsv" ]; then
+    ch0=$(col h0) cF=$(col F) cit=$(col iters) cbr=$(col branch)
+    turn=$(awk -F'\t' -v h="$ch0" -v b="$cbr" '/^#/ || $h == "h0" { next } $b + 0 > 0 && $h + 0 <= -1.999e-9 { print; exit }' "$B/force.tsv")
+    last=$(grep -v '^#' "$B/force.tsv" | tail -1)
+    nrows=$(grep -v '^#' "$B/force.tsv" | tail -n +2 | wc -l)
+    fmtF() { echo "$1" | awk -F'\t' -v c="$cF" '{ printf "%.4g nN", $c * 1e9 }'; }
+    field() { echo "$1" | cut -f"$2"; }
+    check "at the turn the screen has --batch's iterations ($(field "$turn" "$cit"))" \
+        grep -q "step   $(field "$turn" "$cit") iterations" "$C/contact-turn.txt"
+    check "at the turn the screen has --batch's force ($(fmtF "$turn"))" grep -q "F      $(fmtF "$turn") " "$C/contact-turn.txt"
+    check "at pull-off the screen has --batch's iterations ($(field "$last" "$cit"))" \
+        grep -q "step   $(field "$last" "$cit") iterations" "$C/contact.screen"
+    check "at pull-off the screen has --batch's force ($(fmtF "$last"))" grep -q "F      $(fmtF "$last") " "$C/contact.screen"
+    check "and as many states as --batch has rows ($nrows)" grep -q "path   $nrows states" "$C/contact.screen"
+else
+    fail "--batch with the contact case's settings wrote no force.tsv: $(head -c 300 "$work/batch.err")"
+fi
+
 U=$W/undo
 check "undo gives back the earlier state's numbers exactly" [ "$(state "$U/undo-back.txt")" = "$(state "$U/undo-32.txt")" ]
 check "redo gives back the later state's numbers exactly" [ "$(state "$U/undo-redo.txt")" = "$(state "$U/undo-33.txt")" ]
