@@ -41,6 +41,10 @@ size_t adh_history_redoable(const adh_history *h);
 const adh_state *adh_history_state(const adh_history *h);
 const adh_obs *adh_history_row(const adh_history *h);
 
+/* The snapshot of entry i of the path so far (0 the oldest); NULL when i is
+ * not on the path. Borrowed, like adh_history_state(). */
+const adh_state *adh_history_state_at(const adh_history *h, size_t i);
+
 /* The rows of the path so far, oldest first, adh_history_length() of them
  * (borrowed; valid until the next push or free). */
 const adh_obs *adh_history_rows(const adh_history *h);

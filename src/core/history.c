@@ -109,6 +109,11 @@ const adh_state *adh_history_state(const adh_history *h)
     return h->len ? h->snaps[h->len - 1] : NULL;
 }
 
+const adh_state *adh_history_state_at(const adh_history *h, size_t i)
+{
+    return i < h->len ? h->snaps[i] : NULL;
+}
+
 const adh_obs *adh_history_row(const adh_history *h)
 {
     return h->len ? &h->rows[h->len - 1] : NULL;

@@ -53,6 +53,9 @@ int main(void)
     ok(same_state(adh_history_state(h), ref[2]), "undo restores the third state bit for bit");
     ok(adh_history_row(h)->iters == 102 && adh_history_row(h)->F == -2e-9, "and its row");
 
+    ok(same_state(adh_history_state_at(h, 0), ref[0]) && same_state(adh_history_state_at(h, 2), ref[2]),
+       "state_at gives the states on the path");
+    ok(adh_history_state_at(h, 3) == NULL, "state_at past the cursor is NULL (it is redoable, not on the path)");
     ok(adh_history_redo(h) == ADH_SUCCESS, "redo");
     ok(same_state(adh_history_state(h), ref[3]), "redo restores the fourth state bit for bit");
     ok(adh_history_redo(h) == ADH_SUCCESS && adh_history_redo(h) == ADH_EINVAL,
