@@ -102,5 +102,33 @@ int main(void)
         adh_replay_free(&s);
     }
     ok(keys_ok, "key names round-trip through the parser");
+
+    /* Random scripts from the tokens' alphabet: every parse must either
+     * succeed with keys on real lines or fail naming a line that exists. */
+    static const char alphabet[] = "fbru:<>#\n \tset E1GPa:dump :wait :resize 80x24 <Enter><C-r><F1>\x01\xc3";
+    unsigned seed = 12345;
+    int fuzz_ok = 1;
+    char buf[200];
+    for (int round = 0; round < 20000 && fuzz_ok; round++) {
+        size_t len = (size_t)(round % 199);
+        int lines = 1;
+        for (size_t i = 0; i < len; i++) {
+            seed = seed * 1103515245u + 12345u;
+            buf[i] = alphabet[(seed >> 16) % (sizeof alphabet - 1)];
+            lines += buf[i] == '\n';
+        }
+        int rc = adh_replay_parse(buf, len, &s, &line, err, sizeof err);
+        if (rc == 0) {
+            for (size_t i = 0; i < s.n; i++)
+                if (s.items[i].line < 1 || s.items[i].line > lines)
+                    fuzz_ok = 0;
+        } else if (rc != -1 || line < 1 || line > lines || err[0] == '\0' || s.n != 0) {
+            fuzz_ok = 0;
+        }
+        if (!fuzz_ok)
+            printf("#   round %d: rc %d line %d of %d: %s\n", round, rc, line, lines, err);
+        adh_replay_free(&s);
+    }
+    ok(fuzz_ok, "20000 random scripts parse or fail on a real line, never crash");
     return tap_done();
 }
