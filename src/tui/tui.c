@@ -469,7 +469,8 @@ static void move_history(tui *t, int redo, long n)
     const adh_obs *o = tui_sim_row(&t->sim);
     char h0[64];
     if (!done) {
-        say(t, 1, "nothing to %s", redo ? "redo" : "undo: this is the first state of the path");
+        say(t, 1, "nothing to %s", redo ? "redo" : o ? "undo: this is the first state of the path"
+                                                     : "undo: no step taken yet");
         return;
     }
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
@@ -544,8 +545,8 @@ static void handle_key(tui *t, int key)
         say(t, 0, "reset: the path is forgotten; the next step starts at h0 = %s", st);
         break;
     }
-    case ACT_SELECT_UP: t->view.sel = (t->view.sel + P_COUNT - 1) % P_COUNT; break;
-    case ACT_SELECT_DOWN: t->view.sel = (t->view.sel + 1) % P_COUNT; break;
+    case ACT_SELECT_UP: t->view.sel = (int)((t->view.sel + P_COUNT - n % P_COUNT) % P_COUNT); break;
+    case ACT_SELECT_DOWN: t->view.sel = (int)((t->view.sel + n) % P_COUNT); break;
     case ACT_EDIT:
     case ACT_COMMAND:
         t->editing = a == ACT_EDIT ? EDIT_PARAM : EDIT_COMMAND;
