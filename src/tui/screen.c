@@ -332,7 +332,7 @@ int tui_draw_help(const tui_view *v)
         adh_replay_key_name(b->key, name, sizeof name);
         n = help_entry(lines, n, MAX, W, name, b->what);
     }
-    n = help_entry(lines, n, MAX, W, "1-9", "digits before f, b, u, U, + or - make a count: 10f steps ten times");
+    n = help_entry(lines, n, MAX, W, "1-9", "digits make a count for the next key: 10f steps ten times, 3j moves down three");
     if (n < MAX)
         snprintf(lines[n++], 256, " ");
     n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn; "
