@@ -64,6 +64,7 @@ typedef struct adh_static_result {
     size_t rejected;       /* rejected step attempts */
     size_t newton_iterations;
     size_t factorizations; /* dense LU factorizations */
+    size_t krylov_iterations; /* GMRES iterations (one product with W each) */
     double seconds;        /* wall time of the solves */
 } adh_static_result;
 

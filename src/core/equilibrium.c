@@ -1,0 +1,889 @@
+#include "adhere/equilibrium.h"
+
+#include <gsl/gsl_cblas.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_permutation.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "adhere/law.h"
+#include "adhere/observe.h"
+#include "adhere/status.h"
+
+/* Notation. x = (u, h0); the metric is |x|^2 = (theta sum u_n^2 + h0^2) / z0^2
+ * (theta = u_weight), so tangents and arclength s are dimensionless / in z0.
+ * S = {0 .. m-1} is the active prefix: nodes where p'(h) matters. With
+ * U = (2/E) W[:,S] diag(p'_S), the truncated Jacobian is J = I - U E_S^T, and
+ * the bordered Newton system
+ *     J du + g dh0 = -G,   theta n_u.du + n_h dh0 = rhs      (g = dG/dh0)
+ * reduces exactly (unit pivots eliminated) to (m+1) unknowns z = du_S, dh0:
+ *     (I - U_S) z + g_S dh0                         = -G_S
+ *     theta (U^T n_u).z + (n_h - theta n_u.g) dh0   = rhs + theta n_u.G
+ * after which du = -G - g dh0 + U z. Its determinant is that of the full
+ * bordered matrix, and by Cramer det J = det B * t_h / rhs for the tangent
+ * solve (G = 0): so det J's sign costs nothing beyond the tangent. */
+
+#define ADH_GMRES_MAX 40   /* Krylov dimension before the LU is refreshed */
+
+typedef struct lin {
+    double *B;       /* LU of the (m+1)^2 bordered matrix */
+    size_t *perm;
+    int signum;
+    int det_sign;    /* sign of det B */
+    size_t m;        /* active prefix */
+    double *D;       /* p'(h) at the linearization point, all N nodes */
+    double *g;       /* dG/dh0 = (2/E) W p', all N nodes */
+    double *nu;      /* constraint normal, u part (metric-unit vector with nh) */
+    double nh;
+} lin;
+
+struct adh_static {
+    const adh_grid *grid;
+    const adh_kernel *k;
+    size_t n;
+    double *W;        /* dense W, row-major N x N (out = W p) */
+    double *colnorm;  /* sum_n |W_nj| */
+    double *shape;    /* r^2 / 2R */
+    adh_material m;
+    adh_static_settings s;
+    double c2E;       /* 2/E */
+
+    adh_state *st;    /* the current accepted point */
+    adh_state *trial; /* the point being corrected */
+    double *tau_u, tau_h;          /* unit tangent at st */
+    double *tau_u_new, tau_h_new;  /* tangent at trial */
+    lin L[3];         /* L[cur]: at st with normal = previous tangent; others scratch */
+    int cur;
+
+    double *G, *du, *y, *t, *t2, *upred, *scratch, *rG, *bG, *dx, *Dc, *gc, *zero, *gz, *V;
+    double act;       /* active-set threshold in use (lowered when the
+                         preconditioned solve stops contracting) */
+    double ds;
+    double s_arc;
+    int det_b_sign;   /* invariant along the curve (see above) */
+    int stable;
+    double F, dFds;   /* force and its arclength derivative at st */
+    size_t newton_point;
+    double residual;
+    int done;
+
+    adh_static_fold *folds;
+    size_t nfolds_kept;
+    adh_static_result res;
+};
+
+adh_static_settings adh_static_settings_default(void)
+{
+    adh_static_settings s = {
+        .tol = 1e-9,
+        .ds_init = 0.1,
+        .ds_min = 1e-7,
+        .ds_max = 5.0,
+        .u_weight = 1.0,
+        .max_angle = 0.4,
+        .active_tol = 1e-2,
+        .h0_start = NAN,
+        .h0_end = -5e-9,
+        .max_points = 200000,
+        .max_newton = 12,
+    };
+    return s;
+}
+
+int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t whylen)
+{
+#define BAD(...) do { if (why) snprintf(why, whylen, __VA_ARGS__); return ADH_EINVAL; } while (0)
+    if (!(s->tol > 0 && s->tol < 1e-3))
+        BAD("static tolerance %g is not allowed: it must be above 0 and below 1e-3 (units of z0)", s->tol);
+    if (!(s->ds_min > 0 && s->ds_min <= s->ds_init && s->ds_init <= s->ds_max && s->ds_max < 1e3))
+        BAD("arclength steps must satisfy 0 < ds_min (%g) <= ds_init (%g) <= ds_max (%g) < 1000", s->ds_min,
+            s->ds_init, s->ds_max);
+    if (!(s->u_weight > 0 && isfinite(s->u_weight)))
+        BAD("u_weight %g is not allowed: it must be finite and above 0", s->u_weight);
+    if (!(s->max_angle > 0 && s->max_angle < 1.5))
+        BAD("max_angle %g rad is not allowed: it must be above 0 and below 1.5", s->max_angle);
+    if (!(s->active_tol >= 0 && s->active_tol < 0.1))
+        BAD("active_tol %g is not allowed: it must be from 0 to 0.1", s->active_tol);
+    if (!isnan(s->h0_start) && !(isfinite(s->h0_start) && s->h0_start > s->h0_end))
+        BAD("static start %g m must be finite and above the end %g m", s->h0_start, s->h0_end);
+    if (!isfinite(s->h0_end))
+        BAD("static end position must be finite");
+    if (s->max_points < 2 || s->max_newton < 2)
+        BAD("max_points (%zu) and max_newton (%zu) must be at least 2", s->max_points, s->max_newton);
+    return ADH_SUCCESS;
+#undef BAD
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void lin_free(lin *L)
+{
+    free(L->B);
+    free(L->perm);
+    free(L->D);
+}
+
+static int lin_alloc(lin *L, size_t n)
+{
+    L->B = malloc((n + 1) * (n + 1) * sizeof *L->B);
+    L->perm = malloc((n + 1) * sizeof *L->perm);
+    L->D = malloc(3 * n * sizeof *L->D);
+    if (!L->B || !L->perm || !L->D)
+        return ADH_ENOMEM;
+    L->g = L->D + n;
+    L->nu = L->D + 2 * n;
+    return ADH_SUCCESS;
+}
+
+void adh_static_free(adh_static *w)
+{
+    if (!w)
+        return;
+    free(w->W);
+    free(w->colnorm);
+    adh_state_free(w->st);
+    adh_state_free(w->trial);
+    for (int i = 0; i < 3; i++)
+        lin_free(&w->L[i]);
+    free(w->G);
+    free(w->folds);
+    free(w);
+}
+
+adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
+{
+    adh_static *w = calloc(1, sizeof *w);
+    if (!w)
+        return NULL;
+    size_t n = g->n;
+    w->grid = g;
+    w->k = k;
+    w->n = n;
+    w->W = malloc(n * n * sizeof *w->W);
+    w->colnorm = calloc(2 * n, sizeof *w->colnorm);
+    w->st = adh_state_alloc(n);
+    w->trial = adh_state_alloc(n);
+    /* G, du, y, t, t2, upred, scratch, tau_u, tau_u_new, rG, bG, dx, Dc, gc,
+     * zero, gz: n + 1 each; the GMRES basis */
+    w->G = calloc(16 * (n + 1) + (ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
+    w->folds = malloc(ADH_STATIC_MAX_FOLDS * sizeof *w->folds);
+    int bad = !w->W || !w->colnorm || !w->st || !w->trial || !w->G || !w->folds;
+    for (int i = 0; i < 3 && !bad; i++)
+        bad = lin_alloc(&w->L[i], n) != ADH_SUCCESS;
+    if (bad) {
+        adh_static_free(w);
+        return NULL;
+    }
+    w->shape = w->colnorm + n;
+    double **bufs[] = { &w->G, &w->du, &w->y, &w->t, &w->t2, &w->upred, &w->scratch, &w->tau_u,
+                        &w->tau_u_new, &w->rG, &w->bG, &w->dx, &w->Dc, &w->gc, &w->zero, &w->gz };
+    for (size_t i = 1; i < sizeof bufs / sizeof *bufs; i++)
+        *bufs[i] = w->G + i * (n + 1);
+    w->V = w->G + 16 * (n + 1);
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < n; j++) {
+            double v = adh_kernel_entry(k, i, j);
+            w->W[i * n + j] = v;
+            w->colnorm[j] += fabs(v);
+        }
+    return w;
+}
+
+/* h and p from u and h0; G = u + (2/E) W p into w->G. Returns max |G| (m),
+ * or -1 when a gap closed or a value stopped being finite. */
+static double evaluate(adh_static *w, adh_state *x)
+{
+    size_t n = w->n;
+    for (size_t i = 0; i < n; i++) {
+        x->h[i] = x->h0 + w->shape[i] - x->u[i];
+        if (!(x->h[i] > 0))
+            return -1;
+        x->p[i] = adh_lj_pressure(x->h[i], w->m.A, w->m.z0);
+    }
+    adh_kernel_apply(w->k, x->p, w->G, w->scratch);
+    double r = 0;
+    for (size_t i = 0; i < n; i++) {
+        w->G[i] = x->u[i] + w->c2E * w->G[i];
+        r = fmax(r, fabs(w->G[i]));
+    }
+    return isfinite(r) ? r : -1;
+}
+
+/* Linearizes at x (h must be current) with constraint normal (nu, nh), and
+ * factorizes the reduced bordered matrix. */
+static int linearize(adh_static *w, const adh_state *x, const double *nu, double nh, lin *L)
+{
+    size_t n = w->n, m = 0;
+    double c2E = w->c2E, th = w->s.u_weight;
+    for (size_t j = 0; j < n; j++) {
+        L->D[j] = adh_lj_dpressure(x->h[j], w->m.A, w->m.z0);
+        if (c2E * fabs(L->D[j]) * w->colnorm[j] > w->act)
+            m = j + 1;
+    }
+    adh_kernel_apply(w->k, L->D, L->g, w->scratch);
+    double ng = 0;
+    for (size_t i = 0; i < n; i++) {
+        L->g[i] *= c2E;
+        L->nu[i] = nu[i];
+        ng += nu[i] * L->g[i];
+    }
+    L->nh = nh;
+    L->m = m;
+    size_t ld = m + 1;
+    double *B = L->B, *q = w->scratch;
+    if (m > 0)
+        cblas_dgemv(CblasRowMajor, CblasTrans, (int)n, (int)m, c2E, w->W, (int)n, nu, 1, 0.0, q, 1);
+    for (size_t i = 0; i < m; i++) {
+        const double *row = w->W + i * n;
+        double *Bi = B + i * ld;
+        for (size_t j = 0; j < m; j++)
+            Bi[j] = -c2E * row[j] * L->D[j];
+        Bi[i] += 1.0;
+        Bi[m] = L->g[i];
+    }
+    for (size_t j = 0; j < m; j++)
+        B[m * ld + j] = th * q[j] * L->D[j];
+    B[m * ld + m] = nh - th * ng;
+    gsl_matrix_view V = gsl_matrix_view_array(B, ld, ld);
+    gsl_permutation P = { ld, L->perm };
+    if (gsl_linalg_LU_decomp(&V.matrix, &P, &L->signum) != 0)
+        return ADH_ENAN;
+    int sg = L->signum;
+    for (size_t i = 0; i < ld; i++) {
+        double d = B[i * ld + i];
+        if (d == 0 || !isfinite(d))
+            return ADH_ESTALL; /* exactly singular: not a simple fold */
+        if (d < 0)
+            sg = -sg;
+    }
+    L->det_sign = sg;
+    return ADH_SUCCESS;
+}
+
+/* P^-1: solves the truncated bordered system of L,
+ *     P [du; dh0] = [bG; bc],   P = [[I - U E_S^T, g], [theta nu^T, nh]],
+ * through its (m+1)^2 LU (metres in, metres out). */
+static void precond(adh_static *w, const lin *L, const double *bG, double bc, double *du, double *dh0)
+{
+    size_t n = w->n, m = L->m, ld = m + 1;
+    double th = w->s.u_weight;
+    double *y = w->y;
+    double nb = 0;
+    for (size_t i = 0; i < n; i++)
+        nb += L->nu[i] * bG[i];
+    for (size_t i = 0; i < m; i++)
+        y[i] = bG[i];
+    y[m] = bc - th * nb;
+    gsl_matrix_const_view V = gsl_matrix_const_view_array(L->B, ld, ld);
+    gsl_permutation P = { ld, L->perm };
+    gsl_vector_view Y = gsl_vector_view_array(y, ld);
+    gsl_linalg_LU_svx(&V.matrix, &P, &Y.vector);
+    double dh = y[m];
+    for (size_t j = 0; j < m; j++)
+        w->t[j] = L->D[j] * y[j];
+    if (m > 0)
+        cblas_dgemv(CblasRowMajor, CblasNoTrans, (int)n, (int)m, w->c2E, w->W, (int)n, w->t, 1, 0.0, du, 1);
+    else
+        memset(du, 0, n * sizeof *du);
+    for (size_t i = 0; i < n; i++)
+        du[i] += bG[i] - L->g[i] * dh;
+    *dh0 = dh;
+}
+
+/* The whole bordered operator at one point: J = I - (2/E) W diag(D). */
+typedef struct op {
+    const double *D, *g, *nu;
+    double nh;
+} op;
+
+static void op_apply(adh_static *w, const op *A, const double *du, double dh, double *oG, double *oc)
+{
+    size_t n = w->n;
+    double nd = 0;
+    for (size_t i = 0; i < n; i++)
+        w->t2[i] = A->D[i] * du[i];
+    adh_kernel_apply(w->k, w->t2, oG, w->scratch);
+    for (size_t i = 0; i < n; i++) {
+        oG[i] = du[i] - w->c2E * oG[i] + A->g[i] * dh;
+        nd += A->nu[i] * du[i];
+    }
+    *oc = w->s.u_weight * nd + A->nh * dh;
+}
+
+/* A [du; dh] = [bG; bc] by GMRES, right-preconditioned with the LU of L
+ * (the truncated system, possibly factorized at a nearby point): each
+ * iteration costs one product with W and one triangular solve, against m^3
+ * for a new LU. The unknowns and right side are packed as n + 1 numbers
+ * (du, dh0). ADH_CONTINUE when ADH_GMRES_MAX iterations do not reach rtol:
+ * L is then too far from A. */
+static int solve(adh_static *w, const op *A, const lin *L, const double *b, double rtol, double *x)
+{
+    size_t n = w->n, n1 = n + 1;
+    const int km = ADH_GMRES_MAX;
+    double *V = w->V;
+    double H[(ADH_GMRES_MAX + 1) * ADH_GMRES_MAX], cs[ADH_GMRES_MAX], sn[ADH_GMRES_MAX];
+    double gv[ADH_GMRES_MAX + 1], yv[ADH_GMRES_MAX];
+    double beta = cblas_dnrm2((int)n1, b, 1);
+    memset(x, 0, n1 * sizeof *x);
+    if (beta == 0)
+        return ADH_SUCCESS;
+    for (size_t i = 0; i < n1; i++)
+        V[i] = b[i] / beta;
+    gv[0] = beta;
+    int k = 0;
+    double resid = beta;
+    for (int j = 0; j < km; j++) {
+        double *vj = V + (size_t)j * n1, *vn = V + (size_t)(j + 1) * n1, dh;
+        precond(w, L, vj, vj[n], w->dx, &dh);
+        op_apply(w, A, w->dx, dh, vn, &vn[n]);
+        /* modified Gram-Schmidt, twice: the Krylov basis must stay orthogonal */
+        for (int pass = 0; pass < 2; pass++)
+            for (int i = 0; i <= j; i++) {
+                double hij = cblas_ddot((int)n1, V + (size_t)i * n1, 1, vn, 1);
+                cblas_daxpy((int)n1, -hij, V + (size_t)i * n1, 1, vn, 1);
+                H[i * km + j] = pass ? H[i * km + j] + hij : hij;
+            }
+        double hn = cblas_dnrm2((int)n1, vn, 1);
+        if (!isfinite(hn))
+            return ADH_CONTINUE;
+        H[(j + 1) * km + j] = hn;
+        if (hn > 0)
+            cblas_dscal((int)n1, 1.0 / hn, vn, 1);
+        for (int i = 0; i < j; i++) {
+            double a = H[i * km + j], c = H[(i + 1) * km + j];
+            H[i * km + j] = cs[i] * a + sn[i] * c;
+            H[(i + 1) * km + j] = -sn[i] * a + cs[i] * c;
+        }
+        double a = H[j * km + j], c = H[(j + 1) * km + j], rr = hypot(a, c);
+        cs[j] = rr > 0 ? a / rr : 1.0;
+        sn[j] = rr > 0 ? c / rr : 0.0;
+        H[j * km + j] = rr;
+        H[(j + 1) * km + j] = 0;
+        gv[j + 1] = -sn[j] * gv[j];
+        gv[j] = cs[j] * gv[j];
+        resid = fabs(gv[j + 1]);
+        k = j + 1;
+        w->res.krylov_iterations++;
+        if (resid <= rtol * beta || hn == 0)
+            break;
+    }
+    for (int i = k - 1; i >= 0; i--) {
+        double sum = gv[i];
+        for (int l = i + 1; l < k; l++)
+            sum -= H[i * km + l] * yv[l];
+        if (H[i * km + i] == 0)
+            return ADH_CONTINUE;
+        yv[i] = sum / H[i * km + i];
+    }
+    double *z = w->gz;
+    memset(z, 0, n1 * sizeof *z);
+    for (int i = 0; i < k; i++)
+        cblas_daxpy((int)n1, yv[i], V + (size_t)i * n1, 1, z, 1);
+    double dh;
+    precond(w, L, z, z[n], x, &dh);
+    x[n] = dh;
+    for (size_t i = 0; i < n1; i++)
+        if (!isfinite(x[i]))
+            return ADH_CONTINUE;
+    return resid <= rtol * beta ? ADH_SUCCESS : ADH_CONTINUE;
+}
+
+/* Unit tangent at the point of L (normal = previous tangent), oriented so
+ * that it continues that tangent; returns sign(det J) via Cramer, or 0 when
+ * the solve failed. */
+static int tangent(adh_static *w, lin *L, const adh_state *x, double *tu, double *th_out)
+{
+    size_t n = w->n;
+    double z0 = w->m.z0, th = w->s.u_weight, dh;
+    for (int tries = 0;; tries++) {
+        op A = { L->D, L->g, L->nu, L->nh };
+        w->zero[n] = z0;
+        int rc = solve(w, &A, L, w->zero, 1e-10, w->du);
+        w->zero[n] = 0;
+        if (rc == ADH_SUCCESS) {
+            memcpy(tu, w->du, n * sizeof *tu);
+            dh = w->du[n];
+            break;
+        }
+        /* the truncation is too coarse here: take more nodes in */
+        if (tries == 3)
+            return 0;
+        w->act *= 0.1;
+        double *nu = w->dx; /* linearize copies nu into L: keep a copy */
+        memcpy(nu, L->nu, n * sizeof *nu);
+        if (linearize(w, x, nu, L->nh, L) != ADH_SUCCESS)
+            return 0;
+        w->res.factorizations++;
+    }
+    double nrm = dh * dh;
+    for (size_t i = 0; i < n; i++)
+        nrm += th * tu[i] * tu[i];
+    nrm = sqrt(nrm); /* in metres: the tangent is (du, dh0) / nrm, dimensionless */
+    for (size_t i = 0; i < n; i++)
+        tu[i] /= nrm;
+    *th_out = dh / nrm;
+    return (dh > 0 ? 1 : -1) * L->det_sign;
+}
+
+static double metric_dot(const adh_static *w, const double *au, double ah, const double *bu, double bh)
+{
+    double d = 0;
+    for (size_t i = 0; i < w->n; i++)
+        d += au[i] * bu[i];
+    return w->s.u_weight * d + ah * bh;
+}
+
+/* Newton corrector from the predictor st + ds tau on the hyperplane through
+ * it normal to base's constraint normal (or h0 = h0_fix when fix is set).
+ * Each Newton step uses the exact Jacobian at the iterate, solved with the
+ * LU of base as preconditioner; the LU is refreshed at the iterate when the
+ * preconditioned solve stops contracting. The converged point is left in trial. */
+static int correct(adh_static *w, double ds, const lin *base, int fix, double h0_fix, size_t *iters)
+{
+    size_t n = w->n;
+    double z0 = w->m.z0, th = w->s.u_weight;
+    adh_state *x = w->trial;
+    for (size_t i = 0; i < n; i++)
+        x->u[i] = w->st->u[i] + ds * z0 * w->tau_u[i];
+    x->h0 = fix ? h0_fix : w->st->h0 + ds * z0 * w->tau_h;
+    memcpy(w->upred, x->u, n * sizeof *x->u);
+    double h0pred = x->h0;
+    const lin *L = base;
+    double prev = INFINITY;
+    size_t refresh = 0;
+    for (size_t it = 0;; it++) {
+        double r = evaluate(w, x);
+        if (r < 0)
+            return ADH_ENAN;
+        if (r < w->s.tol * z0) {
+            w->residual = r;
+            return ADH_SUCCESS;
+        }
+        if (it >= w->s.max_newton)
+            return ADH_EMAXITER;
+        /* Newton near the curve contracts fast; when it does not, a shorter
+         * step is cheaper than more iterations */
+        if (it >= 3 && r > 0.5 * prev)
+            return ADH_EMAXITER;
+        prev = r;
+        for (size_t i = 0; i < n; i++)
+            w->Dc[i] = adh_lj_dpressure(x->h[i], w->m.A, w->m.z0);
+        adh_kernel_apply(w->k, w->Dc, w->gc, w->scratch);
+        for (size_t i = 0; i < n; i++)
+            w->gc[i] *= w->c2E;
+        /* the constraint's current residual, metres */
+        double c = base->nh * (x->h0 - h0pred);
+        if (!fix) {
+            double cu = 0;
+            for (size_t i = 0; i < n; i++)
+                cu += base->nu[i] * (x->u[i] - w->upred[i]);
+            c += th * cu;
+        }
+        for (size_t i = 0; i < n; i++)
+            w->bG[i] = -w->G[i];
+        w->bG[n] = -c;
+        op A = { w->Dc, w->gc, base->nu, base->nh };
+        while (solve(w, &A, L, w->bG, 1e-6, w->du) != ADH_SUCCESS) {
+            /* the preconditioner is too far from here: refactorize here,
+             * then take more nodes in */
+            if (++refresh > 4)
+                return ADH_EMAXITER;
+            if (L == &w->L[2])
+                w->act *= 0.1;
+            int rc = linearize(w, x, base->nu, base->nh, &w->L[2]);
+            w->res.factorizations++;
+            if (rc != ADH_SUCCESS)
+                return rc;
+            L = &w->L[2];
+        }
+        double dh = w->du[n];
+        (*iters)++;
+        w->res.newton_iterations++;
+        /* damp an update that would close a gap (the law means nothing there) */
+        double lam = 1.0;
+        for (int tries = 0;; tries++) {
+            int closed = 0;
+            for (size_t i = 0; i < n && !closed; i++)
+                closed = !(x->h0 + lam * dh + w->shape[i] - x->u[i] - lam * w->du[i] > 0);
+            if (!closed)
+                break;
+            if (tries == 6)
+                return ADH_ENAN;
+            lam *= 0.5;
+        }
+        for (size_t i = 0; i < n; i++)
+            x->u[i] += lam * w->du[i];
+        x->h0 += lam * dh;
+    }
+}
+
+static double force_of(const adh_static *w, const adh_state *x)
+{
+    return adh_force(w->grid, x);
+}
+
+/* dF/ds along the unit tangent: F = 2 pi dr sum r p, dh = dh0 - du. */
+static double force_slope(const adh_static *w, const lin *L, const double *tu, double th)
+{
+    double s = 0, z0 = w->m.z0;
+    for (size_t i = 0; i < w->n; i++)
+        s += w->grid->r[i] * L->D[i] * z0 * (th - tu[i]);
+    return 2.0 * M_PI * w->grid->dr * s;
+}
+
+/* Where the cubic Hermite interpolant on [0,1] (values y0, y1, end slopes
+ * m0, m1 per unit t) has its extremum; -1 when none lies inside. */
+static double hermite_extremum(double y0, double y1, double m0, double m1)
+{
+    double a = 6 * y0 + 3 * m0 - 6 * y1 + 3 * m1;
+    double b = -6 * y0 - 4 * m0 + 6 * y1 - 2 * m1;
+    double c = m0;
+    double t = -1;
+    if (fabs(a) < 1e-14 * (fabs(b) + fabs(c))) {
+        if (b != 0)
+            t = -c / b;
+    } else {
+        double disc = b * b - 4 * a * c;
+        if (disc >= 0) {
+            double sq = sqrt(disc);
+            double qq = -0.5 * (b + (b >= 0 ? sq : -sq));
+            double t1 = qq / a, t2 = qq != 0 ? c / qq : -1;
+            t = (t1 >= 0 && t1 <= 1) ? t1 : t2;
+        }
+    }
+    if (!(t >= 0 && t <= 1))
+        t = m0 / (m0 - m1); /* the slope's linear zero */
+    return (t >= 0 && t <= 1) ? t : -1;
+}
+
+static double hermite_value(double y0, double y1, double m0, double m1, double t)
+{
+    double t2 = t * t, t3 = t2 * t;
+    return (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * m1;
+}
+
+/* Bookkeeping of a new accepted point against the previous one: folds
+ * (the tangent's h0 part changes sign) and the force minimum. */
+static void record(adh_static *w, double h0a, double tha, double Fa, double dFa, double len)
+{
+    double z0 = w->m.z0;
+    double h0b = w->st->h0, thb = w->tau_h, Fb = w->F, dFb = w->dFds;
+    if (Fb < w->res.pulloff_F) {
+        w->res.pulloff_F = Fb;
+        w->res.pulloff_h0 = h0b;
+    }
+    if (dFa < 0 && dFb > 0) {
+        double t = hermite_extremum(Fa, Fb, dFa * len, dFb * len);
+        if (t >= 0) {
+            double Fm = hermite_value(Fa, Fb, dFa * len, dFb * len, t);
+            if (Fm < w->res.pulloff_F) {
+                w->res.pulloff_F = Fm;
+                w->res.pulloff_h0 = hermite_value(h0a, h0b, tha * z0 * len, thb * z0 * len, t);
+            }
+        }
+    }
+    if ((tha < 0) != (thb < 0)) {
+        double m0 = tha * z0 * len, m1 = thb * z0 * len;
+        double t = hermite_extremum(h0a, h0b, m0, m1);
+        if (t < 0)
+            t = 0.5;
+        adh_static_fold f = {
+            .h0 = hermite_value(h0a, h0b, m0, m1, t),
+            .F = hermite_value(Fa, Fb, dFa * len, dFb * len, t),
+            .kind = tha < 0 ? -1 : +1,
+        };
+        if (w->res.folds == 0)
+            w->res.jump_in_h0 = f.kind < 0 ? f.h0 : NAN;
+        if (f.kind > 0 && (isnan(w->res.jump_out_h0) || f.h0 > w->res.jump_out_h0)) {
+            w->res.jump_out_h0 = f.h0;
+            w->res.pulloff_F_disp = f.F;
+        }
+        if (w->nfolds_kept < ADH_STATIC_MAX_FOLDS)
+            w->folds[w->nfolds_kept++] = f;
+        w->res.folds++;
+    }
+}
+
+/* Makes trial (with its tangent in tau_*_new and linearization in L[nx])
+ * the current point. */
+static void accept(adh_static *w, int nx, int det_j_sign)
+{
+    size_t n = w->n;
+    double z0 = w->m.z0;
+    double h0a = w->st->h0, tha = w->tau_h, Fa = w->F, dFa = w->dFds;
+    double d2 = (w->trial->h0 - h0a) * (w->trial->h0 - h0a), du2 = 0;
+    for (size_t i = 0; i < n; i++)
+        du2 += (w->trial->u[i] - w->st->u[i]) * (w->trial->u[i] - w->st->u[i]);
+    double len = sqrt(d2 + w->s.u_weight * du2) / z0;
+    adh_state *tmp = w->st;
+    w->st = w->trial;
+    w->trial = tmp;
+    double *tt = w->tau_u;
+    w->tau_u = w->tau_u_new;
+    w->tau_u_new = tt;
+    w->tau_h = w->tau_h_new;
+    w->cur = nx;
+    w->stable = det_j_sign > 0;
+    w->F = force_of(w, w->st);
+    w->dFds = force_slope(w, &w->L[nx], w->tau_u, w->tau_h);
+    w->s_arc += len;
+    w->res.points++;
+    if (w->res.points > 1)
+        record(w, h0a, tha, Fa, dFa, len);
+    else {
+        w->res.pulloff_F = w->F;
+        w->res.pulloff_h0 = w->st->h0;
+    }
+}
+
+int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settings *s)
+{
+    if (adh_static_settings_validate(s, NULL, 0) != ADH_SUCCESS || adh_material_validate(m, NULL, 0) != ADH_SUCCESS)
+        return ADH_EINVAL;
+    double t0 = now();
+    size_t n = w->n;
+    w->m = *m;
+    w->s = *s;
+    if (isnan(w->s.h0_start))
+        w->s.h0_start = adh_protocol_auto_start(m, 0.05e-9);
+    if (!(w->s.h0_start > w->s.h0_end))
+        return ADH_EINVAL;
+    w->c2E = 2.0 / m->E;
+    for (size_t i = 0; i < n; i++)
+        w->shape[i] = w->grid->r[i] * w->grid->r[i] / (2.0 * m->R);
+    memset(&w->res, 0, sizeof w->res);
+    w->res.jump_in_h0 = w->res.jump_out_h0 = w->res.pulloff_F_disp = NAN;
+    w->res.pulloff_F = INFINITY;
+    w->res.pulloff_h0 = NAN;
+    w->nfolds_kept = 0;
+    w->done = 0;
+    w->s_arc = 0;
+    w->ds = w->s.ds_init;
+    w->act = w->s.active_tol;
+
+    /* The start: undeformed, going down. */
+    memset(w->st->u, 0, n * sizeof *w->st->u);
+    w->st->h0 = w->s.h0_start;
+    memset(w->tau_u, 0, n * sizeof *w->tau_u);
+    w->tau_h = -1.0;
+    if (evaluate(w, w->st) < 0)
+        return ADH_ENAN;
+    w->cur = 0;
+    int rc = linearize(w, w->st, w->tau_u, w->tau_h, &w->L[0]);
+    w->res.factorizations++;
+    size_t it = 0;
+    if (rc == ADH_SUCCESS)
+        rc = correct(w, 0.0, &w->L[0], 1, w->s.h0_start, &it);
+    if (rc == ADH_SUCCESS) {
+        rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->L[1]);
+        w->res.factorizations++;
+    }
+    if (rc != ADH_SUCCESS) {
+        w->res.seconds += now() - t0;
+        return rc;
+    }
+    int dj = tangent(w, &w->L[1], w->trial, w->tau_u_new, &w->tau_h_new);
+    if (dj == 0)
+        return ADH_ESTALL;
+    w->det_b_sign = w->L[1].det_sign;
+    w->newton_point = it;
+    w->F = 0;
+    w->dFds = 0;
+    accept(w, 1, dj);
+    w->res.seconds += now() - t0;
+    return ADH_SUCCESS;
+}
+
+int adh_static_iterate(adh_static *w)
+{
+    if (w->done)
+        return ADH_SUCCESS;
+    w->act = w->s.active_tol;
+    if (w->res.points >= w->s.max_points)
+        return ADH_EMAXITER;
+    double t0 = now();
+    size_t n = w->n;
+    double z0 = w->m.z0;
+    double cos_max = cos(w->s.max_angle);
+    size_t iters = 0;
+    int rc;
+    for (;;) {
+        if (w->ds < w->s.ds_min) {
+            rc = ADH_ESTALL;
+            break;
+        }
+        int nx = w->cur == 0 ? 1 : 0;
+        /* The last step lands on h0_end exactly (natural parametrization). */
+        int fix = w->tau_h < 0 && w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end;
+        const lin *base = &w->L[w->cur];
+        double ds = w->ds;
+        if (fix) {
+            ds = (w->s.h0_end - w->st->h0) / (z0 * w->tau_h);
+            /* the constraint is h0 = h0_end: normal (0, 1) */
+            memset(w->upred, 0, n * sizeof(double));
+            rc = linearize(w, w->st, w->upred, 1.0, &w->L[nx]);
+            w->res.factorizations++;
+            if (rc != ADH_SUCCESS)
+                break;
+            base = &w->L[nx];
+        }
+        rc = correct(w, ds, base, fix, w->s.h0_end, &iters);
+        if (rc == ADH_SUCCESS) {
+            rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->L[nx]);
+            w->res.factorizations++;
+        }
+        int ok = rc == ADH_SUCCESS;
+        int dj = 0;
+        double turn = 0;
+        if (ok) {
+            dj = tangent(w, &w->L[nx], w->trial, w->tau_u_new, &w->tau_h_new);
+            double ct = metric_dot(w, w->tau_u, w->tau_h, w->tau_u_new, w->tau_h_new);
+            turn = acos(fmin(1.0, fmax(-1.0, ct)));
+            /* the secant from the last point must run along the old tangent */
+            double sh = (w->trial->h0 - w->st->h0) / z0, su = 0, s2 = sh * sh;
+            for (size_t i = 0; i < n; i++) {
+                double d = (w->trial->u[i] - w->st->u[i]) / z0;
+                su += d * w->tau_u[i];
+                s2 += w->s.u_weight * d * d;
+            }
+            double cs = (w->s.u_weight * su + sh * w->tau_h) / sqrt(s2);
+            /* det B keeps its sign along one curve with consistent
+             * orientation: a flip means the corrector left the branch */
+            ok = dj != 0 && ct >= cos_max && cs >= cos_max && w->L[nx].det_sign == w->det_b_sign;
+        } else if (rc == ADH_ENOMEM) {
+            break;
+        }
+        if (ok) {
+            w->newton_point = iters;
+            accept(w, nx, dj);
+            if (fix)
+                w->done = 1;
+            /* adapt: aim at half the allowed turn per step (the turn grows
+             * about linearly with ds), slow down when Newton labours */
+            double f = turn > 1e-12 ? 0.5 * w->s.max_angle / turn : 2.0;
+            f = fmin(2.0, fmax(0.5, f));
+            if (iters > 6)
+                f = fmin(f, 0.7);
+            w->ds = fmin(w->s.ds_max, w->ds * f);
+            rc = w->done ? ADH_SUCCESS : ADH_CONTINUE;
+            double a = adh_contact_radius(w->grid, w->st->h, z0);
+            if (a >= 0.9 * w->grid->rmax)
+                rc = ADH_EGRID;
+            break;
+        }
+        /* a failed step is usually a fold just ahead: cut hard */
+        w->res.rejected++;
+        w->ds *= 0.25;
+    }
+    w->res.seconds += now() - t0;
+    return rc;
+}
+
+const adh_state *adh_static_state(const adh_static *w)
+{
+    return w->st;
+}
+
+adh_static_point adh_static_current(const adh_static *w)
+{
+    adh_static_point p = {
+        .s = w->s_arc,
+        .tangent_h0 = w->tau_h,
+        .direction = w->tau_h < 0 ? +1 : -1,
+        .stable = w->stable,
+        .newton = w->newton_point,
+        .active = w->L[w->cur].m,
+        .residual = w->residual,
+    };
+    return p;
+}
+
+void adh_static_summary(const adh_static *w, adh_static_result *res)
+{
+    *res = w->res;
+}
+
+size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds)
+{
+    if (folds)
+        *folds = w->folds;
+    return w->nfolds_kept;
+}
+
+static int push_row(adh_run *run, const adh_obs *o)
+{
+    if (run->nrows == run->rows_cap) {
+        size_t cap = run->rows_cap ? 2 * run->rows_cap : 256;
+        adh_obs *p = realloc(run->rows, cap * sizeof *p);
+        if (!p)
+            return ADH_ENOMEM;
+        run->rows = p;
+        run->rows_cap = cap;
+    }
+    run->rows[run->nrows++] = *o;
+    return ADH_SUCCESS;
+}
+
+int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
+                   const adh_static_settings *s, adh_step_cb cb, void *ctx,
+                   adh_run *run, adh_static_result *res)
+{
+    adh_static *w = adh_static_alloc(g, k);
+    if (!w) {
+        run->status = ADH_ENOMEM;
+        return run->status;
+    }
+    double t0 = now();
+    int rc = adh_static_set(w, m, s);
+    run->start = w->s.h0_start;
+    for (;;) {
+        if (rc != ADH_SUCCESS && rc != ADH_CONTINUE && rc != ADH_EGRID)
+            break;
+        adh_obs o;
+        memset(&o, 0, sizeof o);
+        adh_observe(g, m, w->st, &o);
+        adh_static_point pt = adh_static_current(w);
+        o.seconds = now() - t0;
+        t0 = now();
+        o.iters = pt.newton;
+        o.branch = pt.direction;
+        o.path = 0;
+        o.converged = 1;
+        o.stable = pt.stable;
+        run->iterations += pt.newton;
+        int prc = push_row(run, &o);
+        if (prc != ADH_SUCCESS) {
+            rc = prc;
+            break;
+        }
+        if (rc == ADH_EGRID)
+            break;
+        if (cb && cb(&o, run, ctx)) {
+            run->interrupted = 1;
+            rc = ADH_SUCCESS;
+            break;
+        }
+        if (w->done)
+            break;
+        rc = adh_static_iterate(w);
+    }
+    if (rc == ADH_CONTINUE)
+        rc = ADH_SUCCESS;
+    adh_static_result r;
+    adh_static_summary(w, &r);
+    if (res)
+        *res = r;
+    run->jump_in_h0 = r.jump_in_h0;
+    run->seconds += r.seconds;
+    run->status = rc;
+    adh_static_free(w);
+    return rc;
+}
