@@ -16,7 +16,7 @@ typedef struct adh_obs {
     double hc;       /* central gap h(0), m */
     double a;        /* contact radius, m; 0 out of contact */
     double angle;    /* exterior contact angle, rad; 0 out of contact */
-    double F_rigid;  /* rigid-sphere force at h0 (eq 22), N */
+    double F_rigid;  /* rigid-sphere force at h0 (eq 22), N; NAN for h0 <= 0 */
     double seconds;  /* wall time of the step */
     size_t iters;    /* relaxation iterations of the step */
     int branch;      /* +1 loading, -1 unloading */

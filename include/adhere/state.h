@@ -11,6 +11,8 @@ typedef struct adh_state {
     double *u;     /* total deformation u(r_n), m (eq 6); negative is flattening */
     double *h;     /* local gap h(r_n) = h0 + r^2/2R - u, m (eq 5) */
     double *p;     /* pressure p_s(h(r_n)), Pa (eq 10) */
+    double mix;    /* the relaxation's mixing ratio: part of the dynamic
+                      state, so a restored snapshot resumes exactly */
 } adh_state;
 
 adh_state *adh_state_alloc(size_t n);

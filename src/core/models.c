@@ -9,6 +9,9 @@ static double gamma_of(const adh_material *m)
 
 double adh_rigid_force(const adh_material *m, double h0)
 {
+    /* Rigid spheres cannot reach h0 <= 0: eq 22 has no value there. */
+    if (!(h0 > 0))
+        return NAN;
     double s6 = pow(m->z0 / h0, 6.0);
     return m->A * m->R / (6.0 * h0 * h0) * (s6 / 4.0 - 1.0);
 }
@@ -61,4 +64,9 @@ double adh_jkr_pulloff(const adh_material *m)
 double adh_dmt_pulloff(const adh_material *m)
 {
     return -2.0 * M_PI * gamma_of(m) * m->R;
+}
+
+double adh_edge_zone(const adh_material *m)
+{
+    return 243.0 * M_PI * M_PI / 128.0 * m->E * pow(m->z0, 4) / m->A;
 }

@@ -44,28 +44,38 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
         snprintf(why, whylen, "step d = %g m is not allowed: it must be from 1e-14 to 1e-8 m (0.01 pm to 10 nm)", ps->step);
         return ADH_EINVAL;
     }
-    double start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
-    if (!isfinite(start) || start <= 0 || start > 0.01 * m->R) {
-        snprintf(why, whylen, "start = %g m is not allowed: it must be above 0 and at most R/100 = %g m (the model needs h0 << R)",
-                 start, 0.01 * m->R);
-        return ADH_EINVAL;
-    }
     if (ps->nturns > ADH_MAX_TURNS) {
         snprintf(why, whylen, "%zu turning points given: at most %d are allowed", ps->nturns, ADH_MAX_TURNS);
         return ADH_EINVAL;
     }
     for (size_t i = 0; i < ps->nturns; i++) {
         double t = ps->turns[i];
-        if (!isfinite(t) || t >= start) {
-            snprintf(why, whylen, "turning point %g m is not allowed: it must lie below the start %g m", t, start);
-            return ADH_EINVAL;
-        }
-        if (t < -0.01 * m->R) {
-            snprintf(why, whylen, "turning point %g m is too deep: the model (h0 << R) allows down to -R/100 = %g m", t, -0.01 * m->R);
+        if (!isfinite(t) || t < -0.02 * m->R) {
+            snprintf(why, whylen, "turning point %g m is too deep: the model (h0 << R) allows down to -R/50 = %g m", t, -0.02 * m->R);
             return ADH_EINVAL;
         }
     }
     double lowest = ps->nturns ? deepest_turn(ps) : 0.0;
+    /* The model needs h0 << R and a grid edge (at most 0.3 R out) where the
+     * gap is many z0 wide: r^2/2R there is at most 0.045 R. */
+    double need = (10.0 * m->z0 + fabs(lowest)) / 0.045;
+    if (m->R < need) {
+        snprintf(why, whylen, "R = %g m is too small for this model: h0 << R and a negligible force at the grid edge need R >= %g m here (10 z0 plus the deepest |h0|, over 0.045)",
+                 m->R, need);
+        return ADH_EINVAL;
+    }
+    double start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
+    if (!isfinite(start) || start <= 0 || start > 0.02 * m->R) {
+        snprintf(why, whylen, "start = %g m is not allowed: it must be above 0 and at most R/50 = %g m (the model needs h0 << R)",
+                 start, 0.02 * m->R);
+        return ADH_EINVAL;
+    }
+    for (size_t i = 0; i < ps->nturns; i++) {
+        if (ps->turns[i] >= start) {
+            snprintf(why, whylen, "turning point %g m is not allowed: it must lie below the start %g m", ps->turns[i], start);
+            return ADH_EINVAL;
+        }
+    }
     double steps = (start - lowest) / ps->step;
     if (steps > 2e6) {
         snprintf(why, whylen, "%.0f drive steps of %g m from %g to %g m: at most 2e6 are allowed; take a larger step", steps, ps->step, start, lowest);
@@ -91,6 +101,15 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     if (gap_edge < 10 * m->z0 || a_est > 0.8 * g->rmax) {
         snprintf(why, whylen, "grid radius Rmax = %g m is too short: the contact at h0 = %g m may reach %g m; use more nodes (--nodes) or a larger spacing",
                  g->rmax, lowest, a_est);
+        return ADH_EGRID;
+    }
+    /* Coarser than five edge zones, the contact line moves node by node and
+     * the relaxation locks into oscillation between nodes (seen at sigma =
+     * 100 on the N = 100 default grid: every step at the iteration cap). */
+    double edge = adh_edge_zone(m);
+    if (ps->nturns > 0 && g->dr > 5.0 * edge) {
+        snprintf(why, whylen, "grid spacing %g m is too coarse for this contact: its edge zone is about %g m wide (sigma = %.3g), and a spacing above 5 times that (%g m) locks the contact line to the nodes; use more nodes or a smaller spacing",
+                 g->dr, edge, m->A / (16.0 * M_PI * m->z0 * m->z0) * sqrt(m->R / pow(m->z0, 3)) / m->E, 5.0 * edge);
         return ADH_EGRID;
     }
     double tail = fabs(adh_rigid_force(m, gap_edge));

@@ -16,7 +16,6 @@ struct adh_relax {
     double *unew;      /* eq 11 applied to the current pressure */
     double *scratch;
     double *shape;     /* r^2 / 2R, the undeformed sphere (eq 3) */
-    double mix;
     double prev_central;  /* previous unmixed central change; 0 = none yet */
     double change;
     size_t iters;
@@ -97,7 +96,7 @@ int adh_relax_set(adh_relax *w, const adh_material *m, const adh_relax_settings 
         w->st->u[i] = 0.0;
     }
     w->st->h0 = h0;
-    w->mix = s->mix_max;
+    w->st->mix = s->mix_max;
     w->prev_central = 0;
     w->change = 0;
     w->iters = 0;
@@ -136,20 +135,24 @@ static int relax_once(adh_relax *w)
     /* eps as the paper writes it: [sum (u_new - u_old)^2]^(1/2) / N, with
      * u_new the eq 11 deformation before it is mixed in. */
     w->change = sqrt(ssq) / (double)n;
+    /* Converged: keep the state whose change was measured, not one more
+     * mixed update of it. */
+    if (w->change < w->s.eps)
+        return ADH_SUCCESS;
 
     double c = w->unew[0];
     if (w->prev_central != 0) {
         if (c * w->prev_central < 0 || fabs(c) > fabs(w->prev_central))
-            w->mix = fmax(w->s.mix_min, w->mix * w->s.mix_down);
+            w->st->mix = fmax(w->s.mix_min, w->st->mix * w->s.mix_down);
         else
-            w->mix = fmin(w->s.mix_max, w->mix * w->s.mix_up);
+            w->st->mix = fmin(w->s.mix_max, w->st->mix * w->s.mix_up);
     }
     w->prev_central = c;
 
     for (;;) {
         int closed = 0;
         for (size_t i = 0; i < n; i++) {
-            double u = st->u[i] + w->mix * w->unew[i];
+            double u = st->u[i] + w->st->mix * w->unew[i];
             double h = st->h0 + w->shape[i] - u;
             if (!(h > 0)) {
                 closed = 1;
@@ -158,16 +161,15 @@ static int relax_once(adh_relax *w)
         }
         if (!closed)
             break;
-        if (w->mix <= w->s.mix_min)
+        if (w->st->mix <= w->s.mix_min)
             return ADH_ENAN;
-        w->mix = fmax(w->s.mix_min, w->mix * 0.5);
+        w->st->mix = fmax(w->s.mix_min, w->st->mix * 0.5);
     }
     for (size_t i = 0; i < n; i++) {
-        st->u[i] += w->mix * w->unew[i];
+        st->u[i] += w->st->mix * w->unew[i];
         st->h[i] = st->h0 + w->shape[i] - st->u[i];
         st->p[i] = adh_lj_pressure(st->h[i], w->m.A, w->m.z0);
     }
-    w->iters++;
     return ADH_SUCCESS;
 }
 
@@ -181,18 +183,21 @@ int adh_relax_iterate(adh_relax *w, size_t max_batch)
             return rc;
         if (w->change < w->s.eps)
             return ADH_SUCCESS;
+        w->iters++;
     }
     return ADH_CONTINUE;
 }
 
 int adh_relax_dwell(adh_relax *w, size_t n)
 {
-    for (size_t i = 0; i < n; i++) {
-        int rc = relax_once(w);
-        if (rc != ADH_SUCCESS)
-            return rc;
-    }
-    return ADH_SUCCESS;
+    /* A pause goes on relaxing even below eps: the time passes regardless. */
+    double eps = w->s.eps;
+    w->s.eps = 0;
+    int rc = ADH_SUCCESS;
+    for (size_t i = 0; i < n && rc == ADH_SUCCESS; i++)
+        rc = relax_once(w);
+    w->s.eps = eps;
+    return rc;
 }
 
 const adh_state *adh_relax_state(const adh_relax *w)
@@ -202,7 +207,10 @@ const adh_state *adh_relax_state(const adh_relax *w)
 
 void adh_relax_restore(adh_relax *w, const adh_state *s)
 {
+    double mix = w->st->mix;
     adh_state_copy(w->st, s);
+    if (!(w->st->mix > 0)) /* a state never relaxed carries no ratio */
+        w->st->mix = mix;
     w->prev_central = 0;
     w->iters = 0;
     adh_relax_refresh(w);
@@ -220,5 +228,5 @@ double adh_relax_change(const adh_relax *w)
 
 double adh_relax_mixing(const adh_relax *w)
 {
-    return w->mix;
+    return w->st->mix;
 }
