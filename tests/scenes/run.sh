@@ -96,6 +96,17 @@ check "eps sweep: combined force.png" [ -s "$d/force.png" ]
 "$ADHERE" --batch -q "$TMP/eps.scene" -N 100 >"$TMP/stdout" 2>"$TMP/stderr"
 check "a sweep without --out prints sweep.tsv on stdout" sh -c "grep -v '^#' '$TMP/stdout' | head -1 | grep -q '^run	swept	value'"
 
+# SIGINT during a sweep: every run stops, tables are written and say so.
+"$ADHERE" --batch -q fig7 -N 100 --no-plot -o "$TMP/int" >/dev/null 2>"$TMP/stderr" &
+pid=$!
+sleep 2
+kill -INT $pid
+wait $pid
+rc=$?
+check "SIGINT ends a sweep with status 130 (got $rc)" [ "$rc" -eq 130 ]
+check "the interrupted sweep's sweep.tsv says interrupted" sh -c "grep -v '^#' '$TMP/int/sweep.tsv' | awk -F'\t' 'NR > 1 && \$NF != \"interrupted\" {bad = 1} NR > 1 {n++} END {exit bad || n != 3}'"
+check "run-1/force.tsv is marked partial" grep -q "^# PARTIAL: interrupted" "$TMP/int/run-1/force.tsv"
+
 # Rigid spheres: eq 22 at each position, no iteration at all.
 d="$TMP/rigid"
 run default "$d" --mode=rigid --turn=none --no-plot
