@@ -61,6 +61,54 @@ void adh_contact_speed(const adh_run *run, double drive_speed, double *dadh0, do
     }
 }
 
+void adh_contact_speed_smoothed(const adh_run *run, double drive_speed, double dr,
+                                double cells, double *dadt)
+{
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        dadt[i] = NAN;
+        if (!(o->a > 0))
+            continue;
+        long lo = (long)i, hi = (long)i;
+        for (int k = 0; k < 50; k++) {
+            long p = adh_row_prev_on_path(run, (size_t)lo);
+            long n = adh_row_next_on_path(run, (size_t)hi);
+            if (p < 0 || n < 0 || !(run->rows[p].a > 0) || !(run->rows[n].a > 0))
+                break;
+            lo = p;
+            hi = n;
+            if (fabs(run->rows[hi].a - run->rows[lo].a) >= cells * dr)
+                break;
+        }
+        if (lo == hi) {
+            /* the first or last row of a contact: one step to a neighbour */
+            long n = adh_row_next_on_path(run, i), p = adh_row_prev_on_path(run, i);
+            if (n >= 0 && run->rows[n].a > 0)
+                hi = n;
+            else if (p >= 0 && run->rows[p].a > 0)
+                lo = p;
+            else
+                continue;
+        }
+        /* least-squares slope over the window: its end points sit on hops,
+         * so their difference alone would overstate the mean */
+        double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+        for (long j = lo; j >= 0; j = (j == hi) ? -1 : adh_row_next_on_path(run, (size_t)j)) {
+            double x = run->rows[j].h0 - o->h0, y = run->rows[j].a;
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+            m += 1;
+        }
+        double den = m * sxx - sx * sx;
+        if (!(fabs(den) > 0))
+            continue;
+        double dh0dt = (o->branch > 0 ? -1.0 : 1.0) * drive_speed;
+        dadt[i] = (m * sxy - sx * sy) / den * dh0dt;
+    }
+}
+
 double adh_profile_radius(const adh_config *cfg, size_t n)
 {
     return ((double)n + 0.5) * adh_config_spacing(cfg);
@@ -137,23 +185,28 @@ int adh_write_profiles_table(const adh_config *cfg, const adh_run *run, const ch
 int adh_write_contact_table(const adh_config *cfg, const adh_run *run, const char *path,
                             char *msg, size_t msglen)
 {
-    double *dadh0 = NULL, *dadt = NULL;
+    double *dadh0 = NULL, *dadt = NULL, *smooth = NULL;
     if (run->nrows) {
         dadh0 = malloc(run->nrows * sizeof *dadh0);
         dadt = malloc(run->nrows * sizeof *dadt);
-        if (!dadh0 || !dadt) {
+        smooth = malloc(run->nrows * sizeof *smooth);
+        if (!dadh0 || !dadt || !smooth) {
             free(dadh0);
             free(dadt);
+            free(smooth);
             snprintf(msg, msglen, "cannot write %s: out of memory", path);
             return -1;
         }
         adh_contact_speed(run, cfg->drive_speed, dadh0, dadt);
+        adh_contact_speed_smoothed(run, cfg->drive_speed, adh_config_spacing(cfg),
+                                   ADH_SPEED_CELLS, smooth);
     }
     char tmp[PATH_MAX + 32];
     FILE *f = open_tmp(path, tmp, sizeof tmp, msg, msglen);
     if (!f) {
         free(dadh0);
         free(dadt);
+        free(smooth);
         return -1;
     }
     adh_table_preamble(f, cfg, "contact radius and contact-line speed");
@@ -162,14 +215,18 @@ int adh_write_contact_table(const adh_config *cfg, const adh_run *run, const cha
     fprintf(f, "# drive speed |dh0/dt| = %.17g m/s (h0 falls on loading, rises on "
                "unloading); da_dt = da/dh0 * dh0/dt, positive while the contact spreads, "
                "nan out of contact\n", cfg->drive_speed);
-    fprintf(f, "# SI units: h0, a in m, da_dh0 dimensionless, da_dt in m/s\n");
-    fprintf(f, "h0\tbranch\tpath\ta\tda_dh0\tda_dt\n");
+    fprintf(f, "# da_dt_smooth: least-squares slope over the steps in which the contact line crosses "
+               "%g grid spacings (it sticks and slips node by node)\n", ADH_SPEED_CELLS);
+    fprintf(f, "# SI units: h0, a in m, da_dh0 dimensionless, da_dt and da_dt_smooth in "
+               "m/s\n");
+    fprintf(f, "h0\tbranch\tpath\ta\tda_dh0\tda_dt\tda_dt_smooth\n");
     for (size_t i = 0; i < run->nrows; i++) {
         const adh_obs *o = &run->rows[i];
-        fprintf(f, "%.17g\t%d\t%d\t%.17g\t%.17g\t%.17g\n", o->h0, o->branch, o->path, o->a,
-                dadh0[i], dadt[i]);
+        fprintf(f, "%.17g\t%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\n", o->h0, o->branch,
+                o->path, o->a, dadh0[i], dadt[i], smooth[i]);
     }
     free(dadh0);
     free(dadt);
+    free(smooth);
     return close_tmp(f, tmp, path, msg, msglen);
 }

@@ -133,14 +133,33 @@ static void format_modulus(double v, char *buf, size_t len)
         snprintf(buf, len, "%.3g kPa", v * 1e-3);
 }
 
-/* "σ = 7.50, γ = 7.96 mJ/m², R = 10 µm, E = 0.3 GPa" for titles. */
-static void material_line(const plotter *pl, char *buf, size_t len)
+/* A figure title as a gnuplot double-quoted string, drawn noenhanced so a
+ * scene title's _ ^ { } @ & ~ print as themselves: the scene title (if
+ * any) on its own line, then what the figure is with sigma, gamma, R, E. */
+static void title_string(const plotter *pl, const char *what, char *buf, size_t len)
 {
-    char r[32], e[32];
+    char r[32], e[32], text[1024];
     format_length(pl->cfg->mat.R, r, sizeof r);
     format_modulus(pl->cfg->mat.E, e, sizeof e);
-    snprintf(buf, len, "σ = %.3g, γ = %.3g mJ/m^2, R = %s, E = %s", pl->d.sigma,
+    snprintf(text, sizeof text, "%s%s%s: σ = %.3g, γ = %.3g mJ/m², R = %s, E = %s",
+             pl->cfg->title, pl->cfg->title[0] ? "\n" : "", what, pl->d.sigma,
              pl->d.gamma * 1e3, r, e);
+    size_t j = 0;
+    if (len < 3)
+        return;
+    buf[j++] = '"';
+    for (const char *c = text; *c && j + 4 < len; c++) {
+        if (*c == '\n') {
+            buf[j++] = '\\';
+            buf[j++] = 'n';
+            continue;
+        }
+        if (*c == '"' || *c == '\\')
+            buf[j++] = '\\';
+        buf[j++] = *c;
+    }
+    buf[j++] = '"';
+    buf[j] = '\0';
 }
 
 static const adh_turn_result *turn_of_path(const adh_run *run, int path)
@@ -393,8 +412,9 @@ static int plot_force(plotter *pl)
     double big = fmax(fabs(flo), fmax(fabs(fhi), fabs(d->F_dmt)));
     force_unit(big, &fscale, &funit);
     /* The key sits top right, where the force has decayed to about zero;
-     * the top of the frame is raised until the key clears every curve in
-     * the right 60 % (the rigid force rises steeply only near h0 = z0). */
+     * the top of the frame is raised until the key clears every computed
+     * curve in the right 60 %. The rigid force, which shoots up near
+     * h0 = z0, may pass behind the (opaque) key: it is only a reference. */
     int nunload = 0;
     for (int p = 1; p <= np; p++)
         nunload += set[2 * p] >= 0 || set[2 * p + 1] >= 0;
@@ -406,8 +426,6 @@ static int plot_force(plotter *pl)
         if (o->h0 < xcut)
             continue;
         right = fmax(right, o->F);
-        if (o->path == 0 && o->h0 > 0 && isfinite(o->F_rigid))
-            right = fmax(right, o->F_rigid);
     }
     double lo = fmin(flo, d->F_dmt);
     double frac = fmin(0.6, (17.0 * nkey + 16.0) / 470.0);
@@ -416,8 +434,8 @@ static int plot_force(plotter *pl)
     hi += 0.02 * (hi - lo);
     double pad = 0;
     double xpad = 0.02 * (xmax - xmin);
-    char mat[160];
-    material_line(pl, mat, sizeof mat);
+    char heading[1200];
+    title_string(pl, "Force vs position", heading, sizeof heading);
 
     tmp_png_name(pl, "force.png", tmp_png, sizeof tmp_png);
     begin_figure(pl, "force", tmp_png);
@@ -426,11 +444,11 @@ static int plot_force(plotter *pl)
     adh_gnuplot_cmd(pl->gp, "Fdmt = %.17g", d->F_dmt);
     int panel = nadh >= 2;
     if (panel) {
-        adh_gnuplot_cmd(pl->gp, "set multiplot title \"Force vs position: %s\"", mat);
+        adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
         adh_gnuplot_cmd(pl->gp, "set origin 0,0");
         adh_gnuplot_cmd(pl->gp, "set size 0.64,0.96");
     } else {
-        adh_gnuplot_cmd(pl->gp, "set title \"Force vs position: %s\"", mat);
+        adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
     }
     adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(pl->gp, "set ylabel \"force F (%s)\"", funit);
@@ -507,8 +525,13 @@ static int plot_force(plotter *pl)
             lmin = fmin(lmin, run->turns[order[k]].max_load * fscale);
             lmax = fmax(lmax, run->turns[order[k]].max_load * fscale);
         }
-        if (lmax > lmin)
-            adh_gnuplot_cmd(pl->gp, "set xtics %.17g", nice_step((lmax - lmin) / 3.0));
+        if (lmax > lmin) {
+            double span = lmax - lmin;
+            adh_gnuplot_cmd(pl->gp, "set xtics %.17g", nice_step(span / 3.0));
+            /* an explicit range, so the JKR and DMT lines span the panel */
+            adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lmin - 0.08 * span,
+                            lmax + 0.08 * span);
+        }
         adh_gnuplot_cmd(pl->gp, "set ylabel \"adhesion −F_{min} (%s)\"", funit);
         adh_gnuplot_cmd(pl->gp, "set key bottom right");
         adh_gnuplot_cmd(pl->gp,
@@ -600,12 +623,12 @@ static int plot_profile(plotter *pl)
     if (xmax > rgrid)
         xmax = rgrid;
     double ymax = top + xmax * xmax / (2.0 * R);
-    char mat[160];
-    material_line(pl, mat, sizeof mat);
+    char heading[1200];
+    title_string(pl, "Surface profiles", heading, sizeof heading);
 
     tmp_png_name(pl, "profile.png", tmp_png, sizeof tmp_png);
     begin_figure(pl, "profile", tmp_png);
-    adh_gnuplot_cmd(pl->gp, "set title \"Surface profiles: %s\"", mat);
+    adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
     adh_gnuplot_cmd(pl->gp, "set xlabel \"radial distance r (µm)\"");
     adh_gnuplot_cmd(pl->gp, "set ylabel \"local separation h(r) (nm)\"");
     adh_gnuplot_cmd(pl->gp, "set xrange [0:%.17g]", xmax * 1e6);
@@ -659,7 +682,7 @@ static int plot_profile(plotter *pl)
     fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 2 dt 1 title \"loading\"");
     if (any_unload)
         fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 1.6 dt 2 "
-                   "title \"unloading from %.3g nm\"", main_turn->h0 * 1e9);
+                   "title \"unloading from h_0 = %.3g nm\"", main_turn->h0 * 1e9);
     fclose(c);
     adh_gnuplot_cmd(pl->gp, "%s", cmd);
     free(cmd);
@@ -676,14 +699,18 @@ static int plot_contact(plotter *pl)
     size_t n = run->nrows;
     double *dadh0 = n ? malloc(n * sizeof *dadh0) : NULL;
     double *dadt = n ? malloc(n * sizeof *dadt) : NULL;
+    double *smooth = n ? malloc(n * sizeof *smooth) : NULL;
     int np = max_path(run);
-    int *set = malloc(2 * ((size_t)np + 1) * sizeof *set);
+    /* set[3p]: step-by-step speed on path p, 3p+1: smoothed speed, 3p+2:
+     * radius (in contact, plus the row either side so the jumps show) */
+    int *set = malloc(3 * ((size_t)np + 1) * sizeof *set);
     char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
     int rc = -1;
-    FILE *f = NULL;
-    if ((n && (!dadh0 || !dadt)) || !set)
+    if ((n && (!dadh0 || !dadt || !smooth)) || !set)
         goto out;
     adh_contact_speed(run, pl->cfg->drive_speed, dadh0, dadt);
+    adh_contact_speed_smoothed(run, pl->cfg->drive_speed, adh_config_spacing(pl->cfg),
+                               ADH_SPEED_CELLS, smooth);
     double xmin = INFINITY, xmax = -INFINITY;
     for (size_t i = 0; i < n; i++)
         if (run->rows[i].a > 0) {
@@ -696,23 +723,24 @@ static int plot_contact(plotter *pl)
         rc = 0;
         goto out;
     }
-    f = data_file(pl, "contact.dat", dat, sizeof dat);
+    FILE *f = data_file(pl, "contact.dat", dat, sizeof dat);
     if (!f)
         goto out;
-    /* set[2p]: speed on path p (broken where undefined); set[2p+1]: radius
-     * on path p, in contact plus the row either side so the jumps show */
     datafile df = { .f = f };
     for (int p = 0; p <= np; p++) {
-        set_begin(&df);
-        for (size_t i = 0; i < n; i++) {
-            if (run->rows[i].path != p)
-                continue;
-            if (isfinite(dadt[i]))
-                set_point(&df, run->rows[i].h0, dadt[i]);
-            else
-                set_break(&df);
+        for (int k = 0; k < 2; k++) {
+            const double *v = k == 0 ? dadt : smooth;
+            set_begin(&df);
+            for (size_t i = 0; i < n; i++) {
+                if (run->rows[i].path != p)
+                    continue;
+                if (isfinite(v[i]))
+                    set_point(&df, run->rows[i].h0, v[i]);
+                else
+                    set_break(&df);
+            }
+            set[3 * p + k] = set_end(&df);
         }
-        set[2 * p] = set_end(&df);
         set_begin(&df);
         for (size_t i = 0; i < n; i++) {
             if (run->rows[i].path != p)
@@ -724,20 +752,22 @@ static int plot_contact(plotter *pl)
             else
                 set_break(&df);
         }
-        set[2 * p + 1] = set_end(&df);
+        set[3 * p + 2] = set_end(&df);
     }
-    f = NULL;
-    if (data_close(pl, df.f, dat) < 0 || df.bad)
+    if (data_close(pl, f, dat) < 0 || df.bad)
         goto out;
 
     double step = fabs(pl->cfg->proto.step);
     double xpad = fmax(0.03 * (xmax - xmin), 2 * step);
-    char mat[160];
-    material_line(pl, mat, sizeof mat);
+    char heading[1200], what[96];
+    snprintf(what, sizeof what, "Contact line at drive speed %.3g µm/s",
+             pl->cfg->drive_speed * 1e6);
+    title_string(pl, what, heading, sizeof heading);
+    /* a two-line heading (scene title) needs more room above the panels */
+    double top = pl->cfg->title[0] ? 0.90 : 0.94;
     tmp_png_name(pl, "contact.png", tmp_png, sizeof tmp_png);
     begin_figure(pl, "contact", tmp_png);
-    adh_gnuplot_cmd(pl->gp, "set multiplot title \"Contact line at drive speed %.3g µm/s: "
-                    "%s\"", pl->cfg->drive_speed * 1e6, mat);
+    adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
     adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (xmin - xpad) * 1e9,
                     (xmax + xpad) * 1e9);
 
@@ -745,10 +775,11 @@ static int plot_contact(plotter *pl)
         const char *qdat = quoted(dat, q, sizeof q);
         if (panel == 0) {
             adh_gnuplot_cmd(pl->gp, "set origin 0,0.42");
-            adh_gnuplot_cmd(pl->gp, "set size 1,0.53");
+            adh_gnuplot_cmd(pl->gp, "set size 1,%.3f", top - 0.42);
             adh_gnuplot_cmd(pl->gp, "set format x \"\"");
             adh_gnuplot_cmd(pl->gp, "unset xlabel");
             adh_gnuplot_cmd(pl->gp, "set bmargin 1");
+            adh_gnuplot_cmd(pl->gp, "set tmargin 0.5");
             adh_gnuplot_cmd(pl->gp, "set ylabel \"contact-line speed da/dt (µm/s)\"");
             adh_gnuplot_cmd(pl->gp, "set key bottom left");
         } else {
@@ -772,20 +803,15 @@ static int plot_contact(plotter *pl)
         fprintf(c, "plot %s", panel == 0 ? "0 ls 7 notitle" : "NaN notitle");
         int nunload = 0, labelled = 0;
         for (int p = 1; p <= np; p++)
-            nunload += set[2 * p + panel] >= 0;
+            nunload += set[3 * p + (panel == 0 ? 1 : 2)] >= 0;
         for (int p = 0; p <= np; p++) {
-            int idx = set[2 * p + panel];
-            if (idx < 0)
-                continue;
-            char style[160], title[128];
+            char lc[128], title[128];
             const adh_turn_result *tr = turn_of_path(run, p);
             if (p == 0) {
-                snprintf(style, sizeof style, "ls 1");
+                snprintf(lc, sizeof lc, "lc rgb adh_loading_color");
                 snprintf(title, sizeof title, "title \"loading\"");
             } else {
-                char lc[128];
                 unload_color(p, lc, sizeof lc);
-                snprintf(style, sizeof style, "%s lw adh_unloading_width", lc);
                 if (nunload > MAX_LABELLED_UNLOADS)
                     snprintf(title, sizeof title, labelled++ ? "notitle"
                              : "title \"unloading (%d branches)\"", nunload);
@@ -795,9 +821,24 @@ static int plot_contact(plotter *pl)
                 else
                     snprintf(title, sizeof title, "title \"unloading\"");
             }
-            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s %s", qdat,
-                    idx, style, title);
+            const char *width = p == 0 ? "adh_loading_width" : "adh_unloading_width";
+            if (panel == 0) {
+                /* step by step, thin and pale; the smoothed speed on top */
+                if (set[3 * p] >= 0)
+                    fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s "
+                               "lw 0.6 notitle", qdat, set[3 * p],
+                            p == 0 ? "lc rgb \"#9aa9cf\"" : lc);
+                if (set[3 * p + 1] >= 0)
+                    fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s "
+                               "lw %s %s", qdat, set[3 * p + 1], lc, width, title);
+            } else if (set[3 * p + 2] >= 0) {
+                fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s lw %s "
+                           "%s", qdat, set[3 * p + 2], lc, width, title);
+            }
         }
+        if (panel == 0)
+            fprintf(c, ", \\\n  keyentry with lines lc rgb \"#9aa9cf\" lw 0.6 "
+                       "title \"step by step (node hops)\"");
         fclose(c);
         adh_gnuplot_cmd(pl->gp, "%s", cmd);
         free(cmd);
@@ -807,6 +848,7 @@ static int plot_contact(plotter *pl)
 out:
     free(dadh0);
     free(dadt);
+    free(smooth);
     free(set);
     return rc;
 }

@@ -293,6 +293,21 @@ static void test_contact_speed(void)
     ok(isnan(dadt[out]), "no speed out of contact");
     ok_rel(dadt[turn], -20e-6, 1e-6, "one-sided at the start of a branch");
     ok_rel(adh_profile_radius(&s.cfg, 0), 5e-9, 1e-12, "first node at dr/2");
+    /* smoothing a steady spreading changes nothing; on a stick-slip staircase
+     * it recovers the mean speed the step-by-step derivative hides */
+    double *sm = malloc(n * sizeof *sm);
+    adh_contact_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
+    ok_rel(sm[load_mid], 30e-6, 1e-6, "smoothed loading speed of a steady line");
+    ok(isnan(sm[out]), "no smoothed speed out of contact");
+    for (size_t i = 0; i < n; i++)
+        if (s.run.rows[i].path == 0 && s.run.rows[i].a > 0)   /* hop a node every 5 steps */
+            s.run.rows[i].a = 0.1e-6 + 10e-9 * floor((2e-9 - s.run.rows[i].h0) / 0.5e-9 + 1e-9);
+    adh_contact_speed(&s.run, 1e-6, dadh0, dadt);
+    adh_contact_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
+    ok(dadt[load_mid] == 0 || dadt[load_mid] > 45e-6,
+       "the staircase's step-by-step speed is 0 or a spike (%g)", dadt[load_mid]);
+    ok_rel(sm[load_mid], 20e-6, 0.15, "its smoothed speed is the mean 20 um/s");
+    free(sm);
     free(dadh0);
     free(dadt);
     free_synthetic(&s);
@@ -321,7 +336,7 @@ static void check_tables(const char *dir, const synthetic *s, const char *what)
        s->run.nprofiles * NODES, n);
     path_in(p, sizeof p, dir, "contact.tsv");
     n = table_rows(p, header, sizeof header);
-    ok(n == (long)s->run.nrows && strcmp(header, "h0\tbranch\tpath\ta\tda_dh0\tda_dt\n") == 0,
+    ok(n == (long)s->run.nrows && strcmp(header, "h0\tbranch\tpath\ta\tda_dh0\tda_dt\tda_dt_smooth\n") == 0,
        "%s: contact.tsv has its header and one row per step (got %ld)", what, n);
 }
 
