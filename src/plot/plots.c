@@ -290,14 +290,14 @@ static int finish_figure(plotter *pl, const char *name, const char *tmp_png)
         rc = -1;
     }
     if (rc == 0 && rename(tmp_png, final) != 0) {
-        snprintf(why, sizeof why, "cannot rename %s to %s: %s", tmp_png, final,
+        snprintf(why, sizeof why, "cannot rename %.400s to %.400s: %s", tmp_png, final,
                  strerror(errno));
         rc = -1;
     }
     if (rc != 0) {
         unlink(tmp_png);
         if (!*pl->error)
-            snprintf(pl->error, sizeof pl->error, "%s: %s", name, why);
+            snprintf(pl->error, sizeof pl->error, "%s: %.960s", name, why);
         return -1;
     }
     append(pl->done, sizeof pl->done, "%s%s", *pl->done ? ", " : "", name);
@@ -478,7 +478,13 @@ static int plot_force(plotter *pl)
             if (p == 0) {
                 snprintf(style, sizeof style, "ls 1%s",
                          s ? "" : " lw 1.2 dt adh_unstable_dash");
-                snprintf(title, sizeof title, "title \"loading%s\"", s ? "" : " (unstable)");
+                /* the static mode's path 0 is the whole equilibrium curve */
+                if (pl->cfg->mode == ADH_MODE_STATIC)
+                    snprintf(title, sizeof title, "title \"%s\"",
+                             s ? "static equilibrium" : "unstable (displacement control)");
+                else
+                    snprintf(title, sizeof title, "title \"loading%s\"",
+                             s ? "" : " (unstable)");
             } else {
                 char lc[128];
                 unload_color(p, lc, sizeof lc);

@@ -77,7 +77,7 @@ static long table_rows(const char *path, char *header, size_t hlen)
         if (line[0] == '#')
             continue;
         if (n < 0) {
-            snprintf(header, hlen, "%s", line);
+            snprintf(header, hlen, "%.500s", line);
             n = 0;
         } else {
             n++;
