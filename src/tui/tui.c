@@ -15,14 +15,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "adhere/status.h"
-#include "plot/plot.h"
 #include "tui/actions.h"
 #include "tui/keysrc.h"
+#include "tui/plotpath.h"
 #include "tui/screen.h"
 #include "tui/sim.h"
 
@@ -225,133 +224,24 @@ static int resize_to(tui *t, int cols, int rows, char *why, size_t whylen)
     return 0;
 }
 
-/* The turning points of the path so far, as --batch reports them: each
- * unloading branch, with the loading state it turned from, its pull-off
- * (the force minimum) and where it left contact. */
-static size_t path_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, size_t cap)
-{
-    size_t nt = 0;
-    for (size_t i = 0; i < n && nt < cap; i++) {
-        int p = rows[i].path;
-        if (rows[i].branch > 0 || p <= 0 || (i > 0 && rows[i - 1].branch < 0 && rows[i - 1].path == p))
-            continue;
-        size_t t = i;   /* the last loading row before the branch */
-        while (t > 0 && rows[t].branch < 0)
-            t--;
-        adh_turn_result *tr = &turns[nt++];
-        tr->h0 = rows[t].h0;
-        tr->max_load = rows[t].F;
-        tr->a_turn = rows[t].a;
-        tr->path = p;
-        tr->pulloff_F = INFINITY;
-        tr->pulloff_h0 = NAN;
-        tr->jump_out_h0 = NAN;
-        int touched = 0;
-        for (size_t j = i; j < n && rows[j].branch < 0 && rows[j].path == p; j++) {
-            if (rows[j].F < tr->pulloff_F) {
-                tr->pulloff_F = rows[j].F;
-                tr->pulloff_h0 = rows[j].h0;
-            }
-            if (rows[j].a > 0)
-                touched = 1;
-            else if (touched && isnan(tr->jump_out_h0))
-                tr->jump_out_h0 = rows[j].h0;
-        }
-    }
-    return nt;
-}
-
-/* Which states to draw as profiles: into contact, each turn, each pull-off,
- * and where the path is now. Returns how many indices went into idx. */
-static size_t pick_profiles(const adh_obs *rows, size_t n, const adh_turn_result *turns, size_t nt,
-                            size_t *idx, size_t cap)
-{
-    size_t k = 0;
-#define ADD(i) do { size_t i_ = (i); int dup_ = 0; \
-        for (size_t q_ = 0; q_ < k; q_++) dup_ |= idx[q_] == i_; \
-        if (!dup_ && k < cap) idx[k++] = i_; } while (0)
-    for (size_t i = 0; i < n; i++)
-        if (rows[i].branch > 0 && rows[i].a > 0) {
-            ADD(i);
-            break;
-        }
-    for (size_t t = 0; t < nt; t++)
-        for (size_t i = 0; i < n; i++) {
-            if (rows[i].branch > 0 && rows[i].h0 == turns[t].h0)
-                ADD(i);
-            if (rows[i].branch < 0 && rows[i].path == turns[t].path && rows[i].h0 == turns[t].pulloff_h0)
-                ADD(i);
-        }
-    ADD(n - 1);
-#undef ADD
-    return k;
-}
-
 static void write_plots(tui *t)
 {
     size_t n;
-    const adh_obs *rows = tui_sim_rows(&t->sim, &n);
+    tui_sim_rows(&t->sim, &n);
     if (n == 0) {
         say(t, 1, "nothing to plot yet: step first (f, or r to run)");
         return;
     }
-    /* The plots describe what is on screen: the current parameters. */
-    adh_config c = t->cfg;
-    tui_sim *s = &t->sim;
-    c.mat = s->mat;
-    c.nodes = s->nodes;
-    c.spacing = tui_sim_spacing(s);
-    c.kernel = s->kernel;
-    c.relax = s->relax;
-    c.proto.step = s->step;
-    c.proto.start = s->start;
-    c.plot = 1;
-
-    static adh_run run;   /* large (turn table); borrowed rows, never adh_run_free()d */
-    adh_run_init(&run);
-    run.rows = (adh_obs *)rows;
-    run.nrows = run.rows_cap = n;
-    run.start = s->start;
-    for (size_t i = 0; i < n; i++) {
-        run.iterations += rows[i].iters;
-        run.seconds += rows[i].seconds;
-        run.unconverged += !rows[i].converged;
-        if (isnan(run.jump_in_h0) && rows[i].branch > 0 && rows[i].a > 0)
-            run.jump_in_h0 = rows[i].h0;
-    }
-    run.nturns = path_turns(rows, n, run.turns, ADH_MAX_TURNS);
-    c.proto.nturns = run.nturns;
-    for (size_t i = 0; i < run.nturns; i++)
-        c.proto.turns[i] = run.turns[i].h0;
-
-    size_t idx[ADH_MAX_PROFILES];
-    static adh_profile prof[ADH_MAX_PROFILES];
-    size_t np = pick_profiles(rows, n, run.turns, run.nturns, idx, ADH_MAX_PROFILES);
-    for (size_t k = 0; k < np; k++) {
-        const adh_state *st = adh_history_state_at(s->hist, idx[k]);
-        prof[k] = (adh_profile){ .h0 = st->h0, .branch = rows[idx[k]].branch, .path = rows[idx[k]].path,
-                                 .u = st->u, .h = st->h, .p = st->p };
-        c.proto.profiles[k] = st->h0;
-    }
-    c.proto.nprofiles = np;
-    run.profiles = prof;
-    run.nprofiles = run.profiles_cap = np;
-
-    const char *dir = c.out_dir[0] ? c.out_dir : "adhere-plots";
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        say(t, 1, "cannot create the plot directory %s: %s", dir, strerror(errno));
-        return;
-    }
+    const char *dir = t->cfg.out_dir[0] ? t->cfg.out_dir : "adhere-plots";
     if (!t->headless) {
         say(t, 0, "writing plots to %s/ through gnuplot...", dir);
         draw(t);
     }
-    char msg[512] = "";
-    int rc = adh_plots_write(&c, &run, dir, msg, sizeof msg);
-    if (rc == 0)
+    char msg[600];
+    if (tui_plot_path(&t->sim, &t->cfg, dir, msg, sizeof msg) == 0)
         say(t, 0, "plots: %s", msg);   /* the writer names the files and the directory */
     else
-        say(t, 1, "plots not written to %s/: %s", dir, msg[0] ? msg : "gnuplot failed");
+        say(t, 1, "plots not written to %s/: %s", dir, msg);
 }
 
 static void param_changed(tui *t, tui_param p)

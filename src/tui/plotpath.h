@@ -1,0 +1,15 @@
+/* Plots of the TUI's path through the plot writer (src/plot/plot.h). */
+#ifndef ADH_TUI_PLOTPATH_H
+#define ADH_TUI_PLOTPATH_H
+
+#include <stddef.h>
+
+#include "scene/config.h"
+#include "tui/sim.h"
+
+/* Writes the plots of the path so far into dir (created if missing), with
+ * the session's current parameters and cfg's plot choices. 0 with the
+ * writer's account of what it wrote in msg, or -1 with why. */
+int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char *msg, size_t msglen);
+
+#endif
