@@ -133,7 +133,7 @@ static void stop_all(tui *t)
 static void start_step(tui *t, int dir, int stay)
 {
     char why[512];
-    if (!t->sim.w && !t->headless) {
+    if ((!t->sim.w || t->sim.grid_stale) && !t->headless) {
         /* The kernel is built on the first step; at large N that takes a
          * moment, so say so before the screen goes quiet. */
         say(t, 0, "building the kernel for N = %zu nodes...", t->sim.nodes);

@@ -101,6 +101,12 @@ check "editing A in the panel changes gamma" [ "$(gamma "$P/panel-A.txt")" != "$
 check "a bad typed value is named on the status line" grep -q "error: A: '5nm' is a length (m, nm, um, ...), but an energy" "$P/panel-edit.screen"
 check "a bad typed value changes nothing" sh -c "grep -q '>A     2e-19 J' '$P/panel-edit.screen' && [ \"\$(sed -n 3,15p '$P/panel-edit.screen')\" = \"\$(sed -n 3,15p '$P/panel-A.txt')\" ]"
 
+K=$W/scale-reset
+check "+ doubles E" grep -q "^  E     600 MPa" "$K/scale.txt"
+check "a count of 2 before - quarters A" grep -q "^ >A     2.5e-20 J" "$K/scale.txt"
+check "and sigma follows both" [ "$(sigma "$K/scale.txt")" = "σ 0.9378" ]
+check "x forgets the path" sh -c "grep -q 'path   0 states' '$K/scale-reset.screen' && grep -q '^reset: the path is forgotten' '$K/scale-reset.screen'"
+
 S=$W/steps
 check "30 steps of 0.5 nm reach contact" sh -c "grep 'contact radius' '$S/steps-in.txt' | grep -vq 'not in contact'"
 check "3 steps back are on the unloading branch" grep -q "branch unloading" "$S/steps.screen"
