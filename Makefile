@@ -10,7 +10,8 @@ CC      ?= cc
 CFLAGS  ?= -O2 -g
 WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wno-format-truncation
 PKGS     = gsl ncursesw inih openblas
-DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux
+DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux \
+           clang libclang-rt-14-dev
 
 # GSL through OpenBLAS's CBLAS, not the reference gslcblas (DESIGN.md section 4).
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
@@ -33,8 +34,8 @@ HARD_BIN = $(HARD_SRC:tests/hard/%.c=$(BUILD)/tests/hard-%)
 BENCH_SRC = $(wildcard tests/bench/*.c)
 BENCH_BIN = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/tests/bench-%)
 
-.PHONY: all deps run check check-unit check-hard check-cli check-replay check-man \
-        check-asan bench install uninstall clean
+.PHONY: all deps run check check-asan check-fuzz asan-build fuzz-build bench install \
+        uninstall clean
 
 all: deps adhere
 
@@ -73,8 +74,40 @@ $(BUILD)/tests/bench-%: tests/bench/%.c $(LIB)
 run: all
 	./adhere
 
-check: all $(UNIT_BIN) $(HARD_BIN)
-	@tests/run-all.sh $(BUILD)
+# One pass, one closing line: the tests, the C tests again under ASan and
+# UBSan, and a short fuzz pass over the parsers.
+check: all $(UNIT_BIN) $(HARD_BIN) asan-build fuzz-build
+	@ASAN_BUILD=build-asan FUZZ_BUILD=$(BUILD) tests/run-all.sh $(BUILD)
+
+SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+
+asan-build: deps
+	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="$(SAN_FLAGS)" \
+	  $(UNIT_SRC:tests/unit/%.c=build-asan/tests/%) $(HARD_SRC:tests/hard/%.c=build-asan/tests/hard-%)
+
+check-asan: asan-build
+	@ONLY=c tests/run-all.sh build-asan
+
+# libFuzzer targets, built with clang over the parsers' own sources.
+FUZZ_CC    = clang
+FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined $(CPPFLAGS) $(PKG_CFLAGS)
+FUZZ_BIN   = $(BUILD)/fuzz/fuzz_units $(BUILD)/fuzz/fuzz_scene $(BUILD)/fuzz/fuzz_replay
+CORE_SRC   = $(wildcard src/core/*.c)
+
+$(BUILD)/fuzz/fuzz_units: tests/fuzz/fuzz_units.c src/core/units.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ -lm
+$(BUILD)/fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(wildcard src/scene/*.c) $(CORE_SRC)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
+$(BUILD)/fuzz/fuzz_replay: tests/fuzz/fuzz_replay.c src/tui/replay.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
+
+fuzz-build: $(FUZZ_BIN)
+
+check-fuzz: fuzz-build
+	@BUILD=$(BUILD) tests/fuzz/run.sh
 
 bench: all $(BENCH_BIN)
 	@tests/bench/run.sh $(BUILD)
@@ -93,6 +126,6 @@ uninstall:
 	rm -rf $(DESTDIR)$(DATADIR)
 
 clean:
-	rm -rf $(BUILD) adhere
+	rm -rf $(BUILD) build-asan adhere
 
 -include $(LIB_OBJ:.o=.d) $(APP_OBJ:.o=.d)

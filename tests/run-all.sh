@@ -8,7 +8,19 @@ export LC_ALL=C.UTF-8 ADHERE_BIN="$PWD/adhere" ADHERE_SRC="$PWD" OPENBLAS_NUM_TH
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 pass=0 fail=0
-for t in "$BUILD"/tests/* tests/cli/*.sh tests/scenes/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh tests/asan/*.sh; do
+# ONLY=c: just the C programs (make check-asan). ASAN_BUILD: a second build
+# of the C tests under the sanitizers. FUZZ_BUILD: where the fuzzers are.
+if [ "${ONLY:-}" = c ]; then
+    set -- "$BUILD"/tests/*
+else
+    set -- "$BUILD"/tests/* tests/cli/*.sh tests/scenes/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh
+    [ -n "${ASAN_BUILD:-}" ] && set -- "$@" "$ASAN_BUILD"/tests/*
+    [ -n "${FUZZ_BUILD:-}" ] && set -- "$@" tests/fuzz/run.sh
+fi
+export BUILD=${FUZZ_BUILD:-$BUILD}
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+for t in "$@"; do
     [ -f "$t" ] && [ -x "$t" ] || continue
     case "$t" in *bench-*) continue ;; esac
     echo "# $t"

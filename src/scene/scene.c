@@ -255,9 +255,10 @@ static int prescan(const char *text, scene_parse *sp)
         }
         memcpy(buf, p, len);
         buf[len] = '\0';
+        p = eol ? eol + 1 : p + len; /* before the \r is dropped: a last line
+                                        "x\r" must still move p to its end */
         if (len && buf[len - 1] == '\r')
             buf[--len] = '\0';
-        p = eol ? eol + 1 : p + len;
         const char *t = buf;
         if (line == 1 && (unsigned char)t[0] == 0xEF && (unsigned char)t[1] == 0xBB && (unsigned char)t[2] == 0xBF)
             t += 3; /* a UTF-8 byte order mark */

@@ -1,0 +1,20 @@
+#!/bin/sh
+# A short libFuzzer pass over the three parsers that read user text: the
+# number/unit parser, scene files and replay scripts. Seeds in corpus/; the
+# pass is seconds long (FUZZ_SECONDS, default 5 each) and must find nothing.
+. "$(dirname "$0")/../cli/lib.sh"
+BUILD=${BUILD:-build}
+secs=${FUZZ_SECONDS:-5}
+for t in units scene replay; do
+    bin="$BUILD/fuzz/fuzz_$t"
+    if [ ! -x "$bin" ]; then not_ok "fuzz_$t was not built"; continue; fi
+    work="$TMP/$t"
+    mkdir -p "$work"
+    cp "$(dirname "$0")/corpus/$t"/* "$work"/
+    if "$bin" -max_total_time="$secs" -max_len=4096 -timeout=10 -artifact_prefix="$TMP/$t-" "$work" >"$TMP/$t.log" 2>&1; then
+        ok "fuzz_$t: $(grep -o 'Done [0-9]* runs' "$TMP/$t.log" | tail -1) in ${secs}s, no crash"
+    else
+        not_ok "fuzz_$t found a failure: $(grep -m3 -E 'ERROR|SUMMARY|abort' "$TMP/$t.log" | tr '\n' ' ')"
+    fi
+done
+done_testing
