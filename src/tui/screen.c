@@ -296,7 +296,7 @@ void tui_draw(const tui_sim *s, const tui_view *v)
  * fit w columns, continuation lines indented under it. */
 static int help_entry(char lines[][256], int n, int max, int w, const char *key, const char *what)
 {
-    const int indent = 11;
+    const int indent = 19;
     int room = w - indent > 20 ? w - indent : 20;
     const char *p = what;
     int first = 1;
@@ -310,7 +310,7 @@ static int help_entry(char lines[][256], int n, int max, int w, const char *key,
             if (take == 0)
                 take = room;
         }
-        snprintf(lines[n++], 256, "  %-8s %.*s", first ? key : "", take, p);
+        snprintf(lines[n++], 256, "  %-16s %.*s", first ? key : "", take, p);
         first = 0;
         p += take;
         while (*p == ' ')
@@ -328,9 +328,22 @@ int tui_draw_help(const tui_view *v)
     enum { MAX = 160 };
     static char lines[MAX][256];
     int n = 0;
+    /* One line per action, its keys together, with the first key's words:
+     * the aliases' own lines ("as f") would only repeat it. */
     for (const adh_key_binding *b = adh_key_table; b->action != ACT_NONE; b++) {
-        adh_replay_key_name(b->key, name, sizeof name);
-        n = help_entry(lines, n, MAX, W, name, b->what);
+        int seen = 0;
+        for (const adh_key_binding *e = adh_key_table; e < b; e++)
+            seen |= e->action == b->action;
+        if (seen)
+            continue;
+        char keys[64] = "";
+        for (const adh_key_binding *e = b; e->action != ACT_NONE; e++)
+            if (e->action == b->action) {
+                adh_replay_key_name(e->key, name, sizeof name);
+                size_t l = strlen(keys);
+                snprintf(keys + l, sizeof keys - l, "%s%s", l ? " " : "", name);
+            }
+        n = help_entry(lines, n, MAX, W, keys, b->what);
     }
     n = help_entry(lines, n, MAX, W, "1-9", "digits make a count for the next key: 10f steps ten times, 3j moves down three");
     if (n < MAX)
