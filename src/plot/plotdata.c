@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "adhere/params.h"
+#include "plot/plot.h"
 
 long adh_row_next_on_path(const adh_run *run, size_t i)
 {
@@ -229,4 +230,36 @@ int adh_write_contact_table(const adh_config *cfg, const adh_run *run, const cha
     free(dadt);
     free(smooth);
     return close_tmp(f, tmp, path, msg, msglen);
+}
+
+size_t adh_plot_default_profiles(const adh_config *cfg, double *out, size_t max)
+{
+    const adh_protocol_settings *ps = &cfg->proto;
+    double step = ps->step;
+    if (!(step > 0) || max == 0)
+        return 0;
+    double start = isnan(ps->start) ? adh_protocol_auto_start(&cfg->mat, step) : ps->start;
+    adh_derived d;
+    adh_material_derive(&cfg->mat, &d);
+    double lo = d.h_star;
+    for (size_t i = 0; i < ps->nturns; i++)
+        lo = i == 0 || ps->turns[i] < lo ? ps->turns[i] : lo;
+    double hi = 0.5 * start;
+    if (!(hi > lo))
+        hi = start;
+    if (!(hi > lo))
+        return 0;
+    size_t n = 0;
+    for (size_t j = 0; j < max; j++) {
+        double x = max == 1 ? lo : lo + (hi - lo) * (double)j / (double)(max - 1);
+        double k = round((start - x) / step);
+        if (k < 0)
+            k = 0;
+        double h = start - k * step;     /* exactly as the protocol computes it */
+        if (j == 0 && ps->nturns)
+            h = lo;                       /* turns are hit exactly, on their own */
+        if (n == 0 || fabs(out[n - 1] - h) > 0.5 * step)
+            out[n++] = h;
+    }
+    return n;
 }

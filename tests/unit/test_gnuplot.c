@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "adhere/params.h"
+#include "adhere/protocol.h"
 #include "plot/gnuplot.h"
 #include "plot/plot.h"
 #include "plot/plotdata.h"
@@ -483,6 +484,29 @@ static void test_data_dir(void)
     ok(rc == 0 && strstr(buf, "style.gp"), "the installed style.gp is found: %s", buf);
 }
 
+static void test_default_profiles(void)
+{
+    adh_config cfg;
+    adh_config_default(&cfg);
+    double pos[8];
+    size_t n = adh_plot_default_profiles(&cfg, pos, 6);
+    double start = adh_protocol_auto_start(&cfg.mat, cfg.proto.step);
+    ok(n == 6, "six default profile positions (got %zu)", n);
+    ok(n && pos[0] == cfg.proto.turns[0], "the first is the turn itself (%g)", n ? pos[0] : 0);
+    ok(n && fabs(pos[n - 1] - 0.5 * start) <= cfg.proto.step,
+       "the last is half the start (%g vs %g)", n ? pos[n - 1] : 0, 0.5 * start);
+    int on_grid = 1;
+    for (size_t i = 1; i < n; i++) {
+        double k = round((start - pos[i]) / cfg.proto.step);
+        on_grid &= pos[i] == start - k * cfg.proto.step && pos[i] > pos[i - 1];
+    }
+    ok(on_grid, "each lies exactly on the drive grid start - k d, rising");
+    cfg.proto.nturns = 0;
+    n = adh_plot_default_profiles(&cfg, pos, 4);
+    ok(n == 4 && pos[0] > 0, "with no turn they start near the jump separation (%g)",
+       n ? pos[0] : 0);
+}
+
 int main(void)
 {
     snprintf(work, sizeof work, "/tmp/adhere-test-gnuplot-XXXXXX");
@@ -492,6 +516,7 @@ int main(void)
     }
     setenv("TMPDIR", work, 1);
     test_contact_speed();
+    test_default_profiles();
     test_data_dir();
     test_missing();
     if (!have_gnuplot()) {
