@@ -610,9 +610,13 @@ static int screen_open(tui *t, char *why, size_t whylen)
         /* A fixed terminal type and size, whatever TERM, LINES and COLUMNS
          * say: the same script must give the same screen anywhere. */
         use_env(FALSE);
-        t->scr = newterm("vt100", t->fout, t->fin);
+        /* vt100 first (ncurses-base always has it); the screen text does
+         * not depend on which, only on curses having some entry. */
+        static const char *const types[] = { "vt100", "ansi", "xterm", "dumb" };
+        for (size_t i = 0; i < sizeof types / sizeof types[0] && !t->scr; i++)
+            t->scr = newterm(types[i], t->fout, t->fin);
         if (!t->scr) {
-            snprintf(why, whylen, "cannot start curses headless (no vt100 terminfo entry?)");
+            snprintf(why, whylen, "cannot start curses headless: no vt100, ansi, xterm or dumb terminfo entry");
             return -1;
         }
         set_term(t->scr);
