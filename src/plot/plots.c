@@ -662,7 +662,7 @@ static int plot_profile(plotter *pl)
     fprintf(c, "plot (htop + (x*1e-6)**2/(2*R))*1e9 with lines ls 5 "
                "title \"undeformed sphere, h_0 = %.3g nm\"", top * 1e9);
     int titled[ADH_MAX_PROFILES * 2] = { 0 };
-    int any_unload = 0;
+    int any_unload = 0, any_load = 0;
     /* loading first so each position's key entry is its solid curve */
     for (int pass = 0; pass < 2; pass++) {
         for (size_t k = 0; k < nsel; k++) {
@@ -674,18 +674,24 @@ static int plot_profile(plotter *pl)
             while (j + 1 < npos && fabs(pos[j] - pr->h0) > 1e-15)
                 j++;
             char title[96] = "notitle";
-            if (j < sizeof titled / sizeof titled[0] && !titled[j]) {
+            /* a key taller than the frame helps nobody: with many positions
+             * only the top and bottom ones are named */
+            int named = npos <= 16 || j == 0 || j + 1 == npos;
+            if (named && j < sizeof titled / sizeof titled[0] && !titled[j]) {
                 snprintf(title, sizeof title, "title \"h_0 = %.3g nm\"", pr->h0 * 1e9);
                 titled[j] = 1;
             }
             any_unload |= !loading;
+            any_load |= loading;
             fprintf(c, ", \\\n  %s index %zu using ($1*1e6):($2*1e9) with lines "
                        "lc rgb adh_pcol(%zu) "
                        "lw %s dt %d %s", qdat, k, j, loading ? "2" : "1.6", loading ? 1 : 2,
                     title);
         }
     }
-    fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 2 dt 1 title \"loading\"");
+    if (any_load)
+        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 2 dt 1 "
+                   "title \"loading\"");
     if (any_unload)
         fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 1.6 dt 2 "
                    "title \"unloading from h_0 = %.3g nm\"", main_turn->h0 * 1e9);
