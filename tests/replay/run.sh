@@ -143,6 +143,8 @@ U=$W/undo
 check "undo gives back the earlier state's numbers exactly" [ "$(state "$U/undo-back.txt")" = "$(state "$U/undo-32.txt")" ]
 check "redo gives back the later state's numbers exactly" [ "$(state "$U/undo-redo.txt")" = "$(state "$U/undo-33.txt")" ]
 check "the two states differ (the check above can fail)" [ "$(state "$U/undo-33.txt")" != "$(state "$U/undo-32.txt")" ]
+check "undo then the same step again gives the same numbers and iterations" \
+    [ "$(state "$W/undo-restep/restep-again.txt")" = "$(state "$W/undo-restep/restep-first.txt")" ]
 check "undo says how far it went" grep -q "undid 3 steps" "$U/undo-30.txt"
 check "a new step drops what could be redone" grep -q "error: nothing to redo" "$U/undo.screen"
 
