@@ -28,6 +28,12 @@ for h in -5 -3.5 -2 -0.5 1 2.5 4 5.5 7 8.5; do
 done
 n=$(rows "$d/profiles.tsv" | cut -f1,2 | awk -F'\t' '{printf "%.4f %s\n", $1*1e9, $2}' | sort -u | wc -l)
 check "fig4 stored profiles only at the positions asked ($n position-branch pairs, want 20)" [ "$n" -eq 20 ]
+planned=$("$ADHERE" --plan fig4 -N 100 --eps=3pm | sed -n 's/^loading branches: 1 (from .* to -5 nm, \([0-9]*\) steps)$/\1/p')
+loaded=$(rows "$d/force.tsv" | awk -F'\t' '$9 == 0' | wc -l)
+check "fig4: the plan's loading steps are the run's ($planned planned, $loaded run)" [ "$planned" = "$loaded" ]
+bound=$("$ADHERE" --plan fig4 -N 100 | sed -n 's/^steps: .* + at most \([0-9]*\) unloading$/\1/p')
+unloaded=$(rows "$d/force.tsv" | awk -F'\t' '$9 != 0' | wc -l)
+check "fig4: the unloading stays within the plan's bound ($unloaded <= $bound)" [ "$unloaded" -le "$bound" ]
 check "fig4 turns at -5 nm" awk -F'\t' '!/^#/ && $1+0 == $1 && $1 < -4.99e-9 && $1 > -5.01e-9 {f=1} END {exit !f}' "$d/turns.tsv"
 
 # Figure 1: approach into contact to -2 nm, no unloading, the eq 23 inset.
@@ -49,6 +55,9 @@ run fig2 "$d"
 check "fig2 wrote bulge.png" [ -s "$d/bulge.png" ]
 incontact=$(rows "$d/force.tsv" | awk -F'\t' '$5 > 0' | wc -l)
 check "fig2 stops at the jump: one row in contact ($incontact)" [ "$incontact" -eq 1 ]
+est=$("$ADHERE" --plan fig2 -N 100 | sed -n 's/.*ends at the jump into contact, about \([0-9]*\) steps)$/\1/p')
+got=$(rows "$d/force.tsv" | wc -l)
+check "fig2: the plan's estimate of the steps to the jump is within 10% ($est planned, $got run)" awk "BEGIN {exit !($est > 0.9 * $got && $est < 1.1 * $got)}"
 check "fig2 has no turns.tsv" [ ! -e "$d/turns.tsv" ]
 
 # Figure 3: the sigma sweep, in parallel, one row per run.
