@@ -27,6 +27,9 @@
 
 static volatile sig_atomic_t got_signal;
 
+/* Exit statuses, as the man page's EXIT STATUS gives them for every mode. */
+enum { EXIT_OK = 0, EXIT_BAD_INPUT = 2, EXIT_INTERRUPTED = 130 };
+
 /* Only a flag here: curses is not async-signal-safe; the loop ends cleanly. */
 static void on_signal(int sig)
 {
@@ -506,7 +509,7 @@ static void handle_item(tui *t, const adh_replay_item *it)
     if (run_command(t, it, why, sizeof why) != 0) {
         /* A script that asks for the impossible is a broken script. */
         snprintf(t->fatal, sizeof t->fatal, "%s:%d: %s", t->keys.file, it->line, why);
-        t->exit_code = 2;
+        t->exit_code = EXIT_BAD_INPUT;
         t->quit = 1;
     }
 }
@@ -561,7 +564,7 @@ static void loop(tui *t)
     adh_replay_item it;
     while (!t->quit) {
         if (got_signal) {
-            t->exit_code = 128 + got_signal;
+            t->exit_code = EXIT_INTERRUPTED;   /* SIGINT or SIGTERM, as --batch */
             snprintf(t->fatal, sizeof t->fatal, "adhere: stopped by signal %d", (int)got_signal);
             break;
         }
@@ -684,7 +687,7 @@ int adh_tui_main(const adh_config *cfg)
     if (t.headless) {
         if (tui_keysrc_replay(&t.keys, cfg->replay, why, sizeof why) != 0) {
             fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
-            return 2;
+            return EXIT_BAD_INPUT;
         }
     } else {
         tui_keysrc_terminal(&t.keys);
@@ -692,7 +695,7 @@ int adh_tui_main(const adh_config *cfg)
     if (tui_sim_init(&t.sim, cfg, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         tui_keysrc_free(&t.keys);
-        return 2;
+        return EXIT_BAD_INPUT;
     }
     t.view.utf8 = locale_utf8(t.headless);
     t.view.no_clock = cfg->no_clock;
@@ -713,7 +716,7 @@ int adh_tui_main(const adh_config *cfg)
         fprintf(stderr, "adhere: %s\n", why);
         tui_sim_free(&t.sim);
         tui_keysrc_free(&t.keys);
-        return 1;
+        return EXIT_BAD_INPUT;   /* no terminal to run on: a usage error */
     }
     if (cfg->mode != ADH_MODE_RELAX)
         say(&t, 0, "The screen relaxes step by step as the paper does; --mode=%s is for --batch. ? lists every key.",
@@ -727,7 +730,7 @@ int adh_tui_main(const adh_config *cfg)
         draw(&t);
         if (tui_dump_screen(cfg->screen, why, sizeof why) != 0) {
             snprintf(t.fatal, sizeof t.fatal, "adhere: %s", why);
-            t.exit_code = 1;
+            t.exit_code = EXIT_BAD_INPUT;   /* an unwritable output */
         }
     }
     screen_close(&t);
