@@ -223,7 +223,11 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++)
             if (cfg->plots & figs[i].bit) {
                 snprintf(what, sizeof what, "%s%s", prefix, figs[i].file);
-                note(p->stored, &p->nstored, what, "%s", figs[i].what);
+                /* the plot module skips a profile figure with no profile in it */
+                if (figs[i].bit == ADH_PLOT_PROFILE && !p->profiles_stored)
+                    note(p->skipped, &p->nskipped, what, "profile is in plots but no profile is stored");
+                else
+                    note(p->stored, &p->nstored, what, "%s", figs[i].what);
             }
     }
     if (p->nruns > 1 || cfg->sweep.kind) {
