@@ -69,7 +69,6 @@ static void new_path(tui_sim *s)
     s->start = isnan(s->start_opt) ? adh_protocol_auto_start(&s->mat, s->step) : s->start_opt;
     s->busy = 0;
     s->solving_start = 0;
-    s->unconverged = 0;
     s->warn[0] = '\0';
     if (s->hist)
         adh_history_clear(s->hist);
@@ -395,10 +394,8 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
         return ADH_ENOMEM;
     }
     s->warn[0] = '\0';
-    if (!o.converged) {
-        s->unconverged++;
+    if (!o.converged)
         snprintf(s->warn, sizeof s->warn, "not converged: the cap of %zu iterations was hit", o.iters);
-    }
     if (o.a >= 0.9 * s->g->rmax) {
         s->busy = 0;
         s->solving_start = 0;

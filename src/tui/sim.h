@@ -58,7 +58,6 @@ typedef struct tui_sim {
     int dir;                   /* +1 approach (loading), -1 retract */
     double target;
     double t0;
-    size_t unconverged;        /* steps on the path that hit the iteration cap */
     char warn[256];            /* about the last step; "" when fine */
     char gridwarn[512];        /* why the grid may not hold the run to the turn; "" */
 } tui_sim;
