@@ -769,6 +769,12 @@ static int plot_contact(plotter *pl)
     if (data_close(pl, f, dat) < 0 || df.bad)
         goto out;
 
+    /* µm/s as in Figure 8, mm/s when a large sphere makes that unwieldy */
+    double vmax = 0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(smooth[i]))
+            vmax = fmax(vmax, fabs(smooth[i]));
+    int in_mm = vmax >= 2e-3;
     double step = fabs(pl->cfg->proto.step);
     double xpad = fmax(0.03 * (xmax - xmin), 2 * step);
     char heading[1200], what[96];
@@ -792,7 +798,9 @@ static int plot_contact(plotter *pl)
             adh_gnuplot_cmd(pl->gp, "unset xlabel");
             adh_gnuplot_cmd(pl->gp, "set bmargin 1");
             adh_gnuplot_cmd(pl->gp, "set tmargin 0.5");
-            adh_gnuplot_cmd(pl->gp, "set ylabel \"contact-line speed da/dt (µm/s)\"");
+            adh_gnuplot_cmd(pl->gp, "set ylabel \"contact-line speed da/dt (%s)\"",
+                            in_mm ? "mm/s" : "µm/s");
+            adh_gnuplot_cmd(pl->gp, "Vu = %g", in_mm ? 1e3 : 1e6);
             adh_gnuplot_cmd(pl->gp, "set key bottom left");
         } else {
             adh_gnuplot_cmd(pl->gp, "set origin 0,0");
@@ -837,11 +845,11 @@ static int plot_contact(plotter *pl)
             if (panel == 0) {
                 /* step by step, thin and pale; the smoothed speed on top */
                 if (set[3 * p] >= 0)
-                    fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s "
+                    fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Vu) with lines %s "
                                "lw 0.6 notitle", qdat, set[3 * p],
                             p == 0 ? "lc rgb \"#9aa9cf\"" : lc);
                 if (set[3 * p + 1] >= 0)
-                    fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s "
+                    fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Vu) with lines %s "
                                "lw %s %s", qdat, set[3 * p + 1], lc, width, title);
             } else if (set[3 * p + 2] >= 0) {
                 fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s lw %s "
