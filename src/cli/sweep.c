@@ -42,10 +42,14 @@ typedef struct sweep_job {
     const adh_kernel *kernel;  /* shared, read-only: apply takes a scratch per call */
     adh_run *runs;
     int *status;               /* adh status of each run */
+    const char *out;           /* DIR, or NULL: nothing but sweep.tsv on stdout */
+    int *tables;               /* exit status of writing run i's tables; -1 not yet */
     size_t next;               /* the next run to start, under lock */
     size_t done;
     pthread_mutex_t lock;
 } sweep_job;
+
+static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, int rc, const char *out);
 
 static void *worker(void *arg)
 {
@@ -63,6 +67,9 @@ static void *worker(void *arg)
         job->status[i] = rc.mode == ADH_MODE_RIGID
                        ? adh_rigid_run(&rc, on_step, NULL, run)
                        : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, on_step, NULL, run);
+        /* tables as soon as a run ends: a long sweep killed later keeps them */
+        if (job->out)
+            job->tables[i] = write_tables(cfg, i, run, job->status[i], job->out);
         pthread_mutex_lock(&job->lock);
         job->done++;
         if (!cfg->quiet)
@@ -167,8 +174,8 @@ static int make_dir(const char *dir, char *why, size_t n)
     return 0;
 }
 
-/* Tables and figures of run i in out/run-K. Returns an exit status. */
-static int write_run(const adh_config *cfg, size_t i, const adh_run *run, int rc, const char *out)
+/* Tables of run i in out/run-K. Returns an exit status. */
+static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, int rc, const char *out)
 {
     char dir[PATH_MAX + 32], why[1024], note[256] = "";
     adh_config rcfg;
@@ -192,9 +199,18 @@ static int write_run(const adh_config *cfg, size_t i, const adh_run *run, int rc
     }
     if (partial)
         return run->interrupted ? ADH_EXIT_INTERRUPTED : ADH_EXIT_SOLVER;
+    return ADH_EXIT_OK;
+}
+
+/* Figures of run i in out/run-K (its tables are there). An exit status. */
+static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, const char *out)
+{
+    char dir[PATH_MAX + 32], msg[1024] = "";
+    adh_config rcfg;
+    adh_config_sweep_run(cfg, i, &rcfg);
+    snprintf(dir, sizeof dir, "%s/run-%zu", out, i + 1);
     if (!cfg->plot)
         return ADH_EXIT_OK;
-    char msg[1024] = "";
     int status = ADH_EXIT_OK;
     /* the plot module's figures only when one is asked: a sweep of many runs
      * should not draw what nobody wants */
@@ -254,17 +270,19 @@ int adh_sweep_main(const adh_cli *cli)
     }
     adh_run *runs = calloc(n, sizeof *runs);
     int *status = calloc(n, sizeof *status);
+    int *tables = calloc(n, sizeof *tables);
     int jobs = adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
-    if (!runs || !status || !threads) {
+    if (!runs || !status || !tables || !threads) {
         fprintf(stderr, "adhere: out of memory for %zu runs\n", n);
-        free(runs), free(status), free(threads);
+        free(runs), free(status), free(tables), free(threads);
         adh_kernel_free(k), adh_grid_free(g);
         return ADH_EXIT_SOLVER;
     }
     for (size_t i = 0; i < n; i++) {
         adh_run_init(&runs[i]);
         status[i] = ADH_SUCCESS;
+        tables[i] = -1;
     }
     if (jobs > 1)
         openblas_set_num_threads(1);
@@ -275,7 +293,7 @@ int adh_sweep_main(const adh_cli *cli)
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
 
-    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .status = status };
+    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .status = status, .out = out, .tables = tables };
     pthread_mutex_init(&job.lock, NULL);
     int started = 0;
     for (int t = 0; t < jobs; t++)
@@ -305,8 +323,13 @@ int adh_sweep_main(const adh_cli *cli)
     if (!out) {
         adh_write_sweep_table(stdout, cfg, runs, status);
     } else {
-        for (size_t i = 0; i < n; i++)
-            exit_status = worse(exit_status, write_run(cfg, i, &runs[i], status[i], out));
+        for (size_t i = 0; i < n; i++) {
+            if (tables[i] < 0) /* never started: its tables say interrupted */
+                tables[i] = write_tables(cfg, i, &runs[i], status[i], out);
+            exit_status = worse(exit_status, tables[i]);
+            if (tables[i] == ADH_EXIT_OK)
+                exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], out));
+        }
         if (adh_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             exit_status = worse(exit_status, ADH_EXIT_USAGE);
@@ -320,7 +343,7 @@ int adh_sweep_main(const adh_cli *cli)
     }
     for (size_t i = 0; i < n; i++)
         adh_run_free(&runs[i]);
-    free(runs), free(status), free(threads);
+    free(runs), free(status), free(tables), free(threads);
     adh_kernel_free(k);
     adh_grid_free(g);
     return exit_status;
