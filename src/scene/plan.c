@@ -197,7 +197,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         note(p->skipped, &p->nskipped, "relaxation", "mode = static: the equilibrium curve is followed by continuation, no eps steps");
 
     /* what is stored */
-    const char *prefix = p->nruns > 1 ? "run-K/" : "";
+    const char *prefix = cfg->sweep.kind ? "run-K/" : "";
     char what[64];
     snprintf(what, sizeof what, "%sforce.tsv", prefix);
     note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
@@ -231,7 +231,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
             }
     }
     if (p->nruns > 1 || cfg->sweep.kind) {
-        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: %s, sigma, jump_in_h0, h_before, h_star, pulloff_F, iterations, seconds",
+        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, E, sigma, eps, jump_in_h0, h_before, h_star, max_load, pulloff_F, iterations, seconds, jumped",
              adh_sweep_name(cfg->sweep.kind));
         if (cfg->plot && cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP)
             note(p->stored, &p->nstored, "jump.png", "jump separation vs sigma against eq 24 (Figure 3)");
