@@ -1,8 +1,6 @@
 #include "adhere/equilibrium.h"
 
 #include <gsl/gsl_cblas.h>
-#include <gsl/gsl_linalg.h>
-#include <gsl/gsl_permutation.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,12 +24,19 @@
  * bordered matrix, and by Cramer det J = det B * t_h / rhs for the tangent
  * solve (G = 0): so det J's sign costs nothing beyond the tangent. */
 
+/* LAPACK's LU from OpenBLAS (linked with it, DESIGN.md section 4): blocked
+ * and tuned, several times faster than gsl_linalg_LU_decomp at these sizes,
+ * which is the cost that dominates at large sigma. */
+extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
+
 #define ADH_GMRES_MAX 40   /* Krylov dimension before the LU is refreshed */
+#ifndef ADH_GMRES_FRESH /* more iterations than this: refactorize for next time */
+#define ADH_GMRES_FRESH 6
+#endif
 
 typedef struct lin {
     double *B;       /* LU of the (m+1)^2 bordered matrix */
-    size_t *perm;
-    int signum;
+    int *perm;       /* LAPACK pivots, 1-based */
     int det_sign;    /* sign of det B */
     size_t m;        /* active prefix */
     double *D;       /* p'(h) at the linearization point, all N nodes */
@@ -55,15 +60,18 @@ struct adh_static {
     adh_state *trial; /* the point being corrected */
     double *tau_u, tau_h;          /* unit tangent at st */
     double *tau_u_new, tau_h_new;  /* tangent at trial */
-    lin L[3];         /* L[cur]: at st with normal = previous tangent; others scratch */
-    int cur;
+    lin P;            /* the preconditioner: LU of the truncated bordered
+                         system at some recent point, refreshed when GMRES
+                         needs more than ADH_GMRES_FRESH iterations with it */
+    double *Dst, *gst, *Dtr, *gtr; /* p'(h) and dG/dh0 at st and at trial */
+    int det_sign;     /* sign of det J at st */
+    int det_b_sign;   /* sign of det B, invariant along the curve */
 
     double *G, *du, *y, *t, *t2, *upred, *scratch, *rG, *bG, *dx, *Dc, *gc, *zero, *gz, *V;
     double act;       /* active-set threshold in use (lowered when the
                          preconditioned solve stops contracting) */
     double ds;
     double s_arc;
-    int det_b_sign;   /* invariant along the curve (see above) */
     int stable;
     double F, dFds;   /* force and its arclength derivative at st */
     size_t newton_point;
@@ -84,6 +92,7 @@ adh_static_settings adh_static_settings_default(void)
         .ds_max = 5.0,
         .u_weight = 1.0,
         .max_angle = 0.4,
+        .max_gap_step = 0.25,
         .active_tol = 1e-2,
         .h0_start = NAN,
         .h0_end = -5e-9,
@@ -105,6 +114,8 @@ int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t
         BAD("u_weight %g is not allowed: it must be finite and above 0", s->u_weight);
     if (!(s->max_angle > 0 && s->max_angle < 1.5))
         BAD("max_angle %g rad is not allowed: it must be above 0 and below 1.5", s->max_angle);
+    if (!(s->max_gap_step >= 0 && s->max_gap_step < 100))
+        BAD("max_gap_step %g is not allowed: it must be from 0 (off) to 100 (units of z0)", s->max_gap_step);
     if (!(s->active_tol >= 0 && s->active_tol < 0.1))
         BAD("active_tol %g is not allowed: it must be from 0 to 0.1", s->active_tol);
     if (!isnan(s->h0_start) && !(isfinite(s->h0_start) && s->h0_start > s->h0_end))
@@ -151,8 +162,7 @@ void adh_static_free(adh_static *w)
     free(w->colnorm);
     adh_state_free(w->st);
     adh_state_free(w->trial);
-    for (int i = 0; i < 3; i++)
-        lin_free(&w->L[i]);
+    lin_free(&w->P);
     free(w->G);
     free(w->folds);
     free(w);
@@ -172,22 +182,23 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     w->st = adh_state_alloc(n);
     w->trial = adh_state_alloc(n);
     /* G, du, y, t, t2, upred, scratch, tau_u, tau_u_new, rG, bG, dx, Dc, gc,
-     * zero, gz: n + 1 each; the GMRES basis */
-    w->G = calloc(16 * (n + 1) + (ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
+     * zero, gz, Dst, gst, Dtr, gtr: n + 1 each; the GMRES basis */
+    w->G = calloc(20 * (n + 1) + (ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
     w->folds = malloc(ADH_STATIC_MAX_FOLDS * sizeof *w->folds);
     int bad = !w->W || !w->colnorm || !w->st || !w->trial || !w->G || !w->folds;
-    for (int i = 0; i < 3 && !bad; i++)
-        bad = lin_alloc(&w->L[i], n) != ADH_SUCCESS;
+    if (!bad)
+        bad = lin_alloc(&w->P, n) != ADH_SUCCESS;
     if (bad) {
         adh_static_free(w);
         return NULL;
     }
     w->shape = w->colnorm + n;
     double **bufs[] = { &w->G, &w->du, &w->y, &w->t, &w->t2, &w->upred, &w->scratch, &w->tau_u,
-                        &w->tau_u_new, &w->rG, &w->bG, &w->dx, &w->Dc, &w->gc, &w->zero, &w->gz };
+                        &w->tau_u_new, &w->rG, &w->bG, &w->dx, &w->Dc, &w->gc, &w->zero, &w->gz,
+                        &w->Dst, &w->gst, &w->Dtr, &w->gtr };
     for (size_t i = 1; i < sizeof bufs / sizeof *bufs; i++)
         *bufs[i] = w->G + i * (n + 1);
-    w->V = w->G + 16 * (n + 1);
+    w->V = w->G + 20 * (n + 1);
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < n; j++) {
             double v = adh_kernel_entry(k, i, j);
@@ -252,12 +263,16 @@ static int linearize(adh_static *w, const adh_state *x, const double *nu, double
     for (size_t j = 0; j < m; j++)
         B[m * ld + j] = th * q[j] * L->D[j];
     B[m * ld + m] = nh - th * ng;
-    gsl_matrix_view V = gsl_matrix_view_array(B, ld, ld);
-    gsl_permutation P = { ld, L->perm };
-    if (gsl_linalg_LU_decomp(&V.matrix, &P, &L->signum) != 0)
-        return ADH_ENAN;
-    int sg = L->signum;
+    /* The row-major B is, to LAPACK, the column-major B^T = P L U: the
+     * same determinant, and B x = b is solved as U^T L^T P^T x = b. */
+    int nn = (int)ld, info = 0;
+    dgetrf_(&nn, &nn, B, &nn, L->perm, &info);
+    if (info < 0)
+        return ADH_EINVAL;
+    int sg = 1;
     for (size_t i = 0; i < ld; i++) {
+        if (L->perm[i] != (int)i + 1)
+            sg = -sg;
         double d = B[i * ld + i];
         if (d == 0 || !isfinite(d))
             return ADH_ESTALL; /* exactly singular: not a simple fold */
@@ -282,10 +297,14 @@ static void precond(adh_static *w, const lin *L, const double *bG, double bc, do
     for (size_t i = 0; i < m; i++)
         y[i] = bG[i];
     y[m] = bc - th * nb;
-    gsl_matrix_const_view V = gsl_matrix_const_view_array(L->B, ld, ld);
-    gsl_permutation P = { ld, L->perm };
-    gsl_vector_view Y = gsl_vector_view_array(y, ld);
-    gsl_linalg_LU_svx(&V.matrix, &P, &Y.vector);
+    cblas_dtrsv(CblasColMajor, CblasUpper, CblasTrans, CblasNonUnit, (int)ld, L->B, (int)ld, y, 1);
+    cblas_dtrsv(CblasColMajor, CblasLower, CblasTrans, CblasUnit, (int)ld, L->B, (int)ld, y, 1);
+    for (size_t i = ld; i-- > 0;) {
+        size_t p = (size_t)L->perm[i] - 1;
+        double tmp = y[i];
+        y[i] = y[p];
+        y[p] = tmp;
+    }
     double dh = y[m];
     for (size_t j = 0; j < m; j++)
         w->t[j] = L->D[j] * y[j];
@@ -324,7 +343,7 @@ static void op_apply(adh_static *w, const op *A, const double *du, double dh, do
  * for a new LU. The unknowns and right side are packed as n + 1 numbers
  * (du, dh0). ADH_CONTINUE when ADH_GMRES_MAX iterations do not reach rtol:
  * L is then too far from A. */
-static int solve(adh_static *w, const op *A, const lin *L, const double *b, double rtol, double *x)
+static int solve(adh_static *w, const op *A, const lin *L, const double *b, double rtol, double *x, int *its)
 {
     size_t n = w->n, n1 = n + 1;
     const int km = ADH_GMRES_MAX;
@@ -333,6 +352,7 @@ static int solve(adh_static *w, const op *A, const lin *L, const double *b, doub
     double gv[ADH_GMRES_MAX + 1], yv[ADH_GMRES_MAX];
     double beta = cblas_dnrm2((int)n1, b, 1);
     memset(x, 0, n1 * sizeof *x);
+    *its = 0;
     if (beta == 0)
         return ADH_SUCCESS;
     for (size_t i = 0; i < n1; i++)
@@ -371,6 +391,7 @@ static int solve(adh_static *w, const op *A, const lin *L, const double *b, doub
         gv[j] = cs[j] * gv[j];
         resid = fabs(gv[j + 1]);
         k = j + 1;
+        *its = k;
         w->res.krylov_iterations++;
         if (resid <= rtol * beta || hn == 0)
             break;
@@ -396,41 +417,62 @@ static int solve(adh_static *w, const op *A, const lin *L, const double *b, doub
     return resid <= rtol * beta ? ADH_SUCCESS : ADH_CONTINUE;
 }
 
-/* Unit tangent at the point of L (normal = previous tangent), oriented so
- * that it continues that tangent; returns sign(det J) via Cramer, or 0 when
- * the solve failed. */
-static int tangent(adh_static *w, lin *L, const adh_state *x, double *tu, double *th_out)
+/* p'(h) and g = dG/dh0 = (2/E) W p' at x (h current). */
+static void point_jacobian(adh_static *w, const adh_state *x, double *D, double *g)
 {
-    size_t n = w->n;
-    double z0 = w->m.z0, th = w->s.u_weight, dh;
-    for (int tries = 0;; tries++) {
-        op A = { L->D, L->g, L->nu, L->nh };
-        w->zero[n] = z0;
-        int rc = solve(w, &A, L, w->zero, 1e-10, w->du);
-        w->zero[n] = 0;
-        if (rc == ADH_SUCCESS) {
-            memcpy(tu, w->du, n * sizeof *tu);
-            dh = w->du[n];
-            break;
-        }
-        /* the truncation is too coarse here: take more nodes in */
-        if (tries == 3)
-            return 0;
-        w->act *= 0.1;
-        double *nu = w->dx; /* linearize copies nu into L: keep a copy */
-        memcpy(nu, L->nu, n * sizeof *nu);
-        if (linearize(w, x, nu, L->nh, L) != ADH_SUCCESS)
-            return 0;
+    for (size_t i = 0; i < w->n; i++)
+        D[i] = adh_lj_dpressure(x->h[i], w->m.A, w->m.z0);
+    adh_kernel_apply(w->k, D, g, w->scratch);
+    for (size_t i = 0; i < w->n; i++)
+        g[i] *= w->c2E;
+}
+
+/* A out = b by GMRES with the preconditioner P; when P has grown stale
+ * (slow or failed), it is refactorized at x, with more nodes in if even
+ * that fails (the truncation was too coarse). */
+static int solve_at(adh_static *w, const op *A, const adh_state *x, const double *b, double rtol, double *out)
+{
+    int its;
+    int rc = solve(w, A, &w->P, b, rtol, out, &its);
+    if (rc == ADH_SUCCESS && its <= ADH_GMRES_FRESH)
+        return ADH_SUCCESS;
+    for (int tries = 0; tries < 3; tries++) {
+        int lrc = linearize(w, x, A->nu, A->nh, &w->P);
         w->res.factorizations++;
+        if (lrc != ADH_SUCCESS)
+            return lrc;
+        if (rc == ADH_SUCCESS)
+            return ADH_SUCCESS; /* solved, slowly: the new P is for next time */
+        rc = solve(w, A, &w->P, b, rtol, out, &its);
+        if (rc == ADH_SUCCESS)
+            return ADH_SUCCESS;
+        w->act *= 0.1;
     }
-    double nrm = dh * dh;
+    return ADH_EMAXITER;
+}
+
+/* Unit tangent at x (D, g there), oriented to continue the current tangent
+ * (the bordering row is the current tangent, right side 1). */
+static int tangent(adh_static *w, const adh_state *x, const double *D, const double *g, double *tu, double *th_out)
+{
+    /* P must be factorized at x with the current tangent as its last row:
+     * then det J = det B * t_h (Cramer) and GMRES converges at once. */
+    size_t n = w->n;
+    double z0 = w->m.z0, th = w->s.u_weight;
+    op A = { D, g, w->tau_u, w->tau_h };
+    w->zero[n] = z0;
+    int rc = solve_at(w, &A, x, w->zero, 1e-10, w->du);
+    w->zero[n] = 0;
+    if (rc != ADH_SUCCESS)
+        return rc;
+    double dh = w->du[n], nrm = dh * dh;
     for (size_t i = 0; i < n; i++)
-        nrm += th * tu[i] * tu[i];
+        nrm += th * w->du[i] * w->du[i];
     nrm = sqrt(nrm); /* in metres: the tangent is (du, dh0) / nrm, dimensionless */
     for (size_t i = 0; i < n; i++)
-        tu[i] /= nrm;
+        tu[i] = w->du[i] / nrm;
     *th_out = dh / nrm;
-    return (dh > 0 ? 1 : -1) * L->det_sign;
+    return ADH_SUCCESS;
 }
 
 static double metric_dot(const adh_static *w, const double *au, double ah, const double *bu, double bh)
@@ -442,11 +484,10 @@ static double metric_dot(const adh_static *w, const double *au, double ah, const
 }
 
 /* Newton corrector from the predictor st + ds tau on the hyperplane through
- * it normal to base's constraint normal (or h0 = h0_fix when fix is set).
- * Each Newton step uses the exact Jacobian at the iterate, solved with the
- * LU of base as preconditioner; the LU is refreshed at the iterate when the
- * preconditioned solve stops contracting. The converged point is left in trial. */
-static int correct(adh_static *w, double ds, const lin *base, int fix, double h0_fix, size_t *iters)
+ * it normal to tau (Keller's pseudo-arclength), or on h0 = h0_fix when fix
+ * is set. Each Newton step uses the exact Jacobian at the iterate, solved
+ * by GMRES with the LU preconditioner. The converged point is left in trial. */
+static int correct(adh_static *w, double ds, int fix, double h0_fix, size_t *iters)
 {
     size_t n = w->n;
     double z0 = w->m.z0, th = w->s.u_weight;
@@ -456,9 +497,9 @@ static int correct(adh_static *w, double ds, const lin *base, int fix, double h0
     x->h0 = fix ? h0_fix : w->st->h0 + ds * z0 * w->tau_h;
     memcpy(w->upred, x->u, n * sizeof *x->u);
     double h0pred = x->h0;
-    const lin *L = base;
+    const double *nu = fix ? w->zero : w->tau_u;
+    double nh = fix ? 1.0 : w->tau_h;
     double prev = INFINITY;
-    size_t refresh = 0;
     for (size_t it = 0;; it++) {
         double r = evaluate(w, x);
         if (r < 0)
@@ -474,36 +515,19 @@ static int correct(adh_static *w, double ds, const lin *base, int fix, double h0
         if (it >= 3 && r > 0.5 * prev)
             return ADH_EMAXITER;
         prev = r;
-        for (size_t i = 0; i < n; i++)
-            w->Dc[i] = adh_lj_dpressure(x->h[i], w->m.A, w->m.z0);
-        adh_kernel_apply(w->k, w->Dc, w->gc, w->scratch);
-        for (size_t i = 0; i < n; i++)
-            w->gc[i] *= w->c2E;
+        point_jacobian(w, x, w->Dc, w->gc);
         /* the constraint's current residual, metres */
-        double c = base->nh * (x->h0 - h0pred);
-        if (!fix) {
-            double cu = 0;
-            for (size_t i = 0; i < n; i++)
-                cu += base->nu[i] * (x->u[i] - w->upred[i]);
-            c += th * cu;
-        }
+        double cu = 0;
+        for (size_t i = 0; i < n; i++)
+            cu += nu[i] * (x->u[i] - w->upred[i]);
+        double c = nh * (x->h0 - h0pred) + th * cu;
         for (size_t i = 0; i < n; i++)
             w->bG[i] = -w->G[i];
         w->bG[n] = -c;
-        op A = { w->Dc, w->gc, base->nu, base->nh };
-        while (solve(w, &A, L, w->bG, 1e-6, w->du) != ADH_SUCCESS) {
-            /* the preconditioner is too far from here: refactorize here,
-             * then take more nodes in */
-            if (++refresh > 4)
-                return ADH_EMAXITER;
-            if (L == &w->L[2])
-                w->act *= 0.1;
-            int rc = linearize(w, x, base->nu, base->nh, &w->L[2]);
-            w->res.factorizations++;
-            if (rc != ADH_SUCCESS)
-                return rc;
-            L = &w->L[2];
-        }
+        op A = { w->Dc, w->gc, nu, nh };
+        int rc = solve_at(w, &A, x, w->bG, 1e-6, w->du);
+        if (rc != ADH_SUCCESS)
+            return rc;
         double dh = w->du[n];
         (*iters)++;
         w->res.newton_iterations++;
@@ -531,11 +555,11 @@ static double force_of(const adh_static *w, const adh_state *x)
 }
 
 /* dF/ds along the unit tangent: F = 2 pi dr sum r p, dh = dh0 - du. */
-static double force_slope(const adh_static *w, const lin *L, const double *tu, double th)
+static double force_slope(const adh_static *w, const double *D, const double *tu, double th)
 {
     double s = 0, z0 = w->m.z0;
     for (size_t i = 0; i < w->n; i++)
-        s += w->grid->r[i] * L->D[i] * z0 * (th - tu[i]);
+        s += w->grid->r[i] * D[i] * z0 * (th - tu[i]);
     return 2.0 * M_PI * w->grid->dr * s;
 }
 
@@ -612,9 +636,9 @@ static void record(adh_static *w, double h0a, double tha, double Fa, double dFa,
     }
 }
 
-/* Makes trial (with its tangent in tau_*_new and linearization in L[nx])
- * the current point. */
-static void accept(adh_static *w, int nx, int det_j_sign)
+/* Makes trial (tangent in tau_*_new, Jacobian data in Dtr, gtr, det J's
+ * sign in det_sign) the current point. */
+static void accept(adh_static *w)
 {
     size_t n = w->n;
     double z0 = w->m.z0;
@@ -630,10 +654,15 @@ static void accept(adh_static *w, int nx, int det_j_sign)
     w->tau_u = w->tau_u_new;
     w->tau_u_new = tt;
     w->tau_h = w->tau_h_new;
-    w->cur = nx;
-    w->stable = det_j_sign > 0;
+    tt = w->Dst;
+    w->Dst = w->Dtr;
+    w->Dtr = tt;
+    tt = w->gst;
+    w->gst = w->gtr;
+    w->gtr = tt;
+    w->stable = w->det_sign > 0;
     w->F = force_of(w, w->st);
-    w->dFds = force_slope(w, &w->L[nx], w->tau_u, w->tau_h);
+    w->dFds = force_slope(w, w->Dst, w->tau_u, w->tau_h);
     w->s_arc += len;
     w->res.points++;
     if (w->res.points > 1)
@@ -668,6 +697,7 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->s_arc = 0;
     w->ds = w->s.ds_init;
     w->act = w->s.active_tol;
+    w->det_sign = +1;
 
     /* The start: undeformed, going down. */
     memset(w->st->u, 0, n * sizeof *w->st->u);
@@ -676,28 +706,33 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->tau_h = -1.0;
     if (evaluate(w, w->st) < 0)
         return ADH_ENAN;
-    w->cur = 0;
-    int rc = linearize(w, w->st, w->tau_u, w->tau_h, &w->L[0]);
+    int rc = linearize(w, w->st, w->tau_u, w->tau_h, &w->P);
     w->res.factorizations++;
     size_t it = 0;
     if (rc == ADH_SUCCESS)
-        rc = correct(w, 0.0, &w->L[0], 1, w->s.h0_start, &it);
+        rc = correct(w, 0.0, 1, w->s.h0_start, &it);
     if (rc == ADH_SUCCESS) {
-        rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->L[1]);
+        rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->P);
         w->res.factorizations++;
     }
+    if (rc == ADH_SUCCESS) {
+        point_jacobian(w, w->trial, w->Dtr, w->gtr);
+        rc = tangent(w, w->trial, w->Dtr, w->gtr, w->tau_u_new, &w->tau_h_new);
+    }
+    if (rc == ADH_SUCCESS && !(w->tau_h_new < 0))
+        rc = ADH_ESTALL; /* the start must lie on the outer branch, going in */
+    w->det_b_sign = w->P.det_sign;
+    w->det_sign = (w->tau_h_new > 0 ? 1 : -1) * w->P.det_sign;
+    if (rc == ADH_SUCCESS && w->det_sign < 0)
+        rc = ADH_ESTALL; /* J = I + small out there: det J > 0 */
     if (rc != ADH_SUCCESS) {
         w->res.seconds += now() - t0;
         return rc;
     }
-    int dj = tangent(w, &w->L[1], w->trial, w->tau_u_new, &w->tau_h_new);
-    if (dj == 0)
-        return ADH_ESTALL;
-    w->det_b_sign = w->L[1].det_sign;
     w->newton_point = it;
     w->F = 0;
     w->dFds = 0;
-    accept(w, 1, dj);
+    accept(w);
     w->res.seconds += now() - t0;
     return ADH_SUCCESS;
 }
@@ -720,34 +755,43 @@ int adh_static_iterate(adh_static *w)
             rc = ADH_ESTALL;
             break;
         }
-        int nx = w->cur == 0 ? 1 : 0;
         /* The last step lands on h0_end exactly (natural parametrization). */
         int fix = w->tau_h < 0 && w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end;
-        const lin *base = &w->L[w->cur];
-        double ds = w->ds;
-        if (fix) {
-            ds = (w->s.h0_end - w->st->h0) / (z0 * w->tau_h);
-            /* the constraint is h0 = h0_end: normal (0, 1) */
-            memset(w->upred, 0, n * sizeof(double));
-            rc = linearize(w, w->st, w->upred, 1.0, &w->L[nx]);
-            w->res.factorizations++;
-            if (rc != ADH_SUCCESS)
-                break;
-            base = &w->L[nx];
-        }
-        rc = correct(w, ds, base, fix, w->s.h0_end, &iters);
-        if (rc == ADH_SUCCESS) {
-            rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->L[nx]);
-            w->res.factorizations++;
-        }
+        double ds = fix ? (w->s.h0_end - w->st->h0) / (z0 * w->tau_h) : w->ds;
+        rc = correct(w, ds, fix, w->s.h0_end, &iters);
+        if (rc == ADH_ENOMEM)
+            break;
         int ok = rc == ADH_SUCCESS;
-        int dj = 0;
-        double turn = 0;
+        double turn = 0, gap_ratio = 0;
         if (ok) {
-            dj = tangent(w, &w->L[nx], w->trial, w->tau_u_new, &w->tau_h_new);
+            /* No node in the interaction zone may move its gap by more than
+             * max_gap_step per step: a node crossing the barrier of the law
+             * is what makes a lattice-trapping fold pair, and a step that
+             * carried a node across at once could step over the pair. */
+            double dg = 0;
+            for (size_t i = 0; i < n; i++)
+                if (fmin(w->st->h[i], w->trial->h[i]) < 3.0 * z0)
+                    dg = fmax(dg, fabs(w->trial->h[i] - w->st->h[i]));
+            gap_ratio = w->s.max_gap_step > 0 ? dg / (w->s.max_gap_step * z0) : 0;
+            if (gap_ratio > 1) {
+                w->res.rejected++;
+                w->ds *= fmax(0.1, 0.7 / gap_ratio);
+                continue;
+            }
+            rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->P);
+            w->res.factorizations++;
+            if (rc == ADH_SUCCESS) {
+                point_jacobian(w, w->trial, w->Dtr, w->gtr);
+                rc = tangent(w, w->trial, w->Dtr, w->gtr, w->tau_u_new, &w->tau_h_new);
+            }
+            ok = rc == ADH_SUCCESS;
+        }
+        if (ok) {
             double ct = metric_dot(w, w->tau_u, w->tau_h, w->tau_u_new, w->tau_h_new);
             turn = acos(fmin(1.0, fmax(-1.0, ct)));
-            /* the secant from the last point must run along the old tangent */
+            /* the secant from the last point must run along the old tangent:
+             * a corrector that converged onto another part of the curve
+             * fails this or the turn */
             double sh = (w->trial->h0 - w->st->h0) / z0, su = 0, s2 = sh * sh;
             for (size_t i = 0; i < n; i++) {
                 double d = (w->trial->u[i] - w->st->u[i]) / z0;
@@ -755,20 +799,22 @@ int adh_static_iterate(adh_static *w)
                 s2 += w->s.u_weight * d * d;
             }
             double cs = (w->s.u_weight * su + sh * w->tau_h) / sqrt(s2);
-            /* det B keeps its sign along one curve with consistent
-             * orientation: a flip means the corrector left the branch */
-            ok = dj != 0 && ct >= cos_max && cs >= cos_max && w->L[nx].det_sign == w->det_b_sign;
-        } else if (rc == ADH_ENOMEM) {
-            break;
+            /* det B (bordered by the previous tangent) keeps its sign along
+             * one curve traversed one way: a flip means the corrector landed
+             * on a part of the curve that runs back against the tangent */
+            ok = ct >= cos_max && cs >= cos_max && w->P.det_sign == w->det_b_sign;
+            w->det_sign = (w->tau_h_new > 0 ? 1 : -1) * w->P.det_sign;
         }
         if (ok) {
             w->newton_point = iters;
-            accept(w, nx, dj);
+            accept(w);
             if (fix)
                 w->done = 1;
             /* adapt: aim at half the allowed turn per step (the turn grows
              * about linearly with ds), slow down when Newton labours */
             double f = turn > 1e-12 ? 0.5 * w->s.max_angle / turn : 2.0;
+            if (gap_ratio > 0)
+                f = fmin(f, 0.7 / gap_ratio);
             f = fmin(2.0, fmax(0.5, f));
             if (iters > 6)
                 f = fmin(f, 0.7);
@@ -800,7 +846,7 @@ adh_static_point adh_static_current(const adh_static *w)
         .direction = w->tau_h < 0 ? +1 : -1,
         .stable = w->stable,
         .newton = w->newton_point,
-        .active = w->L[w->cur].m,
+        .active = w->P.m,
         .residual = w->residual,
     };
     return p;

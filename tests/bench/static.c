@@ -56,6 +56,7 @@ int main(int argc, char **argv)
     if (getenv("ADH_ACTIVE")) s.active_tol = atof(getenv("ADH_ACTIVE"));
     if (getenv("ADH_TOL")) s.tol = atof(getenv("ADH_TOL"));
     if (getenv("ADH_UW")) s.u_weight = atof(getenv("ADH_UW"));
+    if (getenv("ADH_GAP")) s.max_gap_step = atof(getenv("ADH_GAP"));
     adh_run run;
     adh_run_init(&run);
     adh_static_result r;
