@@ -269,10 +269,18 @@ void tui_draw(const tui_sim *s, const tui_view *v)
         draw_state(s, v, 1, lw + 1, W - lw - 1);
         y = 15;
     } else {
-        /* Narrow: one column, the state first, parameters below it. */
-        draw_state(s, v, 1, 0, W);
-        draw_params(s, v, 12, 0, W);
-        draw_derived(s, v, 22, 0, W);
+        /* Narrow: one column, the state first, parameters below it; when
+         * the screen is too short for both and a parameter is being
+         * edited, the parameters and their derived values come first. */
+        if (v->params_first && H < 28) {
+            draw_params(s, v, 1, 0, W);
+            draw_derived(s, v, 11, 0, W);
+            draw_state(s, v, 15, 0, W);
+        } else {
+            draw_state(s, v, 1, 0, W);
+            draw_params(s, v, 12, 0, W);
+            draw_derived(s, v, 22, 0, W);
+        }
         y = 26;
     }
     if (H - 2 - y >= 5)

@@ -18,6 +18,8 @@ typedef struct tui_view {
     long count;            /* count prefix being typed, 0 none */
     const char *activity;  /* "idle", "running to the turning point"... */
     int help_top;          /* first help line shown */
+    int params_first;      /* the parameters are being worked on: on a small
+                              screen they come before the state */
 } tui_view;
 
 void tui_draw(const tui_sim *s, const tui_view *v);

@@ -404,6 +404,9 @@ static void handle_key(tui *t, int key)
     long n = t->count ? t->count : 1;
     t->count = 0;
     adh_action a = adh_action_for_key(key);
+    if (a != ACT_NONE && a != ACT_HELP && a != ACT_REDRAW && a != ACT_CANCEL)
+        t->view.params_first = a == ACT_SELECT_UP || a == ACT_SELECT_DOWN || a == ACT_EDIT ||
+                               a == ACT_SCALE_UP || a == ACT_SCALE_DOWN || a == ACT_COMMAND;
     switch (a) {
     case ACT_FORWARD:
     case ACT_BACK:

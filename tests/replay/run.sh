@@ -160,6 +160,9 @@ check "after :resize 80x24 the screen is 24 lines of at most 80 columns" \
 check "at 60x40 the screen is 40 lines of at most 60 columns" \
     sh -c "[ \$(wc -l <'$R/resize-60x40.txt') = 40 ] && [ \$(wc -L <'$R/resize-60x40.txt') -le 60 ]"
 
+check "at 40x12 stepping shows the state" sh -c "grep -q 'h0     16.7 nm' '$W/small/small-state.txt' && ! grep -q 'Parameters' '$W/small/small-state.txt'"
+check "at 40x12 selecting shows the parameters" sh -c "grep -q '^ >A ' '$W/small/small.screen' && [ \$(wc -l <'$W/small/small.screen') = 12 ] && [ \$(wc -L <'$W/small/small.screen') -le 40 ]"
+
 check "a bad token names FILE:LINE and the token" grep -q "^bad-token.keys:3: unknown key <Foo>" "$W/bad-token/stderr"
 check "a bad :set value names FILE:LINE, the value and what is wanted" \
     grep -q "^bad-set.keys:3: E: '5nm' is a length (m, nm, um, ...), but a pressure" "$W/bad-set/stderr"
