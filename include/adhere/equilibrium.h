@@ -6,11 +6,26 @@
  *
  * The Jacobian is J = I - (2/E) W diag(p'(h)). p'(h) falls off as h^-4, so
  * only the nodes in and near the interaction zone (an index prefix S) enter
- * a dense LU; the rest of J is left out of the linear solve (an inexact
- * Newton whose residual is still the exact one). J has real eigenvalues
- * (it is W times a symmetric Hessian), det J changes sign at each fold, and
- * a point is stable under displacement control when det J > 0 (no negative
- * eigen-direction; one contact line gives at most one).
+ * a dense LU (LAPACK dgetrf from OpenBLAS) of the bordered, truncated system;
+ * that LU preconditions GMRES on the whole bordered system (every Newton
+ * step is exact up to the GMRES tolerance; the part of J left out of the LU
+ * is what GMRES corrects, a few iterations), and is reused from point to
+ * point until GMRES needs more than a few iterations with it. J has real
+ * eigenvalues (W times a symmetric Hessian), det J changes sign at each
+ * fold, and a point is stable under displacement control when det J > 0 (no
+ * negative eigen-direction; one contact line gives at most one). Its sign
+ * comes from the bordered LU by Cramer's rule at every point.
+ *
+ * Step control: the arclength step adapts to the turn of the tangent
+ * (max_angle), to Newton's progress, and to the largest change of a gap in
+ * the interaction zone (max_gap_step), so that every node crossing the
+ * law's barrier is resolved: at large sigma each crossing is a pair of
+ * lattice-trapping folds. A step is rejected when Newton fails, the tangent
+ * turns too far, the secant leaves the tangent, or det B (bordered by the
+ * previous tangent) changes sign: the corrector then landed on a leg of the
+ * curve that runs back. Fold pairs far smaller than a picometre in h0 (where
+ * trapping fades out) may still be stepped over: their count depends on the
+ * resolution, the jumps and pull-offs do not.
  *
  * Use: alloc, set (solves the start point), then iterate until it returns
  * something other than ADH_CONTINUE; or adh_static_run for the whole curve. */
@@ -36,7 +51,9 @@ typedef struct adh_static_settings {
     double active_tol;   /* node j enters the dense solve when
                             (2/E) |p'(h_j)| sum_n |W_nj| exceeds this */
     double h0_start;     /* first position, m; NAN = adh_protocol_auto_start(m, 0.05 nm) */
-    double h0_end;       /* turning depth, m: the curve ends there, going down */
+    double h0_end;       /* turning depth, m: the curve ends the first time it
+                            comes down to it, so it must lie below the jump-in
+                            for the whole S (the default -5 nm does) */
     size_t max_points;   /* cap on accepted points (ADH_EMAXITER beyond) */
     size_t max_newton;   /* Newton iterations per attempted step */
 } adh_static_settings;
@@ -77,7 +94,7 @@ typedef struct adh_static_point {
     int direction;       /* +1 when h0 decreases along the curve here, -1 otherwise */
     int stable;          /* 1: det J > 0, stable under displacement control */
     size_t newton;       /* Newton iterations spent reaching it (rejected attempts too) */
-    size_t active;       /* nodes in the dense solve */
+    size_t active;       /* nodes in the preconditioner's dense LU */
     double residual;     /* max_n |u_n + (2/E)(W p)_n|, m */
 } adh_static_point;
 

@@ -30,6 +30,12 @@
 extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
 
 #define ADH_GMRES_MAX 40   /* Krylov dimension before the LU is refreshed */
+#ifndef ADH_TAN_RTOL /* GMRES relative residual for tangents */
+#define ADH_TAN_RTOL 1e-8
+#endif
+#ifndef ADH_NEWTON_RTOL /* and for Newton steps (inexact Newton) */
+#define ADH_NEWTON_RTOL 1e-4
+#endif
 #ifndef ADH_GMRES_FRESH /* more iterations than this: refactorize for next time */
 #define ADH_GMRES_FRESH 6
 #endif
@@ -461,7 +467,7 @@ static int tangent(adh_static *w, const adh_state *x, const double *D, const dou
     double z0 = w->m.z0, th = w->s.u_weight;
     op A = { D, g, w->tau_u, w->tau_h };
     w->zero[n] = z0;
-    int rc = solve_at(w, &A, x, w->zero, 1e-10, w->du);
+    int rc = solve_at(w, &A, x, w->zero, ADH_TAN_RTOL, w->du);
     w->zero[n] = 0;
     if (rc != ADH_SUCCESS)
         return rc;
@@ -525,7 +531,7 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, size_t *ite
             w->bG[i] = -w->G[i];
         w->bG[n] = -c;
         op A = { w->Dc, w->gc, nu, nh };
-        int rc = solve_at(w, &A, x, w->bG, 1e-6, w->du);
+        int rc = solve_at(w, &A, x, w->bG, ADH_NEWTON_RTOL, w->du);
         if (rc != ADH_SUCCESS)
             return rc;
         double dh = w->du[n];
