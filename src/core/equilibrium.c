@@ -99,7 +99,7 @@ adh_static_settings adh_static_settings_default(void)
         .u_weight = 1.0,
         .max_angle = 0.4,
         .max_gap_step = 0.25,
-        .active_tol = 1e-2,
+        .active_tol = 0.3,
         .h0_start = NAN,
         .h0_end = -5e-9,
         .max_points = 200000,
@@ -122,8 +122,8 @@ int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t
         BAD("max_angle %g rad is not allowed: it must be above 0 and below 1.5", s->max_angle);
     if (!(s->max_gap_step >= 0 && s->max_gap_step < 100))
         BAD("max_gap_step %g is not allowed: it must be from 0 (off) to 100 (units of z0)", s->max_gap_step);
-    if (!(s->active_tol >= 0 && s->active_tol < 0.1))
-        BAD("active_tol %g is not allowed: it must be from 0 to 0.1", s->active_tol);
+    if (!(s->active_tol >= 0 && s->active_tol <= 1))
+        BAD("active_tol %g is not allowed: it must be from 0 to 1", s->active_tol);
     if (!isnan(s->h0_start) && !(isfinite(s->h0_start) && s->h0_start > s->h0_end))
         BAD("static start %g m must be finite and above the end %g m", s->h0_start, s->h0_end);
     if (!isfinite(s->h0_end))
