@@ -261,6 +261,20 @@ static void check_large_sigma(void)
     ok(c.res.folds % 2 == 0, "an even number of folds: the curve ends on a stable branch (%zu)", c.res.folds);
     int last_stable = c.run.nrows ? c.run.rows[c.run.nrows - 1].stable : 0;
     ok(last_stable, "the last point is stable");
+    /* sigma 10 on the default grid: some 400 lattice folds */
+    adh_material m10 = adh_material_default();
+    m10.E = 2.25e8;
+    adh_derived d10;
+    adh_material_derive(&m10, &d10);
+    adh_static_settings s10 = adh_static_settings_default();
+    s10.h0_end = 2.5e-9;
+    curve c10 = run_curve(&m10, 230, adh_grid_default_spacing(&m10), ADH_KERNEL_PAPER, &s10);
+    ok(c10.rc == ADH_SUCCESS, "sigma %.3g, N 230: run succeeds (%s)", d10.sigma, adh_strerror(c10.rc));
+    ok(rel(c10.res.pulloff_F, d10.F_jkr) < 0.10, "sigma %.3g: pull-off %.5g N within 10 %% of JKR %.5g N", d10.sigma,
+       c10.res.pulloff_F, d10.F_jkr);
+    ok(c10.res.folds > 100, "sigma %.3g: lattice trapping, %zu folds", d10.sigma, c10.res.folds);
+    adh_run_free(&c10.run);
+
     /* Stronger trapping (sigma 10 on a grid twice as coarse: every node
      * crossing is a fold pair of some picometres) and the same curve with
      * half the step, half the turn and half the gap change per step: a
@@ -268,9 +282,6 @@ static void check_large_sigma(void)
      * of the zigzag, would count differently. (At sigma 5 on the default
      * grid the pairs shrink to femtometres near the jump-out fold and their
      * count depends on the resolution: the check there is the pull-off.) */
-    adh_material m10 = adh_material_default();
-    m10.E = 2.25e8;
-    adh_static_settings s10 = adh_static_settings_default();
     s10.h0_end = 3e-9;
     double dr10 = 2 * adh_grid_default_spacing(&m10);
     curve c1 = run_curve(&m10, 110, dr10, ADH_KERNEL_PAPER, &s10);
@@ -296,6 +307,37 @@ static void check_large_sigma(void)
     adh_run_free(&c.run);
 }
 
+static int stop_after_5(const adh_obs *row, const adh_run *run, void *ctx)
+{
+    (void)row;
+    (void)ctx;
+    return run->nrows >= 5;
+}
+
+/* A callback stops the run; a grid too short for the depth is reported. */
+static void check_stops(void)
+{
+    adh_material m = adh_material_default();
+    adh_grid *g = adh_grid_alloc(60, adh_grid_default_spacing(&m));
+    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_static_settings s = adh_static_settings_default();
+    adh_run run;
+    adh_run_init(&run);
+    int rc = adh_static_run(g, k, &m, &s, stop_after_5, NULL, &run, NULL);
+    ok(rc == ADH_SUCCESS && run.interrupted == 1 && run.nrows == 5, "a callback stops the run after 5 rows (%zu)",
+       run.nrows);
+    adh_run_free(&run);
+    adh_run_init(&run);
+    adh_static_result r;
+    rc = adh_static_run(g, k, &m, &s, NULL, NULL, &run, &r);
+    ok(rc == ADH_EGRID && run.status == ADH_EGRID && run.nrows > 10 &&
+           run.rows[run.nrows - 1].a >= 0.9 * g->rmax,
+       "N 60 down to -5 nm: ADH_EGRID once the contact reaches 0.9 Rmax, rows kept (%zu)", run.nrows);
+    adh_run_free(&run);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+}
+
 static void check_settings(void)
 {
     adh_static_settings s = adh_static_settings_default();
@@ -312,6 +354,7 @@ static void check_settings(void)
 int main(void)
 {
     check_settings();
+    check_stops();
     check_points();
     curve c = check_fig1();
     check_kernels_grids(&c);
