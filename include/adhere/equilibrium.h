@@ -48,7 +48,7 @@ typedef struct adh_static_settings {
     double max_angle;    /* largest turn of the tangent per step, rad */
     double max_gap_step; /* largest change of any gap below 3 z0 per step, in z0
                             (resolves every node crossing: lattice folds); 0 = off */
-    double active_tol;   /* node j enters the dense solve when
+    double active_tol;   /* node j enters the preconditioner's dense LU when
                             (2/E) |p'(h_j)| sum_n |W_nj| exceeds this */
     double h0_start;     /* first position, m; NAN = adh_protocol_auto_start(m, 0.05 nm) */
     double h0_end;       /* turning depth, m: the curve ends the first time it
