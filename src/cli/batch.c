@@ -15,6 +15,7 @@
 #include "adhere/status.h"
 #include "cli/figures.h"
 #include "cli/rigid.h"
+#include "cli/statics.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
 #include "plot/plot.h"
@@ -95,10 +96,6 @@ int adh_batch_main(const adh_cli *cli)
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }
-    if (cfg->mode == ADH_MODE_STATIC) {
-        fprintf(stderr, "adhere: --mode=static: the equilibrium solver is not in this build yet\n");
-        return ADH_EXIT_USAGE;
-    }
     if (cfg->sweep.kind != ADH_SWEEP_NONE)
         return adh_sweep_main(cli);
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
@@ -124,8 +121,19 @@ int adh_batch_main(const adh_cli *cli)
     }
     adh_run run;
     adh_run_init(&run);
+    adh_static_result sres;
     int rc = rigid ? adh_rigid_run(cfg, on_step, &ctx, &run)
-                   : adh_protocol_run(g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
+           : cfg->mode == ADH_MODE_STATIC ? adh_cli_static_run(cfg, g, k, on_step, &ctx, &run, &sres)
+           : adh_protocol_run(g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
+    /* --reference=static: the equilibrium curve beside the relaxation run. */
+    adh_run ref;
+    adh_run_init(&ref);
+    adh_static_result rres;
+    int want_ref = cli->reference[0] && cfg->mode == ADH_MODE_RELAX && rc == ADH_SUCCESS && !run.interrupted;
+    if (want_ref && adh_cli_static_run(cfg, g, k, NULL, NULL, &ref, &rres) != ADH_SUCCESS) {
+        fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(ref.status));
+        want_ref = 0;
+    }
     if (ctx.progress)
         fprintf(stderr, "\r%*s\r", 100, "");
     sigaction(SIGINT, &old_int, NULL);
@@ -146,16 +154,26 @@ int adh_batch_main(const adh_cli *cli)
         fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0\n",
                 run.unconverged, run.nrows, cfg->relax.max_iter, cfg->relax.eps);
 
-    adh_tables tables = { cfg, &run, NULL, 0, status != ADH_EXIT_OK, note };
+    char keynames[2 * ADH_STATIC_KEYS][32];
+    adh_summary_extra extra[2 * ADH_STATIC_KEYS];
+    size_t nextra = 0;
+    if (cfg->mode == ADH_MODE_STATIC)
+        nextra += adh_static_summary_keys(&sres, "", keynames, extra);
+    if (want_ref)
+        nextra += adh_static_summary_keys(&rres, "static_", keynames + nextra, extra + nextra);
+    adh_tables tables = { cfg, &run, extra, nextra, status != ADH_EXIT_OK, note };
+    adh_tables ref_tables = { cfg, &ref, NULL, 0, 0, NULL };
     if (ctx.stream && tables.partial)
         fprintf(ctx.stream, "# PARTIAL: %s\n", note);
     if (out) {
         if (adh_write_atomic(out, "force.tsv", adh_write_force, &tables, why, sizeof why) != 0 ||
             adh_write_atomic(out, "summary.tsv", adh_write_summary, &tables, why, sizeof why) != 0 ||
-            (run.nturns && adh_write_atomic(out, "turns.tsv", adh_write_turns, &tables, why, sizeof why) != 0)) {
+            (run.nturns && adh_write_atomic(out, "turns.tsv", adh_write_turns, &tables, why, sizeof why) != 0) ||
+            (want_ref && adh_write_atomic(out, "static.tsv", adh_write_force, &ref_tables, why, sizeof why) != 0)) {
             fprintf(stderr, "adhere: %s\n", why);
             status = ADH_EXIT_USAGE;
-        } else if (cfg->plot && status == ADH_EXIT_OK) {
+        } else if (status == ADH_EXIT_OK) {
+            /* With --no-plot this writes the plots' tables only. */
             char msg[1024] = "";
             int prc = adh_plots_write(cfg, &run, out, msg, sizeof msg);
             if (prc != 0) {
@@ -171,6 +189,7 @@ int adh_batch_main(const adh_cli *cli)
         }
     }
     adh_run_free(&run);
+    adh_run_free(&ref);
     adh_kernel_free(k);
     adh_grid_free(g);
     return status;

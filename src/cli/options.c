@@ -27,7 +27,7 @@ typedef struct option_doc {
 /* The one list of options: getopt_long's table and --help are both made from
  * it, so they cannot drift apart (the man page test checks the third copy). */
 static const option_doc options[] = {
-    { { "modulus", required_argument, 0, 'E' }, "PA", "combined modulus E, 2/E = sum (1-nu^2)/E_i (default 1GPa; the default scene uses 0.3GPa)" },
+    { { "modulus", required_argument, 0, 'E' }, "PA", "combined modulus E, 2/E = sum (1-nu^2)/E_i (default 0.3GPa, Figure 4)" },
     { { "hamaker", required_argument, 0, 'A' }, "J", "Hamaker constant A (default 1e-19J)" },
     { { "z0", required_argument, 0, 'z' }, "M", "Lennard-Jones equilibrium separation z0 (default 0.5nm)" },
     { { "radius", required_argument, 0, 'R' }, "M", "effective radius R (default 10um)" },

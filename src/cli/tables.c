@@ -77,14 +77,18 @@ int adh_write_summary(FILE *f, const void *ctx)
     kv(f, "F_jkr", d.F_jkr);
     kv(f, "F_dmt", d.F_dmt);
     kv(f, "h_star", d.h_star);
-    kv(f, "jump_in_h0", r->jump_in_h0);
-    const adh_turn_result *mt = adh_run_main_turn(r);
-    kv(f, "turn_h0", mt ? mt->h0 : NAN);
-    kv(f, "max_load", mt ? mt->max_load : NAN);
-    kv(f, "a_turn", mt ? mt->a_turn : NAN);
-    kv(f, "pulloff_F", mt ? mt->pulloff_F : NAN);
-    kv(f, "pulloff_h0", mt ? mt->pulloff_h0 : NAN);
-    kv(f, "jump_out_h0", mt ? mt->jump_out_h0 : NAN);
+    /* In static mode the jumps and pull-off come from the curve's folds and
+     * minimum (the extra keys), not from unloading branches. */
+    if (c->mode != ADH_MODE_STATIC) {
+        kv(f, "jump_in_h0", r->jump_in_h0);
+        const adh_turn_result *mt = adh_run_main_turn(r);
+        kv(f, "turn_h0", mt ? mt->h0 : NAN);
+        kv(f, "max_load", mt ? mt->max_load : NAN);
+        kv(f, "a_turn", mt ? mt->a_turn : NAN);
+        kv(f, "pulloff_F", mt ? mt->pulloff_F : NAN);
+        kv(f, "pulloff_h0", mt ? mt->pulloff_h0 : NAN);
+        kv(f, "jump_out_h0", mt ? mt->jump_out_h0 : NAN);
+    }
     for (size_t i = 0; i < t->nextra; i++)
         kv(f, t->extra[i].key, t->extra[i].value);
     kv(f, "steps", (double)r->nrows);
