@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli/batch.h"
+#include "cli/cost.h"
 #include "cli/options.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
@@ -42,7 +43,8 @@ int main(int argc, char **argv)
      * the drive grid so every one is really stored (plan and run agree). */
     if ((cli.cfg.plots & ADH_PLOT_PROFILE) && cli.cfg.proto.nprofiles == 0 && cli.cfg.mode == ADH_MODE_RELAX)
         cli.cfg.proto.nprofiles = adh_plot_default_profiles(&cli.cfg, cli.cfg.proto.profiles, 6);
-    if (adh_cli_validate(&cli.cfg, why, sizeof why) != 0) {
+    /* --cost replaces N and eps and checks each of its runs itself. */
+    if (cli.action != ADH_ACT_COST && adh_cli_validate(&cli.cfg, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }
@@ -56,8 +58,7 @@ int main(int argc, char **argv)
         return ADH_EXIT_OK;
     }
     case ADH_ACT_COST:
-        fprintf(stderr, "adhere: --cost is not in this build yet\n");
-        return ADH_EXIT_USAGE;
+        return adh_cost_main(&cli);
     default:
         return adh_tui_main(&cli.cfg);
     }

@@ -1,0 +1,411 @@
+#include "cli/cost.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "adhere/equilibrium.h"
+#include "adhere/grid.h"
+#include "adhere/status.h"
+#include "adhere/units.h"
+#include "cli/batch.h"
+#include "cli/statics.h"
+#include "cli/tables.h"
+#include "plot/gnuplot.h"
+
+char *openblas_get_config(void);
+
+#define MAX_EPS 16
+#define MAX_NODES 16
+
+typedef struct cost_run {
+    double eps;
+    size_t nodes;
+    adh_kernel_type kernel;
+    int status;
+    double seconds, kernel_seconds;
+    size_t iterations, steps, unconverged;
+    double pulloff, jump_in, hysteresis, a_turn;
+    double err[4];        /* against the most accurate run */
+    double err_static[2]; /* pull-off and jump-in against the static curve */
+} cost_run;
+
+typedef struct cost_job {
+    const adh_config *cfg;
+    cost_run *runs;
+    size_t n, next;
+    pthread_mutex_t lock;
+} cost_job;
+
+static volatile sig_atomic_t stop_signal;
+
+static void on_signal(int sig)
+{
+    stop_signal = sig;
+}
+
+static int on_step(const adh_obs *o, const adh_run *run, void *ctx)
+{
+    (void)o, (void)run, (void)ctx;
+    return stop_signal != 0;
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+double adh_hysteresis_area(const adh_run *run, double step)
+{
+    /* Loading and unloading visit the same positions (start - k d and
+     * turn + k d with the turn on the drive grid), so pair them by h0 and
+     * integrate the force gap with the trapezoid rule along the loading rows. */
+    double area = 0, prev_h = NAN, prev_gap = NAN;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *l = &run->rows[i];
+        if (l->path != 0)
+            continue;
+        double gap = NAN;
+        for (size_t j = 0; j < run->nrows; j++) {
+            const adh_obs *u = &run->rows[j];
+            if (u->path == (int)run->nturns && u->path > 0 && fabs(u->h0 - l->h0) < 1e-6 * step) {
+                gap = l->F - u->F;
+                break;
+            }
+        }
+        if (!isnan(gap) && !isnan(prev_gap))
+            area += 0.5 * (gap + prev_gap) * fabs(prev_h - l->h0);
+        prev_gap = gap;
+        prev_h = l->h0;
+    }
+    return area;
+}
+
+static void measure(cost_run *cr, const adh_run *run, double step)
+{
+    const adh_turn_result *t = adh_run_main_turn(run);
+    cr->seconds = run->seconds;
+    cr->iterations = run->iterations;
+    cr->steps = run->nrows;
+    cr->unconverged = run->unconverged;
+    cr->pulloff = t ? t->pulloff_F : NAN;
+    cr->a_turn = t ? t->a_turn : NAN;
+    cr->jump_in = run->jump_in_h0;
+    cr->hysteresis = adh_hysteresis_area(run, step);
+}
+
+static void *worker(void *arg)
+{
+    cost_job *job = arg;
+    for (;;) {
+        pthread_mutex_lock(&job->lock);
+        size_t i = job->next < job->n && !stop_signal ? job->next++ : job->n;
+        pthread_mutex_unlock(&job->lock);
+        if (i >= job->n)
+            break;
+        cost_run *cr = &job->runs[i];
+        adh_config c = *job->cfg;
+        c.nodes = cr->nodes;
+        c.relax.eps = cr->eps;
+        c.kernel = cr->kernel;
+        double t0 = now();
+        adh_grid *g = adh_grid_alloc(c.nodes, adh_config_spacing(&c));
+        adh_kernel *k = g ? adh_kernel_alloc(g, c.kernel) : NULL;
+        cr->kernel_seconds = now() - t0;
+        adh_run run;
+        adh_run_init(&run);
+        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, on_step, NULL, &run) : ADH_ENOMEM;
+        if (run.interrupted)
+            cr->status = ADH_CONTINUE;
+        measure(cr, &run, c.proto.step);
+        adh_run_free(&run);
+        adh_kernel_free(k);
+        adh_grid_free(g);
+        if (!job->cfg->quiet) {
+            pthread_mutex_lock(&job->lock);
+            fprintf(stderr, "adhere: cost run %zu of %zu (N = %zu, %s, eps = %g pm): %.3g s, %zu iterations\n", i + 1,
+                    job->n, cr->nodes, adh_kernel_name(cr->kernel), cr->eps * 1e12, cr->seconds, cr->iterations);
+            pthread_mutex_unlock(&job->lock);
+        }
+    }
+    return NULL;
+}
+
+static int parse_lists(const adh_cli *cli, double *eps, size_t *neps, size_t *nodes, size_t *nnodes, char *why, size_t n)
+{
+    const char *el = cli->cost_eps[0] ? cli->cost_eps : "2pm,1pm,0.5pm,0.2pm,0.1pm";
+    const char *nl = cli->cost_nodes[0] ? cli->cost_nodes : "500,1000,2000";
+    char buf[256], msg[256], *save = NULL;
+    *neps = *nnodes = 0;
+    snprintf(buf, sizeof buf, "%s", el);
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        if (*neps == MAX_EPS || adh_parse_quantity(t, ADH_Q_LENGTH, &eps[*neps], msg, sizeof msg) != 0 ||
+            !(eps[*neps] > 0 && eps[*neps] < 1e-6)) {
+            snprintf(why, n, "--cost-eps: '%s' is not allowed: %s", t,
+                     *neps == MAX_EPS ? "at most 16 values" : msg[0] ? msg : "each eps must be above 0 and below 1 um");
+            return 2;
+        }
+        msg[0] = '\0';
+        (*neps)++;
+    }
+    save = NULL;
+    snprintf(buf, sizeof buf, "%s", nl);
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        long v;
+        if (*nnodes == MAX_NODES || adh_parse_count(t, 10, 20000, &v, msg, sizeof msg) != 0) {
+            snprintf(why, n, "--cost-nodes: %s", *nnodes == MAX_NODES ? "at most 16 values" : msg);
+            return 2;
+        }
+        nodes[(*nnodes)++] = (size_t)v;
+    }
+    if (!*neps || !*nnodes) {
+        snprintf(why, n, "--cost-eps and --cost-nodes need at least one value each");
+        return 2;
+    }
+    return 0;
+}
+
+static double rel(double x, double ref)
+{
+    return fabs(x - ref) / fabs(ref);
+}
+
+static int write_cost(FILE *f, const void *ctx)
+{
+    const cost_job *job = ctx;
+    fprintf(f, "# adhere %s cost report: %ld cores, BLAS %s; errors are relative to the most accurate run (err_*) and the static curve (static_err_*)\n",
+            ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), openblas_get_config());
+    fputs("kernel\tnodes\teps\tseconds\tkernel_seconds\titerations\tsteps\tunconverged\tpulloff_F\tjump_in_h0\thysteresis\ta_turn\t"
+          "err_pulloff\terr_jump_in\terr_hysteresis\terr_a_turn\tstatic_err_pulloff\tstatic_err_jump_in\tstatus\n", f);
+    for (size_t i = 0; i < job->n; i++) {
+        const cost_run *r = &job->runs[i];
+        fprintf(f, "%s\t%zu\t%.6g\t%.6g\t%.6g\t%zu\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n",
+                adh_kernel_name(r->kernel), r->nodes, r->eps, r->seconds, r->kernel_seconds, r->iterations, r->steps,
+                r->unconverged, r->pulloff, r->jump_in, r->hysteresis, r->a_turn, r->err[0], r->err[1], r->err[2],
+                r->err[3], r->err_static[0], r->err_static[1],
+                r->status == ADH_CONTINUE ? "interrupted" : adh_strerror(r->status));
+    }
+    return 0;
+}
+
+/* cost.png: error against wall time, log-log, one curve per (N, kernel). */
+static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len)
+{
+    char log[PATH_MAX + 32], data[PATH_MAX + 32], png[PATH_MAX + 32], tmp[PATH_MAX + 48];
+    snprintf(log, sizeof log, "%s/gnuplot.log", dir);
+    snprintf(data, sizeof data, "%s/.cost-plot.%ld.dat", dir, (long)getpid());
+    snprintf(png, sizeof png, "%s/cost.png", dir);
+    snprintf(tmp, sizeof tmp, "%s/.cost.png.%ld.tmp", dir, (long)getpid());
+    FILE *f = fopen(data, "w");
+    if (!f) {
+        snprintf(msg, len, "cannot write %s", data);
+        return 2;
+    }
+    /* one block per series, blank-line separated, for gnuplot's `index` */
+    size_t nseries = 0;
+    char titles[64][48];
+    for (size_t i = 0; i < job->n; i++) {
+        const cost_run *r = &job->runs[i];
+        int first = 1;
+        for (size_t j = 0; j < i; j++)
+            if (job->runs[j].nodes == r->nodes && job->runs[j].kernel == r->kernel)
+                first = 0;
+        if (!first || nseries == 64)
+            continue;
+        snprintf(titles[nseries], sizeof titles[0], "N = %zu, %s kernel", r->nodes, adh_kernel_name(r->kernel));
+        for (size_t j = 0; j < job->n; j++) {
+            const cost_run *s = &job->runs[j];
+            if (s->nodes == r->nodes && s->kernel == r->kernel && s->err[0] > 0 && isfinite(s->err[0]))
+                fprintf(f, "%.6g %.6g %.6g %.6g\n", s->seconds, s->err[0], s->err[2] > 0 ? s->err[2] : NAN, s->eps * 1e12);
+        }
+        fprintf(f, "\n\n");
+        nseries++;
+    }
+    fclose(f);
+    adh_gnuplot *gp = adh_gnuplot_open(log, msg, len);
+    if (!gp) {
+        unlink(data);
+        return 3;
+    }
+    adh_gnuplot_cmd(gp, "set terminal pngcairo size 900,600 enhanced font ',10'");
+    adh_gnuplot_cmd(gp, "set output '%s'", tmp);
+    adh_gnuplot_cmd(gp, "set multiplot layout 1,2 title 'What accuracy costs: error against the most accurate run'");
+    adh_gnuplot_cmd(gp, "set logscale xy; set grid; set key bottom left; set xlabel 'wall time (s)'");
+    for (int panel = 0; panel < 2; panel++) {
+        adh_gnuplot_cmd(gp, "set ylabel '%s'", panel ? "relative error in hysteresis area" : "relative error in pull-off force");
+        char cmd[8192];
+        int off = snprintf(cmd, sizeof cmd, "plot ");
+        for (size_t s = 0; s < nseries; s++)
+            off += snprintf(cmd + off, sizeof cmd - (size_t)off, "%s'%s' index %zu using 1:%d with linespoints lw 2 title '%s'",
+                            s ? ", " : "", data, s, panel ? 3 : 2, titles[s]);
+        adh_gnuplot_cmd(gp, "%s", cmd);
+    }
+    adh_gnuplot_cmd(gp, "unset multiplot");
+    adh_gnuplot_cmd(gp, "unset output");
+    int rc = adh_gnuplot_sync(gp, 60, msg, len);
+    adh_gnuplot_close(gp);
+    unlink(data);
+    if (rc != 0) {
+        unlink(tmp);
+        return 3;
+    }
+    if (rename(tmp, png) != 0) {
+        snprintf(msg, len, "cannot write %s", png);
+        return 2;
+    }
+    struct stat st;
+    if (stat(log, &st) == 0 && st.st_size == 0)
+        unlink(log);
+    return 0;
+}
+
+static int by_cost(const void *a, const void *b)
+{
+    /* the most expensive first, so two workers finish together */
+    const cost_run *x = a, *y = b;
+    double cx = (double)x->nodes * x->nodes / x->eps, cy = (double)y->nodes * y->nodes / y->eps;
+    return (cx < cy) - (cx > cy);
+}
+
+int adh_cost_main(const adh_cli *cli)
+{
+    const adh_config *cfg = &cli->cfg;
+    char why[1024];
+    double eps[MAX_EPS];
+    size_t nodes[MAX_NODES], neps, nnodes;
+    if (parse_lists(cli, eps, &neps, nodes, &nnodes, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return ADH_EXIT_USAGE;
+    }
+    if (cfg->mode != ADH_MODE_RELAX || cfg->proto.nturns == 0) {
+        fprintf(stderr, "adhere: --cost measures the relaxation's load/unload cycle: it needs mode relax and a turning point\n");
+        return ADH_EXIT_USAGE;
+    }
+    size_t n = neps * nnodes * 2;
+    cost_run *runs = calloc(n, sizeof *runs);
+    if (!runs) {
+        fprintf(stderr, "adhere: out of memory\n");
+        return ADH_EXIT_SOLVER;
+    }
+    size_t m = 0;
+    for (size_t a = 0; a < nnodes; a++)
+        for (int k = 0; k < 2; k++)
+            for (size_t e = 0; e < neps; e++) {
+                runs[m] = (cost_run){ .eps = eps[e], .nodes = nodes[a], .kernel = (adh_kernel_type)k };
+                adh_config c = *cfg;
+                c.nodes = nodes[a];
+                c.relax.eps = eps[e];
+                if (adh_cli_validate(&c, why, sizeof why) != 0) {
+                    fprintf(stderr, "adhere: --cost: N = %zu, eps = %g m: %s\n", nodes[a], eps[e], why);
+                    free(runs);
+                    return ADH_EXIT_USAGE;
+                }
+                m++;
+            }
+    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
+    if (out && mkdir(out, 0777) != 0 && access(out, W_OK) != 0) {
+        fprintf(stderr, "adhere: cannot write into %s\n", out);
+        free(runs);
+        return ADH_EXIT_USAGE;
+    }
+    qsort(runs, n, sizeof *runs, by_cost);
+
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    int jobs = cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
+    cost_job job = { .cfg = cfg, .runs = runs, .n = n };
+    pthread_mutex_init(&job.lock, NULL);
+    pthread_t threads[8];
+    int started = 0;
+    for (int t = 0; t < jobs; t++)
+        if (pthread_create(&threads[t], NULL, worker, &job) == 0)
+            started++;
+    if (!started)
+        worker(&job);
+
+    /* Meanwhile, on this thread: the static curve at the finest grid with
+     * the exact kernel, the limit every eps should approach. */
+    adh_config sc = *cfg;
+    sc.nodes = nodes[0];
+    for (size_t a = 1; a < nnodes; a++)
+        sc.nodes = nodes[a] > sc.nodes ? nodes[a] : sc.nodes;
+    sc.kernel = ADH_KERNEL_RING;
+    adh_grid *g = adh_grid_alloc(sc.nodes, adh_config_spacing(&sc));
+    adh_kernel *k = g ? adh_kernel_alloc(g, sc.kernel) : NULL;
+    adh_run srun;
+    adh_run_init(&srun);
+    adh_static_result sres;
+    memset(&sres, 0, sizeof sres);
+    int src = k ? adh_cli_static_run(&sc, g, k, on_step, NULL, &srun, &sres) : ADH_ENOMEM;
+    adh_run_free(&srun);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+    for (int t = 0; t < started; t++)
+        pthread_join(threads[t], NULL);
+    pthread_mutex_destroy(&job.lock);
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+
+    /* The most accurate run: the finest grid, the exact kernel, the smallest eps. */
+    const cost_run *best = &runs[0];
+    for (size_t i = 1; i < n; i++) {
+        const cost_run *r = &runs[i];
+        if (r->nodes > best->nodes || (r->nodes == best->nodes && r->kernel > best->kernel) ||
+            (r->nodes == best->nodes && r->kernel == best->kernel && r->eps < best->eps))
+            best = r;
+    }
+    for (size_t i = 0; i < n; i++) {
+        cost_run *r = &runs[i];
+        r->err[0] = rel(r->pulloff, best->pulloff);
+        r->err[1] = rel(r->jump_in, best->jump_in);
+        r->err[2] = rel(r->hysteresis, best->hysteresis);
+        r->err[3] = rel(r->a_turn, best->a_turn);
+        r->err_static[0] = src == ADH_SUCCESS ? rel(r->pulloff, sres.pulloff_F) : NAN;
+        r->err_static[1] = src == ADH_SUCCESS ? rel(r->jump_in, sres.jump_in_h0) : NAN;
+    }
+
+    printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each\n",
+           n, started ? started : 1, cores);
+    printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm%s\n\n",
+           openblas_get_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, sc.nodes, sres.pulloff_F,
+           sres.jump_in_h0 * 1e9, src == ADH_SUCCESS ? "" : " (failed)");
+    printf("%-6s %6s %7s %9s %11s %12s %10s %11s %9s | %8s %8s %8s %8s | %8s %8s\n", "kernel", "N", "eps/pm", "seconds",
+           "iterations", "pulloff/uN", "jump-in/nm", "hyst/fJ", "a_turn/um", "pulloff", "jump-in", "hyst", "a_turn",
+           "st.pull", "st.jump");
+    for (size_t i = 0; i < n; i++) {
+        const cost_run *r = &runs[i];
+        printf("%-6s %6zu %7.3g %9.3f %11zu %12.5g %10.4g %11.5g %9.4g | %8.2e %8.2e %8.2e %8.2e | %8.2e %8.2e%s\n",
+               adh_kernel_name(r->kernel), r->nodes, r->eps * 1e12, r->seconds, r->iterations, r->pulloff * 1e6,
+               r->jump_in * 1e9, r->hysteresis * 1e15, r->a_turn * 1e6, r->err[0], r->err[1], r->err[2], r->err[3],
+               r->err_static[0], r->err_static[1],
+               r->status == ADH_SUCCESS ? (r->unconverged ? "  (some steps at the cap)" : "")
+                                        : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
+    }
+    int status = stop_signal ? ADH_EXIT_INTERRUPTED : ADH_EXIT_OK;
+    if (out) {
+        if (adh_write_atomic(out, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
+            fprintf(stderr, "adhere: %s\n", why);
+            status = ADH_EXIT_USAGE;
+        } else if (cfg->plot && !stop_signal) {
+            int prc = plot_cost(&job, out, why, sizeof why);
+            if (prc) {
+                fprintf(stderr, "adhere: cost.png not written: %s\n", why);
+                status = prc;
+            }
+        }
+    }
+    free(runs);
+    return status;
+}

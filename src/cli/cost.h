@@ -1,0 +1,17 @@
+/* adhere --cost: what accuracy costs in time. Runs the configured protocol
+ * over a grid of eps, N and kernels, in parallel on the cores, and reports
+ * each run's wall time and iterations beside its error against the most
+ * accurate run (and the static curve) in pull-off force, jump-in position,
+ * hysteresis area and contact radius at the turn. */
+#ifndef ADH_CLI_COST_H
+#define ADH_CLI_COST_H
+
+#include "cli/options.h"
+
+int adh_cost_main(const adh_cli *cli);
+
+/* The area between the loading and unloading force curves over the positions
+ * both visit (N m): the energy one cycle dissipates. 0 without unloading. */
+double adh_hysteresis_area(const adh_run *run, double step);
+
+#endif

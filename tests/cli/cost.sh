@@ -1,0 +1,22 @@
+#!/bin/sh
+# adhere --cost on a tiny grid: every run of the grid is reported, the most
+# accurate one is the reference (zero error), tighter eps costs more
+# iterations, and cost.tsv and cost.png are written.
+. "$(dirname "$0")/lib.sh"
+out="$TMP/cost"
+"$ADHERE" --cost -q -E 1GPa --turn=-1nm --spacing=15nm --cost-nodes=60,80 --cost-eps=10pm,4pm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
+rc=$?
+check "--cost exits 0 (got $rc: $(head -c 200 "$TMP/stderr"))" [ "$rc" -eq 0 ]
+check "the report names the cores and the BLAS" sh -c "grep -q 'on [0-9]* cores' '$TMP/stdout' && grep -q '^BLAS: ' '$TMP/stdout'"
+rows=$(grep -cE '^(paper|ring) ' "$TMP/stdout")
+check "8 runs reported: 2 N x 2 eps x 2 kernels ($rows)" [ "$rows" -eq 8 ]
+check "cost.tsv has a row per run" [ "$(grep -cE '^(paper|ring)	' "$out/cost.tsv")" -eq 8 ]
+check "the reference (N = 80, ring, 4 pm) has zero error" awk -F'\t' '$1=="ring" && $2==80 && $3<5e-12 && $13==0 && $15==0 {f=1} END {exit !f}' "$out/cost.tsv"
+check "every other error is finite and positive" awk -F'\t' '/^(paper|ring)/ && !($1=="ring" && $2==80 && $3<5e-12) && !($13>0 && $13<10) {bad=1} END {exit bad}' "$out/cost.tsv"
+check "tighter eps costs more iterations at every N and kernel" awk -F'\t' '/^(paper|ring)/ {it[$1 $2 ($3<5e-12)] = $6} END {for (k in it) if (substr(k, length(k)) == "1" && it[k] <= it[substr(k, 1, length(k)-1) "0"]) bad=1; exit bad}' "$out/cost.tsv"
+check "cost.png is a PNG" sh -c "head -c 8 '$out/cost.png' | od -An -c | grep -q 'P   N   G'"
+"$ADHERE" --cost -q --cost-nodes=5 >/dev/null 2>"$TMP/stderr"; rc=$?
+check "--cost-nodes=5 is refused with exit 2 ($(cat "$TMP/stderr"))" sh -c "[ $rc -eq 2 ] && grep -q 'from 10 to 20000' '$TMP/stderr'"
+"$ADHERE" --cost -q --cost-eps=0 >/dev/null 2>"$TMP/stderr"; rc=$?
+check "--cost-eps=0 is refused with exit 2 ($(cat "$TMP/stderr"))" [ "$rc" -eq 2 ]
+done_testing
