@@ -70,6 +70,8 @@ typedef struct adh_run {
 
 void adh_run_init(adh_run *run);
 void adh_run_free(adh_run *run);
+/* Appends a row (growing the array). ADH_SUCCESS or ADH_ENOMEM. */
+int adh_run_push_row(adh_run *run, const adh_obs *row);
 /* The last unloading branch's summary (the deepest turn), or NULL. */
 const adh_turn_result *adh_run_main_turn(const adh_run *run);
 

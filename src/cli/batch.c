@@ -14,18 +14,13 @@
 #include "adhere/protocol.h"
 #include "adhere/status.h"
 #include "cli/figures.h"
+#include "cli/interrupt.h"
 #include "cli/rigid.h"
 #include "cli/statics.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
 #include "plot/plot.h"
 
-static volatile sig_atomic_t stop_signal;
-
-static void on_signal(int sig)
-{
-    stop_signal = sig;
-}
 
 typedef struct batch_ctx {
     const adh_config *cfg;
@@ -57,7 +52,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
                     o->iters, run->iterations);
         }
     }
-    return stop_signal != 0;
+    return adh_interrupt_step(o, run, NULL);
 }
 
 static int make_dir(const char *dir, char *why, size_t n)
@@ -108,11 +103,7 @@ int adh_batch_main(const adh_cli *cli)
         return ADH_EXIT_SOLVER;
     }
 
-    struct sigaction sa, old_int, old_term;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    adh_interrupt_catch();
 
     batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2), 0 };
     if (ctx.stream) {
@@ -136,13 +127,12 @@ int adh_batch_main(const adh_cli *cli)
     }
     if (ctx.progress)
         fprintf(stderr, "\r%*s\r", 100, "");
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
+    adh_interrupt_release();
 
     int status = ADH_EXIT_OK;
     char note[512] = "";
     if (run.interrupted) {
-        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", (int)stop_signal, run.nrows);
+        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", adh_interrupt_signal(), run.nrows);
         status = ADH_EXIT_INTERRUPTED;
     } else if (rc != ADH_SUCCESS) {
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run.nrows, adh_strerror(rc));

@@ -15,9 +15,11 @@
 #include "adhere/status.h"
 #include "adhere/units.h"
 #include "cli/batch.h"
+#include "cli/interrupt.h"
 #include "cli/statics.h"
 #include "cli/tables.h"
 #include "plot/gnuplot.h"
+#include "plot/labels.h"
 
 char *openblas_get_config(void);
 
@@ -43,18 +45,7 @@ typedef struct cost_job {
     pthread_mutex_t lock;
 } cost_job;
 
-static volatile sig_atomic_t stop_signal;
 
-static void on_signal(int sig)
-{
-    stop_signal = sig;
-}
-
-static int on_step(const adh_obs *o, const adh_run *run, void *ctx)
-{
-    (void)o, (void)run, (void)ctx;
-    return stop_signal != 0;
-}
 
 static double now(void)
 {
@@ -107,7 +98,7 @@ static void *worker(void *arg)
     cost_job *job = arg;
     for (;;) {
         pthread_mutex_lock(&job->lock);
-        size_t i = job->next < job->n && !stop_signal ? job->next++ : job->n;
+        size_t i = job->next < job->n && !adh_interrupt_signal() ? job->next++ : job->n;
         pthread_mutex_unlock(&job->lock);
         if (i >= job->n)
             break;
@@ -122,7 +113,7 @@ static void *worker(void *arg)
         cr->kernel_seconds = now() - t0;
         adh_run run;
         adh_run_init(&run);
-        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, on_step, NULL, &run) : ADH_ENOMEM;
+        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, adh_interrupt_step, NULL, &run) : ADH_ENOMEM;
         if (run.interrupted)
             cr->status = ADH_CONTINUE;
         measure(cr, &run, c.proto.step);
@@ -236,7 +227,8 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
         return 3;
     }
     adh_gnuplot_cmd(gp, "set terminal pngcairo size 900,600 enhanced font ',10'");
-    adh_gnuplot_cmd(gp, "set output '%s'", tmp);
+    char q[PATH_MAX + 64];
+    adh_gnuplot_cmd(gp, "set output %s", adh_gp_quoted(tmp, q, sizeof q));
     adh_gnuplot_cmd(gp, "set multiplot layout 1,2 title 'What accuracy costs: error against the most accurate run'");
     adh_gnuplot_cmd(gp, "set logscale xy; set grid; set key bottom left; set xlabel 'wall time (s)'");
     for (int panel = 0; panel < 2; panel++) {
@@ -244,8 +236,8 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
         char cmd[8192];
         int off = snprintf(cmd, sizeof cmd, "plot ");
         for (size_t s = 0; s < nseries; s++)
-            off += snprintf(cmd + off, sizeof cmd - (size_t)off, "%s'%s' index %zu using 1:%d with linespoints lw 2 title '%s'",
-                            s ? ", " : "", data, s, panel ? 3 : 2, titles[s]);
+            off += snprintf(cmd + off, sizeof cmd - (size_t)off, "%s%s index %zu using 1:%d with linespoints lw 2 title '%s'",
+                            s ? ", " : "", adh_gp_quoted(data, q, sizeof q), s, panel ? 3 : 2, titles[s]);
         adh_gnuplot_cmd(gp, "%s", cmd);
     }
     adh_gnuplot_cmd(gp, "unset multiplot");
@@ -318,11 +310,7 @@ int adh_cost_main(const adh_cli *cli)
     }
     qsort(runs, n, sizeof *runs, by_cost);
 
-    struct sigaction sa, old_int, old_term;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    adh_interrupt_catch();
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     int jobs = cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
     cost_job job = { .cfg = cfg, .runs = runs, .n = n };
@@ -348,15 +336,14 @@ int adh_cost_main(const adh_cli *cli)
     adh_run_init(&srun);
     adh_static_result sres;
     memset(&sres, 0, sizeof sres);
-    int src = k ? adh_cli_static_run(&sc, g, k, on_step, NULL, &srun, &sres) : ADH_ENOMEM;
+    int src = k ? adh_cli_static_run(&sc, g, k, adh_interrupt_step, NULL, &srun, &sres) : ADH_ENOMEM;
     adh_run_free(&srun);
     adh_kernel_free(k);
     adh_grid_free(g);
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
+    adh_interrupt_release();
 
     /* The most accurate run: the finest grid, the exact kernel, the smallest eps. */
     const cost_run *best = &runs[0];
@@ -393,12 +380,12 @@ int adh_cost_main(const adh_cli *cli)
                r->status == ADH_SUCCESS ? (r->unconverged ? "  (some steps at the cap)" : "")
                                         : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
     }
-    int status = stop_signal ? ADH_EXIT_INTERRUPTED : ADH_EXIT_OK;
+    int status = adh_interrupt_signal() ? ADH_EXIT_INTERRUPTED : ADH_EXIT_OK;
     if (out) {
         if (adh_write_atomic(out, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             status = ADH_EXIT_USAGE;
-        } else if (cfg->plot && !stop_signal) {
+        } else if (cfg->plot && !adh_interrupt_signal()) {
             int prc = plot_cost(&job, out, why, sizeof why);
             if (prc) {
                 fprintf(stderr, "adhere: cost.png not written: %s\n", why);

@@ -11,6 +11,7 @@
 #include "adhere/models.h"
 #include "cli/sweep.h"
 #include "plot/gnuplot.h"
+#include "plot/labels.h"
 #include "plot/plot.h"
 
 #define SYNC_TIMEOUT_S 60.0
@@ -25,28 +26,7 @@ typedef struct figure {
     size_t msglen;
 } figure;
 
-/* gnuplot single quotes: only the quote itself is special, and doubled. */
-static const char *quoted(const char *s, char *buf, size_t len)
-{
-    size_t j = 0;
-    buf[j++] = '\'';
-    for (; *s && j + 3 < len; s++) {
-        if (*s == '\'')
-            buf[j++] = '\'';
-        buf[j++] = *s;
-    }
-    buf[j++] = '\'';
-    buf[j] = '\0';
-    return buf;
-}
 
-static void force_unit(double fmax, double *scale, const char **name)
-{
-    if (fmax >= 1e-4) { *scale = 1e3; *name = "mN"; }
-    else if (fmax >= 1e-7) { *scale = 1e6; *name = "µN"; }
-    else if (fmax >= 1e-10) { *scale = 1e9; *name = "nN"; }
-    else { *scale = 1e12; *name = "pN"; }
-}
 
 static int fig_open(figure *fg, const adh_config *cfg, const char *dir, char *msg, size_t msglen)
 {
@@ -112,8 +92,8 @@ static void fig_begin(figure *fg, const char *name, char *tmp_png, size_t len)
     adh_gnuplot_cmd(fg->gp, "set key box opaque");
     adh_gnuplot_cmd(fg->gp, "adh_figure = \"%s\"", name);
     if (fg->style[0])
-        adh_gnuplot_cmd(fg->gp, "load %s", quoted(fg->style, q, sizeof q));
-    adh_gnuplot_cmd(fg->gp, "set output %s", quoted(tmp_png, q, sizeof q));
+        adh_gnuplot_cmd(fg->gp, "load %s", adh_gp_quoted(fg->style, q, sizeof q));
+    adh_gnuplot_cmd(fg->gp, "set output %s", adh_gp_quoted(tmp_png, q, sizeof q));
 }
 
 static int fig_end(figure *fg, const char *name, const char *tmp_png)
@@ -188,7 +168,7 @@ static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
         return -1;
     double fs;
     const char *fu;
-    force_unit(fbig, &fs, &fu);
+    adh_force_unit(fbig, &fs, &fu);
     fig_begin(fg, "precontact.png", tmp_png, sizeof tmp_png);
     adh_gnuplot_cmd(fg->gp, "set title \"Force before contact (Figure 1 inset), E = %.3g Pa\"", m->E);
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
@@ -197,7 +177,7 @@ static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
     adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*%.17g) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
                     "'' using ($1*1e9):($3*%.17g) with lines lw 2.5 lc rgb \"#000000\" title \"rigid F(h_0) (eq 22)\", "
                     "%s using ($1*1e9):($2*%.17g) with lines dt 3 lw 2 lc rgb \"#1f3f8f\" title \"F(h), h from eq 23\"",
-                    quoted(dat, q, sizeof q), fs, fs, quoted(eq, q2, sizeof q2), fs);
+                    adh_gp_quoted(dat, q, sizeof q), fs, fs, adh_gp_quoted(eq, q2, sizeof q2), fs);
     return fig_end(fg, "precontact.png", tmp_png);
 }
 
@@ -233,7 +213,7 @@ static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
     adh_gnuplot_cmd(fg->gp, "set samples 400");
     adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*1e9) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
                     "-A*sqrt(2*R)/(8*E*(x*1e-9)**2.5)*1e9 with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 23\"",
-                    quoted(dat, q, sizeof q));
+                    adh_gp_quoted(dat, q, sizeof q));
     return fig_end(fg, "bulge.png", tmp_png);
 }
 
@@ -294,7 +274,7 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($4 == 1 ? $2*1e9 : NaN) with points pt 7 ps 1.2 lc rgb \"#c0392b\" title \"jump (computed)\", "
                     "'' index 0 using 1:($4 == 1 ? NaN : $2*1e9) with points pt 6 ps 1.2 lc rgb \"#c0392b\" title \"last gap before contact, no jump\", "
                     "'' index 1 using 1:($2*1e9) with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 24\"",
-                    quoted(dat, q, sizeof q));
+                    adh_gp_quoted(dat, q, sizeof q));
     return fig_end(fg, "jump.png", tmp_png);
 }
 
@@ -334,7 +314,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
         return -1;
     double fs;
     const char *fu;
-    force_unit(fbig, &fs, &fu);
+    adh_force_unit(fbig, &fs, &fu);
     fig_begin(fg, "force.png", tmp_png, sizeof tmp_png);
     adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", adh_sweep_name(cfg->sweep.kind));
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
@@ -358,12 +338,12 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
         /* light to heavy, as the paper's eps = 1, 0.5, 0.1 pm */
         static const char *const colors[] = { "#8fb8de", "#4a7fc1", "#1f3f8f", "#c0392b", "#e67e22", "#27ae60", "#8e44ad" };
         fprintf(c, ", %s index %zu using ($1*1e9):($2*%.17g) with lines lw %.2g lc rgb \"%s\" title \"%s\"",
-                quoted(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1),
+                adh_gp_quoted(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1),
                 colors[i % (sizeof colors / sizeof colors[0])], label);
     }
     if (same_material && amax > 0)
         fprintf(c, ", %s using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" title \"JKR\"",
-                quoted(jkr, q, sizeof q), fs);
+                adh_gp_quoted(jkr, q, sizeof q), fs);
     fclose(c);
     adh_gnuplot_cmd(fg->gp, "%s", cmd);
     free(cmd);

@@ -15,6 +15,7 @@
 #include "adhere/status.h"
 #include "cli/batch.h"
 #include "cli/figures.h"
+#include "cli/interrupt.h"
 #include "cli/rigid.h"
 #include "cli/tables.h"
 #include "plot/plot.h"
@@ -23,18 +24,7 @@
 /* OpenBLAS's own threads would fight the sweep's for the same cores. */
 void openblas_set_num_threads(int n);
 
-static volatile sig_atomic_t stop_signal;
 
-static void on_signal(int sig)
-{
-    stop_signal = sig;
-}
-
-static int on_step(const adh_obs *o, const adh_run *run, void *ctx)
-{
-    (void)o, (void)run, (void)ctx;
-    return stop_signal != 0;
-}
 
 typedef struct sweep_job {
     const adh_config *cfg;
@@ -57,7 +47,7 @@ static void *worker(void *arg)
     const adh_config *cfg = job->cfg;
     for (;;) {
         pthread_mutex_lock(&job->lock);
-        size_t i = job->next < cfg->sweep.n && !stop_signal ? job->next++ : cfg->sweep.n;
+        size_t i = job->next < cfg->sweep.n && !adh_interrupt_signal() ? job->next++ : cfg->sweep.n;
         pthread_mutex_unlock(&job->lock);
         if (i >= cfg->sweep.n)
             break;
@@ -65,8 +55,8 @@ static void *worker(void *arg)
         adh_config_sweep_run(cfg, i, &rc);
         adh_run *run = &job->runs[i];
         job->status[i] = rc.mode == ADH_MODE_RIGID
-                       ? adh_rigid_run(&rc, on_step, NULL, run)
-                       : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, on_step, NULL, run);
+                       ? adh_rigid_run(&rc, adh_interrupt_step, NULL, run)
+                       : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, adh_interrupt_step, NULL, run);
         /* tables as soon as a run ends: a long sweep killed later keeps them */
         if (job->out)
             job->tables[i] = write_tables(cfg, i, run, job->status[i], job->out);
@@ -187,7 +177,7 @@ static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, int
     }
     int partial = run->interrupted || rc != ADH_SUCCESS;
     if (run->interrupted)
-        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", (int)stop_signal, run->nrows);
+        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", adh_interrupt_signal(), run->nrows);
     else if (rc != ADH_SUCCESS)
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(rc));
     adh_tables t = { &rcfg, run, NULL, 0, partial, note };
@@ -287,11 +277,7 @@ int adh_sweep_main(const adh_cli *cli)
     if (jobs > 1)
         openblas_set_num_threads(1);
 
-    struct sigaction sa, old_int, old_term;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    adh_interrupt_catch();
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .status = status, .out = out, .tables = tables };
     pthread_mutex_init(&job.lock, NULL);
@@ -306,13 +292,12 @@ int adh_sweep_main(const adh_cli *cli)
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
+    adh_interrupt_release();
 
     int exit_status = ADH_EXIT_OK;
     for (size_t i = 0; i < n; i++) {
         /* a run never started (interrupted before its turn) counts as interrupted */
-        if (stop_signal && runs[i].nrows == 0)
+        if (adh_interrupt_signal() && runs[i].nrows == 0)
             runs[i].interrupted = 1;
         if (runs[i].interrupted)
             exit_status = worse(exit_status, ADH_EXIT_INTERRUPTED);

@@ -870,20 +870,6 @@ size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds)
     return w->nfolds_kept;
 }
 
-static int push_row(adh_run *run, const adh_obs *o)
-{
-    if (run->nrows == run->rows_cap) {
-        size_t cap = run->rows_cap ? 2 * run->rows_cap : 256;
-        adh_obs *p = realloc(run->rows, cap * sizeof *p);
-        if (!p)
-            return ADH_ENOMEM;
-        run->rows = p;
-        run->rows_cap = cap;
-    }
-    run->rows[run->nrows++] = *o;
-    return ADH_SUCCESS;
-}
-
 int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
                    const adh_static_settings *s, adh_step_cb cb, void *ctx,
                    adh_run *run, adh_static_result *res)
@@ -911,7 +897,7 @@ int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m
         o.converged = 1;
         o.stable = pt.stable;
         run->iterations += pt.newton;
-        int prc = push_row(run, &o);
+        int prc = adh_run_push_row(run, &o);
         if (prc != ADH_SUCCESS) {
             rc = prc;
             break;

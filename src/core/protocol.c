@@ -146,7 +146,7 @@ const adh_turn_result *adh_run_main_turn(const adh_run *run)
     return NULL;
 }
 
-static int push_row(adh_run *run, const adh_obs *o)
+int adh_run_push_row(adh_run *run, const adh_obs *o)
 {
     if (run->nrows == run->rows_cap) {
         size_t cap = run->rows_cap ? 2 * run->rows_cap : 256;
@@ -242,7 +242,7 @@ static int drive_step(runner *rn, double h0, int branch, int path, size_t dwell,
         return rc;
     if (!(isfinite(o->F) && isfinite(o->delta) && isfinite(o->a)))
         return ADH_ENAN;
-    int prc = push_row(rn->run, o);
+    int prc = adh_run_push_row(rn->run, o);
     if (prc != ADH_SUCCESS)
         return prc;
     if (wants_profile(rn->ps, h0) && push_profile(rn->run, s, branch, path) != ADH_SUCCESS)

@@ -14,6 +14,7 @@
 
 #include "adhere/params.h"
 #include "plot/gnuplot.h"
+#include "plot/labels.h"
 #include "plot/plotdata.h"
 
 #define SYNC_TIMEOUT_S 60.0
@@ -70,37 +71,7 @@ static void append(char *buf, size_t len, const char *fmt, ...)
     va_end(ap);
 }
 
-/* A gnuplot single-quoted string: nothing is special inside but the quote
- * itself, which is doubled, so any path survives. */
-static const char *quoted(const char *s, char *buf, size_t len)
-{
-    size_t j = 0;
-    if (len < 3)
-        return "''";
-    buf[j++] = '\'';
-    for (; *s && j + 3 < len; s++) {
-        if (*s == '\'')
-            buf[j++] = '\'';
-        buf[j++] = *s;
-    }
-    buf[j++] = '\'';
-    buf[j] = '\0';
-    return buf;
-}
 
-/* A force unit that keeps the plotted numbers between about 0.1 and 1000. */
-static void force_unit(double fmax, double *scale, const char **name)
-{
-    if (fmax >= 1e-4) {
-        *scale = 1e3; *name = "mN";
-    } else if (fmax >= 1e-7) {
-        *scale = 1e6; *name = "µN";
-    } else if (fmax >= 1e-10) {
-        *scale = 1e9; *name = "nN";
-    } else {
-        *scale = 1e12; *name = "pN";
-    }
-}
 
 /* 1, 2 or 5 times a power of ten, at least x */
 static double nice_step(double x)
@@ -268,8 +239,8 @@ static void begin_figure(plotter *pl, const char *figure, const char *tmp_png)
         adh_gnuplot_cmd(pl->gp, "%s", builtin_style[i]);
     adh_gnuplot_cmd(pl->gp, "adh_figure = \"%s\"", figure);
     if (pl->style[0])
-        adh_gnuplot_cmd(pl->gp, "load %s", quoted(pl->style, q, sizeof q));
-    adh_gnuplot_cmd(pl->gp, "set output %s", quoted(tmp_png, q, sizeof q));
+        adh_gnuplot_cmd(pl->gp, "load %s", adh_gp_quoted(pl->style, q, sizeof q));
+    adh_gnuplot_cmd(pl->gp, "set output %s", adh_gp_quoted(tmp_png, q, sizeof q));
 }
 
 static int png_nonempty(const char *path)
@@ -410,7 +381,7 @@ static int plot_force(plotter *pl)
     double fscale;
     const char *funit;
     double big = fmax(fabs(flo), fmax(fabs(fhi), fabs(d->F_dmt)));
-    force_unit(big, &fscale, &funit);
+    adh_force_unit(big, &fscale, &funit);
     /* The key sits top right, where the force has decayed to about zero;
      * the top of the frame is raised until the key clears every computed
      * curve in the right 60 %. The rigid force, which shoots up near
@@ -467,7 +438,7 @@ static int plot_force(plotter *pl)
         return -1;
     }
     fprintf(c, "plot 0 ls 7 notitle");
-    const char *qdat = quoted(dat, q, sizeof q);
+    const char *qdat = adh_gp_quoted(dat, q, sizeof q);
     int labelled = 0;
     for (int p = 0; p <= np; p++) {
         for (int s = 1; s >= 0; s--) {
@@ -544,7 +515,7 @@ static int plot_force(plotter *pl)
                         "plot %s using ($1*Fu):($2*Fu) with linespoints ls 6 title \"adhesion\", "
                         "-Fjkr*Fu with lines ls 3 title \"JKR\", "
                         "-Fdmt*Fu with lines ls 4 title \"DMT\"",
-                        quoted(adh, q, sizeof q));
+                        adh_gp_quoted(adh, q, sizeof q));
         adh_gnuplot_cmd(pl->gp, "unset multiplot");
     }
     return finish_figure(pl, "force.png", tmp_png);
@@ -658,7 +629,7 @@ static int plot_profile(plotter *pl)
         free(pos);
         return -1;
     }
-    const char *qdat = quoted(dat, q, sizeof q);
+    const char *qdat = adh_gp_quoted(dat, q, sizeof q);
     fprintf(c, "plot (htop + (x*1e-6)**2/(2*R))*1e9 with lines ls 5 "
                "title \"undeformed sphere, h_0 = %.3g nm\"", top * 1e9);
     int titled[ADH_MAX_PROFILES * 2] = { 0 };
@@ -790,7 +761,7 @@ static int plot_contact(plotter *pl)
                     (xmax + xpad) * 1e9);
 
     for (int panel = 0; panel < 2; panel++) {
-        const char *qdat = quoted(dat, q, sizeof q);
+        const char *qdat = adh_gp_quoted(dat, q, sizeof q);
         if (panel == 0) {
             adh_gnuplot_cmd(pl->gp, "set origin 0,0.42");
             adh_gnuplot_cmd(pl->gp, "set size 1,%.3f", top - 0.42);

@@ -1,0 +1,38 @@
+#include "cli/interrupt.h"
+
+#include <signal.h>
+#include <string.h>
+
+static volatile sig_atomic_t received;
+static struct sigaction old_int, old_term;
+
+static void on_signal(int sig)
+{
+    received = sig;
+}
+
+void adh_interrupt_catch(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+}
+
+void adh_interrupt_release(void)
+{
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+}
+
+int adh_interrupt_signal(void)
+{
+    return received;
+}
+
+int adh_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx)
+{
+    (void)row, (void)run, (void)ctx;
+    return received != 0;
+}
