@@ -151,6 +151,11 @@ int adh_batch_main(const adh_cli *cli)
         nextra += adh_static_summary_keys(&sres, "", keynames, extra);
     if (want_ref)
         nextra += adh_static_summary_keys(&rres, "static_", keynames + nextra, extra + nextra);
+    /* A force table streamed to a full disk or a closed pipe is lost: say so. */
+    if (ctx.stream && (fflush(ctx.stream) != 0 || ferror(ctx.stream))) {
+        fprintf(stderr, "adhere: cannot write the force table to standard output: %s\n", strerror(errno));
+        status = ADH_EXIT_USAGE;
+    }
     adh_tables tables = { cfg, &run, extra, nextra, status != ADH_EXIT_OK, note };
     adh_tables ref_tables = { cfg, &ref, NULL, 0, 0, NULL };
     if (ctx.stream && tables.partial)

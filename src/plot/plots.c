@@ -881,19 +881,28 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const char *dir,
                  errno ? strerror(errno) : "not a writable directory");
         return 2;
     }
-    snprintf(path, sizeof path, "%s/profiles.tsv", dir);
-    if (adh_write_profiles_table(cfg, run, path, why, sizeof why) != 0) {
-        snprintf(msg, msglen, "%s", why);
-        return 2;
+    /* Only the tables that were asked for: profiles where profiles were
+     * stored, contact-line tracking when the contact plot is wanted. */
+    char tables[64] = "";
+    if (run->nprofiles > 0) {
+        snprintf(path, sizeof path, "%s/profiles.tsv", dir);
+        if (adh_write_profiles_table(cfg, run, path, why, sizeof why) != 0) {
+            snprintf(msg, msglen, "%s", why);
+            return 2;
+        }
+        strcat(tables, "profiles.tsv");
     }
-    snprintf(path, sizeof path, "%s/contact.tsv", dir);
-    if (adh_write_contact_table(cfg, run, path, why, sizeof why) != 0) {
-        snprintf(msg, msglen, "%s", why);
-        return 2;
+    if (cfg->plots & ADH_PLOT_CONTACT) {
+        snprintf(path, sizeof path, "%s/contact.tsv", dir);
+        if (adh_write_contact_table(cfg, run, path, why, sizeof why) != 0) {
+            snprintf(msg, msglen, "%s", why);
+            return 2;
+        }
+        strcat(tables, *tables ? ", contact.tsv" : "contact.tsv");
     }
     unsigned want = cfg->plots & ADH_PLOT_ALL;
     if (!cfg->plot || !want) {
-        snprintf(msg, msglen, "wrote profiles.tsv, contact.tsv in %s (plots off)", dir);
+        snprintf(msg, msglen, "wrote %s in %s (plots off)", *tables ? tables : "no plot tables", dir);
         return 0;
     }
 
@@ -945,7 +954,7 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const char *dir,
                  *pl.done ? pl.done : "", *pl.done ? " written, " : "", dir);
         return 3;
     }
-    snprintf(msg, msglen, "wrote %s%sprofiles.tsv, contact.tsv in %s%s%s", pl.done,
-             *pl.done ? ", " : "", dir, *pl.notes ? "; " : "", pl.notes);
+    snprintf(msg, msglen, "wrote %s%s%s in %s%s%s", pl.done, *pl.done && *tables ? ", " : "", tables, dir,
+             *pl.notes ? "; " : "", pl.notes);
     return 0;
 }

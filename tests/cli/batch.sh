@@ -32,6 +32,16 @@ check "precontact run stops at the jump into contact ($rows lines)" [ "$rows" -g
 last_a=$(grep -v '^#' "$TMP/stdout" | tail -1 | cut -f5)
 check "its last row is in contact (a = $last_a)" awk "BEGIN {exit !($last_a > 0)}"
 
+# A write that fails (full disk): said, not swallowed.
+"$ADHERE" --batch -q -N 100 --eps=10pm --turn=none >/dev/full 2>"$TMP/stderr"
+rc=$?
+check "a force table streamed to a full disk exits 2 and says so ($(cat "$TMP/stderr"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'No space left on device' '$TMP/stderr'"
+
+# Only the plot tables asked for: no contact-line table without the contact plot.
+"$ADHERE" --batch -q --no-plot --plots=force -N 100 --eps=10pm --turn=-1nm -o "$TMP/only" 2>/dev/null
+check "--plots=force writes no contact.tsv and no profiles.tsv" sh -c "[ -s '$TMP/only/force.tsv' ] && [ ! -e '$TMP/only/contact.tsv' ] && [ ! -e '$TMP/only/profiles.tsv' ]"
+
 # SIGINT halfway: tables valid, marked partial, exit 130.
 "$ADHERE" --batch -q --no-plot -N 200 --eps=0.5pm -o "$TMP/int" >/dev/null 2>"$TMP/stderr" &
 pid=$!
