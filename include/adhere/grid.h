@@ -19,6 +19,11 @@ double adh_grid_default_spacing(const adh_material *m);
  * paper's R and z0). Changing N alone keeps this radius and refines the grid. */
 double adh_grid_default_rmax(const adh_material *m);
 
+/* The default spacing for n nodes: the paper's grid radius (above), never
+ * past 0.3 R where the paraboloid gap (eq 3) stops describing a sphere,
+ * divided by n. Every driver uses this one rule. */
+double adh_grid_spacing_for(const adh_material *m, size_t n);
+
 adh_grid *adh_grid_alloc(size_t n, double dr);
 void adh_grid_free(adh_grid *g);
 

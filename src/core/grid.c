@@ -17,6 +17,11 @@ double adh_grid_default_rmax(const adh_material *m)
     return 1000.0 * adh_grid_default_spacing(m);
 }
 
+double adh_grid_spacing_for(const adh_material *m, size_t n)
+{
+    return fmin(adh_grid_default_rmax(m), 0.3 * m->R) / (double)n;
+}
+
 adh_grid *adh_grid_alloc(size_t n, double dr)
 {
     if (n == 0 || !(dr > 0))

@@ -25,10 +25,7 @@ void adh_config_default(adh_config *c)
 
 double adh_config_spacing(const adh_config *c)
 {
-    /* The paper's radius, but never past 0.3 R where the paraboloid gap
-     * (eq 3) stops describing a sphere. */
-    double rmax = fmin(adh_grid_default_rmax(&c->mat), 0.3 * c->mat.R);
-    return isnan(c->spacing) ? rmax / (double)c->nodes : c->spacing;
+    return isnan(c->spacing) ? adh_grid_spacing_for(&c->mat, c->nodes) : c->spacing;
 }
 
 const char *adh_sweep_name(adh_sweep_kind kind)

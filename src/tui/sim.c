@@ -30,7 +30,7 @@ static double now(void)
 
 double tui_sim_spacing(const tui_sim *s)
 {
-    return isnan(s->spacing) ? adh_grid_default_spacing(&s->mat) : s->spacing;
+    return isnan(s->spacing) ? adh_grid_spacing_for(&s->mat, s->nodes) : s->spacing;
 }
 
 static void free_solver(tui_sim *s)
