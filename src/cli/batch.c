@@ -1,4 +1,5 @@
 #include "cli/batch.h"
+#include "adhere/clock.h"
 
 #include <errno.h>
 #include <math.h>
@@ -29,13 +30,6 @@ typedef struct batch_ctx {
     double last_draw;
 } batch_ctx;
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
 {
     batch_ctx *ctx = vctx;
@@ -44,7 +38,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
         fflush(ctx->stream);
     }
     if (ctx->progress) {
-        double t = now();
+        double t = adh_clock_seconds();
         if (t - ctx->last_draw > 0.1) {
             ctx->last_draw = t;
             fprintf(stderr, "\r  %s step %5zu  h0 %+8.3f nm  F %+10.4g uN  iters %7zu  total %9zu ",

@@ -1,4 +1,5 @@
 #include "cli/cost.h"
+#include "adhere/clock.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -46,13 +47,6 @@ typedef struct cost_job {
 } cost_job;
 
 
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 double adh_hysteresis_area(const adh_run *run, double step)
 {
@@ -107,10 +101,10 @@ static void *worker(void *arg)
         c.nodes = cr->nodes;
         c.relax.eps = cr->eps;
         c.kernel = cr->kernel;
-        double t0 = now();
+        double t0 = adh_clock_seconds();
         adh_grid *g = adh_grid_alloc(c.nodes, adh_config_spacing(&c));
         adh_kernel *k = g ? adh_kernel_alloc(g, c.kernel) : NULL;
-        cr->kernel_seconds = now() - t0;
+        cr->kernel_seconds = adh_clock_seconds() - t0;
         adh_run run;
         adh_run_init(&run);
         cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, adh_interrupt_step, NULL, &run) : ADH_ENOMEM;

@@ -1,4 +1,5 @@
 #include "adhere/equilibrium.h"
+#include "adhere/clock.h"
 
 #include <gsl/gsl_cblas.h>
 #include <math.h>
@@ -132,13 +133,6 @@ int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t
         BAD("max_points (%zu) and max_newton (%zu) must be at least 2", s->max_points, s->max_newton);
     return ADH_SUCCESS;
 #undef BAD
-}
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 static void lin_free(lin *L)
@@ -683,7 +677,7 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
 {
     if (adh_static_settings_validate(s, NULL, 0) != ADH_SUCCESS || adh_material_validate(m, NULL, 0) != ADH_SUCCESS)
         return ADH_EINVAL;
-    double t0 = now();
+    double t0 = adh_clock_seconds();
     size_t n = w->n;
     w->m = *m;
     w->s = *s;
@@ -732,14 +726,14 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     if (rc == ADH_SUCCESS && w->det_sign < 0)
         rc = ADH_ESTALL; /* J = I + small out there: det J > 0 */
     if (rc != ADH_SUCCESS) {
-        w->res.seconds += now() - t0;
+        w->res.seconds += adh_clock_seconds() - t0;
         return rc;
     }
     w->newton_point = it;
     w->F = 0;
     w->dFds = 0;
     accept(w);
-    w->res.seconds += now() - t0;
+    w->res.seconds += adh_clock_seconds() - t0;
     return ADH_SUCCESS;
 }
 
@@ -750,7 +744,7 @@ int adh_static_iterate(adh_static *w)
     w->act = w->s.active_tol;
     if (w->res.points >= w->s.max_points)
         return ADH_EMAXITER;
-    double t0 = now();
+    double t0 = adh_clock_seconds();
     size_t n = w->n;
     double z0 = w->m.z0;
     double cos_max = cos(w->s.max_angle);
@@ -835,7 +829,7 @@ int adh_static_iterate(adh_static *w)
         w->res.rejected++;
         w->ds *= 0.25;
     }
-    w->res.seconds += now() - t0;
+    w->res.seconds += adh_clock_seconds() - t0;
     return rc;
 }
 
@@ -879,7 +873,7 @@ int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m
         run->status = ADH_ENOMEM;
         return run->status;
     }
-    double t0 = now();
+    double t0 = adh_clock_seconds();
     int rc = adh_static_set(w, m, s);
     run->start = w->s.h0_start;
     for (;;) {
@@ -889,8 +883,8 @@ int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m
         memset(&o, 0, sizeof o);
         adh_observe(g, m, w->st, &o);
         adh_static_point pt = adh_static_current(w);
-        o.seconds = now() - t0;
-        t0 = now();
+        o.seconds = adh_clock_seconds() - t0;
+        t0 = adh_clock_seconds();
         o.iters = pt.newton;
         o.branch = pt.direction;
         o.path = 0;

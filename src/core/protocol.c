@@ -1,4 +1,5 @@
 #include "adhere/protocol.h"
+#include "adhere/clock.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -184,13 +185,6 @@ static int push_profile(adh_run *run, const adh_state *s, int branch, int path)
     return ADH_SUCCESS;
 }
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 typedef struct runner {
     const adh_grid *g;
     const adh_material *m;
@@ -214,7 +208,7 @@ static int wants_profile(const adh_protocol_settings *ps, double h0)
  * the row and counted, not fatal), or an error that ends the run. */
 static int drive_step(runner *rn, double h0, int branch, int path, size_t dwell, adh_obs *o)
 {
-    double t0 = now();
+    double t0 = adh_clock_seconds();
     int rc;
     if (dwell) {
         rc = adh_relax_dwell(rn->w, dwell);
@@ -222,7 +216,7 @@ static int drive_step(runner *rn, double h0, int branch, int path, size_t dwell,
         adh_relax_move(rn->w, h0);
         rc = adh_relax_iterate(rn->w, 0);
     }
-    double dt = now() - t0;
+    double dt = adh_clock_seconds() - t0;
     const adh_state *s = adh_relax_state(rn->w);
     memset(o, 0, sizeof *o);
     adh_observe(rn->g, rn->m, s, o);

@@ -1,4 +1,5 @@
 #include "plot/gnuplot.h"
+#include "adhere/clock.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -50,13 +51,6 @@ static void sleep_ms(long ms)
     struct timespec ts = { ms / 1000, (ms % 1000) * 1000000L };
     while (nanosleep(&ts, &ts) < 0 && errno == EINTR)
         ;
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 /* In the child between fork and exec: only async-signal-safe calls. */
@@ -288,7 +282,7 @@ int adh_gnuplot_sync(adh_gnuplot *gp, double timeout_s, char *msg, size_t msglen
         return -1;
     }
     /* On EPIPE gnuplot is dead: reading to EOF below reports how it died. */
-    double deadline = now_s() + timeout_s;
+    double deadline = adh_clock_seconds() + timeout_s;
     for (;;) {
         char *nl;
         while ((nl = memchr(gp->in, '\n', gp->inlen)) != NULL) {
@@ -312,7 +306,7 @@ int adh_gnuplot_sync(adh_gnuplot *gp, double timeout_s, char *msg, size_t msglen
         }
         if (gp->inlen == sizeof gp->in)   /* an absurd line: drop it */
             gp->inlen = 0;
-        double left = deadline - now_s();
+        double left = deadline - adh_clock_seconds();
         if (left <= 0) {
             snprintf(msg, msglen, "gnuplot did not answer within %.3g s; stopped it (log: %s)",
                      timeout_s, gp->logpath);

@@ -1,4 +1,5 @@
 #include "tui/sim.h"
+#include "adhere/clock.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -20,13 +21,6 @@ const tui_param_info tui_params[P_COUNT] = {
     [P_SPACING] = { "spacing", "\xce\x94", "dr", "grid spacing", ADH_Q_LENGTH },
     [P_TURN] = { "turn", "turn", "turn", "turning point", ADH_Q_LENGTH },
 };
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 double tui_sim_spacing(const tui_sim *s)
 {
@@ -293,7 +287,7 @@ static void move_to(tui_sim *s, double h0)
 {
     s->target = h0;
     adh_relax_move(s->w, h0);
-    s->t0 = now();
+    s->t0 = adh_clock_seconds();
 }
 
 int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen)
@@ -378,7 +372,7 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
     memset(&o, 0, sizeof o);
     adh_observe(s->g, &s->mat, st, &o);
     o.iters = adh_relax_step_iterations(s->w);
-    o.seconds = now() - s->t0;
+    o.seconds = adh_clock_seconds() - s->t0;
     o.branch = s->solving_start ? +1 : s->dir;
     o.path = s->solving_start ? 0 : next_path(s, s->dir);
     o.converged = rc == ADH_SUCCESS;

@@ -4,6 +4,7 @@
  * and, during a long solve, a few times a second. */
 #define NCURSES_WIDECHAR 1
 #include "tui/tui.h"
+#include "adhere/clock.h"
 
 #include <curses.h>
 #include <errno.h>
@@ -69,13 +70,6 @@ typedef struct tui {
     double last_draw;
 } tui;
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static void say(tui *t, int error, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 static void say(tui *t, int error, const char *fmt, ...)
 {
@@ -123,7 +117,7 @@ static void draw(tui *t)
     else
         tui_draw(&t->sim, v);
     refresh();
-    t->last_draw = now();
+    t->last_draw = adh_clock_seconds();
 }
 
 static void stop_all(tui *t)
@@ -577,7 +571,7 @@ static void loop(tui *t)
                     busy_key(t, it.key);
                 if (!t->sim.busy)
                     continue;
-                if (now() - t->last_draw > 0.15)
+                if (adh_clock_seconds() - t->last_draw > 0.15)
                     progress(t);
             }
             char why[512];

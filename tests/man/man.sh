@@ -13,7 +13,7 @@ for o in $opts; do
     name=${o#--}
     # mdoc writes --name as \-name inside Fl, or \-\-name in text.
     esc=$(printf '%s' "$name" | sed 's/-/\\\\-/g')
-    if grep -q -- "Fl \\\\-$esc" man/adhere.1; then ok "$o is documented in adhere.1"; else not_ok "$o is missing from adhere.1 OPTIONS"; fi
+    if grep -q -- "Fl \\\\-$esc" man/adhere.1 || grep -q -- "Fl -$name" man/adhere.1; then ok "$o is documented in adhere.1"; else not_ok "$o is missing from adhere.1 OPTIONS"; fi
 done
 # Every option the parser accepts is in --help: the table is the same one, but
 # check that an option from each family is accepted, so the table is live.
