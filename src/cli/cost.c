@@ -21,6 +21,8 @@
 #include "cli/tables.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
+#include "plot/plot.h"
+#include "plot/png.h"
 
 char *openblas_get_config(void);
 
@@ -184,6 +186,9 @@ static int write_cost(FILE *f, const void *ctx)
 /* cost.png: error against wall time, log-log, one curve per (N, kernel). */
 static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len)
 {
+    char cfg_style[PATH_MAX];
+    if (adh_plot_style_file(job->cfg, cfg_style, sizeof cfg_style, msg, len) < 0)
+        return 2;
     char log[PATH_MAX + 32], data[PATH_MAX + 32], png[PATH_MAX + 32], tmp[PATH_MAX + 48];
     snprintf(log, sizeof log, "%s/gnuplot.log", dir);
     snprintf(data, sizeof data, "%s/.cost-plot.%ld.dat", dir, (long)getpid());
@@ -220,9 +225,8 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
         unlink(data);
         return 3;
     }
-    adh_gnuplot_cmd(gp, "set terminal pngcairo size 900,600 enhanced font ',10'");
     char q[PATH_MAX + 64];
-    adh_gnuplot_cmd(gp, "set output %s", adh_gp_quoted(tmp, q, sizeof q));
+    adh_png_begin(gp, cfg_style, "cost", tmp);
     adh_gnuplot_cmd(gp, "set multiplot layout 1,2 title 'What accuracy costs: error against the most accurate run'");
     adh_gnuplot_cmd(gp, "set logscale xy; set grid; set key bottom left; set xlabel 'wall time (s)'");
     for (int panel = 0; panel < 2; panel++) {
@@ -235,18 +239,11 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
         adh_gnuplot_cmd(gp, "%s", cmd);
     }
     adh_gnuplot_cmd(gp, "unset multiplot");
-    adh_gnuplot_cmd(gp, "unset output");
-    int rc = adh_gnuplot_sync(gp, 60, msg, len);
+    int rc = adh_png_finish(gp, tmp, png, msg, len);
     adh_gnuplot_close(gp);
     unlink(data);
-    if (rc != 0) {
-        unlink(tmp);
+    if (rc != 0)
         return 3;
-    }
-    if (rename(tmp, png) != 0) {
-        snprintf(msg, len, "cannot write %s", png);
-        return 2;
-    }
     struct stat st;
     if (stat(log, &st) == 0 && st.st_size == 0)
         unlink(log);

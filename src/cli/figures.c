@@ -12,9 +12,9 @@
 #include "cli/sweep.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
+#include "plot/png.h"
 #include "plot/plot.h"
 
-#define SYNC_TIMEOUT_S 60.0
 
 typedef struct figure {
     adh_gnuplot *gp;
@@ -82,39 +82,17 @@ static FILE *fig_data(figure *fg, const char *name, char *path, size_t len)
 
 static void fig_begin(figure *fg, const char *name, char *tmp_png, size_t len)
 {
-    char q[PATH_MAX + 80];
     snprintf(tmp_png, len, "%s/.%s.tmp%ld", fg->dir, name, (long)getpid());
-    adh_gnuplot_cmd(fg->gp, "reset");
-    adh_gnuplot_cmd(fg->gp, "set terminal pngcairo size 900,600 enhanced font \"DejaVu Sans,11\"");
-    adh_gnuplot_cmd(fg->gp, "set encoding utf8");
-    adh_gnuplot_cmd(fg->gp, "set grid lc rgb \"#dddddd\"");
-    adh_gnuplot_cmd(fg->gp, "set tics out nomirror");
-    adh_gnuplot_cmd(fg->gp, "set key box opaque");
-    adh_gnuplot_cmd(fg->gp, "adh_figure = \"%s\"", name);
-    if (fg->style[0])
-        adh_gnuplot_cmd(fg->gp, "load %s", adh_gp_quoted(fg->style, q, sizeof q));
-    adh_gnuplot_cmd(fg->gp, "set output %s", adh_gp_quoted(tmp_png, q, sizeof q));
+    adh_png_begin(fg->gp, fg->style, name, tmp_png);
 }
 
 static int fig_end(figure *fg, const char *name, const char *tmp_png)
 {
     char final[PATH_MAX + 64], why[1024];
-    adh_gnuplot_cmd(fg->gp, "unset output");
     snprintf(final, sizeof final, "%s/%s", fg->dir, name);
-    struct stat st;
-    int rc = adh_gnuplot_sync(fg->gp, SYNC_TIMEOUT_S, why, sizeof why);
-    if (rc == 0 && !(stat(tmp_png, &st) == 0 && st.st_size > 8)) {
-        snprintf(why, sizeof why, "gnuplot wrote no image for %s", name);
-        rc = -1;
-    }
-    if (rc == 0 && rename(tmp_png, final) != 0) {
-        snprintf(why, sizeof why, "cannot rename %s to %s: %s", tmp_png, final, strerror(errno));
-        rc = -1;
-    }
-    if (rc != 0) {
-        unlink(tmp_png);
+    int rc = adh_png_finish(fg->gp, tmp_png, final, why, sizeof why);
+    if (rc != 0)
         snprintf(fg->msg, fg->msglen, "%s: %s", name, why);
-    }
     return rc;
 }
 

@@ -72,32 +72,37 @@ static void *worker(void *arg)
     return NULL;
 }
 
-double adh_sweep_gap_before_jump(const adh_run *run)
+/* The first loading row in contact, and the loading row before it (-1 when
+ * the branch began in contact); -1, -1 when it never touched. */
+static long first_contact(const adh_run *run, long *before)
 {
     long prev = -1;
     for (size_t i = 0; i < run->nrows; i++) {
         const adh_obs *o = &run->rows[i];
         if (o->path != 0)
             continue;
-        if (o->a > 0)
-            return prev >= 0 ? run->rows[prev].hc : NAN;
+        if (o->a > 0) {
+            *before = prev;
+            return (long)i;
+        }
         prev = (long)i;
     }
-    return NAN;
+    *before = -1;
+    return -1;
+}
+
+double adh_sweep_gap_before_jump(const adh_run *run)
+{
+    long before, at = first_contact(run, &before);
+    return at >= 0 && before >= 0 ? run->rows[before].hc : NAN;
 }
 
 int adh_sweep_jumped(const adh_run *run, double step)
 {
-    long prev = -1;
-    for (size_t i = 0; i < run->nrows; i++) {
-        const adh_obs *o = &run->rows[i];
-        if (o->path != 0)
-            continue;
-        if (o->a > 0)
-            return prev >= 0 && run->rows[prev].hc - o->hc > 2.0 * step ? 1 : 0;
-        prev = (long)i;
-    }
-    return -1;
+    long before, at = first_contact(run, &before);
+    if (at < 0)
+        return -1;
+    return before >= 0 && run->rows[before].hc - run->rows[at].hc > 2.0 * step ? 1 : 0;
 }
 
 int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const int *status)

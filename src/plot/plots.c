@@ -15,34 +15,10 @@
 #include "adhere/params.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
+#include "plot/png.h"
 #include "plot/plotdata.h"
 
-#define SYNC_TIMEOUT_S 60.0
 #define MAX_LABELLED_UNLOADS 8
-
-/* Defaults sent before the style file, so a style may set only what it
- * changes and a missing style still gives the same figures. */
-static const char *const builtin_style[] = {
-    "set terminal pngcairo size 900,600 enhanced font \"DejaVu Sans,11\" linewidth 1",
-    "set encoding utf8",
-    "set grid lc rgb \"#dddddd\"",
-    "set tics out nomirror",
-    "set key box opaque samplen 2.5 spacing 1.1 font \",10\"",
-    "adh_loading_color = \"#1f3f8f\"",
-    "adh_unload_colors = \"#c0392b #e67e22 #27ae60 #8e44ad #16a085 #d35400 #2c3e50\"",
-    "adh_profile_colors = \"#1f3f8f #2e6fb7 #3aa0c8 #27ae60 #8bc34a #c9b600 #e67e22 #d35400 "
-    "#c0392b #8e44ad\"",
-    "adh_loading_width = 2.5",
-    "adh_unloading_width = 1.6",
-    "adh_unstable_dash = 2",
-    "set style line 1 lc rgb adh_loading_color lw adh_loading_width",
-    "set style line 2 lc rgb \"#000000\" lw 1.2",
-    "set style line 3 lc rgb \"#2e7d32\" lw 1.4 dt 3",
-    "set style line 4 lc rgb \"#6a1b9a\" lw 1.4 dt 4",
-    "set style line 5 lc rgb \"#000000\" lw 1.2 dt 3",
-    "set style line 6 lc rgb \"#c0392b\" lw 1.6 pt 7 ps 0.9",
-    "set style line 7 lc rgb \"#888888\" lw 1",
-};
 
 typedef struct plotter {
     const adh_config *cfg;
@@ -229,44 +205,29 @@ static int set_end(datafile *df)
     return idx;
 }
 
-/* reset, defaults, the style, and the output to a temporary name in dir
- * (renamed into place only when gnuplot reports success). */
+/* The key entry of an unloading branch: its turn, or one entry for them all
+ * when there are too many to label one by one. */
+static void unload_title(const adh_turn_result *tr, int nunload, int *labelled, char *title, size_t len)
+{
+    if (nunload > MAX_LABELLED_UNLOADS)
+        snprintf(title, len, (*labelled)++ ? "notitle" : "title \"unloading (%d branches)\"", nunload);
+    else if (tr)
+        snprintf(title, len, "title \"unloading from h_0 = %.3g nm\"", tr->h0 * 1e9);
+    else
+        snprintf(title, len, "title \"unloading\"");
+}
+
 static void begin_figure(plotter *pl, const char *figure, const char *tmp_png)
 {
-    char q[PATH_MAX + 8];
-    adh_gnuplot_cmd(pl->gp, "reset");
-    for (size_t i = 0; i < sizeof builtin_style / sizeof builtin_style[0]; i++)
-        adh_gnuplot_cmd(pl->gp, "%s", builtin_style[i]);
-    adh_gnuplot_cmd(pl->gp, "adh_figure = \"%s\"", figure);
-    if (pl->style[0])
-        adh_gnuplot_cmd(pl->gp, "load %s", adh_gp_quoted(pl->style, q, sizeof q));
-    adh_gnuplot_cmd(pl->gp, "set output %s", adh_gp_quoted(tmp_png, q, sizeof q));
+    adh_png_begin(pl->gp, pl->style, figure, tmp_png);
 }
 
-static int png_nonempty(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 8;
-}
-
-/* Closes the PNG, waits for gnuplot's verdict, and moves the file into place. */
+/* The figure into place, or its failure remembered for msg. */
 static int finish_figure(plotter *pl, const char *name, const char *tmp_png)
 {
     char final[PATH_MAX + 64], why[1024];
-    adh_gnuplot_cmd(pl->gp, "unset output");
     snprintf(final, sizeof final, "%s/%s", pl->dir, name);
-    int rc = adh_gnuplot_sync(pl->gp, SYNC_TIMEOUT_S, why, sizeof why);
-    if (rc == 0 && !png_nonempty(tmp_png)) {
-        snprintf(why, sizeof why, "gnuplot wrote no image to %s", tmp_png);
-        rc = -1;
-    }
-    if (rc == 0 && rename(tmp_png, final) != 0) {
-        snprintf(why, sizeof why, "cannot rename %.400s to %.400s: %s", tmp_png, final,
-                 strerror(errno));
-        rc = -1;
-    }
-    if (rc != 0) {
-        unlink(tmp_png);
+    if (adh_png_finish(pl->gp, tmp_png, final, why, sizeof why) != 0) {
         if (!*pl->error)
             snprintf(pl->error, sizeof pl->error, "%s: %.960s", name, why);
         return -1;
@@ -464,14 +425,8 @@ static int plot_force(plotter *pl)
                 const adh_turn_result *tr = turn_of_path(run, p);
                 if (!s)
                     snprintf(title, sizeof title, "notitle");
-                else if (nunload > MAX_LABELLED_UNLOADS)
-                    snprintf(title, sizeof title, labelled++ ? "notitle"
-                             : "title \"unloading (%d branches)\"", nunload);
-                else if (tr)
-                    snprintf(title, sizeof title, "title \"unloading from h_0 = %.3g nm\"",
-                             tr->h0 * 1e9);
                 else
-                    snprintf(title, sizeof title, "title \"unloading\"");
+                    unload_title(tr, nunload, &labelled, title, sizeof title);
             }
             fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines %s %s", qdat,
                     idx, style, title);
@@ -803,14 +758,7 @@ static int plot_contact(plotter *pl)
                 snprintf(title, sizeof title, "title \"loading\"");
             } else {
                 unload_color(p, lc, sizeof lc);
-                if (nunload > MAX_LABELLED_UNLOADS)
-                    snprintf(title, sizeof title, labelled++ ? "notitle"
-                             : "title \"unloading (%d branches)\"", nunload);
-                else if (tr)
-                    snprintf(title, sizeof title, "title \"unloading from h_0 = %.3g nm\"",
-                             tr->h0 * 1e9);
-                else
-                    snprintf(title, sizeof title, "title \"unloading\"");
+                unload_title(tr, nunload, &labelled, title, sizeof title);
             }
             const char *width = p == 0 ? "adh_loading_width" : "adh_unloading_width";
             if (panel == 0) {

@@ -1,0 +1,68 @@
+#include "plot/png.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "plot/labels.h"
+
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
+
+/* Defaults sent before the style file, so a style may set only what it
+ * changes and a missing style still gives the same figures. */
+static const char *const builtin_style[] = {
+    "set terminal pngcairo size 900,600 enhanced font \"DejaVu Sans,11\" linewidth 1",
+    "set encoding utf8",
+    "set grid lc rgb \"#dddddd\"",
+    "set tics out nomirror",
+    "set key box opaque samplen 2.5 spacing 1.1 font \",10\"",
+    "adh_loading_color = \"#1f3f8f\"",
+    "adh_unload_colors = \"#c0392b #e67e22 #27ae60 #8e44ad #16a085 #d35400 #2c3e50\"",
+    "adh_profile_colors = \"#1f3f8f #2e6fb7 #3aa0c8 #27ae60 #8bc34a #c9b600 #e67e22 #d35400 "
+    "#c0392b #8e44ad\"",
+    "adh_loading_width = 2.5",
+    "adh_unloading_width = 1.6",
+    "adh_unstable_dash = 2",
+    "set style line 1 lc rgb adh_loading_color lw adh_loading_width",
+    "set style line 2 lc rgb \"#000000\" lw 1.2",
+    "set style line 3 lc rgb \"#2e7d32\" lw 1.4 dt 3",
+    "set style line 4 lc rgb \"#6a1b9a\" lw 1.4 dt 4",
+    "set style line 5 lc rgb \"#000000\" lw 1.2 dt 3",
+    "set style line 6 lc rgb \"#c0392b\" lw 1.6 pt 7 ps 0.9",
+    "set style line 7 lc rgb \"#888888\" lw 1",
+};
+
+void adh_png_begin(adh_gnuplot *gp, const char *style, const char *figure, const char *tmp_png)
+{
+    char q[PATH_MAX + 8];
+    adh_gnuplot_cmd(gp, "reset");
+    for (size_t i = 0; i < sizeof builtin_style / sizeof builtin_style[0]; i++)
+        adh_gnuplot_cmd(gp, "%s", builtin_style[i]);
+    adh_gnuplot_cmd(gp, "adh_figure = \"%s\"", figure);
+    if (style && style[0])
+        adh_gnuplot_cmd(gp, "load %s", adh_gp_quoted(style, q, sizeof q));
+    adh_gnuplot_cmd(gp, "set output %s", adh_gp_quoted(tmp_png, q, sizeof q));
+}
+
+int adh_png_finish(adh_gnuplot *gp, const char *tmp_png, const char *final, char *why, size_t whylen)
+{
+    adh_gnuplot_cmd(gp, "unset output");
+    int rc = adh_gnuplot_sync(gp, ADH_PNG_TIMEOUT_S, why, whylen);
+    struct stat st;
+    if (rc == 0 && !(stat(tmp_png, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 8)) {
+        snprintf(why, whylen, "gnuplot wrote no image to %s", tmp_png);
+        rc = -1;
+    }
+    if (rc == 0 && rename(tmp_png, final) != 0) {
+        snprintf(why, whylen, "cannot rename %.400s to %.400s: %s", tmp_png, final, strerror(errno));
+        rc = -1;
+    }
+    if (rc != 0)
+        unlink(tmp_png);
+    return rc;
+}
