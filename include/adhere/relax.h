@@ -13,7 +13,17 @@
 #include "adhere/params.h"
 #include "adhere/state.h"
 
+/* How each iteration's change is mixed in (adhere(1), "Mixing rules"). */
+typedef enum adh_mix_rule {
+    ADH_MIX_PAPER = 0,     /* the paper's: one adaptive ratio, lowered on
+                              oscillation or growth of the central change */
+    ADH_MIX_MOMENTUM = 1   /* heavy ball: ratio from the measured stiffness,
+                              plus a fraction of the previous update */
+} adh_mix_rule;
+
 typedef struct adh_relax_settings {
+    adh_mix_rule rule;
+    double momentum;     /* momentum rule: fraction of the previous update kept */
     double eps;          /* convergence: sqrt(sum (u_new - u_old)^2) / N < eps, m */
     double mix_max;      /* largest mixing ratio (paper: 0.2) */
     double mix_min;      /* the ratio never falls below this */
@@ -23,6 +33,9 @@ typedef struct adh_relax_settings {
 } adh_relax_settings;
 
 adh_relax_settings adh_relax_settings_default(void);
+/* "paper" or "momentum"; 0 on success, -1 otherwise. */
+int adh_mix_rule_parse(const char *name, adh_mix_rule *rule);
+const char *adh_mix_rule_name(adh_mix_rule rule);
 int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t whylen);
 
 typedef struct adh_relax adh_relax;

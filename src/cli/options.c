@@ -1,5 +1,6 @@
 #include "cli/options.h"
 
+#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -15,7 +16,7 @@ enum {
     OPT_SPACING = 256, OPT_START, OPT_TURN, OPT_KERNEL, OPT_REPLAY, OPT_SCREEN, OPT_SIZE,
     OPT_NO_CLOCK, OPT_LIST_KEYS, OPT_NO_PLOT, OPT_PLOTS, OPT_PROFILES, OPT_DRIVE_SPEED,
     OPT_GNUPLOT_STYLE, OPT_PLAN, OPT_DWELL, OPT_MODE, OPT_REFERENCE, OPT_COST, OPT_COST_EPS,
-    OPT_COST_NODES, OPT_MAX_ITER
+    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM
 };
 
 typedef struct option_doc {
@@ -36,6 +37,8 @@ static const option_doc options[] = {
     { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
+    { { "mixing", required_argument, 0, OPT_MIXING }, "paper|momentum", "mixing rule of the relaxation: the paper's adaptive ratio or heavy-ball momentum (default momentum)" },
+    { { "momentum", required_argument, 0, OPT_MOMENTUM }, "B", "momentum rule: fraction of the previous update kept, 0 to below 1 (default 0.8)" },
     { { "step", required_argument, 0, 'd' }, "M", "drive step d (default 0.05nm)" },
     { { "start", required_argument, 0, OPT_START }, "M", "first drive position h0 (default: where the force is negligible)" },
     { { "turn", required_argument, 0, OPT_TURN }, "M[,M...]", "turning points (default -5nm); 'none' loads to contact only" },
@@ -169,6 +172,23 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
             return 2;
         }
         return 0;
+    case OPT_MIXING:
+        if (adh_mix_rule_parse(arg, &cfg->relax.rule) != 0) {
+            snprintf(why, n, "--mixing: '%s' is not a mixing rule: use paper or momentum", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_MOMENTUM: {
+        char *end;
+        errno = 0;
+        double b = strtod(arg, &end);
+        if (end == arg || *end || errno || !(b >= 0 && b < 1)) {
+            snprintf(why, n, "--momentum: '%s' is not allowed: a number from 0 to below 1", arg);
+            return 2;
+        }
+        cfg->relax.momentum = b;
+        return 0;
+    }
     case OPT_MODE:
         if (strcmp(arg, "relax") == 0)
             cfg->mode = ADH_MODE_RELAX;

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "adhere/law.h"
 #include "adhere/status.h"
@@ -16,18 +17,43 @@ struct adh_relax {
     double *unew;      /* eq 11 applied to the current pressure */
     double *scratch;
     double *shape;     /* r^2 / 2R, the undeformed sphere (eq 3) */
+    double *vel;       /* momentum rule: the previous update u_k - u_(k-1) */
+    double *perron;    /* momentum rule: power-iteration vector of the stiffness */
+    double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x */
+    double stiffness;  /* upper bound on the largest eigenvalue of (2/E) W |p'| */
+    size_t since_estimate;
+    double best_change;   /* smallest change since the momentum last restarted */
+    double damping;       /* momentum rule: part of the safe ratio in use, (0, 1] */
     double prev_central;  /* previous unmixed central change; 0 = none yet */
     double change;
+    int converged;     /* the last pass found the step done */
     size_t iters;
 };
 
 adh_relax_settings adh_relax_settings_default(void)
 {
     adh_relax_settings s = {
+        .rule = ADH_MIX_MOMENTUM, .momentum = 0.8,
         .eps = 1e-12, .mix_max = 0.2, .mix_min = 1e-4,
         .mix_down = 0.5, .mix_up = 1.05, .max_iter = 200000,
     };
     return s;
+}
+
+int adh_mix_rule_parse(const char *name, adh_mix_rule *rule)
+{
+    if (strcmp(name, "paper") == 0)
+        *rule = ADH_MIX_PAPER;
+    else if (strcmp(name, "momentum") == 0)
+        *rule = ADH_MIX_MOMENTUM;
+    else
+        return -1;
+    return 0;
+}
+
+const char *adh_mix_rule_name(adh_mix_rule rule)
+{
+    return rule == ADH_MIX_MOMENTUM ? "momentum" : "paper";
 }
 
 int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t whylen)
@@ -42,6 +68,15 @@ int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t w
     }
     if (!(s->mix_down > 0 && s->mix_down < 1 && s->mix_up >= 1)) {
         snprintf(why, whylen, "mixing factors must satisfy 0 < down (%g) < 1 <= up (%g)", s->mix_down, s->mix_up);
+        return ADH_EINVAL;
+    }
+    if (s->rule != ADH_MIX_PAPER && s->rule != ADH_MIX_MOMENTUM) {
+        snprintf(why, whylen, "mixing rule %d is not allowed: paper or momentum", (int)s->rule);
+        return ADH_EINVAL;
+    }
+    if (!(s->momentum >= 0 && s->momentum < 1)) {
+        snprintf(why, whylen, "momentum = %g is not allowed: it must be at least 0 and below 1",
+                 s->momentum);
         return ADH_EINVAL;
     }
     if (s->max_iter < 1) {
@@ -59,13 +94,16 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->g = g;
     w->k = k;
     w->st = adh_state_alloc(g->n);
-    w->unew = malloc(3 * g->n * sizeof(double));
+    w->unew = malloc(7 * g->n * sizeof(double));
     if (!w->st || !w->unew) {
         adh_relax_free(w);
         return NULL;
     }
     w->scratch = w->unew + g->n;
     w->shape = w->unew + 2 * g->n;
+    w->vel = w->unew + 3 * g->n;
+    w->perron = w->unew + 4 * g->n;
+    w->work = w->unew + 5 * g->n;
     return w;
 }
 
@@ -87,6 +125,47 @@ void adh_relax_refresh(adh_relax *w)
     }
 }
 
+/* Each drive step starts the momentum rule from rest, with a fresh power
+ * vector: the iteration then depends on the state alone, so a restored
+ * snapshot resumes exactly. */
+static void momentum_reset(adh_relax *w)
+{
+    for (size_t i = 0; i < w->g->n; i++) {
+        w->vel[i] = 0.0;
+        w->perron[i] = 1.0;
+    }
+    w->stiffness = 0.0;
+    w->damping = 1.0;
+    w->since_estimate = 0;
+    w->best_change = INFINITY;
+}
+
+/* One power-iteration step on S = (2/E) W diag|p'(h)|, a matrix with no
+ * negative entry: by Collatz-Wielandt max_i (S x)_i / x_i bounds its
+ * spectral radius from above for any positive x, and the bound tightens as
+ * x approaches the Perron vector. The linearised update's eigenvalues lie
+ * within 1 +- that radius, so the bound gives the largest safe ratio. */
+static void estimate_stiffness(adh_relax *w)
+{
+    size_t n = w->g->n;
+    for (size_t i = 0; i < n; i++)
+        w->work[i] = fabs(adh_lj_dpressure(w->st->h[i], w->m.A, w->m.z0)) * w->perron[i];
+    double *sx = w->work + n;
+    adh_kernel_apply(w->k, w->work, sx, w->scratch);
+    double scale = 2.0 / w->m.E, bound = 0, top = 0;
+    for (size_t i = 0; i < n; i++) {
+        double y = scale * sx[i];
+        bound = fmax(bound, y / w->perron[i]);
+        top = fmax(top, y);
+        w->work[i] = y;
+    }
+    if (top > 0 && isfinite(top))
+        for (size_t i = 0; i < n; i++)
+            w->perron[i] = fmax(w->work[i] / top, 1e-300);
+    w->stiffness = bound;
+    w->since_estimate = 0;
+}
+
 int adh_relax_set(adh_relax *w, const adh_material *m, const adh_relax_settings *s, double h0)
 {
     w->m = *m;
@@ -101,6 +180,7 @@ int adh_relax_set(adh_relax *w, const adh_material *m, const adh_relax_settings 
     w->change = 0;
     w->iters = 0;
     adh_relax_refresh(w);
+    momentum_reset(w);
     return ADH_SUCCESS;
 }
 
@@ -112,6 +192,73 @@ void adh_relax_move(adh_relax *w, double h0_new)
     w->st->h0 = h0_new;
     w->prev_central = 0;
     w->iters = 0;
+    momentum_reset(w);
+}
+
+/* Heavy-ball mixing: u += v, v = beta v + alpha (u_new - u). For a linear
+ * update with eigenvalues mu in (0, mu_max] it is stable while
+ * alpha mu_max < 2 (1 + beta), and the slow modes (small mu: the contact
+ * line creeping) move alpha / (1 - beta) per iteration instead of alpha;
+ * with one ratio and no momentum the stiff contact modes (mu_max ~ 10^3)
+ * hold everything to alpha < 2 / mu_max. alpha is half that limit,
+ * (1 + beta) / (1 + bound) with the stiffness bound (1 + bound >= mu_max),
+ * times a damping factor, and never above mix_max. The gap law is far from
+ * linear: when the change grows past twice its smallest value since the
+ * last restart, the momentum restarts from rest, the bound is measured
+ * again and the damping falls (x mix_down); it recovers (x mix_up) on
+ * every other iteration. */
+static int momentum_update(adh_relax *w)
+{
+    adh_state *st = w->st;
+    size_t n = st->n;
+    double beta = w->s.momentum;
+    if (w->stiffness == 0) {
+        for (int k = 0; k < 3; k++)
+            estimate_stiffness(w);
+    } else if (++w->since_estimate >= 8) {
+        estimate_stiffness(w);
+    }
+    if (w->change > 2.0 * w->best_change) {
+        for (size_t i = 0; i < n; i++)
+            w->vel[i] = 0.0;
+        w->best_change = w->change;
+        w->damping = fmax(1e-3, w->damping * w->s.mix_down);
+        estimate_stiffness(w);
+    } else {
+        w->damping = fmin(1.0, w->damping * w->s.mix_up);
+    }
+    w->best_change = fmin(w->best_change, w->change);
+    double alpha = fmin(w->s.mix_max, w->damping * (1.0 + beta) / (1.0 + w->stiffness));
+    for (;;) {
+        int closed = 0;
+        for (size_t i = 0; i < n; i++) {
+            double v = beta * w->vel[i] + alpha * w->unew[i];
+            if (!(st->h0 + w->shape[i] - (st->u[i] + v) > 0)) {
+                closed = 1;
+                break;
+            }
+        }
+        if (!closed)
+            break;
+        /* A closing update: drop the momentum, then halve the ratio. */
+        if (beta > 0) {
+            for (size_t i = 0; i < n; i++)
+                w->vel[i] = 0.0;
+            beta = 0;
+            continue;
+        }
+        if (alpha <= w->s.mix_min)
+            return ADH_ENAN;
+        alpha = fmax(w->s.mix_min, alpha * 0.5);
+    }
+    st->mix = alpha;
+    for (size_t i = 0; i < n; i++) {
+        w->vel[i] = beta * w->vel[i] + alpha * w->unew[i];
+        st->u[i] += w->vel[i];
+        st->h[i] = st->h0 + w->shape[i] - st->u[i];
+        st->p[i] = adh_lj_pressure(st->h[i], w->m.A, w->m.z0);
+    }
+    return ADH_SUCCESS;
 }
 
 /* One pass of eq 11 with mixing. The mixing rule is the paper's: the ratio
@@ -136,9 +283,22 @@ static int relax_once(adh_relax *w)
      * u_new the eq 11 deformation before it is mixed in. */
     w->change = sqrt(ssq) / (double)n;
     /* Converged: keep the state whose change was measured, not one more
-     * mixed update of it. */
-    if (w->change < w->s.eps)
+     * mixed update of it. With momentum the state must also be at rest: a
+     * small change while the last update was large is the state passing
+     * through, as in the middle of a jump. At rest, the slow modes' update
+     * is alpha / (1 - beta) times their change; twice that is allowed. */
+    w->converged = w->change < w->s.eps;
+    if (w->converged && w->s.rule == ADH_MIX_MOMENTUM) {
+        double vsq = 0;
+        for (size_t i = 0; i < n; i++)
+            vsq += w->vel[i] * w->vel[i];
+        w->converged = sqrt(vsq) <= 2.0 * st->mix * sqrt(ssq) / (1.0 - w->s.momentum);
+    }
+    if (w->converged)
         return ADH_SUCCESS;
+
+    if (w->s.rule == ADH_MIX_MOMENTUM)
+        return momentum_update(w);
 
     double c = w->unew[0];
     if (w->prev_central != 0) {
@@ -181,7 +341,7 @@ int adh_relax_iterate(adh_relax *w, size_t max_batch)
         int rc = relax_once(w);
         if (rc != ADH_SUCCESS)
             return rc;
-        if (w->change < w->s.eps)
+        if (w->converged)
             return ADH_SUCCESS;
         w->iters++;
     }
@@ -214,6 +374,7 @@ void adh_relax_restore(adh_relax *w, const adh_state *s)
     w->prev_central = 0;
     w->iters = 0;
     adh_relax_refresh(w);
+    momentum_reset(w);
 }
 
 size_t adh_relax_step_iterations(const adh_relax *w)

@@ -21,7 +21,7 @@ typedef struct scene_parse {
     size_t nseen;
 } scene_parse;
 
-typedef enum { K_LEN, K_PRESS, K_ENERGY, K_SPEED, K_COUNT, K_LENLIST, K_KERNEL, K_MODE,
+typedef enum { K_LEN, K_PRESS, K_ENERGY, K_SPEED, K_COUNT, K_LENLIST, K_KERNEL, K_MODE, K_MIXING, K_FRACTION,
                K_PLOTS, K_BOOL, K_TEXT, K_SWEEP, K_SWEEP_PLOT } key_kind;
 
 typedef struct scene_key {
@@ -36,6 +36,7 @@ static const scene_key keys[] = {
     { "material", "z0", K_LEN }, { "material", "R", K_LEN },
     { "grid", "nodes", K_COUNT }, { "grid", "spacing", K_LEN }, { "grid", "kernel", K_KERNEL },
     { "solver", "eps", K_LEN }, { "solver", "max_iter", K_COUNT },
+    { "solver", "mixing", K_MIXING }, { "solver", "momentum", K_FRACTION },
     { "protocol", "start", K_LEN }, { "protocol", "step", K_LEN }, { "protocol", "turns", K_LENLIST },
     { "protocol", "dwell", K_COUNT }, { "protocol", "unload", K_BOOL },
     { "output", "plots", K_PLOTS }, { "output", "profiles", K_LENLIST },
@@ -180,6 +181,19 @@ static int handler(void *user, const char *section, const char *name, const char
         if (adh_kernel_parse(value, &c->kernel) != 0)
             return fail(sp, "kernel: '%s' is not a kernel: use paper or ring%s", value, "");
         return 1;
+    case K_MIXING:
+        if (adh_mix_rule_parse(value, &c->relax.rule) != 0)
+            return fail(sp, "mixing: '%s' is not a mixing rule: use paper or momentum%s", value, "");
+        return 1;
+    case K_FRACTION: {
+        char *end;
+        errno = 0;
+        double b = strtod(value, &end);
+        if (end == value || *end || errno || !(b >= 0 && b < 1))
+            return fail(sp, "momentum: '%s' is not allowed: a number from 0 to below 1%s", value, "");
+        c->relax.momentum = b;
+        return 1;
+    }
     case K_MODE:
         if (!strcmp(value, "relax")) c->mode = ADH_MODE_RELAX;
         else if (!strcmp(value, "static")) c->mode = ADH_MODE_STATIC;

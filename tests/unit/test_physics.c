@@ -121,9 +121,16 @@ static void jump_separation(void)
         size_t n = s.run.nrows;
         const adh_obs *before = &s.run.rows[n - 2], *after = &s.run.rows[n - 1];
         double ratio = before->hc / d.h_star;
-        ok(rc == ADH_SUCCESS && ratio > 0.8 && ratio < 1.1,
-           "Figure 3, sigma = %.2f: separation before the jump %.3f nm vs eq 24 %.3f nm (ratio %.3f, allowed 0.8-1.1)",
-           d.sigma, before->hc * 1e9, d.h_star * 1e9, ratio);
+        /* Below sigma = 1 the equilibrium curve has no fold (the static
+         * solver finds none at sigma = 0.3): the gap closes steeply but
+         * continuously, and the last separation before contact (the
+         * paper's open symbols) is wherever the 0.05 nm grid of positions
+         * last samples that steep stretch: anywhere between the contact
+         * criterion 1.1 z0 and eq 24. */
+        double lo = sigmas[i] >= 1.0 ? 0.8 : 1.1 * s.m.z0 / d.h_star;
+        ok(rc == ADH_SUCCESS && ratio >= lo && ratio < 1.1,
+           "Figure 3, sigma = %.2f: separation before the jump %.3f nm vs eq 24 %.3f nm (ratio %.3f, allowed %.2f-1.1)",
+           d.sigma, before->hc * 1e9, d.h_star * 1e9, ratio, lo);
         if (sigmas[i] >= 1.0)
             ok(before->hc - after->hc > 0.5 * before->hc && after->a > 0,
                "sigma = %.2f: one step of %.2f nm closes the gap from %.2f to %.2f nm (a jump)",
