@@ -17,6 +17,7 @@
 #include "cli/figures.h"
 #include "cli/interrupt.h"
 #include "cli/rigid.h"
+#include "cli/statics.h"
 #include "cli/tables.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
@@ -31,6 +32,7 @@ typedef struct sweep_job {
     const adh_grid *grid;      /* shared, read-only */
     const adh_kernel *kernel;  /* shared, read-only: apply takes a scratch per call */
     adh_run *runs;
+    adh_static_result *sres;   /* mode = static: each run's folds, jumps, pull-offs */
     int *status;               /* adh status of each run */
     const char *out;           /* DIR, or NULL: nothing but sweep.tsv on stdout */
     int *tables;               /* exit status of writing run i's tables; -1 not yet */
@@ -39,7 +41,8 @@ typedef struct sweep_job {
     pthread_mutex_t lock;
 } sweep_job;
 
-static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, int rc, const char *out);
+static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
+                        int rc, const char *out);
 
 static void *worker(void *arg)
 {
@@ -54,12 +57,16 @@ static void *worker(void *arg)
         adh_config rc;
         adh_config_sweep_run(cfg, i, &rc);
         adh_run *run = &job->runs[i];
+        /* each static run allocates its own solver (a dense copy of the
+         * shared kernel): nothing of it is shared between threads */
         job->status[i] = rc.mode == ADH_MODE_RIGID
                        ? adh_rigid_run(&rc, adh_interrupt_step, NULL, run)
+                       : rc.mode == ADH_MODE_STATIC
+                       ? adh_cli_static_run(&rc, job->grid, job->kernel, adh_interrupt_step, NULL, run, &job->sres[i])
                        : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, adh_interrupt_step, NULL, run);
         /* tables as soon as a run ends: a long sweep killed later keeps them */
         if (job->out)
-            job->tables[i] = write_tables(cfg, i, run, job->status[i], job->out);
+            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out);
         pthread_mutex_lock(&job->lock);
         job->done++;
         if (!cfg->quiet)
@@ -91,30 +98,55 @@ static long first_contact(const adh_run *run, long *before)
     return -1;
 }
 
+/* A static curve (mode = static) jumps into contact at its first fold,
+ * where the outer branch ends: the last stable row before the first
+ * unstable one. -1 for a relaxation run (every row stable) or a curve
+ * without a fold. */
+static long first_fold(const adh_run *run)
+{
+    for (size_t i = 1; i < run->nrows; i++)
+        if (!run->rows[i].stable)
+            return run->rows[i - 1].stable ? (long)i - 1 : -1;
+    return -1;
+}
+
 double adh_sweep_gap_before_jump(const adh_run *run)
 {
+    long fold = first_fold(run);
+    if (fold >= 0)
+        return run->rows[fold].hc;
     long before, at = first_contact(run, &before);
     return at >= 0 && before >= 0 ? run->rows[before].hc : NAN;
 }
 
 int adh_sweep_jumped(const adh_run *run, double step)
 {
+    if (first_fold(run) >= 0)
+        return 1;
     long before, at = first_contact(run, &before);
     if (at < 0)
         return -1;
     return before >= 0 && run->rows[before].hc - run->rows[at].hc > 2.0 * step ? 1 : 0;
 }
 
-int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const int *status)
+int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
+                          const int *status)
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
+    int stat = cfg->mode == ADH_MODE_STATIC && sres;
     fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (run-K/ holds its tables), SI units (m, N, Pa, s)\n");
     if (cfg->scene[0])
         fprintf(f, "# scene: %s\n", cfg->scene);
-    fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n"
-               "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n");
+    if (stat)
+        fprintf(f, "# mode static: each run is the equilibrium curve; jump_in_h0 its first fold, h_before the central gap at the last stable point before it;\n"
+                   "# max_load the force at the curve's end (the turn); pulloff_F the load-controlled pull-off (minimum force), pulloff_F_disp the force at the jump-out fold;\n"
+                   "# jumped: 1 the curve has a fold, 0 contact came without one, -1 no contact; steps the curve's points, iterations its Newton iterations\n");
+    else
+        fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n"
+                   "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n");
     fprintf(f, "# swept: the parameter the sweep varies (%s), value: its value in this run\n", name);
-    fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tjumped\tstatus\n");
+    fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tjumped\t%sstatus\n",
+            stat ? "pulloff_F_disp\tfolds\t" : "");
     for (size_t i = 0; i < cfg->sweep.n; i++) {
         adh_config rc;
         adh_config_sweep_run(cfg, i, &rc);
@@ -122,11 +154,21 @@ int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, c
         adh_material_derive(&rc.mat, &d);
         const adh_run *r = &runs[i];
         const adh_turn_result *mt = adh_run_main_turn(r);
-        fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%d\t%s\n",
+        double max_load = mt ? mt->max_load : NAN, pull = mt ? mt->pulloff_F : NAN, out = mt ? mt->jump_out_h0 : NAN;
+        if (stat) {
+            /* a run that never started has no summary worth the name */
+            int ran = r->nrows > 0;
+            max_load = ran && status[i] == ADH_SUCCESS && !r->interrupted ? r->rows[r->nrows - 1].F : NAN;
+            pull = ran ? sres[i].pulloff_F : NAN;
+            out = ran ? sres[i].jump_out_h0 : NAN;
+        }
+        fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%d\t",
                 i + 1, name, cfg->sweep.values[i], rc.mat.E, d.sigma, rc.relax.eps, r->jump_in_h0,
-                adh_sweep_gap_before_jump(r), d.h_star, mt ? mt->max_load : NAN, mt ? mt->pulloff_F : NAN,
-                mt ? mt->jump_out_h0 : NAN, r->nrows, r->iterations, r->seconds, adh_sweep_jumped(r, rc.proto.step),
-                r->interrupted ? "interrupted" : adh_strerror(status[i]));
+                adh_sweep_gap_before_jump(r), d.h_star, max_load, pull, out, r->nrows, r->iterations, r->seconds,
+                adh_sweep_jumped(r, rc.proto.step));
+        if (stat)
+            fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
+        fprintf(f, "%s\n", r->interrupted ? "interrupted" : adh_strerror(status[i]));
     }
     return 0;
 }
@@ -134,13 +176,14 @@ int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, c
 typedef struct sweep_tables {
     const adh_config *cfg;
     const adh_run *runs;
+    const adh_static_result *sres;
     const int *status;
 } sweep_tables;
 
 static int write_sweep(FILE *f, const void *ctx)
 {
     const sweep_tables *t = ctx;
-    return adh_write_sweep_table(f, t->cfg, t->runs, t->status);
+    return adh_write_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
 }
 
 /* mkdir -p */
@@ -170,7 +213,8 @@ static int make_dir(const char *dir, char *why, size_t n)
 }
 
 /* Tables of run i in out/run-K. Returns an exit status. */
-static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, int rc, const char *out)
+static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
+                        int rc, const char *out)
 {
     char dir[PATH_MAX + 32], why[1024], note[256] = "";
     adh_config rcfg;
@@ -185,7 +229,11 @@ static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, int
         snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", adh_interrupt_signal(), run->nrows);
     else if (rc != ADH_SUCCESS)
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(rc));
-    adh_tables t = { &rcfg, run, NULL, 0, partial, note };
+    /* a static run's summary.tsv has the batch's static keys */
+    char keynames[ADH_STATIC_KEYS][32];
+    adh_summary_extra extra[ADH_STATIC_KEYS];
+    size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? adh_static_summary_keys(sres, "", keynames, extra) : 0;
+    adh_tables t = { &rcfg, run, extra, nextra, partial, note };
     if (adh_write_atomic(dir, "force.tsv", adh_write_force, &t, why, sizeof why) != 0 ||
         adh_write_atomic(dir, "summary.tsv", adh_write_summary, &t, why, sizeof why) != 0 ||
         (run->nturns && adh_write_atomic(dir, "turns.tsv", adh_write_turns, &t, why, sizeof why) != 0)) {
@@ -245,8 +293,10 @@ int adh_sweep_main(const adh_cli *cli)
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }
-    if (cfg->mode == ADH_MODE_STATIC) {
-        fprintf(stderr, "adhere: a sweep in mode = static is not in this build yet\n");
+    if (cfg->mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_EPS) {
+        /* every run would be the same equilibrium curve */
+        fprintf(stderr, "adhere: a sweep of eps in mode = static would compute the same curve %zu times: "
+                "eps is the relaxation's convergence parameter; sweep E or sigma, or use mode = relax\n", n);
         return ADH_EXIT_USAGE;
     }
 
@@ -264,13 +314,14 @@ int adh_sweep_main(const adh_cli *cli)
         }
     }
     adh_run *runs = calloc(n, sizeof *runs);
+    adh_static_result *sres = calloc(n, sizeof *sres);
     int *status = calloc(n, sizeof *status);
     int *tables = calloc(n, sizeof *tables);
     int jobs = adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
-    if (!runs || !status || !tables || !threads) {
+    if (!runs || !sres || !status || !tables || !threads) {
         fprintf(stderr, "adhere: out of memory for %zu runs\n", n);
-        free(runs), free(status), free(tables), free(threads);
+        free(runs), free(sres), free(status), free(tables), free(threads);
         adh_kernel_free(k), adh_grid_free(g);
         return ADH_EXIT_SOLVER;
     }
@@ -284,7 +335,7 @@ int adh_sweep_main(const adh_cli *cli)
 
     adh_interrupt_catch();
 
-    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .status = status, .out = out, .tables = tables };
+    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status, .out = out, .tables = tables };
     pthread_mutex_init(&job.lock, NULL);
     int started = 0;
     for (int t = 0; t < jobs; t++)
@@ -309,13 +360,13 @@ int adh_sweep_main(const adh_cli *cli)
         else if (status[i] != ADH_SUCCESS)
             exit_status = worse(exit_status, ADH_EXIT_SOLVER);
     }
-    sweep_tables st = { cfg, runs, status };
+    sweep_tables st = { cfg, runs, sres, status };
     if (!out) {
-        adh_write_sweep_table(stdout, cfg, runs, status);
+        adh_write_sweep_table(stdout, cfg, runs, sres, status);
     } else {
         for (size_t i = 0; i < n; i++) {
             if (tables[i] < 0) /* never started: its tables say interrupted */
-                tables[i] = write_tables(cfg, i, &runs[i], status[i], out);
+                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], out);
             exit_status = worse(exit_status, tables[i]);
             if (tables[i] == ADH_EXIT_OK)
                 exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], out));
@@ -333,7 +384,7 @@ int adh_sweep_main(const adh_cli *cli)
     }
     for (size_t i = 0; i < n; i++)
         adh_run_free(&runs[i]);
-    free(runs), free(status), free(tables), free(threads);
+    free(runs), free(sres), free(status), free(tables), free(threads);
     adh_kernel_free(k);
     adh_grid_free(g);
     return exit_status;

@@ -17,6 +17,7 @@ const adh_key_binding adh_key_table[] = {
     { 'U', ACT_REDO, "redo: forward again along the undone states" },
     { 'r' & 0x1f, ACT_REDO, "redo, as U" },
     { 'x', ACT_RESET, "reset: forget the path and go back to the start position" },
+    { 'm', ACT_MODE, "mode: switch between relaxation and the static equilibrium curve (in static mode f and r follow the curve, b and u walk back along it)" },
     { KEY_UP, ACT_SELECT_UP, "select the parameter above" },
     { 'k', ACT_SELECT_UP, "select the parameter above, as <Up>" },
     { KEY_DOWN, ACT_SELECT_DOWN, "select the parameter below" },

@@ -14,6 +14,7 @@ typedef enum adh_action {
     ACT_UNDO,
     ACT_REDO,
     ACT_RESET,
+    ACT_MODE,         /* relaxation <-> static equilibrium */
     ACT_SELECT_UP,
     ACT_SELECT_DOWN,
     ACT_EDIT,

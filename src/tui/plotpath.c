@@ -48,6 +48,8 @@ static size_t path_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, 
     return nt;
 }
 
+static int write_into(const adh_config *c, const adh_run *run, const char *dir, char *msg, size_t msglen);
+
 static void add_unique(size_t *idx, size_t *k, size_t cap, size_t i)
 {
     for (size_t q = 0; q < *k; q++)
@@ -79,10 +81,39 @@ static size_t pick_profiles(const adh_obs *rows, size_t n, const adh_turn_result
     return k;
 }
 
+/* Static mode: the whole curve computed so far (the cursor is only where
+ * the screen looks), with profiles at the first point in contact, at the
+ * pull-off and at the last point: the states the session keeps. */
+static size_t curve_run(const tui_sim *s, adh_run *run, adh_config *c, adh_profile *prof)
+{
+    size_t n;
+    const adh_obs *rows = tui_sim_curve(s, &n);
+    run->rows = (adh_obs *)rows;
+    run->nrows = run->rows_cap = n;
+    run->jump_in_h0 = s->sres.jump_in_h0;
+    c->mode = ADH_MODE_STATIC;
+    c->proto.nturns = 1;
+    c->proto.turns[0] = tui_sim_curve_end(s);
+    size_t np = 0;
+    for (int which = 0; which < 3 && np < ADH_MAX_PROFILES; which++) {
+        size_t at;
+        const adh_state *st = tui_sim_curve_profile(s, which, &at);
+        int dup = 0;
+        for (size_t k = 0; k < np; k++)
+            dup |= prof[k].h0 == rows[at].h0;
+        if (!st || dup)
+            continue;
+        prof[np] = (adh_profile){ .h0 = st->h0, .branch = rows[at].branch, .path = 0, .u = st->u, .h = st->h,
+                                  .p = st->p };
+        c->proto.profiles[np++] = st->h0;
+    }
+    return np;
+}
+
 int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char *msg, size_t msglen)
 {
     size_t n;
-    const adh_obs *rows = tui_sim_rows(s, &n);
+    const adh_obs *rows = s->mode == ADH_MODE_STATIC ? tui_sim_curve(s, &n) : tui_sim_rows(s, &n);
     if (n == 0) {
         snprintf(msg, msglen, "nothing to plot yet");
         return -1;
@@ -110,13 +141,20 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
         if (isnan(run.jump_in_h0) && rows[i].branch > 0 && rows[i].a > 0)
             run.jump_in_h0 = rows[i].h0;
     }
+    static adh_profile prof[ADH_MAX_PROFILES];
+    if (s->mode == ADH_MODE_STATIC) {
+        size_t np = curve_run(s, &run, &c, prof);
+        c.proto.nprofiles = np;
+        run.profiles = prof;
+        run.nprofiles = run.profiles_cap = np;
+        return write_into(&c, &run, dir, msg, msglen);
+    }
     run.nturns = path_turns(rows, n, run.turns, ADH_MAX_TURNS);
     c.proto.nturns = run.nturns;
     for (size_t i = 0; i < run.nturns; i++)
         c.proto.turns[i] = run.turns[i].h0;
 
     size_t idx[ADH_MAX_PROFILES];
-    static adh_profile prof[ADH_MAX_PROFILES];
     size_t np = pick_profiles(rows, n, run.turns, run.nturns, idx, ADH_MAX_PROFILES);
     for (size_t k = 0; k < np; k++) {
         const adh_state *st = adh_history_state_at(s->hist, idx[k]);
@@ -127,13 +165,17 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
     c.proto.nprofiles = np;
     run.profiles = prof;
     run.nprofiles = run.profiles_cap = np;
+    return write_into(&c, &run, dir, msg, msglen);
+}
 
+static int write_into(const adh_config *c, const adh_run *run, const char *dir, char *msg, size_t msglen)
+{
     if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
         snprintf(msg, msglen, "cannot create the directory: %s", strerror(errno));
         return -1;
     }
     msg[0] = '\0';
-    int rc = adh_plots_write(&c, &run, dir, msg, msglen);
+    int rc = adh_plots_write(c, run, dir, msg, msglen);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");
     return rc == 0 ? 0 : -1;

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <wchar.h>
 
+#include "adhere/status.h"
 #include "adhere/units.h"
 #include "tui/actions.h"
 #include "tui/replay.h"
@@ -117,8 +118,71 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     put(y + 3, x, w, A_NORMAL, "  pull-off JKR %s DMT %s", jkr, dmt);
 }
 
+/* Static mode: the point shown, its stability, and what the curve computed
+ * so far says (folds, jumps, pull-offs). */
+static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
+{
+    const adh_obs *o = tui_sim_row(s);
+    const adh_static_result *r = &s->sres;
+    char a[64], b[64];
+    put(y, x, w, A_BOLD, " State  (static equilibrium)");
+    if (!o) {
+        q(s->start, ADH_Q_LENGTH, a, sizeof a);
+        q(tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
+        put(y + 1, x, w, A_NORMAL, "  h0     %-12s start, not solved yet", a);
+        put(y + 2, x, w, A_NORMAL, "  Press f to solve the first point, r to follow");
+        put(y + 3, x, w, A_NORMAL, "  the equilibrium curve through its folds down to");
+        put(y + 4, x, w, A_NORMAL, "  h0 = %s; m returns to relaxation.", b);
+    } else {
+        q(o->h0, ADH_Q_LENGTH, a, sizeof a);
+        put(y + 1, x, w, A_NORMAL, "  h0     %-12s drive position", a);
+        q(o->F, ADH_Q_FORCE, a, sizeof a);
+        put(y + 2, x, w, A_NORMAL, "  F      %-12s force (positive repels)", a);
+        q(o->delta, ADH_Q_LENGTH, a, sizeof a);
+        char lab[32];
+        put(y + 3, x, w, A_NORMAL, "  %s %-12s central deformation", pad(gk(v, "\xce\xb4", "delta"), 6, lab, sizeof lab), a);
+        q(o->hc, ADH_Q_LENGTH, a, sizeof a);
+        put(y + 4, x, w, A_NORMAL, "  gap    %-12s central gap h(0)", a);
+        q(o->a, ADH_Q_LENGTH, a, sizeof a);
+        put(y + 5, x, w, A_NORMAL, "  a      %-12s contact radius%s", a, o->a > 0 ? "" : " (not in contact)");
+        put(y + 6, x, w, o->stable ? A_NORMAL : A_BOLD, "  point  %zu of %zu, %s, %zu Newton iteration%s", s->ccur + 1,
+            s->cn, o->stable ? "stable" : "UNSTABLE", o->iters, o->iters == 1 ? "" : "s");
+        if (r->folds) {
+            q(r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
+            q(r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
+            put(y + 7, x, w, A_NORMAL, "  folds  %zu; jump-in %s, jump-out %s", r->folds, a,
+                isnan(r->jump_out_h0) ? "not yet" : b);
+        } else {
+            put(y + 7, x, w, A_NORMAL, "  folds  none yet");
+        }
+        q(r->pulloff_F, ADH_Q_FORCE, a, sizeof a);
+        q(r->pulloff_F_disp, ADH_Q_FORCE, b, sizeof b);
+        if (isnan(r->pulloff_F_disp))
+            put(y + 8, x, w, A_NORMAL, "  pull   %s at fixed load; at fixed h0 not yet", a);
+        else
+            put(y + 8, x, w, A_NORMAL, "  pull   %s at fixed load, %s at fixed h0", a, b);
+    }
+    put(y + 9, x, w, A_NORMAL, "  mode   static (m: relaxation), %s", v->activity);
+    if (s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS) {
+        char msg[300];
+        snprintf(msg, sizeof msg, "! the curve stopped: %s (x starts it again)", adh_strerror(s->cstatus));
+        put_wrapped(y + 10, x + 2, w - 2, 2, A_BOLD, msg);
+    } else if (s->gridwarn[0]) {
+        char msg[600];
+        snprintf(msg, sizeof msg, "! %s", s->gridwarn);
+        put_wrapped(y + 10, x + 2, w - 2, 4, A_BOLD, msg);
+    } else if (o) {
+        q(tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
+        put(y + 10, x, w, A_NORMAL, "  curve  %s at h0 = %s", s->cstatus == ADH_SUCCESS ? "complete, ends" : "goes on to its end", b);
+    }
+}
+
 static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
 {
+    if (s->mode == ADH_MODE_STATIC) {
+        draw_curve_state(s, v, y, x, w);
+        return;
+    }
     const adh_obs *o = tui_sim_row(s);
     char a[64], b[64];
     size_t nrows;
@@ -162,7 +226,7 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
         else
             put(y + 7, x, w, A_NORMAL, "  branch unloading (retracting), path %d", o->path);
     }
-    put(y + 8, x, w, A_NORMAL, "  mode   relaxation, %s", v->activity);
+    put(y + 8, x, w, A_NORMAL, "  mode   relaxation (m: static), %s", v->activity);
     size_t bad = 0;
     for (size_t i = 0; i < nrows; i++)
         bad += !rows[i].converged;
@@ -181,7 +245,8 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
 }
 
 /* The force-position curve so far, drawn with characters: '+' loading,
- * 'o' unloading, '@' the current state, '-' the zero-force line. */
+ * 'o' unloading, '@' the current state, '-' the zero-force line; in static
+ * mode '*' a stable point of the equilibrium curve and '.' an unstable one. */
 static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, int h, int w)
 {
     size_t n;
@@ -189,11 +254,16 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     const adh_obs *cur = tui_sim_row(s);
     if (h < 4 || w < 30)
         return;
-    put(y0, x0, w, A_BOLD, " Force F against drive position h0   + loading  o unloading  @ now");
+    int stat = s->mode == ADH_MODE_STATIC;
+    if (stat)
+        put(y0, x0, w, A_BOLD, " Equilibrium force F against drive position h0   * stable  . unstable  @ now");
+    else
+        put(y0, x0, w, A_BOLD, " Force F against drive position h0   + loading  o unloading  @ now");
     const int lab = 11;
     int pw = w - lab - 1, ph = h - 2;
     if (n == 0) {
-        put(y0 + ph / 2, x0 + lab, pw, A_NORMAL, "(the force-position curve appears here as you step)");
+        put(y0 + ph / 2, x0 + lab, pw, A_NORMAL, "%s", stat ? "(the equilibrium curve appears here as it is solved)"
+                                                          : "(the force-position curve appears here as you step)");
         return;
     }
     double xmin = INFINITY, xmax = -INFINITY, ymin = 0, ymax = 0;
@@ -218,13 +288,16 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     int zero = (int)lround(ymax / (ymax - ymin) * (ph - 1));
     for (int c = 0; c < pw; c++)
         grid[zero * pw + c] = '-';
+    /* loading first, so unloading shows where they meet; in static mode
+     * unstable first, so the stable states (what an experiment sees) show */
     for (int pass = 0; pass < 2; pass++)
         for (size_t i = 0; i < n; i++) {
-            if ((pass == 0) != (rows[i].branch > 0))
+            int first = stat ? !rows[i].stable : rows[i].branch > 0;
+            if ((pass == 0) != first)
                 continue;
             int c = (int)lround((rows[i].h0 - xmin) / (xmax - xmin) * (pw - 1));
             int r = (int)lround((ymax - rows[i].F) / (ymax - ymin) * (ph - 1));
-            grid[r * pw + c] = rows[i].branch > 0 ? '+' : 'o';
+            grid[r * pw + c] = stat ? (first ? '.' : '*') : first ? '+' : 'o';
         }
     if (cur) {
         int c = (int)lround((cur->h0 - xmin) / (xmax - xmin) * (pw - 1));
@@ -293,6 +366,9 @@ void tui_draw(const tui_sim *s, const tui_view *v)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W, v->prompt);
     else if (v->count)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W, "");
+    else if (s->mode == ADH_MODE_STATIC)
+        put(H - 1, 0, W, A_REVERSE, "%-*s", W,
+            " f next  b back  r run  u/U back/fwd  x reset  m relax  p plots  : cmd  ? help  q quit");
     else
         put(H - 1, 0, W, A_REVERSE, "%-*s", W,
             " f in  b out  r run  u undo  U redo  x reset  p plots  : command  ? help  q quit");
@@ -361,6 +437,14 @@ int tui_draw_help(const tui_view *v)
     snprintf(msg, sizeof msg, "changing E, A, z0, R, %s, d, N or the spacing starts a new path from the "
              "start; turn only moves where r stops loading", gk(v, "\xce\xb5", "eps"));
     n = help_entry(lines, n, MAX, W, "", msg);
+    if (n < MAX)
+        snprintf(lines[n++], 256, " ");
+    snprintf(msg, sizeof msg, "m switches to the equilibrium curve, solved point by point by Newton's method and "
+             "continuation through its folds: f (or r) solves the next point, b and u walk back over points "
+             "already solved (the curve is the same whichever way the drive moves: nothing is solved again), "
+             "U and f walk forward again. Changing E, A, z0, R, d, N, the spacing or turn starts the curve "
+             "again; %s does not touch it. Each mode keeps its path or curve across m.", gk(v, "\xce\xb5", "eps"));
+    n = help_entry(lines, n, MAX, W, "static", msg);
     put(0, 0, W, A_REVERSE, "%-*s", W, " adhere keys  (PgUp/PgDn scroll, any other key returns)");
     int top = v->help_top;
     if (top > n - 1)

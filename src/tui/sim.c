@@ -2,7 +2,9 @@
 #include "adhere/clock.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -27,8 +29,56 @@ double tui_sim_spacing(const tui_sim *s)
     return isnan(s->spacing) ? adh_grid_spacing_for(&s->mat, s->nodes) : s->spacing;
 }
 
+enum { PROF_CONTACT = 0, PROF_PULLOFF = 1 };
+#define NO_POINT SIZE_MAX
+
+/* Forgets the static curve (its points, summary, profiles); the solver
+ * itself stays allocated for the next curve on the same grid. */
+static void curve_drop(tui_sim *s)
+{
+    s->cn = 0;
+    s->ccur = 0;
+    s->walk = 0;
+    s->cstatus = ADH_CONTINUE;
+    memset(&s->sres, 0, sizeof s->sres);
+    s->sres.jump_in_h0 = s->sres.jump_out_h0 = s->sres.pulloff_F_disp = NAN;
+    s->sres.pulloff_F = s->sres.pulloff_h0 = NAN;
+    s->cprof_at[PROF_CONTACT] = s->cprof_at[PROF_PULLOFF] = NO_POINT;
+}
+
+double tui_sim_curve_end(const tui_sim *s)
+{
+    return isnan(s->turn) ? adh_static_settings_default().h0_end : s->turn;
+}
+
+static int curve_started(const tui_sim *s)
+{
+    return s->cn > 0 || s->cstatus != ADH_CONTINUE;
+}
+
+/* A curve belongs to the material, grid, start and end it was computed
+ * for: when one of them changed, it is dropped (eps and d alone do not
+ * touch it, unless d moved an automatic start). */
+static void curve_check(tui_sim *s)
+{
+    if (!curve_started(s))
+        return;
+    const adh_material *a = &s->ckey.mat, *b = &s->mat;
+    if (a->E != b->E || a->A != b->A || a->z0 != b->z0 || a->R != b->R || s->ckey.nodes != s->nodes ||
+        s->ckey.spacing != tui_sim_spacing(s) || s->ckey.start != s->start ||
+        s->ckey.end != tui_sim_curve_end(s))
+        curve_drop(s);
+}
+
 static void free_solver(tui_sim *s)
 {
+    adh_static_free(s->sw);
+    s->sw = NULL;
+    for (int i = 0; i < 2; i++) {
+        adh_state_free(s->cprof[i]);
+        s->cprof[i] = NULL;
+    }
+    curve_drop(s);
     adh_relax_free(s->w);
     adh_kernel_free(s->k);
     adh_grid_free(s->g);
@@ -74,6 +124,7 @@ static void new_path(tui_sim *s)
     if (s->g && (s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s)))
         s->grid_stale = 1;
     check_grid(s);
+    curve_check(s);
 }
 
 int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
@@ -98,6 +149,8 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
     }
     adh_material_derive(&s->mat, &s->der);
     s->grid_stale = 1;
+    s->mode = cfg->mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
+    curve_drop(s);
     new_path(s);
     return 0;
 }
@@ -105,6 +158,9 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
 void tui_sim_free(tui_sim *s)
 {
     free_solver(s);
+    free(s->crows);
+    s->crows = NULL;
+    s->ccap = 0;
 }
 
 static int ensure_solver(tui_sim *s, char *why, size_t whylen)
@@ -217,6 +273,7 @@ static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen
         }
         s->turn = v;
         check_grid(s);
+        curve_check(s);   /* but it is where the static curve ends */
         return 0;   /* where a run stops is not physics: the path stays */
     default:
         snprintf(why, whylen, "%s cannot be set", name);
@@ -290,12 +347,199 @@ static void move_to(tui_sim *s, double h0)
     s->t0 = adh_clock_seconds();
 }
 
+/* ---- static mode: the equilibrium curve ---------------------------------- */
+
+static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
+{
+    char h0[64];
+    if (dir < 0) {
+        if (s->cn == 0) {
+            snprintf(why, whylen, "no point of the equilibrium curve yet: f solves the first one, at the start");
+            return -1;
+        }
+        if (s->ccur == 0) {
+            snprintf(why, whylen, "this is the first point of the curve (the start): there is nothing to walk back to");
+            return -1;
+        }
+        s->walk = -1;
+    } else if (s->cn && s->ccur + 1 < s->cn) {
+        s->walk = +1;   /* computed before: shown again, not solved again */
+    } else if (s->cstatus == ADH_SUCCESS) {
+        adh_format_quantity(s->crows[s->cn - 1].h0, ADH_Q_LENGTH, 4, h0, sizeof h0);
+        snprintf(why, whylen, "the curve is complete (it ends at h0 = %s): b or u walks back along it", h0);
+        return -1;
+    } else if (s->cstatus != ADH_CONTINUE) {
+        if (s->cstatus == ADH_EGRID)
+            snprintf(why, whylen, "the curve stopped at the grid edge after %zu points: more nodes (N) or a "
+                     "larger spacing", s->cn);
+        else
+            snprintf(why, whylen, "the curve stopped after %zu point%s: %s; x starts it again", s->cn,
+                     s->cn == 1 ? "" : "s", adh_strerror(s->cstatus));
+        return -1;
+    } else {
+        if (ensure_solver(s, why, whylen) != 0)
+            return -1;
+        if (!s->sw && !(s->sw = adh_static_alloc(s->g, s->k))) {
+            snprintf(why, whylen, "out of memory for the static solver (a dense copy of the %zu x %zu kernel): "
+                     "try fewer nodes", s->nodes, s->nodes);
+            return -1;
+        }
+        s->walk = 0;
+        s->t0 = adh_clock_seconds();
+    }
+    s->dir = dir;
+    s->target = s->cn ? s->crows[s->ccur].h0 : s->start;
+    s->busy = 1;
+    return 0;
+}
+
+/* Keeps the state of point i as profile which (allocated once per grid). */
+static void keep_profile(tui_sim *s, int which, size_t i, const adh_state *st)
+{
+    if (!s->cprof[which] || s->cprof[which]->n != st->n) {
+        adh_state_free(s->cprof[which]);
+        s->cprof[which] = adh_state_alloc(st->n);
+    }
+    if (!s->cprof[which])
+        return;   /* a profile less in the plots, nothing worse */
+    adh_state_copy(s->cprof[which], st);
+    s->cprof_at[which] = i;
+}
+
+static int curve_push(tui_sim *s, const adh_state *st, const adh_obs *o)
+{
+    if (s->cn == s->ccap) {
+        size_t cap = s->ccap ? 2 * s->ccap : 1024;
+        adh_obs *p = realloc(s->crows, cap * sizeof *p);
+        if (!p)
+            return ADH_ENOMEM;
+        s->crows = p;
+        s->ccap = cap;
+    }
+    size_t i = s->cn++;
+    s->crows[i] = *o;
+    s->ccur = i;
+    if (o->a > 0 && s->cprof_at[PROF_CONTACT] == NO_POINT)
+        keep_profile(s, PROF_CONTACT, i, st);
+    if (s->cprof_at[PROF_PULLOFF] == NO_POINT || o->F < s->crows[s->cprof_at[PROF_PULLOFF]].F)
+        keep_profile(s, PROF_PULLOFF, i, st);
+    return ADH_SUCCESS;
+}
+
+/* One accepted point of the continuation (the start point first), or one
+ * move of the cursor over points computed before. */
+static int curve_work(tui_sim *s, char *why, size_t whylen)
+{
+    s->busy = 0;
+    s->walked = s->walk != 0;
+    if (s->walk) {
+        s->ccur = s->walk > 0 ? s->ccur + 1 : s->ccur - 1;
+        s->walk = 0;
+        return ADH_SUCCESS;
+    }
+    int rc;
+    if (s->cn == 0) {
+        adh_static_settings ss = adh_static_settings_default();
+        ss.h0_start = s->start;   /* the relaxation's start: the two share an axis, as in --batch */
+        ss.h0_end = tui_sim_curve_end(s);
+        s->ckey.mat = s->mat;
+        s->ckey.nodes = s->nodes;
+        s->ckey.spacing = tui_sim_spacing(s);
+        s->ckey.start = ss.h0_start;
+        s->ckey.end = ss.h0_end;
+        rc = adh_static_set(s->sw, &s->mat, &ss);
+        if (rc == ADH_SUCCESS)
+            rc = ADH_CONTINUE;
+    } else {
+        rc = adh_static_iterate(s->sw);
+    }
+    char h0[64];
+    adh_format_quantity(s->cn ? s->crows[s->cn - 1].h0 : s->start, ADH_Q_LENGTH, 4, h0, sizeof h0);
+    if (rc != ADH_CONTINUE && rc != ADH_SUCCESS && rc != ADH_EGRID) {
+        s->cstatus = rc;
+        adh_static_summary(s->sw, &s->sres);
+        snprintf(why, whylen, "the curve stopped %s h0 = %s: %s; its %zu point%s kept",
+                 s->cn ? "after" : "at its start,", h0, adh_strerror(rc), s->cn, s->cn == 1 ? " is" : "s are");
+        return rc;
+    }
+    /* the row as adh_static_run writes it, so the screen and --batch agree */
+    const adh_state *st = adh_static_state(s->sw);
+    adh_static_point pt = adh_static_current(s->sw);
+    adh_obs o;
+    memset(&o, 0, sizeof o);
+    adh_observe(s->g, &s->mat, st, &o);
+    o.seconds = adh_clock_seconds() - s->t0;
+    o.iters = pt.newton;
+    o.branch = pt.direction;
+    o.path = 0;
+    o.converged = 1;
+    o.stable = pt.stable;
+    if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a))) {
+        s->cstatus = ADH_ENAN;
+        snprintf(why, whylen, "the curve stopped after h0 = %s: a non-finite force; its %zu points are kept",
+                 h0, s->cn);
+        return ADH_ENAN;
+    }
+    if (curve_push(s, st, &o) != ADH_SUCCESS) {
+        s->cstatus = ADH_ENOMEM;
+        snprintf(why, whylen, "out of memory for the curve's points");
+        return ADH_ENOMEM;
+    }
+    adh_static_summary(s->sw, &s->sres);
+    s->cstatus = rc;
+    if (rc == ADH_EGRID) {
+        snprintf(why, whylen, "the curve stops at the grid edge (a = %.3g nm of Rmax = %.3g nm): use more "
+                 "nodes (N) or a larger spacing", o.a * 1e9, s->g->rmax * 1e9);
+        return ADH_EGRID;
+    }
+    return ADH_SUCCESS;
+}
+
+void tui_sim_set_mode(tui_sim *s, adh_mode mode)
+{
+    tui_sim_cancel(s);
+    s->mode = mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
+    curve_check(s);
+}
+
+const adh_obs *tui_sim_curve(const tui_sim *s, size_t *n)
+{
+    *n = s->cn;
+    return s->cn ? s->crows : NULL;
+}
+
+const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
+{
+    if (which == 2) {
+        /* the solver holds the last point, unless a failed step left it elsewhere */
+        if (!s->sw || !s->cn || !(s->cstatus == ADH_CONTINUE || s->cstatus == ADH_SUCCESS || s->cstatus == ADH_EGRID))
+            return NULL;
+        *at = s->cn - 1;
+        return adh_static_state(s->sw);
+    }
+    if (which < 0 || which > 1 || s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->cn)
+        return NULL;
+    *at = s->cprof_at[which];
+    return s->cprof[which];
+}
+
+size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last)
+{
+    const adh_static_fold *f;
+    size_t n = s->sw && s->cn ? adh_static_folds(s->sw, &f) : 0;
+    if (n)
+        *last = f[n - 1];
+    return n;
+}
+
 int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen)
 {
     if (s->busy) {
         snprintf(why, whylen, "a step is already being solved");
         return -1;
     }
+    if (s->mode == ADH_MODE_STATIC)
+        return curve_begin(s, dir, why, whylen);
     if (ensure_solver(s, why, whylen) != 0)
         return -1;
     s->dir = dir;
@@ -346,6 +590,10 @@ void tui_sim_cancel(tui_sim *s)
     if (!s->busy)
         return;
     s->busy = 0;
+    if (s->mode == ADH_MODE_STATIC) {
+        s->walk = 0;   /* a point is solved within one tui_sim_work: nothing half done */
+        return;
+    }
     s->solving_start = 0;
     const adh_state *st = adh_history_state(s->hist);
     if (st)
@@ -358,6 +606,8 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
 {
     if (!s->busy)
         return ADH_SUCCESS;
+    if (s->mode == ADH_MODE_STATIC)
+        return curve_work(s, why, whylen);
     int rc = adh_relax_iterate(s->w, batch);
     if (rc == ADH_CONTINUE)
         return rc;
@@ -417,6 +667,12 @@ static void restore_current(tui_sim *s)
 int tui_sim_undo(tui_sim *s)
 {
     tui_sim_cancel(s);
+    if (s->mode == ADH_MODE_STATIC) {
+        if (s->cn == 0 || s->ccur == 0)
+            return ADH_EINVAL;
+        s->ccur--;
+        return ADH_SUCCESS;
+    }
     if (!s->hist || adh_history_undo(s->hist) != ADH_SUCCESS)
         return ADH_EINVAL;
     restore_current(s);
@@ -426,6 +682,12 @@ int tui_sim_undo(tui_sim *s)
 int tui_sim_redo(tui_sim *s)
 {
     tui_sim_cancel(s);
+    if (s->mode == ADH_MODE_STATIC) {
+        if (s->cn == 0 || s->ccur + 1 >= s->cn)
+            return ADH_EINVAL;
+        s->ccur++;
+        return ADH_SUCCESS;
+    }
     if (!s->hist || adh_history_redo(s->hist) != ADH_SUCCESS)
         return ADH_EINVAL;
     restore_current(s);
@@ -434,27 +696,44 @@ int tui_sim_redo(tui_sim *s)
 
 void tui_sim_reset(tui_sim *s)
 {
+    if (s->mode == ADH_MODE_STATIC) {
+        tui_sim_cancel(s);
+        curve_drop(s);   /* the relaxation path is the other mode's: kept */
+        return;
+    }
     new_path(s);
 }
 
 const adh_obs *tui_sim_row(const tui_sim *s)
 {
+    if (s->mode == ADH_MODE_STATIC)
+        return s->cn ? &s->crows[s->ccur] : NULL;
     return s->hist ? adh_history_row(s->hist) : NULL;
 }
 
 const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
 {
+    if (s->mode == ADH_MODE_STATIC) {
+        *n = s->cn ? s->ccur + 1 : 0;
+        return s->cn ? s->crows : NULL;
+    }
     *n = s->hist ? adh_history_length(s->hist) : 0;
     return s->hist ? adh_history_rows(s->hist) : NULL;
 }
 
 size_t tui_sim_redoable(const tui_sim *s)
 {
+    if (s->mode == ADH_MODE_STATIC)
+        return s->cn ? s->cn - 1 - s->ccur : 0;
     return s->hist ? adh_history_redoable(s->hist) : 0;
 }
 
 size_t tui_sim_progress(const tui_sim *s, double *change)
 {
+    if (s->mode == ADH_MODE_STATIC) {
+        *change = 0;
+        return s->cn;
+    }
     *change = s->w ? adh_relax_change(s->w) : 0;
     return s->w ? adh_relax_step_iterations(s->w) : 0;
 }

@@ -4,12 +4,24 @@
  *
  * A drive step is solved in batches (tui_sim_work) so the loop can poll keys
  * and draw progress between them. The grid and kernel are built on the first
- * step after N or the spacing changed, never for a material change. */
+ * step after N or the spacing changed, never for a material change.
+ *
+ * Two modes share the parameters, grid and kernel. Relaxation (the paper's)
+ * keeps a path of relaxed states with undo by snapshots. Static mode follows
+ * the equilibrium curve by continuation (adh_static_*), one accepted point
+ * per step; the points computed so far are kept as rows, and a cursor says
+ * which is shown: stepping back (b, u) and forward again (f, U) over points
+ * already computed moves the cursor and computes nothing, and only a step
+ * past the last point asks the solver for more. Each mode keeps its own
+ * path or curve across a toggle; a change of what a curve depends on (E, A,
+ * z0, R, N, spacing, start, turn) drops the curve, and the next step starts
+ * it again from the start. */
 #ifndef ADH_TUI_SIM_H
 #define ADH_TUI_SIM_H
 
 #include <stddef.h>
 
+#include "adhere/equilibrium.h"
 #include "adhere/grid.h"
 #include "adhere/history.h"
 #include "adhere/kernel.h"
@@ -60,6 +72,27 @@ typedef struct tui_sim {
     double t0;
     char warn[256];            /* about the last step; "" when fine */
     char gridwarn[512];        /* why the grid may not hold the run to the turn; "" */
+
+    adh_mode mode;             /* ADH_MODE_RELAX or ADH_MODE_STATIC: what a step does */
+    /* static mode: the equilibrium curve */
+    adh_static *sw;            /* built on the first static step (a dense copy of W) */
+    adh_obs *crows;            /* every point computed so far, in curve order */
+    size_t cn, ccap;
+    size_t ccur;               /* the point shown (when cn > 0) */
+    int walk;                  /* the step in progress only moves the cursor: +1, -1 */
+    int walked;                /* the last step moved the cursor over kept points */
+    int cstatus;               /* ADH_CONTINUE while the curve can go on, ADH_SUCCESS
+                                  once it came down to its end, else the error that
+                                  stopped it (shown, never hidden) */
+    adh_static_result sres;    /* summary of the points computed so far */
+    double cend;               /* where the curve ends: the turn, or -5 nm */
+    struct {                   /* what the curve was computed for */
+        adh_material mat;
+        size_t nodes;
+        double spacing, start, end;
+    } ckey;
+    adh_state *cprof[2];       /* profiles kept: first point in contact, pull-off */
+    size_t cprof_at[2];        /* their points */
 } tui_sim;
 
 int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen);
@@ -77,11 +110,30 @@ int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t why
 /* Multiplies parameter p by factor, same rules. */
 int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whylen);
 
+/* Switches between relaxation and static mode. Nothing is computed: each
+ * mode finds its path or curve as it left it (unless the parameters it
+ * depends on changed meanwhile). A step in progress is dropped. */
+void tui_sim_set_mode(tui_sim *s, adh_mode mode);
+/* The curve's end (the turn, or -5 nm without one). */
+double tui_sim_curve_end(const tui_sim *s);
+/* Static mode: the points computed so far (all of them, past the cursor
+ * too), and the states kept for profiles (which 0: first point in contact,
+ * 1: pull-off, 2: the last point computed; NULL when none), with the point
+ * each belongs to. */
+const adh_obs *tui_sim_curve(const tui_sim *s, size_t *n);
+const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at);
+/* The last fold the curve passed (0 when none yet, else the fold count). */
+size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last);
+
 /* Starts a drive step in direction dir (+1 approach, -1 retract). Builds the
  * grid and kernel first if needed (which can take a second at large N).
  * With stay, the drive does not move: the state is relaxed again where it
  * is, as the first row of a new branch (how --batch begins unloading at a
- * turn). 0, or -1 with why. */
+ * turn). 0, or -1 with why.
+ * In static mode +1 is the next point of the curve (computed when past the
+ * last one) and -1 the previous point (computed before: nothing is solved,
+ * the equilibrium curve being the same whichever way the drive moves); -1
+ * with why at the start, at the curve's end or after the solver stopped. */
 int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen);
 /* Up to batch iterations of the step in progress. ADH_CONTINUE while not
  * done; ADH_SUCCESS when the step is done and on the history (a step that
@@ -93,10 +145,12 @@ void tui_sim_cancel(tui_sim *s);
 
 int tui_sim_undo(tui_sim *s);   /* ADH_SUCCESS or ADH_EINVAL: nothing to undo */
 int tui_sim_redo(tui_sim *s);
-/* Forgets the path: the next step starts from the start position. */
+/* Forgets the path (static mode: the curve): the next step starts from the
+ * start position. */
 void tui_sim_reset(tui_sim *s);
 
-/* The current row (NULL before the first step), and the path's rows. */
+/* The current row (NULL before the first step), and the path's rows (in
+ * static mode the curve's points up to the one shown). */
 const adh_obs *tui_sim_row(const tui_sim *s);
 const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n);
 size_t tui_sim_redoable(const tui_sim *s);

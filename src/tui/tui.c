@@ -62,6 +62,7 @@ typedef struct tui {
     int run_dir;        /* a continuous run: +1 loading, -1 unloading, 0 none */
     int run_touched;    /* the run has been in contact (for pull-off) */
     int waiting;        /* replay: :wait until the run ends */
+    size_t folds_seen;  /* static mode: folds already told on the status line */
     int help;
     int help_lines;
     int quit;
@@ -85,8 +86,20 @@ static void fmtq(double v, adh_quantity q, char *buf, size_t len)
     adh_format_quantity(v, q, 4, buf, len);
 }
 
+static int is_static(const tui *t)
+{
+    return t->sim.mode == ADH_MODE_STATIC;
+}
+
 static const char *activity(const tui *t)
 {
+    if (is_static(t)) {
+        if (t->run_dir)
+            return "following the curve";
+        if (t->sim.busy)
+            return t->sim.walk ? "walking the curve" : t->pending ? "stepping" : "solving a point";
+        return "idle";
+    }
     if (t->run_dir > 0)
         return "running to the turn";
     if (t->run_dir < 0)
@@ -142,9 +155,41 @@ static void start_step(tui *t, int dir, int stay)
     }
 }
 
+/* Static mode: the point just reached, naming a fold when one was passed. */
+static void describe_point(tui *t)
+{
+    const tui_sim *s = &t->sim;
+    const adh_obs *o = tui_sim_row(s);
+    char h0[64], F[64], a[64];
+    fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+    fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
+    fmtq(o->a, ADH_Q_LENGTH, a, sizeof a);
+    const char *stab = o->stable ? "stable" : "unstable (det J < 0)";
+    adh_static_fold last;
+    size_t kept = tui_sim_curve_fold(s, &last);
+    if (t->folds_seen > s->sres.folds)
+        t->folds_seen = s->sres.folds;
+    if (!s->walked && s->sres.folds > t->folds_seen && kept == s->sres.folds) {
+        char fh[64], fF[64];
+        fmtq(last.h0, ADH_Q_LENGTH, fh, sizeof fh);
+        fmtq(last.F, ADH_Q_FORCE, fF, sizeof fF);
+        say(t, 0, "fold %zu at h0 = %s (F %s): %s; now %s", s->sres.folds, fh, fF,
+            last.kind < 0 ? "approaching, the surfaces jump in here" : "retracting, they jump out here",
+            o->stable ? "stable" : "unstable");
+    } else {
+        say(t, 0, "point %zu%s%s: h0 %s, F %s, %s%s, %s", s->ccur + 1, s->walked ? " (kept, not solved again)" : "",
+            "", h0, F, o->a > 0 ? "a " : "not in contact", o->a > 0 ? a : "", stab);
+    }
+    t->folds_seen = s->sres.folds;
+}
+
 /* Plain words about the step just done, naming jumps in and out. */
 static void describe_step(tui *t)
 {
+    if (is_static(t)) {
+        describe_point(t);
+        return;
+    }
     size_t n;
     const adh_obs *rows = tui_sim_rows(&t->sim, &n);
     const adh_obs *o = &rows[n - 1];
@@ -167,6 +212,18 @@ static int run_done(tui *t)
 {
     const adh_obs *o = tui_sim_row(&t->sim);
     char h0[64], F[64];
+    if (is_static(t)) {
+        const adh_static_result *r = &t->sim.sres;
+        if (t->sim.cstatus != ADH_SUCCESS || tui_sim_redoable(&t->sim))
+            return 0;
+        char pl[64], pd[64];
+        fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+        fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
+        fmtq(r->pulloff_F_disp, ADH_Q_FORCE, pd, sizeof pd);
+        say(t, 0, "curve complete at h0 = %s (%zu points, %zu folds): pull-off %s, at fixed h0 %s",
+            h0, t->sim.cn, r->folds, pl, pd);
+        return 1;
+    }
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
     if (t->run_dir > 0) {
@@ -246,8 +303,19 @@ static void param_changed(tui *t, tui_param p)
     char val[64];
     int u = t->view.utf8;
     tui_sim_param_text(&t->sim, p, val, sizeof val);
-    if (p == P_TURN)
+    size_t ncurve;
+    tui_sim_curve(&t->sim, &ncurve);
+    if (is_static(t) && p == P_TURN)
+        say(t, 0, "turn = %s: the curve now ends there%s", val, ncurve ? "" : "; f or r follows it from the start");
+    else if (p == P_TURN)
         say(t, 0, "turn = %s: r now loads to there (the path is kept)", val);
+    else if (is_static(t) && (ncurve || p == P_EPS))
+        say(t, 0, "%s = %s: the equilibrium curve does not depend on it%s (the relaxation path restarts)",
+            tui_params[p].name, val, ncurve ? " and is kept" : "");
+    else if (is_static(t))
+        say(t, 0, "%s = %s: %s = %.4g, %s = %.4g mJ/m%s; the curve starts again from the start (f, or r to "
+            "its end)", tui_params[p].name, val, u ? "\xcf\x83" : "sigma", t->sim.der.sigma,
+            u ? "\xce\xb3" : "gamma", t->sim.der.gamma * 1e3, u ? "\xc2\xb2" : "^2");
     else
         say(t, 0, "%s = %s: %s = %.4g, %s = %.4g mJ/m%s; a new path starts from the start", tui_params[p].name,
             val, u ? "\xcf\x83" : "sigma", t->sim.der.sigma, u ? "\xce\xb3" : "gamma", t->sim.der.gamma * 1e3,
@@ -356,13 +424,46 @@ static void move_history(tui *t, int redo, long n)
     const adh_obs *o = tui_sim_row(&t->sim);
     char h0[64];
     if (!done) {
-        say(t, 1, "nothing to %s", redo ? "redo" : o ? "undo: this is the first state of the path"
-                                                     : "undo: no step taken yet");
+        if (is_static(t))
+            say(t, 1, "nothing to %s", redo ? "redo: this is the last point computed (f computes more)"
+                                         : o ? "undo: this is the first point of the curve" : "undo: no point yet");
+        else
+            say(t, 1, "nothing to %s", redo ? "redo" : o ? "undo: this is the first state of the path"
+                                                         : "undo: no step taken yet");
         return;
     }
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
-    say(t, 0, "%s %ld step%s: back at h0 = %s, exactly as it was", redo ? "redid" : "undid", done,
-        done == 1 ? "" : "s", h0);
+    if (is_static(t))
+        say(t, 0, "%s %ld point%s: at point %zu of %zu of the curve, h0 = %s (nothing solved again)",
+            redo ? "forward" : "back", done, done == 1 ? "" : "s", t->sim.ccur + 1, t->sim.cn, h0);
+    else
+        say(t, 0, "%s %ld step%s: back at h0 = %s, exactly as it was", redo ? "redid" : "undid", done,
+            done == 1 ? "" : "s", h0);
+}
+
+/* m: relaxation <-> static. Nothing is solved here; each mode finds what
+ * it had, and the first step in static mode builds its solver. */
+static void toggle_mode(tui *t)
+{
+    stop_all(t);
+    tui_sim_set_mode(&t->sim, is_static(t) ? ADH_MODE_RELAX : ADH_MODE_STATIC);
+    size_t n;
+    tui_sim_rows(&t->sim, &n);
+    t->folds_seen = t->sim.sres.folds;
+    const adh_obs *o = tui_sim_row(&t->sim);
+    char h0[64] = "";
+    if (o)
+        fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+    if (is_static(t) && o)
+        say(t, 0, "static equilibrium: back at point %zu of %zu of the curve, h0 = %s (nothing solved again)",
+            t->sim.ccur + 1, t->sim.cn, h0);
+    else if (is_static(t))
+        say(t, 0, "static equilibrium: f solves the next point, r follows the curve through its folds, b walks back");
+    else if (o)
+        say(t, 0, "relaxation: back on the path at h0 = %s (%zu state%s, kept); m returns to the curve",
+            h0, n, n == 1 ? "" : "s");
+    else
+        say(t, 0, "relaxation: f steps the spheres together and relaxes, r runs to the turn; m: static");
 }
 
 static void handle_key(tui *t, int key)
@@ -412,6 +513,15 @@ static void handle_key(tui *t, int key)
         break;
     case ACT_RUN: {
         const adh_obs *o = tui_sim_row(&t->sim);
+        if (is_static(t)) {
+            char end[64];
+            fmtq(tui_sim_curve_end(&t->sim), ADH_Q_LENGTH, end, sizeof end);
+            t->pending = 0;
+            t->run_dir = +1;
+            say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
+            start_step(t, +1, 0);
+            break;
+        }
         int unload = o && (o->branch < 0 ||
                            (!isnan(t->sim.turn) && o->h0 <= t->sim.turn + 1e-6 * t->sim.step));
         t->pending = 0;
@@ -432,9 +542,13 @@ static void handle_key(tui *t, int key)
         stop_all(t);
         tui_sim_reset(&t->sim);
         fmtq(t->sim.start, ADH_Q_LENGTH, st, sizeof st);
-        say(t, 0, "reset: the path is forgotten; the next step starts at h0 = %s", st);
+        if (is_static(t))
+            say(t, 0, "reset: the curve is forgotten (the relaxation path is kept); f solves it again from h0 = %s", st);
+        else
+            say(t, 0, "reset: the path is forgotten; the next step starts at h0 = %s", st);
         break;
     }
+    case ACT_MODE: toggle_mode(t); break;
     case ACT_SELECT_UP: t->view.sel = (int)((t->view.sel + P_COUNT - n % P_COUNT) % P_COUNT); break;
     case ACT_SELECT_DOWN: t->view.sel = (int)((t->view.sel + n) % P_COUNT); break;
     case ACT_EDIT:
@@ -546,6 +660,13 @@ static void run_next(tui *t)
 
 static void progress(tui *t)
 {
+    if (is_static(t)) {
+        char h0[64];
+        fmtq(t->sim.target, ADH_Q_LENGTH, h0, sizeof h0);
+        say(t, 0, "solving the equilibrium curve past h0 = %s (point %zu); any key stops", h0, t->sim.cn + 1);
+        draw(t);
+        return;
+    }
     double change;
     size_t it = tui_sim_progress(&t->sim, &change);
     char h0[64], c[64], e[64];
@@ -583,7 +704,9 @@ static void loop(tui *t)
             continue;
         }
         if (t->run_dir) {
-            if (!t->headless)
+            /* a static point can take well under a millisecond: drawing
+             * each would cost more than solving it */
+            if (!t->headless && (!is_static(t) || adh_clock_seconds() - t->last_draw > 0.05))
                 draw(t);
             run_next(t);
             continue;
@@ -715,9 +838,10 @@ int adh_tui_main(const adh_config *cfg)
         tui_keysrc_free(&t.keys);
         return EXIT_BAD_INPUT;   /* no terminal to run on: a usage error */
     }
-    if (cfg->mode != ADH_MODE_RELAX)
-        say(&t, 0, "The screen relaxes step by step as the paper does; --mode=%s is for --batch. ? lists every key.",
-            cfg->mode == ADH_MODE_STATIC ? "static" : "rigid");
+    if (cfg->mode == ADH_MODE_RIGID)
+        say(&t, 0, "The screen relaxes step by step as the paper does; --mode=rigid is for --batch. ? lists every key.");
+    else if (cfg->mode == ADH_MODE_STATIC)
+        say(&t, 0, "Static equilibrium: f solves the curve point by point, r follows it to the end, ? lists every key.");
     else if (cfg->title[0])
         say(&t, 0, "%s. f steps in, r runs, ? lists every key.", cfg->title);
     else

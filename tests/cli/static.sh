@@ -30,4 +30,58 @@ check "static.tsv is written beside force.tsv" [ -s "$ref/static.tsv" ]
 check "summary.tsv has static_pulloff_F" grep -q "^static_pulloff_F	" "$ref/summary.tsv"
 rp=$(val pulloff_F "$ref/summary.tsv"); sp=$(val static_pulloff_F "$ref/summary.tsv")
 check "the relaxation pull-off $rp is at least as strong as the static one $sp (dynamic hysteresis)" awk "BEGIN {exit !($rp <= $sp * 0.99)}"
+# A sweep in mode = static: each run is the whole curve, in parallel; the
+# runs' summaries and sweep.tsv carry the static keys.
+cat >"$TMP/static-sweep.scene" <<'SCENE'
+[scene]
+title = three moduli, equilibrium curves
+mode = static
+[protocol]
+turns = -2nm
+[output]
+plots = none
+[sweep]
+E = 1GPa, 2GPa, 4GPa
+jobs = 2
+SCENE
+sw="$TMP/static-sweep"
+"$ADHERE" --batch -q "$TMP/static-sweep.scene" -N 200 -o "$sw" >"$TMP/stdout" 2>"$TMP/err"
+rc=$?
+check "a static sweep exits 0 (got $rc: $(head -c 300 "$TMP/err"))" [ "$rc" -eq 0 ]
+# scol NAME: the column of sweep.tsv named NAME
+scol() { grep -v '^#' "$sw/sweep.tsv" | head -1 | tr '\t' '\n' | grep -nx "$1" | cut -d: -f1; }
+srow() { grep -v '^#' "$sw/sweep.tsv" | awk -F'\t' -v r="$1" -v c="$(scol "$2")" '$1 == r {print $c}'; }
+check "static sweep: three rows in sweep.tsv" [ "$(grep -v '^#' "$sw/sweep.tsv" | tail -n +2 | wc -l)" -eq 3 ]
+for key in jump_in_h0 jump_out_h0 pulloff_F pulloff_F_disp folds; do
+    check "static sweep: sweep.tsv has column $key" [ -n "$(scol $key)" ]
+done
+jkr=$(val F_jkr "$sw/run-1/summary.tsv"); dmt=$(val F_dmt "$sw/run-1/summary.tsv")
+for r in 1 2 3; do
+    s="$sw/run-$r/summary.tsv"
+    check "static sweep run-$r wrote force.tsv and summary.tsv in mode static" \
+        sh -c "[ -s '$sw/run-$r/force.tsv' ] && grep -qx 'mode	static' '$s'"
+    for key in jump_in_h0 jump_out_h0 pulloff_F pulloff_F_disp folds; do
+        check "static sweep run-$r: summary.tsv has $key, as sweep.tsv ($(val $key "$s"))" \
+            awk -v a="$(val $key "$s")" -v b="$(srow $r $key)" 'BEGIN {exit !(a != "" && a == b)}'
+    done
+    pull=$(srow $r pulloff_F) disp=$(srow $r pulloff_F_disp) jin=$(srow $r jump_in_h0) jout=$(srow $r jump_out_h0)
+    # the coarse grid (N = 200, 7.5 nm) moves pull-off by a few per cent
+    check "static sweep run-$r: pull-off $pull N lies between 0.98 x JKR $jkr and 1.05 x DMT $dmt" \
+        awk "BEGIN {exit !($pull < 0.98 * $jkr && $pull > 1.05 * $dmt)}"
+    check "static sweep run-$r: finite jumps, out ($jout) beyond in ($jin), displacement pull-off $disp weaker" \
+        awk "BEGIN {exit !($jin > 0 && $jout > $jin && $disp < 0 && $disp > $pull)}"
+    check "static sweep run-$r: at least two folds ($(srow $r folds)), status success" \
+        sh -c "[ '$(srow $r folds)' -ge 2 ] && [ '$(srow $r status)' = success ]"
+done
+check "static sweep: each run's sigma is its E's (sigma halves as E doubles)" \
+    awk -v a="$(srow 1 sigma)" -v b="$(srow 2 sigma)" -v c="$(srow 3 sigma)" \
+    'BEGIN {exit !(a / b > 1.999999 && a / b < 2.000001 && b / c > 1.999999 && b / c < 2.000001)}'
+"$ADHERE" --batch -q "$TMP/static-sweep.scene" -N 200 >"$TMP/stdout" 2>"$TMP/err"
+check "a static sweep without --out prints sweep.tsv with the static columns" \
+    sh -c "grep -v '^#' '$TMP/stdout' | head -1 | tr '\t' '\n' | grep -qx pulloff_F_disp"
+sed 's/^E = .*/eps = 1pm, 2pm/' "$TMP/static-sweep.scene" >"$TMP/eps-static.scene"
+"$ADHERE" --batch -q "$TMP/eps-static.scene" -N 200 -o "$TMP/eps-static" >/dev/null 2>"$TMP/err"
+rc=$?
+check "an eps sweep in mode = static is refused with exit 2, saying why (got $rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'same curve 2 times' '$TMP/err'"
 done_testing

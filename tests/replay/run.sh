@@ -148,6 +148,57 @@ check "undo then the same step again gives the same numbers and iterations" \
 check "undo says how far it went" grep -q "undid 3 steps" "$U/undo-30.txt"
 check "a new step drops what could be redone" grep -q "error: nothing to redo" "$U/undo.screen"
 
+# Static mode (m): the equilibrium curve point by point, walked back and
+# forth without solving again, followed to its end as --batch --mode=static.
+ST=$W/static
+at() { sed -n 's/.*point  \([0-9]* of [0-9]*\), .*/\1/p' "$1"; }
+check "m shows static mode before any solve" sh -c "grep -q 'mode   static (m: relaxation), idle' '$ST/static-0.txt' && grep -q 'start, not solved yet' '$ST/static-0.txt' && grep -q ' f next  b back ' '$ST/static-0.txt'"
+check "and relaxation says m switches (the mode is on screen)" grep -q "mode   relaxation (m: static), idle" "$W/start/start.screen"
+check "5f solves five points of the curve ($(at "$ST/static-5.txt"))" [ "$(at "$ST/static-5.txt")" = "5 of 5" ]
+check "b and u walk back two points, no point dropped ($(at "$ST/static-back.txt"))" [ "$(at "$ST/static-back.txt")" = "3 of 5" ]
+check "the point walked back to has other numbers (the checks around can fail)" [ "$(state "$ST/static-back.txt")" != "$(state "$ST/static-5.txt")" ]
+check "U and f walk forward to the same numbers" [ "$(state "$ST/static-fwd.txt")" = "$(state "$ST/static-5.txt")" ]
+check "and say the point was kept, not solved again" grep -q "^point 5 (kept, not solved again)" "$ST/static-fwd.txt"
+SB=$work/static-batch
+"$bin" --batch --mode=static --nodes=100 --spacing=10nm --no-plot -o "$SB" </dev/null >/dev/null 2>"$work/static-batch.err"
+sval() { awk -F'\t' -v k="$1" '$1 == k {print $2}' "$SB/summary.tsv"; }
+if [ -s "$SB/summary.tsv" ]; then
+    pts=$(sval points) folds=$(sval folds)
+    nN() { awk -v v="$1" 'BEGIN {printf "%.4g nN", v * 1e9}'; }
+    nm() { awk -v v="$1" 'BEGIN {printf "%.4g nm", v * 1e9}'; }
+    check "r follows the curve to its end: --batch --mode=static's $pts points" grep -q "point  $pts of $pts," "$ST/static-end.txt"
+    check "with its $folds folds, jump-in $(nm "$(sval jump_in_h0)") and jump-out $(nm "$(sval jump_out_h0)")" \
+        grep -q "folds  $folds; jump-in $(nm "$(sval jump_in_h0)"), jump-out $(nm "$(sval jump_out_h0)")" "$ST/static-end.txt"
+    check "and its pull-offs $(nN "$(sval pulloff_F)") (fixed load) and $(nN "$(sval pulloff_F_disp)") (fixed h0)" \
+        grep -q "pull   $(nN "$(sval pulloff_F)") at fixed load, $(nN "$(sval pulloff_F_disp)") at fixed h0" "$ST/static-end.txt"
+else
+    fail "--batch --mode=static with the static case's settings wrote no summary: $(head -c 300 "$work/static-batch.err")"
+fi
+check "the end of the curve is said, on the state and status lines" \
+    sh -c "grep -q 'curve  complete, ends at h0 = -5 nm' '$ST/static-end.txt' && grep -q '^curve complete at h0 = -5 nm' '$ST/static-end.txt'"
+check "the preview marks stable (*) and unstable (.) points" \
+    sh -c "sed -n '17,30p' '$ST/static-end.txt' | cut -c12- | grep -q '[*]' && sed -n '17,30p' '$ST/static-end.txt' | cut -c12- | grep -q '[.]'"
+check "p in static mode writes force.png as a PNG" \
+    sh -c "[ \"\$(head -c 8 '$ST/adhere-plots/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && grep -q '^plots: wrote force.png' '$ST/static-plots.txt'"
+check "its profiles: first contact, pull-off and the curve's end (3)" \
+    [ "$(grep -v '^#' "$ST/adhere-plots/profiles.tsv" | tail -n +2 | cut -f1 | sort -u | wc -l)" -eq 3 ]
+check "changing eps keeps the curve ($(at "$ST/static-eps.txt")) and says why" \
+    sh -c "[ '$(at "$ST/static-eps.txt")' = '$(at "$ST/static-end.txt")' ] && grep -q '^eps = 2 pm: the equilibrium curve does not depend on it and is kept' '$ST/static-eps.txt'"
+check "changing E drops the curve and says it starts again" \
+    sh -c "grep -q 'start, not solved yet' '$ST/static-restart.txt' && grep -q 'the curve starts again from the start' '$ST/static-restart.txt'"
+check "and sigma follows E at once" [ "$(sigma "$ST/static-restart.txt")" != "$(sigma "$ST/static-end.txt")" ]
+check "m back to relaxation shows its own (empty) path" \
+    sh -c "grep -q 'mode   relaxation (m: static), idle' '$ST/static-relax.txt' && grep -q 'path   0 states' '$ST/static-relax.txt'"
+check "m to static again finds the curve as it was ($(at "$ST/static-again.txt"), nothing solved)" \
+    sh -c "[ '$(at "$ST/static-again.txt")' = '3 of 3' ] && grep -q 'nothing solved again' '$ST/static-again.txt'"
+check "and m back finds the relaxation path (2 states) as it was" \
+    sh -c "grep -q 'path   2 states' '$ST/static.screen' && grep -q 'relaxation: back on the path' '$ST/static.screen'"
+E=$W/static-edge
+check "--mode=static opens the screen in static mode" grep -q "State  (static equilibrium)" "$E/static-edge.txt"
+check "a curve that reaches the grid edge stops, says so and keeps its points" \
+    sh -c "grep -q '! the curve stopped: the grid is too short' '$E/static-edge.txt' && grep -q 'error: the curve stops at the grid edge' '$E/static-edge.txt' && grep -q 'point  [0-9]* of [0-9]*, ' '$E/static-edge.txt'"
+check "a step past it is refused with the reason" grep -q "^error: the curve stopped at the grid edge after [0-9]* points" "$E/static-edge.screen"
+
 PL=$W/plots/adhere-plots
 for f in force.png profile.png contact.png; do
     check "p wrote $f as a PNG" sh -c "[ \"\$(head -c 8 '$PL/$f' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ]"
