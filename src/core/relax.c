@@ -8,6 +8,10 @@
 #include "adhere/law.h"
 #include "adhere/status.h"
 
+/* Iterations between stiffness measurements (each one extra kernel
+ * product); the restart catches a contact that stiffens in between. */
+#define ADH_STIFFNESS_EVERY 32
+
 struct adh_relax {
     const adh_grid *g;
     const adh_kernel *k;
@@ -33,7 +37,7 @@ struct adh_relax {
 adh_relax_settings adh_relax_settings_default(void)
 {
     adh_relax_settings s = {
-        .rule = ADH_MIX_MOMENTUM, .momentum = 0.8,
+        .rule = ADH_MIX_MOMENTUM, .momentum = 0.5,
         .eps = 1e-12, .mix_max = 0.2, .mix_min = 1e-4,
         .mix_down = 0.5, .mix_up = 1.05, .max_iter = 200000,
     };
@@ -215,7 +219,7 @@ static int momentum_update(adh_relax *w)
     if (w->stiffness == 0) {
         for (int k = 0; k < 3; k++)
             estimate_stiffness(w);
-    } else if (++w->since_estimate >= 8) {
+    } else if (++w->since_estimate >= ADH_STIFFNESS_EVERY) {
         estimate_stiffness(w);
     }
     if (w->change > 2.0 * w->best_change) {
