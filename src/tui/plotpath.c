@@ -133,7 +133,7 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
         return -1;
     }
     msg[0] = '\0';
-    int rc = adh_plots_write(&c, &run, dir, msg, msglen);
+    int rc = adh_plots_write(&c, &run, NULL, dir, msg, msglen);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");
     return rc == 0 ? 0 : -1;
