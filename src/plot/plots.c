@@ -350,7 +350,7 @@ static int plot_force(plotter *pl)
     /* The models for comparison (not for rigid spheres, where E means
      * nothing), each over the whole width of the frame. */
     model_sets jkr = { -1, -1 }, dmt = { -1, -1 }, md = { -1, -1 };
-    double md_lambda = NAN, md_pulloff = NAN;
+    double md_lambda = NAN;
     if (pl->cfg->mode != ADH_MODE_RIGID) {
         adh_model_curve *mc = malloc(sizeof *mc);
         if (!mc) {
@@ -363,10 +363,8 @@ static int plot_force(plotter *pl)
         if (adh_jkr_drive_curve(mat, h0_min, mc) == 0)
             jkr = write_model_sets(&df, mc);
         md_lambda = adh_md_lambda(mat);
-        if (adh_md_drive_curve(mat, md_lambda, h0_min, mc) == 0) {
+        if (adh_md_drive_curve(mat, md_lambda, h0_min, mc) == 0)
             md = write_model_sets(&df, mc);
-            adh_md_pulloff(mat, md_lambda, &md_pulloff, NULL, NULL, NULL);
-        }
         if (adh_dmt_drive_curve(mat, h0_min, mc) == 0)
             dmt = write_model_sets(&df, mc);
         free(mc);
@@ -528,29 +526,28 @@ static int plot_force(plotter *pl)
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 2 "
                    "title \"rigid spheres (eq 22)\"", qdat, rigid_set);
     if (ref_set[0] >= 0 || ref_set[1] >= 0)
-        fprintf(c, ", \\\n  keyentry with lines ls 9 title \"static equilibrium%s\"",
-                ref_set[1] >= 0 ? " (dashed: unstable)" : "");
+        fprintf(c, ", \\\n  keyentry with lines ls 9 title \"static equilibrium\"");
     if (models) {
         for (int k = 0; k < 3; k++) {
             const model_sets *ms = &mod[k].ms;
             if (ms->load < 0 && ms->disp < 0)
                 continue;
+            /* short titles: the key must stay narrower than the right 60 %
+             * of the frame, also in the adhesion panel's layout (the man
+             * page says what the pull-offs are) */
             char title[128];
             if (k == 0)
-                snprintf(title, sizeof title, "JKR, pull-off −(3/2)πγR = %.3g %s",
-                         d->F_jkr * fscale, funit);
+                snprintf(title, sizeof title, "JKR, pull-off %.3g %s", d->F_jkr * fscale, funit);
             else if (k == 1)
-                snprintf(title, sizeof title, "Maugis–Dugdale λ = %.3g, pull-off %.3g %s",
-                         md_lambda, md_pulloff * fscale, funit);
+                snprintf(title, sizeof title, "Maugis–Dugdale, λ = %.3g", md_lambda);
             else
-                snprintf(title, sizeof title, "DMT, pull-off −2πγR = %.3g %s", d->F_dmt * fscale,
-                         funit);
+                snprintf(title, sizeof title, "DMT, pull-off %.3g %s", d->F_dmt * fscale, funit);
             fprintf(c, ", \\\n  keyentry with lines ls %d%s title \"%s\"", mod[k].ls,
                     ms->load >= 0 ? "" : " dt adh_model_disp_dash", title);
         }
         if (any_disp)
             fprintf(c, ", \\\n  keyentry with lines lc rgb \"#555555\" lw 1.4 dt adh_model_disp_dash "
-                       "title \"models past pull-off (displacement control)\"");
+                       "title \"models past pull-off\"");
     } else {
         fprintf(c, ", \\\n  Fjkr*Fu with lines ls 3 title sprintf(\"JKR −(3/2)πγR = %%.3g %s\", "
                    "Fjkr*Fu)", funit);

@@ -36,7 +36,7 @@ static const char *const builtin_style[] = {
     "set style line 5 lc rgb \"#000000\" lw 1.2 dt 3",
     "set style line 6 lc rgb \"#c0392b\" lw 1.6 pt 7 ps 0.9",
     "set style line 7 lc rgb \"#888888\" lw 1",
-    "set style line 8 lc rgb \"#e08a00\" lw 0.9",
+    "set style line 8 lc rgb \"#e377c2\" lw 0.9",
     "set style line 9 lc rgb \"#26a69a\" lw 1.2",
 };
 

@@ -97,7 +97,7 @@ rc=$?
 s=$(png_size "$D/force.png")
 check '[ $rc -eq 0 ] && [ "$s" = "$size" ]' "--reference=static: force.png made ($rc, $s: $(head -c 200 "$T/ref.err"))"
 check 'grep -q "keyentry with lines ls 9 title \"static equilibrium" "$L"' "the key names the static equilibrium"
-for m in "JKR, pull-off" "Maugis–Dugdale λ = " "DMT, pull-off" "models past pull-off"; do
+for m in "JKR, pull-off" "Maugis–Dugdale, λ = " "DMT, pull-off" "models past pull-off"; do
     check 'grep -q "keyentry .*title \"$m" "$L"' "the key names \"$m\""
 done
 check '[ -s "$L.force.dat" ]' "force.png's data kept by the logging gnuplot"

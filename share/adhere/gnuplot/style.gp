@@ -30,5 +30,5 @@ set style line 4 lc rgb "#6a1b9a" lw 1.4 dt 4                             # DMT
 set style line 5 lc rgb "#000000" lw 1.2 dt 3                             # undeformed sphere
 set style line 6 lc rgb "#c0392b" lw 1.6 pt 7 ps 0.9                      # adhesion vs load
 set style line 7 lc rgb "#888888" lw 1 dt 1                               # zero line
-set style line 8 lc rgb "#e08a00" lw 0.9 dt 1                             # Maugis-Dugdale
+set style line 8 lc rgb "#e377c2" lw 0.9 dt 1                             # Maugis-Dugdale
 set style line 9 lc rgb "#26a69a" lw 1.2 dt 1                             # static equilibrium (--reference)
