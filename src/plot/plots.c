@@ -474,7 +474,7 @@ static int plot_force(plotter *pl)
     const char *qdat = adh_gp_quoted(dat, q, sizeof q);
     /* Underneath the run: the static reference (its unstable stretches
      * dashed). Over it: the models (the load-controlled part in the model's
-     * line, the part past the pull-off dotted). Their key entries
+     * line, the part past the pull-off short-dashed). Their key entries
      * come after the run's, so the key names the run first. */
     for (int s = 1; s >= 0; s--)
         if (ref_set[1 - s] >= 0)
