@@ -17,6 +17,7 @@
 #define ADHERE_MAUGIS_H
 
 #include <stddef.h>
+#include "adhere/models.h"
 #include "adhere/params.h"
 
 typedef struct adh_md_point {
@@ -44,5 +45,11 @@ int adh_md_curve(const adh_material *m, double lambda, double a_max, size_t n, a
  * be NULL. */
 int adh_md_pulloff(const adh_material *m, double lambda, double *F_load, double *a_load,
                    double *F_disp, double *overlap_disp);
+
+/* The curve against the drive position (adh_model_curve, models.h): down to
+ * the fold, or, in the DMT-like limit where the overlap has no minimum,
+ * down to a contact radius 1/ADH_MODEL_POINTS of the deepest. ADH_SUCCESS,
+ * ADH_EINVAL for lambda <= 0 or a non-finite h0_min, ADH_EMAXITER as above. */
+int adh_md_drive_curve(const adh_material *m, double lambda, double h0_min, adh_model_curve *c);
 
 #endif

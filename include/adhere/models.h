@@ -2,6 +2,7 @@
 #ifndef ADHERE_MODELS_H
 #define ADHERE_MODELS_H
 
+#include <stddef.h>
 #include "adhere/params.h"
 
 /* Rigid spheres, Derjaguin approximation (eq 22); NAN for h0 <= 0, where
@@ -26,5 +27,30 @@ double adh_jkr_pulloff(const adh_material *m);
  * 0.37 sqrt(R z0)/sigma. The grid must resolve it to follow the contact line. */
 double adh_edge_zone(const adh_material *m);
 double adh_dmt_pulloff(const adh_material *m);
+
+/* A model's force against the drive position, to draw beside a computed
+ * F(h0): h0 = z0 - overlap (the surfaces touch at z0, as in eq 22), over the
+ * drive positions h0 >= h0_min (the deepest position of the figure), from the
+ * deepest contact out to where a displacement-driven contact jumps apart (the
+ * fold: the minimum overlap). Points 0 .. n_load-1 are stable under load
+ * control and end at the load-controlled pull-off (the minimum force); that
+ * point also begins the rest, n_load-1 .. n-1, which only displacement
+ * control reaches (Figure 7's "break"). n_load = n when no point is past the
+ * pull-off, 0 when h0_min stops the curve before it reaches the pull-off;
+ * n = 0 when no part of the curve lies at h0 >= h0_min. */
+#define ADH_MODEL_POINTS 240
+typedef struct adh_model_curve {
+    size_t n, n_load;
+    double h0[ADH_MODEL_POINTS];   /* m, decreasing overlap: h0 rises along the curve */
+    double F[ADH_MODEL_POINTS];    /* N */
+} adh_model_curve;
+
+/* JKR down to its fold at a_f = (pi gamma R^2 / (8 E*))^(1/3), where the
+ * force is -(5/6) pi gamma R; its load-controlled pull-off is at 9^(1/3) a_f,
+ * -(3/2) pi gamma R. ADH_SUCCESS, or ADH_EINVAL for a non-finite h0_min. */
+int adh_jkr_drive_curve(const adh_material *m, double h0_min, adh_model_curve *c);
+/* DMT from contact (overlap 0, h0 = z0, F = -2 pi gamma R) inwards: stable
+ * throughout (n_load = n). ADH_SUCCESS, or ADH_EINVAL as above. */
+int adh_dmt_drive_curve(const adh_material *m, double h0_min, adh_model_curve *c);
 
 #endif

@@ -164,7 +164,7 @@ int adh_batch_main(const adh_cli *cli)
         } else if (status == ADH_EXIT_OK) {
             /* With --no-plot this writes the plots' tables only. */
             char msg[1024] = "";
-            int prc = adh_plots_write(cfg, &run, out, msg, sizeof msg);
+            int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
                 status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;

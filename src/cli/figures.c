@@ -264,7 +264,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
-    double fbig = 0, amax = 0;
+    double fbig = 0, xmin = INFINITY;
     int same_material = cfg->sweep.kind == ADH_SWEEP_EPS;
     for (size_t i = 0; i < n; i++) {
         for (size_t j = 0; j < runs[i].nrows; j++) {
@@ -273,7 +273,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
                 fputc('\n', f); /* a break between branches */
             fprintf(f, "%.17g\t%.17g\n", o->h0, o->F);
             fbig = fmax(fbig, fabs(o->F));
-            amax = fmax(amax, o->a);
+            xmin = fmin(xmin, o->h0);
         }
         fprintf(f, "\n\n");
     }
@@ -282,12 +282,20 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     f = fig_data(fg, "b.dat", jkr, sizeof jkr);
     if (!f)
         return -1;
-    if (same_material && amax > 0)
-        for (int k = 1; k <= 300; k++) {
-            double a = 1.1 * amax * k / 300.0, F, overlap;
-            adh_jkr(&cfg->mat, a, &F, &overlap);
-            fprintf(f, "%.17g\t%.17g\n", -overlap, F);
+    /* JKR on h0 = z0 - overlap over the runs' positions: index 0 the
+     * load-controlled part, index 1 the rest (the paper's break) */
+    int jkr_parts = 0;
+    if (same_material && isfinite(xmin)) {
+        adh_model_curve mc;
+        if (adh_jkr_drive_curve(&cfg->mat, xmin, &mc) == 0 && mc.n_load > 1 && mc.n > mc.n_load) {
+            for (size_t i = 0; i < mc.n; i++) {
+                fprintf(f, "%.17g\t%.17g\n", mc.h0[i], mc.F[i]);
+                if (i + 1 == mc.n_load)
+                    fprintf(f, "\n\n%.17g\t%.17g\n", mc.h0[i], mc.F[i]);
+            }
+            jkr_parts = 2;
         }
+    }
     if (data_done(fg, f, jkr) < 0)
         return -1;
     double fs;
@@ -297,7 +305,8 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", adh_sweep_name(cfg->sweep.kind));
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
-    adh_gnuplot_cmd(fg->gp, "set key bottom right");
+    /* the top half is empty (the range is symmetric): the key goes there, clear of the loops */
+    adh_gnuplot_cmd(fg->gp, "set key top right");
     adh_gnuplot_cmd(fg->gp, "set yrange [%.17g:%.17g]", -1.15 * fbig * fs, 1.15 * fbig * fs);
     char *cmd = NULL;
     size_t cap = 0;
@@ -319,9 +328,11 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
                 adh_gp_quoted(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1),
                 colors[i % (sizeof colors / sizeof colors[0])], label);
     }
-    if (same_material && amax > 0)
-        fprintf(c, ", %s using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" title \"JKR\"",
-                adh_gp_quoted(jkr, q, sizeof q), fs);
+    if (jkr_parts)
+        fprintf(c, ", %s index 0 using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" "
+                   "title \"JKR equilibrium (dashed: displacement control)\", "
+                   "'' index 1 using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" dt (5,4) "
+                   "notitle", adh_gp_quoted(jkr, q, sizeof q), fs, fs);
     fclose(c);
     adh_gnuplot_cmd(fg->gp, "%s", cmd);
     free(cmd);

@@ -258,7 +258,7 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
     /* the plot module's figures only when one is asked: a sweep of many runs
      * should not draw what nobody wants */
     if (rcfg.plots & ADH_PLOT_ALL) {
-        int prc = adh_plots_write(&rcfg, run, dir, msg, sizeof msg);
+        int prc = adh_plots_write(&rcfg, run, NULL, dir, msg, sizeof msg);
         if (prc != 0) {
             fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
             status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;

@@ -3,6 +3,7 @@
 #include <math.h>
 
 #include "adhere/status.h"
+#include "core/modelcurve.h"
 
 /* Scales between the nondimensional and SI forms (see the header). */
 typedef struct md_scale {
@@ -201,4 +202,35 @@ int adh_md_pulloff(const adh_material *m, double lambda, double *F_load, double 
             *overlap_disp = D * sc.d;
     }
     return ADH_SUCCESS;
+}
+
+static int md_at(const adh_material *m, const void *ctx, double a, double *F, double *overlap)
+{
+    adh_md_point pt;
+    int rc = adh_md_at_radius(m, *(const double *)ctx, a, &pt);
+    if (rc != ADH_SUCCESS)
+        return rc;
+    *F = pt.F;
+    *overlap = pt.overlap;
+    return ADH_SUCCESS;
+}
+
+int adh_md_drive_curve(const adh_material *m, double lambda, double h0_min, adh_model_curve *c)
+{
+    c->n = c->n_load = 0;
+    if (!(lambda > 0) || !isfinite(lambda))
+        return ADH_EINVAL;
+    md_scale sc = scale_of(m);
+    double A, P, D, a_fold = 0, a_pull = 0;
+    double s = md_min(lambda, 1);
+    if (s >= 0) {
+        md_of_s(lambda, s, &A, &P, &D);
+        a_fold = A * sc.a;
+    }
+    s = md_min(lambda, 0);
+    if (s >= 0) {
+        md_of_s(lambda, s, &A, &P, &D);
+        a_pull = A * sc.a;
+    }
+    return adh_model_sample(m, md_at, &lambda, a_fold, a_pull, h0_min, c);
 }

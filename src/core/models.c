@@ -2,6 +2,9 @@
 
 #include <math.h>
 
+#include "adhere/status.h"
+#include "core/modelcurve.h"
+
 static double gamma_of(const adh_material *m)
 {
     return m->A / (16.0 * M_PI * m->z0 * m->z0);
@@ -69,4 +72,115 @@ double adh_dmt_pulloff(const adh_material *m)
 double adh_edge_zone(const adh_material *m)
 {
     return 243.0 * M_PI * M_PI / 128.0 * m->E * pow(m->z0, 4) / m->A;
+}
+
+/* a from a0 to a1 (inclusive) in k >= 2 even steps into c at index i0 */
+static int sample_span(const adh_material *m, adh_radius_model fn, const void *ctx, double a0,
+                       double a1, size_t k, size_t i0, adh_model_curve *c)
+{
+    for (size_t j = 0; j < k; j++) {
+        double a = a0 + (a1 - a0) * (double)j / (double)(k - 1), F, ov;
+        int rc = fn(m, ctx, a, &F, &ov);
+        if (rc != ADH_SUCCESS)
+            return rc;
+        c->h0[i0 + j] = m->z0 - ov;
+        c->F[i0 + j] = F;
+    }
+    return ADH_SUCCESS;
+}
+
+int adh_model_sample(const adh_material *m, adh_radius_model fn, const void *ctx, double a_fold,
+                     double a_pull, double h0_min, adh_model_curve *c)
+{
+    const size_t N = ADH_MODEL_POINTS;
+    c->n = c->n_load = 0;
+    if (!isfinite(h0_min) || !(a_fold >= 0) || !isfinite(a_pull))
+        return ADH_EINVAL;
+    double target = m->z0 - h0_min, F, ov;
+    int rc;
+    /* no fold (a_fold = 0): the overlap falls to 0 with a */
+    if (a_fold > 0) {
+        if ((rc = fn(m, ctx, a_fold, &F, &ov)) != ADH_SUCCESS)
+            return rc;
+    } else {
+        ov = 0;
+    }
+    if (!(ov < target))
+        return ADH_SUCCESS; /* the whole curve is deeper than h0_min */
+    /* the deepest radius: overlap(a) = target, bracketed by doubling */
+    double lo = a_fold, hi = a_fold > 0 ? a_fold : cbrt(M_PI * gamma_of(m) * m->R * m->R / m->E);
+    for (int k = 0;; k++) {
+        if ((rc = fn(m, ctx, hi, &F, &ov)) != ADH_SUCCESS)
+            return rc;
+        if (ov >= target)
+            break;
+        lo = hi;
+        hi *= 2;
+        if (k > 200)
+            return ADH_EMAXITER;
+    }
+    for (int i = 0; i < 200 && hi - lo > 1e-13 * hi; i++) {
+        double mid = 0.5 * (lo + hi);
+        if ((rc = fn(m, ctx, mid, &F, &ov)) != ADH_SUCCESS)
+            return rc;
+        if (ov < target)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    double a_max = lo > 0 ? lo : hi;
+    if (!(a_fold > 0))
+        a_fold = a_max / (double)N;
+    if (a_pull <= a_fold || a_pull >= a_max) {
+        /* all on one side of the pull-off */
+        if ((rc = sample_span(m, fn, ctx, a_max, a_fold, N, 0, c)) != ADH_SUCCESS)
+            return rc;
+        c->n = N;
+        c->n_load = a_pull >= a_max ? 0 : N;
+        return ADH_SUCCESS;
+    }
+    /* points shared out by radius, each part at least N/8 */
+    size_t nd = (size_t)lround((double)(N - 1) * (a_pull - a_fold) / (a_max - a_fold));
+    if (nd < N / 8)
+        nd = N / 8;
+    if (nd > N - N / 8)
+        nd = N - N / 8;
+    size_t n1 = N - nd;
+    if ((rc = sample_span(m, fn, ctx, a_max, a_pull, n1, 0, c)) != ADH_SUCCESS ||
+        (rc = sample_span(m, fn, ctx, a_pull, a_fold, nd + 1, n1 - 1, c)) != ADH_SUCCESS)
+        return rc;
+    c->n = N;
+    c->n_load = n1;
+    return ADH_SUCCESS;
+}
+
+static int jkr_at(const adh_material *m, const void *ctx, double a, double *F, double *overlap)
+{
+    (void)ctx;
+    adh_jkr(m, a, F, overlap);
+    return ADH_SUCCESS;
+}
+
+int adh_jkr_drive_curve(const adh_material *m, double h0_min, adh_model_curve *c)
+{
+    double a_fold = cbrt(M_PI * gamma_of(m) * m->R * m->R / (8.0 * (m->E / 2.0)));
+    return adh_model_sample(m, jkr_at, NULL, a_fold, cbrt(9.0) * a_fold, h0_min, c);
+}
+
+int adh_dmt_drive_curve(const adh_material *m, double h0_min, adh_model_curve *c)
+{
+    const size_t N = ADH_MODEL_POINTS;
+    c->n = c->n_load = 0;
+    if (!isfinite(h0_min))
+        return ADH_EINVAL;
+    double dmax = m->z0 - h0_min;
+    if (!(dmax > 0))
+        return ADH_SUCCESS;
+    for (size_t j = 0; j < N; j++) {
+        double delta = dmax * (double)(N - 1 - j) / (double)(N - 1);
+        c->h0[j] = m->z0 - delta;
+        c->F[j] = adh_dmt_force(m, delta);
+    }
+    c->n = c->n_load = N;
+    return ADH_SUCCESS;
 }

@@ -10,13 +10,16 @@
 
 /* Writes the plots cfg->plots asks for into dir, beside profiles.tsv and
  * contact.tsv (always written, also with cfg->plot == 0 or no gnuplot).
+ * reference, when not NULL, is a second run drawn on force.png for
+ * comparison: the static equilibrium curve of --reference=static (its
+ * path 0, stable stretches solid, unstable ones dashed).
  * Returns 0 (msg names the files written and any figure skipped for lack of
  * data), or 3 when gnuplot is missing, dies or reports an error (msg says
  * what, quoting gnuplot; the tables are still written), or 2 when dir cannot
  * be written. gnuplot's stderr goes to dir/gnuplot.log, kept only when it
  * holds something. */
-int adh_plots_write(const adh_config *cfg, const adh_run *run, const char *dir,
-                    char *msg, size_t msglen);
+int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *reference,
+                    const char *dir, char *msg, size_t msglen);
 
 /* A handful (at most max) of profile positions for profile.png when none
  * were asked: evenly from the deepest turn (or, with no turn, the analytic

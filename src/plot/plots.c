@@ -12,6 +12,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "adhere/maugis.h"
+#include "adhere/models.h"
 #include "adhere/params.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
@@ -23,6 +25,7 @@
 typedef struct plotter {
     const adh_config *cfg;
     const adh_run *run;
+    const adh_run *ref;       /* the static equilibrium beside a relaxation run, or NULL */
     const char *dir;
     adh_gnuplot *gp;
     adh_derived d;
@@ -264,6 +267,27 @@ static int write_force_set(datafile *df, const adh_run *run, int path, int stabl
     return set_end(df);
 }
 
+/* A model curve as two datasets: its load-controlled part, and the part
+ * past the pull-off that only displacement control reaches (they share the
+ * pull-off point, so the change of dash marks the break). */
+typedef struct model_sets {
+    int load, disp;     /* dataset indices, -1 when empty */
+} model_sets;
+
+static model_sets write_model_sets(datafile *df, const adh_model_curve *c)
+{
+    model_sets ms = { -1, -1 };
+    set_begin(df);
+    for (size_t i = 0; i < c->n_load; i++)
+        set_point(df, c->h0[i], c->F[i]);
+    ms.load = df->points > 1 ? set_end(df) : (set_end(df), -1);
+    set_begin(df);
+    for (size_t i = c->n_load ? c->n_load - 1 : 0; i < c->n; i++)
+        set_point(df, c->h0[i], c->F[i]);
+    ms.disp = df->points > 1 ? set_end(df) : (set_end(df), -1);
+    return ms;
+}
+
 static void unload_color(int path, char *buf, size_t len)
 {
     snprintf(buf, len, "lc rgb word(adh_unload_colors, 1 + %d %% words(adh_unload_colors))",
@@ -308,6 +332,46 @@ static int plot_force(plotter *pl)
             set_point(&df, o->h0, o->F_rigid);
     }
     int rigid_set = df.points > 1 ? set_end(&df) : (set_end(&df), -1);
+    /* --reference=static: the equilibrium curve (its path 0), stable and
+     * unstable stretches, a computed curve like the run's own */
+    const adh_run *ref = pl->ref && pl->ref->nrows >= 2 ? pl->ref : NULL;
+    int ref_set[2] = { -1, -1 };
+    if (ref) {
+        for (int s = 1; s >= 0; s--)
+            ref_set[1 - s] = write_force_set(&df, ref, 0, s);
+        for (size_t i = 0; i < ref->nrows; i++) {
+            flo = fmin(flo, ref->rows[i].F);
+            fhi = fmax(fhi, ref->rows[i].F);
+            xmin = fmin(xmin, ref->rows[i].h0);
+            xmax = fmax(xmax, ref->rows[i].h0);
+        }
+    }
+    double xpad = 0.02 * (xmax - xmin);
+    /* The models for comparison (not for rigid spheres, where E means
+     * nothing), each over the whole width of the frame. */
+    model_sets jkr = { -1, -1 }, dmt = { -1, -1 }, md = { -1, -1 };
+    double md_lambda = NAN;
+    if (pl->cfg->mode != ADH_MODE_RIGID) {
+        adh_model_curve *mc = malloc(sizeof *mc);
+        if (!mc) {
+            fclose(f);
+            free(set);
+            return -1;
+        }
+        const adh_material *mat = &pl->cfg->mat;
+        double h0_min = xmin - xpad;
+        if (adh_jkr_drive_curve(mat, h0_min, mc) == 0)
+            jkr = write_model_sets(&df, mc);
+        md_lambda = adh_md_lambda(mat);
+        if (adh_md_drive_curve(mat, md_lambda, h0_min, mc) == 0)
+            md = write_model_sets(&df, mc);
+        if (adh_dmt_drive_curve(mat, h0_min, mc) == 0)
+            dmt = write_model_sets(&df, mc);
+        free(mc);
+    }
+    int models = jkr.load >= 0 || jkr.disp >= 0 || md.load >= 0 || md.disp >= 0 ||
+                 dmt.load >= 0 || dmt.disp >= 0;
+    int any_disp = jkr.disp >= 0 || md.disp >= 0 || dmt.disp >= 0;
     if (data_close(pl, f, dat) < 0 || df.bad) {
         free(set);
         return -1;
@@ -350,8 +414,14 @@ static int plot_force(plotter *pl)
     int nunload = 0;
     for (int p = 1; p <= np; p++)
         nunload += set[2 * p] >= 0 || set[2 * p + 1] >= 0;
-    int nkey = (set[0] >= 0) + (set[1] >= 0) + (rigid_set >= 0) + 2 +
+    int nmodel = models ? (jkr.load >= 0 || jkr.disp >= 0) + (md.load >= 0 || md.disp >= 0) +
+                          (dmt.load >= 0 || dmt.disp >= 0) + any_disp
+                        : 2;
+    int nkey = (set[0] >= 0) + (set[1] >= 0) + (rigid_set >= 0) + nmodel +
+               (ref_set[0] >= 0 || ref_set[1] >= 0) +
                (nunload > MAX_LABELLED_UNLOADS ? 1 : nunload);
+    /* (the model curves are only references too: they neither set the
+     * range nor push the key) */
     double right = 0, xcut = xmin + 0.4 * (xmax - xmin);
     for (size_t i = 0; i < run->nrows; i++) {
         const adh_obs *o = &run->rows[i];
@@ -359,13 +429,15 @@ static int plot_force(plotter *pl)
             continue;
         right = fmax(right, o->F);
     }
+    for (size_t i = 0; ref && i < ref->nrows; i++)
+        if (ref->rows[i].h0 >= xcut)
+            right = fmax(right, ref->rows[i].F);
     double lo = fmin(flo, d->F_dmt);
     double frac = fmin(0.6, (17.0 * nkey + 16.0) / 470.0);
     double hi = fmax(fhi, (right - frac * lo) / (1.0 - frac));
     lo -= 0.04 * (hi - lo);
     hi += 0.02 * (hi - lo);
     double pad = 0;
-    double xpad = 0.02 * (xmax - xmin);
     char heading[1200];
     title_string(pl, "Force vs position", heading, sizeof heading);
 
@@ -400,6 +472,14 @@ static int plot_force(plotter *pl)
     }
     fprintf(c, "plot 0 ls 7 notitle");
     const char *qdat = adh_gp_quoted(dat, q, sizeof q);
+    /* Underneath the run: the static reference (its unstable stretches
+     * dashed). Over it: the models (the load-controlled part in the model's
+     * line, the part past the pull-off short-dashed). Their key entries
+     * come after the run's, so the key names the run first. */
+    for (int s = 1; s >= 0; s--)
+        if (ref_set[1 - s] >= 0)
+            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 9%s notitle", qdat,
+                    ref_set[1 - s], s ? "" : " lw 0.8 dt adh_unstable_dash");
     int labelled = 0;
     for (int p = 0; p <= np; p++) {
         for (int s = 1; s >= 0; s--) {
@@ -432,13 +512,48 @@ static int plot_force(plotter *pl)
                     idx, style, title);
         }
     }
+    /* the models thin, over the run: where they agree with it both show */
+    const struct { model_sets ms; int ls; } mod[3] = { { jkr, 3 }, { md, 8 }, { dmt, 4 } };
+    for (int k = 0; k < 3; k++) {
+        if (mod[k].ms.load >= 0)
+            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls %d notitle", qdat,
+                    mod[k].ms.load, mod[k].ls);
+        if (mod[k].ms.disp >= 0)
+            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls %d "
+                       "dt adh_model_disp_dash notitle", qdat, mod[k].ms.disp, mod[k].ls);
+    }
     if (rigid_set >= 0)
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 2 "
                    "title \"rigid spheres (eq 22)\"", qdat, rigid_set);
-    fprintf(c, ", \\\n  Fjkr*Fu with lines ls 3 title sprintf(\"JKR −(3/2)πγR = %%.3g %s\", "
-               "Fjkr*Fu)", funit);
-    fprintf(c, ", \\\n  Fdmt*Fu with lines ls 4 title sprintf(\"DMT −2πγR = %%.3g %s\", "
-               "Fdmt*Fu)", funit);
+    if (ref_set[0] >= 0 || ref_set[1] >= 0)
+        fprintf(c, ", \\\n  keyentry with lines ls 9 title \"static equilibrium\"");
+    if (models) {
+        for (int k = 0; k < 3; k++) {
+            const model_sets *ms = &mod[k].ms;
+            if (ms->load < 0 && ms->disp < 0)
+                continue;
+            /* short titles: the key must stay narrower than the right 60 %
+             * of the frame, also in the adhesion panel's layout (the man
+             * page says what the pull-offs are) */
+            char title[128];
+            if (k == 0)
+                snprintf(title, sizeof title, "JKR, pull-off %.3g %s", d->F_jkr * fscale, funit);
+            else if (k == 1)
+                snprintf(title, sizeof title, "Maugis–Dugdale, λ = %.3g", md_lambda);
+            else
+                snprintf(title, sizeof title, "DMT, pull-off %.3g %s", d->F_dmt * fscale, funit);
+            fprintf(c, ", \\\n  keyentry with lines ls %d%s title \"%s\"", mod[k].ls,
+                    ms->load >= 0 ? "" : " dt adh_model_disp_dash", title);
+        }
+        if (any_disp)
+            fprintf(c, ", \\\n  keyentry with lines lc rgb \"#555555\" lw 1.4 dt adh_model_disp_dash "
+                       "title \"models past pull-off\"");
+    } else {
+        fprintf(c, ", \\\n  Fjkr*Fu with lines ls 3 title sprintf(\"JKR −(3/2)πγR = %%.3g %s\", "
+                   "Fjkr*Fu)", funit);
+        fprintf(c, ", \\\n  Fdmt*Fu with lines ls 4 title sprintf(\"DMT −2πγR = %%.3g %s\", "
+                   "Fdmt*Fu)", funit);
+    }
     fclose(c);
     adh_gnuplot_cmd(pl->gp, "%s", cmd);
     free(cmd);
@@ -814,8 +929,8 @@ static int file_empty(const char *path)
     return stat(path, &st) == 0 && st.st_size == 0;
 }
 
-int adh_plots_write(const adh_config *cfg, const adh_run *run, const char *dir,
-                    char *msg, size_t msglen)
+int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *reference,
+                    const char *dir, char *msg, size_t msglen)
 {
     char path[PATH_MAX + 32], why[1024];
     if (msglen)
@@ -858,6 +973,7 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const char *dir,
     memset(&pl, 0, sizeof pl);
     pl.cfg = cfg;
     pl.run = run;
+    pl.ref = reference;
     pl.dir = dir;
     adh_material_derive(&cfg->mat, &pl.d);
     if (adh_plot_style_file(cfg, pl.style, sizeof pl.style, why, sizeof why) < 0) {

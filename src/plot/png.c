@@ -28,13 +28,16 @@ static const char *const builtin_style[] = {
     "adh_loading_width = 2.5",
     "adh_unloading_width = 1.6",
     "adh_unstable_dash = 2",
+    "adh_model_disp_dash = \"- \"",
     "set style line 1 lc rgb adh_loading_color lw adh_loading_width",
     "set style line 2 lc rgb \"#000000\" lw 1.2",
-    "set style line 3 lc rgb \"#2e7d32\" lw 1.4 dt 3",
+    "set style line 3 lc rgb \"#2ca02c\" lw 1.8",
     "set style line 4 lc rgb \"#6a1b9a\" lw 1.4 dt 4",
     "set style line 5 lc rgb \"#000000\" lw 1.2 dt 3",
     "set style line 6 lc rgb \"#c0392b\" lw 1.6 pt 7 ps 0.9",
     "set style line 7 lc rgb \"#888888\" lw 1",
+    "set style line 8 lc rgb \"#e377c2\" lw 0.9",
+    "set style line 9 lc rgb \"#26a69a\" lw 1.2",
 };
 
 void adh_png_begin(adh_gnuplot *gp, const char *style, const char *figure, const char *tmp_png)

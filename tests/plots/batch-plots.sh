@@ -70,6 +70,79 @@ s=$(png_size "$D/force.png")
 check '[ $rc -eq 0 ] && [ "$s" = "$size" ]' "two turns: force.png with its adhesion panel ($rc, $s)"
 check '[ ! -e "$D/profile.png" ] && [ ! -e "$D/contact.png" ]' "--plots=force makes force.png alone"
 
+# --- force.png's references: the static curve and the models -------------
+# A gnuplot that logs its commands and keeps force.png's data before adhere
+# removes it, then passes everything to the real gnuplot.
+GP=$(command -v gnuplot)
+cat >"$T/logging-gnuplot" <<EOF
+#!/bin/sh
+tee -a "\$GPLOG" | "$GP" "\$@"
+rc=\$?
+f=\$(sed -n "s/^  '\\(.*force\\.dat\\)' index .*/\\1/p" "\$GPLOG" | tail -1)
+[ -n "\$f" ] && cp "\$f" "\$GPLOG.force.dat"
+exit \$rc
+EOF
+chmod +x "$T/logging-gnuplot"
+# dataset k (gnuplot's index: two blank lines apart) of a data file
+dataset() { awk -v k="$1" 'NF == 0 {b++; next} {if (b >= 2) i++; b = 0} i == k' "$2"; }
+# the index of the first plot clause whose style matches the ERE $1
+index_of() { grep -E "index [0-9]+ using .* $1" "$2" | head -1 | sed 's/.* index \([0-9]*\) using.*/\1/'; }
+val() { awk -F'\t' -v k="$1" '$1 == k {print $2}' "$2"; }
+
+D=$T/ref
+L=$T/ref.gp
+GPLOG=$L ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-2nm --eps=3pm \
+    --reference=static --plots=force -o "$D" 2>"$T/ref.err"
+rc=$?
+s=$(png_size "$D/force.png")
+check '[ $rc -eq 0 ] && [ "$s" = "$size" ]' "--reference=static: force.png made ($rc, $s: $(head -c 200 "$T/ref.err"))"
+check 'grep -q "keyentry with lines ls 9 title \"static equilibrium" "$L"' "the key names the static equilibrium"
+for m in "JKR, pull-off" "Maugis–Dugdale, λ = " "DMT, pull-off" "models past pull-off"; do
+    check 'grep -q "keyentry .*title \"$m" "$L"' "the key names \"$m\""
+done
+check '[ -s "$L.force.dat" ]' "force.png's data kept by the logging gnuplot"
+# every stable point of static.tsv is in the dataset drawn solid with ls 9
+i=$(index_of 'ls 9 notitle' "$L")
+grep -v '^#' "$D/static.tsv" | awk -F'\t' 'NR > 1 && $11 == 1 {printf "%.9g %.9g\n", $1, $2}' | sort -u >"$T/static.want"
+dataset "$i" "$L.force.dat" | awk '{printf "%.9g %.9g\n", $1, $2}' | sort -u >"$T/static.got"
+nwant=$(wc -l <"$T/static.want")
+check '[ -n "$i" ] && [ "$nwant" -gt 10 ] && [ -z "$(comm -23 "$T/static.want" "$T/static.got")" ]' \
+    "the solid static curve (index $i) holds all $nwant stable points of static.tsv"
+j=$(index_of 'ls 9 lw [0-9.]+ dt adh_unstable_dash' "$L")
+nun=$(grep -v '^#' "$D/static.tsv" | awk -F'\t' 'NR > 1 && $11 == 0' | wc -l)
+check '[ "$nun" -eq 0 ] || [ -n "$j" ]' "its $nun unstable points are drawn dashed (index $j)"
+# the models on h0 = z0 - overlap: JKR's load part ends at -(3/2) pi gamma R,
+# its dashed part at the fold, -(5/6) pi gamma R; DMT ends at h0 = z0, -2 pi gamma R
+jkr=$(val F_jkr "$D/summary.tsv"); dmt=$(val F_dmt "$D/summary.tsv"); z0=$(val z0 "$D/summary.tsv")
+i=$(index_of 'ls 3 notitle' "$L"); k=$(index_of 'ls 3 dt adh_model_disp_dash' "$L")
+check '[ -n "$i" ] && dataset "$i" "$L.force.dat" | awk -v f="$jkr" "{m = NR == 1 || \$2 < m ? \$2 : m; last = \$2} END {exit !(NR > 10 && m == last && (m - f) ^ 2 < (1e-9 * f) ^ 2)}"' \
+    "JKR's load-controlled part (index $i) ends at its minimum, -(3/2) pi gamma R = $jkr N"
+check '[ -n "$k" ] && dataset "$k" "$L.force.dat" | awk -v f="$jkr" "{last = \$2} END {exit !(NR > 10 && (last - f * 5 / 9) ^ 2 < (1e-9 * f) ^ 2)}"' \
+    "JKR's displacement-controlled part (index $k) ends at the fold, -(5/6) pi gamma R"
+i=$(index_of 'ls 4 notitle' "$L")
+check '[ -n "$i" ] && dataset "$i" "$L.force.dat" | awk -v f="$dmt" -v z="$z0" "{h = \$1; last = \$2} END {exit !(NR > 10 && (h - z) ^ 2 < (1e-9 * z) ^ 2 && (last - f) ^ 2 < (1e-9 * f) ^ 2)}"' \
+    "DMT (index $i) ends at contact, h0 = z0, with -2 pi gamma R = $dmt N"
+i=$(index_of 'ls 8 notitle' "$L")
+check '[ -n "$i" ] && dataset "$i" "$L.force.dat" | awk -v j="$jkr" -v d="$dmt" "{m = NR == 1 || \$2 < m ? \$2 : m} END {exit !(NR > 10 && m < j && m > d)}"' \
+    "Maugis-Dugdale (index $i) pulls off between JKR and DMT"
+
+# without --reference a relaxation run's force.png has no static curve
+D=$T/noref
+GPLOG=$T/noref.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-2nm --eps=3pm \
+    --plots=force -o "$D" 2>/dev/null
+check 'grep -q "keyentry .*JKR, pull-off" "$T/noref.gp" && ! grep -q "ls 9" "$T/noref.gp"' \
+    "without --reference: the models, no static curve"
+
+# --mode=static: the models beside the equilibrium curve
+D=$T/static
+GPLOG=$T/static.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-2nm --mode=static \
+    --plots=force -o "$D" 2>"$T/static.err"
+rc=$?
+s=$(png_size "$D/force.png")
+check '[ $rc -eq 0 ] && [ "$s" = "$size" ]' "--mode=static: force.png made ($rc, $s)"
+check 'grep -q "title \"static equilibrium\"" "$T/static.gp" && grep -q "keyentry .*JKR, pull-off" "$T/static.gp" && grep -q "keyentry .*Maugis" "$T/static.gp" && grep -q "keyentry .*DMT, pull-off" "$T/static.gp"' \
+    "--mode=static: the equilibrium curve with JKR, Maugis-Dugdale and DMT"
+
 # --- --no-plot ------------------------------------------------------------
 D=$T/noplot
 "$BIN" $RUN --no-plot -o "$D" 2>/dev/null
