@@ -165,11 +165,21 @@ static double rel(double x, double ref)
     return fabs(x - ref) / fabs(ref);
 }
 
+static void mixing_text(const adh_relax_settings *rs, char *buf, size_t len)
+{
+    if (rs->rule == ADH_MIX_MOMENTUM)
+        snprintf(buf, len, "momentum %g", rs->momentum);
+    else
+        snprintf(buf, len, "paper");
+}
+
 static int write_cost(FILE *f, const void *ctx)
 {
     const cost_job *job = ctx;
-    fprintf(f, "# adhere %s cost report: %ld cores, BLAS %s; errors are relative to the most accurate run (err_*) and the static curve (static_err_*)\n",
-            ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), openblas_get_config());
+    char rule[64];
+    mixing_text(&job->cfg->relax, rule, sizeof rule);
+    fprintf(f, "# adhere %s cost report: %ld cores, BLAS %s, mixing %s; errors are relative to the most accurate run (err_*) and the static curve (static_err_*)\n",
+            ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), openblas_get_config(), rule);
     fputs("kernel\tnodes\teps\tseconds\tkernel_seconds\titerations\tsteps\tunconverged\tpulloff_F\tjump_in_h0\thysteresis\ta_turn\t"
           "err_pulloff\terr_jump_in\terr_hysteresis\terr_a_turn\tstatic_err_pulloff\tstatic_err_jump_in\tstatus\n", f);
     for (size_t i = 0; i < job->n; i++) {
@@ -354,8 +364,10 @@ int adh_cost_main(const adh_cli *cli)
         r->err_static[1] = src == ADH_SUCCESS ? rel(r->jump_in, sres.jump_in_h0) : NAN;
     }
 
-    printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each\n",
-           n, started ? started : 1, cores);
+    char rule[64];
+    mixing_text(&cfg->relax, rule, sizeof rule);
+    printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
+           n, started ? started : 1, cores, rule);
     printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm%s\n\n",
            openblas_get_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, sc.nodes, sres.pulloff_F,
            sres.jump_in_h0 * 1e9, src == ADH_SUCCESS ? "" : " (failed)");
