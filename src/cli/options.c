@@ -38,7 +38,7 @@ static const option_doc options[] = {
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
     { { "mixing", required_argument, 0, OPT_MIXING }, "paper|momentum", "mixing rule of the relaxation: the paper's adaptive ratio or heavy-ball momentum (default momentum)" },
-    { { "momentum", required_argument, 0, OPT_MOMENTUM }, "B", "momentum rule: fraction of the previous update kept, 0 to below 1 (default 0.5)" },
+    { { "momentum", required_argument, 0, OPT_MOMENTUM }, "B", "momentum rule: fraction of the previous update kept, 0 to below 1 (default 0.55)" },
     { { "step", required_argument, 0, 'd' }, "M", "drive step d (default 0.05nm)" },
     { { "start", required_argument, 0, OPT_START }, "M", "first drive position h0 (default: where the force is negligible)" },
     { { "turn", required_argument, 0, OPT_TURN }, "M[,M...]", "turning points (default -5nm); 'none' loads to contact only" },

@@ -37,7 +37,7 @@ struct adh_relax {
 adh_relax_settings adh_relax_settings_default(void)
 {
     adh_relax_settings s = {
-        .rule = ADH_MIX_MOMENTUM, .momentum = 0.5,
+        .rule = ADH_MIX_MOMENTUM, .momentum = 0.55,
         .eps = 1e-12, .mix_max = 0.2, .mix_min = 1e-4,
         .mix_down = 0.5, .mix_up = 1.05, .max_iter = 200000,
     };

@@ -28,8 +28,11 @@ static double cpu(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+void openblas_set_num_threads(int);
+
 int main(int argc, char **argv)
 {
+    openblas_set_num_threads(1); /* the target is for one core */
     adh_material m = adh_material_default();
     size_t n = argc > 1 ? (size_t)atol(argv[1]) : 1000;
     if (argc > 2)
