@@ -14,6 +14,9 @@ check "cost.tsv has a row per run" [ "$(grep -cE '^(paper|ring)	' "$out/cost.tsv
 check "the reference (N = 80, ring, 4 pm) has zero error" awk -F'\t' '$1=="ring" && $2==80 && $3<5e-12 && $13==0 && $15==0 {f=1} END {exit !f}' "$out/cost.tsv"
 check "every other error is finite and positive" awk -F'\t' '/^(paper|ring)/ && !($1=="ring" && $2==80 && $3<5e-12) && !($13>0 && $13<10) {bad=1} END {exit bad}' "$out/cost.tsv"
 check "tighter eps costs more iterations at every N and kernel" awk -F'\t' '/^(paper|ring)/ {it[$1 $2 ($3<5e-12)] = $6} END {for (k in it) if (substr(k, length(k)) == "1" && it[k] <= it[substr(k, 1, length(k)-1) "0"]) bad=1; exit bad}' "$out/cost.tsv"
+sh=$(sed -n 's/^# static curve.s hysteresis (eps -> 0, displacement control): //p' "$out/cost.tsv" | cut -d' ' -f1)
+check "the static curve's hysteresis ($sh J) is positive and below every run's: a slower drive leaves less" \
+    awk -F'\t' -v s="$sh" 'BEGIN {if (!(s > 0)) bad = 1} /^(paper|ring)/ && !($11 > s && $19 > 0) {bad = 1} END {exit bad}' "$out/cost.tsv"
 check "cost.png is a PNG" sh -c "head -c 8 '$out/cost.png' | od -An -c | grep -q 'P   N   G'"
 "$ADHERE" --cost -q --cost-nodes=5 >/dev/null 2>"$TMP/stderr"; rc=$?
 check "--cost-nodes=5 is refused with exit 2 ($(cat "$TMP/stderr"))" sh -c "[ $rc -eq 2 ] && grep -q 'from 10 to 20000' '$TMP/stderr'"
