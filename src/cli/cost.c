@@ -38,7 +38,7 @@ typedef struct cost_run {
     size_t iterations, steps, unconverged;
     double pulloff, jump_in, hysteresis, a_turn;
     double err[4];        /* against the most accurate run */
-    double err_static[3]; /* pull-off, jump-in and hysteresis against the static curve */
+    double err_static[4]; /* pull-off, jump-in, hysteresis and a at the turn against the static curve */
 } cost_run;
 
 typedef struct cost_job {
@@ -47,6 +47,7 @@ typedef struct cost_job {
     size_t n, next;
     pthread_mutex_t lock;
     double static_hysteresis; /* J; NAN when the static curve failed */
+    double static_a_turn;     /* m; NAN when the static curve failed */
 } cost_job;
 
 
@@ -212,14 +213,15 @@ static int write_cost(FILE *f, const void *ctx)
     fprintf(f, "# adhere %s cost report: %ld cores, BLAS %s, mixing %s; errors are relative to the most accurate run (err_*) and the static curve (static_err_*)\n",
             ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), openblas_get_config(), rule);
     fprintf(f, "# static curve's hysteresis (eps -> 0, displacement control): %.17g J\n", job->static_hysteresis);
+    fprintf(f, "# static curve's contact radius at the turn: %.17g m\n", job->static_a_turn);
     fputs("kernel\tnodes\teps\tseconds\tkernel_seconds\titerations\tsteps\tunconverged\tpulloff_F\tjump_in_h0\thysteresis\ta_turn\t"
-          "err_pulloff\terr_jump_in\terr_hysteresis\terr_a_turn\tstatic_err_pulloff\tstatic_err_jump_in\tstatic_err_hysteresis\tstatus\n", f);
+          "err_pulloff\terr_jump_in\terr_hysteresis\terr_a_turn\tstatic_err_pulloff\tstatic_err_jump_in\tstatic_err_hysteresis\tstatic_err_a_turn\tstatus\n", f);
     for (size_t i = 0; i < job->n; i++) {
         const cost_run *r = &job->runs[i];
-        fprintf(f, "%s\t%zu\t%.6g\t%.6g\t%.6g\t%zu\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n",
+        fprintf(f, "%s\t%zu\t%.6g\t%.6g\t%.6g\t%zu\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n",
                 adh_kernel_name(r->kernel), r->nodes, r->eps, r->seconds, r->kernel_seconds, r->iterations, r->steps,
                 r->unconverged, r->pulloff, r->jump_in, r->hysteresis, r->a_turn, r->err[0], r->err[1], r->err[2],
-                r->err[3], r->err_static[0], r->err_static[1], r->err_static[2],
+                r->err[3], r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3],
                 r->status == ADH_CONTINUE ? "interrupted" : adh_strerror(r->status));
     }
     return 0;
@@ -372,6 +374,8 @@ int adh_cost_main(const adh_cli *cli)
     int src = k ? adh_cli_static_run(&sc, g, k, adh_interrupt_step, NULL, &srun, &sres) : ADH_ENOMEM;
     /* a fine h0 grid: lattice-trapping legs are far shorter than d */
     double static_hyst = src == ADH_SUCCESS ? adh_static_hysteresis_area(&srun, 0.002 * sc.mat.z0) : NAN;
+    /* the curve ends at the (deepest) turn: its contact radius there */
+    double static_a = src == ADH_SUCCESS && srun.nrows ? srun.rows[srun.nrows - 1].a : NAN;
     adh_run_free(&srun);
     adh_kernel_free(k);
     adh_grid_free(g);
@@ -397,26 +401,28 @@ int adh_cost_main(const adh_cli *cli)
         r->err_static[0] = src == ADH_SUCCESS ? rel(r->pulloff, sres.pulloff_F) : NAN;
         r->err_static[1] = src == ADH_SUCCESS ? rel(r->jump_in, sres.jump_in_h0) : NAN;
         r->err_static[2] = src == ADH_SUCCESS ? rel(r->hysteresis, static_hyst) : NAN;
+        r->err_static[3] = src == ADH_SUCCESS ? rel(r->a_turn, static_a) : NAN;
     }
     job.static_hysteresis = static_hyst;
+    job.static_a_turn = static_a;
 
     char rule[64];
     mixing_text(&cfg->relax, rule, sizeof rule);
     printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
            n, started ? started : 1, cores, rule);
     printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "
-           "hysteresis %.4g fJ%s\n\n",
+           "hysteresis %.4g fJ, a at the turn %.4g um%s\n\n",
            openblas_get_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, sc.nodes, sres.pulloff_F,
-           sres.jump_in_h0 * 1e9, static_hyst * 1e15, src == ADH_SUCCESS ? "" : " (failed)");
-    printf("%-6s %6s %7s %9s %11s %12s %10s %11s %9s | %8s %8s %8s %8s | %8s %8s %8s\n", "kernel", "N", "eps/pm", "seconds",
+           sres.jump_in_h0 * 1e9, static_hyst * 1e15, static_a * 1e6, src == ADH_SUCCESS ? "" : " (failed)");
+    printf("%-6s %6s %7s %9s %11s %12s %10s %11s %9s | %8s %8s %8s %8s | %8s %8s %8s %8s\n", "kernel", "N", "eps/pm", "seconds",
            "iterations", "pulloff/uN", "jump-in/nm", "hyst/fJ", "a_turn/um", "pulloff", "jump-in", "hyst", "a_turn",
-           "st.pull", "st.jump", "st.hyst");
+           "st.pull", "st.jump", "st.hyst", "st.a");
     for (size_t i = 0; i < n; i++) {
         const cost_run *r = &runs[i];
-        printf("%-6s %6zu %7.3g %9.3f %11zu %12.5g %10.4g %11.5g %9.4g | %8.2e %8.2e %8.2e %8.2e | %8.2e %8.2e %8.2e%s\n",
+        printf("%-6s %6zu %7.3g %9.3f %11zu %12.5g %10.4g %11.5g %9.4g | %8.2e %8.2e %8.2e %8.2e | %8.2e %8.2e %8.2e %8.2e%s\n",
                adh_kernel_name(r->kernel), r->nodes, r->eps * 1e12, r->seconds, r->iterations, r->pulloff * 1e6,
                r->jump_in * 1e9, r->hysteresis * 1e15, r->a_turn * 1e6, r->err[0], r->err[1], r->err[2], r->err[3],
-               r->err_static[0], r->err_static[1], r->err_static[2],
+               r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3],
                r->status == ADH_SUCCESS ? (r->unconverged ? "  (some steps at the cap)" : "")
                                         : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
     }
