@@ -146,7 +146,7 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
         q(o->a, ADH_Q_LENGTH, a, sizeof a);
         put(y + 5, x, w, A_NORMAL, "  a      %-12s contact radius%s", a, o->a > 0 ? "" : " (not in contact)");
         put(y + 6, x, w, o->stable ? A_NORMAL : A_BOLD, "  point  %zu of %zu, %s, %zu Newton iteration%s", s->ccur + 1,
-            s->cn, o->stable ? "stable" : "UNSTABLE", o->iters, o->iters == 1 ? "" : "s");
+            s->curve.nrows, o->stable ? "stable" : "UNSTABLE", o->iters, o->iters == 1 ? "" : "s");
         if (r->folds) {
             q(r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
             q(r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);

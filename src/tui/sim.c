@@ -36,7 +36,7 @@ enum { PROF_CONTACT = 0, PROF_PULLOFF = 1 };
  * itself stays allocated for the next curve on the same grid. */
 static void curve_drop(tui_sim *s)
 {
-    s->cn = 0;
+    s->curve.nrows = 0;
     s->ccur = 0;
     s->walk = 0;
     s->cstatus = ADH_CONTINUE;
@@ -53,7 +53,7 @@ double tui_sim_curve_end(const tui_sim *s)
 
 static int curve_started(const tui_sim *s)
 {
-    return s->cn > 0 || s->cstatus != ADH_CONTINUE;
+    return s->curve.nrows > 0 || s->cstatus != ADH_CONTINUE;
 }
 
 /* A curve belongs to the material, grid, start and end it was computed
@@ -130,6 +130,7 @@ static void new_path(tui_sim *s)
 int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
 {
     memset(s, 0, sizeof *s);
+    adh_run_init(&s->curve);
     s->mat = cfg->mat;
     s->nodes = cfg->nodes;
     s->spacing = cfg->spacing;
@@ -158,9 +159,7 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
 void tui_sim_free(tui_sim *s)
 {
     free_solver(s);
-    free(s->crows);
-    s->crows = NULL;
-    s->ccap = 0;
+    adh_run_free(&s->curve);
 }
 
 static int ensure_solver(tui_sim *s, char *why, size_t whylen)
@@ -353,7 +352,7 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
 {
     char h0[64];
     if (dir < 0) {
-        if (s->cn == 0) {
+        if (s->curve.nrows == 0) {
             snprintf(why, whylen, "no point of the equilibrium curve yet: f solves the first one, at the start");
             return -1;
         }
@@ -362,19 +361,19 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
             return -1;
         }
         s->walk = -1;
-    } else if (s->cn && s->ccur + 1 < s->cn) {
+    } else if (s->curve.nrows && s->ccur + 1 < s->curve.nrows) {
         s->walk = +1;   /* computed before: shown again, not solved again */
     } else if (s->cstatus == ADH_SUCCESS) {
-        adh_format_quantity(s->crows[s->cn - 1].h0, ADH_Q_LENGTH, 4, h0, sizeof h0);
+        adh_format_quantity(s->curve.rows[s->curve.nrows - 1].h0, ADH_Q_LENGTH, 4, h0, sizeof h0);
         snprintf(why, whylen, "the curve is complete (it ends at h0 = %s): b or u walks back along it", h0);
         return -1;
     } else if (s->cstatus != ADH_CONTINUE) {
         if (s->cstatus == ADH_EGRID)
             snprintf(why, whylen, "the curve stopped at the grid edge after %zu points: more nodes (N) or a "
-                     "larger spacing", s->cn);
+                     "larger spacing", s->curve.nrows);
         else
-            snprintf(why, whylen, "the curve stopped after %zu point%s: %s; x starts it again", s->cn,
-                     s->cn == 1 ? "" : "s", adh_strerror(s->cstatus));
+            snprintf(why, whylen, "the curve stopped after %zu point%s: %s; x starts it again", s->curve.nrows,
+                     s->curve.nrows == 1 ? "" : "s", adh_strerror(s->cstatus));
         return -1;
     } else {
         if (ensure_solver(s, why, whylen) != 0)
@@ -388,7 +387,7 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
         s->t0 = adh_clock_seconds();
     }
     s->dir = dir;
-    s->target = s->cn ? s->crows[s->ccur].h0 : s->start;
+    s->target = s->curve.nrows ? s->curve.rows[s->ccur].h0 : s->start;
     s->busy = 1;
     return 0;
 }
@@ -408,20 +407,13 @@ static void keep_profile(tui_sim *s, int which, size_t i, const adh_state *st)
 
 static int curve_push(tui_sim *s, const adh_state *st, const adh_obs *o)
 {
-    if (s->cn == s->ccap) {
-        size_t cap = s->ccap ? 2 * s->ccap : 1024;
-        adh_obs *p = realloc(s->crows, cap * sizeof *p);
-        if (!p)
-            return ADH_ENOMEM;
-        s->crows = p;
-        s->ccap = cap;
-    }
-    size_t i = s->cn++;
-    s->crows[i] = *o;
+    if (adh_run_push_row(&s->curve, o) != ADH_SUCCESS)
+        return ADH_ENOMEM;
+    size_t i = s->curve.nrows - 1;
     s->ccur = i;
     if (o->a > 0 && s->cprof_at[PROF_CONTACT] == NO_POINT)
         keep_profile(s, PROF_CONTACT, i, st);
-    if (s->cprof_at[PROF_PULLOFF] == NO_POINT || o->F < s->crows[s->cprof_at[PROF_PULLOFF]].F)
+    if (s->cprof_at[PROF_PULLOFF] == NO_POINT || o->F < s->curve.rows[s->cprof_at[PROF_PULLOFF]].F)
         keep_profile(s, PROF_PULLOFF, i, st);
     return ADH_SUCCESS;
 }
@@ -438,7 +430,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
         return ADH_SUCCESS;
     }
     int rc;
-    if (s->cn == 0) {
+    if (s->curve.nrows == 0) {
         adh_static_settings ss = adh_static_settings_default();
         ss.h0_start = s->start;   /* the relaxation's start: the two share an axis, as in --batch */
         ss.h0_end = tui_sim_curve_end(s);
@@ -454,12 +446,12 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
         rc = adh_static_iterate(s->sw);
     }
     char h0[64];
-    adh_format_quantity(s->cn ? s->crows[s->cn - 1].h0 : s->start, ADH_Q_LENGTH, 4, h0, sizeof h0);
+    adh_format_quantity(s->curve.nrows ? s->curve.rows[s->curve.nrows - 1].h0 : s->start, ADH_Q_LENGTH, 4, h0, sizeof h0);
     if (rc != ADH_CONTINUE && rc != ADH_SUCCESS && rc != ADH_EGRID) {
         s->cstatus = rc;
         adh_static_summary(s->sw, &s->sres);
         snprintf(why, whylen, "the curve stopped %s h0 = %s: %s; its %zu point%s kept",
-                 s->cn ? "after" : "at its start,", h0, adh_strerror(rc), s->cn, s->cn == 1 ? " is" : "s are");
+                 s->curve.nrows ? "after" : "at its start,", h0, adh_strerror(rc), s->curve.nrows, s->curve.nrows == 1 ? " is" : "s are");
         return rc;
     }
     /* the row as adh_static_run writes it, so the screen and --batch agree */
@@ -477,7 +469,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a))) {
         s->cstatus = ADH_ENAN;
         snprintf(why, whylen, "the curve stopped after h0 = %s: a non-finite force; its %zu points are kept",
-                 h0, s->cn);
+                 h0, s->curve.nrows);
         return ADH_ENAN;
     }
     if (curve_push(s, st, &o) != ADH_SUCCESS) {
@@ -504,20 +496,20 @@ void tui_sim_set_mode(tui_sim *s, adh_mode mode)
 
 const adh_obs *tui_sim_curve(const tui_sim *s, size_t *n)
 {
-    *n = s->cn;
-    return s->cn ? s->crows : NULL;
+    *n = s->curve.nrows;
+    return s->curve.nrows ? s->curve.rows : NULL;
 }
 
 const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
 {
     if (which == 2) {
         /* the solver holds the last point, unless a failed step left it elsewhere */
-        if (!s->sw || !s->cn || !(s->cstatus == ADH_CONTINUE || s->cstatus == ADH_SUCCESS || s->cstatus == ADH_EGRID))
+        if (!s->sw || !s->curve.nrows || !(s->cstatus == ADH_CONTINUE || s->cstatus == ADH_SUCCESS || s->cstatus == ADH_EGRID))
             return NULL;
-        *at = s->cn - 1;
+        *at = s->curve.nrows - 1;
         return adh_static_state(s->sw);
     }
-    if (which < 0 || which > 1 || s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->cn)
+    if (which < 0 || which > 1 || s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->curve.nrows)
         return NULL;
     *at = s->cprof_at[which];
     return s->cprof[which];
@@ -526,7 +518,7 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
 size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last)
 {
     const adh_static_fold *f;
-    size_t n = s->sw && s->cn ? adh_static_folds(s->sw, &f) : 0;
+    size_t n = s->sw && s->curve.nrows ? adh_static_folds(s->sw, &f) : 0;
     if (n)
         *last = f[n - 1];
     return n;
@@ -668,7 +660,7 @@ int tui_sim_undo(tui_sim *s)
 {
     tui_sim_cancel(s);
     if (s->mode == ADH_MODE_STATIC) {
-        if (s->cn == 0 || s->ccur == 0)
+        if (s->curve.nrows == 0 || s->ccur == 0)
             return ADH_EINVAL;
         s->ccur--;
         return ADH_SUCCESS;
@@ -683,7 +675,7 @@ int tui_sim_redo(tui_sim *s)
 {
     tui_sim_cancel(s);
     if (s->mode == ADH_MODE_STATIC) {
-        if (s->cn == 0 || s->ccur + 1 >= s->cn)
+        if (s->curve.nrows == 0 || s->ccur + 1 >= s->curve.nrows)
             return ADH_EINVAL;
         s->ccur++;
         return ADH_SUCCESS;
@@ -707,15 +699,15 @@ void tui_sim_reset(tui_sim *s)
 const adh_obs *tui_sim_row(const tui_sim *s)
 {
     if (s->mode == ADH_MODE_STATIC)
-        return s->cn ? &s->crows[s->ccur] : NULL;
+        return s->curve.nrows ? &s->curve.rows[s->ccur] : NULL;
     return s->hist ? adh_history_row(s->hist) : NULL;
 }
 
 const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
 {
     if (s->mode == ADH_MODE_STATIC) {
-        *n = s->cn ? s->ccur + 1 : 0;
-        return s->cn ? s->crows : NULL;
+        *n = s->curve.nrows ? s->ccur + 1 : 0;
+        return s->curve.nrows ? s->curve.rows : NULL;
     }
     *n = s->hist ? adh_history_length(s->hist) : 0;
     return s->hist ? adh_history_rows(s->hist) : NULL;
@@ -724,7 +716,7 @@ const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
 size_t tui_sim_redoable(const tui_sim *s)
 {
     if (s->mode == ADH_MODE_STATIC)
-        return s->cn ? s->cn - 1 - s->ccur : 0;
+        return s->curve.nrows ? s->curve.nrows - 1 - s->ccur : 0;
     return s->hist ? adh_history_redoable(s->hist) : 0;
 }
 
@@ -732,7 +724,7 @@ size_t tui_sim_progress(const tui_sim *s, double *change)
 {
     if (s->mode == ADH_MODE_STATIC) {
         *change = 0;
-        return s->cn;
+        return s->curve.nrows;
     }
     *change = s->w ? adh_relax_change(s->w) : 0;
     return s->w ? adh_relax_step_iterations(s->w) : 0;

@@ -221,7 +221,7 @@ static int run_done(tui *t)
         fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
         fmtq(r->pulloff_F_disp, ADH_Q_FORCE, pd, sizeof pd);
         say(t, 0, "curve complete at h0 = %s (%zu points, %zu folds): pull-off %s, at fixed h0 %s",
-            h0, t->sim.cn, r->folds, pl, pd);
+            h0, t->sim.curve.nrows, r->folds, pl, pd);
         return 1;
     }
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
@@ -435,7 +435,7 @@ static void move_history(tui *t, int redo, long n)
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     if (is_static(t))
         say(t, 0, "%s %ld point%s: at point %zu of %zu of the curve, h0 = %s (nothing solved again)",
-            redo ? "forward" : "back", done, done == 1 ? "" : "s", t->sim.ccur + 1, t->sim.cn, h0);
+            redo ? "forward" : "back", done, done == 1 ? "" : "s", t->sim.ccur + 1, t->sim.curve.nrows, h0);
     else
         say(t, 0, "%s %ld step%s: back at h0 = %s, exactly as it was", redo ? "redid" : "undid", done,
             done == 1 ? "" : "s", h0);
@@ -456,7 +456,7 @@ static void toggle_mode(tui *t)
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     if (is_static(t) && o)
         say(t, 0, "static equilibrium: back at point %zu of %zu of the curve, h0 = %s (nothing solved again)",
-            t->sim.ccur + 1, t->sim.cn, h0);
+            t->sim.ccur + 1, t->sim.curve.nrows, h0);
     else if (is_static(t))
         say(t, 0, "static equilibrium: f solves the next point, r follows the curve through its folds, b walks back");
     else if (o)
@@ -663,7 +663,7 @@ static void progress(tui *t)
     if (is_static(t)) {
         char h0[64];
         fmtq(t->sim.target, ADH_Q_LENGTH, h0, sizeof h0);
-        say(t, 0, "solving the equilibrium curve past h0 = %s (point %zu); any key stops", h0, t->sim.cn + 1);
+        say(t, 0, "solving the equilibrium curve past h0 = %s (point %zu); any key stops", h0, t->sim.curve.nrows + 1);
         draw(t);
         return;
     }
