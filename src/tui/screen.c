@@ -118,6 +118,28 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     put(y + 3, x, w, A_NORMAL, "  pull-off JKR %s DMT %s", jkr, dmt);
 }
 
+/* The rows both modes show for a solved point: position, force, central
+ * deformation and gap, contact radius. Out of contact in relaxation the
+ * force line also gives eq 22, the reference there. */
+static void draw_point_rows(const adh_obs *o, int rigid_ref, const tui_view *v, int y, int x, int w)
+{
+    char a[64], b[64], lab[32];
+    q(o->h0, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 1, x, w, A_NORMAL, "  h0     %-12s drive position", a);
+    q(o->F, ADH_Q_FORCE, a, sizeof a);
+    q(o->F_rigid, ADH_Q_FORCE, b, sizeof b);
+    if (rigid_ref && !(o->a > 0))
+        put(y + 2, x, w, A_NORMAL, "  F      %-12s force (rigid spheres %s)", a, b);
+    else
+        put(y + 2, x, w, A_NORMAL, "  F      %-12s force (positive repels)", a);
+    q(o->delta, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 3, x, w, A_NORMAL, "  %s %-12s central deformation", pad(gk(v, "\xce\xb4", "delta"), 6, lab, sizeof lab), a);
+    q(o->hc, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 4, x, w, A_NORMAL, "  gap    %-12s central gap h(0)", a);
+    q(o->a, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 5, x, w, A_NORMAL, "  a      %-12s contact radius%s", a, o->a > 0 ? "" : " (not in contact)");
+}
+
 /* Static mode: the point shown, its stability, and what the curve computed
  * so far says (folds, jumps, pull-offs). */
 static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
@@ -134,17 +156,7 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
         put(y + 3, x, w, A_NORMAL, "  the equilibrium curve through its folds down to");
         put(y + 4, x, w, A_NORMAL, "  h0 = %s; m returns to relaxation.", b);
     } else {
-        q(o->h0, ADH_Q_LENGTH, a, sizeof a);
-        put(y + 1, x, w, A_NORMAL, "  h0     %-12s drive position", a);
-        q(o->F, ADH_Q_FORCE, a, sizeof a);
-        put(y + 2, x, w, A_NORMAL, "  F      %-12s force (positive repels)", a);
-        q(o->delta, ADH_Q_LENGTH, a, sizeof a);
-        char lab[32];
-        put(y + 3, x, w, A_NORMAL, "  %s %-12s central deformation", pad(gk(v, "\xce\xb4", "delta"), 6, lab, sizeof lab), a);
-        q(o->hc, ADH_Q_LENGTH, a, sizeof a);
-        put(y + 4, x, w, A_NORMAL, "  gap    %-12s central gap h(0)", a);
-        q(o->a, ADH_Q_LENGTH, a, sizeof a);
-        put(y + 5, x, w, A_NORMAL, "  a      %-12s contact radius%s", a, o->a > 0 ? "" : " (not in contact)");
+        draw_point_rows(o, 0, v, y, x, w);
         put(y + 6, x, w, o->stable ? A_NORMAL : A_BOLD, "  point  %zu of %zu, %s, %zu Newton iteration%s", s->ccur + 1,
             s->curve.nrows, o->stable ? "stable" : "UNSTABLE", o->iters, o->iters == 1 ? "" : "s");
         if (r->folds) {
@@ -195,22 +207,7 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
         put(y + 3, x, w, A_NORMAL, "  ? for every key. Edits change the numbers at the left");
         put(y + 4, x, w, A_NORMAL, "  at once; a solve starts only when you step.");
     } else {
-        q(o->h0, ADH_Q_LENGTH, a, sizeof a);
-        q(o->F_rigid, ADH_Q_FORCE, b, sizeof b);
-        put(y + 1, x, w, A_NORMAL, "  h0     %-12s drive position", a);
-        q(o->F, ADH_Q_FORCE, a, sizeof a);
-        /* eq 22 only means something apart, where it is the reference */
-        if (o->a > 0)
-            put(y + 2, x, w, A_NORMAL, "  F      %-12s force (positive repels)", a);
-        else
-            put(y + 2, x, w, A_NORMAL, "  F      %-12s force (rigid spheres %s)", a, b);
-        q(o->delta, ADH_Q_LENGTH, a, sizeof a);
-        char lab[32];
-        put(y + 3, x, w, A_NORMAL, "  %s %-12s central deformation", pad(gk(v, "\xce\xb4", "delta"), 6, lab, sizeof lab), a);
-        q(o->hc, ADH_Q_LENGTH, a, sizeof a);
-        put(y + 4, x, w, A_NORMAL, "  gap    %-12s central gap h(0)", a);
-        q(o->a, ADH_Q_LENGTH, a, sizeof a);
-        put(y + 5, x, w, A_NORMAL, "  a      %-12s contact radius%s", a, o->a > 0 ? "" : " (not in contact)");
+        draw_point_rows(o, 1, v, y, x, w);
         if (v->no_clock)
             snprintf(b, sizeof b, "time masked");
         else if (o->seconds < 1e-3)
