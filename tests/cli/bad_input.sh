@@ -38,6 +38,9 @@ bad "is a pressure (Pa, MPa, GPa, ...), but a length" --eps=1GPa
 bad "must lie below the start" --turn=50nm
 bad "must lie below the start" --start=5nm --turn=-1nm,6nm
 bad "eps = 0 m is not allowed" --eps=0
+bad "--mixing: 'fast' is not a mixing rule: use paper or momentum" --mixing=fast
+bad "--momentum: '1' is not allowed: a number from 0 to below 1" --momentum=1
+bad "--momentum: 'x' is not allowed" --momentum=x
 bad "eps = -1e-12 m is not allowed" --eps=-1pm
 bad "'paperish' is not a kernel" --kernel=paperish
 bad "out of the range of finite numbers" -E 1e999

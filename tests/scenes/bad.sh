@@ -105,4 +105,13 @@ check "a missing scene file exits 2 naming it ($(cat "$TMP/stderr"))" sh -c "[ $
 rc=$?
 check "an unknown shipped scene exits 2 ($(cat "$TMP/stderr"))" sh -c "[ $rc -eq 2 ] && grep -q \"no scene named 'fig9'\" '$TMP/stderr'"
 
+bad 3 "mixing: 'fast' is not a mixing rule: use paper or momentum" <<'S'
+[solver]
+eps = 1pm
+mixing = fast
+S
+bad 2 "momentum: '1' is not allowed: a number from 0 to below 1" <<'S'
+[solver]
+momentum = 1
+S
 done_testing
