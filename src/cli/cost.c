@@ -197,19 +197,11 @@ static double rel(double x, double ref)
     return fabs(x - ref) / fabs(ref);
 }
 
-static void mixing_text(const adh_relax_settings *rs, char *buf, size_t len)
-{
-    if (rs->rule == ADH_MIX_MOMENTUM)
-        snprintf(buf, len, "momentum %g", rs->momentum);
-    else
-        snprintf(buf, len, "paper");
-}
-
 static int write_cost(FILE *f, const void *ctx)
 {
     const cost_job *job = ctx;
     char rule[64];
-    mixing_text(&job->cfg->relax, rule, sizeof rule);
+    adh_mix_rule_describe(&job->cfg->relax, rule, sizeof rule);
     fprintf(f, "# adhere %s cost report: %ld cores, BLAS %s, mixing %s; errors are relative to the most accurate run (err_*) and the static curve (static_err_*)\n",
             ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), openblas_get_config(), rule);
     fprintf(f, "# static curve's hysteresis (eps -> 0, displacement control): %.17g J\n", job->static_hysteresis);
@@ -407,7 +399,7 @@ int adh_cost_main(const adh_cli *cli)
     job.static_a_turn = static_a;
 
     char rule[64];
-    mixing_text(&cfg->relax, rule, sizeof rule);
+    adh_mix_rule_describe(&cfg->relax, rule, sizeof rule);
     printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
            n, started ? started : 1, cores, rule);
     printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "

@@ -1,6 +1,5 @@
 #include "cli/options.h"
 
-#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -179,10 +178,8 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
         }
         return 0;
     case OPT_MOMENTUM: {
-        char *end;
-        errno = 0;
-        double b = strtod(arg, &end);
-        if (end == arg || *end || errno || !(b >= 0 && b < 1)) {
+        double b;
+        if (adh_parse_quantity(arg, ADH_Q_NONE, &b, msg, sizeof msg) != 0 || !(b >= 0 && b < 1)) {
             snprintf(why, n, "--momentum: '%s' is not allowed: a number from 0 to below 1", arg);
             return 2;
         }

@@ -55,9 +55,12 @@ int adh_mix_rule_parse(const char *name, adh_mix_rule *rule)
     return 0;
 }
 
-const char *adh_mix_rule_name(adh_mix_rule rule)
+void adh_mix_rule_describe(const adh_relax_settings *s, char *buf, size_t len)
 {
-    return rule == ADH_MIX_MOMENTUM ? "momentum" : "paper";
+    if (s->rule == ADH_MIX_MOMENTUM)
+        snprintf(buf, len, "momentum %g", s->momentum);
+    else
+        snprintf(buf, len, "paper");
 }
 
 int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t whylen)
@@ -211,11 +214,8 @@ void adh_relax_move(adh_relax *w, double h0_new)
  * last restart, the momentum restarts from rest, the bound is measured
  * again and the damping falls (x mix_down); it recovers (x mix_up) on
  * every other iteration. */
-static int momentum_update(adh_relax *w)
+static double momentum_ratio(adh_relax *w)
 {
-    adh_state *st = w->st;
-    size_t n = st->n;
-    double beta = w->s.momentum;
     if (w->stiffness == 0) {
         for (int k = 0; k < 3; k++)
             estimate_stiffness(w);
@@ -223,7 +223,7 @@ static int momentum_update(adh_relax *w)
         estimate_stiffness(w);
     }
     if (w->change > 2.0 * w->best_change) {
-        for (size_t i = 0; i < n; i++)
+        for (size_t i = 0; i < w->st->n; i++)
             w->vel[i] = 0.0;
         w->best_change = w->change;
         w->damping = fmax(1e-3, w->damping * w->s.mix_down);
@@ -232,44 +232,39 @@ static int momentum_update(adh_relax *w)
         w->damping = fmin(1.0, w->damping * w->s.mix_up);
     }
     w->best_change = fmin(w->best_change, w->change);
-    double alpha = fmin(w->s.mix_max, w->damping * (1.0 + beta) / (1.0 + w->stiffness));
-    for (;;) {
-        int closed = 0;
-        for (size_t i = 0; i < n; i++) {
-            double v = beta * w->vel[i] + alpha * w->unew[i];
-            if (!(st->h0 + w->shape[i] - (st->u[i] + v) > 0)) {
-                closed = 1;
-                break;
-            }
-        }
-        if (!closed)
-            break;
-        /* A closing update: drop the momentum, then halve the ratio. */
-        if (beta > 0) {
-            for (size_t i = 0; i < n; i++)
-                w->vel[i] = 0.0;
-            beta = 0;
-            continue;
-        }
-        if (alpha <= w->s.mix_min)
-            return ADH_ENAN;
-        alpha = fmax(w->s.mix_min, alpha * 0.5);
-    }
-    st->mix = alpha;
-    for (size_t i = 0; i < n; i++) {
-        w->vel[i] = beta * w->vel[i] + alpha * w->unew[i];
-        st->u[i] += w->vel[i];
-        st->h[i] = st->h0 + w->shape[i] - st->u[i];
-        st->p[i] = adh_lj_pressure(st->h[i], w->m.A, w->m.z0);
-    }
-    return ADH_SUCCESS;
+    return fmin(w->s.mix_max, w->damping * (1.0 + w->s.momentum) / (1.0 + w->stiffness));
 }
 
-/* One pass of eq 11 with mixing. The mixing rule is the paper's: the ratio
- * falls (x mix_down) when the unmixed change of the central deformation
- * changes sign (oscillation) or grows, and otherwise rises (x mix_up) up to
- * mix_max. A mixed update that would close the gap somewhere (h <= 0, where
- * the law has no meaning) is undone and retried with half the ratio. */
+/* The paper's rule: the ratio falls (x mix_down) when the unmixed change of
+ * the central deformation changes sign (oscillation) or grows, and
+ * otherwise rises (x mix_up) up to mix_max. */
+static double paper_ratio(adh_relax *w)
+{
+    double c = w->unew[0];
+    if (w->prev_central != 0) {
+        if (c * w->prev_central < 0 || fabs(c) > fabs(w->prev_central))
+            w->st->mix = fmax(w->s.mix_min, w->st->mix * w->s.mix_down);
+        else
+            w->st->mix = fmin(w->s.mix_max, w->st->mix * w->s.mix_up);
+    }
+    w->prev_central = c;
+    return w->st->mix;
+}
+
+/* Whether u + beta v + alpha (u_new - u) would close the gap somewhere. */
+static int update_closes(const adh_relax *w, double alpha, double beta)
+{
+    const adh_state *st = w->st;
+    for (size_t i = 0; i < st->n; i++)
+        if (!(st->h0 + w->shape[i] - (st->u[i] + (beta * w->vel[i] + alpha * w->unew[i])) > 0))
+            return 1;
+    return 0;
+}
+
+/* One pass of eq 11 with mixing: v = beta v + alpha (u_new - u), u += v,
+ * with beta = 0 under the paper's rule. An update that would close the gap
+ * somewhere (h <= 0, where the law has no meaning) is undone: the momentum
+ * is dropped, then the ratio halved until it fits. */
 static int relax_once(adh_relax *w)
 {
     adh_state *st = w->st;
@@ -301,36 +296,26 @@ static int relax_once(adh_relax *w)
     if (w->converged)
         return ADH_SUCCESS;
 
-    if (w->s.rule == ADH_MIX_MOMENTUM)
-        return momentum_update(w);
-
-    double c = w->unew[0];
-    if (w->prev_central != 0) {
-        if (c * w->prev_central < 0 || fabs(c) > fabs(w->prev_central))
-            w->st->mix = fmax(w->s.mix_min, w->st->mix * w->s.mix_down);
-        else
-            w->st->mix = fmin(w->s.mix_max, w->st->mix * w->s.mix_up);
-    }
-    w->prev_central = c;
-
-    for (;;) {
-        int closed = 0;
-        for (size_t i = 0; i < n; i++) {
-            double u = st->u[i] + w->st->mix * w->unew[i];
-            double h = st->h0 + w->shape[i] - u;
-            if (!(h > 0)) {
-                closed = 1;
-                break;
-            }
+    int momentum = w->s.rule == ADH_MIX_MOMENTUM;
+    double alpha = momentum ? momentum_ratio(w) : paper_ratio(w);
+    double beta = momentum ? w->s.momentum : 0.0;
+    while (update_closes(w, alpha, beta)) {
+        if (beta > 0) {
+            for (size_t i = 0; i < n; i++)
+                w->vel[i] = 0.0;
+            beta = 0;
+            continue;
         }
-        if (!closed)
-            break;
-        if (w->st->mix <= w->s.mix_min)
+        if (alpha <= w->s.mix_min) {
+            st->mix = alpha;
             return ADH_ENAN;
-        w->st->mix = fmax(w->s.mix_min, w->st->mix * 0.5);
+        }
+        alpha = fmax(w->s.mix_min, alpha * 0.5);
     }
+    st->mix = alpha;
     for (size_t i = 0; i < n; i++) {
-        st->u[i] += w->st->mix * w->unew[i];
+        w->vel[i] = beta * w->vel[i] + alpha * w->unew[i];
+        st->u[i] += w->vel[i];
         st->h[i] = st->h0 + w->shape[i] - st->u[i];
         st->p[i] = adh_lj_pressure(st->h[i], w->m.A, w->m.z0);
     }

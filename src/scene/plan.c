@@ -279,11 +279,11 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         adh_format_quantity(cfg->relax.eps, ADH_Q_LENGTH, 3, a, sizeof a);
         fprintf(f, "mode: relax (the paper's relaxation, eps = %s%s)\n", a,
                 cfg->sweep.kind == ADH_SWEEP_EPS ? " unless swept" : "");
+        adh_mix_rule_describe(&cfg->relax, a, sizeof a);
         if (cfg->relax.rule == ADH_MIX_MOMENTUM)
-            fprintf(f, "mixing: momentum %g (heavy ball, ratio from the measured stiffness)\n",
-                    cfg->relax.momentum);
+            fprintf(f, "mixing: %s (heavy ball, ratio from the measured stiffness)\n", a);
         else
-            fprintf(f, "mixing: paper (one adaptive ratio, at most %g)\n", cfg->relax.mix_max);
+            fprintf(f, "mixing: %s (one adaptive ratio, at most %g)\n", a, cfg->relax.mix_max);
     }
     if (p->elastic) {
         double dr = adh_config_spacing(cfg);

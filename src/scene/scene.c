@@ -186,10 +186,8 @@ static int handler(void *user, const char *section, const char *name, const char
             return fail(sp, "mixing: '%s' is not a mixing rule: use paper or momentum%s", value, "");
         return 1;
     case K_FRACTION: {
-        char *end;
-        errno = 0;
-        double b = strtod(value, &end);
-        if (end == value || *end || errno || !(b >= 0 && b < 1))
+        double b;
+        if (adh_parse_quantity(value, ADH_Q_NONE, &b, msg, sizeof msg) != 0 || !(b >= 0 && b < 1))
             return fail(sp, "momentum: '%s' is not allowed: a number from 0 to below 1%s", value, "");
         c->relax.momentum = b;
         return 1;

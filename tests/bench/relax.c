@@ -112,10 +112,7 @@ int main(int argc, char **argv)
             rs.rule = rules[q].rule;
             rs.momentum = rules[q].beta;
             char name[32];
-            if (rs.rule == ADH_MIX_MOMENTUM)
-                snprintf(name, sizeof name, "momentum %g", rs.momentum);
-            else
-                snprintf(name, sizeof name, "paper");
+            adh_mix_rule_describe(&rs, name, sizeof name);
             if (rules[q].runs == 0) {
                 printf("%-14s (BENCH_PAPER=1 runs it: about 5 minutes at N = 1000)\n", name);
                 continue;
