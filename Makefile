@@ -99,7 +99,8 @@ check-asan: asan-build
 # libFuzzer targets, built with clang over the parsers' own sources.
 FUZZ_CC    = clang
 FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined $(CPPFLAGS) $(PKG_CFLAGS)
-FUZZ_BIN   = $(BUILD)/fuzz/fuzz_units $(BUILD)/fuzz/fuzz_scene $(BUILD)/fuzz/fuzz_replay
+FUZZ_BIN   = $(BUILD)/fuzz/fuzz_units $(BUILD)/fuzz/fuzz_scene $(BUILD)/fuzz/fuzz_replay \
+             $(BUILD)/fuzz/fuzz_gpstring
 CORE_SRC   = $(wildcard src/core/*.c)
 
 $(BUILD)/fuzz/fuzz_units: tests/fuzz/fuzz_units.c src/core/units.c
@@ -111,6 +112,9 @@ $(BUILD)/fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(wildcard src/scene/*.c) $(CO
 $(BUILD)/fuzz/fuzz_replay: tests/fuzz/fuzz_replay.c src/tui/replay.c
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
+$(BUILD)/fuzz/fuzz_gpstring: tests/fuzz/fuzz_gpstring.c src/plot/labels.c src/plot/labels.h
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $(filter %.c,$^)
 
 fuzz-build: $(FUZZ_BIN)
 

@@ -261,18 +261,25 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
         unlink(data);
         return 3;
     }
-    char q[PATH_MAX + 64];
+    char q[ADH_GP_PATH_SIZE];
+    adh_gp_path(data, q, sizeof q);
     adh_png_begin(gp, cfg_style, "cost", tmp);
     adh_gnuplot_cmd(gp, "set multiplot layout 1,2 title 'What accuracy costs: error against the most accurate run'");
     adh_gnuplot_cmd(gp, "set logscale xy; set grid; set key bottom left; set xlabel 'wall time (s)'");
     for (int panel = 0; panel < 2; panel++) {
         adh_gnuplot_cmd(gp, "set ylabel '%s'", panel ? "relative error in hysteresis area" : "relative error in pull-off force");
-        char cmd[8192];
-        int off = snprintf(cmd, sizeof cmd, "plot ");
+        /* grown as needed: the data file's name, quoted, may be long */
+        char *cmd = NULL;
+        size_t cmdlen = 0;
+        FILE *c = open_memstream(&cmd, &cmdlen);
+        if (!c)
+            break;
+        fputs("plot ", c);
         for (size_t s = 0; s < nseries; s++)
-            off += snprintf(cmd + off, sizeof cmd - (size_t)off, "%s%s index %zu using 1:%d with linespoints lw 2 title '%s'",
-                            s ? ", " : "", adh_gp_quoted(data, q, sizeof q), s, panel ? 3 : 2, titles[s]);
+            fprintf(c, "%s%s index %zu using 1:%d with linespoints lw 2 title '%s'", s ? ", " : "", q, s, panel ? 3 : 2, titles[s]);
+        fclose(c);
         adh_gnuplot_cmd(gp, "%s", cmd);
+        free(cmd);
     }
     adh_gnuplot_cmd(gp, "unset multiplot");
     int rc = adh_png_finish(gp, tmp, png, msg, len);

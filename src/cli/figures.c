@@ -111,7 +111,7 @@ static int data_done(figure *fg, FILE *f, const char *path)
 static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
 {
     const adh_material *m = &cfg->mat;
-    char dat[PATH_MAX + 16], eq[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40], q2[PATH_MAX + 40];
+    char dat[PATH_MAX + 16], eq[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE], q2[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -155,7 +155,7 @@ static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
     adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*%.17g) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
                     "'' using ($1*1e9):($3*%.17g) with lines lw 2.5 lc rgb \"#000000\" title \"rigid F(h_0) (eq 22)\", "
                     "%s using ($1*1e9):($2*%.17g) with lines dt 3 lw 2 lc rgb \"#1f3f8f\" title \"F(h), h from eq 23\"",
-                    adh_gp_quoted(dat, q, sizeof q), fs, fs, adh_gp_quoted(eq, q2, sizeof q2), fs);
+                    adh_gp_path(dat, q, sizeof q), fs, fs, adh_gp_path(eq, q2, sizeof q2), fs);
     return fig_end(fg, "precontact.png", tmp_png);
 }
 
@@ -163,7 +163,7 @@ static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
 static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
 {
     const adh_material *m = &cfg->mat;
-    char dat[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    char dat[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "c.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -191,7 +191,7 @@ static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
     adh_gnuplot_cmd(fg->gp, "set samples 400");
     adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*1e9) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
                     "-A*sqrt(2*R)/(8*E*(x*1e-9)**2.5)*1e9 with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 23\"",
-                    adh_gp_quoted(dat, q, sizeof q));
+                    adh_gp_path(dat, q, sizeof q));
     return fig_end(fg, "bulge.png", tmp_png);
 }
 
@@ -216,7 +216,7 @@ int adh_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, 
 /* Figure 3: the gap just before the jump against sigma, with eq 24. */
 static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n)
 {
-    char dat[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    char dat[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -252,7 +252,7 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($4 == 1 ? $2*1e9 : NaN) with points pt 7 ps 1.2 lc rgb \"#c0392b\" title \"jump (computed)\", "
                     "'' index 0 using 1:($4 == 1 ? NaN : $2*1e9) with points pt 6 ps 1.2 lc rgb \"#c0392b\" title \"last gap before contact, no jump\", "
                     "'' index 1 using 1:($2*1e9) with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 24\"",
-                    adh_gp_quoted(dat, q, sizeof q));
+                    adh_gp_path(dat, q, sizeof q));
     return fig_end(fg, "jump.png", tmp_png);
 }
 
@@ -260,7 +260,7 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
  * equilibrium curve when the runs share one material. */
 static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n)
 {
-    char dat[PATH_MAX + 16], jkr[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    char dat[PATH_MAX + 16], jkr[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -325,14 +325,14 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
         /* light to heavy, as the paper's eps = 1, 0.5, 0.1 pm */
         static const char *const colors[] = { "#8fb8de", "#4a7fc1", "#1f3f8f", "#c0392b", "#e67e22", "#27ae60", "#8e44ad" };
         fprintf(c, ", %s index %zu using ($1*1e9):($2*%.17g) with lines lw %.2g lc rgb \"%s\" title \"%s\"",
-                adh_gp_quoted(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1),
+                adh_gp_path(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1),
                 colors[i % (sizeof colors / sizeof colors[0])], label);
     }
     if (jkr_parts)
         fprintf(c, ", %s index 0 using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" "
                    "title \"JKR equilibrium (dashed: displacement control)\", "
                    "'' index 1 using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" dt (5,4) "
-                   "notitle", adh_gp_quoted(jkr, q, sizeof q), fs, fs);
+                   "notitle", adh_gp_path(jkr, q, sizeof q), fs, fs);
     fclose(c);
     adh_gnuplot_cmd(fg->gp, "%s", cmd);
     free(cmd);

@@ -83,9 +83,11 @@ static void format_modulus(double v, char *buf, size_t len)
         snprintf(buf, len, "%.3g kPa", v * 1e-3);
 }
 
-/* A figure title as a gnuplot double-quoted string, drawn noenhanced so a
- * scene title's _ ^ { } @ & ~ print as themselves: the scene title (if
- * any) on its own line, then what the figure is with sigma, gamma, R, E. */
+/* A figure title as a gnuplot string expression (adh_gp_quote: the scene
+ * title is user text), drawn noenhanced so its _ ^ { } @ & ~ print as
+ * themselves: the scene title (if any) on its own line, then what the
+ * figure is with sigma, gamma, R, E. */
+#define HEADING_SIZE ADH_GP_QUOTED_SIZE(1024)
 static void title_string(const plotter *pl, const char *what, char *buf, size_t len)
 {
     char r[32], e[32], text[1024];
@@ -94,22 +96,7 @@ static void title_string(const plotter *pl, const char *what, char *buf, size_t 
     snprintf(text, sizeof text, "%s%s%s: σ = %.3g, γ = %.3g mJ/m², R = %s, E = %s",
              pl->cfg->title, pl->cfg->title[0] ? "\n" : "", what, pl->d.sigma,
              pl->d.gamma * 1e3, r, e);
-    size_t j = 0;
-    if (len < 3)
-        return;
-    buf[j++] = '"';
-    for (const char *c = text; *c && j + 4 < len; c++) {
-        if (*c == '\n') {
-            buf[j++] = '\\';
-            buf[j++] = 'n';
-            continue;
-        }
-        if (*c == '"' || *c == '\\')
-            buf[j++] = '\\';
-        buf[j++] = *c;
-    }
-    buf[j++] = '"';
-    buf[j] = '\0';
+    adh_gp_quote(text, buf, len);
 }
 
 static const adh_turn_result *turn_of_path(const adh_run *run, int path)
@@ -303,7 +290,7 @@ static int plot_force(plotter *pl)
                *pl->notes ? "; " : "");
         return 0;
     }
-    char dat[PATH_MAX + 32], adh[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    char dat[PATH_MAX + 32], adh[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
     FILE *f = data_file(pl, "force.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -438,7 +425,7 @@ static int plot_force(plotter *pl)
     lo -= 0.04 * (hi - lo);
     hi += 0.02 * (hi - lo);
     double pad = 0;
-    char heading[1200];
+    char heading[HEADING_SIZE];
     title_string(pl, "Force vs position", heading, sizeof heading);
 
     tmp_png_name(pl, "force.png", tmp_png, sizeof tmp_png);
@@ -471,7 +458,7 @@ static int plot_force(plotter *pl)
         return -1;
     }
     fprintf(c, "plot 0 ls 7 notitle");
-    const char *qdat = adh_gp_quoted(dat, q, sizeof q);
+    const char *qdat = adh_gp_path(dat, q, sizeof q);
     /* Underneath the run: the static reference (its unstable stretches
      * dashed). Over it: the models (the load-controlled part in the model's
      * line, the part past the pull-off short-dashed). Their key entries
@@ -585,7 +572,7 @@ static int plot_force(plotter *pl)
                         "plot %s using ($1*Fu):($2*Fu) with linespoints ls 6 title \"adhesion\", "
                         "-Fjkr*Fu with lines ls 3 title \"JKR\", "
                         "-Fdmt*Fu with lines ls 4 title \"DMT\"",
-                        adh_gp_quoted(adh, q, sizeof q));
+                        adh_gp_path(adh, q, sizeof q));
         adh_gnuplot_cmd(pl->gp, "unset multiplot");
     }
     return finish_figure(pl, "force.png", tmp_png);
@@ -636,7 +623,7 @@ static int plot_profile(plotter *pl)
     }
     qsort(pos, npos, sizeof *pos, cmp_desc);
 
-    char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
     FILE *f = data_file(pl, "profile.dat", dat, sizeof dat);
     if (!f) {
         free(sel);
@@ -670,7 +657,7 @@ static int plot_profile(plotter *pl)
     if (xmax > rgrid)
         xmax = rgrid;
     double ymax = top + xmax * xmax / (2.0 * R);
-    char heading[1200];
+    char heading[HEADING_SIZE];
     title_string(pl, "Surface profiles", heading, sizeof heading);
 
     tmp_png_name(pl, "profile.png", tmp_png, sizeof tmp_png);
@@ -699,7 +686,7 @@ static int plot_profile(plotter *pl)
         free(pos);
         return -1;
     }
-    const char *qdat = adh_gp_quoted(dat, q, sizeof q);
+    const char *qdat = adh_gp_path(dat, q, sizeof q);
     fprintf(c, "plot (htop + (x*1e-6)**2/(2*R))*1e9 with lines ls 5 "
                "title \"undeformed sphere, h_0 = %.3g nm\"", top * 1e9);
     int titled[ADH_MAX_PROFILES * 2] = { 0 };
@@ -757,7 +744,7 @@ static int plot_contact(plotter *pl)
     /* set[3p]: step-by-step speed on path p, 3p+1: smoothed speed, 3p+2:
      * radius (in contact, plus the row either side so the jumps show) */
     int *set = malloc(3 * ((size_t)np + 1) * sizeof *set);
-    char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[PATH_MAX + 40];
+    char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
     int rc = -1;
     if ((n && (!dadh0 || !dadt || !smooth)) || !set)
         goto out;
@@ -818,7 +805,7 @@ static int plot_contact(plotter *pl)
     int in_mm = vmax >= 2e-3;
     double step = fabs(pl->cfg->proto.step);
     double xpad = fmax(0.03 * (xmax - xmin), 2 * step);
-    char heading[1200], what[96];
+    char heading[HEADING_SIZE], what[96];
     snprintf(what, sizeof what, "Contact line at drive speed %.3g µm/s",
              pl->cfg->drive_speed * 1e6);
     title_string(pl, what, heading, sizeof heading);
@@ -831,7 +818,7 @@ static int plot_contact(plotter *pl)
                     (xmax + xpad) * 1e9);
 
     for (int panel = 0; panel < 2; panel++) {
-        const char *qdat = adh_gp_quoted(dat, q, sizeof q);
+        const char *qdat = adh_gp_path(dat, q, sizeof q);
         if (panel == 0) {
             adh_gnuplot_cmd(pl->gp, "set origin 0,0.42");
             adh_gnuplot_cmd(pl->gp, "set size 1,%.3f", top - 0.42);

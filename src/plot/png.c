@@ -42,14 +42,14 @@ static const char *const builtin_style[] = {
 
 void adh_png_begin(adh_gnuplot *gp, const char *style, const char *figure, const char *tmp_png)
 {
-    char q[PATH_MAX + 8];
+    char q[ADH_GP_PATH_SIZE];
     adh_gnuplot_cmd(gp, "reset");
     for (size_t i = 0; i < sizeof builtin_style / sizeof builtin_style[0]; i++)
         adh_gnuplot_cmd(gp, "%s", builtin_style[i]);
-    adh_gnuplot_cmd(gp, "adh_figure = \"%s\"", figure);
+    adh_gnuplot_cmd(gp, "adh_figure = %s", adh_gp_quoted(figure, q, sizeof q));
     if (style && style[0])
-        adh_gnuplot_cmd(gp, "load %s", adh_gp_quoted(style, q, sizeof q));
-    adh_gnuplot_cmd(gp, "set output %s", adh_gp_quoted(tmp_png, q, sizeof q));
+        adh_gnuplot_cmd(gp, "load %s", adh_gp_path(style, q, sizeof q));
+    adh_gnuplot_cmd(gp, "set output %s", adh_gp_path(tmp_png, q, sizeof q));
 }
 
 int adh_png_finish(adh_gnuplot *gp, const char *tmp_png, const char *final, char *why, size_t whylen)

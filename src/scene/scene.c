@@ -236,6 +236,13 @@ static int handler(void *user, const char *section, const char *name, const char
         else return fail(sp, "plot: '%s' is not a sweep plot: use jump, force or none%s", value, "");
         return 1;
     case K_TEXT:
+        /* shown on terminals and in figures: one line of printable text */
+        for (const unsigned char *t = (const unsigned char *)value; *t; t++)
+            if ((*t < 0x20 && *t != '\t') || *t == 0x7f) {
+                snprintf(msg, sizeof msg, "0x%02x", *t);
+                return fail(sp, "title: the control character %s is not allowed: a title is one line of "
+                            "printable text%s", msg, "");
+            }
         snprintf(c->title, sizeof c->title, "%s", value);
         return 1;
     }
@@ -388,9 +395,16 @@ int adh_scene_load(const char *arg, adh_config *cfg, char *why, size_t whylen)
     int bad = ferror(f);
     fclose(f);
     text[len] = '\0';
-    if (bad || memchr(text, '\0', len)) {
+    const char *nul = bad ? NULL : memchr(text, '\0', len);
+    if (bad || nul) {
+        int line = 1;
+        for (const char *p = text; p < nul; p++)
+            line += *p == '\n';
+        if (nul)
+            snprintf(why, whylen, "%s:%d: a NUL byte: not a text file", path, line);
+        else
+            snprintf(why, whylen, "%s: cannot read scene: read error", path);
         free(text);
-        snprintf(why, whylen, "%s: cannot read scene: %s", path, bad ? "read error" : "not a text file");
         return -1;
     }
     int rc = adh_scene_parse_string(text, path, cfg, why, whylen);
