@@ -76,6 +76,14 @@ static int make_dir(const char *dir, char *why, size_t n)
     return 0;
 }
 
+/* name (or a comma-separated list) onto the list in buf */
+static void add_unwritten(char *buf, size_t len, const char *name)
+{
+    size_t n = strlen(buf);
+    if (*name && n + 1 < len)
+        snprintf(buf + n, len - n, "%s%s", n ? "," : "", name);
+}
+
 int adh_batch_main(const adh_cli *cli)
 {
     const adh_config *cfg = &cli->cfg;
@@ -150,31 +158,51 @@ int adh_batch_main(const adh_cli *cli)
         fprintf(stderr, "adhere: cannot write the force table to standard output: %s\n", strerror(errno));
         status = ADH_EXIT_USAGE;
     }
-    adh_tables tables = { cfg, &run, extra, nextra, status != ADH_EXIT_OK, note };
-    adh_tables ref_tables = { cfg, &ref, NULL, 0, 0, NULL };
+    adh_tables tables = { cfg, &run, extra, nextra, status != ADH_EXIT_OK, note, NULL };
+    adh_tables ref_tables = { cfg, &ref, NULL, 0, 0, NULL, NULL };
     if (ctx.stream && tables.partial)
         fprintf(ctx.stream, "# PARTIAL: %s\n", note);
     if (out) {
-        if (adh_write_atomic(out, "force.tsv", adh_write_force, &tables, why, sizeof why) != 0 ||
-            adh_write_atomic(out, "summary.tsv", adh_write_summary, &tables, why, sizeof why) != 0 ||
-            (run.nturns && adh_write_atomic(out, "turns.tsv", adh_write_turns, &tables, why, sizeof why) != 0) ||
-            (want_ref && adh_write_atomic(out, "static.tsv", adh_write_force, &ref_tables, why, sizeof why) != 0)) {
-            fprintf(stderr, "adhere: %s\n", why);
-            status = ADH_EXIT_USAGE;
-        } else if (status == ADH_EXIT_OK) {
+        /* Every file is tried even when one fails (a full disk), and
+         * summary.tsv comes last, naming what was not written: a summary
+         * that says success speaks for the whole directory. */
+        char unwritten[512] = "";
+        struct { const char *name; int want; adh_table_writer w; const adh_tables *t; } tab[] = {
+            { "force.tsv", 1, adh_write_force, &tables },
+            { "turns.tsv", run.nturns > 0, adh_write_turns, &tables },
+            { "static.tsv", want_ref, adh_write_force, &ref_tables },
+        };
+        for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
+            if (!tab[i].want)
+                continue;
+            if (adh_write_atomic(out, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
+                fprintf(stderr, "adhere: %s\n", why);
+                status = ADH_EXIT_USAGE;
+                add_unwritten(unwritten, sizeof unwritten, tab[i].name);
+            }
+        }
+        if (!tables.partial) {
             /* With --no-plot this writes the plots' tables only. */
-            char msg[1024] = "";
-            int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg);
+            char msg[1024] = "", missing[256] = "";
+            int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
+                                      sizeof missing);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
-                status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
+                status = prc == 2 ? ADH_EXIT_USAGE : status == ADH_EXIT_OK ? ADH_EXIT_PLOT : status;
             }
+            add_unwritten(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
             if (adh_figures_run(cfg, &run, out, msg, sizeof msg) != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
                 if (status == ADH_EXIT_OK)
                     status = ADH_EXIT_PLOT;
+                add_unwritten(unwritten, sizeof unwritten, "scene figures");
             }
+        }
+        tables.unwritten = unwritten;
+        if (adh_write_atomic(out, "summary.tsv", adh_write_summary, &tables, why, sizeof why) != 0) {
+            fprintf(stderr, "adhere: %s\n", why);
+            status = ADH_EXIT_USAGE;
         }
     }
     adh_run_free(&run);

@@ -233,7 +233,7 @@ static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, con
     char keynames[ADH_STATIC_KEYS][32];
     adh_summary_extra extra[ADH_STATIC_KEYS];
     size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? adh_static_summary_keys(sres, "", keynames, extra) : 0;
-    adh_tables t = { &rcfg, run, extra, nextra, partial, note };
+    adh_tables t = { &rcfg, run, extra, nextra, partial, note, NULL };
     if (adh_write_atomic(dir, "force.tsv", adh_write_force, &t, why, sizeof why) != 0 ||
         adh_write_atomic(dir, "summary.tsv", adh_write_summary, &t, why, sizeof why) != 0 ||
         (run->nturns && adh_write_atomic(dir, "turns.tsv", adh_write_turns, &t, why, sizeof why) != 0)) {
@@ -258,7 +258,7 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
     /* the plot module's figures only when one is asked: a sweep of many runs
      * should not draw what nobody wants */
     if (rcfg.plots & ADH_PLOT_ALL) {
-        int prc = adh_plots_write(&rcfg, run, NULL, dir, msg, sizeof msg);
+        int prc = adh_plots_write(&rcfg, run, NULL, dir, msg, sizeof msg, NULL, 0);
         if (prc != 0) {
             fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
             status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;

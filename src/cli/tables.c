@@ -96,8 +96,12 @@ int adh_write_summary(FILE *f, const void *ctx)
     kv(f, "unconverged_steps", (double)r->unconverged);
     kv(f, "seconds", r->seconds);
     kv(f, "converged", (r->unconverged == 0 && r->status == ADH_SUCCESS) ? 1 : 0);
-    kv(f, "complete", t->partial ? 0 : 1);
-    fprintf(f, "status\t%s\n", r->interrupted ? "interrupted" : adh_strerror(r->status));
+    int lost = t->unwritten && *t->unwritten;
+    kv(f, "complete", t->partial || lost ? 0 : 1);
+    if (lost)
+        fprintf(f, "not_written\t%s\n", t->unwritten);
+    fprintf(f, "status\t%s\n", r->interrupted ? "interrupted"
+                              : lost && r->status == ADH_SUCCESS ? "output incomplete" : adh_strerror(r->status));
     return 0;
 }
 

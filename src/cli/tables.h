@@ -30,6 +30,8 @@ typedef struct adh_tables {
     size_t nextra;
     int partial;                     /* the run was interrupted or failed */
     const char *note;                /* why, for the comment lines */
+    const char *unwritten;           /* files of the run not written (a full disk), comma-separated;
+                                        NULL or "" when none: summary.tsv says so */
 } adh_tables;
 
 int adh_write_force(FILE *f, const void *tables);

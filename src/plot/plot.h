@@ -14,12 +14,15 @@
  * comparison: the static equilibrium curve of --reference=static (its
  * path 0, stable stretches solid, unstable ones dashed).
  * Returns 0 (msg names the files written and any figure skipped for lack of
- * data), or 3 when gnuplot is missing, dies or reports an error (msg says
- * what, quoting gnuplot; the tables are still written), or 2 when dir cannot
- * be written. gnuplot's stderr goes to dir/gnuplot.log, kept only when it
- * holds something. */
+ * data), or 3 when gnuplot is missing, dies, reports an error or makes no
+ * whole PNG (msg says what, quoting gnuplot; the tables are still written),
+ * or 2 when dir or a table cannot be written (a full disk: the other files
+ * are still tried). unwritten (may be NULL) receives the comma-separated
+ * names of the files asked for and not written ("" when none). No
+ * temporary file or directory stays behind on any path. gnuplot's stderr
+ * goes to dir/gnuplot.log, kept only when it holds something. */
 int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *reference,
-                    const char *dir, char *msg, size_t msglen);
+                    const char *dir, char *msg, size_t msglen, char *unwritten, size_t ulen);
 
 /* A handful (at most max) of profile positions for profile.png when none
  * were asked: evenly from the deepest turn (or, with no turn, the analytic

@@ -33,6 +33,8 @@ typedef struct plotter {
     char tmpdir[PATH_MAX];    /* data files for gnuplot, removed at the end */
     char done[512];           /* files written, for msg */
     char notes[512];          /* figures skipped for lack of data */
+    unsigned written;         /* ADH_PLOT_* bits of the figures in place */
+    unsigned skipped;         /* ... and of those skipped for lack of data */
     char error[1024];         /* the first gnuplot failure */
 } plotter;
 
@@ -223,6 +225,8 @@ static int finish_figure(plotter *pl, const char *name, const char *tmp_png)
         return -1;
     }
     append(pl->done, sizeof pl->done, "%s%s", *pl->done ? ", " : "", name);
+    pl->written |= !strcmp(name, "force.png") ? ADH_PLOT_FORCE
+                 : !strcmp(name, "profile.png") ? ADH_PLOT_PROFILE : ADH_PLOT_CONTACT;
     return 0;
 }
 
@@ -286,6 +290,7 @@ static int plot_force(plotter *pl)
     const adh_run *run = pl->run;
     const adh_derived *d = &pl->d;
     if (run->nrows < 2) {
+        pl->skipped |= ADH_PLOT_FORCE;
         append(pl->notes, sizeof pl->notes, "%sforce.png skipped: fewer than 2 rows",
                *pl->notes ? "; " : "");
         return 0;
@@ -605,6 +610,7 @@ static int plot_profile(plotter *pl)
         if (run->profiles[k].path == 0 || run->profiles[k].path == unload_path)
             sel[nsel++] = k;
     if (nsel == 0) {
+        pl->skipped |= ADH_PLOT_PROFILE;
         append(pl->notes, sizeof pl->notes, "%sprofile.png skipped: no profiles stored "
                "(ask with --profiles=M[,M...])", *pl->notes ? "; " : "");
         free(sel);
@@ -758,6 +764,7 @@ static int plot_contact(plotter *pl)
             xmax = fmax(xmax, run->rows[i].h0);
         }
     if (!(xmax >= xmin)) {
+        pl->skipped |= ADH_PLOT_CONTACT;
         append(pl->notes, sizeof pl->notes, "%scontact.png skipped: never in contact",
                *pl->notes ? "; " : "");
         rc = 0;
@@ -916,42 +923,88 @@ static int file_empty(const char *path)
     return stat(path, &st) == 0 && st.st_size == 0;
 }
 
-int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *reference,
-                    const char *dir, char *msg, size_t msglen)
+/* Whatever path a figure took (an early return after gnuplot opened its
+ * output, a dead gnuplot), no temporary image stays in the directory. */
+static void remove_tmp_pngs(const plotter *pl)
 {
-    char path[PATH_MAX + 32], why[1024];
+    static const char *const names[] = { "force.png", "profile.png", "contact.png" };
+    char tmp[PATH_MAX + 64];
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        tmp_png_name(pl, names[i], tmp, sizeof tmp);
+        unlink(tmp);
+    }
+}
+
+/* name appended to the comma-separated list in buf (may be NULL). */
+static void add_name(char *buf, size_t len, const char *name)
+{
+    if (buf && len)
+        append(buf, len, "%s%s", *buf ? "," : "", name);
+}
+
+/* The figures asked for that are neither in place nor skipped for lack of
+ * data, onto the list. */
+static void add_unwritten_figures(char *buf, size_t len, unsigned want, unsigned done)
+{
+    static const struct { unsigned bit; const char *name; } figs[] = {
+        { ADH_PLOT_FORCE, "force.png" }, { ADH_PLOT_PROFILE, "profile.png" }, { ADH_PLOT_CONTACT, "contact.png" },
+    };
+    for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++)
+        if ((want & figs[i].bit) && !(done & figs[i].bit))
+            add_name(buf, len, figs[i].name);
+}
+
+int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *reference,
+                    const char *dir, char *msg, size_t msglen, char *unwritten, size_t ulen)
+{
+    char path[PATH_MAX + 32], why[1024], table_error[1024] = "";
     if (msglen)
         msg[0] = '\0';
+    if (unwritten && ulen)
+        unwritten[0] = '\0';
     if (!dir || !*dir)
         dir = ".";
+    unsigned want = cfg->plot ? cfg->plots & ADH_PLOT_ALL : 0;
     struct stat st;
     errno = 0;
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || access(dir, W_OK | X_OK) != 0) {
         snprintf(msg, msglen, "cannot write plots in %s: %s", dir,
                  errno ? strerror(errno) : "not a writable directory");
+        if (run->nprofiles > 0)
+            add_name(unwritten, ulen, "profiles.tsv");
+        if (cfg->plots & ADH_PLOT_CONTACT)
+            add_name(unwritten, ulen, "contact.tsv");
+        add_unwritten_figures(unwritten, ulen, want, 0);
         return 2;
     }
     /* Only the tables that were asked for: profiles where profiles were
-     * stored, contact-line tracking when the contact plot is wanted. */
+     * stored, contact-line tracking when the contact plot is wanted. A
+     * table that cannot be written (a full disk) does not stop the others. */
     char tables[64] = "";
     if (run->nprofiles > 0) {
         snprintf(path, sizeof path, "%s/profiles.tsv", dir);
         if (adh_write_profiles_table(cfg, run, path, why, sizeof why) != 0) {
-            snprintf(msg, msglen, "%s", why);
-            return 2;
+            snprintf(table_error, sizeof table_error, "%s", why);
+            add_name(unwritten, ulen, "profiles.tsv");
+        } else {
+            strcat(tables, "profiles.tsv");
         }
-        strcat(tables, "profiles.tsv");
     }
     if (cfg->plots & ADH_PLOT_CONTACT) {
         snprintf(path, sizeof path, "%s/contact.tsv", dir);
         if (adh_write_contact_table(cfg, run, path, why, sizeof why) != 0) {
-            snprintf(msg, msglen, "%s", why);
+            if (!*table_error)
+                snprintf(table_error, sizeof table_error, "%s", why);
+            add_name(unwritten, ulen, "contact.tsv");
+        } else {
+            strcat(tables, *tables ? ", contact.tsv" : "contact.tsv");
+        }
+    }
+    if (!want) {
+        if (*table_error) {
+            snprintf(msg, msglen, "%s", table_error);
             return 2;
         }
-        strcat(tables, *tables ? ", contact.tsv" : "contact.tsv");
-    }
-    unsigned want = cfg->plots & ADH_PLOT_ALL;
-    if (!cfg->plot || !want) {
         snprintf(msg, msglen, "wrote %s in %s (plots off)", *tables ? tables : "no plot tables", dir);
         return 0;
     }
@@ -963,49 +1016,52 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *re
     pl.ref = reference;
     pl.dir = dir;
     adh_material_derive(&cfg->mat, &pl.d);
-    if (adh_plot_style_file(cfg, pl.style, sizeof pl.style, why, sizeof why) < 0) {
-        snprintf(msg, msglen, "%s; no plots made, tables written in %s", why, dir);
-        return 3;
-    }
-    const char *tmp = getenv("TMPDIR");
-    snprintf(pl.tmpdir, sizeof pl.tmpdir, "%s/adhere-plot-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (!mkdtemp(pl.tmpdir)) {
-        snprintf(msg, msglen, "cannot make a temporary directory %s: %s; no plots made, "
-                 "tables written in %s", pl.tmpdir, strerror(errno), dir);
-        return 3;
-    }
+    int rc = 0;
     char log[PATH_MAX + 32];
     snprintf(log, sizeof log, "%s/gnuplot.log", dir);
     unlink(log);   /* each run's log holds only its own complaints */
-    pl.gp = adh_gnuplot_open(log, why, sizeof why);
-    if (!pl.gp) {
-        remove_tmpdir(&pl);
-        snprintf(msg, msglen, "%s; no plots made, tables written in %s", why, dir);
-        if (file_empty(log))
-            unlink(log);
-        return 3;
+    const char *tmp = getenv("TMPDIR");
+    if (adh_plot_style_file(cfg, pl.style, sizeof pl.style, why, sizeof why) < 0) {
+        snprintf(pl.error, sizeof pl.error, "%s; no plots made", why);
+    } else {
+        snprintf(pl.tmpdir, sizeof pl.tmpdir, "%s/adhere-plot-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+        if (!mkdtemp(pl.tmpdir)) {
+            snprintf(pl.error, sizeof pl.error, "cannot make a temporary directory %s: %s; no plots made",
+                     pl.tmpdir, strerror(errno));
+            pl.tmpdir[0] = '\0';
+        } else if ((pl.gp = adh_gnuplot_open(log, why, sizeof why)) == NULL) {
+            snprintf(pl.error, sizeof pl.error, "%s; no plots made", why);
+        }
     }
-    /* Figures are independent: a failure in one does not stop the others
-     * while gnuplot lives. */
-    if ((want & ADH_PLOT_FORCE) && adh_gnuplot_alive(pl.gp))
-        plot_force(&pl);
-    if ((want & ADH_PLOT_PROFILE) && adh_gnuplot_alive(pl.gp))
-        plot_profile(&pl);
-    if ((want & ADH_PLOT_CONTACT) && adh_gnuplot_alive(pl.gp))
-        plot_contact(&pl);
-    if (!*pl.error && !adh_gnuplot_alive(pl.gp))
-        snprintf(pl.error, sizeof pl.error, "gnuplot stopped");
-    adh_gnuplot_close(pl.gp);
+    if (pl.gp) {
+        /* Figures are independent: a failure in one does not stop the others
+         * while gnuplot lives. */
+        if ((want & ADH_PLOT_FORCE) && adh_gnuplot_alive(pl.gp))
+            plot_force(&pl);
+        if ((want & ADH_PLOT_PROFILE) && adh_gnuplot_alive(pl.gp))
+            plot_profile(&pl);
+        if ((want & ADH_PLOT_CONTACT) && adh_gnuplot_alive(pl.gp))
+            plot_contact(&pl);
+        if (!*pl.error && !adh_gnuplot_alive(pl.gp))
+            snprintf(pl.error, sizeof pl.error, "gnuplot stopped");
+        adh_gnuplot_close(pl.gp);
+    }
+    remove_tmp_pngs(&pl);
     remove_tmpdir(&pl);
     if (file_empty(log))
         unlink(log);
+    add_unwritten_figures(unwritten, ulen, want, pl.written | pl.skipped);
 
-    if (*pl.error) {
+    if (*table_error) {
+        snprintf(msg, msglen, "%s%s%s", table_error, *pl.error ? "; plotting failed too: " : "", pl.error);
+        rc = 2;
+    } else if (*pl.error) {
         snprintf(msg, msglen, "plotting failed: %s; %s%stables written in %s", pl.error,
                  *pl.done ? pl.done : "", *pl.done ? " written, " : "", dir);
-        return 3;
+        rc = 3;
+    } else {
+        snprintf(msg, msglen, "wrote %s%s%s in %s%s%s", pl.done, *pl.done && *tables ? ", " : "", tables, dir,
+                 *pl.notes ? "; " : "", pl.notes);
     }
-    snprintf(msg, msglen, "wrote %s%s%s in %s%s%s", pl.done, *pl.done && *tables ? ", " : "", tables, dir,
-             *pl.notes ? "; " : "", pl.notes);
-    return 0;
+    return rc;
 }

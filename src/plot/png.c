@@ -52,13 +52,76 @@ void adh_png_begin(adh_gnuplot *gp, const char *style, const char *figure, const
     adh_gnuplot_cmd(gp, "set output %s", adh_gp_path(tmp_png, q, sizeof q));
 }
 
+static unsigned long be32(const unsigned char *b)
+{
+    return (unsigned long)b[0] << 24 | (unsigned long)b[1] << 16 | (unsigned long)b[2] << 8 | b[3];
+}
+
+int adh_png_check(const char *path, char *why, size_t whylen)
+{
+    static const unsigned char sig[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(why, whylen, "cannot read it: %s", strerror(errno));
+        return -1;
+    }
+    unsigned char b[8];
+    const char *bad = NULL;
+    if (fread(b, 1, 8, f) != 8 || memcmp(b, sig, 8) != 0)
+        bad = "not a PNG (no PNG signature: does a style file set another terminal?)";
+    /* chunk by chunk: length, type, data, CRC; IHDR first, IEND last,
+     * ending exactly at the end of the file */
+    for (long n = 0; !bad; n++) {
+        if (fread(b, 1, 8, f) != 8) {
+            bad = "cut short: it ends before its IEND chunk (a full disk?)";
+            break;
+        }
+        unsigned long len = be32(b);
+        if (len > 0x7fffffffUL) {
+            bad = "a chunk length out of range";
+            break;
+        }
+        if (n == 0 && memcmp(b + 4, "IHDR", 4) != 0) {
+            bad = "no IHDR chunk first";
+            break;
+        }
+        if (fseek(f, (long)len + 4, SEEK_CUR) != 0) {
+            bad = "unreadable";
+            break;
+        }
+        if (memcmp(b + 4, "IEND", 4) == 0) {
+            long at = ftell(f);
+            long end = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+            if (len != 0)
+                bad = "an IEND chunk with data";
+            else if (end < at)
+                bad = "cut short inside its IEND chunk";
+            else if (end > at)
+                bad = "data after its IEND chunk";
+            break;
+        }
+    }
+    fclose(f);
+    if (bad) {
+        snprintf(why, whylen, "%s", bad);
+        return -1;
+    }
+    return 0;
+}
+
 int adh_png_finish(adh_gnuplot *gp, const char *tmp_png, const char *final, char *why, size_t whylen)
 {
     adh_gnuplot_cmd(gp, "unset output");
     int rc = adh_gnuplot_sync(gp, ADH_PNG_TIMEOUT_S, why, whylen);
     struct stat st;
-    if (rc == 0 && !(stat(tmp_png, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 8)) {
+    if (rc == 0 && !(stat(tmp_png, &st) == 0 && S_ISREG(st.st_mode))) {
         snprintf(why, whylen, "gnuplot wrote no image to %s", tmp_png);
+        rc = -1;
+    }
+    /* a whole PNG or nothing under the final name */
+    char bad[160];
+    if (rc == 0 && adh_png_check(tmp_png, bad, sizeof bad) != 0) {
+        snprintf(why, whylen, "gnuplot's image is %s; removed", bad);
         rc = -1;
     }
     if (rc == 0 && rename(tmp_png, final) != 0) {

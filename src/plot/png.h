@@ -14,8 +14,14 @@
  * for none), and set output to tmp_png. */
 void adh_png_begin(adh_gnuplot *gp, const char *style, const char *figure, const char *tmp_png);
 
-/* unset output, wait for gnuplot's verdict, check the image, rename
- * tmp_png to final. 0, or -1 with why (tmp_png removed). */
+/* unset output, wait for gnuplot's verdict, check the image
+ * (adh_png_check), rename tmp_png to final. 0, or -1 with why (tmp_png
+ * removed). */
 int adh_png_finish(adh_gnuplot *gp, const char *tmp_png, const char *final, char *why, size_t whylen);
+
+/* Whether path is a whole PNG file: the PNG signature, then chunks (IHDR
+ * first) each whole, up to an IEND chunk that ends the file. 0, or -1 with
+ * why ("not a PNG ...", "cut short ...", ...). CRCs are not checked. */
+int adh_png_check(const char *path, char *why, size_t whylen);
 
 #endif

@@ -175,7 +175,7 @@ static int write_into(const adh_config *c, const adh_run *run, const char *dir, 
         return -1;
     }
     msg[0] = '\0';
-    int rc = adh_plots_write(c, run, NULL, dir, msg, msglen);
+    int rc = adh_plots_write(c, run, NULL, dir, msg, msglen, NULL, 0);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");
     return rc == 0 ? 0 : -1;

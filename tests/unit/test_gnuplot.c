@@ -349,7 +349,7 @@ static void test_plots(void)
 
     path_in(dir, sizeof dir, work, "plots");
     mkdir(dir, 0755);
-    int rc = adh_plots_write(&s.cfg, &s.run, NULL, dir, msg, sizeof msg);
+    int rc = adh_plots_write(&s.cfg, &s.run, NULL, dir, msg, sizeof msg, NULL, 0);
     ok(rc == 0, "plots written: rc %d, %s", rc, msg);
     check_pngs(dir, 900, 600, "installed style");
     check_tables(dir, &s, "with gnuplot");
@@ -380,7 +380,7 @@ static void test_plots(void)
     snprintf(s.cfg.gnuplot_style, sizeof s.cfg.gnuplot_style, "%s", style);
     path_in(dir2, sizeof dir2, work, "small");
     mkdir(dir2, 0755);
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 0, "custom style: rc %d, %s", rc, msg);
     check_pngs(dir2, 640, 480, "--gnuplot-style");
 
@@ -390,7 +390,7 @@ static void test_plots(void)
     fclose(f);
     path_in(dir2, sizeof dir2, work, "badstyle");
     mkdir(dir2, 0755);
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 3 && strstr(msg, "gnuplot error"), "an error in the style returns 3 and quotes "
        "gnuplot: %s", msg);
     ok(count_matching(dir2, ".png") == 0, "no PNG, not even a temporary one, after an error");
@@ -400,7 +400,7 @@ static void test_plots(void)
 
     /* a style that does not exist */
     snprintf(s.cfg.gnuplot_style, sizeof s.cfg.gnuplot_style, "%s/nope.gp", work);
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 3 && strstr(msg, "nope.gp"), "a missing style file is named: %s", msg);
     s.cfg.gnuplot_style[0] = '\0';
 
@@ -408,7 +408,7 @@ static void test_plots(void)
     path_in(dir2, sizeof dir2, work, "nognuplot");
     mkdir(dir2, 0755);
     setenv("ADHERE_GNUPLOT", "/nonexistent/gnuplot", 1);
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     unsetenv("ADHERE_GNUPLOT");
     ok(rc == 3 && strstr(msg, "tables written"), "no gnuplot: rc 3 and says so: %s", msg);
     ok(count_matching(dir2, ".png") == 0, "no gnuplot: no PNG");
@@ -418,7 +418,7 @@ static void test_plots(void)
     path_in(dir2, sizeof dir2, work, "noplot");
     mkdir(dir2, 0755);
     s.cfg.plot = 0;
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 0 && count_matching(dir2, ".png") == 0, "--no-plot: rc 0, no PNG");
     check_tables(dir2, &s, "no plot");
     s.cfg.plot = 1;
@@ -427,7 +427,7 @@ static void test_plots(void)
     path_in(dir2, sizeof dir2, work, "select");
     mkdir(dir2, 0755);
     s.cfg.plots = ADH_PLOT_CONTACT;
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     path_in(p, sizeof p, dir2, "contact.png");
     ok(rc == 0 && exists(p) && count_matching(dir2, ".png") == 1,
        "--plots=contact makes contact.png alone");
@@ -438,7 +438,7 @@ static void test_plots(void)
     mkdir(dir2, 0755);
     size_t keep = s.run.nprofiles;
     s.run.nprofiles = 0;
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     path_in(p, sizeof p, dir2, "profile.png");
     ok(rc == 0 && !exists(p) && strstr(msg, "--profiles"),
        "no profiles: profile.png skipped and the message says how: %s", msg);
@@ -453,12 +453,12 @@ static void test_plots(void)
     s.run.turns[1].max_load = -5e-8;
     s.run.turns[1].pulloff_F = -6e-7;
     s.run.turns[1].path = 2;
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 0, "two turns: force.png with the adhesion panel: %s", msg);
     s.run.nturns = 1;
 
     /* an unwritable output directory */
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, "/nonexistent/dir", msg, sizeof msg);
+    rc = adh_plots_write(&s.cfg, &s.run, NULL, "/nonexistent/dir", msg, sizeof msg, NULL, 0);
     ok(rc == 2, "an unwritable dir returns 2: %s", msg);
     ok(no_children_left(), "no gnuplot left running");
     free_synthetic(&s);
