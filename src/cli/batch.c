@@ -20,6 +20,7 @@
 #include "cli/statics.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
+#include "plot/outdir.h"
 #include "plot/plot.h"
 
 
@@ -89,7 +90,8 @@ int adh_batch_main(const adh_cli *cli)
     const adh_config *cfg = &cli->cfg;
     char why[1024];
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
-    if (out && make_dir(out, why, sizeof why) != 0) {
+    /* a directory never mixes two runs: the earlier run's files go first */
+    if (out && (make_dir(out, why, sizeof why) != 0 || adh_outdir_clear(out, why, sizeof why) != 0)) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }
@@ -196,7 +198,16 @@ int adh_batch_main(const adh_cli *cli)
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
                 if (status == ADH_EXIT_OK)
                     status = ADH_EXIT_PLOT;
-                add_unwritten(unwritten, sizeof unwritten, "scene figures");
+                /* the ones asked for and not there (the directory was
+                 * cleared of earlier runs' files before this run) */
+                static const struct { unsigned bit; const char *name; } figs[] = {
+                    { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
+                for (size_t i = 0; i < 2; i++) {
+                    char p[PATH_MAX + 32];
+                    snprintf(p, sizeof p, "%s/%s", out, figs[i].name);
+                    if ((cfg->plots & figs[i].bit) && access(p, F_OK) != 0)
+                        add_unwritten(unwritten, sizeof unwritten, figs[i].name);
+                }
             }
         }
         tables.unwritten = unwritten;

@@ -21,6 +21,7 @@
 #include "cli/tables.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
+#include "plot/outdir.h"
 #include "plot/plot.h"
 #include "plot/png.h"
 
@@ -285,6 +286,7 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
     int rc = adh_png_finish(gp, tmp, png, msg, len);
     adh_gnuplot_close(gp);
     unlink(data);
+    unlink(tmp);   /* already gone unless gnuplot stopped half-way */
     if (rc != 0)
         return 3;
     struct stat st;
@@ -339,6 +341,11 @@ int adh_cost_main(const adh_cli *cli)
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
     if (out && mkdir(out, 0777) != 0 && access(out, W_OK) != 0) {
         fprintf(stderr, "adhere: cannot write into %s\n", out);
+        free(runs);
+        return ADH_EXIT_USAGE;
+    }
+    if (out && adh_outdir_clear(out, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
         free(runs);
         return ADH_EXIT_USAGE;
     }

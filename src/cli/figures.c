@@ -60,9 +60,16 @@ static void fig_close(figure *fg)
 {
     adh_gnuplot_close(fg->gp);
     static const char *const names[] = { "a.dat", "b.dat", "c.dat" };
-    char p[PATH_MAX + 16];
+    char p[PATH_MAX + 64];
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         snprintf(p, sizeof p, "%s/%s", fg->tmpdir, names[i]);
+        unlink(p);
+    }
+    /* a figure that stopped between fig_begin and fig_end (gnuplot died,
+     * out of memory) leaves no temporary image */
+    static const char *const pngs[] = { "precontact.png", "bulge.png", "jump.png", "force.png" };
+    for (size_t i = 0; i < sizeof pngs / sizeof pngs[0]; i++) {
+        snprintf(p, sizeof p, "%s/.%s.tmp%ld", fg->dir, pngs[i], (long)getpid());
         unlink(p);
     }
     rmdir(fg->tmpdir);

@@ -10,6 +10,7 @@
 
 #include "adhere/history.h"
 #include "adhere/protocol.h"
+#include "plot/outdir.h"
 #include "plot/plot.h"
 
 /* The turning points of the path so far, as --batch reports them: each
@@ -175,6 +176,10 @@ static int write_into(const adh_config *c, const adh_run *run, const char *dir, 
         return -1;
     }
     msg[0] = '\0';
+    /* the files of an earlier run or an earlier p go first: what is in dir
+     * is this path's */
+    if (adh_outdir_clear(dir, msg, msglen) != 0)
+        return -1;
     int rc = adh_plots_write(c, run, NULL, dir, msg, msglen, NULL, 0);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");

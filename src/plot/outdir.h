@@ -1,0 +1,19 @@
+/* The files adhere owns in an output directory (-o DIR): a run first
+ * removes every one an earlier run left, so a directory never mixes the
+ * tables and figures of two runs. Other files are never touched. */
+#ifndef ADH_PLOT_OUTDIR_H
+#define ADH_PLOT_OUTDIR_H
+
+#include <stddef.h>
+
+/* Whether name (a bare file name) is one adhere writes: a table, a figure,
+ * a gnuplot log, or a temporary of one (.NAME.PID.tmp, .NAME.tmpPID) left
+ * by a run that was killed. */
+int adh_outdir_owns(const char *name);
+
+/* Removes from dir every file adh_outdir_owns, and each sweep directory
+ * run-K holding nothing else once its own files are gone. 0, or -1 with why
+ * (a file that cannot be removed); a dir that does not exist is empty. */
+int adh_outdir_clear(const char *dir, char *why, size_t whylen);
+
+#endif

@@ -1,0 +1,117 @@
+#!/bin/sh
+# A file under its final name is whole, and an output directory holds one
+# run: a style that makes gnuplot write text, or a full disk (a file size
+# limit stands in for it) cutting a PNG short, leaves no force.png and exits
+# 3; a table the disk refuses leaves a summary.tsv that says what is missing
+# and never "success" (exit 2); a reused -o directory keeps nothing of the
+# run before; no temporary stays behind when gnuplot dies. Prints TAP.
+. "$(dirname "$0")/lib.sh"
+if ! command -v gnuplot >/dev/null 2>&1; then
+    echo "ok 1 # SKIP gnuplot is not installed"
+    echo "1..1"
+    exit 0
+fi
+RUN="--batch --quiet --nodes=100 --eps=1e-10 --step=1nm"
+cd "$TMP" || exit 1
+mkdir tmp
+export TMPDIR="$TMP/tmp"
+key() { awk -F'\t' -v k="$2" '$1 == k {print $2}' "$1/summary.tsv" 2>/dev/null; }
+no_temporaries() { # dir what
+    left=$(ls -A "$1" | grep -E '\.tmp|tmp[0-9]' | tr '\n' ' ')
+    if [ -z "$left" ] && [ -z "$(ls -A "$TMPDIR")" ]; then ok "$2: no temporary file left"
+    else not_ok "$2: temporaries left: $left $(ls -A "$TMPDIR" | tr '\n' ' ')"; fi
+}
+
+# --- a style that sets another terminal ------------------------------------
+printf 'set terminal dumb\n' >dumb.gp
+"$ADHERE" $RUN --plots=force --gnuplot-style=dumb.gp -o dumb 2>dumb.err
+rc=$?
+check "a style with 'set terminal dumb': exit 3 (got $rc)" [ "$rc" -eq 3 ]
+check "... no force.png (a text file is not a PNG)" [ ! -e dumb/force.png ]
+check "... and the message says so: $(head -c 300 dumb.err)" grep -q 'force.png: .*not a PNG' dumb.err
+check "... summary.tsv: not_written force.png, status not success ($(key dumb status)), complete 0" \
+    [ "$(key dumb not_written)/$(key dumb status)/$(key dumb complete)" = "force.png/output incomplete/0" ]
+no_temporaries dumb "a text image"
+
+# --- a full disk: RLIMIT_FSIZE refuses writes past a size, as a full disk does
+# (SIGXFSZ ignored, so a write fails with EFBIG instead of killing)
+"$ADHERE" $RUN -o full 2>/dev/null
+rc=$?
+check "an unlimited run writes everything (exit $rc)" [ "$rc" -eq 0 ]
+size() { wc -c <"$1" 2>/dev/null || echo 0; }
+rows() { grep -vc '^#' "$1"; }
+png=$(size full/force.png) tsv=$(size full/force.tsv) prof=$(size full/profiles.tsv)
+echo "# sizes: force.png $png, force.tsv $tsv, profiles.tsv $prof bytes"
+
+# the PNG cut short: the limit on gnuplot alone, below force.png's size
+lim=$(( (png / 2 + 1023) / 1024 ))
+cat >gp-limited <<EOF
+#!/bin/sh
+trap '' XFSZ
+ulimit -f $lim && exec gnuplot "\$@"
+EOF
+chmod +x gp-limited
+ADHERE_GNUPLOT="$TMP/gp-limited" "$ADHERE" $RUN --plots=force -o cut 2>cut.err
+rc=$?
+check "force.png cut short at $lim KiB: exit 3 (got $rc)" [ "$rc" -eq 3 ]
+check "... no force.png under its final name" [ ! -e cut/force.png ]
+check "... the message says it was cut short: $(head -c 300 cut.err)" grep -q 'force.png: .*cut short' cut.err
+check "... summary.tsv names it and does not say success ($(key cut not_written), $(key cut status))" \
+    [ "$(key cut not_written)/$(key cut status)" = "force.png/output incomplete" ]
+no_temporaries cut "a PNG cut short"
+
+# profiles.tsv refused: a limit between force.tsv and profiles.tsv
+lim=$(( (tsv * 3 + 1023) / 1024 ))
+if [ $((lim * 1024)) -lt "$prof" ]; then
+    (trap '' XFSZ; ulimit -f "$lim" && exec "$ADHERE" $RUN -o disk) 2>disk.err
+    rc=$?
+    check "profiles.tsv refused by a full disk: exit 2 (got $rc)" [ "$rc" -eq 2 ]
+    check "... the message names it: $(head -c 300 disk.err)" grep -q 'profiles.tsv' disk.err
+    check "... no profiles.tsv, not even cut" [ ! -e disk/profiles.tsv ]
+    check "... summary.tsv is written and lists it under not_written ($(key disk not_written))" \
+        sh -c 'printf "%s\n" "$1" | tr , "\n" | grep -qx profiles.tsv' sh "$(key disk not_written)"
+    check "... status is not success ($(key disk status)) and complete is 0" \
+        [ "$(key disk status)/$(key disk complete)" = "output incomplete/0" ]
+    check "... force.tsv is whole (as many rows as unlimited)" [ "$(rows disk/force.tsv)" -eq "$(rows full/force.tsv)" ]
+    no_temporaries disk "a full disk"
+else
+    echo "ok $((T + 1)) # SKIP profiles.tsv ($prof bytes) not larger than 3 x force.tsv ($tsv)"
+    T=$((T + 1))
+fi
+
+# --- a reused directory ----------------------------------------------------
+# run 1 writes every figure and table; stale files of other modes and of a
+# killed run sit beside them, with the user's own files
+"$ADHERE" $RUN --reference=static -o reuse 2>/dev/null
+mkdir -p reuse/run-3 reuse/run-9
+: >reuse/cost.tsv; : >reuse/sweep.tsv; : >reuse/run-3/force.tsv; : >reuse/run-3/summary.tsv
+: >reuse/.force.png.tmp4242; : >reuse/.summary.tsv.4242.tmp; : >reuse/.cost-plot.4242.dat
+: >reuse/notes.txt; : >reuse/run-9/mine.txt; : >reuse/force.tsv.bak
+check "run 1 wrote force.png, static.tsv and profiles.tsv" \
+    sh -c '[ -s reuse/force.png ] && [ -s reuse/static.tsv ] && [ -s reuse/profiles.tsv ]'
+# run 2: tables only, no turn
+"$ADHERE" $RUN --no-plot --turn=none --plots=force -o reuse 2>reuse.err
+rc=$?
+check "run 2 into the same directory: exit 0 (got $rc: $(head -c 200 reuse.err))" [ "$rc" -eq 0 ]
+left=$(cd reuse && ls -A | sort | tr '\n' ' ')
+check "only run 2's files and the user's remain: $left" \
+    [ "$left" = "force.tsv force.tsv.bak notes.txt run-9 summary.tsv " ]
+check "a sweep directory with the user's file in it is kept, with that file" [ -e reuse/run-9/mine.txt ]
+check "run 2's summary is run 2's (no turn: turn_h0 nan)" [ "$(key reuse turn_h0)" = nan ]
+
+# --- gnuplot dying with an image open ----------------------------------------
+cat >gp-dies <<EOF
+#!/bin/sh
+# passes commands on until the first 'set output', then stops: gnuplot has
+# opened the temporary image and never finishes it
+sed -u '/^set output/q' | gnuplot "\$@"
+EOF
+chmod +x gp-dies
+ADHERE_GNUPLOT="$TMP/gp-dies" "$ADHERE" $RUN -o dies 2>dies.err
+rc=$?
+check "gnuplot dying mid-figure: exit 3 (got $rc: $(head -c 200 dies.err))" [ "$rc" -eq 3 ]
+check "... no PNG under a final name" sh -c '! ls dies | grep -q "\.png$"'
+no_temporaries dies "gnuplot dying"
+check "... summary.tsv lists every figure as not written ($(key dies not_written))" \
+    [ "$(key dies not_written)" = "force.png,profile.png,contact.png" ]
+done_testing
