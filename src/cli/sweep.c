@@ -212,14 +212,17 @@ static int make_dir(const char *dir, char *why, size_t n)
     return 0;
 }
 
-/* Tables of run i in out/run-K. Returns an exit status. */
-static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, const char *out)
+/* Tables of run i in out/run-K: force.tsv and turns.tsv when data is set,
+ * then summary.tsv, last, naming what was not written (those that failed
+ * here, and the list in unwritten). Returns an exit status. */
+static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
+                      int rc, const char *out, int data, const char *unwritten)
 {
-    char dir[PATH_MAX + 32], why[1024], note[256] = "";
+    char dir[PATH_MAX + 32], why[1024], note[256] = "", lost[512];
     adh_config rcfg;
     adh_config_sweep_run(cfg, i, &rcfg);
     snprintf(dir, sizeof dir, "%s/run-%zu", out, i + 1);
+    snprintf(lost, sizeof lost, "%s", unwritten ? unwritten : "");
     if (make_dir(dir, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
@@ -233,22 +236,41 @@ static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, con
     char keynames[ADH_STATIC_KEYS][32];
     adh_summary_extra extra[ADH_STATIC_KEYS];
     size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? adh_static_summary_keys(sres, "", keynames, extra) : 0;
-    adh_tables t = { &rcfg, run, extra, nextra, partial, note, NULL };
-    if (adh_write_atomic(dir, "force.tsv", adh_write_force, &t, why, sizeof why) != 0 ||
-        adh_write_atomic(dir, "summary.tsv", adh_write_summary, &t, why, sizeof why) != 0 ||
-        (run->nturns && adh_write_atomic(dir, "turns.tsv", adh_write_turns, &t, why, sizeof why) != 0)) {
-        fprintf(stderr, "adhere: %s\n", why);
-        return ADH_EXIT_USAGE;
+    adh_tables t = { &rcfg, run, extra, nextra, partial, note, lost };
+    int status = ADH_EXIT_OK;
+    if (data) {
+        const char *names[2] = { "force.tsv", run->nturns ? "turns.tsv" : NULL };
+        adh_table_writer writers[2] = { adh_write_force, adh_write_turns };
+        for (int k = 0; k < 2; k++)
+            if (names[k] && adh_write_atomic(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
+                fprintf(stderr, "adhere: %s\n", why);
+                status = ADH_EXIT_USAGE;
+                size_t n = strlen(lost);
+                snprintf(lost + n, sizeof lost - n, "%s%s", n ? "," : "", names[k]);
+            }
     }
-    if (partial)
+    if (adh_write_atomic(dir, "summary.tsv", adh_write_summary, &t, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        status = ADH_EXIT_USAGE;
+    }
+    if (status == ADH_EXIT_OK && partial)
         return run->interrupted ? ADH_EXIT_INTERRUPTED : ADH_EXIT_SOLVER;
-    return ADH_EXIT_OK;
+    return status;
 }
 
-/* Figures of run i in out/run-K (its tables are there). An exit status. */
-static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, const char *out)
+static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
+                        int rc, const char *out)
 {
-    char dir[PATH_MAX + 32], msg[1024] = "";
+    return run_tables(cfg, i, run, sres, rc, out, 1, NULL);
+}
+
+/* Figures of run i in out/run-K (its tables are there); when one is not
+ * written, the run's summary.tsv is written again to say so. An exit
+ * status. */
+static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
+                       int rc, const char *out)
+{
+    char dir[PATH_MAX + 32], msg[1024] = "", missing[256] = "";
     adh_config rcfg;
     adh_config_sweep_run(cfg, i, &rcfg);
     snprintf(dir, sizeof dir, "%s/run-%zu", out, i + 1);
@@ -258,7 +280,7 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
     /* the plot module's figures only when one is asked: a sweep of many runs
      * should not draw what nobody wants */
     if (rcfg.plots & ADH_PLOT_ALL) {
-        int prc = adh_plots_write(&rcfg, run, NULL, dir, msg, sizeof msg, NULL, 0);
+        int prc = adh_plots_write(&rcfg, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
         if (prc != 0) {
             fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
             status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
@@ -267,6 +289,21 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
     if (adh_figures_run(&rcfg, run, dir, msg, sizeof msg) != 0) {
         fprintf(stderr, "adhere: run %zu: %s\n", i + 1, msg);
         status = status ? status : ADH_EXIT_PLOT;
+        /* the ones asked for and not there (run-K was cleared first) */
+        static const struct { unsigned bit; const char *name; } figs[] = {
+            { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
+        for (size_t k = 0; k < 2; k++) {
+            char p[PATH_MAX + 64];
+            snprintf(p, sizeof p, "%s/%s", dir, figs[k].name);
+            size_t n = strlen(missing);
+            if ((rcfg.plots & figs[k].bit) && access(p, F_OK) != 0)
+                snprintf(missing + n, sizeof missing - n, "%s%s", n ? "," : "", figs[k].name);
+        }
+    }
+    if (*missing) {
+        int trc = run_tables(cfg, i, run, sres, rc, out, 0, missing);
+        if (trc == ADH_EXIT_USAGE)
+            status = trc;
     }
     return status;
 }
@@ -369,7 +406,7 @@ int adh_sweep_main(const adh_cli *cli)
                 tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], out);
             exit_status = worse(exit_status, tables[i]);
             if (tables[i] == ADH_EXIT_OK)
-                exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], out));
+                exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], &sres[i], status[i], out));
         }
         if (adh_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);

@@ -32,6 +32,14 @@ check "... and the message says so: $(head -c 300 dumb.err)" grep -q 'force.png:
 check "... summary.tsv: not_written force.png, status not success ($(key dumb status)), complete 0" \
     [ "$(key dumb not_written)/$(key dumb status)/$(key dumb complete)" = "force.png/output incomplete/0" ]
 no_temporaries dumb "a text image"
+# the same in a sweep: each run's summary, written before its figures, is
+# written again to say so
+printf '[sweep]\nE = 300MPa, 600MPa\n' >sweep.scene
+"$ADHERE" $RUN --plots=force --gnuplot-style=dumb.gp sweep.scene -o sweep 2>/dev/null
+rc=$?
+check "a sweep with that style: exit 3 (got $rc)" [ "$rc" -eq 3 ]
+check "... run-2/summary.tsv: not_written force.png, status $(key sweep/run-2 status)" \
+    [ "$(key sweep/run-2 not_written)/$(key sweep/run-2 status)" = "force.png/output incomplete" ]
 
 # --- a full disk: RLIMIT_FSIZE refuses writes past a size, as a full disk does
 # (SIGXFSZ ignored, so a write fails with EFBIG instead of killing)
