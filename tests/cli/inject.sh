@@ -112,11 +112,17 @@ cat >plot.keys <<'EOF'
 p
 EOF
 rm -f commands.gp
+# an earlier run's table and the user's own file in that directory
+mkdir -p '|touch PWNED15;y'
+: >'|touch PWNED15;y/static.tsv'
+: >'|touch PWNED15;y/notes.txt'
 ADHERE_GNUPLOT="$TMP/gp-log" timeout 60 "$ADHERE" --replay=plot.keys --screen=plot.screen --no-clock --plots=force \
     -o '|touch PWNED15;y' inject.scene </dev/null >tui.out 2>tui.err
 rc=$?
 check "the TUI's p key with the title and -o '|touch PWNED15;y': exit 0 (got $rc: $(head -c 200 tui.err))" [ "$rc" -eq 0 ]
 check "... writes force.png there" is_png '|touch PWNED15;y/force.png'
 check "... sending the title literally" grep -qF "set title $want" commands.gp
+check "... after removing the earlier run's static.tsv, keeping the user's notes.txt" \
+    sh -c '[ ! -e "|touch PWNED15;y/static.tsv" ] && [ -e "|touch PWNED15;y/notes.txt" ]'
 nothing_ran "the TUI's plot key"
 done_testing
