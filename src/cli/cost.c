@@ -232,7 +232,7 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
     snprintf(tmp, sizeof tmp, "%s/.cost.png.%ld.tmp", dir, (long)getpid());
     FILE *f = fopen(data, "w");
     if (!f) {
-        snprintf(msg, len, "cannot write %s", data);
+        snprintf(msg, len, "cannot write %.900s", data);
         return 2;
     }
     /* one block per series, blank-line separated, for gnuplot's `index` */

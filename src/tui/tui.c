@@ -850,7 +850,7 @@ int adh_tui_main(const adh_config *cfg)
     if (cfg->screen[0] && t.exit_code == 0) {
         draw(&t);
         if (tui_dump_screen(cfg->screen, why, sizeof why) != 0) {
-            snprintf(t.fatal, sizeof t.fatal, "adhere: %s", why);
+            snprintf(t.fatal, sizeof t.fatal, "adhere: %.1000s", why);
             t.exit_code = EXIT_BAD_INPUT;   /* an unwritable output */
         }
     }
