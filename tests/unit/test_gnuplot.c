@@ -471,10 +471,17 @@ static void test_data_dir(void)
     mkdir(d, 0755);
     path_in(buf, sizeof buf, d, "gnuplot");
     mkdir(buf, 0755);
+    const char *was = getenv("ADHERE_DATADIR");
+    char saved[4096] = "";
+    if (was)
+        snprintf(saved, sizeof saved, "%s", was);
     setenv("ADHERE_DATADIR", d, 1);
     ok(adh_data_dir("gnuplot", buf, sizeof buf) == 0 && strstr(buf, work) == buf,
        "$ADHERE_DATADIR comes first: %s", buf);
-    unsetenv("ADHERE_DATADIR");
+    if (was)
+        setenv("ADHERE_DATADIR", saved, 1);
+    else
+        unsetenv("ADHERE_DATADIR");
     ok(adh_data_dir("gnuplot", buf, sizeof buf) == 0, "an installed or source style dir: %s",
        buf);
     adh_config cfg;
@@ -520,8 +527,7 @@ int main(void)
     test_data_dir();
     test_missing();
     if (!have_gnuplot()) {
-        printf("# gnuplot is not installed: process and PNG checks skipped\n");
-        ok(1, "skipped: no gnuplot");
+        tap_skip("gnuplot is not installed: no process or PNG checks");
         return tap_done();
     }
     test_process();
