@@ -23,7 +23,7 @@
 #include "scene/plan.h"
 
 /* OpenBLAS's own threads would fight the sweep's for the same cores. */
-void openblas_set_num_threads(int n);
+void openblas_set_num_threads(int n) __attribute__((weak));   /* none in the reference BLAS */
 
 
 
@@ -330,7 +330,7 @@ int adh_sweep_main(const adh_cli *cli)
         status[i] = ADH_SUCCESS;
         tables[i] = -1;
     }
-    if (jobs > 1)
+    if (jobs > 1 && openblas_set_num_threads)
         openblas_set_num_threads(1);
 
     adh_interrupt_catch();
