@@ -10,6 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "adhere/params.h"
@@ -251,7 +252,17 @@ static void test_death_and_hang(void)
     memset(&mine, 0, sizeof mine);
     mine.sa_handler = SIG_DFL;
     sigaction(SIGPIPE, &mine, NULL);
-    sleep(1);   /* let it die first, so the writes meet a closed pipe */
+    /* let it die first, so the writes meet a closed pipe: wait for its exit
+     * (WNOWAIT leaves the status for adh_gnuplot_sync to read) */
+    siginfo_t si;
+    int died = 0;
+    for (int i = 0; i < 1000 && !died; i++) {
+        memset(&si, 0, sizeof si);
+        died = waitid(P_ALL, 0, &si, WEXITED | WNOHANG | WNOWAIT) == 0 && si.si_pid != 0;
+        if (!died)
+            nanosleep(&(struct timespec){ 0, 10000000 }, NULL);
+    }
+    ok(died, "the dying gnuplot has exited before anything is written to it");
     for (int i = 0; i < 2000; i++)
         adh_gnuplot_cmd(gp, "set title \"%d filling the pipe past its buffer\"", i);
     int rc = adh_gnuplot_sync(gp, 5, msg, sizeof msg);
