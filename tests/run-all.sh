@@ -19,7 +19,11 @@ trap 'rm -f "$log"' EXIT
 pass=0 fail=0 skip=0
 # ONLY=c: just the C programs (make check-asan). ASAN_BUILD: a second build
 # of the C tests under the sanitizers. FUZZ_BUILD: where the fuzzers are.
-if [ "${ONLY:-}" = c ]; then
+# TESTS="FILE ...": just those (e.g. TESTS=tests/replay/run.sh).
+if [ -n "${TESTS:-}" ]; then
+    # shellcheck disable=SC2086
+    set -- $TESTS
+elif [ "${ONLY:-}" = c ]; then
     set -- "$BUILD"/tests/*
 else
     set -- "$BUILD"/tests/* tests/cli/*.sh tests/scenes/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh \
