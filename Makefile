@@ -99,7 +99,7 @@ run: all
 # UBSan, a short fuzz pass over the parsers and each benchmark once at a tiny
 # size. About 2 minutes on 2 cores (README). CI=true: a skip fails it.
 check: all $(UNIT_BIN) $(HARD_BIN) $(BENCH_BIN) asan-build fuzz-build
-	@ASAN_BUILD=build-asan FUZZ_BUILD=$(BUILD) tests/run-all.sh $(BUILD)
+	@ADHERE_BIN=$(abspath $(BIN)) ASAN_BUILD=build-asan FUZZ_BUILD=$(BUILD) tests/run-all.sh $(BUILD)
 
 # The replay goldens must hold on any floating-point path, not one machine's:
 # the program built again against the reference BLAS (GSL's gslcblas for
