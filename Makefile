@@ -1,5 +1,7 @@
 # adhere: build, test, install. `make run` opens the TUI, `make check` runs
-# every test; both first install missing Debian packages (as root).
+# every test; both first install missing Debian packages (as root): `deps` is
+# an order-only prerequisite of every object and test program, so even under
+# `make -j8` nothing compiles before the packages are there.
 PREFIX  ?= /usr/local
 DESTDIR ?=
 BINDIR   = $(PREFIX)/bin
@@ -8,20 +10,30 @@ MANDIR   = $(PREFIX)/share/man
 
 CC      ?= cc
 CFLAGS  ?= -O2 -g
-WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wno-format-truncation
+WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wformat-truncation=2
 PKGS     = gsl ncursesw inih openblas
 DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux \
+           liblapack-dev libblas-dev \
            clang libclang-rt-14-dev
 
-# GSL through OpenBLAS's CBLAS, not the reference gslcblas (DESIGN.md section 4).
+# GSL through OpenBLAS's CBLAS and LAPACK (dgetrf), not the reference
+# gslcblas: several times faster on the dense kernel products and LU that
+# dominate the run time. BLAS_LIBS swaps the BLAS (make check-fp does).
+# Recursive (=) on purpose: pkg-config runs when a recipe needs it, after
+# `deps` has installed it.
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl \
-             $(shell pkg-config --libs openblas ncursesw inih 2>/dev/null) -lpthread -lm
+BLAS_LIBS  = $(shell pkg-config --libs openblas 2>/dev/null)
+PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl $(BLAS_LIBS) \
+             $(shell pkg-config --libs ncursesw inih 2>/dev/null) -lpthread -lm
 ADH_VERSION = 0.1.0
-CPPFLAGS += -Iinclude -Isrc -DADH_VERSION='"$(ADH_VERSION)"' -D_POSIX_C_SOURCE=200809L -DADH_DATADIR='"$(DATADIR)"' -DADH_SRCDATA='"$(CURDIR)/share/adhere"'
+CPPFLAGS += -Iinclude -Isrc -DADH_VERSION='"$(ADH_VERSION)"' -D_POSIX_C_SOURCE=200809L -DADH_DATADIR='"$(DATADIR)"'
 ALL_CFLAGS = -std=c11 $(WARN) $(CFLAGS) $(PKG_CFLAGS)
+# Test programs sit in $(BUILD)/tests, with no share/adhere beside them: they
+# read this tree's (tests/unit/tap.h), unless $$ADHERE_DATADIR says otherwise.
+TEST_CPPFLAGS = -Itests/unit -DADH_TEST_DATADIR='"$(CURDIR)/share/adhere"'
 
 BUILD   ?= build
+BIN     ?= adhere
 LIB_SRC  = $(wildcard src/core/*.c src/scene/*.c src/plot/*.c)
 APP_SRC  = $(wildcard src/cli/*.c src/tui/*.c)
 LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -34,10 +46,10 @@ HARD_BIN = $(HARD_SRC:tests/hard/%.c=$(BUILD)/tests/hard-%)
 BENCH_SRC = $(wildcard tests/bench/*.c)
 BENCH_BIN = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/tests/bench-%)
 
-.PHONY: all deps run check check-asan check-fuzz asan-build fuzz-build bench install \
+.PHONY: all deps run check check-asan check-fp check-fuzz asan-build fuzz-build bench install \
         uninstall clean
 
-all: deps adhere
+all: deps $(BIN)
 
 # Installs what is missing and nothing else: a no-op when every package is there.
 deps:
@@ -48,7 +60,8 @@ deps:
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null || exit 1; \
 	fi
 
-adhere: $(APP_OBJ) $(LIB)
+$(BIN): $(APP_OBJ) $(LIB)
+	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) -o $@ $(APP_OBJ) $(LIB) $(PKG_LIBS) $(LDFLAGS)
 
 $(LIB): $(LIB_OBJ)
@@ -63,29 +76,51 @@ $(BUILD)/datadir.stamp: FORCE
 .PHONY: FORCE
 $(LIB_OBJ) $(APP_OBJ): $(BUILD)/datadir.stamp
 
-$(BUILD)/%.o: %.c
+$(BUILD)/%.o: %.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
 
-$(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(LIB)
+$(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(LIB) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) -Itests/unit $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
+	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
 
-$(BUILD)/tests/hard-%: tests/hard/%.c tests/unit/tap.h $(LIB)
+$(BUILD)/tests/hard-%: tests/hard/%.c tests/unit/tap.h $(LIB) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) -Itests/unit $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
+	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
 
-$(BUILD)/tests/bench-%: tests/bench/%.c $(LIB)
+$(BUILD)/tests/bench-%: tests/bench/%.c $(LIB) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
 
 run: all
-	./adhere
+	./$(BIN)
 
 # One pass, one closing line: the tests, the C tests again under ASan and
-# UBSan, and a short fuzz pass over the parsers.
-check: all $(UNIT_BIN) $(HARD_BIN) asan-build fuzz-build
-	@ASAN_BUILD=build-asan FUZZ_BUILD=$(BUILD) tests/run-all.sh $(BUILD)
+# UBSan, a short fuzz pass over the parsers and each benchmark once at a tiny
+# size. About 2 minutes on 2 cores (README). CI=true: a skip fails it.
+check: all $(UNIT_BIN) $(HARD_BIN) $(BENCH_BIN) asan-build fuzz-build
+	@ADHERE_BIN=$(abspath $(BIN)) ASAN_BUILD=build-asan FUZZ_BUILD=$(BUILD) tests/run-all.sh $(BUILD)
+
+# The replay goldens must hold on any floating-point path, not one machine's:
+# the program built again against the reference BLAS (GSL's gslcblas for
+# CBLAS, Netlib's LAPACK and BLAS beneath dgetrf, pinned by rpath so the
+# system's OpenBLAS alternative cannot stand in) and again at -O0, each in its
+# own build dir, and the replay suite run against each. Not part of `check`.
+REF_BLAS_DIR  = /usr/lib/x86_64-linux-gnu
+REF_BLAS_LIBS = -lgslcblas -L$(REF_BLAS_DIR)/lapack -L$(REF_BLAS_DIR)/blas -llapack -lblas \
+                -Wl,--disable-new-dtags,-rpath,$(REF_BLAS_DIR)/lapack:$(REF_BLAS_DIR)/blas
+check-fp: deps
+	@$(MAKE) --no-print-directory BUILD=build-refblas BIN=build-refblas/adhere \
+	  BLAS_LIBS="$(REF_BLAS_LIBS)" build-refblas/adhere
+	@$(MAKE) --no-print-directory BUILD=build-O0 BIN=build-O0/adhere CFLAGS="-O0 -g" build-O0/adhere
+	@fail=0; for b in build-refblas build-O0; do \
+	  if ldd $$b/adhere | grep -q openblas && [ $$b = build-refblas ]; then \
+	    echo "not ok - $$b/adhere still loads OpenBLAS"; fail=1; fi; \
+	  echo "# replay suite with $$b/adhere"; \
+	  ADHERE_BIN=$$PWD/$$b/adhere ADHERE_DATADIR=$$PWD/share/adhere tests/replay/run.sh >$$b/replay.log 2>&1 || fail=1; \
+	  grep '^not ok' $$b/replay.log; \
+	  echo "$$b: $$(grep -c '^ok' $$b/replay.log) passed, $$(grep -c '^not ok' $$b/replay.log) failed (log: $$b/replay.log)"; \
+	done; exit $$fail
 
 SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
@@ -103,13 +138,13 @@ FUZZ_BIN   = $(BUILD)/fuzz/fuzz_units $(BUILD)/fuzz/fuzz_scene $(BUILD)/fuzz/fuz
              $(BUILD)/fuzz/fuzz_gpstring
 CORE_SRC   = $(wildcard src/core/*.c)
 
-$(BUILD)/fuzz/fuzz_units: tests/fuzz/fuzz_units.c src/core/units.c
+$(BUILD)/fuzz/fuzz_units: tests/fuzz/fuzz_units.c src/core/units.c | deps
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ -lm
-$(BUILD)/fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(wildcard src/scene/*.c) $(CORE_SRC)
+$(BUILD)/fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(wildcard src/scene/*.c) $(CORE_SRC) | deps
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
-$(BUILD)/fuzz/fuzz_replay: tests/fuzz/fuzz_replay.c src/tui/replay.c
+$(BUILD)/fuzz/fuzz_replay: tests/fuzz/fuzz_replay.c src/tui/replay.c | deps
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
 $(BUILD)/fuzz/fuzz_gpstring: tests/fuzz/fuzz_gpstring.c src/plot/labels.c src/plot/labels.h
@@ -127,7 +162,7 @@ bench: all $(BENCH_BIN)
 install: all
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(DATADIR)/scenes $(DESTDIR)$(DATADIR)/gnuplot \
 	  $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
-	install -m 755 adhere $(DESTDIR)$(BINDIR)/adhere
+	install -m 755 $(BIN) $(DESTDIR)$(BINDIR)/adhere
 	for f in share/adhere/scenes/*.scene; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/scenes/; done; true
 	for f in share/adhere/gnuplot/*.gp; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/gnuplot/; done; true
 	install -m 644 man/adhere.1 $(DESTDIR)$(MANDIR)/man1/adhere.1
@@ -138,6 +173,6 @@ uninstall:
 	rm -rf $(DESTDIR)$(DATADIR)
 
 clean:
-	rm -rf $(BUILD) build-asan adhere
+	rm -rf $(BUILD) build-asan build-refblas build-O0 adhere
 
 -include $(LIB_OBJ:.o=.d) $(APP_OBJ:.o=.d)

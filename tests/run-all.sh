@@ -1,39 +1,99 @@
 #!/bin/sh
-# Runs every test of `make check` and prints one TAP stream per test file,
-# then the closing line "N passed, N failed". Usage: tests/run-all.sh BUILD
-# Each test is a C program (tests/unit, tests/hard) or an executable script
-# (tests/cli, tests/replay, tests/plots, tests/man) that prints TAP lines.
+# Runs every test of `make check`, prints each test file's TAP stream, then
+# one closing line, exactly: "N passed, N failed, N skipped".
+# Usage: tests/run-all.sh BUILD
+#
+# A test is a C program (BUILD/tests: tests/unit, tests/hard) or a script
+# (tests/*/NAME.sh) that prints TAP, one line per case:
+#     ok N - what was checked
+#     not ok N - what was checked        (then "#" lines saying why)
+#     ok N # SKIP why it could not run   (counted apart, never as passed)
+# and exits non-zero when any case failed (a non-zero exit with no "not ok"
+# line counts as one failure). A script without its run bit is run with sh.
+# The run fails on any failure; with CI=true (make deps installs everything
+# the tests need) it also fails on any skip, and when nothing passed.
 BUILD=${1:-build}
-export LC_ALL=C.UTF-8 ADHERE_BIN="$PWD/adhere" ADHERE_SRC="$PWD" OPENBLAS_NUM_THREADS=1
-log=$(mktemp)
-trap 'rm -f "$log"' EXIT
-pass=0 fail=0
+export LC_ALL=C.UTF-8 ADHERE_BIN="${ADHERE_BIN:-$PWD/adhere}" ADHERE_SRC="$PWD" OPENBLAS_NUM_THREADS=1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+pass=0 fail=0 skip=0
 # ONLY=c: just the C programs (make check-asan). ASAN_BUILD: a second build
-# of the C tests under the sanitizers. FUZZ_BUILD: where the fuzzers are.
-if [ "${ONLY:-}" = c ]; then
+# of the C tests under the sanitizers, run beside the others (the tests are
+# single-threaded: on 2 cores that halves the wall time), reported after
+# them. FUZZ_BUILD: where the fuzzers are.
+# TESTS="FILE ...": just those (e.g. TESTS=tests/replay/run.sh).
+asan=""
+if [ -n "${TESTS:-}" ]; then
+    # shellcheck disable=SC2086
+    set -- $TESTS
+elif [ "${ONLY:-}" = c ]; then
     set -- "$BUILD"/tests/*
 else
-    set -- "$BUILD"/tests/* tests/cli/*.sh tests/scenes/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh
-    [ -n "${ASAN_BUILD:-}" ] && set -- "$@" "$ASAN_BUILD"/tests/*
+    set -- "$BUILD"/tests/* tests/cli/*.sh tests/scenes/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh \
+        tests/bench/smoke.sh
+    [ -n "${ASAN_BUILD:-}" ] && asan=$(ls "$ASAN_BUILD"/tests/*)
     [ -n "${FUZZ_BUILD:-}" ] && set -- "$@" tests/fuzz/run.sh
 fi
 export BUILD=${FUZZ_BUILD:-$BUILD}
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-for t in "$@"; do
-    [ -f "$t" ] && [ -x "$t" ] || continue
-    case "$t" in *bench-*) continue ;; esac
-    echo "# $t"
-    "$t" >"$log" 2>&1
+
+# run_one TEST OUT: runs TEST, writes its TAP and a summary line to OUT and
+# "passed failed skipped" to OUT.n.
+run_one() {
+    t=$1 out=$2
+    t0=$(date +%s)
+    case "$t" in
+    *.sh) if [ -x "$t" ]; then "$t"; else sh "$t"; fi >"$out.log" 2>&1 ;;
+    *) if [ -x "$t" ]; then "$t" >"$out.log" 2>&1; else echo "not ok - $t is not executable" >"$out.log"; false; fi ;;
+    esac
     rc=$?
-    cat "$log"
-    p=$(grep -c '^ok ' "$log")
-    f=$(grep -c '^not ok ' "$log")
+    { echo "# $t"; cat "$out.log"; } >"$out"
+    s=$(grep -Ec '^ok [0-9]* *# *SKIP' "$out.log")
+    p=$(($(grep -c '^ok ' "$out.log") - s))
+    f=$(grep -c '^not ok ' "$out.log")
     if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
-        echo "not ok - $t exited with status $rc"
+        echo "not ok - $t exited with status $rc" >>"$out"
         f=1
     fi
-    pass=$((pass + p)) fail=$((fail + f))
+    echo "# $t: $p passed, $f failed, $s skipped in $(($(date +%s) - t0)) s" >>"$out"
+    echo "$p $f $s" >"$out.n"
+}
+# report OUT: prints it and adds its counts
+report() {
+    cat "$1"
+    read -r p f s <"$1.n"
+    pass=$((pass + p)) fail=$((fail + f)) skip=$((skip + s))
+}
+runnable() { [ -f "$1" ] && case "$1" in *bench-*) false ;; *) true ;; esac; }   # benches: tests/bench/smoke.sh
+
+if [ -n "$asan" ]; then
+    (
+        i=0
+        for t in $asan; do
+            runnable "$t" || continue
+            i=$((i + 1))
+            run_one "$t" "$work/asan.$(printf %03d $i)"
+        done
+    ) &
+    asan_pid=$!
+fi
+for t in "$@"; do
+    runnable "$t" || continue
+    run_one "$t" "$work/one"
+    report "$work/one"
 done
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ] && [ "$pass" -gt 0 ]
+if [ -n "$asan" ]; then
+    wait "$asan_pid"
+    for o in "$work"/asan.[0-9][0-9][0-9]; do
+        [ -f "$o" ] && report "$o"
+    done
+fi
+status=0
+[ "$fail" -eq 0 ] && [ "$pass" -gt 0 ] || status=1
+if [ "$skip" -gt 0 ] && [ "${CI:-}" = true ]; then
+    echo "# CI=true: a skip fails the run (make deps installs what the tests need)"
+    status=1
+fi
+echo "$pass passed, $fail failed, $skip skipped"
+exit "$status"

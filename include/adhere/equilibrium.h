@@ -1,4 +1,4 @@
-/* The static limit the paper could not compute (DESIGN.md section 2):
+/* The static limit (eps -> 0) the paper says could not be computed:
  * equilibrium at every drive position, G(u, h0) = u + (2/E) W p(h0 + r^2/2R - u) = 0,
  * solved by Newton's method and followed along the whole S-shaped curve
  * F(h0) by pseudo-arclength continuation in (u, h0) through its folds,

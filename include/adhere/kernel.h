@@ -1,6 +1,10 @@
-/* The discretised elastic half-space kernel (paper eqs 9, 18-21, or the exact
- * ring-integrated form of DESIGN.md section 2). It depends on the grid alone:
- * material changes never rebuild it. */
+/* The discretised elastic half-space kernel, k(r,t) = 4/(pi max) K(min^2/max^2)
+ * (K of parameter m): the paper's point collocation (eqs 9, 18-21), or an
+ * exact ring-integrated form. For the latter, D(r,a) = int_0^a k(r,t) t dt is
+ * (4a/pi) E(r^2/a^2) for r < a and (4r/pi)[E(a^2/r^2) - (1 - a^2/r^2) K(a^2/r^2)]
+ * for r > a; a ring [a,b] of unit pressure deflects the surface by
+ * D(r,b) - D(r,a), so piecewise-constant pressures need no singular cell.
+ * It depends on the grid alone: material changes never rebuild it. */
 #ifndef ADHERE_KERNEL_H
 #define ADHERE_KERNEL_H
 

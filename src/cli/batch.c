@@ -60,18 +60,18 @@ static int make_dir(const char *dir, char *why, size_t n)
             continue;
         *p = '\0';
         if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            snprintf(why, n, "cannot create directory %s: %s", buf, strerror(errno));
+            snprintf(why, n, "cannot create directory %.900s: %s", buf, strerror(errno));
             return -1;
         }
         *p = '/';
     }
     if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-        snprintf(why, n, "cannot create directory %s: %s", buf, strerror(errno));
+        snprintf(why, n, "cannot create directory %.900s: %s", buf, strerror(errno));
         return -1;
     }
     struct stat st;
     if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode) || access(buf, W_OK) != 0) {
-        snprintf(why, n, "cannot write into %s: not a writable directory", buf);
+        snprintf(why, n, "cannot write into %.900s: not a writable directory", buf);
         return -1;
     }
     return 0;

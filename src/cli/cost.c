@@ -25,7 +25,11 @@
 #include "plot/plot.h"
 #include "plot/png.h"
 
-char *openblas_get_config(void);
+char *openblas_get_config(void) __attribute__((weak));   /* none in the reference BLAS */
+static const char *blas_config(void)
+{
+    return openblas_get_config ? openblas_get_config() : "reference BLAS";
+}
 
 #define MAX_EPS 16
 #define MAX_NODES 16
@@ -204,7 +208,7 @@ static int write_cost(FILE *f, const void *ctx)
     char rule[64];
     adh_mix_rule_describe(&job->cfg->relax, rule, sizeof rule);
     fprintf(f, "# adhere %s cost report: %ld cores, BLAS %s, mixing %s; errors are relative to the most accurate run (err_*) and the static curve (static_err_*)\n",
-            ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), openblas_get_config(), rule);
+            ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), blas_config(), rule);
     fprintf(f, "# static curve's hysteresis (eps -> 0, displacement control): %.17g J\n", job->static_hysteresis);
     fprintf(f, "# static curve's contact radius at the turn: %.17g m\n", job->static_a_turn);
     fputs("kernel\tnodes\teps\tseconds\tkernel_seconds\titerations\tsteps\tunconverged\tpulloff_F\tjump_in_h0\thysteresis\ta_turn\t"
@@ -233,7 +237,7 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
     snprintf(tmp, sizeof tmp, "%s/.cost.png.%ld.tmp", dir, (long)getpid());
     FILE *f = fopen(data, "w");
     if (!f) {
-        snprintf(msg, len, "cannot write %s", data);
+        snprintf(msg, len, "cannot write %.900s", data);
         return 2;
     }
     /* one block per series, blank-line separated, for gnuplot's `index` */
@@ -418,7 +422,7 @@ int adh_cost_main(const adh_cli *cli)
            n, started ? started : 1, cores, rule);
     printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "
            "hysteresis %.4g fJ, a at the turn %.4g um%s\n\n",
-           openblas_get_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, sc.nodes, sres.pulloff_F,
+           blas_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, sc.nodes, sres.pulloff_F,
            sres.jump_in_h0 * 1e9, static_hyst * 1e15, static_a * 1e6, src == ADH_SUCCESS ? "" : " (failed)");
     printf("%-6s %6s %7s %9s %11s %12s %10s %11s %9s | %8s %8s %8s %8s | %8s %8s %8s %8s\n", "kernel", "N", "eps/pm", "seconds",
            "iterations", "pulloff/uN", "jump-in/nm", "hyst/fJ", "a_turn/um", "pulloff", "jump-in", "hyst", "a_turn",

@@ -107,7 +107,7 @@ static int data_done(figure *fg, FILE *f, const char *path)
 {
     int bad = ferror(f);
     if (fclose(f) != 0 || bad) {
-        snprintf(fg->msg, fg->msglen, "cannot write %s", path);
+        snprintf(fg->msg, fg->msglen, "cannot write %.3000s", path);
         return -1;
     }
     return 0;

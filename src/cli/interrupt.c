@@ -1,4 +1,5 @@
 #include "cli/interrupt.h"
+#include "cli/ready.h"
 
 #include <signal.h>
 #include <string.h>
@@ -34,5 +35,6 @@ int adh_interrupt_signal(void)
 int adh_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx)
 {
     (void)row, (void)run, (void)ctx;
+    adh_ready_mark();   /* a step is done and signals are caught */
     return received != 0;
 }

@@ -10,8 +10,9 @@
 #include "scene/plan.h"
 #include "tui/tui.h"
 
-/* OpenBLAS's own; declared here so the GSL CBLAS header stays the only one. */
-void openblas_set_num_threads(int num_threads);
+/* OpenBLAS's own; declared here so the GSL CBLAS header stays the only one.
+ * Weak: a build against the reference BLAS (make check-fp) has none. */
+void openblas_set_num_threads(int num_threads) __attribute__((weak));
 
 int main(int argc, char **argv)
 {
@@ -20,7 +21,8 @@ int main(int argc, char **argv)
      * idle BLAS threads spinning cost more than they give (a coarse Figure 1
      * run: 14 s with them, 1.6 s without). Sweeps run one process thread
      * per core instead. */
-    openblas_set_num_threads(1);
+    if (openblas_set_num_threads)
+        openblas_set_num_threads(1);
     char why[1024];
     if (adh_cli_parse(argc, argv, &cli, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);

@@ -23,7 +23,7 @@
 #include "scene/plan.h"
 
 /* OpenBLAS's own threads would fight the sweep's for the same cores. */
-void openblas_set_num_threads(int n);
+void openblas_set_num_threads(int n) __attribute__((weak));   /* none in the reference BLAS */
 
 
 
@@ -197,7 +197,7 @@ static int make_dir(const char *dir, char *why, size_t n)
         char c = *p;
         *p = '\0';
         if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            snprintf(why, n, "cannot create directory %s: %s", buf, strerror(errno));
+            snprintf(why, n, "cannot create directory %.900s: %s", buf, strerror(errno));
             return -1;
         }
         *p = c;
@@ -206,7 +206,7 @@ static int make_dir(const char *dir, char *why, size_t n)
     }
     struct stat st;
     if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode) || access(buf, W_OK) != 0) {
-        snprintf(why, n, "cannot write into %s: not a writable directory", buf);
+        snprintf(why, n, "cannot write into %.900s: not a writable directory", buf);
         return -1;
     }
     return 0;
@@ -367,7 +367,7 @@ int adh_sweep_main(const adh_cli *cli)
         status[i] = ADH_SUCCESS;
         tables[i] = -1;
     }
-    if (jobs > 1)
+    if (jobs > 1 && openblas_set_num_threads)
         openblas_set_num_threads(1);
 
     adh_interrupt_catch();

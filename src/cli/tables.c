@@ -126,7 +126,7 @@ int adh_write_atomic(const char *dir, const char *name, adh_table_writer writer,
     snprintf(tmp, sizeof tmp, "%s/.%s.%ld.tmp", dir, name, (long)getpid());
     FILE *f = fopen(tmp, "w");
     if (!f) {
-        snprintf(why, whylen, "cannot write %s: %s", path, strerror(errno));
+        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(errno));
         return -1;
     }
     int rc = writer(f, ctx);
@@ -140,13 +140,13 @@ int adh_write_atomic(const char *dir, const char *name, adh_table_writer writer,
     }
     if (rc != 0) {
         unlink(tmp);
-        snprintf(why, whylen, "cannot write %s: %s", path, strerror(saved ? saved : EIO));
+        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(saved ? saved : EIO));
         return -1;
     }
     if (rename(tmp, path) != 0) {
         saved = errno;
         unlink(tmp);
-        snprintf(why, whylen, "cannot write %s: %s", path, strerror(saved));
+        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(saved));
         return -1;
     }
     return 0;

@@ -25,9 +25,10 @@
  * bordered matrix, and by Cramer det J = det B * t_h / rhs for the tangent
  * solve (G = 0): so det J's sign costs nothing beyond the tangent. */
 
-/* LAPACK's LU from OpenBLAS (linked with it, DESIGN.md section 4): blocked
- * and tuned, several times faster than gsl_linalg_LU_decomp at these sizes,
- * which is the cost that dominates at large sigma. */
+/* LAPACK's LU (OpenBLAS's, as the program is linked; the Makefile's
+ * check-fp links Netlib's instead): blocked and tuned, several times faster
+ * than gsl_linalg_LU_decomp at these sizes, which is the cost that
+ * dominates at large sigma. */
 extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
 
 #define ADH_GMRES_MAX 40   /* Krylov dimension before the LU is refreshed */

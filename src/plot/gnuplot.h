@@ -1,4 +1,4 @@
-/* One gnuplot child process driven over a pipe (DESIGN.md section 4):
+/* One gnuplot child process driven over a pipe:
  * fork/exec of `gnuplot -d` with no shell, its stderr in a log file (never on
  * the terminal, which may be a curses screen), and a sync handshake after
  * every batch of commands that is both flow control and error detection. */

@@ -7,6 +7,7 @@
 
 #include "adhere/protocol.h"
 #include "scene/config.h"
+#include "scene/datadir.h"   /* adh_data_dir */
 
 /* Writes the plots cfg->plots asks for into dir, beside profiles.tsv and
  * contact.tsv (always written, also with cfg->plot == 0 or no gnuplot).
@@ -33,12 +34,6 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *re
  *   if (!cfg->proto.nprofiles && (cfg->plots & ADH_PLOT_PROFILE))
  *       cfg->proto.nprofiles = adh_plot_default_profiles(cfg, cfg->proto.profiles, 6); */
 size_t adh_plot_default_profiles(const adh_config *cfg, double *out, size_t max);
-
-/* The installed data directory holding sub ("gnuplot", "scenes"): the first
- * that exists of $ADHERE_DATADIR/sub, ADH_DATADIR/sub (the install prefix)
- * and ADH_SRCDATA/sub (the source tree, so an uninstalled build works).
- * 0, or -1 when none exists (buf then holds the last candidate). */
-int adh_data_dir(const char *sub, char *buf, size_t len);
 
 /* The gnuplot style file in use: cfg->gnuplot_style (a file, or a directory
  * holding style.gp) if set, else style.gp in adh_data_dir("gnuplot").

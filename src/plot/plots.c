@@ -478,7 +478,7 @@ static int plot_force(plotter *pl)
             int idx = set[2 * p + (1 - s)];
             if (idx < 0)
                 continue;
-            char style[160], title[160];
+            char style[200], title[160];   /* style: a 127-byte colour and its widths: never cut */
             if (p == 0) {
                 snprintf(style, sizeof style, "ls 1%s",
                          s ? "" : " lw 1.2 dt adh_unstable_dash");

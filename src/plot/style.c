@@ -1,4 +1,4 @@
-/* Where the gnuplot styles live: installed, or in the source tree. */
+/* Which gnuplot style file a run uses. */
 #include "plot/plot.h"
 
 #include <errno.h>
@@ -8,31 +8,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#ifndef ADH_DATADIR
-#define ADH_DATADIR "/usr/local/share/adhere"
-#endif
-#ifndef ADH_SRCDATA
-#define ADH_SRCDATA "share/adhere"
-#endif
-
 static int is_dir(const char *p)
 {
     struct stat st;
     return stat(p, &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-int adh_data_dir(const char *sub, char *buf, size_t len)
-{
-    const char *env = getenv("ADHERE_DATADIR");
-    const char *roots[] = { env && *env ? env : NULL, ADH_DATADIR, ADH_SRCDATA };
-    for (size_t i = 0; i < sizeof roots / sizeof roots[0]; i++) {
-        if (!roots[i])
-            continue;
-        snprintf(buf, len, "%s/%s", roots[i], sub);
-        if (is_dir(buf))
-            return 0;
-    }
-    return -1;
 }
 
 int adh_plot_style_file(const adh_config *cfg, char *buf, size_t len, char *msg, size_t msglen)

@@ -138,7 +138,7 @@ static void plan_profiles(const adh_config *cfg, adh_plan *p)
         if (!hits) {
             char b[64];
             fmt_len(x, b, sizeof b);
-            char what[64];
+            char what[80];   /* "profile at " and b: never cut */
             snprintf(what, sizeof what, "profile at %s", b);
             note(p->skipped, &p->nskipped, what, "no branch steps there (drive positions are start - k d on loading, turn + k d on unloading)%s",
                  p->stop_at_contact ? " or it lies past the jump into contact" : "");

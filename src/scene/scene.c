@@ -1,4 +1,5 @@
 #include "scene/scene.h"
+#include "scene/datadir.h"
 
 #include <errno.h>
 #include <ini.h>
@@ -297,7 +298,9 @@ static int prescan(const char *text, scene_parse *sp)
                 return line;
             }
             char name[64];
-            snprintf(name, sizeof name, "%.*s", (int)(close - t - 1), t + 1);
+            size_t nl = (size_t)(close - t - 1) < sizeof name - 1 ? (size_t)(close - t - 1) : sizeof name - 1;
+            memcpy(name, t + 1, nl);   /* a longer name is no known section either way */
+            name[nl] = '\0';
             int known = 0;
             for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
                 known |= strcmp(keys[i].section, name) == 0;
@@ -309,7 +312,7 @@ static int prescan(const char *text, scene_parse *sp)
             continue;
         }
         if (!in_section) {
-            fail(sp, "'%s' comes before any [section]%s", t, "");
+            fail(sp, "'%.200s' comes before any [section]%s", t, "");
             return line;
         }
     }
@@ -348,17 +351,20 @@ int adh_scene_find(const char *arg, char *path, size_t pathlen, char *why, size_
         snprintf(path, pathlen, "%s", arg);
         return 0;
     }
-    const char *env = getenv("ADHERE_DATADIR");
-    const char *dirs[] = { env, ADH_DATADIR, ADH_SRCDATA };
-    for (size_t i = 0; i < 3; i++) {
-        if (!dirs[i] || !*dirs[i])
+    char root[3][PATH_MAX];
+    int tried[3];
+    for (int i = 0; i < 3; i++) {
+        tried[i] = adh_data_root(i, root[i], sizeof root[i]) == 0;
+        if (!tried[i])
             continue;
-        snprintf(path, pathlen, "%s/scenes/%s.scene", dirs[i], arg);
+        snprintf(path, pathlen, "%s/scenes/%s.scene", root[i], arg);
         if (is_file(path))
             return 0;
     }
-    snprintf(why, whylen, "no scene named '%s' (looked in $ADHERE_DATADIR/scenes, %s/scenes, %s/scenes); "
-             "shipped scenes are default and fig1 ... fig8", arg, ADH_DATADIR, ADH_SRCDATA);
+    snprintf(why, whylen, "no scene named '%.100s' (looked in %.300s%s%.300s%s%.300s/scenes; $ADHERE_DATADIR "
+             "sets where); shipped scenes are default and fig1 ... fig8", arg,
+             tried[0] ? root[0] : "", tried[0] ? "/scenes, " : "", tried[1] ? root[1] : "",
+             tried[1] ? "/scenes, " : "", root[2]);
     return -1;
 }
 

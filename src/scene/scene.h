@@ -8,8 +8,8 @@
 #include "scene/config.h"
 
 /* Finds a scene: a path to a file, or the name of a shipped scene ("fig5")
- * looked up in $ADHERE_DATADIR/scenes, the installed share directory, then
- * the source tree. Writes the path found; 0, or -1 with why. */
+ * looked up in the scenes/ of each adh_data_root in turn ($ADHERE_DATADIR,
+ * share/adhere beside the executable, the install prefix). Writes the path found; 0, or -1 with why. */
 int adh_scene_find(const char *name_or_path, char *path, size_t pathlen, char *why, size_t whylen);
 
 /* Applies the scene's values over cfg. 0, or -1 with "FILE:LINE: message". */

@@ -51,7 +51,16 @@ static const char *pad(const char *s, int w, char *buf, size_t len)
     size_t cols = mbstowcs(NULL, s, 0);
     if (cols == (size_t)-1)
         cols = strlen(s);
-    snprintf(buf, len, "%s%*s", s, (int)cols < w ? w - (int)cols : 0, "");
+    size_t l = strlen(s), blanks = (int)cols < w ? (size_t)(w - (int)cols) : 0;
+    if (!len)
+        return buf;
+    if (l > len - 1)
+        l = len - 1;
+    if (blanks > len - 1 - l)
+        blanks = len - 1 - l;
+    memcpy(buf, s, l);
+    memset(buf + l, ' ', blanks);
+    buf[l + blanks] = '\0';
     return buf;
 }
 
@@ -196,7 +205,7 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
         return;
     }
     const adh_obs *o = tui_sim_row(s);
-    char a[64], b[64];
+    char a[64], b[320];   /* "%.2f s" of any double fits: never cut */
     size_t nrows;
     const adh_obs *rows = tui_sim_rows(s, &nrows);
     put(y, x, w, A_BOLD, " State");
@@ -375,10 +384,14 @@ void tui_draw(const tui_sim *s, const tui_view *v)
 
 /* Appends "  KEY      what" to lines, the description wrapped at blanks to
  * fit w columns, continuation lines indented under it. */
-static int help_entry(char lines[][256], int n, int max, int w, const char *key, const char *what)
+enum { HELP_LINE = 512 };   /* bytes of a help line: the widest terminal's row is cut by put() */
+
+static int help_entry(char lines[][HELP_LINE], int n, int max, int w, const char *key, const char *what)
 {
     const int indent = 19;
     int room = w - indent > 20 ? w - indent : 20;
+    if (room > HELP_LINE - 70)   /* after a key column of up to 3 + 63 bytes */
+        room = HELP_LINE - 70;
     const char *p = what;
     int first = 1;
     while (*p && n < max) {
@@ -391,7 +404,10 @@ static int help_entry(char lines[][256], int n, int max, int w, const char *key,
             if (take == 0)
                 take = room;
         }
-        snprintf(lines[n++], 256, "  %-16s %.*s", first ? key : "", take, p);
+        /* key column, then take bytes of the text (take <= room fits) */
+        int col = snprintf(lines[n], HELP_LINE, "  %-16.63s ", first ? key : "");
+        memcpy(lines[n] + col, p, (size_t)take);
+        lines[n++][col + take] = '\0';
         first = 0;
         p += take;
         while (*p == ' ')
@@ -404,10 +420,10 @@ int tui_draw_help(const tui_view *v)
 {
     erase();
     int W = COLS, H = LINES;
-    char name[32], msg[256];
+    char name[32], msg[1024];
     /* Lines first, so the screen can start anywhere in them. */
     enum { MAX = 160 };
-    static char lines[MAX][256];
+    static char lines[MAX][HELP_LINE];
     int n = 0;
     /* One line per action, its keys together, with the first key's words:
      * the aliases' own lines ("as f") would only repeat it. */
@@ -421,21 +437,25 @@ int tui_draw_help(const tui_view *v)
         for (const adh_key_binding *e = b; e->action != ACT_NONE; e++)
             if (e->action == b->action) {
                 adh_replay_key_name(e->key, name, sizeof name);
-                size_t l = strlen(keys);
-                snprintf(keys + l, sizeof keys - l, "%s%s", l ? " " : "", name);
+                size_t l = strlen(keys), m = strlen(name);
+                if (l + 1 + m < sizeof keys) {   /* a key that does not fit is left out whole */
+                    if (l)
+                        keys[l++] = ' ';
+                    memcpy(keys + l, name, m + 1);
+                }
             }
         n = help_entry(lines, n, MAX, W, keys, b->what);
     }
     n = help_entry(lines, n, MAX, W, "1-9", "digits make a count for the next key: 10f steps ten times, 3j moves down three");
     if (n < MAX)
-        snprintf(lines[n++], 256, " ");
+        snprintf(lines[n++], HELP_LINE, " ");
     n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn; "
                    "values take units: 2GPa 0.4nm 1e-19J 10um");
     snprintf(msg, sizeof msg, "changing E, A, z0, R, %s, d, N or the spacing starts a new path from the "
              "start; turn only moves where r stops loading", gk(v, "\xce\xb5", "eps"));
     n = help_entry(lines, n, MAX, W, "", msg);
     if (n < MAX)
-        snprintf(lines[n++], 256, " ");
+        snprintf(lines[n++], HELP_LINE, " ");
     snprintf(msg, sizeof msg, "m switches to the equilibrium curve, solved point by point by Newton's method and "
              "continuation through its folds: f (or r) solves the next point, b and u walk back over points "
              "already solved (the curve is the same whichever way the drive moves: nothing is solved again), "

@@ -25,6 +25,7 @@
 #include "tui/plotpath.h"
 #include "tui/screen.h"
 #include "tui/sim.h"
+#include "cli/ready.h"   /* the test readiness signal, shared with the batch drivers */
 
 static volatile sig_atomic_t got_signal;
 
@@ -699,6 +700,7 @@ static void loop(tui *t)
             /* Batches keep a terminal responsive; a replay never reads keys
              * inside a step, so its batch size changes nothing it shows. */
             int rc = tui_sim_work(&t->sim, t->headless ? 5000 : 200, why, sizeof why);
+            adh_ready_mark();   /* a solve is under way, signals are caught */
             if (rc != ADH_CONTINUE)
                 after_step(t, rc, why);
             continue;
@@ -850,7 +852,7 @@ int adh_tui_main(const adh_config *cfg)
     if (cfg->screen[0] && t.exit_code == 0) {
         draw(&t);
         if (tui_dump_screen(cfg->screen, why, sizeof why) != 0) {
-            snprintf(t.fatal, sizeof t.fatal, "adhere: %s", why);
+            snprintf(t.fatal, sizeof t.fatal, "adhere: %.1000s", why);
             t.exit_code = EXIT_BAD_INPUT;   /* an unwritable output */
         }
     }

@@ -1,7 +1,10 @@
 /* Benchmark of the relaxation: milliseconds per iteration at several N,
  * beside the time to stream the kernel matrix once (the memory bound every
  * iteration pays), and optionally the whole Figure 4 load/unload cycle.
- * Prints medians of REPEAT runs. Usage: bench-relax [REPEAT] [cycle N] */
+ * Prints medians of REPEAT runs. Usage: bench-relax [REPEAT] [cycle N]
+ * BENCH_N=n measures that one size instead of 500 ... 4000 (make check runs
+ * every bench once at a tiny size, so a broken bench fails the build). Exits
+ * 1 when a cycle run fails. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +17,7 @@
 #include "adhere/kernel.h"
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
+#include "adhere/status.h"
 #include "scene/config.h"
 
 void openblas_set_num_threads(int);
@@ -68,8 +72,13 @@ int main(int argc, char **argv)
     adh_config_default(&cfg);
     printf("relaxation: one iteration (eq 11 product, mixing, pressures) against streaming the kernel once\n");
     printf("%6s %10s %14s %14s %8s\n", "N", "kernel", "ms/iteration", "ms/stream", "ratio");
-    const size_t ns[] = { 500, 1000, 2000, 4000 };
-    for (size_t a = 0; a < 4; a++) {
+    size_t ns[] = { 500, 1000, 2000, 4000 }, nsizes = 4;
+    if (getenv("BENCH_N") && atol(getenv("BENCH_N")) > 0) {
+        ns[0] = (size_t)atol(getenv("BENCH_N"));
+        nsizes = 1;
+    }
+    int failed = 0;
+    for (size_t a = 0; a < nsizes; a++) {
         for (int kind = 0; kind < 2; kind++) {
             cfg.nodes = ns[a];
             adh_grid *g = adh_grid_alloc(cfg.nodes, adh_config_spacing(&cfg));
@@ -123,8 +132,12 @@ int main(int argc, char **argv)
                 adh_run run;
                 adh_run_init(&run);
                 double t0 = now();
-                adh_protocol_run(g, k, &cfg.mat, &rs, &cfg.proto, NULL, NULL, &run);
+                int rc = adh_protocol_run(g, k, &cfg.mat, &rs, &cfg.proto, NULL, NULL, &run);
                 t[r] = now() - t0;
+                if (rc != ADH_SUCCESS) {
+                    fprintf(stderr, "bench-relax: the cycle with %s failed: %s\n", name, adh_strerror(rc));
+                    failed = 1;
+                }
                 iters = run.iterations;
                 steps = run.nrows;
                 contact_iters = contact_steps = 0;
@@ -145,5 +158,5 @@ int main(int argc, char **argv)
         adh_kernel_free(k);
         adh_grid_free(g);
     }
-    return 0;
+    return failed;
 }

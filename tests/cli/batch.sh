@@ -42,18 +42,21 @@ check "a force table streamed to a full disk exits 2 and says so ($(cat "$TMP/st
 "$ADHERE" --batch -q --no-plot --plots=force -N 100 --eps=10pm --turn=-1nm -o "$TMP/only" 2>/dev/null
 check "--plots=force writes no contact.tsv and no profiles.tsv" sh -c "[ -s '$TMP/only/force.tsv' ] && [ ! -e '$TMP/only/contact.tsv' ] && [ ! -e '$TMP/only/profiles.tsv' ]"
 
-# SIGINT halfway: tables valid, marked partial, exit 130. The paper's
-# mixing rule keeps this run going well past the 2 s mark.
-"$ADHERE" --batch -q --no-plot -N 200 --eps=0.5pm --mixing=paper -o "$TMP/int" >/dev/null 2>"$TMP/stderr" &
+# SIGINT during the run: tables valid, marked partial, exit 130. Sent once
+# the first step is solved (ADHERE_READY_FILE, see adhere(1)), not after a
+# guessed sleep; the paper's mixing rule keeps this run going for minutes.
+ADHERE_READY_FILE="$TMP/ready" "$ADHERE" --batch -q --no-plot -N 200 --eps=0.5pm --mixing=paper -o "$TMP/int" \
+    >/dev/null 2>"$TMP/stderr" &
 pid=$!
-sleep 2
+wait_file "$TMP/ready" 60 "$pid"
+check "the first step creates \$ADHERE_READY_FILE" [ -e "$TMP/ready" ]
 kill -INT $pid
 wait $pid
 rc=$?
 check "SIGINT ends the batch with status 130 (got $rc)" [ "$rc" -eq 130 ]
 check "force.tsv says it is partial" grep -q "^# PARTIAL: interrupted" "$TMP/int/force.tsv"
 check "summary.tsv says complete 0" grep -qx "complete	0" "$TMP/int/summary.tsv"
-n=$(grep -cv '^#' "$TMP/int/force.tsv")
-check "the rows computed so far are kept ($n lines)" [ "$n" -gt 10 ]
+n=$(grep -v '^#' "$TMP/int/force.tsv" | tail -n +2 | wc -l)
+check "the rows computed so far are kept ($n rows)" [ "$n" -ge 1 ]
 check "every kept row has all 13 columns" awk -F'\t' '!/^#/ && NF != 13 {bad=1} END {exit bad}' "$TMP/int/force.tsv"
 done_testing

@@ -23,9 +23,12 @@ done
 keys=$("$ADHERE" --list-keys | cut -f1)
 check "--list-keys prints the key table" [ -n "$keys" ]
 keysec=$(sed -n '/^\.Sh KEYS/,/^\.Sh /p' man/adhere.1)
-printf '%s\n' "$keys" | while IFS= read -r k; do
+# read from a file, not a pipe: a loop in a pipeline runs in a subshell,
+# and its failures would not reach done_testing's exit status
+printf '%s\n' "$keys" >"$TMP/keys"
+while IFS= read -r k; do
     [ -n "$k" ] || continue
     esc=$(printf '%s' "$k" | sed 's/[][\.*^$]/\\&/g; s/-/\\\\-/g')
-    if printf '%s' "$keysec" | grep -q -- "$esc"; then echo "ok - key '$k' is in the KEYS section"; else echo "not ok - key '$k' is missing from the KEYS section"; fi
-done
+    if printf '%s' "$keysec" | grep -q -- "$esc"; then ok "key '$k' is in the KEYS section"; else not_ok "key '$k' is missing from the KEYS section"; fi
+done <"$TMP/keys"
 done_testing

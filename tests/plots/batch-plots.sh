@@ -14,7 +14,7 @@ no() { n=$((n + 1)); failed=$((failed + 1)); echo "not ok $n - $1"; }
 check() { if eval "$1"; then ok "$2"; else no "$2"; fi; }
 
 if ! command -v gnuplot >/dev/null 2>&1; then
-    echo "ok 1 - # SKIP gnuplot is not installed"
+    echo "ok 1 # SKIP gnuplot is not installed (make deps installs it)"
     echo "1..1"
     exit 0
 fi

@@ -1,7 +1,8 @@
 #!/bin/sh
 # The key table is one table: every key --list-keys prints must be in the
 # man page's KEYS section and on the help screen, and every :set name the
-# program knows must be in the REPLAY SCRIPTS section. Prints TAP.
+# program knows must be in the REPLAY SCRIPTS section. Prints TAP; exits 1
+# when any case failed.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 src=${ADHERE_SRC:-$(cd "$here/../.." && pwd)}
@@ -11,9 +12,9 @@ export LC_ALL=C.UTF-8
 unset TERM
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-n=0
+n=0 failed=0
 pass() { n=$((n + 1)); echo "ok $n - $*"; }
-fail() { n=$((n + 1)); echo "not ok $n - $*"; }
+fail() { n=$((n + 1)); failed=$((failed + 1)); echo "not ok $n - $*"; }
 
 "$bin" --list-keys >"$work/keys" 2>"$work/err"
 rc=$?
@@ -72,3 +73,4 @@ else
     sed 's/^/#   /' "$work/lint"
 fi
 echo "1..$n"
+[ "$failed" -eq 0 ]

@@ -1,11 +1,24 @@
 #!/bin/sh
 # Replay tests, tig/vis style: every cases/NAME.keys runs headless (no tty,
-# stdin at EOF, TERM unset) and its final screen must equal cases/NAME.screen,
-# each screen it :dumps (FILE.txt) must equal cases/FILE.txt, its exit status
+# stdin at EOF, TERM unset) and its final screen must match cases/NAME.screen,
+# each screen it :dumps (FILE.txt) must match cases/FILE.txt, its exit status
 # cases/NAME.status (default 0) and its stderr cases/NAME.stderr (default
-# empty). Then checks that say why the screens matter. Prints TAP.
+# empty, else exactly). Then checks that say why the screens matter. Prints
+# TAP; exits 1 when any case failed.
 #   tests/replay/run.sh            run
 #   tests/replay/run.sh --update   rewrite the expected files (then read them!)
+#   cases/NAME.args                extra command-line arguments for the case
+#
+# How a screen matches its golden (screencmp.awk says it in full): text
+# exactly, every number within one unit of its last printed digit, and
+# within more where cases/NAME.tol (for NAME.screen and every FILE.txt the
+# case dumps) says so, one rule a line:
+#     REGEX  TOLERANCE      TOLERANCE: N% | N (printed unit) | * | line
+# e.g. "point +[0-9]+ of  *" (how many continuation points there are is a
+# floating-point accident: never asserted exactly), "F +-?[0-9.]+ nN  0.5%".
+# A golden must pass against the program built with another BLAS and at
+# -O0 (make check-fp): give a number the tolerance it needs there, and say
+# why in a comment in the .tol file.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 src=${ADHERE_SRC:-$(cd "$here/../.." && pwd)}
@@ -19,8 +32,9 @@ work=$(mktemp -d)
 [ -n "${KEEP:-}" ] || trap 'rm -rf "$work"' EXIT
 echo "# work in $work"
 n=0
+failed=0
 pass() { n=$((n + 1)); echo "ok $n - $*"; }
-fail() { n=$((n + 1)); echo "not ok $n - $*"; }
+fail() { n=$((n + 1)); failed=$((failed + 1)); echo "not ok $n - $*"; }
 check() { what=$1; shift; if "$@"; then pass "$what"; else fail "$what"; fi; }
 
 if [ ! -x "$bin" ]; then
@@ -44,10 +58,19 @@ run_case() {
     echo "# $1: exit $rc in $(($(date +%s) - t0)) s"
 }
 
-same_file() {  # expected got
+same_file() {  # expected got: byte for byte
     if [ -f "$1" ] && [ -f "$2" ] && cmp -s "$1" "$2"; then return 0; fi
     diff -u "$1" "$2" 2>&1 | head -40 | sed 's/^/#   /'
     return 1
+}
+same_screen() {  # NAME expected got: text exactly, numbers within tolerance
+    if [ ! -f "$2" ] || [ ! -f "$3" ]; then
+        echo "#   missing: $(ls "$2" "$3" 2>&1 >/dev/null)"
+        return 1
+    fi
+    tol=""
+    [ -f "$here/cases/$1.tol" ] && tol="$here/cases/$1.tol"
+    awk -v tolfile="$tol" -f "$here/screencmp.awk" "$2" "$3"
 }
 
 for keys in "$here"/cases/*.keys; do
@@ -70,13 +93,13 @@ for keys in "$here"/cases/*.keys; do
         check "$name: nothing on stderr" sh -c "[ ! -s '$d/stderr' ] || { sed 's/^/#   /' '$d/stderr'; false; }"
     fi
     if [ -f "$here/cases/$name.screen" ]; then
-        check "$name: final screen as expected" same_file "$here/cases/$name.screen" "$d/$name.screen"
+        check "$name: final screen as expected" same_screen "$name" "$here/cases/$name.screen" "$d/$name.screen"
     else
         check "$name: no screen written (the script failed)" [ ! -e "$d/$name.screen" ]
     fi
     for f in "$d"/*.txt; do
         [ -f "$f" ] || continue
-        check "$name: :dump $(basename "$f") as expected" same_file "$here/cases/$(basename "$f")" "$f"
+        check "$name: :dump $(basename "$f") as expected" same_screen "$name" "$here/cases/$(basename "$f")" "$f"
     done
 done
 
@@ -232,12 +255,21 @@ cp "$here/cases/start.keys" "$work/env/"
 (cd "$work/env" && TERM=dumb LINES=10 COLUMNS=20 "$bin" --replay=start.keys --screen=start.screen --no-clock </dev/null >/dev/null 2>&1)
 check "TERM, LINES and COLUMNS do not change a replay's screen" same_file "$W/start/start.screen" "$work/env/start.screen"
 
-# A signal ends a replay cleanly with 128 + its number.
+# A signal ends a replay cleanly with 128 + its number. Sent once the first
+# step is solved (ADHERE_READY_FILE, see adhere(1)), not after a guessed sleep.
 mkdir -p "$work/sig"
 printf 'r :wait\n' >"$work/sig/long.keys"
-(cd "$work/sig" && timeout --preserve-status -s TERM 1 "$bin" --replay=long.keys --screen=s.txt </dev/null >/dev/null 2>err)
+(cd "$work/sig" && ADHERE_READY_FILE=ready exec "$bin" --replay=long.keys --screen=s.txt \
+    </dev/null >/dev/null 2>err) &
+pid=$!
+i=0
+while [ ! -e "$work/sig/ready" ] && kill -0 "$pid" 2>/dev/null && [ "$i" -lt 1200 ]; do sleep 0.05; i=$((i + 1)); done
+check "a replay's first step creates \$ADHERE_READY_FILE" [ -e "$work/sig/ready" ]
+kill -TERM "$pid" 2>/dev/null
+wait "$pid"
 rc=$?
 check "SIGTERM during a solve exits 130, as --batch (got $rc)" [ "$rc" = 130 ]
 check "and says so" grep -q "stopped by signal 15" "$work/sig/err"
 
 echo "1..$n"
+[ "$failed" -eq 0 ]

@@ -1,13 +1,14 @@
 #!/bin/sh
 # Through a real terminal, as a person would: tmux runs adhere, send-keys
-# types, capture-pane reads the screen. Skipped only when tmux is absent.
-# Prints TAP.
+# types, capture-pane reads the screen. Skipped only when tmux is absent
+# (a skip, which fails the run under CI=true). Prints TAP; exits 1 when any
+# case failed.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 src=${ADHERE_SRC:-$(cd "$here/../.." && pwd)}
 bin=${ADHERE_BIN:-$src/adhere}
 if ! command -v tmux >/dev/null 2>&1; then
-    echo "ok 1 # SKIP tmux is not installed"
+    echo "ok 1 # SKIP tmux is not installed (make deps installs it)"
     echo "1..1"
     exit 0
 fi
@@ -17,9 +18,9 @@ k=0
 sock=adhere-test-$$-$k
 T() { tmux -L "$sock" -f /dev/null "$@"; }
 trap 'T kill-server 2>/dev/null; rm -rf "$work"' EXIT
-n=0
+n=0 failed=0
 pass() { n=$((n + 1)); echo "ok $n - $*"; }
-fail() { n=$((n + 1)); echo "not ok $n - $*"; }
+fail() { n=$((n + 1)); failed=$((failed + 1)); echo "not ok $n - $*"; }
 
 screen() { T capture-pane -p -t t; }
 # wait_for TEXT [SECONDS]: until the pane shows TEXT (a fixed string).
@@ -89,8 +90,17 @@ T send-keys -t t Space
 check "a key pauses the run" wait_for "paused at h0"
 
 T resize-window -t t -x 80 -y 24
-sleep 0.3
-check "a resize redraws at the new size" sh -c "tmux -L '$sock' capture-pane -p -t t | head -1 | grep -q ' ? help  q quit *\$' && [ \$(tmux -L '$sock' capture-pane -p -t t | wc -L) -le 80 ]"
+# redrawn: the title bar ends at column 80 with its key hints
+resized() { [ "$(screen | head -1 | wc -L)" -le 80 ] && screen | head -1 | grep -q ' ? help  q quit *$'; }
+wait_until() {  # wait_until SECONDS COMMAND...: until COMMAND succeeds
+    i=0 limit=$(($1 * 10)); shift
+    while ! "$@"; do
+        [ "$i" -ge "$limit" ] && { screen | sed 's/^/#   | /'; return 1; }
+        sleep 0.1; i=$((i + 1))
+    done
+}
+check "a resize redraws at the new size" wait_until 10 resized
+check "and nothing is wider than 80 columns" [ "$(screen | wc -L)" -le 80 ]
 
 T send-keys -t t q
 check "q quits with status 0" [ "$(exit_status)" = 0 ]
@@ -114,3 +124,4 @@ kill -TERM "$pid" 2>/dev/null
 check "SIGTERM during a run ends it with status 130, as --batch" [ "$(exit_status)" = 130 ]
 check "and the terminal is restored" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
 echo "1..$n"
+[ "$failed" -eq 0 ]

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "adhere/params.h"
@@ -251,7 +252,17 @@ static void test_death_and_hang(void)
     memset(&mine, 0, sizeof mine);
     mine.sa_handler = SIG_DFL;
     sigaction(SIGPIPE, &mine, NULL);
-    sleep(1);   /* let it die first, so the writes meet a closed pipe */
+    /* let it die first, so the writes meet a closed pipe: wait for its exit
+     * (WNOWAIT leaves the status for adh_gnuplot_sync to read) */
+    siginfo_t si;
+    int died = 0;
+    for (int i = 0; i < 1000 && !died; i++) {
+        memset(&si, 0, sizeof si);
+        died = waitid(P_ALL, 0, &si, WEXITED | WNOHANG | WNOWAIT) == 0 && si.si_pid != 0;
+        if (!died)
+            nanosleep(&(struct timespec){ 0, 10000000 }, NULL);
+    }
+    ok(died, "the dying gnuplot has exited before anything is written to it");
     for (int i = 0; i < 2000; i++)
         adh_gnuplot_cmd(gp, "set title \"%d filling the pipe past its buffer\"", i);
     int rc = adh_gnuplot_sync(gp, 5, msg, sizeof msg);
@@ -471,10 +482,17 @@ static void test_data_dir(void)
     mkdir(d, 0755);
     path_in(buf, sizeof buf, d, "gnuplot");
     mkdir(buf, 0755);
+    const char *was = getenv("ADHERE_DATADIR");
+    char saved[4096] = "";
+    if (was)
+        snprintf(saved, sizeof saved, "%s", was);
     setenv("ADHERE_DATADIR", d, 1);
     ok(adh_data_dir("gnuplot", buf, sizeof buf) == 0 && strstr(buf, work) == buf,
        "$ADHERE_DATADIR comes first: %s", buf);
-    unsetenv("ADHERE_DATADIR");
+    if (was)
+        setenv("ADHERE_DATADIR", saved, 1);
+    else
+        unsetenv("ADHERE_DATADIR");
     ok(adh_data_dir("gnuplot", buf, sizeof buf) == 0, "an installed or source style dir: %s",
        buf);
     adh_config cfg;
@@ -520,8 +538,7 @@ int main(void)
     test_data_dir();
     test_missing();
     if (!have_gnuplot()) {
-        printf("# gnuplot is not installed: process and PNG checks skipped\n");
-        ok(1, "skipped: no gnuplot");
+        tap_skip("gnuplot is not installed: no process or PNG checks");
         return tap_done();
     }
     test_process();

@@ -1,6 +1,7 @@
 /* Both kernels against the closed form for a uniform pressure on a disk:
  * u(r) = -(2/E) p D(r, a), D(r,a) = (4a/pi) E(r^2/a^2) inside, and
- * (4r/pi)[E(a^2/r^2) - (1 - a^2/r^2) K(a^2/r^2)] outside (DESIGN.md 2). */
+ * (4r/pi)[E(a^2/r^2) - (1 - a^2/r^2) K(a^2/r^2)] outside, with D(r,a) the
+ * integral of the kernel k(r,t) t dt over t from 0 to a (include/adhere/kernel.h). */
 #include <math.h>
 #include <stdlib.h>
 

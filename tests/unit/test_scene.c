@@ -102,13 +102,16 @@ static void figure_parameters(void)
         ok(p.jobs >= 1 && c.sweep.plot == ADH_SWEEP_PLOT_JUMP && has_stored(&p, "jump.png") && has_stored(&p, "sweep.tsv"),
            "fig3 writes sweep.tsv and jump.png (%d jobs)", p.jobs);
         adh_config r;
-        for (size_t i = 0; i < c.sweep.n; i++) {
+        size_t wrong = c.sweep.n;   /* the first run whose sigma is off, if any */
+        for (size_t i = 0; i < c.sweep.n && wrong == c.sweep.n; i++) {
             adh_config_sweep_run(&c, i, &r);
             if (fabs(sigma_of(&r) - c.sweep.values[i]) > 1e-9 * c.sweep.values[i])
-                break;
-            if (i + 1 == c.sweep.n)
-                ok(1, "every fig3 run has the sigma it names (E from eq 17)");
+                wrong = i;
         }
+        ok(c.sweep.n > 0 && wrong == c.sweep.n, "every fig3 run has the sigma it names (E from eq 17)%s",
+           wrong < c.sweep.n ? ": one is off" : "");
+        if (wrong < c.sweep.n)
+            printf("#   run %zu: sigma %g, named %g\n", wrong, sigma_of(&r), c.sweep.values[wrong]);
         ok(same(c.mat.z0, 0.5e-9), "fig3: z0 = 0.5 nm");
     }
     if (!load("fig4", &c)) {
