@@ -168,7 +168,7 @@ int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, c
                 adh_sweep_jumped(r, rc.proto.step));
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        fprintf(f, "%s\n", r->interrupted ? "interrupted" : adh_strerror(status[i]));
+        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : adh_run_status_word(r));
     }
     return 0;
 }
@@ -233,7 +233,7 @@ static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, con
     char keynames[ADH_STATIC_KEYS][32];
     adh_summary_extra extra[ADH_STATIC_KEYS];
     size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? adh_static_summary_keys(sres, "", keynames, extra) : 0;
-    adh_tables t = { &rcfg, run, extra, nextra, partial, note };
+    adh_tables t = { &rcfg, run, extra, nextra, partial, note, NULL };
     if (adh_write_atomic(dir, "force.tsv", adh_write_force, &t, why, sizeof why) != 0 ||
         adh_write_atomic(dir, "summary.tsv", adh_write_summary, &t, why, sizeof why) != 0 ||
         (run->nturns && adh_write_atomic(dir, "turns.tsv", adh_write_turns, &t, why, sizeof why) != 0)) {
@@ -242,6 +242,11 @@ static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, con
     }
     if (partial)
         return run->interrupted ? ADH_EXIT_INTERRUPTED : ADH_EXIT_SOLVER;
+    if (run->unconverged && !cfg->allow_unconverged) {
+        fprintf(stderr, "adhere: warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)\n",
+                i + 1, run->unconverged, run->nrows);
+        return ADH_EXIT_SOLVER;
+    }
     return ADH_EXIT_OK;
 }
 
@@ -359,6 +364,8 @@ int adh_sweep_main(const adh_cli *cli)
             exit_status = worse(exit_status, ADH_EXIT_INTERRUPTED);
         else if (status[i] != ADH_SUCCESS)
             exit_status = worse(exit_status, ADH_EXIT_SOLVER);
+        else if (runs[i].unconverged && !cfg->allow_unconverged)
+            exit_status = worse(exit_status, ADH_EXIT_SOLVER);   /* sweep.tsv says unconverged */
     }
     sweep_tables st = { cfg, runs, sres, status };
     if (!out) {
@@ -368,7 +375,7 @@ int adh_sweep_main(const adh_cli *cli)
             if (tables[i] < 0) /* never started: its tables say interrupted */
                 tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], out);
             exit_status = worse(exit_status, tables[i]);
-            if (tables[i] == ADH_EXIT_OK)
+            if (tables[i] == ADH_EXIT_OK || (tables[i] == ADH_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS))
                 exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], out));
         }
         if (adh_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {

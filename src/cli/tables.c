@@ -43,6 +43,15 @@ int adh_write_force(FILE *f, const void *ctx)
     return 0;
 }
 
+const char *adh_run_status_word(const adh_run *r)
+{
+    if (r->interrupted)
+        return "interrupted";
+    if (r->status != ADH_SUCCESS)
+        return adh_strerror(r->status);
+    return r->unconverged ? "unconverged" : "success";
+}
+
 static void kv(FILE *f, const char *k, double v)
 {
     fprintf(f, "%s\t%.17g\n", k, v);
@@ -97,7 +106,7 @@ int adh_write_summary(FILE *f, const void *ctx)
     kv(f, "seconds", r->seconds);
     kv(f, "converged", (r->unconverged == 0 && r->status == ADH_SUCCESS) ? 1 : 0);
     kv(f, "complete", t->partial ? 0 : 1);
-    fprintf(f, "status\t%s\n", r->interrupted ? "interrupted" : adh_strerror(r->status));
+    fprintf(f, "status\t%s\n", t->status ? t->status : adh_run_status_word(r));
     return 0;
 }
 

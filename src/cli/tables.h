@@ -30,8 +30,12 @@ typedef struct adh_tables {
     size_t nextra;
     int partial;                     /* the run was interrupted or failed */
     const char *note;                /* why, for the comment lines */
+    const char *status;              /* summary status word; NULL = from the run */
 } adh_tables;
 
+/* The summary's status word: interrupted, unconverged (steps at the
+ * iteration cap), success, or the solver's error. */
+const char *adh_run_status_word(const adh_run *r);
 int adh_write_force(FILE *f, const void *tables);
 int adh_write_summary(FILE *f, const void *tables);
 int adh_write_turns(FILE *f, const void *tables);
