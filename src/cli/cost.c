@@ -140,11 +140,14 @@ static void *worker(void *arg)
         c.kernel = cr->kernel;
         double t0 = adh_clock_seconds();
         adh_grid *g = adh_grid_alloc(c.nodes, adh_config_spacing(&c));
-        adh_kernel *k = g ? adh_kernel_alloc(g, c.kernel) : NULL;
+        int kst = ADH_ENOMEM;
+        adh_kernel *k = g ? adh_kernel_alloc_cancel(g, c.kernel, c.relax.cancel, &kst) : NULL;
         cr->kernel_seconds = adh_clock_seconds() - t0;
         adh_run run;
         adh_run_init(&run);
-        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, adh_interrupt_step, NULL, &run) : ADH_ENOMEM;
+        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, adh_interrupt_step, NULL, &run) : kst;
+        if (kst == ADH_EINTR)
+            run.interrupted = 1;
         if (run.interrupted)
             cr->status = ADH_CONTINUE;
         measure(cr, &run, c.proto.step);
@@ -373,9 +376,12 @@ int adh_cost_main(const adh_cli *cli)
         sc.nodes = nodes[a] > sc.nodes ? nodes[a] : sc.nodes;
     sc.kernel = ADH_KERNEL_RING;
     adh_grid *g = adh_grid_alloc(sc.nodes, adh_config_spacing(&sc));
-    adh_kernel *k = g ? adh_kernel_alloc(g, sc.kernel) : NULL;
+    int kst = ADH_ENOMEM;
+    adh_kernel *k = g ? adh_kernel_alloc_cancel(g, sc.kernel, sc.relax.cancel, &kst) : NULL;
     adh_run srun;
     adh_run_init(&srun);
+    if (kst == ADH_EINTR)
+        srun.interrupted = 1;
     adh_static_result sres;
     memset(&sres, 0, sizeof sres);
     int src = k ? adh_cli_static_run(&sc, g, k, adh_interrupt_step, NULL, &srun, &sres) : ADH_ENOMEM;

@@ -311,7 +311,7 @@ int adh_sweep_main(const adh_cli *cli)
     adh_kernel *k = NULL;
     if (cfg->mode != ADH_MODE_RIGID) {
         g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
-        k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;
+        k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;   /* built before the handler: a signal still ends the program */
         if (!k) {
             fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
             adh_grid_free(g);
