@@ -339,6 +339,7 @@ int adh_sweep_main(const adh_cli *cli)
         openblas_set_num_threads(1);
 
     adh_interrupt_catch();
+    adh_ready_phase("sweep");
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status, .out = out, .tables = tables };
     pthread_mutex_init(&job.lock, NULL);

@@ -98,4 +98,12 @@ check "no run is listed as success" sh -c "! awk -F'\t' '\$NF == \"success\"' '$
 nr=$(awk -F'\t' '$NF == "not_run"' "$TMP/cost/cost.tsv" | wc -l)
 check "runs never started say not_run ($nr of 8)" [ "$nr" -ge 1 ]
 check "and have no time (nan, not 0 s)" awk -F'\t' '$NF == "not_run" && $4 != "nan" {bad=1} END {exit bad}' "$TMP/cost/cost.tsv"
+# 6. A sweep: every run polls the same flag; none is listed as done.
+printf '[sweep]\nE = 0.3GPa, 0.5GPa, 1GPa, 2GPa\n' >"$TMP/sweep.scene"
+signal_run sweep sweep INT --batch -q --no-plot -N 1000 --eps=1e-22 --max-iter=100000000 --start=0.5nm --turn=-1nm -o "$TMP/sweep" "$TMP/sweep.scene"
+check "in a sweep: SIGINT heard (phase announced $came, exit $rc after ${took} s)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
+check "in a sweep: stopped within 5 s (${took} s)" prompt
+check "sweep.tsv lists every run as interrupted" \
+    awk -F'\t' '!/^#/ && $1 != "run" {n++; if ($NF != "interrupted") bad=1} END {exit bad || n != 4}' "$TMP/sweep/sweep.tsv"
 done_testing
