@@ -195,6 +195,7 @@ int adh_batch_main(const adh_cli *cli)
              * here is still caught: gnuplot finishes its file, the
              * temporaries go, and the exit says interrupted. */
             char msg[1024] = "";
+            adh_ready_phase("plot");
             int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);

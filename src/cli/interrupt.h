@@ -20,7 +20,7 @@ int adh_interrupt_exit(void);
 int adh_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx);
 
 /* Test hook: with ADHERE_READY_FILE=PATH in the environment, a line naming
- * each phase (relax, static, rigid, reference, dwell, cost, sweep) is
+ * each phase (relax, static, rigid, reference, dwell, plot, cost, sweep) is
  * appended to PATH as it begins, so a test can signal a phase without
  * guessing its timing. Nothing happens without the variable. */
 void adh_ready_phase(const char *phase);

@@ -59,7 +59,7 @@ mkfifo "$TMP/fifo" 2>/dev/null
 if [ -p "$TMP/fifo" ]; then
     refused "cannot read the replay script: not a regular file" timeout 10 "$ADHERE" --replay="$TMP/fifo"
 else
-    ok "# SKIP mkfifo failed: no FIFO to try"
+    T=$((T + 1)); echo "ok $T # SKIP mkfifo failed: no FIFO to try"
 fi
 "$ADHERE" --batch -q --mode=rigid -N 10 --turn=-1nm -o "$TMP/rigid" >/dev/null 2>"$TMP/rigid.err"
 rc=$?

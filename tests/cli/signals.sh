@@ -98,7 +98,30 @@ check "no run is listed as success" sh -c "! awk -F'\t' '\$NF == \"success\"' '$
 nr=$(awk -F'\t' '$NF == "not_run"' "$TMP/cost/cost.tsv" | wc -l)
 check "runs never started say not_run ($nr of 8)" [ "$nr" -ge 1 ]
 check "and have no time (nan, not 0 s)" awk -F'\t' '$NF == "not_run" && $4 != "nan" {bad=1} END {exit bad}' "$TMP/cost/cost.tsv"
-# 6. A sweep: every run polls the same flag; none is listed as done.
+# 6. Ctrl-C while plotting reaches gnuplot too (the whole process group):
+# the tables stay complete, no temporary PNG, data file or directory is
+# left, the exit says interrupted.
+if command -v setsid >/dev/null 2>&1 && command -v gnuplot >/dev/null 2>&1; then
+    mkdir -p "$TMP/tmpdir"
+    rm -f "$TMP/plot.ready"
+    TMPDIR="$TMP/tmpdir" ADHERE_READY_FILE="$TMP/plot.ready" setsid "$ADHERE" --batch -q -N 200 --eps=10pm -d 0.5nm --turn=-1nm \
+        -o "$TMP/plot" >/dev/null 2>"$TMP/plot.stderr" &
+    pid=$!
+    came=0
+    wait_phase "$TMP/plot.ready" plot "$pid" && came=1
+    kill -INT -- "-$pid" 2>/dev/null || kill -INT "$pid"
+    wait "$pid"
+    rc=$?
+    check "Ctrl-C while plotting: exit 130 (phase announced $came, got $rc: $(head -c 200 "$TMP/plot.stderr"))" \
+        sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
+    check "no temporary file in the output directory" no_temporaries "$TMP/plot"
+    check "no plot data directory left in TMPDIR" sh -c "[ -z \"\$(ls -A '$TMP/tmpdir')\" ]"
+    check "the tables are complete" grep -qx 'complete	1' "$TMP/plot/summary.tsv"
+else
+    T=$((T + 1)); echo "ok $T # SKIP setsid or gnuplot missing: no process group to interrupt"
+fi
+
+# 7. A sweep: every run polls the same flag; none is listed as done.
 printf '[sweep]\nE = 0.3GPa, 0.5GPa, 1GPa, 2GPa\n' >"$TMP/sweep.scene"
 signal_run sweep sweep INT --batch -q --no-plot -N 1000 --eps=1e-22 --max-iter=100000000 --start=0.5nm --turn=-1nm -o "$TMP/sweep" "$TMP/sweep.scene"
 check "in a sweep: SIGINT heard (phase announced $came, exit $rc after ${took} s)" \
