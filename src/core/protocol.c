@@ -52,7 +52,9 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     for (size_t i = 0; i < ps->nturns; i++) {
         double t = ps->turns[i];
         if (!isfinite(t) || t < -0.02 * m->R) {
-            snprintf(why, whylen, "turning point %g m is too deep: the model (h0 << R) allows down to -R/50 = %g m", t, -0.02 * m->R);
+            int dflt = ps->nturns == 1 && t == adh_protocol_settings_default().turns[0];
+            snprintf(why, whylen, "turning point %g m%s is too deep: the model (h0 << R) allows down to -R/50 = %g m%s", t,
+                     dflt ? " (the default turn)" : "", -0.02 * m->R, dflt ? "; give a shallower --turn (or turns in the scene), or a larger R" : "");
             return ADH_EINVAL;
         }
     }
