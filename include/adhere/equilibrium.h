@@ -32,6 +32,7 @@
 #ifndef ADHERE_EQUILIBRIUM_H
 #define ADHERE_EQUILIBRIUM_H
 
+#include <signal.h>
 #include <stddef.h>
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
@@ -56,6 +57,8 @@ typedef struct adh_static_settings {
                             for the whole S (the default -5 nm does) */
     size_t max_points;   /* cap on accepted points (ADH_EMAXITER beyond) */
     size_t max_newton;   /* Newton iterations per attempted step */
+    const volatile sig_atomic_t *cancel; /* polled before every Newton iteration:
+                            nonzero stops with ADH_EINTR; NULL = never */
 } adh_static_settings;
 
 adh_static_settings adh_static_settings_default(void);
@@ -112,7 +115,8 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
 /* Advances by one accepted point. ADH_CONTINUE: more to come; ADH_SUCCESS:
  * this point is the end (h0 = h0_end); otherwise an error (ADH_ESTALL when
  * the step fell below ds_min, ADH_EMAXITER past max_points, ADH_ENAN,
- * ADH_EGRID when the contact reaches 0.9 Rmax). */
+ * ADH_EGRID when the contact reaches 0.9 Rmax, ADH_EINTR when the cancel
+ * flag was raised: the current point is then the last accepted one). */
 int adh_static_iterate(adh_static *w);
 
 /* The current point (borrowed; u, h, p, h0) and its continuation data. */
@@ -126,7 +130,7 @@ size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds);
 /* The whole curve from h0_start down to h0_end: appends one row per point to
  * run (adh_observe plus branch = direction, path 0, converged 1, stable,
  * iters = Newton iterations), calls cb after each (nonzero stops it:
- * run->interrupted), and fills res (may be NULL). run->start and
+ * run->interrupted; so does the settings' cancel flag), and fills res (may be NULL). run->start and
  * run->jump_in_h0 are set; run->turns is left empty (one curve, no unloading
  * branches). Returns ADH_SUCCESS or the error that stopped it (the rows so
  * far are kept; run->status says the same). */

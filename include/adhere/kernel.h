@@ -8,6 +8,8 @@
 #ifndef ADHERE_KERNEL_H
 #define ADHERE_KERNEL_H
 
+#include <signal.h>
+
 #include "adhere/grid.h"
 
 typedef enum adh_kernel_type {
@@ -18,6 +20,11 @@ typedef enum adh_kernel_type {
 typedef struct adh_kernel adh_kernel;
 
 adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type);
+/* The same, polling the caller's cancel flag (may be NULL) once per column:
+ * a large ring kernel takes seconds. NULL with *status ADH_EINTR when the
+ * flag was raised, ADH_ENOMEM when memory ran out. */
+adh_kernel *adh_kernel_alloc_cancel(const adh_grid *g, adh_kernel_type type,
+                                    const volatile sig_atomic_t *cancel, int *status);
 void adh_kernel_free(adh_kernel *k);
 adh_kernel_type adh_kernel_kind(const adh_kernel *k);
 const char *adh_kernel_name(adh_kernel_type type);

@@ -35,7 +35,8 @@ double adh_protocol_auto_start(const adh_material *m, double step);
 
 /* Checks the settings and that the grid can hold the run: the pressure at
  * Rmax negligible and the contact expected well inside Rmax at the deepest
- * turn. ADH_EINVAL / ADH_EGRID with a sentence in why. */
+ * turn. ADH_EINVAL / ADH_EGRID with a sentence in why. g may be NULL (rigid
+ * spheres, no elastic solve): then only the drive settings are checked. */
 int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
                        const adh_grid *g, char *why, size_t whylen);
 
@@ -65,7 +66,7 @@ typedef struct adh_run {
     double seconds;         /* total wall time of the solves */
     size_t unconverged;     /* steps that hit the iteration cap */
     int status;             /* ADH_SUCCESS or the error that stopped the run */
-    int interrupted;        /* 1 when a callback asked to stop */
+    int interrupted;        /* 1 when a callback or the cancel flag asked to stop */
 } adh_run;
 
 void adh_run_init(adh_run *run);
@@ -79,7 +80,9 @@ const adh_turn_result *adh_run_main_turn(const adh_run *run);
 typedef int (*adh_step_cb)(const adh_obs *row, const adh_run *run, void *ctx);
 
 /* Runs the whole protocol. Returns ADH_SUCCESS, or the first error (the run
- * keeps every row computed so far, run->status says why it stopped). */
+ * keeps every row computed so far, run->status says why it stopped). A
+ * raised rs->cancel flag or a callback asking to stop ends it with
+ * ADH_SUCCESS and run->interrupted = 1; the step under way is dropped. */
 int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
                      const adh_relax_settings *rs, const adh_protocol_settings *ps,
                      adh_step_cb cb, void *ctx, adh_run *run);

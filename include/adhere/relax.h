@@ -7,6 +7,7 @@
 #ifndef ADHERE_RELAX_H
 #define ADHERE_RELAX_H
 
+#include <signal.h>
 #include <stddef.h>
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
@@ -30,6 +31,10 @@ typedef struct adh_relax_settings {
     double mix_down;     /* factor applied on oscillation or growth */
     double mix_up;       /* factor applied otherwise, up to mix_max */
     size_t max_iter;     /* cap per drive step; reaching it is reported */
+    /* The caller's cancel flag, or NULL: polled before every iteration, and
+     * nonzero stops the solver with ADH_EINTR (a signal handler may set it;
+     * the core itself knows nothing of signals). */
+    const volatile sig_atomic_t *cancel;
 } adh_relax_settings;
 
 adh_relax_settings adh_relax_settings_default(void);
@@ -38,6 +43,10 @@ int adh_mix_rule_parse(const char *name, adh_mix_rule *rule);
 /* "paper" or "momentum B": the rule as reports name it. */
 void adh_mix_rule_describe(const adh_relax_settings *s, char *buf, size_t len);
 int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t whylen);
+/* The smallest eps the convergence measure can reach in double precision on
+ * n nodes when deformations are up to `depth` (m): its rounding floor,
+ * 256 DBL_EPSILON depth / sqrt(n). Below it every step would run to the cap. */
+double adh_relax_eps_floor(size_t n, double depth);
 
 typedef struct adh_relax adh_relax;
 
@@ -55,11 +64,13 @@ void adh_relax_move(adh_relax *w, double h0_new);
 
 /* Up to max_batch iterations (0: until done). ADH_SUCCESS when converged,
  * ADH_CONTINUE when the batch ended first, ADH_EMAXITER at the cap,
- * ADH_ENAN when the solution stopped being finite. */
+ * ADH_ENAN when the solution stopped being finite, ADH_EINTR when the
+ * settings' cancel flag was raised (the step is left unfinished). */
 int adh_relax_iterate(adh_relax *w, size_t max_batch);
 
 /* Exactly n more iterations at the current position, converged or not: a
- * pause (dwell) at the turning point. ADH_ENAN if the solution breaks. */
+ * pause (dwell) at the turning point. ADH_ENAN if the solution breaks,
+ * ADH_EINTR if the cancel flag was raised first. */
 int adh_relax_dwell(adh_relax *w, size_t n);
 
 /* The current state (borrowed), and replacing it (for undo / restoring a turn). */

@@ -11,7 +11,8 @@ enum adh_status {
     ADH_EMAXITER = 3,    /* iteration cap reached before convergence */
     ADH_ENAN = 4,        /* a NaN or infinity appeared in the solution */
     ADH_EGRID = 5,       /* the grid is too short or too coarse for the state */
-    ADH_ESTALL = 6       /* continuation could not make progress */
+    ADH_ESTALL = 6,      /* continuation could not make progress */
+    ADH_EINTR = 7        /* the caller's cancel flag was raised: stopped on request */
 };
 
 /* A short, constant, human description of a status code. */

@@ -16,6 +16,7 @@
 #include "adhere/status.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
+#include "cli/ready.h"
 #include "cli/rigid.h"
 #include "cli/statics.h"
 #include "cli/sweep.h"
@@ -47,6 +48,14 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
                     o->iters, run->iterations);
         }
     }
+    /* the loading row at the deepest turn: the dwell comes next */
+    if (ctx->cfg->proto.dwell && o->path == 0 && o->branch > 0 && ctx->cfg->mode == ADH_MODE_RELAX) {
+        double deepest = INFINITY;
+        for (size_t i = 0; i < ctx->cfg->proto.nturns; i++)
+            deepest = fmin(deepest, ctx->cfg->proto.turns[i]);
+        if (fabs(o->h0 - deepest) < 1e-6 * ctx->cfg->proto.step)
+            adh_ready_phase("dwell");
+    }
     return adh_interrupt_step(o, run, NULL);
 }
 
@@ -77,14 +86,6 @@ static int make_dir(const char *dir, char *why, size_t n)
     return 0;
 }
 
-/* name (or a comma-separated list) onto the list in buf */
-static void add_unwritten(char *buf, size_t len, const char *name)
-{
-    size_t n = strlen(buf);
-    if (*name && n + 1 < len)
-        snprintf(buf + n, len - n, "%s%s", n ? "," : "", name);
-}
-
 int adh_batch_main(const adh_cli *cli)
 {
     const adh_config *cfg = &cli->cfg;
@@ -100,14 +101,20 @@ int adh_batch_main(const adh_cli *cli)
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
     int rigid = cfg->mode == ADH_MODE_RIGID;
     adh_grid *g = rigid ? NULL : adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
-    adh_kernel *k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;
-    if (!rigid && !k) {
-        fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
-        adh_grid_free(g);
-        return ADH_EXIT_SOLVER;
-    }
-
+    /* caught from here: a large ring kernel takes seconds to build */
     adh_interrupt_catch();
+    int kst = ADH_ENOMEM;
+    adh_kernel *k = g ? adh_kernel_alloc_cancel(g, cfg->kernel, cfg->relax.cancel, &kst) : NULL;
+    if (!rigid && !k) {
+        if (kst == ADH_EINTR)
+            fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
+                    adh_interrupt_signal(), cfg->nodes);
+        else
+            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
+        adh_interrupt_release();
+        adh_grid_free(g);
+        return kst == ADH_EINTR ? adh_interrupt_exit() : ADH_EXIT_SOLVER;
+    }
 
     batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2), 0 };
     if (ctx.stream) {
@@ -117,6 +124,7 @@ int adh_batch_main(const adh_cli *cli)
     adh_run run;
     adh_run_init(&run);
     adh_static_result sres;
+    adh_ready_phase(rigid ? "rigid" : cfg->mode == ADH_MODE_STATIC ? "static" : "relax");
     int rc = rigid ? adh_rigid_run(cfg, on_step, &ctx, &run)
            : cfg->mode == ADH_MODE_STATIC ? adh_cli_static_run(cfg, g, k, on_step, &ctx, &run, &sres)
            : adh_protocol_run(g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
@@ -125,28 +133,41 @@ int adh_batch_main(const adh_cli *cli)
     adh_run_init(&ref);
     adh_static_result rres;
     int want_ref = cli->reference[0] && cfg->mode == ADH_MODE_RELAX && rc == ADH_SUCCESS && !run.interrupted;
-    if (want_ref && adh_cli_static_run(cfg, g, k, NULL, NULL, &ref, &rres) != ADH_SUCCESS) {
-        fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(ref.status));
-        want_ref = 0;
+    if (want_ref) {
+        adh_ready_phase("reference");
+        int rrc = adh_cli_static_run(cfg, g, k, NULL, NULL, &ref, &rres);
+        if (rrc != ADH_SUCCESS && !ref.interrupted) {
+            fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(ref.status));
+            want_ref = 0;
+        }
     }
     if (ctx.progress)
         fprintf(stderr, "\r%*s\r", 100, "");
-    adh_interrupt_release();
 
     int status = ADH_EXIT_OK;
     char note[512] = "";
-    if (run.interrupted) {
-        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", adh_interrupt_signal(), run.nrows);
-        status = ADH_EXIT_INTERRUPTED;
+    if (run.interrupted || ref.interrupted) {
+        if (ref.interrupted)
+            snprintf(note, sizeof note, "interrupted by signal %d during the static reference curve (%zu of its points)",
+                     adh_interrupt_signal(), ref.nrows);
+        else
+            snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", adh_interrupt_signal(), run.nrows);
+        status = adh_interrupt_exit();
     } else if (rc != ADH_SUCCESS) {
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run.nrows, adh_strerror(rc));
         status = ADH_EXIT_SOLVER;
     }
     if (note[0])
         fprintf(stderr, "adhere: %s\n", note);
-    if (run.unconverged && !cfg->quiet)
-        fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0\n",
-                run.unconverged, run.nrows, cfg->relax.max_iter, cfg->relax.eps);
+    /* Steps at the cap change what the numbers mean: said even under -q, and
+     * the run's status, unless --allow-unconverged asked for them. */
+    int unconverged = run.unconverged && status == ADH_EXIT_OK;
+    if (run.unconverged && (!cfg->allow_unconverged || !cfg->quiet))
+        fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0%s\n",
+                run.unconverged, run.nrows, cfg->relax.max_iter, cfg->relax.eps,
+                cfg->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
+    if (unconverged && !cfg->allow_unconverged)
+        status = ADH_EXIT_SOLVER;
 
     char keynames[2 * ADH_STATIC_KEYS][32];
     adh_summary_extra extra[2 * ADH_STATIC_KEYS];
@@ -160,8 +181,9 @@ int adh_batch_main(const adh_cli *cli)
         fprintf(stderr, "adhere: cannot write the force table to standard output: %s\n", strerror(errno));
         status = ADH_EXIT_USAGE;
     }
-    adh_tables tables = { cfg, &run, extra, nextra, status != ADH_EXIT_OK, note, NULL };
-    adh_tables ref_tables = { cfg, &ref, NULL, 0, 0, NULL, NULL };
+    int partial = note[0] != '\0';
+    adh_tables tables = { cfg, &run, extra, nextra, partial, note, NULL, ref.interrupted ? "interrupted" : NULL };
+    adh_tables ref_tables = { cfg, &ref, NULL, 0, ref.interrupted, note, NULL, NULL };
     if (ctx.stream && tables.partial)
         fprintf(ctx.stream, "# PARTIAL: %s\n", note);
     if (out) {
@@ -180,21 +202,24 @@ int adh_batch_main(const adh_cli *cli)
             if (adh_write_atomic(out, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = ADH_EXIT_USAGE;
-                add_unwritten(unwritten, sizeof unwritten, tab[i].name);
+                adh_names_add(unwritten, sizeof unwritten, tab[i].name);
             }
         }
-        if (!tables.partial) {
-            /* With --no-plot this writes the plots' tables only. */
+        if (!partial) {
+            /* With --no-plot this writes the plots' tables only. A signal
+             * here is still caught: gnuplot finishes its file, the
+             * temporaries go, and the exit says interrupted. */
             char msg[1024] = "", missing[256] = "";
+            adh_ready_phase("plot");
             int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
                                       sizeof missing);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
                 status = prc == 2 ? ADH_EXIT_USAGE : status == ADH_EXIT_OK ? ADH_EXIT_PLOT : status;
             }
-            add_unwritten(unwritten, sizeof unwritten, missing);
+            adh_names_add(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
-            if (adh_figures_run(cfg, &run, out, msg, sizeof msg) != 0) {
+            if (!adh_interrupt_signal() && adh_figures_run(cfg, &run, out, msg, sizeof msg) != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
                 if (status == ADH_EXIT_OK)
                     status = ADH_EXIT_PLOT;
@@ -206,7 +231,7 @@ int adh_batch_main(const adh_cli *cli)
                     char p[PATH_MAX + 32];
                     snprintf(p, sizeof p, "%s/%s", out, figs[i].name);
                     if ((cfg->plots & figs[i].bit) && access(p, F_OK) != 0)
-                        add_unwritten(unwritten, sizeof unwritten, figs[i].name);
+                        adh_names_add(unwritten, sizeof unwritten, figs[i].name);
                 }
             }
         }
@@ -215,6 +240,11 @@ int adh_batch_main(const adh_cli *cli)
             fprintf(stderr, "adhere: %s\n", why);
             status = ADH_EXIT_USAGE;
         }
+    }
+    adh_interrupt_release();
+    if (adh_interrupt_signal() && !partial) {
+        fprintf(stderr, "adhere: interrupted by signal %d while plotting; the tables are complete\n", adh_interrupt_signal());
+        status = adh_interrupt_exit();
     }
     adh_run_free(&run);
     adh_run_free(&ref);

@@ -17,6 +17,7 @@
 #include "adhere/units.h"
 #include "cli/batch.h"
 #include "cli/interrupt.h"
+#include "cli/ready.h"
 #include "cli/statics.h"
 #include "cli/tables.h"
 #include "plot/gnuplot.h"
@@ -38,6 +39,7 @@ typedef struct cost_run {
     double eps;
     size_t nodes;
     adh_kernel_type kernel;
+    int ran;              /* 0: never started (interrupted first) */
     int status;
     double seconds, kernel_seconds;
     size_t iterations, steps, unconverged;
@@ -53,6 +55,7 @@ typedef struct cost_job {
     pthread_mutex_t lock;
     double static_hysteresis; /* J; NAN when the static curve failed */
     double static_a_turn;     /* m; NAN when the static curve failed */
+    char partial[160];        /* why the report is incomplete; "" when it is not */
 } cost_job;
 
 
@@ -136,17 +139,21 @@ static void *worker(void *arg)
         if (i >= job->n)
             break;
         cost_run *cr = &job->runs[i];
+        cr->ran = 1;
         adh_config c = *job->cfg;
         c.nodes = cr->nodes;
         c.relax.eps = cr->eps;
         c.kernel = cr->kernel;
         double t0 = adh_clock_seconds();
         adh_grid *g = adh_grid_alloc(c.nodes, adh_config_spacing(&c));
-        adh_kernel *k = g ? adh_kernel_alloc(g, c.kernel) : NULL;
+        int kst = ADH_ENOMEM;
+        adh_kernel *k = g ? adh_kernel_alloc_cancel(g, c.kernel, c.relax.cancel, &kst) : NULL;
         cr->kernel_seconds = adh_clock_seconds() - t0;
         adh_run run;
         adh_run_init(&run);
-        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, adh_interrupt_step, NULL, &run) : ADH_ENOMEM;
+        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, adh_interrupt_step, NULL, &run) : kst;
+        if (kst == ADH_EINTR)
+            run.interrupted = 1;
         if (run.interrupted)
             cr->status = ADH_CONTINUE;
         measure(cr, &run, c.proto.step);
@@ -202,6 +209,15 @@ static double rel(double x, double ref)
     return fabs(x - ref) / fabs(ref);
 }
 
+static const char *cost_status(const cost_run *r)
+{
+    if (!r->ran)
+        return "not_run";
+    if (r->status == ADH_CONTINUE)
+        return "interrupted";
+    return r->status == ADH_SUCCESS && r->unconverged ? "unconverged" : adh_strerror(r->status);
+}
+
 static int write_cost(FILE *f, const void *ctx)
 {
     const cost_job *job = ctx;
@@ -209,6 +225,8 @@ static int write_cost(FILE *f, const void *ctx)
     adh_mix_rule_describe(&job->cfg->relax, rule, sizeof rule);
     fprintf(f, "# adhere %s cost report: %ld cores, BLAS %s, mixing %s; errors are relative to the most accurate run (err_*) and the static curve (static_err_*)\n",
             ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), blas_config(), rule);
+    if (job->partial[0])
+        fprintf(f, "# PARTIAL: %s\n", job->partial);
     fprintf(f, "# static curve's hysteresis (eps -> 0, displacement control): %.17g J\n", job->static_hysteresis);
     fprintf(f, "# static curve's contact radius at the turn: %.17g m\n", job->static_a_turn);
     fputs("kernel\tnodes\teps\tseconds\tkernel_seconds\titerations\tsteps\tunconverged\tpulloff_F\tjump_in_h0\thysteresis\ta_turn\t"
@@ -219,7 +237,7 @@ static int write_cost(FILE *f, const void *ctx)
                 adh_kernel_name(r->kernel), r->nodes, r->eps, r->seconds, r->kernel_seconds, r->iterations, r->steps,
                 r->unconverged, r->pulloff, r->jump_in, r->hysteresis, r->a_turn, r->err[0], r->err[1], r->err[2],
                 r->err[3], r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3],
-                r->status == ADH_CONTINUE ? "interrupted" : adh_strerror(r->status));
+                cost_status(r));
     }
     return 0;
 }
@@ -356,6 +374,7 @@ int adh_cost_main(const adh_cli *cli)
     qsort(runs, n, sizeof *runs, by_cost);
 
     adh_interrupt_catch();
+    adh_ready_phase("cost");
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     int jobs = cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
     cost_job job = { .cfg = cfg, .runs = runs, .n = n };
@@ -376,12 +395,17 @@ int adh_cost_main(const adh_cli *cli)
         sc.nodes = nodes[a] > sc.nodes ? nodes[a] : sc.nodes;
     sc.kernel = ADH_KERNEL_RING;
     adh_grid *g = adh_grid_alloc(sc.nodes, adh_config_spacing(&sc));
-    adh_kernel *k = g ? adh_kernel_alloc(g, sc.kernel) : NULL;
+    int kst = ADH_ENOMEM;
+    adh_kernel *k = g ? adh_kernel_alloc_cancel(g, sc.kernel, sc.relax.cancel, &kst) : NULL;
     adh_run srun;
     adh_run_init(&srun);
+    if (kst == ADH_EINTR)
+        srun.interrupted = 1;
     adh_static_result sres;
     memset(&sres, 0, sizeof sres);
     int src = k ? adh_cli_static_run(&sc, g, k, adh_interrupt_step, NULL, &srun, &sres) : ADH_ENOMEM;
+    if (srun.interrupted)
+        src = ADH_EINTR;   /* part of a curve is no reference */
     /* a fine h0 grid: lattice-trapping legs are far shorter than d */
     double static_hyst = src == ADH_SUCCESS ? adh_static_hysteresis_area(&srun, 0.002 * sc.mat.z0) : NAN;
     /* the curve ends at the (deepest) turn: its contact radius there */
@@ -395,15 +419,29 @@ int adh_cost_main(const adh_cli *cli)
     adh_interrupt_release();
 
     /* The most accurate run: the finest grid, the exact kernel, the smallest eps. */
-    const cost_run *best = &runs[0];
-    for (size_t i = 1; i < n; i++) {
+    /* (only among runs that finished: an interrupted one is no reference) */
+    const cost_run *best = NULL;
+    for (size_t i = 0; i < n; i++) {
         const cost_run *r = &runs[i];
-        if (r->nodes > best->nodes || (r->nodes == best->nodes && r->kernel > best->kernel) ||
+        if (!r->ran || r->status != ADH_SUCCESS)
+            continue;
+        if (!best || r->nodes > best->nodes || (r->nodes == best->nodes && r->kernel > best->kernel) ||
             (r->nodes == best->nodes && r->kernel == best->kernel && r->eps < best->eps))
             best = r;
     }
+    static const cost_run none = { .pulloff = NAN, .jump_in = NAN, .hysteresis = NAN, .a_turn = NAN, .eps = NAN };
+    if (!best)
+        best = &none;
+    size_t not_run = 0, cut = 0;
     for (size_t i = 0; i < n; i++) {
         cost_run *r = &runs[i];
+        not_run += !r->ran;
+        cut += r->ran && r->status == ADH_CONTINUE;
+        if (!r->ran || r->status == ADH_CONTINUE) {
+            /* nothing measured: no time, no errors */
+            r->seconds = r->kernel_seconds = NAN;
+            r->pulloff = r->jump_in = r->hysteresis = r->a_turn = NAN;
+        }
         r->err[0] = rel(r->pulloff, best->pulloff);
         r->err[1] = rel(r->jump_in, best->jump_in);
         r->err[2] = rel(r->hysteresis, best->hysteresis);
@@ -413,11 +451,18 @@ int adh_cost_main(const adh_cli *cli)
         r->err_static[2] = src == ADH_SUCCESS ? rel(r->hysteresis, static_hyst) : NAN;
         r->err_static[3] = src == ADH_SUCCESS ? rel(r->a_turn, static_a) : NAN;
     }
+    if (adh_interrupt_signal())
+        snprintf(job.partial, sizeof job.partial, "interrupted by signal %d: %zu of %zu runs cut short, %zu never started%s",
+                 adh_interrupt_signal(), cut, n, not_run, src == ADH_SUCCESS ? "" : ", static curve not finished");
     job.static_hysteresis = static_hyst;
     job.static_a_turn = static_a;
 
     char rule[64];
     adh_mix_rule_describe(&cfg->relax, rule, sizeof rule);
+    if (job.partial[0]) {
+        printf("# PARTIAL: %s\n", job.partial);
+        fprintf(stderr, "adhere: %s\n", job.partial);
+    }
     printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
            n, started ? started : 1, cores, rule);
     printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "
@@ -433,10 +478,11 @@ int adh_cost_main(const adh_cli *cli)
                adh_kernel_name(r->kernel), r->nodes, r->eps * 1e12, r->seconds, r->iterations, r->pulloff * 1e6,
                r->jump_in * 1e9, r->hysteresis * 1e15, r->a_turn * 1e6, r->err[0], r->err[1], r->err[2], r->err[3],
                r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3],
-               r->status == ADH_SUCCESS ? (r->unconverged ? "  (some steps at the cap)" : "")
-                                        : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
+               !r->ran ? "  (not run)"
+               : r->status == ADH_SUCCESS ? (r->unconverged ? "  (some steps at the cap)" : "")
+                                          : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
     }
-    int status = adh_interrupt_signal() ? ADH_EXIT_INTERRUPTED : ADH_EXIT_OK;
+    int status = adh_interrupt_signal() ? adh_interrupt_exit() : ADH_EXIT_OK;
     if (out) {
         if (adh_write_atomic(out, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);

@@ -1,11 +1,13 @@
 #include "cli/interrupt.h"
 #include "cli/ready.h"
 
-#include <signal.h>
+#include <fcntl.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static volatile sig_atomic_t received;
-static struct sigaction old_int, old_term;
+static struct sigaction old_int, old_term, old_hup;
 
 static void on_signal(int sig)
 {
@@ -17,19 +19,32 @@ void adh_interrupt_catch(void)
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
+    sigaction(SIGHUP, &sa, &old_hup);
 }
 
 void adh_interrupt_release(void)
 {
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
+    sigaction(SIGHUP, &old_hup, NULL);
 }
 
 int adh_interrupt_signal(void)
 {
     return received;
+}
+
+const volatile sig_atomic_t *adh_interrupt_flag(void)
+{
+    return &received;
+}
+
+int adh_interrupt_exit(void)
+{
+    return received == SIGHUP ? 128 + SIGHUP : 130;
 }
 
 int adh_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx)

@@ -1,10 +1,12 @@
 /* adhere: the command line. Parses options, then hands over to the batch
  * runner, the plan or cost reports, or the TUI. */
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli/batch.h"
 #include "cli/cost.h"
+#include "cli/interrupt.h"
 #include "cli/options.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
@@ -13,6 +15,17 @@
 /* OpenBLAS's own; declared here so the GSL CBLAS header stays the only one.
  * Weak: a build against the reference BLAS (make check-fp) has none. */
 void openblas_set_num_threads(int num_threads) __attribute__((weak));
+
+/* What was printed must have reached its file: a full disk or a closed
+ * pipe is an error, not a success. */
+static int stdout_done(void)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "adhere: cannot write to standard output: %s\n", strerror(errno));
+        return ADH_EXIT_USAGE;
+    }
+    return ADH_EXIT_OK;
+}
 
 int main(int argc, char **argv)
 {
@@ -31,13 +44,13 @@ int main(int argc, char **argv)
     switch (cli.action) {
     case ADH_ACT_HELP:
         adh_cli_usage(stdout);
-        return ADH_EXIT_OK;
+        return stdout_done();
     case ADH_ACT_VERSION:
         printf("adhere %s\n", ADH_VERSION);
-        return ADH_EXIT_OK;
+        return stdout_done();
     case ADH_ACT_LIST_KEYS:
         adh_tui_print_keys(stdout);
-        return ADH_EXIT_OK;
+        return stdout_done();
     default:
         break;
     }
@@ -50,6 +63,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }
+    /* The solvers poll the interrupt flag through their cancel hook: a
+     * signal is heard inside a step, not only between steps. */
+    cli.cfg.relax.cancel = adh_interrupt_flag();
     switch (cli.action) {
     case ADH_ACT_BATCH:
         return adh_batch_main(&cli);
@@ -57,7 +73,7 @@ int main(int argc, char **argv)
         adh_plan plan;
         adh_plan_make(&cli.cfg, &plan);
         adh_plan_print(stdout, &cli.cfg, &plan);
-        return ADH_EXIT_OK;
+        return stdout_done();
     }
     case ADH_ACT_COST:
         return adh_cost_main(&cli);

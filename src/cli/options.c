@@ -5,6 +5,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <errno.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "adhere/grid.h"
 #include "adhere/status.h"
@@ -15,7 +18,7 @@ enum {
     OPT_SPACING = 256, OPT_START, OPT_TURN, OPT_KERNEL, OPT_REPLAY, OPT_SCREEN, OPT_SIZE,
     OPT_NO_CLOCK, OPT_LIST_KEYS, OPT_NO_PLOT, OPT_PLOTS, OPT_PROFILES, OPT_DRIVE_SPEED,
     OPT_GNUPLOT_STYLE, OPT_PLAN, OPT_DWELL, OPT_MODE, OPT_REFERENCE, OPT_COST, OPT_COST_EPS,
-    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM
+    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED
 };
 
 typedef struct option_doc {
@@ -36,6 +39,7 @@ static const option_doc options[] = {
     { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
+    { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)" },
     { { "mixing", required_argument, 0, OPT_MIXING }, "paper|momentum", "mixing rule of the relaxation: the paper's adaptive ratio or heavy-ball momentum (default momentum)" },
     { { "momentum", required_argument, 0, OPT_MOMENTUM }, "B", "momentum rule: fraction of the previous update kept, 0 to below 1 (default 0.55)" },
     { { "step", required_argument, 0, 'd' }, "M", "drive step d (default 0.05nm)" },
@@ -96,6 +100,17 @@ static int quantity(const char *name, const char *arg, adh_quantity q, double *o
     return 0;
 }
 
+/* strtok would pass over an empty element ("-1nm,,-2nm"): refuse it. */
+static int empty_element(const char *name, const char *arg, char *why, size_t n)
+{
+    size_t len = strlen(arg);
+    if (len == 0 || arg[0] == ',' || arg[len - 1] == ',' || strstr(arg, ",,")) {
+        snprintf(why, n, "--%s: '%s' has an empty element: separate values by single commas", name, arg);
+        return 1;
+    }
+    return 0;
+}
+
 /* A comma-separated list of lengths into out[]; "none" gives an empty list. */
 static int length_list(const char *name, const char *arg, double *out, size_t cap, size_t *count,
                        char *why, size_t n)
@@ -108,6 +123,8 @@ static int length_list(const char *name, const char *arg, double *out, size_t ca
     *count = 0;
     if (strcmp(arg, "none") == 0)
         return 0;
+    if (empty_element(name, arg, why, n))
+        return 2;
     snprintf(buf, sizeof buf, "%s", arg);
     char *save = NULL;
     for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
@@ -207,6 +224,8 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
         return 0;
     case OPT_PLOTS: {
         unsigned mask = 0;
+        if (empty_element(name, arg, why, n))
+            return 2;
         char buf[256], *save = NULL;
         snprintf(buf, sizeof buf, "%s", arg);
         for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
@@ -248,12 +267,19 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
         return 0;
     }
     case OPT_COST_EPS: case OPT_COST_NODES:
+        if (empty_element(name, arg, why, n))
+            return 2;
+        if (strlen(arg) >= 256) {
+            snprintf(why, n, "--%s: list longer than 255 characters", name);
+            return 2;
+        }
         snprintf(c == OPT_COST_EPS ? cli->cost_eps : cli->cost_nodes, 256, "%s", arg);
         cli->action = ADH_ACT_COST;
         return 0;
     case OPT_NO_CLOCK: cfg->no_clock = 1; return 0;
     case OPT_NO_PLOT: cfg->plot = 0; return 0;
     case 'q': cfg->quiet = 1; return 0;
+    case OPT_ALLOW_UNCONVERGED: cfg->allow_unconverged = 1; return 0;
     case 'b': if (cli->action == ADH_ACT_TUI) cli->action = ADH_ACT_BATCH; return 0;
     case OPT_PLAN: cli->action = ADH_ACT_PLAN; return 0;
     case OPT_COST: cli->action = ADH_ACT_COST; return 0;
@@ -263,6 +289,75 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
     }
     snprintf(why, n, "internal: option %d has no handler", c);
     return 2;
+}
+
+/* Edit distance of two short strings (for "did you mean"). */
+static size_t distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b);
+    if (la > 40 || lb > 40)
+        return 99;
+    size_t d[41][41];
+    for (size_t i = 0; i <= la; i++)
+        d[i][0] = i;
+    for (size_t j = 0; j <= lb; j++)
+        d[0][j] = j;
+    for (size_t i = 1; i <= la; i++)
+        for (size_t j = 1; j <= lb; j++) {
+            size_t sub = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            size_t del = d[i - 1][j] + 1, ins = d[i][j - 1] + 1;
+            d[i][j] = sub < del ? (sub < ins ? sub : ins) : (del < ins ? del : ins);
+        }
+    return d[la][lb];
+}
+
+static void unknown_option(const char *arg, char *why, size_t whylen)
+{
+    char name[64];
+    snprintf(name, sizeof name, "%s", arg + (arg[0] == '-' && arg[1] == '-' ? 2 : 0));
+    char *eq = strchr(name, '=');
+    if (eq)
+        *eq = '\0';
+    const char *best = NULL;
+    size_t bd = 3;
+    for (size_t i = 0; i < NOPTIONS; i++) {
+        size_t dd = distance(name, options[i].opt.name);
+        if (dd < bd) {
+            bd = dd;
+            best = options[i].opt.name;
+        }
+    }
+    if (best && arg[0] == '-' && arg[1] == '-')
+        snprintf(why, whylen, "unknown option '%s': did you mean --%s? (see adhere --help)", arg, best);
+    else
+        snprintf(why, whylen, "unknown option '%s' (see adhere --help)", arg);
+}
+
+/* A positional that is no scene but a unit ("-E 1 GPa"): the number and
+ * its unit were split by a space. */
+static int split_unit_hint(int argc, char **orig, const char *arg, char *why, size_t whylen)
+{
+    double v;
+    char probe[80];
+    snprintf(probe, sizeof probe, "1%s", arg);
+    int unit = 0;
+    for (int q = ADH_Q_LENGTH; q <= ADH_Q_FORCE && !unit; q++)
+        unit = strlen(arg) < 16 && adh_parse_quantity(probe, (adh_quantity)q, &v, NULL, 0) == 0;
+    if (!unit)
+        return 0;
+    for (int j = 1; j < argc; j++) {
+        if (orig[j] != arg)
+            continue;
+        const char *num = j > 1 ? orig[j - 1] : "";
+        const char *opt = j > 2 ? orig[j - 2] : "";
+        if (adh_parse_quantity(num, ADH_Q_NONE, &v, NULL, 0) == 0 && opt[0] == '-') {
+            snprintf(why, whylen, "'%s' looks like the unit of '%s %s': write the number and its unit together, %s %s%s",
+                     arg, opt, num, opt, num, arg);
+            return 1;
+        }
+    }
+    snprintf(why, whylen, "'%s' is a unit, not a scene: write a value and its unit together (1%s)", arg, arg);
+    return 1;
 }
 
 int adh_cli_parse(int argc, char **argv, adh_cli *cli, char *why, size_t whylen)
@@ -282,11 +377,16 @@ int adh_cli_parse(int argc, char **argv, adh_cli *cli, char *why, size_t whylen)
     memset(&longopts[NOPTIONS], 0, sizeof longopts[0]);
     memset(cli, 0, sizeof *cli);
     adh_config_default(&cli->cfg);
+    /* getopt permutes argv: keep the order as typed for the hints */
+    char *orig[256];
+    int norig = argc < 256 ? argc : 256;
+    memcpy(orig, argv, (size_t)norig * sizeof *orig);
 
     /* Two passes: the scene (positional) sets values first, then the flags
      * override them whatever their order on the line. */
     struct { int c; const char *arg; const char *name; } seen[512];
     size_t nseen = 0;
+    int info = 0, plan = 0, cost = 0, batch = 0, replay = 0, screen = 0, reference = 0;
     opterr = 0;
     optind = 1;
     int c, idx;
@@ -295,7 +395,7 @@ int adh_cli_parse(int argc, char **argv, adh_cli *cli, char *why, size_t whylen)
             if (optopt)
                 snprintf(why, whylen, "unknown option '-%c' (see adhere --help)", optopt);
             else
-                snprintf(why, whylen, "unknown option '%s' (see adhere --help)", argv[optind - 1]);
+                unknown_option(argv[optind - 1], why, whylen);
             return 2;
         }
         if (c == ':') {
@@ -314,13 +414,43 @@ int adh_cli_parse(int argc, char **argv, adh_cli *cli, char *why, size_t whylen)
         seen[nseen].arg = optarg;
         seen[nseen].name = name;
         nseen++;
+        info |= c == 'h' || c == 'V' || c == OPT_LIST_KEYS;
+        plan |= c == OPT_PLAN;
+        cost |= c == OPT_COST || c == OPT_COST_EPS || c == OPT_COST_NODES;
+        batch |= c == 'b';
+        replay |= c == OPT_REPLAY;
+        screen |= c == OPT_SCREEN;
+        reference |= c == OPT_REFERENCE && strcmp(optarg, "none") != 0;
     }
     if (optind < argc - 1) {
         snprintf(why, whylen, "more than one scene given ('%s' and '%s'): name at most one", argv[optind], argv[optind + 1]);
         return 2;
     }
+    /* --help, --version, --list-keys print and exit: a scene beside them is
+     * a mistake, not something to load */
+    if (info && optind == argc - 1) {
+        snprintf(why, whylen, "'%s': --help, --version and --list-keys take no scene and run nothing", argv[optind]);
+        return 2;
+    }
+    if (plan && cost) {
+        snprintf(why, whylen, "--plan and --cost do not go together: --plan prints one run's plan, --cost runs a grid of runs; give one");
+        return 2;
+    }
+    if (replay && (batch || plan || cost)) {
+        snprintf(why, whylen, "--replay drives the TUI from a script; it does not go with %s", batch ? "--batch" : plan ? "--plan" : "--cost");
+        return 2;
+    }
+    if (screen && !replay) {
+        snprintf(why, whylen, "--screen writes the final screen of a --replay run: give --replay=FILE too");
+        return 2;
+    }
     if (optind == argc - 1) {
         cli->scene_arg = argv[optind];
+        char path[PATH_MAX];
+        if (adh_scene_find(cli->scene_arg, path, sizeof path, why, whylen) != 0) {
+            split_unit_hint(norig, orig, cli->scene_arg, why, whylen);
+            return 2;
+        }
         int rc = adh_scene_load(cli->scene_arg, &cli->cfg, why, whylen);
         if (rc != 0)
             return 2;
@@ -328,6 +458,15 @@ int adh_cli_parse(int argc, char **argv, adh_cli *cli, char *why, size_t whylen)
     for (size_t i = 0; i < nseen; i++)
         if (apply(cli, seen[i].c, seen[i].arg, seen[i].name, why, whylen) != 0)
             return 2;
+    if (reference && cli->cfg.mode != ADH_MODE_RELAX) {
+        snprintf(why, whylen, "--reference=static is for --mode=relax: %s", cli->cfg.mode == ADH_MODE_STATIC
+                 ? "in static mode the run is the static curve itself" : "rigid spheres have no elastic curve to compare");
+        return 2;
+    }
+    if (reference && cli->action != ADH_ACT_BATCH && cli->action != ADH_ACT_PLAN) {
+        snprintf(why, whylen, "--reference=static is drawn by --batch runs only");
+        return 2;
+    }
     return 0;
 }
 
@@ -351,12 +490,44 @@ int adh_cli_validate(const adh_config *cfg, char *why, size_t whylen)
     return 0;
 }
 
+/* An input file named on the line is read later (after the run, for a
+ * style): find a missing one now, before any work. */
+static int readable_file(const char *opt, const char *path, char *why, size_t whylen)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || access(path, R_OK) != 0) {
+        snprintf(why, whylen, "--%s=%s: %s", opt, path, strerror(errno));
+        return 2;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        snprintf(why, whylen, "--%s=%s: not a regular file", opt, path);
+        return 2;
+    }
+    return 0;
+}
+
 static int validate_run(const adh_config *cfg, char *why, size_t whylen)
 {
     if (adh_material_validate(&cfg->mat, why, whylen) != ADH_SUCCESS)
         return 2;
     if (adh_relax_settings_validate(&cfg->relax, why, whylen) != ADH_SUCCESS)
         return 2;
+    if (cfg->gnuplot_style[0] && readable_file("gnuplot-style", cfg->gnuplot_style, why, whylen))
+        return 2;
+    if (cfg->mode == ADH_MODE_RELAX) {
+        /* eps below the measure's rounding floor: every step would run to the cap */
+        double deepest = 0;
+        for (size_t i = 0; i < cfg->proto.nturns; i++)
+            deepest = fmin(deepest, cfg->proto.turns[i]);
+        double floor_eps = adh_relax_eps_floor(cfg->nodes, cfg->mat.z0 - deepest);
+        if (cfg->relax.eps < floor_eps) {
+            snprintf(why, whylen, "eps = %g m is below what double precision can reach on %zu nodes with deformations up to %g m: the smallest eps allowed here is %g m",
+                     cfg->relax.eps, cfg->nodes, cfg->mat.z0 - deepest, floor_eps);
+            return 2;
+        }
+    }
+    if (cfg->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
+        return adh_protocol_check(&cfg->proto, &cfg->mat, NULL, why, whylen) == ADH_SUCCESS ? 0 : 2;
     double dr = adh_config_spacing(cfg);
     if (!(isfinite(dr) && dr > 0)) {
         snprintf(why, whylen, "spacing = %g m is not allowed: it must be above 0", dr);

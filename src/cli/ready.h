@@ -1,13 +1,15 @@
-/* A readiness signal for tests: with $ADHERE_READY_FILE set, the first
- * solve step of a run (batch, sweep, cost, or in the TUI) creates that
- * (empty) file. SIGINT and SIGTERM are caught by then, so a test waits for
- * the file instead of sleeping before it signals. */
+/* A readiness signal for tests: with $ADHERE_READY_FILE set, adhere appends
+ * a line to that file naming each phase of a run as it begins, and the line
+ * "step" once the first drive step is solved. Signals are caught by then,
+ * so a test waits for a line instead of sleeping before it sends one.
+ * Without the variable nothing is written. */
 #ifndef ADH_CLI_READY_H
 #define ADH_CLI_READY_H
 
-/* Creates $ADHERE_READY_FILE once per process; later calls, or an unset
- * variable, do nothing. Async-safe enough for solver threads: a second
- * creation from a racing thread is harmless. */
+/* Appends "PHASE\n" (relax, static, rigid, reference, dwell, plot, cost,
+ * sweep) in one write, so a reader sees the line whole or not at all. */
+void adh_ready_phase(const char *phase);
+/* Appends "step" once per process: the first solved step. */
 void adh_ready_mark(void);
 
 #endif

@@ -12,6 +12,7 @@ int adh_cli_static_run(const adh_config *cfg, const adh_grid *g, const adh_kerne
                                          : cfg->proto.start;
     for (size_t i = 0; i < cfg->proto.nturns; i++)
         s.h0_end = i == 0 ? cfg->proto.turns[0] : fmin(s.h0_end, cfg->proto.turns[i]);
+    s.cancel = cfg->relax.cancel;   /* the one cancel flag of the run */
     return adh_static_run(g, k, &cfg->mat, &s, cb, ctx, run, res);
 }
 

@@ -16,6 +16,7 @@
 #include "cli/batch.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
+#include "cli/ready.h"
 #include "cli/rigid.h"
 #include "cli/statics.h"
 #include "cli/tables.h"
@@ -168,7 +169,7 @@ int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, c
                 adh_sweep_jumped(r, rc.proto.step));
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        fprintf(f, "%s\n", r->interrupted ? "interrupted" : adh_strerror(status[i]));
+        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : adh_run_status_word(r));
     }
     return 0;
 }
@@ -236,7 +237,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     char keynames[ADH_STATIC_KEYS][32];
     adh_summary_extra extra[ADH_STATIC_KEYS];
     size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? adh_static_summary_keys(sres, "", keynames, extra) : 0;
-    adh_tables t = { &rcfg, run, extra, nextra, partial, note, lost };
+    adh_tables t = { &rcfg, run, extra, nextra, partial, note, lost, NULL };
     int status = ADH_EXIT_OK;
     if (data) {
         const char *names[2] = { "force.tsv", run->nturns ? "turns.tsv" : NULL };
@@ -245,8 +246,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
             if (names[k] && adh_write_atomic(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = ADH_EXIT_USAGE;
-                size_t n = strlen(lost);
-                snprintf(lost + n, sizeof lost - n, "%s%s", n ? "," : "", names[k]);
+                adh_names_add(lost, sizeof lost, names[k]);
             }
     }
     if (adh_write_atomic(dir, "summary.tsv", adh_write_summary, &t, why, sizeof why) != 0) {
@@ -255,6 +255,12 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     }
     if (status == ADH_EXIT_OK && partial)
         return run->interrupted ? ADH_EXIT_INTERRUPTED : ADH_EXIT_SOLVER;
+    if (status == ADH_EXIT_OK && run->unconverged && !cfg->allow_unconverged) {
+        if (data) /* said once, not again when the figures rewrite the summary */
+            fprintf(stderr, "adhere: warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)\n",
+                    i + 1, run->unconverged, run->nrows);
+        return ADH_EXIT_SOLVER;
+    }
     return status;
 }
 
@@ -294,10 +300,9 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
             { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
         for (size_t k = 0; k < 2; k++) {
             char p[PATH_MAX + 64];
-            snprintf(p, sizeof p, "%s/%s", dir, figs[k].name);
-            size_t n = strlen(missing);
+            snprintf(p, sizeof p, "%.4000s/%s", dir, figs[k].name);
             if ((rcfg.plots & figs[k].bit) && access(p, F_OK) != 0)
-                snprintf(missing + n, sizeof missing - n, "%s%s", n ? "," : "", figs[k].name);
+                adh_names_add(missing, sizeof missing, figs[k].name);
         }
     }
     if (*missing) {
@@ -343,7 +348,7 @@ int adh_sweep_main(const adh_cli *cli)
     adh_kernel *k = NULL;
     if (cfg->mode != ADH_MODE_RIGID) {
         g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
-        k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;
+        k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;   /* built before the handler: a signal still ends the program */
         if (!k) {
             fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
             adh_grid_free(g);
@@ -371,6 +376,7 @@ int adh_sweep_main(const adh_cli *cli)
         openblas_set_num_threads(1);
 
     adh_interrupt_catch();
+    adh_ready_phase("sweep");
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status, .out = out, .tables = tables };
     pthread_mutex_init(&job.lock, NULL);
@@ -396,6 +402,8 @@ int adh_sweep_main(const adh_cli *cli)
             exit_status = worse(exit_status, ADH_EXIT_INTERRUPTED);
         else if (status[i] != ADH_SUCCESS)
             exit_status = worse(exit_status, ADH_EXIT_SOLVER);
+        else if (runs[i].unconverged && !cfg->allow_unconverged)
+            exit_status = worse(exit_status, ADH_EXIT_SOLVER);   /* sweep.tsv says unconverged */
     }
     sweep_tables st = { cfg, runs, sres, status };
     if (!out) {
@@ -405,7 +413,7 @@ int adh_sweep_main(const adh_cli *cli)
             if (tables[i] < 0) /* never started: its tables say interrupted */
                 tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], out);
             exit_status = worse(exit_status, tables[i]);
-            if (tables[i] == ADH_EXIT_OK)
+            if (tables[i] == ADH_EXIT_OK || (tables[i] == ADH_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS))
                 exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], &sres[i], status[i], out));
         }
         if (adh_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {

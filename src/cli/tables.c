@@ -43,6 +43,25 @@ int adh_write_force(FILE *f, const void *ctx)
     return 0;
 }
 
+void adh_names_add(char *buf, size_t len, const char *name)
+{
+    size_t n = strlen(buf), m = strlen(name), sep = n ? 1 : 0;
+    if (!m || n + sep + m >= len)
+        return;
+    if (sep)
+        buf[n++] = ',';
+    memcpy(buf + n, name, m + 1);
+}
+
+const char *adh_run_status_word(const adh_run *r)
+{
+    if (r->interrupted)
+        return "interrupted";
+    if (r->status != ADH_SUCCESS)
+        return adh_strerror(r->status);
+    return r->unconverged ? "unconverged" : "success";
+}
+
 static void kv(FILE *f, const char *k, double v)
 {
     fprintf(f, "%s\t%.17g\n", k, v);
@@ -100,8 +119,8 @@ int adh_write_summary(FILE *f, const void *ctx)
     kv(f, "complete", t->partial || lost ? 0 : 1);
     if (lost)
         fprintf(f, "not_written\t%s\n", t->unwritten);
-    fprintf(f, "status\t%s\n", r->interrupted ? "interrupted"
-                              : lost && r->status == ADH_SUCCESS ? "output incomplete" : adh_strerror(r->status));
+    const char *word = t->status ? t->status : adh_run_status_word(r);
+    fprintf(f, "status\t%s\n", lost && !strcmp(word, "success") ? "output incomplete" : word);
     return 0;
 }
 

@@ -32,8 +32,15 @@ typedef struct adh_tables {
     const char *note;                /* why, for the comment lines */
     const char *unwritten;           /* files of the run not written (a full disk), comma-separated;
                                         NULL or "" when none: summary.tsv says so */
+    const char *status;              /* summary status word; NULL = from the run */
 } adh_tables;
 
+/* The summary's status word: interrupted, unconverged (steps at the
+ * iteration cap), success, or the solver's error. */
+const char *adh_run_status_word(const adh_run *r);
+/* Appends name (or a comma-separated list) to the comma-separated list in
+ * buf; what does not fit is left off whole names at a time. */
+void adh_names_add(char *buf, size_t len, const char *name);
 int adh_write_force(FILE *f, const void *tables);
 int adh_write_summary(FILE *f, const void *tables);
 int adh_write_turns(FILE *f, const void *tables);

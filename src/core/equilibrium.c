@@ -511,6 +511,8 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, size_t *ite
         }
         if (it >= w->s.max_newton)
             return ADH_EMAXITER;
+        if (w->s.cancel && *w->s.cancel)
+            return ADH_EINTR;
         /* Newton near the curve contracts fast; when it does not, a shorter
          * step is cheaper than more iterations */
         if (it >= 3 && r > 0.5 * prev)
@@ -760,7 +762,7 @@ int adh_static_iterate(adh_static *w)
         int fix = w->tau_h < 0 && w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end;
         double ds = fix ? (w->s.h0_end - w->st->h0) / (z0 * w->tau_h) : w->ds;
         rc = correct(w, ds, fix, w->s.h0_end, &iters);
-        if (rc == ADH_ENOMEM)
+        if (rc == ADH_ENOMEM || rc == ADH_EINTR)
             break;
         int ok = rc == ADH_SUCCESS;
         double turn = 0, gap_ratio = 0;
@@ -878,6 +880,11 @@ int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m
     int rc = adh_static_set(w, m, s);
     run->start = w->s.h0_start;
     for (;;) {
+        if (rc == ADH_EINTR) {
+            run->interrupted = 1;
+            rc = ADH_SUCCESS;
+            break;
+        }
         if (rc != ADH_SUCCESS && rc != ADH_CONTINUE && rc != ADH_EGRID)
             break;
         adh_obs o;

@@ -1,4 +1,5 @@
 #include "adhere/kernel.h"
+#include "adhere/status.h"
 
 #include <gsl/gsl_cblas.h>
 #include <gsl/gsl_errno.h>
@@ -68,8 +69,16 @@ static double paper_diagonal(double rn, double d)
 
 adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type)
 {
+    int status;
+    return adh_kernel_alloc_cancel(g, type, NULL, &status);
+}
+
+adh_kernel *adh_kernel_alloc_cancel(const adh_grid *g, adh_kernel_type type,
+                                    const volatile sig_atomic_t *cancel, int *status)
+{
     /* GSL's default handler aborts; the core reports through status codes. */
     gsl_set_error_handler_off();
+    *status = ADH_ENOMEM;
     size_t n = g->n;
     adh_kernel *k = calloc(1, sizeof *k);
     if (!k)
@@ -88,6 +97,11 @@ adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type)
         /* Symmetric: fill the lower triangle (dsymv reads only that), mirror
          * for adh_kernel_entry. */
         for (size_t i = 0; i < n; i++) {
+            if (cancel && *cancel) {
+                adh_kernel_free(k);
+                *status = ADH_EINTR;
+                return NULL;
+            }
             for (size_t j = 0; j < i; j++) {
                 double v = d * kernel_k(g->r[i], g->r[j]);
                 k->w[i * n + j] = v;
@@ -104,6 +118,12 @@ adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type)
         for (size_t i = 0; i < n; i++)
             prev[i] = 0.0; /* D(r, 0) = 0 */
         for (size_t j = 0; j < n; j++) {
+            if (cancel && *cancel) {
+                free(prev);
+                adh_kernel_free(k);
+                *status = ADH_EINTR;
+                return NULL;
+            }
             double b = (double)(j + 1) * d;
             for (size_t i = 0; i < n; i++) {
                 double db = adh_disk_integral(g->r[i], b);
@@ -113,6 +133,7 @@ adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type)
         }
         free(prev);
     }
+    *status = ADH_SUCCESS;
     return k;
 }
 

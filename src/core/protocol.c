@@ -52,7 +52,9 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     for (size_t i = 0; i < ps->nturns; i++) {
         double t = ps->turns[i];
         if (!isfinite(t) || t < -0.02 * m->R) {
-            snprintf(why, whylen, "turning point %g m is too deep: the model (h0 << R) allows down to -R/50 = %g m", t, -0.02 * m->R);
+            int dflt = ps->nturns == 1 && t == adh_protocol_settings_default().turns[0];
+            snprintf(why, whylen, "turning point %g m%s is too deep: the model (h0 << R) allows down to -R/50 = %g m%s", t,
+                     dflt ? " (the default turn)" : "", -0.02 * m->R, dflt ? "; give a shallower --turn (or turns in the scene), or a larger R" : "");
             return ADH_EINVAL;
         }
     }
@@ -67,8 +69,12 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     }
     double start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
     if (!isfinite(start) || start <= 0 || start > 0.02 * m->R) {
-        snprintf(why, whylen, "start = %g m is not allowed: it must be above 0 and at most R/50 = %g m (the model needs h0 << R)",
-                 start, 0.02 * m->R);
+        if (isnan(ps->start))
+            snprintf(why, whylen, "R = %g m is too small for this material: the automatic start (where the force is negligible: the bulge of eq 23 below 0.01 z0 and 4 jump separations out) is %g m, above R/50 = %g m (the model needs h0 << R); use a larger R, or give a start up to %g m",
+                     m->R, start, 0.02 * m->R, 0.02 * m->R);
+        else
+            snprintf(why, whylen, "start = %g m is not allowed: it must be above 0 and at most R/50 = %g m (the model needs h0 << R)",
+                     start, 0.02 * m->R);
         return ADH_EINVAL;
     }
     for (size_t i = 0; i < ps->nturns; i++) {
@@ -82,6 +88,8 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
         snprintf(why, whylen, "%.0f drive steps of %g m from %g to %g m: at most 2e6 are allowed; take a larger step", steps, ps->step, start, lowest);
         return ADH_EINVAL;
     }
+    if (!g)
+        return ADH_SUCCESS;   /* rigid spheres: no grid to check */
     if (g->n < 10) {
         snprintf(why, whylen, "N = %zu nodes is not allowed: at least 10 are needed", g->n);
         return ADH_EINVAL;
@@ -228,6 +236,11 @@ static int drive_step(runner *rn, double h0, int branch, int path, size_t dwell,
     o->stable = 1;
     rn->run->iterations += o->iters;
     rn->run->seconds += dt;
+    if (rc == ADH_EINTR) {
+        /* an unfinished step is no result: no row, and the run ends here */
+        rn->run->interrupted = 1;
+        return ADH_CONTINUE;
+    }
     if (rc == ADH_EMAXITER) {
         rn->run->unconverged++;
         rc = ADH_SUCCESS;

@@ -11,6 +11,7 @@ const char *adh_strerror(int status)
     case ADH_ENAN: return "the solution is no longer finite (NaN or infinity)";
     case ADH_EGRID: return "the grid is too short or too coarse for this state";
     case ADH_ESTALL: return "continuation could not make progress";
+    case ADH_EINTR: return "stopped on request";
     default: return "unknown status";
     }
 }

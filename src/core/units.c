@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 static const struct { const char *sym; double factor; } prefixes[] = {
     { "f", 1e-15 }, { "p", 1e-12 }, { "n", 1e-9 }, { "u", 1e-6 }, { "\xc2\xb5", 1e-6 },
@@ -47,6 +48,32 @@ static int unit_of(const char *suffix, adh_quantity *q, double *factor)
         }
     }
     return -1;
+}
+
+/* Units are case-sensitive (m is milli, M mega): a unit that matches one
+ * of the wanted quantity's spellings but for case gets those spellings. */
+static void spelling_hint(const char *suffix, adh_quantity q, char *hint, size_t len)
+{
+    hint[0] = '\0';
+    if (q == ADH_Q_NONE)
+        return;
+    size_t off = 0;
+    int found = 0;
+    for (size_t i = 0; i < sizeof prefixes / sizeof prefixes[0]; i++) {
+        char cand[16];
+        snprintf(cand, sizeof cand, "%s%s", prefixes[i].sym, unit_sym[q]);
+        if (strcasecmp(cand, suffix) != 0)
+            continue;
+        char piece[64];
+        snprintf(piece, sizeof piece, "%s'%s'", found ? " or " : " (units are case-sensitive: did you mean ", cand);
+        if (off + strlen(piece) + 3 > len)
+            break;   /* the hint ends with whole candidates and "?)" */
+        memcpy(hint + off, piece, strlen(piece) + 1);
+        off += strlen(piece);
+        found++;
+    }
+    if (found)
+        memcpy(hint + off, "?)", 3);
 }
 
 static void trim(const char *text, char *buf, size_t len)
@@ -92,8 +119,11 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
     if (*end) {
         adh_quantity got;
         if (unit_of(end, &got, &factor) != 0) {
-            if (why)
-                snprintf(why, whylen, "'%s': unknown unit '%s'; expected %s", buf, end, quantity_name[q]);
+            if (why) {
+                char hint[96];
+                spelling_hint(end, q, hint, sizeof hint);
+                snprintf(why, whylen, "'%s': unknown unit '%s'%s; expected %s", buf, end, hint, quantity_name[q]);
+            }
             return -1;
         }
         if (got != q) {

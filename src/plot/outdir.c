@@ -90,7 +90,7 @@ static int clear(const char *dir, int depth, char *why, size_t whylen)
             rc = clear(p, 1, why, whylen);
             rmdir(p);   /* only when nothing else is in it */
         } else if (!S_ISDIR(st.st_mode) && adh_outdir_owns(e->d_name) && unlink(p) != 0 && errno != ENOENT) {
-            snprintf(why, whylen, "cannot remove %s, left by an earlier run: %s", p, strerror(errno));
+            snprintf(why, whylen, "cannot remove %.3000s, left by an earlier run: %s", p, strerror(errno));
             rc = -1;
         }
     }

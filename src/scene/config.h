@@ -68,6 +68,7 @@ typedef struct adh_config {
     /* outputs */
     char out_dir[PATH_MAX];        /* "" = force table to standard output */
     int quiet;
+    int allow_unconverged;         /* --allow-unconverged: steps at the cap exit 0 */
     int plot;                      /* 0 with --no-plot */
     unsigned plots;                /* mask of adh_plot_kind */
     double drive_speed;            /* m/s, for contact-line speeds */

@@ -64,6 +64,16 @@ static int parse_qlist(scene_parse *sp, const char *key, const char *value, adh_
         return 1;
     if (strlen(value) >= sizeof buf)
         return fail(sp, "%s: list longer than 1023 characters%s", key, "");
+    /* strtok passes over an empty element ("-1nm,,-2nm"): refuse it */
+    for (const char *seg = value;;) {
+        const char *comma = strchr(seg, ',');
+        size_t len = comma ? (size_t)(comma - seg) : strlen(seg);
+        if (strspn(seg, " \t") >= len)
+            return fail(sp, "%s: '%.200s' has an empty element: separate values by single commas", key, value);
+        if (!comma)
+            break;
+        seg = comma + 1;
+    }
     snprintf(buf, sizeof buf, "%s", value);
     char *save = NULL;
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
@@ -264,6 +274,17 @@ static void finish_error(scene_parse *sp, int rc, char *why, size_t whylen)
 static int prescan(const char *text, scene_parse *sp)
 {
     int line = 0, in_section = 0;
+    /* inih splits lines at \n only: a file with old Mac line ends (\r
+     * alone) would be one long line and every key lost */
+    for (const char *p = text; *p; p++) {
+        if (*p == '\n')
+            line++;
+        else if (*p == '\r' && p[1] != '\n') {
+            fail(sp, "a carriage return without a line feed (old Mac line ends): save the file with Unix (LF) or DOS (CRLF) line ends%s%s", "", "");
+            return line + 1;
+        }
+    }
+    line = 0;
     for (const char *p = text; *p;) {
         const char *eol = strchr(p, '\n');
         size_t len = eol ? (size_t)(eol - p) : strlen(p);
@@ -306,6 +327,14 @@ static int prescan(const char *text, scene_parse *sp)
                 known |= strcmp(keys[i].section, name) == 0;
             if (!known) {
                 fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep%s", name, "");
+                return line;
+            }
+            /* inih drops whatever follows the ']' on the line */
+            const char *rest = close + 1;
+            while (*rest == ' ' || *rest == '\t')
+                rest++;
+            if (*rest && *rest != '#' && *rest != ';') {
+                fail(sp, "text after the section header [%s]: '%s' would be ignored; put each key = value on its own line", name, rest);
                 return line;
             }
             in_section = 1;

@@ -2,9 +2,12 @@
 
 #include <curses.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 void tui_keysrc_terminal(tui_keysrc *ks)
 {
@@ -20,9 +23,21 @@ int tui_keysrc_replay(tui_keysrc *ks, const char *file, char *err, size_t errlen
     memset(ks, 0, sizeof *ks);
     ks->replay = 1;
     ks->file = file;
-    FILE *f = fopen(file, "rb");
+    /* O_NONBLOCK: a FIFO with no writer must not hang the open; a script
+     * is a regular file, and anything else is refused before reading. */
+    int fd = open(file, O_RDONLY | O_NONBLOCK);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "%s: cannot read the replay script: %s", file,
+                 fd < 0 ? strerror(errno) : "not a regular file (a script is a text file)");
+        if (fd >= 0)
+            close(fd);
+        return -1;
+    }
+    FILE *f = fdopen(fd, "rb");
     if (!f) {
         snprintf(err, errlen, "%s: cannot read the replay script: %s", file, strerror(errno));
+        close(fd);
         return -1;
     }
     char *text = malloc(MAX_SCRIPT + 1);

@@ -683,7 +683,8 @@ static void loop(tui *t)
     adh_replay_item it;
     while (!t->quit) {
         if (got_signal) {
-            t->exit_code = EXIT_INTERRUPTED;   /* SIGINT or SIGTERM, as --batch */
+            /* SIGINT or SIGTERM: 130, as --batch; SIGHUP (terminal gone): 129 */
+            t->exit_code = got_signal == SIGHUP ? 128 + SIGHUP : EXIT_INTERRUPTED;
             snprintf(t->fatal, sizeof t->fatal, "adhere: stopped by signal %d", (int)got_signal);
             break;
         }
@@ -822,7 +823,7 @@ int adh_tui_main(const adh_config *cfg)
     t.view.utf8 = locale_utf8(t.headless);
     t.view.no_clock = cfg->no_clock;
 
-    struct sigaction sa, old_int, old_term;
+    struct sigaction sa, old_int, old_term, old_hup;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
     sigemptyset(&sa.sa_mask);
@@ -830,11 +831,13 @@ int adh_tui_main(const adh_config *cfg)
     /* Before newterm: curses then leaves these handlers alone. */
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
+    sigaction(SIGHUP, &sa, &old_hup);   /* a closed terminal: restore and go */
 
     if (screen_open(&t, why, sizeof why) != 0) {
         screen_close(&t);
         sigaction(SIGINT, &old_int, NULL);
         sigaction(SIGTERM, &old_term, NULL);
+        sigaction(SIGHUP, &old_hup, NULL);
         fprintf(stderr, "adhere: %s\n", why);
         tui_sim_free(&t.sim);
         tui_keysrc_free(&t.keys);
@@ -859,6 +862,7 @@ int adh_tui_main(const adh_config *cfg)
     screen_close(&t);
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
+    sigaction(SIGHUP, &old_hup, NULL);
     if (t.fatal[0])
         fprintf(stderr, "%s\n", t.fatal);
     tui_sim_free(&t.sim);

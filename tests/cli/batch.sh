@@ -1,7 +1,6 @@
 #!/bin/sh
 # A batch run writes the tables the core issue names, with their columns and
-# keys; without --out the force table streams to standard output; SIGINT
-# leaves valid tables that say they are partial.
+# keys; without --out the force table streams to standard output (signals: signals.sh).
 . "$(dirname "$0")/lib.sh"
 
 out="$TMP/run"
@@ -42,21 +41,6 @@ check "a force table streamed to a full disk exits 2 and says so ($(cat "$TMP/st
 "$ADHERE" --batch -q --no-plot --plots=force -N 100 --eps=10pm --turn=-1nm -o "$TMP/only" 2>/dev/null
 check "--plots=force writes no contact.tsv and no profiles.tsv" sh -c "[ -s '$TMP/only/force.tsv' ] && [ ! -e '$TMP/only/contact.tsv' ] && [ ! -e '$TMP/only/profiles.tsv' ]"
 
-# SIGINT during the run: tables valid, marked partial, exit 130. Sent once
-# the first step is solved (ADHERE_READY_FILE, see adhere(1)), not after a
-# guessed sleep; the paper's mixing rule keeps this run going for minutes.
-ADHERE_READY_FILE="$TMP/ready" "$ADHERE" --batch -q --no-plot -N 200 --eps=0.5pm --mixing=paper -o "$TMP/int" \
-    >/dev/null 2>"$TMP/stderr" &
-pid=$!
-wait_file "$TMP/ready" 60 "$pid"
-check "the first step creates \$ADHERE_READY_FILE" [ -e "$TMP/ready" ]
-kill -INT $pid
-wait $pid
-rc=$?
-check "SIGINT ends the batch with status 130 (got $rc)" [ "$rc" -eq 130 ]
-check "force.tsv says it is partial" grep -q "^# PARTIAL: interrupted" "$TMP/int/force.tsv"
-check "summary.tsv says complete 0" grep -qx "complete	0" "$TMP/int/summary.tsv"
-n=$(grep -v '^#' "$TMP/int/force.tsv" | tail -n +2 | wc -l)
-check "the rows computed so far are kept ($n rows)" [ "$n" -ge 1 ]
-check "every kept row has all 13 columns" awk -F'\t' '!/^#/ && NF != 13 {bad=1} END {exit bad}' "$TMP/int/force.tsv"
+# Signals (SIGINT halfway, partial tables, exit 130): tests/cli/signals.sh,
+# which waits for the phase to begin instead of sleeping.
 done_testing

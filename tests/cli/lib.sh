@@ -8,16 +8,19 @@ check() { # check "what" command...: ok when the command succeeds
     what=$1; shift
     if "$@"; then ok "$what"; else not_ok "$what"; fi
 }
-# wait_file FILE SECONDS [PID]: until FILE exists (a readiness signal, not a
-# guessed delay); gives up after SECONDS, or as soon as process PID is gone.
-wait_file() {
+# wait_phase FILE LINE PID: until FILE (ADHERE_READY_FILE, see adhere(1))
+# has the line LINE -- a phase's name, or "step" once the first step is
+# solved -- a readiness signal, not a guessed delay. Gives up after 60 s or
+# as soon as process PID is gone; 0 when the line came.
+wait_phase() {
     _i=0
-    while [ ! -e "$1" ] && [ "$_i" -lt $(($2 * 20)) ]; do
-        [ -n "${3:-}" ] && ! kill -0 "$3" 2>/dev/null && return 1
-        sleep 0.05
+    while [ "$_i" -lt 600 ]; do
+        grep -qx "$2" "$1" 2>/dev/null && return 0
+        kill -0 "$3" 2>/dev/null || return 1
+        sleep 0.1
         _i=$((_i + 1))
     done
-    [ -e "$1" ]
+    return 1
 }
 done_testing() { echo "1..$T"; [ "$FAILED" -eq 0 ]; }
 TMP=$(mktemp -d)

@@ -40,12 +40,12 @@ check() { what=$1; shift; if "$@"; then pass "$what"; else fail "$what"; fi; }
 # start: a fresh session running adhere in a 100x32 terminal; its exit
 # status lands in $work/exit.
 start() {
-    rm -f "$work/exit"
+    rm -f "$work/exit" "$work/stty"
     T kill-server 2>/dev/null
     k=$((k + 1))
     sock=adhere-test-$$-$k
     T new-session -d -s t -x 100 -y 32 \
-        "cd '$work' && LC_ALL=C.UTF-8 OPENBLAS_NUM_THREADS=1 '$bin' 2>'$work/stderr'; echo \$? >'$work/exit'; sleep 60"
+        "cd '$work' && LC_ALL=C.UTF-8 OPENBLAS_NUM_THREADS=1 '$bin' 2>'$work/stderr'; echo \$? >'$work/exit'; stty -a >'$work/stty'; sleep 60"
 }
 exit_status() {
     i=0
@@ -123,5 +123,19 @@ check "found the running adhere" [ -n "$pid" ]
 kill -TERM "$pid" 2>/dev/null
 check "SIGTERM during a run ends it with status 130, as --batch" [ "$(exit_status)" = 130 ]
 check "and the terminal is restored" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
+
+# SIGHUP (the terminal closed): the screen is restored all the same, and
+# the exit says which signal (129 = 128 + SIGHUP).
+start
+wait_for "? lists every key" >/dev/null
+pid=$(pgrep -P "$(T display -p -t t '#{pane_pid}')" | head -1)
+kill -HUP "$pid" 2>/dev/null
+check "SIGHUP ends it with status 129" [ "$(exit_status)" = 129 ]
+check "and the terminal is restored (curses is not left up)" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
+i=0
+while [ ! -s "$work/stty" ] && [ "$i" -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+check "and the terminal modes are back: echo and canonical input ($(grep -o -- '-*icanon\|-*echo ' "$work/stty" | tr '\n' ' '))" \
+    sh -c "grep -q ' icanon' '$work/stty' && grep -q ' echo ' '$work/stty'"
+check "and it says why on stderr" grep -q "stopped by signal 1" "$work/stderr"
 echo "1..$n"
 [ "$failed" -eq 0 ]

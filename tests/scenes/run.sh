@@ -111,8 +111,7 @@ check "a sweep without --out prints sweep.tsv on stdout" sh -c "grep -v '^#' '$T
 ADHERE_READY_FILE="$TMP/ready" "$ADHERE" --batch -q fig7 -N 100 --mixing=paper --no-plot -o "$TMP/int" \
     >/dev/null 2>"$TMP/stderr" &
 pid=$!
-wait_file "$TMP/ready" 60 "$pid"
-check "a sweep's first step creates \$ADHERE_READY_FILE" [ -e "$TMP/ready" ]
+check "a sweep's first step is announced in \$ADHERE_READY_FILE" wait_phase "$TMP/ready" step "$pid"
 kill -INT $pid
 wait $pid
 rc=$?

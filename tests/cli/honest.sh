@@ -1,0 +1,86 @@
+#!/bin/sh
+# The status tells the truth and no input is silently dropped: steps at the
+# iteration cap make a run `unconverged` (exit 1, said under -q) unless
+# --allow-unconverged; an unreachable eps, text after a section header, old
+# Mac line ends, empty list elements, flags that cannot go together, a FIFO
+# as replay script, a missing style file and an unwritable standard output
+# are each refused with a message (exit 2); mistakes get a hint.
+. "$(dirname "$0")/lib.sh"
+
+# --- item 4: unconverged steps ------------------------------------------
+quick="-N 200 --eps=10pm -d 0.5nm --turn=-1nm --no-plot"
+"$ADHERE" --batch -q $quick --max-iter=3 -o "$TMP/cap" >/dev/null 2>"$TMP/cap.err"
+rc=$?
+check "--max-iter=3: exit 1, as for a solver failure (got $rc)" [ "$rc" -eq 1 ]
+check "summary.tsv says status unconverged, not success" grep -qx 'status	unconverged' "$TMP/cap/summary.tsv"
+check "-q does not hide the warning ($(head -c 160 "$TMP/cap.err"))" grep -q 'warning: .* reached the iteration cap' "$TMP/cap.err"
+"$ADHERE" --batch -q $quick --max-iter=3 --allow-unconverged -o "$TMP/allow" >/dev/null 2>"$TMP/allow.err"
+rc=$?
+check "--allow-unconverged: exit 0 (got $rc)" [ "$rc" -eq 0 ]
+check "and the summary still says unconverged" grep -qx 'status	unconverged' "$TMP/allow/summary.tsv"
+"$ADHERE" --batch -q $quick -o "$TMP/fine" >/dev/null 2>&1
+check "a converged run still says success" grep -qx 'status	success' "$TMP/fine/summary.tsv"
+
+refused() { # refused "expected text" args...: exit 2, one message with the text
+    want=$1; shift
+    "$@" >"$TMP/out" 2>"$TMP/err"
+    rc=$?
+    if [ "$rc" -eq 2 ] && grep -q -- "$want" "$TMP/err"; then
+        ok "$* -> exit 2: $(head -c 200 "$TMP/err")"
+    else
+        not_ok "$* -> exit $rc (want 2 and '$want'): $(head -c 300 "$TMP/err")"
+    fi
+}
+refused "eps = 1e-30 m is below what double precision can reach.*smallest eps allowed here is [0-9.e-]* m" \
+    "$ADHERE" --batch -q --eps=1e-30 -o "$TMP/e30"
+check "and nothing was written" [ ! -e "$TMP/e30/force.tsv" ]
+
+# --- item 5: nothing dropped in silence ---------------------------------
+printf '[material] E = 1GPa' >"$TMP/oneline.scene"
+refused "oneline.scene:1: text after the section header \[material\]" "$ADHERE" --plan "$TMP/oneline.scene"
+printf '[material]\rE = 1GPa\rA = 2e-19J\r' >"$TMP/mac.scene"
+refused "mac.scene:1: a carriage return without a line feed" "$ADHERE" --plan "$TMP/mac.scene"
+printf '[material]\r\nE = 1GPa\r\n' >"$TMP/dos.scene"
+"$ADHERE" --plan "$TMP/dos.scene" 2>&1 | grep '^loading' >"$TMP/dos.plan"
+"$ADHERE" --plan 2>&1 | grep '^loading' >"$TMP/default.plan"
+"$ADHERE" --plan -E 1GPa 2>&1 | grep '^loading' >"$TMP/e1.plan"
+check "DOS (CRLF) line ends still read: E = 1GPa moves the start as -E 1GPa does ($(cat "$TMP/dos.plan"))" \
+    sh -c "! cmp -s '$TMP/dos.plan' '$TMP/default.plan' && cmp -s '$TMP/dos.plan' '$TMP/e1.plan'"
+printf '[protocol]\nturns = -1nm,,-2nm\n' >"$TMP/empty.scene"
+refused "turns: '-1nm,,-2nm' has an empty element" "$ADHERE" --plan "$TMP/empty.scene"
+refused "--turn: '-1nm,,-2nm' has an empty element" "$ADHERE" --plan --turn=-1nm,,-2nm
+refused "--profiles: '-1nm,' has an empty element" "$ADHERE" --plan --profiles=-1nm,
+refused "--plan and --cost do not go together" "$ADHERE" --plan --cost
+refused "--replay drives the TUI .* --batch" "$ADHERE" --batch --replay="$TMP/x.keys"
+refused "--reference=static is for --mode=relax" "$ADHERE" --batch --mode=static --reference=static
+refused "--reference=static is for --mode=relax" "$ADHERE" --batch --mode=rigid --reference=static
+refused "--screen writes the final screen of a --replay run" "$ADHERE" --screen="$TMP/s.txt"
+mkfifo "$TMP/fifo" 2>/dev/null
+if [ -p "$TMP/fifo" ]; then
+    refused "cannot read the replay script: not a regular file" timeout 10 "$ADHERE" --replay="$TMP/fifo"
+else
+    T=$((T + 1)); echo "ok $T # SKIP mkfifo failed: no FIFO to try"
+fi
+"$ADHERE" --batch -q --mode=rigid -N 10 --turn=-1nm -o "$TMP/rigid" >/dev/null 2>"$TMP/rigid.err"
+rc=$?
+check "--mode=rigid builds no grid, so a coarse N is no error (exit $rc: $(head -c 120 "$TMP/rigid.err"))" [ "$rc" -eq 0 ]
+refused "too small for this material: the automatic start .* is 7.35e-09 m.* give a start" \
+    "$ADHERE" --plan -R 150nm --turn=none
+refused "turning point -5e-09 m (the default turn) is too deep.*give a shallower --turn" "$ADHERE" --plan -R 150nm
+refused "--gnuplot-style=$TMP/none.gp: No such file" "$ADHERE" --batch -q --gnuplot-style="$TMP/none.gp" -o "$TMP/st"
+check "a missing style file is found before the run: no table written" [ ! -e "$TMP/st/force.tsv" ]
+for a in --plan --help --list-keys --version; do
+    "$ADHERE" $a >/dev/full 2>"$TMP/err"
+    rc=$?
+    check "$a to a full disk: exit 2 with a message (got $rc: $(cat "$TMP/err"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q 'cannot write to standard output' '$TMP/err'"
+done
+
+# --- errors that teach --------------------------------------------------
+refused "'GPa' looks like the unit of '-E 1': write the number and its unit together, -E 1GPa" "$ADHERE" -E 1 GPa
+refused "unknown unit 'GPA' (units are case-sensitive: did you mean 'GPa'?)" "$ADHERE" -E 1GPA
+refused "unknown unit 'Gpa' (units are case-sensitive: did you mean 'GPa'?)" "$ADHERE" -E 1Gpa
+refused "unknown option '--bach': did you mean --batch?" "$ADHERE" --bach
+refused "'extra': --help, --version and --list-keys take no scene" "$ADHERE" --version extra
+check "and --version alone still prints the version" sh -c "'$ADHERE' --version | grep -q '^adhere '"
+done_testing
