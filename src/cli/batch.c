@@ -97,6 +97,15 @@ int adh_batch_main(const adh_cli *cli)
         return ADH_EXIT_SOLVER;
     }
 
+    /* --force on a grid coarser than the resolved limit: said even with -q */
+    if (!rigid) {
+        adh_grid_report gr;
+        adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, adh_config_spacing(cfg), &gr);
+        if (!gr.resolved) {
+            adh_grid_unresolved_sentence(&gr, why, sizeof why);
+            fprintf(stderr, "adhere: warning: %s (--force; summary.tsv: resolved 0)\n", why);
+        }
+    }
     adh_interrupt_catch();
 
     batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2), 0 };
@@ -134,6 +143,9 @@ int adh_batch_main(const adh_cli *cli)
     }
     if (note[0])
         fprintf(stderr, "adhere: %s\n", note);
+    char sep[512];
+    if (status == ADH_EXIT_OK && !adh_run_separated(&run, sep, sizeof sep))
+        fprintf(stderr, "adhere: incomplete: %s (summary.tsv: complete 0)\n", sep);
     if (run.unconverged && !cfg->quiet)
         fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0\n",
                 run.unconverged, run.nrows, cfg->relax.max_iter, cfg->relax.eps);

@@ -5,7 +5,7 @@
 . "$(dirname "$0")/lib.sh"
 
 out="$TMP/run"
-"$ADHERE" --batch -q --no-plot -N 100 --eps=3pm --turn=-2nm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --turn=-2nm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
 rc=$?
 check "batch run exits 0 (got $rc: $(head -c 300 "$TMP/stderr"))" [ "$rc" -eq 0 ]
 header=$(grep -v '^#' "$out/force.tsv" | head -1)
@@ -23,7 +23,7 @@ check "no temporary files are left" sh -c "! ls -a '$out' | grep -q tmp"
 check "turns.tsv names the turning point" awk -F'\t' '!/^#/ && NR>3 && $1 < -1.99e-9 && $1 > -2.01e-9 {f=1} END {exit !f}' "$out/turns.tsv"
 
 # Standard output when there is no --out.
-"$ADHERE" --batch -q -N 100 --eps=3pm --turn=none >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --batch -q -N 100 --force --eps=3pm --turn=none >"$TMP/stdout" 2>"$TMP/stderr"
 rc=$?
 check "stdout run exits 0" [ "$rc" -eq 0 ]
 check "the force table goes to stdout with its header" grep -q "^h0	F	delta" "$TMP/stdout"
@@ -33,18 +33,18 @@ last_a=$(grep -v '^#' "$TMP/stdout" | tail -1 | cut -f5)
 check "its last row is in contact (a = $last_a)" awk "BEGIN {exit !($last_a > 0)}"
 
 # A write that fails (full disk): said, not swallowed.
-"$ADHERE" --batch -q -N 100 --eps=10pm --turn=none >/dev/full 2>"$TMP/stderr"
+"$ADHERE" --batch -q -N 100 --force --eps=10pm --turn=none >/dev/full 2>"$TMP/stderr"
 rc=$?
 check "a force table streamed to a full disk exits 2 and says so ($(cat "$TMP/stderr"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'No space left on device' '$TMP/stderr'"
 
 # Only the plot tables asked for: no contact-line table without the contact plot.
-"$ADHERE" --batch -q --no-plot --plots=force -N 100 --eps=10pm --turn=-1nm -o "$TMP/only" 2>/dev/null
+"$ADHERE" --batch -q --no-plot --plots=force -N 100 --force --eps=10pm --turn=-1nm -o "$TMP/only" 2>/dev/null
 check "--plots=force writes no contact.tsv and no profiles.tsv" sh -c "[ -s '$TMP/only/force.tsv' ] && [ ! -e '$TMP/only/contact.tsv' ] && [ ! -e '$TMP/only/profiles.tsv' ]"
 
 # SIGINT halfway: tables valid, marked partial, exit 130. The paper's
 # mixing rule keeps this run going well past the 2 s mark.
-"$ADHERE" --batch -q --no-plot -N 200 --eps=0.5pm --mixing=paper -o "$TMP/int" >/dev/null 2>"$TMP/stderr" &
+"$ADHERE" --batch -q --no-plot -N 200 --force --eps=0.5pm --mixing=paper -o "$TMP/int" >/dev/null 2>"$TMP/stderr" &
 pid=$!
 sleep 2
 kill -INT $pid
