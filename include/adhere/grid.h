@@ -33,7 +33,7 @@ typedef enum adh_grid_use { ADH_GRID_RELAX = 0, ADH_GRID_STATIC = 1 } adh_grid_u
  * values need a spacing of at most this many edge-zone widths
  * l = (243 pi^2/128) E z0^4 / A ~ 0.37 sqrt(R z0) / sigma. */
 #define ADH_GRID_EDGE_SPACING_RELAX 0.45
-#define ADH_GRID_EDGE_SPACING_STATIC 0.35
+#define ADH_GRID_EDGE_SPACING_STATIC 0.3
 double adh_grid_edge_spacing(adh_grid_use use);
 /* The budget of an automatic grid: a dense N x N kernel of at most this
  * many nodes (4000: 128 MB, ~4 ms per relaxation iteration, a Figure 4

@@ -33,7 +33,7 @@ static const option_doc options[] = {
     { { "radius", required_argument, 0, 'R' }, "M", "effective radius R (default 10um)" },
     { { "nodes", required_argument, 0, 'N' }, "N", "grid nodes N, 10 to 20000 (default 1000, more where the contact edge needs it)" },
     { { "spacing", required_argument, 0, OPT_SPACING }, "M", "grid spacing (default: the paper's 0.0212 sqrt(R z0), or finer where the contact edge needs it)" },
-    { { "force", no_argument, 0, OPT_FORCE }, NULL, "run a grid coarser than the resolved limit (0.45 edge-zone widths, static 0.35); marked resolved 0" },
+    { { "force", no_argument, 0, OPT_FORCE }, NULL, "run a grid coarser than the resolved limit (0.45 edge-zone widths, static 0.3); marked resolved 0" },
     { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
