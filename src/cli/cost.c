@@ -266,6 +266,7 @@ int adh_cost_main(const adh_cli *cli)
                 adh_config c = *cfg;
                 c.nodes = nodes[a];
                 c.relax.eps = eps[e];
+                c.force = 1; /* coarse grids are what the report measures */
                 if (adh_cli_validate(&c, why, sizeof why) != 0) {
                     fprintf(stderr, "adhere: --cost: N = %zu, eps = %g m: %s\n", nodes[a], eps[e], why);
                     free(runs);
