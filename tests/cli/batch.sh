@@ -53,7 +53,24 @@ rc=$?
 check "SIGINT ends the batch with status 130 (got $rc)" [ "$rc" -eq 130 ]
 check "force.tsv says it is partial" grep -q "^# PARTIAL: interrupted" "$TMP/int/force.tsv"
 check "summary.tsv says complete 0" grep -qx "complete	0" "$TMP/int/summary.tsv"
+check "an interrupted run is never converged 1" grep -qx "converged	0" "$TMP/int/summary.tsv"
 n=$(grep -cv '^#' "$TMP/int/force.tsv")
 check "the rows computed so far are kept ($n lines)" [ "$n" -gt 10 ]
 check "every kept row has all 13 columns" awk -F'\t' '!/^#/ && NF != 13 {bad=1} END {exit bad}' "$TMP/int/force.tsv"
+# The grid's resolution: an explicit grid coarser than the limit is refused
+# without --force; with it the run warns (even with -q) and says resolved 0.
+"$ADHERE" --batch -q --no-plot -N 100 --eps=3pm --turn=-2nm -o "$TMP/refused" >/dev/null 2>"$TMP/stderr"
+rc=$?
+check "an unresolved explicit grid is refused with exit 2 ($rc)" sh -c "[ $rc -eq 2 ] && grep -q 'coarser than the resolved limit' '$TMP/stderr' && grep -q -- '--force' '$TMP/stderr' && [ ! -e '$TMP/refused/summary.tsv' ]"
+"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --turn=-2nm -o "$TMP/forced" >/dev/null 2>"$TMP/stderr.force"
+check "--force: the warning is on stderr even with -q" grep -q "warning: grid spacing .* resolved 0" "$TMP/stderr.force"
+check "--force: summary.tsv says resolved 0 and status unresolved" sh -c "grep -qx 'resolved	0' '$TMP/forced/summary.tsv' && grep -qx 'status	unresolved' '$TMP/forced/summary.tsv'"
+check "summary.tsv has edge_nodes below the limit's 2.2" awk -F'\t' '$1=="edge_nodes" && $2>0 && $2<2.2 {f=1} END {exit !f}' "$TMP/forced/summary.tsv"
+check "summary.tsv has rmax_force_fraction, 1 to 3 % for this grid" awk -F'\t' '$1=="rmax_force_fraction" && $2>0.01 && $2<0.03 {f=1} END {exit !f}' "$TMP/forced/summary.tsv"
+# The surfaces never separate when unloading stops (at the start) before the
+# jump-out: complete 0, said on stderr and in summary.tsv.
+"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --start=3nm --turn=-1nm -o "$TMP/stuck" >/dev/null 2>"$TMP/stderr"
+rc=$?
+check "a run that never separates still exits 0 ($rc) and says why on stderr" sh -c "[ $rc -eq 0 ] && grep -q 'incomplete: the surfaces never separated' '$TMP/stderr'"
+check "its summary.tsv says complete 0, status not separated, and why" sh -c "grep -qx 'complete	0' '$TMP/stuck/summary.tsv' && grep -qx 'status	not separated' '$TMP/stuck/summary.tsv' && grep -q '^# INCOMPLETE: the surfaces never separated' '$TMP/stuck/summary.tsv'"
 done_testing
