@@ -24,6 +24,52 @@ double adh_grid_default_rmax(const adh_material *m);
  * divided by n. Every driver uses this one rule. */
 double adh_grid_spacing_for(const adh_material *m, size_t n);
 
+/* What the grid serves: the relaxation (dynamic, the paper's) or the static
+ * equilibrium curve, whose exact folds feel the lattice more. */
+typedef enum adh_grid_use { ADH_GRID_RELAX = 0, ADH_GRID_STATIC = 1 } adh_grid_use;
+
+/* The resolution limits, from the measured study in README ("Resolution"):
+ * pull-off, jump-in and hysteresis within 1 % of their grid-converged
+ * values need a spacing of at most this many edge-zone widths
+ * l = (243 pi^2/128) E z0^4 / A ~ 0.37 sqrt(R z0) / sigma. */
+#define ADH_GRID_EDGE_SPACING_RELAX 0.45
+#define ADH_GRID_EDGE_SPACING_STATIC 0.3
+double adh_grid_edge_spacing(adh_grid_use use);
+/* The budget of an automatic grid: a dense N x N kernel of at most this
+ * many nodes (4000: 128 MB, ~4 ms per relaxation iteration, a Figure 4
+ * cycle of ~15 min on one core). */
+#define ADH_GRID_MAX_NODES 4000
+
+typedef struct adh_grid_report {
+    size_t n;             /* nodes */
+    double dr;            /* spacing, m */
+    double rmax;          /* N dr, m */
+    double sigma;         /* eq 17 */
+    double edge;          /* edge-zone width l, m */
+    double edge_nodes;    /* l / dr: nodes across the edge zone */
+    double limit;         /* the limit in edge-zone widths (adh_grid_edge_spacing) */
+    double max_spacing;   /* the resolved limit, limit x l, m */
+    int resolved;         /* 1 when dr <= max_spacing */
+    double kernel_bytes;  /* memory of the dense kernel, bytes */
+} adh_grid_report;
+
+/* The resolution check of a uniform grid of n nodes of spacing dr: every
+ * driver (batch, TUI) reports this one. */
+void adh_grid_check(const adh_material *m, adh_grid_use use, size_t n, double dr, adh_grid_report *r);
+
+/* The sentence a driver shows for an unresolved grid (the same everywhere). */
+void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t len);
+
+/* The grid a run gets when neither N nor the spacing is given: the paper's
+ * (N = 1000 at its scaled spacing) where that resolves the edge zone; else
+ * the resolved spacing out to the radius the run needs (the contact at the
+ * deepest turn within 0.8 Rmax and a negligible force at the edge). *n and *dr are set and
+ * ADH_SUCCESS returned, or ADH_EGRID with a sentence naming sigma, the grid
+ * needed, its memory and what to do. *dr is NAN when the paper's scaled
+ * spacing is the choice (it then follows R and z0 as before). */
+int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, size_t *n, double *dr, char *why,
+                    size_t whylen);
+
 adh_grid *adh_grid_alloc(size_t n, double dr);
 void adh_grid_free(adh_grid *g);
 

@@ -11,9 +11,10 @@
 
 typedef struct adh_obs {
     double h0;       /* drive position, m */
-    double F;        /* total force, N; positive is repulsive (eq 13) */
-    double delta;    /* central deformation h(0) - h0 = -u(0), m (eq 14) */
-    double hc;       /* central gap h(0), m */
+    double F;        /* total force, N; positive is repulsive (eq 13), tail included */
+    double F_tail;   /* the part of F from beyond Rmax (adh_force_tail), N */
+    double delta;    /* central deformation h(0) - h0 = -u(0), m (eq 14), at r = 0 */
+    double hc;       /* central gap h(0) = h0 + delta, m, at r = 0 */
     double a;        /* contact radius, m; 0 out of contact */
     double angle;    /* exterior contact angle, rad; 0 out of contact */
     double F_rigid;  /* rigid-sphere force at h0 (eq 22), N; NAN for h0 <= 0 */
@@ -28,7 +29,11 @@ typedef struct adh_obs {
 /* Fills the fields computed from the state (F, delta, hc, a, angle, F_rigid, h0). */
 void adh_observe(const adh_grid *g, const adh_material *m, const adh_state *s, adh_obs *o);
 
-double adh_force(const adh_grid *g, const adh_state *s);
+/* eq 13 over the grid plus the tail beyond Rmax (adh_force_tail). */
+double adh_force(const adh_grid *g, const adh_material *m, const adh_state *s);
+/* The LJ force from r > Rmax with the surfaces undeformed there: eq 22's
+ * closed form at the edge gap h0 + Rmax^2/2R. */
+double adh_force_tail(const adh_grid *g, const adh_material *m, double h0);
 /* Radius where h first rises through 1.1 z0 going out from the centre,
  * linearly interpolated between nodes; 0 when no node is in contact. */
 double adh_contact_radius(const adh_grid *g, const double *h, double z0);

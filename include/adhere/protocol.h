@@ -76,6 +76,12 @@ int adh_run_push_row(adh_run *run, const adh_obs *row);
 /* The last unloading branch's summary (the deepest turn), or NULL. */
 const adh_turn_result *adh_run_main_turn(const adh_run *run);
 
+/* Whether every unloading branch ended with the surfaces apart: 1, or 0
+ * with a sentence in why (a branch that reached the start still in
+ * contact, as a pinned contact line does on an unresolved grid). A run
+ * without unloading branches is not asked to separate: 1. */
+int adh_run_separated(const adh_run *run, char *why, size_t whylen);
+
 /* Called after every drive step with the row just added; return nonzero to stop. */
 typedef int (*adh_step_cb)(const adh_obs *row, const adh_run *run, void *ctx);
 
@@ -86,5 +92,12 @@ typedef int (*adh_step_cb)(const adh_obs *row, const adh_run *run, void *ctx);
 int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
                      const adh_relax_settings *rs, const adh_protocol_settings *ps,
                      adh_step_cb cb, void *ctx, adh_run *run);
+
+/* The area between the loading and unloading force curves over the positions
+ * both visit (N m): the energy one cycle dissipates. 0 without unloading. */
+double adh_hysteresis_area(const adh_run *run, double step);
+/* The same for a static curve (one path, stable flags): the area between the
+ * highest and lowest stable force at each h0, sampled every step. */
+double adh_static_hysteresis_area(const adh_run *curve, double step);
 
 #endif

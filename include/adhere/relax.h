@@ -26,6 +26,8 @@ typedef struct adh_relax_settings {
     adh_mix_rule rule;
     double momentum;     /* momentum rule: fraction of the previous update kept */
     double eps;          /* convergence: sqrt(sum (u_new - u_old)^2) / N < eps, m */
+    double rtol;         /* and the central change |u_new(0) - u_old(0)| at most
+                            rtol (|u(0)| + |d|) + eps/1000: the step's shift has relaxed */
     double mix_max;      /* largest mixing ratio (paper: 0.2) */
     double mix_min;      /* the ratio never falls below this */
     double mix_down;     /* factor applied on oscillation or growth */

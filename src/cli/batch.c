@@ -101,6 +101,15 @@ int adh_batch_main(const adh_cli *cli)
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
     int rigid = cfg->mode == ADH_MODE_RIGID;
     adh_grid *g = rigid ? NULL : adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
+    /* --force on a grid coarser than the resolved limit: said even with -q */
+    if (!rigid) {
+        adh_grid_report gr;
+        adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, adh_config_spacing(cfg), &gr);
+        if (!gr.resolved) {
+            adh_grid_unresolved_sentence(&gr, why, sizeof why);
+            fprintf(stderr, "adhere: warning: %s (--force; summary.tsv: resolved 0)\n", why);
+        }
+    }
     /* caught from here: a large ring kernel takes seconds to build */
     adh_interrupt_catch();
     int kst = ADH_ENOMEM;
@@ -159,6 +168,9 @@ int adh_batch_main(const adh_cli *cli)
     }
     if (note[0])
         fprintf(stderr, "adhere: %s\n", note);
+    char sep[512];
+    if (status == ADH_EXIT_OK && !adh_run_separated(&run, sep, sizeof sep))
+        fprintf(stderr, "adhere: incomplete: %s (summary.tsv: complete 0)\n", sep);
     /* Steps at the cap change what the numbers mean: said even under -q, and
      * the run's status, unless --allow-unconverged asked for them. */
     int unconverged = run.unconverged && status == ADH_EXIT_OK;

@@ -60,62 +60,6 @@ typedef struct cost_job {
 
 
 
-double adh_hysteresis_area(const adh_run *run, double step)
-{
-    /* Loading and unloading visit the same positions (start - k d and
-     * turn + k d with the turn on the drive grid), so pair them by h0 and
-     * integrate the force gap with the trapezoid rule along the loading rows. */
-    double area = 0, prev_h = NAN, prev_gap = NAN;
-    for (size_t i = 0; i < run->nrows; i++) {
-        const adh_obs *l = &run->rows[i];
-        if (l->path != 0)
-            continue;
-        double gap = NAN;
-        for (size_t j = 0; j < run->nrows; j++) {
-            const adh_obs *u = &run->rows[j];
-            if (u->path == (int)run->nturns && u->path > 0 && fabs(u->h0 - l->h0) < 1e-6 * step) {
-                gap = l->F - u->F;
-                break;
-            }
-        }
-        if (!isnan(gap) && !isnan(prev_gap))
-            area += 0.5 * (gap + prev_gap) * fabs(prev_h - l->h0);
-        prev_gap = gap;
-        prev_h = l->h0;
-    }
-    return area;
-}
-
-/* The hysteresis left when eps -> 0: under displacement control the drive
- * follows stable equilibria only, loading on the highest-force one at each
- * h0 (the outer branch until it ends at the jump-in fold) and unloading on
- * the lowest (the contact until the jump-out fold). Between the folds, and
- * wherever lattice trapping makes stable legs overlap, the two differ: the
- * area between them is the hysteresis no slower drive removes. */
-double adh_static_hysteresis_area(const adh_run *curve, double step)
-{
-    double lo = INFINITY, hi = -INFINITY;
-    for (size_t i = 0; i < curve->nrows; i++) {
-        lo = fmin(lo, curve->rows[i].h0);
-        hi = fmax(hi, curve->rows[i].h0);
-    }
-    double area = 0;
-    for (double x = lo + 0.5 * step; x < hi; x += step) {
-        double fmax_ = -INFINITY, fmin_ = INFINITY;
-        for (size_t i = 0; i + 1 < curve->nrows; i++) {
-            const adh_obs *a = &curve->rows[i], *b = &curve->rows[i + 1];
-            if (!a->stable || !b->stable || (x - a->h0) * (x - b->h0) > 0 || a->h0 == b->h0)
-                continue;
-            double F = a->F + (b->F - a->F) * (x - a->h0) / (b->h0 - a->h0);
-            fmax_ = fmax(fmax_, F);
-            fmin_ = fmin(fmin_, F);
-        }
-        if (fmax_ > fmin_)
-            area += (fmax_ - fmin_) * step;
-    }
-    return area;
-}
-
 static void measure(cost_run *cr, const adh_run *run, double step)
 {
     const adh_turn_result *t = adh_run_main_turn(run);
@@ -353,6 +297,7 @@ int adh_cost_main(const adh_cli *cli)
                 adh_config c = *cfg;
                 c.nodes = nodes[a];
                 c.relax.eps = eps[e];
+                c.force = 1; /* coarse grids are what the report measures */
                 if (adh_cli_validate(&c, why, sizeof why) != 0) {
                     fprintf(stderr, "adhere: --cost: N = %zu, eps = %g m: %s\n", nodes[a], eps[e], why);
                     free(runs);

@@ -10,11 +10,4 @@
 
 int adh_cost_main(const adh_cli *cli);
 
-/* The area between the loading and unloading force curves over the positions
- * both visit (N m): the energy one cycle dissipates. 0 without unloading. */
-double adh_hysteresis_area(const adh_run *run, double step);
-/* The same for a static curve (one path, stable flags): the area between the
- * highest and lowest stable force at each h0, sampled every step. */
-double adh_static_hysteresis_area(const adh_run *curve, double step);
-
 #endif

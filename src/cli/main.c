@@ -9,6 +9,7 @@
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "plot/plot.h"
+#include "scene/config.h"
 #include "scene/plan.h"
 #include "tui/tui.h"
 
@@ -58,6 +59,11 @@ int main(int argc, char **argv)
      * the drive grid so every one is really stored (plan and run agree). */
     if ((cli.cfg.plots & ADH_PLOT_PROFILE) && cli.cfg.proto.nprofiles == 0 && cli.cfg.mode == ADH_MODE_RELAX)
         cli.cfg.proto.nprofiles = adh_plot_default_profiles(&cli.cfg, cli.cfg.proto.profiles, 6);
+    /* No grid given: the one the contact's edge needs, or a refusal. */
+    if (cli.action != ADH_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return ADH_EXIT_USAGE;
+    }
     /* --cost replaces N and eps and checks each of its runs itself. */
     if (cli.action != ADH_ACT_COST && adh_cli_validate(&cli.cfg, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);

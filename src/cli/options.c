@@ -18,7 +18,7 @@ enum {
     OPT_SPACING = 256, OPT_START, OPT_TURN, OPT_KERNEL, OPT_REPLAY, OPT_SCREEN, OPT_SIZE,
     OPT_NO_CLOCK, OPT_LIST_KEYS, OPT_NO_PLOT, OPT_PLOTS, OPT_PROFILES, OPT_DRIVE_SPEED,
     OPT_GNUPLOT_STYLE, OPT_PLAN, OPT_DWELL, OPT_MODE, OPT_REFERENCE, OPT_COST, OPT_COST_EPS,
-    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED
+    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE
 };
 
 typedef struct option_doc {
@@ -34,8 +34,9 @@ static const option_doc options[] = {
     { { "hamaker", required_argument, 0, 'A' }, "J", "Hamaker constant A (default 1e-19J)" },
     { { "z0", required_argument, 0, 'z' }, "M", "Lennard-Jones equilibrium separation z0 (default 0.5nm)" },
     { { "radius", required_argument, 0, 'R' }, "M", "effective radius R (default 10um)" },
-    { { "nodes", required_argument, 0, 'N' }, "N", "grid nodes N, 10 to 20000 (default 1000)" },
-    { { "spacing", required_argument, 0, OPT_SPACING }, "M", "grid spacing (default 0.0212 sqrt(R z0): 1.5nm at R=10um, z0=0.5nm)" },
+    { { "nodes", required_argument, 0, 'N' }, "N", "grid nodes N, 10 to 20000 (default 1000, more where the contact edge needs it)" },
+    { { "spacing", required_argument, 0, OPT_SPACING }, "M", "grid spacing (default: the paper's 0.0212 sqrt(R z0), or finer where the contact edge needs it)" },
+    { { "force", no_argument, 0, OPT_FORCE }, NULL, "run a grid coarser than the resolved limit (0.45 edge-zone widths, static 0.3); marked resolved 0" },
     { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
@@ -168,7 +169,7 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
             return 2;
         }
         if (c == 'N')
-            cfg->nodes = (size_t)v;
+            cfg->nodes = (size_t)v, cfg->nodes_given = 1;
         else if (c == OPT_DWELL)
             cfg->proto.dwell = (size_t)v;
         else
@@ -280,6 +281,7 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
     case OPT_NO_PLOT: cfg->plot = 0; return 0;
     case 'q': cfg->quiet = 1; return 0;
     case OPT_ALLOW_UNCONVERGED: cfg->allow_unconverged = 1; return 0;
+    case OPT_FORCE: cfg->force = 1; return 0;
     case 'b': if (cli->action == ADH_ACT_TUI) cli->action = ADH_ACT_BATCH; return 0;
     case OPT_PLAN: cli->action = ADH_ACT_PLAN; return 0;
     case OPT_COST: cli->action = ADH_ACT_COST; return 0;
@@ -544,5 +546,16 @@ static int validate_run(const adh_config *cfg, char *why, size_t whylen)
     }
     int rc = adh_protocol_check(&cfg->proto, &cfg->mat, g, why, whylen);
     adh_grid_free(g);
-    return rc == ADH_SUCCESS ? 0 : 2;
+    if (rc != ADH_SUCCESS)
+        return 2;
+    adh_grid_report gr;
+    adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);
+    if (cfg->mode != ADH_MODE_RIGID && !gr.resolved && !cfg->force) {
+        adh_grid_unresolved_sentence(&gr, why, whylen);
+        size_t len = strlen(why);
+        snprintf(why + len, whylen - len, "; use --spacing=%.3gm or more nodes over the same radius, or --force to run it anyway (marked resolved 0)",
+                 gr.max_spacing);
+        return 2;
+    }
+    return 0;
 }

@@ -347,6 +347,18 @@ int adh_sweep_main(const adh_cli *cli)
     adh_grid *g = NULL;
     adh_kernel *k = NULL;
     if (cfg->mode != ADH_MODE_RIGID) {
+        /* --force on a grid some runs do not resolve: said even with -q */
+        for (size_t i = 0; i < n; i++) {
+            adh_config rc;
+            adh_config_sweep_run(cfg, i, &rc);
+            adh_grid_report gr;
+            adh_grid_check(&rc.mat, adh_config_grid_use(&rc), rc.nodes, adh_config_spacing(&rc), &gr);
+            if (!gr.resolved) {
+                char msg[512];
+                adh_grid_unresolved_sentence(&gr, msg, sizeof msg);
+                fprintf(stderr, "adhere: warning: run %zu: %s (--force; its summary.tsv: resolved 0)\n", i + 1, msg);
+            }
+        }
         g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
         k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;   /* built before the handler: a signal still ends the program */
         if (!k) {

@@ -114,13 +114,30 @@ int adh_write_summary(FILE *f, const void *ctx)
     kv(f, "iterations", (double)r->iterations);
     kv(f, "unconverged_steps", (double)r->unconverged);
     kv(f, "seconds", r->seconds);
-    kv(f, "converged", (r->unconverged == 0 && r->status == ADH_SUCCESS) ? 1 : 0);
+    /* the grid's resolution of the contact edge (adh_grid_check) and the
+     * share of the starting force from beyond Rmax (the analytic tail) */
+    int rigid = c->mode == ADH_MODE_RIGID;
+    adh_grid_report gr;
+    adh_grid_check(&c->mat, adh_config_grid_use(c), c->nodes, adh_config_spacing(c), &gr);
+    kv(f, "edge_nodes", rigid ? NAN : gr.edge_nodes);
+    kv(f, "rmax_force_fraction", rigid || r->nrows == 0 ? NAN : r->rows[0].F_tail / r->rows[0].F);
+    kv(f, "resolved", rigid || gr.resolved ? 1 : 0);
+    /* an interrupted run stopped mid-way: its last step may be anywhere */
+    kv(f, "converged", (r->unconverged == 0 && r->status == ADH_SUCCESS && !r->interrupted) ? 1 : 0);
+    char why[512];
+    int separated = adh_run_separated(r, why, sizeof why);
     int lost = t->unwritten && *t->unwritten;
-    kv(f, "complete", t->partial || lost ? 0 : 1);
+    kv(f, "complete", t->partial || !separated || lost ? 0 : 1);
+    if (!separated && !t->partial)
+        fprintf(f, "# INCOMPLETE: %s\n", why);
     if (lost)
         fprintf(f, "not_written\t%s\n", t->unwritten);
+    /* success only for a finished, converged run on a resolved grid that
+     * separated, every file of which was written */
     const char *word = t->status ? t->status : adh_run_status_word(r);
-    fprintf(f, "status\t%s\n", lost && !strcmp(word, "success") ? "output incomplete" : word);
+    if (!strcmp(word, "success"))
+        word = !separated ? "not separated" : !(rigid || gr.resolved) ? "unresolved" : lost ? "output incomplete" : word;
+    fprintf(f, "status\t%s\n", word);
     return 0;
 }
 

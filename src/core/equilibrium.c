@@ -554,7 +554,7 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, size_t *ite
 
 static double force_of(const adh_static *w, const adh_state *x)
 {
-    return adh_force(w->grid, x);
+    return adh_force(w->grid, &w->m, x);
 }
 
 /* dF/ds along the unit tangent: F = 2 pi dr sum r p, dh = dh0 - du. */
@@ -563,7 +563,11 @@ static double force_slope(const adh_static *w, const double *D, const double *tu
     double s = 0, z0 = w->m.z0;
     for (size_t i = 0; i < w->n; i++)
         s += w->grid->r[i] * D[i] * z0 * (th - tu[i]);
-    return 2.0 * M_PI * w->grid->dr * s;
+    /* the tail beyond Rmax, 2 pi R W(h0 + Rmax^2/2R), has slope -2 pi R p there
+     * per unit h0; s is in units of z0 */
+    double edge = w->st->h0 + w->grid->rmax * w->grid->rmax / (2.0 * w->m.R);
+    double tail = edge > 0 ? -2.0 * M_PI * w->m.R * adh_lj_pressure(edge, w->m.A, z0) : 0;
+    return 2.0 * M_PI * w->grid->dr * s + tail * z0 * th;
 }
 
 /* Where the cubic Hermite interpolant on [0,1] (values y0, y1, end slopes

@@ -1,7 +1,11 @@
 #include "adhere/grid.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+
+#include "adhere/models.h"
+#include "adhere/status.h"
 
 /* The paper's grid, 1.5 nm at R = 10 um and z0 = 0.5 nm, is 0.0212 sqrt(R z0):
  * lateral lengths scale with sqrt(R z0), so this keeps the same nodes per
@@ -20,6 +24,93 @@ double adh_grid_default_rmax(const adh_material *m)
 double adh_grid_spacing_for(const adh_material *m, size_t n)
 {
     return fmin(adh_grid_default_rmax(m), 0.3 * m->R) / (double)n;
+}
+
+double adh_grid_edge_spacing(adh_grid_use use)
+{
+    return use == ADH_GRID_STATIC ? ADH_GRID_EDGE_SPACING_STATIC : ADH_GRID_EDGE_SPACING_RELAX;
+}
+
+void adh_grid_check(const adh_material *m, adh_grid_use use, size_t n, double dr, adh_grid_report *r)
+{
+    adh_derived d;
+    adh_material_derive(m, &d);
+    r->n = n;
+    r->dr = dr;
+    r->rmax = (double)n * dr;
+    r->sigma = d.sigma;
+    r->edge = adh_edge_zone(m);
+    r->edge_nodes = r->edge / dr;
+    r->limit = adh_grid_edge_spacing(use);
+    r->max_spacing = r->limit * r->edge;
+    /* a relative margin so the limit's own rounding never flips the flag */
+    r->resolved = dr <= r->max_spacing * (1 + 1e-9);
+    r->kernel_bytes = (double)n * (double)n * sizeof(double);
+}
+
+void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t len)
+{
+    snprintf(buf, len,
+             "grid spacing %.3g m is coarser than the resolved limit %.3g m at sigma = %.3g (%.2g widths of "
+             "the contact's edge zone, %.3g m; this grid has %.2f nodes across it): pull-off, jump-in and "
+             "hysteresis may be off by more than 1 %%",
+             r->dr, r->max_spacing, r->sigma, r->limit, r->edge, r->edge_nodes);
+}
+
+/* The contact radius at the deepest position, generously: JKR's a for the
+ * overlap z0 - deepest (adhesion enlarges it beyond Hertz's), or the
+ * protocol check's Hertz-based estimate, whichever is larger. */
+static double contact_estimate(const adh_material *m, double deepest)
+{
+    double depth = fmax(m->z0 - deepest, m->z0);
+    double lo = 0, hi = 10 * sqrt(2 * m->R * depth) + 10 * sqrt(m->R * m->z0);
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi), ov;
+        adh_jkr(m, mid, NULL, &ov);
+        if (ov < depth)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return fmax(hi, 1.5 * sqrt(2.0 * m->R * depth));
+}
+
+int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, size_t *n, double *dr, char *why,
+                    size_t whylen)
+{
+    double paper_rmax = fmin(adh_grid_default_rmax(m), 0.3 * m->R);
+    double widths = adh_grid_edge_spacing(use);
+    double limit = widths * adh_edge_zone(m);
+    if (paper_rmax / 1000.0 <= limit) {
+        *n = 1000;
+        *dr = NAN;
+        return ADH_SUCCESS;
+    }
+    /* the radius the protocol check asks for: the contact within 0.8 Rmax,
+     * the gap at the edge 10 z0 wide and the force beyond it below 1e-3 of
+     * 2 pi gamma R (gap over 36.5 z0) */
+    double a = contact_estimate(m, deepest);
+    double gap = 36.6 * m->z0 - fmin(deepest, 0.0);
+    double need = fmax(a / 0.8 * 1.05, sqrt(2.0 * m->R * gap));
+    /* a finer grid than the paper's costs N^2: only as far out as needed */
+    double rmax = need;
+    size_t nn = (size_t)ceil(rmax / limit);
+    if (nn > ADH_GRID_MAX_NODES || rmax > 0.3 * m->R) {
+        adh_derived d;
+        adh_material_derive(m, &d);
+        snprintf(why, whylen,
+                 "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
+                 "out to Rmax = %.3g m: N = %zu nodes and a %.0f MB kernel, beyond this program's budget of "
+                 "N = %d (%.0f MB); use a stiffer material or a smaller sigma, or give -N/--spacing "
+                 "yourself with --force (the run is then marked resolved 0)",
+                 d.sigma, limit, widths, adh_edge_zone(m), rmax, nn,
+                 (double)nn * (double)nn * 8 / 1048576.0, ADH_GRID_MAX_NODES,
+                 (double)ADH_GRID_MAX_NODES * ADH_GRID_MAX_NODES * 8 / 1048576.0);
+        return ADH_EGRID;
+    }
+    *n = nn < 10 ? 10 : nn;
+    *dr = rmax / (double)*n;
+    return ADH_SUCCESS;
 }
 
 adh_grid *adh_grid_alloc(size_t n, double dr)

@@ -147,6 +147,27 @@ void adh_run_free(adh_run *run)
     adh_run_init(run);
 }
 
+int adh_run_separated(const adh_run *run, char *why, size_t whylen)
+{
+    for (size_t i = 0; i < run->nturns; i++) {
+        const adh_turn_result *t = &run->turns[i];
+        if (t->path <= 0 || isfinite(t->jump_out_h0))
+            continue;
+        double a_end = NAN, h_end = NAN;
+        for (size_t j = run->nrows; j-- > 0;)
+            if (run->rows[j].path == t->path) {
+                a_end = run->rows[j].a;
+                h_end = run->rows[j].h0;
+                break;
+            }
+        snprintf(why, whylen, "the surfaces never separated: unloading from the turn at h0 = %.4g m ended at "
+                 "h0 = %.4g m still in contact (contact radius %.4g m), so there is no jump-out and the "
+                 "pull-off is only the lowest force seen", t->h0, h_end, a_end);
+        return 0;
+    }
+    return 1;
+}
+
 const adh_turn_result *adh_run_main_turn(const adh_run *run)
 {
     for (size_t i = run->nturns; i-- > 0;)
@@ -375,4 +396,60 @@ int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material 
         rc = ADH_SUCCESS; /* interrupted on request: not an error, run->interrupted says so */
     run->status = rc;
     return rc;
+}
+
+double adh_hysteresis_area(const adh_run *run, double step)
+{
+    /* Loading and unloading visit the same positions (start - k d and
+     * turn + k d with the turn on the drive grid), so pair them by h0 and
+     * integrate the force gap with the trapezoid rule along the loading rows. */
+    double area = 0, prev_h = NAN, prev_gap = NAN;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *l = &run->rows[i];
+        if (l->path != 0)
+            continue;
+        double gap = NAN;
+        for (size_t j = 0; j < run->nrows; j++) {
+            const adh_obs *u = &run->rows[j];
+            if (u->path == (int)run->nturns && u->path > 0 && fabs(u->h0 - l->h0) < 1e-6 * step) {
+                gap = l->F - u->F;
+                break;
+            }
+        }
+        if (!isnan(gap) && !isnan(prev_gap))
+            area += 0.5 * (gap + prev_gap) * fabs(prev_h - l->h0);
+        prev_gap = gap;
+        prev_h = l->h0;
+    }
+    return area;
+}
+
+/* The hysteresis left when eps -> 0: under displacement control the drive
+ * follows stable equilibria only, loading on the highest-force one at each
+ * h0 (the outer branch until it ends at the jump-in fold) and unloading on
+ * the lowest (the contact until the jump-out fold). Between the folds, and
+ * wherever lattice trapping makes stable legs overlap, the two differ: the
+ * area between them is the hysteresis no slower drive removes. */
+double adh_static_hysteresis_area(const adh_run *curve, double step)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t i = 0; i < curve->nrows; i++) {
+        lo = fmin(lo, curve->rows[i].h0);
+        hi = fmax(hi, curve->rows[i].h0);
+    }
+    double area = 0;
+    for (double x = lo + 0.5 * step; x < hi; x += step) {
+        double fmax_ = -INFINITY, fmin_ = INFINITY;
+        for (size_t i = 0; i + 1 < curve->nrows; i++) {
+            const adh_obs *a = &curve->rows[i], *b = &curve->rows[i + 1];
+            if (!a->stable || !b->stable || (x - a->h0) * (x - b->h0) > 0 || a->h0 == b->h0)
+                continue;
+            double F = a->F + (b->F - a->F) * (x - a->h0) / (b->h0 - a->h0);
+            fmax_ = fmax(fmax_, F);
+            fmin_ = fmin(fmin_, F);
+        }
+        if (fmax_ > fmin_)
+            area += (fmax_ - fmin_) * step;
+    }
+    return area;
 }

@@ -53,7 +53,9 @@ static size_t quote2(const char *prefix, const char *s, char *buf, size_t len)
         buf[j] = '\0';
     } else if (len) {
         static const char loud[] = "adh_text_too_long";
-        snprintf(buf, len, "%s", len > strlen(loud) ? loud : "");
+        size_t m = len > strlen(loud) ? strlen(loud) : 0;
+        memcpy(buf, loud, m);
+        buf[m] = '\0';
     }
     return j;
 }

@@ -4,6 +4,8 @@
 #include <string.h>
 
 #include "adhere/grid.h"
+#include "adhere/models.h"
+#include "adhere/status.h"
 
 void adh_config_default(adh_config *c)
 {
@@ -21,6 +23,40 @@ void adh_config_default(adh_config *c)
     c->drive_speed = 1e-6;
     c->cols = 100;
     c->rows = 32;
+}
+
+adh_grid_use adh_config_grid_use(const adh_config *c)
+{
+    return c->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
+}
+
+int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
+{
+    if (cfg->nodes_given || !isnan(cfg->spacing) || cfg->mode == ADH_MODE_RIGID)
+        return 0;
+    adh_config run, soft;
+    double narrowest = INFINITY;
+    for (size_t i = 0; i < adh_config_nruns(cfg); i++) {
+        adh_config_sweep_run(cfg, i, &run);
+        /* a bad material is the validation's to report, with its own words */
+        if (adh_material_validate(&run.mat, NULL, 0) != ADH_SUCCESS)
+            return 0;
+        double l = adh_edge_zone(&run.mat);
+        if (l < narrowest) {
+            narrowest = l;
+            soft = run;
+        }
+    }
+    double deepest = 0;
+    for (size_t i = 0; i < cfg->proto.nturns; i++)
+        deepest = fmin(deepest, cfg->proto.turns[i]);
+    size_t n;
+    double dr;
+    if (adh_grid_choose(&soft.mat, adh_config_grid_use(cfg), deepest, &n, &dr, why, whylen) != ADH_SUCCESS)
+        return -1;
+    cfg->nodes = n;
+    cfg->spacing = dr;
+    return 0;
 }
 
 double adh_config_spacing(const adh_config *c)

@@ -7,6 +7,7 @@
 #include <limits.h>
 #include <stddef.h>
 
+#include "adhere/grid.h"
 #include "adhere/kernel.h"
 #include "adhere/params.h"
 #include "adhere/protocol.h"
@@ -58,6 +59,8 @@ typedef struct adh_sweep {
 typedef struct adh_config {
     adh_material mat;
     size_t nodes;                  /* N */
+    int nodes_given;               /* N set by a scene or -N (else adh_config_grid may choose) */
+    int force;                     /* --force: run a grid coarser than the resolved limit */
     double spacing;                /* m; NAN = adh_grid_default_rmax / nodes */
     adh_kernel_type kernel;
     adh_relax_settings relax;
@@ -98,6 +101,14 @@ void adh_config_sweep_run(const adh_config *cfg, size_t i, adh_config *run);
 
 /* Number of runs: the sweep's length, or 1. */
 size_t adh_config_nruns(const adh_config *cfg);
+
+/* The resolution limit that applies: the static curve's in mode = static. */
+adh_grid_use adh_config_grid_use(const adh_config *c);
+
+/* When neither N nor the spacing was given: the grid adh_grid_choose picks
+ * for the run with the narrowest edge zone (a sweep shares one kernel).
+ * 0, or -1 with why when that grid is beyond the budget. */
+int adh_config_grid(adh_config *cfg, char *why, size_t whylen);
 
 /* The grid spacing in use: the explicit one, or the paper's grid radius
  * (scaled with sqrt(R z0)) divided by N. */

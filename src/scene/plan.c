@@ -1,4 +1,5 @@
 #include "scene/plan.h"
+#include "adhere/grid.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -291,6 +292,10 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         fmt_len(dr * (double)cfg->nodes, b, sizeof b);
         fprintf(f, "kernel: %s, N = %zu, spacing %s, Rmax %s; %zu built%s\n", adh_kernel_name(cfg->kernel),
                 cfg->nodes, a, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "");
+        adh_grid_report gr;
+        adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);
+        fprintf(f, "resolution: %.3g nodes across the contact's edge zone (l/spacing), %s (the limit is %g l)\n",
+                gr.edge_nodes, gr.resolved ? "resolved" : "NOT resolved, runs only with --force", gr.limit);
     } else {
         fprintf(f, "kernel: none (no elastic solve)\n");
     }

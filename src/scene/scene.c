@@ -170,10 +170,15 @@ static int handler(void *user, const char *section, const char *name, const char
     }
     case K_COUNT: {
         int nodes = !strcmp(name, "nodes"), jobs = !strcmp(name, "jobs");
+        if (nodes && is_auto) { /* the grid follows the physics (adh_config_grid) */
+            c->nodes = 1000;
+            c->nodes_given = 0;
+            return 1;
+        }
         if (adh_parse_count(value, nodes ? 10 : !strcmp(name, "dwell") ? 0 : 1,
                             nodes ? 20000 : jobs ? 64 : 100000000, &n, msg, sizeof msg) != 0)
             return fail(sp, "%s: %s", name, msg);
-        if (nodes) c->nodes = (size_t)n;
+        if (nodes) c->nodes = (size_t)n, c->nodes_given = 1;
         else if (jobs) c->sweep.jobs = (int)n;
         else if (!strcmp(name, "dwell")) c->proto.dwell = (size_t)n;
         else c->relax.max_iter = (size_t)n;

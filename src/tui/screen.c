@@ -123,7 +123,11 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     put(y, x, w, A_BOLD, " Derived (before any solve)");
     put(y + 1, x, w, A_NORMAL, "  %s %.4g   %s %.4g   %s %s", gk(v, "\xcf\x83", "sigma"), d->sigma,
         gk(v, "\xce\xbc", "mu"), d->mu, gk(v, "\xce\xb3", "gamma"), g);
-    put(y + 2, x, w, A_NORMAL, "  E* %s (Johnson's, E/2)", es);
+    /* the grid's resolution of the contact edge, as E, A, z0, R, N or the
+     * spacing change: the core's check (adh_grid_check), shown */
+    const adh_grid_report *gr = &s->gridres;
+    put(y + 2, x, w, gr->resolved ? A_NORMAL : A_BOLD, "  E* %s  %s/%s %.3g %s", es, gk(v, "\xe2\x84\x93", "l"),
+        gk(v, "\xce\x94", "dr"), gr->edge_nodes, gr->resolved ? "resolved" : "UNRESOLVED");
     put(y + 3, x, w, A_NORMAL, "  pull-off JKR %s DMT %s", jkr, dmt);
 }
 

@@ -102,6 +102,8 @@ static void check_grid(tui_sim *s)
     adh_grid g = { .n = s->nodes, .dr = tui_sim_spacing(s), .r = NULL };
     g.rmax = (double)g.n * g.dr;
     s->gridwarn[0] = '\0';
+    adh_grid_check(&s->mat, s->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX, g.n, g.dr, &s->gridres);
+    /* the resolution itself is shown on the Derived panel's E* line */
     if (adh_protocol_check(&ps, &s->mat, &g, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
         s->gridwarn[0] = '\0';
 }
@@ -491,6 +493,7 @@ void tui_sim_set_mode(tui_sim *s, adh_mode mode)
 {
     tui_sim_cancel(s);
     s->mode = mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
+    check_grid(s);   /* the static curve has its own resolution limit */
     curve_check(s);
 }
 

@@ -72,6 +72,7 @@ typedef struct tui_sim {
     double t0;
     char warn[256];            /* about the last step; "" when fine */
     char gridwarn[512];        /* why the grid may not hold the run to the turn; "" */
+    adh_grid_report gridres;   /* the core's resolution check of the grid (Derived panel) */
 
     adh_mode mode;             /* ADH_MODE_RELAX or ADH_MODE_STATIC: what a step does */
     /* static mode: the equilibrium curve */

@@ -50,7 +50,7 @@ bad "no scene named 'nosuchscene'" nosuchscene
 
 # An output path that cannot be a directory.
 touch "$TMP/afile"
-"$ADHERE" --batch -q -N 100 --turn=none -o "$TMP/afile/sub" >/dev/null 2>"$TMP/stderr"
+"$ADHERE" --batch -q -N 100 --force --turn=none -o "$TMP/afile/sub" >/dev/null 2>"$TMP/stderr"
 rc=$?
 if [ "$rc" -eq 2 ] && grep -q "cannot create directory" "$TMP/stderr"; then ok "unwritable --out -> exit 2: $(cat "$TMP/stderr")"; else not_ok "unwritable --out -> exit $rc"; fi
 

@@ -4,7 +4,7 @@
 . "$(dirname "$0")/lib.sh"
 
 out="$TMP/run"
-"$ADHERE" --batch -q --no-plot -N 100 --eps=3pm --turn=-2nm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --turn=-2nm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
 rc=$?
 check "batch run exits 0 (got $rc: $(head -c 300 "$TMP/stderr"))" [ "$rc" -eq 0 ]
 header=$(grep -v '^#' "$out/force.tsv" | head -1)
@@ -22,7 +22,7 @@ check "no temporary files are left" sh -c "! ls -a '$out' | grep -q tmp"
 check "turns.tsv names the turning point" awk -F'\t' '!/^#/ && NR>3 && $1 < -1.99e-9 && $1 > -2.01e-9 {f=1} END {exit !f}' "$out/turns.tsv"
 
 # Standard output when there is no --out.
-"$ADHERE" --batch -q -N 100 --eps=3pm --turn=none >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --batch -q -N 100 --force --eps=3pm --turn=none >"$TMP/stdout" 2>"$TMP/stderr"
 rc=$?
 check "stdout run exits 0" [ "$rc" -eq 0 ]
 check "the force table goes to stdout with its header" grep -q "^h0	F	delta" "$TMP/stdout"
@@ -32,15 +32,31 @@ last_a=$(grep -v '^#' "$TMP/stdout" | tail -1 | cut -f5)
 check "its last row is in contact (a = $last_a)" awk "BEGIN {exit !($last_a > 0)}"
 
 # A write that fails (full disk): said, not swallowed.
-"$ADHERE" --batch -q -N 100 --eps=10pm --turn=none >/dev/full 2>"$TMP/stderr"
+"$ADHERE" --batch -q -N 100 --force --eps=10pm --turn=none >/dev/full 2>"$TMP/stderr"
 rc=$?
 check "a force table streamed to a full disk exits 2 and says so ($(cat "$TMP/stderr"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'No space left on device' '$TMP/stderr'"
 
 # Only the plot tables asked for: no contact-line table without the contact plot.
-"$ADHERE" --batch -q --no-plot --plots=force -N 100 --eps=10pm --turn=-1nm -o "$TMP/only" 2>/dev/null
+"$ADHERE" --batch -q --no-plot --plots=force -N 100 --force --eps=10pm --turn=-1nm -o "$TMP/only" 2>/dev/null
 check "--plots=force writes no contact.tsv and no profiles.tsv" sh -c "[ -s '$TMP/only/force.tsv' ] && [ ! -e '$TMP/only/contact.tsv' ] && [ ! -e '$TMP/only/profiles.tsv' ]"
 
 # Signals (SIGINT halfway, partial tables, exit 130): tests/cli/signals.sh,
 # which waits for the phase to begin instead of sleeping.
+# The grid's resolution: an explicit grid coarser than the limit is refused
+# without --force; with it the run warns (even with -q) and says resolved 0.
+"$ADHERE" --batch -q --no-plot -N 100 --eps=3pm --turn=-2nm -o "$TMP/refused" >/dev/null 2>"$TMP/stderr"
+rc=$?
+check "an unresolved explicit grid is refused with exit 2 ($rc)" sh -c "[ $rc -eq 2 ] && grep -q 'coarser than the resolved limit' '$TMP/stderr' && grep -q -- '--force' '$TMP/stderr' && [ ! -e '$TMP/refused/summary.tsv' ]"
+"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --turn=-2nm -o "$TMP/forced" >/dev/null 2>"$TMP/stderr.force"
+check "--force: the warning is on stderr even with -q" grep -q "warning: grid spacing .* resolved 0" "$TMP/stderr.force"
+check "--force: summary.tsv says resolved 0 and status unresolved" sh -c "grep -qx 'resolved	0' '$TMP/forced/summary.tsv' && grep -qx 'status	unresolved' '$TMP/forced/summary.tsv'"
+check "summary.tsv has edge_nodes below the limit's 2.2" awk -F'\t' '$1=="edge_nodes" && $2>0 && $2<2.2 {f=1} END {exit !f}' "$TMP/forced/summary.tsv"
+check "summary.tsv has rmax_force_fraction, 1 to 3 % for this grid" awk -F'\t' '$1=="rmax_force_fraction" && $2>0.01 && $2<0.03 {f=1} END {exit !f}' "$TMP/forced/summary.tsv"
+# The surfaces never separate when unloading stops (at the start) before the
+# jump-out: complete 0, said on stderr and in summary.tsv.
+"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --start=3nm --turn=-1nm -o "$TMP/stuck" >/dev/null 2>"$TMP/stderr"
+rc=$?
+check "a run that never separates still exits 0 ($rc) and says why on stderr" sh -c "[ $rc -eq 0 ] && grep -q 'incomplete: the surfaces never separated' '$TMP/stderr'"
+check "its summary.tsv says complete 0, status not separated, and why" sh -c "grep -qx 'complete	0' '$TMP/stuck/summary.tsv' && grep -qx 'status	not separated' '$TMP/stuck/summary.tsv' && grep -q '^# INCOMPLETE: the surfaces never separated' '$TMP/stuck/summary.tsv'"
 done_testing

@@ -4,7 +4,7 @@
 . "$(dirname "$0")/lib.sh"
 
 out="$TMP/static"
-"$ADHERE" --batch -q --no-plot --mode=static -E 1GPa -N 200 --turn=-2nm -o "$out" 2>"$TMP/err"
+"$ADHERE" --batch -q --no-plot --mode=static -E 1GPa -N 200 --force --turn=-2nm -o "$out" 2>"$TMP/err"
 rc=$?
 check "static run exits 0 (got $rc: $(head -c 200 "$TMP/err"))" [ "$rc" -eq 0 ]
 for key in jump_in_h0 jump_out_h0 pulloff_F pulloff_F_disp folds; do
@@ -23,7 +23,7 @@ check "force.tsv marks stable and unstable points" sh -c "grep -v '^#' '$out/for
 check "the minimum force in force.tsv is the pull-off" sh -c "grep -v '^#' '$out/force.tsv' | awk -F'\t' -v p=$pull 'NR>1 && \$2 < m {m = \$2} END {exit !(m >= p * 1.0001 && m <= p * 0.98)}'"
 
 ref="$TMP/ref"
-"$ADHERE" --batch -q --no-plot -E 1GPa -N 100 --eps=3pm --turn=-2nm --reference=static -o "$ref" 2>"$TMP/err"
+"$ADHERE" --batch -q --no-plot -E 1GPa -N 100 --force --eps=3pm --turn=-2nm --reference=static -o "$ref" 2>"$TMP/err"
 rc=$?
 check "relaxation with --reference=static exits 0 (got $rc)" [ "$rc" -eq 0 ]
 check "static.tsv is written beside force.tsv" [ -s "$ref/static.tsv" ]
@@ -45,7 +45,7 @@ E = 1GPa, 2GPa, 4GPa
 jobs = 2
 SCENE
 sw="$TMP/static-sweep"
-"$ADHERE" --batch -q "$TMP/static-sweep.scene" -N 200 -o "$sw" >"$TMP/stdout" 2>"$TMP/err"
+"$ADHERE" --batch -q "$TMP/static-sweep.scene" -N 200 --force -o "$sw" >"$TMP/stdout" 2>"$TMP/err"
 rc=$?
 check "a static sweep exits 0 (got $rc: $(head -c 300 "$TMP/err"))" [ "$rc" -eq 0 ]
 # scol NAME: the column of sweep.tsv named NAME
@@ -76,11 +76,11 @@ done
 check "static sweep: each run's sigma is its E's (sigma halves as E doubles)" \
     awk -v a="$(srow 1 sigma)" -v b="$(srow 2 sigma)" -v c="$(srow 3 sigma)" \
     'BEGIN {exit !(a / b > 1.999999 && a / b < 2.000001 && b / c > 1.999999 && b / c < 2.000001)}'
-"$ADHERE" --batch -q "$TMP/static-sweep.scene" -N 200 >"$TMP/stdout" 2>"$TMP/err"
+"$ADHERE" --batch -q "$TMP/static-sweep.scene" -N 200 --force >"$TMP/stdout" 2>"$TMP/err"
 check "a static sweep without --out prints sweep.tsv with the static columns" \
     sh -c "grep -v '^#' '$TMP/stdout' | head -1 | tr '\t' '\n' | grep -qx pulloff_F_disp"
 sed 's/^E = .*/eps = 1pm, 2pm/' "$TMP/static-sweep.scene" >"$TMP/eps-static.scene"
-"$ADHERE" --batch -q "$TMP/eps-static.scene" -N 200 -o "$TMP/eps-static" >/dev/null 2>"$TMP/err"
+"$ADHERE" --batch -q "$TMP/eps-static.scene" -N 200 --force -o "$TMP/eps-static" >/dev/null 2>"$TMP/err"
 rc=$?
 check "an eps sweep in mode = static is refused with exit 2, saying why (got $rc: $(cat "$TMP/err"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'same curve 2 times' '$TMP/err'"

@@ -19,7 +19,8 @@ if ! command -v gnuplot >/dev/null 2>&1; then
     exit 0
 fi
 
-RUN="--batch --quiet --nodes=100 --eps=1e-11"
+# --force: a coarse grid (unresolved, and warned about) keeps the plots fast
+RUN="--batch --quiet --nodes=100 --force --eps=1e-11"
 
 # "W H" of a PNG, or "bad" when the file is not a PNG.
 png_size() {
@@ -55,7 +56,7 @@ check '[ "$(rows "$D/profiles.tsv")" -eq $((100 * 8)) ]' \
 check '[ "$(rows "$D/contact.tsv")" -eq "$(rows "$D/force.tsv")" ]' \
     "contact.tsv has a row for every force.tsv row"
 check '! ls -a "$D" | grep -q "tmp"' "no temporary file left in the output dir"
-check '[ ! -s "$T/full.err" ]' "nothing on stderr"
+check '! grep -v "warning: grid spacing .* (--force; summary.tsv: resolved 0)" "$T/full.err"' "nothing on stderr but the unresolved grid's warning"
 # the contact line spreads while loading and recedes while unloading
 check 'awk -F"\t" "!/^#/ && \$2 == 1 && \$6 != \"nan\" && \$6 < 0 {bad++} END {exit bad > 3}" "$D/contact.tsv"' \
     "loading contact-line speeds are positive (bar lattice hops)"

@@ -140,7 +140,7 @@ check "the preview shows both branches" sh -c "grep -q 'o' '$C/contact.screen' &
 # The screen and --batch drive the same core with the same positions: the
 # same settings must give the same rows (iterations exactly, F to 4 digits).
 B=$work/batch
-"$bin" --batch --nodes=100 --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm --no-plot -o "$B" \
+"$bin" --batch --nodes=100 --spacing=10nm --force --eps=10pm --step=0.25nm --turn=-2nm --no-plot -o "$B" \
     </dev/null >/dev/null 2>"$work/batch.err"
 # col NAME: the column of force.tsv named NAME in its header
 col() { awk -F'\t' -v name="$1" '/^#/ { next } { for (i = 1; i <= NF; i++) if ($i == name) print i; exit }' "$B/force.tsv"; }
@@ -183,7 +183,7 @@ check "the point walked back to has other numbers (the checks around can fail)" 
 check "U and f walk forward to the same numbers" [ "$(state "$ST/static-fwd.txt")" = "$(state "$ST/static-5.txt")" ]
 check "and say the point was kept, not solved again" grep -q "^point 5 (kept, not solved again)" "$ST/static-fwd.txt"
 SB=$work/static-batch
-"$bin" --batch --mode=static --nodes=100 --spacing=10nm --no-plot -o "$SB" </dev/null >/dev/null 2>"$work/static-batch.err"
+"$bin" --batch --mode=static --nodes=100 --spacing=10nm --force --no-plot -o "$SB" </dev/null >/dev/null 2>"$work/static-batch.err"
 sval() { awk -F'\t' -v k="$1" '$1 == k {print $2}' "$SB/summary.tsv"; }
 if [ -s "$SB/summary.tsv" ]; then
     pts=$(sval points) folds=$(sval folds)

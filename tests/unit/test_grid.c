@@ -1,0 +1,120 @@
+/* The grid's resolution check and the automatic grid (adh_grid_check,
+ * adh_grid_choose), and one cheap point of the resolution study in README:
+ * at the limit the pull-off and hysteresis are within 1 % of a grid four
+ * times finer, and a grid of one edge-zone width is not. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/equilibrium.h"
+#include "adhere/grid.h"
+#include "adhere/kernel.h"
+#include "adhere/models.h"
+#include "adhere/protocol.h"
+#include "adhere/status.h"
+#include "tap.h"
+
+static adh_material at_sigma(double sigma)
+{
+    adh_material m = adh_material_default();
+    double gamma = m.A / (16.0 * M_PI * m.z0 * m.z0);
+    m.E = gamma * sqrt(m.R / pow(m.z0, 3)) / sigma;
+    return m;
+}
+
+static void check_and_choose(void)
+{
+    adh_material m = adh_material_default();
+    m.E = 3e8; /* Figure 4, sigma = 7.5: l = 3.5 nm on the paper's 1.5 nm grid */
+    adh_grid_report r;
+    adh_grid_check(&m, ADH_GRID_RELAX, 1000, 1.5e-9, &r);
+    ok(fabs(r.edge_nodes - 2.34) < 0.02, "Figure 4: l/spacing = %.3f (3.51 nm over 1.5 nm)", r.edge_nodes);
+    ok(r.resolved, "Figure 4's paper grid resolves the relaxation (limit %.2f l = %.3g m)", r.limit, r.max_spacing);
+    adh_grid_check(&m, ADH_GRID_STATIC, 1000, 1.5e-9, &r);
+    ok(!r.resolved, "but not the static curve (limit %.2f l = %.3g m)", r.limit, r.max_spacing);
+
+    size_t n;
+    double dr;
+    int rc = adh_grid_choose(&m, ADH_GRID_RELAX, -5e-9, &n, &dr, NULL, 0);
+    ok(rc == ADH_SUCCESS && n == 1000 && isnan(dr), "Figure 4 relaxation: the automatic grid is the paper's (N = %zu)", n);
+    char why[1024];
+    int bad = 0;
+    for (double sigma = 2.25; sigma <= 40; sigma *= 1.5) {
+        adh_material s = at_sigma(sigma);
+        for (int use = ADH_GRID_RELAX; use <= ADH_GRID_STATIC; use++) {
+            rc = adh_grid_choose(&s, (adh_grid_use)use, -5e-9, &n, &dr, why, sizeof why);
+            double spacing = isnan(dr) ? adh_grid_spacing_for(&s, n) : dr;
+            adh_grid_check(&s, (adh_grid_use)use, n, spacing, &r);
+            adh_grid g = { .n = n, .dr = spacing, .rmax = (double)n * spacing, .r = NULL };
+            adh_protocol_settings ps = adh_protocol_settings_default();
+            if (rc != ADH_SUCCESS || !r.resolved || n > ADH_GRID_MAX_NODES ||
+                adh_protocol_check(&ps, &s, &g, why, sizeof why) != ADH_SUCCESS) {
+                bad++;
+                printf("# sigma = %.3g use %d: N = %zu, dr = %.3g: %s\n", sigma, use, n, spacing, why);
+            }
+        }
+    }
+    ok(bad == 0, "sigma = 2.25 ... 40: the automatic grid is resolved, within the budget and passes the protocol check (%d not)", bad);
+    adh_material soft = at_sigma(75);
+    rc = adh_grid_choose(&soft, ADH_GRID_RELAX, -5e-9, &n, &dr, why, sizeof why);
+    ok(rc == ADH_EGRID && strstr(why, "sigma = 75") && strstr(why, "MB") && strstr(why, "--force"),
+       "sigma = 75 is refused, naming sigma, the memory and what to do (%s)", why);
+}
+
+/* pull-off and hysteresis of one cycle at sigma on a grid of x edge-zone
+ * widths out to 12 sqrt(R z0), turning at -2 z0 (the study's setting) */
+static int cycle(double sigma, double x, int statik, double *pulloff, double *hyst)
+{
+    adh_material m = at_sigma(sigma);
+    double dr = x * adh_edge_zone(&m);
+    size_t n = (size_t)ceil(12.0 * sqrt(m.R * m.z0) / dr);
+    adh_grid *g = adh_grid_alloc(n, dr);
+    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_run run;
+    adh_run_init(&run);
+    int rc;
+    if (statik) {
+        adh_static_settings s = adh_static_settings_default();
+        s.h0_start = adh_protocol_auto_start(&m, 0.05e-9);
+        s.h0_end = -2 * m.z0;
+        adh_static_result res;
+        rc = adh_static_run(g, k, &m, &s, NULL, NULL, &run, &res);
+        *pulloff = res.pulloff_F;
+        *hyst = adh_static_hysteresis_area(&run, 0.001e-9);
+    } else {
+        adh_relax_settings rs = adh_relax_settings_default();
+        rs.eps = 1e-12 * sqrt(1000.0 / (double)n);
+        adh_protocol_settings ps = adh_protocol_settings_default();
+        ps.turns[0] = -2 * m.z0;
+        rc = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, &run);
+        const adh_turn_result *t = adh_run_main_turn(&run);
+        *pulloff = t ? t->pulloff_F : NAN;
+        *hyst = adh_hysteresis_area(&run, ps.step);
+    }
+    adh_run_free(&run);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+    return rc;
+}
+
+static void study_point(const char *name, double sigma, int statik)
+{
+    double limit = adh_grid_edge_spacing(statik ? ADH_GRID_STATIC : ADH_GRID_RELAX);
+    double pf, hf, pl, hl, pc, hc;
+    int rc = cycle(sigma, 0.125, statik, &pf, &hf) | cycle(sigma, limit, statik, &pl, &hl) |
+             cycle(sigma, 1.0, statik, &pc, &hc);
+    double ep = fabs(pl / pf - 1), eh = fabs(hl / hf - 1);
+    ok(rc == ADH_SUCCESS && ep < 0.01 && eh < 0.01,
+       "%s, sigma = %g: at %.2f l pull-off and hysteresis within 1 %% of 0.125 l (%.2f %%, %.2f %%)", name, sigma,
+       limit, 100 * ep, 100 * eh);
+    double cp = fabs(pc / pf - 1), ch = fabs(hc / hf - 1);
+    ok(cp > 0.01 || ch > 0.01, "%s, sigma = %g: at 1 l they are not (%.1f %%, %.1f %%)", name, sigma, 100 * cp, 100 * ch);
+}
+
+int main(void)
+{
+    check_and_choose();
+    study_point("static", 2.25, 1);
+    study_point("relaxation", 1, 0);
+    return tap_done();
+}
