@@ -118,9 +118,16 @@ static void draw(tui *t)
     v->activity = activity(t);
     v->prompt = NULL;
     if (t->editing) {
-        if (t->editing == EDIT_PARAM)
-            snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (a value with its unit; Enter sets, Esc cancels)",
-                     tui_params[v->sel].name, t->text);
+        if (t->editing == EDIT_PARAM) {
+            double f;
+            const char *unit = tui_sim_param_unit(&t->sim, (tui_param)v->sel, v->utf8, &f);
+            if (unit[0])
+                snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (in %s, or with a unit: 2GPa 0.4nm; Enter sets, Esc cancels)",
+                         tui_params[v->sel].name, t->text, unit);
+            else
+                snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (Enter sets, Esc cancels)", tui_params[v->sel].name,
+                         t->text);
+        }
         else
             snprintf(t->prompt, sizeof t->prompt, ":%s_", t->text);
         v->prompt = t->prompt;
@@ -302,7 +309,7 @@ static void param_changed(tui *t, tui_param p)
 {
     char val[64];
     int u = t->view.utf8;
-    tui_sim_param_text(&t->sim, p, val, sizeof val);
+    tui_sim_param_text(&t->sim, p, u, val, sizeof val);
     size_t ncurve;
     tui_sim_curve(&t->sim, &ncurve);
     if (is_static(t) && p == P_TURN)
@@ -419,10 +426,29 @@ static void move_history(tui *t, int redo, long n)
 {
     long done = 0;
     stop_all(t);
-    while (done < n && (redo ? tui_sim_redo(&t->sim) : tui_sim_undo(&t->sim)) == ADH_SUCCESS)
+    int edit = -1;
+    while (done < n && (redo ? tui_sim_redo(&t->sim) : tui_sim_undo(&t->sim)) == ADH_SUCCESS) {
         done++;
+        if (t->sim.edit_moved >= 0)
+            edit = t->sim.edit_moved;
+    }
     const adh_obs *o = tui_sim_row(&t->sim);
     char h0[64];
+    if (edit >= 0) {
+        /* an edit taken back or done again: say what the parameter is now
+         * and what came back with it */
+        char val[64];
+        size_t np;
+        tui_sim_rows(&t->sim, &np);
+        tui_sim_param_text(&t->sim, (tui_param)edit, t->view.utf8, val, sizeof val);
+        if (is_static(t))
+            say(t, 0, "%s the edit: %s = %s again (the relaxation path came back with it; f solves the curve)",
+                redo ? "redid" : "undid", tui_params[edit].name, val);
+        else
+            say(t, 0, "%s the edit: %s = %s again, with its path (%zu state%s)", redo ? "redid" : "undid",
+                tui_params[edit].name, val, np, np == 1 ? "" : "s");
+        return;
+    }
     if (!done) {
         if (is_static(t))
             say(t, 1, "nothing to %s", redo ? "redo: this is the last point computed (f computes more)"

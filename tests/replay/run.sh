@@ -148,6 +148,24 @@ check "undo then the same step again gives the same numbers and iterations" \
 check "undo says how far it went" grep -q "undid 3 steps" "$U/undo-30.txt"
 check "a new step drops what could be redone" grep -q "error: nothing to redo" "$U/undo.screen"
 
+# The cycle's numbers on the state panel, and edits on the undo history.
+EU=$W/edit-undo
+check "after a cycle the panel shows max load, pull-off in N and in πγR, jumps, hysteresis" \
+    sh -c "grep -q 'load   max -[0-9.]* nN; a [0-9.]* nm at the turn' '$EU/edit-cycle.txt' && grep -q 'pull   -[0-9.]* nN = [0-9.]* πγR' '$EU/edit-cycle.txt' && grep -q 'jumps  in [0-9.]* nm, out [0-9.]* nm' '$EU/edit-cycle.txt' && grep -q 'hyst   [0-9.]* fJ' '$EU/edit-cycle.txt'"
+check "beside the JKR, DMT and Maugis-Dugdale predictions" \
+    sh -c "grep -q 'pull-off JKR -375 nN DMT -500 nN' '$EU/edit-cycle.txt' && grep -q 'M-D -375.8 nN = 1.5 πγR (λ 7.06)' '$EU/edit-cycle.txt'"
+check "the label 'before any solve' does not stay after solving" sh -c "! grep -q 'before any solve' '$EU/edit-cycle.txt'"
+check "z0 and d show in nm" sh -c "grep -q '^  z0    0.5 nm ' '$EU/edit-cycle.txt' && grep -q '^  d     0.25 nm ' '$EU/edit-cycle.txt'"
+check "a bare 20 typed into R (shown in µm) is 20 µm, and the echo says so" \
+    sh -c "grep -q '^ >R     20 µm ' '$EU/edit-r.txt' && grep -q '^R = 20 µm: σ = 10.61' '$EU/edit-r.txt'"
+check "the edit starts a new path" grep -q "path   0 states" "$EU/edit-r.txt"
+check "u after the edit restores the parameters and their path" \
+    sh -c "grep -q '^ >R     10 µm ' '$EU/edit-undo.txt' && grep -q 'path   124 states' '$EU/edit-undo.txt' && grep -q '^undid the edit: R = 10 µm again, with its path (124 states)' '$EU/edit-undo.txt'"
+check "with the path's numbers exactly (state and cycle)" [ "$(sed -n '3,18p' "$EU/edit-undo.txt" | cut -c46-)" = "$(sed -n '3,18p' "$EU/edit-cycle.txt" | cut -c46-)" ]
+check "U puts the edit back" sh -c "grep -q '^ >R     20 µm ' '$EU/edit-redo.txt' && grep -q '^redid the edit: R = 20 µm' '$EU/edit-redo.txt'"
+check "+ doubles A, and u takes it back with the path" \
+    sh -c "grep -q '^ >A     2e-19 J' '$EU/edit-plus.txt' && grep -q '^ >A     1e-19 J' '$EU/edit-undo.screen' && grep -q 'path   124 states' '$EU/edit-undo.screen'"
+
 # Static mode (m): the equilibrium curve point by point, walked back and
 # forth without solving again, followed to its end as --batch --mode=static.
 ST=$W/static
@@ -211,7 +229,11 @@ check "after :resize 80x24 the screen is 24 lines of at most 80 columns" \
 check "at 60x40 the screen is 40 lines of at most 60 columns" \
     sh -c "[ \$(wc -l <'$R/resize-60x40.txt') = 40 ] && [ \$(wc -L <'$R/resize-60x40.txt') -le 60 ]"
 
+check "the help says where p writes the plots and that --out chooses it" \
+    sh -c "grep -q 'adhere-plots/' '$W/help/help.screen' && grep -q -- '--out' '$W/help/help.screen'"
 check "at 40x12 stepping shows the state" sh -c "grep -q 'h0     16.7 nm' '$W/small/small-state.txt' && ! grep -q 'Parameters' '$W/small/small-state.txt'"
+check "and keeps every parameter in view in a compact form" \
+    sh -c "grep -q '^E 300 MPa  A 1e-19 J  z0 0.5 nm  R 10 µm' '$W/small/small-state.txt' && grep -q '^turn -5 nm' '$W/small/small-state.txt'"
 check "at 40x12 selecting shows the parameters" sh -c "grep -q '^ >A ' '$W/small/small.screen' && [ \$(wc -l <'$W/small/small.screen') = 12 ] && [ \$(wc -L <'$W/small/small.screen') -le 40 ]"
 
 check "a bad token names FILE:LINE and the token" grep -q "^bad-token.keys:3: unknown key <Foo>" "$W/bad-token/stderr"
