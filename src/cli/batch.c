@@ -16,18 +16,23 @@
 #include "adhere/status.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
+#include "cli/progress.h"
 #include "cli/rigid.h"
 #include "cli/statics.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
+#include "adhere/units.h"
 #include "plot/plot.h"
+#include "scene/plan.h"
 
 
 typedef struct batch_ctx {
     const adh_config *cfg;
     FILE *stream;           /* force rows as they come (no --out), or NULL */
-    int progress;           /* draw a progress bar on stderr */
-    double last_draw;
+    int progress;           /* draw a progress line on stderr */
+    size_t total;           /* the plan's steps, an upper bound (unloading ends
+                               at the jump out); 0 when unknown (static mode) */
+    double t0, last_draw;
 } batch_ctx;
 
 static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
@@ -40,13 +45,48 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
     if (ctx->progress) {
         double t = adh_clock_seconds();
         if (t - ctx->last_draw > 0.1) {
+            char pr[64];
             ctx->last_draw = t;
-            fprintf(stderr, "\r  %s step %5zu  h0 %+8.3f nm  F %+10.4g uN  iters %7zu  total %9zu ",
-                    o->branch > 0 ? "loading  " : "unloading", run->nrows, o->h0 * 1e9, o->F * 1e6,
-                    o->iters, run->iterations);
+            adh_progress_text(run->nrows, ctx->total, t - ctx->t0, pr, sizeof pr);
+            if (ctx->total)
+                fprintf(stderr, "\r  %s step %zu of <=%zu  %-26s h0 %+8.3f nm  F %+10.4g uN ",
+                        o->branch > 0 ? "loading  " : "unloading", run->nrows, ctx->total, pr, o->h0 * 1e9, o->F * 1e6);
+            else
+                fprintf(stderr, "\r  point %zu  h0 %+8.3f nm  F %+10.4g uN ", run->nrows, o->h0 * 1e9, o->F * 1e6);
         }
     }
     return adh_interrupt_step(o, run, NULL);
+}
+
+/* The closing line: how long, what the cycle measured, where it went. */
+static void closing_line(const adh_config *cfg, const adh_run *run, const adh_static_result *sres,
+                         double seconds, const char *out, const char *tables, const char *plots)
+{
+    char t[32], F[64] = "", in[64] = "", jo[64] = "";
+    double pull = NAN, jin = run->jump_in_h0, jout = NAN;
+    if (cfg->mode == ADH_MODE_STATIC) {
+        pull = sres->pulloff_F;
+        jin = sres->jump_in_h0;
+        jout = sres->jump_out_h0;
+    } else {
+        const adh_turn_result *tr = adh_run_main_turn(run);
+        if (tr) {
+            pull = tr->pulloff_F;
+            jout = tr->jump_out_h0;
+        }
+    }
+    adh_progress_duration(seconds, t, sizeof t);
+    adh_format_quantity(pull, ADH_Q_FORCE, 4, F, sizeof F);
+    adh_format_quantity(jin, ADH_Q_LENGTH, 4, in, sizeof in);
+    adh_format_quantity(jout, ADH_Q_LENGTH, 4, jo, sizeof jo);
+    fprintf(stderr, "adhere: done in %s: pull-off %s, jump-in %s, jump-out %s; ", t, isnan(pull) ? "none" : F,
+            isnan(jin) ? "none" : in, isnan(jout) ? "none" : jo);
+    if (out && strncmp(plots, "wrote ", 6) == 0)
+        fprintf(stderr, "wrote %s, %s\n", tables, plots + 6);
+    else if (out)
+        fprintf(stderr, "wrote %s in %s%s%s\n", tables, out, plots[0] ? "; " : "", plots);
+    else
+        fprintf(stderr, "the force table went to standard output\n");
 }
 
 static int make_dir(const char *dir, char *why, size_t n)
@@ -79,6 +119,7 @@ static int make_dir(const char *dir, char *why, size_t n)
 int adh_batch_main(const adh_cli *cli)
 {
     const adh_config *cfg = &cli->cfg;
+    double t_start = adh_clock_seconds();
     char why[1024];
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
     if (out && make_dir(out, why, sizeof why) != 0) {
@@ -99,7 +140,10 @@ int adh_batch_main(const adh_cli *cli)
 
     adh_interrupt_catch();
 
-    batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2), 0 };
+    adh_plan plan;
+    adh_plan_make(cfg, &plan);
+    batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2),
+                      plan.static_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
     if (ctx.stream) {
         fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
         adh_force_header(ctx.stream);
@@ -134,7 +178,8 @@ int adh_batch_main(const adh_cli *cli)
     }
     if (note[0])
         fprintf(stderr, "adhere: %s\n", note);
-    if (run.unconverged && !cfg->quiet)
+    /* not hidden by -q: it changes what the numbers mean */
+    if (run.unconverged)
         fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0\n",
                 run.unconverged, run.nrows, cfg->relax.max_iter, cfg->relax.eps);
 
@@ -163,19 +208,28 @@ int adh_batch_main(const adh_cli *cli)
             status = ADH_EXIT_USAGE;
         } else if (status == ADH_EXIT_OK) {
             /* With --no-plot this writes the plots' tables only. */
-            char msg[1024] = "";
+            char msg[1024] = "", fig[1024] = "", plots[2100] = "";
             int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
                 status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
             }
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
-            if (adh_figures_run(cfg, &run, out, msg, sizeof msg) != 0) {
-                fprintf(stderr, "adhere: plots not written: %s\n", msg);
+            if (adh_figures_run(cfg, &run, out, fig, sizeof fig) != 0) {
+                fprintf(stderr, "adhere: plots not written: %s\n", fig);
                 if (status == ADH_EXIT_OK)
                     status = ADH_EXIT_PLOT;
             }
+            if (status == ADH_EXIT_OK && !cfg->quiet) {
+                char tables_[128];
+                snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s", run.nturns ? ", turns.tsv" : "",
+                         want_ref ? ", static.tsv" : "");
+                snprintf(plots, sizeof plots, "%s%s%s", msg, msg[0] && fig[0] ? "; " : "", fig);
+                closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, out, tables_, plots);
+            }
         }
+    } else if (status == ADH_EXIT_OK && !cfg->quiet) {
+        closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, NULL, "", "");
     }
     adh_run_free(&run);
     adh_run_free(&ref);

@@ -60,7 +60,7 @@ static const option_doc options[] = {
     { { "size", required_argument, 0, OPT_SIZE }, "COLSxROWS", "screen size for --replay (default 100x32)" },
     { { "no-clock", no_argument, 0, OPT_NO_CLOCK }, NULL, "mask timings on the screen so replays are deterministic" },
     { { "list-keys", no_argument, 0, OPT_LIST_KEYS }, NULL, "print the TUI's keys and exit" },
-    { { "quiet", no_argument, 0, 'q' }, NULL, "no progress bar or notes on standard error" },
+    { { "quiet", no_argument, 0, 'q' }, NULL, "no progress line, notes or closing line on standard error (warnings stay)" },
     { { "help", no_argument, 0, 'h' }, NULL, "print this help and exit" },
     { { "version", no_argument, 0, 'V' }, NULL, "print the version and exit" },
 };
