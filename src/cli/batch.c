@@ -224,7 +224,13 @@ int adh_batch_main(const adh_cli *cli)
                 char tables_[128];
                 snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s", run.nturns ? ", turns.tsv" : "",
                          want_ref ? ", static.tsv" : "");
-                snprintf(plots, sizeof plots, "%s%s%s", msg, msg[0] && fig[0] ? "; " : "", fig);
+                /* "wrote A, B in DIR; notes" from the plots, the scene figures' names after A, B */
+                const char *in = strstr(msg, " in ");
+                if (strncmp(msg, "wrote ", 6) == 0 && in && !strstr(msg, "no plot tables"))
+                    snprintf(plots, sizeof plots, "wrote %.*s%s%s%s", (int)(in - msg - 6), msg + 6, fig[0] ? ", " : "",
+                             fig, in);
+                else if (fig[0])
+                    snprintf(plots, sizeof plots, "wrote %s in %s", fig, out);
                 closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, out, tables_, plots);
             }
         }

@@ -73,27 +73,29 @@ static void format_length(double v, char *buf, size_t len)
         snprintf(buf, len, "%.3g nm", v * 1e9);
 }
 
-static void format_modulus(double v, char *buf, size_t len)
-{
-    if (v >= 1e9)
-        snprintf(buf, len, "%.3g GPa", v * 1e-9);
-    else if (v >= 1e6)
-        snprintf(buf, len, "%.3g MPa", v * 1e-6);
-    else
-        snprintf(buf, len, "%.3g kPa", v * 1e-3);
-}
-
 /* A figure title as a gnuplot double-quoted string, drawn noenhanced so a
  * scene title's _ ^ { } @ & ~ print as themselves: the scene title (if
  * any) on its own line, then what the figure is with sigma, gamma, R, E. */
 static void title_string(const plotter *pl, const char *what, char *buf, size_t len)
 {
-    char r[32], e[32], text[1024];
+    char r[32], e[32], text[1024], scene[300];
     format_length(pl->cfg->mat.R, r, sizeof r);
-    format_modulus(pl->cfg->mat.E, e, sizeof e);
+    adh_format_modulus(pl->cfg->mat.E, e, sizeof e);
+    /* The scene title names the scene's own figure (Figure 4's profiles);
+     * its other PNGs carry only its label ("Figure 4 scene"), or force.png
+     * would be titled "profiles on approach and retraction". The scene's
+     * figure is the most specific plot it asks for. */
+    unsigned want = pl->cfg->plots;
+    int own = !strcmp(what, "Surface profiles") ? 1
+            : !strncmp(what, "Contact", 7) ? !(want & ADH_PLOT_PROFILE)
+            : !(want & (ADH_PLOT_PROFILE | ADH_PLOT_CONTACT));
+    const char *colon = strchr(pl->cfg->title, ':');
+    if (own || !colon)
+        snprintf(scene, sizeof scene, "%s", pl->cfg->title);
+    else
+        snprintf(scene, sizeof scene, "%.*s scene", (int)(colon - pl->cfg->title), pl->cfg->title);
     snprintf(text, sizeof text, "%s%s%s: σ = %.3g, γ = %.3g mJ/m², R = %s, E = %s",
-             pl->cfg->title, pl->cfg->title[0] ? "\n" : "", what, pl->d.sigma,
-             pl->d.gamma * 1e3, r, e);
+             scene, scene[0] ? "\n" : "", what, pl->d.sigma, pl->d.gamma * 1e3, r, e);
     size_t j = 0;
     if (len < 3)
         return;
@@ -447,10 +449,13 @@ static int plot_force(plotter *pl)
     adh_gnuplot_cmd(pl->gp, "Fjkr = %.17g", d->F_jkr);
     adh_gnuplot_cmd(pl->gp, "Fdmt = %.17g", d->F_dmt);
     int panel = nadh >= 2;
+    /* a two-line heading (scene title) needs more room above the panels,
+     * or it runs into the adhesion panel's top */
+    double top = pl->cfg->title[0] ? 0.90 : 0.95;
     if (panel) {
         adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
         adh_gnuplot_cmd(pl->gp, "set origin 0,0");
-        adh_gnuplot_cmd(pl->gp, "set size 0.64,0.96");
+        adh_gnuplot_cmd(pl->gp, "set size 0.64,%g", top);
     } else {
         adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
     }
@@ -561,23 +566,37 @@ static int plot_force(plotter *pl)
 
     if (panel) {
         adh_gnuplot_cmd(pl->gp, "set origin 0.64,0");
-        adh_gnuplot_cmd(pl->gp, "set size 0.36,0.96");
+        adh_gnuplot_cmd(pl->gp, "set size 0.36,%g", top);
         adh_gnuplot_cmd(pl->gp, "unset title");
         adh_gnuplot_cmd(pl->gp, "set autoscale");
-        adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
         adh_gnuplot_cmd(pl->gp, "set xlabel \"maximum load (%s)\"", funit);
-        /* a narrow panel: about three ticks, or their labels collide */
-        double lmin = INFINITY, lmax = -INFINITY;
+        /* a narrow panel: three or four ticks, or their labels collide;
+         * never fewer than two, whatever the span of the loads */
+        double lmin = INFINITY, lmax = -INFINITY, amin = INFINITY, amax = -INFINITY;
         for (size_t k = 0; k < nadh; k++) {
             lmin = fmin(lmin, run->turns[order[k]].max_load * fscale);
             lmax = fmax(lmax, run->turns[order[k]].max_load * fscale);
+            amin = fmin(amin, -run->turns[order[k]].pulloff_F * fscale);
+            amax = fmax(amax, -run->turns[order[k]].pulloff_F * fscale);
         }
         if (lmax > lmin) {
-            double span = lmax - lmin;
-            adh_gnuplot_cmd(pl->gp, "set xtics %.17g", nice_step(span / 3.0));
+            double span = lmax - lmin, lo_ = lmin - 0.12 * span, hi_ = lmax + 0.12 * span;
+            double step = nice_step((hi_ - lo_) / 3.0);
+            while (floor(hi_ / step) - ceil(lo_ / step) + 1 < 3)
+                step = nice_step(step / 2.1);
+            adh_gnuplot_cmd(pl->gp, "set xtics %.17g", step);
             /* an explicit range, so the JKR and DMT lines span the panel */
-            adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lmin - 0.08 * span,
-                            lmax + 0.08 * span);
+            adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo_, hi_);
+        }
+        /* the adhesion and the two models, not zero: a pull-off that rises
+         * then saturates with the load (Figure 5) must not be flattened */
+        amin = fmin(amin, -d->F_jkr * fscale);
+        amax = fmax(amax, -d->F_dmt * fscale);
+        if (amax > amin) {
+            double span = amax - amin, lo_ = amin - 0.1 * span, hi_ = amax + 0.1 * span;
+            double step = nice_step((hi_ - lo_) / 5.0);
+            adh_gnuplot_cmd(pl->gp, "set ytics %.17g", step);
+            adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", lo_, hi_);
         }
         adh_gnuplot_cmd(pl->gp, "set ylabel \"adhesion −F_{min} (%s)\"", funit);
         adh_gnuplot_cmd(pl->gp, "set key bottom right");
