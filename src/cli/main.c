@@ -7,6 +7,7 @@
 #include "cli/cost.h"
 #include "cli/options.h"
 #include "plot/plot.h"
+#include "scene/measured.h"
 #include "scene/plan.h"
 #include "tui/tui.h"
 
@@ -47,6 +48,15 @@ int main(int argc, char **argv)
     if (cli.action != ADH_ACT_COST && adh_cli_validate(&cli.cfg, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
+    }
+    /* A measured curve is read before any work: a bad line stops here. */
+    static adh_measured measured;
+    if (cli.cfg.data[0]) {
+        if (adh_measured_load(cli.cfg.data, &measured, why, sizeof why) != 0) {
+            fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
+            return ADH_EXIT_USAGE;
+        }
+        cli.cfg.measured = &measured;
     }
     switch (cli.action) {
     case ADH_ACT_BATCH:

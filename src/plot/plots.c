@@ -19,6 +19,7 @@
 #include "plot/labels.h"
 #include "plot/png.h"
 #include "plot/plotdata.h"
+#include "scene/measured.h"
 
 #define MAX_LABELLED_UNLOADS 8
 
@@ -348,6 +349,20 @@ static int plot_force(plotter *pl)
             xmax = fmax(xmax, ref->rows[i].h0);
         }
     }
+    /* --data: the user's measurement, points over the model, in the frame */
+    int meas_set = -1;
+    const adh_measured *meas = pl->cfg->measured;
+    if (meas && meas->n) {
+        set_begin(&df);
+        for (size_t i = 0; i < meas->n; i++) {
+            set_point(&df, meas->h0[i], meas->F[i]);
+            flo = fmin(flo, meas->F[i]);
+            fhi = fmax(fhi, meas->F[i]);
+            xmin = fmin(xmin, meas->h0[i]);
+            xmax = fmax(xmax, meas->h0[i]);
+        }
+        meas_set = set_end(&df);
+    }
     double xpad = 0.02 * (xmax - xmin);
     /* The models for comparison (not for rigid spheres, where E means
      * nothing), each over the whole width of the frame. */
@@ -419,7 +434,7 @@ static int plot_force(plotter *pl)
     int nmodel = models ? (jkr.load >= 0 || jkr.disp >= 0) + (md.load >= 0 || md.disp >= 0) +
                           (dmt.load >= 0 || dmt.disp >= 0) + any_disp
                         : 2;
-    int nkey = (set[0] >= 0) + (set[1] >= 0) + (rigid_set >= 0) + nmodel +
+    int nkey = (set[0] >= 0) + (set[1] >= 0) + (rigid_set >= 0) + nmodel + (meas_set >= 0) +
                (ref_set[0] >= 0 || ref_set[1] >= 0) +
                (nunload > MAX_LABELLED_UNLOADS ? 1 : nunload);
     /* (the model curves are only references too: they neither set the
@@ -530,6 +545,10 @@ static int plot_force(plotter *pl)
     if (rigid_set >= 0)
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 2 "
                    "title \"rigid spheres (eq 22)\"", qdat, rigid_set);
+    /* (the file's name is the user's text: it stays out of the command) */
+    if (meas_set >= 0)
+        fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with points pt 6 ps 0.8 lc rgb \"#222222\" "
+                   "title \"measured (--data)\"", qdat, meas_set);
     if (ref_set[0] >= 0 || ref_set[1] >= 0)
         fprintf(c, ", \\\n  keyentry with lines ls 9 title \"static equilibrium\"");
     if (models) {

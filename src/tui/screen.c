@@ -12,6 +12,7 @@
 
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "scene/measured.h"
 #include "tui/actions.h"
 #include "tui/replay.h"
 
@@ -328,13 +329,16 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     if (h < 4 || w < 30)
         return;
     int stat = s->mode == ADH_MODE_STATIC;
+    const adh_measured *meas = v->measured && v->measured->n ? v->measured : NULL;
     if (stat)
-        put(y0, x0, w, A_BOLD, " Equilibrium force F against drive position h0   * stable  . unstable  @ now");
+        put(y0, x0, w, A_BOLD, " Equilibrium force F against drive position h0   * stable  . unstable  @ now%s",
+            meas ? "  x measured" : "");
     else
-        put(y0, x0, w, A_BOLD, " Force F against drive position h0   + loading  o unloading  @ now");
+        put(y0, x0, w, A_BOLD, " Force F against drive position h0   + loading  o unloading  @ now%s",
+            meas ? "  x measured" : "");
     const int lab = 11;
     int pw = w - lab - 1, ph = h - 2;
-    if (n == 0) {
+    if (n == 0 && !meas) {
         put(y0 + ph / 2, x0 + lab, pw, A_NORMAL, "%s", stat ? "(the equilibrium curve appears here as it is solved)"
                                                           : "(the force-position curve appears here as you step)");
         return;
@@ -345,6 +349,12 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
         xmax = fmax(xmax, rows[i].h0);
         ymin = fmin(ymin, rows[i].F);
         ymax = fmax(ymax, rows[i].F);
+    }
+    for (size_t i = 0; meas && i < meas->n; i++) {
+        xmin = fmin(xmin, meas->h0[i]);
+        xmax = fmax(xmax, meas->h0[i]);
+        ymin = fmin(ymin, meas->F[i]);
+        ymax = fmax(ymax, meas->F[i]);
     }
     if (xmax - xmin < s->step) {
         xmin -= s->step;
@@ -361,6 +371,12 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     int zero = (int)lround(ymax / (ymax - ymin) * (ph - 1));
     for (int c = 0; c < pw; c++)
         grid[zero * pw + c] = '-';
+    /* the measurement under the computed path: where they meet, the model shows */
+    for (size_t i = 0; meas && i < meas->n; i++) {
+        int c = (int)lround((meas->h0[i] - xmin) / (xmax - xmin) * (pw - 1));
+        int r = (int)lround((ymax - meas->F[i]) / (ymax - ymin) * (ph - 1));
+        grid[r * pw + c] = 'x';
+    }
     /* loading first, so unloading shows where they meet; in static mode
      * unstable first, so the stable states (what an experiment sees) show */
     for (int pass = 0; pass < 2; pass++)

@@ -845,6 +845,7 @@ int adh_tui_main(const adh_config *cfg)
     }
     t.view.utf8 = locale_utf8(t.headless);
     t.view.no_clock = cfg->no_clock;
+    t.view.measured = cfg->measured;
 
     struct sigaction sa, old_int, old_term;
     memset(&sa, 0, sizeof sa);

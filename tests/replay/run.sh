@@ -34,6 +34,7 @@ run_case() {
     d=${2:-$work/$1}
     mkdir -p "$d"
     cp "$here/cases/$1.keys" "$d/"
+    [ -f "$here/cases/$1.data" ] && cp "$here/cases/$1.data" "$d/"
     args=""
     [ -f "$here/cases/$1.args" ] && args=$(cat "$here/cases/$1.args")
     t0=$(date +%s)
@@ -165,6 +166,12 @@ check "with the path's numbers exactly (state and cycle)" [ "$(sed -n '3,18p' "$
 check "U puts the edit back" sh -c "grep -q '^ >R     20 µm ' '$EU/edit-redo.txt' && grep -q '^redid the edit: R = 20 µm' '$EU/edit-redo.txt'"
 check "+ doubles A, and u takes it back with the path" \
     sh -c "grep -q '^ >A     2e-19 J' '$EU/edit-plus.txt' && grep -q '^ >A     1e-19 J' '$EU/edit-undo.screen' && grep -q 'path   124 states' '$EU/edit-undo.screen'"
+
+MD=$W/measured
+check "--data draws the measured curve in the preview before any step, named in its key" \
+    sh -c "grep -q 'x measured' '$MD/measured-0.txt' && sed -n '20,29p' '$MD/measured-0.txt' | cut -c12- | grep -q 'x'"
+check "and under the computed path after a cycle" \
+    sh -c "sed -n '20,29p' '$MD/measured.screen' | cut -c12- | grep -q 'x' && sed -n '20,29p' '$MD/measured.screen' | cut -c12- | grep -q 'o'"
 
 # Static mode (m): the equilibrium curve point by point, walked back and
 # forth without solving again, followed to its end as --batch --mode=static.
