@@ -228,6 +228,9 @@ PL=$W/plots/adhere-plots
 for f in force.png profile.png contact.png; do
     check "p wrote $f as a PNG" sh -c "[ \"\$(head -c 8 '$PL/$f' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ]"
 done
+PO=$W/plots-out
+check "--out chooses where p writes in the TUI" \
+    sh -c "[ \"\$(head -c 8 '$PO/my-plots/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && [ ! -e '$PO/adhere-plots' ] && grep -q '^plots: wrote force.png.* in my-plots' '$PO/plots-out.screen'"
 check "p says which plots it wrote and where" sh -c "grep '^plots: ' '$W/plots/plots.screen' | grep 'force.png, profile.png, contact.png' | grep -q 'adhere-plots'"
 
 R=$W/resize
