@@ -190,6 +190,21 @@ static void describe_point(tui *t)
     t->folds_seen = s->sres.folds;
 }
 
+/* The pull-off of the path's unloading branch, "-850 nN (3.4 πγR)": the
+ * number the user came for, not the force after the jump. */
+typedef struct { char s[96]; } text96;
+static text96 pulloff_text(const tui *t)
+{
+    text96 r;
+    adh_cycle c;
+    char F[64];
+    tui_sim_cycle(&t->sim, &c);
+    fmtq(c.pulloff_F, ADH_Q_FORCE, F, sizeof F);
+    snprintf(r.s, sizeof r.s, "%s (%.3g %s)", F, c.pulloff_F / (-M_PI * t->sim.der.gamma * t->sim.mat.R),
+             t->view.utf8 ? "\xcf\x80\xce\xb3R" : "pi gamma R");
+    return r;
+}
+
 /* Plain words about the step just done, naming jumps in and out. */
 static void describe_step(tui *t)
 {
@@ -208,7 +223,8 @@ static void describe_step(tui *t)
     if (o->a > 0 && !was && n >= 2)
         say(t, 0, "jumped into contact at h0 = %s: contact radius %s, force %s", h0, a, F);
     else if (o->a == 0 && was)
-        say(t, 0, "pulled off at h0 = %s: the surfaces jumped apart, force now %s", h0, F);
+        say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0,
+            pulloff_text(t).s, F);
     else
         say(t, 0, "%s to h0 = %s: force %s%s%s", o->branch > 0 ? "approached" : "retracted", h0, F,
             o->a > 0 ? ", contact radius " : ", not in contact", o->a > 0 ? a : "");
@@ -247,7 +263,8 @@ static int run_done(tui *t)
     if (o->a > 0)
         t->run_touched = 1;
     else if (t->run_touched) {
-        say(t, 0, "pulled off at h0 = %s: the surfaces jumped apart; force now %s", h0, F);
+        say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0,
+            pulloff_text(t).s, F);
         return 1;
     }
     if (o->h0 >= t->sim.start - 1e-6 * t->sim.step) {

@@ -114,6 +114,8 @@ check "3 steps back are on the unloading branch" grep -q "branch unloading" "$S/
 C=$W/contact
 check "r stops at the turning point, in contact" sh -c "grep -q 'at the turning point h0 = -2 nm' '$C/contact-turn.txt' && grep 'contact radius' '$C/contact-turn.txt' | grep -vq 'not in'"
 check "r again unloads until pull-off, out of contact" sh -c "grep -q 'pulled off at h0' '$C/contact.screen' && grep -q 'not in contact' '$C/contact.screen'"
+check "the status line gives the pull-off (the minimum force, in N and πγR), not only the force after the jump" \
+    grep -q "^pulled off at h0 = 9.5 nm: pull-off -850 nN (3.4 πγR); force after the jump -1.802 nN" "$C/contact.screen"
 check "the preview shows both branches" sh -c "grep -q 'o' '$C/contact.screen' && sed -n '16,30p' '$C/contact.screen' | grep -q '+'"
 # The screen and --batch drive the same core with the same positions: the
 # same settings must give the same rows (iterations exactly, F to 4 digits).
