@@ -175,6 +175,11 @@ check "--data draws the measured curve in the preview before any step, named in 
 check "and under the computed path after a cycle" \
     sh -c "sed -n '20,29p' '$MD/measured.screen' | cut -c12- | grep -q 'x' && sed -n '20,29p' '$MD/measured.screen' | cut -c12- | grep -q 'o'"
 
+EG=$W/edit-grid
+check "u after an N edit and two steps: back on the N = 100 path, its numbers exactly" \
+    sh -c "grep -q '^undid the edit: N = 100 again, with its path (6 states)' '$EG/edit-grid-back.txt' && [ \"\$(sed -n '3,8p' '$EG/edit-grid-back.txt' | cut -c46-)\" = \"\$(sed -n '3,8p' '$EG/edit-grid-5.txt' | cut -c46-)\" ]"
+check "and a step goes on from it on the rebuilt grid" grep -q "path   7 states" "$EG/edit-grid.screen"
+
 # Static mode (m): the equilibrium curve point by point, walked back and
 # forth without solving again, followed to its end as --batch --mode=static.
 ST=$W/static
