@@ -60,6 +60,13 @@ static double nice_step(double x)
     return x <= p ? p : x <= 2 * p ? 2 * p : x <= 5 * p ? 5 * p : 10 * p;
 }
 
+/* The nice step (1, 2, 5 times a power of ten) just below step. */
+static double nice_below(double step)
+{
+    double p = pow(10.0, floor(log10(step) + 1e-9)), m = step / p;
+    return m > 4.5 ? 2 * p : m > 1.5 ? p : 0.5 * p;
+}
+
 /* A length with a prefix chosen for it, e.g. "10 µm", "1.5 cm". */
 static void format_length(double v, char *buf, size_t len)
 {
@@ -601,8 +608,8 @@ static int plot_force(plotter *pl)
         if (lmax > lmin) {
             double span = lmax - lmin, lo_ = lmin - 0.12 * span, hi_ = lmax + 0.12 * span;
             double step = nice_step((hi_ - lo_) / 3.0);
-            while (floor(hi_ / step) - ceil(lo_ / step) + 1 < 3)
-                step = nice_step(step / 2.1);
+            for (int k = 0; k < 6 && floor(hi_ / step) - ceil(lo_ / step) + 1 < 3; k++)
+                step = nice_below(step);
             adh_gnuplot_cmd(pl->gp, "set xtics %.17g", step);
             /* an explicit range, so the JKR and DMT lines span the panel */
             adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo_, hi_);
