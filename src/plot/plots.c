@@ -620,7 +620,7 @@ static int plot_force(plotter *pl)
         amax = fmax(amax, -d->F_dmt * fscale);
         if (amax > amin) {
             double span = amax - amin, lo_ = amin - 0.1 * span, hi_ = amax + 0.1 * span;
-            double step = nice_step((hi_ - lo_) / 5.0);
+            double step = nice_step((hi_ - lo_) / 6.0);
             adh_gnuplot_cmd(pl->gp, "set ytics %.17g", step);
             adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", lo_, hi_);
         }
