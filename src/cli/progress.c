@@ -24,7 +24,7 @@ void adh_progress_text(size_t done, size_t total, double elapsed, char *buf, siz
     if (done > total)
         done = total;
     double frac = (double)done / (double)total;
-    if (done == 0 || elapsed <= 0) {
+    if (done == 0 || done == total || elapsed <= 0) {
         snprintf(buf, len, "%3.0f %%", 100 * frac);
         return;
     }

@@ -399,9 +399,9 @@ int adh_sweep_main(const adh_cli *cli)
         char t[32];
         adh_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
         if (out)
-            fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv%s in %s/, each run's tables and plots in "
+            fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv%s in %s/, each run's tables%s in "
                     "%s/run-1 ... run-%zu\n", t, n, cfg->plot && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",
-                    out, out, n);
+                    out, cfg->plot && cfg->plots ? " and plots" : "", out, n);
         else
             fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv went to standard output\n", t, n);
     }
