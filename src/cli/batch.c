@@ -17,19 +17,24 @@
 #include "cli/figures.h"
 #include "cli/interrupt.h"
 #include "cli/ready.h"
+#include "cli/progress.h"
 #include "cli/rigid.h"
 #include "cli/statics.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
 #include "plot/outdir.h"
+#include "adhere/units.h"
 #include "plot/plot.h"
+#include "scene/plan.h"
 
 
 typedef struct batch_ctx {
     const adh_config *cfg;
     FILE *stream;           /* force rows as they come (no --out), or NULL */
-    int progress;           /* draw a progress bar on stderr */
-    double last_draw;
+    int progress;           /* draw a progress line on stderr */
+    size_t total;           /* the plan's steps, an upper bound (unloading ends
+                               at the jump out); 0 when unknown (static mode) */
+    double t0, last_draw;
 } batch_ctx;
 
 static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
@@ -42,10 +47,14 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
     if (ctx->progress) {
         double t = adh_clock_seconds();
         if (t - ctx->last_draw > 0.1) {
+            char pr[64];
             ctx->last_draw = t;
-            fprintf(stderr, "\r  %s step %5zu  h0 %+8.3f nm  F %+10.4g uN  iters %7zu  total %9zu ",
-                    o->branch > 0 ? "loading  " : "unloading", run->nrows, o->h0 * 1e9, o->F * 1e6,
-                    o->iters, run->iterations);
+            adh_progress_text(run->nrows, ctx->total, t - ctx->t0, pr, sizeof pr);
+            if (ctx->total)
+                fprintf(stderr, "\r  %s step %zu of <=%zu  %-26s h0 %+8.3f nm  F %+10.4g uN ",
+                        o->branch > 0 ? "loading  " : "unloading", run->nrows, ctx->total, pr, o->h0 * 1e9, o->F * 1e6);
+            else
+                fprintf(stderr, "\r  point %zu  h0 %+8.3f nm  F %+10.4g uN ", run->nrows, o->h0 * 1e9, o->F * 1e6);
         }
     }
     /* the loading row at the deepest turn: the dwell comes next */
@@ -57,6 +66,37 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
             adh_ready_phase("dwell");
     }
     return adh_interrupt_step(o, run, NULL);
+}
+
+/* The closing line: how long, what the cycle measured, where it went. */
+static void closing_line(const adh_config *cfg, const adh_run *run, const adh_static_result *sres,
+                         double seconds, const char *out, const char *tables, const char *plots)
+{
+    char t[32], F[64] = "", in[64] = "", jo[64] = "";
+    double pull = NAN, jin = run->jump_in_h0, jout = NAN;
+    if (cfg->mode == ADH_MODE_STATIC) {
+        pull = sres->pulloff_F;
+        jin = sres->jump_in_h0;
+        jout = sres->jump_out_h0;
+    } else {
+        const adh_turn_result *tr = adh_run_main_turn(run);
+        if (tr) {
+            pull = tr->pulloff_F;
+            jout = tr->jump_out_h0;
+        }
+    }
+    adh_progress_duration(seconds, t, sizeof t);
+    adh_format_quantity(pull, ADH_Q_FORCE, 4, F, sizeof F);
+    adh_format_quantity(jin, ADH_Q_LENGTH, 4, in, sizeof in);
+    adh_format_quantity(jout, ADH_Q_LENGTH, 4, jo, sizeof jo);
+    fprintf(stderr, "adhere: done in %s: pull-off %s, jump-in %s, jump-out %s; ", t, isnan(pull) ? "none" : F,
+            isnan(jin) ? "none" : in, isnan(jout) ? "none" : jo);
+    if (out && strncmp(plots, "wrote ", 6) == 0)
+        fprintf(stderr, "wrote %s, %s\n", tables, plots + 6);
+    else if (out)
+        fprintf(stderr, "wrote %s in %s%s%s\n", tables, out, plots[0] ? "; " : "", plots);
+    else
+        fprintf(stderr, "the force table went to standard output\n");
 }
 
 static int make_dir(const char *dir, char *why, size_t n)
@@ -89,6 +129,7 @@ static int make_dir(const char *dir, char *why, size_t n)
 int adh_batch_main(const adh_cli *cli)
 {
     const adh_config *cfg = &cli->cfg;
+    double t_start = adh_clock_seconds();
     char why[1024];
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
     /* a directory never mixes two runs: the earlier run's files go first */
@@ -125,7 +166,10 @@ int adh_batch_main(const adh_cli *cli)
         return kst == ADH_EINTR ? adh_interrupt_exit() : ADH_EXIT_SOLVER;
     }
 
-    batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2), 0 };
+    adh_plan plan;
+    adh_plan_make(cfg, &plan);
+    batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2),
+                      plan.static_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
     if (ctx.stream) {
         fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
         adh_force_header(ctx.stream);
@@ -221,7 +265,7 @@ int adh_batch_main(const adh_cli *cli)
             /* With --no-plot this writes the plots' tables only. A signal
              * here is still caught: gnuplot finishes its file, the
              * temporaries go, and the exit says interrupted. */
-            char msg[1024] = "", missing[256] = "";
+            char msg[1024] = "", missing[256] = "", fig[1024] = "", plots[2100] = "";
             adh_ready_phase("plot");
             int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
                                       sizeof missing);
@@ -231,8 +275,8 @@ int adh_batch_main(const adh_cli *cli)
             }
             adh_names_add(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
-            if (!adh_interrupt_signal() && adh_figures_run(cfg, &run, out, msg, sizeof msg) != 0) {
-                fprintf(stderr, "adhere: plots not written: %s\n", msg);
+            if (!adh_interrupt_signal() && adh_figures_run(cfg, &run, out, fig, sizeof fig) != 0) {
+                fprintf(stderr, "adhere: plots not written: %s\n", fig);
                 if (status == ADH_EXIT_OK)
                     status = ADH_EXIT_PLOT;
                 /* the ones asked for and not there (the directory was
@@ -246,12 +290,27 @@ int adh_batch_main(const adh_cli *cli)
                         adh_names_add(unwritten, sizeof unwritten, figs[i].name);
                 }
             }
+            if (status == ADH_EXIT_OK && !cfg->quiet) {
+                char tables_[128];
+                snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s", run.nturns ? ", turns.tsv" : "",
+                         want_ref ? ", static.tsv" : "");
+                /* "wrote A, B in DIR; notes" from the plots, the scene figures' names after A, B */
+                const char *in = strstr(msg, " in ");
+                if (strncmp(msg, "wrote ", 6) == 0 && in && !strstr(msg, "no plot tables"))
+                    snprintf(plots, sizeof plots, "wrote %.*s%s%s%s", (int)(in - msg - 6), msg + 6, fig[0] ? ", " : "",
+                             fig, in);
+                else if (fig[0])
+                    snprintf(plots, sizeof plots, "wrote %s in %.1000s", fig, out);
+                closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, out, tables_, plots);
+            }
         }
         tables.unwritten = unwritten;
         if (adh_write_atomic(out, "summary.tsv", adh_write_summary, &tables, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             status = ADH_EXIT_USAGE;
         }
+    } else if (status == ADH_EXIT_OK && !cfg->quiet) {
+        closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, NULL, "", "");
     }
     adh_interrupt_release();
     if (adh_interrupt_signal() && !partial) {

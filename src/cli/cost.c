@@ -1,4 +1,5 @@
 #include "cli/cost.h"
+#include "adhere/cycle.h"
 #include "adhere/clock.h"
 
 #include <math.h>
@@ -18,6 +19,7 @@
 #include "cli/batch.h"
 #include "cli/interrupt.h"
 #include "cli/ready.h"
+#include "cli/progress.h"
 #include "cli/statics.h"
 #include "cli/tables.h"
 #include "plot/gnuplot.h"
@@ -51,7 +53,8 @@ typedef struct cost_run {
 typedef struct cost_job {
     const adh_config *cfg;
     cost_run *runs;
-    size_t n, next;
+    size_t n, next, done;
+    double t0;                /* when the runs began */
     pthread_mutex_t lock;
     double static_hysteresis; /* J; NAN when the static curve failed */
     double static_a_turn;     /* m; NAN when the static curve failed */
@@ -104,12 +107,21 @@ static void *worker(void *arg)
         adh_run_free(&run);
         adh_kernel_free(k);
         adh_grid_free(g);
+        pthread_mutex_lock(&job->lock);
+        job->done++;
         if (!job->cfg->quiet) {
-            pthread_mutex_lock(&job->lock);
-            fprintf(stderr, "adhere: cost run %zu of %zu (N = %zu, %s, eps = %g pm): %.3g s, %zu iterations\n", i + 1,
-                    job->n, cr->nodes, adh_kernel_name(cr->kernel), cr->eps * 1e12, cr->seconds, cr->iterations);
-            pthread_mutex_unlock(&job->lock);
+            char pr[64];
+            adh_progress_text(job->done, job->n, adh_clock_seconds() - job->t0, pr, sizeof pr);
+            fprintf(stderr, "adhere: cost run %zu of %zu (N = %zu, %s, eps = %g pm): %.3g s, %zu iterations; "
+                    "%zu of %zu done, %s\n", i + 1, job->n, cr->nodes, adh_kernel_name(cr->kernel), cr->eps * 1e12,
+                    cr->seconds, cr->iterations, job->done, job->n, pr);
         }
+        /* not hidden by -q: the row's error then measures the cap, not eps */
+        if (cr->unconverged)
+            fprintf(stderr, "adhere: warning: cost run %zu (N = %zu, eps = %g pm): %zu of %zu steps reached the "
+                    "iteration cap (%zu) without meeting eps\n", i + 1, cr->nodes, cr->eps * 1e12, cr->unconverged,
+                    cr->steps, c.relax.max_iter);
+        pthread_mutex_unlock(&job->lock);
     }
     return NULL;
 }
@@ -324,6 +336,7 @@ int adh_cost_main(const adh_cli *cli)
     int jobs = cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
     cost_job job = { .cfg = cfg, .runs = runs, .n = n };
     pthread_mutex_init(&job.lock, NULL);
+    job.t0 = adh_clock_seconds();
     pthread_t threads[8];
     int started = 0;
     for (int t = 0; t < jobs; t++)
@@ -439,6 +452,15 @@ int adh_cost_main(const adh_cli *cli)
                 status = prc;
             }
         }
+    }
+    if (status == ADH_EXIT_OK && !cfg->quiet) {
+        char t[32];
+        adh_progress_duration(adh_clock_seconds() - job.t0, t, sizeof t);
+        if (out)
+            fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output, cost.tsv%s in %s/\n", t, n,
+                    cfg->plot ? " and cost.png" : "", out);
+        else
+            fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output\n", t, n);
     }
     free(runs);
     return status;

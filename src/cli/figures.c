@@ -155,7 +155,9 @@ static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
     const char *fu;
     adh_force_unit(fbig, &fs, &fu);
     fig_begin(fg, "precontact.png", tmp_png, sizeof tmp_png);
-    adh_gnuplot_cmd(fg->gp, "set title \"Force before contact (Figure 1 inset), E = %.3g Pa\"", m->E);
+    char es[32];
+    adh_format_modulus(m->E, es, sizeof es);
+    adh_gnuplot_cmd(fg->gp, "set title \"Force before contact (Figure 1 inset), E = %s\"", es);
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
     adh_gnuplot_cmd(fg->gp, "set key bottom right");
@@ -189,7 +191,9 @@ static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
     if (pts < 2)
         return 0;
     fig_begin(fg, "bulge.png", tmp_png, sizeof tmp_png);
-    adh_gnuplot_cmd(fg->gp, "set title \"Bulge before contact (Figure 2), E = %.3g Pa\"", m->E);
+    char es[32];
+    adh_format_modulus(m->E, es, sizeof es);
+    adh_gnuplot_cmd(fg->gp, "set title \"Bulge before contact (Figure 2), E = %s\"", es);
     adh_gnuplot_cmd(fg->gp, "set xlabel \"central gap h (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"central deformation δ (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set key bottom right");
@@ -217,6 +221,11 @@ int adh_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, 
     if ((cfg->plots & ADH_PLOT_BULGE) && adh_gnuplot_alive(fg.gp) && bulge(&fg, cfg, run) != 0)
         rc = -1;
     fig_close(&fg);
+    /* on success, what was written, for the run's closing line */
+    if (rc == 0)
+        snprintf(msg, msglen, "%s%s%s", cfg->plots & ADH_PLOT_PRECONTACT ? "precontact.png" : "",
+                 (cfg->plots & ADH_PLOT_PRECONTACT) && (cfg->plots & ADH_PLOT_BULGE) ? ", " : "",
+                 cfg->plots & ADH_PLOT_BULGE ? "bulge.png" : "");
     return rc;
 }
 
@@ -258,7 +267,7 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     /* filled: a jump; open: contact came gradually, the last gap before it (as the paper) */
     adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($4 == 1 ? $2*1e9 : NaN) with points pt 7 ps 1.2 lc rgb \"#c0392b\" title \"jump (computed)\", "
                     "'' index 0 using 1:($4 == 1 ? NaN : $2*1e9) with points pt 6 ps 1.2 lc rgb \"#c0392b\" title \"last gap before contact, no jump\", "
-                    "'' index 1 using 1:($2*1e9) with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 24\"",
+                    "'' index 1 using 1:($2*1e9) with lines lw 2.5 dt 3 lc rgb \"#1f3f8f\" title \"eq 24\"",
                     adh_gp_path(dat, q, sizeof q));
     return fig_end(fg, "jump.png", tmp_png);
 }

@@ -10,6 +10,7 @@
 #include "cli/options.h"
 #include "plot/plot.h"
 #include "scene/config.h"
+#include "scene/measured.h"
 #include "scene/plan.h"
 #include "tui/tui.h"
 
@@ -72,6 +73,15 @@ int main(int argc, char **argv)
     /* The solvers poll the interrupt flag through their cancel hook: a
      * signal is heard inside a step, not only between steps. */
     cli.cfg.relax.cancel = adh_interrupt_flag();
+    /* A measured curve is read before any work: a bad line stops here. */
+    static adh_measured measured;
+    if (cli.cfg.data[0]) {
+        if (adh_measured_load(cli.cfg.data, &measured, why, sizeof why) != 0) {
+            fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
+            return ADH_EXIT_USAGE;
+        }
+        cli.cfg.measured = &measured;
+    }
     switch (cli.action) {
     case ADH_ACT_BATCH:
         return adh_batch_main(&cli);

@@ -18,7 +18,7 @@ enum {
     OPT_SPACING = 256, OPT_START, OPT_TURN, OPT_KERNEL, OPT_REPLAY, OPT_SCREEN, OPT_SIZE,
     OPT_NO_CLOCK, OPT_LIST_KEYS, OPT_NO_PLOT, OPT_PLOTS, OPT_PROFILES, OPT_DRIVE_SPEED,
     OPT_GNUPLOT_STYLE, OPT_PLAN, OPT_DWELL, OPT_MODE, OPT_REFERENCE, OPT_COST, OPT_COST_EPS,
-    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE
+    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE, OPT_DATA
 };
 
 typedef struct option_doc {
@@ -56,6 +56,7 @@ static const option_doc options[] = {
     { { "profiles", required_argument, 0, OPT_PROFILES }, "M[,M...]", "drive positions where surface profiles are stored" },
     { { "drive-speed", required_argument, 0, OPT_DRIVE_SPEED }, "M/S", "drive speed for contact-line speeds (default 1um/s)" },
     { { "gnuplot-style", required_argument, 0, OPT_GNUPLOT_STYLE }, "FILE", "gnuplot style file overriding the installed one" },
+    { { "data", required_argument, 0, OPT_DATA }, "FILE", "a measured force-position curve (nm, nN) drawn over force.png and the TUI preview" },
     { { "plan", no_argument, 0, OPT_PLAN }, NULL, "print the run plan (branches, steps, what is stored) and exit" },
     { { "cost", no_argument, 0, OPT_COST }, NULL, "report what accuracy costs: runs over a grid of eps, N and kernels" },
     { { "cost-eps", required_argument, 0, OPT_COST_EPS }, "M[,M...]", "eps values of the cost grid (default 2,1,0.5,0.2,0.1pm)" },
@@ -65,7 +66,7 @@ static const option_doc options[] = {
     { { "size", required_argument, 0, OPT_SIZE }, "COLSxROWS", "screen size for --replay (default 100x32)" },
     { { "no-clock", no_argument, 0, OPT_NO_CLOCK }, NULL, "mask timings on the screen so replays are deterministic" },
     { { "list-keys", no_argument, 0, OPT_LIST_KEYS }, NULL, "print the TUI's keys and exit" },
-    { { "quiet", no_argument, 0, 'q' }, NULL, "no progress bar or notes on standard error" },
+    { { "quiet", no_argument, 0, 'q' }, NULL, "no progress line, notes or closing line on standard error (warnings stay)" },
     { { "help", no_argument, 0, 'h' }, NULL, "print this help and exit" },
     { { "version", no_argument, 0, 'V' }, NULL, "print the version and exit" },
 };
@@ -257,9 +258,9 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
         cfg->rows = rows;
         return 0;
     }
-    case 'o': case OPT_REPLAY: case OPT_SCREEN: case OPT_GNUPLOT_STYLE: {
+    case 'o': case OPT_REPLAY: case OPT_SCREEN: case OPT_GNUPLOT_STYLE: case OPT_DATA: {
         char *dst = c == 'o' ? cfg->out_dir : c == OPT_REPLAY ? cfg->replay
-                  : c == OPT_SCREEN ? cfg->screen : cfg->gnuplot_style;
+                  : c == OPT_SCREEN ? cfg->screen : c == OPT_DATA ? cfg->data : cfg->gnuplot_style;
         if (!*arg || strlen(arg) >= PATH_MAX) {
             snprintf(why, n, "--%s: a path of 1 to %d characters is needed", name, PATH_MAX - 1);
             return 2;

@@ -18,6 +18,8 @@
 #include "cli/interrupt.h"
 #include "cli/ready.h"
 #include "cli/rigid.h"
+#include "cli/progress.h"
+#include "adhere/clock.h"
 #include "cli/statics.h"
 #include "cli/tables.h"
 #include "plot/plot.h"
@@ -39,6 +41,7 @@ typedef struct sweep_job {
     int *tables;               /* exit status of writing run i's tables; -1 not yet */
     size_t next;               /* the next run to start, under lock */
     size_t done;
+    double t0;                 /* when the runs began */
     pthread_mutex_t lock;
 } sweep_job;
 
@@ -70,11 +73,19 @@ static void *worker(void *arg)
             job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out);
         pthread_mutex_lock(&job->lock);
         job->done++;
-        if (!cfg->quiet)
-            fprintf(stderr, "adhere: run %zu of %zu (%s = %g) %s: %zu steps, %zu iterations, %.3g s\n", i + 1,
-                    cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i],
+        if (!cfg->quiet) {
+            char pr[64];
+            adh_progress_text(job->done, cfg->sweep.n, adh_clock_seconds() - job->t0, pr, sizeof pr);
+            fprintf(stderr, "adhere: run %zu of %zu (%s = %g) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
+                    i + 1, cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i],
                     run->interrupted ? "interrupted" : job->status[i] == ADH_SUCCESS ? "done" : adh_strerror(job->status[i]),
-                    run->nrows, run->iterations, run->seconds);
+                    run->nrows, run->iterations, run->seconds, job->done, cfg->sweep.n, pr);
+        }
+        /* not hidden by -q: it changes what the run's numbers mean */
+        if (run->unconverged)
+            fprintf(stderr, "adhere: warning: run %zu (%s = %g): %zu of %zu steps reached the iteration cap (%zu) "
+                    "without meeting eps; their rows say converged 0\n", i + 1, adh_sweep_name(cfg->sweep.kind),
+                    cfg->sweep.values[i], run->unconverged, run->nrows, cfg->relax.max_iter);
         pthread_mutex_unlock(&job->lock);
     }
     return NULL;
@@ -329,6 +340,7 @@ int adh_sweep_main(const adh_cli *cli)
 {
     const adh_config *cfg = &cli->cfg;
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
+    double t_start = adh_clock_seconds();
     char why[1024];
     size_t n = cfg->sweep.n;
     if (out && make_dir(out, why, sizeof why) != 0) {
@@ -392,6 +404,7 @@ int adh_sweep_main(const adh_cli *cli)
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status, .out = out, .tables = tables };
     pthread_mutex_init(&job.lock, NULL);
+    job.t0 = adh_clock_seconds();
     int started = 0;
     for (int t = 0; t < jobs; t++)
         if (pthread_create(&threads[t], NULL, worker, &job) == 0)
@@ -438,6 +451,16 @@ int adh_sweep_main(const adh_cli *cli)
                 exit_status = worse(exit_status, ADH_EXIT_PLOT);
             }
         }
+    }
+    if (exit_status == ADH_EXIT_OK && !cfg->quiet) {
+        char t[32];
+        adh_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
+        if (out)
+            fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv%s in %s/, each run's tables%s in "
+                    "%s/run-1 ... run-%zu\n", t, n, cfg->plot && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",
+                    out, cfg->plot && cfg->plots ? " and plots" : "", out, n);
+        else
+            fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv went to standard output\n", t, n);
     }
     for (size_t i = 0; i < n; i++)
         adh_run_free(&runs[i]);

@@ -89,3 +89,13 @@ void adh_force_unit(double fmax, double *scale, const char **name)
         *scale = 1e12; *name = "pN";
     }
 }
+
+void adh_format_modulus(double v, char *buf, size_t len)
+{
+    if (v >= 1e9)
+        snprintf(buf, len, "%.3g GPa", v * 1e-9);
+    else if (v >= 1e6)
+        snprintf(buf, len, "%.3g MPa", v * 1e-6);
+    else
+        snprintf(buf, len, "%.3g kPa", v * 1e-3);
+}

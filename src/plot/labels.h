@@ -39,4 +39,7 @@ const char *adh_gp_path(const char *path, char *buf, size_t len);
  * 0.1 and 1000 for forces up to fmax newtons. */
 void adh_force_unit(double fmax, double *scale, const char **name);
 
+/* A modulus as titles write it, one style for all: "1 GPa", "300 MPa". */
+void adh_format_modulus(double v, char *buf, size_t len);
+
 #endif

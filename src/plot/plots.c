@@ -19,6 +19,7 @@
 #include "plot/labels.h"
 #include "plot/png.h"
 #include "plot/plotdata.h"
+#include "scene/measured.h"
 
 #define MAX_LABELLED_UNLOADS 8
 
@@ -61,6 +62,13 @@ static double nice_step(double x)
     return x <= p ? p : x <= 2 * p ? 2 * p : x <= 5 * p ? 5 * p : 10 * p;
 }
 
+/* The nice step (1, 2, 5 times a power of ten) just below step. */
+static double nice_below(double step)
+{
+    double p = pow(10.0, floor(log10(step) + 1e-9)), m = step / p;
+    return m > 4.5 ? 2 * p : m > 1.5 ? p : 0.5 * p;
+}
+
 /* A length with a prefix chosen for it, e.g. "10 µm", "1.5 cm". */
 static void format_length(double v, char *buf, size_t len)
 {
@@ -75,16 +83,6 @@ static void format_length(double v, char *buf, size_t len)
         snprintf(buf, len, "%.3g nm", v * 1e9);
 }
 
-static void format_modulus(double v, char *buf, size_t len)
-{
-    if (v >= 1e9)
-        snprintf(buf, len, "%.3g GPa", v * 1e-9);
-    else if (v >= 1e6)
-        snprintf(buf, len, "%.3g MPa", v * 1e-6);
-    else
-        snprintf(buf, len, "%.3g kPa", v * 1e-3);
-}
-
 /* A figure title as a gnuplot string expression (adh_gp_quote: the scene
  * title is user text), drawn noenhanced so its _ ^ { } @ & ~ print as
  * themselves: the scene title (if any) on its own line, then what the
@@ -92,12 +90,24 @@ static void format_modulus(double v, char *buf, size_t len)
 #define HEADING_SIZE ADH_GP_QUOTED_SIZE(1024)
 static void title_string(const plotter *pl, const char *what, char *buf, size_t len)
 {
-    char r[32], e[32], text[1024];
+    char r[32], e[32], text[1024], scene[300];
     format_length(pl->cfg->mat.R, r, sizeof r);
-    format_modulus(pl->cfg->mat.E, e, sizeof e);
+    adh_format_modulus(pl->cfg->mat.E, e, sizeof e);
+    /* The scene title names the scene's own figure (Figure 4's profiles);
+     * its other PNGs carry only its label ("Figure 4 scene"), or force.png
+     * would be titled "profiles on approach and retraction". The scene's
+     * figure is the most specific plot it asks for. */
+    unsigned want = pl->cfg->plots;
+    int own = !strcmp(what, "Surface profiles") ? 1
+            : !strncmp(what, "Contact", 7) ? !(want & ADH_PLOT_PROFILE)
+            : !(want & (ADH_PLOT_PROFILE | ADH_PLOT_CONTACT));
+    const char *colon = strchr(pl->cfg->title, ':');
+    if (own || !colon)
+        snprintf(scene, sizeof scene, "%s", pl->cfg->title);
+    else
+        snprintf(scene, sizeof scene, "%.*s scene", (int)(colon - pl->cfg->title), pl->cfg->title);
     snprintf(text, sizeof text, "%s%s%s: σ = %.3g, γ = %.3g mJ/m², R = %s, E = %s",
-             pl->cfg->title, pl->cfg->title[0] ? "\n" : "", what, pl->d.sigma,
-             pl->d.gamma * 1e3, r, e);
+             scene, scene[0] ? "\n" : "", what, pl->d.sigma, pl->d.gamma * 1e3, r, e);
     adh_gp_quote(text, buf, len);
 }
 
@@ -338,6 +348,20 @@ static int plot_force(plotter *pl)
             xmax = fmax(xmax, ref->rows[i].h0);
         }
     }
+    /* --data: the user's measurement, points over the model, in the frame */
+    int meas_set = -1;
+    const adh_measured *meas = pl->cfg->measured;
+    if (meas && meas->n) {
+        set_begin(&df);
+        for (size_t i = 0; i < meas->n; i++) {
+            set_point(&df, meas->h0[i], meas->F[i]);
+            flo = fmin(flo, meas->F[i]);
+            fhi = fmax(fhi, meas->F[i]);
+            xmin = fmin(xmin, meas->h0[i]);
+            xmax = fmax(xmax, meas->h0[i]);
+        }
+        meas_set = set_end(&df);
+    }
     double xpad = 0.02 * (xmax - xmin);
     /* The models for comparison (not for rigid spheres, where E means
      * nothing), each over the whole width of the frame. */
@@ -409,7 +433,7 @@ static int plot_force(plotter *pl)
     int nmodel = models ? (jkr.load >= 0 || jkr.disp >= 0) + (md.load >= 0 || md.disp >= 0) +
                           (dmt.load >= 0 || dmt.disp >= 0) + any_disp
                         : 2;
-    int nkey = (set[0] >= 0) + (set[1] >= 0) + (rigid_set >= 0) + nmodel +
+    int nkey = (set[0] >= 0) + (set[1] >= 0) + (rigid_set >= 0) + nmodel + (meas_set >= 0) +
                (ref_set[0] >= 0 || ref_set[1] >= 0) +
                (nunload > MAX_LABELLED_UNLOADS ? 1 : nunload);
     /* (the model curves are only references too: they neither set the
@@ -439,10 +463,13 @@ static int plot_force(plotter *pl)
     adh_gnuplot_cmd(pl->gp, "Fjkr = %.17g", d->F_jkr);
     adh_gnuplot_cmd(pl->gp, "Fdmt = %.17g", d->F_dmt);
     int panel = nadh >= 2;
+    /* a two-line heading (scene title) needs more room above the panels,
+     * or it runs into the adhesion panel's top */
+    double top = pl->cfg->title[0] ? 0.90 : 0.95;
     if (panel) {
         adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
         adh_gnuplot_cmd(pl->gp, "set origin 0,0");
-        adh_gnuplot_cmd(pl->gp, "set size 0.64,0.96");
+        adh_gnuplot_cmd(pl->gp, "set size 0.64,%g", top);
     } else {
         adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
     }
@@ -517,6 +544,10 @@ static int plot_force(plotter *pl)
     if (rigid_set >= 0)
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 2 "
                    "title \"rigid spheres (eq 22)\"", qdat, rigid_set);
+    /* (the file's name is the user's text: it stays out of the command) */
+    if (meas_set >= 0)
+        fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with points pt 6 ps 0.8 lc rgb \"#222222\" "
+                   "title \"measured (--data)\"", qdat, meas_set);
     if (ref_set[0] >= 0 || ref_set[1] >= 0)
         fprintf(c, ", \\\n  keyentry with lines ls 9 title \"static equilibrium\"");
     if (models) {
@@ -553,23 +584,37 @@ static int plot_force(plotter *pl)
 
     if (panel) {
         adh_gnuplot_cmd(pl->gp, "set origin 0.64,0");
-        adh_gnuplot_cmd(pl->gp, "set size 0.36,0.96");
+        adh_gnuplot_cmd(pl->gp, "set size 0.36,%g", top);
         adh_gnuplot_cmd(pl->gp, "unset title");
         adh_gnuplot_cmd(pl->gp, "set autoscale");
-        adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
         adh_gnuplot_cmd(pl->gp, "set xlabel \"maximum load (%s)\"", funit);
-        /* a narrow panel: about three ticks, or their labels collide */
-        double lmin = INFINITY, lmax = -INFINITY;
+        /* a narrow panel: three or four ticks, or their labels collide;
+         * never fewer than two, whatever the span of the loads */
+        double lmin = INFINITY, lmax = -INFINITY, amin = INFINITY, amax = -INFINITY;
         for (size_t k = 0; k < nadh; k++) {
             lmin = fmin(lmin, run->turns[order[k]].max_load * fscale);
             lmax = fmax(lmax, run->turns[order[k]].max_load * fscale);
+            amin = fmin(amin, -run->turns[order[k]].pulloff_F * fscale);
+            amax = fmax(amax, -run->turns[order[k]].pulloff_F * fscale);
         }
         if (lmax > lmin) {
-            double span = lmax - lmin;
-            adh_gnuplot_cmd(pl->gp, "set xtics %.17g", nice_step(span / 3.0));
+            double span = lmax - lmin, lo_ = lmin - 0.12 * span, hi_ = lmax + 0.12 * span;
+            double step = nice_step((hi_ - lo_) / 3.0);
+            for (int k = 0; k < 6 && floor(hi_ / step) - ceil(lo_ / step) + 1 < 3; k++)
+                step = nice_below(step);
+            adh_gnuplot_cmd(pl->gp, "set xtics %.17g", step);
             /* an explicit range, so the JKR and DMT lines span the panel */
-            adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lmin - 0.08 * span,
-                            lmax + 0.08 * span);
+            adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo_, hi_);
+        }
+        /* the adhesion and the two models, not zero: a pull-off that rises
+         * then saturates with the load (Figure 5) must not be flattened */
+        amin = fmin(amin, -d->F_jkr * fscale);
+        amax = fmax(amax, -d->F_dmt * fscale);
+        if (amax > amin) {
+            double span = amax - amin, lo_ = amin - 0.1 * span, hi_ = amax + 0.1 * span;
+            double step = nice_step((hi_ - lo_) / 6.0);
+            adh_gnuplot_cmd(pl->gp, "set ytics %.17g", step);
+            adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", lo_, hi_);
         }
         adh_gnuplot_cmd(pl->gp, "set ylabel \"adhesion −F_{min} (%s)\"", funit);
         adh_gnuplot_cmd(pl->gp, "set key bottom right");

@@ -76,6 +76,8 @@ typedef struct adh_config {
     unsigned plots;                /* mask of adh_plot_kind */
     double drive_speed;            /* m/s, for contact-line speeds */
     char gnuplot_style[PATH_MAX];  /* "" = installed style */
+    char data[PATH_MAX];           /* --data: a measured curve to overlay, "" = none */
+    const struct adh_measured *measured;   /* it, read before any run (NULL = none) */
 
     /* TUI */
     char replay[PATH_MAX];         /* "" = interactive terminal */

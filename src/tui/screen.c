@@ -12,6 +12,7 @@
 
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "scene/measured.h"
 #include "tui/actions.h"
 #include "tui/replay.h"
 
@@ -20,6 +21,10 @@
  * columns. */
 static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
+/* Rows from clip_bottom down belong to another panel (the compact
+ * parameters on a short screen): a panel drawn above stops there. */
+static int clip_bottom = 1 << 30;
+
 static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
 {
     char buf[1024];
@@ -28,7 +33,7 @@ static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(buf, sizeof buf, fmt, ap);
     va_end(ap);
-    if (y < 0 || y >= LINES || x >= COLS || w <= 0)
+    if (y < 0 || y >= LINES || y >= clip_bottom || x >= COLS || w <= 0)
         return;
     if (x + w > COLS)
         w = COLS - x;
@@ -100,27 +105,64 @@ static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w
         gk(v, "\xe2\x86\x91\xe2\x86\x93", "Up/Down"));
     for (int p = 0; p < P_COUNT; p++) {
         char val[64];
-        tui_sim_param_text(s, (tui_param)p, val, sizeof val);
+        tui_sim_param_text(s, (tui_param)p, v->utf8, val, sizeof val);
         const tui_param_info *pi = &tui_params[p];
         int sel = p == v->sel;
         char lab[32];
         /* the spacing follows sqrt(R z0) until it is set */
         int autosp = p == P_SPACING && isnan(s->spacing);
-        put(y + 1 + p, x, w, sel ? A_REVERSE : A_NORMAL, "%s%s %-12s %s%s", sel ? " >" : "  ",
-            pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), val, pi->what, autosp ? ", auto" : "");
+        char pv[96];
+        put(y + 1 + p, x, w, sel ? A_REVERSE : A_NORMAL, "%s%s %s %s%s", sel ? " >" : "  ",
+            pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), pad(val, 12, pv, sizeof pv), pi->what,
+            autosp ? ", auto" : "");
     }
 }
 
+/* The parameters in as few lines as the width allows ("E 300 MPa  A
+ * 1e-19 J ..."), the selected one highlighted: a short screen keeps them in
+ * view beside the state. Returns the lines it takes (or would take with
+ * draw = 0). */
+static int draw_params_compact(const tui_sim *s, const tui_view *v, int y, int x, int w, int draw)
+{
+    int line = 0, col = 0;
+    for (int p = 0; p < P_COUNT; p++) {
+        char val[64], item[96];
+        tui_sim_param_text(s, (tui_param)p, v->utf8, val, sizeof val);
+        snprintf(item, sizeof item, "%s %s", v->utf8 ? tui_params[p].label : tui_params[p].ascii, val);
+        int len = (int)mbstowcs(NULL, item, 0);
+        if (len < 0)
+            len = (int)strlen(item);
+        if (col > 0 && col + 2 + len > w) {
+            line++;
+            col = 0;
+        }
+        if (col > 0)
+            col += 2;
+        if (draw)
+            put(y + line, x + col, w - col, p == v->sel ? A_REVERSE : A_NORMAL, "%s", item);
+        col += len;
+    }
+    return line + 1;
+}
+
+/* What the parameters give before anything is solved, and what the closed
+ * forms predict for a cycle: the numbers a solve is held against. */
 static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int w)
 {
     const adh_derived *d = &s->der;
-    char g[64], es[64], jkr[64], dmt[64];
+    const tui_models *m = &s->models;
+    char g[64], es[64], jkr[64], dmt[64], md[64], ji[64], jo[64];
+    const char *pgr = gk(v, "\xcf\x80\xce\xb3R", "pi gamma R");
+    double unit = M_PI * d->gamma * s->mat.R;
     /* gamma is an energy per area: J/m^2, shown in mJ/m^2 where it lives */
     snprintf(g, sizeof g, "%.4g mJ/m%s", d->gamma * 1e3, gk(v, "\xc2\xb2", "^2"));
     q(d->Estar, ADH_Q_PRESSURE, es, sizeof es);
     q(d->F_jkr, ADH_Q_FORCE, jkr, sizeof jkr);
     q(d->F_dmt, ADH_Q_FORCE, dmt, sizeof dmt);
-    put(y, x, w, A_BOLD, " Derived (before any solve)");
+    q(m->md_pulloff, ADH_Q_FORCE, md, sizeof md);
+    q(m->jump_in, ADH_Q_LENGTH, ji, sizeof ji);
+    q(m->md_jump_out, ADH_Q_LENGTH, jo, sizeof jo);
+    put(y, x, w, A_BOLD, " Derived from the parameters; models");
     put(y + 1, x, w, A_NORMAL, "  %s %.4g   %s %.4g   %s %s", gk(v, "\xcf\x83", "sigma"), d->sigma,
         gk(v, "\xce\xbc", "mu"), d->mu, gk(v, "\xce\xb3", "gamma"), g);
     /* the grid's resolution of the contact edge, as E, A, z0, R, N or the
@@ -129,6 +171,41 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     put(y + 2, x, w, gr->resolved ? A_NORMAL : A_BOLD, "  E* %s  %s/%s %.3g %s", es, gk(v, "\xe2\x84\x93", "l"),
         gk(v, "\xce\x94", "dr"), gr->edge_nodes, gr->resolved ? "resolved" : "UNRESOLVED");
     put(y + 3, x, w, A_NORMAL, "  pull-off JKR %s DMT %s", jkr, dmt);
+    put(y + 4, x, w, A_NORMAL, "    M-D %s = %.3g %s (%s %.3g)", md, m->md_pulloff / -unit, pgr,
+        gk(v, "\xce\xbb", "lambda"), m->md_lambda);
+    put(y + 5, x, w, A_NORMAL, "  jump-in %s (eq 24), out %s M-D", ji, isnan(m->md_jump_out) ? "none" : jo);
+}
+
+/* Relaxation: the cycle on the path so far, the quantities an experiment
+ * reports (adh_cycle_measure: no physics here). */
+static void draw_cycle(const tui_sim *s, const tui_view *v, int y, int x, int w)
+{
+    adh_cycle c;
+    tui_sim_cycle(s, &c);
+    char a[64], b[64];
+    double unit = M_PI * s->der.gamma * s->mat.R;
+    put(y, x, w, A_BOLD, " Cycle  (this path; models at the left)");
+    if (isnan(c.max_load)) {
+        put(y + 1, x, w, A_NORMAL, "  load, pull-off, jumps, hysteresis: step first");
+        return;
+    }
+    q(c.max_load, ADH_Q_FORCE, a, sizeof a);
+    q(c.a_turn, ADH_Q_LENGTH, b, sizeof b);
+    if (c.unloading)
+        put(y + 1, x, w, A_NORMAL, "  load   max %s; a %s at the turn", a, c.a_turn > 0 ? b : "0");
+    else
+        put(y + 1, x, w, A_NORMAL, "  load   %s deepest so far, a %s", a, c.a_turn > 0 ? b : "0");
+    q(c.pulloff_F, ADH_Q_FORCE, a, sizeof a);
+    if (c.unloading)
+        put(y + 2, x, w, A_NORMAL, "  pull   %s = %.3g %s", a, c.pulloff_F / -unit, gk(v, "\xcf\x80\xce\xb3R", "pi gamma R"));
+    else
+        put(y + 2, x, w, A_NORMAL, "  pull   not unloaded yet");
+    q(c.jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
+    q(c.jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
+    put(y + 3, x, w, A_NORMAL, "  jumps  in %s, out %s", isnan(c.jump_in_h0) ? "not yet" : a,
+        isnan(c.jump_out_h0) ? "not yet" : b);
+    if (c.unloading)
+        put(y + 4, x, w, A_NORMAL, "  hyst   %.4g fJ (area between the branches)", c.hysteresis * 1e15);
 }
 
 /* The rows both modes show for a solved point: position, force, central
@@ -250,7 +327,7 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
     else if (s->gridwarn[0]) {
         char msg[600];
         snprintf(msg, sizeof msg, "! %s", s->gridwarn);
-        put_wrapped(y + 10, x + 2, w - 2, 4, A_BOLD, msg);
+        put_wrapped(y + 10, x + 2, w - 2, 2, A_BOLD, msg);
     }
 }
 
@@ -265,13 +342,16 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     if (h < 4 || w < 30)
         return;
     int stat = s->mode == ADH_MODE_STATIC;
+    const adh_measured *meas = v->measured && v->measured->n ? v->measured : NULL;
     if (stat)
-        put(y0, x0, w, A_BOLD, " Equilibrium force F against drive position h0   * stable  . unstable  @ now");
+        put(y0, x0, w, A_BOLD, " Equilibrium force F against drive position h0   * stable  . unstable  @ now%s",
+            meas ? "  x measured" : "");
     else
-        put(y0, x0, w, A_BOLD, " Force F against drive position h0   + loading  o unloading  @ now");
+        put(y0, x0, w, A_BOLD, " Force F against drive position h0   + loading  o unloading  @ now%s",
+            meas ? "  x measured" : "");
     const int lab = 11;
     int pw = w - lab - 1, ph = h - 2;
-    if (n == 0) {
+    if (n == 0 && !meas) {
         put(y0 + ph / 2, x0 + lab, pw, A_NORMAL, "%s", stat ? "(the equilibrium curve appears here as it is solved)"
                                                           : "(the force-position curve appears here as you step)");
         return;
@@ -282,6 +362,12 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
         xmax = fmax(xmax, rows[i].h0);
         ymin = fmin(ymin, rows[i].F);
         ymax = fmax(ymax, rows[i].F);
+    }
+    for (size_t i = 0; meas && i < meas->n; i++) {
+        xmin = fmin(xmin, meas->h0[i]);
+        xmax = fmax(xmax, meas->h0[i]);
+        ymin = fmin(ymin, meas->F[i]);
+        ymax = fmax(ymax, meas->F[i]);
     }
     if (xmax - xmin < s->step) {
         xmin -= s->step;
@@ -298,6 +384,12 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     int zero = (int)lround(ymax / (ymax - ymin) * (ph - 1));
     for (int c = 0; c < pw; c++)
         grid[zero * pw + c] = '-';
+    /* the measurement under the computed path: where they meet, the model shows */
+    for (size_t i = 0; meas && i < meas->n; i++) {
+        int c = (int)lround((meas->h0[i] - xmin) / (xmax - xmin) * (pw - 1));
+        int r = (int)lround((ymax - meas->F[i]) / (ymax - ymin) * (ph - 1));
+        grid[r * pw + c] = 'x';
+    }
     /* loading first, so unloading shows where they meet; in static mode
      * unstable first, so the stable states (what an experiment sees) show */
     for (int pass = 0; pass < 2; pass++)
@@ -344,30 +436,43 @@ void tui_draw(const tui_sim *s, const tui_view *v)
     int W = COLS, H = LINES;
     put(0, 0, W, A_REVERSE, "%-*s", W, " adhere: two elastic spheres held by a Lennard-Jones surface force");
     put(0, W - 17 > 0 ? W - 17 : 0, 17, A_REVERSE, "  ? help  q quit ");
-    int y;
+    int stat = s->mode == ADH_MODE_STATIC;
     if (W >= 80) {
         int lw = W / 2 - 2 < 44 ? W / 2 - 2 : 44;
         draw_params(s, v, 1, 0, lw);
         draw_derived(s, v, 11, 0, lw);
         draw_state(s, v, 1, lw + 1, W - lw - 1);
-        y = 15;
+        if (!stat)
+            draw_cycle(s, v, 13, lw + 1, W - lw - 1);
+        if (H - 2 - 18 >= 5)
+            draw_preview(s, v, 18, 0, H - 2 - 18, W);
+    } else if (v->params_first && H < 40) {
+        /* Narrow and short, a parameter being worked on: the parameters
+         * and what they give come first. */
+        draw_params(s, v, 1, 0, W);
+        draw_derived(s, v, 11, 0, W);
+        draw_state(s, v, 17, 0, W);
     } else {
-        /* Narrow: one column, the state first, parameters below it; when
-         * the screen is too short for both and a parameter is being
-         * edited, the parameters and their derived values come first. */
-        if (v->params_first && H < 28) {
-            draw_params(s, v, 1, 0, W);
-            draw_derived(s, v, 11, 0, W);
-            draw_state(s, v, 15, 0, W);
-        } else {
-            draw_state(s, v, 1, 0, W);
-            draw_params(s, v, 12, 0, W);
-            draw_derived(s, v, 22, 0, W);
+        /* Narrow: one column, the state first, then the cycle and the
+         * models while there is room; the parameters stay in view in
+         * their compact form at the bottom. */
+        int np = draw_params_compact(s, v, 0, 0, W, 0);
+        int pb = H - 2 - np, y = stat ? 15 : 13;
+        clip_bottom = pb;
+        draw_state(s, v, 1, 0, W);
+        if (!stat) {
+            draw_cycle(s, v, y, 0, W);
+            y += 6;
         }
-        y = 26;
+        if (pb - y >= 6 + 5) {
+            draw_derived(s, v, y, 0, W);
+            y += 7;
+        }
+        clip_bottom = 1 << 30;
+        if (pb - y >= 5)
+            draw_preview(s, v, y, 0, pb - y, W);
+        draw_params_compact(s, v, pb, 0, W, 1);
     }
-    if (H - 2 - y >= 5)
-        draw_preview(s, v, y, 0, H - 2 - y, W);
     /* the status line in plain words, then the prompt or the key hints */
     if (v->status && v->status[0])
         put(H - 2, 0, W, v->status_error ? A_BOLD : A_NORMAL, "%s%s", v->status_error ? "error: " : "",
@@ -454,7 +559,7 @@ int tui_draw_help(const tui_view *v)
     if (n < MAX)
         snprintf(lines[n++], HELP_LINE, " ");
     n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn; "
-                   "values take units: 2GPa 0.4nm 1e-19J 10um");
+                   "values take units: 2GPa 0.4nm 1e-19J 10um; a bare number is in the unit the panel shows");
     snprintf(msg, sizeof msg, "changing E, A, z0, R, %s, d, N or the spacing starts a new path from the "
              "start; turn only moves where r stops loading", gk(v, "\xce\xb5", "eps"));
     n = help_entry(lines, n, MAX, W, "", msg);

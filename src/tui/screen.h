@@ -18,6 +18,7 @@ typedef struct tui_view {
     long count;            /* count prefix being typed, 0 none */
     const char *activity;  /* "idle", "running to the turning point"... */
     int help_top;          /* first help line shown */
+    const struct adh_measured *measured;   /* --data: drawn 'x' under the path, or NULL */
     int params_first;      /* the parameters are being worked on: on a small
                               screen they come before the state */
 } tui_view;

@@ -8,6 +8,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "adhere/maugis.h"
+#include "adhere/models.h"
 #include "adhere/observe.h"
 #include "adhere/protocol.h"
 #include "adhere/status.h"
@@ -82,11 +84,16 @@ static void free_solver(tui_sim *s)
     adh_relax_free(s->w);
     adh_kernel_free(s->k);
     adh_grid_free(s->g);
-    adh_history_free(s->hist);
     s->w = NULL;
     s->k = NULL;
     s->g = NULL;
-    s->hist = NULL;
+}
+
+static void edits_clear(tui_edit *e, size_t *n)
+{
+    for (size_t i = 0; i < *n; i++)
+        adh_history_free(e[i].hist);
+    *n = 0;
 }
 
 /* The batch run's own check of grid and protocol, as advice before any
@@ -106,6 +113,19 @@ static void check_grid(tui_sim *s)
     /* the resolution itself is shown on the Derived panel's E* line */
     if (adh_protocol_check(&ps, &s->mat, &g, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
         s->gridwarn[0] = '\0';
+}
+
+/* The closed forms for the material on screen: recomputed with it. */
+static void derive(tui_sim *s)
+{
+    adh_material_derive(&s->mat, &s->der);
+    tui_models *m = &s->models;
+    m->md_lambda = adh_md_lambda(&s->mat);
+    double ov = NAN;
+    if (adh_md_pulloff(&s->mat, m->md_lambda, &m->md_pulloff, NULL, NULL, &ov) != ADH_SUCCESS)
+        m->md_pulloff = ov = NAN;
+    m->md_jump_out = s->mat.z0 - ov;
+    m->jump_in = adh_bulge_position(&s->mat, adh_jump_separation(&s->mat));
 }
 
 /* A change to the physics: the old path no longer belongs to these
@@ -150,8 +170,9 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
         snprintf(why, whylen, "N = %zu nodes is not allowed: at least 10 are needed", s->nodes);
         return -1;
     }
-    adh_material_derive(&s->mat, &s->der);
+    derive(s);
     s->grid_stale = 1;
+    s->edit_moved = -1;
     s->mode = cfg->mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
     curve_drop(s);
     new_path(s);
@@ -161,52 +182,159 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
 void tui_sim_free(tui_sim *s)
 {
     free_solver(s);
+    adh_history_free(s->hist);
+    s->hist = NULL;
+    edits_clear(s->undo_edits, &s->nundo_edits);
+    edits_clear(s->redo_edits, &s->nredo_edits);
     adh_run_free(&s->curve);
 }
 
 static int ensure_solver(tui_sim *s, char *why, size_t whylen)
 {
-    if (s->w && !s->grid_stale)
-        return 0;
+    if (s->w && !s->grid_stale) {
+        if (!s->hist) {
+            s->hist = adh_history_alloc(s->nodes);
+            s->hist_n = s->nodes;
+        }
+        if (s->hist)
+            return 0;
+        snprintf(why, whylen, "out of memory for the path of N = %zu nodes", s->nodes);
+        return -1;
+    }
     free_solver(s);
     s->g = adh_grid_alloc(s->nodes, tui_sim_spacing(s));
     s->k = s->g ? adh_kernel_alloc(s->g, s->kernel) : NULL;
     s->w = s->k ? adh_relax_alloc(s->g, s->k) : NULL;
-    s->hist = s->w ? adh_history_alloc(s->nodes) : NULL;
-    if (!s->hist) {
+    if (s->w && (!s->hist || s->hist_n != s->nodes)) {
+        adh_history_free(s->hist);
+        s->hist = adh_history_alloc(s->nodes);
+        s->hist_n = s->nodes;
+    }
+    if (!s->w || !s->hist) {
         free_solver(s);
         snprintf(why, whylen, "out of memory for a grid of N = %zu nodes: try fewer", s->nodes);
         return -1;
     }
     s->grid_stale = 0;
     adh_relax_set(s->w, &s->mat, &s->relax, s->start);
+    /* a path given back by undo goes on from where it was */
+    if (adh_history_state(s->hist))
+        adh_relax_restore(s->w, adh_history_state(s->hist));
     return 0;
 }
 
-void tui_sim_param_text(const tui_sim *s, tui_param p, char *buf, size_t len)
+static tui_params_set params_get(const tui_sim *s)
+{
+    tui_params_set p = { s->mat, s->nodes, s->spacing, s->step, s->start_opt, s->turn, s->start, s->relax };
+    return p;
+}
+
+/* Pushes e on a stack of at most TUI_MAX_EDITS, forgetting the oldest. */
+static void edits_push(tui_edit *st, size_t *n, const tui_edit *e)
+{
+    if (*n == TUI_MAX_EDITS) {
+        adh_history_free(st[0].hist);
+        memmove(st, st + 1, (TUI_MAX_EDITS - 1) * sizeof *st);
+        (*n)--;
+    }
+    st[(*n)++] = *e;
+}
+
+/* Swaps the parameters and path on screen with those of edit e (popped
+ * from one stack), pushing what was on screen on the other. */
+static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, size_t *nto)
+{
+    tui_edit e = from[--(*nfrom)], back = { params_get(s), e.param, e.keeps_path, NULL, 0 };
+    tui_sim_cancel(s);
+    if (!e.keeps_path) {
+        back.hist = s->hist;
+        back.hist_n = s->hist_n;
+        s->hist = e.hist;
+        s->hist_n = e.hist_n;
+    }
+    edits_push(to, nto, &back);
+    s->mat = e.par.mat;
+    s->nodes = e.par.nodes;
+    s->spacing = e.par.spacing;
+    s->step = e.par.step;
+    s->start_opt = e.par.start_opt;
+    s->turn = e.par.turn;
+    s->start = e.par.start;
+    s->relax = e.par.relax;
+    derive(s);
+    s->warn[0] = '\0';
+    if (s->g)
+        s->grid_stale = s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s);
+    if (s->w && !s->grid_stale) {
+        adh_relax_set(s->w, &s->mat, &s->relax, s->start);
+        if (s->hist && adh_history_state(s->hist))
+            adh_relax_restore(s->w, adh_history_state(s->hist));
+    } else if (s->hist && adh_history_state(s->hist)) {
+        /* the path's states are on their own grid: build it now, so plots
+         * and the next step find grid and states agreeing */
+        char why[256];
+        if (ensure_solver(s, why, sizeof why) != 0)
+            adh_history_clear(s->hist);
+    }
+    check_grid(s);
+    curve_check(s);
+    s->edit_moved = e.param;
+}
+
+/* The value of parameter p in SI (NAN: not set). */
+static double param_value(const tui_sim *s, tui_param p)
 {
     switch (p) {
-    case P_E: adh_format_quantity(s->mat.E, ADH_Q_PRESSURE, 4, buf, len); break;
-    case P_A: adh_format_quantity(s->mat.A, ADH_Q_ENERGY, 4, buf, len); break;
-    case P_Z0: adh_format_quantity(s->mat.z0, ADH_Q_LENGTH, 4, buf, len); break;
-    case P_R: adh_format_quantity(s->mat.R, ADH_Q_LENGTH, 4, buf, len); break;
-    case P_EPS: adh_format_quantity(s->relax.eps, ADH_Q_LENGTH, 4, buf, len); break;
-    case P_D: adh_format_quantity(s->step, ADH_Q_LENGTH, 4, buf, len); break;
-    case P_N: snprintf(buf, len, "%zu", s->nodes); break;
-    case P_SPACING: {
-        char q[64];
-        adh_format_quantity(tui_sim_spacing(s), ADH_Q_LENGTH, 4, q, sizeof q);
-        snprintf(buf, len, "%s", q);
-        break;
+    case P_E: return s->mat.E;
+    case P_A: return s->mat.A;
+    case P_Z0: return s->mat.z0;
+    case P_R: return s->mat.R;
+    case P_EPS: return s->relax.eps;
+    case P_D: return s->step;
+    case P_N: return (double)s->nodes;
+    case P_SPACING: return tui_sim_spacing(s);
+    case P_TURN: return s->turn;
+    default: return NAN;
     }
-    case P_TURN:
-        if (isnan(s->turn))
-            snprintf(buf, len, "none");
-        else
-            adh_format_quantity(s->turn, ADH_Q_LENGTH, 4, buf, len);
-        break;
-    default: snprintf(buf, len, "?"); break;
+}
+
+const char *tui_sim_param_unit(const tui_sim *s, tui_param p, int utf8, double *factor)
+{
+    const char *um = utf8 ? "\xc2\xb5m" : "um";
+    double v = param_value(s, p);
+    *factor = 1;
+    switch (p) {
+    /* moduli in the units of the literature: GPa for glasses and metals,
+     * MPa for polymers and gels, kPa below */
+    case P_E:
+        if (v >= 0.9995e9) { *factor = 1e9; return "GPa"; }
+        if (v >= 0.9995e6) { *factor = 1e6; return "MPa"; }
+        *factor = 1e3;
+        return "kPa";
+    case P_A: return "J";
+    /* gaps, steps and positions in nm, as an AFM reads them */
+    case P_Z0: case P_D: case P_SPACING: case P_TURN: *factor = 1e-9; return "nm";
+    case P_R:
+        if (v >= 0.9995e-3) { *factor = 1e-3; return "mm"; }
+        *factor = 1e-6;
+        return um;
+    case P_EPS: *factor = 1e-12; return "pm";
+    default: return "";
     }
+}
+
+void tui_sim_param_text(const tui_sim *s, tui_param p, int utf8, char *buf, size_t len)
+{
+    double f, v = param_value(s, p);
+    const char *unit = tui_sim_param_unit(s, p, utf8, &f);
+    if (p == P_N)
+        snprintf(buf, len, "%zu", s->nodes);
+    else if (p == P_TURN && isnan(v))
+        snprintf(buf, len, "none");
+    else if (p == P_A)
+        snprintf(buf, len, "%.4g J", v);
+    else
+        snprintf(buf, len, "%.4g %s", v / f, unit);
 }
 
 int tui_sim_param_lookup(const char *name)
@@ -218,7 +346,29 @@ int tui_sim_param_lookup(const char *name)
 }
 
 /* Every parameter change goes through here, from typed text or a scale key. */
+static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whylen);
+
+/* An edit that took is put on the undo stack with the parameters before it
+ * and (unless it kept the path) the path they had; the path on screen
+ * starts afresh. */
 static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
+{
+    tui_edit e = { params_get(s), (int)p, p == P_TURN, s->hist, s->hist_n };
+    if (!e.keeps_path)
+        s->hist = NULL;   /* the next step starts a new one */
+    if (set_value_(s, p, v, why, whylen) != 0) {
+        if (!e.keeps_path)
+            s->hist = e.hist;
+        return -1;
+    }
+    if (e.keeps_path)
+        e.hist = NULL;
+    edits_push(s->undo_edits, &s->nundo_edits, &e);
+    edits_clear(s->redo_edits, &s->nredo_edits);
+    return 0;
+}
+
+static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
 {
     const char *name = tui_params[p].name;
     adh_material m = s->mat;
@@ -232,7 +382,7 @@ static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen
             return -1;
         }
         s->mat = m;
-        adh_material_derive(&s->mat, &s->der);
+        derive(s);
         break;
     case P_EPS:
         rs.eps = v;
@@ -298,6 +448,11 @@ int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t why
         v = (double)n;
     } else if (p == P_SPACING && strcmp(text, "auto") == 0) {
         v = NAN;
+    } else if (adh_parse_quantity(text, ADH_Q_NONE, &v, NULL, 0) == 0) {
+        /* a bare number is in the unit the panel shows beside the value */
+        double f;
+        tui_sim_param_unit(s, p, 0, &f);
+        v *= f;
     } else if (adh_parse_quantity(text, pi->q, &v, msg, sizeof msg) != 0) {
         snprintf(why, whylen, "%s: %s", pi->name, msg);
         return -1;
@@ -632,6 +787,7 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
         tui_sim_cancel(s);
         return ADH_ENOMEM;
     }
+    edits_clear(s->redo_edits, &s->nredo_edits);   /* a new step, as a new edit, ends what could be redone */
     s->warn[0] = '\0';
     if (!o.converged)
         snprintf(s->warn, sizeof s->warn, "not converged: the cap of %zu iterations was hit", o.iters);
@@ -659,17 +815,30 @@ static void restore_current(tui_sim *s)
     s->warn[0] = '\0';
 }
 
+/* Takes back the last edit (redo: puts it back), when there is one. */
+static int edit_undo(tui_sim *s, int redo)
+{
+    if (redo ? !s->nredo_edits : !s->nundo_edits)
+        return ADH_EINVAL;
+    if (redo)
+        edit_swap(s, s->redo_edits, &s->nredo_edits, s->undo_edits, &s->nundo_edits);
+    else
+        edit_swap(s, s->undo_edits, &s->nundo_edits, s->redo_edits, &s->nredo_edits);
+    return ADH_SUCCESS;
+}
+
 int tui_sim_undo(tui_sim *s)
 {
     tui_sim_cancel(s);
+    s->edit_moved = -1;
     if (s->mode == ADH_MODE_STATIC) {
         if (s->curve.nrows == 0 || s->ccur == 0)
-            return ADH_EINVAL;
+            return edit_undo(s, 0);
         s->ccur--;
         return ADH_SUCCESS;
     }
     if (!s->hist || adh_history_undo(s->hist) != ADH_SUCCESS)
-        return ADH_EINVAL;
+        return edit_undo(s, 0);
     restore_current(s);
     return ADH_SUCCESS;
 }
@@ -677,14 +846,15 @@ int tui_sim_undo(tui_sim *s)
 int tui_sim_redo(tui_sim *s)
 {
     tui_sim_cancel(s);
+    s->edit_moved = -1;
     if (s->mode == ADH_MODE_STATIC) {
         if (s->curve.nrows == 0 || s->ccur + 1 >= s->curve.nrows)
-            return ADH_EINVAL;
+            return edit_undo(s, 1);
         s->ccur++;
         return ADH_SUCCESS;
     }
     if (!s->hist || adh_history_redo(s->hist) != ADH_SUCCESS)
-        return ADH_EINVAL;
+        return edit_undo(s, 1);
     restore_current(s);
     return ADH_SUCCESS;
 }
@@ -721,6 +891,12 @@ size_t tui_sim_redoable(const tui_sim *s)
     if (s->mode == ADH_MODE_STATIC)
         return s->curve.nrows ? s->curve.nrows - 1 - s->ccur : 0;
     return s->hist ? adh_history_redoable(s->hist) : 0;
+}
+
+void tui_sim_cycle(const tui_sim *s, adh_cycle *c)
+{
+    size_t n = s->hist ? adh_history_length(s->hist) : 0;
+    adh_cycle_measure(n ? adh_history_rows(s->hist) : NULL, n, c);
 }
 
 size_t tui_sim_progress(const tui_sim *s, double *change)

@@ -21,6 +21,7 @@
 
 #include <stddef.h>
 
+#include "adhere/cycle.h"
 #include "adhere/equilibrium.h"
 #include "adhere/grid.h"
 #include "adhere/history.h"
@@ -45,9 +46,39 @@ typedef struct tui_param_info {
 
 extern const tui_param_info tui_params[P_COUNT];
 
+/* What the closed forms predict for the parameters on screen, to hold the
+ * computed cycle against (all from core functions). */
+typedef struct tui_models {
+    double md_lambda;      /* Maugis-Dugdale parameter, 1.16 mu */
+    double md_pulloff;     /* its pull-off at fixed load, N; NAN if it failed */
+    double md_jump_out;    /* its jump out at fixed h0 (the fold), drive position h0 = z0 - overlap */
+    double jump_in;        /* drive position of the jump into contact (eq 24 through eq 23) */
+} tui_models;
+
+/* The parameters an edit changes, as they were before it. */
+typedef struct tui_params_set {
+    adh_material mat;
+    size_t nodes;
+    double spacing, step, start_opt, turn, start;
+    adh_relax_settings relax;
+} tui_params_set;
+
+/* One edit on the undo (or redo) stack: the parameters on the other side of
+ * it and their path (NULL: none yet). */
+typedef struct tui_edit {
+    tui_params_set par;
+    int param;              /* which parameter the edit changed */
+    int keeps_path;         /* a new turn: the path is the same on both sides */
+    adh_history *hist;
+    size_t hist_n;          /* nodes of its states */
+} tui_edit;
+
+#define TUI_MAX_EDITS 32
+
 typedef struct tui_sim {
     adh_material mat;
     adh_derived der;
+    tui_models models;
     size_t nodes;
     double spacing;            /* NAN: scaled with sqrt(R z0) */
     adh_kernel_type kernel;
@@ -61,6 +92,10 @@ typedef struct tui_sim {
     adh_kernel *k;
     adh_relax *w;
     adh_history *hist;
+    size_t hist_n;             /* nodes of its states */
+    tui_edit undo_edits[TUI_MAX_EDITS], redo_edits[TUI_MAX_EDITS];
+    size_t nundo_edits, nredo_edits;
+    int edit_moved;            /* the last undo/redo took back an edit: its parameter, else -1 */
     int grid_stale;            /* N or spacing changed since the kernel was built */
 
     /* the step being solved */
@@ -98,12 +133,17 @@ typedef struct tui_sim {
 int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen);
 void tui_sim_free(tui_sim *s);
 
-/* The text of a parameter's value as the panel shows it. */
-void tui_sim_param_text(const tui_sim *s, tui_param p, char *buf, size_t len);
+/* The text of a parameter's value as the panel shows it ("10 µm"; "um"
+ * without utf8): in the unit the panel reads a bare number in. */
+void tui_sim_param_text(const tui_sim *s, tui_param p, int utf8, char *buf, size_t len);
+/* That unit for p's present value ("nm", "GPa"; "" for N), and its factor
+ * to SI. */
+const char *tui_sim_param_unit(const tui_sim *s, tui_param p, int utf8, double *factor);
 /* Looks up a :set name; -1 when unknown. */
 int tui_sim_param_lookup(const char *name);
 
-/* Sets parameter p from text with units. 0 when set (a change to the physics
+/* Sets parameter p from text with units; a bare number is in the unit the
+ * panel shows beside it (tui_sim_param_unit). 0 when set (a change to the physics
  * starts a new path from the start); -1 with a sentence naming the value and
  * what is allowed in why, nothing changed. */
 int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t whylen);
@@ -143,7 +183,11 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen);
 /* Abandons the step in progress: back to the last state on the history. */
 void tui_sim_cancel(tui_sim *s);
 
-int tui_sim_undo(tui_sim *s);   /* ADH_SUCCESS or ADH_EINVAL: nothing to undo */
+/* Undo walks back along the path (static mode: the curve); at its first
+ * state it takes back the last edit, restoring the parameters before it and
+ * the path they had (edit_moved says which parameter). Redo the other way.
+ * ADH_SUCCESS or ADH_EINVAL: nothing to undo (redo). */
+int tui_sim_undo(tui_sim *s);
 int tui_sim_redo(tui_sim *s);
 /* Forgets the path (static mode: the curve): the next step starts from the
  * start position. */
@@ -154,6 +198,9 @@ void tui_sim_reset(tui_sim *s);
 const adh_obs *tui_sim_row(const tui_sim *s);
 const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n);
 size_t tui_sim_redoable(const tui_sim *s);
+/* The relaxation path measured as a cycle (max load, pull-off, jumps,
+ * hysteresis): adh_cycle_measure() of its rows. */
+void tui_sim_cycle(const tui_sim *s, adh_cycle *c);
 /* Iterations so far of the step in progress, and its convergence measure. */
 size_t tui_sim_progress(const tui_sim *s, double *change);
 double tui_sim_spacing(const tui_sim *s);

@@ -119,9 +119,16 @@ static void draw(tui *t)
     v->activity = activity(t);
     v->prompt = NULL;
     if (t->editing) {
-        if (t->editing == EDIT_PARAM)
-            snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (a value with its unit; Enter sets, Esc cancels)",
-                     tui_params[v->sel].name, t->text);
+        if (t->editing == EDIT_PARAM) {
+            double f;
+            const char *unit = tui_sim_param_unit(&t->sim, (tui_param)v->sel, v->utf8, &f);
+            if (unit[0])
+                snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (in %s, or with a unit: 2GPa 0.4nm; Enter sets, Esc cancels)",
+                         tui_params[v->sel].name, t->text, unit);
+            else
+                snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (Enter sets, Esc cancels)", tui_params[v->sel].name,
+                         t->text);
+        }
         else
             snprintf(t->prompt, sizeof t->prompt, ":%s_", t->text);
         v->prompt = t->prompt;
@@ -184,6 +191,21 @@ static void describe_point(tui *t)
     t->folds_seen = s->sres.folds;
 }
 
+/* The pull-off of the path's unloading branch, "-850 nN (3.4 πγR)": the
+ * number the user came for, not the force after the jump. */
+typedef struct { char s[96]; } text96;
+static text96 pulloff_text(const tui *t)
+{
+    text96 r;
+    adh_cycle c;
+    char F[64];
+    tui_sim_cycle(&t->sim, &c);
+    fmtq(c.pulloff_F, ADH_Q_FORCE, F, sizeof F);
+    snprintf(r.s, sizeof r.s, "%s (%.3g %s)", F, c.pulloff_F / (-M_PI * t->sim.der.gamma * t->sim.mat.R),
+             t->view.utf8 ? "\xcf\x80\xce\xb3R" : "pi gamma R");
+    return r;
+}
+
 /* Plain words about the step just done, naming jumps in and out. */
 static void describe_step(tui *t)
 {
@@ -202,7 +224,8 @@ static void describe_step(tui *t)
     if (o->a > 0 && !was && n >= 2)
         say(t, 0, "jumped into contact at h0 = %s: contact radius %s, force %s", h0, a, F);
     else if (o->a == 0 && was)
-        say(t, 0, "pulled off at h0 = %s: the surfaces jumped apart, force now %s", h0, F);
+        say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0,
+            pulloff_text(t).s, F);
     else
         say(t, 0, "%s to h0 = %s: force %s%s%s", o->branch > 0 ? "approached" : "retracted", h0, F,
             o->a > 0 ? ", contact radius " : ", not in contact", o->a > 0 ? a : "");
@@ -241,7 +264,8 @@ static int run_done(tui *t)
     if (o->a > 0)
         t->run_touched = 1;
     else if (t->run_touched) {
-        say(t, 0, "pulled off at h0 = %s: the surfaces jumped apart; force now %s", h0, F);
+        say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0,
+            pulloff_text(t).s, F);
         return 1;
     }
     if (o->h0 >= t->sim.start - 1e-6 * t->sim.step) {
@@ -303,7 +327,7 @@ static void param_changed(tui *t, tui_param p)
 {
     char val[64];
     int u = t->view.utf8;
-    tui_sim_param_text(&t->sim, p, val, sizeof val);
+    tui_sim_param_text(&t->sim, p, u, val, sizeof val);
     size_t ncurve;
     tui_sim_curve(&t->sim, &ncurve);
     if (is_static(t) && p == P_TURN)
@@ -420,10 +444,29 @@ static void move_history(tui *t, int redo, long n)
 {
     long done = 0;
     stop_all(t);
-    while (done < n && (redo ? tui_sim_redo(&t->sim) : tui_sim_undo(&t->sim)) == ADH_SUCCESS)
+    int edit = -1;
+    while (done < n && (redo ? tui_sim_redo(&t->sim) : tui_sim_undo(&t->sim)) == ADH_SUCCESS) {
         done++;
+        if (t->sim.edit_moved >= 0)
+            edit = t->sim.edit_moved;
+    }
     const adh_obs *o = tui_sim_row(&t->sim);
     char h0[64];
+    if (edit >= 0) {
+        /* an edit taken back or done again: say what the parameter is now
+         * and what came back with it */
+        char val[64];
+        size_t np;
+        tui_sim_rows(&t->sim, &np);
+        tui_sim_param_text(&t->sim, (tui_param)edit, t->view.utf8, val, sizeof val);
+        if (is_static(t))
+            say(t, 0, "%s the edit: %s = %s again (the relaxation path came back with it; f solves the curve)",
+                redo ? "redid" : "undid", tui_params[edit].name, val);
+        else
+            say(t, 0, "%s the edit: %s = %s again, with its path (%zu state%s)", redo ? "redid" : "undid",
+                tui_params[edit].name, val, np, np == 1 ? "" : "s");
+        return;
+    }
     if (!done) {
         if (is_static(t))
             say(t, 1, "nothing to %s", redo ? "redo: this is the last point computed (f computes more)"
@@ -822,6 +865,7 @@ int adh_tui_main(const adh_config *cfg)
     }
     t.view.utf8 = locale_utf8(t.headless);
     t.view.no_clock = cfg->no_clock;
+    t.view.measured = cfg->measured;
 
     struct sigaction sa, old_int, old_term, old_hup;
     memset(&sa, 0, sizeof sa);

@@ -4,8 +4,11 @@
 # iterations, and cost.tsv and cost.png are written.
 . "$(dirname "$0")/lib.sh"
 out="$TMP/cost"
-"$ADHERE" --cost -q -E 1GPa --turn=-1nm --spacing=15nm --cost-nodes=60,80 --cost-eps=10pm,4pm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --cost -E 1GPa --turn=-1nm --spacing=15nm --cost-nodes=60,80 --cost-eps=10pm,4pm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
 rc=$?
+check "each cost run says how many of the 8 are done, the share and the time left" \
+    sh -c "[ \$(grep -c '^adhere: cost run [0-9] of 8 .*; [1-8] of 8 done, *[0-9]* %' '$TMP/stderr') -eq 8 ] && grep -q '8 of 8 done, 100 %' '$TMP/stderr' && grep -q 'of 8 done, .*left' '$TMP/stderr'"
+check "and a closing line says where the table and cost.png went" grep -q "^adhere: done in .*: 8 cost runs; .*cost.tsv and cost.png in $out/" "$TMP/stderr"
 check "--cost exits 0 (got $rc: $(head -c 200 "$TMP/stderr"))" [ "$rc" -eq 0 ]
 check "the report names the cores and the BLAS" sh -c "grep -q 'on [0-9]* cores' '$TMP/stdout' && grep -q '^BLAS: ' '$TMP/stdout'"
 rows=$(grep -cE '^(paper|ring) ' "$TMP/stdout")

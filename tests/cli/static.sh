@@ -45,8 +45,12 @@ E = 1GPa, 2GPa, 4GPa
 jobs = 2
 SCENE
 sw="$TMP/static-sweep"
-"$ADHERE" --batch -q "$TMP/static-sweep.scene" -N 200 --force -o "$sw" >"$TMP/stdout" 2>"$TMP/err"
+"$ADHERE" --batch "$TMP/static-sweep.scene" -N 200 --force -o "$sw" >"$TMP/stdout" 2>"$TMP/err"
 rc=$?
+nruns=$(grep -c '^adhere: run [0-9]* of ' "$TMP/err")
+check "each sweep run says how many are done, the share and the time left ($nruns runs)" \
+    sh -c "[ $nruns -ge 2 ] && grep -q '; $nruns of $nruns done, 100 %' '$TMP/err' && grep -q 'done, *[0-9]* %, about .* left' '$TMP/err'"
+check "and a closing line says where sweep.tsv and the runs went" grep -q "^adhere: done in .*: $nruns runs; sweep.tsv.* in $sw/" "$TMP/err"
 check "a static sweep exits 0 (got $rc: $(head -c 300 "$TMP/err"))" [ "$rc" -eq 0 ]
 # scol NAME: the column of sweep.tsv named NAME
 scol() { grep -v '^#' "$sw/sweep.tsv" | head -1 | tr '\t' '\n' | grep -nx "$1" | cut -d: -f1; }

@@ -144,6 +144,87 @@ check '[ $rc -eq 0 ] && [ "$s" = "$size" ]' "--mode=static: force.png made ($rc,
 check 'grep -q "title \"static equilibrium\"" "$T/static.gp" && grep -q "keyentry .*JKR, pull-off" "$T/static.gp" && grep -q "keyentry .*Maugis" "$T/static.gp" && grep -q "keyentry .*DMT, pull-off" "$T/static.gp"' \
     "--mode=static: the equilibrium curve with JKR, Maugis-Dugdale and DMT"
 
+# --- a paper's figure: headings, the adhesion panel, units, eq 24 ----------
+cat >"$T/two.scene" <<'SCENE'
+[scene]
+title = Figure 9: profiles somewhere else (E = 1 GPa)
+[material]
+E = 1GPa
+[protocol]
+turns = -3nm, 0nm
+[output]
+plots = force, profile
+SCENE
+D=$T/two
+GPLOG=$T/two.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN "$T/two.scene" -o "$D" 2>"$T/two.err"
+rc=$?
+check '[ $rc -eq 0 ] && [ "$(png_size "$D/force.png")" = "$size" ]' "a titled two-turn scene: force.png ($rc: $(head -c 200 "$T/two.err"))"
+check 'grep -q "set multiplot title \"Figure 9 scene\\\\nForce vs position" "$T/two.gp"' \
+    "force.png is headed by the scene's label, not by the profiles' title"
+check 'grep -q "set title \"Figure 9: profiles somewhere else (E = 1 GPa)\\\\nSurface profiles" "$T/two.gp"' \
+    "the profiles, the scene's own figure, carry its title"
+check 'grep -q "set size 0.64,0.9$" "$T/two.gp" && grep -q "set size 0.36,0.9$" "$T/two.gp"' \
+    "under a two-line heading both panels stop at 90 % of the height, clear of it"
+# the panel's load ticks: at least three inside its x range
+sed -n '/^set xlabel "maximum load/,/^unset multiplot/p' "$T/two.gp" >"$T/panel.gp"
+xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/panel.gp" | tail -1)
+xt=$(sed -n 's/^set xtics \(.*\)$/\1/p' "$T/panel.gp" | tail -1)
+check 'echo "$xr $xt" | awk "{lo = \$1; hi = \$2; st = \$3; n = 0; for (k = int(lo / st) - 1; k <= int(hi / st) + 1; k++) if (k * st >= lo && k * st <= hi) n++; exit !(st > 0 && n >= 3)}"' \
+    "the adhesion panel has at least three load ticks with two turns (range $xr, step $xt)"
+yr=$(sed -n 's/^set yrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/panel.gp" | tail -1)
+check 'echo "$yr" | awk "{exit !(NF == 2 && \$1 > 0 && \$2 > \$1)}"' "its adhesion axis does not start at 0 ($yr), so a rise then saturation shows"
+cat >"$T/units.scene" <<'SCENE'
+[scene]
+title = Figure 1 again
+[material]
+E = 1GPa
+[protocol]
+turns = -2nm
+unload = no
+[output]
+plots = precontact
+SCENE
+GPLOG=$T/units.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN "$T/units.scene" -o "$T/units" 2>/dev/null
+check 'grep -q "set title \"Force before contact (Figure 1 inset), E = 1 GPa\"" "$T/units.gp" && ! grep -q "e+0[0-9] Pa" "$T/units.gp"' \
+    "titles write moduli in one style (1 GPa, never 1e+09 Pa)"
+cat >"$T/jump.scene" <<'SCENE'
+[scene]
+title = Figure 3, small
+[protocol]
+turns = none
+[output]
+plots = none
+[sweep]
+sigma = 1, 3
+plot = jump
+SCENE
+GPLOG=$T/jump.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN "$T/jump.scene" -o "$T/jump" 2>"$T/jump.err"
+check '[ "$(png_size "$T/jump/jump.png")" = "$size" ] && grep -q "with lines lw [0-9.]* dt 3 .*title \"eq 24\"" "$T/jump.gp"' \
+    "Figure 3's eq 24 curve is dotted, as in the paper ($(head -c 100 "$T/jump.err"))"
+
+# --- --data: a measured curve over force.png --------------------------------
+q="$T/it's \"measured\".txt"
+printf '# an AFM retraction, comma or blank separated\nh0[um] F[pN]\n0.002, -150000\n0.004  -120000\n0.006\t-50000\n' >"$q"
+D=$T/data
+GPLOG=$T/data.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-2nm --eps=3pm \
+    --plots=force --data="$q" -o "$D" 2>"$T/data.err"
+rc=$?
+check '[ $rc -eq 0 ] && [ "$(png_size "$D/force.png")" = "$size" ]' "--data: force.png made ($rc: $(head -c 200 "$T/data.err"))"
+i=$(index_of 'with points .*title "measured \(--data\)"' "$T/data.gp")
+check '[ -n "$i" ] && [ "$(dataset "$i" "$T/data.gp.force.dat" | awk "{printf \"%.6g %.6g\\n\", \$1, \$2}" | tr "\n" " ")" = "2e-09 -1.5e-07 4e-09 -1.2e-07 6e-09 -5e-08 " ]' \
+    "the measured points are drawn (index $i), in the units the header names (um, pN)"
+check '! grep -q "measured\\\\\"\\.txt\|it.s" "$T/data.gp"' "the file's name never reaches gnuplot's commands"
+printf '1 -2\n3 -4\n5 oops\n' >"$T/bad.txt"
+"$BIN" $RUN --turn=-2nm --data="$T/bad.txt" -o "$T/baddata" 2>"$T/bad.err"
+rc=$?
+check '[ $rc -eq 2 ] && grep -q "^$T/bad.txt:3: .5 oops. is not two numbers" "$T/bad.err" && [ ! -e "$T/baddata/force.tsv" ]' \
+    "a malformed --data file is refused with FILE:LINE and exit 2 before the run ($rc: $(cat "$T/bad.err"))"
+printf 'z force\n1 2\n3 4\n' >"$T/nounit.txt"
+"$BIN" $RUN --turn=-2nm --data="$T/nounit.txt" -o "$T/nounit" 2>"$T/nounit.err"
+rc=$?
+check '[ $rc -eq 2 ] && grep -q "nounit.txt:1: the header .z force. does not name the position.s unit" "$T/nounit.err"' \
+    "a header without units is refused, naming what to write ($(cat "$T/nounit.err"))"
+
 # --- --no-plot ------------------------------------------------------------
 D=$T/noplot
 "$BIN" $RUN --no-plot -o "$D" 2>/dev/null

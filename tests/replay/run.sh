@@ -48,6 +48,7 @@ run_case() {
     d=${2:-$work/$1}
     mkdir -p "$d"
     cp "$here/cases/$1.keys" "$d/"
+    [ -f "$here/cases/$1.data" ] && cp "$here/cases/$1.data" "$d/"
     args=""
     [ -f "$here/cases/$1.args" ] && args=$(cat "$here/cases/$1.args")
     t0=$(date +%s)
@@ -136,6 +137,8 @@ check "3 steps back are on the unloading branch" grep -q "branch unloading" "$S/
 C=$W/contact
 check "r stops at the turning point, in contact" sh -c "grep -q 'at the turning point h0 = -2 nm' '$C/contact-turn.txt' && grep 'contact radius' '$C/contact-turn.txt' | grep -vq 'not in'"
 check "r again unloads until pull-off, out of contact" sh -c "grep -q 'pulled off at h0' '$C/contact.screen' && grep -q 'not in contact' '$C/contact.screen'"
+check "the status line gives the pull-off (the minimum force, in N and πγR), not only the force after the jump" \
+    grep -Eq "^pulled off at h0 = [0-9.]+ nm: pull-off -[0-9.]+ nN \([0-9.]+ πγR\); force after the jump -[0-9.]+ nN" "$C/contact.screen"
 check "the preview shows both branches" sh -c "grep -q 'o' '$C/contact.screen' && sed -n '16,30p' '$C/contact.screen' | grep -q '+'"
 # The screen and --batch drive the same core with the same positions: the
 # same settings must give the same rows (iterations exactly, F to 4 digits).
@@ -170,6 +173,35 @@ check "undo then the same step again gives the same numbers and iterations" \
     [ "$(state "$W/undo-restep/restep-again.txt")" = "$(state "$W/undo-restep/restep-first.txt")" ]
 check "undo says how far it went" grep -q "undid 3 steps" "$U/undo-30.txt"
 check "a new step drops what could be redone" grep -q "error: nothing to redo" "$U/undo.screen"
+
+# The cycle's numbers on the state panel, and edits on the undo history.
+EU=$W/edit-undo
+check "after a cycle the panel shows max load, pull-off in N and in πγR, jumps, hysteresis" \
+    sh -c "grep -q 'load   max -[0-9.]* nN; a [0-9.]* nm at the turn' '$EU/edit-cycle.txt' && grep -q 'pull   -[0-9.]* nN = [0-9.]* πγR' '$EU/edit-cycle.txt' && grep -q 'jumps  in [0-9.]* nm, out [0-9.]* nm' '$EU/edit-cycle.txt' && grep -q 'hyst   [0-9.]* fJ' '$EU/edit-cycle.txt'"
+check "beside the JKR, DMT and Maugis-Dugdale predictions" \
+    sh -c "grep -q 'pull-off JKR -375 nN DMT -500 nN' '$EU/edit-cycle.txt' && grep -q 'M-D -375.8 nN = 1.5 πγR (λ 7.06)' '$EU/edit-cycle.txt'"
+check "the label 'before any solve' does not stay after solving" sh -c "! grep -q 'before any solve' '$EU/edit-cycle.txt'"
+check "z0 and d show in nm" sh -c "grep -q '^  z0    0.5 nm ' '$EU/edit-cycle.txt' && grep -q '^  d     0.25 nm ' '$EU/edit-cycle.txt'"
+check "a bare 20 typed into R (shown in µm) is 20 µm, and the echo says so" \
+    sh -c "grep -q '^ >R     20 µm ' '$EU/edit-r.txt' && grep -q '^R = 20 µm: σ = 10.61' '$EU/edit-r.txt'"
+check "the edit starts a new path" grep -q "path   0 states" "$EU/edit-r.txt"
+check "u after the edit restores the parameters and their path" \
+    sh -c "grep -q '^ >R     10 µm ' '$EU/edit-undo.txt' && grep -q 'path   124 states' '$EU/edit-undo.txt' && grep -q '^undid the edit: R = 10 µm again, with its path (124 states)' '$EU/edit-undo.txt'"
+check "with the path's numbers exactly (state and cycle)" [ "$(sed -n '3,18p' "$EU/edit-undo.txt" | cut -c46-)" = "$(sed -n '3,18p' "$EU/edit-cycle.txt" | cut -c46-)" ]
+check "U puts the edit back" sh -c "grep -q '^ >R     20 µm ' '$EU/edit-redo.txt' && grep -q '^redid the edit: R = 20 µm' '$EU/edit-redo.txt'"
+check "+ doubles A, and u takes it back with the path" \
+    sh -c "grep -q '^ >A     2e-19 J' '$EU/edit-plus.txt' && grep -q '^ >A     1e-19 J' '$EU/edit-undo.screen' && grep -q 'path   124 states' '$EU/edit-undo.screen'"
+
+MD=$W/measured
+check "--data draws the measured curve in the preview before any step, named in its key" \
+    sh -c "grep -q 'x measured' '$MD/measured-0.txt' && sed -n '20,29p' '$MD/measured-0.txt' | cut -c12- | grep -q 'x'"
+check "and under the computed path after a cycle" \
+    sh -c "sed -n '20,29p' '$MD/measured.screen' | cut -c12- | grep -q 'x' && sed -n '20,29p' '$MD/measured.screen' | cut -c12- | grep -q 'o'"
+
+EG=$W/edit-grid
+check "u after an N edit and two steps: back on the N = 100 path, its numbers exactly" \
+    sh -c "grep -q '^undid the edit: N = 100 again, with its path (6 states)' '$EG/edit-grid-back.txt' && [ \"\$(sed -n '3,8p' '$EG/edit-grid-back.txt' | cut -c46-)\" = \"\$(sed -n '3,8p' '$EG/edit-grid-5.txt' | cut -c46-)\" ]"
+check "and a step goes on from it on the rebuilt grid" grep -q "path   7 states" "$EG/edit-grid.screen"
 
 # Static mode (m): the equilibrium curve point by point, walked back and
 # forth without solving again, followed to its end as --batch --mode=static.
@@ -226,6 +258,9 @@ PL=$W/plots/adhere-plots
 for f in force.png profile.png contact.png; do
     check "p wrote $f as a PNG" sh -c "[ \"\$(head -c 8 '$PL/$f' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ]"
 done
+PO=$W/plots-out
+check "--out chooses where p writes in the TUI" \
+    sh -c "[ \"\$(head -c 8 '$PO/my-plots/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && [ ! -e '$PO/adhere-plots' ] && grep -q '^plots: wrote force.png.* in my-plots' '$PO/plots-out.screen'"
 check "p says which plots it wrote and where" sh -c "grep '^plots: ' '$W/plots/plots.screen' | grep 'force.png, profile.png, contact.png' | grep -q 'adhere-plots'"
 
 R=$W/resize
@@ -234,7 +269,11 @@ check "after :resize 80x24 the screen is 24 lines of at most 80 columns" \
 check "at 60x40 the screen is 40 lines of at most 60 columns" \
     sh -c "[ \$(wc -l <'$R/resize-60x40.txt') = 40 ] && [ \$(wc -L <'$R/resize-60x40.txt') -le 60 ]"
 
+check "the help says where p writes the plots and that --out chooses it" \
+    sh -c "grep -q 'adhere-plots/' '$W/help/help.screen' && grep -q -- '--out' '$W/help/help.screen'"
 check "at 40x12 stepping shows the state" sh -c "grep -q 'h0     16.7 nm' '$W/small/small-state.txt' && ! grep -q 'Parameters' '$W/small/small-state.txt'"
+check "and keeps every parameter in view in a compact form" \
+    sh -c "grep -q '^E 300 MPa  A 1e-19 J  z0 0.5 nm  R 10 µm' '$W/small/small-state.txt' && grep -q '^turn -5 nm' '$W/small/small-state.txt'"
 check "at 40x12 selecting shows the parameters" sh -c "grep -q '^ >A ' '$W/small/small.screen' && [ \$(wc -l <'$W/small/small.screen') = 12 ] && [ \$(wc -L <'$W/small/small.screen') -le 40 ]"
 
 check "a bad token names FILE:LINE and the token" grep -q "^bad-token.keys:3: unknown key <Foo>" "$W/bad-token/stderr"

@@ -60,7 +60,7 @@ type_cmd "set N 100"
 type_cmd "set spacing 10nm"
 type_cmd "set eps 10pm"
 type_cmd "set d 0.5nm"
-check "the : prompt sets parameters" wait_for "d = 500 pm:"
+check "the : prompt sets parameters, echoed in the unit the panel shows (nm)" wait_for "d = 0.5 nm:"
 T send-keys -t t f
 check "f steps in" wait_for "approached to h0 = 16.5 nm"
 T send-keys -t t -l 10f

@@ -1,0 +1,34 @@
+/* What a load/unload cycle measures, read off its rows (any driver's: the
+ * batch run's, the TUI's path): the maximum load and the contact radius at
+ * the turn, the jump into contact, the pull-off and the jump out of contact,
+ * and the hysteresis (the area between loading and unloading). SI units, no
+ * I/O. */
+#ifndef ADHERE_CYCLE_H
+#define ADHERE_CYCLE_H
+
+#include <stddef.h>
+#include "adhere/observe.h"
+
+typedef struct adh_cycle {
+    double max_load;     /* force at the deepest loading position (the turn), N; NAN before any row */
+    double h0_turn;      /* deepest loading position, m */
+    double a_turn;       /* contact radius there, m */
+    double jump_in_h0;   /* first loading position in contact; NAN if none */
+    int unloading;       /* the unloading branch measured (its path number), 0 if none */
+    double pulloff_F;    /* most negative force on that branch, N; NAN if none */
+    double pulloff_h0;
+    double jump_out_h0;  /* first position out of contact on it after contact; NAN if none yet */
+    double hysteresis;   /* area between loading and that branch, J; NAN without one */
+} adh_cycle;
+
+/* Measures rows (path 0 loading, path k > 0 the k-th unloading branch) on
+ * the last unloading branch, the deepest turn's in a batch run. */
+void adh_cycle_measure(const adh_obs *rows, size_t n, adh_cycle *c);
+
+/* The area between loading (path 0) and the unloading branch path: the
+ * force gap, the loading force linearly interpolated at each unloading
+ * position, integrated by the trapezoid rule over the positions both
+ * branches cover. 0 when they share fewer than two positions. */
+double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path);
+
+#endif

@@ -1,0 +1,15 @@
+/* What a run on a terminal says while it works and when it is done: the
+ * share of the planned steps (or runs) done and the time left at the pace
+ * so far, and one closing line. */
+#ifndef ADH_CLI_PROGRESS_H
+#define ADH_CLI_PROGRESS_H
+
+#include <stddef.h>
+
+/* "35 %, about 40 s left" for done of total after elapsed seconds, at the
+ * pace so far. Before anything is done, "0 %"; with no total, "N done". */
+void adh_progress_text(size_t done, size_t total, double elapsed, char *buf, size_t len);
+/* A duration as people read it: "12.3 s", "4 min 10 s", "1 h 5 min". */
+void adh_progress_duration(double seconds, char *buf, size_t len);
+
+#endif

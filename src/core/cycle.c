@@ -1,0 +1,76 @@
+#include "adhere/cycle.h"
+
+#include <math.h>
+
+/* The loading force at h0, linearly interpolated between the two loading
+ * rows around it; NAN outside the loading branch. Loading rows go down in
+ * h0 (start - k d), so the bracket is found in one pass. */
+static double loading_force(const adh_obs *rows, size_t n, double h0)
+{
+    const adh_obs *prev = NULL;
+    for (size_t i = 0; i < n; i++) {
+        const adh_obs *r = &rows[i];
+        if (r->path != 0)
+            continue;
+        if (r->h0 == h0)
+            return r->F;
+        if (prev && (prev->h0 - h0) * (r->h0 - h0) < 0)
+            return prev->F + (r->F - prev->F) * (h0 - prev->h0) / (r->h0 - prev->h0);
+        prev = r;
+    }
+    return NAN;
+}
+
+double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path)
+{
+    double area = 0, prev_h = NAN, prev_gap = NAN;
+    for (size_t i = 0; i < n; i++) {
+        const adh_obs *u = &rows[i];
+        if (u->path != path || path <= 0)
+            continue;
+        double gap = loading_force(rows, n, u->h0) - u->F;
+        if (!isnan(gap) && !isnan(prev_gap))
+            area += 0.5 * (gap + prev_gap) * fabs(u->h0 - prev_h);
+        prev_gap = gap;
+        prev_h = u->h0;
+    }
+    return area;
+}
+
+void adh_cycle_measure(const adh_obs *rows, size_t n, adh_cycle *c)
+{
+    c->max_load = c->h0_turn = c->a_turn = c->jump_in_h0 = NAN;
+    c->pulloff_F = c->pulloff_h0 = c->jump_out_h0 = c->hysteresis = NAN;
+    c->unloading = 0;
+    for (size_t i = 0; i < n; i++) {
+        const adh_obs *r = &rows[i];
+        if (r->path > c->unloading)
+            c->unloading = r->path;
+        if (r->path != 0)
+            continue;
+        if (isnan(c->h0_turn) || r->h0 <= c->h0_turn) {
+            c->h0_turn = r->h0;
+            c->a_turn = r->a;
+            c->max_load = r->F;
+        }
+        if (isnan(c->jump_in_h0) && r->a > 0)
+            c->jump_in_h0 = r->h0;
+    }
+    if (!c->unloading)
+        return;
+    int touched = 0;
+    for (size_t i = 0; i < n; i++) {
+        const adh_obs *r = &rows[i];
+        if (r->path != c->unloading)
+            continue;
+        if (isnan(c->pulloff_F) || r->F < c->pulloff_F) {
+            c->pulloff_F = r->F;
+            c->pulloff_h0 = r->h0;
+        }
+        if (r->a > 0)
+            touched = 1;
+        else if (touched && isnan(c->jump_out_h0))
+            c->jump_out_h0 = r->h0;
+    }
+    c->hysteresis = adh_cycle_hysteresis(rows, n, c->unloading);
+}
