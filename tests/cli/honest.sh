@@ -8,7 +8,7 @@
 . "$(dirname "$0")/lib.sh"
 
 # --- item 4: unconverged steps ------------------------------------------
-quick="-N 200 --eps=10pm -d 0.5nm --turn=-1nm --no-plot"
+quick="-N 200 -E 10GPa --eps=10pm -d 0.5nm --turn=-1nm --no-plot"
 "$ADHERE" --batch -q $quick --max-iter=3 -o "$TMP/cap" >/dev/null 2>"$TMP/cap.err"
 rc=$?
 check "--max-iter=3: exit 1, as for a solver failure (got $rc)" [ "$rc" -eq 1 ]

@@ -13,7 +13,7 @@ if ! command -v gnuplot >/dev/null 2>&1; then
     echo "1..1"
     exit 0
 fi
-RUN="--batch --quiet --nodes=100 --eps=1e-10 --plots=force"
+RUN="--batch --quiet --nodes=100 --force --eps=1e-10 --plots=force"
 cd "$TMP" || exit 1
 nothing_ran() { # what: no PWNED* anywhere under $TMP (those found are removed)
     p=$(find "$TMP" -name 'PWNED*' | sed "s|^$TMP/||" | tr '\n' ' ')

@@ -11,7 +11,7 @@ if ! command -v gnuplot >/dev/null 2>&1; then
     echo "1..1"
     exit 0
 fi
-RUN="--batch --quiet --nodes=100 --eps=1e-10 --step=1nm"
+RUN="--batch --quiet --nodes=100 -E 20GPa --eps=1e-10 --step=1nm"
 cd "$TMP" || exit 1
 mkdir tmp
 export TMPDIR="$TMP/tmp"
@@ -34,7 +34,7 @@ check "... summary.tsv: not_written force.png, status not success ($(key dumb st
 no_temporaries dumb "a text image"
 # the same in a sweep: each run's summary, written before its figures, is
 # written again to say so
-printf '[sweep]\nE = 300MPa, 600MPa\n' >sweep.scene
+printf '[sweep]\nE = 10GPa, 20GPa\n' >sweep.scene
 "$ADHERE" $RUN --plots=force --gnuplot-style=dumb.gp sweep.scene -o sweep 2>/dev/null
 rc=$?
 check "a sweep with that style: exit 3 (got $rc)" [ "$rc" -eq 3 ]

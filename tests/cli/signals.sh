@@ -45,7 +45,7 @@ check "inside one long step: stopped within 5 s (${took} s)" prompt
 check "the streamed table ends marked PARTIAL" grep -q '^# PARTIAL: interrupted' "$TMP/step.stdout"
 
 # 2. A long dwell at the turn: every dwell iteration polls the flag.
-signal_run dwell dwell TERM --batch -q --no-plot -N 200 --eps=10pm -d 0.5nm --turn=-1nm --dwell=100000000 -o "$TMP/dwell"
+signal_run dwell dwell TERM --batch -q --no-plot -N 200 --force --eps=10pm -d 0.5nm --turn=-1nm --dwell=100000000 -o "$TMP/dwell"
 check "in a long dwell: SIGTERM heard (phase announced $came, exit $rc after ${took} s)" \
     sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
 check "in a long dwell: stopped within 5 s (${took} s)" prompt
@@ -92,7 +92,7 @@ check "and have no time (nan, not 0 s)" awk -F'\t' '$NF == "not_run" && $4 != "n
 if command -v setsid >/dev/null 2>&1 && command -v gnuplot >/dev/null 2>&1; then
     mkdir -p "$TMP/tmpdir"
     rm -f "$TMP/plot.ready"
-    TMPDIR="$TMP/tmpdir" ADHERE_READY_FILE="$TMP/plot.ready" setsid "$ADHERE" --batch -q -N 200 --eps=10pm -d 0.5nm --turn=-1nm \
+    TMPDIR="$TMP/tmpdir" ADHERE_READY_FILE="$TMP/plot.ready" setsid "$ADHERE" --batch -q -N 200 --force --eps=10pm -d 0.5nm --turn=-1nm \
         -o "$TMP/plot" >/dev/null 2>"$TMP/plot.stderr" &
     pid=$!
     came=0
