@@ -1,6 +1,6 @@
 #include "adhere/protocol.h"
 #include "adhere/cycle.h"
-#include "adhere/clock.h"
+#include "adhere/drive.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -191,209 +191,29 @@ int adh_run_push_row(adh_run *run, const adh_obs *o)
     return ADH_SUCCESS;
 }
 
-static int push_profile(adh_run *run, const adh_state *s, int branch, int path)
-{
-    if (run->nprofiles == run->profiles_cap) {
-        size_t cap = run->profiles_cap ? 2 * run->profiles_cap : 16;
-        adh_profile *p = realloc(run->profiles, cap * sizeof *p);
-        if (!p)
-            return ADH_ENOMEM;
-        run->profiles = p;
-        run->profiles_cap = cap;
-    }
-    adh_profile *pr = &run->profiles[run->nprofiles];
-    pr->u = malloc(3 * s->n * sizeof(double));
-    if (!pr->u)
-        return ADH_ENOMEM;
-    memcpy(pr->u, s->u, 3 * s->n * sizeof(double));
-    pr->h = pr->u + s->n;
-    pr->p = pr->u + 2 * s->n;
-    pr->h0 = s->h0;
-    pr->branch = branch;
-    pr->path = path;
-    run->nprofiles++;
-    return ADH_SUCCESS;
-}
-
-typedef struct runner {
-    const adh_grid *g;
-    const adh_material *m;
-    const adh_protocol_settings *ps;
-    adh_relax *w;
-    adh_run *run;
-    adh_step_cb cb;
-    void *ctx;
-} runner;
-
-static int wants_profile(const adh_protocol_settings *ps, double h0)
-{
-    for (size_t i = 0; i < ps->nprofiles; i++)
-        if (fabs(ps->profiles[i] - h0) < 1e-6 * ps->step)
-            return 1;
-    return 0;
-}
-
-/* Moves to h0 (unless already there), relaxes, observes and records a row.
- * Returns ADH_SUCCESS (also for a step that hit the cap: that is flagged in
- * the row and counted, not fatal), or an error that ends the run. */
-static int drive_step(runner *rn, double h0, int branch, int path, size_t dwell, adh_obs *o)
-{
-    double t0 = adh_clock_seconds();
-    int rc;
-    if (dwell) {
-        rc = adh_relax_dwell(rn->w, dwell);
-    } else {
-        adh_relax_move(rn->w, h0);
-        rc = adh_relax_iterate(rn->w, 0);
-    }
-    double dt = adh_clock_seconds() - t0;
-    const adh_state *s = adh_relax_state(rn->w);
-    memset(o, 0, sizeof *o);
-    adh_observe(rn->g, rn->m, s, o);
-    o->iters = dwell ? dwell : adh_relax_step_iterations(rn->w);
-    o->seconds = dt;
-    o->branch = branch;
-    o->path = path;
-    o->converged = (rc == ADH_SUCCESS);
-    o->stable = 1;
-    rn->run->iterations += o->iters;
-    rn->run->seconds += dt;
-    if (rc == ADH_EINTR) {
-        /* an unfinished step is no result: no row, and the run ends here */
-        rn->run->interrupted = 1;
-        return ADH_CONTINUE;
-    }
-    if (rc == ADH_EMAXITER) {
-        rn->run->unconverged++;
-        rc = ADH_SUCCESS;
-    }
-    if (rc != ADH_SUCCESS)
-        return rc;
-    if (!(isfinite(o->F) && isfinite(o->delta) && isfinite(o->a)))
-        return ADH_ENAN;
-    int prc = adh_run_push_row(rn->run, o);
-    if (prc != ADH_SUCCESS)
-        return prc;
-    if (wants_profile(rn->ps, h0) && push_profile(rn->run, s, branch, path) != ADH_SUCCESS)
-        return ADH_ENOMEM;
-    if (o->a >= 0.9 * rn->g->rmax)
-        return ADH_EGRID;
-    if (rn->cb && rn->cb(o, rn->run, rn->ctx)) {
-        rn->run->interrupted = 1;
-        return ADH_CONTINUE;
-    }
-    return ADH_SUCCESS;
-}
-
-static int cmp_desc(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x < y) - (x > y);
-}
-
-static int unload_branch(runner *rn, adh_turn_result *tr, const adh_state *snap, double start)
-{
-    const adh_protocol_settings *ps = rn->ps;
-    adh_obs o;
-    adh_relax_restore(rn->w, snap);
-    int rc = drive_step(rn, tr->h0, -1, tr->path, ps->dwell, &o);
-    if (rc != ADH_SUCCESS)
-        return rc;
-    tr->pulloff_F = o.F;
-    tr->pulloff_h0 = o.h0;
-    int touched = o.a > 0;
-    for (long k = 1;; k++) {
-        double h0 = tr->h0 + (double)k * ps->step;
-        if (h0 > start + 1e-6 * ps->step)
-            break;
-        rc = drive_step(rn, h0, -1, tr->path, 0, &o);
-        if (rc != ADH_SUCCESS)
-            return rc;
-        if (o.F < tr->pulloff_F) {
-            tr->pulloff_F = o.F;
-            tr->pulloff_h0 = o.h0;
-        }
-        if (o.a > 0)
-            touched = 1;
-        else if (touched) {
-            tr->jump_out_h0 = o.h0;
-            break;
-        }
-    }
-    return ADH_SUCCESS;
-}
-
+/* A thin loop over the drive (adhere/drive.h), which owns the protocol:
+ * every driver gets the same rows from the same steps. */
 int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
                      const adh_relax_settings *rs, const adh_protocol_settings *ps,
                      adh_step_cb cb, void *ctx, adh_run *run)
 {
-    adh_relax *w = adh_relax_alloc(g, k);
-    adh_state *snaps[ADH_MAX_TURNS] = { 0 };
-    double turns[ADH_MAX_TURNS];
-    size_t nt = ps->nturns;
-    if (!w) {
+    adh_drive *d = adh_drive_alloc(g, k);
+    if (!d) {
         run->status = ADH_ENOMEM;
         return run->status;
     }
-    runner rn = { g, m, ps, w, run, cb, ctx };
-    double start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
-    run->start = start;
-    memcpy(turns, ps->turns, nt * sizeof *turns);
-    qsort(turns, nt, sizeof *turns, cmp_desc);
-
-    adh_relax_set(w, m, rs, start);
-    adh_obs o;
-    int rc = drive_step(&rn, start, +1, 0, 0, &o);
-    size_t ti = 0;
-    int in_contact = o.a > 0;
-    /* Positions are start - k d, computed afresh (never accumulated) so that
-     * positions such as -3.5 nm are hit exactly; each turn is hit exactly. */
-    for (long kstep = 1; rc == ADH_SUCCESS; kstep++) {
-        if (nt == 0 && in_contact)
+    int rc = adh_drive_set(d, m, rs, ps, run);
+    while (rc == ADH_SUCCESS || rc == ADH_CONTINUE) {
+        if ((rc = adh_drive_step(d)) != ADH_CONTINUE)
             break;
-        if (nt > 0 && ti == nt)
+        if (cb && cb(adh_drive_row(d), run, ctx)) {
+            run->interrupted = 1;
+            rc = ADH_SUCCESS;
             break;
-        double h0 = start - (double)kstep * ps->step;
-        int at_turn = 0;
-        if (nt > 0 && h0 <= turns[ti] + 1e-6 * ps->step) {
-            h0 = turns[ti];
-            at_turn = 1;
-            kstep = (long)floor((start - h0) / ps->step + 1e-6);
-        }
-        if (nt == 0 && h0 < -0.01 * m->R)
-            break;
-        rc = drive_step(&rn, h0, +1, 0, 0, &o);
-        if (rc != ADH_SUCCESS)
-            break;
-        if (o.a > 0 && !in_contact) {
-            in_contact = 1;
-            run->jump_in_h0 = o.h0;
-        }
-        while (at_turn && ti < nt && fabs(turns[ti] - h0) < 1e-6 * ps->step) {
-            adh_turn_result *tr = &run->turns[run->nturns++];
-            tr->h0 = h0;
-            tr->max_load = o.F;
-            tr->a_turn = o.a;
-            tr->pulloff_F = NAN;
-            tr->pulloff_h0 = NAN;
-            tr->jump_out_h0 = NAN;
-            tr->path = 0;
-            snaps[ti] = adh_state_clone(adh_relax_state(w));
-            if (!snaps[ti])
-                rc = ADH_ENOMEM;
-            ti++;
         }
     }
-    if (rc == ADH_SUCCESS && ps->unload) {
-        for (size_t i = 0; i < run->nturns && rc == ADH_SUCCESS; i++) {
-            run->turns[i].path = (int)i + 1;
-            rc = unload_branch(&rn, &run->turns[i], snaps[i], start);
-        }
-    }
-    for (size_t i = 0; i < nt; i++)
-        adh_state_free(snaps[i]);
-    adh_relax_free(w);
-    if (rc == ADH_CONTINUE)
+    adh_drive_free(d);
+    if (rc == ADH_EINTR)
         rc = ADH_SUCCESS; /* interrupted on request: not an error, run->interrupted says so */
     run->status = rc;
     return rc;

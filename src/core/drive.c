@@ -1,0 +1,409 @@
+#include "adhere/drive.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/clock.h"
+#include "adhere/observe.h"
+#include "adhere/state.h"
+#include "adhere/status.h"
+
+typedef enum phase { PH_START = 0, PH_LOAD, PH_TURN, PH_UNLOAD, PH_DONE } phase;
+
+/* Where the drive is in the protocol: all a snapshot needs besides the
+ * relaxed state and the run's counters. */
+typedef struct cursor {
+    phase ph;
+    long k;          /* the next step's index on its branch */
+    size_t ti;       /* loading: the next turn to reach */
+    size_t ui;       /* unloading: the turn being unloaded from */
+    int in_contact;  /* loading: the surfaces have touched */
+    int touched;     /* unloading: in contact on this branch so far */
+    int status;      /* the final status once ph == PH_DONE */
+    long row;        /* index of the last row in the run, -1 none */
+} cursor;
+
+struct adh_drive {
+    const adh_grid *g;
+    adh_relax *w;
+    adh_material m;
+    adh_relax_settings rs;
+    adh_protocol_settings ps;
+    adh_run *run;
+    double start;
+    double turns[ADH_MAX_TURNS];   /* sorted, shallowest first */
+    adh_state *snaps[ADH_MAX_TURNS];   /* the loading state at each turn */
+    cursor c;
+};
+
+struct adh_drive_snap {
+    adh_state *st;
+    cursor c;
+    size_t nrows, nprofiles, nturns, iterations, unconverged;
+    double seconds, jump_in_h0;
+    int interrupted;
+    adh_turn_result turns[ADH_MAX_TURNS];
+};
+
+adh_drive *adh_drive_alloc(const adh_grid *g, const adh_kernel *k)
+{
+    adh_drive *d = calloc(1, sizeof *d);
+    if (!d)
+        return NULL;
+    d->g = g;
+    d->w = adh_relax_alloc(g, k);
+    if (!d->w) {
+        free(d);
+        return NULL;
+    }
+    d->c.ph = PH_DONE;
+    d->c.status = ADH_EINVAL;   /* not set yet */
+    d->c.row = -1;
+    return d;
+}
+
+void adh_drive_free(adh_drive *d)
+{
+    if (!d)
+        return;
+    for (size_t i = 0; i < ADH_MAX_TURNS; i++)
+        adh_state_free(d->snaps[i]);
+    adh_relax_free(d->w);
+    free(d);
+}
+
+static int cmp_desc(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x < y) - (x > y);
+}
+
+int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings *rs,
+                  const adh_protocol_settings *ps, adh_run *run)
+{
+    if (!(ps->step > 0) || ps->nturns > ADH_MAX_TURNS || ps->nprofiles > ADH_MAX_PROFILES)
+        return ADH_EINVAL;
+    d->m = *m;
+    d->rs = *rs;
+    d->ps = *ps;
+    d->run = run;
+    d->start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
+    run->start = d->start;
+    memcpy(d->turns, ps->turns, ps->nturns * sizeof *d->turns);
+    qsort(d->turns, ps->nturns, sizeof *d->turns, cmp_desc);
+    memset(&d->c, 0, sizeof d->c);
+    d->c.ph = PH_START;
+    d->c.row = -1;
+    adh_relax_set(d->w, &d->m, &d->rs, d->start);
+    return ADH_SUCCESS;
+}
+
+static int wants_profile(const adh_protocol_settings *ps, double h0)
+{
+    for (size_t i = 0; i < ps->nprofiles; i++)
+        if (fabs(ps->profiles[i] - h0) < 1e-6 * ps->step)
+            return 1;
+    return 0;
+}
+
+static int push_profile(adh_run *run, const adh_state *s, int branch, int path)
+{
+    if (run->nprofiles == run->profiles_cap) {
+        size_t cap = run->profiles_cap ? 2 * run->profiles_cap : 16;
+        adh_profile *p = realloc(run->profiles, cap * sizeof *p);
+        if (!p)
+            return ADH_ENOMEM;
+        run->profiles = p;
+        run->profiles_cap = cap;
+    }
+    adh_profile *pr = &run->profiles[run->nprofiles];
+    pr->u = malloc(3 * s->n * sizeof(double));
+    if (!pr->u)
+        return ADH_ENOMEM;
+    memcpy(pr->u, s->u, 3 * s->n * sizeof(double));
+    pr->h = pr->u + s->n;
+    pr->p = pr->u + 2 * s->n;
+    pr->h0 = s->h0;
+    pr->branch = branch;
+    pr->path = path;
+    run->nprofiles++;
+    return ADH_SUCCESS;
+}
+
+/* The relaxation step rule: moves to h0 (or dwells there), relaxes,
+ * observes and records a row. ADH_SUCCESS (also for a step that hit the
+ * cap: that is flagged in the row and counted, not fatal), ADH_EINTR (no
+ * row), ADH_EGRID (row kept), or an error that ends the run. */
+static int relax_step(adh_drive *d, double h0, int branch, int path, size_t dwell, adh_obs *o)
+{
+    adh_run *run = d->run;
+    double t0 = adh_clock_seconds();
+    int rc;
+    if (dwell) {
+        rc = adh_relax_dwell(d->w, dwell);
+    } else {
+        adh_relax_move(d->w, h0);
+        rc = adh_relax_iterate(d->w, 0);
+    }
+    double dt = adh_clock_seconds() - t0;
+    const adh_state *s = adh_relax_state(d->w);
+    memset(o, 0, sizeof *o);
+    adh_observe(d->g, &d->m, s, o);
+    o->iters = dwell ? dwell : adh_relax_step_iterations(d->w);
+    o->seconds = dt;
+    o->branch = branch;
+    o->path = path;
+    o->converged = (rc == ADH_SUCCESS);
+    o->stable = 1;
+    run->iterations += o->iters;
+    run->seconds += dt;
+    if (rc == ADH_EINTR) {
+        /* an unfinished step is no result: no row, and the run ends here */
+        run->interrupted = 1;
+        return ADH_EINTR;
+    }
+    if (rc == ADH_EMAXITER) {
+        run->unconverged++;
+        rc = ADH_SUCCESS;
+    }
+    if (rc != ADH_SUCCESS)
+        return rc;
+    if (!(isfinite(o->F) && isfinite(o->delta) && isfinite(o->a)))
+        return ADH_ENAN;
+    int prc = adh_run_push_row(run, o);
+    if (prc != ADH_SUCCESS)
+        return prc;
+    d->c.row = (long)run->nrows - 1;
+    if (wants_profile(&d->ps, h0) && push_profile(run, s, branch, path) != ADH_SUCCESS)
+        return ADH_ENOMEM;
+    if (o->a >= 0.9 * d->g->rmax)
+        return ADH_EGRID;
+    return ADH_SUCCESS;
+}
+
+static int finish(adh_drive *d, int status)
+{
+    d->c.ph = PH_DONE;
+    d->c.status = status;
+    return status;
+}
+
+/* After a step: ADH_CONTINUE with the row, or the end of the run. */
+static int after(adh_drive *d, int rc)
+{
+    return rc == ADH_SUCCESS ? ADH_CONTINUE : finish(d, rc);
+}
+
+/* The loading branch has reached its end: unload from every turn reached,
+ * or stop. */
+static void begin_unloading(adh_drive *d)
+{
+    d->c.ui = 0;
+    d->c.ph = d->ps.unload && d->run->nturns > 0 ? PH_TURN : PH_DONE;
+    d->c.status = ADH_SUCCESS;
+}
+
+static void next_turn(adh_drive *d)
+{
+    d->c.ui++;
+    d->c.ph = d->c.ui < d->run->nturns ? PH_TURN : PH_DONE;
+    d->c.status = ADH_SUCCESS;
+}
+
+int adh_drive_step(adh_drive *d)
+{
+    adh_run *run = d->run;
+    const adh_protocol_settings *ps = &d->ps;
+    size_t nt = ps->nturns;
+    double tol = 1e-6 * ps->step;
+    adh_obs o;
+    int rc;
+    for (;;) {
+        switch (d->c.ph) {
+        case PH_START:
+            rc = relax_step(d, d->start, +1, 0, 0, &o);
+            d->c.in_contact = o.a > 0;
+            d->c.k = 1;
+            d->c.ti = 0;
+            d->c.ph = PH_LOAD;
+            return after(d, rc);
+        case PH_LOAD: {
+            if ((nt == 0 && d->c.in_contact) || (nt > 0 && d->c.ti == nt)) {
+                begin_unloading(d);
+                continue;
+            }
+            /* Positions are start - k d, computed afresh (never accumulated)
+             * so that positions such as -3.5 nm are hit exactly; each turn
+             * is hit exactly. */
+            long k = d->c.k;
+            double h0 = d->start - (double)k * ps->step;
+            int at_turn = 0;
+            if (nt > 0 && h0 <= d->turns[d->c.ti] + tol) {
+                h0 = d->turns[d->c.ti];
+                at_turn = 1;
+                k = (long)floor((d->start - h0) / ps->step + 1e-6);
+            }
+            if (nt == 0 && h0 < -0.01 * d->m.R)
+                return finish(d, ADH_SUCCESS);
+            d->c.k = k + 1;
+            rc = relax_step(d, h0, +1, 0, 0, &o);
+            if (rc != ADH_SUCCESS)
+                return finish(d, rc);
+            if (o.a > 0 && !d->c.in_contact) {
+                d->c.in_contact = 1;
+                run->jump_in_h0 = o.h0;
+            }
+            while (at_turn && d->c.ti < nt && fabs(d->turns[d->c.ti] - h0) < tol) {
+                adh_turn_result *tr = &run->turns[run->nturns++];
+                tr->h0 = h0;
+                tr->max_load = o.F;
+                tr->a_turn = o.a;
+                tr->pulloff_F = NAN;
+                tr->pulloff_h0 = NAN;
+                tr->jump_out_h0 = NAN;
+                tr->path = 0;
+                size_t ti = d->c.ti++;
+                if (!d->snaps[ti])
+                    d->snaps[ti] = adh_state_alloc(d->g->n);
+                if (!d->snaps[ti])
+                    return finish(d, ADH_ENOMEM);
+                adh_state_copy(d->snaps[ti], adh_relax_state(d->w));
+            }
+            return ADH_CONTINUE;
+        }
+        case PH_TURN: {
+            adh_turn_result *tr = &run->turns[d->c.ui];
+            tr->path = (int)d->c.ui + 1;
+            adh_relax_restore(d->w, d->snaps[d->c.ui]);
+            rc = relax_step(d, tr->h0, -1, tr->path, ps->dwell, &o);
+            if (rc != ADH_SUCCESS)
+                return finish(d, rc);
+            tr->pulloff_F = o.F;
+            tr->pulloff_h0 = o.h0;
+            d->c.touched = o.a > 0;
+            d->c.k = 1;
+            d->c.ph = PH_UNLOAD;
+            return ADH_CONTINUE;
+        }
+        case PH_UNLOAD: {
+            adh_turn_result *tr = &run->turns[d->c.ui];
+            double h0 = tr->h0 + (double)d->c.k * ps->step;
+            if (h0 > d->start + tol) {
+                next_turn(d);
+                continue;
+            }
+            d->c.k++;
+            rc = relax_step(d, h0, -1, tr->path, 0, &o);
+            if (rc != ADH_SUCCESS)
+                return finish(d, rc);
+            if (o.F < tr->pulloff_F) {
+                tr->pulloff_F = o.F;
+                tr->pulloff_h0 = o.h0;
+            }
+            if (o.a > 0)
+                d->c.touched = 1;
+            else if (d->c.touched) {
+                tr->jump_out_h0 = o.h0;
+                next_turn(d);
+            }
+            return ADH_CONTINUE;
+        }
+        case PH_DONE:
+        default:
+            return d->c.status;
+        }
+    }
+}
+
+const adh_obs *adh_drive_row(const adh_drive *d)
+{
+    if (d->c.row < 0 || !d->run || (size_t)d->c.row >= d->run->nrows)
+        return NULL;
+    return &d->run->rows[d->c.row];
+}
+
+int adh_drive_turn(const adh_drive *d)
+{
+    switch (d->c.ph) {
+    case PH_START: case PH_LOAD: return 0;
+    case PH_TURN: case PH_UNLOAD: return (int)d->c.ui + 1;
+    default: return -1;
+    }
+}
+
+double adh_drive_start(const adh_drive *d)
+{
+    return d->start;
+}
+
+const adh_state *adh_drive_state(const adh_drive *d)
+{
+    return adh_relax_state(d->w);
+}
+
+adh_drive_snap *adh_drive_snap_alloc(const adh_drive *d)
+{
+    adh_drive_snap *s = calloc(1, sizeof *s);
+    if (!s)
+        return NULL;
+    s->st = adh_state_alloc(d->g->n);
+    if (!s->st) {
+        free(s);
+        return NULL;
+    }
+    adh_drive_snapshot(d, s);
+    return s;
+}
+
+void adh_drive_snap_free(adh_drive_snap *s)
+{
+    if (!s)
+        return;
+    adh_state_free(s->st);
+    free(s);
+}
+
+int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s)
+{
+    if (s->st->n != d->g->n)
+        return ADH_EINVAL;
+    adh_state_copy(s->st, adh_relax_state(d->w));
+    s->c = d->c;
+    const adh_run *r = d->run;
+    if (r) {
+        s->nrows = r->nrows;
+        s->nprofiles = r->nprofiles;
+        s->nturns = r->nturns;
+        s->iterations = r->iterations;
+        s->unconverged = r->unconverged;
+        s->seconds = r->seconds;
+        s->jump_in_h0 = r->jump_in_h0;
+        s->interrupted = r->interrupted;
+        memcpy(s->turns, r->turns, sizeof s->turns);
+    }
+    return ADH_SUCCESS;
+}
+
+int adh_drive_restore(adh_drive *d, const adh_drive_snap *s)
+{
+    adh_run *r = d->run;
+    if (s->st->n != d->g->n || (r && (s->nrows > r->nrows || s->nprofiles > r->nprofiles)))
+        return ADH_EINVAL;
+    adh_relax_restore(d->w, s->st);
+    d->c = s->c;
+    if (r) {
+        for (size_t i = s->nprofiles; i < r->nprofiles; i++)
+            free(r->profiles[i].u);
+        r->nrows = s->nrows;
+        r->nprofiles = s->nprofiles;
+        r->nturns = s->nturns;
+        r->iterations = s->iterations;
+        r->unconverged = s->unconverged;
+        r->seconds = s->seconds;
+        r->jump_in_h0 = s->jump_in_h0;
+        r->interrupted = s->interrupted;
+        memcpy(r->turns, s->turns, sizeof r->turns);
+    }
+    return ADH_SUCCESS;
+}

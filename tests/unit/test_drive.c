@@ -1,0 +1,107 @@
+/* The drive: stepping it by hand gives adh_protocol_run's rows; restoring a
+ * snapshot and stepping again gives the same rows bit for bit (the TUI's
+ * undo); it says which turn it is on; a raised cancel flag ends it with
+ * ADH_EINTR and no row for the step under way. */
+#include <math.h>
+#include <signal.h>
+#include <string.h>
+
+#include "adhere/drive.h"
+#include "adhere/status.h"
+#include "tap.h"
+
+static int same_rows(const adh_obs *a, const adh_obs *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (a[i].h0 != b[i].h0 || a[i].F != b[i].F || a[i].a != b[i].a || a[i].iters != b[i].iters ||
+            a[i].branch != b[i].branch || a[i].path != b[i].path)
+            return 0;
+    return 1;
+}
+
+int main(void)
+{
+    adh_material m = adh_material_default();
+    adh_grid *g = adh_grid_alloc(100, 10e-9);
+    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_relax_settings rs = adh_relax_settings_default();
+    rs.eps = 10e-12;
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.step = 0.25e-9;
+    ps.nturns = 2;
+    ps.turns[0] = -1e-9;
+    ps.turns[1] = -2e-9;
+
+    adh_run ref;
+    adh_run_init(&ref);
+    int prc = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, &ref);
+    ok(prc == ADH_SUCCESS && ref.nrows > 50, "the protocol runs (%zu rows)", ref.nrows);
+
+    adh_drive *d = adh_drive_alloc(g, k);
+    adh_run run;
+    adh_run_init(&run);
+    ok(d && adh_drive_set(d, &m, &rs, &ps, &run) == ADH_SUCCESS, "alloc and set");
+    ok(adh_drive_turn(d) == 0 && adh_drive_row(d) == NULL, "at the start: loading, no row yet");
+    int rc, saw[3] = { 0 }, order_ok = 1, last_turn = 0;
+    adh_drive_snap *snap = NULL;
+    size_t snap_rows = 0;
+    while ((rc = adh_drive_step(d)) == ADH_CONTINUE) {
+        const adh_obs *o = adh_drive_row(d);
+        order_ok &= o == &run.rows[run.nrows - 1];
+        int t = o->path;
+        if (t >= 0 && t < 3)
+            saw[t] = 1;
+        order_ok &= t >= last_turn;
+        last_turn = t;
+        /* snapshot in the middle of the first unloading branch */
+        if (!snap && o->path == 1 && o->branch < 0 && o->a > 0) {
+            snap = adh_drive_snap_alloc(d);
+            snap_rows = run.nrows;
+        }
+    }
+    ok(rc == ADH_SUCCESS && adh_drive_turn(d) == -1, "the drive ends with success and says it is done");
+    ok(adh_drive_step(d) == ADH_SUCCESS, "a further step says so again");
+    ok(order_ok && saw[0] && saw[1] && saw[2], "rows come one per step: loading, then turn 1, then turn 2");
+    ok(run.nrows == ref.nrows && same_rows(run.rows, ref.rows, ref.nrows), "stepping by hand gives the protocol's rows");
+    ok(run.nturns == 2 && run.turns[1].pulloff_F == ref.turns[1].pulloff_F &&
+       run.turns[0].jump_out_h0 == ref.turns[0].jump_out_h0 && run.jump_in_h0 == ref.jump_in_h0,
+       "and its turns, pull-offs, jump-out and jump-in");
+
+    ok(snap != NULL, "a snapshot on the first unloading branch");
+    if (snap) {
+        ok(adh_drive_restore(d, snap) == ADH_SUCCESS && run.nrows == snap_rows && adh_drive_turn(d) == 1,
+           "restoring it cuts the run back and puts the drive on turn 1 again");
+        ok(isnan(run.turns[0].jump_out_h0) || run.turns[0].jump_out_h0 != ref.turns[0].jump_out_h0,
+           "the jump-out found after the snapshot is forgotten");
+        while ((rc = adh_drive_step(d)) == ADH_CONTINUE)
+            ;
+        ok(rc == ADH_SUCCESS && run.nrows == ref.nrows && same_rows(run.rows, ref.rows, ref.nrows),
+           "stepping on from the snapshot gives the same rows bit for bit");
+        ok(run.turns[0].jump_out_h0 == ref.turns[0].jump_out_h0, "and finds the same jump-out");
+        adh_drive_snap_free(snap);
+    }
+
+    /* cancel: the flag stops the step under way */
+    static volatile sig_atomic_t stop = 0;
+    rs.cancel = &stop;
+    adh_run cut;
+    adh_run_init(&cut);
+    adh_drive_set(d, &m, &rs, &ps, &cut);
+    adh_drive_step(d);
+    adh_drive_step(d);
+    stop = 1;
+    rc = adh_drive_step(d);
+    ok(rc == ADH_EINTR && cut.nrows == 2 && cut.interrupted, "a raised cancel flag: ADH_EINTR, no row for that step");
+
+    /* a step the drive cannot take */
+    ps.step = 0;
+    ok(adh_drive_set(d, &m, &rs, &ps, &cut) == ADH_EINVAL, "a step of 0 is refused");
+
+    adh_run_free(&cut);
+    adh_run_free(&run);
+    adh_run_free(&ref);
+    adh_drive_free(d);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+    return tap_done();
+}
