@@ -39,6 +39,9 @@ double adh_grid_edge_spacing(adh_grid_use use);
  * many nodes (4000: 128 MB, ~4 ms per relaxation iteration, a Figure 4
  * cycle of ~15 min on one core). */
 #define ADH_GRID_MAX_NODES 4000
+/* The nodes a grid may have at all (flags, scene files, the TUI's N). */
+#define ADH_GRID_NODES_MIN 10
+#define ADH_GRID_NODES_MAX 20000
 
 typedef struct adh_grid_report {
     size_t n;             /* nodes */

@@ -33,6 +33,10 @@ adh_protocol_settings adh_protocol_settings_default(void);
  * least 4 jump separations (eq 24) out, rounded up to a whole number of steps. */
 double adh_protocol_auto_start(const adh_material *m, double step);
 
+/* How far the drive may go either side of contact: |h0| up to R/50 (the
+ * model needs h0 << R). Every start, turn and position meets this one limit. */
+double adh_protocol_reach(const adh_material *m);
+
 /* Checks the settings and that the grid can hold the run: the pressure at
  * Rmax negligible and the contact expected well inside Rmax at the deepest
  * turn. ADH_EINVAL / ADH_EGRID with a sentence in why. g may be NULL (rigid

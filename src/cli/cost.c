@@ -147,7 +147,7 @@ static int parse_lists(const adh_cli *cli, double *eps, size_t *neps, size_t *no
     snprintf(buf, sizeof buf, "%s", nl);
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         long v;
-        if (*nnodes == MAX_NODES || adh_parse_count(t, 10, 20000, &v, msg, sizeof msg) != 0) {
+        if (*nnodes == MAX_NODES || adh_parse_count(t, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX, &v, msg, sizeof msg) != 0) {
             snprintf(why, n, "--cost-nodes: %s", *nnodes == MAX_NODES ? "at most 16 values" : msg);
             return 2;
         }

@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "adhere/drive.h"
 #include "adhere/grid.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
@@ -163,8 +164,8 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
     case 'N':
     case OPT_MAX_ITER:
     case OPT_DWELL: {
-        long lo = c == 'N' ? 10 : c == OPT_DWELL ? 0 : 1;
-        long hi = c == 'N' ? 20000 : 100000000;
+        long lo = c == 'N' ? ADH_GRID_NODES_MIN : c == OPT_DWELL ? 0 : 1;
+        long hi = c == 'N' ? ADH_GRID_NODES_MAX : 100000000;
         if (adh_parse_count(arg, lo, hi, &v, msg, sizeof msg) != 0) {
             snprintf(why, n, "--%s: %s", name, msg);
             return 2;
@@ -511,44 +512,18 @@ static int readable_file(const char *opt, const char *path, char *why, size_t wh
 
 static int validate_run(const adh_config *cfg, char *why, size_t whylen)
 {
-    if (adh_material_validate(&cfg->mat, why, whylen) != ADH_SUCCESS)
-        return 2;
-    if (adh_relax_settings_validate(&cfg->relax, why, whylen) != ADH_SUCCESS)
-        return 2;
     if (cfg->gnuplot_style[0] && readable_file("gnuplot-style", cfg->gnuplot_style, why, whylen))
         return 2;
-    if (cfg->mode == ADH_MODE_RELAX) {
-        /* eps below the measure's rounding floor: every step would run to the cap */
-        double deepest = 0;
-        for (size_t i = 0; i < cfg->proto.nturns; i++)
-            deepest = fmin(deepest, cfg->proto.turns[i]);
-        double floor_eps = adh_relax_eps_floor(cfg->nodes, cfg->mat.z0 - deepest);
-        if (cfg->relax.eps < floor_eps) {
-            snprintf(why, whylen, "eps = %g m is below what double precision can reach on %zu nodes with deformations up to %g m: the smallest eps allowed here is %g m",
-                     cfg->relax.eps, cfg->nodes, cfg->mat.z0 - deepest, floor_eps);
-            return 2;
-        }
-    }
-    if (cfg->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
-        return adh_protocol_check(&cfg->proto, &cfg->mat, NULL, why, whylen) == ADH_SUCCESS ? 0 : 2;
-    double dr = adh_config_spacing(cfg);
-    if (!(isfinite(dr) && dr > 0)) {
-        snprintf(why, whylen, "spacing = %g m is not allowed: it must be above 0", dr);
+    double dr = cfg->mode == ADH_MODE_RIGID ? NAN : adh_config_spacing(cfg);
+    if (adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, adh_config_grid_use(cfg),
+                        cfg->mode == ADH_MODE_RIGID ? 0 : cfg->nodes, dr, why, whylen) != ADH_SUCCESS)
         return 2;
-    }
+    if (cfg->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
+        return 0;
     if (!(isfinite(cfg->drive_speed) && cfg->drive_speed > 0 && cfg->drive_speed < 1e3)) {
         snprintf(why, whylen, "drive speed %g m/s is not allowed: it must be above 0 and below 1000 m/s", cfg->drive_speed);
         return 2;
     }
-    adh_grid *g = adh_grid_alloc(cfg->nodes, dr);
-    if (!g) {
-        snprintf(why, whylen, "out of memory for a grid of %zu nodes", cfg->nodes);
-        return 2;
-    }
-    int rc = adh_protocol_check(&cfg->proto, &cfg->mat, g, why, whylen);
-    adh_grid_free(g);
-    if (rc != ADH_SUCCESS)
-        return 2;
     adh_grid_report gr;
     adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);
     if (cfg->mode != ADH_MODE_RIGID && !gr.resolved && !cfg->force) {

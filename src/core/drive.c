@@ -1,6 +1,7 @@
 #include "adhere/drive.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -77,6 +78,36 @@ static int cmp_desc(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return (x < y) - (x > y);
+}
+
+int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const adh_protocol_settings *ps,
+                    adh_grid_use use, size_t n, double dr, char *why, size_t whylen)
+{
+    int rc;
+    if ((rc = adh_material_validate(m, why, whylen)) != ADH_SUCCESS ||
+        (rc = adh_relax_settings_validate(rs, why, whylen)) != ADH_SUCCESS)
+        return rc;
+    if (n > 0 && use == ADH_GRID_RELAX) {
+        /* eps below the measure's rounding floor: every step would run to the cap */
+        double deepest = 0;
+        for (size_t i = 0; i < ps->nturns && i < ADH_MAX_TURNS; i++)
+            deepest = fmin(deepest, ps->turns[i]);
+        double floor_eps = adh_relax_eps_floor(n, m->z0 - deepest);
+        if (rs->eps < floor_eps) {
+            snprintf(why, whylen, "eps = %g m is below what double precision can reach on %zu nodes with deformations up to %g m: the smallest eps allowed here is %g m",
+                     rs->eps, n, m->z0 - deepest, floor_eps);
+            return ADH_EINVAL;
+        }
+    }
+    if (n == 0)   /* rigid spheres: eq 22 alone, no grid */
+        return adh_protocol_check(ps, m, NULL, why, whylen);
+    if (!(isfinite(dr) && dr > 0)) {
+        snprintf(why, whylen, "spacing = %g m is not allowed: it must be above 0", dr);
+        return ADH_EINVAL;
+    }
+    /* only n, dr and rmax of the grid are read: no nodes are built */
+    adh_grid g = { .n = n, .dr = dr, .rmax = (double)n * dr, .r = NULL };
+    return adh_protocol_check(ps, m, &g, why, whylen);
 }
 
 int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings *rs,

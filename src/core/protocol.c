@@ -31,6 +31,11 @@ double adh_protocol_auto_start(const adh_material *m, double step)
     return step * ceil(h / step - 1e-9);
 }
 
+double adh_protocol_reach(const adh_material *m)
+{
+    return 0.02 * m->R;
+}
+
 static double deepest_turn(const adh_protocol_settings *ps)
 {
     double t = INFINITY;
@@ -52,10 +57,10 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     }
     for (size_t i = 0; i < ps->nturns; i++) {
         double t = ps->turns[i];
-        if (!isfinite(t) || t < -0.02 * m->R) {
+        if (!isfinite(t) || t < -adh_protocol_reach(m)) {
             int dflt = ps->nturns == 1 && t == adh_protocol_settings_default().turns[0];
             snprintf(why, whylen, "turning point %g m%s is too deep: the model (h0 << R) allows down to -R/50 = %g m%s", t,
-                     dflt ? " (the default turn)" : "", -0.02 * m->R, dflt ? "; give a shallower --turn (or turns in the scene), or a larger R" : "");
+                     dflt ? " (the default turn)" : "", -adh_protocol_reach(m), dflt ? "; give a shallower --turn (or turns in the scene), or a larger R" : "");
             return ADH_EINVAL;
         }
     }
@@ -69,13 +74,13 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
         return ADH_EINVAL;
     }
     double start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
-    if (!isfinite(start) || start <= 0 || start > 0.02 * m->R) {
+    if (!isfinite(start) || start <= 0 || start > adh_protocol_reach(m)) {
         if (isnan(ps->start))
             snprintf(why, whylen, "R = %g m is too small for this material: the automatic start (where the force is negligible: the bulge of eq 23 below 0.01 z0 and 4 jump separations out) is %g m, above R/50 = %g m (the model needs h0 << R); use a larger R, or give a start up to %g m",
-                     m->R, start, 0.02 * m->R, 0.02 * m->R);
+                     m->R, start, adh_protocol_reach(m), adh_protocol_reach(m));
         else
             snprintf(why, whylen, "start = %g m is not allowed: it must be above 0 and at most R/50 = %g m (the model needs h0 << R)",
-                     start, 0.02 * m->R);
+                     start, adh_protocol_reach(m));
         return ADH_EINVAL;
     }
     for (size_t i = 0; i < ps->nturns; i++) {
@@ -91,8 +96,8 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     }
     if (!g)
         return ADH_SUCCESS;   /* rigid spheres: no grid to check */
-    if (g->n < 10) {
-        snprintf(why, whylen, "N = %zu nodes is not allowed: at least 10 are needed", g->n);
+    if (g->n < ADH_GRID_NODES_MIN || g->n > ADH_GRID_NODES_MAX) {
+        snprintf(why, whylen, "N = %zu nodes is not allowed: use %d to %d nodes", g->n, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX);
         return ADH_EINVAL;
     }
     double lateral = sqrt(m->R * m->z0);

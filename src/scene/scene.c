@@ -10,6 +10,7 @@
 #include <strings.h>
 #include <sys/stat.h>
 
+#include "adhere/grid.h"
 #include "adhere/units.h"
 
 typedef struct scene_parse {
@@ -175,8 +176,8 @@ static int handler(void *user, const char *section, const char *name, const char
             c->nodes_given = 0;
             return 1;
         }
-        if (adh_parse_count(value, nodes ? 10 : !strcmp(name, "dwell") ? 0 : 1,
-                            nodes ? 20000 : jobs ? 64 : 100000000, &n, msg, sizeof msg) != 0)
+        if (adh_parse_count(value, nodes ? ADH_GRID_NODES_MIN : !strcmp(name, "dwell") ? 0 : 1,
+                            nodes ? ADH_GRID_NODES_MAX : jobs ? 64 : 100000000, &n, msg, sizeof msg) != 0)
             return fail(sp, "%s: %s", name, msg);
         if (nodes) c->nodes = (size_t)n, c->nodes_given = 1;
         else if (jobs) c->sweep.jobs = (int)n;

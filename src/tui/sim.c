@@ -8,6 +8,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "adhere/drive.h"
 #include "adhere/maugis.h"
 #include "adhere/models.h"
 #include "adhere/observe.h"
@@ -96,22 +97,19 @@ static void edits_clear(tui_edit *e, size_t *n)
     *n = 0;
 }
 
-/* The batch run's own check of grid and protocol, as advice before any
- * solve: a newcomer who sets N = 100 learns the contact will not fit
- * before stepping into it. Only n, dr and rmax of the grid are read. */
+/* The batch run's own check of grid and protocol, before any solve: a
+ * newcomer who sets N = 100 learns the contact will not fit before
+ * stepping into it, and a solve is refused, as --batch refuses the run. */
+static tui_params_set params_get(const tui_sim *s);
+static int params_check(const tui_params_set *p, adh_mode mode, char *why, size_t whylen);
+
 static void check_grid(tui_sim *s)
 {
-    adh_protocol_settings ps = adh_protocol_settings_default();
-    ps.start = s->start;
-    ps.step = s->step;
-    ps.nturns = isnan(s->turn) ? 0 : 1;
-    ps.turns[0] = s->turn;
-    adh_grid g = { .n = s->nodes, .dr = tui_sim_spacing(s), .r = NULL };
-    g.rmax = (double)g.n * g.dr;
-    s->gridwarn[0] = '\0';
-    adh_grid_check(&s->mat, s->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX, g.n, g.dr, &s->gridres);
+    adh_grid_check(&s->mat, s->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX, s->nodes,
+                   tui_sim_spacing(s), &s->gridres);
     /* the resolution itself is shown on the Derived panel's E* line */
-    if (adh_protocol_check(&ps, &s->mat, &g, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
+    tui_params_set p = params_get(s);
+    if (params_check(&p, s->mode, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
         s->gridwarn[0] = '\0';
 }
 
@@ -163,13 +161,9 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
     s->turn = NAN;
     for (size_t i = 0; i < cfg->proto.nturns; i++)
         s->turn = isnan(s->turn) ? cfg->proto.turns[i] : fmin(s->turn, cfg->proto.turns[i]);
-    if (adh_material_validate(&s->mat, why, whylen) != ADH_SUCCESS ||
-        adh_relax_settings_validate(&s->relax, why, whylen) != ADH_SUCCESS)
+    tui_params_set p = params_get(s);
+    if (params_check(&p, cfg->mode, why, whylen) == ADH_EINVAL)
         return -1;
-    if (s->nodes < 10) {
-        snprintf(why, whylen, "N = %zu nodes is not allowed: at least 10 are needed", s->nodes);
-        return -1;
-    }
     derive(s);
     s->grid_stale = 1;
     s->edit_moved = -1;
@@ -368,67 +362,73 @@ static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen
     return 0;
 }
 
+/* The protocol the parameters p describe, as --batch would run it. */
+static adh_protocol_settings params_protocol(const tui_params_set *p)
+{
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.start = p->start_opt;
+    ps.step = p->step;
+    ps.nturns = isnan(p->turn) ? 0 : 1;
+    ps.turns[0] = p->turn;
+    return ps;
+}
+
+static double params_spacing(const tui_params_set *p)
+{
+    return isnan(p->spacing) ? adh_grid_spacing_for(&p->mat, p->nodes) : p->spacing;
+}
+
+/* The core's one check of every limit, the one --batch and scene files
+ * meet: ADH_EINVAL refuses an edit; ADH_EGRID (a grid that cannot hold
+ * the run) lets it through, shown, and a solve is refused until mended. */
+static int params_check(const tui_params_set *p, adh_mode mode, char *why, size_t whylen)
+{
+    adh_protocol_settings ps = params_protocol(p);
+    return adh_drive_check(&p->mat, &p->relax, &ps, mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX,
+                           p->nodes, params_spacing(p), why, whylen);
+}
+
 static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
 {
     const char *name = tui_params[p].name;
-    adh_material m = s->mat;
-    adh_relax_settings rs = s->relax;
-    char msg[256];
+    tui_params_set np = params_get(s);
     switch (p) {
-    case P_E: case P_A: case P_Z0: case P_R:
-        *(p == P_E ? &m.E : p == P_A ? &m.A : p == P_Z0 ? &m.z0 : &m.R) = v;
-        if (adh_material_validate(&m, msg, sizeof msg) != ADH_SUCCESS) {
-            snprintf(why, whylen, "%s", msg);
-            return -1;
-        }
-        s->mat = m;
-        derive(s);
-        break;
-    case P_EPS:
-        rs.eps = v;
-        if (adh_relax_settings_validate(&rs, msg, sizeof msg) != ADH_SUCCESS) {
-            snprintf(why, whylen, "%s", msg);
-            return -1;
-        }
-        s->relax = rs;
-        break;
-    case P_D:
-        if (!(v >= 1e-14 && v <= 1e-8)) {
-            snprintf(why, whylen, "d = %g m is not allowed: the drive step must be from 0.01 pm to 10 nm", v);
-            return -1;
-        }
-        s->step = v;
-        break;
+    case P_E: np.mat.E = v; break;
+    case P_A: np.mat.A = v; break;
+    case P_Z0: np.mat.z0 = v; break;
+    case P_R: np.mat.R = v; break;
+    case P_EPS: np.relax.eps = v; break;
+    case P_D: np.step = v; break;
     case P_N:
-        if (!(v >= 10 && v <= 20000)) {
-            snprintf(why, whylen, "N = %.0f is not allowed: use 10 to 20000 nodes", v);
+        if (!(v >= ADH_GRID_NODES_MIN && v <= ADH_GRID_NODES_MAX)) {
+            snprintf(why, whylen, "N = %.0f is not allowed: use %d to %d nodes", v, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX);
             return -1;
         }
-        s->nodes = (size_t)llround(v);
+        np.nodes = (size_t)llround(v);
         break;
-    case P_SPACING: {
-        double hi = 0.2 * sqrt(s->mat.R * s->mat.z0);
-        if (!isnan(v) && !(v > 0 && v <= hi)) {
-            snprintf(why, whylen, "spacing = %g m is not allowed: it must be above 0 and at most "
-                     "0.2 sqrt(R z0) = %g m (or auto)", v, hi);
-            return -1;
-        }
-        s->spacing = v;
-        break;
-    }
-    case P_TURN:
-        if (!(v < s->start && v >= -0.01 * s->mat.R)) {
-            snprintf(why, whylen, "turn = %g m is not allowed: it must lie below the start %g m "
-                     "and not below -R/100 = %g m", v, s->start, -0.01 * s->mat.R);
-            return -1;
-        }
-        s->turn = v;
-        check_grid(s);
-        curve_check(s);   /* but it is where the static curve ends */
-        return 0;   /* where a run stops is not physics: the path stays */
+    case P_SPACING: np.spacing = v; break;
+    case P_TURN: np.turn = v; break;
     default:
         snprintf(why, whylen, "%s cannot be set", name);
         return -1;
+    }
+    char msg[512];
+    if (params_check(&np, s->mode, msg, sizeof msg) == ADH_EINVAL) {
+        snprintf(why, whylen, "%s", msg);
+        return -1;
+    }
+    s->mat = np.mat;
+    s->relax = np.relax;
+    s->step = np.step;
+    s->nodes = np.nodes;
+    s->spacing = np.spacing;
+    s->turn = np.turn;
+    if (p <= P_R)
+        derive(s);
+    if (p == P_TURN) {
+        check_grid(s);
+        curve_check(s);   /* but it is where the static curve ends */
+        return 0;   /* where a run stops is not physics: the path stays */
     }
     new_path(s);
     return 0;
@@ -441,7 +441,7 @@ int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t why
     double v;
     if (p == P_N) {
         long n;
-        if (adh_parse_count(text, 10, 20000, &n, msg, sizeof msg) != 0) {
+        if (adh_parse_count(text, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX, &n, msg, sizeof msg) != 0) {
             snprintf(why, whylen, "%s: %s", pi->name, msg);
             return -1;
         }
@@ -503,6 +503,16 @@ static void move_to(tui_sim *s, double h0)
     s->t0 = adh_clock_seconds();
 }
 
+/* A solve on a grid the core's check refuses is refused, as --batch
+ * refuses the run: with the check's sentence. */
+static int grid_refuses(const tui_sim *s, char *why, size_t whylen)
+{
+    if (!s->gridwarn[0])
+        return 0;
+    snprintf(why, whylen, "%s", s->gridwarn);
+    return 1;
+}
+
 /* ---- static mode: the equilibrium curve ---------------------------------- */
 
 static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
@@ -533,7 +543,7 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
                      s->curve.nrows == 1 ? "" : "s", adh_strerror(s->cstatus));
         return -1;
     } else {
-        if (ensure_solver(s, why, whylen) != 0)
+        if (grid_refuses(s, why, whylen) || ensure_solver(s, why, whylen) != 0)
             return -1;
         if (!s->sw && !(s->sw = adh_static_alloc(s->g, s->k))) {
             snprintf(why, whylen, "out of memory for the static solver (a dense copy of the %zu x %zu kernel): "
@@ -690,7 +700,7 @@ int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen)
     }
     if (s->mode == ADH_MODE_STATIC)
         return curve_begin(s, dir, why, whylen);
-    if (ensure_solver(s, why, whylen) != 0)
+    if (grid_refuses(s, why, whylen) || ensure_solver(s, why, whylen) != 0)
         return -1;
     s->dir = dir;
     const adh_obs *cur = adh_history_row(s->hist);
@@ -725,9 +735,9 @@ int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen)
         double k = round((cur->h0 - turn) / s->step) + (stay ? 0 : 1);
         h0 = turn + k * s->step;
     }
-    if (fabs(h0) > 0.01 * s->mat.R) {
-        snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/100 = %g m",
-                 h0, 0.01 * s->mat.R);
+    if (fabs(h0) > adh_protocol_reach(&s->mat)) {
+        snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/50 = %g m",
+                 h0, adh_protocol_reach(&s->mat));
         return -1;
     }
     move_to(s, h0);

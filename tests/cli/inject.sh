@@ -105,7 +105,7 @@ nothing_ran "an odd TMPDIR"
 
 # --- the TUI's plot key, with the same scene and an odd directory ----------
 cat >plot.keys <<'EOF'
-:set N 60
+:set N 100
 :set eps 100pm
 :set d 0.5nm
 4f

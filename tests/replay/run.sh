@@ -248,11 +248,22 @@ check "m to static again finds the curve as it was ($(at "$ST/static-again.txt")
     sh -c "[ '$(at "$ST/static-again.txt")' = '3 of 3' ] && grep -q 'nothing solved again' '$ST/static-again.txt'"
 check "and m back finds the relaxation path (2 states) as it was" \
     sh -c "grep -q 'path   2 states' '$ST/static.screen' && grep -q 'relaxation: back on the path' '$ST/static.screen'"
+# One check of every limit, in the core: :set refuses what --batch refuses,
+# with the same sentence, and takes what --batch takes.
+for lim in "R 5nm|--radius=5nm" "eps 1e-25m|--eps=1e-25m"; do
+    set_=${lim%%|*}; flag=${lim#*|}
+    out=$("$bin" --batch --no-plot -o "$work/lim-out" "$flag" </dev/null 2>&1 >/dev/null)
+    brc=$?
+    want=$(sed 's/^[^:]*:[0-9]*: //' "$here/cases/limit-${set_%% *}.stderr")
+    check ":set $set_ and $flag are refused alike ($brc: $out)" sh -c '[ "$1" = 2 ] && [ "$2" = "adhere: $3" ]' _ "$brc" "$out" "$want"
+done
+check ":set spacing 16nm on 100 nodes is taken, as --batch -N 100 --spacing=16nm is" \
+    grep -q "spacing = 16 nm: .* a new path starts" "$W/limit-spacing/limit-spacing.screen"
 E=$W/static-edge
 check "--mode=static opens the screen in static mode" grep -q "State  (static equilibrium)" "$E/static-edge.txt"
-check "a curve that reaches the grid edge stops, says so and keeps its points" \
-    sh -c "grep -q '! the curve stopped: the grid is too short' '$E/static-edge.txt' && grep -q 'error: the curve stops at the grid edge' '$E/static-edge.txt' && grep -q 'point  [0-9]* of [0-9]*, ' '$E/static-edge.txt'"
-check "a step past it is refused with the reason" grep -q "^error: the curve stopped at the grid edge after [0-9]* points" "$E/static-edge.screen"
+check "a grid too short for the contact is refused up front, with --batch's reason, and no point is solved" \
+    sh -c "grep -q '! grid radius Rmax = .* is too short' '$E/static-edge.txt' && grep -q '^error: grid radius Rmax = .* is too short' '$E/static-edge.txt' && grep -q 'start, not solved yet' '$E/static-edge.txt'"
+check "a step after it is refused with the same reason" grep -q "^error: grid radius Rmax = .* is too short" "$E/static-edge.screen"
 
 PL=$W/plots/adhere-plots
 for f in force.png profile.png contact.png; do
