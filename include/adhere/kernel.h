@@ -13,6 +13,9 @@ typedef enum adh_kernel_type {
 
 typedef struct adh_kernel adh_kernel;
 
+/* The ring kernel takes any grid, graded too (adhere/rings.h): ring j's
+ * influence is D(r, edge[j+1]) - D(r, edge[j]). The paper's kernel takes
+ * the uniform grid only (NULL for a graded one). */
 adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type);
 void adh_kernel_free(adh_kernel *k);
 adh_kernel_type adh_kernel_kind(const adh_kernel *k);

@@ -70,6 +70,9 @@ adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type)
 {
     /* GSL's default handler aborts; the core reports through status codes. */
     gsl_set_error_handler_off();
+    /* The paper's diagonal (eqs 19-21) assumes equal cells around each node. */
+    if (type == ADH_KERNEL_PAPER && g->graded)
+        return NULL;
     size_t n = g->n;
     adh_kernel *k = calloc(1, sizeof *k);
     if (!k)
@@ -104,7 +107,7 @@ adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type)
         for (size_t i = 0; i < n; i++)
             prev[i] = 0.0; /* D(r, 0) = 0 */
         for (size_t j = 0; j < n; j++) {
-            double b = (double)(j + 1) * d;
+            double b = g->graded ? g->edge[j + 1] : (double)(j + 1) * d;
             for (size_t i = 0; i < n; i++) {
                 double db = adh_disk_integral(g->r[i], b);
                 k->w[i * n + j] = db - prev[i];
