@@ -11,11 +11,11 @@ CFLAGS  ?= -O2 -g
 WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wno-format-truncation
 PKGS     = gsl ncursesw inih openblas
 DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux \
-           clang libclang-rt-14-dev
+           clang libclang-rt-14-dev libhmat-oss-dev
 
 # GSL through OpenBLAS's CBLAS, not the reference gslcblas (DESIGN.md section 4).
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl \
+PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl -lhmat \
              $(shell pkg-config --libs openblas ncursesw inih 2>/dev/null) -lpthread -lm
 ADH_VERSION = 0.1.0
 CPPFLAGS += -Iinclude -Isrc -DADH_VERSION='"$(ADH_VERSION)"' -D_POSIX_C_SOURCE=200809L -DADH_DATADIR='"$(DATADIR)"' -DADH_SRCDATA='"$(CURDIR)/share/adhere"'

@@ -10,6 +10,7 @@
 
 #include "adhere/law.h"
 #include "adhere/observe.h"
+#include "adhere/rings.h"
 #include "adhere/status.h"
 
 /* Notation. x = (u, h0); the metric is |x|^2 = (theta sum u_n^2 + h0^2) / z0^2
@@ -558,6 +559,11 @@ static double force_of(const adh_static *w, const adh_state *x)
 static double force_slope(const adh_static *w, const double *D, const double *tu, double th)
 {
     double s = 0, z0 = w->m.z0;
+    if (w->grid->graded) { /* ring areas, as adh_force */
+        for (size_t i = 0; i < w->n; i++)
+            s += adh_rings_weight(w->grid, i) * D[i] * z0 * (th - tu[i]);
+        return 2.0 * M_PI * s;
+    }
     for (size_t i = 0; i < w->n; i++)
         s += w->grid->r[i] * D[i] * z0 * (th - tu[i]);
     return 2.0 * M_PI * w->grid->dr * s;

@@ -1,5 +1,7 @@
 #include "adhere/kernel.h"
 
+#include "adhere/hmatrix.h"
+
 #include <gsl/gsl_cblas.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
@@ -13,6 +15,9 @@ struct adh_kernel {
     double dr;
     const double *r;   /* borrowed from the grid */
     double *w;         /* paper: symmetric k-matrix (times dr); ring: full influence matrix */
+    adh_kernel_storage storage;
+    const adh_grid *g; /* borrowed: hierarchical entries come from its edges */
+    adh_hmatrix *h;    /* hierarchical storage (w is then NULL) */
 };
 
 /* Carlson forms keep every digit as the parameter m -> 1 (one_minus_m passed in
@@ -119,10 +124,82 @@ adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type)
     return k;
 }
 
+/* W_nj from the closed forms, as the dense matrices above hold it. */
+static double formula_entry(const adh_kernel *k, size_t n, size_t j)
+{
+    const adh_grid *g = k->g;
+    if (k->type == ADH_KERNEL_PAPER)
+        return n == j ? paper_diagonal(g->r[n], k->dr) * g->r[j] : k->dr * kernel_k(g->r[n], g->r[j]) * g->r[j];
+    double a = g->graded ? g->edge[j] : (double)j * k->dr;
+    double b = g->graded ? g->edge[j + 1] : (double)(j + 1) * k->dr;
+    return adh_disk_integral(g->r[n], b) - adh_disk_integral(g->r[n], a);
+}
+
+static double hmat_entry(void *ctx, size_t n, size_t j)
+{
+    return formula_entry(ctx, n, j);
+}
+
+adh_kernel *adh_kernel_alloc_stored(const adh_grid *g, adh_kernel_type type, adh_kernel_storage s)
+{
+    if (s == ADH_STORAGE_DENSE) {
+        adh_kernel *k = adh_kernel_alloc(g, type);
+        if (k)
+            k->g = g;
+        return k;
+    }
+    gsl_set_error_handler_off();
+    if (type == ADH_KERNEL_PAPER && g->graded)
+        return NULL;
+    adh_kernel *k = calloc(1, sizeof *k);
+    if (!k)
+        return NULL;
+    *k = (adh_kernel){ .type = type, .n = g->n, .dr = g->dr, .r = g->r, .storage = s, .g = g };
+    adh_hmatrix_settings hs = adh_hmatrix_settings_default();
+    k->h = adh_hmatrix_alloc(g->n, g->r, hmat_entry, k, &hs);
+    if (!k->h) {
+        free(k);
+        return NULL;
+    }
+    return k;
+}
+
+adh_kernel_storage adh_kernel_storage_of(const adh_kernel *k)
+{
+    return k->storage;
+}
+
+const char *adh_kernel_storage_name(adh_kernel_storage s)
+{
+    return s == ADH_STORAGE_HMAT ? "hmat" : "dense";
+}
+
+int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s)
+{
+    if (strcmp(name, "dense") == 0)
+        *s = ADH_STORAGE_DENSE;
+    else if (strcmp(name, "hmat") == 0)
+        *s = ADH_STORAGE_HMAT;
+    else
+        return -1;
+    return 0;
+}
+
+size_t adh_kernel_bytes(const adh_kernel *k)
+{
+    return k->h ? adh_hmatrix_bytes(k->h) : k->n * k->n * sizeof *k->w;
+}
+
+double adh_kernel_diagonal(const adh_kernel *k, size_t n)
+{
+    return adh_kernel_entry(k, n, n);
+}
+
 void adh_kernel_free(adh_kernel *k)
 {
     if (!k)
         return;
+    adh_hmatrix_free(k->h);
     free(k->w);
     free(k);
 }
@@ -151,6 +228,13 @@ int adh_kernel_parse(const char *name, adh_kernel_type *type)
 void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double *scratch)
 {
     int n = (int)k->n;
+    if (k->h) {
+        /* A failed product must not pass for a deformation. */
+        if (adh_hmatrix_apply(k->h, p, out, scratch) != 0)
+            for (int i = 0; i < n; i++)
+                out[i] = NAN;
+        return;
+    }
     if (k->type == ADH_KERNEL_PAPER) {
         for (int i = 0; i < n; i++)
             scratch[i] = k->r[i] * p[i];
@@ -162,6 +246,8 @@ void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double 
 
 double adh_kernel_entry(const adh_kernel *k, size_t n, size_t j)
 {
+    if (k->h)
+        return formula_entry(k, n, j);
     double w = k->w[n * k->n + j];
     return k->type == ADH_KERNEL_PAPER ? w * k->r[j] : w;
 }
