@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 #include "adhere/grid.h"
+#include "adhere/params.h"
 
 #define ADH_RINGS_MAX_RATIO 1.1 /* widest growth allowed between neighbours */
 
@@ -38,11 +39,22 @@ double adh_rings_weight(const adh_grid *g, size_t i);
 /* The ring holding radius r: i with edge[i] <= r < edge[i+1] (n - 1 past the end). */
 size_t adh_rings_locate(const adh_grid *g, double r);
 
+/* Outer edge of the fine band: the leading rings of the finest width (rmax
+ * on a uniform grid). A contact line past it is no longer resolved. */
+double adh_rings_fine_radius(const adh_grid *g);
+/* Whether a contact of radius a (m) lies inside the fine band. */
+int adh_rings_resolves(const adh_grid *g, double a);
+
 /* The paper's convergence measure [sum (du_n)^2]^(1/2) / N generalised:
  * du taken as constant over each ring and sampled on the uniform grid of the
  * finest width dr out to the same radius, i.e.
  *     [sum_n (w_n / dr) du_n^2]^(1/2) / (rmax / dr),   w_n = ring width.
  * On a uniform grid w_n = dr and rmax / dr = N: the paper's, exactly. */
 double adh_rings_change(const adh_grid *g, const double *du);
+
+/* Before a run: the contact expected at the deepest position lowest (m),
+ * the same estimate as adh_protocol_check's, must lie inside the fine band.
+ * ADH_SUCCESS, or ADH_EGRID with a sentence in why. Uniform grids pass. */
+int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen);
 
 #endif

@@ -89,10 +89,10 @@ int adh_batch_main(const adh_cli *cli)
         return adh_sweep_main(cli);
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
     int rigid = cfg->mode == ADH_MODE_RIGID;
-    adh_grid *g = rigid ? NULL : adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
-    adh_kernel *k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;
+    adh_grid *g = rigid ? NULL : adh_config_grid_alloc(cfg);
+    adh_kernel *k = g ? adh_config_kernel_alloc(cfg, g) : NULL;
     if (!rigid && !k) {
-        fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
+        fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
         adh_grid_free(g);
         return ADH_EXIT_SOLVER;
     }

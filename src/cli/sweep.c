@@ -305,10 +305,10 @@ int adh_sweep_main(const adh_cli *cli)
     adh_grid *g = NULL;
     adh_kernel *k = NULL;
     if (cfg->mode != ADH_MODE_RIGID) {
-        g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
-        k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;
+        g = adh_config_grid_alloc(cfg);
+        k = g ? adh_config_kernel_alloc(cfg, g) : NULL;
         if (!k) {
-            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
+            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
             adh_grid_free(g);
             return ADH_EXIT_SOLVER;
         }

@@ -827,7 +827,7 @@ int adh_static_iterate(adh_static *w)
             w->ds = fmin(w->s.ds_max, w->ds * f);
             rc = w->done ? ADH_SUCCESS : ADH_CONTINUE;
             double a = adh_contact_radius(w->grid, w->st->h, z0);
-            if (a >= 0.9 * w->grid->rmax)
+            if (a >= 0.9 * w->grid->rmax || !adh_rings_resolves(w->grid, a))
                 rc = ADH_EGRID;
             break;
         }

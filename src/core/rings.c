@@ -1,5 +1,7 @@
 #include "adhere/rings.h"
 
+#include "adhere/status.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -162,4 +164,32 @@ double adh_rings_change(const adh_grid *g, const double *du)
     for (size_t i = 0; i < g->n; i++)
         ssq += adh_rings_width(g, i) / g->dr * du[i] * du[i];
     return sqrt(ssq) / (g->rmax / g->dr);
+}
+
+double adh_rings_fine_radius(const adh_grid *g)
+{
+    if (!g->graded)
+        return g->rmax;
+    size_t i = 0;
+    while (i < g->n && g->edge[i + 1] - g->edge[i] <= g->dr * (1 + 1e-9))
+        i++;
+    return g->edge[i];
+}
+
+int adh_rings_resolves(const adh_grid *g, double a)
+{
+    return !g->graded || a < adh_rings_fine_radius(g);
+}
+
+int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen)
+{
+    if (!g->graded)
+        return ADH_SUCCESS;
+    double a_est = 1.5 * sqrt(2.0 * m->R * fmax(0.0, m->z0 - lowest)), fine = adh_rings_fine_radius(g);
+    if (a_est > 0.9 * fine) {
+        snprintf(why, whylen, "fine band radius %g m is too short: the contact at h0 = %g m may reach %g m, and its edge must stay inside the band; use a larger --fine-band",
+                 fine, lowest, a_est);
+        return ADH_EGRID;
+    }
+    return ADH_SUCCESS;
 }
