@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "adhere/equilibrium.h"
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
 #include "adhere/rings.h"
@@ -36,6 +37,36 @@ static int cycle(const adh_grid *g, adh_kernel_storage st, adh_run *run)
     return rc;
 }
 
+/* The static curve (Figure 1's material, E = 1 GPa) on grid g. */
+static int curve(const adh_grid *g, adh_kernel_storage st, adh_static_result *res)
+{
+    adh_material m = adh_material_default();
+    adh_kernel *k = adh_kernel_alloc_stored(g, ADH_KERNEL_RING, st);
+    adh_static_settings s = adh_static_settings_default();
+    adh_run run;
+    adh_run_init(&run);
+    int rc = k ? adh_static_run(g, k, &m, &s, NULL, NULL, &run, res) : ADH_ENOMEM;
+    adh_run_free(&run);
+    adh_kernel_free(k);
+    return rc;
+}
+
+static void statics(const adh_grid *u, const adh_grid *g)
+{
+    adh_static_result ru, rg, rh;
+    int cu = curve(u, ADH_STORAGE_DENSE, &ru), cg = curve(g, ADH_STORAGE_DENSE, &rg), ch = curve(g, ADH_STORAGE_HMAT, &rh);
+    if (!ok(cu == ADH_SUCCESS && cg == ADH_SUCCESS && ch == ADH_SUCCESS, "static curves on both grids and with hmat (%d %d %d)", cu, cg, ch))
+        return;
+    ok_rel(rg.pulloff_F, ru.pulloff_F, 0.01, "static: graded pull-off within 1 % of uniform");
+    ok(fabs(rg.jump_in_h0 - ru.jump_in_h0) < 0.01e-9 && fabs(rg.jump_out_h0 - ru.jump_out_h0) < 0.01e-9,
+       "static: graded folds at the uniform grid's (jump-in %.4f vs %.4f nm, jump-out %.4f vs %.4f nm)",
+       rg.jump_in_h0 * 1e9, ru.jump_in_h0 * 1e9, rg.jump_out_h0 * 1e9, ru.jump_out_h0 * 1e9);
+    ok(rh.folds == rg.folds, "static hmat: the same %zu folds as dense (%zu)", rh.folds, rg.folds);
+    ok_rel(rh.pulloff_F, rg.pulloff_F, 1e-6, "static hmat: pull-off within 1e-6 of dense");
+    ok(fabs(rh.jump_in_h0 - rg.jump_in_h0) < 1e-6 * fabs(rg.jump_in_h0) && fabs(rh.jump_out_h0 - rg.jump_out_h0) < 1e-6 * fabs(rg.jump_out_h0),
+       "static hmat: jump-in and jump-out within 1e-6 of dense");
+}
+
 int main(void)
 {
     double dr = 4e-9, rmax = 1.5e-6;
@@ -63,6 +94,7 @@ int main(void)
         ok_rel(c->pulloff_F, b->pulloff_F, 1e-6, "hmat pull-off within 1e-6 of dense on the same grid");
     }
     adh_run_free(&ru), adh_run_free(&rg), adh_run_free(&rh);
+    statics(u, g);
     adh_grid_free(u), adh_grid_free(g);
     return tap_done();
 }
