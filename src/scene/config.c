@@ -37,8 +37,8 @@ double adh_config_spacing(const adh_config *c)
 adh_rings_spec adh_config_rings(const adh_config *c)
 {
     adh_rings_spec s = { .dr = adh_config_spacing(c), .ratio = c->growth, .fine = c->fine_band, .rmax = c->grid_radius };
-    if (isnan(s.rmax))
-        s.rmax = (double)c->nodes * s.dr;
+    if (isnan(s.rmax)) /* the default uniform grid's, whatever the spacing */
+        s.rmax = (double)c->nodes * adh_grid_spacing_for(&c->mat, c->nodes);
     if (isnan(s.fine)) {
         /* protocol's estimate of the contact at the deepest position, and
          * a quarter more, so the contact line sweeps fine rings only */

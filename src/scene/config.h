@@ -67,7 +67,7 @@ typedef struct adh_config {
     int graded;
     double fine_band;              /* m; NAN = 1.25 x the contact expected at the deepest turn */
     double growth;                 /* ratio, 1 to 1.1 (default 1.05) */
-    double grid_radius;            /* m; NAN = the uniform grid's N x spacing */
+    double grid_radius;            /* m; NAN = the default uniform grid's radius */
     adh_relax_settings relax;
     adh_protocol_settings proto;
     adh_mode mode;
