@@ -52,8 +52,13 @@ int adh_rings_resolves(const adh_grid *g, double a);
  * On a uniform grid w_n = dr and rmax / dr = N: the paper's, exactly. */
 double adh_rings_change(const adh_grid *g, const double *du);
 
-/* Before a run: the contact expected at the deepest position lowest (m),
- * the same estimate as adh_protocol_check's, must lie inside the fine band.
+/* The contact radius expected at drive position h0 (m): the larger of the
+ * estimate adh_protocol_check uses for the grid radius (the undeformed
+ * overlap radius, half again for adhesion) and JKR's at overlap z0 - h0,
+ * which is the larger one for soft, strongly adhesive spheres. */
+double adh_rings_contact_estimate(const adh_material *m, double h0);
+/* Before a run: the contact expected at the deepest position lowest (m)
+ * must lie inside the fine band.
  * ADH_SUCCESS, or ADH_EGRID with a sentence in why. Uniform grids pass. */
 int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen);
 

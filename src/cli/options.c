@@ -36,7 +36,7 @@ static const option_doc options[] = {
     { { "spacing", required_argument, 0, OPT_SPACING }, "M", "grid spacing (default 0.0212 sqrt(R z0): 1.5nm at R=10um, z0=0.5nm)" },
     { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)" },
     { { "grid", required_argument, 0, OPT_GRID }, "uniform|graded", "radial grid: N equal rings, or fine rings over the contact then growing ones (default uniform)" },
-    { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M", "graded grid: radius of the fine band (default 1.25 x the contact expected at the deepest turn)" },
+    { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M", "graded grid: radius of the fine band (default 1.25 x the contact expected at the deepest turn, JKR or overlap)" },
     { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)" },
     { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M", "graded grid: outer radius Rmax (default the default uniform grid's, 1.5um at R=10um, z0=0.5nm)" },
     { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat", "how the kernel is held: dense matrix or hierarchical (hmat-oss) (default dense)" },

@@ -1,5 +1,6 @@
 #include "adhere/rings.h"
 
+#include "adhere/models.h"
 #include "adhere/status.h"
 
 #include <math.h>
@@ -181,11 +182,37 @@ int adh_rings_resolves(const adh_grid *g, double a)
     return !g->graded || a < adh_rings_fine_radius(g);
 }
 
+double adh_rings_contact_estimate(const adh_material *m, double h0)
+{
+    double overlap = m->z0 - h0, est = 1.5 * sqrt(2.0 * m->R * fmax(0.0, overlap));
+    /* JKR's overlap rises with a past its fold a_f: bisect on [a_f, hi]. */
+    double Es = 0.5 * m->E, gamma = m->A / (16.0 * M_PI * m->z0 * m->z0), F, ov;
+    double lo = cbrt(M_PI * gamma * m->R * m->R / (8.0 * Es)), hi = lo;
+    for (int i = 0; i < 200; i++) {
+        adh_jkr(m, hi, &F, &ov);
+        if (!(ov < overlap))
+            break;
+        hi *= 2;
+    }
+    adh_jkr(m, lo, &F, &ov);
+    if (!(ov < overlap)) /* the contact is out past JKR's fold */
+        return est;
+    for (int i = 0; i < 100; i++) {
+        double mid = 0.5 * (lo + hi);
+        adh_jkr(m, mid, &F, &ov);
+        if (ov < overlap)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return fmax(est, hi);
+}
+
 int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen)
 {
     if (!g->graded)
         return ADH_SUCCESS;
-    double a_est = 1.5 * sqrt(2.0 * m->R * fmax(0.0, m->z0 - lowest)), fine = adh_rings_fine_radius(g);
+    double a_est = adh_rings_contact_estimate(m, lowest), fine = adh_rings_fine_radius(g);
     if (a_est > 0.9 * fine) {
         snprintf(why, whylen, "fine band radius %g m is too short: the contact at h0 = %g m may reach %g m, and its edge must stay inside the band; use a larger --fine-band",
                  fine, lowest, a_est);

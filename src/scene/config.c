@@ -40,13 +40,12 @@ adh_rings_spec adh_config_rings(const adh_config *c)
     if (isnan(s.rmax)) /* the default uniform grid's, whatever the spacing */
         s.rmax = (double)c->nodes * adh_grid_spacing_for(&c->mat, c->nodes);
     if (isnan(s.fine)) {
-        /* protocol's estimate of the contact at the deepest position, and
-         * a quarter more, so the contact line sweeps fine rings only */
+        /* the contact expected at the deepest position (with no turn, at
+         * h0 = 0), and a quarter more: the contact line sweeps fine rings only */
         double lowest = c->mat.z0;
         for (size_t i = 0; i < c->proto.nturns; i++)
             lowest = fmin(lowest, c->proto.turns[i]);
-        double a_est = 1.5 * sqrt(2.0 * c->mat.R * fmax(c->mat.z0, c->mat.z0 - lowest));
-        s.fine = fmin(s.rmax, 1.25 * a_est);
+        s.fine = fmin(s.rmax, 1.25 * adh_rings_contact_estimate(&c->mat, fmin(lowest, 0.0)));
     }
     return s;
 }

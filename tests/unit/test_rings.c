@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "adhere/kernel.h"
+#include "adhere/models.h"
 #include "adhere/rings.h"
 #include "tap.h"
 
@@ -111,6 +112,18 @@ int main(void)
     bad = spec;
     bad.rmax = 1e-7;
     ok(adh_rings_spec_validate(&bad, why, sizeof why) != 0 && adh_rings_alloc(&bad) == NULL, "rmax inside the fine band refused");
+
+    /* The fine band's contact estimate: JKR's radius where it exceeds the
+     * overlap estimate (soft, adhesive), never below either. */
+    adh_material m = adh_material_default();
+    m.E = 1e8; /* sigma = 22.5 */
+    double h0 = -2e-9, est = adh_rings_contact_estimate(&m, h0), F, ov;
+    double hertz = 1.5 * sqrt(2.0 * m.R * (m.z0 - h0));
+    adh_jkr(&m, est, &F, &ov);
+    ok(est > hertz && fabs(ov - (m.z0 - h0)) < 1e-3 * (m.z0 - h0),
+       "sigma 22.5: estimate %.1f nm is JKR's at overlap z0 - h0 (%.3f nm), above the overlap rule's %.1f nm", est * 1e9, ov * 1e9, hertz * 1e9);
+    m.E = 1e11; /* sigma = 0.02: stiff, the overlap rule is the larger */
+    ok_rel(adh_rings_contact_estimate(&m, h0), hertz, 1e-12, "stiff spheres: the overlap rule's estimate");
 
     adh_grid_free(a3), adh_grid_free(a4);
     free(du), free(edge);
