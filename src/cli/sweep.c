@@ -371,10 +371,11 @@ int adh_sweep_main(const adh_cli *cli)
                 fprintf(stderr, "adhere: warning: run %zu: %s (--force; its summary.tsv: resolved 0)\n", i + 1, msg);
             }
         }
-        g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
-        k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;   /* built before the handler: a signal still ends the program */
+        int kst;
+        g = adh_config_grid_alloc(cfg);
+        k = g ? adh_config_kernel_alloc(cfg, g, &kst) : NULL;   /* built before the handler: a signal still ends the program */
         if (!k) {
-            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
+            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
             adh_grid_free(g);
             return ADH_EXIT_SOLVER;
         }

@@ -1,5 +1,6 @@
 #include "adhere/protocol.h"
 #include "adhere/cycle.h"
+#include "adhere/rings.h"
 #include "adhere/clock.h"
 
 #include <math.h>
@@ -122,6 +123,8 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
                  g->dr, edge, m->A / (16.0 * M_PI * m->z0 * m->z0) * sqrt(m->R / pow(m->z0, 3)) / m->E, 5.0 * edge);
         return ADH_EGRID;
     }
+    if (adh_rings_check(g, m, lowest, why, whylen) != ADH_SUCCESS)
+        return ADH_EGRID;
     double tail = fabs(adh_rigid_force(m, gap_edge));
     double scale = fabs(adh_dmt_pulloff(m));
     if (tail > 1e-3 * scale) {
@@ -276,7 +279,7 @@ static int drive_step(runner *rn, double h0, int branch, int path, size_t dwell,
         return prc;
     if (wants_profile(rn->ps, h0) && push_profile(rn->run, s, branch, path) != ADH_SUCCESS)
         return ADH_ENOMEM;
-    if (o->a >= 0.9 * rn->g->rmax)
+    if (o->a >= 0.9 * rn->g->rmax || !adh_rings_resolves(rn->g, o->a))
         return ADH_EGRID;
     if (rn->cb && rn->cb(o, rn->run, rn->ctx)) {
         rn->run->interrupted = 1;
