@@ -154,6 +154,8 @@ int adh_batch_main(const adh_cli *cli)
     /* caught from here: a large ring kernel takes seconds to build */
     adh_interrupt_catch();
     int kst = ADH_ENOMEM;
+    if (g)
+        adh_ready_phase("kernel");
     adh_kernel *k = g ? adh_config_kernel_alloc(cfg, g, &kst) : NULL;
     if (!rigid && !k) {
         if (kst == ADH_EINTR)
