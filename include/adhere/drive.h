@@ -32,15 +32,20 @@ typedef struct adh_drive adh_drive;
 
 /* Every limit of a run, in one place, for every driver (flags, scene files,
  * the TUI's fields and :set): the material, the relax settings (and eps
- * above its rounding floor on n nodes, relaxation only), the protocol
- * (step, turns, start, R; adh_protocol_check) and the grid of n nodes
- * spacing dr (N, spacing, a radius that holds the contact). n = 0: rigid
- * spheres, no grid. ADH_SUCCESS; ADH_EINVAL for a value outside its limits,
- * ADH_EGRID for a grid that cannot hold the run, each with a sentence
- * naming the value and what is allowed. Whether the grid resolves the
- * contact is adh_grid_check's question (a driver may run it anyway). */
+ * above its rounding floor on the grid's nodes, relaxation only), the
+ * protocol (step, turns, start, R; adh_protocol_check) and the grid g (N,
+ * spacing, a radius and a graded grid's fine band that hold the contact;
+ * only n, dr, rmax and a graded grid's edges are read, so a uniform grid
+ * need not be built: adh_drive_uniform_grid). g = NULL: rigid spheres, no
+ * grid. ADH_SUCCESS; ADH_EINVAL for a value outside its limits, ADH_EGRID
+ * for a grid that cannot hold the run, each with a sentence naming the
+ * value and what is allowed. Whether the grid resolves the contact is
+ * adh_grid_check's question (a driver may run it anyway, marked). */
 int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                    adh_grid_use use, size_t n, double dr, char *why, size_t whylen);
+                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen);
+/* The description of a uniform grid of n nodes of spacing dr, without its
+ * nodes (r = NULL): enough for adh_drive_check and adh_protocol_check. */
+adh_grid adh_drive_uniform_grid(size_t n, double dr);
 
 /* The grid and kernel are borrowed and must outlive the drive. NULL when
  * out of memory. */

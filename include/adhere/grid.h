@@ -10,6 +10,11 @@ typedef struct adh_grid {
     double dr;     /* spacing Delta, m */
     double rmax;   /* N * dr, m */
     double *r;     /* node radii, length n */
+    /* A graded grid (adhere/rings.h) has rings of arbitrary edges, node n at
+     * the middle of ring [edge[n], edge[n+1]]; dr is then its finest ring
+     * width. Zero and NULL here: the uniform grid above, edge[n] = n dr. */
+    int graded;
+    double *edge;  /* length n + 1 when graded, in the block of r */
 } adh_grid;
 
 /* The paper's Delta = 1.5 nm at R = 10 um, z0 = 0.5 nm, scaled with sqrt(R z0)

@@ -17,8 +17,20 @@ typedef enum adh_kernel_type {
     ADH_KERNEL_RING = 1     /* exact for piecewise-constant pressure on rings */
 } adh_kernel_type;
 
+/* How the influence matrix is held: the dense matrix (N^2 numbers, the
+ * oracle), or a hierarchical matrix (adhere/hmatrix.h: O(N log N), the
+ * product within ~1e-10 of the dense one). Both give the same apply, entry
+ * and diagonal. */
+typedef enum adh_kernel_storage {
+    ADH_STORAGE_DENSE = 0,
+    ADH_STORAGE_HMAT = 1
+} adh_kernel_storage;
+
 typedef struct adh_kernel adh_kernel;
 
+/* The ring kernel takes any grid, graded too (adhere/rings.h): ring j's
+ * influence is D(r, edge[j+1]) - D(r, edge[j]). The paper's kernel takes
+ * the uniform grid only (NULL for a graded one). */
 adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type);
 /* The same, polling the caller's cancel flag (may be NULL) once per column:
  * a large ring kernel takes seconds. NULL with *status ADH_EINTR when the
@@ -26,7 +38,20 @@ adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type);
 adh_kernel *adh_kernel_alloc_cancel(const adh_grid *g, adh_kernel_type type,
                                     const volatile sig_atomic_t *cancel, int *status);
 void adh_kernel_free(adh_kernel *k);
+/* The kernel held as storage s. adh_kernel_alloc is the dense one. */
+adh_kernel *adh_kernel_alloc_stored(const adh_grid *g, adh_kernel_type type, adh_kernel_storage s);
+/* The same, polling cancel as adh_kernel_alloc_cancel does (the dense
+ * build; a hierarchical one is assembled in one call). */
+adh_kernel *adh_kernel_alloc_stored_cancel(const adh_grid *g, adh_kernel_type type, adh_kernel_storage s,
+                                           const volatile sig_atomic_t *cancel, int *status);
 adh_kernel_type adh_kernel_kind(const adh_kernel *k);
+adh_kernel_storage adh_kernel_storage_of(const adh_kernel *k);
+/* "dense" or "hmat". */
+const char *adh_kernel_storage_name(adh_kernel_storage s);
+/* 0 on success, -1 when name is neither "dense" nor "hmat". */
+int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s);
+/* Bytes the stored matrix holds. */
+size_t adh_kernel_bytes(const adh_kernel *k);
 const char *adh_kernel_name(adh_kernel_type type);
 /* 0 on success, -1 when name is neither "paper" nor "ring". */
 int adh_kernel_parse(const char *name, adh_kernel_type *type);
@@ -39,7 +64,11 @@ void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double 
 /* The complete disk integral D(r, a) = int_0^a k(r, t) t dt (closed form). */
 double adh_disk_integral(double r, double a);
 
-/* Row n of the dense influence matrix W (out = W p), for tests and Jacobians. */
+/* Entry (n, j) of the influence matrix W (out = W p), for tests and
+ * Jacobians: read from the dense matrix, or from the closed form (the same
+ * numbers) under hierarchical storage. */
 double adh_kernel_entry(const adh_kernel *k, size_t n, size_t j);
+/* W_nn: the self-influence of node n's ring (a Jacobi preconditioner). */
+double adh_kernel_diagonal(const adh_kernel *k, size_t n);
 
 #endif

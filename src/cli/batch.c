@@ -141,7 +141,7 @@ int adh_batch_main(const adh_cli *cli)
         return adh_sweep_main(cli);
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
     int rigid = cfg->mode == ADH_MODE_RIGID;
-    adh_grid *g = rigid ? NULL : adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
+    adh_grid *g = rigid ? NULL : adh_config_grid_alloc(cfg);
     /* --force on a grid coarser than the resolved limit: said even with -q */
     if (!rigid) {
         adh_grid_report gr;
@@ -154,13 +154,15 @@ int adh_batch_main(const adh_cli *cli)
     /* caught from here: a large ring kernel takes seconds to build */
     adh_interrupt_catch();
     int kst = ADH_ENOMEM;
-    adh_kernel *k = g ? adh_kernel_alloc_cancel(g, cfg->kernel, cfg->relax.cancel, &kst) : NULL;
+    if (g)
+        adh_ready_phase("kernel");
+    adh_kernel *k = g ? adh_config_kernel_alloc(cfg, g, &kst) : NULL;
     if (!rigid && !k) {
         if (kst == ADH_EINTR)
             fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
                     adh_interrupt_signal(), cfg->nodes);
         else
-            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
+            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
         adh_interrupt_release();
         adh_grid_free(g);
         return kst == ADH_EINTR ? adh_interrupt_exit() : ADH_EXIT_SOLVER;

@@ -14,8 +14,13 @@ static void on_signal(int sig)
     received = sig;
 }
 
+static int caught;   /* catch twice, release once: the first old handlers stay saved */
+
 void adh_interrupt_catch(void)
 {
+    if (caught)
+        return;
+    caught = 1;
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
@@ -27,6 +32,9 @@ void adh_interrupt_catch(void)
 
 void adh_interrupt_release(void)
 {
+    if (!caught)
+        return;
+    caught = 0;
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
     sigaction(SIGHUP, &old_hup, NULL);

@@ -19,7 +19,8 @@ enum {
     OPT_SPACING = 256, OPT_START, OPT_TURN, OPT_KERNEL, OPT_REPLAY, OPT_SCREEN, OPT_SIZE,
     OPT_NO_CLOCK, OPT_LIST_KEYS, OPT_NO_PLOT, OPT_PLOTS, OPT_PROFILES, OPT_DRIVE_SPEED,
     OPT_GNUPLOT_STYLE, OPT_PLAN, OPT_DWELL, OPT_MODE, OPT_REFERENCE, OPT_COST, OPT_COST_EPS,
-    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE, OPT_DATA
+    OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE, OPT_DATA,
+    OPT_GRID, OPT_FINE_BAND, OPT_GROWTH, OPT_GRID_RADIUS, OPT_OPERATOR
 };
 
 typedef struct option_doc {
@@ -39,6 +40,11 @@ static const option_doc options[] = {
     { { "spacing", required_argument, 0, OPT_SPACING }, "M", "grid spacing (default: the paper's 0.0212 sqrt(R z0), or finer where the contact edge needs it)" },
     { { "force", no_argument, 0, OPT_FORCE }, NULL, "run a grid coarser than the resolved limit (0.45 edge-zone widths, static 0.3); marked resolved 0" },
     { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)" },
+    { { "grid", required_argument, 0, OPT_GRID }, "uniform|graded", "radial grid: N equal rings, or fine rings over the contact then growing ones (default uniform)" },
+    { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M", "graded grid: radius of the fine band (default 1.25 x the contact expected at the deepest turn, JKR or overlap)" },
+    { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)" },
+    { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M", "graded grid: outer radius Rmax (default the default uniform grid's, 1.5um at R=10um, z0=0.5nm)" },
+    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat", "how the kernel is held: dense matrix or hierarchical (hmat-oss) (default dense)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
     { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)" },
@@ -161,6 +167,31 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
     case OPT_SPACING: return quantity(name, arg, ADH_Q_LENGTH, &cfg->spacing, why, n);
     case OPT_START: return quantity(name, arg, ADH_Q_LENGTH, &cfg->proto.start, why, n);
     case OPT_DRIVE_SPEED: return quantity(name, arg, ADH_Q_SPEED, &cfg->drive_speed, why, n);
+    case OPT_FINE_BAND: return quantity(name, arg, ADH_Q_LENGTH, &cfg->fine_band, why, n);
+    case OPT_GRID_RADIUS: return quantity(name, arg, ADH_Q_LENGTH, &cfg->grid_radius, why, n);
+    case OPT_GROWTH: {
+        char *end;
+        double g = strtod(arg, &end);
+        if (end == arg || *end || !(g >= 1.0 && g <= ADH_RINGS_MAX_RATIO)) {
+            snprintf(why, n, "--growth: '%s' is not allowed: use a ratio from 1 to %g", arg, ADH_RINGS_MAX_RATIO);
+            return 2;
+        }
+        cfg->growth = g;
+        return 0;
+    }
+    case OPT_GRID:
+        if (strcmp(arg, "uniform") != 0 && strcmp(arg, "graded") != 0) {
+            snprintf(why, n, "--grid: '%s' is not a grid: use uniform or graded", arg);
+            return 2;
+        }
+        cfg->graded = strcmp(arg, "graded") == 0;
+        return 0;
+    case OPT_OPERATOR:
+        if (adh_kernel_storage_parse(arg, &cfg->storage) != 0) {
+            snprintf(why, n, "--operator: '%s' is not an operator: use dense or hmat", arg);
+            return 2;
+        }
+        return 0;
     case 'N':
     case OPT_MAX_ITER:
     case OPT_DWELL: {
@@ -512,18 +543,34 @@ static int readable_file(const char *opt, const char *path, char *why, size_t wh
 
 static int validate_run(const adh_config *cfg, char *why, size_t whylen)
 {
+    /* the material first (adh_drive_check meets it again): a graded grid is
+     * built from it below */
+    if (adh_material_validate(&cfg->mat, why, whylen) != ADH_SUCCESS ||
+        adh_relax_settings_validate(&cfg->relax, why, whylen) != ADH_SUCCESS)
+        return 2;
     if (cfg->gnuplot_style[0] && readable_file("gnuplot-style", cfg->gnuplot_style, why, whylen))
         return 2;
-    double dr = cfg->mode == ADH_MODE_RIGID ? NAN : adh_config_spacing(cfg);
-    if (adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, adh_config_grid_use(cfg),
-                        cfg->mode == ADH_MODE_RIGID ? 0 : cfg->nodes, dr, why, whylen) != ADH_SUCCESS)
-        return 2;
     if (cfg->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
-        return 0;
+        return adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, ADH_GRID_RELAX, NULL, why, whylen) == ADH_SUCCESS ? 0 : 2;
     if (!(isfinite(cfg->drive_speed) && cfg->drive_speed > 0 && cfg->drive_speed < 1e3)) {
         snprintf(why, whylen, "drive speed %g m/s is not allowed: it must be above 0 and below 1000 m/s", cfg->drive_speed);
         return 2;
     }
+    if (adh_config_grid_check(cfg, why, whylen) != 0)
+        return 2;
+    /* a uniform grid is checked from its description; a graded one is built */
+    double dr = adh_config_spacing(cfg);
+    adh_grid uniform = adh_drive_uniform_grid(cfg->nodes, dr);
+    adh_grid *g = cfg->graded ? adh_config_grid_alloc(cfg) : &uniform;
+    if (!g) {
+        snprintf(why, whylen, "out of memory for a grid of %zu nodes", cfg->nodes);
+        return 2;
+    }
+    int rc = adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, adh_config_grid_use(cfg), g, why, whylen);
+    if (g != &uniform)
+        adh_grid_free(g);
+    if (rc != ADH_SUCCESS)
+        return 2;
     adh_grid_report gr;
     adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);
     if (cfg->mode != ADH_MODE_RIGID && !gr.resolved && !cfg->force) {

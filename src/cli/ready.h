@@ -6,8 +6,8 @@
 #ifndef ADH_CLI_READY_H
 #define ADH_CLI_READY_H
 
-/* Appends "PHASE\n" (relax, static, rigid, reference, dwell, plot, cost,
- * sweep) in one write, so a reader sees the line whole or not at all. */
+/* Appends "PHASE\n" (kernel, relax, static, rigid, reference, dwell, plot,
+ * cost, sweep) in one write, so a reader sees the line whole or not at all. */
 void adh_ready_phase(const char *phase);
 /* Appends "step" once per process: the first solved step. */
 void adh_ready_mark(void);

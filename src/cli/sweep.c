@@ -371,12 +371,21 @@ int adh_sweep_main(const adh_cli *cli)
                 fprintf(stderr, "adhere: warning: run %zu: %s (--force; its summary.tsv: resolved 0)\n", i + 1, msg);
             }
         }
-        g = adh_grid_alloc(cfg->nodes, adh_config_spacing(cfg));
-        k = g ? adh_kernel_alloc(g, cfg->kernel) : NULL;   /* built before the handler: a signal still ends the program */
+        /* caught from here: a large ring kernel takes seconds to build */
+        adh_interrupt_catch();
+        int kst = ADH_ENOMEM;
+        g = adh_config_grid_alloc(cfg);
+        adh_ready_phase("kernel");
+        k = g ? adh_config_kernel_alloc(cfg, g, &kst) : NULL;
         if (!k) {
-            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", cfg->nodes);
+            if (kst == ADH_EINTR)
+                fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
+                        adh_interrupt_signal(), g ? g->n : cfg->nodes);
+            else
+                fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
+            adh_interrupt_release();
             adh_grid_free(g);
-            return ADH_EXIT_SOLVER;
+            return kst == ADH_EINTR ? adh_interrupt_exit() : ADH_EXIT_SOLVER;
         }
     }
     adh_run *runs = calloc(n, sizeof *runs);
@@ -386,6 +395,7 @@ int adh_sweep_main(const adh_cli *cli)
     int jobs = adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
     if (!runs || !sres || !status || !tables || !threads) {
+        adh_interrupt_release();
         fprintf(stderr, "adhere: out of memory for %zu runs\n", n);
         free(runs), free(sres), free(status), free(tables), free(threads);
         adh_kernel_free(k), adh_grid_free(g);

@@ -84,10 +84,24 @@ int adh_write_summary(FILE *f, const void *ctx)
     kv(f, "A", c->mat.A);
     kv(f, "z0", c->mat.z0);
     kv(f, "R", c->mat.R);
-    kv(f, "nodes", (double)c->nodes);
-    kv(f, "spacing", adh_config_spacing(c));
-    kv(f, "rmax", (double)c->nodes * adh_config_spacing(c));
+    if (c->graded) {
+        /* the rings actually built: N and Rmax follow from the spec */
+        adh_rings_spec rs = adh_config_rings(c);
+        adh_grid *g = adh_rings_alloc(&rs);
+        kv(f, "nodes", g ? (double)g->n : NAN);
+        kv(f, "spacing", rs.dr);
+        kv(f, "rmax", g ? g->rmax : NAN);
+        fprintf(f, "grid\tgraded\n");
+        kv(f, "fine_band", rs.fine);
+        kv(f, "growth", rs.ratio);
+        adh_grid_free(g);
+    } else {
+        kv(f, "nodes", (double)c->nodes);
+        kv(f, "spacing", adh_config_spacing(c));
+        kv(f, "rmax", (double)c->nodes * adh_config_spacing(c));
+    }
     fprintf(f, "kernel\t%s\n", adh_kernel_name(c->kernel));
+    fprintf(f, "operator\t%s\n", adh_kernel_storage_name(c->storage));
     fprintf(f, "mode\t%s\n", c->mode == ADH_MODE_STATIC ? "static" : "relax");
     kv(f, "eps", c->relax.eps);
     kv(f, "step", c->proto.step);

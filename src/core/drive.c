@@ -7,6 +7,7 @@
 
 #include "adhere/clock.h"
 #include "adhere/observe.h"
+#include "adhere/rings.h"
 #include "adhere/state.h"
 #include "adhere/status.h"
 
@@ -81,33 +82,36 @@ static int cmp_desc(const void *a, const void *b)
 }
 
 int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                    adh_grid_use use, size_t n, double dr, char *why, size_t whylen)
+                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen)
 {
     int rc;
     if ((rc = adh_material_validate(m, why, whylen)) != ADH_SUCCESS ||
         (rc = adh_relax_settings_validate(rs, why, whylen)) != ADH_SUCCESS)
         return rc;
-    if (n > 0 && use == ADH_GRID_RELAX) {
+    if (g && use == ADH_GRID_RELAX) {
         /* eps below the measure's rounding floor: every step would run to the cap */
         double deepest = 0;
         for (size_t i = 0; i < ps->nturns && i < ADH_MAX_TURNS; i++)
             deepest = fmin(deepest, ps->turns[i]);
-        double floor_eps = adh_relax_eps_floor(n, m->z0 - deepest);
+        double floor_eps = adh_relax_eps_floor(g->n, m->z0 - deepest);
         if (rs->eps < floor_eps) {
             snprintf(why, whylen, "eps = %g m is below what double precision can reach on %zu nodes with deformations up to %g m: the smallest eps allowed here is %g m",
-                     rs->eps, n, m->z0 - deepest, floor_eps);
+                     rs->eps, g->n, m->z0 - deepest, floor_eps);
             return ADH_EINVAL;
         }
     }
-    if (n == 0)   /* rigid spheres: eq 22 alone, no grid */
-        return adh_protocol_check(ps, m, NULL, why, whylen);
-    if (!(isfinite(dr) && dr > 0)) {
-        snprintf(why, whylen, "spacing = %g m is not allowed: it must be above 0", dr);
+    if (g && !(isfinite(g->dr) && g->dr > 0)) {
+        snprintf(why, whylen, "spacing = %g m is not allowed: it must be above 0", g->dr);
         return ADH_EINVAL;
     }
-    /* only n, dr and rmax of the grid are read: no nodes are built */
-    adh_grid g = { .n = n, .dr = dr, .rmax = (double)n * dr, .r = NULL };
-    return adh_protocol_check(ps, m, &g, why, whylen);
+    /* g NULL: rigid spheres, eq 22 alone, only the drive is checked */
+    return adh_protocol_check(ps, m, g, why, whylen);
+}
+
+adh_grid adh_drive_uniform_grid(size_t n, double dr)
+{
+    adh_grid g = { .n = n, .dr = dr, .rmax = (double)n * dr, .r = NULL, .graded = 0, .edge = NULL };
+    return g;
 }
 
 int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings *rs,
@@ -208,7 +212,8 @@ static int relax_step(adh_drive *d, double h0, int branch, int path, size_t dwel
     d->c.row = (long)run->nrows - 1;
     if (wants_profile(&d->ps, h0) && push_profile(run, s, branch, path) != ADH_SUCCESS)
         return ADH_ENOMEM;
-    if (o->a >= 0.9 * d->g->rmax)
+    /* the contact at the grid edge, or past a graded grid's fine band */
+    if (o->a >= 0.9 * d->g->rmax || !adh_rings_resolves(d->g, o->a))
         return ADH_EGRID;
     return ADH_SUCCESS;
 }

@@ -10,6 +10,7 @@
 
 #include "adhere/law.h"
 #include "adhere/observe.h"
+#include "adhere/rings.h"
 #include "adhere/status.h"
 
 /* Notation. x = (u, h0); the metric is |x|^2 = (theta sum u_n^2 + h0^2) / z0^2
@@ -561,6 +562,11 @@ static double force_of(const adh_static *w, const adh_state *x)
 static double force_slope(const adh_static *w, const double *D, const double *tu, double th)
 {
     double s = 0, z0 = w->m.z0;
+    if (w->grid->graded) { /* ring areas, as adh_force */
+        for (size_t i = 0; i < w->n; i++)
+            s += adh_rings_weight(w->grid, i) * D[i] * z0 * (th - tu[i]);
+        return 2.0 * M_PI * s;
+    }
     for (size_t i = 0; i < w->n; i++)
         s += w->grid->r[i] * D[i] * z0 * (th - tu[i]);
     /* the tail beyond Rmax, 2 pi R W(h0 + Rmax^2/2R), has slope -2 pi R p there
@@ -828,7 +834,7 @@ int adh_static_iterate(adh_static *w)
             w->ds = fmin(w->s.ds_max, w->ds * f);
             rc = w->done ? ADH_SUCCESS : ADH_CONTINUE;
             double a = adh_contact_radius(w->grid, w->st->h, z0);
-            if (a >= 0.9 * w->grid->rmax)
+            if (a >= 0.9 * w->grid->rmax || !adh_rings_resolves(w->grid, a))
                 rc = ADH_EGRID;
             break;
         }

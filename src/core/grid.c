@@ -117,7 +117,7 @@ adh_grid *adh_grid_alloc(size_t n, double dr)
 {
     if (n == 0 || !(dr > 0))
         return NULL;
-    adh_grid *g = malloc(sizeof *g);
+    adh_grid *g = calloc(1, sizeof *g); /* graded = 0, edge = NULL: uniform */
     if (!g)
         return NULL;
     g->r = malloc(n * sizeof *g->r);

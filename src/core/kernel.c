@@ -1,6 +1,8 @@
 #include "adhere/kernel.h"
 #include "adhere/status.h"
 
+#include "adhere/hmatrix.h"
+
 #include <gsl/gsl_cblas.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
@@ -14,6 +16,9 @@ struct adh_kernel {
     double dr;
     const double *r;   /* borrowed from the grid */
     double *w;         /* paper: symmetric k-matrix (times dr); ring: full influence matrix */
+    adh_kernel_storage storage;
+    const adh_grid *g; /* borrowed: hierarchical entries come from its edges */
+    adh_hmatrix *h;    /* hierarchical storage (w is then NULL) */
 };
 
 /* Carlson forms keep every digit as the parameter m -> 1 (one_minus_m passed in
@@ -79,6 +84,11 @@ adh_kernel *adh_kernel_alloc_cancel(const adh_grid *g, adh_kernel_type type,
     /* GSL's default handler aborts; the core reports through status codes. */
     gsl_set_error_handler_off();
     *status = ADH_ENOMEM;
+    /* The paper's diagonal (eqs 19-21) assumes equal cells around each node. */
+    if (type == ADH_KERNEL_PAPER && g->graded) {
+        *status = ADH_EINVAL;
+        return NULL;
+    }
     size_t n = g->n;
     adh_kernel *k = calloc(1, sizeof *k);
     if (!k)
@@ -87,6 +97,7 @@ adh_kernel *adh_kernel_alloc_cancel(const adh_grid *g, adh_kernel_type type,
     k->n = n;
     k->dr = g->dr;
     k->r = g->r;
+    k->g = g;
     k->w = malloc(n * n * sizeof *k->w);
     if (!k->w) {
         adh_kernel_free(k);
@@ -124,7 +135,7 @@ adh_kernel *adh_kernel_alloc_cancel(const adh_grid *g, adh_kernel_type type,
                 *status = ADH_EINTR;
                 return NULL;
             }
-            double b = (double)(j + 1) * d;
+            double b = g->graded ? g->edge[j + 1] : (double)(j + 1) * d;
             for (size_t i = 0; i < n; i++) {
                 double db = adh_disk_integral(g->r[i], b);
                 k->w[i * n + j] = db - prev[i];
@@ -137,10 +148,87 @@ adh_kernel *adh_kernel_alloc_cancel(const adh_grid *g, adh_kernel_type type,
     return k;
 }
 
+/* W_nj from the closed forms, as the dense matrices above hold it. */
+static double formula_entry(const adh_kernel *k, size_t n, size_t j)
+{
+    const adh_grid *g = k->g;
+    if (k->type == ADH_KERNEL_PAPER)
+        return n == j ? paper_diagonal(g->r[n], k->dr) * g->r[j] : k->dr * kernel_k(g->r[n], g->r[j]) * g->r[j];
+    double a = g->graded ? g->edge[j] : (double)j * k->dr;
+    double b = g->graded ? g->edge[j + 1] : (double)(j + 1) * k->dr;
+    return adh_disk_integral(g->r[n], b) - adh_disk_integral(g->r[n], a);
+}
+
+static double hmat_entry(void *ctx, size_t n, size_t j)
+{
+    return formula_entry(ctx, n, j);
+}
+
+adh_kernel *adh_kernel_alloc_stored(const adh_grid *g, adh_kernel_type type, adh_kernel_storage s)
+{
+    int status;
+    return adh_kernel_alloc_stored_cancel(g, type, s, NULL, &status);
+}
+
+adh_kernel *adh_kernel_alloc_stored_cancel(const adh_grid *g, adh_kernel_type type, adh_kernel_storage s,
+                                           const volatile sig_atomic_t *cancel, int *status)
+{
+    if (s == ADH_STORAGE_DENSE)
+        return adh_kernel_alloc_cancel(g, type, cancel, status);
+    gsl_set_error_handler_off();
+    *status = ADH_EINVAL;
+    if (type == ADH_KERNEL_PAPER && g->graded)
+        return NULL;
+    *status = ADH_ENOMEM;
+    adh_kernel *k = calloc(1, sizeof *k);
+    if (!k)
+        return NULL;
+    *k = (adh_kernel){ .type = type, .n = g->n, .dr = g->dr, .r = g->r, .storage = s, .g = g };
+    adh_hmatrix_settings hs = adh_hmatrix_settings_default();
+    k->h = adh_hmatrix_alloc(g->n, g->r, hmat_entry, k, &hs);
+    if (!k->h) {
+        free(k);
+        return NULL;
+    }
+    return k;
+}
+
+adh_kernel_storage adh_kernel_storage_of(const adh_kernel *k)
+{
+    return k->storage;
+}
+
+const char *adh_kernel_storage_name(adh_kernel_storage s)
+{
+    return s == ADH_STORAGE_HMAT ? "hmat" : "dense";
+}
+
+int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s)
+{
+    if (strcmp(name, "dense") == 0)
+        *s = ADH_STORAGE_DENSE;
+    else if (strcmp(name, "hmat") == 0)
+        *s = ADH_STORAGE_HMAT;
+    else
+        return -1;
+    return 0;
+}
+
+size_t adh_kernel_bytes(const adh_kernel *k)
+{
+    return k->h ? adh_hmatrix_bytes(k->h) : k->n * k->n * sizeof *k->w;
+}
+
+double adh_kernel_diagonal(const adh_kernel *k, size_t n)
+{
+    return adh_kernel_entry(k, n, n);
+}
+
 void adh_kernel_free(adh_kernel *k)
 {
     if (!k)
         return;
+    adh_hmatrix_free(k->h);
     free(k->w);
     free(k);
 }
@@ -169,6 +257,13 @@ int adh_kernel_parse(const char *name, adh_kernel_type *type)
 void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double *scratch)
 {
     int n = (int)k->n;
+    if (k->h) {
+        /* A failed product must not pass for a deformation. */
+        if (adh_hmatrix_apply(k->h, p, out, scratch) != 0)
+            for (int i = 0; i < n; i++)
+                out[i] = NAN;
+        return;
+    }
     if (k->type == ADH_KERNEL_PAPER) {
         for (int i = 0; i < n; i++)
             scratch[i] = k->r[i] * p[i];
@@ -180,6 +275,8 @@ void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double 
 
 double adh_kernel_entry(const adh_kernel *k, size_t n, size_t j)
 {
+    if (k->h)
+        return formula_entry(k, n, j);
     double w = k->w[n * k->n + j];
     return k->type == ADH_KERNEL_PAPER ? w * k->r[j] : w;
 }

@@ -4,6 +4,13 @@
 
 #include "adhere/law.h"
 #include "adhere/models.h"
+#include "adhere/rings.h"
+
+/* From node i to node i + 1: dr on the uniform grid, kept exact there. */
+static double node_gap(const adh_grid *g, size_t i)
+{
+    return g->graded ? g->r[i + 1] - g->r[i] : g->dr;
+}
 
 /* Beyond Rmax the surfaces are taken undeformed (u = 0): the gap is
  * s = h0 + r^2/2R, r dr = R ds, and the integral is eq 22's,
@@ -24,6 +31,11 @@ double adh_force(const adh_grid *g, const adh_material *m, const adh_state *s)
     /* eq 13 by the midpoint rule, which is also exact for the ring kernel's
      * piecewise-constant pressure: ring area pi(b^2 - a^2) = 2 pi r_n dr. */
     double sum = 0;
+    if (g->graded) { /* the same: ring area pi(b^2 - a^2) = 2 pi r_n (b - a) */
+        for (size_t i = 0; i < g->n; i++)
+            sum += s->p[i] * adh_rings_weight(g, i);
+        return 2.0 * M_PI * sum;
+    }
     for (size_t i = 0; i < g->n; i++)
         sum += s->p[i] * g->r[i];
     return 2.0 * M_PI * g->dr * sum + adh_force_tail(g, m, s->h0);
@@ -48,21 +60,24 @@ double adh_contact_radius(const adh_grid *g, const double *h, double z0)
     if ((size_t)i + 1 >= g->n)
         return g->rmax;
     double t = (thr - h[i]) / (h[i + 1] - h[i]);
-    return g->r[i] + t * g->dr;
+    return g->r[i] + t * node_gap(g, (size_t)i);
 }
 
 double adh_contact_angle(const adh_grid *g, const double *h, double a)
 {
     if (a <= 0)
         return 0;
-    size_t i = (size_t)(a / g->dr + 0.5);
+    /* the first node past a: on the uniform grid round(a / dr) */
+    size_t i = adh_rings_locate(g, a);
+    if (i + 1 < g->n && a >= 0.5 * (g->r[i] + g->r[i + 1]))
+        i++;
     /* Out from the edge the slope rises steeply, peaks, and falls to a
      * shallow minimum before the sphere's own curvature takes over: that
      * stationary slope is the "apparently linear" flank the paper measures. */
     double prev = 0;
     int past_peak = 0;
     for (; i + 1 < g->n; i++) {
-        double s = (h[i + 1] - h[i]) / g->dr;
+        double s = (h[i + 1] - h[i]) / node_gap(g, i);
         if (!past_peak && s < prev && prev > 0)
             past_peak = 1;
         else if (past_peak && s > prev)

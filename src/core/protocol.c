@@ -1,6 +1,7 @@
 #include "adhere/protocol.h"
 #include "adhere/cycle.h"
 #include "adhere/drive.h"
+#include "adhere/rings.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -127,6 +128,8 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
                  g->dr, edge, m->A / (16.0 * M_PI * m->z0 * m->z0) * sqrt(m->R / pow(m->z0, 3)) / m->E, 5.0 * edge);
         return ADH_EGRID;
     }
+    if (adh_rings_check(g, m, lowest, why, whylen) != ADH_SUCCESS)
+        return ADH_EGRID;
     double tail = fabs(adh_rigid_force(m, gap_edge));
     double scale = fabs(adh_dmt_pulloff(m));
     if (tail > 1e-3 * scale) {

@@ -1,4 +1,5 @@
 #include "adhere/relax.h"
+#include "adhere/rings.h"
 
 #include <float.h>
 #include <math.h>
@@ -298,9 +299,10 @@ static int relax_once(adh_relax *w)
     }
     if (!isfinite(ssq))
         return ADH_ENAN;
-    /* eps as the paper writes it: [sum (u_new - u_old)^2]^(1/2) / N, with
+    /* eps as the paper writes it: [sum (u_new - u_old)^2]^(1/2) / N (its
+     * graded-grid form in adhere/rings.h reduces to this), with
      * u_new the eq 11 deformation before it is mixed in. */
-    w->change = sqrt(ssq) / (double)n;
+    w->change = w->g->graded ? adh_rings_change(w->g, w->unew) : sqrt(ssq) / (double)n;
     /* Converged: keep the state whose change was measured, not one more
      * mixed update of it. With momentum the state must also be at rest: a
      * small change while the last update was large is the state passing

@@ -1,6 +1,7 @@
 #include "scene/config.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "adhere/grid.h"
@@ -15,6 +16,11 @@ void adh_config_default(adh_config *c)
     c->nodes = 1000;
     c->spacing = NAN;
     c->kernel = ADH_KERNEL_PAPER;
+    c->storage = ADH_STORAGE_DENSE;
+    c->graded = 0;
+    c->fine_band = NAN;
+    c->growth = 1.05;
+    c->grid_radius = NAN;
     c->relax = adh_relax_settings_default();
     c->proto = adh_protocol_settings_default();
     c->mode = ADH_MODE_RELAX;
@@ -62,6 +68,50 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
 double adh_config_spacing(const adh_config *c)
 {
     return isnan(c->spacing) ? adh_grid_spacing_for(&c->mat, c->nodes) : c->spacing;
+}
+
+adh_rings_spec adh_config_rings(const adh_config *c)
+{
+    adh_rings_spec s = { .dr = adh_config_spacing(c), .ratio = c->growth, .fine = c->fine_band, .rmax = c->grid_radius };
+    if (isnan(s.rmax)) /* the default uniform grid's, whatever the spacing */
+        s.rmax = (double)c->nodes * adh_grid_spacing_for(&c->mat, c->nodes);
+    if (isnan(s.fine)) {
+        /* the contact expected at the deepest position (with no turn, at
+         * h0 = 0), and a quarter more: the contact line sweeps fine rings only */
+        double lowest = c->mat.z0;
+        for (size_t i = 0; i < c->proto.nturns; i++)
+            lowest = fmin(lowest, c->proto.turns[i]);
+        s.fine = fmin(s.rmax, 1.25 * adh_rings_contact_estimate(&c->mat, fmin(lowest, 0.0)));
+    }
+    return s;
+}
+
+int adh_config_grid_check(const adh_config *c, char *why, size_t whylen)
+{
+    if (!c->graded)
+        return 0;
+    if (c->kernel == ADH_KERNEL_PAPER) {
+        snprintf(why, whylen, "--grid=graded is not allowed with --kernel=paper: the paper's kernel assumes equal cells; use --kernel=ring");
+        return -1;
+    }
+    adh_rings_spec s = adh_config_rings(c);
+    return adh_rings_spec_validate(&s, why, whylen);
+}
+
+adh_grid *adh_config_grid_alloc(const adh_config *c)
+{
+    if (!c->graded)
+        return adh_grid_alloc(c->nodes, adh_config_spacing(c));
+    char why[256];   /* checked with a reason before; here only the verdict counts */
+    if (adh_config_grid_check(c, why, sizeof why) != 0)
+        return NULL;
+    adh_rings_spec s = adh_config_rings(c);
+    return adh_rings_alloc(&s);
+}
+
+adh_kernel *adh_config_kernel_alloc(const adh_config *c, const adh_grid *g, int *status)
+{
+    return adh_kernel_alloc_stored_cancel(g, c->kernel, c->storage, c->relax.cancel, status);
 }
 
 const char *adh_sweep_name(adh_sweep_kind kind)

@@ -12,6 +12,7 @@
 #include "adhere/params.h"
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
+#include "adhere/rings.h"
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
@@ -63,6 +64,13 @@ typedef struct adh_config {
     int force;                     /* --force: run a grid coarser than the resolved limit */
     double spacing;                /* m; NAN = adh_grid_default_rmax / nodes */
     adh_kernel_type kernel;
+    adh_kernel_storage storage;    /* dense (default) or hmat */
+    /* Graded grid (adhere/rings.h): fine rings of the spacing above over
+     * [0, fine_band], then widths growing by `growth` out to grid_radius. */
+    int graded;
+    double fine_band;              /* m; NAN = 1.25 x the contact expected at the deepest turn */
+    double growth;                 /* ratio, 1 to 1.1 (default 1.05) */
+    double grid_radius;            /* m; NAN = the default uniform grid's radius */
     adh_relax_settings relax;
     adh_protocol_settings proto;
     adh_mode mode;
@@ -92,6 +100,19 @@ typedef struct adh_config {
 /* The built-in default scene: Figure 4's material (E = 0.3 GPa), the paper's
  * grid scaled with sqrt(R z0), eps = 1 pm, d = 0.05 nm, turn at -5 nm. */
 void adh_config_default(adh_config *c);
+
+/* The grid the config asks for, uniform or graded (NULL if it cannot be
+ * built: adh_config_grid_check says why), and its kernel in the asked
+ * storage. */
+adh_grid *adh_config_grid_alloc(const adh_config *c);
+/* The kernel the configuration asks for on g, polling its cancel flag
+ * (relax.cancel); NULL with *status ADH_EINTR, ADH_EINVAL or ADH_ENOMEM. */
+adh_kernel *adh_config_kernel_alloc(const adh_config *c, const adh_grid *g, int *status);
+/* The graded grid's spec as the config resolves it (automatic values filled). */
+adh_rings_spec adh_config_rings(const adh_config *c);
+/* 0, or -1 with a sentence naming the value when the grid settings cannot
+ * make a grid (a graded grid with the paper's kernel, a bad ratio...). */
+int adh_config_grid_check(const adh_config *c, char *why, size_t whylen);
 
 /* Name of a sweep parameter as scenes and tables spell it ("E", "sigma",
  * "eps"), "" for none. */

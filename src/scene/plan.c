@@ -290,8 +290,20 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         double dr = adh_config_spacing(cfg);
         fmt_len(dr, a, sizeof a);
         fmt_len(dr * (double)cfg->nodes, b, sizeof b);
-        fprintf(f, "kernel: %s, N = %zu, spacing %s, Rmax %s; %zu built%s\n", adh_kernel_name(cfg->kernel),
-                cfg->nodes, a, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "");
+        if (cfg->graded) {
+            /* the graded grid's own line: its N follows from the spec */
+            adh_rings_spec rs = adh_config_rings(cfg);
+            char c[64];
+            fmt_len(rs.fine, c, sizeof c);
+            fmt_len(rs.rmax, b, sizeof b);
+            fprintf(f, "kernel: %s, %s, graded grid of %zu rings: spacing %s to %s, then growing x%g to Rmax %s; %zu built%s\n",
+                    adh_kernel_name(cfg->kernel), adh_kernel_storage_name(cfg->storage), adh_rings_count(&rs), a, c,
+                    rs.ratio, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "");
+        } else {
+            fprintf(f, "kernel: %s, N = %zu, spacing %s, Rmax %s; %zu built%s%s\n", adh_kernel_name(cfg->kernel),
+                    cfg->nodes, a, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "",
+                    cfg->storage == ADH_STORAGE_HMAT ? ", hierarchical (hmat)" : "");
+        }
         adh_grid_report gr;
         adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);
         fprintf(f, "resolution: %.3g nodes across the contact's edge zone (l/spacing), %s (the limit is %g l)\n",

@@ -384,8 +384,9 @@ static double params_spacing(const tui_params_set *p)
 static int params_check(const tui_params_set *p, adh_mode mode, char *why, size_t whylen)
 {
     adh_protocol_settings ps = params_protocol(p);
+    adh_grid g = adh_drive_uniform_grid(p->nodes, params_spacing(p));
     return adh_drive_check(&p->mat, &p->relax, &ps, mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX,
-                           p->nodes, params_spacing(p), why, whylen);
+                           &g, why, whylen);
 }
 
 static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whylen)

@@ -43,6 +43,14 @@ bad "--momentum: '1' is not allowed: a number from 0 to below 1" --momentum=1
 bad "--momentum: 'x' is not allowed" --momentum=x
 bad "eps = -1e-12 m is not allowed" --eps=-1pm
 bad "'paperish' is not a kernel" --kernel=paperish
+bad "--grid: 'graded2' is not a grid: use uniform or graded" --grid=graded2
+bad "--grid=graded is not allowed with --kernel=paper" --grid=graded
+bad "--growth: '1.2' is not allowed: use a ratio from 1 to 1.1" --grid=graded --kernel=ring --growth=1.2
+bad "--growth: 'x' is not allowed" --growth=x
+bad "fine band radius .* too short" --grid=graded --kernel=ring --fine-band=100nm
+bad "grid radius Rmax = .* is too short" --grid=graded --kernel=ring --grid-radius=200nm
+bad "grid radius 6e-07 m is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
+bad "--operator: 'sparse' is not an operator: use dense or hmat" --operator=sparse
 bad "out of the range of finite numbers" -E 1e999
 bad "step d = 0 m is not allowed" --step=0
 bad "more than one scene" fig1 fig2

@@ -25,7 +25,7 @@ check "turns.tsv names the turning point" awk -F'\t' '!/^#/ && NR>3 && $1 < -1.9
 # share done and the time left; one closing line; -q hides both but not a
 # warning that changes what the numbers mean.
 if command -v script >/dev/null 2>&1; then
-    script -qc "'$ADHERE' --batch --no-plot -N 100 --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm -o '$TMP/tty'" \
+    script -qc "'$ADHERE' --batch --no-plot -N 100 -E 3GPa --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm -o '$TMP/tty'" \
         "$TMP/typescript" >/dev/null 2>&1
     tr '\r' '\n' <"$TMP/typescript" >"$TMP/tty.txt"
     check "in a terminal the progress line gives step, the planned total, percentage and time left" \
@@ -33,13 +33,13 @@ if command -v script >/dev/null 2>&1; then
 else
     ok "# SKIP no script(1) to give the run a terminal"
 fi
-"$ADHERE" --batch -N 100 --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm -o "$TMP/close" >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --batch -N 100 -E 3GPa --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm -o "$TMP/close" >"$TMP/stdout" 2>"$TMP/stderr"
 check "without -q a run ends with one line: seconds, pull-off, jumps, where the files went" \
     sh -c "[ \$(wc -l <'$TMP/stderr') -eq 1 ] && grep -Eq '^adhere: done in [0-9.]+ s: pull-off -[0-9.]+ nN, jump-in [0-9.]+ nm, jump-out [0-9.]+ nm; wrote force.tsv, summary.tsv, turns.tsv, force.png.* in $TMP/close' '$TMP/stderr'"
 check "and no progress line when stderr is not a terminal" sh -c "! grep -q 'step [0-9]* of' '$TMP/stderr'"
-"$ADHERE" --batch -q --no-plot -N 100 --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm -o "$TMP/close" >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --batch -q --no-plot -N 100 -E 3GPa --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm -o "$TMP/close" >"$TMP/stdout" 2>"$TMP/stderr"
 check "-q prints nothing on success" [ ! -s "$TMP/stderr" ]
-"$ADHERE" --batch -q --no-plot -N 100 --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm --max-iter=50 -o "$TMP/cap" >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --batch -q --no-plot -N 100 -E 3GPa --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm --max-iter=50 -o "$TMP/cap" >"$TMP/stdout" 2>"$TMP/stderr"
 check "-q still warns when steps hit the iteration cap ($(head -c 120 "$TMP/stderr"))" \
     grep -q "^adhere: warning: [0-9]* of [0-9]* steps reached the iteration cap (50)" "$TMP/stderr"
 

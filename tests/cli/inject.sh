@@ -8,11 +8,7 @@
 # test fails if any such file appears. Prints TAP.
 . "$(dirname "$0")/lib.sh"
 SRC=${ADHERE_SRC:-$PWD}
-if ! command -v gnuplot >/dev/null 2>&1; then
-    echo "ok 1 # SKIP gnuplot is not installed"
-    echo "1..1"
-    exit 0
-fi
+need_gnuplot
 RUN="--batch --quiet --nodes=100 --force --eps=1e-10 --plots=force"
 cd "$TMP" || exit 1
 nothing_ran() { # what: no PWNED* anywhere under $TMP (those found are removed)

@@ -6,11 +6,7 @@
 # and never "success" (exit 2); a reused -o directory keeps nothing of the
 # run before; no temporary stays behind when gnuplot dies. Prints TAP.
 . "$(dirname "$0")/lib.sh"
-if ! command -v gnuplot >/dev/null 2>&1; then
-    echo "ok 1 # SKIP gnuplot is not installed"
-    echo "1..1"
-    exit 0
-fi
+need_gnuplot
 RUN="--batch --quiet --nodes=100 -E 20GPa --eps=1e-10 --step=1nm"
 cd "$TMP" || exit 1
 mkdir tmp

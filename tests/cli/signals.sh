@@ -117,4 +117,12 @@ check "in a sweep: SIGINT heard (phase announced $came, exit $rc after ${took} s
 check "in a sweep: stopped within 5 s (${took} s)" prompt
 check "sweep.tsv lists every run as interrupted" \
     awk -F'\t' '!/^#/ && $1 != "run" {n++; if ($NF != "interrupted") bad=1} END {exit bad || n != 4}' "$TMP/sweep/sweep.tsv"
+
+# 8. A sweep's shared kernel: a large ring kernel takes seconds to build,
+# and the build polls the flag (before any run, so nothing is written).
+signal_run kernel kernel INT --batch -q --no-plot -N 6000 --spacing=0.25nm --kernel=ring -o "$TMP/kernel" "$TMP/sweep.scene"
+check "building a sweep's kernel: SIGINT heard (phase announced $came, exit $rc after ${took} s)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
+check "building a sweep's kernel: stopped within 5 s (${took} s)" prompt
+check "and says nothing was computed" grep -q "while building the .*kernel: nothing computed" "$TMP/kernel.stderr"
 done_testing

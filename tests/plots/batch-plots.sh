@@ -159,9 +159,11 @@ D=$T/two
 GPLOG=$T/two.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN "$T/two.scene" -o "$D" 2>"$T/two.err"
 rc=$?
 check '[ $rc -eq 0 ] && [ "$(png_size "$D/force.png")" = "$size" ]' "a titled two-turn scene: force.png ($rc: $(head -c 200 "$T/two.err"))"
-check 'grep -q "set multiplot title \"Figure 9 scene\\\\nForce vs position" "$T/two.gp"' \
+head1="set multiplot title 'Figure 9 scene'.\"\\n\".'Force vs position"   # single-quoted runs, a fixed "\n"
+check 'grep -qF "$head1" "$T/two.gp"' \
     "force.png is headed by the scene's label, not by the profiles' title"
-check 'grep -q "set title \"Figure 9: profiles somewhere else (E = 1 GPa)\\\\nSurface profiles" "$T/two.gp"' \
+head2="set title 'Figure 9: profiles somewhere else (E = 1 GPa)'.\"\\n\".'Surface profiles"
+check 'grep -qF "$head2" "$T/two.gp"' \
     "the profiles, the scene's own figure, carry its title"
 check 'grep -q "set size 0.64,0.9$" "$T/two.gp" && grep -q "set size 0.36,0.9$" "$T/two.gp"' \
     "under a two-line heading both panels stop at 90 % of the height, clear of it"

@@ -1,0 +1,65 @@
+/* Graded radial grids: rings of arbitrary edges. A band of uniform fine
+ * rings where the contact line sweeps, then ring widths growing
+ * geometrically out to a radius that holds the force. The uniform grid of
+ * adhere/grid.h is the special case edge[n] = n dr, and every function here
+ * accepts it too. */
+#ifndef ADHERE_RINGS_H
+#define ADHERE_RINGS_H
+
+#include <stddef.h>
+#include "adhere/grid.h"
+#include "adhere/params.h"
+
+#define ADH_RINGS_MAX_RATIO 1.1 /* widest growth allowed between neighbours */
+
+typedef struct adh_rings_spec {
+    double dr;      /* width of the fine rings, m */
+    double fine;    /* the fine band [0, fine]: whole fine rings, rounded up */
+    double ratio;   /* each ring beyond is this much wider, 1 <= ratio <= 1.1 */
+    double rmax;    /* the last ring ends at or just beyond this radius */
+} adh_rings_spec;
+
+/* 0 when the spec is usable, -1 with a message naming the value otherwise. */
+int adh_rings_spec_validate(const adh_rings_spec *s, char *why, size_t whylen);
+/* Rings the spec gives (0 if invalid), without building them. */
+size_t adh_rings_count(const adh_rings_spec *s);
+/* The graded grid of a spec; NULL if invalid or out of memory. */
+adh_grid *adh_rings_alloc(const adh_rings_spec *s);
+/* A grid of the given n + 1 ring edges (edge[0] = 0, strictly increasing);
+ * copied. NULL if the edges are not that. Freed with adh_grid_free. */
+adh_grid *adh_rings_alloc_edges(size_t n, const double *edge);
+
+/* Edge j (0..n) of grid g, graded or uniform. */
+double adh_rings_edge(const adh_grid *g, size_t j);
+/* Width of ring i. */
+double adh_rings_width(const adh_grid *g, size_t i);
+/* (b^2 - a^2) / 2 = r_i (b - a) of ring i = [a, b]: the force is
+ * 2 pi sum p_i times these (exact for piecewise-constant pressure). */
+double adh_rings_weight(const adh_grid *g, size_t i);
+/* The ring holding radius r: i with edge[i] <= r < edge[i+1] (n - 1 past the end). */
+size_t adh_rings_locate(const adh_grid *g, double r);
+
+/* Outer edge of the fine band: the leading rings of the finest width (rmax
+ * on a uniform grid). A contact line past it is no longer resolved. */
+double adh_rings_fine_radius(const adh_grid *g);
+/* Whether a contact of radius a (m) lies inside the fine band. */
+int adh_rings_resolves(const adh_grid *g, double a);
+
+/* The paper's convergence measure [sum (du_n)^2]^(1/2) / N generalised:
+ * du taken as constant over each ring and sampled on the uniform grid of the
+ * finest width dr out to the same radius, i.e.
+ *     [sum_n (w_n / dr) du_n^2]^(1/2) / (rmax / dr),   w_n = ring width.
+ * On a uniform grid w_n = dr and rmax / dr = N: the paper's, exactly. */
+double adh_rings_change(const adh_grid *g, const double *du);
+
+/* The contact radius expected at drive position h0 (m): the larger of the
+ * estimate adh_protocol_check uses for the grid radius (the undeformed
+ * overlap radius, half again for adhesion) and JKR's at overlap z0 - h0,
+ * which is the larger one for soft, strongly adhesive spheres. */
+double adh_rings_contact_estimate(const adh_material *m, double h0);
+/* Before a run: the contact expected at the deepest position lowest (m)
+ * must lie inside the fine band.
+ * ADH_SUCCESS, or ADH_EGRID with a sentence in why. Uniform grids pass. */
+int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen);
+
+#endif
