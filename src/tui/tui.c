@@ -1,7 +1,9 @@
 /* The TUI's loop: reads keys (terminal or replay script), turns them into
  * actions on the session, solves steps in batches so a key can interrupt
- * them, and redraws. Handlers set the status line; the loop draws when idle
- * and, during a long solve, a few times a second. */
+ * them, and redraws. Handlers set the status line and return what must be
+ * redone (redraw, repaint, resolve, replot), as htop's do; the loop does it,
+ * draws when idle and the screen is behind, and, during a long solve, a few
+ * times a second. */
 #define NCURSES_WIDECHAR 1
 #include "tui/tui.h"
 #include "adhere/clock.h"
@@ -40,6 +42,16 @@ static void on_signal(int sig)
 
 enum { EDIT_NONE = 0, EDIT_PARAM, EDIT_COMMAND };
 
+/* What a key's handler leaves to be redone, htop style: the handler
+ * changes state and says what follows from it; the loop does it, once. */
+enum {
+    TODO_NONE = 0,
+    TODO_REDRAW = 1,    /* the screen shows something new */
+    TODO_REPAINT = 2,   /* repaint every cell (resize, ^L), then redraw */
+    TODO_RESOLVE = 4,   /* a solve was asked for: the loop starts the step */
+    TODO_REPLOT = 8     /* write the plots through gnuplot */
+};
+
 typedef struct tui {
     adh_config cfg;
     tui_sim sim;
@@ -70,6 +82,8 @@ typedef struct tui {
     int exit_code;
     char fatal[1024];   /* printed on stderr once the terminal is restored */
     double last_draw;
+    int dirty;          /* the screen is behind the state: draw when idle */
+    int resolve_stay;   /* TODO_RESOLVE: relax again at the present position first */
 } tui;
 
 static void say(tui *t, int error, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
@@ -80,6 +94,7 @@ static void say(tui *t, int error, const char *fmt, ...)
     vsnprintf(t->status, sizeof t->status, fmt, ap);
     va_end(ap);
     t->status_error = error;
+    t->dirty = 1;
 }
 
 static void fmtq(double v, adh_quantity q, char *buf, size_t len)
@@ -139,6 +154,7 @@ static void draw(tui *t)
         tui_draw(&t->sim, v);
     refresh();
     t->last_draw = adh_clock_seconds();
+    t->dirty = 0;
 }
 
 static void stop_all(tui *t)
@@ -382,25 +398,25 @@ static int run_command(tui *t, const adh_replay_item *it, char *why, size_t whyl
     }
 }
 
-static void edit_key(tui *t, int key)
+static int edit_key(tui *t, int key)
 {
     char why[512];
     if (key == 27) {
         t->editing = EDIT_NONE;
         say(t, 0, "edit cancelled; nothing changed");
-        return;
+        return TODO_REDRAW;
     }
     if (key == KEY_BACKSPACE || key == KEY_DC) {
         if (t->textlen)
             t->text[--t->textlen] = '\0';
-        return;
+        return TODO_REDRAW;
     }
     if (key != '\n') {
         if (key >= ' ' && key < 127 && t->textlen + 1 < sizeof t->text) {
             t->text[t->textlen++] = (char)key;
             t->text[t->textlen] = '\0';
         }
-        return;
+        return TODO_REDRAW;
     }
     int mode = t->editing;
     t->editing = EDIT_NONE;
@@ -414,7 +430,7 @@ static void edit_key(tui *t, int key)
             say(t, 1, "%s; nothing changed", why);
         else
             param_changed(t, p);
-        return;
+        return TODO_REDRAW;
     }
     /* The ':' prompt takes what a script's command line takes. */
     char line[160];
@@ -422,10 +438,10 @@ static void edit_key(tui *t, int key)
     adh_replay_script sc;
     int errline;
     if (t->textlen == 0)
-        return;
+        return TODO_REDRAW;
     if (adh_replay_parse(line, strlen(line), &sc, &errline, why, sizeof why) != 0) {
         say(t, 1, "%s", why);
-        return;
+        return TODO_REDRAW;
     }
     int bad = 0;
     for (size_t i = 0; i < sc.n && !bad; i++) {
@@ -438,6 +454,7 @@ static void edit_key(tui *t, int key)
     else if (sc.n && sc.items[0].kind == ADH_REPLAY_DUMP)
         say(t, 0, "screen written to %s", sc.items[0].value);
     adh_replay_free(&sc);
+    return TODO_REDRAW;
 }
 
 static void move_history(tui *t, int redo, long n)
@@ -510,13 +527,11 @@ static void toggle_mode(tui *t)
         say(t, 0, "relaxation: f steps the spheres together and relaxes, r runs to the turn; m: static");
 }
 
-static void handle_key(tui *t, int key)
+static int handle_key(tui *t, int key)
 {
     char why[512], name[32];
-    if (key == KEY_RESIZE) {
-        clearok(curscr, TRUE);
-        return;
-    }
+    if (key == KEY_RESIZE)
+        return TODO_REPAINT | TODO_REDRAW;
     if (t->help) {
         if (key == KEY_NPAGE || key == KEY_PPAGE) {
             int page = LINES - 2 > 1 ? LINES - 2 : 1;
@@ -528,18 +543,17 @@ static void handle_key(tui *t, int key)
         } else {
             t->help = 0;
         }
-        return;
+        return TODO_REDRAW;
     }
-    if (t->editing) {
-        edit_key(t, key);
-        return;
-    }
+    if (t->editing)
+        return edit_key(t, key);
     if (key >= '0' && key <= '9' && (key != '0' || t->count > 0)) {
         t->count = t->count * 10 + (key - '0');
         if (t->count > 99999)
             t->count = 99999;
-        return;
+        return TODO_REDRAW;
     }
+    int todo = TODO_REDRAW;
     long n = t->count ? t->count : 1;
     t->count = 0;
     adh_action a = adh_action_for_key(key);
@@ -553,7 +567,8 @@ static void handle_key(tui *t, int key)
         t->pending_dir = a == ACT_FORWARD ? +1 : -1;
         t->pending_key = key;
         t->run_dir = 0;
-        start_step(t, t->pending_dir, 0);
+        t->resolve_stay = 0;
+        todo |= TODO_RESOLVE;
         break;
     case ACT_RUN: {
         const adh_obs *o = tui_sim_row(&t->sim);
@@ -563,7 +578,8 @@ static void handle_key(tui *t, int key)
             t->pending = 0;
             t->run_dir = +1;
             say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
-            start_step(t, +1, 0);
+            t->resolve_stay = 0;
+            todo |= TODO_RESOLVE;
             break;
         }
         int unload = o && (o->branch < 0 ||
@@ -576,7 +592,8 @@ static void handle_key(tui *t, int key)
         /* Unloading from the loading branch begins, as in --batch, by
          * relaxing again at the turn as the branch's first row: the same
          * script then gives the batch run's rows. */
-        start_step(t, t->run_dir, unload && o->branch > 0);
+        t->resolve_stay = unload && o->branch > 0;
+        todo |= TODO_RESOLVE;
         break;
     }
     case ACT_UNDO: move_history(t, 0, n); break;
@@ -615,12 +632,12 @@ static void handle_key(tui *t, int key)
             param_changed(t, p);
         break;
     }
-    case ACT_PLOTS: write_plots(t); break;
+    case ACT_PLOTS: todo |= TODO_REPLOT; break;
     case ACT_HELP:
         t->help = 1;
         t->view.help_top = 0;
         break;
-    case ACT_REDRAW: clearok(curscr, TRUE); break;
+    case ACT_REDRAW: todo |= TODO_REPAINT; break;
     case ACT_CANCEL: say(t, 0, "%s", ""); break;
     case ACT_QUIT: t->quit = 1; break;
     case ACT_NONE:
@@ -628,7 +645,23 @@ static void handle_key(tui *t, int key)
         say(t, 1, "the key %s does nothing here; ? lists the keys", name);
         break;
     }
+    return todo;
 }
+
+/* Does what a handler left to be redone. The direction of a solve is the
+ * one the handler chose: a run's, else the pending steps'. */
+static void redo_todo(tui *t, int todo)
+{
+    if (todo & TODO_REPAINT)
+        clearok(curscr, TRUE);
+    if (todo & TODO_RESOLVE)
+        start_step(t, t->run_dir ? t->run_dir : t->pending_dir, t->resolve_stay);
+    if (todo & TODO_REPLOT)
+        write_plots(t);
+    if (todo & (TODO_REDRAW | TODO_REPAINT))
+        t->dirty = 1;
+}
+
 
 /* A key while a step is being solved (terminal only): the key that started
  * the steps, held down, asks for one more; any other key pauses. */
@@ -658,9 +691,10 @@ static void handle_item(tui *t, const adh_replay_item *it)
 {
     char why[512];
     if (it->kind == ADH_REPLAY_KEY) {
-        handle_key(t, it->key);
+        redo_todo(t, handle_key(t, it->key));
         return;
     }
+    t->dirty = 1;
     if (run_command(t, it, why, sizeof why) != 0) {
         /* A script that asks for the impossible is a broken script. */
         snprintf(t->fatal, sizeof t->fatal, "%s:%d: %s", t->keys.file, it->line, why);
@@ -757,7 +791,8 @@ static void loop(tui *t)
             run_next(t);
             continue;
         }
-        draw(t);
+        if (t->dirty)
+            draw(t);
         int got = tui_keysrc_next(&t->keys, 250, &it);  /* wakes up to see signals */
         if (got == KEYSRC_END)
             break;
@@ -844,6 +879,7 @@ int adh_tui_main(const adh_config *cfg)
     static tui t;   /* large; and the signal handler's flag lives beside it */
     char why[1024];
     memset(&t, 0, sizeof t);
+    t.dirty = 1;
     t.cfg = *cfg;
     t.headless = cfg->replay[0] != '\0';
     if (t.cfg.cols < 40 || t.cfg.rows < 12) {
