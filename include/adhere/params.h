@@ -31,4 +31,10 @@ int adh_material_validate(const adh_material *m, char *why, size_t whylen);
 
 void adh_material_derive(const adh_material *m, adh_derived *d);
 
+/* The work of adhesion of the Lennard-Jones law, gamma = A / (16 pi z0^2)
+ * (eq 16), J/m^2, and Tabor's sigma = gamma sqrt(R / z0^3) / E (eq 17):
+ * every module takes them from here. */
+double adh_material_gamma(const adh_material *m);
+double adh_material_sigma(const adh_material *m);
+
 #endif

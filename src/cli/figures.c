@@ -250,7 +250,7 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     /* eq 24 as a curve of sigma: h* = (3 A sqrt(2R) / 8E)^(2/7), E from eq 17 */
     fprintf(f, "\n\n");
     const adh_material *m = &cfg->mat;
-    double gamma = m->A / (16.0 * M_PI * m->z0 * m->z0);
+    double gamma = adh_material_gamma(m);
     for (int k = 0; k <= 200; k++) {
         double s = smin * pow(smax / smin, k / 200.0);
         double E = gamma * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / s;

@@ -16,7 +16,7 @@ typedef struct md_scale {
 static md_scale scale_of(const adh_material *m)
 {
     md_scale s;
-    s.w = m->A / (16.0 * M_PI * m->z0 * m->z0);
+    s.w = adh_material_gamma(m);
     s.K = 2.0 * m->E / 3.0; /* (4/3) E*, E* = E/2 */
     s.R = m->R;
     s.a = cbrt(M_PI * s.w * s.R * s.R / s.K);
@@ -27,8 +27,7 @@ static md_scale scale_of(const adh_material *m)
 
 double adh_md_lambda(const adh_material *m)
 {
-    double gamma = m->A / (16.0 * M_PI * m->z0 * m->z0);
-    double sigma = gamma * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / m->E;
+    double sigma = adh_material_sigma(m);
     return 1.16 * cbrt(4.0) * pow(sigma, 2.0 / 3.0);
 }
 

@@ -5,11 +5,6 @@
 #include "adhere/status.h"
 #include "core/modelcurve.h"
 
-static double gamma_of(const adh_material *m)
-{
-    return m->A / (16.0 * M_PI * m->z0 * m->z0);
-}
-
 double adh_rigid_force(const adh_material *m, double h0)
 {
     /* Rigid spheres cannot reach h0 <= 0: eq 22 has no value there. */
@@ -46,7 +41,7 @@ void adh_jkr(const adh_material *m, double a, double *F, double *overlap)
 {
     /* The paper's gamma = -W(z0) is the whole work of adhesion of the LJ law, so
      * it is JKR's w directly, and the pull-off below is -(3/2) pi gamma R (eq 1). */
-    double Es = m->E / 2.0, w = gamma_of(m);
+    double Es = m->E / 2.0, w = adh_material_gamma(m);
     double a3 = a * a * a;
     if (F)
         *F = 4.0 * Es * a3 / (3.0 * m->R) - sqrt(8.0 * M_PI * w * Es * a3);
@@ -61,12 +56,12 @@ double adh_dmt_force(const adh_material *m, double delta)
 
 double adh_jkr_pulloff(const adh_material *m)
 {
-    return -1.5 * M_PI * gamma_of(m) * m->R;
+    return -1.5 * M_PI * adh_material_gamma(m) * m->R;
 }
 
 double adh_dmt_pulloff(const adh_material *m)
 {
-    return -2.0 * M_PI * gamma_of(m) * m->R;
+    return -2.0 * M_PI * adh_material_gamma(m) * m->R;
 }
 
 double adh_edge_zone(const adh_material *m)
@@ -108,7 +103,7 @@ int adh_model_sample(const adh_material *m, adh_radius_model fn, const void *ctx
     if (!(ov < target))
         return ADH_SUCCESS; /* the whole curve is deeper than h0_min */
     /* the deepest radius: overlap(a) = target, bracketed by doubling */
-    double lo = a_fold, hi = a_fold > 0 ? a_fold : cbrt(M_PI * gamma_of(m) * m->R * m->R / m->E);
+    double lo = a_fold, hi = a_fold > 0 ? a_fold : cbrt(M_PI * adh_material_gamma(m) * m->R * m->R / m->E);
     for (int k = 0;; k++) {
         if ((rc = fn(m, ctx, hi, &F, &ov)) != ADH_SUCCESS)
             return rc;
@@ -163,7 +158,7 @@ static int jkr_at(const adh_material *m, const void *ctx, double a, double *F, d
 
 int adh_jkr_drive_curve(const adh_material *m, double h0_min, adh_model_curve *c)
 {
-    double a_fold = cbrt(M_PI * gamma_of(m) * m->R * m->R / (8.0 * (m->E / 2.0)));
+    double a_fold = cbrt(M_PI * adh_material_gamma(m) * m->R * m->R / (8.0 * (m->E / 2.0)));
     return adh_model_sample(m, jkr_at, NULL, a_fold, cbrt(9.0) * a_fold, h0_min, c);
 }
 

@@ -38,11 +38,21 @@ int adh_material_validate(const adh_material *m, char *why, size_t whylen)
 
 void adh_material_derive(const adh_material *m, adh_derived *d)
 {
-    d->gamma = m->A / (16.0 * M_PI * m->z0 * m->z0);
-    d->sigma = d->gamma * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / m->E;
+    d->gamma = adh_material_gamma(m);
+    d->sigma = adh_material_sigma(m);
     d->mu = cbrt(4.0) * pow(d->sigma, 2.0 / 3.0);
     d->Estar = m->E / 2.0;
     d->F_jkr = adh_jkr_pulloff(m);
     d->F_dmt = adh_dmt_pulloff(m);
     d->h_star = adh_jump_separation(m);
+}
+
+double adh_material_gamma(const adh_material *m)
+{
+    return m->A / (16.0 * M_PI * m->z0 * m->z0);
+}
+
+double adh_material_sigma(const adh_material *m)
+{
+    return adh_material_gamma(m) * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / m->E;
 }

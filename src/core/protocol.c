@@ -125,7 +125,7 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     double edge = adh_edge_zone(m);
     if (ps->nturns > 0 && g->dr > 5.0 * edge) {
         snprintf(why, whylen, "grid spacing %g m is too coarse for this contact: its edge zone is about %g m wide (sigma = %.3g), and a spacing above 5 times that (%g m) locks the contact line to the nodes; use more nodes or a smaller spacing",
-                 g->dr, edge, m->A / (16.0 * M_PI * m->z0 * m->z0) * sqrt(m->R / pow(m->z0, 3)) / m->E, 5.0 * edge);
+                 g->dr, edge, adh_material_sigma(m), 5.0 * edge);
         return ADH_EGRID;
     }
     if (adh_rings_check(g, m, lowest, why, whylen) != ADH_SUCCESS)

@@ -186,7 +186,7 @@ double adh_rings_contact_estimate(const adh_material *m, double h0)
 {
     double overlap = m->z0 - h0, est = 1.5 * sqrt(2.0 * m->R * fmax(0.0, overlap));
     /* JKR's overlap rises with a past its fold a_f: bisect on [a_f, hi]. */
-    double Es = 0.5 * m->E, gamma = m->A / (16.0 * M_PI * m->z0 * m->z0), F, ov;
+    double Es = 0.5 * m->E, gamma = adh_material_gamma(m), F, ov;
     double lo = cbrt(M_PI * gamma * m->R * m->R / (8.0 * Es)), hi = lo;
     for (int i = 0; i < 200; i++) {
         adh_jkr(m, hi, &F, &ov);

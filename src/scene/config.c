@@ -143,7 +143,7 @@ void adh_config_sweep_run(const adh_config *c, size_t i, adh_config *run)
         break;
     case ADH_SWEEP_SIGMA: {
         /* eq 17 solved for E: sigma = gamma sqrt(R/z0^3) / E */
-        double gamma = c->mat.A / (16.0 * M_PI * c->mat.z0 * c->mat.z0);
+        double gamma = adh_material_gamma(&c->mat);
         run->mat.E = gamma * sqrt(c->mat.R / (c->mat.z0 * c->mat.z0 * c->mat.z0)) / v;
         break;
     }
