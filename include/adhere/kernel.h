@@ -48,12 +48,12 @@ adh_kernel_type adh_kernel_kind(const adh_kernel *k);
 adh_kernel_storage adh_kernel_storage_of(const adh_kernel *k);
 /* "dense" or "hmat". */
 const char *adh_kernel_storage_name(adh_kernel_storage s);
-/* 0 on success, -1 when name is neither "dense" nor "hmat". */
+/* ADH_SUCCESS, or ADH_EINVAL when name is neither "dense" nor "hmat". */
 int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s);
 /* Bytes the stored matrix holds. */
 size_t adh_kernel_bytes(const adh_kernel *k);
 const char *adh_kernel_name(adh_kernel_type type);
-/* 0 on success, -1 when name is neither "paper" nor "ring". */
+/* ADH_SUCCESS, or ADH_EINVAL when name is neither "paper" nor "ring". */
 int adh_kernel_parse(const char *name, adh_kernel_type *type);
 
 /* out_n = integral_0^Rmax p(t) k(r_n, t) t dt, discretised; the deformation

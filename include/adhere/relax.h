@@ -40,7 +40,7 @@ typedef struct adh_relax_settings {
 } adh_relax_settings;
 
 adh_relax_settings adh_relax_settings_default(void);
-/* "paper" or "momentum"; 0 on success, -1 otherwise. */
+/* "paper" or "momentum": ADH_SUCCESS, or ADH_EINVAL otherwise. */
 int adh_mix_rule_parse(const char *name, adh_mix_rule *rule);
 /* "paper" or "momentum B": the rule as reports name it. */
 void adh_mix_rule_describe(const adh_relax_settings *s, char *buf, size_t len);

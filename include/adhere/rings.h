@@ -19,7 +19,8 @@ typedef struct adh_rings_spec {
     double rmax;    /* the last ring ends at or just beyond this radius */
 } adh_rings_spec;
 
-/* 0 when the spec is usable, -1 with a message naming the value otherwise. */
+/* ADH_SUCCESS when the spec is usable, ADH_EINVAL with a message naming
+ * the value otherwise. */
 int adh_rings_spec_validate(const adh_rings_spec *s, char *why, size_t whylen);
 /* Rings the spec gives (0 if invalid), without building them. */
 size_t adh_rings_count(const adh_rings_spec *s);

@@ -14,10 +14,10 @@ typedef enum adh_quantity {
 } adh_quantity;
 
 /* Parses text as a finite number in quantity q's SI unit, with an optional
- * metric prefix and unit ("nm", "um", "GPa", "zJ"...). Returns 0, or -1 with a
- * message in why (naming the text and what is allowed). */
+ * metric prefix and unit ("nm", "um", "GPa", "zJ"...). Returns ADH_SUCCESS,
+ * or ADH_EINVAL with a message in why (naming the text and what is allowed). */
 int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *why, size_t whylen);
-/* A whole number in [lo, hi]. */
+/* A whole number in [lo, hi]: ADH_SUCCESS, or ADH_EINVAL with a message. */
 int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, size_t whylen);
 /* The SI unit symbol of q ("m", "Pa", ...), "" for ADH_Q_NONE. */
 const char *adh_quantity_unit(adh_quantity q);

@@ -210,8 +210,8 @@ int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s)
     else if (strcmp(name, "hmat") == 0)
         *s = ADH_STORAGE_HMAT;
     else
-        return -1;
-    return 0;
+        return ADH_EINVAL;
+    return ADH_SUCCESS;
 }
 
 size_t adh_kernel_bytes(const adh_kernel *k)
@@ -250,8 +250,8 @@ int adh_kernel_parse(const char *name, adh_kernel_type *type)
     else if (strcmp(name, "ring") == 0)
         *type = ADH_KERNEL_RING;
     else
-        return -1;
-    return 0;
+        return ADH_EINVAL;
+    return ADH_SUCCESS;
 }
 
 void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double *scratch)

@@ -56,8 +56,8 @@ int adh_mix_rule_parse(const char *name, adh_mix_rule *rule)
     else if (strcmp(name, "momentum") == 0)
         *rule = ADH_MIX_MOMENTUM;
     else
-        return -1;
-    return 0;
+        return ADH_EINVAL;
+    return ADH_SUCCESS;
 }
 
 void adh_mix_rule_describe(const adh_relax_settings *s, char *buf, size_t len)

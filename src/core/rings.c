@@ -11,27 +11,27 @@ int adh_rings_spec_validate(const adh_rings_spec *s, char *why, size_t whylen)
 {
     if (!(isfinite(s->dr) && s->dr > 0)) {
         snprintf(why, whylen, "fine ring width %g m is not allowed: it must be above 0", s->dr);
-        return -1;
+        return ADH_EINVAL;
     }
     if (!(isfinite(s->fine) && s->fine >= s->dr)) {
         snprintf(why, whylen, "fine band radius %g m is not allowed: it must be at least one fine ring (%g m)", s->fine, s->dr);
-        return -1;
+        return ADH_EINVAL;
     }
     if (!(s->ratio >= 1.0 && s->ratio <= ADH_RINGS_MAX_RATIO)) {
         snprintf(why, whylen, "ring growth ratio %g is not allowed: it must be from 1 to %g", s->ratio, ADH_RINGS_MAX_RATIO);
-        return -1;
+        return ADH_EINVAL;
     }
     if (!(isfinite(s->rmax) && s->rmax >= s->fine)) {
         snprintf(why, whylen, "grid radius %g m is not allowed: it must be at least the fine band's %g m", s->rmax, s->fine);
-        return -1;
+        return ADH_EINVAL;
     }
     /* Bounds the ring count: a ratio of 1 past the band is a uniform grid. */
     if (s->rmax / s->dr > 1e8) {
         snprintf(why, whylen, "grid radius %g m over fine width %g m is %g rings wide: at most 1e8 is allowed",
                  s->rmax, s->dr, s->rmax / s->dr);
-        return -1;
+        return ADH_EINVAL;
     }
-    return 0;
+    return ADH_SUCCESS;
 }
 
 /* Walks the edges; fills edge[] when it is not NULL. */
@@ -136,7 +136,7 @@ double adh_rings_weight(const adh_grid *g, size_t i)
 size_t adh_rings_locate(const adh_grid *g, double r)
 {
     if (!(r > 0))
-        return 0;
+        return ADH_SUCCESS;
     if (!g->graded) {
         double i = floor(r / g->dr);
         return i >= (double)g->n ? g->n - 1 : (size_t)i;

@@ -1,4 +1,5 @@
 #include "adhere/units.h"
+#include "adhere/status.h"
 
 #include <errno.h>
 #include <math.h>
@@ -93,7 +94,7 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
         if (why)
             snprintf(why, whylen, "value is missing or longer than %zu characters; expected %s",
                      sizeof buf - 2, quantity_name[q]);
-        return -1;
+        return ADH_EINVAL;
     }
     trim(text, buf, sizeof buf);
     /* strtod accepts "nan", "inf" and hex floats; none is a physical value here. */
@@ -103,7 +104,7 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
     if (!((*c >= '0' && *c <= '9') || *c == '.') || strpbrk(buf, "xX")) {
         if (why)
             snprintf(why, whylen, "'%s' is not a number; expected %s", buf, quantity_name[q]);
-        return -1;
+        return ADH_EINVAL;
     }
     errno = 0;
     char *end;
@@ -111,7 +112,7 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
     if (end == buf) {
         if (why)
             snprintf(why, whylen, "'%s' is not a number; expected %s", buf, quantity_name[q]);
-        return -1;
+        return ADH_EINVAL;
     }
     while (*end == ' ')
         end++;
@@ -124,23 +125,23 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
                 spelling_hint(end, q, hint, sizeof hint);
                 snprintf(why, whylen, "'%s': unknown unit '%s'%s; expected %s", buf, end, hint, quantity_name[q]);
             }
-            return -1;
+            return ADH_EINVAL;
         }
         if (got != q) {
             if (why)
                 snprintf(why, whylen, "'%s' is %s, but %s is wanted here", buf,
                          quantity_name[got], q == ADH_Q_NONE ? "a plain number" : quantity_name[q]);
-            return -1;
+            return ADH_EINVAL;
         }
     }
     v *= factor;
     if (!isfinite(v) || errno == ERANGE) {
         if (why)
             snprintf(why, whylen, "'%s' is out of the range of finite numbers", buf);
-        return -1;
+        return ADH_EINVAL;
     }
     *value = v;
-    return 0;
+    return ADH_SUCCESS;
 }
 
 int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, size_t whylen)
@@ -149,7 +150,7 @@ int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, 
     if (!text || strlen(text) >= sizeof buf - 1) {
         if (why)
             snprintf(why, whylen, "expected a whole number from %ld to %ld", lo, hi);
-        return -1;
+        return ADH_EINVAL;
     }
     trim(text, buf, sizeof buf);
     errno = 0;
@@ -159,10 +160,10 @@ int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, 
         if (why)
             snprintf(why, whylen, "'%s' is not allowed: expected a whole number from %ld to %ld",
                      buf, lo, hi);
-        return -1;
+        return ADH_EINVAL;
     }
     *value = v;
-    return 0;
+    return ADH_SUCCESS;
 }
 
 void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, size_t len)

@@ -7,6 +7,7 @@
 
 #include "adhere/kernel.h"
 #include "adhere/rings.h"
+#include "adhere/status.h"
 #include "tap.h"
 
 /* ||H p - W p|| / ||W p|| for a smooth, a sharply localised (contact-edge
@@ -75,7 +76,7 @@ int main(void)
 
     adh_kernel_storage s = ADH_STORAGE_DENSE;
     ok(adh_kernel_storage_parse("hmat", &s) == 0 && s == ADH_STORAGE_HMAT && adh_kernel_storage_parse("dense", &s) == 0 &&
-           s == ADH_STORAGE_DENSE && adh_kernel_storage_parse("fast", &s) == -1,
+           s == ADH_STORAGE_DENSE && adh_kernel_storage_parse("fast", &s) == ADH_EINVAL,
        "storage names: dense and hmat parse, others refused");
     ok(strcmp(adh_kernel_storage_name(ADH_STORAGE_HMAT), "hmat") == 0, "storage named as parsed");
     adh_grid_free(u);
