@@ -34,11 +34,19 @@ TEST_CPPFLAGS = -Itests/unit -DADH_TEST_DATADIR='"$(CURDIR)/share/adhere"'
 
 BUILD   ?= build
 BIN     ?= adhere
-LIB_SRC  = $(wildcard src/core/*.c src/scene/*.c src/plot/*.c)
+# Three archives, layered: libadhere.a is the core alone (physics, no I/O);
+# scene files and configuration, and the plots, are their own. LIBS lists
+# them in link order (plot uses scene, scene uses the core).
+CORE_OBJ  = $(patsubst %.c,$(BUILD)/%.o,$(wildcard src/core/*.c))
+SCENE_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(wildcard src/scene/*.c))
+PLOT_OBJ  = $(patsubst %.c,$(BUILD)/%.o,$(wildcard src/plot/*.c))
+LIB_OBJ  = $(CORE_OBJ) $(SCENE_OBJ) $(PLOT_OBJ)
 APP_SRC  = $(wildcard src/cli/*.c src/tui/*.c)
-LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
 APP_OBJ  = $(APP_SRC:%.c=$(BUILD)/%.o)
 LIB      = $(BUILD)/libadhere.a
+SCENE_LIB = $(BUILD)/libadhere-scene.a
+PLOT_LIB  = $(BUILD)/libadhere-plot.a
+LIBS     = $(PLOT_LIB) $(SCENE_LIB) $(LIB)
 UNIT_SRC = $(wildcard tests/unit/*.c)
 UNIT_BIN = $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 HARD_SRC = $(wildcard tests/hard/*.c)
@@ -60,11 +68,17 @@ deps:
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null || exit 1; \
 	fi
 
-$(BIN): $(APP_OBJ) $(LIB)
+$(BIN): $(APP_OBJ) $(LIBS)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) -o $@ $(APP_OBJ) $(LIB) $(PKG_LIBS) $(LDFLAGS)
+	$(CC) $(ALL_CFLAGS) -o $@ $(APP_OBJ) $(LIBS) $(PKG_LIBS) $(LDFLAGS)
 
-$(LIB): $(LIB_OBJ)
+$(LIB): $(CORE_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+$(SCENE_LIB): $(SCENE_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+$(PLOT_LIB): $(PLOT_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
@@ -80,17 +94,17 @@ $(BUILD)/%.o: %.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
 
-$(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(LIB) | deps
+$(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(LIBS) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
+	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIBS) $(PKG_LIBS)
 
-$(BUILD)/tests/hard-%: tests/hard/%.c tests/unit/tap.h $(LIB) | deps
+$(BUILD)/tests/hard-%: tests/hard/%.c tests/unit/tap.h $(LIBS) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
+	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIBS) $(PKG_LIBS)
 
-$(BUILD)/tests/bench-%: tests/bench/%.c $(LIB) | deps
+$(BUILD)/tests/bench-%: tests/bench/%.c $(LIBS) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIB) $(PKG_LIBS)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIBS) $(PKG_LIBS)
 
 run: all
 	./$(BIN)
