@@ -41,7 +41,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
 {
     batch_ctx *ctx = vctx;
     if (ctx->stream) {
-        adh_force_row(ctx->stream, o);
+        cli_force_row(ctx->stream, o);
         fflush(ctx->stream);
     }
     if (ctx->progress) {
@@ -49,7 +49,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
         if (t - ctx->last_draw > 0.1) {
             char pr[64];
             ctx->last_draw = t;
-            adh_progress_text(run->nrows, ctx->total, t - ctx->t0, pr, sizeof pr);
+            cli_progress_text(run->nrows, ctx->total, t - ctx->t0, pr, sizeof pr);
             if (ctx->total)
                 fprintf(stderr, "\r  %s step %zu of <=%zu  %-26s h0 %+8.3f nm  F %+10.4g uN ",
                         o->branch > 0 ? "loading  " : "unloading", run->nrows, ctx->total, pr, o->h0 * 1e9, o->F * 1e6);
@@ -63,9 +63,9 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
         for (size_t i = 0; i < ctx->cfg->proto.nturns; i++)
             deepest = fmin(deepest, ctx->cfg->proto.turns[i]);
         if (fabs(o->h0 - deepest) < 1e-6 * ctx->cfg->proto.step)
-            adh_ready_phase("dwell");
+            cli_ready_phase("dwell");
     }
-    return adh_interrupt_step(o, run, NULL);
+    return cli_interrupt_step(o, run, NULL);
 }
 
 /* The closing line: how long, what the cycle measured, where it went. */
@@ -85,7 +85,7 @@ static void closing_line(const adh_config *cfg, const adh_run *run, const adh_st
             jout = tr->jump_out_h0;
         }
     }
-    adh_progress_duration(seconds, t, sizeof t);
+    cli_progress_duration(seconds, t, sizeof t);
     adh_format_quantity(pull, ADH_Q_FORCE, 4, F, sizeof F);
     adh_format_quantity(jin, ADH_Q_LENGTH, 4, in, sizeof in);
     adh_format_quantity(jout, ADH_Q_LENGTH, 4, jo, sizeof jo);
@@ -126,7 +126,7 @@ static int make_dir(const char *dir, char *why, size_t n)
     return 0;
 }
 
-int adh_batch_main(const adh_cli *cli)
+int cli_batch_main(const cli_options *cli)
 {
     const adh_config *cfg = &cli->cfg;
     double t_start = adh_clock_seconds();
@@ -138,7 +138,7 @@ int adh_batch_main(const adh_cli *cli)
         return ADH_EXIT_USAGE;
     }
     if (cfg->sweep.kind != ADH_SWEEP_NONE)
-        return adh_sweep_main(cli);
+        return cli_sweep_main(cli);
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
     int rigid = cfg->mode == ADH_MODE_RIGID;
     adh_grid *g = rigid ? NULL : adh_config_grid_alloc(cfg);
@@ -152,20 +152,20 @@ int adh_batch_main(const adh_cli *cli)
         }
     }
     /* caught from here: a large ring kernel takes seconds to build */
-    adh_interrupt_catch();
+    cli_interrupt_catch();
     int kst = ADH_ENOMEM;
     if (g)
-        adh_ready_phase("kernel");
+        cli_ready_phase("kernel");
     adh_kernel *k = g ? adh_config_kernel_alloc(cfg, g, &kst) : NULL;
     if (!rigid && !k) {
         if (kst == ADH_EINTR)
             fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
-                    adh_interrupt_signal(), cfg->nodes);
+                    cli_interrupt_signal(), cfg->nodes);
         else
             fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
-        adh_interrupt_release();
+        cli_interrupt_release();
         adh_grid_free(g);
-        return kst == ADH_EINTR ? adh_interrupt_exit() : ADH_EXIT_SOLVER;
+        return kst == ADH_EINTR ? cli_interrupt_exit() : ADH_EXIT_SOLVER;
     }
 
     adh_plan plan;
@@ -174,14 +174,14 @@ int adh_batch_main(const adh_cli *cli)
                       plan.static_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
     if (ctx.stream) {
         fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
-        adh_force_header(ctx.stream);
+        cli_force_header(ctx.stream);
     }
     adh_run run;
     adh_run_init(&run);
     adh_static_result sres;
-    adh_ready_phase(rigid ? "rigid" : cfg->mode == ADH_MODE_STATIC ? "static" : "relax");
-    int rc = rigid ? adh_rigid_run(cfg, on_step, &ctx, &run)
-           : cfg->mode == ADH_MODE_STATIC ? adh_cli_static_run(cfg, g, k, on_step, &ctx, &run, &sres)
+    cli_ready_phase(rigid ? "rigid" : cfg->mode == ADH_MODE_STATIC ? "static" : "relax");
+    int rc = rigid ? cli_rigid_run(cfg, on_step, &ctx, &run)
+           : cfg->mode == ADH_MODE_STATIC ? cli_static_run(cfg, g, k, on_step, &ctx, &run, &sres)
            : adh_protocol_run(g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
     /* --reference=static: the equilibrium curve beside the relaxation run. */
     adh_run ref;
@@ -189,8 +189,8 @@ int adh_batch_main(const adh_cli *cli)
     adh_static_result rres;
     int want_ref = cli->reference[0] && cfg->mode == ADH_MODE_RELAX && rc == ADH_SUCCESS && !run.interrupted;
     if (want_ref) {
-        adh_ready_phase("reference");
-        int rrc = adh_cli_static_run(cfg, g, k, NULL, NULL, &ref, &rres);
+        cli_ready_phase("reference");
+        int rrc = cli_static_run(cfg, g, k, NULL, NULL, &ref, &rres);
         if (rrc != ADH_SUCCESS && !ref.interrupted) {
             fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(ref.status));
             want_ref = 0;
@@ -204,10 +204,10 @@ int adh_batch_main(const adh_cli *cli)
     if (run.interrupted || ref.interrupted) {
         if (ref.interrupted)
             snprintf(note, sizeof note, "interrupted by signal %d during the static reference curve (%zu of its points)",
-                     adh_interrupt_signal(), ref.nrows);
+                     cli_interrupt_signal(), ref.nrows);
         else
-            snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", adh_interrupt_signal(), run.nrows);
-        status = adh_interrupt_exit();
+            snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run.nrows);
+        status = cli_interrupt_exit();
     } else if (rc != ADH_SUCCESS) {
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run.nrows, adh_strerror(rc));
         status = ADH_EXIT_SOLVER;
@@ -228,20 +228,20 @@ int adh_batch_main(const adh_cli *cli)
         status = ADH_EXIT_SOLVER;
 
     char keynames[2 * ADH_STATIC_KEYS][32];
-    adh_summary_extra extra[2 * ADH_STATIC_KEYS];
+    cli_summary_extra extra[2 * ADH_STATIC_KEYS];
     size_t nextra = 0;
     if (cfg->mode == ADH_MODE_STATIC)
-        nextra += adh_static_summary_keys(&sres, "", keynames, extra);
+        nextra += cli_static_summary_keys(&sres, "", keynames, extra);
     if (want_ref)
-        nextra += adh_static_summary_keys(&rres, "static_", keynames + nextra, extra + nextra);
+        nextra += cli_static_summary_keys(&rres, "static_", keynames + nextra, extra + nextra);
     /* A force table streamed to a full disk or a closed pipe is lost: say so. */
     if (ctx.stream && (fflush(ctx.stream) != 0 || ferror(ctx.stream))) {
         fprintf(stderr, "adhere: cannot write the force table to standard output: %s\n", strerror(errno));
         status = ADH_EXIT_USAGE;
     }
     int partial = note[0] != '\0';
-    adh_tables tables = { cfg, &run, extra, nextra, partial, note, NULL, ref.interrupted ? "interrupted" : NULL };
-    adh_tables ref_tables = { cfg, &ref, NULL, 0, ref.interrupted, note, NULL, NULL };
+    cli_tables tables = { cfg, &run, extra, nextra, partial, note, NULL, ref.interrupted ? "interrupted" : NULL };
+    cli_tables ref_tables = { cfg, &ref, NULL, 0, ref.interrupted, note, NULL, NULL };
     if (ctx.stream && tables.partial)
         fprintf(ctx.stream, "# PARTIAL: %s\n", note);
     if (out) {
@@ -249,18 +249,18 @@ int adh_batch_main(const adh_cli *cli)
          * summary.tsv comes last, naming what was not written: a summary
          * that says success speaks for the whole directory. */
         char unwritten[512] = "";
-        struct { const char *name; int want; adh_table_writer w; const adh_tables *t; } tab[] = {
-            { "force.tsv", 1, adh_write_force, &tables },
-            { "turns.tsv", run.nturns > 0, adh_write_turns, &tables },
-            { "static.tsv", want_ref, adh_write_force, &ref_tables },
+        struct { const char *name; int want; cli_table_writer w; const cli_tables *t; } tab[] = {
+            { "force.tsv", 1, cli_write_force, &tables },
+            { "turns.tsv", run.nturns > 0, cli_write_turns, &tables },
+            { "static.tsv", want_ref, cli_write_force, &ref_tables },
         };
         for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
             if (!tab[i].want)
                 continue;
-            if (adh_write_atomic(out, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
+            if (cli_write_atomic(out, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = ADH_EXIT_USAGE;
-                adh_names_add(unwritten, sizeof unwritten, tab[i].name);
+                cli_names_add(unwritten, sizeof unwritten, tab[i].name);
             }
         }
         if (!partial) {
@@ -268,16 +268,16 @@ int adh_batch_main(const adh_cli *cli)
              * here is still caught: gnuplot finishes its file, the
              * temporaries go, and the exit says interrupted. */
             char msg[1024] = "", missing[256] = "", fig[1024] = "", plots[2100] = "";
-            adh_ready_phase("plot");
+            cli_ready_phase("plot");
             int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
                                       sizeof missing);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
                 status = prc == 2 ? ADH_EXIT_USAGE : status == ADH_EXIT_OK ? ADH_EXIT_PLOT : status;
             }
-            adh_names_add(unwritten, sizeof unwritten, missing);
+            cli_names_add(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
-            if (!adh_interrupt_signal() && adh_figures_run(cfg, &run, out, fig, sizeof fig) != 0) {
+            if (!cli_interrupt_signal() && cli_figures_run(cfg, &run, out, fig, sizeof fig) != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", fig);
                 if (status == ADH_EXIT_OK)
                     status = ADH_EXIT_PLOT;
@@ -289,7 +289,7 @@ int adh_batch_main(const adh_cli *cli)
                     char p[PATH_MAX + 32];
                     snprintf(p, sizeof p, "%s/%s", out, figs[i].name);
                     if ((cfg->plots & figs[i].bit) && access(p, F_OK) != 0)
-                        adh_names_add(unwritten, sizeof unwritten, figs[i].name);
+                        cli_names_add(unwritten, sizeof unwritten, figs[i].name);
                 }
             }
             if (status == ADH_EXIT_OK && !cfg->quiet) {
@@ -307,17 +307,17 @@ int adh_batch_main(const adh_cli *cli)
             }
         }
         tables.unwritten = unwritten;
-        if (adh_write_atomic(out, "summary.tsv", adh_write_summary, &tables, why, sizeof why) != 0) {
+        if (cli_write_atomic(out, "summary.tsv", cli_write_summary, &tables, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             status = ADH_EXIT_USAGE;
         }
     } else if (status == ADH_EXIT_OK && !cfg->quiet) {
         closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, NULL, "", "");
     }
-    adh_interrupt_release();
-    if (adh_interrupt_signal() && !partial) {
-        fprintf(stderr, "adhere: interrupted by signal %d while plotting; the tables are complete\n", adh_interrupt_signal());
-        status = adh_interrupt_exit();
+    cli_interrupt_release();
+    if (cli_interrupt_signal() && !partial) {
+        fprintf(stderr, "adhere: interrupted by signal %d while plotting; the tables are complete\n", cli_interrupt_signal());
+        status = cli_interrupt_exit();
     }
     adh_run_free(&run);
     adh_run_free(&ref);

@@ -14,6 +14,6 @@ enum {
     ADH_EXIT_INTERRUPTED = 130
 };
 
-int adh_batch_main(const adh_cli *cli);
+int cli_batch_main(const cli_options *cli);
 
 #endif

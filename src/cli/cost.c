@@ -81,7 +81,7 @@ static void *worker(void *arg)
     cost_job *job = arg;
     for (;;) {
         pthread_mutex_lock(&job->lock);
-        size_t i = job->next < job->n && !adh_interrupt_signal() ? job->next++ : job->n;
+        size_t i = job->next < job->n && !cli_interrupt_signal() ? job->next++ : job->n;
         pthread_mutex_unlock(&job->lock);
         if (i >= job->n)
             break;
@@ -98,7 +98,7 @@ static void *worker(void *arg)
         cr->kernel_seconds = adh_clock_seconds() - t0;
         adh_run run;
         adh_run_init(&run);
-        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, adh_interrupt_step, NULL, &run) : kst;
+        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, cli_interrupt_step, NULL, &run) : kst;
         if (kst == ADH_EINTR)
             run.interrupted = 1;
         if (run.interrupted)
@@ -111,7 +111,7 @@ static void *worker(void *arg)
         job->done++;
         if (!job->cfg->quiet) {
             char pr[64];
-            adh_progress_text(job->done, job->n, adh_clock_seconds() - job->t0, pr, sizeof pr);
+            cli_progress_text(job->done, job->n, adh_clock_seconds() - job->t0, pr, sizeof pr);
             fprintf(stderr, "adhere: cost run %zu of %zu (N = %zu, %s, eps = %g pm): %.3g s, %zu iterations; "
                     "%zu of %zu done, %s\n", i + 1, job->n, cr->nodes, adh_kernel_name(cr->kernel), cr->eps * 1e12,
                     cr->seconds, cr->iterations, job->done, job->n, pr);
@@ -126,7 +126,7 @@ static void *worker(void *arg)
     return NULL;
 }
 
-static int parse_lists(const adh_cli *cli, double *eps, size_t *neps, size_t *nodes, size_t *nnodes, char *why, size_t n)
+static int parse_lists(const cli_options *cli, double *eps, size_t *neps, size_t *nodes, size_t *nnodes, char *why, size_t n)
 {
     const char *el = cli->cost_eps[0] ? cli->cost_eps : "2pm,1pm,0.5pm,0.2pm,0.1pm";
     const char *nl = cli->cost_nodes[0] ? cli->cost_nodes : "500,1000,2000";
@@ -281,7 +281,7 @@ static int by_cost(const void *a, const void *b)
     return (cx < cy) - (cx > cy);
 }
 
-int adh_cost_main(const adh_cli *cli)
+int cli_cost_main(const cli_options *cli)
 {
     const adh_config *cfg = &cli->cfg;
     char why[1024];
@@ -310,7 +310,7 @@ int adh_cost_main(const adh_cli *cli)
                 c.nodes = nodes[a];
                 c.relax.eps = eps[e];
                 c.force = 1; /* coarse grids are what the report measures */
-                if (adh_cli_validate(&c, why, sizeof why) != 0) {
+                if (cli_validate(&c, why, sizeof why) != 0) {
                     fprintf(stderr, "adhere: --cost: N = %zu, eps = %g m: %s\n", nodes[a], eps[e], why);
                     free(runs);
                     return ADH_EXIT_USAGE;
@@ -330,8 +330,8 @@ int adh_cost_main(const adh_cli *cli)
     }
     qsort(runs, n, sizeof *runs, by_cost);
 
-    adh_interrupt_catch();
-    adh_ready_phase("cost");
+    cli_interrupt_catch();
+    cli_ready_phase("cost");
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     int jobs = cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
     cost_job job = { .cfg = cfg, .runs = runs, .n = n };
@@ -361,7 +361,7 @@ int adh_cost_main(const adh_cli *cli)
         srun.interrupted = 1;
     adh_static_result sres;
     memset(&sres, 0, sizeof sres);
-    int src = k ? adh_cli_static_run(&sc, g, k, adh_interrupt_step, NULL, &srun, &sres) : ADH_ENOMEM;
+    int src = k ? cli_static_run(&sc, g, k, cli_interrupt_step, NULL, &srun, &sres) : ADH_ENOMEM;
     if (srun.interrupted)
         src = ADH_EINTR;   /* part of a curve is no reference */
     /* a fine h0 grid: lattice-trapping legs are far shorter than d */
@@ -374,7 +374,7 @@ int adh_cost_main(const adh_cli *cli)
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
-    adh_interrupt_release();
+    cli_interrupt_release();
 
     /* The most accurate run: the finest grid, the exact kernel, the smallest eps. */
     /* (only among runs that finished: an interrupted one is no reference) */
@@ -409,9 +409,9 @@ int adh_cost_main(const adh_cli *cli)
         r->err_static[2] = src == ADH_SUCCESS ? rel(r->hysteresis, static_hyst) : NAN;
         r->err_static[3] = src == ADH_SUCCESS ? rel(r->a_turn, static_a) : NAN;
     }
-    if (adh_interrupt_signal())
+    if (cli_interrupt_signal())
         snprintf(job.partial, sizeof job.partial, "interrupted by signal %d: %zu of %zu runs cut short, %zu never started%s",
-                 adh_interrupt_signal(), cut, n, not_run, src == ADH_SUCCESS ? "" : ", static curve not finished");
+                 cli_interrupt_signal(), cut, n, not_run, src == ADH_SUCCESS ? "" : ", static curve not finished");
     job.static_hysteresis = static_hyst;
     job.static_a_turn = static_a;
 
@@ -440,12 +440,12 @@ int adh_cost_main(const adh_cli *cli)
                : r->status == ADH_SUCCESS ? (r->unconverged ? "  (some steps at the cap)" : "")
                                           : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
     }
-    int status = adh_interrupt_signal() ? adh_interrupt_exit() : ADH_EXIT_OK;
+    int status = cli_interrupt_signal() ? cli_interrupt_exit() : ADH_EXIT_OK;
     if (out) {
-        if (adh_write_atomic(out, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
+        if (cli_write_atomic(out, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             status = ADH_EXIT_USAGE;
-        } else if (cfg->plot && !adh_interrupt_signal()) {
+        } else if (cfg->plot && !cli_interrupt_signal()) {
             int prc = plot_cost(&job, out, why, sizeof why);
             if (prc) {
                 fprintf(stderr, "adhere: cost.png not written: %s\n", why);
@@ -455,7 +455,7 @@ int adh_cost_main(const adh_cli *cli)
     }
     if (status == ADH_EXIT_OK && !cfg->quiet) {
         char t[32];
-        adh_progress_duration(adh_clock_seconds() - job.t0, t, sizeof t);
+        cli_progress_duration(adh_clock_seconds() - job.t0, t, sizeof t);
         if (out)
             fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output, cost.tsv%s in %s/\n", t, n,
                     cfg->plot ? " and cost.png" : "", out);

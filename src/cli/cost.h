@@ -8,6 +8,6 @@
 
 #include "cli/options.h"
 
-int adh_cost_main(const adh_cli *cli);
+int cli_cost_main(const cli_options *cli);
 
 #endif

@@ -206,7 +206,7 @@ static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
     return fig_end(fg, "bulge.png", tmp_png);
 }
 
-int adh_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen)
+int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen)
 {
     if (msglen)
         msg[0] = '\0';
@@ -242,10 +242,10 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
         adh_config_sweep_run(cfg, i, &rc);
         adh_derived d;
         adh_material_derive(&rc.mat, &d);
-        double h = adh_sweep_gap_before_jump(&runs[i]);
+        double h = cli_sweep_gap_before_jump(&runs[i]);
         smin = fmin(smin, d.sigma), smax = fmax(smax, d.sigma);
         if (isfinite(h))
-            fprintf(f, "%.17g\t%.17g\t%.17g\t%d\n", d.sigma, h, d.h_star, adh_sweep_jumped(&runs[i], rc.proto.step));
+            fprintf(f, "%.17g\t%.17g\t%.17g\t%d\n", d.sigma, h, d.h_star, cli_sweep_jumped(&runs[i], rc.proto.step));
     }
     /* eq 24 as a curve of sigma: h* = (3 A sqrt(2R) / 8E)^(2/7), E from eq 17 */
     fprintf(f, "\n\n");
@@ -355,7 +355,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     return fig_end(fg, "force.png", tmp_png);
 }
 
-int adh_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, const char *dir,
+int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, const char *dir,
                       char *msg, size_t msglen)
 {
     if (msglen)

@@ -13,11 +13,11 @@
 /* precontact.png and bulge.png in dir when cfg->plots asks for them. 0 (also
  * when none is asked or there is nothing to draw: msg says so), or -1 with
  * msg when gnuplot is missing or fails. */
-int adh_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen);
+int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen);
 
 /* The sweep's combined figure (cfg->sweep.plot) from runs[0..n) in dir.
  * 0, or -1 with msg. */
-int adh_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, const char *dir,
+int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, const char *dir,
                       char *msg, size_t msglen);
 
 #endif

@@ -16,7 +16,7 @@ static void on_signal(int sig)
 
 static int caught;   /* catch twice, release once: the first old handlers stay saved */
 
-void adh_interrupt_catch(void)
+void cli_interrupt_catch(void)
 {
     if (caught)
         return;
@@ -30,7 +30,7 @@ void adh_interrupt_catch(void)
     sigaction(SIGHUP, &sa, &old_hup);
 }
 
-void adh_interrupt_release(void)
+void cli_interrupt_release(void)
 {
     if (!caught)
         return;
@@ -40,24 +40,24 @@ void adh_interrupt_release(void)
     sigaction(SIGHUP, &old_hup, NULL);
 }
 
-int adh_interrupt_signal(void)
+int cli_interrupt_signal(void)
 {
     return received;
 }
 
-const volatile sig_atomic_t *adh_interrupt_flag(void)
+const volatile sig_atomic_t *cli_interrupt_flag(void)
 {
     return &received;
 }
 
-int adh_interrupt_exit(void)
+int cli_interrupt_exit(void)
 {
     return received == SIGHUP ? 128 + SIGHUP : 130;
 }
 
-int adh_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx)
+int cli_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx)
 {
     (void)row, (void)run, (void)ctx;
-    adh_ready_mark();   /* a step is done and signals are caught */
+    cli_ready_mark();   /* a step is done and signals are caught */
     return received != 0;
 }

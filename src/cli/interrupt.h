@@ -9,15 +9,15 @@
 
 #include "adhere/protocol.h"
 
-void adh_interrupt_catch(void);     /* install the handlers */
-void adh_interrupt_release(void);   /* restore the previous ones */
-int adh_interrupt_signal(void);     /* the signal received, 0 if none */
+void cli_interrupt_catch(void);     /* install the handlers */
+void cli_interrupt_release(void);   /* restore the previous ones */
+int cli_interrupt_signal(void);     /* the signal received, 0 if none */
 /* The flag for the solvers' cancel hooks (nonzero once a signal came). */
-const volatile sig_atomic_t *adh_interrupt_flag(void);
+const volatile sig_atomic_t *cli_interrupt_flag(void);
 /* The exit status for the signal received: 129 for SIGHUP, else 130. */
-int adh_interrupt_exit(void);
+int cli_interrupt_exit(void);
 /* An adh_step_cb that asks the solver to stop once a signal came. */
-int adh_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx);
+int cli_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx);
 
 
 #endif

@@ -31,7 +31,7 @@ static int stdout_done(void)
 
 int main(int argc, char **argv)
 {
-    static adh_cli cli;
+    static cli_options cli;
     /* One thread per run: a product of N = 1000 is too small to share, and
      * idle BLAS threads spinning cost more than they give (a coarse Figure 1
      * run: 14 s with them, 1.6 s without). Sweeps run one process thread
@@ -39,19 +39,19 @@ int main(int argc, char **argv)
     if (openblas_set_num_threads)
         openblas_set_num_threads(1);
     char why[1024];
-    if (adh_cli_parse(argc, argv, &cli, why, sizeof why) != 0) {
+    if (cli_parse(argc, argv, &cli, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }
     switch (cli.action) {
     case ADH_ACT_HELP:
-        adh_cli_usage(stdout);
+        cli_usage(stdout);
         return stdout_done();
     case ADH_ACT_VERSION:
         printf("adhere %s\n", ADH_VERSION);
         return stdout_done();
     case ADH_ACT_LIST_KEYS:
-        adh_tui_print_keys(stdout);
+        tui_print_keys(stdout);
         return stdout_done();
     default:
         break;
@@ -66,13 +66,13 @@ int main(int argc, char **argv)
         return ADH_EXIT_USAGE;
     }
     /* --cost replaces N and eps and checks each of its runs itself. */
-    if (cli.action != ADH_ACT_COST && adh_cli_validate(&cli.cfg, why, sizeof why) != 0) {
+    if (cli.action != ADH_ACT_COST && cli_validate(&cli.cfg, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }
     /* The solvers poll the interrupt flag through their cancel hook: a
      * signal is heard inside a step, not only between steps. */
-    cli.cfg.relax.cancel = adh_interrupt_flag();
+    cli.cfg.relax.cancel = cli_interrupt_flag();
     /* A measured curve is read before any work: a bad line stops here. */
     static adh_measured measured;
     if (cli.cfg.data[0]) {
@@ -84,7 +84,7 @@ int main(int argc, char **argv)
     }
     switch (cli.action) {
     case ADH_ACT_BATCH:
-        return adh_batch_main(&cli);
+        return cli_batch_main(&cli);
     case ADH_ACT_PLAN: {
         adh_plan plan;
         adh_plan_make(&cli.cfg, &plan);
@@ -92,8 +92,8 @@ int main(int argc, char **argv)
         return stdout_done();
     }
     case ADH_ACT_COST:
-        return adh_cost_main(&cli);
+        return cli_cost_main(&cli);
     default:
-        return adh_tui_main(&cli.cfg);
+        return tui_main(&cli.cfg);
     }
 }

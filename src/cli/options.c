@@ -79,7 +79,7 @@ static const option_doc options[] = {
 };
 #define NOPTIONS (sizeof options / sizeof options[0])
 
-void adh_cli_usage(FILE *out)
+void cli_usage(FILE *out)
 {
     fprintf(out, "usage: adhere [OPTIONS] [SCENE]\n"
                  "Two elastic spheres with a Lennard-Jones surface force (Attard 2000).\n"
@@ -152,7 +152,7 @@ static int length_list(const char *name, const char *arg, double *out, size_t ca
     return 0;
 }
 
-static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *why, size_t n)
+static int apply(cli_options *cli, int c, const char *arg, const char *name, char *why, size_t n)
 {
     adh_config *cfg = &cli->cfg;
     long v;
@@ -395,7 +395,7 @@ static int split_unit_hint(int argc, char **orig, const char *arg, char *why, si
     return 1;
 }
 
-int adh_cli_parse(int argc, char **argv, adh_cli *cli, char *why, size_t whylen)
+int cli_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
 {
     struct option longopts[NOPTIONS + 1];
     char shortopts[3 * NOPTIONS + 2] = ":";
@@ -508,7 +508,7 @@ int adh_cli_parse(int argc, char **argv, adh_cli *cli, char *why, size_t whylen)
 static int validate_run(const adh_config *cfg, char *why, size_t whylen);
 
 /* A sweep is valid when every one of its runs is (each sets its own E or eps). */
-int adh_cli_validate(const adh_config *cfg, char *why, size_t whylen)
+int cli_validate(const adh_config *cfg, char *why, size_t whylen)
 {
     if (cfg->sweep.kind == ADH_SWEEP_NONE)
         return validate_run(cfg, why, whylen);

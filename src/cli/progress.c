@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 
-void adh_progress_duration(double s, char *buf, size_t len)
+void cli_progress_duration(double s, char *buf, size_t len)
 {
     if (!(s >= 0) || !isfinite(s))
         snprintf(buf, len, "?");
@@ -15,7 +15,7 @@ void adh_progress_duration(double s, char *buf, size_t len)
         snprintf(buf, len, "%d h %02d min", (int)(s / 3600), (int)fmod(s / 60, 60));
 }
 
-void adh_progress_text(size_t done, size_t total, double elapsed, char *buf, size_t len)
+void cli_progress_text(size_t done, size_t total, double elapsed, char *buf, size_t len)
 {
     if (total == 0) {
         snprintf(buf, len, "%zu done", done);
@@ -29,6 +29,6 @@ void adh_progress_text(size_t done, size_t total, double elapsed, char *buf, siz
         return;
     }
     char left[32];
-    adh_progress_duration(elapsed * (double)(total - done) / (double)done, left, sizeof left);
+    cli_progress_duration(elapsed * (double)(total - done) / (double)done, left, sizeof left);
     snprintf(buf, len, "%3.0f %%, about %s left", 100 * frac, left);
 }

@@ -8,8 +8,8 @@
 
 /* "35 %, about 40 s left" for done of total after elapsed seconds, at the
  * pace so far. Before anything is done, "0 %"; with no total, "N done". */
-void adh_progress_text(size_t done, size_t total, double elapsed, char *buf, size_t len);
+void cli_progress_text(size_t done, size_t total, double elapsed, char *buf, size_t len);
 /* A duration as people read it: "12.3 s", "4 min 10 s", "1 h 5 min". */
-void adh_progress_duration(double seconds, char *buf, size_t len);
+void cli_progress_duration(double seconds, char *buf, size_t len);
 
 #endif

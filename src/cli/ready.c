@@ -5,7 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
-void adh_ready_phase(const char *phase)
+void cli_ready_phase(const char *phase)
 {
     const char *path = getenv("ADHERE_READY_FILE");
     if (!path || !*path)
@@ -25,11 +25,11 @@ void adh_ready_phase(const char *phase)
     close(fd);
 }
 
-void adh_ready_mark(void)
+void cli_ready_mark(void)
 {
     static volatile int done;
     if (done)
         return;
     done = 1;
-    adh_ready_phase("step");
+    cli_ready_phase("step");
 }

@@ -8,8 +8,8 @@
 
 /* Appends "PHASE\n" (kernel, relax, static, rigid, reference, dwell, plot,
  * cost, sweep) in one write, so a reader sees the line whole or not at all. */
-void adh_ready_phase(const char *phase);
+void cli_ready_phase(const char *phase);
 /* Appends "step" once per process: the first solved step. */
-void adh_ready_mark(void);
+void cli_ready_mark(void);
 
 #endif

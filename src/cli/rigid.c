@@ -9,7 +9,7 @@
 #include "adhere/status.h"
 #include "scene/plan.h"
 
-int adh_rigid_run(const adh_config *cfg, adh_step_cb cb, void *ctx, adh_run *run)
+int cli_rigid_run(const adh_config *cfg, adh_step_cb cb, void *ctx, adh_run *run)
 {
     const adh_material *m = &cfg->mat;
     double step = cfg->proto.step;

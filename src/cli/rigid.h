@@ -11,6 +11,6 @@
 /* Fills run with one loading row per drive position, start - k d down to
  * adh_plan_rigid_end(cfg). cb (may be NULL) sees every row and may stop the
  * run. ADH_SUCCESS or ADH_ENOMEM. */
-int adh_rigid_run(const adh_config *cfg, adh_step_cb cb, void *ctx, adh_run *run);
+int cli_rigid_run(const adh_config *cfg, adh_step_cb cb, void *ctx, adh_run *run);
 
 #endif

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 
-int adh_cli_static_run(const adh_config *cfg, const adh_grid *g, const adh_kernel *k,
+int cli_static_run(const adh_config *cfg, const adh_grid *g, const adh_kernel *k,
                        adh_step_cb cb, void *ctx, adh_run *run, adh_static_result *res)
 {
     adh_static_settings s = adh_static_settings_default();
@@ -16,8 +16,8 @@ int adh_cli_static_run(const adh_config *cfg, const adh_grid *g, const adh_kerne
     return adh_static_run(g, k, &cfg->mat, &s, cb, ctx, run, res);
 }
 
-size_t adh_static_summary_keys(const adh_static_result *res, const char *prefix,
-                               char names[][32], adh_summary_extra *extra)
+size_t cli_static_summary_keys(const adh_static_result *res, const char *prefix,
+                               char names[][32], cli_summary_extra *extra)
 {
     const struct { const char *key; double value; } v[ADH_STATIC_KEYS] = {
         { "jump_in_h0", res->jump_in_h0 },

@@ -54,7 +54,7 @@ static void *worker(void *arg)
     const adh_config *cfg = job->cfg;
     for (;;) {
         pthread_mutex_lock(&job->lock);
-        size_t i = job->next < cfg->sweep.n && !adh_interrupt_signal() ? job->next++ : cfg->sweep.n;
+        size_t i = job->next < cfg->sweep.n && !cli_interrupt_signal() ? job->next++ : cfg->sweep.n;
         pthread_mutex_unlock(&job->lock);
         if (i >= cfg->sweep.n)
             break;
@@ -64,10 +64,10 @@ static void *worker(void *arg)
         /* each static run allocates its own solver (a dense copy of the
          * shared kernel): nothing of it is shared between threads */
         job->status[i] = rc.mode == ADH_MODE_RIGID
-                       ? adh_rigid_run(&rc, adh_interrupt_step, NULL, run)
+                       ? cli_rigid_run(&rc, cli_interrupt_step, NULL, run)
                        : rc.mode == ADH_MODE_STATIC
-                       ? adh_cli_static_run(&rc, job->grid, job->kernel, adh_interrupt_step, NULL, run, &job->sres[i])
-                       : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, adh_interrupt_step, NULL, run);
+                       ? cli_static_run(&rc, job->grid, job->kernel, cli_interrupt_step, NULL, run, &job->sres[i])
+                       : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, cli_interrupt_step, NULL, run);
         /* tables as soon as a run ends: a long sweep killed later keeps them */
         if (job->out)
             job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out);
@@ -75,7 +75,7 @@ static void *worker(void *arg)
         job->done++;
         if (!cfg->quiet) {
             char pr[64];
-            adh_progress_text(job->done, cfg->sweep.n, adh_clock_seconds() - job->t0, pr, sizeof pr);
+            cli_progress_text(job->done, cfg->sweep.n, adh_clock_seconds() - job->t0, pr, sizeof pr);
             fprintf(stderr, "adhere: run %zu of %zu (%s = %g) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
                     i + 1, cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i],
                     run->interrupted ? "interrupted" : job->status[i] == ADH_SUCCESS ? "done" : adh_strerror(job->status[i]),
@@ -122,7 +122,7 @@ static long first_fold(const adh_run *run)
     return -1;
 }
 
-double adh_sweep_gap_before_jump(const adh_run *run)
+double cli_sweep_gap_before_jump(const adh_run *run)
 {
     long fold = first_fold(run);
     if (fold >= 0)
@@ -131,7 +131,7 @@ double adh_sweep_gap_before_jump(const adh_run *run)
     return at >= 0 && before >= 0 ? run->rows[before].hc : NAN;
 }
 
-int adh_sweep_jumped(const adh_run *run, double step)
+int cli_sweep_jumped(const adh_run *run, double step)
 {
     if (first_fold(run) >= 0)
         return 1;
@@ -141,7 +141,7 @@ int adh_sweep_jumped(const adh_run *run, double step)
     return before >= 0 && run->rows[before].hc - run->rows[at].hc > 2.0 * step ? 1 : 0;
 }
 
-int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
+int cli_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
                           const int *status)
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
@@ -176,11 +176,11 @@ int adh_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, c
         }
         fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%d\t",
                 i + 1, name, cfg->sweep.values[i], rc.mat.E, d.sigma, rc.relax.eps, r->jump_in_h0,
-                adh_sweep_gap_before_jump(r), d.h_star, max_load, pull, out, r->nrows, r->iterations, r->seconds,
-                adh_sweep_jumped(r, rc.proto.step));
+                cli_sweep_gap_before_jump(r), d.h_star, max_load, pull, out, r->nrows, r->iterations, r->seconds,
+                cli_sweep_jumped(r, rc.proto.step));
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : adh_run_status_word(r));
+        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_run_status_word(r));
     }
     return 0;
 }
@@ -195,7 +195,7 @@ typedef struct sweep_tables {
 static int write_sweep(FILE *f, const void *ctx)
 {
     const sweep_tables *t = ctx;
-    return adh_write_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
+    return cli_write_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
 }
 
 /* mkdir -p */
@@ -241,26 +241,26 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     }
     int partial = run->interrupted || rc != ADH_SUCCESS;
     if (run->interrupted)
-        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", adh_interrupt_signal(), run->nrows);
+        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run->nrows);
     else if (rc != ADH_SUCCESS)
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(rc));
     /* a static run's summary.tsv has the batch's static keys */
     char keynames[ADH_STATIC_KEYS][32];
-    adh_summary_extra extra[ADH_STATIC_KEYS];
-    size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? adh_static_summary_keys(sres, "", keynames, extra) : 0;
-    adh_tables t = { &rcfg, run, extra, nextra, partial, note, lost, NULL };
+    cli_summary_extra extra[ADH_STATIC_KEYS];
+    size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? cli_static_summary_keys(sres, "", keynames, extra) : 0;
+    cli_tables t = { &rcfg, run, extra, nextra, partial, note, lost, NULL };
     int status = ADH_EXIT_OK;
     if (data) {
         const char *names[2] = { "force.tsv", run->nturns ? "turns.tsv" : NULL };
-        adh_table_writer writers[2] = { adh_write_force, adh_write_turns };
+        cli_table_writer writers[2] = { cli_write_force, cli_write_turns };
         for (int k = 0; k < 2; k++)
-            if (names[k] && adh_write_atomic(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
+            if (names[k] && cli_write_atomic(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = ADH_EXIT_USAGE;
-                adh_names_add(lost, sizeof lost, names[k]);
+                cli_names_add(lost, sizeof lost, names[k]);
             }
     }
-    if (adh_write_atomic(dir, "summary.tsv", adh_write_summary, &t, why, sizeof why) != 0) {
+    if (cli_write_atomic(dir, "summary.tsv", cli_write_summary, &t, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         status = ADH_EXIT_USAGE;
     }
@@ -303,7 +303,7 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
             status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
         }
     }
-    if (adh_figures_run(&rcfg, run, dir, msg, sizeof msg) != 0) {
+    if (cli_figures_run(&rcfg, run, dir, msg, sizeof msg) != 0) {
         fprintf(stderr, "adhere: run %zu: %s\n", i + 1, msg);
         status = status ? status : ADH_EXIT_PLOT;
         /* the ones asked for and not there (run-K was cleared first) */
@@ -313,7 +313,7 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
             char p[PATH_MAX + 64];
             snprintf(p, sizeof p, "%.4000s/%s", dir, figs[k].name);
             if ((rcfg.plots & figs[k].bit) && access(p, F_OK) != 0)
-                adh_names_add(missing, sizeof missing, figs[k].name);
+                cli_names_add(missing, sizeof missing, figs[k].name);
         }
     }
     if (*missing) {
@@ -336,7 +336,7 @@ static int worse(int a, int b)
     return ra >= rb ? a : b;
 }
 
-int adh_sweep_main(const adh_cli *cli)
+int cli_sweep_main(const cli_options *cli)
 {
     const adh_config *cfg = &cli->cfg;
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
@@ -372,20 +372,20 @@ int adh_sweep_main(const adh_cli *cli)
             }
         }
         /* caught from here: a large ring kernel takes seconds to build */
-        adh_interrupt_catch();
+        cli_interrupt_catch();
         int kst = ADH_ENOMEM;
         g = adh_config_grid_alloc(cfg);
-        adh_ready_phase("kernel");
+        cli_ready_phase("kernel");
         k = g ? adh_config_kernel_alloc(cfg, g, &kst) : NULL;
         if (!k) {
             if (kst == ADH_EINTR)
                 fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
-                        adh_interrupt_signal(), g ? g->n : cfg->nodes);
+                        cli_interrupt_signal(), g ? g->n : cfg->nodes);
             else
                 fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
-            adh_interrupt_release();
+            cli_interrupt_release();
             adh_grid_free(g);
-            return kst == ADH_EINTR ? adh_interrupt_exit() : ADH_EXIT_SOLVER;
+            return kst == ADH_EINTR ? cli_interrupt_exit() : ADH_EXIT_SOLVER;
         }
     }
     adh_run *runs = calloc(n, sizeof *runs);
@@ -395,7 +395,7 @@ int adh_sweep_main(const adh_cli *cli)
     int jobs = adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
     if (!runs || !sres || !status || !tables || !threads) {
-        adh_interrupt_release();
+        cli_interrupt_release();
         fprintf(stderr, "adhere: out of memory for %zu runs\n", n);
         free(runs), free(sres), free(status), free(tables), free(threads);
         adh_kernel_free(k), adh_grid_free(g);
@@ -409,8 +409,8 @@ int adh_sweep_main(const adh_cli *cli)
     if (jobs > 1 && openblas_set_num_threads)
         openblas_set_num_threads(1);
 
-    adh_interrupt_catch();
-    adh_ready_phase("sweep");
+    cli_interrupt_catch();
+    cli_ready_phase("sweep");
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status, .out = out, .tables = tables };
     pthread_mutex_init(&job.lock, NULL);
@@ -426,12 +426,12 @@ int adh_sweep_main(const adh_cli *cli)
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
-    adh_interrupt_release();
+    cli_interrupt_release();
 
     int exit_status = ADH_EXIT_OK;
     for (size_t i = 0; i < n; i++) {
         /* a run never started (interrupted before its turn) counts as interrupted */
-        if (adh_interrupt_signal() && runs[i].nrows == 0)
+        if (cli_interrupt_signal() && runs[i].nrows == 0)
             runs[i].interrupted = 1;
         if (runs[i].interrupted)
             exit_status = worse(exit_status, ADH_EXIT_INTERRUPTED);
@@ -442,7 +442,7 @@ int adh_sweep_main(const adh_cli *cli)
     }
     sweep_tables st = { cfg, runs, sres, status };
     if (!out) {
-        adh_write_sweep_table(stdout, cfg, runs, sres, status);
+        cli_write_sweep_table(stdout, cfg, runs, sres, status);
     } else {
         for (size_t i = 0; i < n; i++) {
             if (tables[i] < 0) /* never started: its tables say interrupted */
@@ -451,12 +451,12 @@ int adh_sweep_main(const adh_cli *cli)
             if (tables[i] == ADH_EXIT_OK || (tables[i] == ADH_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS))
                 exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], &sres[i], status[i], out));
         }
-        if (adh_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
+        if (cli_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             exit_status = worse(exit_status, ADH_EXIT_USAGE);
         } else if (cfg->plot && exit_status == ADH_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
             char msg[1024] = "";
-            if (adh_figures_sweep(cfg, runs, n, out, msg, sizeof msg) != 0) {
+            if (cli_figures_sweep(cfg, runs, n, out, msg, sizeof msg) != 0) {
                 fprintf(stderr, "adhere: sweep plot not written: %s\n", msg);
                 exit_status = worse(exit_status, ADH_EXIT_PLOT);
             }
@@ -464,7 +464,7 @@ int adh_sweep_main(const adh_cli *cli)
     }
     if (exit_status == ADH_EXIT_OK && !cfg->quiet) {
         char t[32];
-        adh_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
+        cli_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
         if (out)
             fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv%s in %s/, each run's tables%s in "
                     "%s/run-1 ... run-%zu\n", t, n, cfg->plot && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",

@@ -12,19 +12,19 @@
 
 #define VERSION_LINE "# adhere " ADH_VERSION "\n"
 
-void adh_force_header(FILE *f)
+void cli_force_header(FILE *f)
 {
     fputs("h0\tF\tdelta\thc\ta\tangle\titers\tbranch\tpath\tconverged\tstable\tF_rigid\tseconds\n", f);
 }
 
-void adh_force_row(FILE *f, const adh_obs *o)
+void cli_force_row(FILE *f, const adh_obs *o)
 {
     fprintf(f, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%+d\t%d\t%d\t%d\t%.17g\t%.6g\n",
             o->h0, o->F, o->delta, o->hc, o->a, o->angle, o->iters, o->branch, o->path,
             o->converged, o->stable, o->F_rigid, o->seconds);
 }
 
-static void comment_head(FILE *f, const adh_tables *t, const char *what)
+static void comment_head(FILE *f, const cli_tables *t, const char *what)
 {
     fprintf(f, VERSION_LINE "# %s, SI units (m, N, Pa, J, s, rad)\n", what);
     if (t->cfg->scene[0])
@@ -33,17 +33,17 @@ static void comment_head(FILE *f, const adh_tables *t, const char *what)
         fprintf(f, "# PARTIAL: %s\n", t->note ? t->note : "the run did not finish");
 }
 
-int adh_write_force(FILE *f, const void *ctx)
+int cli_write_force(FILE *f, const void *ctx)
 {
-    const adh_tables *t = ctx;
+    const cli_tables *t = ctx;
     comment_head(f, t, "force table: one row per drive step; branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading branch");
-    adh_force_header(f);
+    cli_force_header(f);
     for (size_t i = 0; i < t->run->nrows; i++)
-        adh_force_row(f, &t->run->rows[i]);
+        cli_force_row(f, &t->run->rows[i]);
     return 0;
 }
 
-void adh_names_add(char *buf, size_t len, const char *name)
+void cli_names_add(char *buf, size_t len, const char *name)
 {
     size_t n = strlen(buf), m = strlen(name), sep = n ? 1 : 0;
     if (!m || n + sep + m >= len)
@@ -53,7 +53,7 @@ void adh_names_add(char *buf, size_t len, const char *name)
     memcpy(buf + n, name, m + 1);
 }
 
-const char *adh_run_status_word(const adh_run *r)
+const char *cli_run_status_word(const adh_run *r)
 {
     if (r->interrupted)
         return "interrupted";
@@ -67,9 +67,9 @@ static void kv(FILE *f, const char *k, double v)
     fprintf(f, "%s\t%.17g\n", k, v);
 }
 
-int adh_write_summary(FILE *f, const void *ctx)
+int cli_write_summary(FILE *f, const void *ctx)
 {
-    const adh_tables *t = ctx;
+    const cli_tables *t = ctx;
     const adh_config *c = t->cfg;
     const adh_run *r = t->run;
     adh_derived d;
@@ -148,16 +148,16 @@ int adh_write_summary(FILE *f, const void *ctx)
         fprintf(f, "not_written\t%s\n", t->unwritten);
     /* success only for a finished, converged run on a resolved grid that
      * separated, every file of which was written */
-    const char *word = t->status ? t->status : adh_run_status_word(r);
+    const char *word = t->status ? t->status : cli_run_status_word(r);
     if (!strcmp(word, "success"))
         word = !separated ? "not separated" : !(rigid || gr.resolved) ? "unresolved" : lost ? "output incomplete" : word;
     fprintf(f, "status\t%s\n", word);
     return 0;
 }
 
-int adh_write_turns(FILE *f, const void *ctx)
+int cli_write_turns(FILE *f, const void *ctx)
 {
-    const adh_tables *t = ctx;
+    const cli_tables *t = ctx;
     comment_head(f, t, "turning points: the adhesion (-pulloff_F) against the maximum load (Figures 5, 6 insets)");
     fputs("turn_h0\tmax_load\ta_turn\tpulloff_F\tpulloff_h0\tjump_out_h0\tpath\n", f);
     for (size_t i = 0; i < t->run->nturns; i++) {
@@ -168,7 +168,7 @@ int adh_write_turns(FILE *f, const void *ctx)
     return 0;
 }
 
-int adh_write_atomic(const char *dir, const char *name, adh_table_writer writer, const void *ctx,
+int cli_write_atomic(const char *dir, const char *name, cli_table_writer writer, const void *ctx,
                      char *why, size_t whylen)
 {
     char path[PATH_MAX + 64], tmp[PATH_MAX + 80];

@@ -10,39 +10,39 @@
 #include "adhere/protocol.h"
 #include "scene/config.h"
 
-typedef struct adh_summary_extra {
+typedef struct cli_summary_extra {
     const char *key;
     double value;
-} adh_summary_extra;
+} cli_summary_extra;
 
-void adh_force_header(FILE *f);
-void adh_force_row(FILE *f, const adh_obs *o);
+void cli_force_header(FILE *f);
+void cli_force_row(FILE *f, const adh_obs *o);
 
 /* Writes dir/name atomically through writer(f, ctx). 0, or -1 with why. */
-typedef int (*adh_table_writer)(FILE *f, const void *ctx);
-int adh_write_atomic(const char *dir, const char *name, adh_table_writer writer, const void *ctx,
+typedef int (*cli_table_writer)(FILE *f, const void *ctx);
+int cli_write_atomic(const char *dir, const char *name, cli_table_writer writer, const void *ctx,
                      char *why, size_t whylen);
 
-typedef struct adh_tables {
+typedef struct cli_tables {
     const adh_config *cfg;
     const adh_run *run;
-    const adh_summary_extra *extra;  /* more summary keys (static mode...), may be NULL */
+    const cli_summary_extra *extra;  /* more summary keys (static mode...), may be NULL */
     size_t nextra;
     int partial;                     /* the run was interrupted or failed */
     const char *note;                /* why, for the comment lines */
     const char *unwritten;           /* files of the run not written (a full disk), comma-separated;
                                         NULL or "" when none: summary.tsv says so */
     const char *status;              /* summary status word; NULL = from the run */
-} adh_tables;
+} cli_tables;
 
 /* The summary's status word: interrupted, unconverged (steps at the
  * iteration cap), success, or the solver's error. */
-const char *adh_run_status_word(const adh_run *r);
+const char *cli_run_status_word(const adh_run *r);
 /* Appends name (or a comma-separated list) to the comma-separated list in
  * buf; what does not fit is left off whole names at a time. */
-void adh_names_add(char *buf, size_t len, const char *name);
-int adh_write_force(FILE *f, const void *tables);
-int adh_write_summary(FILE *f, const void *tables);
-int adh_write_turns(FILE *f, const void *tables);
+void cli_names_add(char *buf, size_t len, const char *name);
+int cli_write_force(FILE *f, const void *tables);
+int cli_write_summary(FILE *f, const void *tables);
+int cli_write_turns(FILE *f, const void *tables);
 
 #endif

@@ -7,7 +7,7 @@
 
 /* Several keys per action where terminals differ (arrows vs letters), so a
  * newcomer's first guess works. Order is the order of the help screen. */
-const adh_key_binding adh_key_table[] = {
+const tui_key_binding tui_key_table[] = {
     { 'f', ACT_FORWARD, "step forward: approach by d and relax (a count before it repeats: 10f)" },
     { KEY_RIGHT, ACT_FORWARD, "step forward, as f" },
     { 'b', ACT_BACK, "step back: retract by d and relax (a count repeats: 10b)" },
@@ -37,19 +37,19 @@ const adh_key_binding adh_key_table[] = {
     { 0, ACT_NONE, NULL },
 };
 
-adh_action adh_action_for_key(int key)
+tui_action tui_action_for_key(int key)
 {
-    for (const adh_key_binding *b = adh_key_table; b->action != ACT_NONE; b++)
+    for (const tui_key_binding *b = tui_key_table; b->action != ACT_NONE; b++)
         if (b->key == key)
             return b->action;
     return ACT_NONE;
 }
 
-void adh_tui_print_keys(FILE *out)
+void tui_print_keys(FILE *out)
 {
     char name[32];
-    for (const adh_key_binding *b = adh_key_table; b->action != ACT_NONE; b++) {
-        adh_replay_key_name(b->key, name, sizeof name);
+    for (const tui_key_binding *b = tui_key_table; b->action != ACT_NONE; b++) {
+        tui_replay_key_name(b->key, name, sizeof name);
         fprintf(out, "%s\t%s\n", name, b->what);
     }
 }

@@ -6,7 +6,7 @@
 
 #include <stdio.h>
 
-typedef enum adh_action {
+typedef enum tui_action {
     ACT_NONE = 0,
     ACT_FORWARD,      /* approach by d */
     ACT_BACK,         /* retract by d */
@@ -26,19 +26,19 @@ typedef enum adh_action {
     ACT_REDRAW,
     ACT_CANCEL,
     ACT_QUIT
-} adh_action;
+} tui_action;
 
-typedef struct adh_key_binding {
+typedef struct tui_key_binding {
     int key;              /* curses key code, as in tui/replay.h */
-    adh_action action;
+    tui_action action;
     const char *what;     /* one line for help, --list-keys and the man page */
-} adh_key_binding;
+} tui_key_binding;
 
 /* The table, terminated by an entry with action ACT_NONE. */
-extern const adh_key_binding adh_key_table[];
+extern const tui_key_binding tui_key_table[];
 
 /* The action bound to key, ACT_NONE when none. Digits are not in the table:
  * they make a count prefix (see the help screen's first line). */
-adh_action adh_action_for_key(int key);
+tui_action tui_action_for_key(int key);
 
 #endif

@@ -52,7 +52,7 @@ int tui_keysrc_replay(tui_keysrc *ks, const char *file, char *err, size_t errlen
     }
     int line;
     char msg[512];
-    int rc = adh_replay_parse(text, len, &ks->script, &line, msg, sizeof msg);
+    int rc = tui_replay_parse(text, len, &ks->script, &line, msg, sizeof msg);
     free(text);
     if (rc != 0) {
         snprintf(err, errlen, "%s:%d: %s", file, line, msg);
@@ -63,7 +63,7 @@ int tui_keysrc_replay(tui_keysrc *ks, const char *file, char *err, size_t errlen
 
 void tui_keysrc_free(tui_keysrc *ks)
 {
-    adh_replay_free(&ks->script);
+    tui_replay_free(&ks->script);
 }
 
 /* Terminals disagree on Enter and Backspace; the rest of the TUI sees the
@@ -77,7 +77,7 @@ static int normalize(int c)
     }
 }
 
-int tui_keysrc_next(tui_keysrc *ks, int wait_ms, adh_replay_item *out)
+int tui_keysrc_next(tui_keysrc *ks, int wait_ms, tui_replay_item *out)
 {
     if (ks->replay) {
         if (ks->pos >= ks->script.n)
@@ -90,7 +90,7 @@ int tui_keysrc_next(tui_keysrc *ks, int wait_ms, adh_replay_item *out)
     if (c == ERR)
         return KEYSRC_NONE;
     memset(out, 0, sizeof *out);
-    out->kind = ADH_REPLAY_KEY;
+    out->kind = TUI_REPLAY_KEY;
     out->key = normalize(c);
     return KEYSRC_ITEM;
 }

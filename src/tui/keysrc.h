@@ -11,7 +11,7 @@
 typedef struct tui_keysrc {
     int replay;                 /* 1: items from the script */
     const char *file;           /* the script's name, for FILE:LINE messages */
-    adh_replay_script script;
+    tui_replay_script script;
     size_t pos;
 } tui_keysrc;
 
@@ -26,6 +26,6 @@ void tui_keysrc_free(tui_keysrc *ks);
 /* The next input. Terminal: waits up to wait_ms (-1: forever; curses must be
  * up) and returns KEYSRC_NONE when nothing came. Script: the next item, or
  * KEYSRC_END after the last. */
-int tui_keysrc_next(tui_keysrc *ks, int wait_ms, adh_replay_item *out);
+int tui_keysrc_next(tui_keysrc *ks, int wait_ms, tui_replay_item *out);
 
 #endif

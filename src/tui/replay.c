@@ -14,7 +14,7 @@ static const struct { const char *name; int key; } special[] = {
 };
 #define NSPECIAL (sizeof special / sizeof special[0])
 
-int adh_replay_key_code(const char *name)
+int tui_replay_key_code(const char *name)
 {
     for (size_t i = 0; i < NSPECIAL; i++)
         if (strcasecmp(name, special[i].name) == 0)
@@ -35,7 +35,7 @@ int adh_replay_key_code(const char *name)
     return -1;
 }
 
-void adh_replay_key_name(int key, char *buf, size_t len)
+void tui_replay_key_name(int key, char *buf, size_t len)
 {
     for (size_t i = 0; i < NSPECIAL; i++)
         if (special[i].key == key && key != '<') {
@@ -52,11 +52,11 @@ void adh_replay_key_name(int key, char *buf, size_t len)
         snprintf(buf, len, "<key %d>", key);
 }
 
-static int push(adh_replay_script *s, const adh_replay_item *it)
+static int push(tui_replay_script *s, const tui_replay_item *it)
 {
     if (s->n == s->cap) {
         size_t cap = s->cap ? 2 * s->cap : 64;
-        adh_replay_item *p = realloc(s->items, cap * sizeof *p);
+        tui_replay_item *p = realloc(s->items, cap * sizeof *p);
         if (!p)
             return -1;
         s->items = p;
@@ -66,7 +66,7 @@ static int push(adh_replay_script *s, const adh_replay_item *it)
     return 0;
 }
 
-void adh_replay_free(adh_replay_script *s)
+void tui_replay_free(tui_replay_script *s)
 {
     for (size_t i = 0; i < s->n; i++) {
         free(s->items[i].name);
@@ -106,29 +106,29 @@ static int parse_size(const char *t, int *cols, int *rows)
     char extra;
     if (sscanf(t, "%dx%d%c", cols, rows, &extra) != 2)
         return -1;
-    return *cols >= ADH_REPLAY_MIN_COLS && *cols <= ADH_REPLAY_MAX_COLS &&
-           *rows >= ADH_REPLAY_MIN_ROWS && *rows <= ADH_REPLAY_MAX_ROWS ? 0 : -1;
+    return *cols >= TUI_REPLAY_MIN_COLS && *cols <= TUI_REPLAY_MAX_COLS &&
+           *rows >= TUI_REPLAY_MIN_ROWS && *rows <= TUI_REPLAY_MAX_ROWS ? 0 : -1;
 }
 
-static int command(adh_replay_script *s, const line_words *lw, size_t first, int line,
+static int command(tui_replay_script *s, const line_words *lw, size_t first, int line,
                    size_t *used, char *err, size_t errlen)
 {
     const char *cmd = lw->w[first];
     size_t nargs = lw->n - first - 1;
     const char *const *arg = (const char *const *)&lw->w[first + 1];
-    adh_replay_item it = { .line = line };
+    tui_replay_item it = { .line = line };
     size_t want;
     if (strcmp(cmd, ":set") == 0) {
-        it.kind = ADH_REPLAY_SET;
+        it.kind = TUI_REPLAY_SET;
         want = 2;
     } else if (strcmp(cmd, ":dump") == 0) {
-        it.kind = ADH_REPLAY_DUMP;
+        it.kind = TUI_REPLAY_DUMP;
         want = 1;
     } else if (strcmp(cmd, ":wait") == 0) {
-        it.kind = ADH_REPLAY_WAIT;
+        it.kind = TUI_REPLAY_WAIT;
         want = 0;
     } else if (strcmp(cmd, ":resize") == 0) {
-        it.kind = ADH_REPLAY_RESIZE;
+        it.kind = TUI_REPLAY_RESIZE;
         want = 1;
     } else {
         snprintf(err, errlen, "unknown command '%s'; the commands are %s", cmd, known_commands);
@@ -139,22 +139,22 @@ static int command(adh_replay_script *s, const line_words *lw, size_t first, int
     if (nargs != want) {
         snprintf(err, errlen, "'%s' takes %s, but %zu word%s follow%s%s", cmd,
                  want == 2 ? "NAME VALUE (the value without blanks, e.g. 1GPa)"
-                 : want == 1 ? (it.kind == ADH_REPLAY_DUMP ? "one FILE" : "one size COLSxROWS")
+                 : want == 1 ? (it.kind == TUI_REPLAY_DUMP ? "one FILE" : "one size COLSxROWS")
                  : "nothing", nargs, nargs == 1 ? "" : "s", nargs == 1 ? "s" : "",
                  nargs > want && want > 0 ? "; put keys on the next line" : "");
         return -1;
     }
-    if (it.kind == ADH_REPLAY_RESIZE && parse_size(arg[0], &it.cols, &it.rows) != 0) {
+    if (it.kind == TUI_REPLAY_RESIZE && parse_size(arg[0], &it.cols, &it.rows) != 0) {
         snprintf(err, errlen, ":resize '%s' is not allowed: use COLSxROWS with %d-%d columns and %d-%d rows",
-                 arg[0], ADH_REPLAY_MIN_COLS, ADH_REPLAY_MAX_COLS, ADH_REPLAY_MIN_ROWS, ADH_REPLAY_MAX_ROWS);
+                 arg[0], TUI_REPLAY_MIN_COLS, TUI_REPLAY_MAX_COLS, TUI_REPLAY_MIN_ROWS, TUI_REPLAY_MAX_ROWS);
         return -1;
     }
-    if (it.kind == ADH_REPLAY_SET) {
+    if (it.kind == TUI_REPLAY_SET) {
         it.name = strdup(arg[0]);
         it.value = strdup(arg[1]);
         if (!it.name || !it.value)
             goto nomem;
-    } else if (it.kind == ADH_REPLAY_DUMP) {
+    } else if (it.kind == TUI_REPLAY_DUMP) {
         it.value = strdup(arg[0]);
         if (!it.value)
             goto nomem;
@@ -170,9 +170,9 @@ nomem:
     return -1;
 }
 
-static int keys(adh_replay_script *s, const char *word, int line, char *err, size_t errlen)
+static int keys(tui_replay_script *s, const char *word, int line, char *err, size_t errlen)
 {
-    adh_replay_item it = { .kind = ADH_REPLAY_KEY, .line = line };
+    tui_replay_item it = { .kind = TUI_REPLAY_KEY, .line = line };
     if (strcmp(word, "<") == 0) {   /* a lone '<' can only mean the key */
         it.key = '<';
         return push(s, &it);
@@ -190,7 +190,7 @@ static int keys(adh_replay_script *s, const char *word, int line, char *err, siz
             }
             memcpy(name, p + 1, nl);
             name[nl] = '\0';
-            it.key = adh_replay_key_code(name);
+            it.key = tui_replay_key_code(name);
             if (it.key < 0) {
                 snprintf(err, errlen, "unknown key <%s>; known: <Left> <Right> <Up> <Down> <Enter> "
                          "<Esc> <Space> <Tab> <PgUp> <PgDn> <Home> <End> <BS> <Del> <lt> <F1>..<F12> "
@@ -214,7 +214,7 @@ static int keys(adh_replay_script *s, const char *word, int line, char *err, siz
     return 0;
 }
 
-int adh_replay_parse(const char *text, size_t len, adh_replay_script *script,
+int tui_replay_parse(const char *text, size_t len, tui_replay_script *script,
                      int *errline, char *err, size_t errlen)
 {
     memset(script, 0, sizeof *script);
@@ -264,7 +264,7 @@ int adh_replay_parse(const char *text, size_t len, adh_replay_script *script,
     free(buf);
     if (rc != 0) {
         *errline = line;
-        adh_replay_free(script);
+        tui_replay_free(script);
     }
     return rc;
 }

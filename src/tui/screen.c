@@ -536,16 +536,16 @@ int tui_draw_help(const tui_view *v)
     int n = 0;
     /* One line per action, its keys together, with the first key's words:
      * the aliases' own lines ("as f") would only repeat it. */
-    for (const adh_key_binding *b = adh_key_table; b->action != ACT_NONE; b++) {
+    for (const tui_key_binding *b = tui_key_table; b->action != ACT_NONE; b++) {
         int seen = 0;
-        for (const adh_key_binding *e = adh_key_table; e < b; e++)
+        for (const tui_key_binding *e = tui_key_table; e < b; e++)
             seen |= e->action == b->action;
         if (seen)
             continue;
         char keys[64] = "";
-        for (const adh_key_binding *e = b; e->action != ACT_NONE; e++)
+        for (const tui_key_binding *e = b; e->action != ACT_NONE; e++)
             if (e->action == b->action) {
-                adh_replay_key_name(e->key, name, sizeof name);
+                tui_replay_key_name(e->key, name, sizeof name);
                 size_t l = strlen(keys), m = strlen(name);
                 if (l + 1 + m < sizeof keys) {   /* a key that does not fit is left out whole */
                     if (l)

@@ -365,10 +365,10 @@ static void param_changed(tui *t, tui_param p)
 
 /* A :set / :dump / :wait / :resize, from a script or the ':' prompt.
  * 0, or -1 with a sentence in why. */
-static int run_command(tui *t, const adh_replay_item *it, char *why, size_t whylen)
+static int run_command(tui *t, const tui_replay_item *it, char *why, size_t whylen)
 {
     switch (it->kind) {
-    case ADH_REPLAY_SET: {
+    case TUI_REPLAY_SET: {
         int p = tui_sim_param_lookup(it->name);
         if (p < 0) {
             snprintf(why, whylen, "unknown parameter '%s' for set; the names are E A z0 R eps d N spacing turn",
@@ -384,13 +384,13 @@ static int run_command(tui *t, const adh_replay_item *it, char *why, size_t whyl
         param_changed(t, (tui_param)p);
         return 0;
     }
-    case ADH_REPLAY_DUMP:
+    case TUI_REPLAY_DUMP:
         draw(t);
         return tui_dump_screen(it->value, why, whylen);
-    case ADH_REPLAY_WAIT:
+    case TUI_REPLAY_WAIT:
         t->waiting = t->run_dir != 0;
         return 0;
-    case ADH_REPLAY_RESIZE:
+    case TUI_REPLAY_RESIZE:
         return resize_to(t, it->cols, it->rows, why, whylen);
     default:
         snprintf(why, whylen, "not a command: the commands are set NAME VALUE, dump FILE");
@@ -435,25 +435,25 @@ static int edit_key(tui *t, int key)
     /* The ':' prompt takes what a script's command line takes. */
     char line[160];
     snprintf(line, sizeof line, ":%s", t->text);
-    adh_replay_script sc;
+    tui_replay_script sc;
     int errline;
     if (t->textlen == 0)
         return TODO_REDRAW;
-    if (adh_replay_parse(line, strlen(line), &sc, &errline, why, sizeof why) != 0) {
+    if (tui_replay_parse(line, strlen(line), &sc, &errline, why, sizeof why) != 0) {
         say(t, 1, "%s", why);
         return TODO_REDRAW;
     }
     int bad = 0;
     for (size_t i = 0; i < sc.n && !bad; i++) {
-        if (sc.items[i].kind == ADH_REPLAY_WAIT)
+        if (sc.items[i].kind == TUI_REPLAY_WAIT)
             continue;
         bad = run_command(t, &sc.items[i], why, sizeof why) != 0;
     }
     if (bad)
         say(t, 1, "%s", why);
-    else if (sc.n && sc.items[0].kind == ADH_REPLAY_DUMP)
+    else if (sc.n && sc.items[0].kind == TUI_REPLAY_DUMP)
         say(t, 0, "screen written to %s", sc.items[0].value);
-    adh_replay_free(&sc);
+    tui_replay_free(&sc);
     return TODO_REDRAW;
 }
 
@@ -556,7 +556,7 @@ static int handle_key(tui *t, int key)
     int todo = TODO_REDRAW;
     long n = t->count ? t->count : 1;
     t->count = 0;
-    adh_action a = adh_action_for_key(key);
+    tui_action a = tui_action_for_key(key);
     if (a != ACT_NONE && a != ACT_HELP && a != ACT_REDRAW && a != ACT_CANCEL)
         t->view.params_first = a == ACT_SELECT_UP || a == ACT_SELECT_DOWN || a == ACT_EDIT ||
                                a == ACT_SCALE_UP || a == ACT_SCALE_DOWN || a == ACT_COMMAND;
@@ -641,7 +641,7 @@ static int handle_key(tui *t, int key)
     case ACT_CANCEL: say(t, 0, "%s", ""); break;
     case ACT_QUIT: t->quit = 1; break;
     case ACT_NONE:
-        adh_replay_key_name(key, name, sizeof name);
+        tui_replay_key_name(key, name, sizeof name);
         say(t, 1, "the key %s does nothing here; ? lists the keys", name);
         break;
     }
@@ -683,14 +683,14 @@ static void busy_key(tui *t, int key)
     if (o)
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     say(t, 0, "paused at h0 = %s (the unfinished step was dropped); r goes on", h0);
-    if (adh_action_for_key(key) == ACT_QUIT)
+    if (tui_action_for_key(key) == ACT_QUIT)
         t->quit = 1;
 }
 
-static void handle_item(tui *t, const adh_replay_item *it)
+static void handle_item(tui *t, const tui_replay_item *it)
 {
     char why[512];
-    if (it->kind == ADH_REPLAY_KEY) {
+    if (it->kind == TUI_REPLAY_KEY) {
         redo_todo(t, handle_key(t, it->key));
         return;
     }
@@ -707,7 +707,7 @@ static void handle_item(tui *t, const adh_replay_item *it)
  * a command runs, :wait lets the run finish); a terminal checks for a key. */
 static void run_next(tui *t)
 {
-    adh_replay_item it;
+    tui_replay_item it;
     if (!t->waiting) {
         int got = tui_keysrc_next(&t->keys, 0, &it);
         if (got == KEYSRC_END) {
@@ -716,7 +716,7 @@ static void run_next(tui *t)
             return;
         }
         if (got == KEYSRC_ITEM) {
-            if (it.kind == ADH_REPLAY_KEY) {
+            if (it.kind == TUI_REPLAY_KEY) {
                 stop_all(t);
                 if (it.key == KEY_RESIZE)
                     clearok(curscr, TRUE);
@@ -724,7 +724,7 @@ static void run_next(tui *t)
                 char h0[64];
                 fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
                 say(t, 0, "paused at h0 = %s; r goes on", h0);
-                if (adh_action_for_key(it.key) == ACT_QUIT)
+                if (tui_action_for_key(it.key) == ACT_QUIT)
                     t->quit = 1;
                 return;
             }
@@ -757,7 +757,7 @@ static void progress(tui *t)
 
 static void loop(tui *t)
 {
-    adh_replay_item it;
+    tui_replay_item it;
     while (!t->quit) {
         if (got_signal) {
             /* SIGINT or SIGTERM: 130, as --batch; SIGHUP (terminal gone): 129 */
@@ -778,7 +778,7 @@ static void loop(tui *t)
             /* Batches keep a terminal responsive; a replay never reads keys
              * inside a step, so its batch size changes nothing it shows. */
             int rc = tui_sim_work(&t->sim, t->headless ? 5000 : 200, why, sizeof why);
-            adh_ready_mark();   /* a solve is under way, signals are caught */
+            cli_ready_mark();   /* a solve is under way, signals are caught */
             if (rc != ADH_CONTINUE)
                 after_step(t, rc, why);
             continue;
@@ -874,7 +874,7 @@ static int locale_utf8(int headless)
     return 0;
 }
 
-int adh_tui_main(const adh_config *cfg)
+int tui_main(const adh_config *cfg)
 {
     static tui t;   /* large; and the signal handler's flag lives beside it */
     char why[1024];

@@ -7,10 +7,10 @@
 
 #include "scene/config.h"
 
-int adh_tui_main(const adh_config *cfg);
+int tui_main(const adh_config *cfg);
 
 /* The key table, one line per key: the key as a replay script writes it
  * (f, <Left>, <C-r>), a TAB, what it does. For --list-keys. */
-void adh_tui_print_keys(FILE *out);
+void tui_print_keys(FILE *out);
 
 #endif

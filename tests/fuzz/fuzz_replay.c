@@ -7,16 +7,16 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    adh_replay_script s = { 0 };
+    tui_replay_script s = { 0 };
     int line = 0;
     char err[512];
-    if (adh_replay_parse((const char *)data, size, &s, &line, err, sizeof err) != 0) {
+    if (tui_replay_parse((const char *)data, size, &s, &line, err, sizeof err) != 0) {
         size_t lines = 1;
         for (size_t i = 0; i < size; i++)
             lines += data[i] == '\n';
         if (line < 1 || (size_t)line > lines)
             abort();
     }
-    adh_replay_free(&s);
+    tui_replay_free(&s);
     return 0;
 }
