@@ -12,9 +12,7 @@
 #include "adhere/observe.h"
 #include "adhere/params.h"
 #include "adhere/relax.h"
-
-#define ADH_MAX_TURNS 64
-#define ADH_MAX_PROFILES 64
+#include "adhere/run.h"
 
 typedef struct adh_protocol_settings {
     double start;                 /* first position, m; NAN = automatic */
@@ -43,48 +41,6 @@ double adh_protocol_reach(const adh_material *m);
  * spheres, no elastic solve): then only the drive settings are checked. */
 int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
                        const adh_grid *g, char *why, size_t whylen);
-
-typedef struct adh_profile {
-    double h0;
-    int branch, path;
-    double *u, *h, *p;            /* length N each */
-} adh_profile;
-
-typedef struct adh_turn_result {
-    double h0;           /* the turning point */
-    double max_load;     /* force at the turn, N */
-    double a_turn;       /* contact radius at the turn, m */
-    double pulloff_F;    /* most negative force on its unloading branch, N */
-    double pulloff_h0;   /* where that minimum is */
-    double jump_out_h0;  /* first position out of contact on unloading; NAN if none */
-    int path;            /* its path number in the rows */
-} adh_turn_result;
-
-typedef struct adh_run {
-    adh_obs *rows;  size_t nrows, rows_cap;
-    adh_profile *profiles; size_t nprofiles, profiles_cap;
-    adh_turn_result turns[ADH_MAX_TURNS]; size_t nturns;
-    double jump_in_h0;      /* first loading position in contact; NAN if none */
-    double start;           /* the start actually used */
-    size_t iterations;      /* total relaxation iterations */
-    double seconds;         /* total wall time of the solves */
-    size_t unconverged;     /* steps that hit the iteration cap */
-    int status;             /* ADH_SUCCESS or the error that stopped the run */
-    int interrupted;        /* 1 when a callback or the cancel flag asked to stop */
-} adh_run;
-
-void adh_run_init(adh_run *run);
-void adh_run_free(adh_run *run);
-/* Appends a row (growing the array). ADH_SUCCESS or ADH_ENOMEM. */
-int adh_run_push_row(adh_run *run, const adh_obs *row);
-/* The last unloading branch's summary (the deepest turn), or NULL. */
-const adh_turn_result *adh_run_main_turn(const adh_run *run);
-
-/* Whether every unloading branch ended with the surfaces apart: 1, or 0
- * with a sentence in why (a branch that reached the start still in
- * contact, as a pinned contact line does on an unresolved grid). A run
- * without unloading branches is not asked to separate: 1. */
-int adh_run_separated(const adh_run *run, char *why, size_t whylen);
 
 /* Called after every drive step with the row just added; return nonzero to stop. */
 typedef int (*adh_step_cb)(const adh_obs *row, const adh_run *run, void *ctx);

@@ -142,30 +142,6 @@ static int wants_profile(const adh_protocol_settings *ps, double h0)
     return 0;
 }
 
-static int push_profile(adh_run *run, const adh_state *s, int branch, int path)
-{
-    if (run->nprofiles == run->profiles_cap) {
-        size_t cap = run->profiles_cap ? 2 * run->profiles_cap : 16;
-        adh_profile *p = realloc(run->profiles, cap * sizeof *p);
-        if (!p)
-            return ADH_ENOMEM;
-        run->profiles = p;
-        run->profiles_cap = cap;
-    }
-    adh_profile *pr = &run->profiles[run->nprofiles];
-    pr->u = malloc(3 * s->n * sizeof(double));
-    if (!pr->u)
-        return ADH_ENOMEM;
-    memcpy(pr->u, s->u, 3 * s->n * sizeof(double));
-    pr->h = pr->u + s->n;
-    pr->p = pr->u + 2 * s->n;
-    pr->h0 = s->h0;
-    pr->branch = branch;
-    pr->path = path;
-    run->nprofiles++;
-    return ADH_SUCCESS;
-}
-
 /* The relaxation step rule: moves to h0 (or dwells there), relaxes,
  * observes and records a row. ADH_SUCCESS (also for a step that hit the
  * cap: that is flagged in the row and counted, not fatal), ADH_EINTR (no
@@ -210,7 +186,7 @@ static int relax_step(adh_drive *d, double h0, int branch, int path, size_t dwel
     if (prc != ADH_SUCCESS)
         return prc;
     d->c.row = (long)run->nrows - 1;
-    if (wants_profile(&d->ps, h0) && push_profile(run, s, branch, path) != ADH_SUCCESS)
+    if (wants_profile(&d->ps, h0) && adh_run_push_profile(run, s, branch, path) != ADH_SUCCESS)
         return ADH_ENOMEM;
     /* the contact at the grid edge, or past a graded grid's fine band */
     if (o->a >= 0.9 * d->g->rmax || !adh_rings_resolves(d->g, o->a))
