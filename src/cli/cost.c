@@ -12,7 +12,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/grid.h"
 #include "adhere/status.h"
 #include "adhere/units.h"

@@ -3,7 +3,7 @@
 #ifndef ADH_CLI_STATICS_H
 #define ADH_CLI_STATICS_H
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/protocol.h"
 #include "cli/tables.h"
 #include "scene/config.h"

@@ -7,7 +7,7 @@
 
 #include <stdio.h>
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/protocol.h"
 #include "cli/options.h"
 

@@ -22,7 +22,7 @@
 #include <stddef.h>
 
 #include "adhere/cycle.h"
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/grid.h"
 #include "adhere/history.h"
 #include "adhere/kernel.h"

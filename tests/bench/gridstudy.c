@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/kernel.h"
 #include "adhere/models.h"
 #include "adhere/protocol.h"

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/kernel.h"
 #include "adhere/models.h"
 #include "adhere/status.h"

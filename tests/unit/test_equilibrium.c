@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/kernel.h"
 #include "adhere/law.h"
 #include "adhere/maugis.h"

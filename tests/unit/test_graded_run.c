@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
 #include "adhere/rings.h"

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
 #include "adhere/models.h"

@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/kernel.h"
 #include "adhere/protocol.h"
 #include "adhere/relax.h"

@@ -29,8 +29,8 @@
  *
  * Use: alloc, set (solves the start point), then iterate until it returns
  * something other than ADH_CONTINUE; or adh_static_run for the whole curve. */
-#ifndef ADHERE_EQUILIBRIUM_H
-#define ADHERE_EQUILIBRIUM_H
+#ifndef ADHERE_STATIC_H
+#define ADHERE_STATIC_H
 
 #include <signal.h>
 #include <stddef.h>

@@ -1,4 +1,4 @@
-#include "adhere/equilibrium.h"
+#include "adhere/static.h"
 #include "adhere/clock.h"
 
 #include <gsl/gsl_cblas.h>
