@@ -99,33 +99,6 @@ static void closing_line(const adh_config *cfg, const adh_run *run, const adh_st
         fprintf(stderr, "the force table went to standard output\n");
 }
 
-static int make_dir(const char *dir, char *why, size_t n)
-{
-    char buf[PATH_MAX];
-    snprintf(buf, sizeof buf, "%s", dir);
-    /* mkdir -p: each parent in turn, tolerating ones that exist. */
-    for (char *p = buf + 1; *p; p++) {
-        if (*p != '/')
-            continue;
-        *p = '\0';
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            snprintf(why, n, "cannot create directory %.900s: %s", buf, strerror(errno));
-            return -1;
-        }
-        *p = '/';
-    }
-    if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-        snprintf(why, n, "cannot create directory %.900s: %s", buf, strerror(errno));
-        return -1;
-    }
-    struct stat st;
-    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode) || access(buf, W_OK) != 0) {
-        snprintf(why, n, "cannot write into %.900s: not a writable directory", buf);
-        return -1;
-    }
-    return 0;
-}
-
 int cli_batch_main(const cli_options *cli)
 {
     const adh_config *cfg = &cli->cfg;
@@ -133,7 +106,7 @@ int cli_batch_main(const cli_options *cli)
     char why[1024];
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
     /* a directory never mixes two runs: the earlier run's files go first */
-    if (out && (make_dir(out, why, sizeof why) != 0 || adh_outdir_clear(out, why, sizeof why) != 0)) {
+    if (out && (adh_outdir_make(out, why, sizeof why) != 0 || adh_outdir_clear(out, why, sizeof why) != 0)) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }

@@ -318,8 +318,8 @@ int cli_cost_main(const cli_options *cli)
                 m++;
             }
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
-    if (out && mkdir(out, 0777) != 0 && access(out, W_OK) != 0) {
-        fprintf(stderr, "adhere: cannot write into %s\n", out);
+    if (out && adh_outdir_make(out, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
         free(runs);
         return ADH_EXIT_USAGE;
     }

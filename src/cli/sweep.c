@@ -22,6 +22,7 @@
 #include "adhere/clock.h"
 #include "cli/statics.h"
 #include "cli/tables.h"
+#include "plot/outdir.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
 
@@ -198,32 +199,6 @@ static int write_sweep(FILE *f, const void *ctx)
     return cli_write_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
 }
 
-/* mkdir -p */
-static int make_dir(const char *dir, char *why, size_t n)
-{
-    char buf[PATH_MAX];
-    snprintf(buf, sizeof buf, "%s", dir);
-    for (char *p = buf + 1;; p++) {
-        if (*p && *p != '/')
-            continue;
-        char c = *p;
-        *p = '\0';
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            snprintf(why, n, "cannot create directory %.900s: %s", buf, strerror(errno));
-            return -1;
-        }
-        *p = c;
-        if (!c)
-            break;
-    }
-    struct stat st;
-    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode) || access(buf, W_OK) != 0) {
-        snprintf(why, n, "cannot write into %.900s: not a writable directory", buf);
-        return -1;
-    }
-    return 0;
-}
-
 /* Tables of run i in out/run-K: force.tsv and turns.tsv when data is set,
  * then summary.tsv, last, naming what was not written (those that failed
  * here, and the list in unwritten). Returns an exit status. */
@@ -235,7 +210,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     adh_config_sweep_run(cfg, i, &rcfg);
     snprintf(dir, sizeof dir, "%s/run-%zu", out, i + 1);
     snprintf(lost, sizeof lost, "%s", unwritten ? unwritten : "");
-    if (make_dir(dir, why, sizeof why) != 0) {
+    if (adh_outdir_make(dir, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }
@@ -343,7 +318,7 @@ int cli_sweep_main(const cli_options *cli)
     double t_start = adh_clock_seconds();
     char why[1024];
     size_t n = cfg->sweep.n;
-    if (out && make_dir(out, why, sizeof why) != 0) {
+    if (out && adh_outdir_make(out, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return ADH_EXIT_USAGE;
     }

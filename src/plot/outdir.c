@@ -102,3 +102,28 @@ int adh_outdir_clear(const char *dir, char *why, size_t whylen)
 {
     return clear(dir, 0, why, whylen);
 }
+
+int adh_outdir_make(const char *dir, char *why, size_t n)
+{
+    char buf[PATH_MAX];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1;; p++) {
+        if (*p && *p != '/')
+            continue;
+        char c = *p;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
+            snprintf(why, n, "cannot create directory %.900s: %s", buf, strerror(errno));
+            return -1;
+        }
+        *p = c;
+        if (!c)
+            break;
+    }
+    struct stat st;
+    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode) || access(buf, W_OK) != 0) {
+        snprintf(why, n, "cannot write into %.900s: not a writable directory", buf);
+        return -1;
+    }
+    return 0;
+}

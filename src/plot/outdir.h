@@ -11,6 +11,11 @@
  * by a run that was killed. */
 int adh_outdir_owns(const char *name);
 
+/* mkdir -p dir, and that it is a writable directory: 0, or -1 with a
+ * sentence naming the directory in why. Every output directory (-o, a
+ * sweep's run-K, the TUI's plots) is made here. */
+int adh_outdir_make(const char *dir, char *why, size_t whylen);
+
 /* Removes from dir every file adh_outdir_owns, and each sweep directory
  * run-K holding nothing else once its own files are gone. 0, or -1 with why
  * (a file that cannot be removed); a dir that does not exist is empty. */

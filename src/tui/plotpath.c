@@ -171,10 +171,8 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
 
 static int write_into(const adh_config *c, const adh_run *run, const char *dir, char *msg, size_t msglen)
 {
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        snprintf(msg, msglen, "cannot create the directory: %s", strerror(errno));
+    if (adh_outdir_make(dir, msg, msglen) != 0)
         return -1;
-    }
     msg[0] = '\0';
     /* the files of an earlier run or an earlier p go first: what is in dir
      * is this path's */
