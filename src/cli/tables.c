@@ -1,4 +1,5 @@
 #include "cli/tables.h"
+#include "plot/outdir.h"
 
 #include <errno.h>
 #include <math.h>
@@ -171,33 +172,7 @@ int cli_write_turns(FILE *f, const void *ctx)
 int cli_write_atomic(const char *dir, const char *name, cli_table_writer writer, const void *ctx,
                      char *why, size_t whylen)
 {
-    char path[PATH_MAX + 64], tmp[PATH_MAX + 80];
+    char path[PATH_MAX + 64];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    snprintf(tmp, sizeof tmp, "%s/.%s.%ld.tmp", dir, name, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(errno));
-        return -1;
-    }
-    int rc = writer(f, ctx);
-    /* fflush + fsync-free close: a full disk shows up here, before the rename. */
-    if (fflush(f) != 0 || ferror(f))
-        rc = -1;
-    int saved = errno;
-    if (fclose(f) != 0 && rc == 0) {
-        rc = -1;
-        saved = errno;
-    }
-    if (rc != 0) {
-        unlink(tmp);
-        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(saved ? saved : EIO));
-        return -1;
-    }
-    if (rename(tmp, path) != 0) {
-        saved = errno;
-        unlink(tmp);
-        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(saved));
-        return -1;
-    }
-    return 0;
+    return adh_outdir_write(path, writer, ctx, why, whylen);
 }

@@ -127,3 +127,46 @@ int adh_outdir_make(const char *dir, char *why, size_t n)
     }
     return 0;
 }
+
+int adh_outdir_write(const char *path, adh_outdir_writer writer, const void *ctx, char *why, size_t whylen)
+{
+    char tmp[PATH_MAX + 80];
+    if (strlen(path) >= PATH_MAX) {
+        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(ENAMETOOLONG));
+        return -1;
+    }
+    /* the temporary beside it, DIR/.NAME.PID.tmp (adh_outdir_owns knows it) */
+    const char *slash = strrchr(path, '/');
+    size_t dl = slash ? (size_t)(slash - path) + 1 : 0;
+    memcpy(tmp, path, dl);
+    snprintf(tmp + dl, sizeof tmp - dl, ".%s.%ld.tmp", path + dl, (long)getpid());
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(errno));
+        return -1;
+    }
+    errno = 0;
+    int rc = writer(f, ctx);
+    int saved = errno;
+    /* fflush + fsync-free close: a full disk shows up here, before the rename. */
+    if (fflush(f) != 0 || ferror(f)) {
+        rc = -1;
+        saved = errno;
+    }
+    if (fclose(f) != 0 && rc == 0) {
+        rc = -1;
+        saved = errno;
+    }
+    if (rc != 0) {
+        unlink(tmp);
+        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(saved ? saved : EIO));
+        return -1;
+    }
+    if (rename(tmp, path) != 0) {
+        saved = errno;
+        unlink(tmp);
+        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(saved));
+        return -1;
+    }
+    return 0;
+}

@@ -1,4 +1,5 @@
 #include "plot/plotdata.h"
+#include "plot/outdir.h"
 
 #include <errno.h>
 #include <math.h>
@@ -126,39 +127,17 @@ void adh_table_preamble(FILE *f, const adh_config *cfg, const char *what)
             d.gamma, cfg->nodes, adh_config_spacing(cfg));
 }
 
-/* Writes to path.tmp and renames, so a reader never sees half a table. */
-static FILE *open_tmp(const char *path, char *tmp, size_t tmplen, char *msg, size_t msglen)
-{
-    snprintf(tmp, tmplen, "%s.tmp%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    if (!f)
-        snprintf(msg, msglen, "cannot write %s: %s", path, strerror(errno));
-    return f;
-}
+typedef struct table_ctx {
+    const adh_config *cfg;
+    const adh_run *run;
+    const double *dadh0, *dadt, *smooth;
+} table_ctx;
 
-static int close_tmp(FILE *f, const char *tmp, const char *path, char *msg, size_t msglen)
+static int profiles_table(FILE *f, const void *vctx)
 {
-    int bad = ferror(f);
-    if (fclose(f) != 0 || bad) {
-        snprintf(msg, msglen, "cannot write %s: %s", path, strerror(errno ? errno : EIO));
-        unlink(tmp);
-        return -1;
-    }
-    if (rename(tmp, path) != 0) {
-        snprintf(msg, msglen, "cannot rename %s to %s: %s", tmp, path, strerror(errno));
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
-}
-
-int adh_write_profiles_table(const adh_config *cfg, const adh_run *run, const char *path,
-                             char *msg, size_t msglen)
-{
-    char tmp[PATH_MAX + 32];
-    FILE *f = open_tmp(path, tmp, sizeof tmp, msg, msglen);
-    if (!f)
-        return -1;
+    const table_ctx *c = vctx;
+    const adh_config *cfg = c->cfg;
+    const adh_run *run = c->run;
     adh_table_preamble(f, cfg, "surface profiles at the stored drive positions");
     fprintf(f, "# branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading "
                "branch\n");
@@ -180,7 +159,38 @@ int adh_write_profiles_table(const adh_config *cfg, const adh_run *run, const ch
                     pr->h0 + r * r / (2.0 * cfg->mat.R));
         }
     }
-    return close_tmp(f, tmp, path, msg, msglen);
+    return 0;
+}
+
+int adh_write_profiles_table(const adh_config *cfg, const adh_run *run, const char *path,
+                             char *msg, size_t msglen)
+{
+    table_ctx c = { cfg, run, NULL, NULL, NULL };
+    return adh_outdir_write(path, profiles_table, &c, msg, msglen);
+}
+
+static int contact_table(FILE *f, const void *vctx)
+{
+    const table_ctx *c = vctx;
+    const adh_config *cfg = c->cfg;
+    const adh_run *run = c->run;
+    adh_table_preamble(f, cfg, "contact radius and contact-line speed");
+    fprintf(f, "# in contact where the gap is below %.2g z0; a = 0 out of contact\n",
+            ADH_CONTACT_FACTOR);
+    fprintf(f, "# drive speed |dh0/dt| = %.17g m/s (h0 falls on loading, rises on "
+               "unloading); da_dt = da/dh0 * dh0/dt, positive while the contact spreads, "
+               "nan out of contact\n", cfg->drive_speed);
+    fprintf(f, "# da_dt_smooth: least-squares slope over the steps in which the contact line crosses "
+               "%g grid spacings (it sticks and slips node by node)\n", ADH_SPEED_CELLS);
+    fprintf(f, "# SI units: h0, a in m, da_dh0 dimensionless, da_dt and da_dt_smooth in "
+               "m/s\n");
+    fprintf(f, "h0\tbranch\tpath\ta\tda_dh0\tda_dt\tda_dt_smooth\n");
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        fprintf(f, "%.17g\t%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\n", o->h0, o->branch,
+                o->path, o->a, c->dadh0[i], c->dadt[i], c->smooth[i]);
+    }
+    return 0;
 }
 
 int adh_write_contact_table(const adh_config *cfg, const adh_run *run, const char *path,
@@ -202,34 +212,12 @@ int adh_write_contact_table(const adh_config *cfg, const adh_run *run, const cha
         adh_contact_speed_smoothed(run, cfg->drive_speed, adh_config_spacing(cfg),
                                    ADH_SPEED_CELLS, smooth);
     }
-    char tmp[PATH_MAX + 32];
-    FILE *f = open_tmp(path, tmp, sizeof tmp, msg, msglen);
-    if (!f) {
-        free(dadh0);
-        free(dadt);
-        free(smooth);
-        return -1;
-    }
-    adh_table_preamble(f, cfg, "contact radius and contact-line speed");
-    fprintf(f, "# in contact where the gap is below %.2g z0; a = 0 out of contact\n",
-            ADH_CONTACT_FACTOR);
-    fprintf(f, "# drive speed |dh0/dt| = %.17g m/s (h0 falls on loading, rises on "
-               "unloading); da_dt = da/dh0 * dh0/dt, positive while the contact spreads, "
-               "nan out of contact\n", cfg->drive_speed);
-    fprintf(f, "# da_dt_smooth: least-squares slope over the steps in which the contact line crosses "
-               "%g grid spacings (it sticks and slips node by node)\n", ADH_SPEED_CELLS);
-    fprintf(f, "# SI units: h0, a in m, da_dh0 dimensionless, da_dt and da_dt_smooth in "
-               "m/s\n");
-    fprintf(f, "h0\tbranch\tpath\ta\tda_dh0\tda_dt\tda_dt_smooth\n");
-    for (size_t i = 0; i < run->nrows; i++) {
-        const adh_obs *o = &run->rows[i];
-        fprintf(f, "%.17g\t%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\n", o->h0, o->branch,
-                o->path, o->a, dadh0[i], dadt[i], smooth[i]);
-    }
+    table_ctx c = { cfg, run, dadh0, dadt, smooth };
+    int rc = adh_outdir_write(path, contact_table, &c, msg, msglen);
     free(dadh0);
     free(dadt);
     free(smooth);
-    return close_tmp(f, tmp, path, msg, msglen);
+    return rc;
 }
 
 size_t adh_plot_default_profiles(const adh_config *cfg, double *out, size_t max)
