@@ -70,6 +70,15 @@ int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings 
  * row). After a final status every further call returns it again. */
 int adh_drive_step(adh_drive *d);
 
+/* The same in batches, for a driver that must stay responsive (the TUI
+ * polls keys between them): at most max_batch relaxation iterations of the
+ * step under way (0: until it is done; a dwell is done whole), starting
+ * the next step when none is. ADH_CONTINUE with *row = 0 while the step
+ * goes on, ADH_CONTINUE with *row = 1 when it produced its row, else as
+ * adh_drive_step (*row = 1 for ADH_EGRID's kept row). The rows do not
+ * depend on the batch size. Snapshots are taken between steps. */
+int adh_drive_iterate(adh_drive *d, size_t max_batch, int *row);
+
 /* The row of the last step that returned ADH_CONTINUE (or ADH_EGRID);
  * NULL before the first. Borrowed from the run. */
 const adh_obs *adh_drive_row(const adh_drive *d);

@@ -24,6 +24,12 @@ typedef struct cursor {
     int touched;     /* unloading: in contact on this branch so far */
     int status;      /* the final status once ph == PH_DONE */
     long row;        /* index of the last row in the run, -1 none */
+    /* the step under way (adh_drive_iterate in batches) */
+    int inflight;
+    double h0;       /* where it goes */
+    int branch, path, at_turn;
+    size_t dwell;
+    double t0, spent;   /* when its current batch began; seconds so far */
 } cursor;
 
 struct adh_drive {
@@ -142,69 +148,17 @@ static int wants_profile(const adh_protocol_settings *ps, double h0)
     return 0;
 }
 
-/* The relaxation step rule: moves to h0 (or dwells there), relaxes,
- * observes and records a row. ADH_SUCCESS (also for a step that hit the
- * cap: that is flagged in the row and counted, not fatal), ADH_EINTR (no
- * row), ADH_EGRID (row kept), or an error that ends the run. */
-static int relax_step(adh_drive *d, double h0, int branch, int path, size_t dwell, adh_obs *o)
-{
-    adh_run *run = d->run;
-    double t0 = adh_clock_seconds();
-    int rc;
-    if (dwell) {
-        rc = adh_relax_dwell(d->w, dwell);
-    } else {
-        adh_relax_move(d->w, h0);
-        rc = adh_relax_iterate(d->w, 0);
-    }
-    double dt = adh_clock_seconds() - t0;
-    const adh_state *s = adh_relax_state(d->w);
-    memset(o, 0, sizeof *o);
-    adh_observe(d->g, &d->m, s, o);
-    o->iters = dwell ? dwell : adh_relax_step_iterations(d->w);
-    o->seconds = dt;
-    o->branch = branch;
-    o->path = path;
-    o->converged = (rc == ADH_SUCCESS);
-    o->stable = 1;
-    run->iterations += o->iters;
-    run->seconds += dt;
-    if (rc == ADH_EINTR) {
-        /* an unfinished step is no result: no row, and the run ends here */
-        run->interrupted = 1;
-        return ADH_EINTR;
-    }
-    if (rc == ADH_EMAXITER) {
-        run->unconverged++;
-        rc = ADH_SUCCESS;
-    }
-    if (rc != ADH_SUCCESS)
-        return rc;
-    if (!(isfinite(o->F) && isfinite(o->delta) && isfinite(o->a)))
-        return ADH_ENAN;
-    int prc = adh_run_push_row(run, o);
-    if (prc != ADH_SUCCESS)
-        return prc;
-    d->c.row = (long)run->nrows - 1;
-    if (wants_profile(&d->ps, h0) && adh_run_push_profile(run, s, branch, path) != ADH_SUCCESS)
-        return ADH_ENOMEM;
-    /* the contact at the grid edge, or past a graded grid's fine band */
-    if (o->a >= 0.9 * d->g->rmax || !adh_rings_resolves(d->g, o->a))
-        return ADH_EGRID;
-    return ADH_SUCCESS;
-}
+/* The step rule of the relaxation, in three parts: begin (move to the
+ * next position, or restore a turn's snapshot, or dwell there), iterate
+ * (in batches), finish (observe, record the row, note jump-in, turns,
+ * pull-off and jump-out). */
 
 static int finish(adh_drive *d, int status)
 {
     d->c.ph = PH_DONE;
     d->c.status = status;
+    d->c.inflight = 0;
     return status;
-}
-
-/* After a step: ADH_CONTINUE with the row, or the end of the run. */
-static int after(adh_drive *d, int rc)
-{
-    return rc == ADH_SUCCESS ? ADH_CONTINUE : finish(d, rc);
 }
 
 /* The loading branch has reached its end: unload from every turn reached,
@@ -223,23 +177,32 @@ static void next_turn(adh_drive *d)
     d->c.status = ADH_SUCCESS;
 }
 
-int adh_drive_step(adh_drive *d)
+static void start(adh_drive *d, double h0, int branch, int path, size_t dwell, int at_turn)
 {
-    adh_run *run = d->run;
+    cursor *c = &d->c;
+    c->inflight = 1;
+    c->h0 = h0;
+    c->branch = branch;
+    c->path = path;
+    c->dwell = dwell;
+    c->at_turn = at_turn;
+    c->spent = 0;
+    if (!dwell)
+        adh_relax_move(d->w, h0);
+}
+
+/* Picks the next step of the protocol and starts it. ADH_SUCCESS, or the
+ * final status when there is none. */
+static int begin(adh_drive *d)
+{
     const adh_protocol_settings *ps = &d->ps;
     size_t nt = ps->nturns;
     double tol = 1e-6 * ps->step;
-    adh_obs o;
-    int rc;
     for (;;) {
         switch (d->c.ph) {
         case PH_START:
-            rc = relax_step(d, d->start, +1, 0, 0, &o);
-            d->c.in_contact = o.a > 0;
-            d->c.k = 1;
-            d->c.ti = 0;
-            d->c.ph = PH_LOAD;
-            return after(d, rc);
+            start(d, d->start, +1, 0, 0, 0);
+            return ADH_SUCCESS;
         case PH_LOAD: {
             if ((nt == 0 && d->c.in_contact) || (nt > 0 && d->c.ti == nt)) {
                 begin_unloading(d);
@@ -259,73 +222,169 @@ int adh_drive_step(adh_drive *d)
             if (nt == 0 && h0 < -0.01 * d->m.R)
                 return finish(d, ADH_SUCCESS);
             d->c.k = k + 1;
-            rc = relax_step(d, h0, +1, 0, 0, &o);
-            if (rc != ADH_SUCCESS)
-                return finish(d, rc);
-            if (o.a > 0 && !d->c.in_contact) {
-                d->c.in_contact = 1;
-                run->jump_in_h0 = o.h0;
-            }
-            while (at_turn && d->c.ti < nt && fabs(d->turns[d->c.ti] - h0) < tol) {
-                adh_turn_result *tr = &run->turns[run->nturns++];
-                tr->h0 = h0;
-                tr->max_load = o.F;
-                tr->a_turn = o.a;
-                tr->pulloff_F = NAN;
-                tr->pulloff_h0 = NAN;
-                tr->jump_out_h0 = NAN;
-                tr->path = 0;
-                size_t ti = d->c.ti++;
-                if (!d->snaps[ti])
-                    d->snaps[ti] = adh_state_alloc(d->g->n);
-                if (!d->snaps[ti])
-                    return finish(d, ADH_ENOMEM);
-                adh_state_copy(d->snaps[ti], adh_relax_state(d->w));
-            }
-            return ADH_CONTINUE;
+            start(d, h0, +1, 0, 0, at_turn);
+            return ADH_SUCCESS;
         }
         case PH_TURN: {
-            adh_turn_result *tr = &run->turns[d->c.ui];
+            adh_turn_result *tr = &d->run->turns[d->c.ui];
             tr->path = (int)d->c.ui + 1;
             adh_relax_restore(d->w, d->snaps[d->c.ui]);
-            rc = relax_step(d, tr->h0, -1, tr->path, ps->dwell, &o);
-            if (rc != ADH_SUCCESS)
-                return finish(d, rc);
-            tr->pulloff_F = o.F;
-            tr->pulloff_h0 = o.h0;
-            d->c.touched = o.a > 0;
-            d->c.k = 1;
-            d->c.ph = PH_UNLOAD;
-            return ADH_CONTINUE;
+            start(d, tr->h0, -1, tr->path, ps->dwell, 0);
+            return ADH_SUCCESS;
         }
         case PH_UNLOAD: {
-            adh_turn_result *tr = &run->turns[d->c.ui];
+            adh_turn_result *tr = &d->run->turns[d->c.ui];
             double h0 = tr->h0 + (double)d->c.k * ps->step;
             if (h0 > d->start + tol) {
                 next_turn(d);
                 continue;
             }
             d->c.k++;
-            rc = relax_step(d, h0, -1, tr->path, 0, &o);
-            if (rc != ADH_SUCCESS)
-                return finish(d, rc);
-            if (o.F < tr->pulloff_F) {
-                tr->pulloff_F = o.F;
-                tr->pulloff_h0 = o.h0;
-            }
-            if (o.a > 0)
-                d->c.touched = 1;
-            else if (d->c.touched) {
-                tr->jump_out_h0 = o.h0;
-                next_turn(d);
-            }
-            return ADH_CONTINUE;
+            start(d, h0, -1, tr->path, 0, 0);
+            return ADH_SUCCESS;
         }
         case PH_DONE:
         default:
             return d->c.status;
         }
     }
+}
+
+/* The step under way is solved: observe and record its row (a step that
+ * hit the cap is flagged in the row and counted, not fatal), then note
+ * what it means for the protocol. ADH_CONTINUE, or the status that ends
+ * the run (ADH_EGRID keeps its row). */
+static int complete(adh_drive *d, int rc)
+{
+    adh_run *run = d->run;
+    cursor *c = &d->c;
+    const adh_state *s = adh_relax_state(d->w);
+    adh_obs o;
+    memset(&o, 0, sizeof o);
+    adh_observe(d->g, &d->m, s, &o);
+    o.iters = c->dwell ? c->dwell : adh_relax_step_iterations(d->w);
+    o.seconds = c->spent;
+    o.branch = c->branch;
+    o.path = c->path;
+    o.converged = (rc == ADH_SUCCESS);
+    o.stable = 1;
+    run->iterations += o.iters;
+    run->seconds += c->spent;
+    c->inflight = 0;
+    if (rc == ADH_EINTR) {
+        /* an unfinished step is no result: no row, and the run ends here */
+        run->interrupted = 1;
+        return finish(d, ADH_EINTR);
+    }
+    if (rc == ADH_EMAXITER) {
+        run->unconverged++;
+        rc = ADH_SUCCESS;
+    }
+    if (rc != ADH_SUCCESS)
+        return finish(d, rc);
+    if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a)))
+        return finish(d, ADH_ENAN);
+    if (adh_run_push_row(run, &o) != ADH_SUCCESS)
+        return finish(d, ADH_ENOMEM);
+    c->row = (long)run->nrows - 1;
+    if (wants_profile(&d->ps, c->h0) && adh_run_push_profile(run, s, c->branch, c->path) != ADH_SUCCESS)
+        return finish(d, ADH_ENOMEM);
+    /* the contact at the grid edge, or past a graded grid's fine band */
+    int edge = o.a >= 0.9 * d->g->rmax || !adh_rings_resolves(d->g, o.a);
+    double tol = 1e-6 * d->ps.step;
+    switch (c->ph) {
+    case PH_START:
+        c->in_contact = o.a > 0;
+        c->k = 1;
+        c->ti = 0;
+        c->ph = PH_LOAD;
+        break;
+    case PH_LOAD:
+        if (edge)
+            break;
+        if (o.a > 0 && !c->in_contact) {
+            c->in_contact = 1;
+            run->jump_in_h0 = o.h0;
+        }
+        while (c->at_turn && c->ti < d->ps.nturns && fabs(d->turns[c->ti] - c->h0) < tol) {
+            adh_turn_result *tr = &run->turns[run->nturns++];
+            tr->h0 = c->h0;
+            tr->max_load = o.F;
+            tr->a_turn = o.a;
+            tr->pulloff_F = NAN;
+            tr->pulloff_h0 = NAN;
+            tr->jump_out_h0 = NAN;
+            tr->path = 0;
+            size_t ti = c->ti++;
+            if (!d->snaps[ti])
+                d->snaps[ti] = adh_state_alloc(d->g->n);
+            if (!d->snaps[ti])
+                return finish(d, ADH_ENOMEM);
+            adh_state_copy(d->snaps[ti], s);
+        }
+        break;
+    case PH_TURN: {
+        if (edge)
+            break;
+        adh_turn_result *tr = &run->turns[c->ui];
+        tr->pulloff_F = o.F;
+        tr->pulloff_h0 = o.h0;
+        c->touched = o.a > 0;
+        c->k = 1;
+        c->ph = PH_UNLOAD;
+        break;
+    }
+    case PH_UNLOAD: {
+        if (edge)
+            break;
+        adh_turn_result *tr = &run->turns[c->ui];
+        if (o.F < tr->pulloff_F) {
+            tr->pulloff_F = o.F;
+            tr->pulloff_h0 = o.h0;
+        }
+        if (o.a > 0)
+            c->touched = 1;
+        else if (c->touched) {
+            tr->jump_out_h0 = o.h0;
+            next_turn(d);
+        }
+        break;
+    }
+    default:
+        break;
+    }
+    if (edge)
+        return finish(d, ADH_EGRID);
+    return ADH_CONTINUE;
+}
+
+int adh_drive_iterate(adh_drive *d, size_t max_batch, int *row)
+{
+    *row = 0;
+    if (!d->c.inflight) {
+        if (d->c.ph == PH_DONE)
+            return d->c.status;
+        int rc = begin(d);
+        if (!d->c.inflight)
+            return rc;   /* the protocol is complete (or was ended) */
+    }
+    cursor *c = &d->c;
+    double t0 = adh_clock_seconds();
+    int rc = c->dwell ? adh_relax_dwell(d->w, c->dwell) : adh_relax_iterate(d->w, max_batch);
+    c->spent += adh_clock_seconds() - t0;
+    if (rc == ADH_CONTINUE)
+        return ADH_CONTINUE;   /* the step goes on: call again */
+    rc = complete(d, rc);
+    *row = d->c.row >= 0 && (rc == ADH_CONTINUE || rc == ADH_EGRID);
+    return rc;
+}
+
+int adh_drive_step(adh_drive *d)
+{
+    int row, rc;
+    while ((rc = adh_drive_iterate(d, 0, &row)) == ADH_CONTINUE && !row)
+        ;
+    return rc;
 }
 
 const adh_obs *adh_drive_row(const adh_drive *d)

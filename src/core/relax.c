@@ -204,6 +204,11 @@ int adh_relax_set(adh_relax *w, const adh_material *m, const adh_relax_settings 
     w->prev_central = 0;
     w->change = 0;
     w->iters = 0;
+    /* all that a previous run left: a workspace set again is a fresh one,
+     * so a reused solver (the drive, the TUI) gives a fresh run's rows */
+    w->converged = 0;
+    w->shifted = 0;
+    w->dscale = 0;
     adh_relax_refresh(w);
     momentum_reset(w);
     return ADH_SUCCESS;

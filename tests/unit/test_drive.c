@@ -81,6 +81,23 @@ int main(void)
         adh_drive_snap_free(snap);
     }
 
+    /* in batches: the same rows whatever the batch */
+    for (size_t batch = 1; batch <= 64; batch *= 8) {
+        adh_run br;
+        adh_run_init(&br);
+        adh_drive_set(d, &m, &rs, &ps, &br);
+        int row, calls = 0;
+        size_t rows = 0;
+        while ((rc = adh_drive_iterate(d, batch, &row)) == ADH_CONTINUE) {
+            calls++;
+            rows += row;
+        }
+        ok(rc == ADH_SUCCESS && rows == ref.nrows && br.nrows == ref.nrows && same_rows(br.rows, ref.rows, ref.nrows) &&
+           (size_t)calls > rows, "in batches of %zu iterations: the protocol's rows, one reported per step (%d calls; rc %d, %zu rows reported, %zu kept)",
+           batch, calls, rc, rows, br.nrows);
+        adh_run_free(&br);
+    }
+
     /* cancel: the flag stops the step under way */
     static volatile sig_atomic_t stop = 0;
     rs.cancel = &stop;
