@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 #include "adhere/observe.h"
+#include "adhere/run.h"
 
 typedef struct adh_cycle {
     double max_load;     /* force at the deepest loading position (the turn), N; NAN before any row */
@@ -24,6 +25,13 @@ typedef struct adh_cycle {
 /* Measures rows (path 0 loading, path k > 0 the k-th unloading branch) on
  * the last unloading branch, the deepest turn's in a batch run. */
 void adh_cycle_measure(const adh_obs *rows, size_t n, adh_cycle *c);
+
+/* The turns of rows, as a run reports them: for each unloading branch
+ * (path k > 0, in row order), the loading state it turned from (the
+ * loading row at the branch's first position, else the last loading row
+ * before the branch: a path that turned where it stood), its pull-off (the
+ * force minimum) and where it left contact. Returns how many (at most cap). */
+size_t adh_cycle_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, size_t cap);
 
 /* The area between loading (path 0) and the unloading branch path: the
  * force gap, the loading force linearly interpolated at each unloading

@@ -74,3 +74,39 @@ void adh_cycle_measure(const adh_obs *rows, size_t n, adh_cycle *c)
     }
     c->hysteresis = adh_cycle_hysteresis(rows, n, c->unloading);
 }
+
+size_t adh_cycle_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, size_t cap)
+{
+    size_t nt = 0;
+    for (size_t i = 0; i < n && nt < cap; i++) {
+        int p = rows[i].path;
+        if (rows[i].branch > 0 || p <= 0 || (i > 0 && rows[i - 1].branch < 0 && rows[i - 1].path == p))
+            continue;
+        size_t t = i;   /* the last loading row before the branch */
+        while (t > 0 && rows[t].branch < 0)
+            t--;
+        for (size_t j = 0; j < i; j++)
+            if (rows[j].path == 0 && rows[j].h0 == rows[i].h0)
+                t = j;   /* the branch began at a turn the loading hit */
+        adh_turn_result *tr = &turns[nt++];
+        tr->h0 = rows[t].h0;
+        tr->max_load = rows[t].F;
+        tr->a_turn = rows[t].a;
+        tr->path = p;
+        tr->pulloff_F = INFINITY;
+        tr->pulloff_h0 = NAN;
+        tr->jump_out_h0 = NAN;
+        int touched = 0;
+        for (size_t j = i; j < n && rows[j].branch < 0 && rows[j].path == p; j++) {
+            if (rows[j].F < tr->pulloff_F) {
+                tr->pulloff_F = rows[j].F;
+                tr->pulloff_h0 = rows[j].h0;
+            }
+            if (rows[j].a > 0)
+                touched = 1;
+            else if (touched && isnan(tr->jump_out_h0))
+                tr->jump_out_h0 = rows[j].h0;
+        }
+    }
+    return nt;
+}

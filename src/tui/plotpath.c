@@ -8,46 +8,11 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "adhere/cycle.h"
 #include "adhere/history.h"
 #include "adhere/protocol.h"
 #include "plot/outdir.h"
 #include "plot/plot.h"
-
-/* The turning points of the path so far, as --batch reports them: each
- * unloading branch, with the loading state it turned from, its pull-off
- * (the force minimum) and where it left contact. */
-static size_t path_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, size_t cap)
-{
-    size_t nt = 0;
-    for (size_t i = 0; i < n && nt < cap; i++) {
-        int p = rows[i].path;
-        if (rows[i].branch > 0 || p <= 0 || (i > 0 && rows[i - 1].branch < 0 && rows[i - 1].path == p))
-            continue;
-        size_t t = i;   /* the last loading row before the branch */
-        while (t > 0 && rows[t].branch < 0)
-            t--;
-        adh_turn_result *tr = &turns[nt++];
-        tr->h0 = rows[t].h0;
-        tr->max_load = rows[t].F;
-        tr->a_turn = rows[t].a;
-        tr->path = p;
-        tr->pulloff_F = INFINITY;
-        tr->pulloff_h0 = NAN;
-        tr->jump_out_h0 = NAN;
-        int touched = 0;
-        for (size_t j = i; j < n && rows[j].branch < 0 && rows[j].path == p; j++) {
-            if (rows[j].F < tr->pulloff_F) {
-                tr->pulloff_F = rows[j].F;
-                tr->pulloff_h0 = rows[j].h0;
-            }
-            if (rows[j].a > 0)
-                touched = 1;
-            else if (touched && isnan(tr->jump_out_h0))
-                tr->jump_out_h0 = rows[j].h0;
-        }
-    }
-    return nt;
-}
 
 static int write_into(const adh_config *c, const adh_run *run, const char *dir, char *msg, size_t msglen);
 
@@ -150,7 +115,7 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
         run.nprofiles = run.profiles_cap = np;
         return write_into(&c, &run, dir, msg, msglen);
     }
-    run.nturns = path_turns(rows, n, run.turns, ADH_MAX_TURNS);
+    run.nturns = adh_cycle_turns(rows, n, run.turns, ADH_MAX_TURNS);
     c.proto.nturns = run.nturns;
     for (size_t i = 0; i < run.nturns; i++)
         c.proto.turns[i] = run.turns[i].h0;

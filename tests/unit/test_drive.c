@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <string.h>
 
+#include "adhere/cycle.h"
 #include "adhere/drive.h"
 #include "adhere/status.h"
 #include "tap.h"
@@ -66,6 +67,15 @@ int main(void)
     ok(run.nturns == 2 && run.turns[1].pulloff_F == ref.turns[1].pulloff_F &&
        run.turns[0].jump_out_h0 == ref.turns[0].jump_out_h0 && run.jump_in_h0 == ref.jump_in_h0,
        "and its turns, pull-offs, jump-out and jump-in");
+
+    adh_turn_result tt[ADH_MAX_TURNS];
+    size_t ntt = adh_cycle_turns(run.rows, run.nrows, tt, ADH_MAX_TURNS);
+    int same_turns = ntt == run.nturns;
+    for (size_t i = 0; same_turns && i < ntt; i++)
+        same_turns = tt[i].h0 == run.turns[i].h0 && tt[i].max_load == run.turns[i].max_load &&
+                     tt[i].pulloff_F == run.turns[i].pulloff_F && tt[i].path == run.turns[i].path &&
+                     tt[i].jump_out_h0 == run.turns[i].jump_out_h0;
+    ok(same_turns, "the turns read off the rows (adh_cycle_turns, what the TUI's plots use) are the drive's");
 
     ok(snap != NULL, "a snapshot on the first unloading branch");
     if (snap) {
