@@ -220,6 +220,7 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
             snprintf(why, n, "--kernel: '%s' is not a kernel: use paper or ring", arg);
             return 2;
         }
+        cfg->kernel_given = 1;
         return 0;
     case OPT_MIXING:
         if (adh_mix_rule_parse(arg, &cfg->relax.rule) != 0) {

@@ -38,7 +38,7 @@ adh_grid_use adh_config_grid_use(const adh_config *c)
 
 int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
 {
-    if (cfg->nodes_given || !isnan(cfg->spacing) || cfg->mode == ADH_MODE_RIGID)
+    if (cfg->nodes_given || !isnan(cfg->spacing) || cfg->graded || cfg->mode == ADH_MODE_RIGID)
         return 0;
     adh_config run, soft;
     double narrowest = INFINITY;
@@ -56,12 +56,20 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
     double deepest = 0;
     for (size_t i = 0; i < cfg->proto.nturns; i++)
         deepest = fmin(deepest, cfg->proto.turns[i]);
-    size_t n;
-    double dr;
-    if (adh_grid_choose(&soft.mat, adh_config_grid_use(cfg), deepest, &n, &dr, why, whylen) != ADH_SUCCESS)
+    adh_grid_choice gc;
+    /* graded rings need the ring kernel: not when the paper's was asked for */
+    int graded_ok = !(cfg->kernel_given && cfg->kernel == ADH_KERNEL_PAPER);
+    if (adh_grid_choose(&soft.mat, adh_config_grid_use(cfg), deepest, graded_ok, &gc, why, whylen) != ADH_SUCCESS)
         return -1;
-    cfg->nodes = n;
-    cfg->spacing = dr;
+    cfg->nodes = gc.n;
+    cfg->spacing = gc.dr;
+    if (gc.graded) {
+        cfg->graded = 1;
+        cfg->kernel = ADH_KERNEL_RING;
+        cfg->fine_band = gc.fine;
+        cfg->growth = gc.ratio;
+        cfg->grid_radius = gc.rmax;
+    }
     return 0;
 }
 
