@@ -190,6 +190,7 @@ static int apply(adh_cli *cli, int c, const char *arg, const char *name, char *w
             snprintf(why, n, "--operator: '%s' is not an operator: use dense or hmat", arg);
             return 2;
         }
+        cfg->storage_given = 1;
         return 0;
     case 'N':
     case OPT_MAX_ITER:

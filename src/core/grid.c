@@ -117,13 +117,14 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
         c->fine = s.fine;
         c->ratio = s.ratio;
         c->rmax = s.rmax;
+        c->hierarchical = 1;
         nn = adh_rings_count(&s);
         c->n = nn;
     }
     if (nn > ADH_GRID_MAX_NODES || need > 0.3 * m->R) {
         snprintf(why, whylen,
                  "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
-                 "out to Rmax = %.3g m: a %s grid of N = %zu nodes and a %.0f MB kernel, beyond this program's "
+                 "out to Rmax = %.3g m: a %s grid of N = %zu nodes (a dense kernel of %.0f MB), beyond this program's "
                  "budget of N = %d (%.0f MB); use a stiffer material or a smaller sigma, or give -N/--spacing "
                  "yourself with --force (the run is then marked resolved 0)",
                  d.sigma, limit, widths, adh_edge_zone(m), c->rmax, kind, nn, mb((double)nn), ADH_GRID_MAX_NODES,

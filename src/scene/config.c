@@ -69,6 +69,8 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
         cfg->fine_band = gc.fine;
         cfg->growth = gc.ratio;
         cfg->grid_radius = gc.rmax;
+        if (gc.hierarchical && !cfg->storage_given)
+            cfg->storage = ADH_STORAGE_HMAT;
     }
     return 0;
 }
