@@ -38,7 +38,7 @@ adh_grid_use adh_config_grid_use(const adh_config *c)
 
 int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
 {
-    if (cfg->nodes_given || !isnan(cfg->spacing) || cfg->graded || cfg->mode == ADH_MODE_RIGID)
+    if (cfg->nodes_given || !isnan(cfg->spacing) || cfg->mode == ADH_MODE_RIGID)
         return 0;
     adh_config run, soft;
     double narrowest = INFINITY;
@@ -64,11 +64,15 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
     cfg->nodes = gc.n;
     cfg->spacing = gc.dr;
     if (gc.graded) {
+        /* a graded grid asked for keeps its own band, growth and radius */
+        if (!cfg->graded)
+            cfg->growth = gc.ratio;
         cfg->graded = 1;
         cfg->kernel = ADH_KERNEL_RING;
-        cfg->fine_band = gc.fine;
-        cfg->growth = gc.ratio;
-        cfg->grid_radius = gc.rmax;
+        if (isnan(cfg->fine_band))
+            cfg->fine_band = gc.fine;
+        if (isnan(cfg->grid_radius))
+            cfg->grid_radius = gc.rmax;
         if (gc.hierarchical && !cfg->storage_given)
             cfg->storage = ADH_STORAGE_HMAT;
     }
