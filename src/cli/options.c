@@ -40,11 +40,11 @@ static const option_doc options[] = {
     { { "spacing", required_argument, 0, OPT_SPACING }, "M", "grid spacing (default: the paper's 0.0212 sqrt(R z0), or finer where the contact edge needs it)" },
     { { "force", no_argument, 0, OPT_FORCE }, NULL, "run a grid coarser than the resolved limit (0.45 edge-zone widths, static 0.3); marked resolved 0" },
     { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)" },
-    { { "grid", required_argument, 0, OPT_GRID }, "uniform|graded", "radial grid: N equal rings, or fine rings over the contact then growing ones (default uniform)" },
+    { { "grid", required_argument, 0, OPT_GRID }, "uniform|graded", "radial grid: N equal rings, or fine rings over the contact then growing ones (default uniform; graded when neither N nor the spacing is given and a resolved uniform grid needs over 1000 nodes)" },
     { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M", "graded grid: radius of the fine band (default 1.25 x the contact expected at the deepest turn, JKR or overlap)" },
     { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)" },
     { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M", "graded grid: outer radius Rmax (default the default uniform grid's, 1.5um at R=10um, z0=0.5nm)" },
-    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat", "how the kernel is held: dense matrix or hierarchical (hmat-oss) (default dense)" },
+    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat", "how the kernel is held: dense matrix or hierarchical (hmat-oss) (default dense; hmat on an automatic graded grid)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
     { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)" },
@@ -191,6 +191,7 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
             snprintf(why, n, "--operator: '%s' is not an operator: use dense or hmat", arg);
             return 2;
         }
+        cfg->storage_given = 1;
         return 0;
     case 'N':
     case OPT_MAX_ITER:
@@ -221,6 +222,7 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
             snprintf(why, n, "--kernel: '%s' is not a kernel: use paper or ring", arg);
             return 2;
         }
+        cfg->kernel_given = 1;
         return 0;
     case OPT_MIXING:
         if (adh_mix_rule_parse(arg, &cfg->relax.rule) != 0) {

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "adhere/models.h"
+#include "adhere/rings.h"
 #include "adhere/status.h"
 
 /* The paper's grid, 1.5 nm at R = 10 um and z0 = 0.5 nm, is 0.0212 sqrt(R z0):
@@ -75,17 +76,22 @@ static double contact_estimate(const adh_material *m, double deepest)
     return fmax(hi, 1.5 * sqrt(2.0 * m->R * depth));
 }
 
-int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, size_t *n, double *dr, char *why,
-                    size_t whylen)
+static double mb(double nodes)
+{
+    return nodes * nodes * sizeof(double) / 1048576.0;
+}
+
+int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int graded_ok, adh_grid_choice *c,
+                    char *why, size_t whylen)
 {
     double paper_rmax = fmin(adh_grid_default_rmax(m), 0.3 * m->R);
     double widths = adh_grid_edge_spacing(use);
     double limit = widths * adh_edge_zone(m);
-    if (paper_rmax / 1000.0 <= limit) {
-        *n = 1000;
-        *dr = NAN;
+    adh_derived d;
+    adh_material_derive(m, &d);
+    *c = (adh_grid_choice){ .graded = 0, .n = 1000, .dr = NAN, .fine = NAN, .ratio = 1, .rmax = paper_rmax };
+    if (paper_rmax / 1000.0 <= limit)
         return ADH_SUCCESS;
-    }
     /* the radius the protocol check asks for: the contact within 0.8 Rmax,
      * the gap at the edge 10 z0 wide and the force beyond it below 1e-3 of
      * 2 pi gamma R (gap over 36.5 z0) */
@@ -93,23 +99,49 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, siz
     double gap = 36.6 * m->z0 - fmin(deepest, 0.0);
     double need = fmax(a / 0.8 * 1.05, sqrt(2.0 * m->R * gap));
     /* a finer grid than the paper's costs N^2: only as far out as needed */
-    double rmax = need;
-    size_t nn = (size_t)ceil(rmax / limit);
-    if (nn > ADH_GRID_MAX_NODES || rmax > 0.3 * m->R) {
-        adh_derived d;
-        adh_material_derive(m, &d);
+    size_t nn = (size_t)ceil(need / limit);
+    const char *kind = "uniform";
+    if (nn <= ADH_GRID_UNIFORM_MAX_NODES || !graded_ok) {
+        c->n = nn < 10 ? 10 : nn;
+        c->dr = need / (double)c->n;
+        c->rmax = need;
+    } else {
+        /* Only the band the contact line sweeps needs the fine spacing; the
+         * rings grow beyond it as adhere/rings.h allows. */
+        kind = "graded";
+        adh_rings_spec s = { .dr = limit, .ratio = 1.05 };
+        s.fine = 1.25 * adh_rings_contact_estimate(m, fmin(deepest, 0.0));
+        s.rmax = fmax(need, 1.1 * s.fine);
+        c->graded = 1;
+        c->dr = limit;
+        c->fine = s.fine;
+        c->ratio = s.ratio;
+        c->rmax = s.rmax;
+        c->hierarchical = 1;
+        nn = adh_rings_count(&s);
+        c->n = nn;
+    }
+    if (nn > ADH_GRID_MAX_NODES || need > 0.3 * m->R) {
         snprintf(why, whylen,
                  "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
-                 "out to Rmax = %.3g m: N = %zu nodes and a %.0f MB kernel, beyond this program's budget of "
-                 "N = %d (%.0f MB); use a stiffer material or a smaller sigma, or give -N/--spacing "
+                 "out to Rmax = %.3g m: a %s grid of N = %zu nodes (a dense kernel of %.0f MB), beyond this program's "
+                 "budget of N = %d (%.0f MB); use a stiffer material or a smaller sigma, or give -N/--spacing "
                  "yourself with --force (the run is then marked resolved 0)",
-                 d.sigma, limit, widths, adh_edge_zone(m), rmax, nn,
-                 (double)nn * (double)nn * 8 / 1048576.0, ADH_GRID_MAX_NODES,
-                 (double)ADH_GRID_MAX_NODES * ADH_GRID_MAX_NODES * 8 / 1048576.0);
+                 d.sigma, limit, widths, adh_edge_zone(m), c->rmax, kind, nn, mb((double)nn), ADH_GRID_MAX_NODES,
+                 mb(ADH_GRID_MAX_NODES));
         return ADH_EGRID;
     }
-    *n = nn < 10 ? 10 : nn;
-    *dr = rmax / (double)*n;
+    if (use == ADH_GRID_STATIC && nn > ADH_GRID_STATIC_MAX_NODES) {
+        snprintf(why, whylen,
+                 "sigma = %.3g: a resolved static curve needs a grid spacing of at most %.3g m (%.2g edge-zone "
+                 "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps trace the "
+                 "contact line across every fine node one lattice fold at a time: beyond N = %d that takes "
+                 "over 2 minutes on one core (8 at sigma = 15, over 13 at 22.5); use --mode=relax (resolved at this sigma), a "
+                 "stiffer material, or give -N/--spacing yourself with --force (the run is then marked "
+                 "resolved 0 if the grid is coarser than the limit)",
+                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, mb((double)nn), ADH_GRID_STATIC_MAX_NODES);
+        return ADH_EGRID;
+    }
     return ADH_SUCCESS;
 }
 

@@ -34,7 +34,7 @@ double adh_force(const adh_grid *g, const adh_material *m, const adh_state *s)
     if (g->graded) { /* the same: ring area pi(b^2 - a^2) = 2 pi r_n (b - a) */
         for (size_t i = 0; i < g->n; i++)
             sum += s->p[i] * adh_rings_weight(g, i);
-        return 2.0 * M_PI * sum;
+        return 2.0 * M_PI * sum + adh_force_tail(g, m, s->h0);
     }
     for (size_t i = 0; i < g->n; i++)
         sum += s->p[i] * g->r[i];

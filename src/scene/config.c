@@ -56,12 +56,26 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
     double deepest = 0;
     for (size_t i = 0; i < cfg->proto.nturns; i++)
         deepest = fmin(deepest, cfg->proto.turns[i]);
-    size_t n;
-    double dr;
-    if (adh_grid_choose(&soft.mat, adh_config_grid_use(cfg), deepest, &n, &dr, why, whylen) != ADH_SUCCESS)
+    adh_grid_choice gc;
+    /* graded rings need the ring kernel: not when the paper's was asked for */
+    int graded_ok = !(cfg->kernel_given && cfg->kernel == ADH_KERNEL_PAPER);
+    if (adh_grid_choose(&soft.mat, adh_config_grid_use(cfg), deepest, graded_ok, &gc, why, whylen) != ADH_SUCCESS)
         return -1;
-    cfg->nodes = n;
-    cfg->spacing = dr;
+    cfg->nodes = gc.n;
+    cfg->spacing = gc.dr;
+    if (gc.graded) {
+        /* a graded grid asked for keeps its own band, growth and radius */
+        if (!cfg->graded)
+            cfg->growth = gc.ratio;
+        cfg->graded = 1;
+        cfg->kernel = ADH_KERNEL_RING;
+        if (isnan(cfg->fine_band))
+            cfg->fine_band = gc.fine;
+        if (isnan(cfg->grid_radius))
+            cfg->grid_radius = gc.rmax;
+        if (gc.hierarchical && !cfg->storage_given)
+            cfg->storage = ADH_STORAGE_HMAT;
+    }
     return 0;
 }
 

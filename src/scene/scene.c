@@ -197,6 +197,7 @@ static int handler(void *user, const char *section, const char *name, const char
     case K_KERNEL:
         if (adh_kernel_parse(value, &c->kernel) != 0)
             return fail(sp, "kernel: '%s' is not a kernel: use paper or ring%s", value, "");
+        c->kernel_given = 1;
         return 1;
     case K_MIXING:
         if (adh_mix_rule_parse(value, &c->relax.rule) != 0)

@@ -83,4 +83,15 @@ refused "unknown unit 'Gpa' (units are case-sensitive: did you mean 'GPa'?)" "$A
 refused "unknown option '--bach': did you mean --batch?" "$ADHERE" --bach
 refused "'extra': --help, --version and --list-keys take no scene" "$ADHERE" --version extra
 check "and --version alone still prints the version" sh -c "'$ADHERE' --version | grep -q '^adhere '"
+
+# --- soft contacts: the automatic grid follows sigma, or the run is refused
+"$ADHERE" --plan -E 0.1GPa >"$TMP/soft.plan" 2>&1
+check "sigma = 22.5: the automatic grid is graded, ring kernel, resolved ($(grep '^kernel' "$TMP/soft.plan"))" \
+    sh -c "grep -q '^kernel: ring, .*graded grid of' '$TMP/soft.plan' && grep -q '^resolution: .* resolved' '$TMP/soft.plan'"
+"$ADHERE" --plan -E 0.1GPa --kernel=paper >"$TMP/softp.plan" 2>&1
+check "with --kernel=paper it stays uniform ($(grep '^kernel' "$TMP/softp.plan"))" \
+    sh -c "grep -q '^kernel: paper, N = ' '$TMP/softp.plan' && grep -q '^resolution: .* resolved' '$TMP/softp.plan'"
+refused "sigma = 15: a resolved static curve .*N = [0-9]* nodes .*MB.*--mode=relax" "$ADHERE" --batch --mode=static -E 0.15GPa -o "$TMP/st15"
+check "and nothing was written" [ ! -e "$TMP/st15" ]
+refused "sigma = 56.3 needs a grid spacing .*graded grid of N = .*MB.*--force" "$ADHERE" --plan -E 40MPa
 done_testing

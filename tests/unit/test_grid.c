@@ -11,6 +11,7 @@
 #include "adhere/kernel.h"
 #include "adhere/models.h"
 #include "adhere/protocol.h"
+#include "adhere/rings.h"
 #include "adhere/status.h"
 #include "tap.h"
 
@@ -35,28 +36,63 @@ static void check_and_choose(void)
 
     size_t n;
     double dr;
-    int rc = adh_grid_choose(&m, ADH_GRID_RELAX, -5e-9, &n, &dr, NULL, 0);
-    ok(rc == ADH_SUCCESS && n == 1000 && isnan(dr), "Figure 4 relaxation: the automatic grid is the paper's (N = %zu)", n);
+    adh_grid_choice gc;
+    int rc = adh_grid_choose(&m, ADH_GRID_RELAX, -5e-9, 1, &gc, NULL, 0);
+    ok(rc == ADH_SUCCESS && gc.n == 1000 && isnan(gc.dr) && !gc.graded,
+       "Figure 4 relaxation: the automatic grid is the paper's (N = %zu)", gc.n);
     char why[1024];
-    int bad = 0;
-    for (double sigma = 2.25; sigma <= 40; sigma *= 1.5) {
+    int bad = 0, refused = 0, graded = 0;
+    for (double sigma = 2.25; sigma <= 60; sigma *= 1.5) {
         adh_material s = at_sigma(sigma);
         for (int use = ADH_GRID_RELAX; use <= ADH_GRID_STATIC; use++) {
-            rc = adh_grid_choose(&s, (adh_grid_use)use, -5e-9, &n, &dr, why, sizeof why);
-            double spacing = isnan(dr) ? adh_grid_spacing_for(&s, n) : dr;
-            adh_grid_check(&s, (adh_grid_use)use, n, spacing, &r);
-            adh_grid g = { .n = n, .dr = spacing, .rmax = (double)n * spacing, .r = NULL };
-            adh_protocol_settings ps = adh_protocol_settings_default();
-            if (rc != ADH_SUCCESS || !r.resolved || n > ADH_GRID_MAX_NODES ||
-                adh_protocol_check(&ps, &s, &g, why, sizeof why) != ADH_SUCCESS) {
-                bad++;
-                printf("# sigma = %.3g use %d: N = %zu, dr = %.3g: %s\n", sigma, use, n, spacing, why);
+            rc = adh_grid_choose(&s, (adh_grid_use)use, -5e-9, 1, &gc, why, sizeof why);
+            if (rc == ADH_EGRID && strstr(why, "sigma = ") && strstr(why, "MB") &&
+                (strstr(why, "--force") || (use == ADH_GRID_STATIC && strstr(why, "--mode=relax")))) {
+                refused++;
+                continue;
             }
+            n = gc.n;
+            dr = isnan(gc.dr) ? adh_grid_spacing_for(&s, n) : gc.dr;
+            adh_grid *g = NULL;
+            if (gc.graded) {
+                adh_rings_spec spec = { .dr = gc.dr, .fine = gc.fine, .ratio = gc.ratio, .rmax = gc.rmax };
+                g = adh_rings_alloc(&spec);
+                graded++;
+            } else {
+                g = adh_grid_alloc(n, dr);
+            }
+            adh_grid_check(&s, (adh_grid_use)use, n, g ? g->dr : NAN, &r);
+            adh_protocol_settings ps = adh_protocol_settings_default();
+            if (rc != ADH_SUCCESS || !g || g->n != n || !r.resolved || n > ADH_GRID_MAX_NODES ||
+                adh_protocol_check(&ps, &s, g, why, sizeof why) != ADH_SUCCESS ||
+                adh_rings_check(g, &s, -5e-9, why, sizeof why) != ADH_SUCCESS) {
+                bad++;
+                printf("# sigma = %.3g use %d: N = %zu, dr = %.3g: %s\n", sigma, use, n, dr, why);
+            }
+            adh_grid_free(g);
         }
     }
-    ok(bad == 0, "sigma = 2.25 ... 40: the automatic grid is resolved, within the budget and passes the protocol check (%d not)", bad);
+    ok(bad == 0 && refused > 0 && graded > 0,
+       "sigma = 2.25 ... 60: the automatic grid is resolved, within the budget and passes the protocol and fine-band "
+       "checks, or is refused naming sigma, the memory and what to do (%d not; %d graded, %d refused)", bad, graded, refused);
+    /* the uniform grid stays where it resolves with at most the paper's N */
+    adh_material mid = at_sigma(15);
+    rc = adh_grid_choose(&mid, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
+    ok(rc == ADH_SUCCESS && !gc.graded && gc.n <= ADH_GRID_UNIFORM_MAX_NODES,
+       "sigma = 15 relaxation: uniform, N = %zu", gc.n);
+    adh_material soft22 = at_sigma(22.5);
+    rc = adh_grid_choose(&soft22, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
+    ok(rc == ADH_SUCCESS && gc.graded && gc.dr <= 0.45 * adh_edge_zone(&soft22) * (1 + 1e-9) &&
+       gc.fine >= adh_rings_contact_estimate(&soft22, -5e-9),
+       "sigma = 22.5 relaxation: graded, %zu rings, fine %.3g m to %.3g m (the contact at the turn %.3g m)", gc.n, gc.dr,
+       gc.fine, adh_rings_contact_estimate(&soft22, -5e-9));
+    rc = adh_grid_choose(&soft22, ADH_GRID_RELAX, -5e-9, 0, &gc, why, sizeof why);
+    ok(rc == ADH_SUCCESS && !gc.graded, "with the paper's kernel asked for, it stays uniform (N = %zu)", gc.n);
+    rc = adh_grid_choose(&mid, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why);
+    ok(rc == ADH_EGRID && strstr(why, "sigma = 15") && strstr(why, "--mode=relax"),
+       "the static curve at sigma = 15 is refused before it starts (%s)", why);
     adh_material soft = at_sigma(75);
-    rc = adh_grid_choose(&soft, ADH_GRID_RELAX, -5e-9, &n, &dr, why, sizeof why);
+    rc = adh_grid_choose(&soft, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
     ok(rc == ADH_EGRID && strstr(why, "sigma = 75") && strstr(why, "MB") && strstr(why, "--force"),
        "sigma = 75 is refused, naming sigma, the memory and what to do (%s)", why);
 }
