@@ -52,30 +52,35 @@ const adh_turn_result *adh_run_main_turn(const adh_run *run)
     return NULL;
 }
 
+/* items with room for one more element (the array doubles, from first);
+ * NULL when memory ran out, the old array still the caller's. */
+static void *grow(void *items, size_t *cap, size_t n, size_t size, size_t first)
+{
+    if (n < *cap)
+        return items;
+    size_t c = *cap ? 2 * *cap : first;
+    void *p = realloc(items, c * size);
+    if (p)
+        *cap = c;
+    return p;
+}
+
 int adh_run_push_row(adh_run *run, const adh_obs *o)
 {
-    if (run->nrows == run->rows_cap) {
-        size_t cap = run->rows_cap ? 2 * run->rows_cap : 256;
-        adh_obs *p = realloc(run->rows, cap * sizeof *p);
-        if (!p)
-            return ADH_ENOMEM;
-        run->rows = p;
-        run->rows_cap = cap;
-    }
+    adh_obs *rows = grow(run->rows, &run->rows_cap, run->nrows, sizeof *rows, 256);
+    if (!rows)
+        return ADH_ENOMEM;
+    run->rows = rows;
     run->rows[run->nrows++] = *o;
     return ADH_SUCCESS;
 }
 
 int adh_run_push_profile(adh_run *run, const adh_state *s, int branch, int path)
 {
-    if (run->nprofiles == run->profiles_cap) {
-        size_t cap = run->profiles_cap ? 2 * run->profiles_cap : 16;
-        adh_profile *p = realloc(run->profiles, cap * sizeof *p);
-        if (!p)
-            return ADH_ENOMEM;
-        run->profiles = p;
-        run->profiles_cap = cap;
-    }
+    adh_profile *profiles = grow(run->profiles, &run->profiles_cap, run->nprofiles, sizeof *profiles, 16);
+    if (!profiles)
+        return ADH_ENOMEM;
+    run->profiles = profiles;
     adh_profile *pr = &run->profiles[run->nprofiles];
     pr->u = malloc(3 * s->n * sizeof(double));
     if (!pr->u)
