@@ -561,7 +561,8 @@ int tui_draw_help(const tui_view *v)
     n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn; "
                    "values take units: 2GPa 0.4nm 1e-19J 10um; a bare number is in the unit the panel shows");
     snprintf(msg, sizeof msg, "changing E, A, z0, R, %s, d, N or the spacing starts a new path from the "
-             "start; turn only moves where r stops loading", gk(v, "\xce\xb5", "eps"));
+             "start; turn only moves where r stops loading, and takes a list (1nm,0nm,-2nm): r follows each "
+             "turn, shallowest first, as --batch does", gk(v, "\xce\xb5", "eps"));
     n = help_entry(lines, n, MAX, W, "", msg);
     if (n < MAX)
         snprintf(lines[n++], HELP_LINE, " ");

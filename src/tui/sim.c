@@ -15,6 +15,13 @@
 #include "adhere/protocol.h"
 #include "adhere/status.h"
 
+/* Turning points deepest last: the order --batch reaches them in. */
+static int cmp_desc(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x < y) - (x > y);
+}
+
 const tui_param_info tui_params[P_COUNT] = {
     [P_E] = { "E", "E", "E", "combined modulus", ADH_Q_PRESSURE },
     [P_A] = { "A", "A", "A", "Hamaker constant", ADH_Q_ENERGY },
@@ -51,7 +58,8 @@ static void curve_drop(tui_sim *s)
 
 double tui_sim_curve_end(const tui_sim *s)
 {
-    return isnan(s->turn) ? adh_static_settings_default().h0_end : s->turn;
+    /* the curve ends at the deepest turn, as --batch --mode=static's does */
+    return s->nturns == 0 ? adh_static_settings_default().h0_end : s->turns[s->nturns - 1];
 }
 
 static int curve_started(const tui_sim *s)
@@ -158,9 +166,11 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
     s->relax = cfg->relax;
     s->step = cfg->proto.step;
     s->start_opt = cfg->proto.start;
-    s->turn = NAN;
-    for (size_t i = 0; i < cfg->proto.nturns; i++)
-        s->turn = isnan(s->turn) ? cfg->proto.turns[i] : fmin(s->turn, cfg->proto.turns[i]);
+    s->nturns = cfg->proto.nturns < ADH_MAX_TURNS ? cfg->proto.nturns : ADH_MAX_TURNS;
+    memcpy(s->turns, cfg->proto.turns, s->nturns * sizeof *s->turns);
+    qsort(s->turns, s->nturns, sizeof *s->turns, cmp_desc);
+    s->tcur = 0;
+    s->turn = s->nturns ? s->turns[0] : NAN;
     tui_params_set p = params_get(s);
     if (params_check(&p, cfg->mode, why, whylen) == ADH_EINVAL)
         return -1;
@@ -219,7 +229,9 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
 
 static tui_params_set params_get(const tui_sim *s)
 {
-    tui_params_set p = { s->mat, s->nodes, s->spacing, s->step, s->start_opt, s->turn, s->start, s->relax };
+    tui_params_set p = { s->mat, s->nodes, s->spacing, s->step, s->start_opt, s->turn, s->start, s->relax,
+                         { 0 }, s->nturns, s->tcur };
+    memcpy(p.turns, s->turns, s->nturns * sizeof *s->turns);
     return p;
 }
 
@@ -253,6 +265,9 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
     s->step = e.par.step;
     s->start_opt = e.par.start_opt;
     s->turn = e.par.turn;
+    memcpy(s->turns, e.par.turns, e.par.nturns * sizeof *s->turns);
+    s->nturns = e.par.nturns;
+    s->tcur = e.par.tcur;
     s->start = e.par.start;
     s->relax = e.par.relax;
     derive(s);
@@ -368,8 +383,8 @@ static adh_protocol_settings params_protocol(const tui_params_set *p)
     adh_protocol_settings ps = adh_protocol_settings_default();
     ps.start = p->start_opt;
     ps.step = p->step;
-    ps.nturns = isnan(p->turn) ? 0 : 1;
-    ps.turns[0] = p->turn;
+    ps.nturns = p->nturns;
+    memcpy(ps.turns, p->turns, p->nturns * sizeof *p->turns);
     return ps;
 }
 
@@ -408,7 +423,19 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
         np.nodes = (size_t)llround(v);
         break;
     case P_SPACING: np.spacing = v; break;
-    case P_TURN: np.turn = v; break;
+    case P_TURN:
+        if (s->nstage) {
+            memcpy(np.turns, s->stage_turns, s->nstage * sizeof *np.turns);
+            np.nturns = s->nstage;
+            s->nstage = 0;
+        } else {
+            np.turns[0] = v;
+            np.nturns = isnan(v) ? 0 : 1;
+        }
+        qsort(np.turns, np.nturns, sizeof *np.turns, cmp_desc);
+        np.tcur = 0;
+        np.turn = np.nturns ? np.turns[0] : NAN;
+        break;
     default:
         snprintf(why, whylen, "%s cannot be set", name);
         return -1;
@@ -424,6 +451,9 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
     s->nodes = np.nodes;
     s->spacing = np.spacing;
     s->turn = np.turn;
+    memcpy(s->turns, np.turns, np.nturns * sizeof *s->turns);
+    s->nturns = np.nturns;
+    s->tcur = np.tcur;
     if (p <= P_R)
         derive(s);
     if (p == P_TURN) {
@@ -449,6 +479,35 @@ int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t why
         v = (double)n;
     } else if (p == P_SPACING && strcmp(text, "auto") == 0) {
         v = NAN;
+    } else if (p == P_TURN && strchr(text, ',')) {
+        /* a list of turning points, as a scene's turn = ... */
+        char buf[1024];
+        snprintf(buf, sizeof buf, "%s", text);
+        size_t n = 0;
+        for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+            while (*tok == ' ')
+                tok++;
+            if (n == ADH_MAX_TURNS) {
+                snprintf(why, whylen, "turn: more than %d turning points in '%s'", ADH_MAX_TURNS, text);
+                return -1;
+            }
+            double x;
+            if (adh_parse_quantity(tok, ADH_Q_NONE, &x, NULL, 0) == 0) {
+                double f;
+                tui_sim_param_unit(s, p, 0, &f);
+                x *= f;
+            } else if (adh_parse_quantity(tok, pi->q, &x, msg, sizeof msg) != 0) {
+                snprintf(why, whylen, "%s: %s", pi->name, msg);
+                return -1;
+            }
+            s->stage_turns[n++] = x;
+        }
+        if (n == 0) {
+            snprintf(why, whylen, "turn: '%s' holds no turning point: give lengths separated by commas", text);
+            return -1;
+        }
+        s->nstage = n;
+        v = s->stage_turns[0];
     } else if (adh_parse_quantity(text, ADH_Q_NONE, &v, NULL, 0) == 0) {
         /* a bare number is in the unit the panel shows beside the value */
         double f;
@@ -820,8 +879,69 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
     return ADH_SUCCESS;
 }
 
+int tui_sim_pulled_off(const tui_sim *s)
+{
+    size_t n = s->hist ? adh_history_length(s->hist) : 0;
+    const adh_obs *rows = n ? adh_history_rows(s->hist) : NULL;
+    if (!n || rows[n - 1].branch >= 0 || rows[n - 1].a > 0)
+        return 0;
+    for (size_t i = n - 1; i-- > 0 && rows[i].branch < 0 && rows[i].path == rows[n - 1].path;)
+        if (rows[i].a > 0)
+            return 1;
+    return 0;
+}
+
+int tui_sim_next_turn(tui_sim *s, char *why, size_t whylen)
+{
+    if (s->tcur + 1 >= s->nturns) {
+        snprintf(why, whylen, "no deeper turning point is left (%zu of %zu done)", s->tcur + 1, s->nturns);
+        return -1;
+    }
+    size_t n = s->hist ? adh_history_length(s->hist) : 0;
+    const adh_obs *rows = n ? adh_history_rows(s->hist) : NULL;
+    double tol = 1e-6 * s->step;
+    size_t i = n;
+    while (i-- > 0)
+        if (rows[i].branch > 0 && fabs(rows[i].h0 - s->turn) < tol)
+            break;
+    if (i >= n) {
+        snprintf(why, whylen, "the loading branch at the turn h0 = %g m is not on the path", s->turn);
+        return -1;
+    }
+    adh_obs o = rows[i];   /* copied: the push may move the rows */
+    const adh_state *st = adh_history_state_at(s->hist, i);
+    if (adh_history_push(s->hist, st, &o) != ADH_SUCCESS) {
+        snprintf(why, whylen, "out of memory for the history");
+        return -1;
+    }
+    adh_relax_restore(s->w, adh_history_state(s->hist));
+    s->tcur++;
+    s->turn = s->turns[s->tcur];
+    return 0;
+}
+
+/* The turn r is on, read off the path (after undo, redo or a reset): the
+ * one whose unloading branch the path is on, else the next one to load to. */
+static void sync_turn(tui_sim *s)
+{
+    size_t n = s->hist ? adh_history_length(s->hist) : 0;
+    const adh_obs *rows = n ? adh_history_rows(s->hist) : NULL;
+    int top = 0;
+    for (size_t i = 0; i < n; i++)
+        if (rows[i].branch < 0 && rows[i].path > top)
+            top = rows[i].path;
+    size_t k = (size_t)top;
+    if (n && rows[n - 1].branch < 0 && k > 0)
+        k--;
+    if (s->nturns == 0)
+        return;
+    s->tcur = k < s->nturns ? k : s->nturns - 1;
+    s->turn = s->turns[s->tcur];
+}
+
 static void restore_current(tui_sim *s)
 {
+    sync_turn(s);
     adh_relax_restore(s->w, adh_history_state(s->hist));
     s->warn[0] = '\0';
 }
@@ -878,6 +998,7 @@ void tui_sim_reset(tui_sim *s)
         return;
     }
     new_path(s);
+    sync_turn(s);
 }
 
 const adh_obs *tui_sim_row(const tui_sim *s)

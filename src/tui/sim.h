@@ -28,6 +28,7 @@
 #include "adhere/kernel.h"
 #include "adhere/params.h"
 #include "adhere/relax.h"
+#include "adhere/run.h"
 #include "adhere/units.h"
 #include "scene/config.h"
 
@@ -61,6 +62,8 @@ typedef struct tui_params_set {
     size_t nodes;
     double spacing, step, start_opt, turn, start;
     adh_relax_settings relax;
+    double turns[ADH_MAX_TURNS];   /* every turning point, shallowest first */
+    size_t nturns, tcur;           /* how many; the one r is on (turn = turns[tcur]) */
 } tui_params_set;
 
 /* One edit on the undo (or redo) stack: the parameters on the other side of
@@ -85,7 +88,11 @@ typedef struct tui_sim {
     adh_relax_settings relax;
     double step;               /* d */
     double start_opt;          /* the configured start, NAN = automatic */
-    double turn;               /* where r stops loading */
+    double turn;               /* where r stops loading: turns[tcur] */
+    double turns[ADH_MAX_TURNS];   /* every turning point of the scene, shallowest first */
+    size_t nturns, tcur;       /* how many (0: none), and the one r is on */
+    double stage_turns[ADH_MAX_TURNS];   /* a typed list on its way to set_value */
+    size_t nstage;
     double start;              /* the start in use */
 
     adh_grid *g;
@@ -182,6 +189,15 @@ int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen);
 int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen);
 /* Abandons the step in progress: back to the last state on the history. */
 void tui_sim_cancel(tui_sim *s);
+
+/* After the pull-off of turn tcur's unloading branch, when a deeper turn
+ * is left: puts the loading branch's state at that turn back on the path
+ * (as --batch restores its snapshot there), so that loading goes on to the
+ * next turn, which becomes the one r is on. 0, or -1 with why. */
+int tui_sim_next_turn(tui_sim *s, char *why, size_t whylen);
+/* Whether the path ends on an unloading branch that was in contact and is
+ * no longer (pulled off). */
+int tui_sim_pulled_off(const tui_sim *s);
 
 /* Undo walks back along the path (static mode: the curve); at its first
  * state it takes back the last edit, restoring the parameters before it and

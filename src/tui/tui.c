@@ -116,6 +116,12 @@ static const char *activity(const tui *t)
             return t->sim.walk ? "walking the curve" : t->pending ? "stepping" : "solving a point";
         return "idle";
     }
+    static char buf[128];   /* which turn of several the run is on */
+    if (t->run_dir && t->sim.nturns > 1) {
+        snprintf(buf, sizeof buf, "%s, turn %zu of %zu", t->run_dir > 0 ? "running to the turn" : "running to pull-off",
+                 t->sim.tcur + 1, t->sim.nturns);
+        return buf;
+    }
     if (t->run_dir > 0)
         return "running to the turn";
     if (t->run_dir < 0)
@@ -268,7 +274,11 @@ static int run_done(tui *t)
     fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
     if (t->run_dir > 0) {
         if (!isnan(t->sim.turn) && o->h0 <= t->sim.turn + 1e-6 * t->sim.step) {
-            say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until pull-off", h0, F);
+            if (t->sim.nturns > 1)
+                say(t, 0, "at turn %zu of %zu, h0 = %s (force %s): press r to unload until pull-off",
+                    t->sim.tcur + 1, t->sim.nturns, h0, F);
+            else
+                say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until pull-off", h0, F);
             return 1;
         }
         if (isnan(t->sim.turn) && o->a > 0) {
@@ -280,8 +290,12 @@ static int run_done(tui *t)
     if (o->a > 0)
         t->run_touched = 1;
     else if (t->run_touched) {
-        say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0,
-            pulloff_text(t).s, F);
+        if (t->sim.tcur + 1 < t->sim.nturns)
+            say(t, 0, "pulled off at h0 = %s (turn %zu of %zu): pull-off %s; r goes on loading to turn %zu",
+                h0, t->sim.tcur + 1, t->sim.nturns, pulloff_text(t).s, t->sim.tcur + 2);
+        else
+            say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0,
+                pulloff_text(t).s, F);
         return 1;
     }
     if (o->h0 >= t->sim.start - 1e-6 * t->sim.step) {
@@ -581,6 +595,15 @@ static int handle_key(tui *t, int key)
             t->resolve_stay = 0;
             todo |= TODO_RESOLVE;
             break;
+        }
+        if (tui_sim_pulled_off(&t->sim) && t->sim.tcur + 1 < t->sim.nturns) {
+            /* on to the next turn from the loading branch, as --batch
+             * unloads every turn from its snapshot */
+            if (tui_sim_next_turn(&t->sim, why, sizeof why) != 0) {
+                say(t, 1, "%s", why);
+                break;
+            }
+            o = tui_sim_row(&t->sim);
         }
         int unload = o && (o->branch < 0 ||
                            (!isnan(t->sim.turn) && o->h0 <= t->sim.turn + 1e-6 * t->sim.step));

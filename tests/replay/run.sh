@@ -165,6 +165,29 @@ else
     fail "--batch with the contact case's settings wrote no force.tsv: $(head -c 300 "$work/batch.err")"
 fi
 
+# Eight turning points (Figure 5's count): the screen follows each turn as
+# --batch does, and each unloading branch pulls off at --batch's force for
+# that turn (turns.tsv, 4 digits as the screen prints it).
+MB=$work/multiturn-batch
+"$bin" --batch --nodes=100 --spacing=10nm --force --eps=10pm --step=0.25nm \
+    --turn=1nm,0nm,-0.5nm,-1nm,-1.5nm,-2nm,-2.5nm,-3nm --no-plot -o "$MB" </dev/null >/dev/null 2>"$work/multiturn-batch.err"
+if [ -s "$MB/turns.tsv" ]; then
+    k=0
+    for pl in $(awk -F'\t' '/^#/ { next } $1 == "turn_h0" { for (i = 1; i <= NF; i++) if ($i == "pulloff_F") c = i; next }
+                          { printf "%.4g\n", $c * 1e9 }' "$MB/turns.tsv"); do
+        k=$((k + 1))
+        check "turn $k of 8: the screen pulls off at --batch's $pl nN" \
+            grep -q "pull-off $pl nN" "$W/multiturn/multiturn-$k.txt"
+    done
+    check "--batch reached all eight turns" [ "$k" -eq 8 ]
+    check "undo over the last turn puts r back on turn 7 (-2.5 nm)" \
+        grep -q "turn  -2.5 nm " "$W/multiturn/multiturn-back.txt"
+    check "and r runs to turn 8 again, to --batch's pull-off $pl nN" \
+        grep -q "pull-off $pl nN" "$W/multiturn/multiturn-again.txt"
+else
+    fail "--batch with the multiturn case's settings wrote no turns.tsv: $(head -c 300 "$work/multiturn-batch.err")"
+fi
+
 U=$W/undo
 check "undo gives back the earlier state's numbers exactly" [ "$(state "$U/undo-back.txt")" = "$(state "$U/undo-32.txt")" ]
 check "redo gives back the later state's numbers exactly" [ "$(state "$U/undo-redo.txt")" = "$(state "$U/undo-33.txt")" ]
