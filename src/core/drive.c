@@ -48,11 +48,23 @@ struct adh_drive {
 struct adh_drive_snap {
     adh_state *st;
     cursor c;
-    size_t nrows, nprofiles, nturns, iterations, unconverged;
-    double seconds, jump_in_h0;
-    int interrupted;
-    adh_turn_result turns[ADH_MAX_TURNS];
+    adh_run marks;   /* the run's counts and turns; its arrays stay unused */
 };
+
+/* What a snapshot keeps of a run: its counts and turns, not its arrays
+ * (rows past nrows are dropped on restore, never copied). */
+static void copy_marks(adh_run *to, const adh_run *from)
+{
+    to->nrows = from->nrows;
+    to->nprofiles = from->nprofiles;
+    to->nturns = from->nturns;
+    to->iterations = from->iterations;
+    to->unconverged = from->unconverged;
+    to->seconds = from->seconds;
+    to->jump_in_h0 = from->jump_in_h0;
+    to->interrupted = from->interrupted;
+    memcpy(to->turns, from->turns, sizeof to->turns);
+}
 
 adh_drive *adh_drive_alloc(const adh_grid *g, const adh_kernel *k)
 {
@@ -441,40 +453,22 @@ int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s)
         return ADH_EINVAL;
     adh_state_copy(s->st, adh_relax_state(d->w));
     s->c = d->c;
-    const adh_run *r = d->run;
-    if (r) {
-        s->nrows = r->nrows;
-        s->nprofiles = r->nprofiles;
-        s->nturns = r->nturns;
-        s->iterations = r->iterations;
-        s->unconverged = r->unconverged;
-        s->seconds = r->seconds;
-        s->jump_in_h0 = r->jump_in_h0;
-        s->interrupted = r->interrupted;
-        memcpy(s->turns, r->turns, sizeof s->turns);
-    }
+    if (d->run)
+        copy_marks(&s->marks, d->run);
     return ADH_SUCCESS;
 }
 
 int adh_drive_restore(adh_drive *d, const adh_drive_snap *s)
 {
     adh_run *r = d->run;
-    if (s->st->n != d->g->n || (r && (s->nrows > r->nrows || s->nprofiles > r->nprofiles)))
+    if (s->st->n != d->g->n || (r && (s->marks.nrows > r->nrows || s->marks.nprofiles > r->nprofiles)))
         return ADH_EINVAL;
     adh_relax_restore(d->w, s->st);
     d->c = s->c;
     if (r) {
-        for (size_t i = s->nprofiles; i < r->nprofiles; i++)
+        for (size_t i = s->marks.nprofiles; i < r->nprofiles; i++)
             free(r->profiles[i].u);
-        r->nrows = s->nrows;
-        r->nprofiles = s->nprofiles;
-        r->nturns = s->nturns;
-        r->iterations = s->iterations;
-        r->unconverged = s->unconverged;
-        r->seconds = s->seconds;
-        r->jump_in_h0 = s->jump_in_h0;
-        r->interrupted = s->interrupted;
-        memcpy(r->turns, s->turns, sizeof r->turns);
+        copy_marks(r, &s->marks);
     }
     return ADH_SUCCESS;
 }
