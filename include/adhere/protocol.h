@@ -54,8 +54,10 @@ int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material 
                      adh_step_cb cb, void *ctx, adh_run *run);
 
 /* The area between the loading and unloading force curves over the positions
- * both visit (N m): the energy one cycle dissipates. 0 without unloading. */
-double adh_hysteresis_area(const adh_run *run, double step);
+ * both visit (N m): the energy one cycle dissipates, for the deepest turn
+ * (adh_cycle_hysteresis interpolates, so a turn off the drive grid still
+ * pairs). 0 without unloading. */
+double adh_hysteresis_area(const adh_run *run);
 /* The same for a static curve (one path, stable flags): the area between the
  * highest and lowest stable force at each h0, sampled every step. */
 double adh_static_hysteresis_area(const adh_run *curve, double step);

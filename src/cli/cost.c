@@ -63,7 +63,7 @@ typedef struct cost_job {
 
 
 
-static void measure(cost_run *cr, const adh_run *run, double step)
+static void measure(cost_run *cr, const adh_run *run)
 {
     const adh_turn_result *t = adh_run_main_turn(run);
     cr->seconds = run->seconds;
@@ -73,7 +73,7 @@ static void measure(cost_run *cr, const adh_run *run, double step)
     cr->pulloff = t ? t->pulloff_F : NAN;
     cr->a_turn = t ? t->a_turn : NAN;
     cr->jump_in = run->jump_in_h0;
-    cr->hysteresis = adh_hysteresis_area(run, step);
+    cr->hysteresis = adh_hysteresis_area(run);
 }
 
 static void *worker(void *arg)
@@ -103,7 +103,7 @@ static void *worker(void *arg)
             run.interrupted = 1;
         if (run.interrupted)
             cr->status = ADH_CONTINUE;
-        measure(cr, &run, c.proto.step);
+        measure(cr, &run);
         adh_run_free(&run);
         adh_kernel_free(k);
         adh_grid_free(g);

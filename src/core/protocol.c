@@ -168,9 +168,8 @@ int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material 
     return rc;
 }
 
-double adh_hysteresis_area(const adh_run *run, double step)
+double adh_hysteresis_area(const adh_run *run)
 {
-    (void)step;   /* the cycle interpolates: a turn off the drive grid still pairs */
     return adh_cycle_hysteresis(run->rows, run->nrows, (int)run->nturns);
 }
 

@@ -68,7 +68,7 @@ int main(int argc, char **argv)
         const adh_turn_result *t = adh_run_main_turn(&run);
         pulloff = t ? t->pulloff_F : NAN;
         jump_in = run.jump_in_h0;
-        hyst = adh_hysteresis_area(&run, step);
+        hyst = adh_hysteresis_area(&run);
     }
     printf("%s\t%g\t%g\t%zu\t%.6g\t%.8g\t%.8g\t%.8g\t%.1f\t%s\n", argv[1], sigma, x, n, dr, pulloff,
            jump_in, hyst, run.seconds, adh_strerror(rc));

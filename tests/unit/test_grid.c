@@ -125,7 +125,7 @@ static int cycle(double sigma, double x, int statik, double *pulloff, double *hy
         rc = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, &run);
         const adh_turn_result *t = adh_run_main_turn(&run);
         *pulloff = t ? t->pulloff_F : NAN;
-        *hyst = adh_hysteresis_area(&run, ps.step);
+        *hyst = adh_hysteresis_area(&run);
     }
     adh_run_free(&run);
     adh_kernel_free(k);
