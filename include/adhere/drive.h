@@ -17,7 +17,18 @@
  * pull-off and jump-out (filled into the run's summary as it goes), and the
  * per-step checks (grid edge, NaN, the cancel flag of the relax settings).
  * The relaxation is its step rule; the static curve (adh_static_*) is a
- * whole-curve continuation and stays behind its own object. No I/O. */
+ * whole-curve continuation and stays behind its own object. No I/O.
+ *
+ * A driver may also step by hand (the TUI's f and b): adh_drive_hand asks
+ * for one step approaching or retracting by d from the last row, on the
+ * same lattices (start - k d loading, each turn not yet reached hit
+ * exactly; turn + k d unloading). Retracting from the loading branch turns
+ * there: the turn is recorded in the run (the one the loading branch just
+ * reached, or a new one) and its unloading branch begins, without a dwell.
+ * Approaching from an unloading branch loads again. Stepping on without a
+ * hand step follows the protocol from wherever the drive is: loading to
+ * the next turn not yet reached, then unloading every turn not yet
+ * unloaded, in the order reached, from its snapshot. */
 #ifndef ADHERE_DRIVE_H
 #define ADHERE_DRIVE_H
 
@@ -92,6 +103,38 @@ double adh_drive_start(const adh_drive *d);
 /* The relaxed state of the last step (borrowed). */
 const adh_state *adh_drive_state(const adh_drive *d);
 
+/* What the last row meant, for a driver that pauses on events (or 0). */
+enum {
+    ADH_DRIVE_JUMP_IN = 1,    /* loading: first row in contact */
+    ADH_DRIVE_TURN = 2,       /* loading: a turn of the protocol reached (snapshotted) */
+    ADH_DRIVE_UNLOAD = 4,     /* the first row of a turn's unloading branch (from its snapshot) */
+    ADH_DRIVE_PULLOFF = 8     /* unloading: out of contact after contact: the branch ended */
+};
+unsigned adh_drive_events(const adh_drive *d);
+
+/* Asks for the next step to go by hand: dir +1 approaches by d, -1
+ * retracts by d (before the first row, the start is solved first, then
+ * that step). ADH_SUCCESS; ADH_EINVAL for a dir other than +-1, a step
+ * under way, a drive never set, a position beyond the model's reach
+ * (|h0| > R/50, adh_protocol_reach) or a 65th turn. */
+int adh_drive_hand(adh_drive *d, int dir);
+/* Where a step by hand in direction dir would go (for a message). */
+double adh_drive_hand_position(const adh_drive *d, int dir);
+/* 1 while a step is under way or asked for by hand: the driver iterates
+ * on; 0 once the last row asked for is in. */
+int adh_drive_pending(const adh_drive *d);
+
+/* Which turn the drive is on: k (1..) on the unloading branch of the run's
+ * turn k (turn_h0 its position); 0 loading (turn_h0 the next turn to
+ * reach, NAN when none); -1 when the protocol is complete. */
+int adh_drive_where(const adh_drive *d, double *turn_h0);
+/* Iterations so far of the step under way (or the last), and its change. */
+size_t adh_drive_progress(const adh_drive *d, double *change);
+/* Replaces the protocol's turning points, keeping the path: turns the
+ * loading branch has passed are behind it. ADH_SUCCESS, or ADH_EINVAL for
+ * a different step, too many turns, a step under way. */
+int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps);
+
 /* A snapshot of a drive: the relaxed state, where it is in the protocol
  * and how much of the run it has written. Restoring it puts the drive back
  * there and cuts the run back to what it held then (vis-style undo). */
@@ -102,7 +145,11 @@ void adh_drive_snap_free(adh_drive_snap *s);
 /* Overwrites s with d's present state. ADH_SUCCESS or ADH_EINVAL (sizes differ). */
 int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s);
 /* ADH_SUCCESS, or ADH_EINVAL when s was taken on another grid or holds
- * more rows than the run now has (a snapshot never invents rows). */
+ * more than one row beyond what the run now has. A snapshot one row ahead
+ * (a redo after an undo) puts its own last row back; a snapshot never
+ * invents rows. The turn states it saw are shared, not copied. */
 int adh_drive_restore(adh_drive *d, const adh_drive_snap *s);
+/* The relaxed state a snapshot holds (borrowed). */
+const adh_state *adh_drive_snap_state(const adh_drive_snap *s);
 
 #endif

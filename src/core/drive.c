@@ -13,6 +13,51 @@
 
 typedef enum phase { PH_START = 0, PH_LOAD, PH_TURN, PH_UNLOAD, PH_DONE } phase;
 
+/* The loading state at a turn, shared by the drive and every snapshot that
+ * saw it (a recorded turn never changes: recording it again makes a new
+ * one), so an undo history of snapshots costs no copies of them. */
+typedef struct tstate {
+    adh_state *st;
+    int refs;
+} tstate;
+
+static tstate *ts_hold(tstate *t)
+{
+    if (t)
+        t->refs++;
+    return t;
+}
+
+static void ts_drop(tstate *t)
+{
+    if (t && --t->refs == 0) {
+        adh_state_free(t->st);
+        free(t);
+    }
+}
+
+static tstate *ts_new(const adh_state *s)
+{
+    tstate *t = calloc(1, sizeof *t);
+    if (!t || !(t->st = adh_state_alloc(s->n))) {
+        free(t);
+        return NULL;
+    }
+    adh_state_copy(t->st, s);
+    t->refs = 1;
+    return t;
+}
+
+/* Makes to[] hold what from[] holds. */
+static void ts_assign(tstate **to, tstate *const *from)
+{
+    for (size_t i = 0; i < ADH_MAX_TURNS; i++) {
+        tstate *t = ts_hold(from[i]);
+        ts_drop(to[i]);
+        to[i] = t;
+    }
+}
+
 /* Where the drive is in the protocol: all a snapshot needs besides the
  * relaxed state and the run's counters. */
 typedef struct cursor {
@@ -21,6 +66,8 @@ typedef struct cursor {
     size_t ti;       /* loading: the next turn to reach */
     size_t ui;       /* unloading: the turn being unloaded from */
     int in_contact;  /* loading: the surfaces have touched */
+    int hand;        /* a step by hand asked for: +1 approach, -1 retract, 0 none */
+    unsigned events; /* what the last row meant (ADH_DRIVE_*) */
     int touched;     /* unloading: in contact on this branch so far */
     int status;      /* the final status once ph == PH_DONE */
     long row;        /* index of the last row in the run, -1 none */
@@ -41,7 +88,7 @@ struct adh_drive {
     adh_run *run;
     double start;
     double turns[ADH_MAX_TURNS];   /* sorted, shallowest first */
-    adh_state *snaps[ADH_MAX_TURNS];   /* the loading state at each turn */
+    tstate *ts[ADH_MAX_TURNS];   /* the loading state at each of the run's turns */
     cursor c;
 };
 
@@ -49,6 +96,8 @@ struct adh_drive_snap {
     adh_state *st;
     cursor c;
     adh_run marks;   /* the run's counts and turns; its arrays stay unused */
+    adh_obs last;    /* the run's last row then (redo puts it back) */
+    tstate *ts[ADH_MAX_TURNS];
 };
 
 /* What a snapshot keeps of a run: its counts and turns, not its arrays
@@ -88,7 +137,7 @@ void adh_drive_free(adh_drive *d)
     if (!d)
         return;
     for (size_t i = 0; i < ADH_MAX_TURNS; i++)
-        adh_state_free(d->snaps[i]);
+        ts_drop(d->ts[i]);
     adh_relax_free(d->w);
     free(d);
 }
@@ -145,6 +194,10 @@ int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings 
     run->start = d->start;
     memcpy(d->turns, ps->turns, ps->nturns * sizeof *d->turns);
     qsort(d->turns, ps->nturns, sizeof *d->turns, cmp_desc);
+    for (size_t i = 0; i < ADH_MAX_TURNS; i++) {
+        ts_drop(d->ts[i]);
+        d->ts[i] = NULL;
+    }
     memset(&d->c, 0, sizeof d->c);
     d->c.ph = PH_START;
     d->c.row = -1;
@@ -175,18 +228,21 @@ static int finish(adh_drive *d, int status)
 
 /* The loading branch has reached its end: unload from every turn reached,
  * or stop. */
-static void begin_unloading(adh_drive *d)
+static void next_turn(adh_drive *d)
 {
-    d->c.ui = 0;
-    d->c.ph = d->ps.unload && d->run->nturns > 0 ? PH_TURN : PH_DONE;
+    /* in the order they were reached; a branch begun by hand counts as
+     * unloaded */
+    size_t i = 0;
+    while (i < d->run->nturns && d->run->turns[i].path != 0)
+        i++;
+    d->c.ui = i;
+    d->c.ph = d->ps.unload && i < d->run->nturns ? PH_TURN : PH_DONE;
     d->c.status = ADH_SUCCESS;
 }
 
-static void next_turn(adh_drive *d)
+static void begin_unloading(adh_drive *d)
 {
-    d->c.ui++;
-    d->c.ph = d->c.ui < d->run->nturns ? PH_TURN : PH_DONE;
-    d->c.status = ADH_SUCCESS;
+    next_turn(d);
 }
 
 static void start(adh_drive *d, double h0, int branch, int path, size_t dwell, int at_turn)
@@ -203,6 +259,114 @@ static void start(adh_drive *d, double h0, int branch, int path, size_t dwell, i
         adh_relax_move(d->w, h0);
 }
 
+/* Where a step by hand in direction dir goes from the last row: loading
+ * on the lattice start - k d (each turn not yet reached hit exactly),
+ * unloading on turn + k d from the branch's turn; retracting from a
+ * loading row turns there (ui: the run's turn it unloads, nturns for a new
+ * one). ADH_SUCCESS, ADH_EINVAL for a position out of the model's reach
+ * or one turn too many. */
+typedef struct hand_plan {
+    double h0;
+    long k;          /* the step's index on its branch */
+    int at_turn;
+    size_t ui;       /* retracting: the turn of the branch */
+} hand_plan;
+
+static int plan_hand(const adh_drive *d, int dir, hand_plan *hp)
+{
+    const adh_protocol_settings *ps = &d->ps;
+    const adh_run *run = d->run;
+    double tol = 1e-6 * ps->step;
+    /* before the first row: the start, then the step from it */
+    adh_obs at_start = { .h0 = d->start, .branch = +1, .path = 0 };
+    const adh_obs *last = d->c.row >= 0 ? &run->rows[d->c.row] : &at_start;
+    memset(hp, 0, sizeof *hp);
+    if (dir > 0) {
+        hp->k = last->branch > 0 && d->c.row >= 0 ? d->c.k : lround((d->start - last->h0) / ps->step) + 1;
+        hp->h0 = d->start - (double)hp->k * ps->step;
+        size_t ti = d->c.ti;
+        while (ti < ps->nturns && d->turns[ti] >= last->h0 - tol)
+            ti++;   /* passed already (turns changed since) */
+        if (ti < ps->nturns && hp->h0 <= d->turns[ti] + tol) {
+            hp->h0 = d->turns[ti];
+            hp->at_turn = 1;
+            hp->k = (long)floor((d->start - hp->h0) / ps->step + 1e-6);
+        }
+    } else if (last->branch > 0) {
+        /* a turn here: the one the loading branch just recorded, or a new one */
+        size_t i = run->nturns;
+        while (i-- > 0)
+            if (run->turns[i].path == 0 && fabs(run->turns[i].h0 - last->h0) < tol)
+                break;
+        hp->ui = i < run->nturns ? i : run->nturns;
+        if (hp->ui == ADH_MAX_TURNS)
+            return ADH_EINVAL;
+        hp->k = 1;
+        hp->h0 = last->h0 + ps->step;
+    } else {
+        hp->ui = (size_t)(last->path - 1);
+        double turn = run->turns[hp->ui].h0;
+        hp->k = lround((last->h0 - turn) / ps->step) + 1;
+        hp->h0 = turn + (double)hp->k * ps->step;
+    }
+    return fabs(hp->h0) > adh_protocol_reach(&d->m) ? ADH_EINVAL : ADH_SUCCESS;
+}
+
+/* Records a turn at the present state, as the run's turn ui (the next
+ * one). ADH_SUCCESS or ADH_ENOMEM. */
+static int record_turn(adh_drive *d, const adh_obs *o)
+{
+    adh_run *run = d->run;
+    size_t ui = run->nturns;
+    tstate *t = ts_new(adh_relax_state(d->w));
+    if (!t)
+        return ADH_ENOMEM;
+    ts_drop(d->ts[ui]);
+    d->ts[ui] = t;
+    adh_turn_result *tr = &run->turns[run->nturns++];
+    tr->h0 = o->h0;
+    tr->max_load = o->F;
+    tr->a_turn = o->a;
+    tr->pulloff_F = NAN;
+    tr->pulloff_h0 = NAN;
+    tr->jump_out_h0 = NAN;
+    tr->path = 0;
+    return ADH_SUCCESS;
+}
+
+/* Starts the step by hand asked for. ADH_SUCCESS, or an error (nothing
+ * started). */
+static int begin_hand(adh_drive *d)
+{
+    int dir = d->c.hand;
+    hand_plan hp;
+    int rc = plan_hand(d, dir, &hp);
+    d->c.hand = 0;
+    if (rc != ADH_SUCCESS)
+        return rc;
+    cursor *c = &d->c;
+    const adh_obs *last = &d->run->rows[c->row];
+    if (dir > 0) {
+        if (last->branch < 0)
+            c->in_contact = last->a > 0;
+        c->ph = PH_LOAD;
+        c->k = hp.k + 1;
+        start(d, hp.h0, +1, 0, 0, hp.at_turn);
+        return ADH_SUCCESS;
+    }
+    if (last->branch > 0) {
+        if (hp.ui == d->run->nturns && (rc = record_turn(d, last)) != ADH_SUCCESS)
+            return rc;
+        d->run->turns[hp.ui].path = (int)hp.ui + 1;
+        c->touched = last->a > 0;
+    }
+    c->ui = hp.ui;
+    c->ph = PH_UNLOAD;
+    c->k = hp.k + 1;
+    start(d, hp.h0, -1, (int)hp.ui + 1, 0, 0);
+    return ADH_SUCCESS;
+}
+
 /* Picks the next step of the protocol and starts it. ADH_SUCCESS, or the
  * final status when there is none. */
 static int begin(adh_drive *d)
@@ -210,6 +374,8 @@ static int begin(adh_drive *d)
     const adh_protocol_settings *ps = &d->ps;
     size_t nt = ps->nturns;
     double tol = 1e-6 * ps->step;
+    if (d->c.hand && d->c.ph != PH_START)
+        return begin_hand(d);
     for (;;) {
         switch (d->c.ph) {
         case PH_START:
@@ -240,7 +406,7 @@ static int begin(adh_drive *d)
         case PH_TURN: {
             adh_turn_result *tr = &d->run->turns[d->c.ui];
             tr->path = (int)d->c.ui + 1;
-            adh_relax_restore(d->w, d->snaps[d->c.ui]);
+            adh_relax_restore(d->w, d->ts[d->c.ui]->st);
             start(d, tr->h0, -1, tr->path, ps->dwell, 0);
             return ADH_SUCCESS;
         }
@@ -299,6 +465,7 @@ static int complete(adh_drive *d, int rc)
     if (adh_run_push_row(run, &o) != ADH_SUCCESS)
         return finish(d, ADH_ENOMEM);
     c->row = (long)run->nrows - 1;
+    c->events = 0;
     if (wants_profile(&d->ps, c->h0) && adh_run_push_profile(run, s, c->branch, c->path) != ADH_SUCCESS)
         return finish(d, ADH_ENOMEM);
     /* the contact at the grid edge, or past a graded grid's fine band */
@@ -316,23 +483,15 @@ static int complete(adh_drive *d, int rc)
             break;
         if (o.a > 0 && !c->in_contact) {
             c->in_contact = 1;
-            run->jump_in_h0 = o.h0;
+            c->events |= ADH_DRIVE_JUMP_IN;
+            if (isnan(run->jump_in_h0))
+                run->jump_in_h0 = o.h0;
         }
         while (c->at_turn && c->ti < d->ps.nturns && fabs(d->turns[c->ti] - c->h0) < tol) {
-            adh_turn_result *tr = &run->turns[run->nturns++];
-            tr->h0 = c->h0;
-            tr->max_load = o.F;
-            tr->a_turn = o.a;
-            tr->pulloff_F = NAN;
-            tr->pulloff_h0 = NAN;
-            tr->jump_out_h0 = NAN;
-            tr->path = 0;
-            size_t ti = c->ti++;
-            if (!d->snaps[ti])
-                d->snaps[ti] = adh_state_alloc(d->g->n);
-            if (!d->snaps[ti])
+            if (run->nturns == ADH_MAX_TURNS || record_turn(d, &o) != ADH_SUCCESS)
                 return finish(d, ADH_ENOMEM);
-            adh_state_copy(d->snaps[ti], s);
+            c->events |= ADH_DRIVE_TURN;
+            c->ti++;
         }
         break;
     case PH_TURN: {
@@ -344,13 +503,14 @@ static int complete(adh_drive *d, int rc)
         c->touched = o.a > 0;
         c->k = 1;
         c->ph = PH_UNLOAD;
+        c->events |= ADH_DRIVE_UNLOAD;
         break;
     }
     case PH_UNLOAD: {
         if (edge)
             break;
         adh_turn_result *tr = &run->turns[c->ui];
-        if (o.F < tr->pulloff_F) {
+        if (!(o.F >= tr->pulloff_F)) {   /* the branch's first row too, begun by hand */
             tr->pulloff_F = o.F;
             tr->pulloff_h0 = o.h0;
         }
@@ -358,6 +518,7 @@ static int complete(adh_drive *d, int rc)
             c->touched = 1;
         else if (c->touched) {
             tr->jump_out_h0 = o.h0;
+            c->events |= ADH_DRIVE_PULLOFF;
             next_turn(d);
         }
         break;
@@ -374,7 +535,7 @@ int adh_drive_iterate(adh_drive *d, size_t max_batch, int *row)
 {
     *row = 0;
     if (!d->c.inflight) {
-        if (d->c.ph == PH_DONE)
+        if (d->c.ph == PH_DONE && !d->c.hand)
             return d->c.status;
         int rc = begin(d);
         if (!d->c.inflight)
@@ -443,8 +604,15 @@ void adh_drive_snap_free(adh_drive_snap *s)
 {
     if (!s)
         return;
+    for (size_t i = 0; i < ADH_MAX_TURNS; i++)
+        ts_drop(s->ts[i]);
     adh_state_free(s->st);
     free(s);
+}
+
+const adh_state *adh_drive_snap_state(const adh_drive_snap *s)
+{
+    return s->st;
 }
 
 int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s)
@@ -453,22 +621,107 @@ int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s)
         return ADH_EINVAL;
     adh_state_copy(s->st, adh_relax_state(d->w));
     s->c = d->c;
-    if (d->run)
+    ts_assign(s->ts, d->ts);
+    if (d->run) {
         copy_marks(&s->marks, d->run);
+        if (d->run->nrows)
+            s->last = d->run->rows[d->run->nrows - 1];
+    }
     return ADH_SUCCESS;
 }
 
 int adh_drive_restore(adh_drive *d, const adh_drive_snap *s)
 {
     adh_run *r = d->run;
-    if (s->st->n != d->g->n || (r && (s->marks.nrows > r->nrows || s->marks.nprofiles > r->nprofiles)))
+    if (s->st->n != d->g->n || (r && (s->marks.nrows > r->nrows + 1 || s->marks.nprofiles > r->nprofiles)))
         return ADH_EINVAL;
+    /* one row ahead of the run (a redo): the snapshot's own last row */
+    if (r && s->marks.nrows == r->nrows + 1 && adh_run_push_row(r, &s->last) != ADH_SUCCESS)
+        return ADH_ENOMEM;
     adh_relax_restore(d->w, s->st);
     d->c = s->c;
+    ts_assign(d->ts, s->ts);
     if (r) {
         for (size_t i = s->marks.nprofiles; i < r->nprofiles; i++)
             free(r->profiles[i].u);
         copy_marks(r, &s->marks);
     }
+    return ADH_SUCCESS;
+}
+
+int adh_drive_hand(adh_drive *d, int dir)
+{
+    if (dir != 1 && dir != -1)
+        return ADH_EINVAL;
+    if (d->c.inflight || (d->c.ph == PH_DONE && d->c.status == ADH_EINVAL && d->c.row < 0))
+        return ADH_EINVAL;   /* a step under way, or never set */
+    hand_plan hp;
+    int rc = plan_hand(d, dir, &hp);
+    if (rc == ADH_SUCCESS)
+        d->c.hand = dir;
+    return rc;
+}
+
+double adh_drive_hand_position(const adh_drive *d, int dir)
+{
+    hand_plan hp;
+    plan_hand(d, dir, &hp);
+    return hp.h0;
+}
+
+int adh_drive_pending(const adh_drive *d)
+{
+    return d->c.hand != 0 || d->c.inflight;
+}
+
+unsigned adh_drive_events(const adh_drive *d)
+{
+    return d->c.row >= 0 ? d->c.events : 0;
+}
+
+int adh_drive_where(const adh_drive *d, double *turn_h0)
+{
+    const adh_run *run = d->run;
+    int k = adh_drive_turn(d);
+    if (k > 0) {
+        *turn_h0 = run->turns[k - 1].h0;
+        return k;
+    }
+    const adh_obs *last = adh_drive_row(d);
+    if (last && last->branch < 0 && last->path > 0) {
+        /* on a branch, by hand or finished: that branch's turn */
+        *turn_h0 = run->turns[last->path - 1].h0;
+        return last->path;
+    }
+    *turn_h0 = d->c.ti < d->ps.nturns ? d->turns[d->c.ti] : NAN;
+    return k;
+}
+
+size_t adh_drive_progress(const adh_drive *d, double *change)
+{
+    *change = adh_relax_change(d->w);
+    return adh_relax_step_iterations(d->w);
+}
+
+int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps)
+{
+    if (!(ps->step == d->ps.step) || ps->nturns > ADH_MAX_TURNS || d->c.inflight)
+        return ADH_EINVAL;
+    d->ps.nturns = ps->nturns;
+    memcpy(d->ps.turns, ps->turns, ps->nturns * sizeof *ps->turns);
+    memcpy(d->turns, ps->turns, ps->nturns * sizeof *d->turns);
+    qsort(d->turns, ps->nturns, sizeof *d->turns, cmp_desc);
+    /* the turns the loading branch has passed are behind it */
+    double deepest = INFINITY, tol = 1e-6 * ps->step;
+    for (size_t i = 0; d->run && i < d->run->nrows; i++)
+        if (d->run->rows[i].branch > 0)
+            deepest = fmin(deepest, d->run->rows[i].h0);
+    size_t ti = 0;
+    while (ti < ps->nturns && d->turns[ti] >= deepest - tol)
+        ti++;
+    d->c.ti = ti;
+    if (d->c.ph == PH_DONE && d->c.status == ADH_SUCCESS && d->c.row >= 0 && ti < ps->nturns &&
+        d->run->rows[d->c.row].branch > 0)
+        d->c.ph = PH_LOAD;   /* a deeper turn: loading goes on */
     return ADH_SUCCESS;
 }
