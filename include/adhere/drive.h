@@ -108,7 +108,8 @@ enum {
     ADH_DRIVE_JUMP_IN = 1,    /* loading: first row in contact */
     ADH_DRIVE_TURN = 2,       /* loading: a turn of the protocol reached (snapshotted) */
     ADH_DRIVE_UNLOAD = 4,     /* the first row of a turn's unloading branch (from its snapshot) */
-    ADH_DRIVE_PULLOFF = 8     /* unloading: out of contact after contact: the branch ended */
+    ADH_DRIVE_PULLOFF = 8,    /* unloading: out of contact after contact: the branch ended */
+    ADH_DRIVE_END = 16        /* the protocol's next step begins another branch, or none is left */
 };
 unsigned adh_drive_events(const adh_drive *d);
 
@@ -124,10 +125,11 @@ double adh_drive_hand_position(const adh_drive *d, int dir);
  * on; 0 once the last row asked for is in. */
 int adh_drive_pending(const adh_drive *d);
 
-/* Which turn the drive is on: k (1..) on the unloading branch of the run's
- * turn k (turn_h0 its position); 0 loading (turn_h0 the next turn to
- * reach, NAN when none); -1 when the protocol is complete. */
-int adh_drive_where(const adh_drive *d, double *turn_h0);
+/* Which way the next step goes (a step by hand asked for, else the
+ * protocol's): +1 loading (*turn: the protocol's next turn to reach, 1..,
+ * 0 none), -1 unloading (*turn: the run's turn k whose branch it is on or
+ * begins), 0 when the protocol is complete. */
+int adh_drive_next(const adh_drive *d, size_t *turn);
 /* Iterations so far of the step under way (or the last), and its change. */
 size_t adh_drive_progress(const adh_drive *d, double *change);
 /* Replaces the protocol's turning points, keeping the path: turns the

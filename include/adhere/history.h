@@ -1,33 +1,38 @@
-/* A snapshot history of relaxation states for stepping back and forth
- * (vis-style undo: a state is restored by copying its snapshot, never by
- * recomputing it). Each entry pairs a state with the observation row that
- * was read off it, so the rows of the path so far form one contiguous array
- * that can be handed to writers as an adh_run's rows.
+/* An undo history of a drive (vis-style: a state is restored by copying its
+ * snapshot, never by recomputing it). Each entry is a snapshot of the drive
+ * taken after a row: its relaxed state, where it was in the protocol and
+ * how much of its run it had written, so undo puts the drive and its run
+ * back exactly, and stepping on from there gives the rows it gave before.
  *
  * The entries 0..cursor are the path so far; entries past the cursor can be
- * redone until the next push, which discards them. No I/O. */
+ * redone until the next push, which discards them. The first entry is never
+ * undone (the path's first row). No I/O. */
 #ifndef ADHERE_HISTORY_H
 #define ADHERE_HISTORY_H
 
 #include <stddef.h>
-#include "adhere/observe.h"
+#include "adhere/drive.h"
 #include "adhere/state.h"
 
 typedef struct adh_history adh_history;
 
-/* A history of states of n nodes each. NULL when out of memory. */
-adh_history *adh_history_alloc(size_t n);
+/* An empty history. NULL when out of memory. */
+adh_history *adh_history_alloc(void);
 void adh_history_free(adh_history *h);
 
-/* Appends a copy of s and its row after the cursor (dropping what could be
- * redone) and moves the cursor onto it. ADH_SUCCESS, ADH_EINVAL when s has
- * the wrong size, ADH_ENOMEM. */
-int adh_history_push(adh_history *h, const adh_state *s, const adh_obs *row);
+/* Appends a snapshot of d after the cursor (dropping what could be redone)
+ * and moves the cursor onto it. ADH_SUCCESS or ADH_ENOMEM. */
+int adh_history_push(adh_history *h, const adh_drive *d);
 
-/* Move the cursor one entry back / forward. ADH_SUCCESS, or ADH_EINVAL when
- * there is nothing to undo (at the first entry or empty) / nothing to redo. */
-int adh_history_undo(adh_history *h);
-int adh_history_redo(adh_history *h);
+/* Move the cursor one entry back / forward and restore d there (redo puts
+ * the entry's row back on d's run). ADH_SUCCESS; ADH_EINVAL when there is
+ * nothing to undo (at the first entry or empty) / nothing to redo, or d is
+ * on another grid. */
+int adh_history_undo(adh_history *h, adh_drive *d);
+int adh_history_redo(adh_history *h, adh_drive *d);
+/* Restores d at the cursor's entry (drops a step under way).
+ * ADH_SUCCESS, or ADH_EINVAL when empty or on another grid. */
+int adh_history_restore(const adh_history *h, adh_drive *d);
 
 /* Forget every entry. */
 void adh_history_clear(adh_history *h);
@@ -37,16 +42,8 @@ void adh_history_clear(adh_history *h);
 size_t adh_history_length(const adh_history *h);
 size_t adh_history_redoable(const adh_history *h);
 
-/* The entry at the cursor (NULL when empty); the snapshot is borrowed. */
-const adh_state *adh_history_state(const adh_history *h);
-const adh_obs *adh_history_row(const adh_history *h);
-
-/* The snapshot of entry i of the path so far (0 the oldest); NULL when i is
- * not on the path. Borrowed, like adh_history_state(). */
+/* The relaxed state of entry i of the path so far (0 the oldest); NULL
+ * when i is not on the path. Borrowed, valid until the next push. */
 const adh_state *adh_history_state_at(const adh_history *h, size_t i);
-
-/* The rows of the path so far, oldest first, adh_history_length() of them
- * (borrowed; valid until the next push or free). */
-const adh_obs *adh_history_rows(const adh_history *h);
 
 #endif

@@ -22,6 +22,7 @@
 #include "cli/statics.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
+#include "plot/rows.h"
 #include "plot/outdir.h"
 #include "adhere/units.h"
 #include "plot/plot.h"
@@ -41,7 +42,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
 {
     batch_ctx *ctx = vctx;
     if (ctx->stream) {
-        cli_force_row(ctx->stream, o);
+        adh_rows_write(ctx->stream, o);
         fflush(ctx->stream);
     }
     if (ctx->progress) {
@@ -147,7 +148,7 @@ int cli_batch_main(const cli_options *cli)
                       plan.static_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
     if (ctx.stream) {
         fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
-        cli_force_header(ctx.stream);
+        adh_rows_header(ctx.stream);
     }
     adh_run run;
     adh_run_init(&run);

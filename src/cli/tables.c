@@ -1,5 +1,6 @@
 #include "cli/tables.h"
 #include "plot/outdir.h"
+#include "plot/rows.h"
 
 #include <errno.h>
 #include <math.h>
@@ -12,18 +13,6 @@
 #include "adhere/status.h"
 
 #define VERSION_LINE "# adhere " ADH_VERSION "\n"
-
-void cli_force_header(FILE *f)
-{
-    fputs("h0\tF\tdelta\thc\ta\tangle\titers\tbranch\tpath\tconverged\tstable\tF_rigid\tseconds\n", f);
-}
-
-void cli_force_row(FILE *f, const adh_obs *o)
-{
-    fprintf(f, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%+d\t%d\t%d\t%d\t%.17g\t%.6g\n",
-            o->h0, o->F, o->delta, o->hc, o->a, o->angle, o->iters, o->branch, o->path,
-            o->converged, o->stable, o->F_rigid, o->seconds);
-}
 
 static void comment_head(FILE *f, const cli_tables *t, const char *what)
 {
@@ -38,9 +27,9 @@ int cli_write_force(FILE *f, const void *ctx)
 {
     const cli_tables *t = ctx;
     comment_head(f, t, "force table: one row per drive step; branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading branch");
-    cli_force_header(f);
+    adh_rows_header(f);
     for (size_t i = 0; i < t->run->nrows; i++)
-        cli_force_row(f, &t->run->rows[i]);
+        adh_rows_write(f, &t->run->rows[i]);
     return 0;
 }
 

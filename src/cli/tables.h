@@ -15,9 +15,6 @@ typedef struct cli_summary_extra {
     double value;
 } cli_summary_extra;
 
-void cli_force_header(FILE *f);
-void cli_force_row(FILE *f, const adh_obs *o);
-
 /* Writes dir/name atomically through writer(f, ctx). 0, or -1 with why. */
 typedef int (*cli_table_writer)(FILE *f, const void *ctx);
 int cli_write_atomic(const char *dir, const char *name, cli_table_writer writer, const void *ctx,

@@ -428,6 +428,24 @@ static int begin(adh_drive *d)
     }
 }
 
+/* Whether the protocol's next step begins another branch (or none is
+ * left): the loading branch has reached its last turn (or, without turns,
+ * contact), an unloading branch jumped out or its next position is past
+ * the start. */
+static int branch_ends(const adh_drive *d)
+{
+    const cursor *c = &d->c;
+    size_t nt = d->ps.nturns;
+    switch (c->ph) {
+    case PH_LOAD:
+        return (nt == 0 && c->in_contact) || (nt > 0 && c->ti == nt);
+    case PH_UNLOAD:
+        return d->run->turns[c->ui].h0 + (double)c->k * d->ps.step > d->start + 1e-6 * d->ps.step;
+    default:
+        return 1;   /* a jump-out moved on to the next turn (PH_TURN) or the end */
+    }
+}
+
 /* The step under way is solved: observe and record its row (a step that
  * hit the cap is flagged in the row and counted, not fatal), then note
  * what it means for the protocol. ADH_CONTINUE, or the status that ends
@@ -528,6 +546,8 @@ static int complete(adh_drive *d, int rc)
     }
     if (edge)
         return finish(d, ADH_EGRID);
+    if (branch_ends(d))
+        c->events |= ADH_DRIVE_END;
     return ADH_CONTINUE;
 }
 
@@ -679,24 +699,6 @@ unsigned adh_drive_events(const adh_drive *d)
     return d->c.row >= 0 ? d->c.events : 0;
 }
 
-int adh_drive_where(const adh_drive *d, double *turn_h0)
-{
-    const adh_run *run = d->run;
-    int k = adh_drive_turn(d);
-    if (k > 0) {
-        *turn_h0 = run->turns[k - 1].h0;
-        return k;
-    }
-    const adh_obs *last = adh_drive_row(d);
-    if (last && last->branch < 0 && last->path > 0) {
-        /* on a branch, by hand or finished: that branch's turn */
-        *turn_h0 = run->turns[last->path - 1].h0;
-        return last->path;
-    }
-    *turn_h0 = d->c.ti < d->ps.nturns ? d->turns[d->c.ti] : NAN;
-    return k;
-}
-
 size_t adh_drive_progress(const adh_drive *d, double *change)
 {
     *change = adh_relax_change(d->w);
@@ -724,4 +726,46 @@ int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps)
         d->run->rows[d->c.row].branch > 0)
         d->c.ph = PH_LOAD;   /* a deeper turn: loading goes on */
     return ADH_SUCCESS;
+}
+
+/* The first turn not unloaded yet (its index), or nturns. */
+static size_t first_loaded(const adh_drive *d)
+{
+    size_t i = 0;
+    while (i < d->run->nturns && d->run->turns[i].path != 0)
+        i++;
+    return i;
+}
+
+int adh_drive_next(const adh_drive *d, size_t *turn)
+{
+    const cursor *c = &d->c;
+    size_t nt = d->ps.nturns, u = first_loaded(d);
+    int more = d->ps.unload && u < d->run->nturns;
+    *turn = 0;
+    if (c->hand)
+        return c->hand;
+    switch (c->ph) {
+    case PH_START:
+    case PH_LOAD:
+        if (!((nt == 0 && c->in_contact) || (nt > 0 && c->ti == nt))) {
+            *turn = c->ti < nt ? c->ti + 1 : 0;
+            return +1;
+        }
+        break;
+    case PH_TURN:
+        *turn = c->ui + 1;
+        return -1;
+    case PH_UNLOAD:
+        if (!branch_ends(d)) {
+            *turn = c->ui + 1;
+            return -1;
+        }
+        break;
+    default:
+        return 0;
+    }
+    if (more)
+        *turn = u + 1;
+    return more ? -1 : 0;
 }

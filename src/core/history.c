@@ -5,23 +5,16 @@
 #include "adhere/status.h"
 
 struct adh_history {
-    size_t n;           /* nodes per state */
-    adh_state **snaps;  /* snapshots kept allocated past the cursor for reuse */
-    adh_obs *rows;      /* parallel to snaps, contiguous for adh_history_rows */
-    size_t used;        /* entries that hold data (path + redoable) */
-    size_t alloced;     /* snapshots allocated (>= used) */
-    size_t cap;         /* capacity of the two arrays */
-    size_t len;         /* entries on the path: cursor + 1, 0 when empty */
+    adh_drive_snap **snaps;   /* kept allocated past the cursor for reuse */
+    size_t used;              /* entries that hold data (path + redoable) */
+    size_t alloced;           /* snapshots allocated (>= used) */
+    size_t cap;
+    size_t len;               /* entries on the path: cursor + 1, 0 when empty */
 };
 
-adh_history *adh_history_alloc(size_t n)
+adh_history *adh_history_alloc(void)
 {
-    if (n == 0)
-        return NULL;
-    adh_history *h = calloc(1, sizeof *h);
-    if (h)
-        h->n = n;
-    return h;
+    return calloc(1, sizeof(adh_history));
 }
 
 void adh_history_free(adh_history *h)
@@ -29,63 +22,60 @@ void adh_history_free(adh_history *h)
     if (!h)
         return;
     for (size_t i = 0; i < h->alloced; i++)
-        adh_state_free(h->snaps[i]);
+        adh_drive_snap_free(h->snaps[i]);
     free(h->snaps);
-    free(h->rows);
     free(h);
 }
 
-static int grow(adh_history *h)
+int adh_history_push(adh_history *h, const adh_drive *d)
 {
-    size_t cap = h->cap ? 2 * h->cap : 64;
-    adh_state **s = realloc(h->snaps, cap * sizeof *s);
+    size_t at = h->len;
+    if (at == h->cap) {
+        size_t cap = h->cap ? 2 * h->cap : 64;
+        adh_drive_snap **s = realloc(h->snaps, cap * sizeof *s);
+        if (!s)
+            return ADH_ENOMEM;
+        h->snaps = s;
+        h->cap = cap;
+    }
+    /* Snapshots past the path are overwritten in place rather than freed:
+     * undo a few steps and step again, and no allocation happens (unless
+     * the grid changed under them). */
+    if (at < h->alloced && adh_drive_snapshot(d, h->snaps[at]) == ADH_SUCCESS) {
+        h->len = h->used = at + 1;
+        return ADH_SUCCESS;
+    }
+    adh_drive_snap *s = adh_drive_snap_alloc(d);
     if (!s)
         return ADH_ENOMEM;
-    h->snaps = s;
-    adh_obs *r = realloc(h->rows, cap * sizeof *r);
-    if (!r)
-        return ADH_ENOMEM;
-    h->rows = r;
-    h->cap = cap;
-    return ADH_SUCCESS;
-}
-
-int adh_history_push(adh_history *h, const adh_state *s, const adh_obs *row)
-{
-    if (s->n != h->n)
-        return ADH_EINVAL;
-    size_t at = h->len;
-    if (at == h->cap && grow(h) != ADH_SUCCESS)
-        return ADH_ENOMEM;
-    /* Snapshots past the path are overwritten in place rather than freed:
-     * undo a few steps and step again, and no allocation happens. */
-    if (at == h->alloced) {
-        h->snaps[at] = adh_state_alloc(h->n);
-        if (!h->snaps[at])
-            return ADH_ENOMEM;
+    if (at < h->alloced)
+        adh_drive_snap_free(h->snaps[at]);
+    else
         h->alloced++;
-    }
-    adh_state_copy(h->snaps[at], s);
-    h->rows[at] = *row;
-    h->len = at + 1;
-    h->used = h->len;
+    h->snaps[at] = s;
+    h->len = h->used = at + 1;
     return ADH_SUCCESS;
 }
 
-int adh_history_undo(adh_history *h)
+int adh_history_undo(adh_history *h, adh_drive *d)
 {
-    if (h->len <= 1)
+    if (h->len <= 1 || adh_drive_restore(d, h->snaps[h->len - 2]) != ADH_SUCCESS)
         return ADH_EINVAL;
     h->len--;
     return ADH_SUCCESS;
 }
 
-int adh_history_redo(adh_history *h)
+int adh_history_redo(adh_history *h, adh_drive *d)
 {
-    if (h->len >= h->used)
+    if (h->len >= h->used || adh_drive_restore(d, h->snaps[h->len]) != ADH_SUCCESS)
         return ADH_EINVAL;
     h->len++;
     return ADH_SUCCESS;
+}
+
+int adh_history_restore(const adh_history *h, adh_drive *d)
+{
+    return h->len ? adh_drive_restore(d, h->snaps[h->len - 1]) : ADH_EINVAL;
 }
 
 void adh_history_clear(adh_history *h)
@@ -104,22 +94,7 @@ size_t adh_history_redoable(const adh_history *h)
     return h->used - h->len;
 }
 
-const adh_state *adh_history_state(const adh_history *h)
-{
-    return h->len ? h->snaps[h->len - 1] : NULL;
-}
-
 const adh_state *adh_history_state_at(const adh_history *h, size_t i)
 {
-    return i < h->len ? h->snaps[i] : NULL;
-}
-
-const adh_obs *adh_history_row(const adh_history *h)
-{
-    return h->len ? &h->rows[h->len - 1] : NULL;
-}
-
-const adh_obs *adh_history_rows(const adh_history *h)
-{
-    return h->rows;
+    return i < h->len ? adh_drive_snap_state(h->snaps[i]) : NULL;
 }

@@ -1,5 +1,6 @@
-/* The path on screen as an adh_run for the plot writer: its rows, the
- * turns and pull-offs --batch would report, and a few surface profiles. */
+/* The path on screen for the plot writer: the drive's run (its rows, turns
+ * and pull-offs, as --batch's) with a few surface profiles from its undo
+ * history; in static mode the curve computed so far. */
 #include "tui/plotpath.h"
 
 #include <errno.h>
@@ -95,27 +96,22 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
     c.proto.start = s->start;
     c.plot = 1;
 
-    static adh_run run;   /* large (the turn table); rows borrowed, never adh_run_free()d */
-    adh_run_init(&run);
-    run.rows = (adh_obs *)rows;
-    run.nrows = run.rows_cap = n;
-    run.start = s->start;
-    for (size_t i = 0; i < n; i++) {
-        run.iterations += rows[i].iters;
-        run.seconds += rows[i].seconds;
-        run.unconverged += !rows[i].converged;
-        if (isnan(run.jump_in_h0) && rows[i].branch > 0 && rows[i].a > 0)
-            run.jump_in_h0 = rows[i].h0;
-    }
+    static adh_run run;   /* large (the turn table); arrays borrowed, never adh_run_free()d */
     static adh_profile prof[ADH_MAX_PROFILES];
     if (s->mode == ADH_MODE_STATIC) {
+        adh_run_init(&run);
+        run.start = s->start;
+        for (size_t i = 0; i < n; i++) {
+            run.iterations += rows[i].iters;
+            run.seconds += rows[i].seconds;
+        }
         size_t np = curve_run(s, &run, &c, prof);
         c.proto.nprofiles = np;
         run.profiles = prof;
         run.nprofiles = run.profiles_cap = np;
         return write_into(&c, &run, dir, msg, msglen);
     }
-    run.nturns = adh_cycle_turns(rows, n, run.turns, ADH_MAX_TURNS);
+    run = *tui_sim_run(s);   /* the drive's record, with the profiles below */
     c.proto.nturns = run.nturns;
     for (size_t i = 0; i < run.nturns; i++)
         c.proto.turns[i] = run.turns[i].h0;
@@ -123,7 +119,7 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
     size_t idx[ADH_MAX_PROFILES];
     size_t np = pick_profiles(rows, n, run.turns, run.nturns, idx, ADH_MAX_PROFILES);
     for (size_t k = 0; k < np; k++) {
-        const adh_state *st = adh_history_state_at(s->hist, idx[k]);
+        const adh_state *st = adh_history_state_at(s->path.hist, idx[k]);
         prof[k] = (adh_profile){ .h0 = st->h0, .branch = rows[idx[k]].branch, .path = rows[idx[k]].path,
                                  .u = st->u, .h = st->h, .p = st->p };
         c.proto.profiles[k] = st->h0;

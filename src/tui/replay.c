@@ -99,7 +99,7 @@ static void split(char *line, line_words *lw)
     }
 }
 
-static const char known_commands[] = ":set NAME VALUE, :dump FILE, :wait, :resize COLSxROWS";
+static const char known_commands[] = ":set NAME VALUE, :dump FILE, :rows FILE, :wait, :resize COLSxROWS";
 
 static int parse_size(const char *t, int *cols, int *rows)
 {
@@ -124,6 +124,9 @@ static int command(tui_replay_script *s, const line_words *lw, size_t first, int
     } else if (strcmp(cmd, ":dump") == 0) {
         it.kind = TUI_REPLAY_DUMP;
         want = 1;
+    } else if (strcmp(cmd, ":rows") == 0) {
+        it.kind = TUI_REPLAY_ROWS;
+        want = 1;
     } else if (strcmp(cmd, ":wait") == 0) {
         it.kind = TUI_REPLAY_WAIT;
         want = 0;
@@ -139,7 +142,7 @@ static int command(tui_replay_script *s, const line_words *lw, size_t first, int
     if (nargs != want) {
         snprintf(err, errlen, "'%s' takes %s, but %zu word%s follow%s%s", cmd,
                  want == 2 ? "NAME VALUE (the value without blanks, e.g. 1GPa)"
-                 : want == 1 ? (it.kind == TUI_REPLAY_DUMP ? "one FILE" : "one size COLSxROWS")
+                 : want == 1 ? (it.kind == TUI_REPLAY_RESIZE ? "one size COLSxROWS" : "one FILE")
                  : "nothing", nargs, nargs == 1 ? "" : "s", nargs == 1 ? "s" : "",
                  nargs > want && want > 0 ? "; put keys on the next line" : "");
         return -1;
@@ -154,7 +157,7 @@ static int command(tui_replay_script *s, const line_words *lw, size_t first, int
         it.value = strdup(arg[1]);
         if (!it.name || !it.value)
             goto nomem;
-    } else if (it.kind == TUI_REPLAY_DUMP) {
+    } else if (it.kind == TUI_REPLAY_DUMP || it.kind == TUI_REPLAY_ROWS) {
         it.value = strdup(arg[0]);
         if (!it.value)
             goto nomem;

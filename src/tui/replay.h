@@ -2,7 +2,7 @@
  * session so it can be unit tested and fuzzed. A script is words separated
  * by blanks or newlines:
  *   a word of printable ASCII keys, with <Name> for special keys: f 10f 2GPa<Enter>
- *   :set NAME VALUE   :dump FILE   :wait   :resize COLSxROWS
+ *   :set NAME VALUE   :dump FILE   :rows FILE   :wait   :resize COLSxROWS
  *   # a comment, to the end of the line
  * Key codes are those of curses (KEY_LEFT, ...), with Enter as '\n', Esc 27,
  * Tab '\t' and C-x as x & 0x1f, the same codes the terminal key source gives. */
@@ -16,7 +16,8 @@ typedef enum tui_replay_kind {
     TUI_REPLAY_SET,      /* name, value */
     TUI_REPLAY_DUMP,     /* value: the file */
     TUI_REPLAY_WAIT,
-    TUI_REPLAY_RESIZE    /* cols, rows */
+    TUI_REPLAY_RESIZE,   /* cols, rows */
+    TUI_REPLAY_ROWS      /* value: the file */
 } tui_replay_kind;
 
 typedef struct tui_replay_item {
@@ -24,7 +25,7 @@ typedef struct tui_replay_item {
     int line;            /* 1-based line in the script, for messages */
     int key;             /* TUI_REPLAY_KEY */
     int cols, rows;      /* TUI_REPLAY_RESIZE */
-    char *name, *value;  /* TUI_REPLAY_SET / TUI_REPLAY_DUMP (owned) */
+    char *name, *value;  /* TUI_REPLAY_SET / _DUMP / _ROWS (owned) */
 } tui_replay_item;
 
 typedef struct tui_replay_script {

@@ -90,18 +90,40 @@ static void free_solver(tui_sim *s)
         s->cprof[i] = NULL;
     }
     curve_drop(s);
-    adh_relax_free(s->w);
+    adh_drive_free(s->drv);
     adh_kernel_free(s->k);
     adh_grid_free(s->g);
-    s->w = NULL;
+    s->drv = NULL;
     s->k = NULL;
     s->g = NULL;
+}
+
+static void path_free(tui_path *p)
+{
+    adh_history_free(p->hist);
+    p->hist = NULL;
+    adh_run_free(&p->run);
+    adh_run_init(&p->run);
+}
+
+/* Moves the path on screen out (the screen's becomes empty). */
+static tui_path path_take(tui_sim *s)
+{
+    tui_path p = s->path;
+    s->path.hist = NULL;
+    adh_run_init(&s->path.run);
+    return p;
+}
+
+static size_t path_length(const tui_sim *s)
+{
+    return s->path.hist ? adh_history_length(s->path.hist) : 0;
 }
 
 static void edits_clear(tui_edit *e, size_t *n)
 {
     for (size_t i = 0; i < *n; i++)
-        adh_history_free(e[i].hist);
+        path_free(&e[i].path);
     *n = 0;
 }
 
@@ -110,6 +132,9 @@ static void edits_clear(tui_edit *e, size_t *n)
  * stepping into it, and a solve is refused, as --batch refuses the run. */
 static tui_params_set params_get(const tui_sim *s);
 static int params_check(const tui_params_set *p, adh_mode mode, char *why, size_t whylen);
+static adh_protocol_settings params_protocol(const tui_params_set *p);
+static void drive_attach(tui_sim *s);
+static void sync_turn(tui_sim *s);
 
 static void check_grid(tui_sim *s)
 {
@@ -140,12 +165,13 @@ static void new_path(tui_sim *s)
 {
     s->start = isnan(s->start_opt) ? adh_protocol_auto_start(&s->mat, s->step) : s->start_opt;
     s->busy = 0;
-    s->solving_start = 0;
     s->warn[0] = '\0';
-    if (s->hist)
-        adh_history_clear(s->hist);
-    if (s->w)
-        adh_relax_set(s->w, &s->mat, &s->relax, s->start);
+    if (s->path.hist)
+        adh_history_clear(s->path.hist);
+    adh_run_free(&s->path.run);
+    adh_run_init(&s->path.run);
+    if (s->drv && !(s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s)))
+        drive_attach(s);
     /* An automatic spacing follows sqrt(R z0): when R or z0 moved it, the
      * grid is a different grid and the kernel must follow. E and A never
      * get here with a changed spacing, so they never rebuild it. */
@@ -159,6 +185,7 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
 {
     memset(s, 0, sizeof *s);
     adh_run_init(&s->curve);
+    adh_run_init(&s->path.run);
     s->mat = cfg->mat;
     s->nodes = cfg->nodes;
     s->spacing = cfg->spacing;
@@ -186,44 +213,47 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
 void tui_sim_free(tui_sim *s)
 {
     free_solver(s);
-    adh_history_free(s->hist);
-    s->hist = NULL;
+    path_free(&s->path);
     edits_clear(s->undo_edits, &s->nundo_edits);
     edits_clear(s->redo_edits, &s->nredo_edits);
     adh_run_free(&s->curve);
 }
 
+/* Puts the drive on the path on screen: set for the parameters on screen,
+ * then restored where the path is (a path given back by undo goes on from
+ * where it was). */
+static void drive_attach(tui_sim *s)
+{
+    tui_params_set p = params_get(s);
+    adh_protocol_settings ps = params_protocol(&p);
+    adh_drive_set(s->drv, &s->mat, &s->relax, &ps, &s->path.run);
+    if (path_length(s) && adh_history_restore(s->path.hist, s->drv) != ADH_SUCCESS) {
+        adh_history_clear(s->path.hist);   /* states of another grid: not this path's any more */
+        adh_run_free(&s->path.run);
+        adh_run_init(&s->path.run);
+        adh_drive_set(s->drv, &s->mat, &s->relax, &ps, &s->path.run);
+    }
+}
+
 static int ensure_solver(tui_sim *s, char *why, size_t whylen)
 {
-    if (s->w && !s->grid_stale) {
-        if (!s->hist) {
-            s->hist = adh_history_alloc(s->nodes);
-            s->hist_n = s->nodes;
-        }
-        if (s->hist)
-            return 0;
-        snprintf(why, whylen, "out of memory for the path of N = %zu nodes", s->nodes);
+    if (!s->path.hist && !(s->path.hist = adh_history_alloc())) {
+        snprintf(why, whylen, "out of memory for the path");
         return -1;
     }
+    if (s->drv && !s->grid_stale)
+        return 0;
     free_solver(s);
     s->g = adh_grid_alloc(s->nodes, tui_sim_spacing(s));
     s->k = s->g ? adh_kernel_alloc(s->g, s->kernel) : NULL;
-    s->w = s->k ? adh_relax_alloc(s->g, s->k) : NULL;
-    if (s->w && (!s->hist || s->hist_n != s->nodes)) {
-        adh_history_free(s->hist);
-        s->hist = adh_history_alloc(s->nodes);
-        s->hist_n = s->nodes;
-    }
-    if (!s->w || !s->hist) {
+    s->drv = s->k ? adh_drive_alloc(s->g, s->k) : NULL;
+    if (!s->drv) {
         free_solver(s);
         snprintf(why, whylen, "out of memory for a grid of N = %zu nodes: try fewer", s->nodes);
         return -1;
     }
     s->grid_stale = 0;
-    adh_relax_set(s->w, &s->mat, &s->relax, s->start);
-    /* a path given back by undo goes on from where it was */
-    if (adh_history_state(s->hist))
-        adh_relax_restore(s->w, adh_history_state(s->hist));
+    drive_attach(s);
     return 0;
 }
 
@@ -239,7 +269,7 @@ static tui_params_set params_get(const tui_sim *s)
 static void edits_push(tui_edit *st, size_t *n, const tui_edit *e)
 {
     if (*n == TUI_MAX_EDITS) {
-        adh_history_free(st[0].hist);
+        path_free(&st[0].path);
         memmove(st, st + 1, (TUI_MAX_EDITS - 1) * sizeof *st);
         (*n)--;
     }
@@ -250,13 +280,12 @@ static void edits_push(tui_edit *st, size_t *n, const tui_edit *e)
  * from one stack), pushing what was on screen on the other. */
 static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, size_t *nto)
 {
-    tui_edit e = from[--(*nfrom)], back = { params_get(s), e.param, e.keeps_path, NULL, 0 };
+    tui_edit e = from[--(*nfrom)], back = { params_get(s), e.param, e.keeps_path, { .hist = NULL } };
+    adh_run_init(&back.path.run);
     tui_sim_cancel(s);
     if (!e.keeps_path) {
-        back.hist = s->hist;
-        back.hist_n = s->hist_n;
-        s->hist = e.hist;
-        s->hist_n = e.hist_n;
+        back.path = path_take(s);
+        s->path = e.path;
     }
     edits_push(to, nto, &back);
     s->mat = e.par.mat;
@@ -274,17 +303,16 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
     s->warn[0] = '\0';
     if (s->g)
         s->grid_stale = s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s);
-    if (s->w && !s->grid_stale) {
-        adh_relax_set(s->w, &s->mat, &s->relax, s->start);
-        if (s->hist && adh_history_state(s->hist))
-            adh_relax_restore(s->w, adh_history_state(s->hist));
-    } else if (s->hist && adh_history_state(s->hist)) {
+    if (s->drv && !s->grid_stale) {
+        drive_attach(s);
+    } else if (path_length(s)) {
         /* the path's states are on their own grid: build it now, so plots
          * and the next step find grid and states agreeing */
         char why[256];
         if (ensure_solver(s, why, sizeof why) != 0)
-            adh_history_clear(s->hist);
+            path_free(&s->path);
     }
+    sync_turn(s);
     check_grid(s);
     curve_check(s);
     s->edit_moved = e.param;
@@ -362,16 +390,17 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
  * starts afresh. */
 static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
 {
-    tui_edit e = { params_get(s), (int)p, p == P_TURN, s->hist, s->hist_n };
+    tui_edit e = { params_get(s), (int)p, p == P_TURN, { .hist = NULL } };
+    adh_run_init(&e.path.run);
     if (!e.keeps_path)
-        s->hist = NULL;   /* the next step starts a new one */
+        e.path = path_take(s);   /* the next step starts a new one */
     if (set_value_(s, p, v, why, whylen) != 0) {
-        if (!e.keeps_path)
-            s->hist = e.hist;
+        if (!e.keeps_path) {
+            path_free(&s->path);
+            s->path = e.path;
+        }
         return -1;
     }
-    if (e.keeps_path)
-        e.hist = NULL;
     edits_push(s->undo_edits, &s->nundo_edits, &e);
     edits_clear(s->redo_edits, &s->nredo_edits);
     return 0;
@@ -416,11 +445,9 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
     case P_EPS: np.relax.eps = v; break;
     case P_D: np.step = v; break;
     case P_N:
-        if (!(v >= ADH_GRID_NODES_MIN && v <= ADH_GRID_NODES_MAX)) {
-            snprintf(why, whylen, "N = %.0f is not allowed: use %d to %d nodes", v, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX);
-            return -1;
-        }
-        np.nodes = (size_t)llround(v);
+        /* the limits are the core's (adh_drive_check); a count beyond any
+         * grid is held at 1e12 so that it converts, and is refused there */
+        np.nodes = v >= 0 ? (size_t)llround(fmin(v, 1e12)) : 0;
         break;
     case P_SPACING: np.spacing = v; break;
     case P_TURN:
@@ -457,9 +484,17 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
     if (p <= P_R)
         derive(s);
     if (p == P_TURN) {
+        /* where a run turns is not physics: the path stays, and the drive
+         * turns where it is told from here on */
+        if (s->drv && !s->grid_stale) {
+            tui_params_set q = params_get(s);
+            adh_protocol_settings ps = params_protocol(&q);
+            adh_drive_retarget(s->drv, &ps);
+        }
+        sync_turn(s);
         check_grid(s);
         curve_check(s);   /* but it is where the static curve ends */
-        return 0;   /* where a run stops is not physics: the path stays */
+        return 0;
     }
     new_path(s);
     return 0;
@@ -542,25 +577,41 @@ int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whyl
     return set_value(s, p, p == P_N ? round(v * factor) : v * factor, why, whylen);
 }
 
-static int next_path(const tui_sim *s, int dir)
+/* The turn of the row on screen, for the panel: its branch's turn while
+ * unloading, the turn it reached, else the next one loading will reach
+ * (the deepest when none is left). */
+static void sync_turn(tui_sim *s)
 {
-    size_t n = adh_history_length(s->hist);
-    const adh_obs *rows = adh_history_rows(s->hist);
-    if (dir > 0)
-        return 0;
-    if (n && rows[n - 1].branch < 0)
-        return rows[n - 1].path;
-    int top = 0;
-    for (size_t i = 0; i < n; i++)
-        top = rows[i].path > top ? rows[i].path : top;
-    return top + 1;
+    s->tcur = s->nturns ? s->nturns - 1 : 0;
+    s->turn = s->nturns ? s->turns[s->tcur] : NAN;
+    if (!s->nturns || !s->drv || s->grid_stale)
+        return;
+    const adh_run *run = &s->path.run;
+    const adh_obs *o = run->nrows ? &run->rows[run->nrows - 1] : NULL;
+    double t = NAN;
+    size_t k;
+    if (o && o->branch < 0 && o->path > 0)
+        t = run->turns[o->path - 1].h0;
+    else if (o && (adh_drive_events(s->drv) & ADH_DRIVE_TURN))
+        t = run->turns[run->nturns - 1].h0;
+    else if (adh_drive_next(s->drv, &k) > 0 && k > 0)
+        t = s->turns[k - 1];
+    for (size_t i = 0; !isnan(t) && i < s->nturns; i++)
+        if (s->turns[i] == t) {
+            s->tcur = i;
+            s->turn = t;
+            break;
+        }
 }
 
-static void move_to(tui_sim *s, double h0)
+/* After a restore: the drive takes the turns on screen (a turn edit since
+ * the snapshot was taken keeps the path). */
+static void drive_restored(tui_sim *s)
 {
-    s->target = h0;
-    adh_relax_move(s->w, h0);
-    s->t0 = adh_clock_seconds();
+    tui_params_set q = params_get(s);
+    adh_protocol_settings ps = params_protocol(&q);
+    adh_drive_retarget(s->drv, &ps);
+    sync_turn(s);
 }
 
 /* A solve on a grid the core's check refuses is refused, as --batch
@@ -752,7 +803,7 @@ size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last)
     return n;
 }
 
-int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen)
+int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
 {
     if (s->busy) {
         snprintf(why, whylen, "a step is already being solved");
@@ -762,45 +813,21 @@ int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen)
         return curve_begin(s, dir, why, whylen);
     if (grid_refuses(s, why, whylen) || ensure_solver(s, why, whylen) != 0)
         return -1;
-    s->dir = dir;
-    const adh_obs *cur = adh_history_row(s->hist);
-    if (!cur) {
-        /* The path begins with the relaxed state at the start, as in --batch. */
-        adh_relax_set(s->w, &s->mat, &s->relax, s->start);
-        s->solving_start = 1;
-        s->then_dir = dir;
-        move_to(s, s->start);
-        s->busy = 1;
-        return 0;
-    }
-    /* Positions are never accumulated: loading goes to start - k d and
-     * unloading to turn + k d, the turn being the last loading position
-     * before this unloading branch. Those are --batch's positions to the
-     * last bit, so the same script gives the batch run's numbers. */
-    double h0;
-    if (dir > 0) {
-        double k = round((s->start - cur->h0) / s->step) + (stay ? 0 : 1);
-        h0 = s->start - k * s->step;
-        /* the turning point itself, exactly, as --batch hits it */
-        double tol = 1e-6 * s->step;
-        if (!isnan(s->turn) && cur->h0 > s->turn + tol && h0 <= s->turn + tol)
-            h0 = s->turn;
-    } else {
-        size_t n = adh_history_length(s->hist);
-        const adh_obs *rows = adh_history_rows(s->hist);
-        size_t i = n - 1;
-        while (i > 0 && rows[i].branch < 0)
-            i--;
-        double turn = rows[i].h0;
-        double k = round((cur->h0 - turn) / s->step) + (stay ? 0 : 1);
-        h0 = turn + k * s->step;
-    }
-    if (fabs(h0) > adh_protocol_reach(&s->mat)) {
-        snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/50 = %g m",
-                 h0, adh_protocol_reach(&s->mat));
+    if (dir != 0 && adh_drive_hand(s->drv, dir) != ADH_SUCCESS) {
+        double h0 = adh_drive_hand_position(s->drv, dir);
+        if (fabs(h0) > adh_protocol_reach(&s->mat))
+            snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/50 = %g m",
+                     h0, adh_protocol_reach(&s->mat));
+        else
+            snprintf(why, whylen, "at most %d turning points on one path: x starts a new one", ADH_MAX_TURNS);
         return -1;
     }
-    move_to(s, h0);
+    size_t k;
+    if (dir == 0 && adh_drive_next(s->drv, &k) == 0) {
+        snprintf(why, whylen, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
+        return -1;
+    }
+    s->t0 = adh_clock_seconds();
     s->busy = 1;
     return 0;
 }
@@ -814,12 +841,12 @@ void tui_sim_cancel(tui_sim *s)
         s->walk = 0;   /* a point is solved within one tui_sim_work: nothing half done */
         return;
     }
-    s->solving_start = 0;
-    const adh_state *st = adh_history_state(s->hist);
-    if (st)
-        adh_relax_restore(s->w, st);
-    else
-        adh_relax_set(s->w, &s->mat, &s->relax, s->start);
+    if (path_length(s)) {
+        adh_history_restore(s->path.hist, s->drv);
+        drive_restored(s);
+    } else {
+        drive_attach(s);
+    }
 }
 
 int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
@@ -828,122 +855,58 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
         return ADH_SUCCESS;
     if (s->mode == ADH_MODE_STATIC)
         return curve_work(s, why, whylen);
-    int rc = adh_relax_iterate(s->w, batch);
-    if (rc == ADH_CONTINUE)
+    int row, rc = adh_drive_iterate(s->drv, batch, &row);
+    if (rc == ADH_CONTINUE && !row)
         return rc;
-    if (rc != ADH_SUCCESS && rc != ADH_EMAXITER) {
-        snprintf(why, whylen, "the step to h0 = %g m failed: %s; back to the previous state "
-                 "(try a smaller d or a larger eps)", s->target, adh_strerror(rc));
-        tui_sim_cancel(s);
-        return rc;
+    if (row) {
+        if (adh_history_push(s->path.hist, s->drv) != ADH_SUCCESS) {
+            snprintf(why, whylen, "out of memory for the history");
+            tui_sim_cancel(s);
+            return ADH_ENOMEM;
+        }
+        edits_clear(s->redo_edits, &s->nredo_edits);   /* a new step, as a new edit, ends what could be redone */
+        const adh_obs *o = adh_drive_row(s->drv);
+        s->warn[0] = '\0';
+        if (!o->converged)
+            snprintf(s->warn, sizeof s->warn, "not converged: the cap of %zu iterations was hit", o->iters);
+        sync_turn(s);
     }
-    const adh_state *st = adh_relax_state(s->w);
-    adh_obs o;
-    memset(&o, 0, sizeof o);
-    adh_observe(s->g, &s->mat, st, &o);
-    o.iters = adh_relax_step_iterations(s->w);
-    o.seconds = adh_clock_seconds() - s->t0;
-    o.branch = s->solving_start ? +1 : s->dir;
-    o.path = s->solving_start ? 0 : next_path(s, s->dir);
-    o.converged = rc == ADH_SUCCESS;
-    o.stable = 1;
-    if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a))) {
-        snprintf(why, whylen, "the step to h0 = %g m gave a non-finite force; back to the previous state", s->target);
-        tui_sim_cancel(s);
-        return ADH_ENAN;
-    }
-    if (adh_history_push(s->hist, st, &o) != ADH_SUCCESS) {
-        snprintf(why, whylen, "out of memory for the history");
-        tui_sim_cancel(s);
-        return ADH_ENOMEM;
-    }
-    edits_clear(s->redo_edits, &s->nredo_edits);   /* a new step, as a new edit, ends what could be redone */
-    s->warn[0] = '\0';
-    if (!o.converged)
-        snprintf(s->warn, sizeof s->warn, "not converged: the cap of %zu iterations was hit", o.iters);
-    if (o.a >= 0.9 * s->g->rmax) {
+    if (rc == ADH_CONTINUE) {
+        if (adh_drive_pending(s->drv))
+            return ADH_CONTINUE;   /* the start came first: the step asked for goes on */
         s->busy = 0;
-        s->solving_start = 0;
-        snprintf(why, whylen, "the contact reaches the grid edge (a = %.3g nm, Rmax = %.3g nm): "
-                 "use more nodes (N) or a larger spacing", o.a * 1e9, s->g->rmax * 1e9);
-        return ADH_EGRID;
-    }
-    if (s->solving_start) {
-        s->solving_start = 0;
-        double h0 = s->start - (double)s->then_dir * s->step;
-        s->dir = s->then_dir;
-        move_to(s, h0);
-        return ADH_CONTINUE;
+        return ADH_SUCCESS;
     }
     s->busy = 0;
-    return ADH_SUCCESS;
-}
-
-int tui_sim_pulled_off(const tui_sim *s)
-{
-    size_t n = s->hist ? adh_history_length(s->hist) : 0;
-    const adh_obs *rows = n ? adh_history_rows(s->hist) : NULL;
-    if (!n || rows[n - 1].branch >= 0 || rows[n - 1].a > 0)
-        return 0;
-    for (size_t i = n - 1; i-- > 0 && rows[i].branch < 0 && rows[i].path == rows[n - 1].path;)
-        if (rows[i].a > 0)
-            return 1;
-    return 0;
-}
-
-int tui_sim_next_turn(tui_sim *s, char *why, size_t whylen)
-{
-    if (s->tcur + 1 >= s->nturns) {
-        snprintf(why, whylen, "no deeper turning point is left (%zu of %zu done)", s->tcur + 1, s->nturns);
-        return -1;
+    if (rc == ADH_SUCCESS)
+        return TUI_SIM_DONE;
+    if (rc == ADH_EGRID) {
+        const adh_obs *o = adh_drive_row(s->drv);
+        snprintf(why, whylen, "the contact reaches the grid edge (a = %.3g nm, Rmax = %.3g nm): "
+                 "use more nodes (N) or a larger spacing", o->a * 1e9, s->g->rmax * 1e9);
+        return ADH_EGRID;
     }
-    size_t n = s->hist ? adh_history_length(s->hist) : 0;
-    const adh_obs *rows = n ? adh_history_rows(s->hist) : NULL;
-    double tol = 1e-6 * s->step;
-    size_t i = n;
-    while (i-- > 0)
-        if (rows[i].branch > 0 && fabs(rows[i].h0 - s->turn) < tol)
-            break;
-    if (i >= n) {
-        snprintf(why, whylen, "the loading branch at the turn h0 = %g m is not on the path", s->turn);
-        return -1;
-    }
-    adh_obs o = rows[i];   /* copied: the push may move the rows */
-    const adh_state *st = adh_history_state_at(s->hist, i);
-    if (adh_history_push(s->hist, st, &o) != ADH_SUCCESS) {
-        snprintf(why, whylen, "out of memory for the history");
-        return -1;
-    }
-    adh_relax_restore(s->w, adh_history_state(s->hist));
-    s->tcur++;
-    s->turn = s->turns[s->tcur];
-    return 0;
+    snprintf(why, whylen, "the step failed: %s; back to the previous state (try a smaller d or a larger eps)",
+             adh_strerror(rc));
+    s->busy = 1;
+    tui_sim_cancel(s);
+    return rc;
 }
 
-/* The turn r is on, read off the path (after undo, redo or a reset): the
- * one whose unloading branch the path is on, else the next one to load to. */
-static void sync_turn(tui_sim *s)
+unsigned tui_sim_events(const tui_sim *s)
 {
-    size_t n = s->hist ? adh_history_length(s->hist) : 0;
-    const adh_obs *rows = n ? adh_history_rows(s->hist) : NULL;
-    int top = 0;
-    for (size_t i = 0; i < n; i++)
-        if (rows[i].branch < 0 && rows[i].path > top)
-            top = rows[i].path;
-    size_t k = (size_t)top;
-    if (n && rows[n - 1].branch < 0 && k > 0)
-        k--;
-    if (s->nturns == 0)
-        return;
-    s->tcur = k < s->nturns ? k : s->nturns - 1;
-    s->turn = s->turns[s->tcur];
+    return s->mode == ADH_MODE_RELAX && s->drv && path_length(s) ? adh_drive_events(s->drv) : 0;
 }
 
-static void restore_current(tui_sim *s)
+int tui_sim_next(const tui_sim *s, size_t *turn)
 {
-    sync_turn(s);
-    adh_relax_restore(s->w, adh_history_state(s->hist));
-    s->warn[0] = '\0';
+    *turn = s->nturns ? 1 : 0;
+    return s->drv && !s->grid_stale ? adh_drive_next(s->drv, turn) : +1;
+}
+
+const adh_run *tui_sim_run(const tui_sim *s)
+{
+    return &s->path.run;
 }
 
 /* Takes back the last edit (redo: puts it back), when there is one. */
@@ -968,9 +931,10 @@ int tui_sim_undo(tui_sim *s)
         s->ccur--;
         return ADH_SUCCESS;
     }
-    if (!s->hist || adh_history_undo(s->hist) != ADH_SUCCESS)
+    if (!s->drv || s->grid_stale || !s->path.hist || adh_history_undo(s->path.hist, s->drv) != ADH_SUCCESS)
         return edit_undo(s, 0);
-    restore_current(s);
+    drive_restored(s);
+    s->warn[0] = '\0';
     return ADH_SUCCESS;
 }
 
@@ -984,9 +948,10 @@ int tui_sim_redo(tui_sim *s)
         s->ccur++;
         return ADH_SUCCESS;
     }
-    if (!s->hist || adh_history_redo(s->hist) != ADH_SUCCESS)
+    if (!s->drv || s->grid_stale || !s->path.hist || adh_history_redo(s->path.hist, s->drv) != ADH_SUCCESS)
         return edit_undo(s, 1);
-    restore_current(s);
+    drive_restored(s);
+    s->warn[0] = '\0';
     return ADH_SUCCESS;
 }
 
@@ -1005,7 +970,7 @@ const adh_obs *tui_sim_row(const tui_sim *s)
 {
     if (s->mode == ADH_MODE_STATIC)
         return s->curve.nrows ? &s->curve.rows[s->ccur] : NULL;
-    return s->hist ? adh_history_row(s->hist) : NULL;
+    return s->path.run.nrows ? &s->path.run.rows[s->path.run.nrows - 1] : NULL;
 }
 
 const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
@@ -1014,21 +979,20 @@ const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
         *n = s->curve.nrows ? s->ccur + 1 : 0;
         return s->curve.nrows ? s->curve.rows : NULL;
     }
-    *n = s->hist ? adh_history_length(s->hist) : 0;
-    return s->hist ? adh_history_rows(s->hist) : NULL;
+    *n = s->path.run.nrows;
+    return s->path.run.nrows ? s->path.run.rows : NULL;
 }
 
 size_t tui_sim_redoable(const tui_sim *s)
 {
     if (s->mode == ADH_MODE_STATIC)
         return s->curve.nrows ? s->curve.nrows - 1 - s->ccur : 0;
-    return s->hist ? adh_history_redoable(s->hist) : 0;
+    return s->path.hist ? adh_history_redoable(s->path.hist) : 0;
 }
 
 void tui_sim_cycle(const tui_sim *s, adh_cycle *c)
 {
-    size_t n = s->hist ? adh_history_length(s->hist) : 0;
-    adh_cycle_measure(n ? adh_history_rows(s->hist) : NULL, n, c);
+    adh_cycle_measure(s->path.run.nrows ? s->path.run.rows : NULL, s->path.run.nrows, c);
 }
 
 size_t tui_sim_progress(const tui_sim *s, double *change)
@@ -1037,6 +1001,6 @@ size_t tui_sim_progress(const tui_sim *s, double *change)
         *change = 0;
         return s->curve.nrows;
     }
-    *change = s->w ? adh_relax_change(s->w) : 0;
-    return s->w ? adh_relax_step_iterations(s->w) : 0;
+    *change = 0;
+    return s->drv ? adh_drive_progress(s->drv, change) : 0;
 }

@@ -7,7 +7,10 @@
  * step after N or the spacing changed, never for a material change.
  *
  * Two modes share the parameters, grid and kernel. Relaxation (the paper's)
- * keeps a path of relaxed states with undo by snapshots. Static mode follows
+ * steps the core's drive (adhere/drive.h), the object --batch steps: by
+ * hand (f, b) or along the protocol (r), so its rows are --batch's rows; the
+ * path is the drive's run, with undo by the drive's snapshots
+ * (adhere/history.h). Nothing here knows where a step goes. Static mode follows
  * the equilibrium curve by continuation (adh_static_*), one accepted point
  * per step; the points computed so far are kept as rows, and a cursor says
  * which is shown: stepping back (b, u) and forward again (f, U) over points
@@ -22,6 +25,7 @@
 #include <stddef.h>
 
 #include "adhere/cycle.h"
+#include "adhere/drive.h"
 #include "adhere/static.h"
 #include "adhere/grid.h"
 #include "adhere/history.h"
@@ -66,14 +70,20 @@ typedef struct tui_params_set {
     size_t nturns, tcur;           /* how many; the one r is on (turn = turns[tcur]) */
 } tui_params_set;
 
+/* A relaxation path: the drive's run and its undo history (hist NULL:
+ * none yet). */
+typedef struct tui_path {
+    adh_run run;
+    adh_history *hist;
+} tui_path;
+
 /* One edit on the undo (or redo) stack: the parameters on the other side of
- * it and their path (NULL: none yet). */
+ * it and their path. */
 typedef struct tui_edit {
     tui_params_set par;
     int param;              /* which parameter the edit changed */
     int keeps_path;         /* a new turn: the path is the same on both sides */
-    adh_history *hist;
-    size_t hist_n;          /* nodes of its states */
+    tui_path path;
 } tui_edit;
 
 #define TUI_MAX_EDITS 32
@@ -88,18 +98,17 @@ typedef struct tui_sim {
     adh_relax_settings relax;
     double step;               /* d */
     double start_opt;          /* the configured start, NAN = automatic */
-    double turn;               /* where r stops loading: turns[tcur] */
+    double turn;               /* the turn the drive is on: turns[tcur] (NAN: none) */
     double turns[ADH_MAX_TURNS];   /* every turning point of the scene, shallowest first */
-    size_t nturns, tcur;       /* how many (0: none), and the one r is on */
+    size_t nturns, tcur;       /* how many (0: none), and the one the drive is on */
     double stage_turns[ADH_MAX_TURNS];   /* a typed list on its way to set_value */
     size_t nstage;
     double start;              /* the start in use */
 
     adh_grid *g;
     adh_kernel *k;
-    adh_relax *w;
-    adh_history *hist;
-    size_t hist_n;             /* nodes of its states */
+    adh_drive *drv;            /* on g and k; steps the path */
+    tui_path path;             /* the path on screen: the drive's run and its history */
     tui_edit undo_edits[TUI_MAX_EDITS], redo_edits[TUI_MAX_EDITS];
     size_t nundo_edits, nredo_edits;
     int edit_moved;            /* the last undo/redo took back an edit: its parameter, else -1 */
@@ -107,10 +116,8 @@ typedef struct tui_sim {
 
     /* the step being solved */
     int busy;
-    int solving_start;         /* the first state, at the start position */
-    int then_dir;              /* the step asked for once the start is solved */
-    int dir;                   /* +1 approach (loading), -1 retract */
-    double target;
+    int dir;                   /* static mode: +1 the next point, -1 the previous */
+    double target;             /* static mode: the point's h0 */
     double t0;
     char warn[256];            /* about the last step; "" when fine */
     char gridwarn[512];        /* why the grid may not hold the run to the turn; "" */
@@ -172,32 +179,35 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at);
 /* The last fold the curve passed (0 when none yet, else the fold count). */
 size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last);
 
-/* Starts a drive step in direction dir (+1 approach, -1 retract). Builds the
- * grid and kernel first if needed (which can take a second at large N).
- * With stay, the drive does not move: the state is relaxed again where it
- * is, as the first row of a new branch (how --batch begins unloading at a
- * turn). 0, or -1 with why.
+/* Starts a drive step: dir +1 approaches by d, -1 retracts by d (by hand;
+ * the first step also solves the start), 0 takes the protocol's next step
+ * (r). Builds the grid and kernel first if needed (which can take a second
+ * at large N). 0, or -1 with why (out of the model's reach; the protocol
+ * complete).
  * In static mode +1 is the next point of the curve (computed when past the
  * last one) and -1 the previous point (computed before: nothing is solved,
  * the equilibrium curve being the same whichever way the drive moves); -1
  * with why at the start, at the curve's end or after the solver stopped. */
-int tui_sim_begin(tui_sim *s, int dir, int stay, char *why, size_t whylen);
+int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen);
 /* Up to batch iterations of the step in progress. ADH_CONTINUE while not
  * done; ADH_SUCCESS when the step is done and on the history (a step that
- * hit the iteration cap is done too, with s->warn saying so); an error code
- * with why when the step failed (the state is back where it was). */
+ * hit the iteration cap is done too, with s->warn saying so); TUI_SIM_DONE
+ * when the protocol was already complete (no row); an error code with why
+ * when the step failed (the state is back where it was; ADH_EGRID keeps
+ * its row). */
+#define TUI_SIM_DONE 100
 int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen);
 /* Abandons the step in progress: back to the last state on the history. */
 void tui_sim_cancel(tui_sim *s);
 
-/* After the pull-off of turn tcur's unloading branch, when a deeper turn
- * is left: puts the loading branch's state at that turn back on the path
- * (as --batch restores its snapshot there), so that loading goes on to the
- * next turn, which becomes the one r is on. 0, or -1 with why. */
-int tui_sim_next_turn(tui_sim *s, char *why, size_t whylen);
-/* Whether the path ends on an unloading branch that was in contact and is
- * no longer (pulled off). */
-int tui_sim_pulled_off(const tui_sim *s);
+/* What the last row meant (adh_drive_events: ADH_DRIVE_*), 0 in static
+ * mode or before a row. */
+unsigned tui_sim_events(const tui_sim *s);
+/* Which way the protocol's next step goes (adh_drive_next): +1 loading
+ * (*turn its next turn, 0 none), -1 unloading turn *turn, 0 complete. */
+int tui_sim_next(const tui_sim *s, size_t *turn);
+/* The relaxation path's record (rows, turns, pull-offs), as --batch's. */
+const adh_run *tui_sim_run(const tui_sim *s);
 
 /* Undo walks back along the path (static mode: the curve); at its first
  * state it takes back the last edit, restoring the parameters before it and

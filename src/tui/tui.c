@@ -27,6 +27,7 @@
 #include "tui/plotpath.h"
 #include "tui/screen.h"
 #include "tui/sim.h"
+#include "plot/rows.h"
 #include "cli/ready.h"   /* the test readiness signal, shared with the batch drivers */
 
 static volatile sig_atomic_t got_signal;
@@ -72,8 +73,7 @@ typedef struct tui {
     int pending;        /* steps still to start after the current one */
     int pending_dir;
     int pending_key;    /* the key that asked for them: held down, it repeats */
-    int run_dir;        /* a continuous run: +1 loading, -1 unloading, 0 none */
-    int run_touched;    /* the run has been in contact (for pull-off) */
+    int run_dir;        /* a continuous run (r) under way: 1, else 0 */
     int waiting;        /* replay: :wait until the run ends */
     size_t folds_seen;  /* static mode: folds already told on the status line */
     int help;
@@ -83,7 +83,6 @@ typedef struct tui {
     char fatal[1024];   /* printed on stderr once the terminal is restored */
     double last_draw;
     int dirty;          /* the screen is behind the state: draw when idle */
-    int resolve_stay;   /* TODO_RESOLVE: relax again at the present position first */
 } tui;
 
 static void say(tui *t, int error, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
@@ -117,15 +116,16 @@ static const char *activity(const tui *t)
         return "idle";
     }
     static char buf[128];   /* which turn of several the run is on */
-    if (t->run_dir && t->sim.nturns > 1) {
-        snprintf(buf, sizeof buf, "%s, turn %zu of %zu", t->run_dir > 0 ? "running to the turn" : "running to pull-off",
-                 t->sim.tcur + 1, t->sim.nturns);
-        return buf;
+    if (t->run_dir) {
+        size_t k;
+        int unloading = tui_sim_next(&t->sim, &k) < 0;
+        if (t->sim.nturns > 1) {
+            snprintf(buf, sizeof buf, "%s, turn %zu of %zu", unloading ? "running to pull-off" : "running to the turn",
+                     t->sim.tcur + 1, t->sim.nturns);
+            return buf;
+        }
+        return unloading ? "running to pull-off" : "running to the turn";
     }
-    if (t->run_dir > 0)
-        return "running to the turn";
-    if (t->run_dir < 0)
-        return "running to pull-off";
     if (t->sim.busy)
         return t->pending ? "stepping" : "solving a step";
     return "idle";
@@ -170,16 +170,18 @@ static void stop_all(tui *t)
     t->waiting = 0;
 }
 
-static void start_step(tui *t, int dir, int stay)
+/* dir: +1 or -1 a step by hand (static mode: the next or previous
+ * point), 0 the protocol's next step (r). */
+static void start_step(tui *t, int dir)
 {
     char why[512];
-    if ((!t->sim.w || t->sim.grid_stale) && !t->headless) {
+    if ((!t->sim.g || t->sim.grid_stale) && !t->headless) {
         /* The kernel is built on the first step; at large N that takes a
          * moment, so say so before the screen goes quiet. */
         say(t, 0, "building the kernel for N = %zu nodes...", t->sim.nodes);
         draw(t);
     }
-    if (tui_sim_begin(&t->sim, dir, stay, why, sizeof why) != 0) {
+    if (tui_sim_begin(&t->sim, dir, why, sizeof why) != 0) {
         stop_all(t);
         say(t, 1, "%s", why);
     }
@@ -270,43 +272,54 @@ static int run_done(tui *t)
             h0, t->sim.curve.nrows, r->folds, pl, pd);
         return 1;
     }
+    /* the drive says what the row meant; the run pauses where a branch
+     * reaches its goal */
+    unsigned ev = tui_sim_events(&t->sim);
+    const adh_run *run = tui_sim_run(&t->sim);
+    size_t nt = t->sim.nturns;
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
-    if (t->run_dir > 0) {
-        if (!isnan(t->sim.turn) && o->h0 <= t->sim.turn + 1e-6 * t->sim.step) {
-            if (t->sim.nturns > 1)
-                say(t, 0, "at turn %zu of %zu, h0 = %s (force %s): press r to unload until pull-off",
-                    t->sim.tcur + 1, t->sim.nturns, h0, F);
-            else
-                say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until pull-off", h0, F);
-            return 1;
-        }
-        if (isnan(t->sim.turn) && o->a > 0) {
-            say(t, 0, "in contact at h0 = %s (no turning point set: :set turn VALUE)", h0);
-            return 1;
-        }
-        return 0;
-    }
-    if (o->a > 0)
-        t->run_touched = 1;
-    else if (t->run_touched) {
-        if (t->sim.tcur + 1 < t->sim.nturns)
-            say(t, 0, "pulled off at h0 = %s (turn %zu of %zu): pull-off %s; r goes on loading to turn %zu",
-                h0, t->sim.tcur + 1, t->sim.nturns, pulloff_text(t).s, t->sim.tcur + 2);
+    if (ev & ADH_DRIVE_TURN) {
+        size_t k = run->nturns;
+        if (nt <= 1)
+            say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until pull-off", h0, F);
+        else if (k < nt)
+            say(t, 0, "at turn %zu of %zu, h0 = %s (force %s): press r to load on to turn %zu", k, nt, h0, F, k + 1);
         else
-            say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0,
-                pulloff_text(t).s, F);
+            say(t, 0, "at turn %zu of %zu, h0 = %s (force %s): press r to unload turn 1 until pull-off (from its "
+                "state on the way in)", k, nt, h0, F);
         return 1;
     }
-    if (o->h0 >= t->sim.start - 1e-6 * t->sim.step) {
-        say(t, 0, "back at the start h0 = %s%s", h0, t->run_touched ? "" : " without having been in contact");
+    if (!(ev & ADH_DRIVE_END))
+        return 0;
+    if (o->branch > 0) {
+        say(t, 0, "in contact at h0 = %s (no turning point set: :set turn VALUE)", h0);
         return 1;
     }
-    return 0;
+    size_t nk;
+    int k = o->path, left = tui_sim_next(&t->sim, &nk) < 0;
+    if (ev & ADH_DRIVE_PULLOFF) {
+        if (nt > 1 && left)
+            say(t, 0, "pulled off at h0 = %s (turn %d of %zu): pull-off %s; r unloads turn %d", h0, k, nt,
+                pulloff_text(t).s, k + 1);
+        else
+            say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0, pulloff_text(t).s, F);
+        return 1;
+    }
+    int touched = 0;
+    for (size_t i = 0; i < run->nrows; i++)
+        touched |= run->rows[i].branch < 0 && run->rows[i].path == k && run->rows[i].a > 0;
+    say(t, 0, "back at the start h0 = %s%s", h0, touched ? " still in contact" : " without having been in contact");
+    return 1;
 }
 
 static void after_step(tui *t, int rc, const char *why)
 {
+    if (rc == TUI_SIM_DONE) {
+        stop_all(t);
+        say(t, 0, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
+        return;
+    }
     if (rc != ADH_SUCCESS) {
         stop_all(t);
         say(t, 1, "%s", why);
@@ -315,7 +328,7 @@ static void after_step(tui *t, int rc, const char *why)
     describe_step(t);
     if (t->pending > 0) {
         t->pending--;
-        start_step(t, t->pending_dir, 0);
+        start_step(t, t->pending_dir);
     } else if (t->run_dir && run_done(t)) {
         stop_all(t);
     }
@@ -377,7 +390,35 @@ static void param_changed(tui *t, tui_param p)
             u ? "\xc2\xb2" : "^2");
 }
 
-/* A :set / :dump / :wait / :resize, from a script or the ':' prompt.
+/* The path's rows (static mode: the curve's points so far) as force.tsv's
+ * columns, under a temporary name renamed into place: a script can hold
+ * them against --batch's. */
+static int write_rows(tui *t, const char *path, char *why, size_t whylen)
+{
+    size_t n;
+    const adh_obs *rows = is_static(t) ? tui_sim_curve(&t->sim, &n) : tui_sim_rows(&t->sim, &n);
+    char tmp[4096];
+    if (snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid()) >= (int)sizeof tmp) {
+        snprintf(why, whylen, "cannot write the rows to %s: the name is too long", path);
+        return -1;
+    }
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        snprintf(why, whylen, "cannot write the rows to %s: %s", path, strerror(errno));
+        return -1;
+    }
+    adh_rows_header(f);
+    for (size_t i = 0; i < n; i++)
+        adh_rows_write(f, &rows[i]);
+    if (ferror(f) | (fclose(f) != 0) || rename(tmp, path) != 0) {
+        snprintf(why, whylen, "cannot write the rows to %s: %s", path, strerror(errno));
+        unlink(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+/* A :set / :dump / :rows / :wait / :resize, from a script or the ':' prompt.
  * 0, or -1 with a sentence in why. */
 static int run_command(tui *t, const tui_replay_item *it, char *why, size_t whylen)
 {
@@ -401,13 +442,15 @@ static int run_command(tui *t, const tui_replay_item *it, char *why, size_t whyl
     case TUI_REPLAY_DUMP:
         draw(t);
         return tui_dump_screen(it->value, why, whylen);
+    case TUI_REPLAY_ROWS:
+        return write_rows(t, it->value, why, whylen);
     case TUI_REPLAY_WAIT:
         t->waiting = t->run_dir != 0;
         return 0;
     case TUI_REPLAY_RESIZE:
         return resize_to(t, it->cols, it->rows, why, whylen);
     default:
-        snprintf(why, whylen, "not a command: the commands are set NAME VALUE, dump FILE");
+        snprintf(why, whylen, "not a command: the commands are set NAME VALUE, dump FILE, rows FILE");
         return -1;
     }
 }
@@ -467,6 +510,8 @@ static int edit_key(tui *t, int key)
         say(t, 1, "%s", why);
     else if (sc.n && sc.items[0].kind == TUI_REPLAY_DUMP)
         say(t, 0, "screen written to %s", sc.items[0].value);
+    else if (sc.n && sc.items[0].kind == TUI_REPLAY_ROWS)
+        say(t, 0, "rows written to %s", sc.items[0].value);
     tui_replay_free(&sc);
     return TODO_REDRAW;
 }
@@ -581,41 +626,34 @@ static int handle_key(tui *t, int key)
         t->pending_dir = a == ACT_FORWARD ? +1 : -1;
         t->pending_key = key;
         t->run_dir = 0;
-        t->resolve_stay = 0;
         todo |= TODO_RESOLVE;
         break;
     case ACT_RUN: {
-        const adh_obs *o = tui_sim_row(&t->sim);
         if (is_static(t)) {
             char end[64];
             fmtq(tui_sim_curve_end(&t->sim), ADH_Q_LENGTH, end, sizeof end);
             t->pending = 0;
-            t->run_dir = +1;
+            t->run_dir = 1;
             say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
-            t->resolve_stay = 0;
             todo |= TODO_RESOLVE;
             break;
         }
-        if (tui_sim_pulled_off(&t->sim) && t->sim.tcur + 1 < t->sim.nturns) {
-            /* on to the next turn from the loading branch, as --batch
-             * unloads every turn from its snapshot */
-            if (tui_sim_next_turn(&t->sim, why, sizeof why) != 0) {
-                say(t, 1, "%s", why);
-                break;
-            }
-            o = tui_sim_row(&t->sim);
-        }
-        int unload = o && (o->branch < 0 ||
-                           (!isnan(t->sim.turn) && o->h0 <= t->sim.turn + 1e-6 * t->sim.step));
+        /* the protocol's next step, from wherever the path is: the drive
+         * knows whether it loads or unloads */
+        size_t k;
+        int next = tui_sim_next(&t->sim, &k);
         t->pending = 0;
-        t->run_dir = unload ? -1 : +1;
-        t->run_touched = o && o->a > 0;
-        say(t, 0, "%s", unload ? "unloading until pull-off; any key pauses"
-                                : "loading to the turning point; any key pauses");
-        /* Unloading from the loading branch begins, as in --batch, by
-         * relaxing again at the turn as the branch's first row: the same
-         * script then gives the batch run's rows. */
-        t->resolve_stay = unload && o->branch > 0;
+        if (next == 0) {
+            say(t, 0, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
+            break;
+        }
+        t->run_dir = 1;
+        if (t->sim.nturns > 1 && k > 0)
+            say(t, 0, "%s turn %zu of %zu%s; any key pauses", next < 0 ? "unloading" : "loading to", k, t->sim.nturns,
+                next < 0 ? " until pull-off" : "");
+        else
+            say(t, 0, "%s", next < 0 ? "unloading until pull-off; any key pauses"
+                                     : "loading to the turning point; any key pauses");
         todo |= TODO_RESOLVE;
         break;
     }
@@ -678,7 +716,7 @@ static void redo_todo(tui *t, int todo)
     if (todo & TODO_REPAINT)
         clearok(curscr, TRUE);
     if (todo & TODO_RESOLVE)
-        start_step(t, t->run_dir ? t->run_dir : t->pending_dir, t->resolve_stay);
+        start_step(t, t->run_dir ? (is_static(t) ? +1 : 0) : t->pending_dir);
     if (todo & TODO_REPLOT)
         write_plots(t);
     if (todo & (TODO_REDRAW | TODO_REPAINT))
@@ -756,7 +794,7 @@ static void run_next(tui *t)
                 return;
         }
     }
-    start_step(t, t->run_dir, 0);
+    start_step(t, is_static(t) ? +1 : 0);
 }
 
 static void progress(tui *t)

@@ -140,53 +140,49 @@ check "r again unloads until pull-off, out of contact" sh -c "grep -q 'pulled of
 check "the status line gives the pull-off (the minimum force, in N and πγR), not only the force after the jump" \
     grep -Eq "^pulled off at h0 = [0-9.]+ nm: pull-off -[0-9.]+ nN \([0-9.]+ πγR\); force after the jump -[0-9.]+ nN" "$C/contact.screen"
 check "the preview shows both branches" sh -c "grep -q 'o' '$C/contact.screen' && sed -n '16,30p' '$C/contact.screen' | grep -q '+'"
-# The screen and --batch drive the same core with the same positions: the
-# same settings must give the same rows (iterations exactly, F to 4 digits).
-B=$work/batch
-"$bin" --batch --nodes=100 --spacing=10nm --force --eps=10pm --step=0.25nm --turn=-2nm --no-plot -o "$B" \
+# One drive, two drivers: the screen's r and --batch step the same core
+# object, so the same scene gives the same rows, every one, bit for bit
+# (all columns but the wall time): the contact case (one turn, r to the
+# turn, r to pull-off) and Figure 5's eight turns (one loading branch, then
+# every unloading branch from its turn's state, pausing at each pull-off).
+# rows FILE: the data rows of a force table, without the seconds column
+rows() { grep -v '^#' "$1" | cut -f1-12; }
+same_rows() {  # tui.tsv batch-dir
+    if [ ! -s "$1" ] || [ ! -s "$2/force.tsv" ]; then
+        echo "#   missing: $1 or $2/force.tsv ($(head -c 300 "$2.err" 2>/dev/null))"
+        return 1
+    fi
+    [ "$(rows "$1" | head -1 | cut -f1,2)" = "$(printf 'h0\tF')" ] || { echo "#   $1 has no force-table header"; return 1; }
+    rows "$1" >"$1.cmp"
+    rows "$2/force.tsv" >"$2.cmp"
+    cmp -s "$1.cmp" "$2.cmp" && return 0
+    diff "$1.cmp" "$2.cmp" | head -6 | sed 's/^/#   /'
+    echo "#   $(($(wc -l <"$1.cmp") - 1)) rows on the screen's path, $(($(wc -l <"$2.cmp") - 1)) in --batch's force.tsv"
+    return 1
+}
+"$bin" --batch --nodes=100 --spacing=10nm --force --eps=10pm --step=0.25nm --turn=-2nm --no-plot -o "$work/batch" \
     </dev/null >/dev/null 2>"$work/batch.err"
-# col NAME: the column of force.tsv named NAME in its header
-col() { awk -F'\t' -v name="$1" '/^#/ { next } { for (i = 1; i <= NF; i++) if ($i == name) print i; exit }' "$B/force.tsv"; }
-if [ -s "$B/force.tsv" ]; then
-    ch0=$(col h0) cF=$(col F) cit=$(col iters) cbr=$(col branch)
-    turn=$(awk -F'\t' -v h="$ch0" -v b="$cbr" '/^#/ || $h == "h0" { next } $b + 0 > 0 && $h + 0 <= -1.999e-9 { print; exit }' "$B/force.tsv")
-    last=$(grep -v '^#' "$B/force.tsv" | tail -1)
-    nrows=$(grep -v '^#' "$B/force.tsv" | tail -n +2 | wc -l)
-    fmtF() { echo "$1" | awk -F'\t' -v c="$cF" '{ printf "%.4g nN", $c * 1e9 }'; }
-    field() { echo "$1" | cut -f"$2"; }
-    check "at the turn the screen has --batch's iterations ($(field "$turn" "$cit"))" \
-        grep -q "step   $(field "$turn" "$cit") iterations" "$C/contact-turn.txt"
-    check "at the turn the screen has --batch's force ($(fmtF "$turn"))" grep -q "F      $(fmtF "$turn") " "$C/contact-turn.txt"
-    check "at pull-off the screen has --batch's iterations ($(field "$last" "$cit"))" \
-        grep -q "step   $(field "$last" "$cit") iterations" "$C/contact.screen"
-    check "at pull-off the screen has --batch's force ($(fmtF "$last"))" grep -q "F      $(fmtF "$last") " "$C/contact.screen"
-    check "and as many states as --batch has rows ($nrows)" grep -q "path   $nrows states" "$C/contact.screen"
-else
-    fail "--batch with the contact case's settings wrote no force.tsv: $(head -c 300 "$work/batch.err")"
-fi
-
-# Eight turning points (Figure 5's count): the screen follows each turn as
-# --batch does, and each unloading branch pulls off at --batch's force for
-# that turn (turns.tsv, 4 digits as the screen prints it).
+check "the contact case: the screen's rows are --batch's, every one ($(($(rows "$work/batch/force.tsv" 2>/dev/null | wc -l) - 1)) rows)" \
+    same_rows "$C/contact-rows.tsv" "$work/batch"
 MB=$work/multiturn-batch
-"$bin" --batch --nodes=100 --spacing=10nm --force --eps=10pm --step=0.25nm \
-    --turn=1nm,0nm,-0.5nm,-1nm,-1.5nm,-2nm,-2.5nm,-3nm --no-plot -o "$MB" </dev/null >/dev/null 2>"$work/multiturn-batch.err"
-if [ -s "$MB/turns.tsv" ]; then
-    k=0
-    for pl in $(awk -F'\t' '/^#/ { next } $1 == "turn_h0" { for (i = 1; i <= NF; i++) if ($i == "pulloff_F") c = i; next }
-                          { printf "%.4g\n", $c * 1e9 }' "$MB/turns.tsv"); do
-        k=$((k + 1))
-        check "turn $k of 8: the screen pulls off at --batch's $pl nN" \
-            grep -q "pull-off $pl nN" "$W/multiturn/multiturn-$k.txt"
-    done
-    check "--batch reached all eight turns" [ "$k" -eq 8 ]
-    check "undo over the last turn puts r back on turn 7 (-2.5 nm)" \
-        grep -q "turn  -2.5 nm " "$W/multiturn/multiturn-back.txt"
-    check "and r runs to turn 8 again, to --batch's pull-off $pl nN" \
-        grep -q "pull-off $pl nN" "$W/multiturn/multiturn-again.txt"
-else
-    fail "--batch with the multiturn case's settings wrote no turns.tsv: $(head -c 300 "$work/multiturn-batch.err")"
-fi
+# shellcheck disable=SC2046
+"$bin" --batch $(cat "$here/cases/multiturn.args") --no-plot -o "$MB" </dev/null >/dev/null 2>"$MB.err"
+M=$W/multiturn
+check "fig5's eight turns: the screen's rows are --batch's, every one ($(($(rows "$MB/force.tsv" 2>/dev/null | wc -l) - 1)) rows)" \
+    same_rows "$M/multiturn-rows.tsv" "$MB"
+check "--batch unloaded all eight turns" [ "$(grep -vc '^#' "$MB/turns.tsv" 2>/dev/null)" = 9 ]
+# pull-off of turn K in turns.tsv, 4 digits as the screen prints it (mN)
+pulloff() { awk -F'\t' -v k="$1" '/^#/ { next } $1 == "turn_h0" { for (i = 1; i <= NF; i++) if ($i == "pulloff_F") c = i; next }
+                                  ++n == k { printf "%.4g", $c * 1e3 }' "$MB/turns.tsv"; }
+check "r pauses at turn 1 of 8 on the way in" grep -q "^at turn 1 of 8, h0 = 2 nm" "$M/multiturn-turn1.txt"
+check "and at turn 8, then unloads turn 1 first" grep -q "^at turn 8 of 8, h0 = -10 nm.*r to unload turn 1" "$M/multiturn-turn8.txt"
+check "turn 1 pulls off at --batch's $(pulloff 1) mN, and r goes on with turn 2" \
+    grep -q "(turn 1 of 8): pull-off $(pulloff 1) mN.*r unloads turn 2" "$M/multiturn-pull1.txt"
+check "turn 8 pulls off last, at --batch's $(pulloff 8) mN" grep -q "pull-off $(pulloff 8) mN" "$M/multiturn-pull8.txt"
+check "then r says the protocol is complete" grep -q "^the protocol is complete" "$M/multiturn-complete.txt"
+check "one state back, r unloads turn 8 again to the same pull-off" grep -q "pull-off $(pulloff 8) mN" "$M/multiturn-again.txt"
+check "the panel shows the turn of the branch on screen (turn 1: 2 nm, turn 8: -10 nm)" \
+    sh -c "grep -q '^  turn  2 nm ' '$M/multiturn-pull1.txt' && grep -q '^  turn  -10 nm ' '$M/multiturn-pull8.txt'"
 
 U=$W/undo
 check "undo gives back the earlier state's numbers exactly" [ "$(state "$U/undo-back.txt")" = "$(state "$U/undo-32.txt")" ]

@@ -1,105 +1,121 @@
-/* The undo history: undo/redo restore exactly the pushed snapshots and rows,
- * a push after undo drops the redo tail, and the rows stay contiguous. */
+/* The undo history of a drive: undo and redo put the drive and its run back
+ * exactly (rows, turns, state), a step after an undo gives the row it gave
+ * before, a push after undo drops the redo tail, the first entry is never
+ * undone; and steps by hand (the TUI's f and b) turn, unload and load again
+ * on the protocol's lattices. */
+#include <math.h>
 #include <string.h>
 
 #include "adhere/history.h"
 #include "adhere/status.h"
 #include "tap.h"
 
-static void fill(adh_state *s, double h0)
+static int same_row(const adh_obs *a, const adh_obs *b)
 {
-    s->h0 = h0;
-    for (size_t i = 0; i < s->n; i++) {
-        s->u[i] = h0 * (double)(i + 1) / 3.0;   /* not exactly representable */
-        s->h[i] = h0 + 1.0 / (double)(i + 7);
-        s->p[i] = -h0 * 1e7 / (double)(i + 1);
-    }
+    return a->h0 == b->h0 && a->F == b->F && a->a == b->a && a->iters == b->iters && a->branch == b->branch &&
+           a->path == b->path;
 }
 
-static int same_state(const adh_state *a, const adh_state *b)
+static int step_hand(adh_drive *d, int dir)
 {
-    return a->n == b->n && a->h0 == b->h0 &&
-           memcmp(a->u, b->u, 3 * a->n * sizeof(double)) == 0;
+    if (adh_drive_hand(d, dir) != ADH_SUCCESS)
+        return ADH_EINVAL;
+    int rc, row;
+    while ((rc = adh_drive_iterate(d, 0, &row)) == ADH_CONTINUE && adh_drive_pending(d))
+        ;
+    return rc;
 }
 
 int main(void)
 {
-    const size_t n = 17;
-    adh_history *h = adh_history_alloc(n);
-    ok(h != NULL, "alloc");
-    ok(adh_history_alloc(0) == NULL, "alloc of 0 nodes fails");
-    ok(adh_history_length(h) == 0 && adh_history_state(h) == NULL && adh_history_row(h) == NULL,
-       "empty history has no current entry");
-    ok(adh_history_undo(h) == ADH_EINVAL && adh_history_redo(h) == ADH_EINVAL,
-       "undo and redo on an empty history refuse");
+    adh_material m = adh_material_default();
+    adh_grid *g = adh_grid_alloc(100, 10e-9);
+    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_relax_settings rs = adh_relax_settings_default();
+    rs.eps = 10e-12;
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.step = 0.25e-9;
+    ps.nturns = 1;
+    ps.turns[0] = -1e-9;
+    adh_drive *d = adh_drive_alloc(g, k);
+    adh_run run;
+    adh_run_init(&run);
+    adh_history *h = adh_history_alloc();
+    ok(h && d && adh_drive_set(d, &m, &rs, &ps, &run) == ADH_SUCCESS, "alloc and set");
+    ok(adh_history_length(h) == 0 && adh_history_undo(h, d) == ADH_EINVAL && adh_history_redo(h, d) == ADH_EINVAL,
+       "an empty history has nothing to undo or redo");
 
-    adh_state *s = adh_state_alloc(n), *ref[5];
-    adh_obs row;
-    for (int k = 0; k < 5; k++) {
-        fill(s, 1e-9 * (10 - k));
-        memset(&row, 0, sizeof row);
-        row.h0 = s->h0;
-        row.F = -1e-9 * k;
-        row.iters = (size_t)(100 + k);
-        ok(adh_history_push(h, s, &row) == ADH_SUCCESS, "push %d", k);
-        ref[k] = adh_state_clone(s);
+    /* the first f: the start, then one step in */
+    ok(step_hand(d, +1) == ADH_CONTINUE && run.nrows == 2 && run.rows[1].h0 == run.start - ps.step,
+       "the first step by hand solves the start, then approaches by d");
+    double start = run.start;
+    /* one entry per row, as the TUI keeps them */
+    adh_history_push(h, d);
+    int rc = ADH_CONTINUE;
+    while (rc == ADH_CONTINUE && !(adh_drive_events(d) & ADH_DRIVE_TURN)) {
+        rc = step_hand(d, +1);
+        adh_history_push(h, d);
     }
-    fill(s, 99);  /* the history must hold copies, not the caller's buffer */
-    ok(adh_history_length(h) == 5 && adh_history_redoable(h) == 0, "5 entries, nothing to redo");
-    ok(same_state(adh_history_state(h), ref[4]), "current is the last push");
+    ok(rc == ADH_CONTINUE && run.rows[run.nrows - 1].h0 == -1e-9 && run.nturns == 1,
+       "approaching by hand hits the turn exactly and records it (%zu rows)", run.nrows);
+    size_t nturn = run.nrows;
+    for (int i = 0; i < 6; i++) {
+        rc = step_hand(d, -1);
+        adh_history_push(h, d);
+    }
+    const adh_obs *o = &run.rows[run.nrows - 1];
+    ok(rc == ADH_CONTINUE && o->branch < 0 && o->path == 1 && fabs(o->h0 - (-1e-9 + 6 * ps.step)) < 1e-18 &&
+       run.turns[0].path == 1 && run.nturns == 1,
+       "retracting from the turn unloads that turn, by d from it (h0 %g)", o->h0);
+    ok(!isnan(run.turns[0].pulloff_F) && run.turns[0].pulloff_F <= run.rows[nturn].F,
+       "the branch's pull-off is tracked from its first row");
 
-    ok(adh_history_undo(h) == ADH_SUCCESS && adh_history_undo(h) == ADH_SUCCESS, "undo twice");
-    ok(adh_history_length(h) == 3 && adh_history_redoable(h) == 2, "3 on the path, 2 to redo");
-    ok(same_state(adh_history_state(h), ref[2]), "undo restores the third state bit for bit");
-    ok(adh_history_row(h)->iters == 102 && adh_history_row(h)->F == -2e-9, "and its row");
+    adh_obs last = *o;
+    size_t n = run.nrows;
+    size_t t;
+    ok(adh_drive_next(d, &t) == -1 && t == 1, "the drive says its next step unloads turn 1");
+    ok(adh_history_undo(h, d) == ADH_SUCCESS && adh_history_undo(h, d) == ADH_SUCCESS && run.nrows == n - 2,
+       "two undos cut the run back two rows");
+    ok(adh_history_redoable(h) == 2 && adh_history_redo(h, d) == ADH_SUCCESS && run.nrows == n - 1,
+       "redo puts a row back");
+    ok(adh_history_redo(h, d) == ADH_SUCCESS && run.nrows == n && same_row(&run.rows[n - 1], &last) &&
+       adh_history_redo(h, d) == ADH_EINVAL, "and the last, as it was; nothing more to redo");
+    adh_history_undo(h, d);
+    ok(step_hand(d, -1) == ADH_CONTINUE && same_row(&run.rows[n - 1], &last),
+       "undo, then the same step again: the same row, bit for bit");
+    adh_history_push(h, d);
+    ok(adh_history_redoable(h) == 0, "a push drops what could be redone");
 
-    ok(same_state(adh_history_state_at(h, 0), ref[0]) && same_state(adh_history_state_at(h, 2), ref[2]),
-       "state_at gives the states on the path");
-    ok(adh_history_state_at(h, 3) == NULL, "state_at past the cursor is NULL (it is redoable, not on the path)");
-    ok(adh_history_redo(h) == ADH_SUCCESS, "redo");
-    ok(same_state(adh_history_state(h), ref[3]), "redo restores the fourth state bit for bit");
-    ok(adh_history_redo(h) == ADH_SUCCESS && adh_history_redo(h) == ADH_EINVAL,
-       "redo up to the end, then refuses");
+    /* approach again from the unloading branch, then retract: a new turn */
+    ok(step_hand(d, +1) == ADH_CONTINUE && run.rows[run.nrows - 1].branch > 0 && run.rows[run.nrows - 1].path == 0 &&
+       fabs(run.rows[run.nrows - 1].h0 - (last.h0 - ps.step)) < 1e-18,
+       "approaching from the unloading branch loads again on the lattice");
+    adh_history_push(h, d);
+    ok(step_hand(d, -1) == ADH_CONTINUE && run.nturns == 2 && run.rows[run.nrows - 1].path == 2 &&
+       fabs(run.turns[1].h0 - (last.h0 - ps.step)) < 1e-18, "retracting from there records a second turn, path 2 (%zu turns, path %d)",
+       run.nturns, run.rows[run.nrows - 1].path);
+    adh_history_push(h, d);
 
-    while (adh_history_undo(h) == ADH_SUCCESS)
+    while (adh_history_undo(h, d) == ADH_SUCCESS)
         ;
-    ok(adh_history_length(h) == 1 && same_state(adh_history_state(h), ref[0]),
-       "undo stops at the first entry");
-
-    /* A new step after undo forks the path: the redo tail is gone. */
-    adh_history_redo(h);
-    fill(s, 42e-9);
-    row.h0 = s->h0;
-    ok(adh_history_push(h, s, &row) == ADH_SUCCESS, "push after undo");
-    ok(adh_history_length(h) == 3 && adh_history_redoable(h) == 0, "the push dropped the redo tail");
-    ok(adh_history_state(h)->h0 == 42e-9, "current is the new push");
-    const adh_obs *rows = adh_history_rows(h);
-    ok(rows[0].h0 == ref[0]->h0 && rows[1].h0 == ref[1]->h0 && rows[2].h0 == 42e-9,
-       "rows are the path in order");
-
-    adh_state *wrong = adh_state_alloc(n + 1);
-    ok(adh_history_push(h, wrong, &row) == ADH_EINVAL, "a state of the wrong size is refused");
-
-    /* Enough pushes to force the arrays to grow, then check an early entry. */
-    for (int k = 0; k < 300; k++) {
-        fill(s, (double)k);
-        row.h0 = (double)k;
-        if (adh_history_push(h, s, &row) != ADH_SUCCESS)
-            break;
-    }
-    ok(adh_history_length(h) == 303, "303 entries after growing");
-    rows = adh_history_rows(h);
-    ok(rows[1].h0 == ref[1]->h0 && rows[302].h0 == 299.0, "rows survive growth");
-
+    ok(adh_history_length(h) == 1 && run.nrows == 2 && run.nturns == 0 && run.rows[0].h0 == start,
+       "undo stops at the first entry, with the run back to its two rows and no turn");
+    ok(adh_history_state_at(h, 0) && adh_history_state_at(h, 0)->h0 == run.rows[1].h0 && adh_history_state_at(h, 1) == NULL,
+       "the states on the path are the snapshots' (%g, row %g)", adh_history_state_at(h, 0)->h0, run.rows[1].h0);
     adh_history_clear(h);
-    ok(adh_history_length(h) == 0 && adh_history_redoable(h) == 0 && adh_history_state(h) == NULL,
-       "clear empties it");
-
-    for (int k = 0; k < 5; k++)
-        adh_state_free(ref[k]);
-    adh_state_free(s);
-    adh_state_free(wrong);
+    ok(adh_history_length(h) == 0, "clear forgets every entry");
+    adh_material small = m;
+    small.R = 1e-6;   /* reach R/50 = 20 nm */
+    ps.start = 19.9e-9;
+    adh_run_free(&run);
+    adh_run_init(&run);
+    adh_drive_set(d, &small, &rs, &ps, &run);
+    ok(adh_drive_hand(d, -1) == ADH_EINVAL && adh_drive_hand(d, +1) == ADH_SUCCESS,
+       "a step beyond the model's reach (19.9 + 0.25 nm > R/50) is refused before it starts; one in is not");
     adh_history_free(h);
-    adh_history_free(NULL);
+    adh_drive_free(d);
+    adh_run_free(&run);
+    adh_kernel_free(k);
+    adh_grid_free(g);
     return tap_done();
 }
