@@ -397,8 +397,8 @@ static int begin(adh_drive *d)
                 at_turn = 1;
                 k = (long)floor((d->start - h0) / ps->step + 1e-6);
             }
-            if (nt == 0 && h0 < -0.01 * d->m.R)
-                return finish(d, ADH_SUCCESS);
+            if (nt == 0 && h0 < -adh_protocol_reach(&d->m))
+                return finish(d, ADH_SUCCESS);   /* never in contact within the model's reach */
             d->c.k = k + 1;
             start(d, h0, +1, 0, 0, at_turn);
             return ADH_SUCCESS;
