@@ -59,7 +59,7 @@ int main(int argc, char **argv)
     /* A profile plot with no positions asked gets a spread of them, placed on
      * the drive grid so every one is really stored (plan and run agree). */
     if ((cli.cfg.plots & ADH_PLOT_PROFILE) && cli.cfg.proto.nprofiles == 0 && cli.cfg.mode == ADH_MODE_RELAX)
-        cli.cfg.proto.nprofiles = adh_plot_default_profiles(&cli.cfg, cli.cfg.proto.profiles, 6);
+        cli.cfg.proto.nprofiles = adh_plan_default_profiles(&cli.cfg.mat, &cli.cfg.proto, cli.cfg.proto.profiles, 6);
     /* No grid given: the one the contact's edge needs, or a refusal. */
     if (cli.action != ADH_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);

@@ -25,16 +25,6 @@
 int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *reference,
                     const char *dir, char *msg, size_t msglen, char *unwritten, size_t ulen);
 
-/* A handful (at most max) of profile positions for profile.png when none
- * were asked: evenly from the deepest turn (or, with no turn, the analytic
- * jump separation, eq 24) up to half the start, each snapped onto the
- * drive's grid start - k d so the protocol really stores it (Figure 4 uses
- * -5 nm ... 8.5 nm; the default scene's start is 17 nm). Returns how many
- * were written to out. For the caller to use before the run, e.g.
- *   if (!cfg->proto.nprofiles && (cfg->plots & ADH_PLOT_PROFILE))
- *       cfg->proto.nprofiles = adh_plot_default_profiles(cfg, cfg->proto.profiles, 6); */
-size_t adh_plot_default_profiles(const adh_config *cfg, double *out, size_t max);
-
 /* The gnuplot style file in use: cfg->gnuplot_style (a file, or a directory
  * holding style.gp) if set, else style.gp in adh_data_dir("gnuplot").
  * 0; 1 when no style is set and none is installed (buf = "", the built-in

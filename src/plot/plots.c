@@ -18,7 +18,8 @@
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
 #include "plot/png.h"
-#include "plot/plotdata.h"
+#include "plot/speed.h"
+#include "plot/tsv.h"
 #include "scene/measured.h"
 
 #define MAX_LABELLED_UNLOADS 8
@@ -681,11 +682,11 @@ static int plot_profile(plotter *pl)
         free(pos);
         return -1;
     }
-    double amax = 0, rgrid = adh_profile_radius(cfg, cfg->nodes - 1);
+    double amax = 0, rgrid = adh_tsv_radius(cfg, cfg->nodes - 1);
     for (size_t k = 0; k < nsel; k++) {
         const adh_profile *pr = &run->profiles[sel[k]];
         for (size_t n = 0; n < cfg->nodes; n++) {
-            double r = adh_profile_radius(cfg, n);
+            double r = adh_tsv_radius(cfg, n);
             fprintf(f, "%.17g\t%.17g\n", r, pr->h[n]);
             if (pr->h[n] < ADH_CONTACT_FACTOR * cfg->mat.z0 && r > amax)
                 amax = r;
@@ -799,8 +800,8 @@ static int plot_contact(plotter *pl)
     int rc = -1;
     if ((n && (!dadh0 || !dadt || !smooth)) || !set)
         goto out;
-    adh_contact_speed(run, pl->cfg->drive_speed, dadh0, dadt);
-    adh_contact_speed_smoothed(run, pl->cfg->drive_speed, adh_config_spacing(pl->cfg),
+    adh_speed_stepwise(run, pl->cfg->drive_speed, dadh0, dadt);
+    adh_speed_smoothed(run, pl->cfg->drive_speed, adh_config_spacing(pl->cfg),
                                ADH_SPEED_CELLS, smooth);
     double xmin = INFINITY, xmax = -INFINITY;
     for (size_t i = 0; i < n; i++)
@@ -837,7 +838,7 @@ static int plot_contact(plotter *pl)
         for (size_t i = 0; i < n; i++) {
             if (run->rows[i].path != p)
                 continue;
-            long a = adh_row_prev_on_path(run, i), b = adh_row_next_on_path(run, i);
+            long a = adh_run_prev_on_path(run, i), b = adh_run_next_on_path(run, i);
             if (run->rows[i].a > 0 || (a >= 0 && run->rows[a].a > 0) ||
                 (b >= 0 && run->rows[b].a > 0))
                 set_point(&df, run->rows[i].h0, run->rows[i].a);
@@ -1028,7 +1029,7 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *re
     char tables[64] = "";
     if (run->nprofiles > 0) {
         snprintf(path, sizeof path, "%s/profiles.tsv", dir);
-        if (adh_write_profiles_table(cfg, run, path, why, sizeof why) != 0) {
+        if (adh_tsv_profiles(cfg, run, path, why, sizeof why) != 0) {
             snprintf(table_error, sizeof table_error, "%s", why);
             add_name(unwritten, ulen, "profiles.tsv");
         } else {
@@ -1037,7 +1038,7 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *re
     }
     if (cfg->plots & ADH_PLOT_CONTACT) {
         snprintf(path, sizeof path, "%s/contact.tsv", dir);
-        if (adh_write_contact_table(cfg, run, path, why, sizeof why) != 0) {
+        if (adh_tsv_contact(cfg, run, path, why, sizeof why) != 0) {
             if (!*table_error)
                 snprintf(table_error, sizeof table_error, "%s", why);
             add_name(unwritten, ulen, "contact.tsv");

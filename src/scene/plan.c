@@ -350,3 +350,34 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     for (size_t i = 0; i < p->nskipped; i++)
         fprintf(f, "skip: %s: %s\n", p->skipped[i].what, p->skipped[i].why);
 }
+
+size_t adh_plan_default_profiles(const adh_material *mat, const adh_protocol_settings *ps, double *out, size_t max)
+{
+    double step = ps->step;
+    if (!(step > 0) || max == 0)
+        return 0;
+    double start = isnan(ps->start) ? adh_protocol_auto_start(mat, step) : ps->start;
+    adh_derived d;
+    adh_material_derive(mat, &d);
+    double lo = d.h_star;
+    for (size_t i = 0; i < ps->nturns; i++)
+        lo = i == 0 || ps->turns[i] < lo ? ps->turns[i] : lo;
+    double hi = 0.5 * start;
+    if (!(hi > lo))
+        hi = start;
+    if (!(hi > lo))
+        return 0;
+    size_t n = 0;
+    for (size_t j = 0; j < max; j++) {
+        double x = max == 1 ? lo : lo + (hi - lo) * (double)j / (double)(max - 1);
+        double k = round((start - x) / step);
+        if (k < 0)
+            k = 0;
+        double h = start - k * step;     /* exactly as the protocol computes it */
+        if (j == 0 && ps->nturns)
+            h = lo;                       /* turns are hit exactly, on their own */
+        if (n == 0 || fabs(out[n - 1] - h) > 0.5 * step)
+            out[n++] = h;
+    }
+    return n;
+}

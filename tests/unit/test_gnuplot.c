@@ -17,7 +17,9 @@
 #include "adhere/protocol.h"
 #include "plot/gnuplot.h"
 #include "plot/plot.h"
-#include "plot/plotdata.h"
+#include "plot/speed.h"
+#include "plot/tsv.h"
+#include "scene/plan.h"
 #include "scene/config.h"
 #include "tap.h"
 
@@ -171,7 +173,7 @@ static void make_synthetic(synthetic *s)
         pr->h = s->store[k][1];
         pr->p = s->store[k][2];
         for (size_t n = 0; n < NODES; n++) {
-            double r = adh_profile_radius(&s->cfg, n);
+            double r = adh_tsv_radius(&s->cfg, n);
             double h = pr->h0 + r * r / (2 * m->R);
             pr->h[n] = h < m->z0 ? m->z0 : h;
             pr->u[n] = pr->h[n] - h;
@@ -295,7 +297,7 @@ static void test_contact_speed(void)
     make_synthetic(&s);
     size_t n = s.run.nrows;
     double *dadh0 = malloc(n * sizeof *dadh0), *dadt = malloc(n * sizeof *dadt);
-    adh_contact_speed(&s.run, 1e-6, dadh0, dadt);
+    adh_speed_stepwise(&s.run, 1e-6, dadh0, dadt);
     /* loading: a = 0.1 um + 30 (2 nm - h0), so da/dh0 = -30, da/dt = +30 um/s */
     size_t load_mid = 100, unload_mid = 151 + 50, out = 10, turn = 151;
     ok_rel(dadh0[load_mid], -30.0, 1e-6, "loading da/dh0");
@@ -304,18 +306,18 @@ static void test_contact_speed(void)
     ok_rel(dadt[unload_mid], -20e-6, 1e-6, "unloading contact line recedes at 20 um/s");
     ok(isnan(dadt[out]), "no speed out of contact");
     ok_rel(dadt[turn], -20e-6, 1e-6, "one-sided at the start of a branch");
-    ok_rel(adh_profile_radius(&s.cfg, 0), 5e-9, 1e-12, "first node at dr/2");
+    ok_rel(adh_tsv_radius(&s.cfg, 0), 5e-9, 1e-12, "first node at dr/2");
     /* smoothing a steady spreading changes nothing; on a stick-slip staircase
      * it recovers the mean speed the step-by-step derivative hides */
     double *sm = malloc(n * sizeof *sm);
-    adh_contact_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
+    adh_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
     ok_rel(sm[load_mid], 30e-6, 1e-6, "smoothed loading speed of a steady line");
     ok(isnan(sm[out]), "no smoothed speed out of contact");
     for (size_t i = 0; i < n; i++)
         if (s.run.rows[i].path == 0 && s.run.rows[i].a > 0)   /* hop a node every 5 steps */
             s.run.rows[i].a = 0.1e-6 + 10e-9 * floor((2e-9 - s.run.rows[i].h0) / 0.5e-9 + 1e-9);
-    adh_contact_speed(&s.run, 1e-6, dadh0, dadt);
-    adh_contact_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
+    adh_speed_stepwise(&s.run, 1e-6, dadh0, dadt);
+    adh_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
     ok(dadt[load_mid] == 0 || dadt[load_mid] > 45e-6,
        "the staircase's step-by-step speed is 0 or a spike (%g)", dadt[load_mid]);
     ok_rel(sm[load_mid], 20e-6, 0.15, "its smoothed speed is the mean 20 um/s");
@@ -380,7 +382,7 @@ static void test_plots(void)
     double h0, r;
     int b, pa;
     ok(sscanf(line, "%lg\t%d\t%d\t%lg", &h0, &b, &pa, &r) == 4 && h0 == s.run.profiles[0].h0 &&
-       r == adh_profile_radius(&s.cfg, 0), "table numbers round-trip exactly");
+       r == adh_tsv_radius(&s.cfg, 0), "table numbers round-trip exactly");
 
     /* a style of another size, given as a file */
     char style[300], dir2[300];
@@ -507,7 +509,7 @@ static void test_default_profiles(void)
     adh_config cfg;
     adh_config_default(&cfg);
     double pos[8];
-    size_t n = adh_plot_default_profiles(&cfg, pos, 6);
+    size_t n = adh_plan_default_profiles(&cfg.mat, &cfg.proto, pos, 6);
     double start = adh_protocol_auto_start(&cfg.mat, cfg.proto.step);
     ok(n == 6, "six default profile positions (got %zu)", n);
     ok(n && pos[0] == cfg.proto.turns[0], "the first is the turn itself (%g)", n ? pos[0] : 0);
@@ -520,7 +522,7 @@ static void test_default_profiles(void)
     }
     ok(on_grid, "each lies exactly on the drive grid start - k d, rising");
     cfg.proto.nturns = 0;
-    n = adh_plot_default_profiles(&cfg, pos, 4);
+    n = adh_plan_default_profiles(&cfg.mat, &cfg.proto, pos, 4);
     ok(n == 4 && pos[0] > 0, "with no turn they start near the jump separation (%g)",
        n ? pos[0] : 0);
 }

@@ -1,0 +1,27 @@
+/* The plot module's tables: profiles.tsv (u, h, p at the stored drive
+ * positions) and contact.tsv (contact radius and contact-line speed). The
+ * run's own tables (force.tsv, turns.tsv, summary.tsv) are cli/tables.c's. */
+#ifndef ADH_PLOT_TSV_H
+#define ADH_PLOT_TSV_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "adhere/run.h"
+#include "scene/config.h"
+
+/* The comment block each table starts with: material, sigma, gamma, grid. */
+void adh_tsv_preamble(FILE *f, const adh_config *cfg, const char *what);
+
+/* Write profiles.tsv and contact.tsv at path (through a temporary name and
+ * a rename). 0, or -1 with msg set. */
+int adh_tsv_profiles(const adh_config *cfg, const adh_run *run, const char *path,
+                     char *msg, size_t msglen);
+int adh_tsv_contact(const adh_config *cfg, const adh_run *run, const char *path,
+                    char *msg, size_t msglen);
+
+/* Node radius r_n = (n - 1/2) dr of the run's grid (the profiles do not
+ * carry it; it follows from cfg->nodes and the spacing). */
+double adh_tsv_radius(const adh_config *cfg, size_t n);
+
+#endif
