@@ -24,6 +24,7 @@
 #include "cli/tables.h"
 #include "plot/outdir.h"
 #include "adhere/units.h"
+#include "cli/plotsetup.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
 
@@ -242,7 +243,9 @@ int cli_batch_main(const cli_options *cli)
              * temporaries go, and the exit says interrupted. */
             char msg[1024] = "", missing[256] = "", fig[1024] = "", plots[2100] = "";
             cli_ready_phase("plot");
-            int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
+            adh_plot_setup ps;
+            cli_plot_setup(cfg, g, &ps);
+            int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
                                       sizeof missing);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);

@@ -202,7 +202,7 @@ static int write_cost(FILE *f, const void *ctx)
 static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len)
 {
     char cfg_style[PATH_MAX];
-    if (adh_plot_style_file(job->cfg, cfg_style, sizeof cfg_style, msg, len) < 0)
+    if (adh_plot_style_file(job->cfg->gnuplot_style, cfg_style, sizeof cfg_style, msg, len) < 0)
         return 2;
     char log[PATH_MAX + 32], data[PATH_MAX + 32], png[PATH_MAX + 32], tmp[PATH_MAX + 48];
     snprintf(log, sizeof log, "%s/gnuplot.log", dir);

@@ -35,7 +35,7 @@ static int fig_open(figure *fg, const adh_config *cfg, const char *dir, char *ms
     fg->msg = msg;
     fg->msglen = msglen;
     char why[1024];
-    if (adh_plot_style_file(cfg, fg->style, sizeof fg->style, why, sizeof why) < 0) {
+    if (adh_plot_style_file(cfg->gnuplot_style, fg->style, sizeof fg->style, why, sizeof why) < 0) {
         snprintf(msg, msglen, "%s", why);
         return -1;
     }

@@ -8,7 +8,6 @@
 #include "cli/cost.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
-#include "plot/plot.h"
 #include "scene/config.h"
 #include "scene/measured.h"
 #include "scene/plan.h"

@@ -23,6 +23,7 @@
 #include "cli/statics.h"
 #include "cli/tables.h"
 #include "plot/outdir.h"
+#include "cli/plotsetup.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
 
@@ -259,8 +260,8 @@ static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, con
 /* Figures of run i in out/run-K (its tables are there); when one is not
  * written, the run's summary.tsv is written again to say so. An exit
  * status. */
-static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                       int rc, const char *out)
+static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const adh_run *run,
+                       const adh_static_result *sres, int rc, const char *out)
 {
     char dir[PATH_MAX + 32], msg[1024] = "", missing[256] = "";
     adh_config rcfg;
@@ -272,7 +273,9 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
     /* the plot module's figures only when one is asked: a sweep of many runs
      * should not draw what nobody wants */
     if (rcfg.plots & ADH_PLOT_ALL) {
-        int prc = adh_plots_write(&rcfg, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
+        adh_plot_setup ps;
+        cli_plot_setup(&rcfg, g, &ps);
+        int prc = adh_plots_write(&ps, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
         if (prc != 0) {
             fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
             status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
@@ -424,7 +427,7 @@ int cli_sweep_main(const cli_options *cli)
                 tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], out);
             exit_status = worse(exit_status, tables[i]);
             if (tables[i] == ADH_EXIT_OK || (tables[i] == ADH_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS))
-                exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], &sres[i], status[i], out));
+                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], out));
         }
         if (cli_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);

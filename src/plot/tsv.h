@@ -8,20 +8,16 @@
 #include <stdio.h>
 
 #include "adhere/run.h"
-#include "scene/config.h"
+#include "plot/plot.h"
 
 /* The comment block each table starts with: material, sigma, gamma, grid. */
-void adh_tsv_preamble(FILE *f, const adh_config *cfg, const char *what);
+void adh_tsv_preamble(FILE *f, const adh_plot_setup *s, const char *what);
 
 /* Write profiles.tsv and contact.tsv at path (through a temporary name and
  * a rename). 0, or -1 with msg set. */
-int adh_tsv_profiles(const adh_config *cfg, const adh_run *run, const char *path,
+int adh_tsv_profiles(const adh_plot_setup *s, const adh_run *run, const char *path,
                      char *msg, size_t msglen);
-int adh_tsv_contact(const adh_config *cfg, const adh_run *run, const char *path,
+int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, const char *path,
                     char *msg, size_t msglen);
-
-/* Node radius r_n = (n - 1/2) dr of the run's grid (the profiles do not
- * carry it; it follows from cfg->nodes and the spacing). */
-double adh_tsv_radius(const adh_config *cfg, size_t n);
 
 #endif

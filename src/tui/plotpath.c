@@ -12,6 +12,7 @@
 #include "adhere/history.h"
 #include "adhere/protocol.h"
 #include "plot/outdir.h"
+#include "cli/plotsetup.h"
 #include "plot/plot.h"
 
 static int write_into(const adh_config *c, const adh_run *run, const char *dir, char *msg, size_t msglen);
@@ -143,7 +144,9 @@ static int write_into(const adh_config *c, const adh_run *run, const char *dir, 
      * is this path's */
     if (adh_outdir_clear(dir, msg, msglen) != 0)
         return -1;
-    int rc = adh_plots_write(c, run, NULL, dir, msg, msglen, NULL, 0);
+    adh_plot_setup ps;
+    cli_plot_setup(c, NULL, &ps);
+    int rc = adh_plots_write(&ps, run, NULL, dir, msg, msglen, NULL, 0);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");
     return rc == 0 ? 0 : -1;
