@@ -128,18 +128,17 @@ int adh_outdir_make(const char *dir, char *why, size_t n)
     return 0;
 }
 
-int adh_outdir_write(const char *path, adh_outdir_writer writer, const void *ctx, char *why, size_t whylen)
+int adh_outdir_write(const char *dir, const char *name, adh_outdir_writer writer, const void *ctx,
+                     char *why, size_t whylen)
 {
-    char tmp[PATH_MAX + 80];
+    char path[PATH_MAX + 64], tmp[PATH_MAX + 80];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     if (strlen(path) >= PATH_MAX) {
         snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(ENAMETOOLONG));
         return -1;
     }
     /* the temporary beside it, DIR/.NAME.PID.tmp (adh_outdir_owns knows it) */
-    const char *slash = strrchr(path, '/');
-    size_t dl = slash ? (size_t)(slash - path) + 1 : 0;
-    memcpy(tmp, path, dl);
-    snprintf(tmp + dl, sizeof tmp - dl, ".%s.%ld.tmp", path + dl, (long)getpid());
+    snprintf(tmp, sizeof tmp, "%s/.%s.%ld.tmp", dir, name, (long)getpid());
     FILE *f = fopen(tmp, "w");
     if (!f) {
         snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(errno));

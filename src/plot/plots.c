@@ -1020,7 +1020,7 @@ static void add_unwritten_figures(char *buf, size_t len, unsigned want, unsigned
 int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *reference,
                     const char *dir, char *msg, size_t msglen, char *unwritten, size_t ulen)
 {
-    char path[PATH_MAX + 32], why[1024], table_error[1024] = "";
+    char why[1024], table_error[1024] = "";
     if (msglen)
         msg[0] = '\0';
     if (unwritten && ulen)
@@ -1045,8 +1045,7 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
      * table that cannot be written (a full disk) does not stop the others. */
     char tables[64] = "";
     if (run->nprofiles > 0) {
-        snprintf(path, sizeof path, "%s/profiles.tsv", dir);
-        if (adh_tsv_profiles(s, run, path, why, sizeof why) != 0) {
+        if (adh_tsv_profiles(s, run, dir, why, sizeof why) != 0) {
             snprintf(table_error, sizeof table_error, "%s", why);
             add_name(unwritten, ulen, "profiles.tsv");
         } else {
@@ -1054,8 +1053,7 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
         }
     }
     if (s->figures & ADH_PLOT_CONTACT) {
-        snprintf(path, sizeof path, "%s/contact.tsv", dir);
-        if (adh_tsv_contact(s, run, path, why, sizeof why) != 0) {
+        if (adh_tsv_contact(s, run, dir, why, sizeof why) != 0) {
             if (!*table_error)
                 snprintf(table_error, sizeof table_error, "%s", why);
             add_name(unwritten, ulen, "contact.tsv");

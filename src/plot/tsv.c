@@ -56,11 +56,10 @@ static int profiles_table(FILE *f, const void *vctx)
     return 0;
 }
 
-int adh_tsv_profiles(const adh_plot_setup *s, const adh_run *run, const char *path,
-                     char *msg, size_t msglen)
+int adh_tsv_profiles(const adh_plot_setup *s, const adh_run *run, const char *dir, char *msg, size_t msglen)
 {
     table_ctx c = { s, run, NULL, NULL, NULL };
-    return adh_outdir_write(path, profiles_table, &c, msg, msglen);
+    return adh_outdir_write(dir, "profiles.tsv", profiles_table, &c, msg, msglen);
 }
 
 static int contact_table(FILE *f, const void *vctx)
@@ -87,8 +86,7 @@ static int contact_table(FILE *f, const void *vctx)
     return 0;
 }
 
-int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, const char *path,
-                    char *msg, size_t msglen)
+int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, const char *dir, char *msg, size_t msglen)
 {
     double *dadh0 = NULL, *dadt = NULL, *smooth = NULL;
     if (run->nrows) {
@@ -99,14 +97,14 @@ int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, const char *pat
             free(dadh0);
             free(dadt);
             free(smooth);
-            snprintf(msg, msglen, "cannot write %s: out of memory", path);
+            snprintf(msg, msglen, "cannot write %s/contact.tsv: out of memory", dir);
             return -1;
         }
         adh_speed_stepwise(run, s->drive_speed, dadh0, dadt);
         adh_speed_smoothed(run, s->drive_speed, s->dr, ADH_SPEED_CELLS, smooth);
     }
     table_ctx c = { s, run, dadh0, dadt, smooth };
-    int rc = adh_outdir_write(path, contact_table, &c, msg, msglen);
+    int rc = adh_outdir_write(dir, "contact.tsv", contact_table, &c, msg, msglen);
     free(dadh0);
     free(dadt);
     free(smooth);

@@ -53,7 +53,7 @@ typedef struct adh_plan {
     adh_plan_note skipped[ADH_PLAN_MAX_NOTES];
 } adh_plan;
 
-/* Works out the plan of cfg (assumed valid: cli_validate passed). */
+/* Works out the plan of cfg (assumed valid: cli_options_validate passed). */
 void adh_plan_make(const adh_config *cfg, adh_plan *plan);
 
 /* Prints it as "key: value" lines, one note per "stored:" / "skip:" line. */
