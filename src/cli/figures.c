@@ -250,11 +250,11 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     /* eq 24 as a curve of sigma: h* = (3 A sqrt(2R) / 8E)^(2/7), E from eq 17 */
     fprintf(f, "\n\n");
     const adh_material *m = &cfg->mat;
-    double gamma = adh_material_gamma(m);
     for (int k = 0; k <= 200; k++) {
+        adh_material at = *m;
         double s = smin * pow(smax / smin, k / 200.0);
-        double E = gamma * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / s;
-        fprintf(f, "%.17g\t%.17g\n", s, pow(3.0 * m->A * sqrt(2.0 * m->R) / (8.0 * E), 2.0 / 7.0));
+        at.E = adh_material_modulus_at_sigma(m, s);
+        fprintf(f, "%.17g\t%.17g\n", s, adh_jump_separation(&at));
     }
     if (data_done(fg, f, dat) < 0)
         return -1;

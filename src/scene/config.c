@@ -109,7 +109,7 @@ int adh_config_grid_check(const adh_config *c, char *why, size_t whylen)
         return -1;
     }
     adh_rings_spec s = adh_config_rings(c);
-    return adh_rings_spec_validate(&s, why, whylen);
+    return adh_rings_spec_validate(&s, why, whylen) == ADH_SUCCESS ? 0 : -1;
 }
 
 adh_grid *adh_config_grid_alloc(const adh_config *c)
@@ -155,12 +155,9 @@ void adh_config_sweep_run(const adh_config *c, size_t i, adh_config *run)
     case ADH_SWEEP_E:
         run->mat.E = v;
         break;
-    case ADH_SWEEP_SIGMA: {
-        /* eq 17 solved for E: sigma = gamma sqrt(R/z0^3) / E */
-        double gamma = adh_material_gamma(&c->mat);
-        run->mat.E = gamma * sqrt(c->mat.R / (c->mat.z0 * c->mat.z0 * c->mat.z0)) / v;
+    case ADH_SWEEP_SIGMA:
+        run->mat.E = adh_material_modulus_at_sigma(&c->mat, v);
         break;
-    }
     case ADH_SWEEP_EPS:
         run->relax.eps = v;
         break;
