@@ -12,6 +12,7 @@
 #include "cli/sweep.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
+#include "plot/outdir.h"
 #include "plot/png.h"
 #include "plot/plot.h"
 
@@ -39,10 +40,8 @@ static int fig_open(figure *fg, const adh_config *cfg, const char *dir, char *ms
         snprintf(msg, msglen, "%s", why);
         return -1;
     }
-    const char *tmp = getenv("TMPDIR");
-    snprintf(fg->tmpdir, sizeof fg->tmpdir, "%s/adhere-fig-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (!mkdtemp(fg->tmpdir)) {
-        snprintf(msg, msglen, "cannot make a temporary directory %s: %s", fg->tmpdir, strerror(errno));
+    if (adh_outdir_temp("adhere-fig", fg->tmpdir, sizeof fg->tmpdir, why, sizeof why) != 0) {
+        snprintf(msg, msglen, "%s", why);
         return -1;
     }
     snprintf(fg->log, sizeof fg->log, "%s/gnuplot-figures.log", dir);

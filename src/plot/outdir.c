@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -126,6 +127,18 @@ int adh_outdir_make(const char *dir, char *why, size_t n)
         return -1;
     }
     return 0;
+}
+
+int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t whylen)
+{
+    const char *tmp = getenv("TMPDIR");
+    snprintf(buf, len, "%s/%s-XXXXXX", tmp && *tmp ? tmp : "/tmp", name);
+    if (mkdtemp(buf))
+        return 0;
+    snprintf(why, whylen, "cannot make a temporary directory %.900s: %s", buf, strerror(errno));
+    if (len)
+        buf[0] = '\0';
+    return -1;
 }
 
 int adh_outdir_write(const char *dir, const char *name, adh_outdir_writer writer, const void *ctx,

@@ -17,6 +17,12 @@ int adh_outdir_owns(const char *name);
  * sweep's run-K, the TUI's plots) is made here. */
 int adh_outdir_make(const char *dir, char *why, size_t whylen);
 
+/* A new private directory $TMPDIR/NAME-XXXXXX (/tmp without TMPDIR) for
+ * gnuplot's data files, its path in buf: 0, or -1 with "cannot make a
+ * temporary directory PATH: reason" in why (buf then ""). The caller
+ * removes it. */
+int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t whylen);
+
 /* Writes dir/name atomically: writer fills a temporary beside it
  * (DIR/.NAME.PID.tmp), which is renamed to dir/name only when every byte
  * got out, so a reader never sees half a table and a full disk leaves no

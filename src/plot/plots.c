@@ -1081,15 +1081,11 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
     char log[PATH_MAX + 32];
     snprintf(log, sizeof log, "%s/gnuplot.log", dir);
     unlink(log);   /* each run's log holds only its own complaints */
-    const char *tmp = getenv("TMPDIR");
     if (adh_plot_style_file(s->style, pl.style, sizeof pl.style, why, sizeof why) < 0) {
         snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
     } else {
-        snprintf(pl.tmpdir, sizeof pl.tmpdir, "%s/adhere-plot-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-        if (!mkdtemp(pl.tmpdir)) {
-            snprintf(pl.error, sizeof pl.error, "cannot make a temporary directory %.900s: %s; no plots made",
-                     pl.tmpdir, strerror(errno));
-            pl.tmpdir[0] = '\0';
+        if (adh_outdir_temp("adhere-plot", pl.tmpdir, sizeof pl.tmpdir, why, sizeof why) != 0) {
+            snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
         } else if ((pl.gp = adh_gnuplot_open(log, why, sizeof why)) == NULL) {
             snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
         }
