@@ -244,7 +244,7 @@ int cli_batch_main(const cli_options *cli)
             char msg[1024] = "", missing[256] = "", fig[1024] = "", plots[2100] = "";
             cli_ready_phase("plot");
             adh_plot_setup ps;
-            cli_plot_setup(cfg, g, &ps);
+            cli_plotsetup_fill(cfg, g, &ps);
             int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
                                       sizeof missing);
             if (prc != 0) {

@@ -1,6 +1,6 @@
 #include "cli/plotsetup.h"
 
-void cli_plot_setup(const adh_config *cfg, const adh_grid *g, adh_plot_setup *s)
+void cli_plotsetup_fill(const adh_config *cfg, const adh_grid *g, adh_plot_setup *s)
 {
     *s = (adh_plot_setup){
         .mat = cfg->mat,

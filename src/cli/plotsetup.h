@@ -10,6 +10,6 @@
 /* Fills s from cfg and the run's grid g (NULL for rigid spheres, which have
  * none: the configuration's N and spacing then). s borrows cfg's strings
  * and g's radii: both must outlive its use. */
-void cli_plot_setup(const adh_config *cfg, const adh_grid *g, adh_plot_setup *s);
+void cli_plotsetup_fill(const adh_config *cfg, const adh_grid *g, adh_plot_setup *s);
 
 #endif

@@ -274,7 +274,7 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
      * should not draw what nobody wants */
     if (rcfg.plots & ADH_PLOT_ALL) {
         adh_plot_setup ps;
-        cli_plot_setup(&rcfg, g, &ps);
+        cli_plotsetup_fill(&rcfg, g, &ps);
         int prc = adh_plots_write(&ps, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
         if (prc != 0) {
             fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);

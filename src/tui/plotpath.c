@@ -145,7 +145,7 @@ static int write_into(const adh_config *c, const adh_run *run, const char *dir, 
     if (adh_outdir_clear(dir, msg, msglen) != 0)
         return -1;
     adh_plot_setup ps;
-    cli_plot_setup(c, NULL, &ps);
+    cli_plotsetup_fill(c, NULL, &ps);
     int rc = adh_plots_write(&ps, run, NULL, dir, msg, msglen, NULL, 0);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");
