@@ -253,20 +253,11 @@ int cli_batch_main(const cli_options *cli)
             }
             cli_tables_names_add(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
-            if (!cli_interrupt_signal() && cli_figures_run(cfg, &run, out, fig, sizeof fig) != 0) {
+            if (!cli_interrupt_signal() &&
+                cli_figures_run(cfg, &run, out, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", fig);
                 if (status == CLI_EXIT_OK)
                     status = CLI_EXIT_PLOT;
-                /* the ones asked for and not there (the directory was
-                 * cleared of earlier runs' files before this run) */
-                static const struct { unsigned bit; const char *name; } figs[] = {
-                    { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
-                for (size_t i = 0; i < 2; i++) {
-                    char p[PATH_MAX + 32];
-                    snprintf(p, sizeof p, "%s/%s", out, figs[i].name);
-                    if ((cfg->plots & figs[i].bit) && access(p, F_OK) != 0)
-                        cli_tables_names_add(unwritten, sizeof unwritten, figs[i].name);
-                }
             }
             if (status == CLI_EXIT_OK && !cfg->quiet) {
                 char tables_[128];

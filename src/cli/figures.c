@@ -10,6 +10,7 @@
 
 #include "adhere/models.h"
 #include "cli/sweep.h"
+#include "cli/tables.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
 #include "plot/outdir.h"
@@ -205,15 +206,31 @@ static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
     return fig_end(fg, "bulge.png", tmp_png);
 }
 
-int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen)
+/* The figures cfg asked for and dir lacks, onto the list. */
+static void add_missing(const adh_config *cfg, const char *dir, char *list, size_t len)
+{
+    static const struct { unsigned bit; const char *name; } figs[] = {
+        { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
+    for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++) {
+        char p[PATH_MAX + 64];
+        snprintf(p, sizeof p, "%.4000s/%s", dir, figs[i].name);
+        if ((cfg->plots & figs[i].bit) && access(p, F_OK) != 0)
+            cli_tables_names_add(list, len, figs[i].name);
+    }
+}
+
+int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen,
+                    char *unwritten, size_t ulen)
 {
     if (msglen)
         msg[0] = '\0';
     if (!cfg->plot || !(cfg->plots & (ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
         return 0;
     figure fg;
-    if (fig_open(&fg, cfg, dir, msg, msglen) != 0)
+    if (fig_open(&fg, cfg, dir, msg, msglen) != 0) {
+        add_missing(cfg, dir, unwritten, ulen);
         return -1;
+    }
     int rc = 0;
     if ((cfg->plots & ADH_PLOT_PRECONTACT) && precontact(&fg, cfg, run) != 0)
         rc = -1;
@@ -225,6 +242,8 @@ int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, 
         snprintf(msg, msglen, "%s%s%s", cfg->plots & ADH_PLOT_PRECONTACT ? "precontact.png" : "",
                  (cfg->plots & ADH_PLOT_PRECONTACT) && (cfg->plots & ADH_PLOT_BULGE) ? ", " : "",
                  cfg->plots & ADH_PLOT_BULGE ? "bulge.png" : "");
+    else
+        add_missing(cfg, dir, unwritten, ulen);
     return rc;
 }
 

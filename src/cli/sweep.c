@@ -281,18 +281,9 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
             status = prc == 2 ? CLI_EXIT_USAGE : CLI_EXIT_PLOT;
         }
     }
-    if (cli_figures_run(&rcfg, run, dir, msg, sizeof msg) != 0) {
+    if (cli_figures_run(&rcfg, run, dir, msg, sizeof msg, missing, sizeof missing) != 0) {
         fprintf(stderr, "adhere: run %zu: %s\n", i + 1, msg);
         status = status ? status : CLI_EXIT_PLOT;
-        /* the ones asked for and not there (run-K was cleared first) */
-        static const struct { unsigned bit; const char *name; } figs[] = {
-            { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
-        for (size_t k = 0; k < 2; k++) {
-            char p[PATH_MAX + 64];
-            snprintf(p, sizeof p, "%.4000s/%s", dir, figs[k].name);
-            if ((rcfg.plots & figs[k].bit) && access(p, F_OK) != 0)
-                cli_tables_names_add(missing, sizeof missing, figs[k].name);
-        }
     }
     if (*missing) {
         int trc = run_tables(cfg, i, run, sres, rc, out, 0, missing);
