@@ -60,9 +60,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
     }
     /* the loading row at the deepest turn: the dwell comes next */
     if (ctx->cfg->proto.dwell && o->path == 0 && o->branch > 0 && ctx->cfg->mode == ADH_MODE_RELAX) {
-        double deepest = INFINITY;
-        for (size_t i = 0; i < ctx->cfg->proto.nturns; i++)
-            deepest = fmin(deepest, ctx->cfg->proto.turns[i]);
+        double deepest = adh_protocol_deepest_turn(&ctx->cfg->proto);
         if (fabs(o->h0 - deepest) < 1e-6 * ctx->cfg->proto.step)
             cli_ready_phase("dwell");
     }

@@ -1,7 +1,5 @@
 #include "cli/static.h"
 
-#include <math.h>
-
 #include "scene/plan.h"
 
 int cli_static_run(const adh_config *cfg, const adh_grid *g, const adh_kernel *k,
@@ -10,8 +8,8 @@ int cli_static_run(const adh_config *cfg, const adh_grid *g, const adh_kernel *k
     adh_static_settings s = adh_static_settings_default();
     /* The same start as the relaxation run, so the two curves share an axis. */
     s.h0_start = adh_plan_start(cfg);
-    for (size_t i = 0; i < cfg->proto.nturns; i++)
-        s.h0_end = i == 0 ? cfg->proto.turns[0] : fmin(s.h0_end, cfg->proto.turns[i]);
+    if (cfg->proto.nturns)
+        s.h0_end = adh_protocol_deepest_turn(&cfg->proto);
     s.cancel = cfg->relax.cancel;   /* the one cancel flag of the run */
     return adh_static_run(g, k, &cfg->mat, &s, cb, ctx, run, res);
 }

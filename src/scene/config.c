@@ -53,9 +53,7 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
             soft = run;
         }
     }
-    double deepest = 0;
-    for (size_t i = 0; i < cfg->proto.nturns; i++)
-        deepest = fmin(deepest, cfg->proto.turns[i]);
+    double deepest = fmin(0.0, adh_protocol_deepest_turn(&cfg->proto));
     adh_grid_choice gc;
     /* graded rings need the ring kernel: not when the paper's was asked for */
     int graded_ok = !(cfg->kernel_given && cfg->kernel == ADH_KERNEL_PAPER);
@@ -92,9 +90,7 @@ adh_rings_spec adh_config_rings(const adh_config *c)
     if (isnan(s.fine)) {
         /* the contact expected at the deepest position (with no turn, at
          * h0 = 0), and a quarter more: the contact line sweeps fine rings only */
-        double lowest = c->mat.z0;
-        for (size_t i = 0; i < c->proto.nturns; i++)
-            lowest = fmin(lowest, c->proto.turns[i]);
+        double lowest = fmin(c->mat.z0, adh_protocol_deepest_turn(&c->proto));
         s.fine = fmin(s.rmax, 1.25 * adh_rings_contact_estimate(&c->mat, fmin(lowest, 0.0)));
     }
     return s;

@@ -32,18 +32,10 @@ double adh_plan_start(const adh_config *cfg)
     return isnan(cfg->proto.start) ? adh_protocol_auto_start(&cfg->mat, cfg->proto.step) : cfg->proto.start;
 }
 
-static double deepest_turn(const adh_config *cfg)
-{
-    double t = INFINITY;
-    for (size_t i = 0; i < cfg->proto.nturns; i++)
-        t = fmin(t, cfg->proto.turns[i]);
-    return t;
-}
-
 double adh_plan_rigid_end(const adh_config *cfg)
 {
     double floor_h = 0.7 * cfg->mat.z0;
-    return cfg->proto.nturns ? fmax(deepest_turn(cfg), floor_h) : floor_h;
+    return cfg->proto.nturns ? fmax(adh_protocol_deepest_turn(&cfg->proto), floor_h) : floor_h;
 }
 
 int adh_plan_jobs(const adh_config *cfg)
@@ -93,7 +85,7 @@ static void plan_run(const adh_config *rc, const adh_plan *p, adh_plan_run *r)
         r->unloading_steps = 0;
         return;
     }
-    r->end = p->stop_at_contact ? jump_position(&rc->mat) : deepest_turn(rc);
+    r->end = p->stop_at_contact ? jump_position(&rc->mat) : adh_protocol_deepest_turn(&rc->proto);
     r->loading_steps = 1 + ceil_steps(r->start - r->end, step);
     /* a turn off the step grid adds its own row */
     for (size_t i = 0; i < rc->proto.nturns; i++)
@@ -359,9 +351,7 @@ size_t adh_plan_default_profiles(const adh_material *mat, const adh_protocol_set
     double start = isnan(ps->start) ? adh_protocol_auto_start(mat, step) : ps->start;
     adh_derived d;
     adh_material_derive(mat, &d);
-    double lo = d.h_star;
-    for (size_t i = 0; i < ps->nturns; i++)
-        lo = i == 0 || ps->turns[i] < lo ? ps->turns[i] : lo;
+    double lo = ps->nturns ? adh_protocol_deepest_turn(ps) : d.h_star;
     double hi = 0.5 * start;
     if (!(hi > lo))
         hi = start;
