@@ -36,5 +36,7 @@ void adh_material_derive(const adh_material *m, adh_derived *d);
  * every module takes them from here. */
 double adh_material_gamma(const adh_material *m);
 double adh_material_sigma(const adh_material *m);
+/* Eq 17 solved for E: the modulus at which m has Tabor's sigma, Pa. */
+double adh_material_modulus_at_sigma(const adh_material *m, double sigma);
 
 #endif

@@ -27,6 +27,9 @@ typedef struct adh_protocol_settings {
 
 adh_protocol_settings adh_protocol_settings_default(void);
 
+/* The lowest of the turns, m; INFINITY when there is none. */
+double adh_protocol_deepest_turn(const adh_protocol_settings *ps);
+
 /* The automatic start: where the bulge (eq 23) is below 1 % of z0 and at
  * least 4 jump separations (eq 24) out, rounded up to a whole number of steps. */
 double adh_protocol_auto_start(const adh_material *m, double step);

@@ -57,4 +57,8 @@ const adh_turn_result *adh_run_main_turn(const adh_run *run);
  * without unloading branches is not asked to separate: 1. */
 int adh_run_separated(const adh_run *run, char *why, size_t whylen);
 
+/* The row index that follows / precedes row i on the same path, or -1. */
+long adh_run_next_on_path(const adh_run *run, size_t i);
+long adh_run_prev_on_path(const adh_run *run, size_t i);
+
 #endif

@@ -19,12 +19,13 @@
 #include "cli/ready.h"
 #include "cli/progress.h"
 #include "cli/rigid.h"
-#include "cli/statics.h"
+#include "cli/static.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
 #include "plot/rows.h"
 #include "plot/outdir.h"
 #include "adhere/units.h"
+#include "cli/plotsetup.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
 
@@ -60,9 +61,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
     }
     /* the loading row at the deepest turn: the dwell comes next */
     if (ctx->cfg->proto.dwell && o->path == 0 && o->branch > 0 && ctx->cfg->mode == ADH_MODE_RELAX) {
-        double deepest = INFINITY;
-        for (size_t i = 0; i < ctx->cfg->proto.nturns; i++)
-            deepest = fmin(deepest, ctx->cfg->proto.turns[i]);
+        double deepest = adh_protocol_deepest_turn(&ctx->cfg->proto);
         if (fabs(o->h0 - deepest) < 1e-6 * ctx->cfg->proto.step)
             cli_ready_phase("dwell");
     }
@@ -109,7 +108,7 @@ int cli_batch_main(const cli_options *cli)
     /* a directory never mixes two runs: the earlier run's files go first */
     if (out && (adh_outdir_make(out, why, sizeof why) != 0 || adh_outdir_clear(out, why, sizeof why) != 0)) {
         fprintf(stderr, "adhere: %s\n", why);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     if (cfg->sweep.kind != ADH_SWEEP_NONE)
         return cli_sweep_main(cli);
@@ -139,7 +138,7 @@ int cli_batch_main(const cli_options *cli)
             fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
         cli_interrupt_release();
         adh_grid_free(g);
-        return kst == ADH_EINTR ? cli_interrupt_exit() : ADH_EXIT_SOLVER;
+        return kst == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
     }
 
     adh_plan plan;
@@ -173,7 +172,7 @@ int cli_batch_main(const cli_options *cli)
     if (ctx.progress)
         fprintf(stderr, "\r%*s\r", 100, "");
 
-    int status = ADH_EXIT_OK;
+    int status = CLI_EXIT_OK;
     char note[512] = "";
     if (run.interrupted || ref.interrupted) {
         if (ref.interrupted)
@@ -184,34 +183,34 @@ int cli_batch_main(const cli_options *cli)
         status = cli_interrupt_exit();
     } else if (rc != ADH_SUCCESS) {
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run.nrows, adh_strerror(rc));
-        status = ADH_EXIT_SOLVER;
+        status = CLI_EXIT_SOLVER;
     }
     if (note[0])
         fprintf(stderr, "adhere: %s\n", note);
     char sep[512];
-    if (status == ADH_EXIT_OK && !adh_run_separated(&run, sep, sizeof sep))
+    if (status == CLI_EXIT_OK && !adh_run_separated(&run, sep, sizeof sep))
         fprintf(stderr, "adhere: incomplete: %s (summary.tsv: complete 0)\n", sep);
     /* Steps at the cap change what the numbers mean: said even under -q, and
      * the run's status, unless --allow-unconverged asked for them. */
-    int unconverged = run.unconverged && status == ADH_EXIT_OK;
+    int unconverged = run.unconverged && status == CLI_EXIT_OK;
     if (run.unconverged && (!cfg->allow_unconverged || !cfg->quiet))
         fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0%s\n",
                 run.unconverged, run.nrows, cfg->relax.max_iter, cfg->relax.eps,
                 cfg->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
     if (unconverged && !cfg->allow_unconverged)
-        status = ADH_EXIT_SOLVER;
+        status = CLI_EXIT_SOLVER;
 
-    char keynames[2 * ADH_STATIC_KEYS][32];
-    cli_summary_extra extra[2 * ADH_STATIC_KEYS];
+    char keynames[2 * CLI_TABLES_STATIC_KEYS][32];
+    cli_tables_extra extra[2 * CLI_TABLES_STATIC_KEYS];
     size_t nextra = 0;
     if (cfg->mode == ADH_MODE_STATIC)
-        nextra += cli_static_summary_keys(&sres, "", keynames, extra);
+        nextra += cli_tables_static_keys(&sres, "", keynames, extra);
     if (want_ref)
-        nextra += cli_static_summary_keys(&rres, "static_", keynames + nextra, extra + nextra);
+        nextra += cli_tables_static_keys(&rres, "static_", keynames + nextra, extra + nextra);
     /* A force table streamed to a full disk or a closed pipe is lost: say so. */
     if (ctx.stream && (fflush(ctx.stream) != 0 || ferror(ctx.stream))) {
         fprintf(stderr, "adhere: cannot write the force table to standard output: %s\n", strerror(errno));
-        status = ADH_EXIT_USAGE;
+        status = CLI_EXIT_USAGE;
     }
     int partial = note[0] != '\0';
     cli_tables tables = { cfg, &run, extra, nextra, partial, note, NULL, ref.interrupted ? "interrupted" : NULL };
@@ -223,18 +222,18 @@ int cli_batch_main(const cli_options *cli)
          * summary.tsv comes last, naming what was not written: a summary
          * that says success speaks for the whole directory. */
         char unwritten[512] = "";
-        struct { const char *name; int want; cli_table_writer w; const cli_tables *t; } tab[] = {
-            { "force.tsv", 1, cli_write_force, &tables },
-            { "turns.tsv", run.nturns > 0, cli_write_turns, &tables },
-            { "static.tsv", want_ref, cli_write_force, &ref_tables },
+        struct { const char *name; int want; adh_outdir_writer w; const cli_tables *t; } tab[] = {
+            { "force.tsv", 1, cli_tables_force, &tables },
+            { "turns.tsv", run.nturns > 0, cli_tables_turns, &tables },
+            { "static.tsv", want_ref, cli_tables_force, &ref_tables },
         };
         for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
             if (!tab[i].want)
                 continue;
-            if (cli_write_atomic(out, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
+            if (adh_outdir_write(out, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
-                status = ADH_EXIT_USAGE;
-                cli_names_add(unwritten, sizeof unwritten, tab[i].name);
+                status = CLI_EXIT_USAGE;
+                cli_tables_names_add(unwritten, sizeof unwritten, tab[i].name);
             }
         }
         if (!partial) {
@@ -243,30 +242,23 @@ int cli_batch_main(const cli_options *cli)
              * temporaries go, and the exit says interrupted. */
             char msg[1024] = "", missing[256] = "", fig[1024] = "", plots[2100] = "";
             cli_ready_phase("plot");
-            int prc = adh_plots_write(cfg, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
+            adh_plot_setup ps;
+            cli_plotsetup_fill(cfg, g, &ps);
+            int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
                                       sizeof missing);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
-                status = prc == 2 ? ADH_EXIT_USAGE : status == ADH_EXIT_OK ? ADH_EXIT_PLOT : status;
+                status = prc == 2 ? CLI_EXIT_USAGE : status == CLI_EXIT_OK ? CLI_EXIT_PLOT : status;
             }
-            cli_names_add(unwritten, sizeof unwritten, missing);
+            cli_tables_names_add(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
-            if (!cli_interrupt_signal() && cli_figures_run(cfg, &run, out, fig, sizeof fig) != 0) {
+            if (!cli_interrupt_signal() &&
+                cli_figures_run(cfg, &run, out, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", fig);
-                if (status == ADH_EXIT_OK)
-                    status = ADH_EXIT_PLOT;
-                /* the ones asked for and not there (the directory was
-                 * cleared of earlier runs' files before this run) */
-                static const struct { unsigned bit; const char *name; } figs[] = {
-                    { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
-                for (size_t i = 0; i < 2; i++) {
-                    char p[PATH_MAX + 32];
-                    snprintf(p, sizeof p, "%s/%s", out, figs[i].name);
-                    if ((cfg->plots & figs[i].bit) && access(p, F_OK) != 0)
-                        cli_names_add(unwritten, sizeof unwritten, figs[i].name);
-                }
+                if (status == CLI_EXIT_OK)
+                    status = CLI_EXIT_PLOT;
             }
-            if (status == ADH_EXIT_OK && !cfg->quiet) {
+            if (status == CLI_EXIT_OK && !cfg->quiet) {
                 char tables_[128];
                 snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s", run.nturns ? ", turns.tsv" : "",
                          want_ref ? ", static.tsv" : "");
@@ -281,11 +273,11 @@ int cli_batch_main(const cli_options *cli)
             }
         }
         tables.unwritten = unwritten;
-        if (cli_write_atomic(out, "summary.tsv", cli_write_summary, &tables, why, sizeof why) != 0) {
+        if (adh_outdir_write(out, "summary.tsv", cli_tables_summary, &tables, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
-            status = ADH_EXIT_USAGE;
+            status = CLI_EXIT_USAGE;
         }
-    } else if (status == ADH_EXIT_OK && !cfg->quiet) {
+    } else if (status == CLI_EXIT_OK && !cfg->quiet) {
         closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, NULL, "", "");
     }
     cli_interrupt_release();

@@ -7,11 +7,11 @@
 
 /* Exit statuses shared by every driver. */
 enum {
-    ADH_EXIT_OK = 0,
-    ADH_EXIT_SOLVER = 1,     /* the solver failed (NaN, grid overflow): partial tables */
-    ADH_EXIT_USAGE = 2,      /* bad input: nothing was run or written */
-    ADH_EXIT_PLOT = 3,       /* tables written, plots not */
-    ADH_EXIT_INTERRUPTED = 130
+    CLI_EXIT_OK = 0,
+    CLI_EXIT_SOLVER = 1,     /* the solver failed (NaN, grid overflow): partial tables */
+    CLI_EXIT_USAGE = 2,      /* bad input: nothing was run or written */
+    CLI_EXIT_PLOT = 3,       /* tables written, plots not */
+    CLI_EXIT_INTERRUPTED = 130
 };
 
 int cli_batch_main(const cli_options *cli);

@@ -20,7 +20,7 @@
 #include "cli/interrupt.h"
 #include "cli/ready.h"
 #include "cli/progress.h"
-#include "cli/statics.h"
+#include "cli/static.h"
 #include "cli/tables.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
@@ -202,7 +202,7 @@ static int write_cost(FILE *f, const void *ctx)
 static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len)
 {
     char cfg_style[PATH_MAX];
-    if (adh_plot_style_file(job->cfg, cfg_style, sizeof cfg_style, msg, len) < 0)
+    if (adh_plot_style_file(job->cfg->gnuplot_style, cfg_style, sizeof cfg_style, msg, len) < 0)
         return 2;
     char log[PATH_MAX + 32], data[PATH_MAX + 32], png[PATH_MAX + 32], tmp[PATH_MAX + 48];
     snprintf(log, sizeof log, "%s/gnuplot.log", dir);
@@ -289,17 +289,17 @@ int cli_cost_main(const cli_options *cli)
     size_t nodes[MAX_NODES], neps, nnodes;
     if (parse_lists(cli, eps, &neps, nodes, &nnodes, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     if (cfg->mode != ADH_MODE_RELAX || cfg->proto.nturns == 0) {
         fprintf(stderr, "adhere: --cost measures the relaxation's load/unload cycle: it needs mode relax and a turning point\n");
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     size_t n = neps * nnodes * 2;
     cost_run *runs = calloc(n, sizeof *runs);
     if (!runs) {
         fprintf(stderr, "adhere: out of memory\n");
-        return ADH_EXIT_SOLVER;
+        return CLI_EXIT_SOLVER;
     }
     size_t m = 0;
     for (size_t a = 0; a < nnodes; a++)
@@ -310,10 +310,10 @@ int cli_cost_main(const cli_options *cli)
                 c.nodes = nodes[a];
                 c.relax.eps = eps[e];
                 c.force = 1; /* coarse grids are what the report measures */
-                if (cli_validate(&c, why, sizeof why) != 0) {
+                if (cli_options_validate(&c, why, sizeof why) != 0) {
                     fprintf(stderr, "adhere: --cost: N = %zu, eps = %g m: %s\n", nodes[a], eps[e], why);
                     free(runs);
-                    return ADH_EXIT_USAGE;
+                    return CLI_EXIT_USAGE;
                 }
                 m++;
             }
@@ -321,12 +321,12 @@ int cli_cost_main(const cli_options *cli)
     if (out && adh_outdir_make(out, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         free(runs);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     if (out && adh_outdir_clear(out, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         free(runs);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     qsort(runs, n, sizeof *runs, by_cost);
 
@@ -440,11 +440,11 @@ int cli_cost_main(const cli_options *cli)
                : r->status == ADH_SUCCESS ? (r->unconverged ? "  (some steps at the cap)" : "")
                                           : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
     }
-    int status = cli_interrupt_signal() ? cli_interrupt_exit() : ADH_EXIT_OK;
+    int status = cli_interrupt_signal() ? cli_interrupt_exit() : CLI_EXIT_OK;
     if (out) {
-        if (cli_write_atomic(out, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
+        if (adh_outdir_write(out, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
-            status = ADH_EXIT_USAGE;
+            status = CLI_EXIT_USAGE;
         } else if (cfg->plot && !cli_interrupt_signal()) {
             int prc = plot_cost(&job, out, why, sizeof why);
             if (prc) {
@@ -453,7 +453,7 @@ int cli_cost_main(const cli_options *cli)
             }
         }
     }
-    if (status == ADH_EXIT_OK && !cfg->quiet) {
+    if (status == CLI_EXIT_OK && !cfg->quiet) {
         char t[32];
         cli_progress_duration(adh_clock_seconds() - job.t0, t, sizeof t);
         if (out)

@@ -10,8 +10,10 @@
 
 #include "adhere/models.h"
 #include "cli/sweep.h"
+#include "cli/tables.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
+#include "plot/outdir.h"
 #include "plot/png.h"
 #include "plot/plot.h"
 
@@ -35,14 +37,12 @@ static int fig_open(figure *fg, const adh_config *cfg, const char *dir, char *ms
     fg->msg = msg;
     fg->msglen = msglen;
     char why[1024];
-    if (adh_plot_style_file(cfg, fg->style, sizeof fg->style, why, sizeof why) < 0) {
+    if (adh_plot_style_file(cfg->gnuplot_style, fg->style, sizeof fg->style, why, sizeof why) < 0) {
         snprintf(msg, msglen, "%s", why);
         return -1;
     }
-    const char *tmp = getenv("TMPDIR");
-    snprintf(fg->tmpdir, sizeof fg->tmpdir, "%s/adhere-fig-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (!mkdtemp(fg->tmpdir)) {
-        snprintf(msg, msglen, "cannot make a temporary directory %s: %s", fg->tmpdir, strerror(errno));
+    if (adh_outdir_temp("adhere-fig", fg->tmpdir, sizeof fg->tmpdir, why, sizeof why) != 0) {
+        snprintf(msg, msglen, "%s", why);
         return -1;
     }
     snprintf(fg->log, sizeof fg->log, "%s/gnuplot-figures.log", dir);
@@ -206,15 +206,31 @@ static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
     return fig_end(fg, "bulge.png", tmp_png);
 }
 
-int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen)
+/* The figures cfg asked for and dir lacks, onto the list. */
+static void add_missing(const adh_config *cfg, const char *dir, char *list, size_t len)
+{
+    static const struct { unsigned bit; const char *name; } figs[] = {
+        { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
+    for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++) {
+        char p[PATH_MAX + 64];
+        snprintf(p, sizeof p, "%.4000s/%s", dir, figs[i].name);
+        if ((cfg->plots & figs[i].bit) && access(p, F_OK) != 0)
+            cli_tables_names_add(list, len, figs[i].name);
+    }
+}
+
+int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen,
+                    char *unwritten, size_t ulen)
 {
     if (msglen)
         msg[0] = '\0';
     if (!cfg->plot || !(cfg->plots & (ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
         return 0;
     figure fg;
-    if (fig_open(&fg, cfg, dir, msg, msglen) != 0)
+    if (fig_open(&fg, cfg, dir, msg, msglen) != 0) {
+        add_missing(cfg, dir, unwritten, ulen);
         return -1;
+    }
     int rc = 0;
     if ((cfg->plots & ADH_PLOT_PRECONTACT) && precontact(&fg, cfg, run) != 0)
         rc = -1;
@@ -226,6 +242,8 @@ int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, 
         snprintf(msg, msglen, "%s%s%s", cfg->plots & ADH_PLOT_PRECONTACT ? "precontact.png" : "",
                  (cfg->plots & ADH_PLOT_PRECONTACT) && (cfg->plots & ADH_PLOT_BULGE) ? ", " : "",
                  cfg->plots & ADH_PLOT_BULGE ? "bulge.png" : "");
+    else
+        add_missing(cfg, dir, unwritten, ulen);
     return rc;
 }
 
@@ -250,11 +268,11 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     /* eq 24 as a curve of sigma: h* = (3 A sqrt(2R) / 8E)^(2/7), E from eq 17 */
     fprintf(f, "\n\n");
     const adh_material *m = &cfg->mat;
-    double gamma = adh_material_gamma(m);
     for (int k = 0; k <= 200; k++) {
+        adh_material at = *m;
         double s = smin * pow(smax / smin, k / 200.0);
-        double E = gamma * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / s;
-        fprintf(f, "%.17g\t%.17g\n", s, pow(3.0 * m->A * sqrt(2.0 * m->R) / (8.0 * E), 2.0 / 7.0));
+        at.E = adh_material_modulus_at_sigma(m, s);
+        fprintf(f, "%.17g\t%.17g\n", s, adh_jump_separation(&at));
     }
     if (data_done(fg, f, dat) < 0)
         return -1;

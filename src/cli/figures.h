@@ -12,8 +12,11 @@
 
 /* precontact.png and bulge.png in dir when cfg->plots asks for them. 0 (also
  * when none is asked or there is nothing to draw: msg says so), or -1 with
- * msg when gnuplot is missing or fails. */
-int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen);
+ * msg when gnuplot is missing or fails; then the names of those asked for
+ * and not in dir (it was cleared of earlier runs' files) are added to the
+ * comma-separated list unwritten. */
+int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen,
+                    char *unwritten, size_t ulen);
 
 /* The sweep's combined figure (cfg->sweep.plot) from runs[0..n) in dir.
  * 0, or -1 with msg. */

@@ -8,7 +8,6 @@
 #include "cli/cost.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
-#include "plot/plot.h"
 #include "scene/config.h"
 #include "scene/measured.h"
 #include "scene/plan.h"
@@ -24,9 +23,9 @@ static int stdout_done(void)
 {
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fprintf(stderr, "adhere: cannot write to standard output: %s\n", strerror(errno));
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
-    return ADH_EXIT_OK;
+    return CLI_EXIT_OK;
 }
 
 int main(int argc, char **argv)
@@ -39,18 +38,18 @@ int main(int argc, char **argv)
     if (openblas_set_num_threads)
         openblas_set_num_threads(1);
     char why[1024];
-    if (cli_parse(argc, argv, &cli, why, sizeof why) != 0) {
+    if (cli_options_parse(argc, argv, &cli, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     switch (cli.action) {
-    case ADH_ACT_HELP:
-        cli_usage(stdout);
+    case CLI_ACT_HELP:
+        cli_options_usage(stdout);
         return stdout_done();
-    case ADH_ACT_VERSION:
+    case CLI_ACT_VERSION:
         printf("adhere %s\n", ADH_VERSION);
         return stdout_done();
-    case ADH_ACT_LIST_KEYS:
+    case CLI_ACT_LIST_KEYS:
         tui_print_keys(stdout);
         return stdout_done();
     default:
@@ -59,16 +58,16 @@ int main(int argc, char **argv)
     /* A profile plot with no positions asked gets a spread of them, placed on
      * the drive grid so every one is really stored (plan and run agree). */
     if ((cli.cfg.plots & ADH_PLOT_PROFILE) && cli.cfg.proto.nprofiles == 0 && cli.cfg.mode == ADH_MODE_RELAX)
-        cli.cfg.proto.nprofiles = adh_plot_default_profiles(&cli.cfg, cli.cfg.proto.profiles, 6);
+        cli.cfg.proto.nprofiles = adh_plan_default_profiles(&cli.cfg.mat, &cli.cfg.proto, cli.cfg.proto.profiles, 6);
     /* No grid given: the one the contact's edge needs, or a refusal. */
-    if (cli.action != ADH_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why) != 0) {
+    if (cli.action != CLI_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     /* --cost replaces N and eps and checks each of its runs itself. */
-    if (cli.action != ADH_ACT_COST && cli_validate(&cli.cfg, why, sizeof why) != 0) {
+    if (cli.action != CLI_ACT_COST && cli_options_validate(&cli.cfg, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     /* The solvers poll the interrupt flag through their cancel hook: a
      * signal is heard inside a step, not only between steps. */
@@ -78,20 +77,20 @@ int main(int argc, char **argv)
     if (cli.cfg.data[0]) {
         if (adh_measured_load(cli.cfg.data, &measured, why, sizeof why) != 0) {
             fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
-            return ADH_EXIT_USAGE;
+            return CLI_EXIT_USAGE;
         }
         cli.cfg.measured = &measured;
     }
     switch (cli.action) {
-    case ADH_ACT_BATCH:
+    case CLI_ACT_BATCH:
         return cli_batch_main(&cli);
-    case ADH_ACT_PLAN: {
+    case CLI_ACT_PLAN: {
         adh_plan plan;
         adh_plan_make(&cli.cfg, &plan);
         adh_plan_print(stdout, &cli.cfg, &plan);
         return stdout_done();
     }
-    case ADH_ACT_COST:
+    case CLI_ACT_COST:
         return cli_cost_main(&cli);
     default:
         return tui_main(&cli.cfg);

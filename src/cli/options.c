@@ -79,7 +79,7 @@ static const option_doc options[] = {
 };
 #define NOPTIONS (sizeof options / sizeof options[0])
 
-void cli_usage(FILE *out)
+void cli_options_usage(FILE *out)
 {
     fprintf(out, "usage: adhere [OPTIONS] [SCENE]\n"
                  "Two elastic spheres with a Lennard-Jones surface force (Attard 2000).\n"
@@ -310,19 +310,19 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
             return 2;
         }
         snprintf(c == OPT_COST_EPS ? cli->cost_eps : cli->cost_nodes, 256, "%s", arg);
-        cli->action = ADH_ACT_COST;
+        cli->action = CLI_ACT_COST;
         return 0;
     case OPT_NO_CLOCK: cfg->no_clock = 1; return 0;
     case OPT_NO_PLOT: cfg->plot = 0; return 0;
     case 'q': cfg->quiet = 1; return 0;
     case OPT_ALLOW_UNCONVERGED: cfg->allow_unconverged = 1; return 0;
     case OPT_FORCE: cfg->force = 1; return 0;
-    case 'b': if (cli->action == ADH_ACT_TUI) cli->action = ADH_ACT_BATCH; return 0;
-    case OPT_PLAN: cli->action = ADH_ACT_PLAN; return 0;
-    case OPT_COST: cli->action = ADH_ACT_COST; return 0;
-    case OPT_LIST_KEYS: cli->action = ADH_ACT_LIST_KEYS; return 0;
-    case 'h': cli->action = ADH_ACT_HELP; return 0;
-    case 'V': cli->action = ADH_ACT_VERSION; return 0;
+    case 'b': if (cli->action == CLI_ACT_TUI) cli->action = CLI_ACT_BATCH; return 0;
+    case OPT_PLAN: cli->action = CLI_ACT_PLAN; return 0;
+    case OPT_COST: cli->action = CLI_ACT_COST; return 0;
+    case OPT_LIST_KEYS: cli->action = CLI_ACT_LIST_KEYS; return 0;
+    case 'h': cli->action = CLI_ACT_HELP; return 0;
+    case 'V': cli->action = CLI_ACT_VERSION; return 0;
     }
     snprintf(why, n, "internal: option %d has no handler", c);
     return 2;
@@ -397,7 +397,7 @@ static int split_unit_hint(int argc, char **orig, const char *arg, char *why, si
     return 1;
 }
 
-int cli_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
+int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
 {
     struct option longopts[NOPTIONS + 1];
     char shortopts[3 * NOPTIONS + 2] = ":";
@@ -500,7 +500,7 @@ int cli_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
                  ? "in static mode the run is the static curve itself" : "rigid spheres have no elastic curve to compare");
         return 2;
     }
-    if (reference && cli->action != ADH_ACT_BATCH && cli->action != ADH_ACT_PLAN) {
+    if (reference && cli->action != CLI_ACT_BATCH && cli->action != CLI_ACT_PLAN) {
         snprintf(why, whylen, "--reference=static is drawn by --batch runs only");
         return 2;
     }
@@ -510,7 +510,7 @@ int cli_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
 static int validate_run(const adh_config *cfg, char *why, size_t whylen);
 
 /* A sweep is valid when every one of its runs is (each sets its own E or eps). */
-int cli_validate(const adh_config *cfg, char *why, size_t whylen)
+int cli_options_validate(const adh_config *cfg, char *why, size_t whylen)
 {
     if (cfg->sweep.kind == ADH_SWEEP_NONE)
         return validate_run(cfg, why, whylen);

@@ -7,8 +7,8 @@
 #include "scene/config.h"
 
 typedef enum tui_action {
-    ADH_ACT_TUI = 0, ADH_ACT_BATCH, ADH_ACT_HELP, ADH_ACT_VERSION, ADH_ACT_LIST_KEYS,
-    ADH_ACT_PLAN, ADH_ACT_COST
+    CLI_ACT_TUI = 0, CLI_ACT_BATCH, CLI_ACT_HELP, CLI_ACT_VERSION, CLI_ACT_LIST_KEYS,
+    CLI_ACT_PLAN, CLI_ACT_COST
 } tui_action;
 
 typedef struct cli_options {
@@ -22,10 +22,10 @@ typedef struct cli_options {
 
 /* Fills cli from argv (defaults, then the scene if one is named, then the
  * flags). Returns 0, or 2 with a message in why. */
-int cli_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen);
-void cli_usage(FILE *out);
+int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen);
+void cli_options_usage(FILE *out);
 
 /* Checks the whole configuration before anything runs. 0 or 2 with why. */
-int cli_validate(const adh_config *cfg, char *why, size_t whylen);
+int cli_options_validate(const adh_config *cfg, char *why, size_t whylen);
 
 #endif

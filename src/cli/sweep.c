@@ -20,9 +20,10 @@
 #include "cli/rigid.h"
 #include "cli/progress.h"
 #include "adhere/clock.h"
-#include "cli/statics.h"
+#include "cli/static.h"
 #include "cli/tables.h"
 #include "plot/outdir.h"
+#include "cli/plotsetup.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
 
@@ -142,7 +143,7 @@ int cli_sweep_jumped(const adh_run *run, double step)
     return before >= 0 && run->rows[before].hc - run->rows[at].hc > 2.0 * step ? 1 : 0;
 }
 
-int cli_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
+int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
                           const int *status)
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
@@ -181,7 +182,7 @@ int cli_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, c
                 cli_sweep_jumped(r, rc.proto.step));
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_run_status_word(r));
+        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_status_word(r));
     }
     return 0;
 }
@@ -196,7 +197,7 @@ typedef struct sweep_tables {
 static int write_sweep(FILE *f, const void *ctx)
 {
     const sweep_tables *t = ctx;
-    return cli_write_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
+    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
 }
 
 /* Tables of run i in out/run-K: force.tsv and turns.tsv when data is set,
@@ -212,7 +213,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     snprintf(lost, sizeof lost, "%s", unwritten ? unwritten : "");
     if (adh_outdir_make(dir, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     int partial = run->interrupted || rc != ADH_SUCCESS;
     if (run->interrupted)
@@ -220,32 +221,32 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     else if (rc != ADH_SUCCESS)
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(rc));
     /* a static run's summary.tsv has the batch's static keys */
-    char keynames[ADH_STATIC_KEYS][32];
-    cli_summary_extra extra[ADH_STATIC_KEYS];
-    size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? cli_static_summary_keys(sres, "", keynames, extra) : 0;
+    char keynames[CLI_TABLES_STATIC_KEYS][32];
+    cli_tables_extra extra[CLI_TABLES_STATIC_KEYS];
+    size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? cli_tables_static_keys(sres, "", keynames, extra) : 0;
     cli_tables t = { &rcfg, run, extra, nextra, partial, note, lost, NULL };
-    int status = ADH_EXIT_OK;
+    int status = CLI_EXIT_OK;
     if (data) {
         const char *names[2] = { "force.tsv", run->nturns ? "turns.tsv" : NULL };
-        cli_table_writer writers[2] = { cli_write_force, cli_write_turns };
+        adh_outdir_writer writers[2] = { cli_tables_force, cli_tables_turns };
         for (int k = 0; k < 2; k++)
-            if (names[k] && cli_write_atomic(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
+            if (names[k] && adh_outdir_write(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
-                status = ADH_EXIT_USAGE;
-                cli_names_add(lost, sizeof lost, names[k]);
+                status = CLI_EXIT_USAGE;
+                cli_tables_names_add(lost, sizeof lost, names[k]);
             }
     }
-    if (cli_write_atomic(dir, "summary.tsv", cli_write_summary, &t, why, sizeof why) != 0) {
+    if (adh_outdir_write(dir, "summary.tsv", cli_tables_summary, &t, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        status = ADH_EXIT_USAGE;
+        status = CLI_EXIT_USAGE;
     }
-    if (status == ADH_EXIT_OK && partial)
-        return run->interrupted ? ADH_EXIT_INTERRUPTED : ADH_EXIT_SOLVER;
-    if (status == ADH_EXIT_OK && run->unconverged && !cfg->allow_unconverged) {
+    if (status == CLI_EXIT_OK && partial)
+        return run->interrupted ? CLI_EXIT_INTERRUPTED : CLI_EXIT_SOLVER;
+    if (status == CLI_EXIT_OK && run->unconverged && !cfg->allow_unconverged) {
         if (data) /* said once, not again when the figures rewrite the summary */
             fprintf(stderr, "adhere: warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)\n",
                     i + 1, run->unconverged, run->nrows);
-        return ADH_EXIT_SOLVER;
+        return CLI_EXIT_SOLVER;
     }
     return status;
 }
@@ -259,41 +260,34 @@ static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, con
 /* Figures of run i in out/run-K (its tables are there); when one is not
  * written, the run's summary.tsv is written again to say so. An exit
  * status. */
-static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                       int rc, const char *out)
+static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const adh_run *run,
+                       const adh_static_result *sres, int rc, const char *out)
 {
     char dir[PATH_MAX + 32], msg[1024] = "", missing[256] = "";
     adh_config rcfg;
     adh_config_sweep_run(cfg, i, &rcfg);
     snprintf(dir, sizeof dir, "%s/run-%zu", out, i + 1);
     if (!cfg->plot)
-        return ADH_EXIT_OK;
-    int status = ADH_EXIT_OK;
+        return CLI_EXIT_OK;
+    int status = CLI_EXIT_OK;
     /* the plot module's figures only when one is asked: a sweep of many runs
      * should not draw what nobody wants */
     if (rcfg.plots & ADH_PLOT_ALL) {
-        int prc = adh_plots_write(&rcfg, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
+        adh_plot_setup ps;
+        cli_plotsetup_fill(&rcfg, g, &ps);
+        int prc = adh_plots_write(&ps, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
         if (prc != 0) {
             fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
-            status = prc == 2 ? ADH_EXIT_USAGE : ADH_EXIT_PLOT;
+            status = prc == 2 ? CLI_EXIT_USAGE : CLI_EXIT_PLOT;
         }
     }
-    if (cli_figures_run(&rcfg, run, dir, msg, sizeof msg) != 0) {
+    if (cli_figures_run(&rcfg, run, dir, msg, sizeof msg, missing, sizeof missing) != 0) {
         fprintf(stderr, "adhere: run %zu: %s\n", i + 1, msg);
-        status = status ? status : ADH_EXIT_PLOT;
-        /* the ones asked for and not there (run-K was cleared first) */
-        static const struct { unsigned bit; const char *name; } figs[] = {
-            { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
-        for (size_t k = 0; k < 2; k++) {
-            char p[PATH_MAX + 64];
-            snprintf(p, sizeof p, "%.4000s/%s", dir, figs[k].name);
-            if ((rcfg.plots & figs[k].bit) && access(p, F_OK) != 0)
-                cli_names_add(missing, sizeof missing, figs[k].name);
-        }
+        status = status ? status : CLI_EXIT_PLOT;
     }
     if (*missing) {
         int trc = run_tables(cfg, i, run, sres, rc, out, 0, missing);
-        if (trc == ADH_EXIT_USAGE)
+        if (trc == CLI_EXIT_USAGE)
             status = trc;
     }
     return status;
@@ -302,7 +296,7 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run *run, cons
 static int worse(int a, int b)
 {
     /* usage/output errors first, then interruption, solver failure, plots */
-    static const int rank[] = { ADH_EXIT_OK, ADH_EXIT_PLOT, ADH_EXIT_SOLVER, ADH_EXIT_INTERRUPTED, ADH_EXIT_USAGE };
+    static const int rank[] = { CLI_EXIT_OK, CLI_EXIT_PLOT, CLI_EXIT_SOLVER, CLI_EXIT_INTERRUPTED, CLI_EXIT_USAGE };
     int ra = 0, rb = 0;
     for (int k = 0; k < 5; k++) {
         if (rank[k] == a) ra = k;
@@ -320,13 +314,13 @@ int cli_sweep_main(const cli_options *cli)
     size_t n = cfg->sweep.n;
     if (out && adh_outdir_make(out, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
     if (cfg->mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_EPS) {
         /* every run would be the same equilibrium curve */
         fprintf(stderr, "adhere: a sweep of eps in mode = static would compute the same curve %zu times: "
                 "eps is the relaxation's convergence parameter; sweep E or sigma, or use mode = relax\n", n);
-        return ADH_EXIT_USAGE;
+        return CLI_EXIT_USAGE;
     }
 
     /* Every swept parameter (E, sigma, eps) leaves the grid alone, so one
@@ -360,7 +354,7 @@ int cli_sweep_main(const cli_options *cli)
                 fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
             cli_interrupt_release();
             adh_grid_free(g);
-            return kst == ADH_EINTR ? cli_interrupt_exit() : ADH_EXIT_SOLVER;
+            return kst == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
         }
     }
     adh_run *runs = calloc(n, sizeof *runs);
@@ -374,7 +368,7 @@ int cli_sweep_main(const cli_options *cli)
         fprintf(stderr, "adhere: out of memory for %zu runs\n", n);
         free(runs), free(sres), free(status), free(tables), free(threads);
         adh_kernel_free(k), adh_grid_free(g);
-        return ADH_EXIT_SOLVER;
+        return CLI_EXIT_SOLVER;
     }
     for (size_t i = 0; i < n; i++) {
         adh_run_init(&runs[i]);
@@ -403,41 +397,41 @@ int cli_sweep_main(const cli_options *cli)
     pthread_mutex_destroy(&job.lock);
     cli_interrupt_release();
 
-    int exit_status = ADH_EXIT_OK;
+    int exit_status = CLI_EXIT_OK;
     for (size_t i = 0; i < n; i++) {
         /* a run never started (interrupted before its turn) counts as interrupted */
         if (cli_interrupt_signal() && runs[i].nrows == 0)
             runs[i].interrupted = 1;
         if (runs[i].interrupted)
-            exit_status = worse(exit_status, ADH_EXIT_INTERRUPTED);
+            exit_status = worse(exit_status, CLI_EXIT_INTERRUPTED);
         else if (status[i] != ADH_SUCCESS)
-            exit_status = worse(exit_status, ADH_EXIT_SOLVER);
+            exit_status = worse(exit_status, CLI_EXIT_SOLVER);
         else if (runs[i].unconverged && !cfg->allow_unconverged)
-            exit_status = worse(exit_status, ADH_EXIT_SOLVER);   /* sweep.tsv says unconverged */
+            exit_status = worse(exit_status, CLI_EXIT_SOLVER);   /* sweep.tsv says unconverged */
     }
     sweep_tables st = { cfg, runs, sres, status };
     if (!out) {
-        cli_write_sweep_table(stdout, cfg, runs, sres, status);
+        cli_sweep_table(stdout, cfg, runs, sres, status);
     } else {
         for (size_t i = 0; i < n; i++) {
             if (tables[i] < 0) /* never started: its tables say interrupted */
                 tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], out);
             exit_status = worse(exit_status, tables[i]);
-            if (tables[i] == ADH_EXIT_OK || (tables[i] == ADH_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS))
-                exit_status = worse(exit_status, write_plots(cfg, i, &runs[i], &sres[i], status[i], out));
+            if (tables[i] == CLI_EXIT_OK || (tables[i] == CLI_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS))
+                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], out));
         }
-        if (cli_write_atomic(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
+        if (adh_outdir_write(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
-            exit_status = worse(exit_status, ADH_EXIT_USAGE);
-        } else if (cfg->plot && exit_status == ADH_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
+            exit_status = worse(exit_status, CLI_EXIT_USAGE);
+        } else if (cfg->plot && exit_status == CLI_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
             char msg[1024] = "";
             if (cli_figures_sweep(cfg, runs, n, out, msg, sizeof msg) != 0) {
                 fprintf(stderr, "adhere: sweep plot not written: %s\n", msg);
-                exit_status = worse(exit_status, ADH_EXIT_PLOT);
+                exit_status = worse(exit_status, CLI_EXIT_PLOT);
             }
         }
     }
-    if (exit_status == ADH_EXIT_OK && !cfg->quiet) {
+    if (exit_status == CLI_EXIT_OK && !cfg->quiet) {
         char t[32];
         cli_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
         if (out)

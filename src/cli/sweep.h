@@ -31,7 +31,7 @@ int cli_sweep_jumped(const adh_run *run, double step);
 
 /* sweep.tsv: one row per run. runs[i] is run i of cfg's sweep; in mode =
  * static sres[i] is its curve's summary (pulloff_F_disp and folds columns). */
-int cli_write_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
+int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
                           const int *status);
 
 #endif

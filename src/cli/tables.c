@@ -23,7 +23,7 @@ static void comment_head(FILE *f, const cli_tables *t, const char *what)
         fprintf(f, "# PARTIAL: %s\n", t->note ? t->note : "the run did not finish");
 }
 
-int cli_write_force(FILE *f, const void *ctx)
+int cli_tables_force(FILE *f, const void *ctx)
 {
     const cli_tables *t = ctx;
     comment_head(f, t, "force table: one row per drive step; branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading branch");
@@ -33,7 +33,7 @@ int cli_write_force(FILE *f, const void *ctx)
     return 0;
 }
 
-void cli_names_add(char *buf, size_t len, const char *name)
+void cli_tables_names_add(char *buf, size_t len, const char *name)
 {
     size_t n = strlen(buf), m = strlen(name), sep = n ? 1 : 0;
     if (!m || n + sep + m >= len)
@@ -43,7 +43,7 @@ void cli_names_add(char *buf, size_t len, const char *name)
     memcpy(buf + n, name, m + 1);
 }
 
-const char *cli_run_status_word(const adh_run *r)
+const char *cli_tables_status_word(const adh_run *r)
 {
     if (r->interrupted)
         return "interrupted";
@@ -57,7 +57,7 @@ static void kv(FILE *f, const char *k, double v)
     fprintf(f, "%s\t%.17g\n", k, v);
 }
 
-int cli_write_summary(FILE *f, const void *ctx)
+int cli_tables_summary(FILE *f, const void *ctx)
 {
     const cli_tables *t = ctx;
     const adh_config *c = t->cfg;
@@ -138,14 +138,14 @@ int cli_write_summary(FILE *f, const void *ctx)
         fprintf(f, "not_written\t%s\n", t->unwritten);
     /* success only for a finished, converged run on a resolved grid that
      * separated, every file of which was written */
-    const char *word = t->status ? t->status : cli_run_status_word(r);
+    const char *word = t->status ? t->status : cli_tables_status_word(r);
     if (!strcmp(word, "success"))
         word = !separated ? "not separated" : !(rigid || gr.resolved) ? "unresolved" : lost ? "output incomplete" : word;
     fprintf(f, "status\t%s\n", word);
     return 0;
 }
 
-int cli_write_turns(FILE *f, const void *ctx)
+int cli_tables_turns(FILE *f, const void *ctx)
 {
     const cli_tables *t = ctx;
     comment_head(f, t, "turning points: the adhesion (-pulloff_F) against the maximum load (Figures 5, 6 insets)");
@@ -158,10 +158,23 @@ int cli_write_turns(FILE *f, const void *ctx)
     return 0;
 }
 
-int cli_write_atomic(const char *dir, const char *name, cli_table_writer writer, const void *ctx,
-                     char *why, size_t whylen)
+size_t cli_tables_static_keys(const adh_static_result *res, const char *prefix,
+                              char names[][32], cli_tables_extra *extra)
 {
-    char path[PATH_MAX + 64];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    return adh_outdir_write(path, writer, ctx, why, whylen);
+    const struct { const char *key; double value; } v[CLI_TABLES_STATIC_KEYS] = {
+        { "jump_in_h0", res->jump_in_h0 },
+        { "jump_out_h0", res->jump_out_h0 },
+        { "pulloff_F", res->pulloff_F },
+        { "pulloff_h0", res->pulloff_h0 },
+        { "pulloff_F_disp", res->pulloff_F_disp },
+        { "folds", (double)res->folds },
+        { "points", (double)res->points },
+        { "newton_iterations", (double)res->newton_iterations },
+    };
+    for (size_t i = 0; i < CLI_TABLES_STATIC_KEYS; i++) {
+        snprintf(names[i], 32, "%s%s", prefix, v[i].key);
+        extra[i].key = names[i];
+        extra[i].value = v[i].value;
+    }
+    return CLI_TABLES_STATIC_KEYS;
 }

@@ -8,22 +8,19 @@
 #include <stdio.h>
 
 #include "adhere/protocol.h"
+#include "adhere/static.h"
 #include "scene/config.h"
 
-typedef struct cli_summary_extra {
+typedef struct cli_tables_extra {
     const char *key;
     double value;
-} cli_summary_extra;
+} cli_tables_extra;
 
-/* Writes dir/name atomically through writer(f, ctx). 0, or -1 with why. */
-typedef int (*cli_table_writer)(FILE *f, const void *ctx);
-int cli_write_atomic(const char *dir, const char *name, cli_table_writer writer, const void *ctx,
-                     char *why, size_t whylen);
 
 typedef struct cli_tables {
     const adh_config *cfg;
     const adh_run *run;
-    const cli_summary_extra *extra;  /* more summary keys (static mode...), may be NULL */
+    const cli_tables_extra *extra;  /* more summary keys (static mode...), may be NULL */
     size_t nextra;
     int partial;                     /* the run was interrupted or failed */
     const char *note;                /* why, for the comment lines */
@@ -34,12 +31,18 @@ typedef struct cli_tables {
 
 /* The summary's status word: interrupted, unconverged (steps at the
  * iteration cap), success, or the solver's error. */
-const char *cli_run_status_word(const adh_run *r);
+const char *cli_tables_status_word(const adh_run *r);
 /* Appends name (or a comma-separated list) to the comma-separated list in
  * buf; what does not fit is left off whole names at a time. */
-void cli_names_add(char *buf, size_t len, const char *name);
-int cli_write_force(FILE *f, const void *tables);
-int cli_write_summary(FILE *f, const void *tables);
-int cli_write_turns(FILE *f, const void *tables);
+void cli_tables_names_add(char *buf, size_t len, const char *name);
+int cli_tables_force(FILE *f, const void *tables);
+int cli_tables_summary(FILE *f, const void *tables);
+int cli_tables_turns(FILE *f, const void *tables);
+
+/* The summary keys of a static result, prefixed ("" or "static_"), into
+ * extra[] (at most CLI_TABLES_STATIC_KEYS entries); returns how many. */
+#define CLI_TABLES_STATIC_KEYS 8
+size_t cli_tables_static_keys(const adh_static_result *res, const char *prefix,
+                              char names[][32], cli_tables_extra *extra);
 
 #endif

@@ -52,7 +52,18 @@ double adh_material_gamma(const adh_material *m)
     return m->A / (16.0 * M_PI * m->z0 * m->z0);
 }
 
+/* gamma sqrt(R / z0^3): sigma times E */
+static double sigma_E(const adh_material *m)
+{
+    return adh_material_gamma(m) * sqrt(m->R / (m->z0 * m->z0 * m->z0));
+}
+
 double adh_material_sigma(const adh_material *m)
 {
-    return adh_material_gamma(m) * sqrt(m->R / (m->z0 * m->z0 * m->z0)) / m->E;
+    return sigma_E(m) / m->E;
+}
+
+double adh_material_modulus_at_sigma(const adh_material *m, double sigma)
+{
+    return sigma_E(m) / sigma;
 }

@@ -37,7 +37,7 @@ double adh_protocol_reach(const adh_material *m)
     return 0.02 * m->R;
 }
 
-static double deepest_turn(const adh_protocol_settings *ps)
+double adh_protocol_deepest_turn(const adh_protocol_settings *ps)
 {
     double t = INFINITY;
     for (size_t i = 0; i < ps->nturns; i++)
@@ -65,7 +65,7 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
             return ADH_EINVAL;
         }
     }
-    double lowest = ps->nturns ? deepest_turn(ps) : 0.0;
+    double lowest = ps->nturns ? adh_protocol_deepest_turn(ps) : 0.0;
     /* The model needs h0 << R and a grid edge (at most 0.3 R out) where the
      * gap is many z0 wide: r^2/2R there is at most 0.045 R. */
     double need = (10.0 * m->z0 + fabs(lowest)) / 0.045;

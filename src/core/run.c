@@ -94,3 +94,19 @@ int adh_run_push_profile(adh_run *run, const adh_state *s, int branch, int path)
     run->nprofiles++;
     return ADH_SUCCESS;
 }
+
+long adh_run_next_on_path(const adh_run *run, size_t i)
+{
+    for (size_t j = i + 1; j < run->nrows; j++)
+        if (run->rows[j].path == run->rows[i].path)
+            return (long)j;
+    return -1;
+}
+
+long adh_run_prev_on_path(const adh_run *run, size_t i)
+{
+    for (size_t j = i; j-- > 0;)
+        if (run->rows[j].path == run->rows[i].path)
+            return (long)j;
+    return -1;
+}

@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -128,18 +129,29 @@ int adh_outdir_make(const char *dir, char *why, size_t n)
     return 0;
 }
 
-int adh_outdir_write(const char *path, adh_outdir_writer writer, const void *ctx, char *why, size_t whylen)
+int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t whylen)
 {
-    char tmp[PATH_MAX + 80];
+    const char *tmp = getenv("TMPDIR");
+    snprintf(buf, len, "%s/%s-XXXXXX", tmp && *tmp ? tmp : "/tmp", name);
+    if (mkdtemp(buf))
+        return 0;
+    snprintf(why, whylen, "cannot make a temporary directory %.900s: %s", buf, strerror(errno));
+    if (len)
+        buf[0] = '\0';
+    return -1;
+}
+
+int adh_outdir_write(const char *dir, const char *name, adh_outdir_writer writer, const void *ctx,
+                     char *why, size_t whylen)
+{
+    char path[PATH_MAX + 64], tmp[PATH_MAX + 80];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     if (strlen(path) >= PATH_MAX) {
         snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(ENAMETOOLONG));
         return -1;
     }
     /* the temporary beside it, DIR/.NAME.PID.tmp (adh_outdir_owns knows it) */
-    const char *slash = strrchr(path, '/');
-    size_t dl = slash ? (size_t)(slash - path) + 1 : 0;
-    memcpy(tmp, path, dl);
-    snprintf(tmp + dl, sizeof tmp - dl, ".%s.%ld.tmp", path + dl, (long)getpid());
+    snprintf(tmp, sizeof tmp, "%s/.%s.%ld.tmp", dir, name, (long)getpid());
     FILE *f = fopen(tmp, "w");
     if (!f) {
         snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(errno));

@@ -1,16 +1,42 @@
 /* PNG plots of a run through one gnuplot process (force.png, profile.png,
- * contact.png) with their data tables (profiles.tsv, contact.tsv). */
+ * contact.png) with their data tables (profiles.tsv, contact.tsv). The
+ * plotter reads the run and a small description of what to draw, never the
+ * whole configuration. */
 #ifndef ADH_PLOT_H
 #define ADH_PLOT_H
 
 #include <stddef.h>
 
-#include "adhere/protocol.h"
-#include "scene/config.h"
-#include "scene/datadir.h"   /* adh_data_dir */
+#include "adhere/params.h"
+#include "adhere/run.h"
+#include "scene/figures.h"
+#include "scene/measured.h"
 
-/* Writes the plots cfg->plots asks for into dir, beside profiles.tsv and
- * contact.tsv (always written, also with cfg->plot == 0 or no gnuplot).
+/* What the plots of one run show, beside the run itself. Strings and
+ * arrays are borrowed: they must outlive the call they are passed to. */
+typedef struct adh_plot_setup {
+    adh_material mat;              /* headings, model curves, the tables' preamble */
+    unsigned figures;              /* adh_plot_kind bits asked for: ADH_PLOT_CONTACT
+                                      also asks for contact.tsv */
+    int draw;                      /* 0: the tables only, no PNG (--no-plot) */
+    const char *title;             /* the scene's title, "" for none */
+    int rigid;                     /* rigid spheres: no JKR, DMT, MD curves (E means nothing) */
+    int equilibrium;               /* path 0 is the static equilibrium curve (--mode=static) */
+    double drive_speed;            /* |dh0/dt|, m/s: contact-line speeds */
+    double step;                   /* drive step d, m */
+    size_t nodes;                  /* the run's grid: N nodes (each profile's length), */
+    double dr;                     /* its (finest) spacing, m, */
+    const double *r;               /* and its node radii; NULL: uniform, (n + 1/2) dr */
+    const char *style;             /* gnuplot style file or directory, "" = the installed one */
+    const adh_measured *measured;  /* --data: drawn over force.png, NULL = none */
+} adh_plot_setup;
+
+/* Node n's radius on the setup's grid. */
+double adh_plot_radius(const adh_plot_setup *s, size_t n);
+
+/* Writes the figures s asks for into dir, beside profiles.tsv (when the
+ * run stored profiles) and contact.tsv (when the contact figure is asked),
+ * which are written also with s->draw == 0 or no gnuplot.
  * reference, when not NULL, is a second run drawn on force.png for
  * comparison: the static equilibrium curve of --reference=static (its
  * path 0, stable stretches solid, unstable ones dashed).
@@ -22,23 +48,13 @@
  * names of the files asked for and not written ("" when none). No
  * temporary file or directory stays behind on any path. gnuplot's stderr
  * goes to dir/gnuplot.log, kept only when it holds something. */
-int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *reference,
+int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *reference,
                     const char *dir, char *msg, size_t msglen, char *unwritten, size_t ulen);
 
-/* A handful (at most max) of profile positions for profile.png when none
- * were asked: evenly from the deepest turn (or, with no turn, the analytic
- * jump separation, eq 24) up to half the start, each snapped onto the
- * drive's grid start - k d so the protocol really stores it (Figure 4 uses
- * -5 nm ... 8.5 nm; the default scene's start is 17 nm). Returns how many
- * were written to out. For the caller to use before the run, e.g.
- *   if (!cfg->proto.nprofiles && (cfg->plots & ADH_PLOT_PROFILE))
- *       cfg->proto.nprofiles = adh_plot_default_profiles(cfg, cfg->proto.profiles, 6); */
-size_t adh_plot_default_profiles(const adh_config *cfg, double *out, size_t max);
-
-/* The gnuplot style file in use: cfg->gnuplot_style (a file, or a directory
- * holding style.gp) if set, else style.gp in adh_data_dir("gnuplot").
+/* The gnuplot style file in use: style (a file, or a directory holding
+ * style.gp) if not "", else style.gp in adh_data_dir("gnuplot").
  * 0; 1 when no style is set and none is installed (buf = "", the built-in
- * defaults serve); -1 when cfg->gnuplot_style names nothing readable (msg). */
-int adh_plot_style_file(const adh_config *cfg, char *buf, size_t len, char *msg, size_t msglen);
+ * defaults serve); -1 when style names nothing readable (msg). */
+int adh_plot_style_file(const char *style, char *buf, size_t len, char *msg, size_t msglen);
 
 #endif

@@ -4,6 +4,7 @@
 #include "plot/plot.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -18,13 +19,18 @@
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
 #include "plot/png.h"
-#include "plot/plotdata.h"
+#include "plot/speed.h"
+#include "plot/tsv.h"
 #include "scene/measured.h"
+
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
 
 #define MAX_LABELLED_UNLOADS 8
 
 typedef struct plotter {
-    const adh_config *cfg;
+    const adh_plot_setup *s;
     const adh_run *run;
     const adh_run *ref;       /* the static equilibrium beside a relaxation run, or NULL */
     const char *dir;
@@ -54,6 +60,17 @@ static void append(char *buf, size_t len, const char *fmt, ...)
 }
 
 
+
+double adh_plot_radius(const adh_plot_setup *s, size_t n)
+{
+    return s->r ? s->r[n] : ((double)n + 0.5) * s->dr;
+}
+
+/* A scene title makes a two-line heading, which needs more room above. */
+static int has_title(const plotter *pl)
+{
+    return pl->s->title && pl->s->title[0];
+}
 
 /* 1, 2 or 5 times a power of ten, at least x */
 static double nice_step(double x)
@@ -91,21 +108,23 @@ static void format_length(double v, char *buf, size_t len)
 static void title_string(const plotter *pl, const char *what, char *buf, size_t len)
 {
     char r[32], e[32], text[1024], scene[300];
-    format_length(pl->cfg->mat.R, r, sizeof r);
-    adh_format_modulus(pl->cfg->mat.E, e, sizeof e);
+    format_length(pl->s->mat.R, r, sizeof r);
+    adh_format_modulus(pl->s->mat.E, e, sizeof e);
     /* The scene title names the scene's own figure (Figure 4's profiles);
      * its other PNGs carry only its label ("Figure 4 scene"), or force.png
      * would be titled "profiles on approach and retraction". The scene's
      * figure is the most specific plot it asks for. */
-    unsigned want = pl->cfg->plots;
+    unsigned want = pl->s->figures;
     int own = !strcmp(what, "Surface profiles") ? 1
             : !strncmp(what, "Contact", 7) ? !(want & ADH_PLOT_PROFILE)
             : !(want & (ADH_PLOT_PROFILE | ADH_PLOT_CONTACT));
-    const char *colon = strchr(pl->cfg->title, ':');
+    char title[256];   /* a scene title's length, as scene files allow */
+    snprintf(title, sizeof title, "%s", has_title(pl) ? pl->s->title : "");
+    const char *colon = strchr(title, ':');
     if (own || !colon)
-        snprintf(scene, sizeof scene, "%s", pl->cfg->title);
+        snprintf(scene, sizeof scene, "%s", title);
     else
-        snprintf(scene, sizeof scene, "%.*s scene", (int)(colon - pl->cfg->title), pl->cfg->title);
+        snprintf(scene, sizeof scene, "%.*s scene", (int)(colon - title), title);
     snprintf(text, sizeof text, "%s%s%s: σ = %.3g, γ = %.3g mJ/m², R = %s, E = %s",
              scene, scene[0] ? "\n" : "", what, pl->d.sigma, pl->d.gamma * 1e3, r, e);
     adh_gp_quote(text, buf, len);
@@ -350,7 +369,7 @@ static int plot_force(plotter *pl)
     }
     /* --data: the user's measurement, points over the model, in the frame */
     int meas_set = -1;
-    const adh_measured *meas = pl->cfg->measured;
+    const adh_measured *meas = pl->s->measured;
     if (meas && meas->n) {
         set_begin(&df);
         for (size_t i = 0; i < meas->n; i++) {
@@ -367,14 +386,14 @@ static int plot_force(plotter *pl)
      * nothing), each over the whole width of the frame. */
     model_sets jkr = { -1, -1 }, dmt = { -1, -1 }, md = { -1, -1 };
     double md_lambda = NAN;
-    if (pl->cfg->mode != ADH_MODE_RIGID) {
+    if (!pl->s->rigid) {
         adh_model_curve *mc = malloc(sizeof *mc);
         if (!mc) {
             fclose(f);
             free(set);
             return -1;
         }
-        const adh_material *mat = &pl->cfg->mat;
+        const adh_material *mat = &pl->s->mat;
         double h0_min = xmin - xpad;
         if (adh_jkr_drive_curve(mat, h0_min, mc) == 0)
             jkr = write_model_sets(&df, mc);
@@ -465,7 +484,7 @@ static int plot_force(plotter *pl)
     int panel = nadh >= 2;
     /* a two-line heading (scene title) needs more room above the panels,
      * or it runs into the adhesion panel's top */
-    double top = pl->cfg->title[0] ? 0.90 : 0.95;
+    double top = has_title(pl) ? 0.90 : 0.95;
     if (panel) {
         adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
         adh_gnuplot_cmd(pl->gp, "set origin 0,0");
@@ -510,7 +529,7 @@ static int plot_force(plotter *pl)
                 snprintf(style, sizeof style, "ls 1%s",
                          s ? "" : " lw 1.2 dt adh_unstable_dash");
                 /* the static mode's path 0 is the whole equilibrium curve */
-                if (pl->cfg->mode == ADH_MODE_STATIC)
+                if (pl->s->equilibrium)
                     snprintf(title, sizeof title, "title \"%s\"",
                              s ? "static equilibrium" : "unstable (displacement control)");
                 else
@@ -639,7 +658,7 @@ static int cmp_desc(const void *a, const void *b)
 static int plot_profile(plotter *pl)
 {
     const adh_run *run = pl->run;
-    const adh_config *cfg = pl->cfg;
+    const adh_plot_setup *s = pl->s;
     /* Loading and the unloading branch of the deepest turn: with several
      * turns the other branches would bury the comparison Figure 4B makes. */
     const adh_turn_result *main_turn = adh_run_main_turn(run);
@@ -681,13 +700,13 @@ static int plot_profile(plotter *pl)
         free(pos);
         return -1;
     }
-    double amax = 0, rgrid = adh_profile_radius(cfg, cfg->nodes - 1);
+    double amax = 0, rgrid = adh_plot_radius(s, s->nodes - 1);
     for (size_t k = 0; k < nsel; k++) {
         const adh_profile *pr = &run->profiles[sel[k]];
-        for (size_t n = 0; n < cfg->nodes; n++) {
-            double r = adh_profile_radius(cfg, n);
+        for (size_t n = 0; n < s->nodes; n++) {
+            double r = adh_plot_radius(s, n);
             fprintf(f, "%.17g\t%.17g\n", r, pr->h[n]);
-            if (pr->h[n] < ADH_CONTACT_FACTOR * cfg->mat.z0 && r > amax)
+            if (pr->h[n] < ADH_CONTACT_FACTOR * s->mat.z0 && r > amax)
                 amax = r;
         }
         fprintf(f, "\n\n");
@@ -700,8 +719,8 @@ static int plot_profile(plotter *pl)
 
     /* Frame: wide enough to show the contact and the flank beyond it, high
      * enough that every position's parabola enters from the top. */
-    double R = cfg->mat.R, top = pos[0], bottom = pos[npos - 1];
-    double rise = fmax(top - bottom, 10.0 * cfg->mat.z0);
+    double R = s->mat.R, top = pos[0], bottom = pos[npos - 1];
+    double rise = fmax(top - bottom, 10.0 * s->mat.z0);
     double xmax = sqrt(2.0 * R * rise);
     if (xmax < 1.6 * amax)
         xmax = 1.6 * amax;
@@ -799,9 +818,8 @@ static int plot_contact(plotter *pl)
     int rc = -1;
     if ((n && (!dadh0 || !dadt || !smooth)) || !set)
         goto out;
-    adh_contact_speed(run, pl->cfg->drive_speed, dadh0, dadt);
-    adh_contact_speed_smoothed(run, pl->cfg->drive_speed, adh_config_spacing(pl->cfg),
-                               ADH_SPEED_CELLS, smooth);
+    adh_speed_stepwise(run, pl->s->drive_speed, dadh0, dadt);
+    adh_speed_smoothed(run, pl->s->drive_speed, pl->s->dr, ADH_SPEED_CELLS, smooth);
     double xmin = INFINITY, xmax = -INFINITY;
     for (size_t i = 0; i < n; i++)
         if (run->rows[i].a > 0) {
@@ -837,7 +855,7 @@ static int plot_contact(plotter *pl)
         for (size_t i = 0; i < n; i++) {
             if (run->rows[i].path != p)
                 continue;
-            long a = adh_row_prev_on_path(run, i), b = adh_row_next_on_path(run, i);
+            long a = adh_run_prev_on_path(run, i), b = adh_run_next_on_path(run, i);
             if (run->rows[i].a > 0 || (a >= 0 && run->rows[a].a > 0) ||
                 (b >= 0 && run->rows[b].a > 0))
                 set_point(&df, run->rows[i].h0, run->rows[i].a);
@@ -855,14 +873,14 @@ static int plot_contact(plotter *pl)
         if (isfinite(smooth[i]))
             vmax = fmax(vmax, fabs(smooth[i]));
     int in_mm = vmax >= 2e-3;
-    double step = fabs(pl->cfg->proto.step);
+    double step = fabs(pl->s->step);
     double xpad = fmax(0.03 * (xmax - xmin), 2 * step);
     char heading[HEADING_SIZE], what[96];
     snprintf(what, sizeof what, "Contact line at drive speed %.3g µm/s",
-             pl->cfg->drive_speed * 1e6);
+             pl->s->drive_speed * 1e6);
     title_string(pl, what, heading, sizeof heading);
     /* a two-line heading (scene title) needs more room above the panels */
-    double top = pl->cfg->title[0] ? 0.90 : 0.94;
+    double top = has_title(pl) ? 0.90 : 0.94;
     tmp_png_name(pl, "contact.png", tmp_png, sizeof tmp_png);
     begin_figure(pl, "contact", tmp_png);
     adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
@@ -999,17 +1017,17 @@ static void add_unwritten_figures(char *buf, size_t len, unsigned want, unsigned
             add_name(buf, len, figs[i].name);
 }
 
-int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *reference,
+int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *reference,
                     const char *dir, char *msg, size_t msglen, char *unwritten, size_t ulen)
 {
-    char path[PATH_MAX + 32], why[1024], table_error[1024] = "";
+    char why[1024], table_error[1024] = "";
     if (msglen)
         msg[0] = '\0';
     if (unwritten && ulen)
         unwritten[0] = '\0';
     if (!dir || !*dir)
         dir = ".";
-    unsigned want = cfg->plot ? cfg->plots & ADH_PLOT_ALL : 0;
+    unsigned want = s->draw ? s->figures & ADH_PLOT_ALL : 0;
     struct stat st;
     errno = 0;
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || access(dir, W_OK | X_OK) != 0) {
@@ -1017,7 +1035,7 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *re
                  errno ? strerror(errno) : "not a writable directory");
         if (run->nprofiles > 0)
             add_name(unwritten, ulen, "profiles.tsv");
-        if (cfg->plots & ADH_PLOT_CONTACT)
+        if (s->figures & ADH_PLOT_CONTACT)
             add_name(unwritten, ulen, "contact.tsv");
         add_unwritten_figures(unwritten, ulen, want, 0);
         return 2;
@@ -1027,17 +1045,15 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *re
      * table that cannot be written (a full disk) does not stop the others. */
     char tables[64] = "";
     if (run->nprofiles > 0) {
-        snprintf(path, sizeof path, "%s/profiles.tsv", dir);
-        if (adh_write_profiles_table(cfg, run, path, why, sizeof why) != 0) {
+        if (adh_tsv_profiles(s, run, dir, why, sizeof why) != 0) {
             snprintf(table_error, sizeof table_error, "%s", why);
             add_name(unwritten, ulen, "profiles.tsv");
         } else {
             strcat(tables, "profiles.tsv");
         }
     }
-    if (cfg->plots & ADH_PLOT_CONTACT) {
-        snprintf(path, sizeof path, "%s/contact.tsv", dir);
-        if (adh_write_contact_table(cfg, run, path, why, sizeof why) != 0) {
+    if (s->figures & ADH_PLOT_CONTACT) {
+        if (adh_tsv_contact(s, run, dir, why, sizeof why) != 0) {
             if (!*table_error)
                 snprintf(table_error, sizeof table_error, "%s", why);
             add_name(unwritten, ulen, "contact.tsv");
@@ -1056,24 +1072,20 @@ int adh_plots_write(const adh_config *cfg, const adh_run *run, const adh_run *re
 
     plotter pl;
     memset(&pl, 0, sizeof pl);
-    pl.cfg = cfg;
+    pl.s = s;
     pl.run = run;
     pl.ref = reference;
     pl.dir = dir;
-    adh_material_derive(&cfg->mat, &pl.d);
+    adh_material_derive(&s->mat, &pl.d);
     int rc = 0;
     char log[PATH_MAX + 32];
     snprintf(log, sizeof log, "%s/gnuplot.log", dir);
     unlink(log);   /* each run's log holds only its own complaints */
-    const char *tmp = getenv("TMPDIR");
-    if (adh_plot_style_file(cfg, pl.style, sizeof pl.style, why, sizeof why) < 0) {
+    if (adh_plot_style_file(s->style, pl.style, sizeof pl.style, why, sizeof why) < 0) {
         snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
     } else {
-        snprintf(pl.tmpdir, sizeof pl.tmpdir, "%s/adhere-plot-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-        if (!mkdtemp(pl.tmpdir)) {
-            snprintf(pl.error, sizeof pl.error, "cannot make a temporary directory %.900s: %s; no plots made",
-                     pl.tmpdir, strerror(errno));
-            pl.tmpdir[0] = '\0';
+        if (adh_outdir_temp("adhere-plot", pl.tmpdir, sizeof pl.tmpdir, why, sizeof why) != 0) {
+            snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
         } else if ((pl.gp = adh_gnuplot_open(log, why, sizeof why)) == NULL) {
             snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
         }

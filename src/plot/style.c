@@ -8,19 +8,21 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "scene/datadir.h"
+
 static int is_dir(const char *p)
 {
     struct stat st;
     return stat(p, &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-int adh_plot_style_file(const adh_config *cfg, char *buf, size_t len, char *msg, size_t msglen)
+int adh_plot_style_file(const char *style, char *buf, size_t len, char *msg, size_t msglen)
 {
-    if (cfg->gnuplot_style[0]) {
-        if (is_dir(cfg->gnuplot_style))
-            snprintf(buf, len, "%s/style.gp", cfg->gnuplot_style);
+    if (style[0]) {
+        if (is_dir(style))
+            snprintf(buf, len, "%s/style.gp", style);
         else
-            snprintf(buf, len, "%s", cfg->gnuplot_style);
+            snprintf(buf, len, "%s", style);
         if (access(buf, R_OK) != 0) {
             snprintf(msg, msglen, "gnuplot style %s: %s", buf, strerror(errno));
             return -1;

@@ -53,9 +53,7 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
             soft = run;
         }
     }
-    double deepest = 0;
-    for (size_t i = 0; i < cfg->proto.nturns; i++)
-        deepest = fmin(deepest, cfg->proto.turns[i]);
+    double deepest = fmin(0.0, adh_protocol_deepest_turn(&cfg->proto));
     adh_grid_choice gc;
     /* graded rings need the ring kernel: not when the paper's was asked for */
     int graded_ok = !(cfg->kernel_given && cfg->kernel == ADH_KERNEL_PAPER);
@@ -92,9 +90,7 @@ adh_rings_spec adh_config_rings(const adh_config *c)
     if (isnan(s.fine)) {
         /* the contact expected at the deepest position (with no turn, at
          * h0 = 0), and a quarter more: the contact line sweeps fine rings only */
-        double lowest = c->mat.z0;
-        for (size_t i = 0; i < c->proto.nturns; i++)
-            lowest = fmin(lowest, c->proto.turns[i]);
+        double lowest = fmin(c->mat.z0, adh_protocol_deepest_turn(&c->proto));
         s.fine = fmin(s.rmax, 1.25 * adh_rings_contact_estimate(&c->mat, fmin(lowest, 0.0)));
     }
     return s;
@@ -109,7 +105,7 @@ int adh_config_grid_check(const adh_config *c, char *why, size_t whylen)
         return -1;
     }
     adh_rings_spec s = adh_config_rings(c);
-    return adh_rings_spec_validate(&s, why, whylen);
+    return adh_rings_spec_validate(&s, why, whylen) == ADH_SUCCESS ? 0 : -1;
 }
 
 adh_grid *adh_config_grid_alloc(const adh_config *c)
@@ -155,12 +151,9 @@ void adh_config_sweep_run(const adh_config *c, size_t i, adh_config *run)
     case ADH_SWEEP_E:
         run->mat.E = v;
         break;
-    case ADH_SWEEP_SIGMA: {
-        /* eq 17 solved for E: sigma = gamma sqrt(R/z0^3) / E */
-        double gamma = adh_material_gamma(&c->mat);
-        run->mat.E = gamma * sqrt(c->mat.R / (c->mat.z0 * c->mat.z0 * c->mat.z0)) / v;
+    case ADH_SWEEP_SIGMA:
+        run->mat.E = adh_material_modulus_at_sigma(&c->mat, v);
         break;
-    }
     case ADH_SWEEP_EPS:
         run->relax.eps = v;
         break;

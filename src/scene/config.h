@@ -1,6 +1,6 @@
 /* Everything a run needs, from defaults, a scene file and command-line flags
- * (in that order of precedence, lowest first). The CLI, the TUI and the
- * plotter all read this one struct. */
+ * (in that order of precedence, lowest first). The CLI and the TUI read
+ * this one struct; the plotter is handed only what it draws. */
 #ifndef ADH_SCENE_CONFIG_H
 #define ADH_SCENE_CONFIG_H
 
@@ -13,6 +13,7 @@
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
 #include "adhere/rings.h"
+#include "scene/figures.h"
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
@@ -20,16 +21,6 @@
 
 /* RIGID: eq 22 at the drive positions, no kernel and no elastic solve. */
 typedef enum adh_mode { ADH_MODE_RELAX = 0, ADH_MODE_STATIC = 1, ADH_MODE_RIGID = 2 } adh_mode;
-
-enum adh_plot_kind {
-    ADH_PLOT_FORCE = 1u << 0,
-    ADH_PLOT_PROFILE = 1u << 1,
-    ADH_PLOT_CONTACT = 1u << 2,
-    ADH_PLOT_ALL = 7u,             /* the plot module's three figures */
-    /* Scene figures drawn by the CLI from force.tsv's columns: */
-    ADH_PLOT_PRECONTACT = 1u << 3, /* Figure 1 inset: force before contact vs eq 22 at h0 and at h (eq 23) */
-    ADH_PLOT_BULGE = 1u << 4       /* Figure 2: central bulge vs central gap, against eq 23 */
-};
 
 /* A sweep: one parameter takes a list of values, each an independent run
  * (Figure 3's sigma, Figure 7's eps). Every other value is the scene's. */

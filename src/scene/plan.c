@@ -32,18 +32,10 @@ double adh_plan_start(const adh_config *cfg)
     return isnan(cfg->proto.start) ? adh_protocol_auto_start(&cfg->mat, cfg->proto.step) : cfg->proto.start;
 }
 
-static double deepest_turn(const adh_config *cfg)
-{
-    double t = INFINITY;
-    for (size_t i = 0; i < cfg->proto.nturns; i++)
-        t = fmin(t, cfg->proto.turns[i]);
-    return t;
-}
-
 double adh_plan_rigid_end(const adh_config *cfg)
 {
     double floor_h = 0.7 * cfg->mat.z0;
-    return cfg->proto.nturns ? fmax(deepest_turn(cfg), floor_h) : floor_h;
+    return cfg->proto.nturns ? fmax(adh_protocol_deepest_turn(&cfg->proto), floor_h) : floor_h;
 }
 
 int adh_plan_jobs(const adh_config *cfg)
@@ -93,7 +85,7 @@ static void plan_run(const adh_config *rc, const adh_plan *p, adh_plan_run *r)
         r->unloading_steps = 0;
         return;
     }
-    r->end = p->stop_at_contact ? jump_position(&rc->mat) : deepest_turn(rc);
+    r->end = p->stop_at_contact ? jump_position(&rc->mat) : adh_protocol_deepest_turn(&rc->proto);
     r->loading_steps = 1 + ceil_steps(r->start - r->end, step);
     /* a turn off the step grid adds its own row */
     for (size_t i = 0; i < rc->proto.nturns; i++)
@@ -349,4 +341,33 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         fprintf(f, "stored: %s: %s\n", p->stored[i].what, p->stored[i].why);
     for (size_t i = 0; i < p->nskipped; i++)
         fprintf(f, "skip: %s: %s\n", p->skipped[i].what, p->skipped[i].why);
+}
+
+size_t adh_plan_default_profiles(const adh_material *mat, const adh_protocol_settings *ps, double *out, size_t max)
+{
+    double step = ps->step;
+    if (!(step > 0) || max == 0)
+        return 0;
+    double start = isnan(ps->start) ? adh_protocol_auto_start(mat, step) : ps->start;
+    adh_derived d;
+    adh_material_derive(mat, &d);
+    double lo = ps->nturns ? adh_protocol_deepest_turn(ps) : d.h_star;
+    double hi = 0.5 * start;
+    if (!(hi > lo))
+        hi = start;
+    if (!(hi > lo))
+        return 0;
+    size_t n = 0;
+    for (size_t j = 0; j < max; j++) {
+        double x = max == 1 ? lo : lo + (hi - lo) * (double)j / (double)(max - 1);
+        double k = round((start - x) / step);
+        if (k < 0)
+            k = 0;
+        double h = start - k * step;     /* exactly as the protocol computes it */
+        if (j == 0 && ps->nturns)
+            h = lo;                       /* turns are hit exactly, on their own */
+        if (n == 0 || fabs(out[n - 1] - h) > 0.5 * step)
+            out[n++] = h;
+    }
+    return n;
 }

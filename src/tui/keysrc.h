@@ -1,6 +1,6 @@
 /* Where keys come from: the terminal, or a replay script read whole before
  * the screen opens (so a bad script fails before any terminal change). Both
- * give adh_replay_items; the terminal gives only keys. */
+ * give tui_replay_items; the terminal gives only keys. */
 #ifndef ADH_TUI_KEYSRC_H
 #define ADH_TUI_KEYSRC_H
 

@@ -13,9 +13,11 @@
 #include "adhere/history.h"
 #include "adhere/protocol.h"
 #include "plot/outdir.h"
+#include "cli/plotsetup.h"
 #include "plot/plot.h"
 
-static int write_into(const adh_config *c, const adh_run *run, const char *dir, char *msg, size_t msglen);
+static int write_into(const adh_config *c, const adh_grid *g, const adh_run *run, const char *dir, char *msg,
+                      size_t msglen);
 
 static void add_unique(size_t *idx, size_t *k, size_t cap, size_t i)
 {
@@ -109,7 +111,7 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
         c.proto.nprofiles = np;
         run.profiles = prof;
         run.nprofiles = run.profiles_cap = np;
-        return write_into(&c, &run, dir, msg, msglen);
+        return write_into(&c, s->g, &run, dir, msg, msglen);
     }
     run = *tui_sim_run(s);   /* the drive's record, with the profiles below */
     c.proto.nturns = run.nturns;
@@ -127,10 +129,11 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
     c.proto.nprofiles = np;
     run.profiles = prof;
     run.nprofiles = run.profiles_cap = np;
-    return write_into(&c, &run, dir, msg, msglen);
+    return write_into(&c, s->g, &run, dir, msg, msglen);
 }
 
-static int write_into(const adh_config *c, const adh_run *run, const char *dir, char *msg, size_t msglen)
+static int write_into(const adh_config *c, const adh_grid *g, const adh_run *run, const char *dir, char *msg,
+                      size_t msglen)
 {
     if (adh_outdir_make(dir, msg, msglen) != 0)
         return -1;
@@ -139,7 +142,9 @@ static int write_into(const adh_config *c, const adh_run *run, const char *dir, 
      * is this path's */
     if (adh_outdir_clear(dir, msg, msglen) != 0)
         return -1;
-    int rc = adh_plots_write(c, run, NULL, dir, msg, msglen, NULL, 0);
+    adh_plot_setup ps;
+    cli_plotsetup_fill(c, g, &ps);   /* the session's grid: the profiles' radii */
+    int rc = adh_plots_write(&ps, run, NULL, dir, msg, msglen, NULL, 0);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");
     return rc == 0 ? 0 : -1;

@@ -37,8 +37,7 @@ int main(int argc, char **argv)
     double turn_z0 = argc > 4 ? atof(argv[4]) : -2.0;
     double rmax_l = argc > 5 ? atof(argv[5]) : 12.0;
     adh_material m = adh_material_default();
-    double gamma = m.A / (16.0 * M_PI * m.z0 * m.z0);
-    m.E = gamma * sqrt(m.R / pow(m.z0, 3)) / sigma;
+    m.E = adh_material_modulus_at_sigma(&m, sigma);
     double lat = sqrt(m.R * m.z0);
     double dr = x * adh_edge_zone(&m);
     size_t n = (size_t)ceil(rmax_l * lat / dr);

@@ -155,8 +155,7 @@ static void refused(const char *name, adh_config c, const char *mentions)
 
 static double sigma_to_E(const adh_config *c, double sigma)
 {
-    double gamma = c->mat.A / (16 * M_PI * c->mat.z0 * c->mat.z0);
-    return gamma * sqrt(c->mat.R / pow(c->mat.z0, 3)) / sigma;
+    return adh_material_modulus_at_sigma(&c->mat, sigma);
 }
 
 int main(void)

@@ -17,8 +17,11 @@
 #include "adhere/protocol.h"
 #include "plot/gnuplot.h"
 #include "plot/plot.h"
-#include "plot/plotdata.h"
+#include "plot/speed.h"
+#include "plot/tsv.h"
+#include "scene/plan.h"
 #include "scene/config.h"
+#include "scene/datadir.h"
 #include "tap.h"
 
 static char work[256];
@@ -109,7 +112,8 @@ static int count_matching(const char *dir, const char *part)
 enum { NODES = 60 };
 
 typedef struct synthetic {
-    adh_config cfg;
+    adh_plot_setup ps;
+    char style[300];               /* ps.style */
     adh_run run;
     double store[4][3][NODES];
 } synthetic;
@@ -134,14 +138,14 @@ static void add_row(adh_run *run, double h0, double F, double a, int branch, int
 static void make_synthetic(synthetic *s)
 {
     memset(s, 0, sizeof *s);
-    adh_config_default(&s->cfg);
-    s->cfg.nodes = NODES;
-    s->cfg.spacing = 10e-9;
-    s->cfg.drive_speed = 1e-6;
+    s->ps = (adh_plot_setup){ .mat = adh_material_default(), .figures = ADH_PLOT_ALL, .draw = 1,
+                              .title = "", .drive_speed = 1e-6, .step = 0.05e-9, .nodes = NODES,
+                              .dr = 10e-9, .style = s->style };
+    s->ps.mat.E = 3e8;   /* Figure 4's sigma = 7.50 */
     adh_run_init(&s->run);
     s->run.rows = calloc(400, sizeof *s->run.rows);
     s->run.rows_cap = 400;
-    const adh_material *m = &s->cfg.mat;
+    const adh_material *m = &s->ps.mat;
     const double d = 0.1e-9;
     for (int k = 0; k <= 150; k++) {
         double h0 = 10e-9 - k * d;
@@ -171,7 +175,7 @@ static void make_synthetic(synthetic *s)
         pr->h = s->store[k][1];
         pr->p = s->store[k][2];
         for (size_t n = 0; n < NODES; n++) {
-            double r = adh_profile_radius(&s->cfg, n);
+            double r = adh_plot_radius(&s->ps, n);
             double h = pr->h0 + r * r / (2 * m->R);
             pr->h[n] = h < m->z0 ? m->z0 : h;
             pr->u[n] = pr->h[n] - h;
@@ -295,7 +299,7 @@ static void test_contact_speed(void)
     make_synthetic(&s);
     size_t n = s.run.nrows;
     double *dadh0 = malloc(n * sizeof *dadh0), *dadt = malloc(n * sizeof *dadt);
-    adh_contact_speed(&s.run, 1e-6, dadh0, dadt);
+    adh_speed_stepwise(&s.run, 1e-6, dadh0, dadt);
     /* loading: a = 0.1 um + 30 (2 nm - h0), so da/dh0 = -30, da/dt = +30 um/s */
     size_t load_mid = 100, unload_mid = 151 + 50, out = 10, turn = 151;
     ok_rel(dadh0[load_mid], -30.0, 1e-6, "loading da/dh0");
@@ -304,18 +308,18 @@ static void test_contact_speed(void)
     ok_rel(dadt[unload_mid], -20e-6, 1e-6, "unloading contact line recedes at 20 um/s");
     ok(isnan(dadt[out]), "no speed out of contact");
     ok_rel(dadt[turn], -20e-6, 1e-6, "one-sided at the start of a branch");
-    ok_rel(adh_profile_radius(&s.cfg, 0), 5e-9, 1e-12, "first node at dr/2");
+    ok_rel(adh_plot_radius(&s.ps, 0), 5e-9, 1e-12, "first node at dr/2");
     /* smoothing a steady spreading changes nothing; on a stick-slip staircase
      * it recovers the mean speed the step-by-step derivative hides */
     double *sm = malloc(n * sizeof *sm);
-    adh_contact_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
+    adh_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
     ok_rel(sm[load_mid], 30e-6, 1e-6, "smoothed loading speed of a steady line");
     ok(isnan(sm[out]), "no smoothed speed out of contact");
     for (size_t i = 0; i < n; i++)
         if (s.run.rows[i].path == 0 && s.run.rows[i].a > 0)   /* hop a node every 5 steps */
             s.run.rows[i].a = 0.1e-6 + 10e-9 * floor((2e-9 - s.run.rows[i].h0) / 0.5e-9 + 1e-9);
-    adh_contact_speed(&s.run, 1e-6, dadh0, dadt);
-    adh_contact_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
+    adh_speed_stepwise(&s.run, 1e-6, dadh0, dadt);
+    adh_speed_smoothed(&s.run, 1e-6, 10e-9, 2.0, sm);
     ok(dadt[load_mid] == 0 || dadt[load_mid] > 45e-6,
        "the staircase's step-by-step speed is 0 or a spike (%g)", dadt[load_mid]);
     ok_rel(sm[load_mid], 20e-6, 0.15, "its smoothed speed is the mean 20 um/s");
@@ -360,7 +364,7 @@ static void test_plots(void)
 
     path_in(dir, sizeof dir, work, "plots");
     mkdir(dir, 0755);
-    int rc = adh_plots_write(&s.cfg, &s.run, NULL, dir, msg, sizeof msg, NULL, 0);
+    int rc = adh_plots_write(&s.ps, &s.run, NULL, dir, msg, sizeof msg, NULL, 0);
     ok(rc == 0, "plots written: rc %d, %s", rc, msg);
     check_pngs(dir, 900, 600, "installed style");
     check_tables(dir, &s, "with gnuplot");
@@ -380,7 +384,7 @@ static void test_plots(void)
     double h0, r;
     int b, pa;
     ok(sscanf(line, "%lg\t%d\t%d\t%lg", &h0, &b, &pa, &r) == 4 && h0 == s.run.profiles[0].h0 &&
-       r == adh_profile_radius(&s.cfg, 0), "table numbers round-trip exactly");
+       r == adh_plot_radius(&s.ps, 0), "table numbers round-trip exactly");
 
     /* a style of another size, given as a file */
     char style[300], dir2[300];
@@ -388,10 +392,10 @@ static void test_plots(void)
     f = fopen(style, "w");
     fprintf(f, "set terminal pngcairo size 640,480\n");
     fclose(f);
-    snprintf(s.cfg.gnuplot_style, sizeof s.cfg.gnuplot_style, "%s", style);
+    snprintf(s.style, sizeof s.style, "%s", style);
     path_in(dir2, sizeof dir2, work, "small");
     mkdir(dir2, 0755);
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 0, "custom style: rc %d, %s", rc, msg);
     check_pngs(dir2, 640, 480, "--gnuplot-style");
 
@@ -401,7 +405,7 @@ static void test_plots(void)
     fclose(f);
     path_in(dir2, sizeof dir2, work, "badstyle");
     mkdir(dir2, 0755);
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 3 && strstr(msg, "gnuplot error"), "an error in the style returns 3 and quotes "
        "gnuplot: %s", msg);
     ok(count_matching(dir2, ".png") == 0, "no PNG, not even a temporary one, after an error");
@@ -410,16 +414,16 @@ static void test_plots(void)
     check_tables(dir2, &s, "bad style");
 
     /* a style that does not exist */
-    snprintf(s.cfg.gnuplot_style, sizeof s.cfg.gnuplot_style, "%s/nope.gp", work);
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    snprintf(s.style, sizeof s.style, "%s/nope.gp", work);
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 3 && strstr(msg, "nope.gp"), "a missing style file is named: %s", msg);
-    s.cfg.gnuplot_style[0] = '\0';
+    s.style[0] = '\0';
 
     /* gnuplot missing: exit code 3, tables intact */
     path_in(dir2, sizeof dir2, work, "nognuplot");
     mkdir(dir2, 0755);
     setenv("ADHERE_GNUPLOT", "/nonexistent/gnuplot", 1);
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     unsetenv("ADHERE_GNUPLOT");
     ok(rc == 3 && strstr(msg, "tables written"), "no gnuplot: rc 3 and says so: %s", msg);
     ok(count_matching(dir2, ".png") == 0, "no gnuplot: no PNG");
@@ -428,28 +432,53 @@ static void test_plots(void)
     /* plots off: tables only */
     path_in(dir2, sizeof dir2, work, "noplot");
     mkdir(dir2, 0755);
-    s.cfg.plot = 0;
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    s.ps.draw = 0;
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 0 && count_matching(dir2, ".png") == 0, "--no-plot: rc 0, no PNG");
     check_tables(dir2, &s, "no plot");
-    s.cfg.plot = 1;
+
+    /* a graded grid: each profile row carries its own node's radius, one
+     * row per node of the grid, not of a uniform spacing */
+    double radii[NODES];
+    for (size_t n = 0; n < NODES; n++)
+        radii[n] = 5e-9 * pow(1.05, (double)n) * (double)(n + 1);
+    s.ps.r = radii;
+    path_in(dir2, sizeof dir2, work, "graded");
+    mkdir(dir2, 0755);
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    path_in(p, sizeof p, dir2, "profiles.tsv");
+    f = fopen(p, "r");
+    size_t rows = 0, same = 0;
+    while (f && fgets(line, sizeof line, f)) {
+        if (line[0] == '#' || line[0] == 'h')
+            continue;
+        if (sscanf(line, "%lg\t%d\t%d\t%lg", &h0, &b, &pa, &r) == 4 && r == radii[rows % NODES])
+            same++;
+        rows++;
+    }
+    if (f)
+        fclose(f);
+    ok(rc == 0 && rows == s.run.nprofiles * NODES && same == rows,
+       "graded grid: profiles.tsv has the grid's node radii (%zu of %zu rows)", same, rows);
+    s.ps.r = NULL;
+    s.ps.draw = 1;
 
     /* a selection */
     path_in(dir2, sizeof dir2, work, "select");
     mkdir(dir2, 0755);
-    s.cfg.plots = ADH_PLOT_CONTACT;
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    s.ps.figures = ADH_PLOT_CONTACT;
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     path_in(p, sizeof p, dir2, "contact.png");
     ok(rc == 0 && exists(p) && count_matching(dir2, ".png") == 1,
        "--plots=contact makes contact.png alone");
-    s.cfg.plots = ADH_PLOT_ALL;
+    s.ps.figures = ADH_PLOT_ALL;
 
     /* no profiles stored: profile.png skipped with a note */
     path_in(dir2, sizeof dir2, work, "noprof");
     mkdir(dir2, 0755);
     size_t keep = s.run.nprofiles;
     s.run.nprofiles = 0;
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     path_in(p, sizeof p, dir2, "profile.png");
     ok(rc == 0 && !exists(p) && strstr(msg, "--profiles"),
        "no profiles: profile.png skipped and the message says how: %s", msg);
@@ -464,12 +493,12 @@ static void test_plots(void)
     s.run.turns[1].max_load = -5e-8;
     s.run.turns[1].pulloff_F = -6e-7;
     s.run.turns[1].path = 2;
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
     ok(rc == 0, "two turns: force.png with the adhesion panel: %s", msg);
     s.run.nturns = 1;
 
     /* an unwritable output directory */
-    rc = adh_plots_write(&s.cfg, &s.run, NULL, "/nonexistent/dir", msg, sizeof msg, NULL, 0);
+    rc = adh_plots_write(&s.ps, &s.run, NULL, "/nonexistent/dir", msg, sizeof msg, NULL, 0);
     ok(rc == 2, "an unwritable dir returns 2: %s", msg);
     ok(no_children_left(), "no gnuplot left running");
     free_synthetic(&s);
@@ -495,10 +524,8 @@ static void test_data_dir(void)
         unsetenv("ADHERE_DATADIR");
     ok(adh_data_dir("gnuplot", buf, sizeof buf) == 0, "an installed or source style dir: %s",
        buf);
-    adh_config cfg;
-    adh_config_default(&cfg);
     char msg[256];
-    int rc = adh_plot_style_file(&cfg, buf, sizeof buf, msg, sizeof msg);
+    int rc = adh_plot_style_file("", buf, sizeof buf, msg, sizeof msg);
     ok(rc == 0 && strstr(buf, "style.gp"), "the installed style.gp is found: %s", buf);
 }
 
@@ -507,7 +534,7 @@ static void test_default_profiles(void)
     adh_config cfg;
     adh_config_default(&cfg);
     double pos[8];
-    size_t n = adh_plot_default_profiles(&cfg, pos, 6);
+    size_t n = adh_plan_default_profiles(&cfg.mat, &cfg.proto, pos, 6);
     double start = adh_protocol_auto_start(&cfg.mat, cfg.proto.step);
     ok(n == 6, "six default profile positions (got %zu)", n);
     ok(n && pos[0] == cfg.proto.turns[0], "the first is the turn itself (%g)", n ? pos[0] : 0);
@@ -520,7 +547,7 @@ static void test_default_profiles(void)
     }
     ok(on_grid, "each lies exactly on the drive grid start - k d, rising");
     cfg.proto.nturns = 0;
-    n = adh_plot_default_profiles(&cfg, pos, 4);
+    n = adh_plan_default_profiles(&cfg.mat, &cfg.proto, pos, 4);
     ok(n == 4 && pos[0] > 0, "with no turn they start near the jump separation (%g)",
        n ? pos[0] : 0);
 }

@@ -18,8 +18,7 @@
 static adh_material at_sigma(double sigma)
 {
     adh_material m = adh_material_default();
-    double gamma = m.A / (16.0 * M_PI * m.z0 * m.z0);
-    m.E = gamma * sqrt(m.R / pow(m.z0, 3)) / sigma;
+    m.E = adh_material_modulus_at_sigma(&m, sigma);
     return m;
 }
 
