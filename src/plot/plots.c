@@ -18,6 +18,7 @@
 #include "adhere/params.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
+#include "plot/outdir.h"
 #include "plot/png.h"
 #include "plot/speed.h"
 #include "plot/tsv.h"
