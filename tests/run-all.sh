@@ -13,7 +13,7 @@
 # The run fails on any failure; with CI=true (make deps installs everything
 # the tests need) it also fails on any skip, and when nothing passed.
 BUILD=${1:-build}
-export LC_ALL=C.UTF-8 ADHERE_BIN="${ADHERE_BIN:-$PWD/adhere}" ADHERE_SRC="$PWD" OPENBLAS_NUM_THREADS=1
+export LC_ALL=C.UTF-8 ADHERE_BIN="${ADHERE_BIN:-$PWD/adhere}" ADHERE_SRC="$PWD"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 pass=0 fail=0 skip=0

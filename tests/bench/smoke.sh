@@ -4,7 +4,7 @@
 # (make bench gives the real figures). Prints TAP. BUILD: the build dir.
 set -u
 BUILD=${BUILD:-build}
-export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1}
+
 n=0 failed=0
 ok() { n=$((n + 1)); echo "ok $n - $*"; }
 no() { n=$((n + 1)); failed=$((failed + 1)); echo "not ok $n - $*"; }

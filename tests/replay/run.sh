@@ -26,7 +26,7 @@ bin=${ADHERE_BIN:-$src/adhere}
 update=0
 [ "${1:-}" = --update ] && update=1
 # What a screen looks like must not depend on the caller's terminal.
-export LC_ALL=C.UTF-8 OPENBLAS_NUM_THREADS=1
+export LC_ALL=C.UTF-8
 unset TERM LINES COLUMNS
 work=$(mktemp -d)
 [ -n "${KEEP:-}" ] || trap 'rm -rf "$work"' EXIT

@@ -45,7 +45,7 @@ start() {
     k=$((k + 1))
     sock=adhere-test-$$-$k
     T new-session -d -s t -x 100 -y 32 \
-        "cd '$work' && LC_ALL=C.UTF-8 OPENBLAS_NUM_THREADS=1 '$bin' 2>'$work/stderr'; echo \$? >'$work/exit'; stty -a >'$work/stty'; sleep 60"
+        "cd '$work' && LC_ALL=C.UTF-8 '$bin' 2>'$work/stderr'; echo \$? >'$work/exit'; stty -a >'$work/stty'; sleep 60"
 }
 exit_status() {
     i=0
