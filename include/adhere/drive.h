@@ -16,8 +16,11 @@
  * unloading branch from its snapshot), the dwell, the detection of jump-in,
  * pull-off and jump-out (filled into the run's summary as it goes), and the
  * per-step checks (grid edge, NaN, the cancel flag of the relax settings).
- * The relaxation is its step rule; the static curve (adh_static_*) is a
- * whole-curve continuation and stays behind its own object. No I/O.
+ * Two step rules stand behind it: the relaxation (adh_drive_set: a step
+ * moves the drive and relaxes, the paper's dynamics) and the static
+ * equilibrium curve (adh_drive_set_static: a step is the next accepted
+ * point of the continuation, adhere/static.h, from the protocol's start
+ * down to its deepest turn, through every fold). No I/O.
  *
  * A driver may also step by hand (the TUI's f and b): adh_drive_hand asks
  * for one step approaching or retracting by d from the last row, on the
@@ -38,6 +41,7 @@
 #include "adhere/params.h"
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
+#include "adhere/static.h"
 
 typedef struct adh_drive adh_drive;
 
@@ -71,6 +75,24 @@ void adh_drive_free(adh_drive *d);
  * check of a run is adh_protocol_check). */
 int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings *rs,
                   const adh_protocol_settings *ps, adh_run *run);
+
+/* The static step rule: each step reports the next accepted point of the
+ * equilibrium curve (the first: the start) as a row (iters: Newton
+ * iterations, branch: +1 where h0 falls along the curve, stable: det J > 0),
+ * from the protocol's start (ps->start, NAN automatic with ps->step) down
+ * to its deepest turn (none: ss->h0_end), the last row flagged
+ * ADH_DRIVE_END; then ADH_SUCCESS. The run's jump-in and seconds follow
+ * the curve. Steps by hand, snapshots and adh_drive_next are the
+ * relaxation's. Builds the solver (a dense copy of W) on the first call.
+ * ADH_SUCCESS (the start point is solved, or its failure is the first
+ * step's status), ADH_EINVAL for bad settings, ADH_ENOMEM. */
+int adh_drive_set_static(adh_drive *d, const adh_material *m, const adh_static_settings *ss,
+                         const adh_protocol_settings *ps, adh_run *run);
+/* Where the static curve of protocol ps ends: its deepest turn, or the
+ * static settings' default end without turns. */
+double adh_drive_static_end(const adh_protocol_settings *ps);
+/* The static solver behind the drive (folds, summary), NULL in relaxation. */
+const adh_static *adh_drive_static(const adh_drive *d);
 
 /* One drive step: relaxes the next position, observes it and appends its
  * row to the run. ADH_CONTINUE with the row (adh_drive_row), ADH_SUCCESS

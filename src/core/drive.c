@@ -9,6 +9,7 @@
 #include "adhere/observe.h"
 #include "adhere/rings.h"
 #include "adhere/state.h"
+#include "adhere/static.h"
 #include "adhere/status.h"
 
 typedef enum phase { PH_START = 0, PH_LOAD, PH_TURN, PH_UNLOAD, PH_DONE } phase;
@@ -81,7 +82,13 @@ typedef struct cursor {
 
 struct adh_drive {
     const adh_grid *g;
+    const adh_kernel *k;
     adh_relax *w;
+    /* the static step rule: one accepted point of the equilibrium curve per
+     * step (built on the first adh_drive_set_static: a dense copy of W) */
+    adh_static *sw;
+    int is_static;
+    int static_rc;   /* the status of the point the next step reports */
     adh_material m;
     adh_relax_settings rs;
     adh_protocol_settings ps;
@@ -121,6 +128,7 @@ adh_drive *adh_drive_alloc(const adh_grid *g, const adh_kernel *k)
     if (!d)
         return NULL;
     d->g = g;
+    d->k = k;
     d->w = adh_relax_alloc(g, k);
     if (!d->w) {
         free(d);
@@ -139,6 +147,7 @@ void adh_drive_free(adh_drive *d)
     for (size_t i = 0; i < ADH_MAX_TURNS; i++)
         ts_drop(d->ts[i]);
     adh_relax_free(d->w);
+    adh_static_free(d->sw);
     free(d);
 }
 
@@ -186,6 +195,7 @@ int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings 
 {
     if (!(ps->step > 0) || ps->nturns > ADH_MAX_TURNS || ps->nprofiles > ADH_MAX_PROFILES)
         return ADH_EINVAL;
+    d->is_static = 0;
     d->m = *m;
     d->rs = *rs;
     d->ps = *ps;
@@ -551,9 +561,57 @@ static int complete(adh_drive *d, int rc)
     return ADH_CONTINUE;
 }
 
+/* The static step rule: the next accepted point (the start, solved by
+ * adh_static_set, first) becomes a row, as the relaxation's step does. */
+static int static_step(adh_drive *d, int *row)
+{
+    adh_run *run = d->run;
+    cursor *c = &d->c;
+    int rc = c->row < 0 ? d->static_rc : adh_static_iterate(d->sw);
+    if (rc == ADH_EINTR) {
+        run->interrupted = 1;
+        return finish(d, ADH_EINTR);
+    }
+    if (rc != ADH_SUCCESS && rc != ADH_CONTINUE && rc != ADH_EGRID)
+        return finish(d, rc);
+    adh_obs o;
+    memset(&o, 0, sizeof o);
+    adh_observe(d->g, &d->m, adh_static_state(d->sw), &o);
+    adh_static_point pt = adh_static_current(d->sw);
+    adh_static_result r;
+    adh_static_summary(d->sw, &r);
+    o.seconds = r.seconds - run->seconds;
+    o.iters = pt.newton;
+    o.branch = pt.direction;
+    o.path = 0;
+    o.converged = 1;
+    o.stable = pt.stable;
+    run->iterations += pt.newton;
+    run->seconds = r.seconds;
+    run->jump_in_h0 = r.jump_in_h0;
+    if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a)))
+        return finish(d, ADH_ENAN);
+    if (adh_run_push_row(run, &o) != ADH_SUCCESS)
+        return finish(d, ADH_ENOMEM);
+    c->row = (long)run->nrows - 1;
+    c->events = 0;
+    *row = 1;
+    if (rc == ADH_EGRID)
+        return finish(d, ADH_EGRID);
+    if (rc == ADH_SUCCESS) {
+        /* the curve came down to its end: this row is the last */
+        c->ph = PH_DONE;
+        c->status = ADH_SUCCESS;
+        c->events = ADH_DRIVE_END;
+    }
+    return ADH_CONTINUE;
+}
+
 int adh_drive_iterate(adh_drive *d, size_t max_batch, int *row)
 {
     *row = 0;
+    if (d->is_static)
+        return d->c.ph == PH_DONE ? d->c.status : static_step(d, row);
     if (!d->c.inflight) {
         if (d->c.ph == PH_DONE && !d->c.hand)
             return d->c.status;
@@ -768,4 +826,41 @@ int adh_drive_next(const adh_drive *d, size_t *turn)
     if (more)
         *turn = u + 1;
     return more ? -1 : 0;
+}
+
+int adh_drive_set_static(adh_drive *d, const adh_material *m, const adh_static_settings *ss,
+                         const adh_protocol_settings *ps, adh_run *run)
+{
+    if (!(ps->step > 0))
+        return ADH_EINVAL;
+    if (!d->sw && !(d->sw = adh_static_alloc(d->g, d->k)))
+        return ADH_ENOMEM;
+    adh_static_settings s = *ss;
+    s.h0_start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
+    if (ps->nturns)
+        s.h0_end = adh_protocol_deepest_turn(ps);
+    d->is_static = 1;
+    d->m = *m;
+    d->ps = *ps;
+    d->run = run;
+    d->start = s.h0_start;
+    run->start = s.h0_start;
+    memset(&d->c, 0, sizeof d->c);
+    d->c.ph = PH_START;
+    d->c.row = -1;
+    int rc = adh_static_set(d->sw, m, &s);
+    /* the start point solved: more points follow (ADH_SUCCESS from
+     * adh_static_iterate means the end) */
+    d->static_rc = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;   /* the first step's */
+    return rc == ADH_EINVAL ? ADH_EINVAL : ADH_SUCCESS;
+}
+
+double adh_drive_static_end(const adh_protocol_settings *ps)
+{
+    return ps->nturns ? adh_protocol_deepest_turn(ps) : adh_static_settings_default().h0_end;
+}
+
+const adh_static *adh_drive_static(const adh_drive *d)
+{
+    return d->is_static ? d->sw : NULL;
 }

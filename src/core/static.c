@@ -1,4 +1,5 @@
 #include "adhere/static.h"
+#include "adhere/drive.h"
 #include "adhere/clock.h"
 
 #include <gsl/gsl_cblas.h>
@@ -877,63 +878,50 @@ size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds)
     return w->nfolds_kept;
 }
 
+/* A thin loop over the drive's static step rule (adhere/drive.h): the
+ * batch runner, sweeps, --cost and the TUI get their points from the same
+ * steps. */
+int adh_static_run_protocol(const adh_grid *g, const adh_kernel *k, const adh_material *m,
+                            const adh_static_settings *s, const adh_protocol_settings *ps,
+                            adh_step_cb cb, void *ctx, adh_run *run, adh_static_result *res)
+{
+    adh_drive *d = adh_drive_alloc(g, k);
+    if (!d) {
+        run->status = ADH_ENOMEM;
+        return run->status;
+    }
+    int rc = adh_drive_set_static(d, m, s, ps, run);
+    while (rc == ADH_SUCCESS || rc == ADH_CONTINUE) {
+        if ((rc = adh_drive_step(d)) != ADH_CONTINUE)
+            break;
+        if (cb && cb(adh_drive_row(d), run, ctx)) {
+            run->interrupted = 1;
+            rc = ADH_SUCCESS;
+            break;
+        }
+    }
+    if (rc == ADH_EINTR) {
+        run->interrupted = 1;
+        rc = ADH_SUCCESS;
+    }
+    const adh_static *w = adh_drive_static(d);
+    adh_static_result r;
+    memset(&r, 0, sizeof r);
+    if (w)
+        adh_static_summary(w, &r);
+    if (res)
+        *res = r;
+    run->status = rc;
+    adh_drive_free(d);
+    return rc;
+}
+
 int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
                    const adh_static_settings *s, adh_step_cb cb, void *ctx,
                    adh_run *run, adh_static_result *res)
 {
-    adh_static *w = adh_static_alloc(g, k);
-    if (!w) {
-        run->status = ADH_ENOMEM;
-        return run->status;
-    }
-    double t0 = adh_clock_seconds();
-    int rc = adh_static_set(w, m, s);
-    run->start = w->s.h0_start;
-    for (;;) {
-        if (rc == ADH_EINTR) {
-            run->interrupted = 1;
-            rc = ADH_SUCCESS;
-            break;
-        }
-        if (rc != ADH_SUCCESS && rc != ADH_CONTINUE && rc != ADH_EGRID)
-            break;
-        adh_obs o;
-        memset(&o, 0, sizeof o);
-        adh_observe(g, m, w->st, &o);
-        adh_static_point pt = adh_static_current(w);
-        o.seconds = adh_clock_seconds() - t0;
-        t0 = adh_clock_seconds();
-        o.iters = pt.newton;
-        o.branch = pt.direction;
-        o.path = 0;
-        o.converged = 1;
-        o.stable = pt.stable;
-        run->iterations += pt.newton;
-        int prc = adh_run_push_row(run, &o);
-        if (prc != ADH_SUCCESS) {
-            rc = prc;
-            break;
-        }
-        if (rc == ADH_EGRID)
-            break;
-        if (cb && cb(&o, run, ctx)) {
-            run->interrupted = 1;
-            rc = ADH_SUCCESS;
-            break;
-        }
-        if (w->done)
-            break;
-        rc = adh_static_iterate(w);
-    }
-    if (rc == ADH_CONTINUE)
-        rc = ADH_SUCCESS;
-    adh_static_result r;
-    adh_static_summary(w, &r);
-    if (res)
-        *res = r;
-    run->jump_in_h0 = r.jump_in_h0;
-    run->seconds += r.seconds;
-    run->status = rc;
-    adh_static_free(w);
-    return rc;
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.nturns = 0;   /* the settings' own end */
+    ps.start = s->h0_start;
+    return adh_static_run_protocol(g, k, m, s, &ps, cb, ctx, run, res);
 }

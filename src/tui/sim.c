@@ -15,6 +15,12 @@
 #include "adhere/protocol.h"
 #include "adhere/status.h"
 
+static tui_params_set params_get(const tui_sim *s);
+static int params_check(const tui_params_set *p, adh_mode mode, char *why, size_t whylen);
+static adh_protocol_settings params_protocol(const tui_params_set *p);
+static void drive_attach(tui_sim *s);
+static void sync_turn(tui_sim *s);
+
 /* Turning points deepest last: the order --batch reaches them in. */
 static int cmp_desc(const void *a, const void *b)
 {
@@ -58,8 +64,9 @@ static void curve_drop(tui_sim *s)
 
 double tui_sim_curve_end(const tui_sim *s)
 {
-    /* the curve ends at the deepest turn, as --batch --mode=static's does */
-    return s->nturns == 0 ? adh_static_settings_default().h0_end : s->turns[s->nturns - 1];
+    tui_params_set q = params_get(s);
+    adh_protocol_settings ps = params_protocol(&q);
+    return adh_drive_static_end(&ps);
 }
 
 static int curve_started(const tui_sim *s)
@@ -83,8 +90,8 @@ static void curve_check(tui_sim *s)
 
 static void free_solver(tui_sim *s)
 {
-    adh_static_free(s->sw);
-    s->sw = NULL;
+    adh_drive_free(s->sdrv);
+    s->sdrv = NULL;
     for (int i = 0; i < 2; i++) {
         adh_state_free(s->cprof[i]);
         s->cprof[i] = NULL;
@@ -130,11 +137,6 @@ static void edits_clear(tui_edit *e, size_t *n)
 /* The batch run's own check of grid and protocol, before any solve: a
  * newcomer who sets N = 100 learns the contact will not fit before
  * stepping into it, and a solve is refused, as --batch refuses the run. */
-static tui_params_set params_get(const tui_sim *s);
-static int params_check(const tui_params_set *p, adh_mode mode, char *why, size_t whylen);
-static adh_protocol_settings params_protocol(const tui_params_set *p);
-static void drive_attach(tui_sim *s);
-static void sync_turn(tui_sim *s);
 
 static void check_grid(tui_sim *s)
 {
@@ -656,7 +658,7 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
     } else {
         if (grid_refuses(s, why, whylen) || ensure_solver(s, why, whylen) != 0)
             return -1;
-        if (!s->sw && !(s->sw = adh_static_alloc(s->g, s->k))) {
+        if (!s->sdrv && !(s->sdrv = adh_drive_alloc(s->g, s->k))) {
             snprintf(why, whylen, "out of memory for the static solver (a dense copy of the %zu x %zu kernel): "
                      "try fewer nodes", s->nodes, s->nodes);
             return -1;
@@ -683,21 +685,22 @@ static void keep_profile(tui_sim *s, int which, size_t i, const adh_state *st)
     s->cprof_at[which] = i;
 }
 
-static int curve_push(tui_sim *s, const adh_state *st, const adh_obs *o)
+/* The point the drive just added: shown, and kept as a profile when it is
+ * the first in contact or the lowest force so far. */
+static void curve_pushed(tui_sim *s, const adh_state *st)
 {
-    if (adh_run_push_row(&s->curve, o) != ADH_SUCCESS)
-        return ADH_ENOMEM;
     size_t i = s->curve.nrows - 1;
+    const adh_obs *o = &s->curve.rows[i];
     s->ccur = i;
     if (o->a > 0 && s->cprof_at[PROF_CONTACT] == NO_POINT)
         keep_profile(s, PROF_CONTACT, i, st);
     if (s->cprof_at[PROF_PULLOFF] == NO_POINT || o->F < s->curve.rows[s->cprof_at[PROF_PULLOFF]].F)
         keep_profile(s, PROF_PULLOFF, i, st);
-    return ADH_SUCCESS;
 }
 
-/* One accepted point of the continuation (the start point first), or one
- * move of the cursor over points computed before. */
+/* One accepted point of the continuation (the start point first), from
+ * the drive's static step rule, or one move of the cursor over points
+ * computed before. */
 static int curve_work(tui_sim *s, char *why, size_t whylen)
 {
     s->busy = 0;
@@ -707,62 +710,53 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
         s->walk = 0;
         return ADH_SUCCESS;
     }
-    int rc;
     if (s->curve.nrows == 0) {
+        /* the relaxation's start and deepest turn: the two share an axis,
+         * as in --batch */
+        tui_params_set q = params_get(s);
+        adh_protocol_settings ps = params_protocol(&q);
         adh_static_settings ss = adh_static_settings_default();
-        ss.h0_start = s->start;   /* the relaxation's start: the two share an axis, as in --batch */
-        ss.h0_end = tui_sim_curve_end(s);
         s->ckey.mat = s->mat;
         s->ckey.nodes = s->nodes;
         s->ckey.spacing = tui_sim_spacing(s);
-        s->ckey.start = ss.h0_start;
-        s->ckey.end = ss.h0_end;
-        rc = adh_static_set(s->sw, &s->mat, &ss);
-        if (rc == ADH_SUCCESS)
-            rc = ADH_CONTINUE;
-    } else {
-        rc = adh_static_iterate(s->sw);
+        s->ckey.start = s->start;
+        s->ckey.end = tui_sim_curve_end(s);
+        adh_run_free(&s->curve);
+        adh_run_init(&s->curve);
+        int rc = adh_drive_set_static(s->sdrv, &s->mat, &ss, &ps, &s->curve);
+        if (rc != ADH_SUCCESS) {
+            s->cstatus = rc;
+            snprintf(why, whylen, "the curve cannot start: %s", adh_strerror(rc));
+            return rc;
+        }
     }
     char h0[64];
     adh_format_quantity(s->curve.nrows ? s->curve.rows[s->curve.nrows - 1].h0 : s->start, ADH_Q_LENGTH, 4, h0, sizeof h0);
-    if (rc != ADH_CONTINUE && rc != ADH_SUCCESS && rc != ADH_EGRID) {
-        s->cstatus = rc;
-        adh_static_summary(s->sw, &s->sres);
-        snprintf(why, whylen, "the curve stopped %s h0 = %s: %s; its %zu point%s kept",
-                 s->curve.nrows ? "after" : "at its start,", h0, adh_strerror(rc), s->curve.nrows, s->curve.nrows == 1 ? " is" : "s are");
-        return rc;
+    int row, rc = adh_drive_iterate(s->sdrv, 0, &row);
+    const adh_static *sw = adh_drive_static(s->sdrv);
+    adh_static_summary(sw, &s->sres);
+    if (row) {
+        curve_pushed(s, adh_static_state(sw));
+        if (rc == ADH_CONTINUE && (adh_drive_events(s->sdrv) & ADH_DRIVE_END))
+            rc = ADH_SUCCESS;   /* the curve came down to its end */
     }
-    /* the row as adh_static_run writes it, so the screen and --batch agree */
-    const adh_state *st = adh_static_state(s->sw);
-    adh_static_point pt = adh_static_current(s->sw);
-    adh_obs o;
-    memset(&o, 0, sizeof o);
-    adh_observe(s->g, &s->mat, st, &o);
-    o.seconds = adh_clock_seconds() - s->t0;
-    o.iters = pt.newton;
-    o.branch = pt.direction;
-    o.path = 0;
-    o.converged = 1;
-    o.stable = pt.stable;
-    if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a))) {
-        s->cstatus = ADH_ENAN;
-        snprintf(why, whylen, "the curve stopped after h0 = %s: a non-finite force; its %zu points are kept",
-                 h0, s->curve.nrows);
-        return ADH_ENAN;
-    }
-    if (curve_push(s, st, &o) != ADH_SUCCESS) {
-        s->cstatus = ADH_ENOMEM;
-        snprintf(why, whylen, "out of memory for the curve's points");
-        return ADH_ENOMEM;
-    }
-    adh_static_summary(s->sw, &s->sres);
     s->cstatus = rc;
+    if (rc == ADH_CONTINUE || rc == ADH_SUCCESS)
+        return ADH_SUCCESS;
     if (rc == ADH_EGRID) {
+        const adh_obs *o = &s->curve.rows[s->curve.nrows - 1];
         snprintf(why, whylen, "the curve stops at the grid edge (a = %.3g nm of Rmax = %.3g nm): use more "
-                 "nodes (N) or a larger spacing", o.a * 1e9, s->g->rmax * 1e9);
+                 "nodes (N) or a larger spacing", o->a * 1e9, s->g->rmax * 1e9);
         return ADH_EGRID;
     }
-    return ADH_SUCCESS;
+    if (rc == ADH_ENAN)
+        snprintf(why, whylen, "the curve stopped after h0 = %s: a non-finite force; its %zu points are kept",
+                 h0, s->curve.nrows);
+    else
+        snprintf(why, whylen, "the curve stopped %s h0 = %s: %s; its %zu point%s kept",
+                 s->curve.nrows ? "after" : "at its start,", h0, adh_strerror(rc), s->curve.nrows,
+                 s->curve.nrows == 1 ? " is" : "s are");
+    return rc;
 }
 
 void tui_sim_set_mode(tui_sim *s, adh_mode mode)
@@ -783,10 +777,11 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
 {
     if (which == 2) {
         /* the solver holds the last point, unless a failed step left it elsewhere */
-        if (!s->sw || !s->curve.nrows || !(s->cstatus == ADH_CONTINUE || s->cstatus == ADH_SUCCESS || s->cstatus == ADH_EGRID))
+        if (!s->sdrv || !adh_drive_static(s->sdrv) || !s->curve.nrows ||
+            !(s->cstatus == ADH_CONTINUE || s->cstatus == ADH_SUCCESS || s->cstatus == ADH_EGRID))
             return NULL;
         *at = s->curve.nrows - 1;
-        return adh_static_state(s->sw);
+        return adh_static_state(adh_drive_static(s->sdrv));
     }
     if (which < 0 || which > 1 || s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->curve.nrows)
         return NULL;
@@ -797,7 +792,7 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
 size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last)
 {
     const adh_static_fold *f;
-    size_t n = s->sw && s->curve.nrows ? adh_static_folds(s->sw, &f) : 0;
+    size_t n = s->sdrv && adh_drive_static(s->sdrv) && s->curve.nrows ? adh_static_folds(adh_drive_static(s->sdrv), &f) : 0;
     if (n)
         *last = f[n - 1];
     return n;

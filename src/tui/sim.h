@@ -125,7 +125,7 @@ typedef struct tui_sim {
 
     adh_mode mode;             /* ADH_MODE_RELAX or ADH_MODE_STATIC: what a step does */
     /* static mode: the equilibrium curve */
-    adh_static *sw;            /* built on the first static step (a dense copy of W) */
+    adh_drive *sdrv;           /* the static step rule's drive, built on the first static step (a dense copy of W) */
     adh_run curve;             /* rows: every point computed so far, in curve order */
     size_t ccur;               /* the point shown (when curve.nrows > 0) */
     int walk;                  /* the step in progress only moves the cursor: +1, -1 */

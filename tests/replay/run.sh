@@ -241,6 +241,9 @@ if [ -s "$SB/summary.tsv" ]; then
     nN() { awk -v v="$1" 'BEGIN {printf "%.4g nN", v * 1e9}'; }
     nm() { awk -v v="$1" 'BEGIN {printf "%.4g nm", v * 1e9}'; }
     check "r follows the curve to its end: --batch --mode=static's $pts points" grep -q "point  $pts of $pts," "$ST/static-end.txt"
+    # both step the drive's static rule: the same points, every one (Newton
+    # iteration counts too); no seconds column to mask in the comparison
+    check "and the screen's points are --batch --mode=static's rows, every one" same_rows "$ST/static-rows.tsv" "$SB"
     check "with its $folds folds, jump-in $(nm "$(sval jump_in_h0)") and jump-out $(nm "$(sval jump_out_h0)")" \
         grep -q "folds  $folds; jump-in $(nm "$(sval jump_in_h0)"), jump-out $(nm "$(sval jump_out_h0)")" "$ST/static-end.txt"
     check "and its pull-offs $(nN "$(sval pulloff_F)") (fixed load) and $(nN "$(sval pulloff_F_disp)") (fixed h0)" \
