@@ -294,6 +294,15 @@ adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s)
         goto fail;
     free(h->node);
     h->node = NULL;
+    /* the couplings grew by doubling: hand the slack back */
+    if (h->nfar > 0) {
+        double *K = realloc(h->K, h->nfar * p * p * sizeof *h->K);
+        size_t(*far)[2] = realloc(h->far, h->nfar * sizeof *h->far);
+        if (K)
+            h->K = K;
+        if (far)
+            h->far = far;
+    }
     if (pthread_mutex_init(&h->lock, NULL) != 0)
         goto fail;
     free(lp);
