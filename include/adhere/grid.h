@@ -86,10 +86,10 @@ typedef struct adh_grid_choice {
     double fine;    /* graded: radius of the fine band, m */
     double ratio;   /* graded: growth of the rings past it */
     double rmax;    /* m */
-    int hierarchical; /* hold the kernel as an H-matrix (adhere/hmatrix.h): set
+    int hierarchical; /* hold the kernel as an H^2 matrix (adhere/h2.h): set
                        for graded grids, whose N is past the dense product's
-                       cache cliff: a product takes 0.86 ms dense, 0.10 ms
-                       hierarchical at N = 1310; --operator keeps its own) */
+                       cache cliff: a product takes 0.3-0.9 ms dense, 0.06 ms
+                       H^2 at N = 1310; --operator keeps its own) */
 } adh_grid_choice;
 
 /* The paper's grid (N = 1000 at its scaled spacing) where that resolves the

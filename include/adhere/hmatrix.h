@@ -1,7 +1,8 @@
 /* A hierarchical matrix for a 1-D kernel (hmat-oss): blocks of well
  * separated node clusters stored low-rank (ACA+ to a tolerance), the near
  * field dense. O(N log N) memory and product where a dense matrix is N^2.
- * The core's kernel uses it as its hierarchical storage (adhere/kernel.h). */
+ * The core's kernel uses it as its hmat storage (adhere/kernel.h; its h2
+ * storage, adhere/h2.h, holds less and is faster: README). */
 #ifndef ADHERE_HMATRIX_H
 #define ADHERE_HMATRIX_H
 

@@ -18,12 +18,14 @@ typedef enum adh_kernel_type {
 } adh_kernel_type;
 
 /* How the influence matrix is held: the dense matrix (N^2 numbers, the
- * oracle), or a hierarchical matrix (adhere/hmatrix.h: O(N log N), the
- * product within ~1e-10 of the dense one). Both give the same apply, entry
- * and diagonal. */
+ * oracle), a hierarchical matrix from hmat-oss (adhere/hmatrix.h:
+ * O(N log N)), or an H^2 matrix with nested Chebyshev bases (adhere/h2.h:
+ * O(N), smaller and faster). The hierarchical products agree with the dense
+ * one to ~1e-11; all give the same apply, entry and diagonal. */
 typedef enum adh_kernel_storage {
     ADH_STORAGE_DENSE = 0,
-    ADH_STORAGE_HMAT = 1
+    ADH_STORAGE_HMAT = 1,
+    ADH_STORAGE_H2 = 2
 } adh_kernel_storage;
 
 typedef struct adh_kernel adh_kernel;
@@ -46,9 +48,9 @@ adh_kernel *adh_kernel_alloc_stored_cancel(const adh_grid *g, adh_kernel_type ty
                                            const volatile sig_atomic_t *cancel, int *status);
 adh_kernel_type adh_kernel_kind(const adh_kernel *k);
 adh_kernel_storage adh_kernel_storage_of(const adh_kernel *k);
-/* "dense" or "hmat". */
+/* "dense", "hmat" or "h2". */
 const char *adh_kernel_storage_name(adh_kernel_storage s);
-/* ADH_SUCCESS, or ADH_EINVAL when name is neither "dense" nor "hmat". */
+/* ADH_SUCCESS, or ADH_EINVAL when name is not "dense", "hmat" or "h2". */
 int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s);
 /* Bytes the stored matrix holds. */
 size_t adh_kernel_bytes(const adh_kernel *k);

@@ -44,7 +44,7 @@ static const option_doc options[] = {
     { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M", "graded grid: radius of the fine band (default 1.25 x the contact expected at the deepest turn, JKR or overlap)" },
     { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)" },
     { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M", "graded grid: outer radius Rmax (default the default uniform grid's, 1.5um at R=10um, z0=0.5nm)" },
-    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat", "how the kernel is held: dense matrix or hierarchical (hmat-oss) (default dense; hmat on an automatic graded grid)" },
+    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat|h2", "how the kernel is held: dense matrix, hierarchical by hmat-oss, or H^2 (default dense; h2 on an automatic graded grid)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
     { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)" },
@@ -188,7 +188,7 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
         return 0;
     case OPT_OPERATOR:
         if (adh_kernel_storage_parse(arg, &cfg->storage) != 0) {
-            snprintf(why, n, "--operator: '%s' is not an operator: use dense or hmat", arg);
+            snprintf(why, n, "--operator: '%s' is not an operator: use dense, hmat or h2", arg);
             return 2;
         }
         cfg->storage_given = 1;

@@ -1,10 +1,13 @@
 #include "adhere/kernel.h"
 #include "adhere/status.h"
 
+#include "adhere/h2.h"
 #include "adhere/hmatrix.h"
+#include "adhere/rings.h"
 
 #include <gsl/gsl_cblas.h>
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
 #include <stdlib.h>
@@ -18,7 +21,8 @@ struct adh_kernel {
     double *w;         /* paper: symmetric k-matrix (times dr); ring: full influence matrix */
     adh_kernel_storage storage;
     const adh_grid *g; /* borrowed: hierarchical entries come from its edges */
-    adh_hmatrix *h;    /* hierarchical storage (w is then NULL) */
+    adh_hmatrix *h;    /* hmat-oss storage (w is then NULL) */
+    adh_h2 *h2;        /* H^2 storage (w is then NULL) */
 };
 
 /* Carlson forms keep every digit as the parameter m -> 1 (one_minus_m passed in
@@ -164,6 +168,71 @@ static double hmat_entry(void *ctx, size_t n, size_t j)
     return formula_entry(ctx, n, j);
 }
 
+/* The ring kernel's near field, a block at a time: consecutive columns
+ * share their edges, so a row of nj entries takes nj + 1 disk integrals. */
+static void h2_block(void *ctx, size_t i0, size_t ni, size_t j0, size_t nj, double *out)
+{
+    const adh_kernel *k = ctx;
+    for (size_t i = 0; i < ni; i++) {
+        if (k->type == ADH_KERNEL_PAPER) {
+            for (size_t j = 0; j < nj; j++)
+                out[i * nj + j] = formula_entry(k, i0 + i, j0 + j);
+            continue;
+        }
+        double r = k->r[i0 + i], prev = adh_disk_integral(r, adh_rings_edge(k->g, j0));
+        for (size_t j = 0; j < nj; j++) {
+            double next = adh_disk_integral(r, adh_rings_edge(k->g, j0 + j + 1));
+            out[i * nj + j] = next - prev;
+            prev = next;
+        }
+    }
+}
+
+static double h2_kernel(void *ctx, double r, double t)
+{
+    return kernel_k(r, t);
+}
+
+/* The H^2 operator: the far field of column j is the kernel against
+ * column j's measure, t dt over ring j (Gauss-Legendre, exact for the
+ * interpolating polynomials) or, for the paper's collocation, the point
+ * r_j of weight dr r_j. */
+static adh_h2 *h2_alloc(adh_kernel *k)
+{
+    const adh_grid *g = k->g;
+    size_t n = g->n;
+    adh_h2_settings hs = adh_h2_settings_default();
+    size_t nq = k->type == ADH_KERNEL_PAPER ? 1 : (size_t)hs.order / 2 + 1;
+    double *edge = malloc((n + 1) * sizeof *edge), *qt = malloc(2 * n * nq * sizeof *qt), *qw = qt + n * nq;
+    gsl_integration_glfixed_table *gl = nq > 1 ? gsl_integration_glfixed_table_alloc(nq) : NULL;
+    adh_h2 *h = NULL;
+    if (!edge || !qt || (nq > 1 && !gl))
+        goto done;
+    for (size_t j = 0; j <= n; j++)
+        edge[j] = adh_rings_edge(g, j);
+    for (size_t j = 0; j < n; j++) {
+        if (nq == 1) {
+            qt[j] = g->r[j];
+            qw[j] = k->dr * g->r[j];
+            continue;
+        }
+        for (size_t q = 0; q < nq; q++) {
+            double t, w;
+            gsl_integration_glfixed_point(edge[j], edge[j + 1], q, &t, &w, gl);
+            qt[j * nq + q] = t;
+            qw[j * nq + q] = w * t;
+        }
+    }
+    adh_h2_problem pb = { .n = n, .edge = edge, .x = g->r, .nq = nq, .qt = qt, .qw = qw,
+                          .kernel = h2_kernel, .block = h2_block, .ctx = k };
+    h = adh_h2_alloc(&pb, &hs);
+done:
+    if (gl)
+        gsl_integration_glfixed_table_free(gl);
+    free(edge), free(qt);
+    return h;
+}
+
 adh_kernel *adh_kernel_alloc_stored(const adh_grid *g, adh_kernel_type type, adh_kernel_storage s)
 {
     int status;
@@ -184,9 +253,13 @@ adh_kernel *adh_kernel_alloc_stored_cancel(const adh_grid *g, adh_kernel_type ty
     if (!k)
         return NULL;
     *k = (adh_kernel){ .type = type, .n = g->n, .dr = g->dr, .r = g->r, .storage = s, .g = g };
-    adh_hmatrix_settings hs = adh_hmatrix_settings_default();
-    k->h = adh_hmatrix_alloc(g->n, g->r, hmat_entry, k, &hs);
-    if (!k->h) {
+    if (s == ADH_STORAGE_H2) {
+        k->h2 = h2_alloc(k);
+    } else {
+        adh_hmatrix_settings hs = adh_hmatrix_settings_default();
+        k->h = adh_hmatrix_alloc(g->n, g->r, hmat_entry, k, &hs);
+    }
+    if (!k->h && !k->h2) {
         free(k);
         return NULL;
     }
@@ -200,7 +273,7 @@ adh_kernel_storage adh_kernel_storage_of(const adh_kernel *k)
 
 const char *adh_kernel_storage_name(adh_kernel_storage s)
 {
-    return s == ADH_STORAGE_HMAT ? "hmat" : "dense";
+    return s == ADH_STORAGE_HMAT ? "hmat" : s == ADH_STORAGE_H2 ? "h2" : "dense";
 }
 
 int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s)
@@ -209,6 +282,8 @@ int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s)
         *s = ADH_STORAGE_DENSE;
     else if (strcmp(name, "hmat") == 0)
         *s = ADH_STORAGE_HMAT;
+    else if (strcmp(name, "h2") == 0)
+        *s = ADH_STORAGE_H2;
     else
         return ADH_EINVAL;
     return ADH_SUCCESS;
@@ -216,6 +291,8 @@ int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s)
 
 size_t adh_kernel_bytes(const adh_kernel *k)
 {
+    if (k->h2)
+        return adh_h2_bytes(k->h2);
     return k->h ? adh_hmatrix_bytes(k->h) : k->n * k->n * sizeof *k->w;
 }
 
@@ -229,6 +306,7 @@ void adh_kernel_free(adh_kernel *k)
     if (!k)
         return;
     adh_hmatrix_free(k->h);
+    adh_h2_free(k->h2);
     free(k->w);
     free(k);
 }
@@ -257,6 +335,12 @@ int adh_kernel_parse(const char *name, adh_kernel_type *type)
 void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double *scratch)
 {
     int n = (int)k->n;
+    if (k->h2) {
+        if (adh_h2_apply(k->h2, p, out) != 0)
+            for (int i = 0; i < n; i++)
+                out[i] = NAN;
+        return;
+    }
     if (k->h) {
         /* A failed product must not pass for a deformation. */
         if (adh_hmatrix_apply(k->h, p, out, scratch) != 0)
@@ -275,7 +359,7 @@ void adh_kernel_apply(const adh_kernel *k, const double *p, double *out, double 
 
 double adh_kernel_entry(const adh_kernel *k, size_t n, size_t j)
 {
-    if (k->h)
+    if (k->h || k->h2)
         return formula_entry(k, n, j);
     double w = k->w[n * k->n + j];
     return k->type == ADH_KERNEL_PAPER ? w * k->r[j] : w;

@@ -72,7 +72,7 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
         if (isnan(cfg->grid_radius))
             cfg->grid_radius = gc.rmax;
         if (gc.hierarchical && !cfg->storage_given)
-            cfg->storage = ADH_STORAGE_HMAT;
+            cfg->storage = ADH_STORAGE_H2;
     }
     return 0;
 }

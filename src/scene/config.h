@@ -56,7 +56,7 @@ typedef struct adh_config {
     double spacing;                /* m; NAN = adh_grid_default_rmax / nodes */
     adh_kernel_type kernel;
     int kernel_given;              /* kernel set by a scene or --kernel (the automatic grid keeps it) */
-    adh_kernel_storage storage;    /* dense (default) or hmat */
+    adh_kernel_storage storage;    /* dense (default), hmat or h2 */
     int storage_given;             /* --operator given (the automatic grid keeps it) */
     /* Graded grid (adhere/rings.h): fine rings of the spacing above over
      * [0, fine_band], then widths growing by `growth` out to grid_radius. */

@@ -294,7 +294,7 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         } else {
             fprintf(f, "kernel: %s, N = %zu, spacing %s, Rmax %s; %zu built%s%s\n", adh_kernel_name(cfg->kernel),
                     cfg->nodes, a, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "",
-                    cfg->storage == ADH_STORAGE_HMAT ? ", hierarchical (hmat)" : "");
+                    cfg->storage == ADH_STORAGE_HMAT ? ", hierarchical (hmat)" : cfg->storage == ADH_STORAGE_H2 ? ", hierarchical (h2)" : "");
         }
         adh_grid_report gr;
         adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);

@@ -4,7 +4,9 @@
 # BENCH_CYCLE_N (default 1000; 0 skips) sets the Figure 4 cycle's grid.
 # BENCH_DENSE_MAX (default 10000) is the largest N whose kernel is built
 # dense in the storage benchmark (N^2 x 8 bytes: 0.8 GB at 10^4, 3.2 GB at
-# 2 x 10^4); BENCH_OPERATOR_N (default "1000 3000 10000 30000 100000").
+# 2 x 10^4); BENCH_HMAT_MAX (default 100000) the largest assembled by
+# hmat-oss (70 s at 10^5); BENCH_OPERATOR_N (default "1000 3000 10000 30000
+# 100000").
 BUILD=${1:-build}
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 echo "threads: one per run (OpenBLAS set to 1 thread)"
@@ -14,4 +16,4 @@ echo
 "$BUILD/tests/bench-static"
 echo
 # shellcheck disable=SC2086 # the sizes are words
-"$BUILD/tests/bench-operator" "${BENCH_DENSE_MAX:-10000}" ${BENCH_OPERATOR_N:-1000 3000 10000 30000 100000}
+"$BUILD/tests/bench-operator" "${BENCH_DENSE_MAX:-10000}" "${BENCH_HMAT_MAX:-100000}" ${BENCH_OPERATOR_N:-1000 3000 10000 30000 100000}

@@ -26,5 +26,7 @@ bench() {
 BENCH_N=100 bench relax 1 100
 # the whole static curve at N = 300 (shorter grids do not hold the contact)
 bench static 300
+# the kernel storages at N = 200 and 400 (dense and hmat-oss at 200 only)
+bench operator 200 200 200 400
 echo "1..$n"
 [ "$failed" -eq 0 ]

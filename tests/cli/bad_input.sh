@@ -50,7 +50,7 @@ bad "--growth: 'x' is not allowed" --growth=x
 bad "fine band radius .* too short" --grid=graded --kernel=ring --fine-band=100nm
 bad "grid radius Rmax = .* is too short" --grid=graded --kernel=ring --grid-radius=200nm
 bad "grid radius 6e-07 m is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
-bad "--operator: 'sparse' is not an operator: use dense or hmat" --operator=sparse
+bad "--operator: 'sparse' is not an operator: use dense, hmat or h2" --operator=sparse
 bad "out of the range of finite numbers" -E 1e999
 bad "step d = 0 m is not allowed" --step=0
 bad "more than one scene" fig1 fig2

@@ -50,8 +50,8 @@ has_re fig5 '^skip: reloading per turn: the 8 turns share one loading branch'
 has_re fig6 '^unloading branches: 9 '
 # sigma = 17.4: the paper's grid scaled to R = 1.5 cm (58 nm) is one edge zone
 # wide, so the automatic grid is finer and says it resolves the contact; a
-# uniform one would need over 1000 nodes, so it is graded (ring kernel, hmat)
-has_re fig6 '^kernel: ring, hmat, graded grid of [0-9]+ rings: spacing 2[0-9]\.[0-9]+ nm'
+# uniform one would need over 1000 nodes, so it is graded (ring kernel, h2)
+has_re fig6 '^kernel: ring, h2, graded grid of [0-9]+ rings: spacing 2[0-9]\.[0-9]+ nm'
 has_re fig6 '^resolution: [0-9.]+ nodes across .*, resolved '
 has_re fig4 '^kernel: paper, N = 1000, spacing 1\.5 nm'
 
