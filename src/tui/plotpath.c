@@ -53,13 +53,8 @@ static size_t pick_profiles(const adh_obs *rows, size_t n, const adh_turn_result
 /* Static mode: the whole curve computed so far (the cursor is only where
  * the screen looks), with profiles at the first point in contact, at the
  * pull-off and at the last point: the states the session keeps. */
-static size_t curve_run(const tui_sim *s, adh_run *run, adh_config *c, adh_profile *prof)
+static size_t curve_profiles(const tui_sim *s, const adh_obs *rows, adh_config *c, adh_profile *prof)
 {
-    size_t n;
-    const adh_obs *rows = tui_sim_curve(s, &n);
-    run->rows = (adh_obs *)rows;
-    run->nrows = run->rows_cap = n;
-    run->jump_in_h0 = s->sres.jump_in_h0;
     c->mode = ADH_MODE_STATIC;
     c->proto.nturns = 1;
     c->proto.turns[0] = tui_sim_curve_end(s);
@@ -101,13 +96,8 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
     static adh_run run;   /* large (the turn table); arrays borrowed, never adh_run_free()d */
     static adh_profile prof[ADH_MAX_PROFILES];
     if (s->mode == ADH_MODE_STATIC) {
-        adh_run_init(&run);
-        run.start = s->start;
-        for (size_t i = 0; i < n; i++) {
-            run.iterations += rows[i].iters;
-            run.seconds += rows[i].seconds;
-        }
-        size_t np = curve_run(s, &run, &c, prof);
+        run = s->curve;   /* the static drive's record, with the profiles the session keeps */
+        size_t np = curve_profiles(s, rows, &c, prof);
         c.proto.nprofiles = np;
         run.profiles = prof;
         run.nprofiles = run.profiles_cap = np;
