@@ -47,6 +47,9 @@ double adh_grid_edge_spacing(adh_grid_use use);
 /* The nodes a grid may have at all (flags, scene files, the TUI's N). */
 #define ADH_GRID_NODES_MIN 10
 #define ADH_GRID_NODES_MAX 20000
+/* ADH_SUCCESS, or ADH_EINVAL with "N = 5 nodes is not allowed: use 10 to
+ * 20000 nodes": the one check of N, for the run's check and every parser. */
+int adh_grid_nodes_check(long n, char *why, size_t whylen);
 
 typedef struct adh_grid_report {
     size_t n;             /* nodes */

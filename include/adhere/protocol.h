@@ -14,13 +14,19 @@
 #include "adhere/relax.h"
 #include "adhere/run.h"
 
+/* The longest dwell at a turn, in iterations (adh_protocol_check). */
+#define ADH_PROTOCOL_MAX_DWELL 100000000
+/* ADH_SUCCESS, or ADH_EINVAL with a sentence: the one check of a dwell,
+ * for the run's check and every parser. */
+int adh_protocol_dwell_check(long dwell, char *why, size_t whylen);
+
 typedef struct adh_protocol_settings {
     double start;                 /* first position, m; NAN = automatic */
     double step;                  /* drive step d > 0, m */
     size_t nturns;                /* 0: load until contact, no unloading */
     double turns[ADH_MAX_TURNS];  /* turning points, m (any order) */
     int unload;                   /* 1: unload from every turn */
-    size_t dwell;                 /* iterations held at a turn before unloading */
+    size_t dwell;                 /* iterations held at a turn before unloading (up to ADH_PROTOCOL_MAX_DWELL) */
     size_t nprofiles;             /* positions where h, u, p are stored */
     double profiles[ADH_MAX_PROFILES];
 } adh_protocol_settings;

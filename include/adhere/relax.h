@@ -22,6 +22,12 @@ typedef enum adh_mix_rule {
                               plus a fraction of the previous update */
 } adh_mix_rule;
 
+/* The largest iteration cap a step may have (adh_relax_settings_validate). */
+#define ADH_RELAX_MAX_ITER_CAP 100000000
+/* ADH_SUCCESS, or ADH_EINVAL with a sentence: the one check of the cap,
+ * for adh_relax_settings_validate and every parser. */
+int adh_relax_max_iter_check(long max_iter, char *why, size_t whylen);
+
 typedef struct adh_relax_settings {
     adh_mix_rule rule;
     double momentum;     /* momentum rule: fraction of the previous update kept */
@@ -32,7 +38,7 @@ typedef struct adh_relax_settings {
     double mix_min;      /* the ratio never falls below this */
     double mix_down;     /* factor applied on oscillation or growth */
     double mix_up;       /* factor applied otherwise, up to mix_max */
-    size_t max_iter;     /* cap per drive step; reaching it is reported */
+    size_t max_iter;     /* cap per drive step (1 to ADH_RELAX_MAX_ITER_CAP); reaching it is reported */
     /* The caller's cancel flag, or NULL: polled before every iteration, and
      * nonzero stops the solver with ADH_EINTR (a signal handler may set it;
      * the core itself knows nothing of signals). */

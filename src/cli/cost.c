@@ -2,6 +2,7 @@
 #include "adhere/cycle.h"
 #include "adhere/clock.h"
 
+#include <limits.h>
 #include <math.h>
 #include <pthread.h>
 #include <signal.h>
@@ -147,7 +148,8 @@ static int parse_lists(const cli_options *cli, double *eps, size_t *neps, size_t
     snprintf(buf, sizeof buf, "%s", nl);
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         long v;
-        if (*nnodes == MAX_NODES || adh_parse_count(t, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX, &v, msg, sizeof msg) != 0) {
+        if (*nnodes == MAX_NODES || adh_parse_count(t, 0, LONG_MAX, &v, msg, sizeof msg) != 0 ||
+            adh_grid_nodes_check(v, msg, sizeof msg) != ADH_SUCCESS) {
             snprintf(why, n, "--cost-nodes: %s", *nnodes == MAX_NODES ? "at most 16 values" : msg);
             return 2;
         }

@@ -1,6 +1,7 @@
 #include "cli/options.h"
 
 #include <getopt.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -196,9 +197,12 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
     case 'N':
     case OPT_MAX_ITER:
     case OPT_DWELL: {
-        long lo = c == 'N' ? ADH_GRID_NODES_MIN : c == OPT_DWELL ? 0 : 1;
-        long hi = c == 'N' ? ADH_GRID_NODES_MAX : 100000000;
-        if (adh_parse_count(arg, lo, hi, &v, msg, sizeof msg) != 0) {
+        /* a whole number here; its limits are the run's check's
+         * (adh_drive_check), the one place every driver meets them */
+        if (adh_parse_count(arg, 0, LONG_MAX, &v, msg, sizeof msg) != 0 ||
+            (c == 'N' ? adh_grid_nodes_check(v, msg, sizeof msg)
+             : c == OPT_DWELL ? adh_protocol_dwell_check(v, msg, sizeof msg)
+                              : adh_relax_max_iter_check(v, msg, sizeof msg)) != ADH_SUCCESS) {
             snprintf(why, n, "--%s: %s", name, msg);
             return 2;
         }

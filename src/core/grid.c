@@ -172,3 +172,11 @@ void adh_grid_free(adh_grid *g)
     free(g->r);
     free(g);
 }
+
+int adh_grid_nodes_check(long n, char *why, size_t whylen)
+{
+    if (n >= ADH_GRID_NODES_MIN && n <= ADH_GRID_NODES_MAX)
+        return ADH_SUCCESS;
+    snprintf(why, whylen, "N = %ld nodes is not allowed: use %d to %d nodes", n, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX);
+    return ADH_EINVAL;
+}

@@ -3,6 +3,7 @@
 #include "adhere/drive.h"
 #include "adhere/rings.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,6 +53,8 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
         snprintf(why, whylen, "step d = %g m is not allowed: it must be from 1e-14 to 1e-8 m (0.01 pm to 10 nm)", ps->step);
         return ADH_EINVAL;
     }
+    if (adh_protocol_dwell_check(ps->dwell > ADH_PROTOCOL_MAX_DWELL ? LONG_MAX : (long)ps->dwell, why, whylen) != ADH_SUCCESS)
+        return ADH_EINVAL;
     if (ps->nturns > ADH_MAX_TURNS) {
         snprintf(why, whylen, "%zu turning points given: at most %d are allowed", ps->nturns, ADH_MAX_TURNS);
         return ADH_EINVAL;
@@ -97,10 +100,8 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     }
     if (!g)
         return ADH_SUCCESS;   /* rigid spheres: no grid to check */
-    if (g->n < ADH_GRID_NODES_MIN || g->n > ADH_GRID_NODES_MAX) {
-        snprintf(why, whylen, "N = %zu nodes is not allowed: use %d to %d nodes", g->n, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX);
+    if (adh_grid_nodes_check(g->n > (size_t)LONG_MAX ? LONG_MAX : (long)g->n, why, whylen) != ADH_SUCCESS)
         return ADH_EINVAL;
-    }
     double lateral = sqrt(m->R * m->z0);
     if (g->dr > 0.25 * lateral) {
         snprintf(why, whylen, "grid spacing %g m is too coarse: the contact edge needs at most 0.25 sqrt(R z0) = %g m; use more nodes", g->dr, 0.25 * lateral);
@@ -201,4 +202,12 @@ double adh_static_hysteresis_area(const adh_run *curve, double step)
             area += (fmax_ - fmin_) * step;
     }
     return area;
+}
+
+int adh_protocol_dwell_check(long dwell, char *why, size_t whylen)
+{
+    if (dwell >= 0 && dwell <= ADH_PROTOCOL_MAX_DWELL)
+        return ADH_SUCCESS;
+    snprintf(why, whylen, "dwell = %ld iterations is not allowed: use 0 to %d", dwell, ADH_PROTOCOL_MAX_DWELL);
+    return ADH_EINVAL;
 }

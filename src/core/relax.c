@@ -2,6 +2,7 @@
 #include "adhere/rings.h"
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -95,10 +96,8 @@ int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t w
                  s->momentum);
         return ADH_EINVAL;
     }
-    if (s->max_iter < 1) {
-        snprintf(why, whylen, "the iteration cap must be at least 1");
+    if (adh_relax_max_iter_check(s->max_iter > ADH_RELAX_MAX_ITER_CAP ? LONG_MAX : (long)s->max_iter, why, whylen) != ADH_SUCCESS)
         return ADH_EINVAL;
-    }
     return ADH_SUCCESS;
 }
 
@@ -424,4 +423,13 @@ double adh_relax_change(const adh_relax *w)
 double adh_relax_mixing(const adh_relax *w)
 {
     return w->st->mix;
+}
+
+int adh_relax_max_iter_check(long max_iter, char *why, size_t whylen)
+{
+    if (max_iter >= 1 && max_iter <= ADH_RELAX_MAX_ITER_CAP)
+        return ADH_SUCCESS;
+    snprintf(why, whylen, "max-iter = %ld is not allowed: the iteration cap must be from 1 to %d", max_iter,
+             ADH_RELAX_MAX_ITER_CAP);
+    return ADH_EINVAL;
 }

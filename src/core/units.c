@@ -2,6 +2,7 @@
 #include "adhere/status.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -147,9 +148,14 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
 int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, size_t whylen)
 {
     char buf[64];
+    char range[96];
+    if (hi == LONG_MAX)
+        snprintf(range, sizeof range, "a whole number%s", lo > 0 ? " above 0" : "");
+    else
+        snprintf(range, sizeof range, "a whole number from %ld to %ld", lo, hi);
     if (!text || strlen(text) >= sizeof buf - 1) {
         if (why)
-            snprintf(why, whylen, "expected a whole number from %ld to %ld", lo, hi);
+            snprintf(why, whylen, "expected %s", range);
         return ADH_EINVAL;
     }
     trim(text, buf, sizeof buf);
@@ -158,8 +164,7 @@ int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, 
     long v = strtol(buf, &end, 10);
     if (end == buf || *end || errno == ERANGE || v < lo || v > hi) {
         if (why)
-            snprintf(why, whylen, "'%s' is not allowed: expected a whole number from %ld to %ld",
-                     buf, lo, hi);
+            snprintf(why, whylen, "'%s' is not allowed: expected %s", buf, range);
         return ADH_EINVAL;
     }
     *value = v;

@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <ini.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +11,7 @@
 #include <strings.h>
 #include <sys/stat.h>
 
+#include "adhere/status.h"
 #include "adhere/grid.h"
 #include "adhere/units.h"
 
@@ -176,8 +178,11 @@ static int handler(void *user, const char *section, const char *name, const char
             c->nodes_given = 0;
             return 1;
         }
-        if (adh_parse_count(value, nodes ? ADH_GRID_NODES_MIN : !strcmp(name, "dwell") ? 0 : 1,
-                            nodes ? ADH_GRID_NODES_MAX : jobs ? 64 : 100000000, &n, msg, sizeof msg) != 0)
+        /* a whole number here; the run's limits are adh_drive_check's */
+        if (adh_parse_count(value, jobs ? 1 : 0, jobs ? 64 : LONG_MAX, &n, msg, sizeof msg) != 0 ||
+            (nodes ? adh_grid_nodes_check(n, msg, sizeof msg)
+             : !strcmp(name, "dwell") ? adh_protocol_dwell_check(n, msg, sizeof msg)
+             : !jobs ? adh_relax_max_iter_check(n, msg, sizeof msg) : ADH_SUCCESS) != ADH_SUCCESS)
             return fail(sp, "%s: %s", name, msg);
         if (nodes) c->nodes = (size_t)n, c->nodes_given = 1;
         else if (jobs) c->sweep.jobs = (int)n;

@@ -1,6 +1,7 @@
 #include "tui/sim.h"
 #include "adhere/clock.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -448,8 +449,8 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
     case P_D: np.step = v; break;
     case P_N:
         /* the limits are the core's (adh_drive_check); a count beyond any
-         * grid is held at 1e12 so that it converts, and is refused there */
-        np.nodes = v >= 0 ? (size_t)llround(fmin(v, 1e12)) : 0;
+         * grid is held at 1e18 so that it converts, and is refused there */
+        np.nodes = v >= 0 ? (size_t)llround(fmin(v, 1e18)) : 0;
         break;
     case P_SPACING: np.spacing = v; break;
     case P_TURN:
@@ -509,7 +510,7 @@ int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t why
     double v;
     if (p == P_N) {
         long n;
-        if (adh_parse_count(text, ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX, &n, msg, sizeof msg) != 0) {
+        if (adh_parse_count(text, 0, LONG_MAX, &n, msg, sizeof msg) != 0) {
             snprintf(why, whylen, "%s: %s", pi->name, msg);
             return -1;
         }

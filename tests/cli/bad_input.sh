@@ -22,8 +22,8 @@ bad "E (modulus) = -1e+09 Pa is out of range" -E -1GPa
 bad "A (Hamaker constant) = 0 J is out of range" -A 0
 bad "z0 (equilibrium separation) = -5e-10 m" --z0=-0.5nm
 bad "R (effective radius) = 0 m is out of range" -R 0
-bad "expected a whole number from 10 to 20000" -N 5
-bad "expected a whole number from 10 to 20000" --nodes=1e3
+bad "N = 5 nodes is not allowed: use 10 to 20000 nodes" -N 5
+bad "'1e3' is not allowed: expected a whole number" --nodes=1e3
 bad "too coarse" -N 20
 bad "too short" --spacing=0.5nm
 bad "unknown option '--frobnicate'" --frobnicate

@@ -24,7 +24,7 @@ check "at 4 pm the contact radius at the turn is within 1 % of the static curve'
     awk -F'\t' '/^(paper|ring)/ {e[$1 $2 ($3 < 5e-12)] = $20} END {for (k in e) if (substr(k, length(k)) == "1" && !(e[k] < 0.01 && e[k] < e[substr(k, 1, length(k)-1) "0"])) bad = 1; exit bad || length(e) != 8}' "$out/cost.tsv"
 check "cost.png is a PNG" sh -c "head -c 8 '$out/cost.png' | od -An -c | grep -q 'P   N   G'"
 "$ADHERE" --cost -q --cost-nodes=5 >/dev/null 2>"$TMP/stderr"; rc=$?
-check "--cost-nodes=5 is refused with exit 2 ($(cat "$TMP/stderr"))" sh -c "[ $rc -eq 2 ] && grep -q 'from 10 to 20000' '$TMP/stderr'"
+check "--cost-nodes=5 is refused with exit 2 ($(cat "$TMP/stderr"))" sh -c "[ $rc -eq 2 ] && grep -q 'use 10 to 20000 nodes' '$TMP/stderr'"
 "$ADHERE" --cost -q --cost-eps=0 >/dev/null 2>"$TMP/stderr"; rc=$?
 check "--cost-eps=0 is refused with exit 2 ($(cat "$TMP/stderr"))" [ "$rc" -eq 2 ]
 done_testing

@@ -79,7 +79,7 @@ bad 2 "'fast' is not a mode" <<'S'
 [scene]
 mode = fast
 S
-bad 2 "from 10 to 20000" <<'S'
+bad 2 "use 10 to 20000 nodes" <<'S'
 [grid]
 nodes = 9
 S

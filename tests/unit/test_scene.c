@@ -201,7 +201,7 @@ static void bad_scenes(void)
     bad("[material]\n\nA = abc\n", 3, "'abc' is not a number");
     bad("[material]\nR = 5parsecs\n", 2, "unknown unit");
     bad("[material]\nE = 5nm\n", 2, "a pressure");
-    bad("[grid]\nnodes = 5\n", 2, "from 10 to 20000");
+    bad("[grid]\nnodes = 5\n", 2, "use 10 to 20000 nodes");
     bad("[protocol]\nturns = -1nm, xyz\n", 2, "'xyz' is not a number");
     bad("[scene]\nmode = fast\n", 2, "not a mode");
     bad("[output]\nplots = force, pie\n", 2, "'pie' is not a plot");
