@@ -59,6 +59,9 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
     int graded_ok = !(cfg->kernel_given && cfg->kernel == ADH_KERNEL_PAPER);
     if (adh_grid_choose(&soft.mat, adh_config_grid_use(cfg), deepest, graded_ok, &gc, why, whylen) != ADH_SUCCESS)
         return -1;
+    cfg->asked = (adh_grid_asked){ cfg->nodes, cfg->spacing, cfg->fine_band, cfg->growth, cfg->grid_radius,
+                                   cfg->kernel, cfg->storage, cfg->graded };
+    cfg->grid_chosen = 1;
     cfg->nodes = gc.n;
     cfg->spacing = gc.dr;
     if (gc.graded) {
@@ -74,6 +77,29 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
         if (gc.hierarchical && !cfg->storage_given)
             cfg->storage = ADH_STORAGE_H2;
     }
+    return 0;
+}
+
+int adh_config_grid_again(adh_config *cfg, char *why, size_t whylen)
+{
+    if (!cfg->grid_chosen)
+        return 0;
+    const adh_grid_asked *a = &cfg->asked;
+    cfg->nodes = a->nodes;
+    cfg->spacing = a->spacing;
+    cfg->fine_band = a->fine_band;
+    cfg->growth = a->growth;
+    cfg->grid_radius = a->grid_radius;
+    cfg->kernel = a->kernel;
+    cfg->storage = a->storage;
+    cfg->graded = a->graded;
+    cfg->grid_chosen = 0;
+    if (adh_config_grid(cfg, why, whylen) != 0) {
+        /* refused: the asked grid stays, and the choice is still the config's */
+        cfg->grid_chosen = 1;
+        return -1;
+    }
+    cfg->grid_chosen = 1;
     return 0;
 }
 

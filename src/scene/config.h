@@ -48,6 +48,16 @@ typedef struct adh_sweep {
     adh_sweep_plot plot;
 } adh_sweep;
 
+/* The grid settings as they were asked for, before adh_config_grid chose
+ * (what a new choice starts from when the material changes). */
+typedef struct adh_grid_asked {
+    size_t nodes;
+    double spacing, fine_band, growth, grid_radius;
+    adh_kernel_type kernel;
+    adh_kernel_storage storage;
+    int graded;
+} adh_grid_asked;
+
 typedef struct adh_config {
     adh_material mat;
     size_t nodes;                  /* N */
@@ -64,6 +74,8 @@ typedef struct adh_config {
     double fine_band;              /* m; NAN = 1.25 x the contact expected at the deepest turn */
     double growth;                 /* ratio, 1 to 1.1 (default 1.05) */
     double grid_radius;            /* m; NAN = the default uniform grid's radius */
+    int grid_chosen;               /* adh_config_grid chose the grid (from `asked`) */
+    adh_grid_asked asked;
     adh_relax_settings relax;
     adh_protocol_settings proto;
     adh_mode mode;
@@ -125,6 +137,11 @@ adh_grid_use adh_config_grid_use(const adh_config *c);
  * for the run with the narrowest edge zone (a sweep shares one kernel).
  * 0, or -1 with why when that grid is beyond the budget. */
 int adh_config_grid(adh_config *cfg, char *why, size_t whylen);
+/* The choice again, from the settings asked for, for the material and
+ * protocol cfg holds now (the TUI, after an edit of E, A, z0, R or the
+ * turns). Nothing happens for a grid that was given. 0, or -1 with why
+ * (cfg then keeps the grid asked for). */
+int adh_config_grid_again(adh_config *cfg, char *why, size_t whylen);
 
 /* The grid spacing in use: the explicit one, or the paper's grid radius
  * (scaled with sqrt(R z0)) divided by N. */

@@ -109,12 +109,16 @@ static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w
         const tui_param_info *pi = &tui_params[p];
         int sel = p == v->sel;
         char lab[32];
-        /* the spacing follows sqrt(R z0) until it is set */
-        int autosp = p == P_SPACING && isnan(s->spacing);
+        /* N and the spacing follow the material until one is set: the
+         * grid --batch would choose (graded rings for soft contacts) */
+        const char *how = "";
+        if (p == P_SPACING && (isnan(s->spacing) || s->grid_auto))
+            how = s->grid.graded ? ", graded" : ", auto";
+        else if (p == P_N && s->grid.graded)
+            how = s->grid.storage == ADH_STORAGE_H2 ? " (rings, H2)" : " (rings)";
         char pv[96];
         put(y + 1 + p, x, w, sel ? A_REVERSE : A_NORMAL, "%s%s %s %s%s", sel ? " >" : "  ",
-            pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), pad(val, 12, pv, sizeof pv), pi->what,
-            autosp ? ", auto" : "");
+            pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), pad(val, 12, pv, sizeof pv), pi->what, how);
     }
 }
 

@@ -17,7 +17,8 @@
 #include "adhere/status.h"
 
 static tui_params_set params_get(const tui_sim *s);
-static int params_check(const tui_params_set *p, adh_mode mode, char *why, size_t whylen);
+static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode, char *why, size_t whylen);
+static void params_config(const tui_sim *s, const tui_params_set *p, adh_config *c);
 static adh_protocol_settings params_protocol(const tui_params_set *p);
 static void drive_attach(tui_sim *s);
 static void sync_turn(tui_sim *s);
@@ -44,6 +45,74 @@ const tui_param_info tui_params[P_COUNT] = {
 double tui_sim_spacing(const tui_sim *s)
 {
     return isnan(s->spacing) ? adh_grid_spacing_for(&s->mat, s->nodes) : s->spacing;
+}
+
+/* The configuration of the grid for parameters p: the one the screen
+ * started from, with p's material, protocol and grid. */
+static void params_config(const tui_sim *s, const tui_params_set *p, adh_config *c)
+{
+    *c = s->base;
+    c->mat = p->mat;
+    c->relax = p->relax;
+    c->mode = s->mode;
+    c->proto.step = p->step;
+    c->proto.start = p->start_opt;
+    c->proto.nturns = p->nturns;
+    memcpy(c->proto.turns, p->turns, p->nturns * sizeof *p->turns);
+    c->nodes = p->nodes;
+    c->spacing = p->spacing;
+    c->graded = p->grid.graded;
+    c->fine_band = p->grid.fine_band;
+    c->growth = p->grid.growth;
+    c->grid_radius = p->grid.grid_radius;
+    c->kernel = p->grid.kernel;
+    c->storage = p->grid.storage;
+    c->grid_chosen = p->grid_auto;
+}
+
+/* The grid as it stands in c (N and the spacing resolved). */
+static adh_grid_asked grid_of(const adh_config *c)
+{
+    return (adh_grid_asked){ c->nodes, adh_config_spacing(c), c->fine_band, c->growth, c->grid_radius,
+                             c->kernel, c->storage, c->graded };
+}
+
+static int same_grid(const adh_grid_asked *a, const adh_grid_asked *b)
+{
+    /* NAN fields (automatic band, radius) are equal when both are NAN */
+    #define SAME(x) (a->x == b->x || (isnan((double)a->x) && isnan((double)b->x)))
+    return a->nodes == b->nodes && SAME(spacing) && SAME(fine_band) && SAME(growth) && SAME(grid_radius) &&
+           a->kernel == b->kernel && a->storage == b->storage && a->graded == b->graded;
+    #undef SAME
+}
+
+/* Whether the grid on screen is another than the one the kernel was
+ * built for. */
+static int grid_changed(const tui_sim *s)
+{
+    tui_params_set p = params_get(s);
+    adh_config c;
+    params_config(s, &p, &c);
+    adh_grid_asked now = grid_of(&c);
+    return !same_grid(&s->built, &now);
+}
+
+/* A grid that follows the material chooses again for p, as --batch would
+ * for these parameters; a refusal keeps the grid asked for and says why
+ * (solves are then refused). */
+static void params_regrid(const tui_sim *s, tui_params_set *p, char *why, size_t whylen)
+{
+    why[0] = '\0';
+    if (!p->grid_auto)
+        return;
+    adh_config c;
+    params_config(s, p, &c);
+    if (adh_config_grid_again(&c, why, whylen) == 0)
+        why[0] = '\0';
+    p->nodes = c.nodes;
+    p->spacing = c.spacing;
+    p->grid = (adh_grid_asked){ c.nodes, c.spacing, c.fine_band, c.growth, c.grid_radius, c.kernel, c.storage,
+                                c.graded };
 }
 
 enum { PROF_CONTACT = 0, PROF_PULLOFF = 1 };
@@ -145,7 +214,9 @@ static void check_grid(tui_sim *s)
                    tui_sim_spacing(s), &s->gridres);
     /* the resolution itself is shown on the Derived panel's E* line */
     tui_params_set p = params_get(s);
-    if (params_check(&p, s->mode, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
+    if (s->gridchoice[0])   /* no grid resolves this material within the budget */
+        snprintf(s->gridwarn, sizeof s->gridwarn, "%s", s->gridchoice);
+    else if (params_check(s, &p, s->mode, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
         s->gridwarn[0] = '\0';
 }
 
@@ -173,12 +244,12 @@ static void new_path(tui_sim *s)
         adh_history_clear(s->path.hist);
     adh_run_free(&s->path.run);
     adh_run_init(&s->path.run);
-    if (s->drv && !(s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s)))
+    if (s->drv && !grid_changed(s))
         drive_attach(s);
     /* An automatic spacing follows sqrt(R z0): when R or z0 moved it, the
      * grid is a different grid and the kernel must follow. E and A never
      * get here with a changed spacing, so they never rebuild it. */
-    if (s->g && (s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s)))
+    if (s->g && grid_changed(s))
         s->grid_stale = 1;
     check_grid(s);
     curve_check(s);
@@ -193,6 +264,10 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
     s->nodes = cfg->nodes;
     s->spacing = cfg->spacing;
     s->kernel = cfg->kernel;
+    s->base = *cfg;
+    s->grid_auto = cfg->grid_chosen;
+    s->grid = (adh_grid_asked){ cfg->nodes, cfg->spacing, cfg->fine_band, cfg->growth, cfg->grid_radius,
+                                cfg->kernel, cfg->storage, cfg->graded };
     s->relax = cfg->relax;
     s->step = cfg->proto.step;
     s->start_opt = cfg->proto.start;
@@ -202,7 +277,7 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
     s->tcur = 0;
     s->turn = s->nturns ? s->turns[0] : NAN;
     tui_params_set p = params_get(s);
-    if (params_check(&p, cfg->mode, why, whylen) == ADH_EINVAL)
+    if (params_check(s, &p, cfg->mode, why, whylen) == ADH_EINVAL)
         return -1;
     derive(s);
     s->grid_stale = 1;
@@ -247,9 +322,15 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
     if (s->drv && !s->grid_stale)
         return 0;
     free_solver(s);
-    s->g = adh_grid_alloc(s->nodes, tui_sim_spacing(s));
-    s->k = s->g ? adh_kernel_alloc(s->g, s->kernel) : NULL;
+    /* the grid, kernel and operator --batch builds for these parameters */
+    tui_params_set p = params_get(s);
+    adh_config c;
+    params_config(s, &p, &c);
+    int st;
+    s->g = adh_config_grid_alloc(&c);
+    s->k = s->g ? adh_config_kernel_alloc(&c, s->g, &st) : NULL;
     s->drv = s->k ? adh_drive_alloc(s->g, s->k) : NULL;
+    s->built = grid_of(&c);
     if (!s->drv) {
         free_solver(s);
         snprintf(why, whylen, "out of memory for a grid of N = %zu nodes: try fewer", s->nodes);
@@ -262,8 +343,8 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
 
 static tui_params_set params_get(const tui_sim *s)
 {
-    tui_params_set p = { s->mat, s->nodes, s->spacing, s->step, s->start_opt, s->turn, s->start, s->relax,
-                         { 0 }, s->nturns, s->tcur };
+    tui_params_set p = { s->mat, s->nodes, s->spacing, s->step, s->start_opt, s->turn, s->start, s->grid_auto,
+                         s->grid, s->relax, { 0 }, s->nturns, s->tcur };
     memcpy(p.turns, s->turns, s->nturns * sizeof *s->turns);
     return p;
 }
@@ -294,6 +375,8 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
     s->mat = e.par.mat;
     s->nodes = e.par.nodes;
     s->spacing = e.par.spacing;
+    s->grid_auto = e.par.grid_auto;
+    s->grid = e.par.grid;
     s->step = e.par.step;
     s->start_opt = e.par.start_opt;
     s->turn = e.par.turn;
@@ -305,7 +388,7 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
     derive(s);
     s->warn[0] = '\0';
     if (s->g)
-        s->grid_stale = s->g->n != s->nodes || s->g->dr != tui_sim_spacing(s);
+        s->grid_stale = grid_changed(s);
     if (s->drv && !s->grid_stale) {
         drive_attach(s);
     } else if (path_length(s)) {
@@ -428,16 +511,32 @@ static double params_spacing(const tui_params_set *p)
 /* The core's one check of every limit, the one --batch and scene files
  * meet: ADH_EINVAL refuses an edit; ADH_EGRID (a grid that cannot hold
  * the run) lets it through, shown, and a solve is refused until mended. */
-static int params_check(const tui_params_set *p, adh_mode mode, char *why, size_t whylen)
+static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode, char *why, size_t whylen)
 {
     adh_protocol_settings ps = params_protocol(p);
-    adh_grid g = adh_drive_uniform_grid(p->nodes, params_spacing(p));
-    return adh_drive_check(&p->mat, &p->relax, &ps, mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX,
-                           &g, why, whylen);
+    adh_grid_use use = mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
+    if (!p->grid.graded) {
+        adh_grid g = adh_drive_uniform_grid(p->nodes, params_spacing(p));
+        return adh_drive_check(&p->mat, &p->relax, &ps, use, &g, why, whylen);
+    }
+    /* rings: the check reads their edges (cheap to lay out; no kernel) */
+    adh_config c;
+    params_config(s, p, &c);
+    int rc = ADH_EGRID;
+    if (adh_config_grid_check(&c, why, whylen) != 0)
+        return ADH_EINVAL;
+    adh_grid *g = adh_config_grid_alloc(&c);
+    if (!g)
+        snprintf(why, whylen, "out of memory for a graded grid of %zu rings", p->nodes);
+    else
+        rc = adh_drive_check(&p->mat, &p->relax, &ps, use, g, why, whylen);
+    adh_grid_free(g);
+    return rc;
 }
 
 static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
 {
+    char choice[512];
     const char *name = tui_params[p].name;
     tui_params_set np = params_get(s);
     switch (p) {
@@ -470,8 +569,22 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
         snprintf(why, whylen, "%s cannot be set", name);
         return -1;
     }
+    if (p == P_N || p == P_SPACING) {
+        /* a grid given: uniform, with the kernel and operator asked for, as
+         * --batch -N/--spacing builds it */
+        const adh_config *b = &s->base;
+        np.grid_auto = 0;
+        np.grid.graded = b->grid_chosen ? b->asked.graded : b->graded;
+        np.grid.kernel = b->grid_chosen ? b->asked.kernel : b->kernel;
+        np.grid.storage = b->grid_chosen ? b->asked.storage : b->storage;
+        if (s->grid.graded && !np.grid.graded && p == P_N)
+            np.spacing = NAN;   /* N uniform nodes at the scaled spacing, not N rings' fine width */
+        choice[0] = '\0';
+    } else if (p <= P_R) {
+        params_regrid(s, &np, choice, sizeof choice);   /* the grid follows the material, as --batch's would */
+    }
     char msg[512];
-    if (params_check(&np, s->mode, msg, sizeof msg) == ADH_EINVAL) {
+    if (params_check(s, &np, s->mode, msg, sizeof msg) == ADH_EINVAL) {
         snprintf(why, whylen, "%s", msg);
         return -1;
     }
@@ -480,6 +593,10 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
     s->step = np.step;
     s->nodes = np.nodes;
     s->spacing = np.spacing;
+    s->grid_auto = np.grid_auto;
+    s->grid = np.grid;
+    if (p == P_N || p == P_SPACING || p <= P_R)
+        snprintf(s->gridchoice, sizeof s->gridchoice, "%s", choice);
     s->turn = np.turn;
     memcpy(s->turns, np.turns, np.nturns * sizeof *s->turns);
     s->nturns = np.nturns;

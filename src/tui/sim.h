@@ -65,6 +65,8 @@ typedef struct tui_params_set {
     adh_material mat;
     size_t nodes;
     double spacing, step, start_opt, turn, start;
+    int grid_auto;                 /* the grid follows the material (adh_config_grid_again) */
+    adh_grid_asked grid;           /* the grid in use besides N and the spacing: graded, band, kernel, operator */
     adh_relax_settings relax;
     double turns[ADH_MAX_TURNS];   /* every turning point, shallowest first */
     size_t nturns, tcur;           /* how many; the one r is on (turn = turns[tcur]) */
@@ -93,8 +95,13 @@ typedef struct tui_sim {
     adh_derived der;
     tui_models models;
     size_t nodes;
-    double spacing;            /* NAN: scaled with sqrt(R z0) */
+    double spacing;            /* NAN: scaled with sqrt(R z0); graded: the fine rings' width */
     adh_kernel_type kernel;
+    int grid_auto;             /* no N or spacing given: the grid is chosen for the material, as --batch's */
+    adh_grid_asked grid;       /* graded or not, its band, growth and radius, kernel, operator */
+    adh_config base;           /* the configuration the screen started from (its grid as asked) */
+    adh_grid_asked built;      /* the grid the kernel was built for (N, spacing in it) */
+    char gridchoice[512];      /* why no grid could be chosen for the material on screen; "" */
     adh_relax_settings relax;
     double step;               /* d */
     double start_opt;          /* the configured start, NAN = automatic */
@@ -112,7 +119,7 @@ typedef struct tui_sim {
     tui_edit undo_edits[TUI_MAX_EDITS], redo_edits[TUI_MAX_EDITS];
     size_t nundo_edits, nredo_edits;
     int edit_moved;            /* the last undo/redo took back an edit: its parameter, else -1 */
-    int grid_stale;            /* N or spacing changed since the kernel was built */
+    int grid_stale;            /* the grid changed since the kernel was built */
 
     /* the step being solved */
     int busy;

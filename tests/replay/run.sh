@@ -184,6 +184,18 @@ check "one state back, r unloads turn 8 again to the same pull-off" grep -q "pul
 check "the panel shows the turn of the branch on screen (turn 1: 2 nm, turn 8: -10 nm)" \
     sh -c "grep -q '^  turn  2 nm ' '$M/multiturn-pull1.txt' && grep -q '^  turn  -10 nm ' '$M/multiturn-pull8.txt'"
 
+# A soft material set on the screen gets --batch's grid for it, and the
+# same rows.
+SO=$W/soft
+SB2=$work/soft-batch
+# shellcheck disable=SC2046
+"$bin" --batch -E 0.1GPa $(cat "$here/cases/soft.args") --no-plot -o "$SB2" </dev/null >/dev/null 2>"$SB2.err"
+check "E 300 MPa: the paper's 1000 uniform nodes" grep -q "^  N     1000 *grid nodes *branch\|^  N     1000 " "$SO/soft-0.txt"
+check ":set E 0.1GPa: graded rings, as --batch chooses ($(awk -F'\t' '$1 == "nodes" {print $2}' "$SB2/summary.tsv" 2>/dev/null) of them)" \
+    grep -q "^  N     $(awk -F'\t' '$1 == "nodes" {print $2}' "$SB2/summary.tsv" 2>/dev/null) *grid nodes (rings" "$SO/soft-E.txt"
+check "and resolved" grep -q "resolved" "$SO/soft-E.txt"
+check "the soft contact's rows are --batch -E 0.1GPa's, every one" same_rows "$SO/soft-rows.tsv" "$SB2"
+
 U=$W/undo
 check "undo gives back the earlier state's numbers exactly" [ "$(state "$U/undo-back.txt")" = "$(state "$U/undo-32.txt")" ]
 check "redo gives back the later state's numbers exactly" [ "$(state "$U/undo-redo.txt")" = "$(state "$U/undo-33.txt")" ]

@@ -66,6 +66,8 @@ static void default_scene_is_builtin_default(void)
     ok(same(c.mat.E, d.mat.E) && same(c.mat.A, d.mat.A) && same(c.mat.z0, d.mat.z0) && same(c.mat.R, d.mat.R),
        "default.scene's material is the built-in default's (E = %g)", c.mat.E);
     ok(c.nodes == d.nodes && isnan(c.spacing) && c.kernel == d.kernel, "default.scene's grid is the built-in default's");
+    ok(!c.kernel_given && !c.nodes_given, "default.scene leaves N and the kernel to the automatic grid, as the built-in "
+       "default does (so a soft material gets graded rings)");
     ok(same(c.relax.eps, d.relax.eps) && c.relax.max_iter == d.relax.max_iter, "default.scene's solver is the built-in default's");
     ok(isnan(c.proto.start) && same(c.proto.step, d.proto.step) && c.proto.nturns == 1 &&
        same(c.proto.turns[0], d.proto.turns[0]) && c.proto.unload == 1 && c.proto.dwell == 0 && c.proto.nprofiles == 0,
