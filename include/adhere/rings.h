@@ -45,6 +45,10 @@ size_t adh_rings_locate(const adh_grid *g, double r);
 double adh_rings_fine_radius(const adh_grid *g);
 /* Whether a contact of radius a (m) lies inside the fine band. */
 int adh_rings_resolves(const adh_grid *g, double a);
+/* Why a run whose contact radius reached a stopped on g (the drive's grid
+ * check, ADH_EGRID): the grid's edge (0.9 Rmax) or the end of a graded
+ * grid's fine band, with the numbers and what to change, as a sentence. */
+void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len);
 
 /* The paper's convergence measure [sum (du_n)^2]^(1/2) / N generalised:
  * du taken as constant over each ring and sampled on the uniform grid of the

@@ -13,6 +13,7 @@
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
 #include "adhere/protocol.h"
+#include "adhere/rings.h"
 #include "adhere/status.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
@@ -181,6 +182,12 @@ int cli_batch_main(const cli_options *cli)
         else
             snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run.nrows);
         status = cli_interrupt_exit();
+    } else if (rc == ADH_EGRID && run.nrows) {
+        char edge[400];
+        adh_rings_edge_sentence(g, run.rows[run.nrows - 1].a, edge, sizeof edge);
+        snprintf(note, sizeof note, "the run stopped after %zu steps at h0 = %g m: %s", run.nrows,
+                 run.rows[run.nrows - 1].h0, edge);
+        status = CLI_EXIT_SOLVER;
     } else if (rc != ADH_SUCCESS) {
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run.nrows, adh_strerror(rc));
         status = CLI_EXIT_SOLVER;

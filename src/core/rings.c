@@ -220,3 +220,16 @@ int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, cha
     }
     return ADH_SUCCESS;
 }
+
+void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len)
+{
+    if (a >= 0.9 * g->rmax)
+        snprintf(buf, len, "the contact radius a = %.4g m reached the grid's edge (0.9 Rmax = %.4g m): use more "
+                 "nodes or a larger spacing (-N, --spacing; a graded grid: --grid-radius)", a, 0.9 * g->rmax);
+    else if (!adh_rings_resolves(g, a))
+        snprintf(buf, len, "the contact radius a = %.4g m left the graded grid's fine band (%.4g m), where the rings "
+                 "grow too coarse for the contact's edge: widen it (--fine-band) or turn shallower", a,
+                 adh_rings_fine_radius(g));
+    else
+        snprintf(buf, len, "the contact radius a = %.4g m is within the grid (Rmax = %.4g m)", a, g->rmax);
+}

@@ -14,6 +14,7 @@
 #include "adhere/models.h"
 #include "adhere/observe.h"
 #include "adhere/protocol.h"
+#include "adhere/rings.h"
 #include "adhere/status.h"
 
 static tui_params_set params_get(const tui_sim *s);
@@ -862,9 +863,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     if (rc == ADH_CONTINUE || rc == ADH_SUCCESS)
         return ADH_SUCCESS;
     if (rc == ADH_EGRID) {
-        const adh_obs *o = &s->curve.rows[s->curve.nrows - 1];
-        snprintf(why, whylen, "the curve stops at the grid edge (a = %.3g nm of Rmax = %.3g nm): use more "
-                 "nodes (N) or a larger spacing", o->a * 1e9, s->g->rmax * 1e9);
+        adh_rings_edge_sentence(s->g, s->curve.rows[s->curve.nrows - 1].a, why, whylen);
         return ADH_EGRID;
     }
     if (rc == ADH_ENAN)
@@ -994,9 +993,7 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
     if (rc == ADH_SUCCESS)
         return TUI_SIM_DONE;
     if (rc == ADH_EGRID) {
-        const adh_obs *o = adh_drive_row(s->drv);
-        snprintf(why, whylen, "the contact reaches the grid edge (a = %.3g nm, Rmax = %.3g nm): "
-                 "use more nodes (N) or a larger spacing", o->a * 1e9, s->g->rmax * 1e9);
+        adh_rings_edge_sentence(s->g, adh_drive_row(s->drv)->a, why, whylen);
         return ADH_EGRID;
     }
     snprintf(why, whylen, "the step failed: %s; back to the previous state (try a smaller d or a larger eps)",

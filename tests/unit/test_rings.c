@@ -125,6 +125,17 @@ int main(void)
     m.E = 1e11; /* sigma = 0.02: stiff, the overlap rule is the larger */
     ok_rel(adh_rings_contact_estimate(&m, h0), hertz, 1e-12, "stiff spheres: the overlap rule's estimate");
 
+    /* why a run stopped at the grid: the fine band's end, the grid's edge */
+    char msg[400];
+    double fr = adh_rings_fine_radius(g);
+    adh_rings_edge_sentence(g, 1.01 * fr, msg, sizeof msg);
+    ok(strstr(msg, "left the graded grid's fine band") && strstr(msg, "--fine-band"),
+       "a contact past the fine band is named so, with what to change: %s", msg);
+    adh_rings_edge_sentence(g, 0.95 * g->rmax, msg, sizeof msg);
+    ok(strstr(msg, "reached the grid's edge") && strstr(msg, "0.9 Rmax"), "a contact at 0.95 Rmax: %s", msg);
+    adh_rings_edge_sentence(u, 0.5 * u->rmax, msg, sizeof msg);
+    ok(strstr(msg, "within the grid") != NULL, "a uniform grid has no band to leave: %s", msg);
+
     adh_grid_free(a3), adh_grid_free(a4);
     free(du), free(edge);
     adh_kernel_free(ku), adh_kernel_free(ke);
