@@ -438,6 +438,19 @@ static int begin(adh_drive *d)
     }
 }
 
+/* Appends a solved step's row to the run (both step rules): ADH_SUCCESS,
+ * ADH_ENAN for a non-finite force, deformation or radius, ADH_ENOMEM. */
+static int push_row(adh_drive *d, const adh_obs *o)
+{
+    if (!(isfinite(o->F) && isfinite(o->delta) && isfinite(o->a)))
+        return ADH_ENAN;
+    if (adh_run_push_row(d->run, o) != ADH_SUCCESS)
+        return ADH_ENOMEM;
+    d->c.row = (long)d->run->nrows - 1;
+    d->c.events = 0;
+    return ADH_SUCCESS;
+}
+
 /* Whether the protocol's next step begins another branch (or none is
  * left): the loading branch has reached its last turn (or, without turns,
  * contact), an unloading branch jumped out or its next position is past
@@ -488,12 +501,8 @@ static int complete(adh_drive *d, int rc)
     }
     if (rc != ADH_SUCCESS)
         return finish(d, rc);
-    if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a)))
-        return finish(d, ADH_ENAN);
-    if (adh_run_push_row(run, &o) != ADH_SUCCESS)
-        return finish(d, ADH_ENOMEM);
-    c->row = (long)run->nrows - 1;
-    c->events = 0;
+    if ((rc = push_row(d, &o)) != ADH_SUCCESS)
+        return finish(d, rc);
     if (wants_profile(&d->ps, c->h0) && adh_run_push_profile(run, s, c->branch, c->path) != ADH_SUCCESS)
         return finish(d, ADH_ENOMEM);
     /* the contact at the grid edge, or past a graded grid's fine band */
@@ -567,7 +576,7 @@ static int static_step(adh_drive *d, int *row)
 {
     adh_run *run = d->run;
     cursor *c = &d->c;
-    int rc = c->row < 0 ? d->static_rc : adh_static_iterate(d->sw);
+    int rc = c->row < 0 ? d->static_rc : adh_static_iterate(d->sw), rc2;
     if (rc == ADH_EINTR) {
         run->interrupted = 1;
         return finish(d, ADH_EINTR);
@@ -589,12 +598,8 @@ static int static_step(adh_drive *d, int *row)
     run->iterations += pt.newton;
     run->seconds = r.seconds;
     run->jump_in_h0 = r.jump_in_h0;
-    if (!(isfinite(o.F) && isfinite(o.delta) && isfinite(o.a)))
-        return finish(d, ADH_ENAN);
-    if (adh_run_push_row(run, &o) != ADH_SUCCESS)
-        return finish(d, ADH_ENOMEM);
-    c->row = (long)run->nrows - 1;
-    c->events = 0;
+    if ((rc2 = push_row(d, &o)) != ADH_SUCCESS)
+        return finish(d, rc2);
     *row = 1;
     if (rc == ADH_EGRID)
         return finish(d, ADH_EGRID);
