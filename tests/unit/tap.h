@@ -21,6 +21,18 @@ __attribute__((constructor)) static void tap_datadir(void)
 }
 #endif
 
+/* The library runs as adhere runs it: one BLAS thread per run (src/cli/
+ * main.c says why; idle OpenBLAS threads spin, and two test programs at
+ * once on two cores made test_equilibrium five times slower). Set through
+ * OpenBLAS's call, weak for the reference BLAS of make check-fp; the
+ * environment is left as it is. */
+void openblas_set_num_threads(int num_threads) __attribute__((weak));
+__attribute__((constructor)) static void tap_one_blas_thread(void)
+{
+    if (openblas_set_num_threads)
+        openblas_set_num_threads(1);
+}
+
 #define ok(cond, ...) tap_ok(!!(cond), __FILE__, __LINE__, __VA_ARGS__)
 
 static inline int tap_ok(int pass, const char *file, int line, const char *fmt, ...)
