@@ -153,6 +153,18 @@ static int length_list(const char *name, const char *arg, double *out, size_t ca
     return 0;
 }
 
+/* A grid setting, by the function scene files use too. */
+static int grid_setting(int (*set)(adh_config *, const char *, char *, size_t), adh_config *cfg,
+                        const char *name, const char *arg, char *why, size_t n)
+{
+    char msg[256];
+    if (set(cfg, arg, msg, sizeof msg) != 0) {
+        snprintf(why, n, "--%s: %s", name, msg);
+        return 2;
+    }
+    return 0;
+}
+
 static int apply(cli_options *cli, int c, const char *arg, const char *name, char *why, size_t n)
 {
     adh_config *cfg = &cli->cfg;
@@ -168,32 +180,11 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
     case OPT_SPACING: return quantity(name, arg, ADH_Q_LENGTH, &cfg->spacing, why, n);
     case OPT_START: return quantity(name, arg, ADH_Q_LENGTH, &cfg->proto.start, why, n);
     case OPT_DRIVE_SPEED: return quantity(name, arg, ADH_Q_SPEED, &cfg->drive_speed, why, n);
-    case OPT_FINE_BAND: return quantity(name, arg, ADH_Q_LENGTH, &cfg->fine_band, why, n);
-    case OPT_GRID_RADIUS: return quantity(name, arg, ADH_Q_LENGTH, &cfg->grid_radius, why, n);
-    case OPT_GROWTH: {
-        char *end;
-        double g = strtod(arg, &end);
-        if (end == arg || *end || !(g >= 1.0 && g <= ADH_RINGS_MAX_RATIO)) {
-            snprintf(why, n, "--growth: '%s' is not allowed: use a ratio from 1 to %g", arg, ADH_RINGS_MAX_RATIO);
-            return 2;
-        }
-        cfg->growth = g;
-        return 0;
-    }
-    case OPT_GRID:
-        if (strcmp(arg, "uniform") != 0 && strcmp(arg, "graded") != 0) {
-            snprintf(why, n, "--grid: '%s' is not a grid: use uniform or graded", arg);
-            return 2;
-        }
-        cfg->graded = strcmp(arg, "graded") == 0;
-        return 0;
-    case OPT_OPERATOR:
-        if (adh_kernel_storage_parse(arg, &cfg->storage) != 0) {
-            snprintf(why, n, "--operator: '%s' is not an operator: use dense, hmat or h2", arg);
-            return 2;
-        }
-        cfg->storage_given = 1;
-        return 0;
+    case OPT_GRID: return grid_setting(adh_config_set_grid, cfg, name, arg, why, n);
+    case OPT_FINE_BAND: return grid_setting(adh_config_set_fine_band, cfg, name, arg, why, n);
+    case OPT_GROWTH: return grid_setting(adh_config_set_growth, cfg, name, arg, why, n);
+    case OPT_GRID_RADIUS: return grid_setting(adh_config_set_grid_radius, cfg, name, arg, why, n);
+    case OPT_OPERATOR: return grid_setting(adh_config_set_operator, cfg, name, arg, why, n);
     case 'N':
     case OPT_MAX_ITER:
     case OPT_DWELL: {

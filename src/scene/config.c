@@ -7,6 +7,7 @@
 #include "adhere/grid.h"
 #include "adhere/models.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 void adh_config_default(adh_config *c)
 {
@@ -126,12 +127,78 @@ int adh_config_grid_check(const adh_config *c, char *why, size_t whylen)
 {
     if (!c->graded)
         return 0;
-    if (c->kernel == ADH_KERNEL_PAPER) {
-        snprintf(why, whylen, "--grid=graded is not allowed with --kernel=paper: the paper's kernel assumes equal cells; use --kernel=ring");
+    if (!adh_config_kernel_fits(c->kernel, c->graded)) {
+        snprintf(why, whylen, "--grid=graded is not allowed with --kernel=paper (in a scene: grid = graded with "
+                 "kernel = paper, the default): the paper's kernel assumes equal cells; use --kernel=ring "
+                 "(kernel = ring)");
         return -1;
     }
     adh_rings_spec s = adh_config_rings(c);
     return adh_rings_spec_validate(&s, why, whylen) == ADH_SUCCESS ? 0 : -1;
+}
+
+int adh_config_kernel_fits(adh_kernel_type kernel, int graded)
+{
+    return !(graded && kernel == ADH_KERNEL_PAPER);
+}
+
+int adh_config_set_grid(adh_config *c, const char *text, char *why, size_t whylen)
+{
+    if (strcmp(text, "uniform") != 0 && strcmp(text, "graded") != 0) {
+        snprintf(why, whylen, "'%s' is not a grid: use uniform or graded", text);
+        return -1;
+    }
+    c->graded = strcmp(text, "graded") == 0;
+    return 0;
+}
+
+/* A radius of the graded grid: a length above 0. */
+static int radius(const char *text, double *out, char *why, size_t whylen)
+{
+    double v;
+    if (adh_parse_quantity(text, ADH_Q_LENGTH, &v, why, whylen) != 0)
+        return -1;
+    if (!(v > 0)) {
+        snprintf(why, whylen, "'%s' is not allowed: use a length above 0", text);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int adh_config_set_fine_band(adh_config *c, const char *text, char *why, size_t whylen)
+{
+    return radius(text, &c->fine_band, why, whylen);
+}
+
+int adh_config_set_grid_radius(adh_config *c, const char *text, char *why, size_t whylen)
+{
+    return radius(text, &c->grid_radius, why, whylen);
+}
+
+int adh_config_set_growth(adh_config *c, const char *text, char *why, size_t whylen)
+{
+    double g = NAN;
+    /* the ratio's limits are the rings spec's: asked of a spec that is
+     * valid but for its ratio */
+    int number = adh_parse_quantity(text, ADH_Q_NONE, &g, NULL, 0) == 0;
+    adh_rings_spec s = { .dr = 1, .fine = 1, .ratio = g, .rmax = 1 };
+    if (!number || adh_rings_spec_validate(&s, NULL, 0) != ADH_SUCCESS) {
+        snprintf(why, whylen, "'%s' is not allowed: use a ratio from 1 to %g", text, ADH_RINGS_MAX_RATIO);
+        return -1;
+    }
+    c->growth = g;
+    return 0;
+}
+
+int adh_config_set_operator(adh_config *c, const char *text, char *why, size_t whylen)
+{
+    if (adh_kernel_storage_parse(text, &c->storage) != 0) {
+        snprintf(why, whylen, "'%s' is not an operator: use dense, hmat or h2", text);
+        return -1;
+    }
+    c->storage_given = 1;
+    return 0;
 }
 
 adh_grid *adh_config_grid_alloc(const adh_config *c)

@@ -119,6 +119,22 @@ adh_rings_spec adh_config_rings(const adh_config *c);
  * make a grid (a graded grid with the paper's kernel, a bad ratio...). */
 int adh_config_grid_check(const adh_config *c, char *why, size_t whylen);
 
+/* The grid's settings from text, one function each for --grid, --fine-band,
+ * --growth, --grid-radius and --operator and the scene keys that mirror
+ * them: 0, or -1 with why naming the value and what is allowed (the caller
+ * prefixes the flag or key). The fine band and the grid radius must be
+ * lengths above 0 here; how they fit the spacing and each other is
+ * adh_config_grid_check's. An operator set here is kept by the automatic
+ * grid (storage_given). */
+int adh_config_set_grid(adh_config *c, const char *text, char *why, size_t whylen);
+int adh_config_set_fine_band(adh_config *c, const char *text, char *why, size_t whylen);
+int adh_config_set_growth(adh_config *c, const char *text, char *why, size_t whylen);
+int adh_config_set_grid_radius(adh_config *c, const char *text, char *why, size_t whylen);
+int adh_config_set_operator(adh_config *c, const char *text, char *why, size_t whylen);
+/* Whether the kernel can be used on the grid: the paper's assumes equal
+ * cells, so not on a graded one. */
+int adh_config_kernel_fits(adh_kernel_type kernel, int graded);
+
 /* Name of a sweep parameter as scenes and tables spell it ("E", "sigma",
  * "eps"), "" for none. */
 const char *adh_sweep_name(adh_sweep_kind kind);

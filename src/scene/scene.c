@@ -21,12 +21,13 @@ typedef struct scene_parse {
     char why[512];
     int line;                    /* line of the first error, from inih */
     int unload_given;            /* an explicit unload = wins over the one turns implies */
+    int kernel_given, grid_given; /* in this scene: together they must fit (adh_config_kernel_fits) */
     char seen[128][64];          /* "section.key" already given: duplicates are errors */
     size_t nseen;
 } scene_parse;
 
 typedef enum { K_LEN, K_PRESS, K_ENERGY, K_SPEED, K_COUNT, K_LENLIST, K_KERNEL, K_MODE, K_MIXING, K_FRACTION,
-               K_PLOTS, K_BOOL, K_TEXT, K_SWEEP, K_SWEEP_PLOT } key_kind;
+               K_PLOTS, K_BOOL, K_TEXT, K_SWEEP, K_SWEEP_PLOT, K_GRID } key_kind;
 
 typedef struct scene_key {
     const char *section, *key;
@@ -39,6 +40,8 @@ static const scene_key keys[] = {
     { "material", "E", K_PRESS }, { "material", "A", K_ENERGY },
     { "material", "z0", K_LEN }, { "material", "R", K_LEN },
     { "grid", "nodes", K_COUNT }, { "grid", "spacing", K_LEN }, { "grid", "kernel", K_KERNEL },
+    { "grid", "grid", K_GRID }, { "grid", "fine_band", K_GRID }, { "grid", "growth", K_GRID },
+    { "grid", "radius", K_GRID }, { "grid", "operator", K_GRID },
     { "solver", "eps", K_LEN }, { "solver", "max_iter", K_COUNT },
     { "solver", "mixing", K_MIXING }, { "solver", "momentum", K_FRACTION },
     { "protocol", "start", K_LEN }, { "protocol", "step", K_LEN }, { "protocol", "turns", K_LENLIST },
@@ -117,6 +120,46 @@ static int parse_sweep(scene_parse *sp, const char *name, const char *value)
         }
     sw->kind = kind;
     return 1;
+}
+
+/* A scene that gives both the kernel and the grid must not pair the
+ * paper's kernel with graded rings (as the flags must not); refused at the
+ * later of the two keys. */
+static int kernel_fits(scene_parse *sp, const char *name, const char *value)
+{
+    if (!sp->kernel_given || !sp->grid_given || adh_config_kernel_fits(sp->cfg->kernel, sp->cfg->graded))
+        return 1;
+    return fail(sp, !strcmp(name, "kernel") ? "%s: '%s' is not allowed with grid = graded: the paper's kernel "
+                "assumes equal cells; use kernel = ring" : "%s: '%s' is not allowed with kernel = paper: the "
+                "paper's kernel assumes equal cells; use kernel = ring", name, value);
+}
+
+/* [grid] grid, fine_band, growth, radius, operator: as the flags --grid,
+ * --fine-band, --growth, --grid-radius and --operator, by the same
+ * functions; auto (fine band, radius) is the default. */
+static int grid_key(scene_parse *sp, const char *name, const char *value)
+{
+    adh_config *c = sp->cfg;
+    char msg[256];
+    int band = !strcmp(name, "fine_band"), radius = !strcmp(name, "radius");
+    if ((band || radius) && strcasecmp(value, "auto") == 0) {
+        *(band ? &c->fine_band : &c->grid_radius) = NAN;
+        return 1;
+    }
+    int rc = band ? adh_config_set_fine_band(c, value, msg, sizeof msg)
+           : radius ? adh_config_set_grid_radius(c, value, msg, sizeof msg)
+           : !strcmp(name, "growth") ? adh_config_set_growth(c, value, msg, sizeof msg)
+           : !strcmp(name, "operator") ? adh_config_set_operator(c, value, msg, sizeof msg)
+           : adh_config_set_grid(c, value, msg, sizeof msg);
+    if (rc != 0) {
+        char full[300];
+        snprintf(full, sizeof full, "%s%s", msg, band || radius ? ", or auto" : "");
+        return fail(sp, "%s: %s", name, full);
+    }
+    if (strcmp(name, "grid") != 0)
+        return 1;
+    sp->grid_given = 1;
+    return kernel_fits(sp, name, value);
 }
 
 static int handler(void *user, const char *section, const char *name, const char *value)
@@ -202,8 +245,10 @@ static int handler(void *user, const char *section, const char *name, const char
     case K_KERNEL:
         if (adh_kernel_parse(value, &c->kernel) != 0)
             return fail(sp, "kernel: '%s' is not a kernel: use paper or ring%s", value, "");
-        c->kernel_given = 1;
-        return 1;
+        c->kernel_given = sp->kernel_given = 1;
+        return kernel_fits(sp, name, value);
+    case K_GRID:
+        return grid_key(sp, name, value);
     case K_MIXING:
         if (adh_mix_rule_parse(value, &c->relax.rule) != 0)
             return fail(sp, "mixing: '%s' is not a mixing rule: use paper or momentum%s", value, "");

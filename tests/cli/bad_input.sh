@@ -50,6 +50,9 @@ bad "--growth: 'x' is not allowed" --growth=x
 bad "fine band radius .* too short" --grid=graded --kernel=ring --fine-band=100nm
 bad "grid radius Rmax = .* is too short" --grid=graded --kernel=ring --grid-radius=200nm
 bad "grid radius 6e-07 m is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
+bad "--growth: '0.9' is not allowed: use a ratio from 1 to 1.1" --growth=0.9
+bad "--fine-band: '-1nm' is not allowed: use a length above 0" --fine-band=-1nm
+bad "--grid-radius: '0' is not allowed: use a length above 0" --grid-radius=0
 bad "--operator: 'sparse' is not an operator: use dense, hmat or h2" --operator=sparse
 bad "out of the range of finite numbers" -E 1e999
 bad "step d = 0 m is not allowed" --step=0

@@ -31,4 +31,19 @@ while IFS= read -r k; do
     esc=$(printf '%s' "$k" | sed 's/[][\.*^$]/\\&/g; s/-/\\\\-/g')
     if printf '%s' "$keysec" | grep -q -- "$esc"; then ok "key '$k' is in the KEYS section"; else not_ok "key '$k' is missing from the KEYS section"; fi
 done <"$TMP/keys"
+# Every scene key is documented under its section in adhere-scene.5, and
+# the page documents no key the parser refuses. The keys are read from the
+# parser's own table (keys[] in src/scene/scene.c: no option prints it).
+grep -oE '\{ "[a-z]+", "[A-Za-z0-9_]+", K_' src/scene/scene.c |
+    sed -E 's/\{ "([a-z]+)", "([^"]+)".*/\1 \2/' >"$TMP/skeys"
+check "scene.c's key table is read ($(wc -l <"$TMP/skeys") keys)" [ "$(wc -l <"$TMP/skeys")" -ge 25 ]
+awk '/^\.Ss \[[a-z]+\]/ { sec = $2; gsub(/[][]/, "", sec); next }
+     /^\.S[hs] / { sec = "" }
+     sec != "" && /^\.It Cm [A-Za-z0-9_]+ No =/ { print sec, $3 }' man/adhere-scene.5 >"$TMP/mkeys"
+while read -r sec key; do
+    check "scene key $key is documented under [$sec] in adhere-scene.5" grep -qxF "$sec $key" "$TMP/mkeys"
+done <"$TMP/skeys"
+while read -r sec key; do
+    check "adhere-scene.5's [$sec] $key is a key the parser takes" grep -qxF "$sec $key" "$TMP/skeys"
+done <"$TMP/mkeys"
 done_testing

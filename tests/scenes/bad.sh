@@ -87,6 +87,21 @@ bad 2 "eps" <<'S'
 [solver]
 eps = 1GPa
 S
+bad 3 "growth: '1.2' is not allowed: use a ratio from 1 to 1.1" <<'S'
+[grid]
+kernel = ring
+growth = 1.2
+S
+bad 2 "operator: 'fmm' is not an operator: use dense, hmat or h2" <<'S'
+[grid]
+operator = fmm
+S
+bad 4 "grid: 'graded' is not allowed with kernel = paper" <<'S'
+[grid]
+kernel = paper
+# the paper's kernel assumes equal cells
+grid = graded
+S
 
 # A scene that parses but cannot run names what is wrong, before running.
 cat >"$TMP/deep.scene" <<'S'

@@ -66,6 +66,9 @@ static void default_scene_is_builtin_default(void)
     ok(same(c.mat.E, d.mat.E) && same(c.mat.A, d.mat.A) && same(c.mat.z0, d.mat.z0) && same(c.mat.R, d.mat.R),
        "default.scene's material is the built-in default's (E = %g)", c.mat.E);
     ok(c.nodes == d.nodes && isnan(c.spacing) && c.kernel == d.kernel, "default.scene's grid is the built-in default's");
+    ok(c.graded == d.graded && isnan(c.fine_band) && same(c.growth, d.growth) && isnan(c.grid_radius) &&
+       c.storage == d.storage && !c.storage_given, "default.scene's grid = uniform, fine_band, growth, radius are the "
+       "built-in default's and it gives no operator (growth %g)", c.growth);
     ok(!c.kernel_given && !c.nodes_given, "default.scene leaves N and the kernel to the automatic grid, as the built-in "
        "default does (so a soft material gets graded rings)");
     ok(same(c.relax.eps, d.relax.eps) && c.relax.max_iter == d.relax.max_iter, "default.scene's solver is the built-in default's");
@@ -225,6 +228,66 @@ static void bad_scenes(void)
        "an unknown scene name is reported: %s", why);
 }
 
+/* One scene's text parsed over the defaults; 0 when it parses. */
+static int parse(const char *text, adh_config *c)
+{
+    char why[1024] = "";
+    adh_config_default(c);
+    int rc = adh_scene_parse_string(text, "grid.scene", c, why, sizeof why);
+    if (rc != 0)
+        printf("# %s\n", why);
+    return rc;
+}
+
+/* [grid] grid, fine_band, growth, radius, operator: read as the flags
+ * --grid, --fine-band, --growth, --grid-radius, --operator read them, bad
+ * values named at their line (tests/scenes/plan.sh: flags override them, and
+ * the plan is the flags'). */
+static void grid_keys(void)
+{
+    adh_config c;
+    /* parsed before ok(): its arguments are evaluated in no set order */
+    int rc = parse("[grid]\nkernel = ring\ngrid = graded\nfine_band = 700nm\ngrowth = 1.08\nradius = 2um\noperator = h2\n", &c);
+    ok(rc == 0 && c.graded && c.kernel == ADH_KERNEL_RING && same(c.fine_band, 7e-7) && same(c.growth, 1.08) &&
+       same(c.grid_radius, 2e-6) && c.storage == ADH_STORAGE_H2 && c.storage_given,
+       "grid = graded, fine_band, growth, radius and operator = h2 are read (band %g m, ratio %g, Rmax %g m)",
+       c.fine_band, c.growth, c.grid_radius);
+    adh_config d;
+    adh_config_default(&d);
+    ok(parse("[grid]\ngrid = uniform\nfine_band = auto\nradius = AUTO\ngrowth = 1\noperator = dense\n", &c) == 0 &&
+       !c.graded && isnan(c.fine_band) && isnan(c.grid_radius) && c.growth == 1.0 && c.storage == ADH_STORAGE_DENSE &&
+       c.storage_given, "grid = uniform, auto band and radius (the defaults), growth 1, and an operator given "
+       "as dense is kept by the automatic grid (storage_given)");
+    ok(parse("[grid]\noperator = hmat\ngrowth = 1.1\n", &c) == 0 && c.storage == ADH_STORAGE_HMAT && same(c.growth, 1.1),
+       "operator = hmat and growth = 1.1, the widest ratio, are read");
+    ok(parse("[grid]\nnodes = 500\n", &c) == 0 && !c.storage_given && c.graded == d.graded && isnan(c.fine_band) &&
+       same(c.growth, d.growth) && isnan(c.grid_radius), "a scene without the keys keeps their defaults");
+
+    bad("[grid]\ngrid = Graded\n", 2, "grid: 'Graded' is not a grid: use uniform or graded");
+    bad("[grid]\nnodes = 500\n\ngrid = rings\n", 4, "'rings' is not a grid");
+    bad("[grid]\nfine_band = -2nm\n", 2, "fine_band: '-2nm' is not allowed: use a length above 0, or auto");
+    bad("[grid]\nfine_band = 0\n", 2, "use a length above 0");
+    bad("[grid]\nfine_band = 1GPa\n", 2, "a length (m, nm, um, ...) is wanted here, or auto");
+    bad("[grid]\nradius = 2 parsecs\n", 2, "radius: '2 parsecs': unknown unit");
+    bad("[grid]\nradius = -1um\n", 2, "radius: '-1um' is not allowed: use a length above 0, or auto");
+    bad("[grid]\ngrowth = 1.2\n", 2, "growth: '1.2' is not allowed: use a ratio from 1 to 1.1");
+    bad("[grid]\ngrowth = 0.95\n", 2, "use a ratio from 1 to 1.1");
+    bad("[grid]\ngrowth = auto\n", 2, "growth: 'auto' is not allowed");
+    bad("[grid]\ngrowth = 1.05nm\n", 2, "growth: '1.05nm' is not allowed");
+    bad("[grid]\noperator = fmm\n", 2, "operator: 'fmm' is not an operator: use dense, hmat or h2");
+    bad("[grid]\noperator = h2\noperator = h2\n", 3, "given twice");
+    /* the paper's kernel assumes equal cells, as --grid=graded --kernel=paper is refused */
+    bad("[grid]\nkernel = paper\nnodes = 500\ngrid = graded\n", 4,
+        "grid: 'graded' is not allowed with kernel = paper: the paper's kernel assumes equal cells; use kernel = ring");
+    bad("[grid]\ngrid = graded\nkernel = paper\n", 3, "kernel: 'paper' is not allowed with grid = graded");
+    ok(parse("[grid]\nkernel = paper\ngrid = uniform\n", &c) == 0 && parse("[grid]\ngrid = graded\n", &c) == 0 &&
+       c.graded && !c.kernel_given, "kernel = paper with grid = uniform parses, and grid = graded alone is left to the "
+       "run's check (a flag or the automatic grid may give the ring kernel)");
+    char why[512] = "";
+    ok(adh_config_grid_check(&c, why, sizeof why) != 0 && strstr(why, "grid = graded") && strstr(why, "kernel = ring"),
+       "which refuses it with the paper's kernel, naming the scene keys too: %s", why);
+}
+
 /* Mutated shipped scenes: each either parses or is rejected with
  * "fuzz:LINE: message" and a line inside the text; nothing crashes (the
  * sanitizer build runs this too). A fixed seed keeps it reproducible. */
@@ -287,6 +350,7 @@ int main(void)
     figure_parameters();
     planner();
     bad_scenes();
+    grid_keys();
     mutations();
     return tap_done();
 }
