@@ -96,6 +96,7 @@ struct adh_static {
     double q, dq, qslope; /* lattice_skip: Q at st, the step in Q, dQ/ds along tau */
     double *u1, *u2, q1, q2, h1, h2; /* the two points before st, for a quadratic predictor */
     size_t nhist;     /* how many of them there are */
+    int end_next;     /* the next step lands on h0_end */
     size_t newton_point;
     double residual;
     int done;
@@ -869,6 +870,7 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->det_sign = +1;
     w->skip = s->lattice_skip < 0 ? n > ADH_STATIC_EXACT_MAX_NODES : s->lattice_skip;
     w->nhist = 0;
+    w->end_next = 0;
 
     /* The start: undeformed, going down. */
     memset(w->st->u, 0, n * sizeof *w->st->u);
@@ -943,7 +945,7 @@ int adh_static_iterate(adh_static *w)
         if (w->skip)
             w->ds = w->dq / w->qslope;
         /* The last step lands on h0_end exactly (natural parametrization). */
-        int fix = w->tau_h < 0 && w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end;
+        int fix = w->tau_h < 0 && (w->end_next || w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end);
         double ds = fix ? (w->s.h0_end - w->st->h0) / (z0 * w->tau_h) : w->ds;
         w->attempt++;
         rc = correct(w, ds, fix, w->s.h0_end, w->skip && !fix ? w->q + w->dq : NAN, &iters);
@@ -964,6 +966,11 @@ int adh_static_iterate(adh_static *w)
             if (gap_ratio > 1) {
                 w->res.rejected++;
                 w->ds *= fmax(0.1, 0.7 / gap_ratio);
+                continue;
+            }
+            if (w->skip && !fix && w->trial->h0 < w->s.h0_end && w->tau_h < 0) {
+                /* a step in Q went past the end: land on it instead */
+                w->end_next = 1;
                 continue;
             }
             if (w->skip) {
