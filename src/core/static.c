@@ -1063,6 +1063,7 @@ int adh_static_iterate(adh_static *w)
         w->res.rejected++;
         w->ds *= 0.25;
         w->dq *= 0.25;
+        w->end_next = 0; /* nearer in Q first: the end from closer by */
     }
     w->res.seconds += adh_clock_seconds() - t0;
     return rc;
