@@ -64,7 +64,8 @@ struct adh_static {
     const adh_grid *grid;
     const adh_kernel *k;
     size_t n;
-    int fast;         /* the kernel's product beats a dense one (hmat) */
+    int fast;         /* the kernel's product beats a dense one (any
+                         hierarchical storage) */
     int skip;         /* lattice_skip in effect (the setting, or auto's choice) */
     double *W;        /* dense W, row-major N x N (out = W p) */
     double *colnorm;  /* sum_n |W_nj| */
@@ -196,7 +197,7 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     w->grid = g;
     w->k = k;
     w->n = n;
-    w->fast = adh_kernel_storage_of(k) == ADH_STORAGE_HMAT;
+    w->fast = adh_kernel_storage_of(k) != ADH_STORAGE_DENSE;
     w->W = malloc(n * n * sizeof *w->W);
     w->colnorm = calloc(2 * n, sizeof *w->colnorm);
     w->st = adh_state_alloc(n);
