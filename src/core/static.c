@@ -752,22 +752,37 @@ static void record(adh_static *w, double h0a, double tha, double Fa, double dFa,
     }
 }
 
-/* The extremum of the parabola through (x0,y0), (x1,y1), (x2,y2), clamped
- * to [x0, x2]: its abscissa in *xm; the value is returned. */
-static double parabola_extremum(const double *x, const double *y, double *xm)
+/* The parabola through (x0,y0), (x1,y1), (x2,y2) as
+ * y = y1 + b (x - x1) + c (x - x1)^2. */
+static void parabola(const double *x, const double *y, double *b, double *c)
 {
     double d1 = (y[1] - y[0]) / (x[1] - x[0]), d2 = (y[2] - y[1]) / (x[2] - x[1]);
-    double c = (d2 - d1) / (x[2] - x[0]); /* y = y1 + b (x - x1) + c (x - x1)^2 */
-    double b = d1 + c * (x[1] - x[0]);
-    double t = c != 0 ? x[1] - b / (2 * c) : x[1];
-    t = fmin(x[2], fmax(x[0], t));
-    *xm = t;
+    *c = (d2 - d1) / (x[2] - x[0]);
+    *b = d1 + *c * (x[1] - x[0]);
+}
+
+static double parabola_at(const double *x, const double *y, double t)
+{
+    double b, c;
+    parabola(x, y, &b, &c);
     return y[1] + b * (t - x[1]) + c * (t - x[1]) * (t - x[1]);
 }
 
-/* Bookkeeping when the curve is followed by secants over the lattice
- * folds: a fold is where h0 turns between the last three points, the
- * pull-off where F does; both are placed on the parabola through them. */
+/* The parabola's extremum, clamped to [x0, x2]: its abscissa in *xm; the
+ * value is returned. */
+static double parabola_extremum(const double *x, const double *y, double *xm)
+{
+    double b, c;
+    parabola(x, y, &b, &c);
+    double t = c != 0 ? x[1] - b / (2 * c) : x[1];
+    *xm = fmin(x[2], fmax(x[0], t));
+    return parabola_at(x, y, *xm);
+}
+
+/* Bookkeeping when the curve steps over the lattice folds (lattice_skip):
+ * a fold is where h0 turns between the last three points, the pull-off
+ * where F does; both are placed on the parabolas through them (in the
+ * arclength s). */
 static void record_smooth(adh_static *w)
 {
     double *s = w->hist_s, *h = w->hist_h0, *F = w->hist_F;
@@ -784,21 +799,14 @@ static void record_smooth(adh_static *w)
     if (F[1] <= F[0] && F[1] <= F[2]) {
         double Fm = parabola_extremum(s, F, &sm);
         if (Fm < w->res.pulloff_F) {
-            double hm;
-            double hh = parabola_extremum(s, h, &hm); /* unused: h0 at sm below */
-            (void)hh;
-            double d1 = (h[1] - h[0]) / (s[1] - s[0]), d2 = (h[2] - h[1]) / (s[2] - s[1]);
-            double c = (d2 - d1) / (s[2] - s[0]), b = d1 + c * (s[1] - s[0]);
             w->res.pulloff_F = Fm;
-            w->res.pulloff_h0 = h[1] + b * (sm - s[1]) + c * (sm - s[1]) * (sm - s[1]);
+            w->res.pulloff_h0 = parabola_at(s, h, sm);
         }
     }
     if ((h[1] - h[0]) * (h[2] - h[1]) < 0) {
         adh_static_fold f = { .kind = h[1] < h[0] ? -1 : +1 };
         f.h0 = parabola_extremum(s, h, &sm);
-        double d1 = (F[1] - F[0]) / (s[1] - s[0]), d2 = (F[2] - F[1]) / (s[2] - s[1]);
-        double c = (d2 - d1) / (s[2] - s[0]), b = d1 + c * (s[1] - s[0]);
-        f.F = F[1] + b * (sm - s[1]) + c * (sm - s[1]) * (sm - s[1]);
+        f.F = parabola_at(s, F, sm);
         fold_add(w, &f);
     }
 }
