@@ -42,7 +42,7 @@
  * and the force's minimum are placed on the parabola through three points,
  * so lattice folds a step spans are stepped over, and physical ones
  * (jump-in, jump-out) are found as on the exact curve (within 1e-3 in h0
- * and 1e-4 in pull-off, tests/unit/test_static_skip.c).
+ * and in pull-off, tests/unit/test_static_skip.c).
  *
  * Use: alloc, set (solves the start point), then iterate until it returns
  * something other than ADH_CONTINUE; or adh_static_run for the whole curve. */
