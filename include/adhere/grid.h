@@ -74,11 +74,13 @@ void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t le
 /* Past this many nodes at the limit a uniform automatic grid gives way to a
  * graded one (the paper's N: below it the uniform grid is as cheap). */
 #define ADH_GRID_UNIFORM_MAX_NODES 1000
-/* The budget of an automatic static curve: its Newton steps factor a dense
- * Jacobian over the contact and trace the lattice folds one by one, and
- * beyond this many rings it takes over 2 minutes on one core (62 s at
- * N = 864, 8 minutes at 1287; README "Resolution"). */
-#define ADH_GRID_STATIC_MAX_NODES 900
+/* The budget of an automatic static curve: past 1000 nodes it steps over
+ * the lattice folds (adhere/static.h, lattice_skip), but it still takes a
+ * point or so per fine ring the contact line crosses, each solved through
+ * a dense LU over the contact: about 20 CPU s at sigma = 15 (1219 rings),
+ * 2 minutes at 22.5 (1952), so beyond this many it would take longer than
+ * 2 minutes on one core (README "Resolution"). */
+#define ADH_GRID_STATIC_MAX_NODES 2000
 
 /* The grid a run gets when neither N nor the spacing is given. */
 typedef struct adh_grid_choice {

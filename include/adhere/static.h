@@ -10,11 +10,15 @@
  * that LU preconditions GMRES on the whole bordered system (every Newton
  * step is exact up to the GMRES tolerance; the part of J left out of the LU
  * is what GMRES corrects, a few iterations), and is reused from point to
- * point until GMRES needs more than a few iterations with it. J has real
- * eigenvalues (W times a symmetric Hessian), det J changes sign at each
- * fold, and a point is stable under displacement control when det J > 0 (no
- * negative eigen-direction; one contact line gives at most one). Its sign
- * comes from the bordered LU by Cramer's rule at every point.
+ * point until GMRES needs more than a few iterations with it (on a
+ * hierarchical kernel GMRES's products and the preconditioner's use the
+ * kernel's own fast product). J has real eigenvalues (W times a symmetric
+ * Hessian), det J changes sign at each fold, and a point is stable under
+ * displacement control when det J > 0 (no negative eigen-direction; one
+ * contact line gives at most one). By Cramer's rule det J = det B * t_h for
+ * the tangent t bordered by the previous one, and det B keeps its sign
+ * along the curve: det J's sign is that of t_h times det B's, and det B's
+ * is checked wherever the LU is refreshed at a new point and at every fold.
  *
  * Step control: the arclength step adapts to the turn of the tangent
  * (max_angle), to Newton's progress, and to the largest change of a gap in
@@ -26,6 +30,19 @@
  * curve that runs back. Fold pairs far smaller than a picometre in h0 (where
  * trapping fades out) may still be stepped over: their count depends on the
  * resolution, the jumps and pull-offs do not.
+ *
+ * Large grids (lattice_skip): on a resolved grid a lattice fold pair spans
+ * well under a picometre to a few pm in h0, yet the exact curve needs
+ * several points for each, so its cost is the number of fine rings times
+ * that. There the curve is followed in steps of a contact measure Q (about
+ * the area where the gap is near z0), which grows monotonically along the
+ * whole curve: each step solves G = 0 with Q fixed (no tangent, no turn to
+ * watch, no leg running back to land on), from the parabola through the
+ * last three points, and its size follows Newton's effort. The folds of h0
+ * and the force's minimum are placed on the parabola through three points,
+ * so lattice folds a step spans are stepped over, and physical ones
+ * (jump-in, jump-out) are found as on the exact curve (within 1e-3 in h0
+ * and in pull-off, tests/unit/test_static_skip.c).
  *
  * Use: alloc, set (solves the start point), then iterate until it returns
  * something other than ADH_CONTINUE; or adh_static_run for the whole curve. */
@@ -57,6 +74,15 @@ typedef struct adh_static_settings {
                             for the whole S (the default -5 nm does) */
     size_t max_points;   /* cap on accepted points (ADH_EMAXITER beyond) */
     size_t max_newton;   /* Newton iterations per attempted step */
+    int lattice_skip;    /* 0: the exact curve, every fold resolved (the
+                            oracle). 1: steps in a contact measure Q (the
+                            area where the gap is about z0, which only grows
+                            along the curve) from a secant predictor, stepping
+                            over the lattice folds a step spans; folds and
+                            pull-off from the parabola through the last three
+                            points; max_angle, max_gap_step and ds_max do not
+                            apply. -1 (default): 1 on grids of more than
+                            ADH_STATIC_EXACT_MAX_NODES nodes */
     const volatile sig_atomic_t *cancel; /* polled before every Newton iteration:
                             nonzero stops with ADH_EINTR; NULL = never */
 } adh_static_settings;
@@ -64,6 +90,11 @@ typedef struct adh_static_settings {
 adh_static_settings adh_static_settings_default(void);
 /* ADH_SUCCESS, or ADH_EINVAL with a sentence naming the bad value. */
 int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t whylen);
+
+/* Above this many nodes (the paper's N) lattice_skip = -1 steps over
+ * lattice folds: the exact curve traces the contact line across every fine
+ * ring, several points a ring (74 CPU s at sigma = 15, 1219 rings). */
+#define ADH_STATIC_EXACT_MAX_NODES 1000
 
 /* Up to this many folds are kept with their position and force. */
 #define ADH_STATIC_MAX_FOLDS 4096

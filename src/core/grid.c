@@ -134,11 +134,11 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
     if (use == ADH_GRID_STATIC && nn > ADH_GRID_STATIC_MAX_NODES) {
         snprintf(why, whylen,
                  "sigma = %.3g: a resolved static curve needs a grid spacing of at most %.3g m (%.2g edge-zone "
-                 "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps trace the "
-                 "contact line across every fine node one lattice fold at a time: beyond N = %d that takes "
-                 "over 2 minutes on one core (8 at sigma = 15, over 13 at 22.5); use --mode=relax (resolved at this sigma), a "
-                 "stiffer material, or give -N/--spacing yourself with --force (the run is then marked "
-                 "resolved 0 if the grid is coarser than the limit)",
+                 "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps follow the "
+                 "contact line across every fine ring through a dense LU over the contact: beyond N = %d that "
+                 "takes over 2 minutes on one core (20 s at sigma = 15, 2 minutes at 22.5); use --mode=relax "
+                 "(resolved at this sigma), a stiffer material, or give -N/--spacing yourself with --force (the "
+                 "run is then marked resolved 0 if the grid is coarser than the limit)",
                  d.sigma, limit, widths, adh_edge_zone(m), kind, nn, mb((double)nn), ADH_GRID_STATIC_MAX_NODES);
         return ADH_EGRID;
     }

@@ -34,6 +34,9 @@
 extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
 
 #define ADH_GMRES_MAX 40   /* Krylov dimension before the LU is refreshed */
+#ifndef ADH_Q_GROW /* lattice_skip: Newton iterations below which the step grows */
+#define ADH_Q_GROW 4
+#endif
 #ifndef ADH_TAN_RTOL /* GMRES relative residual for tangents */
 #define ADH_TAN_RTOL 1e-8
 #endif
@@ -53,12 +56,18 @@ typedef struct lin {
     double *g;       /* dG/dh0 = (2/E) W p', all N nodes */
     double *nu;      /* constraint normal, u part (metric-unit vector with nh) */
     double nh;
+    size_t stamp;    /* the step attempt it was factorized in */
+    int tangent_border; /* bordered by the current tangent: its det sign is
+                           comparable with det_b_sign */
 } lin;
 
 struct adh_static {
     const adh_grid *grid;
     const adh_kernel *k;
     size_t n;
+    int fast;         /* the kernel's product beats a dense one (any
+                         hierarchical storage) */
+    int skip;         /* lattice_skip in effect (the setting, or auto's choice) */
     double *W;        /* dense W, row-major N x N (out = W p) */
     double *colnorm;  /* sum_n |W_nj| */
     double *shape;    /* r^2 / 2R */
@@ -76,6 +85,7 @@ struct adh_static {
     double *Dst, *gst, *Dtr, *gtr; /* p'(h) and dG/dh0 at st and at trial */
     int det_sign;     /* sign of det J at st */
     int det_b_sign;   /* sign of det B, invariant along the curve */
+    size_t attempt;   /* step attempts so far (stamps the factorizations) */
 
     double *G, *du, *y, *t, *t2, *upred, *scratch, *rG, *bG, *dx, *Dc, *gc, *zero, *gz, *V;
     double act;       /* active-set threshold in use (lowered when the
@@ -84,6 +94,11 @@ struct adh_static {
     double s_arc;
     int stable;
     double F, dFds;   /* force and its arclength derivative at st */
+    double hist_s[3], hist_h0[3], hist_F[3]; /* the last three points (lattice_skip) */
+    double q, dq, qslope; /* lattice_skip: Q at st, the step in Q, dQ/ds along tau */
+    double *u1, *u2, q1, q2, h1, h2; /* the two points before st, for a quadratic predictor */
+    size_t nhist;     /* how many of them there are */
+    int end_next;     /* the next step lands on h0_end */
     size_t newton_point;
     double residual;
     int done;
@@ -108,6 +123,7 @@ adh_static_settings adh_static_settings_default(void)
         .h0_end = -5e-9,
         .max_points = 200000,
         .max_newton = 12,
+        .lattice_skip = -1,
     };
     return s;
 }
@@ -132,6 +148,8 @@ int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t
         BAD("static start %g m must be finite and above the end %g m", s->h0_start, s->h0_end);
     if (!isfinite(s->h0_end))
         BAD("static end position must be finite");
+    if (s->lattice_skip < -1 || s->lattice_skip > 1)
+        BAD("lattice_skip %d is not allowed: it must be -1 (auto), 0 or 1", s->lattice_skip);
     if (s->max_points < 2 || s->max_newton < 2)
         BAD("max_points (%zu) and max_newton (%zu) must be at least 2", s->max_points, s->max_newton);
     return ADH_SUCCESS;
@@ -180,13 +198,14 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     w->grid = g;
     w->k = k;
     w->n = n;
+    w->fast = adh_kernel_storage_of(k) != ADH_STORAGE_DENSE;
     w->W = malloc(n * n * sizeof *w->W);
     w->colnorm = calloc(2 * n, sizeof *w->colnorm);
     w->st = adh_state_alloc(n);
     w->trial = adh_state_alloc(n);
     /* G, du, y, t, t2, upred, scratch, tau_u, tau_u_new, rG, bG, dx, Dc, gc,
-     * zero, gz, Dst, gst, Dtr, gtr: n + 1 each; the GMRES basis */
-    w->G = calloc(20 * (n + 1) + (ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
+     * zero, gz, Dst, gst, Dtr, gtr, u1, u2: n + 1 each; the GMRES basis */
+    w->G = calloc(22 * (n + 1) + (ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
     w->folds = malloc(ADH_STATIC_MAX_FOLDS * sizeof *w->folds);
     int bad = !w->W || !w->colnorm || !w->st || !w->trial || !w->G || !w->folds;
     if (!bad)
@@ -198,10 +217,10 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     w->shape = w->colnorm + n;
     double **bufs[] = { &w->G, &w->du, &w->y, &w->t, &w->t2, &w->upred, &w->scratch, &w->tau_u,
                         &w->tau_u_new, &w->rG, &w->bG, &w->dx, &w->Dc, &w->gc, &w->zero, &w->gz,
-                        &w->Dst, &w->gst, &w->Dtr, &w->gtr };
+                        &w->Dst, &w->gst, &w->Dtr, &w->gtr, &w->u1, &w->u2 };
     for (size_t i = 1; i < sizeof bufs / sizeof *bufs; i++)
         *bufs[i] = w->G + i * (n + 1);
-    w->V = w->G + 20 * (n + 1);
+    w->V = w->G + 22 * (n + 1);
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < n; j++) {
             double v = adh_kernel_entry(k, i, j);
@@ -251,6 +270,8 @@ static int linearize(adh_static *w, const adh_state *x, const double *nu, double
     }
     L->nh = nh;
     L->m = m;
+    L->stamp = w->attempt;
+    L->tangent_border = nu == w->tau_u && nh == w->tau_h;
     size_t ld = m + 1;
     double *B = L->B, *q = w->scratch;
     if (m > 0)
@@ -311,7 +332,14 @@ static void precond(adh_static *w, const lin *L, const double *bG, double bc, do
     double dh = y[m];
     for (size_t j = 0; j < m; j++)
         w->t[j] = L->D[j] * y[j];
-    if (m > 0)
+    if (m > 0 && w->fast) {
+        /* the operator's own product (hierarchical: O(N log N) against the
+         * dense prefix's N m) on the pressure change padded with zeros */
+        memset(w->t + m, 0, (n - m) * sizeof *w->t);
+        adh_kernel_apply(w->k, w->t, du, w->scratch);
+        for (size_t i = 0; i < n; i++)
+            du[i] *= w->c2E;
+    } else if (m > 0)
         cblas_dgemv(CblasRowMajor, CblasNoTrans, (int)n, (int)m, w->c2E, w->W, (int)n, w->t, 1, 0.0, du, 1);
     else
         memset(du, 0, n * sizeof *du);
@@ -486,11 +514,57 @@ static double metric_dot(const adh_static *w, const double *au, double ah, const
     return w->s.u_weight * d + ah * bh;
 }
 
+/* The contact measure that parametrizes the curve with lattice_skip:
+ * Q = sum_i a_i (z0/h_i)^6 (a_i the ring areas / 2 pi), about the area
+ * within the interaction zone. It grows monotonically along the whole
+ * curve (the gaps near the axis close on the outer branch, the contact
+ * widens after), through every fold in h0, physical or lattice, so a step
+ * in Q never has to turn. Its gradient goes into qu (per u_n, divided by
+ * theta as the border row expects) and *qh (per h0), both scaled by
+ * *scale so that the row has unit metric norm; returns Q. */
+static double qmeasure(adh_static *w, const adh_state *x, double *qu, double *qh, double *scale)
+{
+    size_t n = w->n;
+    double z0 = w->m.z0, th = w->s.u_weight, q = 0, gh = 0, nrm = 0;
+    for (size_t i = 0; i < n; i++) {
+        double a = adh_rings_weight(w->grid, i), r = z0 / x->h[i], r3 = r * r * r, f = a * r3 * r3;
+        q += f;
+        double d = -6.0 * f / x->h[i]; /* dQ/dh_i */
+        if (qu)
+            qu[i] = -d; /* h_i = h0 + r^2/2R - u_i */
+        gh += d;
+        nrm += d * d / th;
+    }
+    if (qu) {
+        nrm = sqrt(nrm + gh * gh);
+        for (size_t i = 0; i < n; i++)
+            qu[i] /= th * nrm;
+        *qh = gh / nrm;
+        *scale = nrm;
+    }
+    return q;
+}
+
+/* The unit secant from st to trial, in the metric (dimensionless). */
+static void secant(adh_static *w, double *su, double *sh)
+{
+    size_t n = w->n;
+    double z0 = w->m.z0, dh = (w->trial->h0 - w->st->h0) / z0, s2 = dh * dh;
+    for (size_t i = 0; i < n; i++) {
+        su[i] = (w->trial->u[i] - w->st->u[i]) / z0;
+        s2 += w->s.u_weight * su[i] * su[i];
+    }
+    double len = sqrt(s2);
+    for (size_t i = 0; i < n; i++)
+        su[i] /= len;
+    *sh = dh / len;
+}
+
 /* Newton corrector from the predictor st + ds tau on the hyperplane through
  * it normal to tau (Keller's pseudo-arclength), or on h0 = h0_fix when fix
  * is set. Each Newton step uses the exact Jacobian at the iterate, solved
  * by GMRES with the LU preconditioner. The converged point is left in trial. */
-static int correct(adh_static *w, double ds, int fix, double h0_fix, size_t *iters)
+static int correct(adh_static *w, double ds, int fix, double h0_fix, double qtarget, size_t *iters)
 {
     size_t n = w->n;
     double z0 = w->m.z0, th = w->s.u_weight;
@@ -502,12 +576,31 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, size_t *ite
     double h0pred = x->h0;
     const double *nu = fix ? w->zero : w->tau_u;
     double nh = fix ? 1.0 : w->tau_h;
+    int qmode = !fix && !isnan(qtarget);
+    double qscale = 1;
+    if (qmode && w->nhist >= 2) {
+        /* Q's parabola through the last three points: the curve bends
+         * smoothly over many rings, and a better start saves Newton steps */
+        double q0 = w->q, q1 = w->q1, q2 = w->q2, dq = qtarget - q0;
+        double a = dq / (q0 - q1), b = dq * (qtarget - q1) / (q0 - q2);
+        for (size_t i = 0; i < n; i++) {
+            double f01 = (w->st->u[i] - w->u1[i]) / (q0 - q1), f12 = (w->u1[i] - w->u2[i]) / (q1 - q2);
+            x->u[i] = w->st->u[i] + a * (w->st->u[i] - w->u1[i]) + b * (f01 - f12);
+        }
+        double f01 = (w->st->h0 - w->h1) / (q0 - q1), f12 = (w->h1 - w->h2) / (q1 - q2);
+        x->h0 = w->st->h0 + a * (w->st->h0 - w->h1) + b * (f01 - f12);
+    }
+    if (qmode)
+        nu = w->rG;
     double prev = INFINITY;
     for (size_t it = 0;; it++) {
         double r = evaluate(w, x);
         if (r < 0)
             return ADH_ENAN;
-        if (r < w->s.tol * z0) {
+        double cq = 0;
+        if (qmode) /* the constraint is nonlinear: it must hold too */
+            cq = (qmeasure(w, x, w->rG, &nh, &qscale) - qtarget) / qscale;
+        if (r < w->s.tol * z0 && fabs(cq) < w->s.tol * z0) {
             w->residual = r;
             return ADH_SUCCESS;
         }
@@ -522,10 +615,15 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, size_t *ite
         prev = r;
         point_jacobian(w, x, w->Dc, w->gc);
         /* the constraint's current residual, metres */
-        double cu = 0;
-        for (size_t i = 0; i < n; i++)
-            cu += nu[i] * (x->u[i] - w->upred[i]);
-        double c = nh * (x->h0 - h0pred) + th * cu;
+        double c;
+        if (qmode) {
+            c = cq;
+        } else {
+            double cu = 0;
+            for (size_t i = 0; i < n; i++)
+                cu += nu[i] * (x->u[i] - w->upred[i]);
+            c = nh * (x->h0 - h0pred) + th * cu;
+        }
         for (size_t i = 0; i < n; i++)
             w->bG[i] = -w->G[i];
         w->bG[n] = -c;
@@ -608,6 +706,19 @@ static double hermite_value(double y0, double y1, double m0, double m1, double t
     return (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * m1;
 }
 
+static void fold_add(adh_static *w, const adh_static_fold *f)
+{
+    if (w->res.folds == 0)
+        w->res.jump_in_h0 = f->kind < 0 ? f->h0 : NAN;
+    if (f->kind > 0 && (isnan(w->res.jump_out_h0) || f->h0 > w->res.jump_out_h0)) {
+        w->res.jump_out_h0 = f->h0;
+        w->res.pulloff_F_disp = f->F;
+    }
+    if (w->nfolds_kept < ADH_STATIC_MAX_FOLDS)
+        w->folds[w->nfolds_kept++] = *f;
+    w->res.folds++;
+}
+
 /* Bookkeeping of a new accepted point against the previous one: folds
  * (the tangent's h0 part changes sign) and the force minimum. */
 static void record(adh_static *w, double h0a, double tha, double Fa, double dFa, double len)
@@ -638,15 +749,66 @@ static void record(adh_static *w, double h0a, double tha, double Fa, double dFa,
             .F = hermite_value(Fa, Fb, dFa * len, dFb * len, t),
             .kind = tha < 0 ? -1 : +1,
         };
-        if (w->res.folds == 0)
-            w->res.jump_in_h0 = f.kind < 0 ? f.h0 : NAN;
-        if (f.kind > 0 && (isnan(w->res.jump_out_h0) || f.h0 > w->res.jump_out_h0)) {
-            w->res.jump_out_h0 = f.h0;
-            w->res.pulloff_F_disp = f.F;
+        fold_add(w, &f);
+    }
+}
+
+/* The parabola through (x0,y0), (x1,y1), (x2,y2) as
+ * y = y1 + b (x - x1) + c (x - x1)^2. */
+static void parabola(const double *x, const double *y, double *b, double *c)
+{
+    double d1 = (y[1] - y[0]) / (x[1] - x[0]), d2 = (y[2] - y[1]) / (x[2] - x[1]);
+    *c = (d2 - d1) / (x[2] - x[0]);
+    *b = d1 + *c * (x[1] - x[0]);
+}
+
+static double parabola_at(const double *x, const double *y, double t)
+{
+    double b, c;
+    parabola(x, y, &b, &c);
+    return y[1] + b * (t - x[1]) + c * (t - x[1]) * (t - x[1]);
+}
+
+/* The parabola's extremum, clamped to [x0, x2]: its abscissa in *xm; the
+ * value is returned. */
+static double parabola_extremum(const double *x, const double *y, double *xm)
+{
+    double b, c;
+    parabola(x, y, &b, &c);
+    double t = c != 0 ? x[1] - b / (2 * c) : x[1];
+    *xm = fmin(x[2], fmax(x[0], t));
+    return parabola_at(x, y, *xm);
+}
+
+/* Bookkeeping when the curve steps over the lattice folds (lattice_skip):
+ * a fold is where h0 turns between the last three points, the pull-off
+ * where F does; both are placed on the parabolas through them (in the
+ * arclength s). */
+static void record_smooth(adh_static *w)
+{
+    double *s = w->hist_s, *h = w->hist_h0, *F = w->hist_F;
+    s[0] = s[1], h[0] = h[1], F[0] = F[1];
+    s[1] = s[2], h[1] = h[2], F[1] = F[2];
+    s[2] = w->s_arc, h[2] = w->st->h0, F[2] = w->F;
+    if (w->F < w->res.pulloff_F) {
+        w->res.pulloff_F = w->F;
+        w->res.pulloff_h0 = w->st->h0;
+    }
+    if (w->res.points < 3)
+        return;
+    double sm;
+    if (F[1] <= F[0] && F[1] <= F[2]) {
+        double Fm = parabola_extremum(s, F, &sm);
+        if (Fm < w->res.pulloff_F) {
+            w->res.pulloff_F = Fm;
+            w->res.pulloff_h0 = parabola_at(s, h, sm);
         }
-        if (w->nfolds_kept < ADH_STATIC_MAX_FOLDS)
-            w->folds[w->nfolds_kept++] = f;
-        w->res.folds++;
+    }
+    if ((h[1] - h[0]) * (h[2] - h[1]) < 0) {
+        adh_static_fold f = { .kind = h[1] < h[0] ? -1 : +1 };
+        f.h0 = parabola_extremum(s, h, &sm);
+        f.F = parabola_at(s, F, sm);
+        fold_add(w, &f);
     }
 }
 
@@ -676,9 +838,13 @@ static void accept(adh_static *w)
     w->gtr = tt;
     w->stable = w->det_sign > 0;
     w->F = force_of(w, w->st);
-    w->dFds = force_slope(w, w->Dst, w->tau_u, w->tau_h);
     w->s_arc += len;
     w->res.points++;
+    if (w->skip) {
+        record_smooth(w);
+        return;
+    }
+    w->dFds = force_slope(w, w->Dst, w->tau_u, w->tau_h);
     if (w->res.points > 1)
         record(w, h0a, tha, Fa, dFa, len);
     else {
@@ -712,6 +878,9 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->ds = w->s.ds_init;
     w->act = w->s.active_tol;
     w->det_sign = +1;
+    w->skip = s->lattice_skip < 0 ? n > ADH_STATIC_EXACT_MAX_NODES : s->lattice_skip;
+    w->nhist = 0;
+    w->end_next = 0;
 
     /* The start: undeformed, going down. */
     memset(w->st->u, 0, n * sizeof *w->st->u);
@@ -724,7 +893,7 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->res.factorizations++;
     size_t it = 0;
     if (rc == ADH_SUCCESS)
-        rc = correct(w, 0.0, 1, w->s.h0_start, &it);
+        rc = correct(w, 0.0, 1, w->s.h0_start, NAN, &it);
     if (rc == ADH_SUCCESS) {
         rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->P);
         w->res.factorizations++;
@@ -747,6 +916,20 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->F = 0;
     w->dFds = 0;
     accept(w);
+    if (w->skip) {
+        /* dQ/ds along the start's tangent, from Q's gradient */
+        double qh, qs;
+        w->q = qmeasure(w, w->st, w->rG, &qh, &qs);
+        double d = qh * w->tau_h;
+        for (size_t i = 0; i < n; i++)
+            d += w->s.u_weight * w->rG[i] * w->tau_u[i];
+        w->qslope = d * qs * w->m.z0; /* per unit s, which is in z0 */
+        w->dq = w->s.ds_init * w->qslope;
+        if (!(w->dq > 0)) {
+            w->res.seconds += adh_clock_seconds() - t0;
+            return ADH_ESTALL;
+        }
+    }
     w->res.seconds += adh_clock_seconds() - t0;
     return ADH_SUCCESS;
 }
@@ -769,10 +952,13 @@ int adh_static_iterate(adh_static *w)
             rc = ADH_ESTALL;
             break;
         }
+        if (w->skip)
+            w->ds = w->dq / w->qslope;
         /* The last step lands on h0_end exactly (natural parametrization). */
-        int fix = w->tau_h < 0 && w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end;
+        int fix = w->tau_h < 0 && (w->end_next || w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end);
         double ds = fix ? (w->s.h0_end - w->st->h0) / (z0 * w->tau_h) : w->ds;
-        rc = correct(w, ds, fix, w->s.h0_end, &iters);
+        w->attempt++;
+        rc = correct(w, ds, fix, w->s.h0_end, w->skip && !fix ? w->q + w->dq : NAN, &iters);
         if (rc == ADH_ENOMEM || rc == ADH_EINTR)
             break;
         int ok = rc == ADH_SUCCESS;
@@ -786,17 +972,34 @@ int adh_static_iterate(adh_static *w)
             for (size_t i = 0; i < n; i++)
                 if (fmin(w->st->h[i], w->trial->h[i]) < 3.0 * z0)
                     dg = fmax(dg, fabs(w->trial->h[i] - w->st->h[i]));
-            gap_ratio = w->s.max_gap_step > 0 ? dg / (w->s.max_gap_step * z0) : 0;
+            gap_ratio = w->s.max_gap_step > 0 && !w->skip ? dg / (w->s.max_gap_step * z0) : 0;
             if (gap_ratio > 1) {
                 w->res.rejected++;
                 w->ds *= fmax(0.1, 0.7 / gap_ratio);
                 continue;
             }
-            rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->P);
-            w->res.factorizations++;
-            if (rc == ADH_SUCCESS) {
-                point_jacobian(w, w->trial, w->Dtr, w->gtr);
-                rc = tangent(w, w->trial, w->Dtr, w->gtr, w->tau_u_new, &w->tau_h_new);
+            if (w->skip && !fix && w->trial->h0 < w->s.h0_end && w->tau_h < 0) {
+                /* a step in Q went past the end: land on it instead */
+                w->end_next = 1;
+                continue;
+            }
+            if (w->skip) {
+                /* Q only grows along the curve: there is no leg running
+                 * back to land on, and no tangent to solve for. On the curve
+                 * smoothed over the lattice the stability follows the
+                 * direction of h0 as on the exact one. */
+                secant(w, w->tau_u_new, &w->tau_h_new);
+                w->det_sign = (w->tau_h_new > 0 ? 1 : -1) * w->det_b_sign;
+                goto decided;
+            }
+            point_jacobian(w, w->trial, w->Dtr, w->gtr);
+            rc = tangent(w, w->trial, w->Dtr, w->gtr, w->tau_u_new, &w->tau_h_new);
+            /* A fold in this step: check det B at the new point (below),
+             * factorizing there unless GMRES already did. */
+            if (rc == ADH_SUCCESS && (w->tau_h_new < 0) != (w->tau_h < 0) &&
+                !(w->P.stamp == w->attempt && w->P.tangent_border)) {
+                rc = linearize(w, w->trial, w->tau_u, w->tau_h, &w->P);
+                w->res.factorizations++;
             }
             ok = rc == ADH_SUCCESS;
         }
@@ -816,8 +1019,35 @@ int adh_static_iterate(adh_static *w)
             /* det B (bordered by the previous tangent) keeps its sign along
              * one curve traversed one way: a flip means the corrector landed
              * on a part of the curve that runs back against the tangent */
-            ok = ct >= cos_max && cs >= cos_max && w->P.det_sign == w->det_b_sign;
-            w->det_sign = (w->tau_h_new > 0 ? 1 : -1) * w->P.det_sign;
+            ok = ct >= cos_max && cs >= cos_max;
+            if (w->P.stamp == w->attempt && w->P.tangent_border)
+                ok = ok && w->P.det_sign == w->det_b_sign;
+            w->det_sign = (w->tau_h_new > 0 ? 1 : -1) * w->det_b_sign;
+        }
+    decided:
+        if (ok && w->skip) {
+            double q = qmeasure(w, w->trial, NULL, NULL, NULL), q0 = w->q;
+            double *tu = w->u2;
+            w->u2 = w->u1;
+            w->u1 = tu;
+            memcpy(w->u1, w->st->u, n * sizeof *tu);
+            w->q2 = w->q1, w->h2 = w->h1;
+            w->q1 = q0, w->h1 = w->st->h0;
+            w->nhist++;
+            w->newton_point = iters;
+            accept(w);
+            if (fix)
+                w->done = 1;
+            w->q = q;
+            if (q > q0)
+                w->qslope = (q - q0) / (w->s_arc - w->hist_s[1]);
+            /* grow while Newton converges at once, shrink when it labours */
+            w->dq *= iters <= ADH_Q_GROW ? 1.5 : iters >= ADH_Q_GROW + 3 ? 0.7 : 1.0;
+            rc = w->done ? ADH_SUCCESS : ADH_CONTINUE;
+            double a = adh_contact_radius(w->grid, w->st->h, z0);
+            if (a >= 0.9 * w->grid->rmax || !adh_rings_resolves(w->grid, a))
+                rc = ADH_EGRID;
+            break;
         }
         if (ok) {
             w->newton_point = iters;
@@ -842,6 +1072,8 @@ int adh_static_iterate(adh_static *w)
         /* a failed step is usually a fold just ahead: cut hard */
         w->res.rejected++;
         w->ds *= 0.25;
+        w->dq *= 0.25;
+        w->end_next = 0; /* nearer in Q first: the end from closer by */
     }
     w->res.seconds += adh_clock_seconds() - t0;
     return rc;

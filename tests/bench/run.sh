@@ -15,5 +15,8 @@ echo
 echo
 "$BUILD/tests/bench-static"
 echo
+# the static curve on the automatic resolved grid at sigma = 15 and 22.5
+"$BUILD/tests/bench-static_soft"
+echo
 # shellcheck disable=SC2086 # the sizes are words
 "$BUILD/tests/bench-operator" "${BENCH_DENSE_MAX:-10000}" "${BENCH_HMAT_MAX:-100000}" ${BENCH_OPERATOR_N:-1000 3000 10000 30000 100000}

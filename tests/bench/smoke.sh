@@ -24,6 +24,8 @@ bench() {
 }
 # one repeat at N = 100, its Figure 4 cycle at N = 100
 BENCH_N=100 bench relax 1 100
+# the automatic static grid at sigma = 2.25 (the paper's)
+bench static_soft 2.25
 # the whole static curve at N = 300 (shorter grids do not hold the contact)
 bench static 300
 # the kernel storages at N = 200 and 400 (dense and hmat-oss at 200 only)
