@@ -46,7 +46,7 @@ static int one(double sigma, double turn)
         g = adh_grid_alloc(gc.n, isnan(gc.dr) ? adh_grid_spacing_for(&m, gc.n) : gc.dr);
     }
     adh_kernel_type kt = gc.graded ? ADH_KERNEL_RING : ADH_KERNEL_PAPER;
-    adh_kernel *k = g ? adh_kernel_alloc_stored(g, kt, gc.hierarchical ? ADH_STORAGE_HMAT : ADH_STORAGE_DENSE) : NULL;
+    adh_kernel *k = g ? adh_kernel_alloc_stored(g, kt, gc.hierarchical ? ADH_STORAGE_H2 : ADH_STORAGE_DENSE) : NULL;
     if (!k) {
         fprintf(stderr, "out of memory\n");
         return 1;
@@ -90,7 +90,7 @@ static int one(double sigma, double turn)
     double F_md = NAN;
     adh_md_pulloff(&m, adh_md_lambda(&m), &F_md, NULL, NULL, NULL);
     printf("static sigma=%.4g E=%.4g Pa: %s grid, N=%zu, spacing %.3g m, %s kernel (%s), status %s\n", sigma, m.E,
-           gc.graded ? "graded" : "uniform", g->n, gc.dr, adh_kernel_name(kt), gc.hierarchical ? "hmat" : "dense",
+           gc.graded ? "graded" : "uniform", g->n, gc.dr, adh_kernel_name(kt), gc.hierarchical ? "h2" : "dense",
            adh_strerror(rc));
     printf("  kernel %.2f s CPU, curve %.2f s CPU\n", c_kernel, c_run);
     printf("  points %zu, rejected %zu, Newton %zu, GMRES %zu, LU factorizations %zu, folds %zu\n", r.points,
