@@ -150,13 +150,22 @@ int adh_drive_pending(const adh_drive *d);
 /* Which way the next step goes (a step by hand asked for, else the
  * protocol's): +1 loading (*turn: the protocol's next turn to reach, 1..,
  * 0 none), -1 unloading (*turn: the run's turn k whose branch it is on or
- * begins), 0 when the protocol is complete. */
+ * begins), 0 when the protocol is complete or was stopped
+ * (adh_drive_status says which). After steps by hand the protocol goes on
+ * from where the path is: the turns recorded and not yet unloaded first,
+ * then loading on to the turns not yet reached. */
 int adh_drive_next(const adh_drive *d, size_t *turn);
+/* ADH_CONTINUE while the protocol goes on, else the status that ended it
+ * (ADH_SUCCESS: complete; ADH_EGRID, ADH_ENAN...: stopped there). */
+int adh_drive_status(const adh_drive *d);
 /* Iterations so far of the step under way (or the last), and its change. */
 size_t adh_drive_progress(const adh_drive *d, double *change);
 /* Replaces the protocol's turning points, keeping the path: turns the
- * loading branch has passed are behind it. ADH_SUCCESS, or ADH_EINVAL for
- * a different step, too many turns, a step under way. */
+ * loading branch has passed are behind it, and when one of them was never
+ * reached as a turn (it was set after the path passed it) the path turns
+ * where its loading branch is now, as the next branch to unload.
+ * ADH_SUCCESS, or ADH_EINVAL for a different step, too many turns, a step
+ * under way; ADH_ENOMEM. */
 int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps);
 
 /* A snapshot of a drive: the relaxed state, where it is in the protocol

@@ -238,16 +238,42 @@ static int finish(adh_drive *d, int status)
 
 /* The loading branch has reached its end: unload from every turn reached,
  * or stop. */
-static void next_turn(adh_drive *d)
+/* The first turn not unloaded yet (its index), or nturns. */
+static size_t first_loaded(const adh_drive *d)
 {
-    /* in the order they were reached; a branch begun by hand counts as
-     * unloaded */
     size_t i = 0;
     while (i < d->run->nturns && d->run->turns[i].path != 0)
         i++;
-    d->c.ui = i;
-    d->c.ph = d->ps.unload && i < d->run->nturns ? PH_TURN : PH_DONE;
-    d->c.status = ADH_SUCCESS;
+    return i;
+}
+
+/* Where the loading lattice goes on from row o: the index of the next
+ * position start - k d past it. */
+static long load_index_after(const adh_drive *d, const adh_obs *o)
+{
+    return lround((d->start - o->h0) / d->ps.step) + 1;
+}
+
+/* A branch has ended: unload the next turn not unloaded yet (in the order
+ * they were reached; a branch begun by hand counts as unloaded); else, when
+ * steps by hand left turns of the protocol unreached, load on to them from
+ * where the path is; else the protocol is complete. */
+static void next_turn(adh_drive *d)
+{
+    size_t i = first_loaded(d);
+    cursor *c = &d->c;
+    c->status = ADH_SUCCESS;
+    if (d->ps.unload && i < d->run->nturns) {
+        c->ui = i;
+        c->ph = PH_TURN;
+    } else if (c->ti < d->ps.nturns && c->row >= 0) {
+        const adh_obs *o = &d->run->rows[c->row];
+        c->ph = PH_LOAD;
+        c->k = load_index_after(d, o);
+        c->in_contact = o->a > 0;
+    } else {
+        c->ph = PH_DONE;
+    }
 }
 
 static void begin_unloading(adh_drive *d)
@@ -292,7 +318,7 @@ static int plan_hand(const adh_drive *d, int dir, hand_plan *hp)
     const adh_obs *last = d->c.row >= 0 ? &run->rows[d->c.row] : &at_start;
     memset(hp, 0, sizeof *hp);
     if (dir > 0) {
-        hp->k = last->branch > 0 && d->c.row >= 0 ? d->c.k : lround((d->start - last->h0) / ps->step) + 1;
+        hp->k = last->branch > 0 && d->c.row >= 0 ? d->c.k : load_index_after(d, last);
         hp->h0 = d->start - (double)hp->k * ps->step;
         size_t ti = d->c.ti;
         while (ti < ps->nturns && d->turns[ti] >= last->h0 - tol)
@@ -555,7 +581,7 @@ static int complete(adh_drive *d, int rc)
             c->touched = 1;
         else if (c->touched) {
             tr->jump_out_h0 = o.h0;
-            c->events |= ADH_DRIVE_PULLOFF;
+            c->events |= ADH_DRIVE_PULLOFF | ADH_DRIVE_END;   /* the branch ends at its jump-out */
             next_turn(d);
         }
         break;
@@ -704,6 +730,7 @@ int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s)
         return ADH_EINVAL;
     adh_state_copy(s->st, adh_relax_state(d->w));
     s->c = d->c;
+    s->c.hand = 0;   /* a step asked for is not part of the state it was asked from */
     ts_assign(s->ts, d->ts);
     if (d->run) {
         copy_marks(&s->marks, d->run);
@@ -716,10 +743,15 @@ int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s)
 int adh_drive_restore(adh_drive *d, const adh_drive_snap *s)
 {
     adh_run *r = d->run;
-    if (s->st->n != d->g->n || (r && (s->marks.nrows > r->nrows + 1 || s->marks.nprofiles > r->nprofiles)))
+    int ahead = r && s->marks.nrows == r->nrows + 1;
+    if (s->st->n != d->g->n || (r && (s->marks.nrows > r->nrows + 1 || s->marks.nprofiles > r->nprofiles + ahead)))
         return ADH_EINVAL;
-    /* one row ahead of the run (a redo): the snapshot's own last row */
-    if (r && s->marks.nrows == r->nrows + 1 && adh_run_push_row(r, &s->last) != ADH_SUCCESS)
+    /* one row ahead of the run (a redo): the snapshot's own last row, and
+     * its profile when that row stored one (the snapshot's state is it) */
+    if (ahead && adh_run_push_row(r, &s->last) != ADH_SUCCESS)
+        return ADH_ENOMEM;
+    if (ahead && s->marks.nprofiles == r->nprofiles + 1 &&
+        adh_run_push_profile(r, s->st, s->last.branch, s->last.path) != ADH_SUCCESS)
         return ADH_ENOMEM;
     adh_relax_restore(d->w, s->st);
     d->c = s->c;
@@ -782,22 +814,35 @@ int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps)
         if (d->run->rows[i].branch > 0)
             deepest = fmin(deepest, d->run->rows[i].h0);
     size_t ti = 0;
-    while (ti < ps->nturns && d->turns[ti] >= deepest - tol)
+    int unrecorded = 0;
+    while (ti < ps->nturns && d->turns[ti] >= deepest - tol) {
+        int seen = 0;
+        for (size_t i = 0; d->run && i < d->run->nturns; i++)
+            seen |= fabs(d->run->turns[i].h0 - d->turns[ti]) < tol;
+        unrecorded |= !seen;
         ti++;
+    }
     d->c.ti = ti;
-    if (d->c.ph == PH_DONE && d->c.status == ADH_SUCCESS && d->c.row >= 0 && ti < ps->nturns &&
-        d->run->rows[d->c.row].branch > 0)
-        d->c.ph = PH_LOAD;   /* a deeper turn: loading goes on */
+    const adh_obs *last = d->run && d->c.row >= 0 ? &d->run->rows[d->c.row] : NULL;
+    if (unrecorded && last && last->branch > 0 && (d->c.ph == PH_LOAD || d->c.ph == PH_DONE)) {
+        /* a turn the loading branch passed before it was set: the path
+         * turns where it is now, and unloads from here */
+        int seen = 0;
+        for (size_t i = 0; i < d->run->nturns; i++)
+            seen |= fabs(d->run->turns[i].h0 - last->h0) < tol;
+        if (!seen && d->run->nturns < ADH_MAX_TURNS && record_turn(d, last) != ADH_SUCCESS)
+            return ADH_ENOMEM;
+    }
+    if (d->c.ph == PH_DONE && d->c.status == ADH_SUCCESS && last) {
+        if (last->branch > 0 && ti < ps->nturns) {
+            d->c.ph = PH_LOAD;   /* a deeper turn: loading goes on */
+        } else {
+            next_turn(d);        /* a turn to unload or to reach: the protocol goes on */
+        }
+    }
+    if (d->c.ph == PH_LOAD && last && last->branch > 0 && ti == ps->nturns && unrecorded)
+        next_turn(d);            /* the turn just recorded here is unloaded next */
     return ADH_SUCCESS;
-}
-
-/* The first turn not unloaded yet (its index), or nturns. */
-static size_t first_loaded(const adh_drive *d)
-{
-    size_t i = 0;
-    while (i < d->run->nturns && d->run->turns[i].path != 0)
-        i++;
-    return i;
 }
 
 int adh_drive_next(const adh_drive *d, size_t *turn)
@@ -828,9 +873,20 @@ int adh_drive_next(const adh_drive *d, size_t *turn)
     default:
         return 0;
     }
-    if (more)
+    if (more) {
         *turn = u + 1;
-    return more ? -1 : 0;
+        return -1;
+    }
+    if (c->ti < nt && c->row >= 0) {   /* turns steps by hand left unreached */
+        *turn = c->ti + 1;
+        return +1;
+    }
+    return 0;
+}
+
+int adh_drive_status(const adh_drive *d)
+{
+    return d->c.ph == PH_DONE ? d->c.status : ADH_CONTINUE;
 }
 
 int adh_drive_set_static(adh_drive *d, const adh_material *m, const adh_static_settings *ss,

@@ -71,11 +71,19 @@ static void params_config(const tui_sim *s, const tui_params_set *p, adh_config 
     c->grid_chosen = p->grid_auto;
 }
 
-/* The grid as it stands in c (N and the spacing resolved). */
+/* The grid as it stands in c: N and the spacing resolved, and a graded
+ * grid's automatic band and radius (they follow the material and turns). */
 static adh_grid_asked grid_of(const adh_config *c)
 {
-    return (adh_grid_asked){ c->nodes, adh_config_spacing(c), c->fine_band, c->growth, c->grid_radius,
-                             c->kernel, c->storage, c->graded };
+    adh_grid_asked g = { c->nodes, adh_config_spacing(c), c->fine_band, c->growth, c->grid_radius,
+                         c->kernel, c->storage, c->graded };
+    if (c->graded) {
+        adh_rings_spec rs = adh_config_rings(c);
+        g.fine_band = rs.fine;
+        g.grid_radius = rs.rmax;
+        g.growth = rs.ratio;
+    }
+    return g;
 }
 
 static int same_grid(const adh_grid_asked *a, const adh_grid_asked *b)
@@ -311,6 +319,8 @@ static void drive_attach(tui_sim *s)
         adh_run_free(&s->path.run);
         adh_run_init(&s->path.run);
         adh_drive_set(s->drv, &s->mat, &s->relax, &ps, &s->path.run);
+    } else if (path_length(s)) {
+        adh_drive_retarget(s->drv, &ps);   /* the snapshot counted its turns against the turns of its time */
     }
 }
 
@@ -378,6 +388,11 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
     s->spacing = e.par.spacing;
     s->grid_auto = e.par.grid_auto;
     s->grid = e.par.grid;
+    {
+        /* whether a grid could be chosen for them, as when they were set */
+        tui_params_set q = params_get(s);
+        params_regrid(s, &q, s->gridchoice, sizeof s->gridchoice);
+    }
     s->step = e.par.step;
     s->start_opt = e.par.start_opt;
     s->turn = e.par.turn;
@@ -472,12 +487,45 @@ int tui_sim_param_lookup(const char *name)
 /* Every parameter change goes through here, from typed text or a scale key. */
 static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whylen);
 
+/* The turns an edit of the turn gives: the list typed (staged by
+ * tui_sim_set) or the one value v (NAN: none), shallowest first. */
+static void params_turns(const tui_sim *s, tui_params_set *np, double v)
+{
+    if (s->nstage) {
+        memcpy(np->turns, s->stage_turns, s->nstage * sizeof *np->turns);
+        np->nturns = s->nstage;
+    } else {
+        np->turns[0] = v;
+        np->nturns = isnan(v) ? 0 : 1;
+    }
+    qsort(np->turns, np->nturns, sizeof *np->turns, cmp_desc);
+    np->tcur = 0;
+    np->turn = np->nturns ? np->turns[0] : NAN;
+}
+
+/* Whether an edit of the turn to v changes a grid that follows the
+ * material (a deeper turn needs a larger one): the path cannot stay. */
+static int turn_regrids(const tui_sim *s, double v)
+{
+    if (!s->g)
+        return 0;   /* no grid built yet: nothing to keep */
+    tui_params_set np = params_get(s), now = np;
+    params_turns(s, &np, v);
+    char why[512];
+    params_regrid(s, &np, why, sizeof why);
+    adh_config a, b;
+    params_config(s, &np, &a);
+    params_config(s, &now, &b);
+    adh_grid_asked ga = grid_of(&a), gb = grid_of(&b);
+    return !same_grid(&ga, &gb);
+}
+
 /* An edit that took is put on the undo stack with the parameters before it
  * and (unless it kept the path) the path they had; the path on screen
  * starts afresh. */
 static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
 {
-    tui_edit e = { params_get(s), (int)p, p == P_TURN, { .hist = NULL } };
+    tui_edit e = { params_get(s), (int)p, p == P_TURN && !turn_regrids(s, v), { .hist = NULL } };
     adh_run_init(&e.path.run);
     if (!e.keeps_path)
         e.path = path_take(s);   /* the next step starts a new one */
@@ -490,6 +538,7 @@ static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen
     }
     edits_push(s->undo_edits, &s->nundo_edits, &e);
     edits_clear(s->redo_edits, &s->nredo_edits);
+    s->edit_kept_path = e.keeps_path;
     return 0;
 }
 
@@ -554,17 +603,8 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
         break;
     case P_SPACING: np.spacing = v; break;
     case P_TURN:
-        if (s->nstage) {
-            memcpy(np.turns, s->stage_turns, s->nstage * sizeof *np.turns);
-            np.nturns = s->nstage;
-            s->nstage = 0;
-        } else {
-            np.turns[0] = v;
-            np.nturns = isnan(v) ? 0 : 1;
-        }
-        qsort(np.turns, np.nturns, sizeof *np.turns, cmp_desc);
-        np.tcur = 0;
-        np.turn = np.nturns ? np.turns[0] : NAN;
+        params_turns(s, &np, v);
+        s->nstage = 0;
         break;
     default:
         snprintf(why, whylen, "%s cannot be set", name);
@@ -581,8 +621,9 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
         if (s->grid.graded && !np.grid.graded && p == P_N)
             np.spacing = NAN;   /* N uniform nodes at the scaled spacing, not N rings' fine width */
         choice[0] = '\0';
-    } else if (p <= P_R) {
-        params_regrid(s, &np, choice, sizeof choice);   /* the grid follows the material, as --batch's would */
+    } else if (p <= P_R || p == P_TURN) {
+        /* the grid follows the material and the deepest turn, as --batch's would */
+        params_regrid(s, &np, choice, sizeof choice);
     }
     char msg[512];
     if (params_check(s, &np, s->mode, msg, sizeof msg) == ADH_EINVAL) {
@@ -596,7 +637,7 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
     s->spacing = np.spacing;
     s->grid_auto = np.grid_auto;
     s->grid = np.grid;
-    if (p == P_N || p == P_SPACING || p <= P_R)
+    if (p == P_N || p == P_SPACING || p <= P_R || p == P_TURN)
         snprintf(s->gridchoice, sizeof s->gridchoice, "%s", choice);
     s->turn = np.turn;
     memcpy(s->turns, np.turns, np.nturns * sizeof *s->turns);
@@ -604,9 +645,10 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
     s->tcur = np.tcur;
     if (p <= P_R)
         derive(s);
-    if (p == P_TURN) {
+    if (p == P_TURN && !(s->g && grid_changed(s))) {
         /* where a run turns is not physics: the path stays, and the drive
-         * turns where it is told from here on */
+         * turns where it is told from here on (unless the grid had to grow
+         * for a deeper turn: then set_value took the path, as for E) */
         if (s->drv && !s->grid_stale) {
             tui_params_set q = params_get(s);
             adh_protocol_settings ps = params_protocol(&q);
@@ -767,9 +809,11 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
         snprintf(why, whylen, "the curve is complete (it ends at h0 = %s): b or u walks back along it", h0);
         return -1;
     } else if (s->cstatus != ADH_CONTINUE) {
-        if (s->cstatus == ADH_EGRID)
-            snprintf(why, whylen, "the curve stopped at the grid edge after %zu points: more nodes (N) or a "
-                     "larger spacing", s->curve.nrows);
+        if (s->cstatus == ADH_EGRID && s->g && s->curve.nrows) {
+            char edge[400];
+            adh_rings_edge_sentence(s->g, s->curve.rows[s->curve.nrows - 1].a, edge, sizeof edge);
+            snprintf(why, whylen, "the curve stopped after %zu points: %s", s->curve.nrows, edge);
+        }
         else
             snprintf(why, whylen, "the curve stopped after %zu point%s: %s; x starts it again", s->curve.nrows,
                      s->curve.nrows == 1 ? "" : "s", adh_strerror(s->cstatus));
@@ -936,7 +980,7 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
     }
     size_t k;
     if (dir == 0 && adh_drive_next(s->drv, &k) == 0) {
-        snprintf(why, whylen, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
+        tui_sim_why_done(s, why, whylen);
         return -1;
     }
     s->t0 = adh_clock_seconds();
@@ -1012,6 +1056,36 @@ int tui_sim_next(const tui_sim *s, size_t *turn)
 {
     *turn = s->nturns ? 1 : 0;
     return s->drv && !s->grid_stale ? adh_drive_next(s->drv, turn) : +1;
+}
+
+void tui_sim_why_done(const tui_sim *s, char *buf, size_t len)
+{
+    int st = s->drv && !s->grid_stale ? adh_drive_status(s->drv) : ADH_SUCCESS;
+    if (st == ADH_SUCCESS || st == ADH_CONTINUE)
+        snprintf(buf, len, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
+    else
+        snprintf(buf, len, "the protocol stopped: %s (f and b still step by hand, x starts again)", adh_strerror(st));
+}
+
+void tui_sim_turn_name(const tui_sim *s, size_t i, char *buf, size_t len)
+{
+    const adh_run *run = &s->path.run;
+    if (i >= run->nturns) {
+        snprintf(buf, len, "a turn");
+        return;
+    }
+    double h0 = run->turns[i].h0, tol = 1e-6 * s->step;
+    for (size_t k = 0; k < s->nturns; k++)
+        if (fabs(s->turns[k] - h0) < tol) {
+            if (s->nturns > 1)
+                snprintf(buf, len, "turn %zu of %zu", k + 1, s->nturns);
+            else
+                snprintf(buf, len, "the turn");
+            return;
+        }
+    char q[64];
+    adh_format_quantity(h0, ADH_Q_LENGTH, 4, q, sizeof q);
+    snprintf(buf, len, "the turn at h0 = %s", q);
 }
 
 const adh_run *tui_sim_run(const tui_sim *s)

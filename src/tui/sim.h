@@ -119,6 +119,7 @@ typedef struct tui_sim {
     tui_edit undo_edits[TUI_MAX_EDITS], redo_edits[TUI_MAX_EDITS];
     size_t nundo_edits, nredo_edits;
     int edit_moved;            /* the last undo/redo took back an edit: its parameter, else -1 */
+    int edit_kept_path;        /* the last edit kept the path (a turn the grid did not have to follow) */
     int grid_stale;            /* the grid changed since the kernel was built */
 
     /* the step being solved */
@@ -213,6 +214,13 @@ unsigned tui_sim_events(const tui_sim *s);
 /* Which way the protocol's next step goes (adh_drive_next): +1 loading
  * (*turn its next turn, 0 none), -1 unloading turn *turn, 0 complete. */
 int tui_sim_next(const tui_sim *s, size_t *turn);
+/* Why the protocol has no next step (tui_sim_next 0): a sentence, "the
+ * protocol is complete ..." or the status that stopped it. */
+void tui_sim_why_done(const tui_sim *s, char *buf, size_t len);
+/* The run's turn i (0-based, in the order reached) in words: "turn 3 of 8"
+ * for a turn of the protocol, "the turn at h0 = 1.5 nm" for one made by
+ * hand (b on the loading branch). */
+void tui_sim_turn_name(const tui_sim *s, size_t i, char *buf, size_t len);
 /* The relaxation path's record (rows, turns, pull-offs), as --batch's. */
 const adh_run *tui_sim_run(const tui_sim *s);
 

@@ -279,15 +279,26 @@ static int run_done(tui *t)
     size_t nt = t->sim.nturns;
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
+    /* turns are named by the protocol's numbers ("turn 3 of 8"); a turn
+     * made by hand by its position */
+    size_t nk;
+    int next = tui_sim_next(&t->sim, &nk);
+    char this_turn[96], next_turn[128];
+    if (next < 0)
+        tui_sim_turn_name(&t->sim, nk - 1, next_turn, sizeof next_turn);
+    else if (next > 0 && nk > 0)
+        snprintf(next_turn, sizeof next_turn, "turn %zu of %zu", nk, nt);
+    else
+        snprintf(next_turn, sizeof next_turn, "the next turn");
     if (ev & ADH_DRIVE_TURN) {
-        size_t k = run->nturns;
-        if (nt <= 1)
+        tui_sim_turn_name(&t->sim, run->nturns - 1, this_turn, sizeof this_turn);
+        if (nt <= 1 && next < 0)
             say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until pull-off", h0, F);
-        else if (k < nt)
-            say(t, 0, "at turn %zu of %zu, h0 = %s (force %s): press r to load on to turn %zu", k, nt, h0, F, k + 1);
+        else if (next > 0)
+            say(t, 0, "at %s, h0 = %s (force %s): press r to load on to %s", this_turn, h0, F, next_turn);
         else
-            say(t, 0, "at turn %zu of %zu, h0 = %s (force %s): press r to unload turn 1 until pull-off (from its "
-                "state on the way in)", k, nt, h0, F);
+            say(t, 0, "at %s, h0 = %s (force %s): press r to unload %s until pull-off (from its state on the way in)",
+                this_turn, h0, F, next_turn);
         return 1;
     }
     if (!(ev & ADH_DRIVE_END))
@@ -296,12 +307,19 @@ static int run_done(tui *t)
         say(t, 0, "in contact at h0 = %s (no turning point set: :set turn VALUE)", h0);
         return 1;
     }
-    size_t nk;
-    int k = o->path, left = tui_sim_next(&t->sim, &nk) < 0;
+    int k = o->path;
+    tui_sim_turn_name(&t->sim, (size_t)(k - 1), this_turn, sizeof this_turn);
+    char then[192] = "";
+    if (next < 0)
+        snprintf(then, sizeof then, "; r unloads %s", next_turn);
+    else if (next > 0)
+        snprintf(then, sizeof then, "; r loads on to %s", next_turn);
     if (ev & ADH_DRIVE_PULLOFF) {
-        if (nt > 1 && left)
-            say(t, 0, "pulled off at h0 = %s (turn %d of %zu): pull-off %s; r unloads turn %d", h0, k, nt,
-                pulloff_text(t).s, k + 1);
+        if (next != 0)
+            say(t, 0, "pulled off at h0 = %s (%s): pull-off %s%s", h0, this_turn, pulloff_text(t).s, then);
+        else if (nt > 1)
+            say(t, 0, "pulled off at h0 = %s (%s): pull-off %s; force after the jump %s", h0, this_turn,
+                pulloff_text(t).s, F);
         else
             say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0, pulloff_text(t).s, F);
         return 1;
@@ -309,15 +327,18 @@ static int run_done(tui *t)
     int touched = 0;
     for (size_t i = 0; i < run->nrows; i++)
         touched |= run->rows[i].branch < 0 && run->rows[i].path == k && run->rows[i].a > 0;
-    say(t, 0, "back at the start h0 = %s%s", h0, touched ? " still in contact" : " without having been in contact");
+    say(t, 0, "back at the start h0 = %s%s%s", h0, touched ? " still in contact" : " without having been in contact",
+        then);
     return 1;
 }
 
 static void after_step(tui *t, int rc, const char *why)
 {
     if (rc == TUI_SIM_DONE) {
+        char done[256];
         stop_all(t);
-        say(t, 0, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
+        tui_sim_why_done(&t->sim, done, sizeof done);
+        say(t, 0, "%s", done);
         return;
     }
     if (rc != ADH_SUCCESS) {
@@ -375,8 +396,11 @@ static void param_changed(tui *t, tui_param p)
     tui_sim_curve(&t->sim, &ncurve);
     if (is_static(t) && p == P_TURN)
         say(t, 0, "turn = %s: the curve now ends there%s", val, ncurve ? "" : "; f or r follows it from the start");
-    else if (p == P_TURN)
+    else if (p == P_TURN && t->sim.edit_kept_path)
         say(t, 0, "turn = %s: r now loads to there (the path is kept)", val);
+    else if (p == P_TURN)
+        say(t, 0, "turn = %s: the grid follows it (N = %zu, as --batch would choose); a new path starts from the "
+            "start", val, t->sim.nodes);
     else if (is_static(t) && (ncurve || p == P_EPS))
         say(t, 0, "%s = %s: the equilibrium curve does not depend on it%s (the relaxation path restarts)",
             tui_params[p].name, val, ncurve ? " and is kept" : "");
@@ -644,13 +668,18 @@ static int handle_key(tui *t, int key)
         int next = tui_sim_next(&t->sim, &k);
         t->pending = 0;
         if (next == 0) {
-            say(t, 0, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
+            tui_sim_why_done(&t->sim, why, sizeof why);
+            say(t, 0, "%s", why);
             break;
         }
         t->run_dir = 1;
-        if (t->sim.nturns > 1 && k > 0)
-            say(t, 0, "%s turn %zu of %zu%s; any key pauses", next < 0 ? "unloading" : "loading to", k, t->sim.nturns,
-                next < 0 ? " until pull-off" : "");
+        char tname[128];
+        if (next < 0)
+            tui_sim_turn_name(&t->sim, k - 1, tname, sizeof tname);
+        if (next < 0 && strcmp(tname, "the turn") != 0)
+            say(t, 0, "unloading %s until pull-off; any key pauses", tname);
+        else if (next > 0 && t->sim.nturns > 1 && k > 0)
+            say(t, 0, "loading to turn %zu of %zu; any key pauses", k, t->sim.nturns);
         else
             say(t, 0, "%s", next < 0 ? "unloading until pull-off; any key pauses"
                                      : "loading to the turning point; any key pauses");

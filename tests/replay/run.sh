@@ -196,6 +196,16 @@ check ":set E 0.1GPa: graded rings, as --batch chooses ($(awk -F'\t' '$1 == "nod
 check "and resolved" grep -q "resolved" "$SO/soft-E.txt"
 check "the soft contact's rows are --batch -E 0.1GPa's, every one" same_rows "$SO/soft-rows.tsv" "$SB2"
 
+HT=$W/handturns
+check "b at turn 1 then r: turn 1 pulls off, and r loads on to turn 2 (never reached yet)" \
+    grep -q "(turn 1 of 2): pull-off .*; r loads on to turn 2 of 2" "$HT/handturns-pull1.txt"
+check "r reaches turn 2 and unloads it next" grep -q "^at turn 2 of 2, h0 = -2 nm .*unload turn 2 of 2" "$HT/handturns-turn2.txt"
+check "then the protocol is complete" grep -q "^the protocol is complete" "$HT/handturns-complete.txt"
+check "b undone at the start: r loads to the turn (the undone step by hand is not replayed)" \
+    grep -q "^at turn 1 of 2, h0 = -1 nm" "$HT/handturns-undo.txt"
+check "a turn set where the loading branch is: r unloads from there to pull-off" \
+    grep -q "^pulled off at h0 = " "$HT/handturns-here.txt"
+
 U=$W/undo
 check "undo gives back the earlier state's numbers exactly" [ "$(state "$U/undo-back.txt")" = "$(state "$U/undo-32.txt")" ]
 check "redo gives back the later state's numbers exactly" [ "$(state "$U/undo-redo.txt")" = "$(state "$U/undo-33.txt")" ]

@@ -112,6 +112,47 @@ int main(void)
     adh_drive_set(d, &small, &rs, &ps, &run);
     ok(adh_drive_hand(d, -1) == ADH_EINVAL && adh_drive_hand(d, +1) == ADH_SUCCESS,
        "a step beyond the model's reach (19.9 + 0.25 nm > R/50) is refused before it starts; one in is not");
+
+    /* after steps by hand the protocol goes on from the path: two turns,
+     * turn 1 unloaded by hand then to its pull-off, and loading goes on to
+     * turn 2, never reached (a stored profile comes back with its row on
+     * redo) */
+    ps.start = NAN;
+    ps.nturns = 2;
+    ps.turns[0] = -1e-9;
+    ps.turns[1] = -2e-9;
+    ps.nprofiles = 1;
+    ps.profiles[0] = -0.5e-9;
+    adh_run_free(&run);
+    adh_run_init(&run);
+    adh_drive_set(d, &m, &rs, &ps, &run);
+    adh_history *h2 = adh_history_alloc();
+    int row, ok_steps = 1;
+    while (!(adh_drive_events(d) & ADH_DRIVE_TURN) && ok_steps) {
+        ok_steps = adh_drive_iterate(d, 0, &row) == ADH_CONTINUE;
+        if (row)
+            adh_history_push(h2, d);
+    }
+    size_t np = run.nprofiles, nr = run.nrows;
+    ok(ok_steps && np == 1 && run.rows[nr - 1].h0 == -1e-9, "loading reaches turn 1, storing the profile at -0.5 nm");
+    adh_history_undo(h2, d), adh_history_undo(h2, d), adh_history_undo(h2, d);
+    ok(run.nprofiles == 0, "undo past the profile's row drops it");
+    int r1 = adh_history_redo(h2, d), r2 = adh_history_redo(h2, d), r3 = adh_history_redo(h2, d);
+    ok(r1 == ADH_SUCCESS && r2 == ADH_SUCCESS && r3 == ADH_SUCCESS && run.nprofiles == 1 && run.nrows == nr &&
+       fabs(run.profiles[0].h0 - -0.5e-9) < 1e-18, "redo puts the row and its profile back (%d %d %d, %zu profiles, %zu of %zu rows, h0 %g)",
+       r1, r2, r3, run.nprofiles, run.nrows, nr, run.nprofiles ? run.profiles[0].h0 : NAN);
+    ok(step_hand(d, -1) == ADH_CONTINUE && adh_drive_next(d, &t) == -1 && t == 1, "b at turn 1: its branch goes on");
+    int rc2;
+    while ((rc2 = adh_drive_step(d)) == ADH_CONTINUE && !(adh_drive_events(d) & ADH_DRIVE_PULLOFF))
+        ;
+    ok(rc2 == ADH_CONTINUE && (adh_drive_events(d) & ADH_DRIVE_END), "turn 1 pulls off, and its branch ends there");
+    ok(adh_drive_next(d, &t) == +1 && t == 2, "then the protocol loads on to turn 2, never reached by hand");
+    while ((rc2 = adh_drive_step(d)) == ADH_CONTINUE)
+        ;
+    ok(rc2 == ADH_SUCCESS && run.nturns == 2 && run.turns[1].h0 == -2e-9 && !isnan(run.turns[1].pulloff_F) &&
+       adh_drive_status(d) == ADH_SUCCESS, "and unloads it: both turns pulled off, the protocol complete");
+    adh_history_free(h2);
+
     adh_history_free(h);
     adh_drive_free(d);
     adh_run_free(&run);
