@@ -103,6 +103,12 @@ const adh_static *adh_drive_static(const adh_drive *d);
  * row). After a final status every further call returns it again. */
 int adh_drive_step(adh_drive *d);
 
+/* Steps d to the end of its protocol (a batch run, a sweep's run), calling
+ * cb after every row; a nonzero return stops it. ADH_SUCCESS when the
+ * protocol is complete or was stopped on request (cb, or the cancel flag:
+ * run->interrupted = 1), else the error that ended the run. */
+int adh_drive_run(adh_drive *d, adh_step_cb cb, void *ctx);
+
 /* The same in batches, for a driver that must stay responsive (the TUI
  * polls keys between them): at most max_batch relaxation iterations of the
  * step under way (0: until it is done; a dwell is done whole), starting

@@ -661,6 +661,21 @@ int adh_drive_iterate(adh_drive *d, size_t max_batch, int *row)
     return rc;
 }
 
+int adh_drive_run(adh_drive *d, adh_step_cb cb, void *ctx)
+{
+    int rc;
+    while ((rc = adh_drive_step(d)) == ADH_CONTINUE)
+        if (cb && cb(adh_drive_row(d), d->run, ctx)) {
+            d->run->interrupted = 1;
+            return ADH_SUCCESS;
+        }
+    if (rc == ADH_EINTR) {
+        d->run->interrupted = 1;   /* stopped on request: not an error, the run says so */
+        rc = ADH_SUCCESS;
+    }
+    return rc;
+}
+
 int adh_drive_step(adh_drive *d)
 {
     int row, rc;

@@ -153,18 +153,9 @@ int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material 
         return run->status;
     }
     int rc = adh_drive_set(d, m, rs, ps, run);
-    while (rc == ADH_SUCCESS || rc == ADH_CONTINUE) {
-        if ((rc = adh_drive_step(d)) != ADH_CONTINUE)
-            break;
-        if (cb && cb(adh_drive_row(d), run, ctx)) {
-            run->interrupted = 1;
-            rc = ADH_SUCCESS;
-            break;
-        }
-    }
+    if (rc == ADH_SUCCESS)
+        rc = adh_drive_run(d, cb, ctx);
     adh_drive_free(d);
-    if (rc == ADH_EINTR)
-        rc = ADH_SUCCESS; /* interrupted on request: not an error, run->interrupted says so */
     run->status = rc;
     return rc;
 }

@@ -1123,19 +1123,8 @@ int adh_static_run_protocol(const adh_grid *g, const adh_kernel *k, const adh_ma
         return run->status;
     }
     int rc = adh_drive_set_static(d, m, s, ps, run);
-    while (rc == ADH_SUCCESS || rc == ADH_CONTINUE) {
-        if ((rc = adh_drive_step(d)) != ADH_CONTINUE)
-            break;
-        if (cb && cb(adh_drive_row(d), run, ctx)) {
-            run->interrupted = 1;
-            rc = ADH_SUCCESS;
-            break;
-        }
-    }
-    if (rc == ADH_EINTR) {
-        run->interrupted = 1;
-        rc = ADH_SUCCESS;
-    }
+    if (rc == ADH_SUCCESS)
+        rc = adh_drive_run(d, cb, ctx);
     const adh_static *w = adh_drive_static(d);
     adh_static_result r;
     memset(&r, 0, sizeof r);
