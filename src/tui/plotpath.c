@@ -87,7 +87,9 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
     c.mat = s->mat;
     c.nodes = s->nodes;
     c.spacing = tui_sim_spacing(s);
-    c.kernel = s->kernel;
+    c.kernel = s->grid.kernel;
+    c.storage = s->grid.storage;
+    c.graded = s->grid.graded;
     c.relax = s->relax;
     c.proto.step = s->step;
     c.proto.start = s->start;

@@ -272,7 +272,6 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
     s->mat = cfg->mat;
     s->nodes = cfg->nodes;
     s->spacing = cfg->spacing;
-    s->kernel = cfg->kernel;
     s->base = *cfg;
     s->grid_auto = cfg->grid_chosen;
     s->grid = (adh_grid_asked){ cfg->nodes, cfg->spacing, cfg->fine_band, cfg->growth, cfg->grid_radius,

@@ -96,7 +96,6 @@ typedef struct tui_sim {
     tui_models models;
     size_t nodes;
     double spacing;            /* NAN: scaled with sqrt(R z0); graded: the fine rings' width */
-    adh_kernel_type kernel;
     int grid_auto;             /* no N or spacing given: the grid is chosen for the material, as --batch's */
     adh_grid_asked grid;       /* graded or not, its band, growth and radius, kernel, operator */
     adh_config base;           /* the configuration the screen started from (its grid as asked) */
