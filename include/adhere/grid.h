@@ -40,9 +40,11 @@ typedef enum adh_grid_use { ADH_GRID_RELAX = 0, ADH_GRID_STATIC = 1 } adh_grid_u
 #define ADH_GRID_EDGE_SPACING_RELAX 0.45
 #define ADH_GRID_EDGE_SPACING_STATIC 0.3
 double adh_grid_edge_spacing(adh_grid_use use);
-/* The budget of an automatic grid: a dense N x N kernel of at most this
- * many nodes (4000: 128 MB, ~4 ms per relaxation iteration, a Figure 4
- * cycle of ~15 min on one core). */
+/* The budget of an automatic uniform grid: a dense N x N kernel of at most
+ * this many nodes (4000: 128 MB, ~4 ms per relaxation iteration, a Figure 4
+ * cycle of ~15 min on one core). An automatic graded grid is held as an H^2
+ * operator (~1.2 kB a ring): its budget is the grid limit itself,
+ * ADH_GRID_NODES_MAX rings (~24 MB; sigma = 75 takes ~6 000). */
 #define ADH_GRID_MAX_NODES 4000
 /* The nodes a grid may have at all (flags, scene files, the TUI's N). */
 #define ADH_GRID_NODES_MIN 10

@@ -121,14 +121,19 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
         nn = adh_rings_count(&s);
         c->n = nn;
     }
-    if (nn > ADH_GRID_MAX_NODES || need > 0.3 * m->R) {
+    /* a dense kernel's memory bounds a uniform grid; graded rings are held
+     * as H^2 (~1.2 kB a ring), bounded by the grid limit alone */
+    size_t budget = c->hierarchical ? ADH_GRID_NODES_MAX : ADH_GRID_MAX_NODES;
+    double held = c->hierarchical ? 1.2e3 * (double)nn / 1048576.0 : mb((double)nn);
+    double held_max = c->hierarchical ? 1.2e3 * (double)budget / 1048576.0 : mb((double)budget);
+    if (nn > budget || need > 0.3 * m->R) {
         snprintf(why, whylen,
                  "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
-                 "out to Rmax = %.3g m: a %s grid of N = %zu nodes (a dense kernel of %.0f MB), beyond this program's "
-                 "budget of N = %d (%.0f MB); use a stiffer material or a smaller sigma, or give -N/--spacing "
+                 "out to Rmax = %.3g m: a %s grid of N = %zu nodes (%s of %.0f MB), beyond this program's "
+                 "budget of N = %zu (%.0f MB); use a stiffer material or a smaller sigma, or give -N/--spacing "
                  "yourself with --force (the run is then marked resolved 0)",
-                 d.sigma, limit, widths, adh_edge_zone(m), c->rmax, kind, nn, mb((double)nn), ADH_GRID_MAX_NODES,
-                 mb(ADH_GRID_MAX_NODES));
+                 d.sigma, limit, widths, adh_edge_zone(m), c->rmax, kind, nn,
+                 c->hierarchical ? "an H^2 kernel" : "a dense kernel", held, budget, held_max);
         return ADH_EGRID;
     }
     if (use == ADH_GRID_STATIC && nn > ADH_GRID_STATIC_MAX_NODES) {

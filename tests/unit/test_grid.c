@@ -62,7 +62,8 @@ static void check_and_choose(void)
             }
             adh_grid_check(&s, (adh_grid_use)use, n, g ? g->dr : NAN, &r);
             adh_protocol_settings ps = adh_protocol_settings_default();
-            if (rc != ADH_SUCCESS || !g || g->n != n || !r.resolved || n > ADH_GRID_MAX_NODES ||
+            if (rc != ADH_SUCCESS || !g || g->n != n || !r.resolved ||
+                n > (gc.hierarchical ? (size_t)ADH_GRID_NODES_MAX : (size_t)ADH_GRID_MAX_NODES) ||
                 adh_protocol_check(&ps, &s, g, why, sizeof why) != ADH_SUCCESS ||
                 adh_rings_check(g, &s, -5e-9, why, sizeof why) != ADH_SUCCESS) {
                 bad++;
@@ -96,10 +97,20 @@ static void check_and_choose(void)
     rc = adh_grid_choose(&st30, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why);
     ok(rc == ADH_EGRID && strstr(why, "sigma = 30") && strstr(why, "--mode=relax"),
        "the static curve at sigma = 30 is refused before it starts (%s)", why);
+    /* soft contacts as the H^2 operator allows: sigma = 75 runs resolved on
+     * graded rings; a dense (uniform) grid there is beyond its budget */
     adh_material soft = at_sigma(75);
     rc = adh_grid_choose(&soft, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
-    ok(rc == ADH_EGRID && strstr(why, "sigma = 75") && strstr(why, "MB") && strstr(why, "--force"),
-       "sigma = 75 is refused, naming sigma, the memory and what to do (%s)", why);
+    ok(rc == ADH_SUCCESS && gc.graded && gc.hierarchical && gc.n > ADH_GRID_MAX_NODES && gc.n <= ADH_GRID_NODES_MAX &&
+           gc.dr <= 0.45 * adh_edge_zone(&soft) * (1 + 1e-9) && gc.fine >= adh_rings_contact_estimate(&soft, -5e-9),
+       "sigma = 75 relaxation: graded, resolved, %zu rings held as H^2", gc.n);
+    rc = adh_grid_choose(&soft, ADH_GRID_RELAX, -5e-9, 0, &gc, why, sizeof why);
+    ok(rc == ADH_EGRID && strstr(why, "sigma = 75") && strstr(why, "dense kernel") && strstr(why, "--force"),
+       "with the paper's kernel (uniform, dense) sigma = 75 is refused, naming sigma, the memory and what to do (%s)", why);
+    adh_material softer = at_sigma(225);
+    rc = adh_grid_choose(&softer, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
+    ok(rc == ADH_EGRID && strstr(why, "sigma = 225") && strstr(why, "H^2 kernel") && strstr(why, "--force"),
+       "sigma = 225 needs more rings than the grid limit: refused, naming sigma, the memory and what to do (%s)", why);
 }
 
 /* pull-off and hysteresis of one cycle at sigma on a grid of x edge-zone
