@@ -164,6 +164,8 @@ int adh_drive_next(const adh_drive *d, size_t *turn);
 /* ADH_CONTINUE while the protocol goes on, else the status that ended it
  * (ADH_SUCCESS: complete; ADH_EGRID, ADH_ENAN...: stopped there). */
 int adh_drive_status(const adh_drive *d);
+/* Where the step under way goes (h0, m); NAN between steps. */
+double adh_drive_step_position(const adh_drive *d);
 /* Iterations so far of the step under way (or the last), and its change. */
 size_t adh_drive_progress(const adh_drive *d, double *change);
 /* Replaces the protocol's turning points, keeping the path: turns the

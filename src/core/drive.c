@@ -809,6 +809,11 @@ unsigned adh_drive_events(const adh_drive *d)
     return d->c.row >= 0 ? d->c.events : 0;
 }
 
+double adh_drive_step_position(const adh_drive *d)
+{
+    return d->c.inflight ? d->c.h0 : NAN;
+}
+
 size_t adh_drive_progress(const adh_drive *d, double *change)
 {
     *change = adh_relax_change(d->w);

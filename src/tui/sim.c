@@ -1178,6 +1178,13 @@ void tui_sim_cycle(const tui_sim *s, adh_cycle *c)
     adh_cycle_measure(s->path.run.nrows ? s->path.run.rows : NULL, s->path.run.nrows, c);
 }
 
+double tui_sim_target(const tui_sim *s)
+{
+    if (s->mode == ADH_MODE_STATIC || !s->drv)
+        return s->target;
+    return adh_drive_step_position(s->drv);
+}
+
 size_t tui_sim_progress(const tui_sim *s, double *change)
 {
     if (s->mode == ADH_MODE_STATIC) {

@@ -241,6 +241,8 @@ size_t tui_sim_redoable(const tui_sim *s);
 /* The relaxation path measured as a cycle (max load, pull-off, jumps,
  * hysteresis): adh_cycle_measure() of its rows. */
 void tui_sim_cycle(const tui_sim *s, adh_cycle *c);
+/* Where the step in progress goes (static mode: the point's start). */
+double tui_sim_target(const tui_sim *s);
 /* Iterations so far of the step in progress, and its convergence measure. */
 size_t tui_sim_progress(const tui_sim *s, double *change);
 double tui_sim_spacing(const tui_sim *s);

@@ -830,7 +830,7 @@ static void progress(tui *t)
 {
     if (is_static(t)) {
         char h0[64];
-        fmtq(t->sim.target, ADH_Q_LENGTH, h0, sizeof h0);
+        fmtq(tui_sim_target(&t->sim), ADH_Q_LENGTH, h0, sizeof h0);
         say(t, 0, "solving the equilibrium curve past h0 = %s (point %zu); any key stops", h0, t->sim.curve.nrows + 1);
         draw(t);
         return;
@@ -838,7 +838,7 @@ static void progress(tui *t)
     double change;
     size_t it = tui_sim_progress(&t->sim, &change);
     char h0[64], c[64], e[64];
-    fmtq(t->sim.target, ADH_Q_LENGTH, h0, sizeof h0);
+    fmtq(tui_sim_target(&t->sim), ADH_Q_LENGTH, h0, sizeof h0);
     fmtq(change, ADH_Q_LENGTH, c, sizeof c);
     fmtq(t->sim.relax.eps, ADH_Q_LENGTH, e, sizeof e);
     say(t, 0, "relaxing at h0 = %s: iteration %zu, change %s (done below %s); any key stops", h0, it, c, e);
