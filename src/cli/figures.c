@@ -298,7 +298,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
-    double fbig = 0, xmin = INFINITY;
+    double fbig = 0, fmin_ = 0, fmax_ = 0, xmin = INFINITY;
     int same_material = cfg->sweep.kind == ADH_SWEEP_EPS;
     for (size_t i = 0; i < n; i++) {
         for (size_t j = 0; j < runs[i].nrows; j++) {
@@ -307,6 +307,8 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
                 fputc('\n', f); /* a break between branches */
             fprintf(f, "%.17g\t%.17g\n", o->h0, o->F);
             fbig = fmax(fbig, fabs(o->F));
+            fmin_ = fmin(fmin_, o->F);
+            fmax_ = fmax(fmax_, o->F);
             xmin = fmin(xmin, o->h0);
         }
         fprintf(f, "\n\n");
@@ -339,9 +341,12 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", adh_sweep_name(cfg->sweep.kind));
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
-    /* the top half is empty (the range is symmetric): the key goes there, clear of the loops */
-    adh_gnuplot_cmd(fg->gp, "set key top right");
-    adh_gnuplot_cmd(fg->gp, "set yrange [%.17g:%.17g]", -1.15 * fbig * fs, 1.15 * fbig * fs);
+    /* the loops hang below zero and the curves are flat past the jump-out:
+     * the range spans the data (with a margin above zero), the key sits at
+     * the right, halfway down, where only the flat tails run (above it) */
+    adh_gnuplot_cmd(fg->gp, "set key right center");
+    double top = fmax(fmax_, 0.0) + 0.15 * (fmax(fmax_, 0.0) - fmin_);
+    adh_gnuplot_cmd(fg->gp, "set yrange [%.17g:%.17g]", 1.1 * fmin_ * fs, top * fs);
     char *cmd = NULL;
     size_t cap = 0;
     FILE *c = open_memstream(&cmd, &cap);
@@ -364,7 +369,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     }
     if (jkr_parts)
         fprintf(c, ", %s index 0 using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" "
-                   "title \"JKR equilibrium (dashed: displacement control)\", "
+                   "title \"JKR equilibrium (dashed: fixed h_0)\", "
                    "'' index 1 using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" dt (5,4) "
                    "notitle", adh_gp_path(jkr, q, sizeof q), fs, fs);
     fclose(c);

@@ -631,7 +631,8 @@ static int plot_force(plotter *pl)
         amin = fmin(amin, -d->F_jkr * fscale);
         amax = fmax(amax, -d->F_dmt * fscale);
         if (amax > amin) {
-            double span = amax - amin, lo_ = amin - 0.1 * span, hi_ = amax + 0.1 * span;
+            /* room below the lowest line (JKR's, as a rule) for the key */
+            double span = amax - amin, lo_ = amin - 0.35 * span, hi_ = amax + 0.1 * span;
             double step = nice_step((hi_ - lo_) / 6.0);
             adh_gnuplot_cmd(pl->gp, "set ytics %.17g", step);
             adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", lo_, hi_);
