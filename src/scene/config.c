@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 
 #include "adhere/grid.h"
 #include "adhere/models.h"
@@ -156,6 +157,10 @@ int adh_config_set_grid(adh_config *c, const char *text, char *why, size_t whyle
 static int radius(const char *text, double *out, char *why, size_t whylen)
 {
     double v;
+    if (strcasecmp(text, "auto") == 0) {   /* back to the default, as a scene's key says */
+        *out = NAN;
+        return 0;
+    }
     if (adh_parse_quantity(text, ADH_Q_LENGTH, &v, why, whylen) != 0)
         return -1;
     if (!(v > 0)) {

@@ -142,10 +142,6 @@ static int grid_key(scene_parse *sp, const char *name, const char *value)
     adh_config *c = sp->cfg;
     char msg[256];
     int band = !strcmp(name, "fine_band"), radius = !strcmp(name, "radius");
-    if ((band || radius) && strcasecmp(value, "auto") == 0) {
-        *(band ? &c->fine_band : &c->grid_radius) = NAN;
-        return 1;
-    }
     int rc = band ? adh_config_set_fine_band(c, value, msg, sizeof msg)
            : radius ? adh_config_set_grid_radius(c, value, msg, sizeof msg)
            : !strcmp(name, "growth") ? adh_config_set_growth(c, value, msg, sizeof msg)

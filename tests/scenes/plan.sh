@@ -122,6 +122,8 @@ same_kernel "the flags override every [grid] key" \
     "$TMP/rings.scene --fine-band=800nm --growth=1.02 --grid-radius=2.5um --operator=h2" \
     "--kernel=ring --grid=graded --fine-band=800nm --growth=1.02 --grid-radius=2.5um --operator=h2"
 same_kernel "--grid=uniform overrides grid = graded" "$TMP/rings.scene --grid=uniform" "--kernel=ring --operator=hmat"
+same_kernel "--fine-band=auto and --grid-radius=auto bring back the defaults over the scene's band and radius" \
+    "$TMP/rings.scene --fine-band=auto --grid-radius=auto" "--kernel=ring --grid=graded --growth=1.08 --operator=hmat"
 # sigma = 22.5: the automatic grid is graded and held as h2, unless told
 printf '[material]\nE = 0.1GPa\n[grid]\noperator = dense\n' >"$TMP/soft.scene"
 check "an automatic graded grid keeps the scene's operator = dense ($(kline "$TMP/soft.scene"))" \
