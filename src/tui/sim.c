@@ -736,6 +736,15 @@ int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whyl
         snprintf(why, whylen, "%s is not set: type a value first", tui_params[p].name);
         return -1;
     }
+    if (p == P_TURN && s->nturns > 1) {
+        /* every turning point of the list, not the one on screen alone */
+        for (size_t i = 0; i < s->nturns; i++)
+            s->stage_turns[i] = s->turns[i] * factor;
+        s->nstage = s->nturns;
+        int rc = set_value(s, p, s->stage_turns[0], why, whylen);
+        s->nstage = 0;
+        return rc;
+    }
     return set_value(s, p, p == P_N ? round(v * factor) : v * factor, why, whylen);
 }
 

@@ -203,6 +203,8 @@ check "r reaches turn 2 and unloads it next" grep -q "^at turn 2 of 2, h0 = -2 n
 check "then the protocol is complete" grep -q "^the protocol is complete" "$HT/handturns-complete.txt"
 check "b undone at the start: r loads to the turn (the undone step by hand is not replayed)" \
     grep -q "^at turn 1 of 2, h0 = -1 nm" "$HT/handturns-undo.txt"
+check "+ on the turn field doubles the whole list: turn 1 of 2 is now at -2 nm" \
+    grep -q "^at turn 1 of 2, h0 = -2 nm" "$HT/handturns-scaled.txt"
 check "a turn set where the loading branch is: r unloads from there to pull-off" \
     grep -q "^pulled off at h0 = " "$HT/handturns-here.txt"
 
