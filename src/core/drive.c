@@ -254,31 +254,43 @@ static long load_index_after(const adh_drive *d, const adh_obs *o)
     return lround((d->start - o->h0) / d->ps.step) + 1;
 }
 
-/* A branch has ended: unload the next turn not unloaded yet (in the order
- * they were reached; a branch begun by hand counts as unloaded); else, when
- * steps by hand left turns of the protocol unreached, load on to them from
- * where the path is; else the protocol is complete. */
-static void next_turn(adh_drive *d)
+/* Whether the loading branch has reached its end: every turn (without
+ * turns, contact). */
+static int loading_done(const adh_drive *d)
 {
-    size_t i = first_loaded(d);
-    cursor *c = &d->c;
-    c->status = ADH_SUCCESS;
-    if (d->ps.unload && i < d->run->nturns) {
-        c->ui = i;
-        c->ph = PH_TURN;
-    } else if (c->ti < d->ps.nturns && c->row >= 0) {
-        const adh_obs *o = &d->run->rows[c->row];
-        c->ph = PH_LOAD;
-        c->k = load_index_after(d, o);
-        c->in_contact = o->a > 0;
-    } else {
-        c->ph = PH_DONE;
-    }
+    size_t nt = d->ps.nturns;
+    return (nt == 0 && d->c.in_contact) || (nt > 0 && d->c.ti == nt);
 }
 
-static void begin_unloading(adh_drive *d)
+/* What follows a branch that has ended: the next turn not unloaded yet (in
+ * the order they were reached; a branch begun by hand counts as unloaded;
+ * *ui its index), else, when steps by hand left turns of the protocol
+ * unreached, loading on to them from where the path is (PH_LOAD), else
+ * the end (PH_DONE). */
+static phase after_branch(const adh_drive *d, size_t *ui)
 {
-    next_turn(d);
+    *ui = first_loaded(d);
+    if (d->ps.unload && *ui < d->run->nturns)
+        return PH_TURN;
+    if (d->c.ti < d->ps.nturns && d->c.row >= 0)
+        return PH_LOAD;
+    return PH_DONE;
+}
+
+/* A branch has ended: on to what follows it (after_branch). */
+static void next_turn(adh_drive *d)
+{
+    cursor *c = &d->c;
+    size_t ui;
+    c->status = ADH_SUCCESS;
+    c->ph = after_branch(d, &ui);
+    if (c->ph == PH_TURN) {
+        c->ui = ui;
+    } else if (c->ph == PH_LOAD) {
+        const adh_obs *o = &d->run->rows[c->row];
+        c->k = load_index_after(d, o);
+        c->in_contact = o->a > 0;
+    }
 }
 
 static void start(adh_drive *d, double h0, int branch, int path, size_t dwell, int at_turn)
@@ -418,8 +430,8 @@ static int begin(adh_drive *d)
             start(d, d->start, +1, 0, 0, 0);
             return ADH_SUCCESS;
         case PH_LOAD: {
-            if ((nt == 0 && d->c.in_contact) || (nt > 0 && d->c.ti == nt)) {
-                begin_unloading(d);
+            if (loading_done(d)) {
+                next_turn(d);
                 continue;
             }
             /* Positions are start - k d, computed afresh (never accumulated)
@@ -484,10 +496,9 @@ static int push_row(adh_drive *d, const adh_obs *o)
 static int branch_ends(const adh_drive *d)
 {
     const cursor *c = &d->c;
-    size_t nt = d->ps.nturns;
     switch (c->ph) {
     case PH_LOAD:
-        return (nt == 0 && c->in_contact) || (nt > 0 && c->ti == nt);
+        return loading_done(d);
     case PH_UNLOAD:
         return d->run->turns[c->ui].h0 + (double)c->k * d->ps.step > d->start + 1e-6 * d->ps.step;
     default:
@@ -820,6 +831,15 @@ size_t adh_drive_progress(const adh_drive *d, double *change)
     return adh_relax_step_iterations(d->w);
 }
 
+/* Whether the run has a turn recorded at h0. */
+static int turn_recorded(const adh_drive *d, double h0)
+{
+    for (size_t i = 0; d->run && i < d->run->nturns; i++)
+        if (fabs(d->run->turns[i].h0 - h0) < 1e-6 * d->ps.step)
+            return 1;
+    return 0;
+}
+
 int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps)
 {
     if (!(ps->step == d->ps.step) || ps->nturns > ADH_MAX_TURNS || d->c.inflight)
@@ -836,10 +856,7 @@ int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps)
     size_t ti = 0;
     int unrecorded = 0;
     while (ti < ps->nturns && d->turns[ti] >= deepest - tol) {
-        int seen = 0;
-        for (size_t i = 0; d->run && i < d->run->nturns; i++)
-            seen |= fabs(d->run->turns[i].h0 - d->turns[ti]) < tol;
-        unrecorded |= !seen;
+        unrecorded |= !turn_recorded(d, d->turns[ti]);
         ti++;
     }
     d->c.ti = ti;
@@ -847,10 +864,7 @@ int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps)
     if (unrecorded && last && last->branch > 0 && (d->c.ph == PH_LOAD || d->c.ph == PH_DONE)) {
         /* a turn the loading branch passed before it was set: the path
          * turns where it is now, and unloads from here */
-        int seen = 0;
-        for (size_t i = 0; i < d->run->nturns; i++)
-            seen |= fabs(d->run->turns[i].h0 - last->h0) < tol;
-        if (!seen && d->run->nturns < ADH_MAX_TURNS && record_turn(d, last) != ADH_SUCCESS)
+        if (!turn_recorded(d, last->h0) && d->run->nturns < ADH_MAX_TURNS && record_turn(d, last) != ADH_SUCCESS)
             return ADH_ENOMEM;
     }
     if (d->c.ph == PH_DONE && d->c.status == ADH_SUCCESS && last) {
@@ -868,15 +882,14 @@ int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps)
 int adh_drive_next(const adh_drive *d, size_t *turn)
 {
     const cursor *c = &d->c;
-    size_t nt = d->ps.nturns, u = first_loaded(d);
-    int more = d->ps.unload && u < d->run->nturns;
+    size_t nt = d->ps.nturns, u;
     *turn = 0;
     if (c->hand)
         return c->hand;
     switch (c->ph) {
     case PH_START:
     case PH_LOAD:
-        if (!((nt == 0 && c->in_contact) || (nt > 0 && c->ti == nt))) {
+        if (!loading_done(d)) {
             *turn = c->ti < nt ? c->ti + 1 : 0;
             return +1;
         }
@@ -893,15 +906,16 @@ int adh_drive_next(const adh_drive *d, size_t *turn)
     default:
         return 0;
     }
-    if (more) {
+    switch (after_branch(d, &u)) {
+    case PH_TURN:
         *turn = u + 1;
         return -1;
-    }
-    if (c->ti < nt && c->row >= 0) {   /* turns steps by hand left unreached */
+    case PH_LOAD:   /* turns steps by hand left unreached */
         *turn = c->ti + 1;
         return +1;
+    default:
+        return 0;
     }
-    return 0;
 }
 
 int adh_drive_status(const adh_drive *d)

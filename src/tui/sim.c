@@ -748,6 +748,16 @@ int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whyl
     return set_value(s, p, p == P_N ? round(v * factor) : v * factor, why, whylen);
 }
 
+/* The index of the turning point on screen at h0 (within the drive's
+ * tolerance of a millionth of a step), or nturns: a turn made by hand. */
+static size_t turn_index(const tui_sim *s, double h0)
+{
+    size_t k = 0;
+    while (k < s->nturns && !(fabs(s->turns[k] - h0) < 1e-6 * s->step))
+        k++;
+    return k;
+}
+
 /* The turn of the row on screen, for the panel: its branch's turn while
  * unloading, the turn it reached, else the next one loading will reach
  * (the deepest when none is left). */
@@ -767,12 +777,11 @@ static void sync_turn(tui_sim *s)
         t = run->turns[run->nturns - 1].h0;
     else if (adh_drive_next(s->drv, &k) > 0 && k > 0)
         t = s->turns[k - 1];
-    for (size_t i = 0; !isnan(t) && i < s->nturns; i++)
-        if (s->turns[i] == t) {
-            s->tcur = i;
-            s->turn = t;
-            break;
-        }
+    size_t i = isnan(t) ? s->nturns : turn_index(s, t);
+    if (i < s->nturns) {
+        s->tcur = i;
+        s->turn = s->turns[i];
+    }
 }
 
 /* After a restore: the drive takes the turns on screen (a turn edit since
@@ -1082,15 +1091,15 @@ void tui_sim_turn_name(const tui_sim *s, size_t i, char *buf, size_t len)
         snprintf(buf, len, "a turn");
         return;
     }
-    double h0 = run->turns[i].h0, tol = 1e-6 * s->step;
-    for (size_t k = 0; k < s->nturns; k++)
-        if (fabs(s->turns[k] - h0) < tol) {
-            if (s->nturns > 1)
-                snprintf(buf, len, "turn %zu of %zu", k + 1, s->nturns);
-            else
-                snprintf(buf, len, "the turn");
-            return;
-        }
+    double h0 = run->turns[i].h0;
+    size_t k = turn_index(s, h0);
+    if (k < s->nturns) {
+        if (s->nturns > 1)
+            snprintf(buf, len, "turn %zu of %zu", k + 1, s->nturns);
+        else
+            snprintf(buf, len, "the turn");
+        return;
+    }
     char q[64];
     adh_format_quantity(h0, ADH_Q_LENGTH, 4, q, sizeof q);
     snprintf(buf, len, "the turn at h0 = %s", q);
