@@ -35,8 +35,9 @@ typedef struct batch_ctx {
     const adh_config *cfg;
     FILE *stream;           /* force rows as they come (no --out), or NULL */
     int progress;           /* draw a progress line on stderr */
-    size_t total;           /* the plan's steps, an upper bound (unloading ends
-                               at the jump out); 0 when unknown (static mode) */
+    size_t total;           /* the plan's steps back to the start (unloading ends
+                               at the jump out, before or past it); 0 when
+                               unknown (static mode) */
     double t0, last_draw;
 } batch_ctx;
 
@@ -53,7 +54,10 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
             char pr[64];
             ctx->last_draw = t;
             cli_progress_text(run->nrows, ctx->total, t - ctx->t0, pr, sizeof pr);
-            if (ctx->total)
+            if (ctx->total && run->nrows > ctx->total)   /* unloading on past the start, still in contact */
+                fprintf(stderr, "\r  unloading step %zu, past the start, still in contact  h0 %+8.3f nm  F %+10.4g uN ",
+                        run->nrows, o->h0 * 1e9, o->F * 1e6);
+            else if (ctx->total)
                 fprintf(stderr, "\r  %s step %zu of <=%zu  %-26s h0 %+8.3f nm  F %+10.4g uN ",
                         o->branch > 0 ? "loading  " : "unloading", run->nrows, ctx->total, pr, o->h0 * 1e9, o->F * 1e6);
             else

@@ -415,6 +415,20 @@ static int begin_hand(adh_drive *d)
     return ADH_SUCCESS;
 }
 
+/* Whether an unloading branch is over before position h0. It ends at the
+ * start, unless the surfaces still touch there: the cycle is asked for its
+ * separation, and the start is only where the approach's force is
+ * negligible (a soft, sticky contact stretches its neck well past it, the
+ * more so when the drive outruns the relaxation). Past the start it goes on
+ * while they touch, up to the model's reach. */
+static int unload_ended(const adh_drive *d, double h0)
+{
+    if (h0 <= d->start + 1e-6 * d->ps.step)
+        return 0;
+    const adh_obs *last = adh_drive_row(d);
+    return !(last && last->branch < 0 && last->a > 0) || h0 > adh_protocol_reach(&d->m);
+}
+
 /* Picks the next step of the protocol and starts it. ADH_SUCCESS, or the
  * final status when there is none. */
 static int begin(adh_drive *d)
@@ -461,7 +475,7 @@ static int begin(adh_drive *d)
         case PH_UNLOAD: {
             adh_turn_result *tr = &d->run->turns[d->c.ui];
             double h0 = tr->h0 + (double)d->c.k * ps->step;
-            if (h0 > d->start + tol) {
+            if (unload_ended(d, h0)) {
                 next_turn(d);
                 continue;
             }
@@ -500,7 +514,7 @@ static int branch_ends(const adh_drive *d)
     case PH_LOAD:
         return loading_done(d);
     case PH_UNLOAD:
-        return d->run->turns[c->ui].h0 + (double)c->k * d->ps.step > d->start + 1e-6 * d->ps.step;
+        return unload_ended(d, d->run->turns[c->ui].h0 + (double)c->k * d->ps.step);
     default:
         return 1;   /* a jump-out moved on to the next turn (PH_TURN) or the end */
     }

@@ -319,7 +319,7 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     fprintf(f, "snapshots: %zu%s\n", p->snapshots, p->snapshots ? " (the state at each turn, where its unloading starts)" : "");
     fprintf(f, "unloading branches: %zu%s", p->unloading_branches, p->nruns > 1 && p->unloading_branches ? " per run" : "");
     if (p->unloading_branches)
-        fprintf(f, " (each from its turn until the surfaces jump apart, at most %zu steps in all)", r0->unloading_steps);
+        fprintf(f, " (each from its turn until the surfaces jump apart: %zu steps in all back to the start, more if they still touch there, up to the model's reach 0.02 R)", r0->unloading_steps);
     fputc('\n', f);
     if (p->unloading_branches)
         fprintf(f, "dwell: %zu iterations at each turn before unloading\n", cfg->proto.dwell);
@@ -331,12 +331,13 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         const adh_plan_run *r = &p->runs[i];
         fmt_len(r->start, a, sizeof a);
         fmt_len(r->end, b, sizeof b);
-        fprintf(f, "run %zu: E = %.4g Pa, sigma = %.4g, eps = %g pm: from %s to %s%s, %zu loading + at most %zu unloading steps\n",
+        fprintf(f, "run %zu: E = %.4g Pa, sigma = %.4g, eps = %g pm: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
                 i + 1, r->E, r->sigma, r->eps * 1e12, a,
                 p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
     }
-    fprintf(f, "steps: %s%zu loading + at most %zu unloading\n", p->stop_at_contact ? "about " : "",
-            p->loading_steps, p->unloading_steps);
+    fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",
+            p->loading_steps, p->unloading_steps,
+            p->unloading_branches ? " (more if the surfaces still touch there)" : "");
     for (size_t i = 0; i < p->nstored; i++)
         fprintf(f, "stored: %s: %s\n", p->stored[i].what, p->stored[i].why);
     for (size_t i = 0; i < p->nskipped; i++)

@@ -327,8 +327,12 @@ static int run_done(tui *t)
     int touched = 0;
     for (size_t i = 0; i < run->nrows; i++)
         touched |= run->rows[i].branch < 0 && run->rows[i].path == k && run->rows[i].a > 0;
-    say(t, 0, "back at the start h0 = %s%s%s", h0, touched ? " still in contact" : " without having been in contact",
-        then);
+    /* unloading goes past the start while the surfaces touch, so a branch
+     * still in contact ended at the reach */
+    if (touched)
+        say(t, 0, "unloaded to h0 = %s, the model's reach (0.02 R), still in contact: no jump-out%s", h0, then);
+    else
+        say(t, 0, "back at the start h0 = %s without having been in contact%s", h0, then);
     return 1;
 }
 

@@ -75,10 +75,23 @@ check "--force: the warning is on stderr even with -q" grep -q "warning: grid sp
 check "--force: summary.tsv says resolved 0 and status unresolved" sh -c "grep -qx 'resolved	0' '$TMP/forced/summary.tsv' && grep -qx 'status	unresolved' '$TMP/forced/summary.tsv'"
 check "summary.tsv has edge_nodes below the limit's 2.2" awk -F'\t' '$1=="edge_nodes" && $2>0 && $2<2.2 {f=1} END {exit !f}' "$TMP/forced/summary.tsv"
 check "summary.tsv has rmax_force_fraction, 1 to 3 % for this grid" awk -F'\t' '$1=="rmax_force_fraction" && $2>0.01 && $2<0.03 {f=1} END {exit !f}' "$TMP/forced/summary.tsv"
-# The surfaces never separate when unloading stops (at the start) before the
-# jump-out: complete 0, said on stderr and in summary.tsv.
-"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --start=3nm --turn=-1nm -o "$TMP/stuck" >/dev/null 2>"$TMP/stderr"
+# Unloading goes on past the start while the surfaces still touch: a start
+# inside the neck's reach (3 nm; the jump-out is near 11 nm here) changes
+# neither the pull-off nor the jump-out of the run from the automatic start.
+"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --start=3nm --turn=-1nm -o "$TMP/past" >/dev/null 2>"$TMP/stderr"
+rc=$?
+"$ADHERE" --batch -q --no-plot -N 100 --force --eps=3pm --turn=-1nm -o "$TMP/auto" >/dev/null 2>&1
+check "unloading past the start separates: exit 0 ($rc), complete 1, jump-out beyond 3 nm" sh -c "[ $rc -eq 0 ] && grep -qx 'complete	1' '$TMP/past/summary.tsv' && awk -F'\t' '\$1==\"jump_out_h0\" && \$2>3e-9 {f=1} END {exit !f}' '$TMP/past/summary.tsv'"
+check "its last row is out of contact and past the start" awk -F'\t' '!/^#/ && $1!="h0" {h=$1; a=$5; b=$8} END {exit !(b==-1 && a==0 && h>3e-9)}' "$TMP/past/force.tsv"
+check "jump-out within a step (0.05 nm) and pull-off within 0.1 % of the automatic start's" awk -F'\t' '
+    FNR==1 {f++} $1=="jump_out_h0" {j[f]=$2} $1=="pulloff_F" {p[f]=$2}
+    END {d=j[1]-j[2]; if (d<0) d=-d; r=(p[1]-p[2])/p[2]; if (r<0) r=-r; exit !(j[1]>0 && d<=0.05e-9+1e-15 && r<1e-3)}' "$TMP/past/summary.tsv" "$TMP/auto/summary.tsv"
+# It stops at the model's reach (0.02 R; h0 must stay << R): a small, soft
+# sphere (R = 500 nm, sigma = 17) still in contact there never separated:
+# complete 0, said on stderr and in summary.tsv.
+"$ADHERE" --batch -q --no-plot -R 500nm -E 0.03GPa -N 100 --force --eps=3pm --start=10nm --turn=-1nm -o "$TMP/stuck" >/dev/null 2>"$TMP/stderr"
 rc=$?
 check "a run that never separates still exits 0 ($rc) and says why on stderr" sh -c "[ $rc -eq 0 ] && grep -q 'incomplete: the surfaces never separated' '$TMP/stderr'"
 check "its summary.tsv says complete 0, status not separated, and why" sh -c "grep -qx 'complete	0' '$TMP/stuck/summary.tsv' && grep -qx 'status	not separated' '$TMP/stuck/summary.tsv' && grep -q '^# INCOMPLETE: the surfaces never separated' '$TMP/stuck/summary.tsv'"
+check "it unloaded to the reach, 10 nm, and no further" awk -F'\t' '!/^#/ && $1!="h0" && $8==-1 {m=$1} END {exit !(m>9.99e-9 && m<10.01e-9)}' "$TMP/stuck/force.tsv"
 done_testing

@@ -31,9 +31,9 @@ check "fig4 stored profiles only at the positions asked ($n position-branch pair
 planned=$("$ADHERE" --plan fig4 -N 100 --force --eps=3pm | sed -n 's/^loading branches: 1 (from .* to -5 nm, \([0-9]*\) steps)$/\1/p')
 loaded=$(rows "$d/force.tsv" | awk -F'\t' '$9 == 0' | wc -l)
 check "fig4: the plan's loading steps are the run's ($planned planned, $loaded run)" [ "$planned" = "$loaded" ]
-bound=$("$ADHERE" --plan fig4 -N 100 --force | sed -n 's/^steps: .* + at most \([0-9]*\) unloading$/\1/p')
+bound=$("$ADHERE" --plan fig4 -N 100 --force | sed -n 's/^steps: .* + at most \([0-9]*\) unloading to the start (more if the surfaces still touch there)$/\1/p')
 unloaded=$(rows "$d/force.tsv" | awk -F'\t' '$9 != 0' | wc -l)
-check "fig4: the unloading stays within the plan's bound ($unloaded <= $bound)" [ "$unloaded" -le "$bound" ]
+check "fig4 separates before the start: the unloading stays within the plan's steps to it ($unloaded <= $bound)" [ "$unloaded" -le "$bound" ]
 check "fig4 turns at -5 nm" awk -F'\t' '!/^#/ && $1+0 == $1 && $1 < -4.99e-9 && $1 > -5.01e-9 {f=1} END {exit !f}' "$d/turns.tsv"
 
 # Figure 1: approach into contact to -2 nm, no unloading, the eq 23 inset.
