@@ -145,7 +145,9 @@ unsigned adh_drive_events(const adh_drive *d);
  * retracts by d (before the first row, the start is solved first, then
  * that step). ADH_SUCCESS; ADH_EINVAL for a dir other than +-1, a step
  * under way, a drive never set, a position beyond the model's reach
- * (|h0| > R/50, adh_protocol_reach) or a 65th turn. */
+ * (|h0| > R/50, adh_protocol_reach) or a 65th turn; ADH_EGRID for an
+ * approach from a row whose contact the grid no longer holds (at 0.9 Rmax
+ * or past a graded grid's fine band): deeper in it would only grow. */
 int adh_drive_hand(adh_drive *d, int dir);
 /* Where a step by hand in direction dir would go (for a message). */
 double adh_drive_hand_position(const adh_drive *d, int dir);

@@ -320,6 +320,13 @@ typedef struct hand_plan {
     size_t ui;       /* retracting: the turn of the branch */
 } hand_plan;
 
+/* The contact of row o at the grid's edge, or past a graded grid's fine
+ * band: the grid no longer holds it. */
+static int at_edge(const adh_drive *d, const adh_obs *o)
+{
+    return o->a >= 0.9 * d->g->rmax || !adh_rings_resolves(d->g, o->a);
+}
+
 static int plan_hand(const adh_drive *d, int dir, hand_plan *hp)
 {
     const adh_protocol_settings *ps = &d->ps;
@@ -330,6 +337,9 @@ static int plan_hand(const adh_drive *d, int dir, hand_plan *hp)
     const adh_obs *last = d->c.row >= 0 ? &run->rows[d->c.row] : &at_start;
     memset(hp, 0, sizeof *hp);
     if (dir > 0) {
+        /* deeper in, the contact would only grow further past the grid */
+        if (d->c.row >= 0 && at_edge(d, last))
+            return ADH_EGRID;
         hp->k = last->branch > 0 && d->c.row >= 0 ? d->c.k : load_index_after(d, last);
         hp->h0 = d->start - (double)hp->k * ps->step;
         size_t ti = d->c.ti;
@@ -556,8 +566,7 @@ static int complete(adh_drive *d, int rc)
         return finish(d, rc);
     if (wants_profile(&d->ps, c->h0) && adh_run_push_profile(run, s, c->branch, c->path) != ADH_SUCCESS)
         return finish(d, ADH_ENOMEM);
-    /* the contact at the grid edge, or past a graded grid's fine band */
-    int edge = o.a >= 0.9 * d->g->rmax || !adh_rings_resolves(d->g, o.a);
+    int edge = at_edge(d, &o);
     double tol = 1e-6 * d->ps.step;
     switch (c->ph) {
     case PH_START:

@@ -986,9 +986,13 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
         return curve_begin(s, dir, why, whylen);
     if (grid_refuses(s, why, whylen) || ensure_solver(s, why, whylen) != 0)
         return -1;
-    if (dir != 0 && adh_drive_hand(s->drv, dir) != ADH_SUCCESS) {
+    int hrc = dir != 0 ? adh_drive_hand(s->drv, dir) : ADH_SUCCESS;
+    if (hrc != ADH_SUCCESS) {
         double h0 = adh_drive_hand_position(s->drv, dir);
-        if (fabs(h0) > adh_protocol_reach(&s->mat))
+        if (hrc == ADH_EGRID)
+            snprintf(why, whylen, "the contact has reached the grid's edge: approaching further would only widen it past "
+                     "the grid; b retracts (a wider grid: more nodes, or, on an automatic grid, a deeper turn)");
+        else if (fabs(h0) > adh_protocol_reach(&s->mat))
             snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/50 = %g m",
                      h0, adh_protocol_reach(&s->mat));
         else

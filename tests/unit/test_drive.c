@@ -120,6 +120,37 @@ int main(void)
     rc = adh_drive_step(d);
     ok(rc == ADH_EINTR && cut.nrows == 2 && cut.interrupted, "a raised cancel flag: ADH_EINTR, no row for that step");
 
+    /* the grid's edge: a run whose contact outgrows a short grid stops
+     * there, and approaching further by hand is refused (it would only add
+     * rows past the edge), while retracting goes on */
+    {
+        adh_grid *gs = adh_grid_alloc(20, 10e-9);
+        adh_kernel *ks = adh_kernel_alloc(gs, ADH_KERNEL_PAPER);
+        adh_drive *ds = adh_drive_alloc(gs, ks);
+        adh_protocol_settings pe = adh_protocol_settings_default();
+        pe.step = 0.25e-9;
+        pe.turns[0] = -3e-9;
+        adh_relax_settings re = rs;
+        re.cancel = NULL;
+        adh_run er;
+        adh_run_init(&er);
+        int erc = ds ? adh_drive_set(ds, &m, &re, &pe, &er) : ADH_ENOMEM;
+        if (erc == ADH_SUCCESS)
+            while ((erc = adh_drive_step(ds)) == ADH_CONTINUE)
+                ;
+        size_t nr = er.nrows;
+        ok(erc == ADH_EGRID && nr > 0 && er.rows[nr - 1].a >= 0.9 * 200e-9,
+           "a contact past 0.9 Rmax ends the run with ADH_EGRID (rc %d, a = %g m)", erc, nr ? er.rows[nr - 1].a : NAN);
+        ok(adh_drive_hand(ds, +1) == ADH_EGRID && er.nrows == nr, "an approach by hand from there is refused, no row added");
+        ok(adh_drive_hand(ds, -1) == ADH_SUCCESS && adh_drive_step(ds) != ADH_ENOMEM && er.nrows == nr + 1 &&
+           er.rows[nr].branch < 0 && er.rows[nr].h0 > er.rows[nr - 1].h0,
+           "a retraction by hand steps out");
+        adh_run_free(&er);
+        adh_drive_free(ds);
+        adh_kernel_free(ks);
+        adh_grid_free(gs);
+    }
+
     /* a step the drive cannot take */
     ps.step = 0;
     ok(adh_drive_set(d, &m, &rs, &ps, &cut) == ADH_EINVAL, "a step of 0 is refused");
