@@ -103,7 +103,7 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
         c.proto.nprofiles = np;
         run.profiles = prof;
         run.nprofiles = run.profiles_cap = np;
-        return write_into(&c, s->g, &run, dir, msg, msglen);
+        return write_into(&c, s->sg, &run, dir, msg, msglen);   /* the curve's own grid */
     }
     run = *tui_sim_run(s);   /* the drive's record, with the profiles below */
     c.proto.nturns = run.nturns;

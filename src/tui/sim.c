@@ -95,14 +95,33 @@ static int same_grid(const adh_grid_asked *a, const adh_grid_asked *b)
     #undef SAME
 }
 
-/* Whether the grid on screen is another than the one the kernel was
- * built for. */
+/* The configuration of the parameters on screen for a mode: an automatic
+ * grid is chosen per mode, as --batch --mode would (the static curve needs
+ * finer rings), so the other mode's grid is chosen again; a grid given
+ * stays as given. */
+static void mode_config(const tui_sim *s, const tui_params_set *p, adh_mode mode, adh_config *c)
+{
+    params_config(s, p, c);
+    c->mode = mode;
+    if (mode != s->mode && p->grid_auto) {
+        char why[512];
+        adh_config_grid_again(c, why, sizeof why);   /* a refusal keeps the grid as it is (solves say why) */
+    }
+}
+
+static adh_grid_asked mode_grid(const tui_sim *s, const tui_params_set *p, adh_mode mode)
+{
+    adh_config c;
+    mode_config(s, p, mode, &c);
+    return grid_of(&c);
+}
+
+/* Whether the relaxation's grid for the parameters on screen is another
+ * than the one its kernel was built for. */
 static int grid_changed(const tui_sim *s)
 {
     tui_params_set p = params_get(s);
-    adh_config c;
-    params_config(s, &p, &c);
-    adh_grid_asked now = grid_of(&c);
+    adh_grid_asked now = mode_grid(s, &p, ADH_MODE_RELAX);
     return !same_grid(&s->built, &now);
 }
 
@@ -122,6 +141,20 @@ static void params_regrid(const tui_sim *s, tui_params_set *p, char *why, size_t
     p->spacing = c.spacing;
     p->grid = (adh_grid_asked){ c.nodes, c.spacing, c.fine_band, c.growth, c.grid_radius, c.kernel, c.storage,
                                 c.graded };
+}
+
+/* An automatic grid on screen is the mode's: chosen again (N, spacing and
+ * the rest shown) when the mode changed or parameters came back by undo;
+ * gridchoice says why none could be chosen. */
+static void grid_follow_mode(tui_sim *s)
+{
+    tui_params_set q = params_get(s);
+    params_regrid(s, &q, s->gridchoice, sizeof s->gridchoice);
+    if (!s->grid_auto)
+        return;
+    s->nodes = q.nodes;
+    s->spacing = q.spacing;
+    s->grid = q.grid;
 }
 
 enum { PROF_CONTACT = 0, PROF_PULLOFF = 1 };
@@ -161,13 +194,15 @@ static void curve_check(tui_sim *s)
     if (!curve_started(s))
         return;
     const adh_material *a = &s->ckey.mat, *b = &s->mat;
-    if (a->E != b->E || a->A != b->A || a->z0 != b->z0 || a->R != b->R || s->ckey.nodes != s->nodes ||
-        s->ckey.spacing != tui_sim_spacing(s) || s->ckey.start != s->start ||
-        s->ckey.end != tui_sim_curve_end(s))
+    tui_params_set p = params_get(s);
+    adh_grid_asked g = mode_grid(s, &p, ADH_MODE_STATIC);
+    if (a->E != b->E || a->A != b->A || a->z0 != b->z0 || a->R != b->R || !same_grid(&s->ckey.grid, &g) ||
+        s->ckey.start != s->start || s->ckey.end != tui_sim_curve_end(s))
         curve_drop(s);
 }
 
-static void free_solver(tui_sim *s)
+/* The static curve's solver, grid and kernel, and the curve on them. */
+static void free_static(tui_sim *s)
 {
     adh_drive_free(s->sdrv);
     s->sdrv = NULL;
@@ -176,6 +211,16 @@ static void free_solver(tui_sim *s)
         s->cprof[i] = NULL;
     }
     curve_drop(s);
+    adh_kernel_free(s->sk);
+    adh_grid_free(s->sg);
+    s->sk = NULL;
+    s->sg = NULL;
+}
+
+/* The relaxation's solver, grid and kernel (the path's states stay in its
+ * history). */
+static void free_solver(tui_sim *s)
+{
     adh_drive_free(s->drv);
     adh_kernel_free(s->k);
     adh_grid_free(s->g);
@@ -298,6 +343,7 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
 
 void tui_sim_free(tui_sim *s)
 {
+    free_static(s);
     free_solver(s);
     path_free(&s->path);
     edits_clear(s->undo_edits, &s->nundo_edits);
@@ -333,9 +379,9 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
         return 0;
     free_solver(s);
     /* the grid, kernel and operator --batch builds for these parameters */
-    tui_params_set p = params_get(s);
     adh_config c;
-    params_config(s, &p, &c);
+    tui_params_set p = params_get(s);
+    mode_config(s, &p, ADH_MODE_RELAX, &c);
     int st;
     s->g = adh_config_grid_alloc(&c);
     s->k = s->g ? adh_config_kernel_alloc(&c, s->g, &st) : NULL;
@@ -343,11 +389,36 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
     s->built = grid_of(&c);
     if (!s->drv) {
         free_solver(s);
-        snprintf(why, whylen, "out of memory for a grid of N = %zu nodes: try fewer", s->nodes);
+        snprintf(why, whylen, "out of memory for a grid of N = %zu nodes: try fewer", c.nodes);
         return -1;
     }
     s->grid_stale = 0;
     drive_attach(s);
+    return 0;
+}
+
+/* The static curve's grid, kernel and drive for the parameters on screen:
+ * built on its first point, and again (the curve dropped) when that grid
+ * changed. */
+static int ensure_static(tui_sim *s, char *why, size_t whylen)
+{
+    adh_config c;
+    tui_params_set p = params_get(s);
+    mode_config(s, &p, ADH_MODE_STATIC, &c);
+    adh_grid_asked now = grid_of(&c);
+    if (s->sdrv && same_grid(&s->sbuilt, &now))
+        return 0;
+    free_static(s);
+    int st;
+    s->sg = adh_config_grid_alloc(&c);
+    s->sk = s->sg ? adh_config_kernel_alloc(&c, s->sg, &st) : NULL;
+    s->sdrv = s->sk ? adh_drive_alloc(s->sg, s->sk) : NULL;
+    s->sbuilt = now;
+    if (!s->sdrv) {
+        free_static(s);
+        snprintf(why, whylen, "out of memory for the static solver on a grid of N = %zu nodes: try fewer", c.nodes);
+        return -1;
+    }
     return 0;
 }
 
@@ -387,11 +458,6 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
     s->spacing = e.par.spacing;
     s->grid_auto = e.par.grid_auto;
     s->grid = e.par.grid;
-    {
-        /* whether a grid could be chosen for them, as when they were set */
-        tui_params_set q = params_get(s);
-        params_regrid(s, &q, s->gridchoice, sizeof s->gridchoice);
-    }
     s->step = e.par.step;
     s->start_opt = e.par.start_opt;
     s->turn = e.par.turn;
@@ -400,6 +466,7 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
     s->tcur = e.par.tcur;
     s->start = e.par.start;
     s->relax = e.par.relax;
+    grid_follow_mode(s);   /* they may have been set in the other mode */
     derive(s);
     s->warn[0] = '\0';
     if (s->g)
@@ -512,10 +579,8 @@ static int turn_regrids(const tui_sim *s, double v)
     params_turns(s, &np, v);
     char why[512];
     params_regrid(s, &np, why, sizeof why);
-    adh_config a, b;
-    params_config(s, &np, &a);
-    params_config(s, &now, &b);
-    adh_grid_asked ga = grid_of(&a), gb = grid_of(&b);
+    /* the path is the relaxation's: its grid decides, in either mode */
+    adh_grid_asked ga = mode_grid(s, &np, ADH_MODE_RELAX), gb = mode_grid(s, &now, ADH_MODE_RELAX);
     return !same_grid(&ga, &gb);
 }
 
@@ -826,9 +891,9 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
         snprintf(why, whylen, "the curve is complete (it ends at h0 = %s): b or u walks back along it", h0);
         return -1;
     } else if (s->cstatus != ADH_CONTINUE) {
-        if (s->cstatus == ADH_EGRID && s->g && s->curve.nrows) {
+        if (s->cstatus == ADH_EGRID && s->sg && s->curve.nrows) {
             char edge[400];
-            adh_rings_edge_sentence(s->g, s->curve.rows[s->curve.nrows - 1].a, edge, sizeof edge);
+            adh_rings_edge_sentence(s->sg, s->curve.rows[s->curve.nrows - 1].a, edge, sizeof edge);
             snprintf(why, whylen, "the curve stopped after %zu points: %s", s->curve.nrows, edge);
         }
         else
@@ -836,13 +901,8 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
                      s->curve.nrows == 1 ? "" : "s", adh_strerror(s->cstatus));
         return -1;
     } else {
-        if (grid_refuses(s, why, whylen) || ensure_solver(s, why, whylen) != 0)
+        if (grid_refuses(s, why, whylen) || ensure_static(s, why, whylen) != 0)
             return -1;
-        if (!s->sdrv && !(s->sdrv = adh_drive_alloc(s->g, s->k))) {
-            snprintf(why, whylen, "out of memory for the static solver (a dense copy of the %zu x %zu kernel): "
-                     "try fewer nodes", s->nodes, s->nodes);
-            return -1;
-        }
         s->walk = 0;
         s->t0 = adh_clock_seconds();
     }
@@ -897,8 +957,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
         adh_protocol_settings ps = params_protocol(&q);
         adh_static_settings ss = adh_static_settings_default();
         s->ckey.mat = s->mat;
-        s->ckey.nodes = s->nodes;
-        s->ckey.spacing = tui_sim_spacing(s);
+        s->ckey.grid = s->sbuilt;
         s->ckey.start = s->start;
         s->ckey.end = tui_sim_curve_end(s);
         adh_run_free(&s->curve);
@@ -924,7 +983,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     if (rc == ADH_CONTINUE || rc == ADH_SUCCESS)
         return ADH_SUCCESS;
     if (rc == ADH_EGRID) {
-        adh_rings_edge_sentence(s->g, s->curve.rows[s->curve.nrows - 1].a, why, whylen);
+        adh_rings_edge_sentence(s->sg, s->curve.rows[s->curve.nrows - 1].a, why, whylen);
         return ADH_EGRID;
     }
     if (rc == ADH_ENAN)
@@ -941,7 +1000,12 @@ void tui_sim_set_mode(tui_sim *s, adh_mode mode)
 {
     tui_sim_cancel(s);
     s->mode = mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
-    check_grid(s);   /* the static curve has its own resolution limit */
+    /* the static curve has its own resolution limit: an automatic grid is
+     * this mode's (each mode keeps its solver, path or curve, on its own) */
+    grid_follow_mode(s);
+    if (s->g && grid_changed(s))
+        s->grid_stale = 1;
+    check_grid(s);
     curve_check(s);
 }
 

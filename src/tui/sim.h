@@ -99,7 +99,7 @@ typedef struct tui_sim {
     int grid_auto;             /* no N or spacing given: the grid is chosen for the material, as --batch's */
     adh_grid_asked grid;       /* graded or not, its band, growth and radius, kernel, operator */
     adh_config base;           /* the configuration the screen started from (its grid as asked) */
-    adh_grid_asked built;      /* the grid the kernel was built for (N, spacing in it) */
+    adh_grid_asked built;      /* the grid the relaxation's kernel was built for (N, spacing in it) */
     char gridchoice[512];      /* why no grid could be chosen for the material on screen; "" */
     adh_relax_settings relax;
     double step;               /* d */
@@ -133,6 +133,9 @@ typedef struct tui_sim {
     adh_mode mode;             /* ADH_MODE_RELAX or ADH_MODE_STATIC: what a step does */
     /* static mode: the equilibrium curve */
     adh_drive *sdrv;           /* the static step rule's drive, built on the first static step (a dense copy of W) */
+    adh_grid *sg;              /* its own grid and kernel: an automatic grid is chosen per mode, */
+    adh_kernel *sk;            /* the static curve's finer (0.3 edge widths against 0.45) */
+    adh_grid_asked sbuilt;     /* the grid sg was built for */
     adh_run curve;             /* rows: every point computed so far, in curve order */
     size_t ccur;               /* the point shown (when curve.nrows > 0) */
     int walk;                  /* the step in progress only moves the cursor: +1, -1 */
@@ -144,8 +147,8 @@ typedef struct tui_sim {
     double cend;               /* where the curve ends: the turn, or -5 nm */
     struct {                   /* what the curve was computed for */
         adh_material mat;
-        size_t nodes;
-        double spacing, start, end;
+        adh_grid_asked grid;
+        double start, end;
     } ckey;
     adh_state *cprof[2];       /* profiles kept: first point in contact, pull-off */
     size_t cprof_at[2];        /* their points */

@@ -246,6 +246,20 @@ check "u after an N edit and two steps: back on the N = 100 path, its numbers ex
     sh -c "grep -q '^undid the edit: N = 100 again, with its path (6 states)' '$EG/edit-grid-back.txt' && [ \"\$(sed -n '3,8p' '$EG/edit-grid-back.txt' | cut -c46-)\" = \"\$(sed -n '3,8p' '$EG/edit-grid-5.txt' | cut -c46-)\" ]"
 check "and a step goes on from it on the rebuilt grid" grep -q "path   7 states" "$EG/edit-grid.screen"
 
+# Each mode on its own automatic grid, as --batch --mode chooses it.
+MG=$W/modegrid
+plan_nodes() { "$bin" --plan "$@" | sed -n 's/^kernel: .*N = \([0-9]*\),.*/\1/p; s/^kernel: .* grid of \([0-9]*\) .*/\1/p'; }
+shown_nodes() { sed -n 's/^  N  *\([0-9]*\)  *grid nodes.*/\1/p' "$1"; }
+rn=$(plan_nodes) sn=$(plan_nodes --mode=static)
+check "relaxation shows --batch's grid ($rn nodes), resolved" \
+    sh -c "[ -n '$rn' ] && [ '$(shown_nodes "$MG/modegrid-relax.txt")' = '$rn' ] && grep -q 'ℓ/Δ [0-9.]* resolved' '$MG/modegrid-relax.txt'"
+check "m shows --batch --mode=static's finer grid ($sn nodes), resolved, not the relaxation's as UNRESOLVED" \
+    sh -c "[ -n '$sn' ] && [ '$sn' != '$rn' ] && [ '$(shown_nodes "$MG/modegrid-static.txt")' = '$sn' ] && grep -q 'ℓ/Δ [0-9.]* resolved' '$MG/modegrid-static.txt'"
+check "the curve is solved there (2 points)" grep -q "point  2 of 2," "$MG/modegrid-static2.txt"
+was=$(state "$MG/modegrid-relax.txt" | cut -c46-) back=$(state "$MG/modegrid-back.txt" | cut -c46-)
+check "m back: the relaxation's grid again and its path as it was" \
+    sh -c "[ '$(shown_nodes "$MG/modegrid-back.txt")' = '$rn' ] && [ -n '$was' ] && [ '$was' = '$back' ] && grep -q 'path   4 states' '$MG/modegrid-back.txt'"
+
 # Static mode (m): the equilibrium curve point by point, walked back and
 # forth without solving again, followed to its end as --batch --mode=static.
 ST=$W/static
