@@ -245,16 +245,33 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
     solve_node(h, b->c[1], B + n0, ldb, nrhs);
     if (K == 0)
         return;
-    double *T = nrhs == 1 ? b->t : malloc(K * nrhs * sizeof *T);
+    int kk = (int)K, nr = (int)nrhs, info;
+    if (nrhs == 1) {
+        /* one column (GMRES): matrix-vector products, not dgemm's blocking */
+        double *t = b->t;
+        if (b->k01)
+            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)b->k01, (int)n1, 1.0, b->Vt01, (int)b->k01, B + n0, 1,
+                        0.0, t, 1);
+        if (b->k10)
+            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)b->k10, (int)n0, 1.0, b->Vt10, (int)b->k10, B, 1, 0.0,
+                        t + b->k01, 1);
+        dgetrs_("N", &kk, &nr, b->S, &kk, b->spiv, t, &kk, &info);
+        if (b->k01)
+            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n0, (int)b->k01, -1.0, b->Y0, (int)n0, t, 1, 1.0, B, 1);
+        if (b->k10)
+            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n1, (int)b->k10, -1.0, b->Y1, (int)n1, t + b->k01, 1, 1.0,
+                        B + n0, 1);
+        return;
+    }
+    double *T = malloc(K * nrhs * sizeof *T);
     if (!T)
-        return; /* only a multi-column solve allocates: factorize's, checked there */
+        return; /* only a multi-column solve allocates: factorize's */
     if (b->k01)
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)b->k01, (int)nrhs, (int)n1, 1.0, b->Vt01,
                     (int)b->k01, B + n0, (int)ldb, 0.0, T, (int)K);
     if (b->k10)
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)b->k10, (int)nrhs, (int)n0, 1.0, b->Vt10,
                     (int)b->k10, B, (int)ldb, 0.0, T + b->k01, (int)K);
-    int kk = (int)K, nr = (int)nrhs, info;
     dgetrs_("N", &kk, &nr, b->S, &kk, b->spiv, T, &kk, &info);
     if (b->k01)
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n0, (int)nrhs, (int)b->k01, -1.0, b->Y0,
@@ -262,8 +279,7 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
     if (b->k10)
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n1, (int)nrhs, (int)b->k10, -1.0, b->Y1,
                     (int)n1, T + b->k01, (int)K, 1.0, B + n0, (int)ldb);
-    if (nrhs != 1)
-        free(T);
+    free(T);
 }
 
 static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)

@@ -58,9 +58,11 @@ extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *
 #define ADH_FRONT_REL 10
 #define ADH_FRONT_WINDOW 3 /* rings each side of an extremum stepped in Q */
 #ifndef ADH_HODLR_TOL /* the HODLR preconditioner's blocks (relative, ACA) */
-#define ADH_HODLR_TOL 1e-8
+#define ADH_HODLR_TOL 1e-6
 #endif
-#define ADH_HODLR_LEAF 32
+#ifndef ADH_HODLR_LEAF
+#define ADH_HODLR_LEAF 64
+#endif
 
 static double hodlr_entry(void *ctx, size_t i, size_t j)
 {
