@@ -7,6 +7,8 @@
 
 /* LAPACK (OpenBLAS's, as the program is linked). */
 extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
+extern void dgetri_(const int *n, double *a, const int *lda, const int *ipiv, double *work, const int *lwork,
+                    int *info);
 extern void dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a, const int *lda,
                     const int *ipiv, double *b, const int *ldb, int *info);
 
@@ -15,15 +17,18 @@ extern void dgetrs_(const char *trans, const int *n, const int *nrhs, const doub
 typedef struct node {
     size_t lo, n, n0;
     int c[2];            /* children, -1 at a leaf */
-    /* leaf: W's block, A's LU */
-    double *Wl, *Al;
+    /* leaf: W's block, A's block's inverse (a GMRES solve is then one
+     * matrix-vector product, not two triangular solves of 64), scratch */
+    double *Wl, *Al, *lt;
     int *piv;
     /* inner: W[c0,c1] = U01 V01^T, W[c1,c0] = U10 V10^T */
     size_t k01, k10;
     double *U01, *V01, *U10, *V10;
     /* factorization: Y0 = A_c0^-1 U01, Y1 = A_c1^-1 U10, the scaled
-     * Vt01 = alpha V01^T diag(d_c1), Vt10 = alpha V10^T diag(d_c0), and the
-     * LU of the capacitance matrix S = [[I, Vt01 Y1], [Vt10 Y0, I]] */
+     * Vt01 = alpha diag(d_c1) V01, Vt10 = alpha diag(d_c0) V10 (held as V,
+     * column-major: products with their transposes read contiguous
+     * columns), and the LU of the capacitance matrix
+     * S = [[I, Vt01^T Y1], [Vt10^T Y0, I]] */
     double *Y0, *Y1, *Vt01, *Vt10, *S, *t;
     int *spiv;
     int sign;
@@ -156,10 +161,11 @@ static int build(adh_hodlr *h, size_t lo, size_t n)
     b->lo = lo, b->n = n, b->c[0] = b->c[1] = -1;
     if (n <= h->leaf) {
         double *Wl = malloc(n * n * sizeof *Wl), *Al = malloc(n * n * sizeof *Al);
+        double *lt = malloc(64 * n * sizeof *lt);
         int *piv = malloc(n * sizeof *piv);
         b = &h->nodes[id];
-        b->Wl = Wl, b->Al = Al, b->piv = piv;
-        if (!Wl || !Al || !piv)
+        b->Wl = Wl, b->Al = Al, b->piv = piv, b->lt = lt;
+        if (!Wl || !Al || !piv || !lt)
             return -1;
         for (size_t j = 0; j < n; j++)
             for (size_t i = 0; i < n; i++)
@@ -207,7 +213,7 @@ void adh_hodlr_free(adh_hodlr *h)
         return;
     for (size_t i = 0; i < h->nnodes; i++) {
         node *b = &h->nodes[i];
-        free(b->Wl), free(b->Al), free(b->piv);
+        free(b->Wl), free(b->Al), free(b->piv), free(b->lt);
         free(b->U01), free(b->V01), free(b->U10), free(b->V10);
         free(b->Y0), free(b->Vt01), free(b->S), free(b->spiv);
     }
@@ -236,8 +242,20 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
 {
     node *b = &h->nodes[id];
     if (b->c[0] < 0) {
-        int n = (int)b->n, nr = (int)nrhs, ld = (int)ldb, info;
-        dgetrs_("N", &n, &nr, b->Al, &n, b->piv, B, &ld, &info);
+        size_t n = b->n;
+        if (nrhs == 1) {
+            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n, (int)n, 1.0, b->Al, (int)n, B, 1, 0.0, b->lt, 1);
+            memcpy(B, b->lt, n * sizeof *B);
+            return;
+        }
+        double *T = malloc(n * nrhs * sizeof *T);
+        if (!T)
+            return;
+        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n, (int)nrhs, (int)n, 1.0, b->Al, (int)n, B,
+                    (int)ldb, 0.0, T, (int)n);
+        for (size_t c = 0; c < nrhs; c++)
+            memcpy(B + c * ldb, T + c * n, n * sizeof *B);
+        free(T);
         return;
     }
     size_t n0 = b->n0, n1 = b->n - n0, K = b->k01 + b->k10;
@@ -250,10 +268,10 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
         /* one column (GMRES): matrix-vector products, not dgemm's blocking */
         double *t = b->t;
         if (b->k01)
-            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)b->k01, (int)n1, 1.0, b->Vt01, (int)b->k01, B + n0, 1,
-                        0.0, t, 1);
+            cblas_dgemv(CblasColMajor, CblasTrans, (int)n1, (int)b->k01, 1.0, b->Vt01, (int)n1, B + n0, 1, 0.0, t,
+                        1);
         if (b->k10)
-            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)b->k10, (int)n0, 1.0, b->Vt10, (int)b->k10, B, 1, 0.0,
+            cblas_dgemv(CblasColMajor, CblasTrans, (int)n0, (int)b->k10, 1.0, b->Vt10, (int)n0, B, 1, 0.0,
                         t + b->k01, 1);
         dgetrs_("N", &kk, &nr, b->S, &kk, b->spiv, t, &kk, &info);
         if (b->k01)
@@ -267,11 +285,11 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
     if (!T)
         return; /* only a multi-column solve allocates: factorize's */
     if (b->k01)
-        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)b->k01, (int)nrhs, (int)n1, 1.0, b->Vt01,
-                    (int)b->k01, B + n0, (int)ldb, 0.0, T, (int)K);
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)b->k01, (int)nrhs, (int)n1, 1.0, b->Vt01,
+                    (int)n1, B + n0, (int)ldb, 0.0, T, (int)K);
     if (b->k10)
-        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)b->k10, (int)nrhs, (int)n0, 1.0, b->Vt10,
-                    (int)b->k10, B, (int)ldb, 0.0, T + b->k01, (int)K);
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)b->k10, (int)nrhs, (int)n0, 1.0, b->Vt10,
+                    (int)n0, B, (int)ldb, 0.0, T + b->k01, (int)K);
     dgetrs_("N", &kk, &nr, b->S, &kk, b->spiv, T, &kk, &info);
     if (b->k01)
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n0, (int)nrhs, (int)b->k01, -1.0, b->Y0,
@@ -293,7 +311,10 @@ static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
                 b->Al[i + j * n] = s * b->Wl[i + j * n];
             b->Al[j + j * n] += 1.0;
         }
-        return lu(b->Al, (int)n, b->piv, &b->sign);
+        int rc = lu(b->Al, (int)n, b->piv, &b->sign), nn = (int)n, lw = 64 * (int)n, info = 0;
+        if (rc == 0)
+            dgetri_(&nn, b->Al, &nn, b->piv, b->lt, &lw, &info);
+        return rc != 0 ? rc : info != 0 ? 1 : 0;
     }
     int rc = factor_node(h, b->c[0], alpha, d);
     if (rc == 0)
@@ -305,10 +326,10 @@ static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
     const double *d0 = d + b->lo, *d1 = d0 + n0;
     for (size_t l = 0; l < k01; l++)
         for (size_t j = 0; j < n1; j++)
-            b->Vt01[l + j * k01] = alpha * b->V01[j + l * n1] * d1[j];
+            b->Vt01[j + l * n1] = alpha * b->V01[j + l * n1] * d1[j];
     for (size_t l = 0; l < k10; l++)
         for (size_t j = 0; j < n0; j++)
-            b->Vt10[l + j * k10] = alpha * b->V10[j + l * n0] * d0[j];
+            b->Vt10[j + l * n0] = alpha * b->V10[j + l * n0] * d0[j];
     if (k01) {
         memcpy(b->Y0, b->U01, k01 * n0 * sizeof *b->Y0);
         solve_node(h, b->c[0], b->Y0, n0, k01);
@@ -322,10 +343,10 @@ static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
     for (size_t i = 0; i < K; i++)
         S[i + i * K] = 1.0;
     if (k01 && k10) {
-        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)k01, (int)k10, (int)n1, 1.0, b->Vt01,
-                    (int)k01, b->Y1, (int)n1, 0.0, S + k01 * K, (int)K);
-        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)k10, (int)k01, (int)n0, 1.0, b->Vt10,
-                    (int)k10, b->Y0, (int)n0, 0.0, S + k01, (int)K);
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)k01, (int)k10, (int)n1, 1.0, b->Vt01, (int)n1,
+                    b->Y1, (int)n1, 0.0, S + k01 * K, (int)K);
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)k10, (int)k01, (int)n0, 1.0, b->Vt10, (int)n0,
+                    b->Y0, (int)n0, 0.0, S + k01, (int)K);
     }
     int s = 1;
     rc = lu(S, (int)K, b->spiv, &s);

@@ -56,7 +56,7 @@ extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *
 #define ADH_FRONT_GAP 1.5 /* z0: the front node's gap is above this */
 #define ADH_FRONT_MIN 8   /* rings in contact before front mode starts */
 #define ADH_FRONT_REL 10
-#define ADH_FRONT_WINDOW 3 /* rings each side of an extremum stepped in Q */
+#define ADH_FRONT_WINDOW 6 /* rings each side of an extremum stepped in Q */
 #ifndef ADH_HODLR_TOL /* the HODLR preconditioner's blocks (relative, ACA) */
 #define ADH_HODLR_TOL 1e-6
 #endif
@@ -137,6 +137,7 @@ struct adh_static {
     size_t fn;        /* consecutive front points (up to 3 used) */
     size_t fk;        /* the step, in rings */
     size_t fend;      /* the front node of the landing on h0_end */
+    int fhold;        /* the step was set to approach an extremum: keep it */
     size_t fwin;      /* nonzero: steps in Q until the front passes this
                          node (an extremum's neighbourhood, every phase of
                          the lattice seen) */
@@ -978,6 +979,7 @@ static void front_start(adh_static *w)
     w->fH = w->st->h[e];
     w->fn = 1;
     w->fk = 1;
+    w->fhold = 0;
 }
 
 /* At one lattice phase the jump-out (h0's maximum) and the pull-off (F's
@@ -1004,10 +1006,14 @@ static void front_extremum(adh_static *w, size_t kused, double dq)
         if (v > a[2])
             ahead = fmin(ahead, (v - a[2]) / dr);
     }
-    if (!(ahead < (double)w->fk + ADH_FRONT_WINDOW))
+    if (!(ahead < 2.0 * (double)w->fk + ADH_FRONT_WINDOW))
         return;
-    if (ahead > ADH_FRONT_WINDOW + 1) {
-        w->fk = (size_t)(ahead - ADH_FRONT_WINDOW);
+    if (ahead > 2 * ADH_FRONT_WINDOW) {
+        /* halfway to the window's start: the next parabola, from closer
+         * points, places it better */
+        size_t k = (size_t)((ahead - ADH_FRONT_WINDOW) / 2);
+        w->fk = k > 1 ? k : 1;
+        w->fhold = 1;
         return;
     }
     w->front = 0;
@@ -1265,8 +1271,11 @@ int adh_static_iterate(adh_static *w)
                 w->fn++;
                 if (q > q0)
                     w->dq = q - q0; /* should it fall back to steps in Q */
-                /* grow while Newton converges at once, shrink when it labours */
-                if (iters <= ADH_FRONT_GROW)
+                /* grow while Newton converges at once, shrink when it labours
+                 * (not while approaching an extremum) */
+                if (w->fhold)
+                    w->fhold = 0;
+                else if (iters <= ADH_FRONT_GROW)
                     w->fk += w->fk / 2 > 1 ? w->fk / 2 : 1;
                 else if (iters >= ADH_FRONT_GROW + 3)
                     w->fk = w->fk * 2 / 3 > 1 ? w->fk * 2 / 3 : 1;
