@@ -56,7 +56,12 @@ extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *
 #define ADH_FRONT_GAP 1.5 /* z0: the front node's gap is above this */
 #define ADH_FRONT_MIN 8   /* rings in contact before front mode starts */
 #define ADH_FRONT_REL 10
+#ifndef ADH_FRONT_REFRESH /* front steps of this many rings refactorize first */
+#define ADH_FRONT_REFRESH 2
+#endif
+#ifndef ADH_FRONT_WINDOW
 #define ADH_FRONT_WINDOW 6 /* rings each side of an extremum stepped in Q */
+#endif
 #ifndef ADH_HODLR_TOL /* the HODLR preconditioner's blocks (relative, ACA) */
 #define ADH_HODLR_TOL 1e-6
 #endif
@@ -774,6 +779,15 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, double qtar
             w->bG[i] = -w->G[i];
         w->bG[n] = -c;
         op A = { w->Dc, w->gc, nu, nh };
+        if (fmode && w->fk >= ADH_FRONT_REFRESH && it == 0 && w->hw && w->P.stamp != w->attempt) {
+            /* the front moved many rings since the factorization: its edge
+             * is elsewhere, and a fresh one (a few GMRES iterations' cost)
+             * saves ~20 */
+            int lrc = linearize(w, x, nu, nh, &w->P);
+            w->res.factorizations++;
+            if (lrc != ADH_SUCCESS)
+                return lrc;
+        }
         int rc = solve_at(w, &A, x, w->bG, ADH_NEWTON_RTOL, w->du);
         if (rc != ADH_SUCCESS)
             return rc;
