@@ -975,12 +975,17 @@ static void record_smooth(adh_static *w)
 /* Enters front mode once a contact of a few rings has formed: the front
  * node is the first whose gap exceeds ADH_FRONT_GAP z0, and the gap there
  * is what every later point holds at its front node. */
-static size_t front_node(const adh_static *w)
+static size_t front_node_of(const adh_static *w, const adh_state *x)
 {
     size_t e = 0;
-    while (e < w->n && w->st->h[e] <= ADH_FRONT_GAP * w->m.z0)
+    while (e < w->n && x->h[e] <= ADH_FRONT_GAP * w->m.z0)
         e++;
     return e;
+}
+
+static size_t front_node(const adh_static *w)
+{
+    return front_node_of(w, w->st);
 }
 
 static void front_start(adh_static *w)
@@ -1220,6 +1225,12 @@ int adh_static_iterate(adh_static *w)
                 }
                 continue;
             }
+            if (w->front && !fix && front_node_of(w, w->trial) != w->fe[0] + w->fk) {
+                /* the gap fH at the target ring, but the contact is not
+                 * the disk up to it: not the front that was asked for */
+                ok = 0;
+                goto failed;
+            }
             if (w->skip) {
                 /* Q only grows along the curve: there is no leg running
                  * back to land on, and no tangent to solve for. On the curve
@@ -1342,6 +1353,7 @@ int adh_static_iterate(adh_static *w)
                 rc = ADH_EGRID;
             break;
         }
+    failed:
         /* a failed step is usually a fold just ahead: cut hard */
         w->res.rejected++;
         if (w->front && !fix) {
