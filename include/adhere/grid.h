@@ -79,10 +79,11 @@ void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t le
 /* The budget of an automatic static curve: past 1000 nodes it steps over
  * the lattice folds (adhere/static.h, lattice_skip), many rings a step,
  * each Newton step solved with a HODLR preconditioner (adhere/hodlr.h):
- * measured about 3 CPU s at sigma = 22.5 (1952 rings) and 35-45 s at
- * sigma = 75 (8893 rings, 65 MB), so beyond this many it would take over a
- * minute on one core (README "The static curve at large sigma"). */
-#define ADH_GRID_STATIC_MAX_NODES 10000
+ * measured about 2 CPU s at sigma = 22.5 (1952 rings), 16-20 s at sigma =
+ * 75 (8893 rings, 52 MB) and 34 s at sigma = 100 (12875 rings, 74 MB): up
+ * to sigma ~ 110 at the default turn, as far as it was measured (README
+ * "The static curve at large sigma"). */
+#define ADH_GRID_STATIC_MAX_NODES 14000
 
 /* The grid a run gets when neither N nor the spacing is given. */
 typedef struct adh_grid_choice {

@@ -63,7 +63,7 @@ extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *
 #define ADH_FRONT_WINDOW 6 /* rings each side of an extremum stepped in Q */
 #endif
 #ifndef ADH_HODLR_TOL /* the HODLR preconditioner's blocks (relative, ACA) */
-#define ADH_HODLR_TOL 1e-6
+#define ADH_HODLR_TOL 1e-4
 #endif
 #ifndef ADH_HODLR_LEAF
 #define ADH_HODLR_LEAF 64
