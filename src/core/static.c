@@ -1217,12 +1217,17 @@ int adh_static_iterate(adh_static *w)
             if (w->skip && !fix && w->trial->h0 < w->s.h0_end && w->tau_h < 0) {
                 /* a step in Q went past the end: land on it instead (in
                  * front mode from the front node interpolated there) */
-                w->end_next = 1;
-                if (w->front) {
+                if (w->front && w->fk > 1) {
+                    /* a shorter front step to about the end first: the
+                     * landing is then within a ring */
                     double f = (w->st->h0 - w->s.h0_end) / (w->st->h0 - w->trial->h0);
-                    size_t k = (size_t)lround(f * (double)w->fk);
-                    w->fend = w->fe[0] + (k > 1 ? k : 1);
+                    size_t k = (size_t)floor(f * (double)w->fk);
+                    w->fk = k < 1 ? 1 : k < w->fk ? k : w->fk - 1;
+                    w->fhold = 1;
+                    continue;
                 }
+                w->end_next = 1;
+                w->fend = w->fe[0] + 1;
                 continue;
             }
             if (w->front && !fix && front_node_of(w, w->trial) != w->fe[0] + w->fk) {
@@ -1357,9 +1362,14 @@ int adh_static_iterate(adh_static *w)
         /* a failed step is usually a fold just ahead: cut hard */
         w->res.rejected++;
         if (w->front && !fix) {
-            /* a shorter front step; from one ring, steps in Q again */
-            if (w->fk == 1)
-                w->front = 0, w->front_ok = 0;
+            /* a shorter front step; from one ring, steps in Q across the
+             * next few rings (as around an extremum), then front steps
+             * again */
+            if (w->fk == 1) {
+                w->front = 0;
+                w->fwin = w->fe[0] + ADH_FRONT_WINDOW;
+                w->dq = w->dq > 0 ? w->dq : w->s.ds_init * w->qslope;
+            }
             w->fk = w->fk / 2 > 1 ? w->fk / 2 : 1;
             continue;
         }
