@@ -77,12 +77,13 @@ void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t le
  * graded one (the paper's N: below it the uniform grid is as cheap). */
 #define ADH_GRID_UNIFORM_MAX_NODES 1000
 /* The budget of an automatic static curve: past 1000 nodes it steps over
- * the lattice folds (adhere/static.h, lattice_skip), but it still takes a
- * point or so per fine ring the contact line crosses, each solved through
- * a dense LU over the contact: about 20 CPU s at sigma = 15 (1219 rings),
- * 2 minutes at 22.5 (1952), so beyond this many it would take longer than
- * 2 minutes on one core (README "Resolution"). */
-#define ADH_GRID_STATIC_MAX_NODES 2000
+ * the lattice folds (adhere/static.h, lattice_skip), many rings a step,
+ * each Newton step solved with a HODLR preconditioner (adhere/hodlr.h):
+ * measured about 2 CPU s at sigma = 22.5 (1952 rings), 16-20 s at sigma =
+ * 75 (8893 rings, 52 MB) and 34 s at sigma = 100 (12875 rings, 74 MB): up
+ * to sigma ~ 110 at the default turn, as far as it was measured (README
+ * "The static curve at large sigma"). */
+#define ADH_GRID_STATIC_MAX_NODES 14000
 
 /* The grid a run gets when neither N nor the spacing is given. */
 typedef struct adh_grid_choice {

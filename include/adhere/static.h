@@ -44,6 +44,18 @@
  * (jump-in, jump-out) are found as on the exact curve (within 1e-3 in h0
  * and in pull-off, tests/unit/test_static_skip.c).
  *
+ * Once a few rings are in contact the steps are whole rings of the contact
+ * line (front steps): every point holds the same gap at its front ring, so
+ * all see the lattice at one phase and the curve they sample is smooth; the
+ * predictor moves the gap profiles out as a travelling front, and within a
+ * few rings of the jump-out and the pull-off the steps in Q (every phase)
+ * take over again, so that the lattice's extremes are found as before.
+ *
+ * Under a hierarchical kernel W is also held as a HODLR matrix
+ * (adhere/hodlr.h) and the preconditioner is the whole Jacobian factorized
+ * in O(N log^2 N), with no dense N x N copy; a dense kernel keeps the dense
+ * LU over the active prefix (the oracle).
+ *
  * Use: alloc, set (solves the start point), then iterate until it returns
  * something other than ADH_CONTINUE; or adh_static_run for the whole curve. */
 #ifndef ADHERE_STATIC_H
@@ -128,14 +140,15 @@ typedef struct adh_static_point {
     int direction;       /* +1 when h0 decreases along the curve here, -1 otherwise */
     int stable;          /* 1: det J > 0, stable under displacement control */
     size_t newton;       /* Newton iterations spent reaching it (rejected attempts too) */
-    size_t active;       /* nodes in the preconditioner's dense LU */
+    size_t active;       /* nodes in the preconditioner (its dense LU, or all N with HODLR) */
     double residual;     /* max_n |u_n + (2/E)(W p)_n|, m */
 } adh_static_point;
 
 typedef struct adh_static adh_static;
 
-/* The grid and kernel are borrowed and must outlive the solver. Copies W
- * densely (N^2 doubles) once; material changes do not rebuild it. */
+/* The grid and kernel are borrowed and must outlive the solver. Copies a
+ * dense W (N^2 doubles) once, or assembles a hierarchical one as HODLR
+ * (O(N log N)); material changes do not rebuild it. */
 adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k);
 void adh_static_free(adh_static *w);
 

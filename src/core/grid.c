@@ -139,12 +139,12 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
     if (use == ADH_GRID_STATIC && nn > ADH_GRID_STATIC_MAX_NODES) {
         snprintf(why, whylen,
                  "sigma = %.3g: a resolved static curve needs a grid spacing of at most %.3g m (%.2g edge-zone "
-                 "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps follow the "
-                 "contact line across every fine ring through a dense LU over the contact: beyond N = %d that "
-                 "takes over 2 minutes on one core (20 s at sigma = 15, 2 minutes at 22.5); use --mode=relax "
+                 "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps, "
+                 "though they step the contact line over many rings at once, cost more with N: beyond N = %d "
+                 "(34 s on one core at sigma = 100, 12875 rings) it was not measured; use --mode=relax "
                  "(resolved at this sigma), a stiffer material, or give -N/--spacing yourself with --force (the "
                  "run is then marked resolved 0 if the grid is coarser than the limit)",
-                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, mb((double)nn), ADH_GRID_STATIC_MAX_NODES);
+                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, c->hierarchical ? 1.2e3 * (double)nn / 1048576.0 : mb((double)nn), ADH_GRID_STATIC_MAX_NODES);
         return ADH_EGRID;
     }
     return ADH_SUCCESS;

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "adhere/hodlr.h"
 #include "adhere/law.h"
 #include "adhere/observe.h"
 #include "adhere/rings.h"
@@ -46,6 +47,32 @@ extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *
 #ifndef ADH_GMRES_FRESH /* more iterations than this: refactorize for next time */
 #define ADH_GMRES_FRESH 6
 #endif
+#ifndef ADH_FRONT_GROW /* front mode: Newton iterations up to which the step grows */
+#define ADH_FRONT_GROW 3
+#endif
+#ifndef ADH_FRONT_MAX /* front mode: the longest step, in rings */
+#define ADH_FRONT_MAX 64
+#endif
+#define ADH_FRONT_GAP 1.5 /* z0: the front node's gap is above this */
+#define ADH_FRONT_MIN 8   /* rings in contact before front mode starts */
+#define ADH_FRONT_REL 10
+#ifndef ADH_FRONT_REFRESH /* front steps of this many rings refactorize first */
+#define ADH_FRONT_REFRESH 2
+#endif
+#ifndef ADH_FRONT_WINDOW
+#define ADH_FRONT_WINDOW 6 /* rings each side of an extremum stepped in Q */
+#endif
+#ifndef ADH_HODLR_TOL /* the HODLR preconditioner's blocks (relative, ACA) */
+#define ADH_HODLR_TOL 1e-4
+#endif
+#ifndef ADH_HODLR_LEAF
+#define ADH_HODLR_LEAF 64
+#endif
+
+static double hodlr_entry(void *ctx, size_t i, size_t j)
+{
+    return adh_kernel_entry(ctx, i, j);
+}
 
 typedef struct lin {
     double *B;       /* LU of the (m+1)^2 bordered matrix */
@@ -56,6 +83,7 @@ typedef struct lin {
     double *g;       /* dG/dh0 = (2/E) W p', all N nodes */
     double *nu;      /* constraint normal, u part (metric-unit vector with nh) */
     double nh;
+    double *Jg;      /* HODLR path: J^-1 g at the linearization point */
     size_t stamp;    /* the step attempt it was factorized in */
     int tangent_border; /* bordered by the current tangent: its det sign is
                            comparable with det_b_sign */
@@ -68,7 +96,13 @@ struct adh_static {
     int fast;         /* the kernel's product beats a dense one (any
                          hierarchical storage) */
     int skip;         /* lattice_skip in effect (the setting, or auto's choice) */
-    double *W;        /* dense W, row-major N x N (out = W p) */
+    double *W;        /* dense W, row-major N x N (out = W p); NULL with hw */
+    adh_hodlr *hw;    /* W as a HODLR matrix, when the kernel is
+                         hierarchical: the preconditioner is then the whole
+                         Jacobian, factorized in O(N log^2 N) */
+    const double *pnu; /* HODLR path, during a solve: the operator's border */
+    double pnh, pschur; /* ... and the Schur complement nh - theta nu.x2 */
+    double *x2;       /* ... J_L^-1 g of the operator being solved */
     double *colnorm;  /* sum_n |W_nj| */
     double *shape;    /* r^2 / 2R */
     adh_material m;
@@ -98,6 +132,24 @@ struct adh_static {
     double q, dq, qslope; /* lattice_skip: Q at st, the step in Q, dQ/ds along tau */
     double *u1, *u2, q1, q2, h1, h2; /* the two points before st, for a quadratic predictor */
     size_t nhist;     /* how many of them there are */
+    /* lattice_skip, once the contact has formed: steps of whole rings of
+     * the contact line (front mode). Each point holds the gap fH at a fine
+     * ring fe[0] (the contact line at the same place in its ring, so the
+     * lattice's phase is the same at every point); the predictor moves the
+     * last points' gap profiles out by the step, a travelling front. */
+    int front;
+    size_t fe[3];     /* front node of st and of the two points before */
+    size_t fn;        /* consecutive front points (up to 3 used) */
+    size_t fk;        /* the step, in rings */
+    size_t fend;      /* the front node of the landing on h0_end */
+    int fhold;        /* the step was set to approach an extremum: keep it */
+    size_t fwin;      /* nonzero: steps in Q until the front passes this
+                         node (an extremum's neighbourhood, every phase of
+                         the lattice seen) */
+    size_t nf;        /* nodes of the uniform fine band */
+    double fH;        /* the gap held at the front node, m */
+    int front_ok;     /* front mode allowed (it falls back to Q for good
+                         when a one-ring step fails) */
     int end_next;     /* the next step lands on h0_end */
     size_t newton_point;
     double residual;
@@ -163,15 +215,19 @@ static void lin_free(lin *L)
     free(L->D);
 }
 
-static int lin_alloc(lin *L, size_t n)
+/* dense: room for the (n+1)^2 LU; else (HODLR) only the vectors */
+static int lin_alloc(lin *L, size_t n, int dense)
 {
-    L->B = malloc((n + 1) * (n + 1) * sizeof *L->B);
-    L->perm = malloc((n + 1) * sizeof *L->perm);
-    L->D = malloc(3 * n * sizeof *L->D);
-    if (!L->B || !L->perm || !L->D)
+    if (dense) {
+        L->B = malloc((n + 1) * (n + 1) * sizeof *L->B);
+        L->perm = malloc((n + 1) * sizeof *L->perm);
+    }
+    L->D = malloc(4 * n * sizeof *L->D);
+    if ((dense && (!L->B || !L->perm)) || !L->D)
         return ADH_ENOMEM;
     L->g = L->D + n;
     L->nu = L->D + 2 * n;
+    L->Jg = L->D + 3 * n;
     return ADH_SUCCESS;
 }
 
@@ -180,6 +236,7 @@ void adh_static_free(adh_static *w)
     if (!w)
         return;
     free(w->W);
+    adh_hodlr_free(w->hw);
     free(w->colnorm);
     adh_state_free(w->st);
     adh_state_free(w->trial);
@@ -199,17 +256,20 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     w->k = k;
     w->n = n;
     w->fast = adh_kernel_storage_of(k) != ADH_STORAGE_DENSE;
-    w->W = malloc(n * n * sizeof *w->W);
+    if (w->fast)
+        w->hw = adh_hodlr_alloc(n, hodlr_entry, (void *)k, ADH_HODLR_TOL, ADH_HODLR_LEAF);
+    else
+        w->W = malloc(n * n * sizeof *w->W);
     w->colnorm = calloc(2 * n, sizeof *w->colnorm);
     w->st = adh_state_alloc(n);
     w->trial = adh_state_alloc(n);
     /* G, du, y, t, t2, upred, scratch, tau_u, tau_u_new, rG, bG, dx, Dc, gc,
-     * zero, gz, Dst, gst, Dtr, gtr, u1, u2: n + 1 each; the GMRES basis */
-    w->G = calloc(22 * (n + 1) + (ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
+     * zero, gz, Dst, gst, Dtr, gtr, u1, u2, x2: n + 1 each; the GMRES basis */
+    w->G = calloc(23 * (n + 1) + (ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
     w->folds = malloc(ADH_STATIC_MAX_FOLDS * sizeof *w->folds);
-    int bad = !w->W || !w->colnorm || !w->st || !w->trial || !w->G || !w->folds;
+    int bad = !(w->W || w->hw) || !w->colnorm || !w->st || !w->trial || !w->G || !w->folds;
     if (!bad)
-        bad = lin_alloc(&w->P, n) != ADH_SUCCESS;
+        bad = lin_alloc(&w->P, n, !w->fast) != ADH_SUCCESS;
     if (bad) {
         adh_static_free(w);
         return NULL;
@@ -217,11 +277,11 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     w->shape = w->colnorm + n;
     double **bufs[] = { &w->G, &w->du, &w->y, &w->t, &w->t2, &w->upred, &w->scratch, &w->tau_u,
                         &w->tau_u_new, &w->rG, &w->bG, &w->dx, &w->Dc, &w->gc, &w->zero, &w->gz,
-                        &w->Dst, &w->gst, &w->Dtr, &w->gtr, &w->u1, &w->u2 };
+                        &w->Dst, &w->gst, &w->Dtr, &w->gtr, &w->u1, &w->u2, &w->x2 };
     for (size_t i = 1; i < sizeof bufs / sizeof *bufs; i++)
         *bufs[i] = w->G + i * (n + 1);
-    w->V = w->G + 22 * (n + 1);
-    for (size_t i = 0; i < n; i++)
+    w->V = w->G + 23 * (n + 1);
+    for (size_t i = 0; i < n && w->W; i++)
         for (size_t j = 0; j < n; j++) {
             double v = adh_kernel_entry(k, i, j);
             w->W[i * n + j] = v;
@@ -258,7 +318,7 @@ static int linearize(adh_static *w, const adh_state *x, const double *nu, double
     double c2E = w->c2E, th = w->s.u_weight;
     for (size_t j = 0; j < n; j++) {
         L->D[j] = adh_lj_dpressure(x->h[j], w->m.A, w->m.z0);
-        if (c2E * fabs(L->D[j]) * w->colnorm[j] > w->act)
+        if (w->W && c2E * fabs(L->D[j]) * w->colnorm[j] > w->act)
             m = j + 1;
     }
     adh_kernel_apply(w->k, L->D, L->g, w->scratch);
@@ -272,6 +332,25 @@ static int linearize(adh_static *w, const adh_state *x, const double *nu, double
     L->m = m;
     L->stamp = w->attempt;
     L->tangent_border = nu == w->tau_u && nh == w->tau_h;
+    if (w->hw) {
+        /* The whole J = I - (2/E) W diag(D), no truncation; the border by
+         * block elimination: det B = det J (nh - theta nu.J^-1 g). */
+        int rc = adh_hodlr_factorize(w->hw, -c2E, L->D);
+        if (rc < 0)
+            return ADH_ENOMEM;
+        if (rc > 0)
+            return ADH_ESTALL; /* exactly singular: not a simple fold */
+        memcpy(L->Jg, L->g, n * sizeof *L->Jg);
+        adh_hodlr_solve(w->hw, L->Jg);
+        double sc = nh;
+        for (size_t i = 0; i < n; i++)
+            sc -= th * nu[i] * L->Jg[i];
+        if (sc == 0 || !isfinite(sc))
+            return ADH_ESTALL;
+        L->m = n;
+        L->det_sign = adh_hodlr_det_sign(w->hw) * (sc < 0 ? -1 : 1);
+        return ADH_SUCCESS;
+    }
     size_t ld = m + 1;
     double *B = L->B, *q = w->scratch;
     if (m > 0)
@@ -314,6 +393,20 @@ static void precond(adh_static *w, const lin *L, const double *bG, double bc, do
 {
     size_t n = w->n, m = L->m, ld = m + 1;
     double th = w->s.u_weight;
+    if (w->hw) {
+        /* J_L^-1 on the u part, the current operator's border eliminated
+         * exactly (x2 and the Schur complement set up by solve) */
+        memcpy(du, bG, n * sizeof *du);
+        adh_hodlr_solve(w->hw, du);
+        double nd = 0;
+        for (size_t i = 0; i < n; i++)
+            nd += w->pnu[i] * du[i];
+        double dh = (bc - th * nd) / w->pschur;
+        for (size_t i = 0; i < n; i++)
+            du[i] -= w->x2[i] * dh;
+        *dh0 = dh;
+        return;
+    }
     double *y = w->y;
     double nb = 0;
     for (size_t i = 0; i < n; i++)
@@ -332,14 +425,7 @@ static void precond(adh_static *w, const lin *L, const double *bG, double bc, do
     double dh = y[m];
     for (size_t j = 0; j < m; j++)
         w->t[j] = L->D[j] * y[j];
-    if (m > 0 && w->fast) {
-        /* the operator's own product (hierarchical: O(N log N) against the
-         * dense prefix's N m) on the pressure change padded with zeros */
-        memset(w->t + m, 0, (n - m) * sizeof *w->t);
-        adh_kernel_apply(w->k, w->t, du, w->scratch);
-        for (size_t i = 0; i < n; i++)
-            du[i] *= w->c2E;
-    } else if (m > 0)
+    if (m > 0)
         cblas_dgemv(CblasRowMajor, CblasNoTrans, (int)n, (int)m, w->c2E, w->W, (int)n, w->t, 1, 0.0, du, 1);
     else
         memset(du, 0, n * sizeof *du);
@@ -386,6 +472,17 @@ static int solve(adh_static *w, const op *A, const lin *L, const double *b, doub
     *its = 0;
     if (beta == 0)
         return ADH_SUCCESS;
+    if (w->hw) {
+        /* the border of A, eliminated exactly around J_L^-1 */
+        memcpy(w->x2, A->g, n * sizeof *w->x2);
+        adh_hodlr_solve(w->hw, w->x2);
+        double sc = A->nh;
+        for (size_t i = 0; i < n; i++)
+            sc -= w->s.u_weight * A->nu[i] * w->x2[i];
+        if (sc == 0 || !isfinite(sc))
+            return ADH_CONTINUE;
+        w->pnu = A->nu, w->pnh = A->nh, w->pschur = sc;
+    }
     for (size_t i = 0; i < n1; i++)
         V[i] = b[i] / beta;
     gv[0] = beta;
@@ -477,6 +574,8 @@ static int solve_at(adh_static *w, const op *A, const adh_state *x, const double
         rc = solve(w, A, &w->P, b, rtol, out, &its);
         if (rc == ADH_SUCCESS)
             return ADH_SUCCESS;
+        if (w->hw)
+            break; /* the whole Jacobian was in: nothing more to take in */
         w->act *= 0.1;
     }
     return ADH_EMAXITER;
@@ -564,6 +663,42 @@ static void secant(adh_static *w, double *su, double *sh)
  * it normal to tau (Keller's pseudo-arclength), or on h0 = h0_fix when fix
  * is set. Each Newton step uses the exact Jacobian at the iterate, solved
  * by GMRES with the LU preconditioner. The converged point is left in trial. */
+/* Front mode's predictor for the front at node tgt: the gap profiles of
+ * the last front points (Lagrange in the front radius), each moved out by
+ * its distance to tgt within the fine band (whole rings: exact shifts, the
+ * axis's flat gap repeated), u extrapolated in place beyond it. */
+static void front_predict(adh_static *w, size_t tgt, adh_state *x)
+{
+    size_t n = w->n, np = w->fn < 3 ? w->fn : 3;
+    const double *r = w->grid->r;
+    const double *us[3] = { w->st->u, w->u1, w->u2 };
+    double h0s[3] = { w->st->h0, w->h1, w->h2 }, L[3];
+    double a = r[tgt];
+    for (size_t j = 0; j < np; j++) {
+        L[j] = 1;
+        for (size_t l = 0; l < np; l++)
+            if (l != j)
+                L[j] *= (a - r[w->fe[l]]) / (r[w->fe[j]] - r[w->fe[l]]);
+    }
+    x->h0 = 0;
+    for (size_t j = 0; j < np; j++)
+        x->h0 += L[j] * h0s[j];
+    for (size_t i = 0; i < n; i++) {
+        double v = 0;
+        if (i < w->nf) {
+            for (size_t j = 0; j < np; j++) {
+                size_t sh = tgt - w->fe[j], m = i > sh ? i - sh : 0;
+                v += L[j] * (h0s[j] + w->shape[m] - us[j][m]);
+            }
+            x->u[i] = x->h0 + w->shape[i] - v;
+        } else {
+            for (size_t j = 0; j < np; j++)
+                v += L[j] * us[j][i];
+            x->u[i] = v;
+        }
+    }
+}
+
 static int correct(adh_static *w, double ds, int fix, double h0_fix, double qtarget, size_t *iters)
 {
     size_t n = w->n;
@@ -576,8 +711,22 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, double qtar
     double h0pred = x->h0;
     const double *nu = fix ? w->zero : w->tau_u;
     double nh = fix ? 1.0 : w->tau_h;
-    int qmode = !fix && !isnan(qtarget);
+    int qmode = !fix && !isnan(qtarget) && !w->front;
+    int fmode = !fix && w->front;
+    size_t tgt = w->fe[0] + w->fk;
     double qscale = 1;
+    if (fix && w->front) {
+        /* the landing on h0_fix: the front moved to where h0 gets there */
+        front_predict(w, w->fend, x);
+        x->h0 = h0_fix;
+    }
+    if (fmode) {
+        front_predict(w, tgt, x);
+        memset(w->rG, 0, n * sizeof *w->rG);
+        w->rG[tgt] = -1.0 / th; /* the row of h_tgt = h0 + r^2/2R - u_tgt */
+        nu = w->rG;
+        nh = 1.0;
+    }
     if (qmode && w->nhist >= 2) {
         /* Q's parabola through the last three points: the curve bends
          * smoothly over many rings, and a better start saves Newton steps */
@@ -600,6 +749,8 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, double qtar
         double cq = 0;
         if (qmode) /* the constraint is nonlinear: it must hold too */
             cq = (qmeasure(w, x, w->rG, &nh, &qscale) - qtarget) / qscale;
+        if (fmode)
+            cq = x->h[tgt] - w->fH;
         if (r < w->s.tol * z0 && fabs(cq) < w->s.tol * z0) {
             w->residual = r;
             return ADH_SUCCESS;
@@ -616,7 +767,7 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, double qtar
         point_jacobian(w, x, w->Dc, w->gc);
         /* the constraint's current residual, metres */
         double c;
-        if (qmode) {
+        if (qmode || fmode) {
             c = cq;
         } else {
             double cu = 0;
@@ -628,6 +779,15 @@ static int correct(adh_static *w, double ds, int fix, double h0_fix, double qtar
             w->bG[i] = -w->G[i];
         w->bG[n] = -c;
         op A = { w->Dc, w->gc, nu, nh };
+        if (fmode && w->fk >= ADH_FRONT_REFRESH && it == 0 && w->hw && w->P.stamp != w->attempt) {
+            /* the front moved many rings since the factorization: its edge
+             * is elsewhere, and a fresh one (a few GMRES iterations' cost)
+             * saves ~20 */
+            int lrc = linearize(w, x, nu, nh, &w->P);
+            w->res.factorizations++;
+            if (lrc != ADH_SUCCESS)
+                return lrc;
+        }
         int rc = solve_at(w, &A, x, w->bG, ADH_NEWTON_RTOL, w->du);
         if (rc != ADH_SUCCESS)
             return rc;
@@ -812,6 +972,74 @@ static void record_smooth(adh_static *w)
     }
 }
 
+/* Enters front mode once a contact of a few rings has formed: the front
+ * node is the first whose gap exceeds ADH_FRONT_GAP z0, and the gap there
+ * is what every later point holds at its front node. */
+static size_t front_node_of(const adh_static *w, const adh_state *x)
+{
+    size_t e = 0;
+    while (e < w->n && x->h[e] <= ADH_FRONT_GAP * w->m.z0)
+        e++;
+    return e;
+}
+
+static size_t front_node(const adh_static *w)
+{
+    return front_node_of(w, w->st);
+}
+
+static void front_start(adh_static *w)
+{
+    size_t e = front_node(w);
+    if (e < ADH_FRONT_MIN || e + 2 >= w->nf)
+        return;
+    w->front = 1;
+    w->fe[0] = e;
+    w->fH = w->st->h[e];
+    w->fn = 1;
+    w->fk = 1;
+    w->fhold = 0;
+}
+
+/* At one lattice phase the jump-out (h0's maximum) and the pull-off (F's
+ * minimum) would miss the lattice's own swing, up to ~1e-3 (the exact
+ * curve's extremes are its highest lattice folds): when the parabola
+ * through the last three front points puts either a few steps ahead, the
+ * front steps shorten to land a few rings before it, and from there steps
+ * in Q of about a ring (every phase) cross it. kused: the last step in
+ * rings, dq: Q's change over it. */
+static void front_extremum(adh_static *w, size_t kused, double dq)
+{
+    if (w->fn < 3)
+        return;
+    const double *r = w->grid->r;
+    double a[3] = { r[w->fe[2]], r[w->fe[1]], r[w->fe[0]] }, hh[3] = { w->h2, w->h1, w->st->h0 };
+    double dr = adh_rings_width(w->grid, 0), ahead = INFINITY;
+    for (int which = 0; which < 2; which++) {
+        const double *y = which ? w->hist_F : hh;
+        double b, c;
+        parabola(a, y, &b, &c);
+        if (which ? !(c > 0) : !(c < 0))
+            continue; /* F's minimum, h0's maximum */
+        double v = a[1] - b / (2 * c);
+        if (v > a[2])
+            ahead = fmin(ahead, (v - a[2]) / dr);
+    }
+    if (!(ahead < 2.0 * (double)w->fk + ADH_FRONT_WINDOW))
+        return;
+    if (ahead > 2 * ADH_FRONT_WINDOW) {
+        /* halfway to the window's start: the next parabola, from closer
+         * points, places it better */
+        size_t k = (size_t)((ahead - ADH_FRONT_WINDOW) / 2);
+        w->fk = k > 1 ? k : 1;
+        w->fhold = 1;
+        return;
+    }
+    w->front = 0;
+    w->fwin = w->fe[0] + (size_t)ceil(ahead) + ADH_FRONT_WINDOW;
+    w->dq = dq / (double)kused;
+}
+
 /* Makes trial (tangent in tau_*_new, Jacobian data in Dtr, gtr, det J's
  * sign in det_sign) the current point. */
 static void accept(adh_static *w)
@@ -881,6 +1109,13 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->skip = s->lattice_skip < 0 ? n > ADH_STATIC_EXACT_MAX_NODES : s->lattice_skip;
     w->nhist = 0;
     w->end_next = 0;
+    w->front = 0;
+    w->fwin = 0;
+    w->front_ok = w->skip;
+    w->nf = 1;
+    while (w->nf < n && fabs(adh_rings_width(w->grid, w->nf) - adh_rings_width(w->grid, 0)) <
+                            1e-6 * adh_rings_width(w->grid, 0))
+        w->nf++;
 
     /* The start: undeformed, going down. */
     memset(w->st->u, 0, n * sizeof *w->st->u);
@@ -955,7 +1190,8 @@ int adh_static_iterate(adh_static *w)
         if (w->skip)
             w->ds = w->dq / w->qslope;
         /* The last step lands on h0_end exactly (natural parametrization). */
-        int fix = w->tau_h < 0 && (w->end_next || w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end);
+        int fix = w->tau_h < 0 &&
+                  (w->end_next || (!w->front && w->st->h0 + w->ds * z0 * w->tau_h <= w->s.h0_end));
         double ds = fix ? (w->s.h0_end - w->st->h0) / (z0 * w->tau_h) : w->ds;
         w->attempt++;
         rc = correct(w, ds, fix, w->s.h0_end, w->skip && !fix ? w->q + w->dq : NAN, &iters);
@@ -979,9 +1215,26 @@ int adh_static_iterate(adh_static *w)
                 continue;
             }
             if (w->skip && !fix && w->trial->h0 < w->s.h0_end && w->tau_h < 0) {
-                /* a step in Q went past the end: land on it instead */
+                /* a step in Q went past the end: land on it instead (in
+                 * front mode from the front node interpolated there) */
+                if (w->front && w->fk > 1) {
+                    /* a shorter front step to about the end first: the
+                     * landing is then within a ring */
+                    double f = (w->st->h0 - w->s.h0_end) / (w->st->h0 - w->trial->h0);
+                    size_t k = (size_t)floor(f * (double)w->fk);
+                    w->fk = k < 1 ? 1 : k < w->fk ? k : w->fk - 1;
+                    w->fhold = 1;
+                    continue;
+                }
                 w->end_next = 1;
+                w->fend = w->fe[0] + 1;
                 continue;
+            }
+            if (w->front && !fix && front_node_of(w, w->trial) != w->fe[0] + w->fk) {
+                /* the gap fH at the target ring, but the contact is not
+                 * the disk up to it: not the front that was asked for */
+                ok = 0;
+                goto failed;
             }
             if (w->skip) {
                 /* Q only grows along the curve: there is no leg running
@@ -1035,14 +1288,50 @@ int adh_static_iterate(adh_static *w)
             w->q1 = q0, w->h1 = w->st->h0;
             w->nhist++;
             w->newton_point = iters;
+            int was_front = w->front && !fix;
             accept(w);
             if (fix)
                 w->done = 1;
             w->q = q;
             if (q > q0)
                 w->qslope = (q - q0) / (w->s_arc - w->hist_s[1]);
-            /* grow while Newton converges at once, shrink when it labours */
-            w->dq *= iters <= ADH_Q_GROW ? 1.5 : iters >= ADH_Q_GROW + 3 ? 0.7 : 1.0;
+            if (was_front) {
+                size_t kused = w->fk;
+                w->fe[2] = w->fe[1], w->fe[1] = w->fe[0], w->fe[0] += w->fk;
+                w->fn++;
+                if (q > q0)
+                    w->dq = q - q0; /* should it fall back to steps in Q */
+                /* grow while Newton converges at once, shrink when it labours
+                 * (not while approaching an extremum) */
+                if (w->fhold)
+                    w->fhold = 0;
+                else if (iters <= ADH_FRONT_GROW)
+                    w->fk += w->fk / 2 > 1 ? w->fk / 2 : 1;
+                else if (iters >= ADH_FRONT_GROW + 3)
+                    w->fk = w->fk * 2 / 3 > 1 ? w->fk * 2 / 3 : 1;
+                /* at most 1/ADH_FRONT_REL of the contact radius a step:
+                 * the parabolas through three points must see the
+                 * extremes coming */
+                size_t kmax = w->fe[0] / ADH_FRONT_REL;
+                kmax = kmax < 1 ? 1 : kmax > ADH_FRONT_MAX ? ADH_FRONT_MAX : kmax;
+                if (w->fk > kmax)
+                    w->fk = kmax;
+                if (!w->done)
+                    front_extremum(w, kused, q - q0);
+            } else {
+                /* grow while Newton converges at once, shrink when it labours */
+                w->dq *= iters <= ADH_Q_GROW ? 1.5 : iters >= ADH_Q_GROW + 3 ? 0.7 : 1.0;
+                if (w->fwin && front_node(w) >= w->fwin)
+                    w->fwin = 0;
+                if (w->front_ok && !w->done && !w->fwin)
+                    front_start(w);
+            }
+            if (w->front && w->fe[0] + w->fk >= w->nf) {
+                /* the fine band ends: the grid check below says so */
+                w->fk = w->nf - 1 > w->fe[0] ? w->nf - 1 - w->fe[0] : 0;
+                if (w->fk == 0)
+                    w->front = 0;
+            }
             rc = w->done ? ADH_SUCCESS : ADH_CONTINUE;
             double a = adh_contact_radius(w->grid, w->st->h, z0);
             if (a >= 0.9 * w->grid->rmax || !adh_rings_resolves(w->grid, a))
@@ -1069,8 +1358,26 @@ int adh_static_iterate(adh_static *w)
                 rc = ADH_EGRID;
             break;
         }
+    failed:
         /* a failed step is usually a fold just ahead: cut hard */
         w->res.rejected++;
+        if (w->front && !fix) {
+            /* a shorter front step; from one ring, steps in Q across the
+             * next few rings (as around an extremum), then front steps
+             * again */
+            if (w->fk == 1) {
+                w->front = 0;
+                w->fwin = w->fe[0] + ADH_FRONT_WINDOW;
+                w->dq = w->dq > 0 ? w->dq : w->s.ds_init * w->qslope;
+            }
+            w->fk = w->fk / 2 > 1 ? w->fk / 2 : 1;
+            continue;
+        }
+        if (w->front) {
+            /* the landing failed from the front: steps of a ring in Q */
+            w->front = 0, w->front_ok = 0;
+            w->dq /= (double)w->fk;
+        }
         w->ds *= 0.25;
         w->dq *= 0.25;
         w->end_next = 0; /* nearer in Q first: the end from closer by */

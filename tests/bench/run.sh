@@ -15,7 +15,7 @@ echo
 echo
 "$BUILD/tests/bench-static"
 echo
-# the static curve on the automatic resolved grid at sigma = 15 and 22.5
+# the static curve on the automatic resolved grid at sigma = 15, 22.5 and 75
 "$BUILD/tests/bench-static_soft"
 echo
 # shellcheck disable=SC2086 # the sizes are words

@@ -41,7 +41,7 @@ static void check_and_choose(void)
        "Figure 4 relaxation: the automatic grid is the paper's (N = %zu)", gc.n);
     char why[1024];
     int bad = 0, refused = 0, graded = 0;
-    for (double sigma = 2.25; sigma <= 60; sigma *= 1.5) {
+    for (double sigma = 2.25; sigma <= 200; sigma *= 1.5) {
         adh_material s = at_sigma(sigma);
         for (int use = ADH_GRID_RELAX; use <= ADH_GRID_STATIC; use++) {
             rc = adh_grid_choose(&s, (adh_grid_use)use, -5e-9, 1, &gc, why, sizeof why);
@@ -73,7 +73,7 @@ static void check_and_choose(void)
         }
     }
     ok(bad == 0 && refused > 0 && graded > 0,
-       "sigma = 2.25 ... 60: the automatic grid is resolved, within the budget and passes the protocol and fine-band "
+       "sigma = 2.25 ... 200: the automatic grid is resolved, within the budget and passes the protocol and fine-band "
        "checks, or is refused naming sigma, the memory and what to do (%d not; %d graded, %d refused)", bad, graded, refused);
     /* the uniform grid stays where it resolves with at most the paper's N */
     adh_material mid = at_sigma(15);
@@ -93,10 +93,14 @@ static void check_and_choose(void)
            gc.dr <= 0.3 * adh_edge_zone(&mid) * (1 + 1e-9),
        "the static curve at sigma = 15 runs on a resolved graded grid of %zu rings (stepping over lattice folds)",
        gc.n);
-    adh_material st30 = at_sigma(30);
-    rc = adh_grid_choose(&st30, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why);
-    ok(rc == ADH_EGRID && strstr(why, "sigma = 30") && strstr(why, "--mode=relax"),
-       "the static curve at sigma = 30 is refused before it starts (%s)", why);
+    adh_material st75 = at_sigma(75);
+    rc = adh_grid_choose(&st75, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why);
+    ok(rc == ADH_SUCCESS && gc.graded && gc.hierarchical && gc.n <= ADH_GRID_STATIC_MAX_NODES,
+       "the static curve at sigma = 75 runs on a resolved graded grid of %zu rings", gc.n);
+    adh_material st120 = at_sigma(120);
+    rc = adh_grid_choose(&st120, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why);
+    ok(rc == ADH_EGRID && strstr(why, "sigma = 120") && strstr(why, "--mode=relax"),
+       "the static curve at sigma = 120 is refused before it starts (%s)", why);
     /* soft contacts as the H^2 operator allows: sigma = 75 runs resolved on
      * graded rings; a dense (uniform) grid there is beyond its budget */
     adh_material soft = at_sigma(75);

@@ -1,0 +1,402 @@
+#include "adhere/hodlr.h"
+
+#include <gsl/gsl_cblas.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* LAPACK (OpenBLAS's, as the program is linked). */
+extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
+extern void dgetri_(const int *n, double *a, const int *lda, const int *ipiv, double *work, const int *lwork,
+                    int *info);
+extern void dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a, const int *lda,
+                    const int *ipiv, double *b, const int *ldb, int *info);
+
+/* Matrices are column-major. A node covers cells lo .. lo+n-1; an inner
+ * node's children split them at lo + n0. */
+typedef struct node {
+    size_t lo, n, n0;
+    int c[2];            /* children, -1 at a leaf */
+    /* leaf: W's block, A's block's inverse (a GMRES solve is then one
+     * matrix-vector product, not two triangular solves of 64), scratch */
+    double *Wl, *Al, *lt;
+    int *piv;
+    /* inner: W[c0,c1] = U01 V01^T, W[c1,c0] = U10 V10^T */
+    size_t k01, k10;
+    double *U01, *V01, *U10, *V10;
+    /* factorization: Y0 = A_c0^-1 U01, Y1 = A_c1^-1 U10, the scaled
+     * Vt01 = alpha diag(d_c1) V01, Vt10 = alpha diag(d_c0) V10 (held as V,
+     * column-major: products with their transposes read contiguous
+     * columns), and the LU of the capacitance matrix
+     * S = [[I, Vt01^T Y1], [Vt10^T Y0, I]] */
+    double *Y0, *Y1, *Vt01, *Vt10, *S, *t;
+    int *spiv;
+    int sign;
+} node;
+
+struct adh_hodlr {
+    size_t n, leaf, nnodes, cap;
+    node *nodes;
+    adh_hodlr_entry_fn entry;
+    void *ctx;
+    double tol;
+    size_t max_rank;
+    size_t bytes_w, bytes_f;
+};
+
+static int lu(double *a, int n, int *piv, int *sign)
+{
+    int info = 0;
+    if (n == 0) {
+        *sign = 1;
+        return 0;
+    }
+    dgetrf_(&n, &n, a, &n, piv, &info);
+    if (info < 0)
+        return -1;
+    int s = 1;
+    for (int i = 0; i < n; i++) {
+        double d = a[i + (size_t)i * n];
+        if (d == 0 || !isfinite(d))
+            return 1;
+        if (piv[i] != i + 1)
+            s = -s;
+        if (d < 0)
+            s = -s;
+    }
+    *sign = s;
+    return 0;
+}
+
+/* Cross approximation with partial pivoting of W's block rows i0.., columns
+ * j0..: U (ni x k) V^T (nj x k), stopping when the last cross is below tol
+ * of the approximation's Frobenius norm. 0, or -1 out of memory. */
+static int aca(adh_hodlr *h, size_t i0, size_t ni, size_t j0, size_t nj, double **Uo, double **Vo, size_t *ko)
+{
+    size_t kmax = ni < nj ? ni : nj, cap = 16 < kmax ? 16 : kmax, k = 0;
+    double *U = malloc(cap * ni * sizeof *U), *V = malloc(cap * nj * sizeof *V);
+    double *row = malloc(nj * sizeof *row), *col = malloc(ni * sizeof *col);
+    char *used = calloc(ni, 1);
+    if (!U || !V || !row || !col || !used)
+        goto oom;
+    double norm2 = 0;
+    size_t i = ni / 2, zeros = 0;
+    while (k < kmax) {
+        used[i] = 1;
+        for (size_t j = 0; j < nj; j++)
+            row[j] = h->entry(h->ctx, i0 + i, j0 + j);
+        for (size_t l = 0; l < k; l++)
+            cblas_daxpy((int)nj, -U[i + l * ni], V + l * nj, 1, row, 1);
+        size_t js = (size_t)cblas_idamax((int)nj, row, 1);
+        double piv = row[js];
+        if (!(fabs(piv) > 1e-300 * (1 + sqrt(norm2)))) {
+            /* a row already matched: try another unused one */
+            size_t r = 0;
+            while (r < ni && used[r])
+                r++;
+            if (r == ni || ++zeros > 3)
+                break;
+            i = r;
+            continue;
+        }
+        for (size_t r = 0; r < ni; r++)
+            col[r] = h->entry(h->ctx, i0 + r, j0 + js);
+        for (size_t l = 0; l < k; l++)
+            cblas_daxpy((int)ni, -V[js + l * nj], U + l * ni, 1, col, 1);
+        if (k == cap) {
+            cap = 2 * cap < kmax ? 2 * cap : kmax;
+            double *nu = realloc(U, cap * ni * sizeof *U);
+            if (!nu)
+                goto oom;
+            U = nu;
+            double *nv = realloc(V, cap * nj * sizeof *V);
+            if (!nv)
+                goto oom;
+            V = nv;
+        }
+        double *u = U + k * ni, *v = V + k * nj;
+        memcpy(u, col, ni * sizeof *u);
+        for (size_t j = 0; j < nj; j++)
+            v[j] = row[j] / piv;
+        double uu = cblas_ddot((int)ni, u, 1, u, 1), vv = cblas_ddot((int)nj, v, 1, v, 1), cross = 0;
+        for (size_t l = 0; l < k; l++)
+            cross += cblas_ddot((int)ni, U + l * ni, 1, u, 1) * cblas_ddot((int)nj, V + l * nj, 1, v, 1);
+        norm2 += uu * vv + 2 * cross;
+        k++;
+        if (uu * vv <= h->tol * h->tol * norm2)
+            break;
+        /* the next row: the largest of the new column among the unused */
+        double best = -1;
+        size_t bi = ni;
+        for (size_t r = 0; r < ni; r++)
+            if (!used[r] && fabs(u[r]) > best)
+                best = fabs(u[r]), bi = r;
+        if (bi == ni)
+            break;
+        i = bi;
+    }
+    free(row), free(col), free(used);
+    *Uo = U, *Vo = V, *ko = k;
+    h->bytes_w += k * (ni + nj) * sizeof *U;
+    if (k > h->max_rank)
+        h->max_rank = k;
+    return 0;
+oom:
+    free(U), free(V), free(row), free(col), free(used);
+    return -1;
+}
+
+static int build(adh_hodlr *h, size_t lo, size_t n)
+{
+    if (h->nnodes == h->cap) {
+        size_t cap = h->cap ? 2 * h->cap : 64;
+        node *nn = realloc(h->nodes, cap * sizeof *nn);
+        if (!nn)
+            return -1;
+        h->nodes = nn, h->cap = cap;
+    }
+    int id = (int)h->nnodes++;
+    node *b = &h->nodes[id];
+    memset(b, 0, sizeof *b);
+    b->lo = lo, b->n = n, b->c[0] = b->c[1] = -1;
+    if (n <= h->leaf) {
+        double *Wl = malloc(n * n * sizeof *Wl), *Al = malloc(n * n * sizeof *Al);
+        double *lt = malloc(64 * n * sizeof *lt);
+        int *piv = malloc(n * sizeof *piv);
+        b = &h->nodes[id];
+        b->Wl = Wl, b->Al = Al, b->piv = piv, b->lt = lt;
+        if (!Wl || !Al || !piv || !lt)
+            return -1;
+        for (size_t j = 0; j < n; j++)
+            for (size_t i = 0; i < n; i++)
+                Wl[i + j * n] = h->entry(h->ctx, lo + i, lo + j);
+        h->bytes_w += n * n * sizeof *Wl;
+        h->bytes_f += n * n * sizeof *Al;
+        return id;
+    }
+    size_t n0 = n / 2, n1 = n - n0;
+    double *U01, *V01, *U10, *V10;
+    size_t k01, k10;
+    if (aca(h, lo, n0, lo + n0, n1, &U01, &V01, &k01) < 0)
+        return -1;
+    if (aca(h, lo + n0, n1, lo, n0, &U10, &V10, &k10) < 0) {
+        free(U01), free(V01);
+        return -1;
+    }
+    size_t K = k01 + k10;
+    b = &h->nodes[id];
+    b->n0 = n0, b->k01 = k01, b->k10 = k10;
+    b->U01 = U01, b->V01 = V01, b->U10 = U10, b->V10 = V10;
+    b->Y0 = malloc((k01 * n0 + k10 * n1) * sizeof(double));
+    b->Vt01 = malloc((k01 * n1 + k10 * n0) * sizeof(double));
+    b->S = malloc((K * K + K) * sizeof(double));
+    b->spiv = malloc((K + 1) * sizeof(int));
+    if (!b->Y0 || !b->Vt01 || !b->S || !b->spiv)
+        return -1;
+    b->Y1 = b->Y0 + k01 * n0;
+    b->Vt10 = b->Vt01 + k01 * n1;
+    b->t = b->S + K * K;
+    h->bytes_f += (2 * (k01 * n0 + k10 * n1) + K * K + K) * sizeof(double);
+    int c0 = build(h, lo, n0);
+    if (c0 < 0)
+        return -1;
+    int c1 = build(h, lo + n0, n1);
+    if (c1 < 0)
+        return -1;
+    h->nodes[id].c[0] = c0, h->nodes[id].c[1] = c1;
+    return id;
+}
+
+void adh_hodlr_free(adh_hodlr *h)
+{
+    if (!h)
+        return;
+    for (size_t i = 0; i < h->nnodes; i++) {
+        node *b = &h->nodes[i];
+        free(b->Wl), free(b->Al), free(b->piv), free(b->lt);
+        free(b->U01), free(b->V01), free(b->U10), free(b->V10);
+        free(b->Y0), free(b->Vt01), free(b->S), free(b->spiv);
+    }
+    free(h->nodes);
+    free(h);
+}
+
+adh_hodlr *adh_hodlr_alloc(size_t n, adh_hodlr_entry_fn entry, void *ctx, double tol, size_t leaf)
+{
+    if (n == 0 || !entry || !(tol > 0 && tol < 1) || leaf < 2)
+        return NULL;
+    adh_hodlr *h = calloc(1, sizeof *h);
+    if (!h)
+        return NULL;
+    h->n = n, h->leaf = leaf, h->entry = entry, h->ctx = ctx, h->tol = tol;
+    if (build(h, 0, n) < 0) {
+        adh_hodlr_free(h);
+        return NULL;
+    }
+    return h;
+}
+
+/* Solves A_b X = B in place for node b (B: b->n rows of nrhs columns,
+ * leading dimension ldb) with its factorization. */
+static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
+{
+    node *b = &h->nodes[id];
+    if (b->c[0] < 0) {
+        size_t n = b->n;
+        if (nrhs == 1) {
+            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n, (int)n, 1.0, b->Al, (int)n, B, 1, 0.0, b->lt, 1);
+            memcpy(B, b->lt, n * sizeof *B);
+            return;
+        }
+        double *T = malloc(n * nrhs * sizeof *T);
+        if (!T)
+            return;
+        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n, (int)nrhs, (int)n, 1.0, b->Al, (int)n, B,
+                    (int)ldb, 0.0, T, (int)n);
+        for (size_t c = 0; c < nrhs; c++)
+            memcpy(B + c * ldb, T + c * n, n * sizeof *B);
+        free(T);
+        return;
+    }
+    size_t n0 = b->n0, n1 = b->n - n0, K = b->k01 + b->k10;
+    solve_node(h, b->c[0], B, ldb, nrhs);
+    solve_node(h, b->c[1], B + n0, ldb, nrhs);
+    if (K == 0)
+        return;
+    int kk = (int)K, nr = (int)nrhs, info;
+    if (nrhs == 1) {
+        /* one column (GMRES): matrix-vector products, not dgemm's blocking */
+        double *t = b->t;
+        if (b->k01)
+            cblas_dgemv(CblasColMajor, CblasTrans, (int)n1, (int)b->k01, 1.0, b->Vt01, (int)n1, B + n0, 1, 0.0, t,
+                        1);
+        if (b->k10)
+            cblas_dgemv(CblasColMajor, CblasTrans, (int)n0, (int)b->k10, 1.0, b->Vt10, (int)n0, B, 1, 0.0,
+                        t + b->k01, 1);
+        dgetrs_("N", &kk, &nr, b->S, &kk, b->spiv, t, &kk, &info);
+        if (b->k01)
+            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n0, (int)b->k01, -1.0, b->Y0, (int)n0, t, 1, 1.0, B, 1);
+        if (b->k10)
+            cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n1, (int)b->k10, -1.0, b->Y1, (int)n1, t + b->k01, 1, 1.0,
+                        B + n0, 1);
+        return;
+    }
+    double *T = malloc(K * nrhs * sizeof *T);
+    if (!T)
+        return; /* only a multi-column solve allocates: factorize's */
+    if (b->k01)
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)b->k01, (int)nrhs, (int)n1, 1.0, b->Vt01,
+                    (int)n1, B + n0, (int)ldb, 0.0, T, (int)K);
+    if (b->k10)
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)b->k10, (int)nrhs, (int)n0, 1.0, b->Vt10,
+                    (int)n0, B, (int)ldb, 0.0, T + b->k01, (int)K);
+    dgetrs_("N", &kk, &nr, b->S, &kk, b->spiv, T, &kk, &info);
+    if (b->k01)
+        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n0, (int)nrhs, (int)b->k01, -1.0, b->Y0,
+                    (int)n0, T, (int)K, 1.0, B, (int)ldb);
+    if (b->k10)
+        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n1, (int)nrhs, (int)b->k10, -1.0, b->Y1,
+                    (int)n1, T + b->k01, (int)K, 1.0, B + n0, (int)ldb);
+    free(T);
+}
+
+static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
+{
+    node *b = &h->nodes[id];
+    if (b->c[0] < 0) {
+        size_t n = b->n;
+        for (size_t j = 0; j < n; j++) {
+            double s = alpha * d[b->lo + j];
+            for (size_t i = 0; i < n; i++)
+                b->Al[i + j * n] = s * b->Wl[i + j * n];
+            b->Al[j + j * n] += 1.0;
+        }
+        int rc = lu(b->Al, (int)n, b->piv, &b->sign), nn = (int)n, lw = 64 * (int)n, info = 0;
+        if (rc == 0)
+            dgetri_(&nn, b->Al, &nn, b->piv, b->lt, &lw, &info);
+        return rc != 0 ? rc : info != 0 ? 1 : 0;
+    }
+    int rc = factor_node(h, b->c[0], alpha, d);
+    if (rc == 0)
+        rc = factor_node(h, b->c[1], alpha, d);
+    if (rc != 0)
+        return rc;
+    b = &h->nodes[id];
+    size_t n0 = b->n0, n1 = b->n - n0, k01 = b->k01, k10 = b->k10, K = k01 + k10;
+    const double *d0 = d + b->lo, *d1 = d0 + n0;
+    for (size_t l = 0; l < k01; l++)
+        for (size_t j = 0; j < n1; j++)
+            b->Vt01[j + l * n1] = alpha * b->V01[j + l * n1] * d1[j];
+    for (size_t l = 0; l < k10; l++)
+        for (size_t j = 0; j < n0; j++)
+            b->Vt10[j + l * n0] = alpha * b->V10[j + l * n0] * d0[j];
+    if (k01) {
+        memcpy(b->Y0, b->U01, k01 * n0 * sizeof *b->Y0);
+        solve_node(h, b->c[0], b->Y0, n0, k01);
+    }
+    if (k10) {
+        memcpy(b->Y1, b->U10, k10 * n1 * sizeof *b->Y1);
+        solve_node(h, b->c[1], b->Y1, n1, k10);
+    }
+    double *S = b->S;
+    memset(S, 0, K * K * sizeof *S);
+    for (size_t i = 0; i < K; i++)
+        S[i + i * K] = 1.0;
+    if (k01 && k10) {
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)k01, (int)k10, (int)n1, 1.0, b->Vt01, (int)n1,
+                    b->Y1, (int)n1, 0.0, S + k01 * K, (int)K);
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)k10, (int)k01, (int)n0, 1.0, b->Vt10, (int)n0,
+                    b->Y0, (int)n0, 0.0, S + k01, (int)K);
+    }
+    int s = 1;
+    rc = lu(S, (int)K, b->spiv, &s);
+    b->sign = s * h->nodes[b->c[0]].sign * h->nodes[b->c[1]].sign;
+    return rc;
+}
+
+int adh_hodlr_factorize(adh_hodlr *h, double alpha, const double *d)
+{
+    return factor_node(h, 0, alpha, d);
+}
+
+void adh_hodlr_solve(adh_hodlr *h, double *b)
+{
+    solve_node(h, 0, b, h->n, 1);
+}
+
+int adh_hodlr_det_sign(const adh_hodlr *h)
+{
+    return h->nodes[0].sign;
+}
+
+static void apply_node(const adh_hodlr *h, int id, const double *v, double *y)
+{
+    const node *b = &h->nodes[id];
+    if (b->c[0] < 0) {
+        cblas_dgemv(CblasColMajor, CblasNoTrans, (int)b->n, (int)b->n, 1.0, b->Wl, (int)b->n, v, 1, 1.0, y, 1);
+        return;
+    }
+    size_t n0 = b->n0, n1 = b->n - n0;
+    apply_node(h, b->c[0], v, y);
+    apply_node(h, b->c[1], v + n0, y + n0);
+    for (size_t l = 0; l < b->k01; l++)
+        cblas_daxpy((int)n0, cblas_ddot((int)n1, b->V01 + l * n1, 1, v + n0, 1), b->U01 + l * n0, 1, y, 1);
+    for (size_t l = 0; l < b->k10; l++)
+        cblas_daxpy((int)n1, cblas_ddot((int)n0, b->V10 + l * n0, 1, v, 1), b->U10 + l * n1, 1, y + n0, 1);
+}
+
+void adh_hodlr_apply(const adh_hodlr *h, const double *v, double *y)
+{
+    memset(y, 0, h->n * sizeof *y);
+    apply_node(h, 0, v, y);
+}
+
+size_t adh_hodlr_bytes(const adh_hodlr *h)
+{
+    return h->bytes_w + h->bytes_f + h->cap * sizeof *h->nodes;
+}
+
+size_t adh_hodlr_max_rank(const adh_hodlr *h)
+{
+    return h->max_rank;
+}
