@@ -36,7 +36,9 @@ size_t adh_cycle_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, si
 /* The area between loading (path 0) and the unloading branch path: the
  * force gap, the loading force linearly interpolated at each unloading
  * position, integrated by the trapezoid rule over the positions both
- * branches cover. 0 when they share fewer than two positions. */
+ * branches cover; past the loading branch's start (unloading goes on
+ * there while the surfaces touch) the loading force is the rigid
+ * spheres', F_rigid. 0 when they share fewer than two positions. */
 double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path);
 
 #endif

@@ -23,12 +23,22 @@ static double loading_force(const adh_obs *rows, size_t n, double h0)
 
 double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path)
 {
-    double area = 0, prev_h = NAN, prev_gap = NAN;
+    double area = 0, prev_h = NAN, prev_gap = NAN, top = -INFINITY;
+    for (size_t i = 0; i < n; i++)
+        if (rows[i].path == 0)
+            top = fmax(top, rows[i].h0);
     for (size_t i = 0; i < n; i++) {
         const adh_obs *u = &rows[i];
         if (u->path != path || path <= 0)
             continue;
-        double gap = loading_force(rows, n, u->h0) - u->F;
+        double Fl = loading_force(rows, n, u->h0);
+        /* Unloading goes on past the start while the surfaces touch: the
+         * approach was never solved out there, but it began where the
+         * force is negligible and the deformation below 1 % of z0, so its
+         * force is the rigid spheres' (eq 22) */
+        if (isnan(Fl) && u->h0 > top)
+            Fl = u->F_rigid;
+        double gap = Fl - u->F;
         if (!isnan(gap) && !isnan(prev_gap))
             area += 0.5 * (gap + prev_gap) * fabs(u->h0 - prev_h);
         prev_gap = gap;

@@ -151,6 +151,33 @@ int main(void)
         adh_grid_free(gs);
     }
 
+    /* a start inside the neck's reach: unloading goes on past it to the
+     * jump-out, and the cycle measures what it measures from the automatic
+     * start (the loading force out there is the rigid spheres') */
+    {
+        adh_relax_settings re = rs;
+        re.cancel = NULL;
+        adh_protocol_settings pa = adh_protocol_settings_default(), pb;
+        pa.step = 0.25e-9;
+        pa.turns[0] = -1e-9;
+        pb = pa;
+        pb.start = 3e-9;
+        adh_run ra, rb;
+        adh_run_init(&ra);
+        adh_run_init(&rb);
+        int ca = adh_protocol_run(g, k, &m, &re, &pa, NULL, NULL, &ra);
+        int cb = adh_protocol_run(g, k, &m, &re, &pb, NULL, NULL, &rb);
+        ok(ca == ADH_SUCCESS && cb == ADH_SUCCESS && rb.nturns == 1 && rb.turns[0].jump_out_h0 > 3e-9 &&
+           fabs(rb.turns[0].jump_out_h0 - ra.turns[0].jump_out_h0) <= pa.step * 1.001,
+           "from a start at 3 nm the unloading goes past it to the jump-out (%g against %g m)",
+           rb.turns[0].jump_out_h0, ra.turns[0].jump_out_h0);
+        double ha = adh_cycle_hysteresis(ra.rows, ra.nrows, 1), hb = adh_cycle_hysteresis(rb.rows, rb.nrows, 1);
+        ok(ha > 0 && fabs(hb - ha) <= 0.02 * ha, "and its hysteresis is the automatic start's within 2 %% (%g against %g J)",
+           hb, ha);
+        adh_run_free(&ra);
+        adh_run_free(&rb);
+    }
+
     /* a step the drive cannot take */
     ps.step = 0;
     ok(adh_drive_set(d, &m, &rs, &ps, &cut) == ADH_EINVAL, "a step of 0 is refused");
