@@ -54,9 +54,10 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
             char pr[64];
             ctx->last_draw = t;
             cli_progress_text(run->nrows, ctx->total, t - ctx->t0, pr, sizeof pr);
-            if (ctx->total && run->nrows > ctx->total)   /* unloading on past the start, still in contact */
-                fprintf(stderr, "\r  unloading step %zu, past the start, still in contact  h0 %+8.3f nm  F %+10.4g uN ",
-                        run->nrows, o->h0 * 1e9, o->F * 1e6);
+            if (ctx->total && o->branch < 0 && o->h0 > run->start + 1e-6 * ctx->cfg->proto.step)
+                /* unloading on past the start, still in contact: the plan's total does not count it */
+                fprintf(stderr, "\r  unloading step %zu, past the start%s  h0 %+8.3f nm  F %+10.4g uN ", run->nrows,
+                        o->a > 0 ? ", still in contact" : "", o->h0 * 1e9, o->F * 1e6);
             else if (ctx->total)
                 fprintf(stderr, "\r  %s step %zu of <=%zu  %-26s h0 %+8.3f nm  F %+10.4g uN ",
                         o->branch > 0 ? "loading  " : "unloading", run->nrows, ctx->total, pr, o->h0 * 1e9, o->F * 1e6);

@@ -123,8 +123,9 @@ static void plan_profiles(const adh_config *cfg, adh_plan *p)
         if (x <= r0->start + 1e-6 * step && (p->stop_at_contact ? x >= r0->end : x >= r0->end - 1e-6 * step) &&
             on_drive(x, r0->start, -1, step))
             hits++;
+        /* unloading may go past the start, while the surfaces touch, up to the reach */
         for (size_t t = 0; p->unloading_branches && t < cfg->proto.nturns; t++)
-            if (on_drive(x, cfg->proto.turns[t], +1, step) && x <= r0->start + 1e-6 * step)
+            if (on_drive(x, cfg->proto.turns[t], +1, step) && x <= adh_protocol_reach(&cfg->mat) + 1e-6 * step)
                 hits++;
         p->profiles_stored += hits;
         p->profiles_reached += hits > 0;
@@ -133,7 +134,7 @@ static void plan_profiles(const adh_config *cfg, adh_plan *p)
             fmt_len(x, b, sizeof b);
             char what[80];   /* "profile at " and b: never cut */
             snprintf(what, sizeof what, "profile at %s", b);
-            note(p->skipped, &p->nskipped, what, "no branch steps there (drive positions are start - k d on loading, turn + k d on unloading)%s",
+            note(p->skipped, &p->nskipped, what, "no branch steps there (drive positions are start - k d on loading, turn + k d on unloading, up to the model's reach 0.02 R)%s",
                  p->stop_at_contact ? " or it lies past the jump into contact" : "");
         }
     }

@@ -87,11 +87,12 @@ check "jump-out within a step (0.05 nm) and pull-off within 0.1 % of the automat
     FNR==1 {f++} $1=="jump_out_h0" {j[f]=$2} $1=="pulloff_F" {p[f]=$2}
     END {d=j[1]-j[2]; if (d<0) d=-d; r=(p[1]-p[2])/p[2]; if (r<0) r=-r; exit !(j[1]>0 && d<=0.05e-9+1e-15 && r<1e-3)}' "$TMP/past/summary.tsv" "$TMP/auto/summary.tsv"
 # It stops at the model's reach (0.02 R; h0 must stay << R): a small, soft
-# sphere (R = 500 nm, sigma = 17) still in contact there never separated:
+# sphere (R = 500 nm, sigma = 17), started at 5 nm, still in contact at 10 nm
+# never separated:
 # complete 0, said on stderr and in summary.tsv.
-"$ADHERE" --batch -q --no-plot -R 500nm -E 0.03GPa -N 100 --force --eps=3pm --start=10nm --turn=-1nm -o "$TMP/stuck" >/dev/null 2>"$TMP/stderr"
+"$ADHERE" --batch -q --no-plot -R 500nm -E 0.03GPa -N 100 --force --eps=3pm --start=5nm --turn=-1nm -o "$TMP/stuck" >/dev/null 2>"$TMP/stderr"
 rc=$?
 check "a run that never separates still exits 0 ($rc) and says why on stderr" sh -c "[ $rc -eq 0 ] && grep -q 'incomplete: the surfaces never separated' '$TMP/stderr'"
 check "its summary.tsv says complete 0, status not separated, and why" sh -c "grep -qx 'complete	0' '$TMP/stuck/summary.tsv' && grep -qx 'status	not separated' '$TMP/stuck/summary.tsv' && grep -q '^# INCOMPLETE: the surfaces never separated' '$TMP/stuck/summary.tsv'"
-check "it unloaded to the reach, 10 nm, and no further" awk -F'\t' '!/^#/ && $1!="h0" && $8==-1 {m=$1} END {exit !(m>9.99e-9 && m<10.01e-9)}' "$TMP/stuck/force.tsv"
+check "it unloaded past its start (5 nm) to the reach, 10 nm, and no further" awk -F'\t' '!/^#/ && $1!="h0" && $8==-1 {m=$1} END {exit !(m>9.99e-9 && m<10.01e-9)}' "$TMP/stuck/force.tsv"
 done_testing
