@@ -682,8 +682,9 @@ static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whyle
         np.grid.graded = b->grid_chosen ? b->asked.graded : b->graded;
         np.grid.kernel = b->grid_chosen ? b->asked.kernel : b->kernel;
         np.grid.storage = b->grid_chosen ? b->asked.storage : b->storage;
-        if (s->grid.graded && !np.grid.graded && p == P_N)
-            np.spacing = NAN;   /* N uniform nodes at the scaled spacing, not N rings' fine width */
+        if (p == P_N && (s->grid_auto || (s->grid.graded && !np.grid.graded)))
+            np.spacing = NAN;   /* N uniform nodes at the scaled spacing, as -N alone gives: not the
+                                   automatic grid's spacing, nor N rings' fine width */
         choice[0] = '\0';
     } else if (p <= P_R || p == P_TURN) {
         /* the grid follows the material and the deepest turn, as --batch's would */
@@ -1053,9 +1054,12 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
     int hrc = dir != 0 ? adh_drive_hand(s->drv, dir) : ADH_SUCCESS;
     if (hrc != ADH_SUCCESS) {
         double h0 = adh_drive_hand_position(s->drv, dir);
-        if (hrc == ADH_EGRID)
-            snprintf(why, whylen, "the contact has reached the grid's edge: approaching further would only widen it past "
-                     "the grid; b retracts (a wider grid: more nodes, or, on an automatic grid, a deeper turn)");
+        if (hrc == ADH_EGRID) {
+            /* the edge or the graded grid's fine band: the drive's own sentence says which */
+            char edge[400];
+            adh_rings_edge_sentence(s->g, adh_drive_row(s->drv)->a, edge, sizeof edge);
+            snprintf(why, whylen, "no approach from here: %s; b retracts", edge);
+        }
         else if (fabs(h0) > adh_protocol_reach(&s->mat))
             snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/50 = %g m",
                      h0, adh_protocol_reach(&s->mat));
@@ -1279,4 +1283,14 @@ size_t tui_sim_progress(const tui_sim *s, double *change)
     }
     *change = 0;
     return s->drv ? adh_drive_progress(s->drv, change) : 0;
+}
+
+int tui_sim_will_build(const tui_sim *s)
+{
+    if (s->mode == ADH_MODE_STATIC) {
+        tui_params_set p = params_get(s);
+        adh_grid_asked g = mode_grid(s, &p, ADH_MODE_STATIC);
+        return !s->sdrv || !same_grid(&s->sbuilt, &g);
+    }
+    return !s->g || s->grid_stale;
 }

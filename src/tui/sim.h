@@ -249,5 +249,8 @@ double tui_sim_target(const tui_sim *s);
 /* Iterations so far of the step in progress, and its convergence measure. */
 size_t tui_sim_progress(const tui_sim *s, double *change);
 double tui_sim_spacing(const tui_sim *s);
+/* Whether the next step of the mode on screen first builds its grid and
+ * kernel (the first step, or the grid changed): a moment at large N. */
+int tui_sim_will_build(const tui_sim *s);
 
 #endif

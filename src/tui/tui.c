@@ -175,7 +175,7 @@ static void stop_all(tui *t)
 static void start_step(tui *t, int dir)
 {
     char why[512];
-    if ((!t->sim.g || t->sim.grid_stale) && !t->headless) {
+    if (tui_sim_will_build(&t->sim) && !t->headless) {
         /* The kernel is built on the first step; at large N that takes a
          * moment, so say so before the screen goes quiet. */
         say(t, 0, "building the kernel for N = %zu nodes...", t->sim.nodes);

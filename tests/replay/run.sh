@@ -246,6 +246,13 @@ check "u after an N edit and two steps: back on the N = 100 path, its numbers ex
     sh -c "grep -q '^undid the edit: N = 100 again, with its path (6 states)' '$EG/edit-grid-back.txt' && [ \"\$(sed -n '3,8p' '$EG/edit-grid-back.txt' | cut -c46-)\" = \"\$(sed -n '3,8p' '$EG/edit-grid-5.txt' | cut -c46-)\" ]"
 check "and a step goes on from it on the rebuilt grid" grep -q "path   7 states" "$EG/edit-grid.screen"
 
+# A contact past the graded grid's fine band: f is refused with the drive's
+# reason, b still steps out.
+ES=$W/edgestop
+check "f at the fine band's limit is refused with the reason, no step taken" \
+    sh -c "grep -q '^error: no approach from here: the contact radius .* left the graded grid.s fine band' '$ES/edgestop-refused.txt' && grep -q ' h0     -9.5 nm ' '$ES/edgestop-refused.txt'"
+check "b from there retracts by d (to -9 nm)" grep -q " h0     -9 nm " "$ES/edgestop.screen"
+
 # Each mode on its own automatic grid, as --batch --mode chooses it.
 MG=$W/modegrid
 plan_nodes() { "$bin" --plan "$@" | sed -n 's/^kernel: .*N = \([0-9]*\),.*/\1/p; s/^kernel: .* grid of \([0-9]*\) .*/\1/p'; }
