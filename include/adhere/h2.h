@@ -39,6 +39,8 @@ typedef struct adh_h2_settings {
     int order;   /* Chebyshev nodes per cluster */
     double eta;  /* admissible: larger diameter <= eta x distance */
     int leaf;    /* largest cluster kept as a leaf */
+    int portable; /* the product's portable copy even where an AVX2 one
+                     runs (the same numbers; for tests and timing) */
 } adh_h2_settings;
 
 adh_h2_settings adh_h2_settings_default(void);

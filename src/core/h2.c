@@ -5,6 +5,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* An AVX2 copy of the product where GCC or clang builds for x86-64. AVX2
+ * has no fused multiply-add (that is FMA's), so neither copy rounds
+ * a * b + c once, and the copies agree to the last bit. */
+#if defined(__GNUC__) && defined(__x86_64__)
+#define H2_AVX2 1
+#else
+#define H2_AVX2 0
+#endif
+
 typedef struct h2_cluster {
     size_t i0, n;        /* cells i0 .. i0 + n - 1 */
     double lo, hi;       /* their interval */
@@ -23,20 +32,23 @@ typedef struct h2_near {
 struct adh_h2 {
     size_t n;
     size_t p;            /* Chebyshev nodes per cluster */
+    size_t P;            /* p rounded up to whole vectors: the stride of every
+                            per-cluster row, zero past p */
     size_t ncl;
     h2_cluster *cl;      /* pre-order: a parent before its children */
     double *node;        /* ncl x p Chebyshev nodes (assembly only) */
-    double *U;           /* n x p: L_a(x_i), the basis of cell i's leaf */
-    double *S;           /* per leaf x, p x n_x at row i0_x: column i's quadrature of L_b */
-    double *T;           /* ncl x p x p: T_c[b][b'] = L^parent_b'(node_c[b]) */
+    double *U;           /* n x P: L_a(x_i), the basis of cell i's leaf */
+    double *S;           /* n x P: row i is column i's quadrature of its leaf's L_b */
+    double *T;           /* ncl x P x P: T_c[b][b'] = L^parent_b'(node_c[b]) */
     size_t nfar;
     size_t (*far)[2];    /* cluster pairs (x before y), both directions */
-    double *K;           /* nfar x p x p: k(node_x[a], node_y[b]) */
+    double *K;           /* nfar x P x P: k(node_x[a], node_y[b]) */
     size_t nnear;
     h2_near *near;
     double *B;           /* the near field's exact entries */
     size_t nB;
-    double *work;        /* 2 ncl p: moments and local expansions */
+    double *work;        /* 2 ncl P: moments and local expansions */
+    int avx2;            /* the product's AVX2 copy runs here */
     pthread_mutex_t lock;
 };
 
@@ -92,7 +104,24 @@ static size_t build_tree(h2_build *b, size_t i0, size_t n, size_t parent)
     size_t id = h->ncl++;
     h->cl[id] = (h2_cluster){ .i0 = i0, .n = n, .lo = b->pb->edge[i0], .hi = b->pb->edge[i0 + n], .parent = parent };
     if (n > (size_t)b->s->leaf) {
-        size_t m = n / 2;
+        /* split at the edge nearest the middle of the interval: on a
+         * uniform grid that halves the count; where rings grow it keeps a
+         * cluster's width below its distance from the clusters left of it
+         * (halving the count leaves a wide ring far out in a leaf whose
+         * width exceeds its distance from all of them: no far block) */
+        const double *e = b->pb->edge;
+        double mid = 0.5 * (e[i0] + e[i0 + n]);
+        size_t lo = i0 + 1, hi = i0 + n - 1;
+        while (lo < hi) {
+            size_t c = lo + (hi - lo) / 2;
+            if (e[c] < mid)
+                lo = c + 1;
+            else
+                hi = c;
+        }
+        if (lo > i0 + 1 && mid - e[lo - 1] < e[lo] - mid)
+            lo--;
+        size_t m = lo - i0;
         size_t c0 = build_tree(b, i0, m, id);
         size_t c1 = build_tree(b, i0 + m, n - m, id);
         h->cl[id].child[0] = c0;
@@ -119,17 +148,18 @@ static int grow(void **a, size_t *cap, size_t need, size_t size)
 static void add_far(h2_build *b, size_t x, size_t y)
 {
     adh_h2 *h = b->h;
-    size_t p = h->p;
+    size_t p = h->p, P = h->P;
     if (grow((void **)&h->far, &b->cap_far, h->nfar + 1, sizeof *h->far) ||
-        grow((void **)&h->K, &b->cap_K, h->nfar + 1, p * p * sizeof *h->K)) {
+        grow((void **)&h->K, &b->cap_K, h->nfar + 1, P * P * sizeof *h->K)) {
         b->fail = 1;
         return;
     }
-    double *K = h->K + h->nfar * p * p;
+    double *K = h->K + h->nfar * P * P;
+    memset(K, 0, P * P * sizeof *K);
     const double *nx = h->node + x * p, *ny = h->node + y * p;
     for (size_t a = 0; a < p; a++)
         for (size_t c = 0; c < p; c++)
-            K[a * p + c] = b->pb->kernel(b->pb->ctx, nx[a], ny[c]);
+            K[a * P + c] = b->pb->kernel(b->pb->ctx, nx[a], ny[c]);
     h->far[h->nfar][0] = x;
     h->far[h->nfar][1] = y;
     h->nfar++;
@@ -250,6 +280,11 @@ adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s)
         return NULL;
     h->n = n;
     h->p = p;
+    h->P = (p + 3) / 4 * 4;
+#if H2_AVX2
+    h->avx2 = !s->portable && __builtin_cpu_supports("avx2");
+#endif
+    size_t P = h->P;
     h2_build b = { .h = h, .pb = pb, .s = s };
     h->cl = calloc(2 * n, sizeof *h->cl);
     double *lp = malloc(p * sizeof *lp);
@@ -261,10 +296,10 @@ adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s)
         h->cl = cl;
     size_t ncl = h->ncl;
     h->node = malloc(ncl * p * sizeof *h->node);
-    h->T = calloc(ncl * p * p, sizeof *h->T);
-    h->U = malloc(n * p * sizeof *h->U);
-    h->S = calloc(n * p, sizeof *h->S);
-    h->work = malloc(2 * ncl * p * sizeof *h->work);
+    h->T = calloc(ncl * P * P, sizeof *h->T);
+    h->U = calloc(n * P, sizeof *h->U);
+    h->S = calloc(n * P, sizeof *h->S);
+    h->work = malloc(2 * ncl * P * sizeof *h->work);
     if (!h->node || !h->T || !h->U || !h->S || !h->work)
         goto fail;
     for (size_t c = 0; c < ncl; c++)
@@ -273,19 +308,18 @@ adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s)
      * child: interpolating them there is exact, so the bases nest. */
     for (size_t c = 1; c < ncl; c++)
         for (size_t k = 0; k < p; k++)
-            lagrange(h->node + h->cl[c].parent * p, p, h->node[c * p + k], h->T + (c * p + k) * p);
+            lagrange(h->node + h->cl[c].parent * p, p, h->node[c * p + k], h->T + (c * P + k) * P);
     for (size_t c = 0; c < ncl; c++) {
         const h2_cluster *X = &h->cl[c];
         if (X->child[0] != 0)
             continue;
         const double *nd = h->node + c * p;
-        double *S = h->S + X->i0 * p;
         for (size_t i = X->i0; i < X->i0 + X->n; i++) {
-            lagrange(nd, p, pb->x[i], h->U + i * p);
+            lagrange(nd, p, pb->x[i], h->U + i * P);
             for (size_t q = 0; q < pb->nq; q++) {
                 lagrange(nd, p, pb->qt[i * pb->nq + q], lp);
                 for (size_t k = 0; k < p; k++)
-                    S[k * X->n + i - X->i0] += pb->qw[i * pb->nq + q] * lp[k];
+                    h->S[i * P + k] += pb->qw[i * pb->nq + q] * lp[k];
             }
         }
     }
@@ -296,7 +330,7 @@ adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s)
     h->node = NULL;
     /* the couplings grew by doubling: hand the slack back */
     if (h->nfar > 0) {
-        double *K = realloc(h->K, h->nfar * p * p * sizeof *h->K);
+        double *K = realloc(h->K, h->nfar * P * P * sizeof *h->K);
         size_t(*far)[2] = realloc(h->far, h->nfar * sizeof *h->far);
         if (K)
             h->K = K;
@@ -325,91 +359,87 @@ void adh_h2_free(adh_h2 *h)
     free(h);
 }
 
-/* Four partial sums: the product's short dot products are otherwise bound
- * by the latency of one chain of additions, not by memory. */
-static inline double dot(const double *a, const double *b, size_t n)
+/* The product, in 4-lane vectors of doubles (GCC's vector extension),
+ * built twice: as pairs of SSE2 halves for any x86-64, and whole for AVX2,
+ * chosen by the CPU at assembly (h->avx2). Elsewhere, the portable copy
+ * alone. */
+typedef double h2_v2 __attribute__((vector_size(2 * sizeof(double)), aligned(sizeof(double)), may_alias));
+typedef double h2_v4 __attribute__((vector_size(4 * sizeof(double)), aligned(sizeof(double)), may_alias));
+typedef struct h2_pair {
+    h2_v2 lo, hi;
+} h2_pair;
+
+static inline h2_pair pair_load(const double *a)
 {
-    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-    size_t i = 0;
-    for (; i + 4 <= n; i += 4) {
-        s0 += a[i] * b[i];
-        s1 += a[i + 1] * b[i + 1];
-        s2 += a[i + 2] * b[i + 2];
-        s3 += a[i + 3] * b[i + 3];
-    }
-    for (; i < n; i++)
-        s0 += a[i] * b[i];
-    return (s0 + s1) + (s2 + s3);
+    return (h2_pair){ *(const h2_v2 *)a, *(const h2_v2 *)(a + 2) };
 }
 
-/* The same down a column of a row-major matrix (stride sa). */
-static inline double dot_stride(const double *a, size_t sa, const double *b, size_t n)
+static inline void pair_store(double *a, h2_pair v)
 {
-    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-    size_t i = 0;
-    for (; i + 4 <= n; i += 4) {
-        s0 += a[i * sa] * b[i];
-        s1 += a[(i + 1) * sa] * b[i + 1];
-        s2 += a[(i + 2) * sa] * b[i + 2];
-        s3 += a[(i + 3) * sa] * b[i + 3];
-    }
-    for (; i < n; i++)
-        s0 += a[i * sa] * b[i];
-    return (s0 + s1) + (s2 + s3);
+    *(h2_v2 *)a = v.lo;
+    *(h2_v2 *)(a + 2) = v.hi;
 }
+
+static inline h2_pair pair_add(h2_pair a, h2_pair b)
+{
+    return (h2_pair){ a.lo + b.lo, a.hi + b.hi };
+}
+
+static inline h2_pair pair_mul(h2_pair a, h2_pair b)
+{
+    return (h2_pair){ a.lo * b.lo, a.hi * b.hi };
+}
+
+static inline h2_pair pair_scale(double s, h2_pair a)
+{
+    return (h2_pair){ s * a.lo, s * a.hi };
+}
+
+#define H2_NAME(x) x##_base
+#define H2_TARGET
+#define V h2_pair
+#define V_LOAD(a) pair_load(a)
+#define V_STORE(a, v) pair_store(a, v)
+#define V_ZERO ((h2_pair){ { 0, 0 }, { 0, 0 } })
+#define V_ADD(a, b) pair_add(a, b)
+#define V_MUL(a, b) pair_mul(a, b)
+#define V_SCALE(s, a) pair_scale(s, a)
+#define V_HSUM(s) (((s).lo[0] + (s).lo[1]) + ((s).hi[0] + (s).hi[1]))
+#include "h2_product.h"
+#undef H2_NAME
+#undef H2_TARGET
+#undef V
+#undef V_LOAD
+#undef V_STORE
+#undef V_ZERO
+#undef V_ADD
+#undef V_MUL
+#undef V_SCALE
+#undef V_HSUM
+
+#if H2_AVX2
+#define H2_NAME(x) x##_avx2
+#define H2_TARGET __attribute__((target("avx2")))
+#define V h2_v4
+#define V_LOAD(a) (*(const h2_v4 *)(a))
+#define V_STORE(a, v) (*(h2_v4 *)(a) = (v))
+#define V_ZERO ((h2_v4){ 0, 0, 0, 0 })
+#define V_ADD(a, b) ((a) + (b))
+#define V_MUL(a, b) ((a) * (b))
+#define V_SCALE(s, a) ((s) * (a))
+#define V_HSUM(s) (((s)[0] + (s)[1]) + ((s)[2] + (s)[3]))
+#include "h2_product.h"
+#endif
 
 static void product(const adh_h2 *h, const double *v, double *y, double *work)
 {
-    size_t p = h->p, ncl = h->ncl;
-    double *M = work, *L = work + ncl * p;
-    memset(work, 0, 2 * ncl * p * sizeof *work);
-    /* upward: the leaves' moments, then each child's into its parent
-     * (reverse pre-order: a cluster is complete before it is passed on) */
-    for (size_t c = 0; c < ncl; c++) {
-        const h2_cluster *X = &h->cl[c];
-        if (X->child[0] != 0)
-            continue;
-        for (size_t k = 0; k < p; k++)
-            M[c * p + k] = dot(h->S + X->i0 * p + k * X->n, v + X->i0, X->n);
+#if H2_AVX2
+    if (h->avx2) {
+        product_avx2(h, v, y, work);
+        return;
     }
-    for (size_t c = ncl - 1; c >= 1; c--) {
-        const double *T = h->T + c * p * p, *m = M + c * p;
-        double *mp = M + h->cl[c].parent * p;
-        for (size_t k = 0; k < p; k++)
-            mp[k] += dot_stride(T + k, p, m, p);
-    }
-    /* the far couplings, both ways (the kernel is symmetric) */
-    for (size_t f = 0; f < h->nfar; f++) {
-        const double *K = h->K + f * p * p;
-        size_t x = h->far[f][0], yc = h->far[f][1];
-        const double *mx = M + x * p, *my = M + yc * p;
-        double *lx = L + x * p, *ly = L + yc * p;
-        for (size_t a = 0; a < p; a++) {
-            lx[a] += dot(K + a * p, my, p);
-            ly[a] += dot_stride(K + a, p, mx, p);
-        }
-    }
-    /* downward: each parent's expansion into its children */
-    for (size_t c = 1; c < ncl; c++) {
-        const double *T = h->T + c * p * p, *lp = L + h->cl[c].parent * p;
-        double *l = L + c * p;
-        for (size_t k = 0; k < p; k++)
-            l[k] += dot(T + k * p, lp, p);
-    }
-    for (size_t c = 0; c < ncl; c++) {
-        const h2_cluster *X = &h->cl[c];
-        if (X->child[0] != 0)
-            continue;
-        const double *l = L + c * p;
-        for (size_t i = X->i0; i < X->i0 + X->n; i++)
-            y[i] = dot(h->U + i * p, l, p);
-    }
-    for (size_t b = 0; b < h->nnear; b++) {
-        const h2_near *nb = &h->near[b];
-        const double *B = h->B + nb->off, *vy = v + nb->j0;
-        for (size_t i = 0; i < nb->ni; i++)
-            y[nb->i0 + i] += dot(B + i * nb->nj, vy, nb->nj);
-    }
+#endif
+    product_base(h, v, y, work);
 }
 
 int adh_h2_apply(adh_h2 *h, const double *v, double *y)
@@ -421,7 +451,7 @@ int adh_h2_apply(adh_h2 *h, const double *v, double *y)
         pthread_mutex_unlock(&h->lock);
         return 0;
     }
-    double *w = malloc(2 * h->ncl * h->p * sizeof *w);
+    double *w = malloc(2 * h->ncl * h->P * sizeof *w);
     if (!w)
         return -1;
     product(h, v, y, w);
@@ -431,7 +461,7 @@ int adh_h2_apply(adh_h2 *h, const double *v, double *y)
 
 size_t adh_h2_bytes(const adh_h2 *h)
 {
-    size_t p = h->p, ncl = h->ncl;
-    size_t numbers = h->nB + h->nfar * p * p + ncl * p * p + 2 * h->n * p + 2 * ncl * p;
+    size_t P = h->P, ncl = h->ncl;
+    size_t numbers = h->nB + h->nfar * P * P + ncl * P * P + 2 * h->n * P + 2 * ncl * P;
     return numbers * sizeof(double) + ncl * sizeof *h->cl + h->nfar * sizeof *h->far + h->nnear * sizeof *h->near;
 }

@@ -2,7 +2,8 @@
  * cells of growing widths (a graded line). The product against the dense
  * matrix of the same entries: its error falls with the interpolation order
  * (the far field is interpolated, the near field exact), concurrent
- * products agree with a lone one, and bad cells are refused. */
+ * products agree with a lone one, the portable copy of the product with
+ * the AVX2 one, and bad cells are refused. */
 #include <math.h>
 #include <pthread.h>
 #include <stdlib.h>
@@ -111,6 +112,17 @@ int main(void)
     for (size_t i = 0; i < N && same; i++)
         same = yt[i] == yh[i] && y2[i] == yh[i];
     ok(same, "concurrent products equal the lone one");
+
+    /* the portable copy of the product (pairs of SSE2 halves) and the AVX2
+     * one where this CPU runs it: the same additions in the same order */
+    adh_h2_settings sp = adh_h2_settings_default();
+    sp.portable = 1;
+    adh_h2 *hp = adh_h2_alloc(&pb, &sp);
+    int equal = hp && adh_h2_apply(hp, v, yt) == 0;
+    for (size_t i = 0; i < N && equal; i++)
+        equal = yt[i] == yh[i];
+    ok(equal, "the portable product equals the default one, digit for digit");
+    adh_h2_free(hp);
     adh_h2_free(h14);
 
     edge[5] = edge[4];
