@@ -56,6 +56,11 @@ void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len)
  *     [sum_n (w_n / dr) du_n^2]^(1/2) / (rmax / dr),   w_n = ring width.
  * On a uniform grid w_n = dr and rmax / dr = N: the paper's, exactly. */
 double adh_rings_change(const adh_grid *g, const double *du);
+/* The same in two parts, for a caller that sums as it goes: the weights
+ * w_n / dr (n of them, into wt), and the measure from sum_n wt_n du_n du_n
+ * (that product order gives adh_rings_change's digits). */
+void adh_rings_change_weights(const adh_grid *g, double *wt);
+double adh_rings_change_of(const adh_grid *g, double weighted_ssq);
 
 /* The contact radius expected at drive position h0 (m): the larger of the
  * estimate adh_protocol_check uses for the grid radius (the undeformed

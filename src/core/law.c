@@ -2,17 +2,8 @@
 
 #include <math.h>
 
-double adh_lj_pressure(double h, double A, double z0)
-{
-    double s = z0 / h, s3 = s * s * s;
-    return A / (6.0 * M_PI * h * h * h) * (s3 * s3 - 1.0);
-}
-
-double adh_lj_dpressure(double h, double A, double z0)
-{
-    double s = z0 / h, s3 = s * s * s;
-    return A / (6.0 * M_PI * h * h * h * h) * (3.0 - 9.0 * s3 * s3);
-}
+extern inline double adh_lj_pressure(double h, double A, double z0);
+extern inline double adh_lj_dpressure(double h, double A, double z0);
 
 double adh_lj_energy(double h, double A, double z0)
 {

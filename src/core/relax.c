@@ -26,7 +26,9 @@ struct adh_relax {
     double *shape;     /* r^2 / 2R, the undeformed sphere (eq 3) */
     double *vel;       /* momentum rule: the previous update u_k - u_(k-1) */
     double *perron;    /* momentum rule: power-iteration vector of the stiffness */
-    double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x */
+    double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x;
+                          in an update, the state it may have to undo */
+    double *ring_w;    /* eps's weight of each node (adhere/rings.h) */
     double stiffness;  /* upper bound on the largest eigenvalue of (2/E) W |p'| */
     size_t since_estimate;
     double best_change;   /* smallest change since the momentum last restarted */
@@ -118,7 +120,7 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->g = g;
     w->k = k;
     w->st = adh_state_alloc(g->n);
-    w->unew = malloc(7 * g->n * sizeof(double));
+    w->unew = malloc(8 * g->n * sizeof(double));
     if (!w->st || !w->unew) {
         adh_relax_free(w);
         return NULL;
@@ -128,6 +130,8 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->vel = w->unew + 3 * g->n;
     w->perron = w->unew + 4 * g->n;
     w->work = w->unew + 5 * g->n;
+    w->ring_w = w->unew + 7 * g->n;
+    adh_rings_change_weights(g, w->ring_w);
     return w;
 }
 
@@ -276,13 +280,33 @@ static double paper_ratio(adh_relax *w)
     return w->st->mix;
 }
 
-/* Whether u + beta v + alpha (u_new - u) would close the gap somewhere. */
-static int update_closes(const adh_relax *w, double alpha, double beta)
+/* v = beta v + alpha (u_new - u), u += v, and h and p after them, in one
+ * pass. Where the new gap closes (h <= 0, where the law has no meaning) the
+ * nodes done so far are put back as they were and 1 is returned. */
+static int update(adh_relax *w, double alpha, double beta)
 {
-    const adh_state *st = w->st;
-    for (size_t i = 0; i < st->n; i++)
-        if (!(st->h0 + w->shape[i] - (st->u[i] + (beta * w->vel[i] + alpha * w->unew[i])) > 0))
+    adh_state *st = w->st;
+    size_t n = st->n;
+    double *old_v = w->work, *old_u = w->work + n;
+    for (size_t i = 0; i < n; i++) {
+        double v = beta * w->vel[i] + alpha * w->unew[i], u = st->u[i] + v;
+        double h = st->h0 + w->shape[i] - u;
+        if (!(h > 0)) {
+            for (size_t j = 0; j < i; j++) {
+                w->vel[j] = old_v[j];
+                st->u[j] = old_u[j];
+                st->h[j] = st->h0 + w->shape[j] - st->u[j];
+                st->p[j] = adh_lj_pressure(st->h[j], w->m.A, w->m.z0);
+            }
             return 1;
+        }
+        old_v[i] = w->vel[i];
+        old_u[i] = st->u[i];
+        w->vel[i] = v;
+        st->u[i] = u;
+        st->h[i] = h;
+        st->p[i] = adh_lj_pressure(h, w->m.A, w->m.z0);
+    }
     return 0;
 }
 
@@ -296,17 +320,19 @@ static int relax_once(adh_relax *w)
     size_t n = st->n;
     double scale = -2.0 / w->m.E;
     adh_kernel_apply(w->k, st->p, w->unew, w->scratch);
-    double ssq = 0;
+    double ssq = 0, wssq = 0;
     for (size_t i = 0; i < n; i++) {
-        w->unew[i] = scale * w->unew[i] - st->u[i]; /* now the unmixed change */
-        ssq += w->unew[i] * w->unew[i];
+        double du = scale * w->unew[i] - st->u[i];
+        w->unew[i] = du; /* now the unmixed change */
+        ssq += du * du;
+        wssq += w->ring_w[i] * du * du;
     }
     if (!isfinite(ssq))
         return ADH_ENAN;
     /* eps as the paper writes it: [sum (u_new - u_old)^2]^(1/2) / N (its
      * graded-grid form in adhere/rings.h reduces to this), with
      * u_new the eq 11 deformation before it is mixed in. */
-    w->change = w->g->graded ? adh_rings_change(w->g, w->unew) : sqrt(ssq) / (double)n;
+    w->change = w->g->graded ? adh_rings_change_of(w->g, wssq) : sqrt(ssq) / (double)n;
     /* Converged: keep the state whose change was measured, not one more
      * mixed update of it. With momentum the state must also be at rest: a
      * small change while the last update was large is the state passing
@@ -317,7 +343,7 @@ static int relax_once(adh_relax *w)
      * shift d spreads over N nodes as d / sqrt(N), below eps for d = 0.05 nm
      * and N >= 2500, and a bulge of a few pm is lost in it. The central
      * deformation (eq 14) must also have settled to rtol (1e-3) of itself plus
- * the step (in contact u(0) passes through 0 near h0 = z0). In
+     * the step (in contact u(0) passes through 0 near h0 = z0). In
      * contact the centre is held by the stiff contact modes and settles long
      * before eps is met (its relative change is ~1e-5 there), so this never
      * binds and eps keeps the paper's meaning: the model's time. */
@@ -340,7 +366,7 @@ static int relax_once(adh_relax *w)
     int momentum = w->s.rule == ADH_MIX_MOMENTUM;
     double alpha = momentum ? momentum_ratio(w) : paper_ratio(w);
     double beta = momentum ? w->s.momentum : 0.0;
-    while (update_closes(w, alpha, beta)) {
+    while (update(w, alpha, beta)) {
         if (beta > 0) {
             for (size_t i = 0; i < n; i++)
                 w->vel[i] = 0.0;
@@ -354,12 +380,6 @@ static int relax_once(adh_relax *w)
         alpha = fmax(w->s.mix_min, alpha * 0.5);
     }
     st->mix = alpha;
-    for (size_t i = 0; i < n; i++) {
-        w->vel[i] = beta * w->vel[i] + alpha * w->unew[i];
-        st->u[i] += w->vel[i];
-        st->h[i] = st->h0 + w->shape[i] - st->u[i];
-        st->p[i] = adh_lj_pressure(st->h[i], w->m.A, w->m.z0);
-    }
     return ADH_SUCCESS;
 }
 
