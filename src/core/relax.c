@@ -330,13 +330,25 @@ static int relax_once(adh_relax *w)
     size_t n = st->n;
     double scale = -2.0 / w->m.E;
     adh_kernel_apply(w->k, st->p, w->unew, w->scratch);
-    double ssq = 0, wssq = 0;
-    for (size_t i = 0; i < n; i++) {
-        double du = scale * w->unew[i] - st->u[i];
-        w->unew[i] = du; /* now the unmixed change */
-        ssq += du * du;
-        wssq += w->ring_w[i] * du * du;
+    /* the sums in four interleaved parts: one chain of additions would
+     * bound this pass by its latency */
+    double ssq4[4] = { 0 }, wssq4[4] = { 0 };
+    size_t k = 0;
+    for (; k + 4 <= n; k += 4)
+        for (size_t l = 0; l < 4; l++) {
+            double du = scale * w->unew[k + l] - st->u[k + l];
+            w->unew[k + l] = du; /* now the unmixed change */
+            ssq4[l] += du * du;
+            wssq4[l] += w->ring_w[k + l] * du * du;
+        }
+    for (; k < n; k++) {
+        double du = scale * w->unew[k] - st->u[k];
+        w->unew[k] = du;
+        ssq4[0] += du * du;
+        wssq4[0] += w->ring_w[k] * du * du;
     }
+    double ssq = (ssq4[0] + ssq4[1]) + (ssq4[2] + ssq4[3]);
+    double wssq = (wssq4[0] + wssq4[1]) + (wssq4[2] + wssq4[3]);
     if (!isfinite(ssq))
         return ADH_ENAN;
     /* eps as the paper writes it: [sum (u_new - u_old)^2]^(1/2) / N (its
