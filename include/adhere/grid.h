@@ -43,7 +43,7 @@ double adh_grid_edge_spacing(adh_grid_use use);
 /* The budget of an automatic uniform grid: a dense N x N kernel of at most
  * this many nodes (4000: 128 MB, ~4 ms per relaxation iteration, a Figure 4
  * cycle of ~15 min on one core). An automatic graded grid is held as an H^2
- * operator (~1.2 kB a ring): its budget is the grid limit itself,
+ * operator (~1.3 kB a ring): its budget is the grid limit itself,
  * ADH_GRID_NODES_MAX rings (~24 MB; sigma = 75 takes ~6 000). */
 #define ADH_GRID_MAX_NODES 4000
 /* The nodes a grid may have at all (flags, scene files, the TUI's N). */

@@ -122,10 +122,10 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
         c->n = nn;
     }
     /* a dense kernel's memory bounds a uniform grid; graded rings are held
-     * as H^2 (~1.2 kB a ring), bounded by the grid limit alone */
+     * as H^2 (~1.3 kB a ring), bounded by the grid limit alone */
     size_t budget = c->hierarchical ? ADH_GRID_NODES_MAX : ADH_GRID_MAX_NODES;
-    double held = c->hierarchical ? 1.2e3 * (double)nn / 1048576.0 : mb((double)nn);
-    double held_max = c->hierarchical ? 1.2e3 * (double)budget / 1048576.0 : mb((double)budget);
+    double held = c->hierarchical ? 1.3e3 * (double)nn / 1048576.0 : mb((double)nn);
+    double held_max = c->hierarchical ? 1.3e3 * (double)budget / 1048576.0 : mb((double)budget);
     if (nn > budget || need > 0.3 * m->R) {
         snprintf(why, whylen,
                  "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
@@ -144,7 +144,7 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
                  "(34 s on one core at sigma = 100, 12875 rings) it was not measured; use --mode=relax "
                  "(resolved at this sigma), a stiffer material, or give -N/--spacing yourself with --force (the "
                  "run is then marked resolved 0 if the grid is coarser than the limit)",
-                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, c->hierarchical ? 1.2e3 * (double)nn / 1048576.0 : mb((double)nn), ADH_GRID_STATIC_MAX_NODES);
+                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, c->hierarchical ? 1.3e3 * (double)nn / 1048576.0 : mb((double)nn), ADH_GRID_STATIC_MAX_NODES);
         return ADH_EGRID;
     }
     return ADH_SUCCESS;
