@@ -6,7 +6,7 @@
 # dense in the storage benchmark (N^2 x 8 bytes: 0.8 GB at 10^4, 3.2 GB at
 # 2 x 10^4); BENCH_HMAT_MAX (default 100000) the largest assembled by
 # hmat-oss (70 s at 10^5); BENCH_OPERATOR_N (default "1000 3000 10000 30000
-# 100000").
+# 100000"); BENCH_FIG6=1 adds Figure 6 to the soft-contact relaxation goals.
 BUILD=${1:-build}
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 echo "threads: one per run (OpenBLAS set to 1 thread)"
@@ -17,6 +17,10 @@ echo
 echo
 # the static curve on the automatic resolved grid at sigma = 15, 22.5 and 75
 "$BUILD/tests/bench-static_soft"
+echo
+# the relaxation goals of soft contacts through the CLI (BENCH_FIG6=1 adds
+# Figure 6: ~12 minutes)
+ADHERE=./adhere tests/bench/soft.sh
 echo
 # shellcheck disable=SC2086 # the sizes are words
 "$BUILD/tests/bench-operator" "${BENCH_DENSE_MAX:-10000}" "${BENCH_HMAT_MAX:-100000}" ${BENCH_OPERATOR_N:-1000 3000 10000 30000 100000}
