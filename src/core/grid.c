@@ -76,9 +76,11 @@ static double contact_estimate(const adh_material *m, double deepest)
     return fmax(hi, 1.5 * sqrt(2.0 * m->R * depth));
 }
 
-static double mb(double nodes)
+/* MB a kernel holds: dense N^2 doubles, or as H^2 ~1.3 kB a ring
+ * (measured: README, "Graded grids and kernel operators") */
+static double held_mb(int hierarchical, double nodes)
 {
-    return nodes * nodes * sizeof(double) / 1048576.0;
+    return hierarchical ? 1.3e3 * nodes / 1048576.0 : nodes * nodes * sizeof(double) / 1048576.0;
 }
 
 int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int graded_ok, adh_grid_choice *c,
@@ -124,8 +126,8 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
     /* a dense kernel's memory bounds a uniform grid; graded rings are held
      * as H^2 (~1.3 kB a ring), bounded by the grid limit alone */
     size_t budget = c->hierarchical ? ADH_GRID_NODES_MAX : ADH_GRID_MAX_NODES;
-    double held = c->hierarchical ? 1.3e3 * (double)nn / 1048576.0 : mb((double)nn);
-    double held_max = c->hierarchical ? 1.3e3 * (double)budget / 1048576.0 : mb((double)budget);
+    double held = held_mb(c->hierarchical, (double)nn);
+    double held_max = held_mb(c->hierarchical, (double)budget);
     if (nn > budget || need > 0.3 * m->R) {
         snprintf(why, whylen,
                  "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
@@ -141,10 +143,10 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
                  "sigma = %.3g: a resolved static curve needs a grid spacing of at most %.3g m (%.2g edge-zone "
                  "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps, "
                  "though they step the contact line over many rings at once, cost more with N: beyond N = %d "
-                 "(34 s on one core at sigma = 100, 12875 rings) it was not measured; use --mode=relax "
+                 "(31-34 s on one core at sigma = 100, 12875 rings) it was not measured; use --mode=relax "
                  "(resolved at this sigma), a stiffer material, or give -N/--spacing yourself with --force (the "
                  "run is then marked resolved 0 if the grid is coarser than the limit)",
-                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, c->hierarchical ? 1.3e3 * (double)nn / 1048576.0 : mb((double)nn), ADH_GRID_STATIC_MAX_NODES);
+                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, held, ADH_GRID_STATIC_MAX_NODES);
         return ADH_EGRID;
     }
     return ADH_SUCCESS;

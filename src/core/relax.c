@@ -354,7 +354,7 @@ static int relax_once(adh_relax *w)
     /* eps as the paper writes it: [sum (u_new - u_old)^2]^(1/2) / N (its
      * graded-grid form in adhere/rings.h reduces to this), with
      * u_new the eq 11 deformation before it is mixed in. */
-    w->change = w->g->graded ? adh_rings_change_of(w->g, wssq) : sqrt(ssq) / (double)n;
+    w->change = adh_rings_change_of(w->g, wssq);
     /* Converged: keep the state whose change was measured, not one more
      * mixed update of it. With momentum the state must also be at rest: a
      * small change while the last update was large is the state passing
