@@ -40,6 +40,12 @@ int adh_hodlr_factorize(adh_hodlr *h, double alpha, const double *d);
 /* Solves A x = b in place (b: n numbers) with the last factorization. */
 void adh_hodlr_solve(adh_hodlr *h, double *b);
 
+/* The same solve on single-precision copies of the factorization (made by
+ * adh_hodlr_factorize): relative error ~1e-6, for a preconditioner, whose
+ * own error (the blocks' tolerance) is larger; half the memory traffic of
+ * adh_hodlr_solve, which is bound by it. */
+void adh_hodlr_solve_single(adh_hodlr *h, double *b);
+
 /* Sign of det A at the last factorization (+1 or -1). */
 int adh_hodlr_det_sign(const adh_hodlr *h);
 

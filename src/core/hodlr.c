@@ -9,8 +9,6 @@
 extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
 extern void dgetri_(const int *n, double *a, const int *lda, const int *ipiv, double *work, const int *lwork,
                     int *info);
-extern void dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a, const int *lda,
-                    const int *ipiv, double *b, const int *ldb, int *info);
 
 /* Matrices are column-major. A node covers cells lo .. lo+n-1; an inner
  * node's children split them at lo + n0. */
@@ -28,10 +26,15 @@ typedef struct node {
      * Vt01 = alpha diag(d_c1) V01, Vt10 = alpha diag(d_c0) V10 (held as V,
      * column-major: products with their transposes read contiguous
      * columns), and the LU of the capacitance matrix
-     * S = [[I, Vt01^T Y1], [Vt10^T Y0, I]] */
-    double *Y0, *Y1, *Vt01, *Vt10, *S, *t;
+     * S = [[I, Vt01^T Y1], [Vt10^T Y0, I]], then S's inverse (its LU
+     * gives the determinant's sign; the inverse is applied in every solve
+     * from every ancestor, where small triangular solves cost more) */
+    double *Y0, *Y1, *Vt01, *Vt10, *S, *t, *t2;
     int *spiv;
     int sign;
+    /* the factorization's solve operands in single precision (Al; Y0, Y1,
+     * Vt01, Vt10 and S's inverse in one block), and a scratch of n or 2 K */
+    float *Alf, *Yf, *sf;
 } node;
 
 struct adh_hodlr {
@@ -42,6 +45,9 @@ struct adh_hodlr {
     double tol;
     size_t max_rank;
     size_t bytes_w, bytes_f;
+    float *bf; /* the right side of a single-precision solve */
+    double *work; /* dgetri's, 64 x the largest capacitance */
+    size_t kmax;
 };
 
 static int lu(double *a, int n, int *piv, int *sign)
@@ -163,15 +169,16 @@ static int build(adh_hodlr *h, size_t lo, size_t n)
         double *Wl = malloc(n * n * sizeof *Wl), *Al = malloc(n * n * sizeof *Al);
         double *lt = malloc(64 * n * sizeof *lt);
         int *piv = malloc(n * sizeof *piv);
+        float *Alf = malloc(n * n * sizeof *Alf), *sf = malloc(n * sizeof *sf);
         b = &h->nodes[id];
-        b->Wl = Wl, b->Al = Al, b->piv = piv, b->lt = lt;
-        if (!Wl || !Al || !piv || !lt)
+        b->Wl = Wl, b->Al = Al, b->piv = piv, b->lt = lt, b->Alf = Alf, b->sf = sf;
+        if (!Wl || !Al || !piv || !lt || !Alf || !sf)
             return -1;
         for (size_t j = 0; j < n; j++)
             for (size_t i = 0; i < n; i++)
                 Wl[i + j * n] = h->entry(h->ctx, lo + i, lo + j);
         h->bytes_w += n * n * sizeof *Wl;
-        h->bytes_f += n * n * sizeof *Al;
+        h->bytes_f += n * n * (sizeof *Al + sizeof *Alf);
         return id;
     }
     size_t n0 = n / 2, n1 = n - n0;
@@ -189,14 +196,20 @@ static int build(adh_hodlr *h, size_t lo, size_t n)
     b->U01 = U01, b->V01 = V01, b->U10 = U10, b->V10 = V10;
     b->Y0 = malloc((k01 * n0 + k10 * n1) * sizeof(double));
     b->Vt01 = malloc((k01 * n1 + k10 * n0) * sizeof(double));
-    b->S = malloc((K * K + K) * sizeof(double));
+    b->S = malloc((K * K + 2 * K) * sizeof(double));
     b->spiv = malloc((K + 1) * sizeof(int));
-    if (!b->Y0 || !b->Vt01 || !b->S || !b->spiv)
+    b->Yf = malloc(((k01 + k10) * (n0 + n1) + K * K) * sizeof(float));
+    b->sf = malloc((2 * K + 1) * sizeof(float));
+    if (!b->Y0 || !b->Vt01 || !b->S || !b->spiv || !b->Yf || !b->sf)
         return -1;
     b->Y1 = b->Y0 + k01 * n0;
     b->Vt10 = b->Vt01 + k01 * n1;
     b->t = b->S + K * K;
-    h->bytes_f += (2 * (k01 * n0 + k10 * n1) + K * K + K) * sizeof(double);
+    b->t2 = b->t + K;
+    if (K > h->kmax)
+        h->kmax = K;
+    h->bytes_f += (2 * (k01 * n0 + k10 * n1) + K * K + 2 * K) * sizeof(double) +
+                  ((k01 + k10) * (n0 + n1) + K * K + 2 * K) * sizeof(float);
     int c0 = build(h, lo, n0);
     if (c0 < 0)
         return -1;
@@ -216,8 +229,11 @@ void adh_hodlr_free(adh_hodlr *h)
         free(b->Wl), free(b->Al), free(b->piv), free(b->lt);
         free(b->U01), free(b->V01), free(b->U10), free(b->V10);
         free(b->Y0), free(b->Vt01), free(b->S), free(b->spiv);
+        free(b->Alf), free(b->Yf), free(b->sf);
     }
     free(h->nodes);
+    free(h->bf);
+    free(h->work);
     free(h);
 }
 
@@ -229,7 +245,8 @@ adh_hodlr *adh_hodlr_alloc(size_t n, adh_hodlr_entry_fn entry, void *ctx, double
     if (!h)
         return NULL;
     h->n = n, h->leaf = leaf, h->entry = entry, h->ctx = ctx, h->tol = tol;
-    if (build(h, 0, n) < 0) {
+    h->bf = malloc(n * sizeof *h->bf);
+    if (!h->bf || build(h, 0, n) < 0 || !(h->work = malloc(64 * (h->kmax + 1) * sizeof *h->work))) {
         adh_hodlr_free(h);
         return NULL;
     }
@@ -263,17 +280,17 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
     solve_node(h, b->c[1], B + n0, ldb, nrhs);
     if (K == 0)
         return;
-    int kk = (int)K, nr = (int)nrhs, info;
+    int kk = (int)K, nr = (int)nrhs;
     if (nrhs == 1) {
         /* one column (GMRES): matrix-vector products, not dgemm's blocking */
-        double *t = b->t;
+        double *t = b->t2;
         if (b->k01)
-            cblas_dgemv(CblasColMajor, CblasTrans, (int)n1, (int)b->k01, 1.0, b->Vt01, (int)n1, B + n0, 1, 0.0, t,
-                        1);
+            cblas_dgemv(CblasColMajor, CblasTrans, (int)n1, (int)b->k01, 1.0, b->Vt01, (int)n1, B + n0, 1, 0.0,
+                        b->t, 1);
         if (b->k10)
             cblas_dgemv(CblasColMajor, CblasTrans, (int)n0, (int)b->k10, 1.0, b->Vt10, (int)n0, B, 1, 0.0,
-                        t + b->k01, 1);
-        dgetrs_("N", &kk, &nr, b->S, &kk, b->spiv, t, &kk, &info);
+                        b->t + b->k01, 1);
+        cblas_dgemv(CblasColMajor, CblasNoTrans, kk, kk, 1.0, b->S, kk, b->t, 1, 0.0, t, 1);
         if (b->k01)
             cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n0, (int)b->k01, -1.0, b->Y0, (int)n0, t, 1, 1.0, B, 1);
         if (b->k10)
@@ -281,23 +298,23 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
                         B + n0, 1);
         return;
     }
-    double *T = malloc(K * nrhs * sizeof *T);
-    if (!T)
+    double *T0 = malloc(2 * K * nrhs * sizeof *T0), *T = T0 + K * nrhs;
+    if (!T0)
         return; /* only a multi-column solve allocates: factorize's */
     if (b->k01)
         cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)b->k01, (int)nrhs, (int)n1, 1.0, b->Vt01,
-                    (int)n1, B + n0, (int)ldb, 0.0, T, (int)K);
+                    (int)n1, B + n0, (int)ldb, 0.0, T0, (int)K);
     if (b->k10)
         cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)b->k10, (int)nrhs, (int)n0, 1.0, b->Vt10,
-                    (int)n0, B, (int)ldb, 0.0, T + b->k01, (int)K);
-    dgetrs_("N", &kk, &nr, b->S, &kk, b->spiv, T, &kk, &info);
+                    (int)n0, B, (int)ldb, 0.0, T0 + b->k01, (int)K);
+    cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, kk, nr, kk, 1.0, b->S, kk, T0, kk, 0.0, T, kk);
     if (b->k01)
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n0, (int)nrhs, (int)b->k01, -1.0, b->Y0,
                     (int)n0, T, (int)K, 1.0, B, (int)ldb);
     if (b->k10)
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n1, (int)nrhs, (int)b->k10, -1.0, b->Y1,
                     (int)n1, T + b->k01, (int)K, 1.0, B + n0, (int)ldb);
-    free(T);
+    free(T0);
 }
 
 static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
@@ -351,17 +368,79 @@ static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
     int s = 1;
     rc = lu(S, (int)K, b->spiv, &s);
     b->sign = s * h->nodes[b->c[0]].sign * h->nodes[b->c[1]].sign;
-    return rc;
+    if (rc != 0)
+        return rc;
+    int kk = (int)K, lw = 64 * (int)(h->kmax + 1), info = 0;
+    dgetri_(&kk, S, &kk, b->spiv, h->work, &lw, &info);
+    return info != 0 ? 1 : 0;
+}
+
+static void to_float(float *f, const double *x, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        f[i] = (float)x[i];
 }
 
 int adh_hodlr_factorize(adh_hodlr *h, double alpha, const double *d)
 {
-    return factor_node(h, 0, alpha, d);
+    int rc = factor_node(h, 0, alpha, d);
+    if (rc != 0)
+        return rc;
+    for (size_t i = 0; i < h->nnodes; i++) {
+        node *b = &h->nodes[i];
+        if (b->c[0] < 0) {
+            to_float(b->Alf, b->Al, b->n * b->n);
+            continue;
+        }
+        size_t n0 = b->n0, n1 = b->n - n0, my = b->k01 * n0 + b->k10 * n1, mv = b->k01 * n1 + b->k10 * n0;
+        to_float(b->Yf, b->Y0, my); /* Y0 and Y1 are one block, as Vt01 and Vt10 */
+        to_float(b->Yf + my, b->Vt01, mv);
+        to_float(b->Yf + my + mv, b->S, (b->k01 + b->k10) * (b->k01 + b->k10));
+    }
+    return 0;
 }
 
 void adh_hodlr_solve(adh_hodlr *h, double *b)
 {
     solve_node(h, 0, b, h->n, 1);
+}
+
+/* solve_node's one-column path on the single-precision operands. */
+static void solve_node_f(adh_hodlr *h, int id, float *B)
+{
+    node *b = &h->nodes[id];
+    size_t n = b->n;
+    if (b->c[0] < 0) {
+        cblas_sgemv(CblasColMajor, CblasNoTrans, (int)n, (int)n, 1.0f, b->Alf, (int)n, B, 1, 0.0f, b->sf, 1);
+        memcpy(B, b->sf, n * sizeof *B);
+        return;
+    }
+    size_t n0 = b->n0, n1 = n - n0, k01 = b->k01, k10 = b->k10, K = k01 + k10;
+    solve_node_f(h, b->c[0], B);
+    solve_node_f(h, b->c[1], B + n0);
+    if (K == 0)
+        return;
+    const float *Y0 = b->Yf, *Y1 = Y0 + k01 * n0, *Vt01 = Y1 + k10 * n1, *Vt10 = Vt01 + k01 * n1;
+    const float *Si = Vt10 + k10 * n0;
+    float *t0 = b->sf, *tf = t0 + K;
+    if (k01)
+        cblas_sgemv(CblasColMajor, CblasTrans, (int)n1, (int)k01, 1.0f, Vt01, (int)n1, B + n0, 1, 0.0f, t0, 1);
+    if (k10)
+        cblas_sgemv(CblasColMajor, CblasTrans, (int)n0, (int)k10, 1.0f, Vt10, (int)n0, B, 1, 0.0f, t0 + k01, 1);
+    cblas_sgemv(CblasColMajor, CblasNoTrans, (int)K, (int)K, 1.0f, Si, (int)K, t0, 1, 0.0f, tf, 1);
+    if (k01)
+        cblas_sgemv(CblasColMajor, CblasNoTrans, (int)n0, (int)k01, -1.0f, Y0, (int)n0, tf, 1, 1.0f, B, 1);
+    if (k10)
+        cblas_sgemv(CblasColMajor, CblasNoTrans, (int)n1, (int)k10, -1.0f, Y1, (int)n1, tf + k01, 1, 1.0f,
+                    B + n0, 1);
+}
+
+void adh_hodlr_solve_single(adh_hodlr *h, double *b)
+{
+    to_float(h->bf, b, h->n);
+    solve_node_f(h, 0, h->bf);
+    for (size_t i = 0; i < h->n; i++)
+        b[i] = h->bf[i];
 }
 
 int adh_hodlr_det_sign(const adh_hodlr *h)
