@@ -121,7 +121,7 @@ struct adh_static {
     int det_b_sign;   /* sign of det B, invariant along the curve */
     size_t attempt;   /* step attempts so far (stamps the factorizations) */
 
-    double *G, *du, *y, *t, *t2, *upred, *scratch, *rG, *bG, *dx, *Dc, *gc, *zero, *gz, *V;
+    double *G, *du, *y, *t, *t2, *upred, *scratch, *rG, *bG, *dx, *Dc, *gc, *zero, *gz, *V, *Z;
     double act;       /* active-set threshold in use (lowered when the
                          preconditioned solve stops contracting) */
     double ds;
@@ -264,8 +264,9 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     w->st = adh_state_alloc(n);
     w->trial = adh_state_alloc(n);
     /* G, du, y, t, t2, upred, scratch, tau_u, tau_u_new, rG, bG, dx, Dc, gc,
-     * zero, gz, Dst, gst, Dtr, gtr, u1, u2, x2: n + 1 each; the GMRES basis */
-    w->G = calloc(23 * (n + 1) + (ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
+     * zero, gz, Dst, gst, Dtr, gtr, u1, u2, x2: n + 1 each; the GMRES basis
+     * and its preconditioned vectors */
+    w->G = calloc(23 * (n + 1) + (2 * ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
     w->folds = malloc(ADH_STATIC_MAX_FOLDS * sizeof *w->folds);
     int bad = !(w->W || w->hw) || !w->colnorm || !w->st || !w->trial || !w->G || !w->folds;
     if (!bad)
@@ -281,6 +282,7 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     for (size_t i = 1; i < sizeof bufs / sizeof *bufs; i++)
         *bufs[i] = w->G + i * (n + 1);
     w->V = w->G + 23 * (n + 1);
+    w->Z = w->V + (ADH_GMRES_MAX + 1) * (n + 1);
     for (size_t i = 0; i < n && w->W; i++)
         for (size_t j = 0; j < n; j++) {
             double v = adh_kernel_entry(k, i, j);
@@ -397,7 +399,7 @@ static void precond(adh_static *w, const lin *L, const double *bG, double bc, do
         /* J_L^-1 on the u part, the current operator's border eliminated
          * exactly (x2 and the Schur complement set up by solve) */
         memcpy(du, bG, n * sizeof *du);
-        adh_hodlr_solve(w->hw, du);
+        adh_hodlr_solve_single(w->hw, du);
         double nd = 0;
         for (size_t i = 0; i < n; i++)
             nd += w->pnu[i] * du[i];
@@ -475,7 +477,7 @@ static int solve(adh_static *w, const op *A, const lin *L, const double *b, doub
     if (w->hw) {
         /* the border of A, eliminated exactly around J_L^-1 */
         memcpy(w->x2, A->g, n * sizeof *w->x2);
-        adh_hodlr_solve(w->hw, w->x2);
+        adh_hodlr_solve_single(w->hw, w->x2);
         double sc = A->nh;
         for (size_t i = 0; i < n; i++)
             sc -= w->s.u_weight * A->nu[i] * w->x2[i];
@@ -489,9 +491,9 @@ static int solve(adh_static *w, const op *A, const lin *L, const double *b, doub
     int k = 0;
     double resid = beta;
     for (int j = 0; j < km; j++) {
-        double *vj = V + (size_t)j * n1, *vn = V + (size_t)(j + 1) * n1, dh;
-        precond(w, L, vj, vj[n], w->dx, &dh);
-        op_apply(w, A, w->dx, dh, vn, &vn[n]);
+        double *vj = V + (size_t)j * n1, *vn = V + (size_t)(j + 1) * n1, *zj = w->Z + (size_t)j * n1;
+        precond(w, L, vj, vj[n], zj, &zj[n]);
+        op_apply(w, A, zj, zj[n], vn, &vn[n]);
         /* modified Gram-Schmidt, twice: the Krylov basis must stay orthogonal */
         for (int pass = 0; pass < 2; pass++)
             for (int i = 0; i <= j; i++) {
@@ -532,13 +534,10 @@ static int solve(adh_static *w, const op *A, const lin *L, const double *b, doub
             return ADH_CONTINUE;
         yv[i] = sum / H[i * km + i];
     }
-    double *z = w->gz;
-    memset(z, 0, n1 * sizeof *z);
+    /* x from the preconditioned vectors kept (flexible GMRES): no solve
+     * more, and the answer is the combination the residual was measured on */
     for (int i = 0; i < k; i++)
-        cblas_daxpy((int)n1, yv[i], V + (size_t)i * n1, 1, z, 1);
-    double dh;
-    precond(w, L, z, z[n], x, &dh);
-    x[n] = dh;
+        cblas_daxpy((int)n1, yv[i], w->Z + (size_t)i * n1, 1, x, 1);
     for (size_t i = 0; i < n1; i++)
         if (!isfinite(x[i]))
             return ADH_CONTINUE;
