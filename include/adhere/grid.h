@@ -79,8 +79,8 @@ void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t le
 /* The budget of an automatic static curve: past 1000 nodes it steps over
  * the lattice folds (adhere/static.h, lattice_skip), many rings a step,
  * each Newton step solved with a HODLR preconditioner (adhere/hodlr.h):
- * measured about 2 CPU s at sigma = 22.5 (1952 rings), 14-17 s at sigma =
- * 75 (8893 rings, 52 MB) and 31-34 s at sigma = 100 (12875 rings, 74 MB): up
+ * measured about 2 CPU s at sigma = 22.5 (1952 rings), 8-11 s at sigma =
+ * 75 (8893 rings, 58 MB) and 19 s at sigma = 100 (12875 rings, 84 MB): up
  * to sigma ~ 110 at the default turn, as far as it was measured (README
  * "The static curve at large sigma"). */
 #define ADH_GRID_STATIC_MAX_NODES 14000

@@ -143,7 +143,7 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
                  "sigma = %.3g: a resolved static curve needs a grid spacing of at most %.3g m (%.2g edge-zone "
                  "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps, "
                  "though they step the contact line over many rings at once, cost more with N: beyond N = %d "
-                 "(31-34 s on one core at sigma = 100, 12875 rings) it was not measured; use --mode=relax "
+                 "(19 s on one core at sigma = 100, 12875 rings) it was not measured; use --mode=relax "
                  "(resolved at this sigma), a stiffer material, or give -N/--spacing yourself with --force (the "
                  "run is then marked resolved 0 if the grid is coarser than the limit)",
                  d.sigma, limit, widths, adh_edge_zone(m), kind, nn, held, ADH_GRID_STATIC_MAX_NODES);
