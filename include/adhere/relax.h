@@ -30,7 +30,8 @@ int adh_relax_max_iter_check(long max_iter, char *why, size_t whylen);
 
 typedef struct adh_relax_settings {
     adh_mix_rule rule;
-    double momentum;     /* momentum rule: fraction of the previous update kept */
+    double momentum;     /* momentum rule: fraction of the previous update kept
+                            up to the reference stiffness (adh_relax_scaled_momentum) */
     double eps;          /* convergence: sqrt(sum (u_new - u_old)^2) / N < eps, m */
     double rtol;         /* and the central change |u_new(0) - u_old(0)| at most
                             rtol (|u(0)| + |d|) + eps/1000: the step's shift has relaxed */
@@ -55,6 +56,17 @@ int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t w
  * n nodes when deformations are up to `depth` (m): its rounding floor,
  * 256 DBL_EPSILON depth / sqrt(n). Below it every step would run to the cap. */
 double adh_relax_eps_floor(size_t n, double depth);
+
+/* The momentum rule's beta for the set one and a stiffness bound s: the
+ * set beta up to s = ADH_RELAX_MOMENTUM_REF (the stiffest contact of the
+ * paper's Figures 4, 7 and 8, where beta = 0.55 gives its 500-1000
+ * iterations per step), and above it the beta that keeps the slow modes'
+ * move per iteration, (1 + beta) / ((1 - beta) (1 + s)), at its value
+ * there, up to ADH_RELAX_MOMENTUM_MAX (never below the set beta; 0 stays
+ * 0). Within a step the beta in use never falls. */
+#define ADH_RELAX_MOMENTUM_REF 2500.0
+#define ADH_RELAX_MOMENTUM_MAX 0.97
+double adh_relax_scaled_momentum(double beta, double stiffness);
 
 typedef struct adh_relax adh_relax;
 
@@ -88,6 +100,8 @@ void adh_relax_restore(adh_relax *w, const adh_state *s);
 size_t adh_relax_step_iterations(const adh_relax *w);   /* since the last move */
 double adh_relax_change(const adh_relax *w);            /* last convergence measure, m */
 double adh_relax_mixing(const adh_relax *w);            /* current mixing ratio */
+double adh_relax_momentum(const adh_relax *w);          /* momentum rule: the beta in use */
+double adh_relax_stiffness(const adh_relax *w);         /* momentum rule: the stiffness bound in use */
 
 /* Recompute h and p from u at the current h0 (after restore or material change). */
 void adh_relax_refresh(adh_relax *w);

@@ -106,6 +106,81 @@ static void same_cycle(void)
     adh_grid_free(g);
 }
 
+/* The momentum rule's beta against the contact's stiffness: the set beta
+ * up to the reference, the slow modes' move per iteration held above it. */
+static void scaled_rule(void)
+{
+    double b = 0.55, ref = (1 + b) / ((1 - b) * (1 + ADH_RELAX_MOMENTUM_REF));
+    ok(adh_relax_scaled_momentum(b, 0) == b && adh_relax_scaled_momentum(b, 1000) == b &&
+           adh_relax_scaled_momentum(b, ADH_RELAX_MOMENTUM_REF) == b,
+       "beta is the set 0.55 up to the reference stiffness %g (Figures 4, 7, 8 unchanged)", ADH_RELAX_MOMENTUM_REF);
+    int held = 1, rising = 1;
+    double prev = b;
+    for (double st = 3000; st <= 40000; st *= 1.3) {
+        double x = adh_relax_scaled_momentum(b, st);
+        double move = (1 + x) / ((1 - x) * (1 + st));
+        held &= fabs(move - ref) < 1e-9 * ref;
+        rising &= x > prev;
+        prev = x;
+    }
+    ok(held, "above it the slow modes' move per iteration is held at its reference value");
+    ok(rising, "beta rises with the stiffness (%.4f at 40 000)", prev);
+    ok(adh_relax_scaled_momentum(b, 1e7) == ADH_RELAX_MOMENTUM_MAX, "beta stops at %.2f",
+       ADH_RELAX_MOMENTUM_MAX);
+    ok(adh_relax_scaled_momentum(0.99, 1e7) == 0.99 && adh_relax_scaled_momentum(0, 1e5) == 0,
+       "a set beta above the cap is kept, and no momentum stays none");
+}
+
+/* A soft contact on a coarse grid, stiffer than the reference: the rule
+ * raises beta as it says, never lowers it within a step, and still reaches
+ * the paper's rule's equilibrium. */
+static void stiff_contact(void)
+{
+    adh_material m = adh_material_default();
+    m.E /= 10; /* sigma = 75, on 10 nm nodes */
+    size_t n = 60;
+    adh_grid *g = adh_grid_alloc(n, 1.5e-6 / (double)n / 2.5);
+    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    double up[60], um[60];
+    size_t ip, im;
+    int rp = relax_at(g, k, &m, ADH_MIX_PAPER, 1e-13, -1e-9, up, &ip);
+    int rm = relax_at(g, k, &m, ADH_MIX_MOMENTUM, 1e-13, -1e-9, um, &im);
+    double worst = 0;
+    for (size_t i = 0; i < n; i++)
+        worst = fmax(worst, fabs(up[i] - um[i]));
+    ok(rp == ADH_SUCCESS && rm == ADH_SUCCESS && worst < 1e-11,
+       "stiff contact: both rules reach the same deformation (max |du| = %.2g m < 1e-11 m)", worst);
+    ok(im * 5 < ip, "stiff contact: momentum needs under a fifth of the paper's iterations (%zu vs %zu)", im, ip);
+
+    /* one more step, watched iteration by iteration */
+    adh_relax *w = adh_relax_alloc(g, k);
+    adh_relax_settings rs = adh_relax_settings_default();
+    rs.eps = 1e-13;
+    adh_relax_set(w, &m, &rs, 2e-9);
+    int rc = ADH_SUCCESS;
+    for (double x = 2e-9 - 0.05e-9; x > -1e-9 - 1e-15 && rc == ADH_SUCCESS; x -= 0.05e-9) {
+        adh_relax_move(w, x);
+        rc = adh_relax_iterate(w, 0);
+    }
+    adh_relax_move(w, -1.05e-9);
+    double beta = adh_relax_momentum(w);
+    int never_falls = 1, matches = 1;
+    do {
+        rc = adh_relax_iterate(w, 1);
+        double x = adh_relax_momentum(w), st = adh_relax_stiffness(w);
+        never_falls &= x >= beta;
+        matches &= x >= adh_relax_scaled_momentum(rs.momentum, st);
+        beta = x;
+    } while (rc == ADH_CONTINUE);
+    ok(rc == ADH_SUCCESS && adh_relax_stiffness(w) > ADH_RELAX_MOMENTUM_REF && beta > rs.momentum,
+       "stiff contact: stiffness %.0f above the reference, beta in use %.3f above the set %.2f",
+       adh_relax_stiffness(w), beta, rs.momentum);
+    ok(never_falls && matches, "within the step beta never falls and is at least the stiffness's");
+    adh_relax_free(w);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+}
+
 static void settings(void)
 {
     char why[256];
@@ -128,6 +203,8 @@ static void settings(void)
 int main(void)
 {
     settings();
+    scaled_rule();
+    stiff_contact();
     same_equilibrium();
     same_cycle();
     return tap_done();
