@@ -113,7 +113,7 @@ static void scaled_rule(void)
     double b = 0.55, ref = (1 + b) / ((1 - b) * (1 + ADH_RELAX_MOMENTUM_REF));
     ok(adh_relax_scaled_momentum(b, 0) == b && adh_relax_scaled_momentum(b, 1000) == b &&
            adh_relax_scaled_momentum(b, ADH_RELAX_MOMENTUM_REF) == b,
-       "beta is the set 0.55 up to the reference stiffness %g (Figures 4, 7, 8 unchanged)", ADH_RELAX_MOMENTUM_REF);
+       "beta is the set 0.55 up to the reference stiffness %g (Figures 4 and 8 unchanged)", ADH_RELAX_MOMENTUM_REF);
     int held = 1, rising = 1;
     double prev = b;
     for (double st = 3000; st <= 40000; st *= 1.3) {
