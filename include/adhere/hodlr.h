@@ -43,7 +43,8 @@ void adh_hodlr_solve(adh_hodlr *h, double *b);
 /* The same solve on single-precision copies of the factorization (made by
  * adh_hodlr_factorize): relative error ~1e-6, for a preconditioner, whose
  * own error (the blocks' tolerance) is larger; half the memory traffic of
- * adh_hodlr_solve, which is bound by it. */
+ * adh_hodlr_solve, which is bound by it. Where a factor or b does not fit
+ * in single precision, the double solve. */
 void adh_hodlr_solve_single(adh_hodlr *h, double *b);
 
 /* Sign of det A at the last factorization (+1 or -1). */

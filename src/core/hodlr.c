@@ -46,6 +46,7 @@ struct adh_hodlr {
     size_t max_rank;
     size_t bytes_w, bytes_f;
     float *bf; /* the right side of a single-precision solve */
+    int single; /* the single-precision copies hold every number (none past FLT_MAX) */
     double *work; /* dgetri's, 64 x the largest capacitance */
     size_t kmax;
 };
@@ -375,28 +376,36 @@ static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
     return info != 0 ? 1 : 0;
 }
 
-static void to_float(float *f, const double *x, size_t n)
+/* 0 when a number does not fit (a factor near singularity can pass FLT_MAX) */
+static int to_float(float *f, const double *x, size_t n)
 {
-    for (size_t i = 0; i < n; i++)
+    int fits = 1;
+    for (size_t i = 0; i < n; i++) {
         f[i] = (float)x[i];
+        fits &= isfinite(f[i]) || !isfinite(x[i]);
+    }
+    return fits;
 }
 
 int adh_hodlr_factorize(adh_hodlr *h, double alpha, const double *d)
 {
+    h->single = 0;
     int rc = factor_node(h, 0, alpha, d);
     if (rc != 0)
         return rc;
+    int fits = 1;
     for (size_t i = 0; i < h->nnodes; i++) {
         node *b = &h->nodes[i];
         if (b->c[0] < 0) {
-            to_float(b->Alf, b->Al, b->n * b->n);
+            fits &= to_float(b->Alf, b->Al, b->n * b->n);
             continue;
         }
         size_t n0 = b->n0, n1 = b->n - n0, my = b->k01 * n0 + b->k10 * n1, mv = b->k01 * n1 + b->k10 * n0;
-        to_float(b->Yf, b->Y0, my); /* Y0 and Y1 are one block, as Vt01 and Vt10 */
-        to_float(b->Yf + my, b->Vt01, mv);
-        to_float(b->Yf + my + mv, b->S, (b->k01 + b->k10) * (b->k01 + b->k10));
+        fits &= to_float(b->Yf, b->Y0, my); /* Y0 and Y1 are one block, as Vt01 and Vt10 */
+        fits &= to_float(b->Yf + my, b->Vt01, mv);
+        fits &= to_float(b->Yf + my + mv, b->S, (b->k01 + b->k10) * (b->k01 + b->k10));
     }
+    h->single = fits;
     return 0;
 }
 
@@ -437,7 +446,10 @@ static void solve_node_f(adh_hodlr *h, int id, float *B)
 
 void adh_hodlr_solve_single(adh_hodlr *h, double *b)
 {
-    to_float(h->bf, b, h->n);
+    if (!h->single || !to_float(h->bf, b, h->n)) {
+        solve_node(h, 0, b, h->n, 1);
+        return;
+    }
     solve_node_f(h, 0, h->bf);
     for (size_t i = 0; i < h->n; i++)
         b[i] = h->bf[i];

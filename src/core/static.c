@@ -121,7 +121,7 @@ struct adh_static {
     int det_b_sign;   /* sign of det B, invariant along the curve */
     size_t attempt;   /* step attempts so far (stamps the factorizations) */
 
-    double *G, *du, *y, *t, *t2, *upred, *scratch, *rG, *bG, *dx, *Dc, *gc, *zero, *gz, *V, *Z;
+    double *G, *du, *y, *t, *t2, *upred, *scratch, *rG, *bG, *Dc, *gc, *zero, *V, *Z;
     double act;       /* active-set threshold in use (lowered when the
                          preconditioned solve stops contracting) */
     double ds;
@@ -263,10 +263,10 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     w->colnorm = calloc(2 * n, sizeof *w->colnorm);
     w->st = adh_state_alloc(n);
     w->trial = adh_state_alloc(n);
-    /* G, du, y, t, t2, upred, scratch, tau_u, tau_u_new, rG, bG, dx, Dc, gc,
-     * zero, gz, Dst, gst, Dtr, gtr, u1, u2, x2: n + 1 each; the GMRES basis
+    /* G, du, y, t, t2, upred, scratch, tau_u, tau_u_new, rG, bG, Dc, gc,
+     * zero, Dst, gst, Dtr, gtr, u1, u2, x2: n + 1 each; the GMRES basis
      * and its preconditioned vectors */
-    w->G = calloc(23 * (n + 1) + (2 * ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
+    w->G = calloc(21 * (n + 1) + (2 * ADH_GMRES_MAX + 1) * (n + 1), sizeof *w->G);
     w->folds = malloc(ADH_STATIC_MAX_FOLDS * sizeof *w->folds);
     int bad = !(w->W || w->hw) || !w->colnorm || !w->st || !w->trial || !w->G || !w->folds;
     if (!bad)
@@ -277,11 +277,11 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     }
     w->shape = w->colnorm + n;
     double **bufs[] = { &w->G, &w->du, &w->y, &w->t, &w->t2, &w->upred, &w->scratch, &w->tau_u,
-                        &w->tau_u_new, &w->rG, &w->bG, &w->dx, &w->Dc, &w->gc, &w->zero, &w->gz,
+                        &w->tau_u_new, &w->rG, &w->bG, &w->Dc, &w->gc, &w->zero,
                         &w->Dst, &w->gst, &w->Dtr, &w->gtr, &w->u1, &w->u2, &w->x2 };
     for (size_t i = 1; i < sizeof bufs / sizeof *bufs; i++)
         *bufs[i] = w->G + i * (n + 1);
-    w->V = w->G + 23 * (n + 1);
+    w->V = w->G + 21 * (n + 1);
     w->Z = w->V + (ADH_GMRES_MAX + 1) * (n + 1);
     for (size_t i = 0; i < n && w->W; i++)
         for (size_t j = 0; j < n; j++) {

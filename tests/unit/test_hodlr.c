@@ -100,6 +100,12 @@ int main(void)
         adh_hodlr_solve_single(h, yd);
         ok(maxrel(yd, y, n) < 1e-4 && maxrel(yd, y, n) > 0,
            "single-precision solve (edge bump %g) within 1e-4 of the double one (%.1e)", scale, maxrel(yd, y, n));
+        /* a right side single precision cannot hold: the double solve */
+        for (size_t i = 0; i < n; i++)
+            y[i] = yd[i] = 1e300 * v[i];
+        adh_hodlr_solve(h, y);
+        adh_hodlr_solve_single(h, yd);
+        ok(memcmp(y, yd, n * sizeof *y) == 0, "single-precision solve of a right side past FLT_MAX: the double one");
     }
     free(W), free(v);
     adh_hodlr_free(h);
