@@ -43,7 +43,7 @@ struct adh_relax {
     size_t since_estimate;
     double best_change;   /* smallest change since the momentum last restarted */
     double damping;       /* momentum rule: part of the safe ratio in use, (0, 1] */
-    double beta;          /* momentum rule: the beta in use (scaled_beta) */
+    double beta;          /* momentum rule: the beta in use (adh_relax_scaled_momentum) */
     double prev_central;  /* previous unmixed central change; 0 = none yet */
     double change;
     int converged;     /* the last pass found the step done */
