@@ -33,7 +33,7 @@ double adh_grid_spacing_for(const adh_material *m, size_t n);
  * equilibrium curve, whose exact folds feel the lattice more. */
 typedef enum adh_grid_use { ADH_GRID_RELAX = 0, ADH_GRID_STATIC = 1 } adh_grid_use;
 
-/* The resolution limits, from the measured study in README ("Resolution"):
+/* The resolution limits, from the measured study in docs/convergence.md ("Resolution"):
  * pull-off, jump-in and hysteresis within 1 % of their grid-converged
  * values need a spacing of at most this many edge-zone widths
  * l = (243 pi^2/128) E z0^4 / A ~ 0.37 sqrt(R z0) / sigma. */
@@ -81,8 +81,8 @@ void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t le
  * each Newton step solved with a HODLR preconditioner (adhere/hodlr.h):
  * measured about 2 CPU s at sigma = 22.5 (1952 rings), 8-11 s at sigma =
  * 75 (8893 rings, 58 MB) and 19 s at sigma = 100 (12875 rings, 84 MB): up
- * to sigma ~ 110 at the default turn, as far as it was measured (README
- * "The static curve at large sigma"). */
+ * to sigma ~ 110 at the default turn, as far as it was measured
+ * (docs/static-curve.md). */
 #define ADH_GRID_STATIC_MAX_NODES 14000
 
 /* The grid a run gets when neither N nor the spacing is given. */

@@ -2,7 +2,7 @@
  * separated node clusters stored low-rank (ACA+ to a tolerance), the near
  * field dense. O(N log N) memory and product where a dense matrix is N^2.
  * The core's kernel uses it as its hmat storage (adhere/kernel.h; its h2
- * storage, adhere/h2.h, holds less and is faster: README). */
+ * storage, adhere/h2.h, holds less and is faster: docs/grids-and-operators.md). */
 #ifndef ADHERE_HMATRIX_H
 #define ADHERE_HMATRIX_H
 

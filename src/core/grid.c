@@ -77,7 +77,7 @@ static double contact_estimate(const adh_material *m, double deepest)
 }
 
 /* MB a kernel holds: dense N^2 doubles, or as H^2 ~1.3 kB a ring
- * (measured: README, "Graded grids and kernel operators") */
+ * (measured: docs/grids-and-operators.md) */
 static double held_mb(int hierarchical, double nodes)
 {
     return hierarchical ? 1.3e3 * nodes / 1048576.0 : nodes * nodes * sizeof(double) / 1048576.0;

@@ -54,7 +54,7 @@ struct adh_h2 {
 
 adh_h2_settings adh_h2_settings_default(void)
 {
-    /* Measured (README, "Graded grids and kernel operators"), ring kernel,
+    /* Measured (docs/grids-and-operators.md), ring kernel,
      * uniform and graded grids: 12 nodes keep the product within ~5e-12 of
      * the dense one (14: ~1e-13, 10: ~1e-10), a thousandth of the 1e-8 its
      * tests ask (test_operator.c), and fill whole vectors (14 are padded to 16): the

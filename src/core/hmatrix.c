@@ -31,7 +31,7 @@ static void iface_init(void)
 
 adh_hmatrix_settings adh_hmatrix_settings_default(void)
 {
-    /* Measured (README, "Kernel operators"), ring kernel, uniform grid: the
+    /* Measured (docs/grids-and-operators.md), ring kernel, uniform grid: the
      * product within 3e-11 of the dense one at N = 10^4 and 3e-9 at 10^5.
      * Weak (HODLR) admissibility holds 10 % less but misses 1e-8 at 10^5;
      * leaves of 32 or 128 nodes are slower than 64. */

@@ -1,4 +1,4 @@
-/* One point of the grid-resolution study (README, "Resolution"): a load and
+/* One point of the grid-resolution study (docs/convergence.md, "Resolution"): a load and
  * unload cycle at a given sigma on a uniform grid of spacing x edge-zone
  * widths, in the relaxation or the static mode. With normal lengths in z0
  * and lateral ones in sqrt(R z0) the problem depends on sigma alone, so R,

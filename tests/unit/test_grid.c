@@ -1,5 +1,5 @@
 /* The grid's resolution check and the automatic grid (adh_grid_check,
- * adh_grid_choose), and one cheap point of the resolution study in README:
+ * adh_grid_choose), and one cheap point of the resolution study in docs/convergence.md:
  * at the limit the pull-off and hysteresis are within 1 % of a grid four
  * times finer, and a grid of one edge-zone width is not. */
 #include <math.h>

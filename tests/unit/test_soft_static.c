@@ -3,7 +3,7 @@
  * preconditioner, steps over the lattice folds): its pull-off within 1 % of
  * the same curve on a grid a third finer (grid-converged to that) and
  * within 3 % of Maugis-Dugdale, its folds reported, at sigma = 15 and 30
- * (lambda 22 and 44). README "The static curve at large sigma" has sigma =
+ * (lambda 22 and 44). docs/static-curve.md has sigma =
  * 15 ... 100 measured, and bench-static_soft times sigma = 75 and 100. */
 #include <math.h>
 #include <stdlib.h>
