@@ -105,19 +105,12 @@ static void closing_line(const adh_config *cfg, const adh_run *run, const adh_st
         fprintf(stderr, "the force table went to standard output\n");
 }
 
-int cli_batch_main(const cli_options *cli)
+/* One run (no sweep) into od (NULL: the force table on standard output). */
+static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
 {
     const adh_config *cfg = &cli->cfg;
-    double t_start = adh_clock_seconds();
     char why[1024];
-    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
-    /* a directory never mixes two runs: the earlier run's files go first */
-    if (out && (adh_outdir_make(out, why, sizeof why) != 0 || adh_outdir_clear(out, why, sizeof why) != 0)) {
-        fprintf(stderr, "adhere: %s\n", why);
-        return CLI_EXIT_USAGE;
-    }
-    if (cfg->sweep.kind != ADH_SWEEP_NONE)
-        return cli_sweep_main(cli);
+    const char *out = od ? adh_outdir_path(od) : NULL;
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
     int rigid = cfg->mode == ADH_MODE_RIGID;
     adh_grid *g = rigid ? NULL : adh_config_grid_alloc(cfg);
@@ -242,7 +235,7 @@ int cli_batch_main(const cli_options *cli)
         for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
             if (!tab[i].want)
                 continue;
-            if (adh_outdir_write(out, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
+            if (adh_outdir_write(od, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = CLI_EXIT_USAGE;
                 cli_tables_names_add(unwritten, sizeof unwritten, tab[i].name);
@@ -256,7 +249,7 @@ int cli_batch_main(const cli_options *cli)
             cli_ready_phase("plot");
             adh_plot_setup ps;
             cli_plotsetup_fill(cfg, g, &ps);
-            int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
+            int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, od, msg, sizeof msg, missing,
                                       sizeof missing);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
@@ -265,7 +258,7 @@ int cli_batch_main(const cli_options *cli)
             cli_tables_names_add(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
             if (!cli_interrupt_signal() &&
-                cli_figures_run(cfg, &run, out, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
+                cli_figures_run(cfg, &run, od, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", fig);
                 if (status == CLI_EXIT_OK)
                     status = CLI_EXIT_PLOT;
@@ -285,7 +278,9 @@ int cli_batch_main(const cli_options *cli)
             }
         }
         tables.unwritten = unwritten;
-        if (adh_outdir_write(out, "summary.tsv", cli_tables_summary, &tables, why, sizeof why) != 0) {
+        if (cli_interrupt_signal() && !partial)
+            tables.status = "interrupted";   /* while plotting: the figures not written are named */
+        if (adh_outdir_write(od, "summary.tsv", cli_tables_summary, &tables, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             status = CLI_EXIT_USAGE;
         }
@@ -302,4 +297,22 @@ int cli_batch_main(const cli_options *cli)
     adh_kernel_free(k);
     adh_grid_free(g);
     return status;
+}
+
+int cli_batch_main(const cli_options *cli)
+{
+    const adh_config *cfg = &cli->cfg;
+    double t_start = adh_clock_seconds();
+    char why[1024];
+    adh_outdir *od = NULL;
+    /* a directory never mixes two runs: the earlier run's files go first,
+     * and another's files under adhere's names refuse it */
+    if (cfg->out_dir[0] &&
+        !(od = adh_outdir_open(cfg->out_dir, cfg->overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return CLI_EXIT_USAGE;
+    }
+    int rc = cfg->sweep.kind != ADH_SWEEP_NONE ? cli_sweep_main(cli, od) : run_batch(cli, od, t_start);
+    adh_outdir_close(od);
+    return rc;
 }

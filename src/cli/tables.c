@@ -14,11 +14,31 @@
 
 #define VERSION_LINE "# adhere " ADH_VERSION "\n"
 
+void cli_tables_comment(FILE *f, const char *key, const char *value)
+{
+    fprintf(f, "# %s: ", key);
+    for (const unsigned char *p = (const unsigned char *)value; *p; p++) {
+        if (*p == '\\')
+            fputs("\\\\", f);
+        else if (*p == '\n')
+            fputs("\\n", f);
+        else if (*p == '\r')
+            fputs("\\r", f);
+        else if (*p == '\t')
+            fputs("\\t", f);
+        else if (*p < 0x20 || *p == 0x7f)
+            fprintf(f, "\\x%02x", *p);
+        else
+            fputc(*p, f);
+    }
+    fputc('\n', f);
+}
+
 static void comment_head(FILE *f, const cli_tables *t, const char *what)
 {
     fprintf(f, VERSION_LINE "# %s, SI units (m, N, Pa, J, s, rad)\n", what);
     if (t->cfg->scene[0])
-        fprintf(f, "# scene: %s\n", t->cfg->scene);
+        cli_tables_comment(f, "scene", t->cfg->scene);
     if (t->partial)
         fprintf(f, "# PARTIAL: %s\n", t->note ? t->note : "the run did not finish");
 }
