@@ -28,6 +28,7 @@
 #include "plot/outdir.h"
 #include "plot/plot.h"
 #include "plot/session.h"
+#include "scene/budget.h"
 
 char *openblas_get_config(void) __attribute__((weak));   /* none in the reference BLAS */
 static const char *blas_config(void)
@@ -265,6 +266,33 @@ static int plot_cost(const cost_job *job, adh_outdir *out, char *msg, size_t len
     return rc != 0 ? 3 : 0;
 }
 
+static int cost_jobs(void)
+{
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    return cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
+}
+
+/* Memory before anything is allocated: the runs in parallel hold a dense
+ * kernel each (the report measures dense kernels), beside the static
+ * curve's kernel and solver at the finest N. 0, or -1 with why. */
+static int cost_budget(const adh_config *cfg, const size_t *nodes, size_t nnodes, char *why, size_t whylen)
+{
+    adh_config big = *cfg;
+    big.nodes = 0;
+    for (size_t a = 0; a < nnodes; a++)
+        big.nodes = nodes[a] > big.nodes ? nodes[a] : big.nodes;
+    big.storage = ADH_STORAGE_DENSE;
+    big.graded = 0;
+    double n = (double)big.nodes, jobs = cost_jobs();
+    double need = adh_budget_bytes(&big, 1) + jobs * 8.0 * n * n, have = adh_budget_machine_bytes();
+    if (need <= have)
+        return 0;
+    snprintf(why, whylen, "--cost: its runs at N = %zu would hold about %.3g GB at once (%g in parallel, a dense "
+             "kernel each, beside the static curve's solver), more than the %.3g GB this process may use: use "
+             "smaller --cost-nodes", big.nodes, need / 1e9, jobs, have / 1e9);
+    return -1;
+}
+
 static int by_cost(const void *a, const void *b)
 {
     /* the most expensive first, so two workers finish together */
@@ -309,6 +337,11 @@ int cli_cost_main(const cli_options *cli)
                 }
                 m++;
             }
+    if (cost_budget(cfg, nodes, nnodes, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        free(runs);
+        return CLI_EXIT_USAGE;
+    }
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
     adh_outdir *od = out ? adh_outdir_open(out, cfg->overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why) : NULL;
     if (out && !od) {
@@ -321,7 +354,7 @@ int cli_cost_main(const cli_options *cli)
     cli_interrupt_catch();
     cli_ready_phase("cost");
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    int jobs = cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
+    int jobs = cost_jobs();
     cost_job job = { .cfg = cfg, .runs = runs, .n = n };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();

@@ -9,6 +9,7 @@
 #include "cli/cost.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
+#include "scene/budget.h"
 #include "scene/config.h"
 #include "scene/measured.h"
 #include "scene/plan.h"
@@ -71,6 +72,15 @@ int main(int argc, char **argv)
     }
     /* --cost replaces N and eps and checks each of its runs itself. */
     if (cli.action != CLI_ACT_COST && cli_options_validate(&cli.cfg, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return CLI_EXIT_USAGE;
+    }
+    /* Memory for the grid, whichever it is, before anything is allocated:
+     * the operator that fits, or a refusal with the estimate. A static
+     * curve holds its own solver; a sweep solves one per thread. */
+    unsigned solvers = cli.cfg.mode == ADH_MODE_STATIC ? (unsigned)adh_plan_jobs(&cli.cfg)
+                     : cli.reference[0] ? 1 : 0;
+    if (cli.action != CLI_ACT_COST && adh_budget_check(&cli.cfg, solvers, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return CLI_EXIT_USAGE;
     }
