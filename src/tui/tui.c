@@ -960,6 +960,10 @@ static void screen_close(tui *t)
 static int locale_utf8(int headless)
 {
     setlocale(LC_ALL, "");
+    /* One numeric locale, C's, wherever numbers are read or written (the
+     * tables, gnuplot's commands and data, :set E 0.5GPa): a decimal comma
+     * would break all three. The terminal keeps its LC_CTYPE. */
+    setlocale(LC_NUMERIC, "C");
     if (strcmp(nl_langinfo(CODESET), "UTF-8") == 0)
         return 1;
     /* A replay's screen is written as UTF-8 text whatever the caller's
