@@ -78,9 +78,13 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
 static void closing_line(const adh_config *cfg, const adh_run *run, const adh_static_result *sres,
                          double seconds, const char *out, const char *tables, const char *plots)
 {
-    char t[32], F[64] = "", in[64] = "", jo[64] = "";
+    char t[32], F[64] = "", in[64] = "", jo[64] = "", why[512];
     double pull = NAN, jin = run->jump_in_h0, jout = NAN;
-    if (cfg->mode == ADH_MODE_STATIC) {
+    adh_derived d;
+    adh_material_derive(&cfg->mat, &d);
+    if (cfg->mode != ADH_MODE_RIGID && !adh_run_touched(run, d.h_star, why, sizeof why)) {
+        /* no contact: the lowest force is only the force at the turn */
+    } else if (cfg->mode == ADH_MODE_STATIC) {
         pull = sres->pulloff_F;
         jin = sres->jump_in_h0;
         jout = sres->jump_out_h0;
@@ -193,7 +197,10 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     if (note[0])
         fprintf(stderr, "adhere: %s\n", note);
     char sep[512];
-    if (status == CLI_EXIT_OK && !adh_run_separated(&run, sep, sizeof sep))
+    adh_derived der;
+    adh_material_derive(&cfg->mat, &der);
+    int touched = rigid || adh_run_touched(&run, der.h_star, sep, sizeof sep);
+    if (status == CLI_EXIT_OK && (!touched || !adh_run_separated(&run, sep, sizeof sep)))
         fprintf(stderr, "adhere: incomplete: %s (summary.tsv: complete 0)\n", sep);
     /* Steps at the cap change what the numbers mean: said even under -q, and
      * the run's status, unless --allow-unconverged asked for them. */

@@ -149,10 +149,11 @@ int cli_tables_summary(FILE *f, const void *ctx)
     /* an interrupted run stopped mid-way: its last step may be anywhere */
     kv(f, "converged", (r->unconverged == 0 && r->status == ADH_SUCCESS && !r->interrupted) ? 1 : 0);
     char why[512];
-    int separated = adh_run_separated(r, why, sizeof why);
+    int touched = rigid || adh_run_touched(r, d.h_star, why, sizeof why);
+    int separated = !touched || adh_run_separated(r, why, sizeof why);
     int lost = t->unwritten && *t->unwritten;
-    kv(f, "complete", t->partial || !separated || lost ? 0 : 1);
-    if (!separated && !t->partial)
+    kv(f, "complete", t->partial || !touched || !separated || lost ? 0 : 1);
+    if ((!touched || !separated) && !t->partial)
         fprintf(f, "# INCOMPLETE: %s\n", why);
     if (lost)
         fprintf(f, "not_written\t%s\n", t->unwritten);
@@ -160,7 +161,8 @@ int cli_tables_summary(FILE *f, const void *ctx)
      * separated, every file of which was written */
     const char *word = t->status ? t->status : cli_tables_status_word(r);
     if (!strcmp(word, "success"))
-        word = !separated ? "not separated" : !(rigid || gr.resolved) ? "unresolved" : lost ? "output incomplete" : word;
+        word = !touched ? "no contact" : !separated ? "not separated" : !(rigid || gr.resolved) ? "unresolved"
+             : lost ? "output incomplete" : word;
     fprintf(f, "status\t%s\n", word);
     return 0;
 }
