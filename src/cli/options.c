@@ -45,7 +45,7 @@ static const option_doc options[] = {
     { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M|auto", "graded grid: radius of the fine band (default, auto: 1.25 x the contact expected at the deepest turn, JKR or overlap)" },
     { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)" },
     { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M|auto", "graded grid: outer radius Rmax (default, auto: the default uniform grid's, 1.5um at R=10um, z0=0.5nm)" },
-    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat|h2", "how the kernel is held: dense matrix, hierarchical by hmat-oss, or H^2 (default dense; h2 on an automatic graded grid)" },
+    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat|h2", "how the kernel is held: dense matrix, hierarchical by hmat-oss, or H^2 (default dense; h2 past 4000 nodes and on an automatic graded grid)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
     { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)" },
