@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "adhere/grid.h"
 #include "cli/batch.h"
 #include "cli/cost.h"
 #include "cli/interrupt.h"
@@ -84,6 +85,14 @@ int main(int argc, char **argv)
         fprintf(stderr, "adhere: %s\n", why);
         return CLI_EXIT_USAGE;
     }
+    /* the time: a dense product reads all N^2 numbers every iteration */
+    size_t nodes = adh_budget_nodes(&cli.cfg);
+    if (cli.action != CLI_ACT_COST && !cli.cfg.quiet && cli.cfg.mode != ADH_MODE_RIGID &&
+        cli.cfg.storage == ADH_STORAGE_DENSE && nodes > ADH_GRID_MAX_NODES)
+        fprintf(stderr, "adhere: note: --operator=dense on %zu nodes: every relaxation iteration reads the whole "
+                "%.3g GB kernel, %.3g times the work at the dense budget's %d nodes; --operator=h2 holds it in "
+                "O(N)\n", nodes, 8e-9 * (double)nodes * (double)nodes,
+                ((double)nodes / ADH_GRID_MAX_NODES) * ((double)nodes / ADH_GRID_MAX_NODES), ADH_GRID_MAX_NODES);
     /* The solvers poll the interrupt flag through their cancel hook: a
      * signal is heard inside a step, not only between steps. */
     cli.cfg.relax.cancel = cli_interrupt_flag();

@@ -9,6 +9,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -107,12 +108,12 @@ static int owned_temporary(const char *name)
 static void random6(char *out)
 {
     static const char set[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
-    static unsigned long long counter;
+    static _Atomic unsigned long long counter;   /* a sweep's threads write at once */
     struct timespec ts;
     clock_gettime(CLOCK_REALTIME, &ts);
     unsigned long long x = (unsigned long long)ts.tv_nsec ^ ((unsigned long long)ts.tv_sec << 30) ^
                            ((unsigned long long)getpid() << 16) ^ (uintptr_t)out ^
-                           (++counter * 0x9E3779B97F4A7C15ULL);
+                           ((atomic_fetch_add(&counter, 1) + 1) * 0x9E3779B97F4A7C15ULL);
     for (int i = 0; i < 6; i++) {
         x ^= x << 13, x ^= x >> 7, x ^= x << 17;
         out[i] = set[x % 62];
@@ -622,7 +623,12 @@ int adh_outdir_log_open(adh_outdir *d, const char *name, char *why, size_t whyle
         not_replaced(d, name, why, whylen);
         return -1;
     }
-    unlinkat(d->fd, name, 0);   /* an earlier log of this run's: each holds one session's complaints */
+    /* an earlier log of this run's goes (each holds one session's
+     * complaints), and with it its record */
+    unlinkat(d->fd, name, 0);
+    for (size_t i = d->n; i-- > 0;)
+        if (!strcmp(d->e[i].name, name))
+            drop_entry(d, i);
     int fd = openat(d->fd, name, O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_APPEND | O_CLOEXEC, 0666);
     struct stat st;
     if (fd < 0 || fstat(fd, &st) != 0 || add_entry(d, name, &st, 1) != 0 || save(d) != 0) {
@@ -639,13 +645,16 @@ void adh_outdir_log_close(adh_outdir *d, const char *name, int fd)
     struct stat st, now;
     if (fd < 0)
         return;
-    if (fstat(fd, &st) == 0 && st.st_size == 0 && fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 &&
-        now.st_dev == st.st_dev && now.st_ino == st.st_ino) {
-        long i = find(d, name, &now);
-        if (i >= 0 && unlinkat(d->fd, name, 0) == 0) {
-            drop_entry(d, (size_t)i);
-            save(d);
-        }
+    long i = -1;
+    if (fstat(fd, &st) == 0 && fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 &&
+        now.st_dev == st.st_dev && now.st_ino == st.st_ino)
+        i = find(d, name, &now);
+    if (i >= 0) {
+        /* empty: removed; else recorded as it ends, size and time too */
+        drop_entry(d, (size_t)i);
+        if (st.st_size > 0 || unlinkat(d->fd, name, 0) != 0)
+            add_entry(d, name, &now, 0);
+        save(d);
     }
     close(fd);
 }
