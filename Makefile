@@ -14,7 +14,7 @@ WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wformat-truncation=2
 PKGS     = gsl ncursesw inih openblas
 DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux \
            liblapack-dev libblas-dev \
-           clang libclang-rt-14-dev libhmat-oss-dev
+           clang libclang-rt-14-dev libhmat-oss-dev locales
 
 # GSL through OpenBLAS's CBLAS and LAPACK (dgetrf), not the reference
 # gslcblas: several times faster on the dense kernel products and LU that

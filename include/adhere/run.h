@@ -57,6 +57,12 @@ const adh_turn_result *adh_run_main_turn(const adh_run *run);
  * without unloading branches is not asked to separate: 1. */
 int adh_run_separated(const adh_run *run, char *why, size_t whylen);
 
+/* Whether the surfaces came into contact (a row with a contact radius): 1,
+ * or 0 with a sentence in why naming where the drive turned and that jump-in,
+ * pull-off and jump-out are then not measured, with what to change (a turn
+ * below h_star, eq 24's gap at the jump). An empty run is not asked: 1. */
+int adh_run_touched(const adh_run *run, double h_star, char *why, size_t whylen);
+
 /* The row index that follows / precedes row i on the same path, or -1. */
 long adh_run_next_on_path(const adh_run *run, size_t i);
 long adh_run_prev_on_path(const adh_run *run, size_t i);

@@ -78,9 +78,13 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
 static void closing_line(const adh_config *cfg, const adh_run *run, const adh_static_result *sres,
                          double seconds, const char *out, const char *tables, const char *plots)
 {
-    char t[32], F[64] = "", in[64] = "", jo[64] = "";
+    char t[32], F[64] = "", in[64] = "", jo[64] = "", why[512];
     double pull = NAN, jin = run->jump_in_h0, jout = NAN;
-    if (cfg->mode == ADH_MODE_STATIC) {
+    adh_derived d;
+    adh_material_derive(&cfg->mat, &d);
+    if (cfg->mode != ADH_MODE_RIGID && !adh_run_touched(run, d.h_star, why, sizeof why)) {
+        /* no contact: the lowest force is only the force at the turn */
+    } else if (cfg->mode == ADH_MODE_STATIC) {
         pull = sres->pulloff_F;
         jin = sres->jump_in_h0;
         jout = sres->jump_out_h0;
@@ -105,19 +109,12 @@ static void closing_line(const adh_config *cfg, const adh_run *run, const adh_st
         fprintf(stderr, "the force table went to standard output\n");
 }
 
-int cli_batch_main(const cli_options *cli)
+/* One run (no sweep) into od (NULL: the force table on standard output). */
+static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
 {
     const adh_config *cfg = &cli->cfg;
-    double t_start = adh_clock_seconds();
     char why[1024];
-    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
-    /* a directory never mixes two runs: the earlier run's files go first */
-    if (out && (adh_outdir_make(out, why, sizeof why) != 0 || adh_outdir_clear(out, why, sizeof why) != 0)) {
-        fprintf(stderr, "adhere: %s\n", why);
-        return CLI_EXIT_USAGE;
-    }
-    if (cfg->sweep.kind != ADH_SWEEP_NONE)
-        return cli_sweep_main(cli);
+    const char *out = od ? adh_outdir_path(od) : NULL;
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
     int rigid = cfg->mode == ADH_MODE_RIGID;
     adh_grid *g = rigid ? NULL : adh_config_grid_alloc(cfg);
@@ -200,7 +197,10 @@ int cli_batch_main(const cli_options *cli)
     if (note[0])
         fprintf(stderr, "adhere: %s\n", note);
     char sep[512];
-    if (status == CLI_EXIT_OK && !adh_run_separated(&run, sep, sizeof sep))
+    adh_derived der;
+    adh_material_derive(&cfg->mat, &der);
+    int touched = rigid || adh_run_touched(&run, der.h_star, sep, sizeof sep);
+    if (status == CLI_EXIT_OK && (!touched || !adh_run_separated(&run, sep, sizeof sep)))
         fprintf(stderr, "adhere: incomplete: %s (summary.tsv: complete 0)\n", sep);
     /* Steps at the cap change what the numbers mean: said even under -q, and
      * the run's status, unless --allow-unconverged asked for them. */
@@ -242,7 +242,7 @@ int cli_batch_main(const cli_options *cli)
         for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
             if (!tab[i].want)
                 continue;
-            if (adh_outdir_write(out, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
+            if (adh_outdir_write(od, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = CLI_EXIT_USAGE;
                 cli_tables_names_add(unwritten, sizeof unwritten, tab[i].name);
@@ -256,7 +256,7 @@ int cli_batch_main(const cli_options *cli)
             cli_ready_phase("plot");
             adh_plot_setup ps;
             cli_plotsetup_fill(cfg, g, &ps);
-            int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, out, msg, sizeof msg, missing,
+            int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, od, msg, sizeof msg, missing,
                                       sizeof missing);
             if (prc != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", msg);
@@ -265,7 +265,7 @@ int cli_batch_main(const cli_options *cli)
             cli_tables_names_add(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
             if (!cli_interrupt_signal() &&
-                cli_figures_run(cfg, &run, out, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
+                cli_figures_run(cfg, &run, od, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", fig);
                 if (status == CLI_EXIT_OK)
                     status = CLI_EXIT_PLOT;
@@ -285,7 +285,9 @@ int cli_batch_main(const cli_options *cli)
             }
         }
         tables.unwritten = unwritten;
-        if (adh_outdir_write(out, "summary.tsv", cli_tables_summary, &tables, why, sizeof why) != 0) {
+        if (cli_interrupt_signal() && !partial)
+            tables.status = "interrupted";   /* while plotting: the figures not written are named */
+        if (adh_outdir_write(od, "summary.tsv", cli_tables_summary, &tables, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             status = CLI_EXIT_USAGE;
         }
@@ -302,4 +304,22 @@ int cli_batch_main(const cli_options *cli)
     adh_kernel_free(k);
     adh_grid_free(g);
     return status;
+}
+
+int cli_batch_main(const cli_options *cli)
+{
+    const adh_config *cfg = &cli->cfg;
+    double t_start = adh_clock_seconds();
+    char why[1024];
+    adh_outdir *od = NULL;
+    /* a directory never mixes two runs: the earlier run's files go first,
+     * and another's files under adhere's names refuse it */
+    if (cfg->out_dir[0] &&
+        !(od = adh_outdir_open(cfg->out_dir, cfg->overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return CLI_EXIT_USAGE;
+    }
+    int rc = cfg->sweep.kind != ADH_SWEEP_NONE ? cli_sweep_main(cli, od) : run_batch(cli, od, t_start);
+    adh_outdir_close(od);
+    return rc;
 }

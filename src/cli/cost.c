@@ -27,7 +27,8 @@
 #include "plot/labels.h"
 #include "plot/outdir.h"
 #include "plot/plot.h"
-#include "plot/png.h"
+#include "plot/session.h"
+#include "scene/budget.h"
 
 char *openblas_get_config(void) __attribute__((weak));   /* none in the reference BLAS */
 static const char *blas_config(void)
@@ -200,21 +201,18 @@ static int write_cost(FILE *f, const void *ctx)
     return 0;
 }
 
-/* cost.png: error against wall time, log-log, one curve per (N, kernel). */
-static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len)
+/* cost.png: error against wall time, log-log, one curve per (N, kernel).
+ * 0, or 3 (exit status) with msg. */
+static int plot_cost(const cost_job *job, adh_outdir *out, char *msg, size_t len)
 {
-    char cfg_style[PATH_MAX];
-    if (adh_plot_style_file(job->cfg->gnuplot_style, cfg_style, sizeof cfg_style, msg, len) < 0)
-        return 2;
-    char log[PATH_MAX + 32], data[PATH_MAX + 32], png[PATH_MAX + 32], tmp[PATH_MAX + 48];
-    snprintf(log, sizeof log, "%s/gnuplot.log", dir);
-    snprintf(data, sizeof data, "%s/.cost-plot.%ld.dat", dir, (long)getpid());
-    snprintf(png, sizeof png, "%s/cost.png", dir);
-    snprintf(tmp, sizeof tmp, "%s/.cost.png.%ld.tmp", dir, (long)getpid());
-    FILE *f = fopen(data, "w");
+    adh_session ses;
+    if (adh_session_open(&ses, out, "gnuplot.log", job->cfg->gnuplot_style, job->cfg->relax.cancel, msg, len) != 0)
+        return 3;
+    char data[PATH_MAX + 32];
+    FILE *f = adh_session_data(&ses, "cost.dat", data, sizeof data, msg, len);
     if (!f) {
-        snprintf(msg, len, "cannot write %.900s", data);
-        return 2;
+        adh_session_close(&ses);
+        return 3;
     }
     /* one block per series, blank-line separated, for gnuplot's `index` */
     size_t nseries = 0;
@@ -236,19 +234,19 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
         fprintf(f, "\n\n");
         nseries++;
     }
-    fclose(f);
-    adh_gnuplot *gp = adh_gnuplot_open(log, msg, len);
-    if (!gp) {
-        unlink(data);
+    int bad = ferror(f);
+    if ((fclose(f) != 0) | bad) {
+        snprintf(msg, len, "cannot write %.900s", data);
+        adh_session_close(&ses);
         return 3;
     }
     char q[ADH_GP_PATH_SIZE];
     adh_gp_path(data, q, sizeof q);
-    adh_png_begin(gp, cfg_style, "cost", tmp);
-    adh_gnuplot_cmd(gp, "set multiplot layout 1,2 title 'What accuracy costs: error against the most accurate run'");
-    adh_gnuplot_cmd(gp, "set logscale xy; set grid; set key bottom left; set xlabel 'wall time (s)'");
+    adh_session_begin(&ses, "cost", "cost.png");
+    adh_gnuplot_cmd(ses.gp, "set multiplot layout 1,2 title 'What accuracy costs: error against the most accurate run'");
+    adh_gnuplot_cmd(ses.gp, "set logscale xy; set grid; set key bottom left; set xlabel 'wall time (s)'");
     for (int panel = 0; panel < 2; panel++) {
-        adh_gnuplot_cmd(gp, "set ylabel '%s'", panel ? "relative error in hysteresis area" : "relative error in pull-off force");
+        adh_gnuplot_cmd(ses.gp, "set ylabel '%s'", panel ? "relative error in hysteresis area" : "relative error in pull-off force");
         /* grown as needed: the data file's name, quoted, may be long */
         char *cmd = NULL;
         size_t cmdlen = 0;
@@ -259,20 +257,40 @@ static int plot_cost(const cost_job *job, const char *dir, char *msg, size_t len
         for (size_t s = 0; s < nseries; s++)
             fprintf(c, "%s%s index %zu using 1:%d with linespoints lw 2 title '%s'", s ? ", " : "", q, s, panel ? 3 : 2, titles[s]);
         fclose(c);
-        adh_gnuplot_cmd(gp, "%s", cmd);
+        adh_gnuplot_cmd(ses.gp, "%s", cmd);
         free(cmd);
     }
-    adh_gnuplot_cmd(gp, "unset multiplot");
-    int rc = adh_png_finish(gp, tmp, png, msg, len);
-    adh_gnuplot_close(gp);
-    unlink(data);
-    unlink(tmp);   /* already gone unless gnuplot stopped half-way */
-    if (rc != 0)
-        return 3;
-    struct stat st;
-    if (stat(log, &st) == 0 && st.st_size == 0)
-        unlink(log);
-    return 0;
+    adh_gnuplot_cmd(ses.gp, "unset multiplot");
+    int rc = adh_session_end(&ses, "cost.png", msg, len);
+    adh_session_close(&ses);
+    return rc != 0 ? 3 : 0;
+}
+
+static int cost_jobs(void)
+{
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    return cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
+}
+
+/* Memory before anything is allocated: the runs in parallel hold a dense
+ * kernel each (the report measures dense kernels), beside the static
+ * curve's kernel and solver at the finest N. 0, or -1 with why. */
+static int cost_budget(const adh_config *cfg, const size_t *nodes, size_t nnodes, char *why, size_t whylen)
+{
+    adh_config big = *cfg;
+    big.nodes = 0;
+    for (size_t a = 0; a < nnodes; a++)
+        big.nodes = nodes[a] > big.nodes ? nodes[a] : big.nodes;
+    big.storage = ADH_STORAGE_DENSE;
+    big.graded = 0;
+    double n = (double)big.nodes, jobs = cost_jobs();
+    double need = adh_budget_bytes(&big, 1) + jobs * 8.0 * n * n, have = adh_budget_machine_bytes();
+    if (need <= have)
+        return 0;
+    snprintf(why, whylen, "--cost: its runs at N = %zu would hold about %.3g GB at once (%g in parallel, a dense "
+             "kernel each, beside the static curve's solver), more than the %.3g GB this process may use: use "
+             "smaller --cost-nodes", big.nodes, need / 1e9, jobs, have / 1e9);
+    return -1;
 }
 
 static int by_cost(const void *a, const void *b)
@@ -319,13 +337,14 @@ int cli_cost_main(const cli_options *cli)
                 }
                 m++;
             }
-    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
-    if (out && adh_outdir_make(out, why, sizeof why) != 0) {
+    if (cost_budget(cfg, nodes, nnodes, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         free(runs);
         return CLI_EXIT_USAGE;
     }
-    if (out && adh_outdir_clear(out, why, sizeof why) != 0) {
+    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
+    adh_outdir *od = out ? adh_outdir_open(out, cfg->overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why) : NULL;
+    if (out && !od) {
         fprintf(stderr, "adhere: %s\n", why);
         free(runs);
         return CLI_EXIT_USAGE;
@@ -335,7 +354,7 @@ int cli_cost_main(const cli_options *cli)
     cli_interrupt_catch();
     cli_ready_phase("cost");
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    int jobs = cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
+    int jobs = cost_jobs();
     cost_job job = { .cfg = cfg, .runs = runs, .n = n };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();
@@ -376,7 +395,6 @@ int cli_cost_main(const cli_options *cli)
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
-    cli_interrupt_release();
 
     /* The most accurate run: the finest grid, the exact kernel, the smallest eps. */
     /* (only among runs that finished: an interrupted one is no reference) */
@@ -443,18 +461,22 @@ int cli_cost_main(const cli_options *cli)
                                           : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
     }
     int status = cli_interrupt_signal() ? cli_interrupt_exit() : CLI_EXIT_OK;
-    if (out) {
-        if (adh_outdir_write(out, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
+    if (od) {
+        /* still caught: a signal while gnuplot draws ends the wait, and the
+         * exit says interrupted */
+        if (adh_outdir_write(od, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             status = CLI_EXIT_USAGE;
         } else if (cfg->plot && !cli_interrupt_signal()) {
-            int prc = plot_cost(&job, out, why, sizeof why);
+            int prc = plot_cost(&job, od, why, sizeof why);
             if (prc) {
                 fprintf(stderr, "adhere: cost.png not written: %s\n", why);
-                status = prc;
+                status = cli_interrupt_signal() ? cli_interrupt_exit() : prc;
             }
         }
     }
+    cli_interrupt_release();
+    adh_outdir_close(od);
     if (status == CLI_EXIT_OK && !cfg->quiet) {
         char t[32];
         cli_progress_duration(adh_clock_seconds() - job.t0, t, sizeof t);

@@ -14,92 +14,53 @@
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
 #include "plot/outdir.h"
-#include "plot/png.h"
 #include "plot/plot.h"
+#include "plot/session.h"
 
 
 typedef struct figure {
-    adh_gnuplot *gp;
-    const char *dir;
-    char tmpdir[PATH_MAX];
-    char log[PATH_MAX + 32];
-    char style[PATH_MAX];
+    adh_session ses;
+    adh_gnuplot *gp;        /* ses.gp */
+    unsigned written;       /* ADH_PLOT_* bits of the figures in place */
     char *msg;
     size_t msglen;
 } figure;
 
-
-
-static int fig_open(figure *fg, const adh_config *cfg, const char *dir, char *msg, size_t msglen)
+static int fig_open(figure *fg, const adh_config *cfg, adh_outdir *out, char *msg, size_t msglen)
 {
     memset(fg, 0, sizeof *fg);
-    fg->dir = dir;
     fg->msg = msg;
     fg->msglen = msglen;
-    char why[1024];
-    if (adh_plot_style_file(cfg->gnuplot_style, fg->style, sizeof fg->style, why, sizeof why) < 0) {
-        snprintf(msg, msglen, "%s", why);
+    if (adh_session_open(&fg->ses, out, "gnuplot-figures.log", cfg->gnuplot_style, cfg->relax.cancel, msg,
+                         msglen) != 0)
         return -1;
-    }
-    if (adh_outdir_temp("adhere-fig", fg->tmpdir, sizeof fg->tmpdir, why, sizeof why) != 0) {
-        snprintf(msg, msglen, "%s", why);
-        return -1;
-    }
-    snprintf(fg->log, sizeof fg->log, "%s/gnuplot-figures.log", dir);
-    unlink(fg->log);
-    fg->gp = adh_gnuplot_open(fg->log, why, sizeof why);
-    if (!fg->gp) {
-        snprintf(msg, msglen, "%s", why);
-        rmdir(fg->tmpdir);
-        return -1;
-    }
+    fg->gp = fg->ses.gp;
     return 0;
 }
 
 static void fig_close(figure *fg)
 {
-    adh_gnuplot_close(fg->gp);
-    static const char *const names[] = { "a.dat", "b.dat", "c.dat" };
-    char p[PATH_MAX + 64];
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-        snprintf(p, sizeof p, "%s/%s", fg->tmpdir, names[i]);
-        unlink(p);
-    }
-    /* a figure that stopped between fig_begin and fig_end (gnuplot died,
-     * out of memory) leaves no temporary image */
-    static const char *const pngs[] = { "precontact.png", "bulge.png", "jump.png", "force.png" };
-    for (size_t i = 0; i < sizeof pngs / sizeof pngs[0]; i++) {
-        snprintf(p, sizeof p, "%s/.%s.tmp%ld", fg->dir, pngs[i], (long)getpid());
-        unlink(p);
-    }
-    rmdir(fg->tmpdir);
-    struct stat st;
-    if (stat(fg->log, &st) == 0 && st.st_size == 0)
-        unlink(fg->log);
+    adh_session_close(&fg->ses);
 }
 
 static FILE *fig_data(figure *fg, const char *name, char *path, size_t len)
 {
-    snprintf(path, len, "%s/%s", fg->tmpdir, name);
-    FILE *f = fopen(path, "w");
-    if (!f)
-        snprintf(fg->msg, fg->msglen, "cannot write %s: %s", path, strerror(errno));
-    return f;
+    return adh_session_data(&fg->ses, name, path, len, fg->msg, fg->msglen);
 }
 
-static void fig_begin(figure *fg, const char *name, char *tmp_png, size_t len)
+static void fig_begin(figure *fg, const char *name)
 {
-    snprintf(tmp_png, len, "%s/.%s.tmp%ld", fg->dir, name, (long)getpid());
-    adh_png_begin(fg->gp, fg->style, name, tmp_png);
+    adh_session_begin(&fg->ses, name, name);
 }
 
-static int fig_end(figure *fg, const char *name, const char *tmp_png)
+static int fig_end(figure *fg, const char *name, unsigned bit)
 {
-    char final[PATH_MAX + 64], why[1024];
-    snprintf(final, sizeof final, "%s/%s", fg->dir, name);
-    int rc = adh_png_finish(fg->gp, tmp_png, final, why, sizeof why);
+    char why[1024];
+    int rc = adh_session_end(&fg->ses, name, why, sizeof why);
     if (rc != 0)
         snprintf(fg->msg, fg->msglen, "%s: %s", name, why);
+    else
+        fg->written |= bit;
     return rc;
 }
 
@@ -118,7 +79,7 @@ static int data_done(figure *fg, FILE *f, const char *path)
 static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
 {
     const adh_material *m = &cfg->mat;
-    char dat[PATH_MAX + 16], eq[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE], q2[ADH_GP_PATH_SIZE];
+    char dat[PATH_MAX + 16], eq[PATH_MAX + 16], q[ADH_GP_PATH_SIZE], q2[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -154,7 +115,7 @@ static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
     double fs;
     const char *fu;
     adh_force_unit(fbig, &fs, &fu);
-    fig_begin(fg, "precontact.png", tmp_png, sizeof tmp_png);
+    fig_begin(fg, "precontact.png");
     char es[32];
     adh_format_modulus(m->E, es, sizeof es);
     adh_gnuplot_cmd(fg->gp, "set title \"Force before contact (Figure 1 inset), E = %s\"", es);
@@ -165,14 +126,14 @@ static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
                     "'' using ($1*1e9):($3*%.17g) with lines lw 2.5 lc rgb \"#000000\" title \"rigid F(h_0) (eq 22)\", "
                     "%s using ($1*1e9):($2*%.17g) with lines dt 3 lw 2 lc rgb \"#1f3f8f\" title \"F(h), h from eq 23\"",
                     adh_gp_path(dat, q, sizeof q), fs, fs, adh_gp_path(eq, q2, sizeof q2), fs);
-    return fig_end(fg, "precontact.png", tmp_png);
+    return fig_end(fg, "precontact.png", ADH_PLOT_PRECONTACT);
 }
 
 /* Figure 2: the central bulge before contact against the gap, with eq 23. */
 static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
 {
     const adh_material *m = &cfg->mat;
-    char dat[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
+    char dat[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "c.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -190,7 +151,7 @@ static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
         return -1;
     if (pts < 2)
         return 0;
-    fig_begin(fg, "bulge.png", tmp_png, sizeof tmp_png);
+    fig_begin(fg, "bulge.png");
     char es[32];
     adh_format_modulus(m->E, es, sizeof es);
     adh_gnuplot_cmd(fg->gp, "set title \"Bulge before contact (Figure 2), E = %s\"", es);
@@ -203,23 +164,21 @@ static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
     adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*1e9) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
                     "-A*sqrt(2*R)/(8*E*(x*1e-9)**2.5)*1e9 with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 23\"",
                     adh_gp_path(dat, q, sizeof q));
-    return fig_end(fg, "bulge.png", tmp_png);
+    return fig_end(fg, "bulge.png", ADH_PLOT_BULGE);
 }
 
-/* The figures cfg asked for and dir lacks, onto the list. */
-static void add_missing(const adh_config *cfg, const char *dir, char *list, size_t len)
+/* The figures cfg asked for and not written (in a directory cleared of
+ * earlier runs' files: not there), onto the list. */
+static void add_missing(const adh_config *cfg, unsigned written, char *list, size_t len)
 {
     static const struct { unsigned bit; const char *name; } figs[] = {
         { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
-    for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++) {
-        char p[PATH_MAX + 64];
-        snprintf(p, sizeof p, "%.4000s/%s", dir, figs[i].name);
-        if ((cfg->plots & figs[i].bit) && access(p, F_OK) != 0)
+    for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++)
+        if ((cfg->plots & figs[i].bit) && !(written & figs[i].bit))
             cli_tables_names_add(list, len, figs[i].name);
-    }
 }
 
-int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, char *msg, size_t msglen,
+int cli_figures_run(const adh_config *cfg, const adh_run *run, adh_outdir *out, char *msg, size_t msglen,
                     char *unwritten, size_t ulen)
 {
     if (msglen)
@@ -227,8 +186,8 @@ int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, 
     if (!cfg->plot || !(cfg->plots & (ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
         return 0;
     figure fg;
-    if (fig_open(&fg, cfg, dir, msg, msglen) != 0) {
-        add_missing(cfg, dir, unwritten, ulen);
+    if (fig_open(&fg, cfg, out, msg, msglen) != 0) {
+        add_missing(cfg, 0, unwritten, ulen);
         return -1;
     }
     int rc = 0;
@@ -243,14 +202,14 @@ int cli_figures_run(const adh_config *cfg, const adh_run *run, const char *dir, 
                  (cfg->plots & ADH_PLOT_PRECONTACT) && (cfg->plots & ADH_PLOT_BULGE) ? ", " : "",
                  cfg->plots & ADH_PLOT_BULGE ? "bulge.png" : "");
     else
-        add_missing(cfg, dir, unwritten, ulen);
+        add_missing(cfg, fg.written, unwritten, ulen);
     return rc;
 }
 
 /* Figure 3: the gap just before the jump against sigma, with eq 24. */
 static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n)
 {
-    char dat[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
+    char dat[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -276,7 +235,7 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     }
     if (data_done(fg, f, dat) < 0)
         return -1;
-    fig_begin(fg, "jump.png", tmp_png, sizeof tmp_png);
+    fig_begin(fg, "jump.png");
     adh_gnuplot_cmd(fg->gp, "set title \"Jump into contact (Figure 3), z_0 = %.3g nm\"", m->z0 * 1e9);
     adh_gnuplot_cmd(fg->gp, "set logscale xy");
     adh_gnuplot_cmd(fg->gp, "set xlabel \"adhesion–elasticity parameter σ (eq 17)\"");
@@ -287,14 +246,14 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
                     "'' index 0 using 1:($4 == 1 ? NaN : $2*1e9) with points pt 6 ps 1.2 lc rgb \"#c0392b\" title \"last gap before contact, no jump\", "
                     "'' index 1 using 1:($2*1e9) with lines lw 2.5 dt 3 lc rgb \"#1f3f8f\" title \"eq 24\"",
                     adh_gp_path(dat, q, sizeof q));
-    return fig_end(fg, "jump.png", tmp_png);
+    return fig_end(fg, "jump.png", 0);
 }
 
 /* Figure 7: every run's loading and unloading curves, with the JKR
  * equilibrium curve when the runs share one material. */
 static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n)
 {
-    char dat[PATH_MAX + 16], jkr[PATH_MAX + 16], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
+    char dat[PATH_MAX + 16], jkr[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -337,7 +296,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     double fs;
     const char *fu;
     adh_force_unit(fbig, &fs, &fu);
-    fig_begin(fg, "force.png", tmp_png, sizeof tmp_png);
+    fig_begin(fg, "force.png");
     adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", adh_sweep_name(cfg->sweep.kind));
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
@@ -375,10 +334,10 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     fclose(c);
     adh_gnuplot_cmd(fg->gp, "%s", cmd);
     free(cmd);
-    return fig_end(fg, "force.png", tmp_png);
+    return fig_end(fg, "force.png", 0);
 }
 
-int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, const char *dir,
+int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, adh_outdir *out,
                       char *msg, size_t msglen)
 {
     if (msglen)
@@ -386,7 +345,7 @@ int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, cons
     if (!cfg->plot || cfg->sweep.plot == ADH_SWEEP_PLOT_NONE || n == 0)
         return 0;
     figure fg;
-    if (fig_open(&fg, cfg, dir, msg, msglen) != 0)
+    if (fig_open(&fg, cfg, out, msg, msglen) != 0)
         return -1;
     int rc = cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP ? jump(&fg, cfg, runs, n) : force_overlay(&fg, cfg, runs, n);
     fig_close(&fg);

@@ -1,13 +1,16 @@
 /* adhere: the command line. Parses options, then hands over to the batch
  * runner, the plan or cost reports, or the TUI. */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "adhere/grid.h"
 #include "cli/batch.h"
 #include "cli/cost.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
+#include "scene/budget.h"
 #include "scene/config.h"
 #include "scene/measured.h"
 #include "scene/plan.h"
@@ -31,6 +34,10 @@ static int stdout_done(void)
 int main(int argc, char **argv)
 {
     static cli_options cli;
+    /* A file size limit (ulimit -f) is a full disk: the write fails with
+     * EFBIG, the temporary goes and summary.tsv says not_written, instead
+     * of the signal killing the process with half a file left behind. */
+    signal(SIGXFSZ, SIG_IGN);
     /* One thread per run: a product of N = 1000 is too small to share, and
      * idle BLAS threads spinning cost more than they give (a coarse Figure 1
      * run: 14 s with them, 1.6 s without). Sweeps run one process thread
@@ -69,6 +76,23 @@ int main(int argc, char **argv)
         fprintf(stderr, "adhere: %s\n", why);
         return CLI_EXIT_USAGE;
     }
+    /* Memory for the grid, whichever it is, before anything is allocated:
+     * the operator that fits, or a refusal with the estimate. A static
+     * curve holds its own solver; a sweep solves one per thread. */
+    unsigned solvers = cli.cfg.mode == ADH_MODE_STATIC ? (unsigned)adh_plan_jobs(&cli.cfg)
+                     : cli.reference[0] ? 1 : 0;
+    if (cli.action != CLI_ACT_COST && adh_budget_check(&cli.cfg, solvers, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return CLI_EXIT_USAGE;
+    }
+    /* the time: a dense product reads all N^2 numbers every iteration */
+    size_t nodes = adh_budget_nodes(&cli.cfg);
+    if (cli.action != CLI_ACT_COST && !cli.cfg.quiet && cli.cfg.mode != ADH_MODE_RIGID &&
+        cli.cfg.storage == ADH_STORAGE_DENSE && nodes > ADH_GRID_MAX_NODES)
+        fprintf(stderr, "adhere: note: --operator=dense on %zu nodes: every relaxation iteration reads the whole "
+                "%.3g GB kernel, %.3g times the work at the dense budget's %d nodes; --operator=h2 holds it in "
+                "O(N)\n", nodes, 8e-9 * (double)nodes * (double)nodes,
+                ((double)nodes / ADH_GRID_MAX_NODES) * ((double)nodes / ADH_GRID_MAX_NODES), ADH_GRID_MAX_NODES);
     /* The solvers poll the interrupt flag through their cancel hook: a
      * signal is heard inside a step, not only between steps. */
     cli.cfg.relax.cancel = cli_interrupt_flag();

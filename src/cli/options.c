@@ -21,7 +21,7 @@ enum {
     OPT_NO_CLOCK, OPT_LIST_KEYS, OPT_NO_PLOT, OPT_PLOTS, OPT_PROFILES, OPT_DRIVE_SPEED,
     OPT_GNUPLOT_STYLE, OPT_PLAN, OPT_DWELL, OPT_MODE, OPT_REFERENCE, OPT_COST, OPT_COST_EPS,
     OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE, OPT_DATA,
-    OPT_GRID, OPT_FINE_BAND, OPT_GROWTH, OPT_GRID_RADIUS, OPT_OPERATOR
+    OPT_GRID, OPT_FINE_BAND, OPT_GROWTH, OPT_GRID_RADIUS, OPT_OPERATOR, OPT_OVERWRITE
 };
 
 typedef struct option_doc {
@@ -45,7 +45,7 @@ static const option_doc options[] = {
     { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M|auto", "graded grid: radius of the fine band (default, auto: 1.25 x the contact expected at the deepest turn, JKR or overlap)" },
     { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)" },
     { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M|auto", "graded grid: outer radius Rmax (default, auto: the default uniform grid's, 1.5um at R=10um, z0=0.5nm)" },
-    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat|h2", "how the kernel is held: dense matrix, hierarchical by hmat-oss, or H^2 (default dense; h2 on an automatic graded grid)" },
+    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat|h2", "how the kernel is held: dense matrix, hierarchical by hmat-oss, or H^2 (default dense; h2 past 4000 nodes and on an automatic graded grid)" },
     { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
     { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)" },
@@ -59,11 +59,12 @@ static const option_doc options[] = {
     { { "reference", required_argument, 0, OPT_REFERENCE }, "static", "also compute the static curve as a reference in relaxation mode" },
     { { "batch", no_argument, 0, 'b' }, NULL, "run the protocol without the TUI and write tables" },
     { { "out", required_argument, 0, 'o' }, "DIR", "write force.tsv, summary.tsv, turns.tsv and plots into DIR (created)" },
+    { { "overwrite", no_argument, 0, OPT_OVERWRITE }, NULL, "replace files in DIR under adhere's names that it did not write (else refused)" },
     { { "no-plot", no_argument, 0, OPT_NO_PLOT }, NULL, "write no PNG plots" },
     { { "plots", required_argument, 0, OPT_PLOTS }, "LIST", "plots to write: force,profile,contact (default all)" },
     { { "profiles", required_argument, 0, OPT_PROFILES }, "M[,M...]", "drive positions where surface profiles are stored" },
     { { "drive-speed", required_argument, 0, OPT_DRIVE_SPEED }, "M/S", "drive speed for contact-line speeds (default 1um/s)" },
-    { { "gnuplot-style", required_argument, 0, OPT_GNUPLOT_STYLE }, "FILE", "gnuplot style file overriding the installed one" },
+    { { "gnuplot-style", required_argument, 0, OPT_GNUPLOT_STYLE }, "FILE|DIR", "gnuplot style file, or a directory holding style.gp, overriding the installed one" },
     { { "data", required_argument, 0, OPT_DATA }, "FILE", "a measured force-position curve (nm, nN) drawn over force.png and the TUI preview" },
     { { "plan", no_argument, 0, OPT_PLAN }, NULL, "print the run plan (branches, steps, what is stored) and exit" },
     { { "cost", no_argument, 0, OPT_COST }, NULL, "report what accuracy costs: runs over a grid of eps, N and kernels" },
@@ -312,6 +313,7 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
     case 'q': cfg->quiet = 1; return 0;
     case OPT_ALLOW_UNCONVERGED: cfg->allow_unconverged = 1; return 0;
     case OPT_FORCE: cfg->force = 1; return 0;
+    case OPT_OVERWRITE: cfg->overwrite = 1; return 0;
     case 'b': if (cli->action == CLI_ACT_TUI) cli->action = CLI_ACT_BATCH; return 0;
     case OPT_PLAN: cli->action = CLI_ACT_PLAN; return 0;
     case OPT_COST: cli->action = CLI_ACT_COST; return 0;
@@ -528,11 +530,11 @@ static int readable_file(const char *opt, const char *path, char *why, size_t wh
 {
     struct stat st;
     if (stat(path, &st) != 0 || access(path, R_OK) != 0) {
-        snprintf(why, whylen, "--%s=%s: %s", opt, path, strerror(errno));
+        snprintf(why, whylen, "--%s=%.3000s: %s", opt, path, strerror(errno));
         return 2;
     }
     if (!S_ISREG(st.st_mode)) {
-        snprintf(why, whylen, "--%s=%s: not a regular file", opt, path);
+        snprintf(why, whylen, "--%s=%.3000s: not a regular file", opt, path);
         return 2;
     }
     return 0;
@@ -545,8 +547,15 @@ static int validate_run(const adh_config *cfg, char *why, size_t whylen)
     if (adh_material_validate(&cfg->mat, why, whylen) != ADH_SUCCESS ||
         adh_relax_settings_validate(&cfg->relax, why, whylen) != ADH_SUCCESS)
         return 2;
-    if (cfg->gnuplot_style[0] && readable_file("gnuplot-style", cfg->gnuplot_style, why, whylen))
-        return 2;
+    if (cfg->gnuplot_style[0]) {
+        /* a directory holds style.gp (adh_plot_style_file reads it there) */
+        char style[PATH_MAX + 16];
+        struct stat st;
+        int dir = stat(cfg->gnuplot_style, &st) == 0 && S_ISDIR(st.st_mode);
+        snprintf(style, sizeof style, "%s%s", cfg->gnuplot_style, dir ? "/style.gp" : "");
+        if (readable_file("gnuplot-style", style, why, whylen))
+            return 2;
+    }
     if (cfg->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
         return adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, ADH_GRID_RELAX, NULL, why, whylen) == ADH_SUCCESS ? 0 : 2;
     if (!(isfinite(cfg->drive_speed) && cfg->drive_speed > 0 && cfg->drive_speed < 1e3)) {

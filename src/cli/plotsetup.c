@@ -16,5 +16,6 @@ void cli_plotsetup_fill(const adh_config *cfg, const adh_grid *g, adh_plot_setup
         .r = g ? g->r : NULL,
         .style = cfg->gnuplot_style,
         .measured = cfg->measured,
+        .cancel = cfg->relax.cancel,
     };
 }

@@ -22,7 +22,6 @@
 #include "adhere/clock.h"
 #include "cli/static.h"
 #include "cli/tables.h"
-#include "plot/outdir.h"
 #include "cli/plotsetup.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
@@ -39,7 +38,7 @@ typedef struct sweep_job {
     adh_run *runs;
     adh_static_result *sres;   /* mode = static: each run's folds, jumps, pull-offs */
     int *status;               /* adh status of each run */
-    const char *out;           /* DIR, or NULL: nothing but sweep.tsv on stdout */
+    adh_outdir **out;          /* each run's DIR/run-K, or NULL: nothing but sweep.tsv on stdout */
     int *tables;               /* exit status of writing run i's tables; -1 not yet */
     size_t next;               /* the next run to start, under lock */
     size_t done;
@@ -48,7 +47,7 @@ typedef struct sweep_job {
 } sweep_job;
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, const char *out);
+                        int rc, adh_outdir *out);
 
 static void *worker(void *arg)
 {
@@ -72,7 +71,7 @@ static void *worker(void *arg)
                        : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, cli_interrupt_step, NULL, run);
         /* tables as soon as a run ends: a long sweep killed later keeps them */
         if (job->out)
-            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out);
+            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i]);
         pthread_mutex_lock(&job->lock);
         job->done++;
         if (!cfg->quiet) {
@@ -143,6 +142,15 @@ int cli_sweep_jumped(const adh_run *run, double step)
     return before >= 0 && run->rows[before].hc - run->rows[at].hc > 2.0 * step ? 1 : 0;
 }
 
+/* How many runs finished (neither interrupted nor never started). */
+static size_t finished(const adh_config *cfg, const adh_run *runs)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < cfg->sweep.n; i++)
+        k += !runs[i].interrupted;
+    return k;
+}
+
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
                           const int *status)
 {
@@ -150,7 +158,10 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
     int stat = cfg->mode == ADH_MODE_STATIC && sres;
     fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (run-K/ holds its tables), SI units (m, N, Pa, s)\n");
     if (cfg->scene[0])
-        fprintf(f, "# scene: %s\n", cfg->scene);
+        cli_tables_comment(f, "scene", cfg->scene);
+    if (finished(cfg, runs) < cfg->sweep.n)
+        fprintf(f, "# PARTIAL: interrupted by signal %d: %zu of %zu runs finished; the others say interrupted\n",
+                cli_interrupt_signal(), finished(cfg, runs), cfg->sweep.n);
     if (stat)
         fprintf(f, "# mode static: each run is the equilibrium curve; jump_in_h0 its first fold, h_before the central gap at the last stable point before it;\n"
                    "# max_load the force at the curve's end (the turn); pulloff_F the load-controlled pull-off (minimum force), pulloff_F_disp the force at the jump-out fold;\n"
@@ -182,7 +193,7 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
                 cli_sweep_jumped(r, rc.proto.step));
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_status_word(r));
+        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r));
     }
     return 0;
 }
@@ -200,21 +211,17 @@ static int write_sweep(FILE *f, const void *ctx)
     return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
 }
 
-/* Tables of run i in out/run-K: force.tsv and turns.tsv when data is set,
- * then summary.tsv, last, naming what was not written (those that failed
- * here, and the list in unwritten). Returns an exit status. */
+/* Tables of run i in dir (out/run-K): force.tsv and turns.tsv when data
+ * is set, then summary.tsv, last, naming what was not written (those that
+ * failed here, and the list in unwritten); word, when not NULL, is its
+ * status. Returns an exit status. */
 static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                      int rc, const char *out, int data, const char *unwritten)
+                      int rc, adh_outdir *dir, int data, const char *unwritten, const char *word)
 {
-    char dir[PATH_MAX + 32], why[1024], note[256] = "", lost[512];
+    char why[1024], note[256] = "", lost[512];
     adh_config rcfg;
     adh_config_sweep_run(cfg, i, &rcfg);
-    snprintf(dir, sizeof dir, "%s/run-%zu", out, i + 1);
     snprintf(lost, sizeof lost, "%s", unwritten ? unwritten : "");
-    if (adh_outdir_make(dir, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
-        return CLI_EXIT_USAGE;
-    }
     int partial = run->interrupted || rc != ADH_SUCCESS;
     if (run->interrupted)
         snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run->nrows);
@@ -224,7 +231,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     char keynames[CLI_TABLES_STATIC_KEYS][32];
     cli_tables_extra extra[CLI_TABLES_STATIC_KEYS];
     size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? cli_tables_static_keys(sres, "", keynames, extra) : 0;
-    cli_tables t = { &rcfg, run, extra, nextra, partial, note, lost, NULL };
+    cli_tables t = { &rcfg, run, extra, nextra, partial, note, lost, word };
     int status = CLI_EXIT_OK;
     if (data) {
         const char *names[2] = { "force.tsv", run->nturns ? "turns.tsv" : NULL };
@@ -252,21 +259,20 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
 }
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, const char *out)
+                        int rc, adh_outdir *out)
 {
-    return run_tables(cfg, i, run, sres, rc, out, 1, NULL);
+    return run_tables(cfg, i, run, sres, rc, out, 1, NULL, NULL);
 }
 
 /* Figures of run i in out/run-K (its tables are there); when one is not
  * written, the run's summary.tsv is written again to say so. An exit
  * status. */
 static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const adh_run *run,
-                       const adh_static_result *sres, int rc, const char *out)
+                       const adh_static_result *sres, int rc, adh_outdir *dir)
 {
-    char dir[PATH_MAX + 32], msg[1024] = "", missing[256] = "";
+    char msg[1024] = "", missing[256] = "";
     adh_config rcfg;
     adh_config_sweep_run(cfg, i, &rcfg);
-    snprintf(dir, sizeof dir, "%s/run-%zu", out, i + 1);
     if (!cfg->plot)
         return CLI_EXIT_OK;
     int status = CLI_EXIT_OK;
@@ -286,11 +292,30 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
         status = status ? status : CLI_EXIT_PLOT;
     }
     if (*missing) {
-        int trc = run_tables(cfg, i, run, sres, rc, out, 0, missing);
+        int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL);
         if (trc == CLI_EXIT_USAGE)
             status = trc;
     }
     return status;
+}
+
+/* Run i's figures not drawn (a signal came first): its summary.tsv names
+ * those asked for and says interrupted. An exit status. */
+static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
+                         int rc, adh_outdir *dir)
+{
+    static const struct { unsigned bit; const char *name; } figs[] = {
+        { ADH_PLOT_FORCE, "force.png" }, { ADH_PLOT_PROFILE, "profile.png" }, { ADH_PLOT_CONTACT, "contact.png" },
+        { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" },
+    };
+    char missing[256] = "";
+    for (size_t k = 0; cfg->plot && k < sizeof figs / sizeof figs[0]; k++)
+        if (cfg->plots & figs[k].bit)
+            cli_tables_names_add(missing, sizeof missing, figs[k].name);
+    if (!*missing)
+        return CLI_EXIT_OK;
+    int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, "interrupted");
+    return trc == CLI_EXIT_USAGE ? trc : cli_interrupt_exit();
 }
 
 static int worse(int a, int b)
@@ -305,17 +330,29 @@ static int worse(int a, int b)
     return ra >= rb ? a : b;
 }
 
-int cli_sweep_main(const cli_options *cli)
+/* run-1 ... run-n in od, each opened once (no link followed) before any
+ * run starts: subs[i], or -1 with why (those made are closed). */
+static int open_runs(adh_outdir *od, size_t n, adh_outdir **subs, char *why, size_t whylen)
+{
+    for (size_t i = 0; i < n; i++) {
+        char name[32];
+        snprintf(name, sizeof name, "run-%zu", i + 1);
+        if (!(subs[i] = adh_outdir_sub(od, name, why, whylen))) {
+            while (i-- > 0)
+                adh_outdir_close(subs[i]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int cli_sweep_main(const cli_options *cli, adh_outdir *od)
 {
     const adh_config *cfg = &cli->cfg;
-    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
+    const char *out = od ? adh_outdir_path(od) : NULL;
     double t_start = adh_clock_seconds();
     char why[1024];
     size_t n = cfg->sweep.n;
-    if (out && adh_outdir_make(out, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
-        return CLI_EXIT_USAGE;
-    }
     if (cfg->mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_EPS) {
         /* every run would be the same equilibrium curve */
         fprintf(stderr, "adhere: a sweep of eps in mode = static would compute the same curve %zu times: "
@@ -361,14 +398,20 @@ int cli_sweep_main(const cli_options *cli)
     adh_static_result *sres = calloc(n, sizeof *sres);
     int *status = calloc(n, sizeof *status);
     int *tables = calloc(n, sizeof *tables);
+    adh_outdir **subs = calloc(n, sizeof *subs);
     int jobs = adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
-    if (!runs || !sres || !status || !tables || !threads) {
+    int failed = !runs || !sres || !status || !tables || !subs || !threads ? CLI_EXIT_SOLVER : 0;
+    if (failed)
+        snprintf(why, sizeof why, "out of memory for %zu runs", n);
+    else if (od && open_runs(od, n, subs, why, sizeof why) != 0)
+        failed = CLI_EXIT_USAGE;
+    if (failed) {
         cli_interrupt_release();
-        fprintf(stderr, "adhere: out of memory for %zu runs\n", n);
-        free(runs), free(sres), free(status), free(tables), free(threads);
+        fprintf(stderr, "adhere: %s\n", why);
+        free(runs), free(sres), free(status), free(tables), free(subs), free(threads);
         adh_kernel_free(k), adh_grid_free(g);
-        return CLI_EXIT_SOLVER;
+        return failed;
     }
     for (size_t i = 0; i < n; i++) {
         adh_run_init(&runs[i]);
@@ -381,7 +424,8 @@ int cli_sweep_main(const cli_options *cli)
     cli_interrupt_catch();
     cli_ready_phase("sweep");
 
-    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status, .out = out, .tables = tables };
+    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status,
+                      .out = od ? subs : NULL, .tables = tables };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();
     int started = 0;
@@ -395,7 +439,6 @@ int cli_sweep_main(const cli_options *cli)
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
-    cli_interrupt_release();
 
     int exit_status = CLI_EXIT_OK;
     for (size_t i = 0; i < n; i++) {
@@ -415,22 +458,32 @@ int cli_sweep_main(const cli_options *cli)
     } else {
         for (size_t i = 0; i < n; i++) {
             if (tables[i] < 0) /* never started: its tables say interrupted */
-                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], out);
+                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], subs[i]);
             exit_status = worse(exit_status, tables[i]);
-            if (tables[i] == CLI_EXIT_OK || (tables[i] == CLI_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS))
-                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], out));
+            int plot = tables[i] == CLI_EXIT_OK ||
+                       (tables[i] == CLI_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS);
+            if (plot && cli_interrupt_signal())
+                exit_status = worse(exit_status, plots_skipped(cfg, i, &runs[i], &sres[i], status[i], subs[i]));
+            else if (plot)
+                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], subs[i]));
         }
-        if (adh_outdir_write(out, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
+        if (cli_interrupt_signal())   /* while the tables or plots were written */
+            exit_status = worse(exit_status, cli_interrupt_exit());
+        if (adh_outdir_write(od, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             exit_status = worse(exit_status, CLI_EXIT_USAGE);
         } else if (cfg->plot && exit_status == CLI_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
             char msg[1024] = "";
-            if (cli_figures_sweep(cfg, runs, n, out, msg, sizeof msg) != 0) {
+            if (cli_figures_sweep(cfg, runs, n, od, msg, sizeof msg) != 0) {
                 fprintf(stderr, "adhere: sweep plot not written: %s\n", msg);
                 exit_status = worse(exit_status, CLI_EXIT_PLOT);
             }
         }
     }
+    cli_interrupt_release();
+    if (cli_interrupt_signal())
+        fprintf(stderr, "adhere: interrupted by signal %d: %zu of %zu runs finished; sweep.tsv%s says which (# PARTIAL)\n",
+                cli_interrupt_signal(), finished(cfg, runs), n, out ? " and each run's summary.tsv" : "");
     if (exit_status == CLI_EXIT_OK && !cfg->quiet) {
         char t[32];
         cli_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
@@ -441,9 +494,11 @@ int cli_sweep_main(const cli_options *cli)
         else
             fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv went to standard output\n", t, n);
     }
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < n; i++) {
         adh_run_free(&runs[i]);
-    free(runs), free(sres), free(status), free(tables), free(threads);
+        adh_outdir_close(subs[i]);
+    }
+    free(runs), free(sres), free(status), free(tables), free(subs), free(threads);
     adh_kernel_free(k);
     adh_grid_free(g);
     return exit_status;

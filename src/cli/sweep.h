@@ -10,10 +10,12 @@
 #include "adhere/static.h"
 #include "adhere/protocol.h"
 #include "cli/options.h"
+#include "plot/outdir.h"
 
-/* Runs cli->cfg's sweep; returns the process exit status (batch.h). Without
- * --out, only sweep.tsv is written, to standard output. */
-int cli_sweep_main(const cli_options *cli);
+/* Runs cli->cfg's sweep into out (opened by the caller: run-K/ are made
+ * in it); returns the process exit status (batch.h). Without out (NULL),
+ * only sweep.tsv is written, to standard output. */
+int cli_sweep_main(const cli_options *cli, adh_outdir *out);
 
 /* The central gap on the last loading row before the jump into contact:
  * the separation at which the surfaces jump (Figure 3). NAN when the

@@ -14,11 +14,31 @@
 
 #define VERSION_LINE "# adhere " ADH_VERSION "\n"
 
+void cli_tables_comment(FILE *f, const char *key, const char *value)
+{
+    fprintf(f, "# %s: ", key);
+    for (const unsigned char *p = (const unsigned char *)value; *p; p++) {
+        if (*p == '\\')
+            fputs("\\\\", f);
+        else if (*p == '\n')
+            fputs("\\n", f);
+        else if (*p == '\r')
+            fputs("\\r", f);
+        else if (*p == '\t')
+            fputs("\\t", f);
+        else if (*p < 0x20 || *p == 0x7f)
+            fprintf(f, "\\x%02x", *p);
+        else
+            fputc(*p, f);
+    }
+    fputc('\n', f);
+}
+
 static void comment_head(FILE *f, const cli_tables *t, const char *what)
 {
     fprintf(f, VERSION_LINE "# %s, SI units (m, N, Pa, J, s, rad)\n", what);
     if (t->cfg->scene[0])
-        fprintf(f, "# scene: %s\n", t->cfg->scene);
+        cli_tables_comment(f, "scene", t->cfg->scene);
     if (t->partial)
         fprintf(f, "# PARTIAL: %s\n", t->note ? t->note : "the run did not finish");
 }
@@ -50,6 +70,36 @@ const char *cli_tables_status_word(const adh_run *r)
     if (r->status != ADH_SUCCESS)
         return adh_strerror(r->status);
     return r->unconverged ? "unconverged" : "success";
+}
+
+/* 0 when the surfaces touched and every unloading branch separated; 1 no
+ * contact, 2 not separated, with why. A rigid run is not asked. */
+static int contact_fault(const adh_config *c, const adh_run *r, char *why, size_t whylen)
+{
+    if (c->mode == ADH_MODE_RIGID)
+        return 0;
+    adh_derived d;
+    adh_material_derive(&c->mat, &d);
+    if (!adh_run_touched(r, d.h_star, why, whylen))
+        return 1;
+    return adh_run_separated(r, why, whylen) ? 0 : 2;
+}
+
+static int grid_resolved(const adh_config *c)
+{
+    adh_grid_report gr;
+    adh_grid_check(&c->mat, adh_config_grid_use(c), c->nodes, adh_config_spacing(c), &gr);
+    return c->mode == ADH_MODE_RIGID || gr.resolved;
+}
+
+const char *cli_tables_verdict(const adh_config *c, const adh_run *r)
+{
+    const char *word = cli_tables_status_word(r);
+    if (strcmp(word, "success") != 0)
+        return word;
+    char why[512];
+    int fault = contact_fault(c, r, why, sizeof why);
+    return fault == 1 ? "no contact" : fault == 2 ? "not separated" : !grid_resolved(c) ? "unresolved" : word;
 }
 
 static void kv(FILE *f, const char *k, double v)
@@ -129,18 +179,18 @@ int cli_tables_summary(FILE *f, const void *ctx)
     /* an interrupted run stopped mid-way: its last step may be anywhere */
     kv(f, "converged", (r->unconverged == 0 && r->status == ADH_SUCCESS && !r->interrupted) ? 1 : 0);
     char why[512];
-    int separated = adh_run_separated(r, why, sizeof why);
+    int fault = contact_fault(c, r, why, sizeof why);
     int lost = t->unwritten && *t->unwritten;
-    kv(f, "complete", t->partial || !separated || lost ? 0 : 1);
-    if (!separated && !t->partial)
+    kv(f, "complete", t->partial || fault || lost ? 0 : 1);
+    if (fault && !t->partial)
         fprintf(f, "# INCOMPLETE: %s\n", why);
     if (lost)
         fprintf(f, "not_written\t%s\n", t->unwritten);
     /* success only for a finished, converged run on a resolved grid that
-     * separated, every file of which was written */
-    const char *word = t->status ? t->status : cli_tables_status_word(r);
-    if (!strcmp(word, "success"))
-        word = !separated ? "not separated" : !(rigid || gr.resolved) ? "unresolved" : lost ? "output incomplete" : word;
+     * touched and separated, every file of which was written */
+    const char *word = t->status ? t->status : cli_tables_verdict(c, r);
+    if (!strcmp(word, "success") && lost)
+        word = "output incomplete";
     fprintf(f, "status\t%s\n", word);
     return 0;
 }

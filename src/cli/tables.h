@@ -32,9 +32,18 @@ typedef struct cli_tables {
 /* The summary's status word: interrupted, unconverged (steps at the
  * iteration cap), success, or the solver's error. */
 const char *cli_tables_status_word(const adh_run *r);
+/* The status word of a run of c, as summary.tsv and sweep.tsv say it:
+ * cli_tables_status_word's, and for a finished run "no contact" (the
+ * surfaces never touched), "not separated" (an unloading branch ended in
+ * contact) or "unresolved" (a grid coarser than the limit) where that holds. */
+const char *cli_tables_verdict(const adh_config *c, const adh_run *r);
 /* Appends name (or a comma-separated list) to the comma-separated list in
  * buf; what does not fit is left off whole names at a time. */
 void cli_tables_names_add(char *buf, size_t len, const char *name);
+/* A comment line "# key: value" with value's backslashes, newlines, tabs
+ * and other control bytes escaped (\\, \n, \t, \xHH): a file name with
+ * a newline in it cannot start a row. */
+void cli_tables_comment(FILE *f, const char *key, const char *value);
 int cli_tables_force(FILE *f, const void *tables);
 int cli_tables_summary(FILE *f, const void *tables);
 int cli_tables_turns(FILE *f, const void *tables);

@@ -128,7 +128,17 @@ int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int
     size_t budget = c->hierarchical ? ADH_GRID_NODES_MAX : ADH_GRID_MAX_NODES;
     double held = held_mb(c->hierarchical, (double)nn);
     double held_max = held_mb(c->hierarchical, (double)budget);
-    if (nn > budget || need > 0.3 * m->R) {
+    if (need > 0.3 * m->R) {
+        /* not the node budget: the paraboloid gap (eq 3) stops describing a
+         * sphere past 0.3 R, and the contact or the force's tail needs more */
+        snprintf(why, whylen,
+                 "sigma = %.3g: the contact at the deepest turn and the force's tail beyond it need the grid out "
+                 "to Rmax = %.3g m, beyond 0.3 R = %.3g m where the paraboloid gap (eq 3) stops describing a "
+                 "sphere; use a larger R, a shallower turn (the deepest is %.3g m), or a stiffer material",
+                 d.sigma, need, 0.3 * m->R, deepest);
+        return ADH_EGRID;
+    }
+    if (nn > budget) {
         snprintf(why, whylen,
                  "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
                  "out to Rmax = %.3g m: a %s grid of N = %zu nodes (%s of %.0f MB), beyond this program's "

@@ -44,6 +44,24 @@ int adh_run_separated(const adh_run *run, char *why, size_t whylen)
     return 1;
 }
 
+int adh_run_touched(const adh_run *run, double h_star, char *why, size_t whylen)
+{
+    double turn = INFINITY;
+    for (size_t i = 0; i < run->nrows; i++) {
+        if (run->rows[i].a > 0)
+            return 1;
+        if (run->rows[i].path == 0)
+            turn = fmin(turn, run->rows[i].h0);
+    }
+    if (run->nrows == 0)
+        return 1;
+    snprintf(why, whylen, "the surfaces never came into contact: the drive turned at h0 = %.4g m with the contact "
+             "radius still 0, so there is no jump-in, pull-off or jump-out, and the lowest force is only the force "
+             "at the turn; put the turn below the jump into contact (eq 24's gap there is h* = %.4g m; e.g. "
+             "--turn=0)", turn, h_star);
+    return 0;
+}
+
 const adh_turn_result *adh_run_main_turn(const adh_run *run)
 {
     for (size_t i = run->nturns; i-- > 0;)

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -23,7 +24,9 @@ struct adh_gnuplot {
     unsigned seq;       /* number of the last sync sent */
     char *out; size_t outlen, outcap;   /* commands not yet sent */
     char in[4096]; size_t inlen;        /* partial line read back */
-    char logpath[4096];
+    int log_fd;                         /* the caller's; read for messages */
+    const volatile sig_atomic_t *cancel;
+    char logname[4096];
 };
 
 const char *adh_gnuplot_program(void)
@@ -81,16 +84,11 @@ static void exec_child(const char *prog, int in_fd, int out_fd, int log_fd, int 
     _exit(127);
 }
 
-adh_gnuplot *adh_gnuplot_open(const char *logpath, char *msg, size_t msglen)
+adh_gnuplot *adh_gnuplot_open(int log_fd, const char *logname, const volatile sig_atomic_t *cancel, char *msg,
+                              size_t msglen)
 {
     const char *prog = adh_gnuplot_program();
     int in_pipe[2] = { -1, -1 }, out_pipe[2] = { -1, -1 }, err_pipe[2] = { -1, -1 };
-    int log_fd = open(logpath, O_WRONLY | O_CREAT | O_APPEND, 0644);
-    if (log_fd < 0) {
-        snprintf(msg, msglen, "cannot open gnuplot log %s: %s", logpath, strerror(errno));
-        return NULL;
-    }
-    set_cloexec(log_fd);
     adh_gnuplot *gp = calloc(1, sizeof *gp);
     if (!gp || pipe(in_pipe) < 0 || pipe(out_pipe) < 0 || pipe(err_pipe) < 0) {
         snprintf(msg, msglen, "cannot start gnuplot: %s", strerror(errno ? errno : ENOMEM));
@@ -101,7 +99,9 @@ adh_gnuplot *adh_gnuplot_open(const char *logpath, char *msg, size_t msglen)
         set_cloexec(out_pipe[i]);
         set_cloexec(err_pipe[i]);
     }
-    snprintf(gp->logpath, sizeof gp->logpath, "%s", logpath);
+    snprintf(gp->logname, sizeof gp->logname, "%s", logname);
+    gp->log_fd = log_fd;
+    gp->cancel = cancel;
     pid_t pid = fork();
     if (pid < 0) {
         snprintf(msg, msglen, "cannot start gnuplot: fork: %s", strerror(errno));
@@ -113,7 +113,6 @@ adh_gnuplot *adh_gnuplot_open(const char *logpath, char *msg, size_t msglen)
     close_fd(&in_pipe[0]);
     close_fd(&out_pipe[1]);
     close_fd(&err_pipe[1]);
-    close_fd(&log_fd);
     gp->to_child = in_pipe[1];
     gp->from_child = out_pipe[0];
 
@@ -144,7 +143,6 @@ fail:
     close_fd(&in_pipe[0]); close_fd(&in_pipe[1]);
     close_fd(&out_pipe[0]); close_fd(&out_pipe[1]);
     close_fd(&err_pipe[0]); close_fd(&err_pipe[1]);
-    close_fd(&log_fd);
     free(gp);
     return NULL;
 }
@@ -196,7 +194,7 @@ static int flush_out(adh_gnuplot *gp)
     while (off < gp->outlen) {
         ssize_t n = write(gp->to_child, gp->out + off, gp->outlen - off);
         if (n < 0) {
-            if (errno == EINTR)
+            if (errno == EINTR && !(gp->cancel && *gp->cancel))
                 continue;
             gp->write_errno = errno;
             rc = -1;
@@ -233,7 +231,7 @@ static void reap(adh_gnuplot *gp, int *status)
 static void describe_death(adh_gnuplot *gp, int status, char *msg, size_t msglen)
 {
     char last[512];
-    adh_gnuplot_log_last_line(gp->logpath, last, sizeof last);
+    adh_gnuplot_log_last_line(gp->log_fd, last, sizeof last);
     char how[64];
     if (status >= 0 && WIFSIGNALED(status))
         snprintf(how, sizeof how, "killed by signal %d", WTERMSIG(status));
@@ -242,19 +240,27 @@ static void describe_death(adh_gnuplot *gp, int status, char *msg, size_t msglen
     else
         snprintf(how, sizeof how, "stopped");
     if (*last)
-        snprintf(msg, msglen, "gnuplot %s: %s (log: %s)", how, last, gp->logpath);
+        snprintf(msg, msglen, "gnuplot %s: %s (log: %s)", how, last, gp->logname);
     else
-        snprintf(msg, msglen, "gnuplot %s (log: %s)", how, gp->logpath);
+        snprintf(msg, msglen, "gnuplot %s (log: %s)", how, gp->logname);
 }
 
-/* Parses "ADH_SYNC seq errno message". Returns 1 when line is the sync for
- * seq (filling *err and errmsg), 0 for any other line. */
-static int parse_sync(const char *line, unsigned seq, int *err, char *errmsg, size_t len)
+/* Parses "ADH_SYNC seq errno message" wherever it starts in the n bytes of
+ * line (an image gnuplot wrote to its output may come before it on the
+ * same line). Returns 1 when it is the sync for seq (filling *err and
+ * errmsg), 0 for any other line. */
+static int parse_sync(const char *line, size_t n, unsigned seq, int *err, char *errmsg, size_t len)
 {
+    static const char tag[] = "ADH_SYNC ";
+    const char *at = NULL;
+    for (size_t i = 0; i + sizeof tag - 1 <= n && !at; i++)
+        if (memcmp(line + i, tag, sizeof tag - 1) == 0)
+            at = line + i;
     unsigned s;
     int e, off = 0;
-    if (sscanf(line, "ADH_SYNC %u %d %n", &s, &e, &off) < 2 || s != seq)
+    if (!at || sscanf(at, "ADH_SYNC %u %d %n", &s, &e, &off) < 2 || s != seq)
         return 0;
+    line = at;
     *err = e;
     snprintf(errmsg, len, "%s", line + off);
     return 1;
@@ -276,7 +282,8 @@ int adh_gnuplot_sync(adh_gnuplot *gp, double timeout_s, char *msg, size_t msglen
         gp->broken = 1;
         return -1;
     }
-    if (flush_out(gp) < 0 && gp->write_errno != EPIPE) {
+    /* EINTR: the cancel flag, which the wait below answers */
+    if (flush_out(gp) < 0 && gp->write_errno != EPIPE && gp->write_errno != EINTR) {
         snprintf(msg, msglen, "cannot write to gnuplot: %s", strerror(gp->write_errno));
         gp->broken = 1;
         return -1;
@@ -289,7 +296,7 @@ int adh_gnuplot_sync(adh_gnuplot *gp, double timeout_s, char *msg, size_t msglen
             *nl = '\0';
             int err = 0;
             char errmsg[512];
-            int found = parse_sync(gp->in, gp->seq, &err, errmsg, sizeof errmsg);
+            int found = parse_sync(gp->in, (size_t)(nl - gp->in), gp->seq, &err, errmsg, sizeof errmsg);
             size_t used = (size_t)(nl - gp->in) + 1;
             memmove(gp->in, nl + 1, gp->inlen - used);
             gp->inlen -= used;
@@ -298,18 +305,26 @@ int adh_gnuplot_sync(adh_gnuplot *gp, double timeout_s, char *msg, size_t msglen
                     return 0;
                 /* the log's line also names the file and line (a style file) */
                 char last[512];
-                adh_gnuplot_log_last_line(gp->logpath, last, sizeof last);
+                adh_gnuplot_log_last_line(gp->log_fd, last, sizeof last);
                 snprintf(msg, msglen, "gnuplot error: %s (log: %s)",
-                         *errmsg && strstr(last, errmsg) ? last : errmsg, gp->logpath);
+                         *errmsg && strstr(last, errmsg) ? last : errmsg, gp->logname);
                 return -1;
             }
         }
-        if (gp->inlen == sizeof gp->in)   /* an absurd line: drop it */
-            gp->inlen = 0;
+        /* a line longer than the buffer (an image on gnuplot's output): its
+         * tail is kept, where a sync line could be starting */
+        if (gp->inlen == sizeof gp->in) {
+            memmove(gp->in, gp->in + gp->inlen - 64, 64);
+            gp->inlen = 64;
+        }
         double left = deadline - adh_clock_seconds();
-        if (left <= 0) {
-            snprintf(msg, msglen, "gnuplot did not answer within %.3g s; stopped it (log: %s)",
-                     timeout_s, gp->logpath);
+        int cancelled = gp->cancel && *gp->cancel;
+        if (left <= 0 || cancelled) {
+            if (cancelled)
+                snprintf(msg, msglen, "interrupted by signal %d; stopped gnuplot", (int)*gp->cancel);
+            else
+                snprintf(msg, msglen, "gnuplot did not answer within %.3g s; stopped it (log: %s)",
+                         timeout_s, gp->logname);
             gp->broken = 1;
             if (gp->pid > 0)
                 kill(gp->pid, SIGKILL);
@@ -317,8 +332,10 @@ int adh_gnuplot_sync(adh_gnuplot *gp, double timeout_s, char *msg, size_t msglen
             reap(gp, &st);
             return -1;
         }
+        /* in slices, so that a raised cancel flag is seen within 0.1 s even
+         * when its signal came just before the poll */
         struct pollfd pfd = { gp->from_child, POLLIN, 0 };
-        int pr = poll(&pfd, 1, (int)(left * 1000) + 1);
+        int pr = poll(&pfd, 1, left > 0.1 ? 100 : (int)(left * 1000) + 1);
         if (pr < 0 && errno != EINTR) {
             snprintf(msg, msglen, "cannot read from gnuplot: %s", strerror(errno));
             gp->broken = 1;
@@ -349,6 +366,8 @@ void adh_gnuplot_close(adh_gnuplot *gp)
 {
     if (!gp)
         return;
+    if (gp->pid > 0 && gp->cancel && *gp->cancel)
+        kill(gp->pid, SIGKILL);   /* interrupted: the figure is abandoned, no grace */
     if (gp->pid > 0 && !gp->broken && gp->to_child >= 0) {
         gp->outlen = 0;
         adh_gnuplot_cmd(gp, "quit");
@@ -378,20 +397,17 @@ void adh_gnuplot_close(adh_gnuplot *gp)
     free(gp);
 }
 
-void adh_gnuplot_log_last_line(const char *logpath, char *buf, size_t len)
+void adh_gnuplot_log_last_line(int log_fd, char *buf, size_t len)
 {
     if (len)
         buf[0] = '\0';
-    FILE *f = fopen(logpath, "r");
-    if (!f)
+    struct stat st;
+    if (log_fd < 0 || fstat(log_fd, &st) != 0)
         return;
     char tail[4096];
-    long size = (fseek(f, 0, SEEK_END) == 0) ? ftell(f) : -1;
-    long from = size > (long)sizeof tail - 1 ? size - (long)sizeof tail + 1 : 0;
-    size_t n = 0;
-    if (size >= 0 && fseek(f, from, SEEK_SET) == 0)
-        n = fread(tail, 1, sizeof tail - 1, f);
-    fclose(f);
+    off_t from = st.st_size > (off_t)sizeof tail - 1 ? st.st_size - (off_t)sizeof tail + 1 : 0;
+    ssize_t got = pread(log_fd, tail, sizeof tail - 1, from);
+    size_t n = got > 0 ? (size_t)got : 0;
     tail[n] = '\0';
     /* gnuplot follows an error with a line holding only a caret under the
      * offending column; the message is the line before, so skip those. */

@@ -1,17 +1,45 @@
+/* flock(2) is BSD's: the lock goes with the open directory, so it ends
+ * with the descriptor (a killed run leaves no stale lock behind). */
+#ifndef _DEFAULT_SOURCE
+#define _DEFAULT_SOURCE
+#endif
 #include "plot/outdir.h"
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
+#include <stdatomic.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
 #endif
+
+/* One file or directory adhere wrote, as the manifest records it. */
+typedef struct entry {
+    char name[32];          /* "force.tsv", or "run-3/" for a directory */
+    unsigned long long dev, ino;
+    long long size;         /* -1: a directory, or a log that grows */
+    long long mt_sec;
+    long mt_nsec;
+} entry;
+
+struct adh_outdir {
+    int fd;
+    unsigned flags;
+    int foreign_manifest;   /* a manifest there that adhere cannot trust */
+    entry *e;
+    size_t n, cap;
+    char path[PATH_MAX + 64];   /* for messages: DIR, or DIR/run-K */
+};
 
 /* Every name any mode writes (batch, sweep, cost, the TUI's plot key);
  * adhere(1) lists the same under FILES. */
@@ -19,7 +47,7 @@ static const char *const owned[] = {
     "force.tsv", "summary.tsv", "turns.tsv", "static.tsv", "profiles.tsv", "contact.tsv",
     "sweep.tsv", "cost.tsv",
     "force.png", "profile.png", "contact.png", "precontact.png", "bulge.png", "jump.png", "cost.png",
-    "gnuplot.log", "gnuplot-figures.log",
+    "gnuplot.log", "gnuplot-figures.log", ADH_OUTDIR_MANIFEST,
 };
 
 static int all_digits(const char *s, size_t n)
@@ -32,8 +60,22 @@ static int all_digits(const char *s, size_t n)
     return 1;
 }
 
-/* The temporaries: .NAME.PID.tmp (tables, cost.png), .NAME.tmpPID
- * (figures), .cost-plot.PID.dat (cost.png's data). */
+int adh_outdir_owns(const char *name)
+{
+    for (size_t i = 0; i < sizeof owned / sizeof owned[0]; i++)
+        if (strcmp(name, owned[i]) == 0)
+            return 1;
+    return 0;
+}
+
+static int is_run_dir(const char *name)
+{
+    return strncmp(name, "run-", 4) == 0 && all_digits(name + 4, strlen(name + 4)) && strlen(name) < 24;
+}
+
+/* A temporary of an owned name: .NAME.XXXXXX (this version), or an older
+ * adhere's .NAME.PID.tmp, .NAME.tmpPID, .cost-plot.PID.dat. Only
+ * --overwrite removes them: adhere cannot prove a killed run's are its own. */
 static int owned_temporary(const char *name)
 {
     if (name[0] != '.')
@@ -44,11 +86,14 @@ static int owned_temporary(const char *name)
         return n > 4 && strcmp(rest + 10 + n - 4, ".dat") == 0 && all_digits(rest + 10, n - 4);
     }
     for (size_t i = 0; i < sizeof owned / sizeof owned[0]; i++) {
-        size_t len = strlen(owned[i]);
-        if (strncmp(rest, owned[i], len) != 0 || rest[len] != '.')
+        const char *o = owned[i][0] == '.' ? owned[i] + 1 : owned[i];
+        size_t len = strlen(o);
+        if (strncmp(rest, o, len) != 0 || rest[len] != '.')
             continue;
         const char *t = rest + len + 1;
         size_t n = strlen(t);
+        if (n == 6 && strspn(t, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789") == 6)
+            return 1;
         if (strncmp(t, "tmp", 3) == 0 && all_digits(t + 3, n - 3))
             return 1;
         if (n > 4 && strcmp(t + n - 4, ".tmp") == 0 && all_digits(t, n - 4))
@@ -57,76 +102,561 @@ static int owned_temporary(const char *name)
     return 0;
 }
 
-int adh_outdir_owns(const char *name)
+/* ------------------------------------------------------- new files */
+
+/* Six letters or digits no other call of this process repeats soon. */
+static void random6(char *out)
 {
-    for (size_t i = 0; i < sizeof owned / sizeof owned[0]; i++)
-        if (strcmp(name, owned[i]) == 0)
-            return 1;
-    return owned_temporary(name);
+    static const char set[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+    static _Atomic unsigned long long counter;   /* a sweep's threads write at once */
+    struct timespec ts;
+    clock_gettime(CLOCK_REALTIME, &ts);
+    unsigned long long x = (unsigned long long)ts.tv_nsec ^ ((unsigned long long)ts.tv_sec << 30) ^
+                           ((unsigned long long)getpid() << 16) ^ (uintptr_t)out ^
+                           ((atomic_fetch_add(&counter, 1) + 1) * 0x9E3779B97F4A7C15ULL);
+    for (int i = 0; i < 6; i++) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        out[i] = set[x % 62];
+    }
+    out[6] = '\0';
 }
 
-static int is_run_dir(const char *name)
+/* A new file .NAME.XXXXXX in dirfd: O_EXCL and O_NOFOLLOW, so nothing
+ * planted under that name (a link) is ever opened. Its descriptor, or -1
+ * with errno. */
+static int temp_create(int dirfd, const char *name, char *tmp, size_t len)
 {
-    return strncmp(name, "run-", 4) == 0 && all_digits(name + 4, strlen(name + 4));
+    for (int tries = 0; tries < 100; tries++) {
+        char r[8];
+        random6(r);
+        if (snprintf(tmp, len, ".%s.%s", name[0] == '.' ? name + 1 : name, r) >= (int)len) {
+            errno = ENAMETOOLONG;
+            return -1;
+        }
+        int fd = openat(dirfd, tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd >= 0 || errno != EEXIST)
+            return fd;
+    }
+    return -1;
 }
 
-static int clear(const char *dir, int depth, char *why, size_t whylen)
+/* writer into fd, every byte out (a full disk or a file size limit shows
+ * up here), st the file as written; fd is closed. 0, or an errno. */
+static int fill(int fd, adh_outdir_writer writer, const void *ctx, struct stat *st)
 {
-    DIR *d = opendir(dir);
-    if (!d) {
-        if (errno == ENOENT)
-            return 0;
-        snprintf(why, whylen, "cannot read %s to clear an earlier run's files: %s", dir, strerror(errno));
+    FILE *f = fdopen(fd, "w");
+    if (!f) {
+        int e = errno;
+        close(fd);
+        return e;
+    }
+    errno = 0;
+    int rc = writer(f, ctx);
+    int saved = rc ? (errno ? errno : EIO) : 0;
+    if (fflush(f) != 0 || ferror(f)) {
+        saved = saved ? saved : errno ? errno : EIO;
+    }
+    if (!saved && st && fstat(fileno(f), st) != 0)
+        saved = errno;
+    if (fclose(f) != 0 && !saved)
+        saved = errno ? errno : EIO;
+    return saved;
+}
+
+/* --------------------------------------------------------- manifest */
+
+static int entry_name_ok(const char *name)
+{
+    size_t n = strlen(name);
+    if (n && name[n - 1] == '/') {
+        char base[64];
+        snprintf(base, sizeof base, "%.*s", (int)(n - 1), name);
+        return is_run_dir(base);
+    }
+    return adh_outdir_owns(name) && strcmp(name, ADH_OUTDIR_MANIFEST) != 0;
+}
+
+static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsigned long long ino,
+                   long long size, long long sec, long nsec)
+{
+    if (d->n == d->cap) {
+        size_t cap = d->cap ? 2 * d->cap : 16;
+        entry *e = realloc(d->e, cap * sizeof *e);
+        if (!e)
+            return -1;
+        d->e = e;
+        d->cap = cap;
+    }
+    d->e[d->n++] = (entry){ .dev = dev, .ino = ino, .size = size, .mt_sec = sec, .mt_nsec = nsec };
+    snprintf(d->e[d->n - 1].name, sizeof d->e[0].name, "%s", name);
+    return 0;
+}
+
+/* name as st is now; a log that grows, and a directory, by identity alone */
+static int add_entry(adh_outdir *d, const char *name, const struct stat *st, int grows)
+{
+    return add_raw(d, name, (unsigned long long)st->st_dev, (unsigned long long)st->st_ino,
+                   grows || S_ISDIR(st->st_mode) ? -1 : (long long)st->st_size, (long long)st->st_mtim.tv_sec,
+                   st->st_mtim.tv_nsec);
+}
+
+static void drop_entry(adh_outdir *d, size_t i)
+{
+    d->e[i] = d->e[--d->n];
+}
+
+/* Whether st is still the file or directory e recorded. */
+static int same(const entry *e, const struct stat *st)
+{
+    size_t n = strlen(e->name);
+    int dir = n && e->name[n - 1] == '/';
+    if (dir ? !S_ISDIR(st->st_mode) : !S_ISREG(st->st_mode))
+        return 0;
+    if (e->dev != (unsigned long long)st->st_dev || e->ino != (unsigned long long)st->st_ino)
+        return 0;
+    return e->size < 0 || (e->size == (long long)st->st_size && e->mt_sec == (long long)st->st_mtim.tv_sec &&
+                           e->mt_nsec == st->st_mtim.tv_nsec);
+}
+
+/* The entry of d that name (a file, or "run-K" for the directory) is
+ * still, or -1. */
+static long find(const adh_outdir *d, const char *name, const struct stat *st)
+{
+    char dirname[40];
+    snprintf(dirname, sizeof dirname, "%s/", name);
+    for (size_t i = 0; i < d->n; i++)
+        if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(&d->e[i], st))
+            return (long)i;
+    return -1;
+}
+
+static int manifest_table(FILE *f, const void *ctx)
+{
+    const adh_outdir *d = ctx;
+    fputs("# adhere: the files it wrote in this directory (name, device, inode, size, modification time);\n"
+          "# a later run removes only those that are still the same, and writes nothing through a link\n", f);
+    for (size_t i = 0; i < d->n; i++) {
+        const entry *e = &d->e[i];
+        if (e->size < 0)
+            fprintf(f, "%s\t%llu\t%llu\t-\t-\n", e->name, e->dev, e->ino);
+        else
+            fprintf(f, "%s\t%llu\t%llu\t%lld\t%lld.%09ld\n", e->name, e->dev, e->ino, e->size, e->mt_sec,
+                    e->mt_nsec);
+    }
+    return 0;
+}
+
+/* The manifest rewritten from d's entries (a new file renamed over it). */
+static int save(adh_outdir *d)
+{
+    char tmp[64];
+    int fd = temp_create(d->fd, ADH_OUTDIR_MANIFEST, tmp, sizeof tmp);
+    if (fd < 0)
+        return -1;
+    if (fill(fd, manifest_table, d, NULL) != 0 || renameat(d->fd, tmp, d->fd, ADH_OUTDIR_MANIFEST) != 0) {
+        unlinkat(d->fd, tmp, 0);
         return -1;
     }
-    int rc = 0;
-    struct dirent *e;
-    char p[PATH_MAX + 300];
-    while (rc == 0 && (e = readdir(d)) != NULL) {
-        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
-        struct stat st;
-        if (lstat(p, &st) != 0)
-            continue;
-        if (S_ISDIR(st.st_mode) && depth == 0 && is_run_dir(e->d_name)) {
-            rc = clear(p, 1, why, whylen);
-            rmdir(p);   /* only when nothing else is in it */
-        } else if (!S_ISDIR(st.st_mode) && adh_outdir_owns(e->d_name) && unlink(p) != 0 && errno != ENOENT) {
-            snprintf(why, whylen, "cannot remove %.3000s, left by an earlier run: %s", p, strerror(errno));
-            rc = -1;
-        }
+    return 0;
+}
+
+static void parse_line(adh_outdir *d, const char *line)
+{
+    char name[64], size[32], mtime[48];
+    unsigned long long dev, ino;
+    if (line[0] == '#' || sscanf(line, "%63[^\t]\t%llu\t%llu\t%31s\t%47s", name, &dev, &ino, size, mtime) != 5 ||
+        !entry_name_ok(name))
+        return;
+    long long bytes = -1, sec = 0;
+    long nsec = 0;
+    if (strcmp(size, "-") != 0 && (sscanf(size, "%lld", &bytes) != 1 || bytes < 0 ||
+                                   sscanf(mtime, "%lld.%ld", &sec, &nsec) != 2))
+        return;
+    add_raw(d, name, dev, ino, bytes, sec, nsec);
+}
+
+/* d's manifest into its entries. One that is not a regular file of this
+ * user's (a link, a pipe, another's) is not trusted: d->foreign_manifest. */
+static void load(adh_outdir *d)
+{
+    int fd = openat(d->fd, ADH_OUTDIR_MANIFEST, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        d->foreign_manifest = errno != ENOENT;
+        return;
     }
-    closedir(d);
+    struct stat st;
+    FILE *f = NULL;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != geteuid() || st.st_size > (1 << 20) ||
+        !(f = fdopen(fd, "r"))) {
+        d->foreign_manifest = 1;
+        close(fd);
+        return;
+    }
+    char line[256];
+    while (fgets(line, sizeof line, f))
+        parse_line(d, line);
+    fclose(f);
+}
+
+/* ------------------------------------------------- opening, clearing */
+
+static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)
+{
+    adh_outdir *d = calloc(1, sizeof *d);
+    if (!d) {
+        close(fd);
+        return NULL;
+    }
+    d->fd = fd;
+    d->flags = flags;
+    snprintf(d->path, sizeof d->path, "%s", path);
+    return d;
+}
+
+static int clear(adh_outdir *d, int depth, char *why, size_t whylen);
+static int foreign(adh_outdir *d, int depth, char *why, size_t whylen);
+
+/* The directory name in dirfd, never through a link: d with no entries
+ * yet, or NULL with why. */
+static adh_outdir *open_at(int dirfd, const char *name, const char *path, unsigned flags, char *why, size_t whylen)
+{
+    int fd = openat(dirfd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) {
+        int e = errno;
+        struct stat st;
+        int link = e == ELOOP || (fstatat(dirfd, name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISLNK(st.st_mode));
+        if (link)
+            snprintf(why, whylen, "%.3000s is a symbolic link: adhere writes through no link; remove it, or "
+                     "choose another -o", path);
+        else
+            snprintf(why, whylen, "cannot open directory %.3000s: %s", path, strerror(e));
+        return NULL;
+    }
+    adh_outdir *d = outdir_new(fd, flags, path);
+    if (!d)
+        snprintf(why, whylen, "out of memory");
+    return d;
+}
+
+/* The run-K directory `name` of d emptied of adhere's files (its own
+ * manifest's, or with OVERWRITE every one under adhere's names), then
+ * removed when nothing else is in it: 1 removed, 0 kept (the user's files
+ * are in it; it then keeps an empty manifest), -1 with why. */
+static int empty_subdir(adh_outdir *d, const char *name, unsigned flags, char *why, size_t whylen)
+{
+    char path[PATH_MAX + 64];
+    snprintf(path, sizeof path, "%.4000s/%.40s", d->path, name);
+    adh_outdir *s = open_at(d->fd, name, path, flags, why, whylen);
+    if (!s)
+        return -1;
+    load(s);
+    int rc = clear(s, 1, why, whylen);
+    if (rc == 0 && (flags & ADH_OUTDIR_OVERWRITE))
+        rc = foreign(s, 1, why, whylen);
+    if (rc == 0 && s->n == 0 && !s->foreign_manifest) {
+        unlinkat(s->fd, ADH_OUTDIR_MANIFEST, 0);
+        rc = unlinkat(d->fd, name, AT_REMOVEDIR) == 0;
+        if (!rc)
+            save(s);
+    }
+    adh_outdir_close(s);
     return rc;
 }
 
-int adh_outdir_clear(const char *dir, char *why, size_t whylen)
+/* Every file of d's manifest that is still the one adhere wrote goes; the
+ * others leave the manifest (they are no longer adhere's). A run-K is
+ * emptied of its own and goes when nothing else is in it. */
+static int clear(adh_outdir *d, int depth, char *why, size_t whylen)
 {
-    return clear(dir, 0, why, whylen);
+    for (size_t i = d->n; i-- > 0;) {
+        const entry *e = &d->e[i];
+        size_t len = strlen(e->name);
+        int dir = e->name[len - 1] == '/';
+        char base[32];
+        snprintf(base, sizeof base, "%.*s", (int)(dir ? len - 1 : len), e->name);
+        struct stat st;
+        if (fstatat(d->fd, base, &st, AT_SYMLINK_NOFOLLOW) != 0 || !same(e, &st) || (dir && depth > 0)) {
+            drop_entry(d, i);
+            continue;
+        }
+        if (dir) {
+            int rc = empty_subdir(d, base, d->flags & ~(unsigned)ADH_OUTDIR_OVERWRITE, why, whylen);
+            if (rc < 0)
+                return -1;
+            if (rc > 0)
+                drop_entry(d, i);
+            continue;
+        }
+        if (unlinkat(d->fd, base, 0) != 0 && errno != ENOENT) {
+            snprintf(why, whylen, "cannot remove %.3000s/%s, written by an earlier run: %s", d->path, base,
+                     strerror(errno));
+            return -1;
+        }
+        drop_entry(d, i);
+    }
+    return 0;
 }
 
-int adh_outdir_make(const char *dir, char *why, size_t n)
+/* --overwrite: a file under one of adhere's names (or a link) removed as
+ * if adhere had written it; a directory run-K (never a link to one)
+ * emptied of them. */
+static int overwrite(adh_outdir *d, const char *name, const struct stat *st, int depth, char *why, size_t whylen)
+{
+    if (S_ISDIR(st->st_mode))
+        return depth == 0 && is_run_dir(name) && empty_subdir(d, name, d->flags, why, whylen) < 0 ? -1 : 0;
+    if (unlinkat(d->fd, name, 0) != 0 && errno != ENOENT) {
+        snprintf(why, whylen, "cannot remove %.3000s/%s (--overwrite): %s", d->path, name, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* Files under adhere's names that its manifest does not prove its own:
+ * refused by name, or with OVERWRITE removed. */
+static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
+{
+    int dup_fd = dup(d->fd);
+    DIR *dir = dup_fd >= 0 ? fdopendir(dup_fd) : NULL;
+    if (!dir) {
+        if (dup_fd >= 0)
+            close(dup_fd);
+        snprintf(why, whylen, "cannot read %.3000s: %s", d->path, strerror(errno));
+        return -1;
+    }
+    char list[600] = "";
+    size_t count = 0;
+    int rc = 0;
+    struct dirent *de;
+    while (rc == 0 && (de = readdir(dir)) != NULL) {
+        const char *name = de->d_name;
+        int manifest = strcmp(name, ADH_OUTDIR_MANIFEST) == 0;
+        int mine = adh_outdir_owns(name) || is_run_dir(name);
+        struct stat st;
+        if ((!mine && !owned_temporary(name)) || fstatat(d->fd, name, &st, AT_SYMLINK_NOFOLLOW) != 0)
+            continue;
+        if (manifest ? !d->foreign_manifest : mine && find(d, name, &st) >= 0)
+            continue;
+        if (d->flags & ADH_OUTDIR_OVERWRITE)
+            rc = overwrite(d, name, &st, depth, why, whylen);
+        else if (mine && count++ < 6) {
+            char item[64];
+            snprintf(item, sizeof item, "%s%.40s%s", *list ? ", " : "", name,
+                     S_ISLNK(st.st_mode) ? " (a link)" : S_ISDIR(st.st_mode) ? "/" : "");
+            strncat(list, item, sizeof list - strlen(list) - 1);
+        }
+    }
+    closedir(dir);
+    if (rc == 0 && count) {
+        snprintf(why, whylen, "%.2000s holds %s%s, under names adhere writes but not written by it (or changed "
+                 "since it wrote them): refused, so that nothing of yours is removed or replaced; move %s away, "
+                 "choose another -o, or pass --overwrite to replace %s", d->path, list, count > 6 ? " and more" : "",
+                 count > 1 ? "them" : "it", count > 1 ? "them" : "it");
+        return -1;
+    }
+    return rc;
+}
+
+/* Locked, the earlier run's files cleared, foreign files refused, the
+ * manifest written: d is ready for this run's files. */
+static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
+{
+    if (flock(d->fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+        snprintf(why, whylen, "%.3000s is in use: another adhere is writing into it (it holds the directory's "
+                 "lock); wait for it to finish, or choose another -o", d->path);
+        return -1;
+    }
+    if (faccessat(d->fd, ".", W_OK | X_OK, AT_EACCESS) != 0) {
+        snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));
+        return -1;
+    }
+    load(d);
+    /* refused before anything is removed */
+    if (foreign(d, depth, why, whylen) != 0 || clear(d, depth, why, whylen) != 0)
+        return -1;
+    d->foreign_manifest = 0;
+    if (save(d) != 0) {
+        snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* mkdir -p: each missing component of path made. */
+static int make_path(const char *path, char *why, size_t whylen)
 {
     char buf[PATH_MAX];
-    snprintf(buf, sizeof buf, "%s", dir);
+    snprintf(buf, sizeof buf, "%s", path);
     for (char *p = buf + 1;; p++) {
         if (*p && *p != '/')
             continue;
         char c = *p;
         *p = '\0';
         if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            snprintf(why, n, "cannot create directory %.900s: %s", buf, strerror(errno));
+            snprintf(why, whylen, "cannot create directory %.3000s: %s", buf, strerror(errno));
             return -1;
         }
         *p = c;
         if (!c)
-            break;
+            return 0;
+    }
+}
+
+adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen)
+{
+    if (!path[0] || strlen(path) >= PATH_MAX) {
+        snprintf(why, whylen, "cannot write into %.200s...: %s", path, strerror(path[0] ? ENAMETOOLONG : ENOENT));
+        return NULL;
+    }
+    if (make_path(path, why, whylen) != 0)
+        return NULL;
+    /* the directory the user named, through any link in that name: the
+     * names inside it are the ones no link may redirect */
+    int fd = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) {
+        snprintf(why, whylen, "cannot write into %.3000s: %s", path, strerror(errno));
+        return NULL;
+    }
+    adh_outdir *d = outdir_new(fd, flags, path);
+    if (!d) {
+        snprintf(why, whylen, "out of memory");
+        return NULL;
+    }
+    if (prepare(d, 0, why, whylen) != 0) {
+        adh_outdir_close(d);
+        return NULL;
+    }
+    return d;
+}
+
+adh_outdir *adh_outdir_sub(adh_outdir *d, const char *name, char *why, size_t whylen)
+{
+    char path[PATH_MAX + 64];
+    snprintf(path, sizeof path, "%.4000s/%.40s", d->path, name);
+    if (mkdirat(d->fd, name, 0777) != 0 && errno != EEXIST) {
+        snprintf(why, whylen, "cannot create directory %.3000s: %s", path, strerror(errno));
+        return NULL;
     }
     struct stat st;
-    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode) || access(buf, W_OK) != 0) {
-        snprintf(why, n, "cannot write into %.900s: not a writable directory", buf);
+    if (fstatat(d->fd, name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISDIR(st.st_mode) && find(d, name, &st) < 0) {
+        char dir[40];
+        snprintf(dir, sizeof dir, "%s/", name);
+        if (add_entry(d, dir, &st, 0) != 0 || save(d) != 0) {
+            snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno ? errno : ENOMEM));
+            return NULL;
+        }
+    }
+    adh_outdir *s = open_at(d->fd, name, path, d->flags, why, whylen);
+    if (s && prepare(s, 1, why, whylen) != 0) {
+        adh_outdir_close(s);
+        return NULL;
+    }
+    return s;
+}
+
+void adh_outdir_close(adh_outdir *d)
+{
+    if (!d)
+        return;
+    close(d->fd);
+    free(d->e);
+    free(d);
+}
+
+const char *adh_outdir_path(const adh_outdir *d)
+{
+    return d->path;
+}
+
+/* ------------------------------------------------------------ files */
+
+/* Whether name may be made or replaced in d: absent, adhere's own, or
+ * --overwrite. */
+static int may_replace(const adh_outdir *d, const char *name)
+{
+    struct stat st;
+    if (fstatat(d->fd, name, &st, AT_SYMLINK_NOFOLLOW) != 0)
+        return errno == ENOENT;
+    return (d->flags & ADH_OUTDIR_OVERWRITE) || find(d, name, &st) >= 0;
+}
+
+static void not_replaced(const adh_outdir *d, const char *name, char *why, size_t whylen)
+{
+    snprintf(why, whylen, "cannot write %.3000s/%s: a file adhere did not write is there (left alone; "
+             "--overwrite replaces it)", d->path, name);
+}
+
+int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, const void *ctx, char *why,
+                     size_t whylen)
+{
+    if (!may_replace(d, name)) {
+        not_replaced(d, name, why, whylen);
         return -1;
     }
+    char tmp[64];
+    struct stat st;
+    int fd = temp_create(d->fd, name, tmp, sizeof tmp);
+    int e = fd < 0 ? errno : fill(fd, writer, ctx, &st);
+    /* recorded before the rename and the older record kept until after it:
+     * whichever file a kill leaves under name, the manifest proves it */
+    size_t before = d->n;
+    if (!e && (add_entry(d, name, &st, 0) != 0 || save(d) != 0))
+        e = errno ? errno : ENOMEM;
+    if (!e && renameat(d->fd, tmp, d->fd, name) != 0)
+        e = errno;
+    if (e) {
+        if (fd >= 0)
+            unlinkat(d->fd, tmp, 0);
+        d->n = before < d->n ? before : d->n;
+        snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, name, strerror(e));
+        return -1;
+    }
+    for (size_t i = d->n - 1; i-- > 0;)
+        if (!strcmp(d->e[i].name, name))
+            drop_entry(d, i);
+    save(d);
     return 0;
+}
+
+int adh_outdir_log_open(adh_outdir *d, const char *name, char *why, size_t whylen)
+{
+    if (!may_replace(d, name)) {
+        not_replaced(d, name, why, whylen);
+        return -1;
+    }
+    /* an earlier log of this run's goes (each holds one session's
+     * complaints), and with it its record */
+    unlinkat(d->fd, name, 0);
+    for (size_t i = d->n; i-- > 0;)
+        if (!strcmp(d->e[i].name, name))
+            drop_entry(d, i);
+    int fd = openat(d->fd, name, O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_APPEND | O_CLOEXEC, 0666);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0 || add_entry(d, name, &st, 1) != 0 || save(d) != 0) {
+        snprintf(why, whylen, "cannot open gnuplot's log %.3000s/%s: %s", d->path, name, strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+void adh_outdir_log_close(adh_outdir *d, const char *name, int fd)
+{
+    struct stat st, now;
+    if (fd < 0)
+        return;
+    long i = -1;
+    if (fstat(fd, &st) == 0 && fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 &&
+        now.st_dev == st.st_dev && now.st_ino == st.st_ino)
+        i = find(d, name, &now);
+    if (i >= 0) {
+        /* empty: removed; else recorded as it ends, size and time too */
+        drop_entry(d, (size_t)i);
+        if (st.st_size > 0 || unlinkat(d->fd, name, 0) != 0)
+            add_entry(d, name, &now, 0);
+        save(d);
+    }
+    close(fd);
 }
 
 int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t whylen)
@@ -141,44 +671,31 @@ int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t w
     return -1;
 }
 
-int adh_outdir_write(const char *dir, const char *name, adh_outdir_writer writer, const void *ctx,
-                     char *why, size_t whylen)
+int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx)
 {
-    char path[PATH_MAX + 64], tmp[PATH_MAX + 80];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (strlen(path) >= PATH_MAX) {
-        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(ENAMETOOLONG));
-        return -1;
+    char dir[PATH_MAX], tmp[PATH_MAX];
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    if (strlen(path) >= PATH_MAX - 16 || !*base || !strcmp(base, ".") || !strcmp(base, ".."))
+        return strlen(path) >= PATH_MAX - 16 ? ENAMETOOLONG : EISDIR;
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash == path ? 1 : slash - path) : 1, slash ? path : ".");
+    int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    int e = dfd < 0 ? errno : 0;
+    struct stat st;
+    if (!e && fstatat(dfd, base, &st, AT_SYMLINK_NOFOLLOW) == 0 && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode) &&
+        !S_ISDIR(st.st_mode)) {
+        /* a terminal, pipe or /dev/null: written in place, nothing to replace */
+        int fd = openat(dfd, base, O_WRONLY | O_NOFOLLOW | O_NOCTTY | O_CLOEXEC);
+        e = fd < 0 ? errno : fill(fd, writer, ctx, NULL);
+    } else if (!e) {
+        int fd = temp_create(dfd, base, tmp, sizeof tmp);
+        e = fd < 0 ? errno : fill(fd, writer, ctx, NULL);
+        if (!e && renameat(dfd, tmp, dfd, base) != 0)
+            e = errno;
+        if (e && fd >= 0)
+            unlinkat(dfd, tmp, 0);
     }
-    /* the temporary beside it, DIR/.NAME.PID.tmp (adh_outdir_owns knows it) */
-    snprintf(tmp, sizeof tmp, "%s/.%s.%ld.tmp", dir, name, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(errno));
-        return -1;
-    }
-    errno = 0;
-    int rc = writer(f, ctx);
-    int saved = errno;
-    /* fflush + fsync-free close: a full disk shows up here, before the rename. */
-    if (fflush(f) != 0 || ferror(f)) {
-        rc = -1;
-        saved = errno;
-    }
-    if (fclose(f) != 0 && rc == 0) {
-        rc = -1;
-        saved = errno;
-    }
-    if (rc != 0) {
-        unlink(tmp);
-        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(saved ? saved : EIO));
-        return -1;
-    }
-    if (rename(tmp, path) != 0) {
-        saved = errno;
-        unlink(tmp);
-        snprintf(why, whylen, "cannot write %.3000s: %s", path, strerror(saved));
-        return -1;
-    }
-    return 0;
+    if (dfd >= 0)
+        close(dfd);
+    return e;
 }

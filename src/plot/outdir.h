@@ -1,41 +1,80 @@
-/* The files adhere owns in an output directory (-o DIR): a run first
- * removes every one an earlier run left, so a directory never mixes the
- * tables and figures of two runs. Other files are never touched. */
+/* An output directory (-o DIR, a sweep's run-K, the TUI's plots) and the
+ * files adhere writes in it. The directory is opened once and every file is
+ * made relative to that descriptor, never through a name that could be a
+ * link: temporaries are created new (O_EXCL, O_NOFOLLOW) and renamed into
+ * place, a sweep's run-K is opened with O_NOFOLLOW. adhere keeps a manifest
+ * (.adhere-manifest) of what it wrote, each file with its device, inode,
+ * size and modification time, and removes from an earlier run only the
+ * files the manifest proves are still the ones it wrote: a file of the user's
+ * is never deleted or replaced, unless --overwrite says so. A lock on the
+ * directory refuses a second run into it while one is writing. */
 #ifndef ADH_PLOT_OUTDIR_H
 #define ADH_PLOT_OUTDIR_H
 
 #include <stddef.h>
 #include <stdio.h>
 
-/* Whether name (a bare file name) is one adhere writes: a table, a figure,
- * a gnuplot log, or a temporary of one (.NAME.PID.tmp, .NAME.tmpPID) left
- * by a run that was killed. */
+/* The manifest's name in each directory adhere writes. */
+#define ADH_OUTDIR_MANIFEST ".adhere-manifest"
+
+typedef struct adh_outdir adh_outdir;
+
+/* adh_outdir_open's flags. OVERWRITE (--overwrite): files under the names
+ * adhere writes that it cannot prove are its own (a directory written by an
+ * older adhere, or the user's) are removed or replaced as if they were. */
+enum { ADH_OUTDIR_OVERWRITE = 1 };
+
+/* mkdir -p path and open it: locked against a second adhere, cleared of
+ * the files an earlier run wrote (per its manifest), and checked for files
+ * under adhere's names that it did not write, which refuse it unless
+ * OVERWRITE. NULL with a sentence naming the directory and what to do in
+ * why. */
+adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen);
+
+/* The subdirectory name (a sweep's run-K) of d: made with mkdirat, opened
+ * without following a link, recorded in d's manifest, and opened as
+ * adh_outdir_open does. NULL with why. */
+adh_outdir *adh_outdir_sub(adh_outdir *d, const char *name, char *why, size_t whylen);
+
+/* Unlocks and frees d (NULL is fine). */
+void adh_outdir_close(adh_outdir *d);
+
+/* The path d was opened as, for messages ("DIR/run-2"). */
+const char *adh_outdir_path(const adh_outdir *d);
+
+/* Writes d/name atomically: writer fills a new temporary .NAME.XXXXXX in
+ * d, which is renamed to name only when every byte got out (a full disk,
+ * or a file size limit, leaves no file under the final name and no
+ * temporary), then recorded in the manifest. writer returns 0, or nonzero
+ * on failure. 0, or -1 with "cannot write DIR/NAME: reason" in why. A file
+ * under name that adhere did not write is not replaced (unless OVERWRITE).
+ * Every table and figure is written here. Threads may write into different
+ * directories at once, not into one. */
+typedef int (*adh_outdir_writer)(FILE *f, const void *ctx);
+int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, const void *ctx, char *why,
+                     size_t whylen);
+
+/* A log (gnuplot.log) made new in d for appending, readable too, recorded
+ * in the manifest as a file that grows: its descriptor (close-on-exec), or
+ * -1 with why. adh_outdir_log_close closes it and removes it when it stayed
+ * empty. */
+int adh_outdir_log_open(adh_outdir *d, const char *name, char *why, size_t whylen);
+void adh_outdir_log_close(adh_outdir *d, const char *name, int fd);
+
+/* Whether name (a bare file name) is one adhere writes in an output
+ * directory: a table, a figure, a gnuplot log, the manifest. */
 int adh_outdir_owns(const char *name);
 
-/* mkdir -p dir, and that it is a writable directory: 0, or -1 with a
- * sentence naming the directory in why. Every output directory (-o, a
- * sweep's run-K, the TUI's plots) is made here. */
-int adh_outdir_make(const char *dir, char *why, size_t whylen);
-
 /* A new private directory $TMPDIR/NAME-XXXXXX (/tmp without TMPDIR) for
- * gnuplot's data files, its path in buf: 0, or -1 with "cannot make a
- * temporary directory PATH: reason" in why (buf then ""). The caller
+ * gnuplot's data files and images, its path in buf: 0, or -1 with "cannot
+ * make a temporary directory PATH: reason" in why (buf then ""). The caller
  * removes it. */
 int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t whylen);
 
-/* Writes dir/name atomically: writer fills a temporary beside it
- * (DIR/.NAME.PID.tmp), which is renamed to dir/name only when every byte
- * got out, so a reader never sees half a table and a full disk leaves no
- * file under the final name. writer returns 0, or nonzero on failure. 0, or
- * -1 with "cannot write DIR/NAME: reason" in why. Every table is written
- * here. */
-typedef int (*adh_outdir_writer)(FILE *f, const void *ctx);
-int adh_outdir_write(const char *dir, const char *name, adh_outdir_writer writer, const void *ctx,
-                     char *why, size_t whylen);
-
-/* Removes from dir every file adh_outdir_owns, and each sweep directory
- * run-K holding nothing else once its own files are gone. 0, or -1 with why
- * (a file that cannot be removed); a dir that does not exist is empty. */
-int adh_outdir_clear(const char *dir, char *why, size_t whylen);
+/* One file at a path the user named (the TUI's :rows and :dump, --screen):
+ * a new temporary beside it renamed over it, so a link there is replaced,
+ * never written through; a device or pipe there is written in place. 0, or
+ * the errno that stopped it (nothing left under a temporary name). */
+int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx);
 
 #endif

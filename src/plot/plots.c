@@ -20,6 +20,7 @@
 #include "plot/labels.h"
 #include "plot/outdir.h"
 #include "plot/png.h"
+#include "plot/session.h"
 #include "plot/speed.h"
 #include "plot/tsv.h"
 #include "scene/measured.h"
@@ -34,11 +35,10 @@ typedef struct plotter {
     const adh_plot_setup *s;
     const adh_run *run;
     const adh_run *ref;       /* the static equilibrium beside a relaxation run, or NULL */
-    const char *dir;
-    adh_gnuplot *gp;
+    adh_outdir *out;
+    adh_session ses;          /* gnuplot, its style, data files and images */
+    adh_gnuplot *gp;          /* ses.gp */
     adh_derived d;
-    char style[PATH_MAX];     /* "" = built-in defaults only */
-    char tmpdir[PATH_MAX];    /* data files for gnuplot, removed at the end */
     char done[512];           /* files written, for msg */
     char notes[512];          /* figures skipped for lack of data */
     unsigned written;         /* ADH_PLOT_* bits of the figures in place */
@@ -150,11 +150,10 @@ static int max_path(const adh_run *run)
 
 static FILE *data_file(plotter *pl, const char *name, char *path, size_t len)
 {
-    snprintf(path, len, "%s/%s", pl->tmpdir, name);
-    FILE *f = fopen(path, "w");
+    char why[PATH_MAX + 128];
+    FILE *f = adh_session_data(&pl->ses, name, path, len, why, sizeof why);
     if (!f)
-        append(pl->error, sizeof pl->error, "%scannot write %s: %s", *pl->error ? "; " : "",
-               path, strerror(errno));
+        append(pl->error, sizeof pl->error, "%s%s", *pl->error ? "; " : "", why);
     return f;
 }
 
@@ -239,17 +238,16 @@ static void unload_title(const adh_turn_result *tr, int nunload, int *labelled, 
         snprintf(title, len, "title \"unloading\"");
 }
 
-static void begin_figure(plotter *pl, const char *figure, const char *tmp_png)
+static void begin_figure(plotter *pl, const char *figure, const char *name)
 {
-    adh_png_begin(pl->gp, pl->style, figure, tmp_png);
+    adh_session_begin(&pl->ses, figure, name);
 }
 
 /* The figure into place, or its failure remembered for msg. */
-static int finish_figure(plotter *pl, const char *name, const char *tmp_png)
+static int finish_figure(plotter *pl, const char *name)
 {
-    char final[PATH_MAX + 64], why[1024];
-    snprintf(final, sizeof final, "%s/%s", pl->dir, name);
-    if (adh_png_finish(pl->gp, tmp_png, final, why, sizeof why) != 0) {
+    char why[1024];
+    if (adh_session_end(&pl->ses, name, why, sizeof why) != 0) {
         if (!*pl->error)
             snprintf(pl->error, sizeof pl->error, "%s: %.960s", name, why);
         return -1;
@@ -258,11 +256,6 @@ static int finish_figure(plotter *pl, const char *name, const char *tmp_png)
     pl->written |= !strcmp(name, "force.png") ? ADH_PLOT_FORCE
                  : !strcmp(name, "profile.png") ? ADH_PLOT_PROFILE : ADH_PLOT_CONTACT;
     return 0;
-}
-
-static void tmp_png_name(const plotter *pl, const char *name, char *buf, size_t len)
-{
-    snprintf(buf, len, "%s/.%s.tmp%ld", pl->dir, name, (long)getpid());
 }
 
 /* ---------------------------------------------------------------- force */
@@ -325,7 +318,7 @@ static int plot_force(plotter *pl)
                *pl->notes ? "; " : "");
         return 0;
     }
-    char dat[PATH_MAX + 32], adh[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
+    char dat[PATH_MAX + 32], adh[PATH_MAX + 32], q[ADH_GP_PATH_SIZE];
     FILE *f = data_file(pl, "force.dat", dat, sizeof dat);
     if (!f)
         return -1;
@@ -477,8 +470,7 @@ static int plot_force(plotter *pl)
     char heading[HEADING_SIZE];
     title_string(pl, "Force vs position", heading, sizeof heading);
 
-    tmp_png_name(pl, "force.png", tmp_png, sizeof tmp_png);
-    begin_figure(pl, "force", tmp_png);
+    begin_figure(pl, "force", "force.png");
     adh_gnuplot_cmd(pl->gp, "Fu = %.17g", fscale);
     adh_gnuplot_cmd(pl->gp, "Fjkr = %.17g", d->F_jkr);
     adh_gnuplot_cmd(pl->gp, "Fdmt = %.17g", d->F_dmt);
@@ -646,7 +638,7 @@ static int plot_force(plotter *pl)
                         adh_gp_path(adh, q, sizeof q));
         adh_gnuplot_cmd(pl->gp, "unset multiplot");
     }
-    return finish_figure(pl, "force.png", tmp_png);
+    return finish_figure(pl, "force.png");
 }
 
 /* -------------------------------------------------------------- profile */
@@ -695,7 +687,7 @@ static int plot_profile(plotter *pl)
     }
     qsort(pos, npos, sizeof *pos, cmp_desc);
 
-    char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
+    char dat[PATH_MAX + 32], q[ADH_GP_PATH_SIZE];
     FILE *f = data_file(pl, "profile.dat", dat, sizeof dat);
     if (!f) {
         free(sel);
@@ -732,8 +724,7 @@ static int plot_profile(plotter *pl)
     char heading[HEADING_SIZE];
     title_string(pl, "Surface profiles", heading, sizeof heading);
 
-    tmp_png_name(pl, "profile.png", tmp_png, sizeof tmp_png);
-    begin_figure(pl, "profile", tmp_png);
+    begin_figure(pl, "profile", "profile.png");
     adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
     adh_gnuplot_cmd(pl->gp, "set xlabel \"radial distance r (µm)\"");
     adh_gnuplot_cmd(pl->gp, "set ylabel \"local separation h(r) (nm)\"");
@@ -800,7 +791,7 @@ static int plot_profile(plotter *pl)
     free(cmd);
     free(sel);
     free(pos);
-    return finish_figure(pl, "profile.png", tmp_png);
+    return finish_figure(pl, "profile.png");
 }
 
 /* -------------------------------------------------------------- contact */
@@ -816,7 +807,7 @@ static int plot_contact(plotter *pl)
     /* set[3p]: step-by-step speed on path p, 3p+1: smoothed speed, 3p+2:
      * radius (in contact, plus the row either side so the jumps show) */
     int *set = malloc(3 * ((size_t)np + 1) * sizeof *set);
-    char dat[PATH_MAX + 32], tmp_png[PATH_MAX + 64], q[ADH_GP_PATH_SIZE];
+    char dat[PATH_MAX + 32], q[ADH_GP_PATH_SIZE];
     int rc = -1;
     if ((n && (!dadh0 || !dadt || !smooth)) || !set)
         goto out;
@@ -883,8 +874,7 @@ static int plot_contact(plotter *pl)
     title_string(pl, what, heading, sizeof heading);
     /* a two-line heading (scene title) needs more room above the panels */
     double top = has_title(pl) ? 0.90 : 0.94;
-    tmp_png_name(pl, "contact.png", tmp_png, sizeof tmp_png);
-    begin_figure(pl, "contact", tmp_png);
+    begin_figure(pl, "contact", "contact.png");
     adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
     adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (xmin - xpad) * 1e9,
                     (xmax + xpad) * 1e9);
@@ -957,7 +947,7 @@ static int plot_contact(plotter *pl)
         free(cmd);
     }
     adh_gnuplot_cmd(pl->gp, "unset multiplot");
-    rc = finish_figure(pl, "contact.png", tmp_png);
+    rc = finish_figure(pl, "contact.png");
 out:
     free(dadh0);
     free(dadt);
@@ -967,38 +957,6 @@ out:
 }
 
 /* ------------------------------------------------------------- the lot */
-
-static void remove_tmpdir(plotter *pl)
-{
-    static const char *const names[] = { "force.dat", "adhesion.dat", "profile.dat",
-                                         "contact.dat" };
-    char p[PATH_MAX + 32];
-    if (!pl->tmpdir[0])
-        return;
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-        snprintf(p, sizeof p, "%s/%s", pl->tmpdir, names[i]);
-        unlink(p);
-    }
-    rmdir(pl->tmpdir);
-}
-
-static int file_empty(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0 && st.st_size == 0;
-}
-
-/* Whatever path a figure took (an early return after gnuplot opened its
- * output, a dead gnuplot), no temporary image stays in the directory. */
-static void remove_tmp_pngs(const plotter *pl)
-{
-    static const char *const names[] = { "force.png", "profile.png", "contact.png" };
-    char tmp[PATH_MAX + 64];
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-        tmp_png_name(pl, names[i], tmp, sizeof tmp);
-        unlink(tmp);
-    }
-}
 
 /* name appended to the comma-separated list in buf (may be NULL). */
 static void add_name(char *buf, size_t len, const char *name)
@@ -1019,35 +977,22 @@ static void add_unwritten_figures(char *buf, size_t len, unsigned want, unsigned
             add_name(buf, len, figs[i].name);
 }
 
-int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *reference,
-                    const char *dir, char *msg, size_t msglen, char *unwritten, size_t ulen)
+int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *reference, adh_outdir *out,
+                    char *msg, size_t msglen, char *unwritten, size_t ulen)
 {
     char why[1024], table_error[1024] = "";
     if (msglen)
         msg[0] = '\0';
     if (unwritten && ulen)
         unwritten[0] = '\0';
-    if (!dir || !*dir)
-        dir = ".";
+    const char *dir = adh_outdir_path(out);
     unsigned want = s->draw ? s->figures & ADH_PLOT_ALL : 0;
-    struct stat st;
-    errno = 0;
-    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || access(dir, W_OK | X_OK) != 0) {
-        snprintf(msg, msglen, "cannot write plots in %s: %s", dir,
-                 errno ? strerror(errno) : "not a writable directory");
-        if (run->nprofiles > 0)
-            add_name(unwritten, ulen, "profiles.tsv");
-        if (s->figures & ADH_PLOT_CONTACT)
-            add_name(unwritten, ulen, "contact.tsv");
-        add_unwritten_figures(unwritten, ulen, want, 0);
-        return 2;
-    }
     /* Only the tables that were asked for: profiles where profiles were
      * stored, contact-line tracking when the contact plot is wanted. A
      * table that cannot be written (a full disk) does not stop the others. */
     char tables[64] = "";
     if (run->nprofiles > 0) {
-        if (adh_tsv_profiles(s, run, dir, why, sizeof why) != 0) {
+        if (adh_tsv_profiles(s, run, out, why, sizeof why) != 0) {
             snprintf(table_error, sizeof table_error, "%s", why);
             add_name(unwritten, ulen, "profiles.tsv");
         } else {
@@ -1055,7 +1000,7 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
         }
     }
     if (s->figures & ADH_PLOT_CONTACT) {
-        if (adh_tsv_contact(s, run, dir, why, sizeof why) != 0) {
+        if (adh_tsv_contact(s, run, out, why, sizeof why) != 0) {
             if (!*table_error)
                 snprintf(table_error, sizeof table_error, "%s", why);
             add_name(unwritten, ulen, "contact.tsv");
@@ -1077,21 +1022,12 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
     pl.s = s;
     pl.run = run;
     pl.ref = reference;
-    pl.dir = dir;
+    pl.out = out;
     adh_material_derive(&s->mat, &pl.d);
     int rc = 0;
-    char log[PATH_MAX + 32];
-    snprintf(log, sizeof log, "%s/gnuplot.log", dir);
-    unlink(log);   /* each run's log holds only its own complaints */
-    if (adh_plot_style_file(s->style, pl.style, sizeof pl.style, why, sizeof why) < 0) {
+    if (adh_session_open(&pl.ses, out, "gnuplot.log", s->style, s->cancel, why, sizeof why) != 0)
         snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
-    } else {
-        if (adh_outdir_temp("adhere-plot", pl.tmpdir, sizeof pl.tmpdir, why, sizeof why) != 0) {
-            snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
-        } else if ((pl.gp = adh_gnuplot_open(log, why, sizeof why)) == NULL) {
-            snprintf(pl.error, sizeof pl.error, "%.990s; no plots made", why);
-        }
-    }
+    pl.gp = pl.ses.gp;
     if (pl.gp) {
         /* Figures are independent: a failure in one does not stop the others
          * while gnuplot lives. */
@@ -1103,12 +1039,8 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
             plot_contact(&pl);
         if (!*pl.error && !adh_gnuplot_alive(pl.gp))
             snprintf(pl.error, sizeof pl.error, "gnuplot stopped");
-        adh_gnuplot_close(pl.gp);
+        adh_session_close(&pl.ses);
     }
-    remove_tmp_pngs(&pl);
-    remove_tmpdir(&pl);
-    if (file_empty(log))
-        unlink(log);
     add_unwritten_figures(unwritten, ulen, want, pl.written | pl.skipped);
 
     if (*table_error) {

@@ -1,6 +1,7 @@
 #include "plot/png.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <stdio.h>
 #include <string.h>
@@ -57,17 +58,20 @@ static unsigned long be32(const unsigned char *b)
     return (unsigned long)b[0] << 24 | (unsigned long)b[1] << 16 | (unsigned long)b[2] << 8 | b[3];
 }
 
-int adh_png_check(const char *path, char *why, size_t whylen)
+/* What is wrong with the image f holds, or NULL for a whole PNG. */
+static const char *png_fault(FILE *f)
 {
     static const unsigned char sig[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(why, whylen, "cannot read it: %s", strerror(errno));
-        return -1;
-    }
     unsigned char b[8];
     const char *bad = NULL;
-    if (fread(b, 1, 8, f) != 8 || memcmp(b, sig, 8) != 0)
+    size_t got = fread(b, 1, 8, f);
+    /* nothing at all is a disk that took nothing; a start of the signature,
+     * one that took a little; anything else is not an image */
+    if (got == 0)
+        bad = "empty: gnuplot could write nothing into it (a full disk?)";
+    else if (got < 8 && memcmp(b, sig, got) == 0)
+        bad = "cut short: it ends inside the PNG signature (a full disk?)";
+    else if (got < 8 || memcmp(b, sig, 8) != 0)
         bad = "not a PNG (no PNG signature: does a style file set another terminal?)";
     /* chunk by chunk: length, type, data, CRC; IHDR first, IEND last,
      * ending exactly at the end of the file */
@@ -101,6 +105,21 @@ int adh_png_check(const char *path, char *why, size_t whylen)
             break;
         }
     }
+    return bad;
+}
+
+int adh_png_check(const char *path, char *why, size_t whylen)
+{
+    int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    FILE *f = fd >= 0 ? fdopen(fd, "rb") : NULL;
+    if (!f) {
+        snprintf(why, whylen, "cannot read it: %s", strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        return -1;
+    }
+    struct stat st;
+    const char *bad = fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) ? "not a regular file" : png_fault(f);
     fclose(f);
     if (bad) {
         snprintf(why, whylen, "%s", bad);
@@ -109,26 +128,44 @@ int adh_png_check(const char *path, char *why, size_t whylen)
     return 0;
 }
 
-int adh_png_finish(adh_gnuplot *gp, const char *tmp_png, const char *final, char *why, size_t whylen)
+/* adh_outdir_write's writer: the checked image, byte for byte. */
+static int copy_png(FILE *out, const void *ctx)
+{
+    FILE *in = (FILE *)ctx;
+    char buf[65536];
+    size_t n;
+    rewind(in);
+    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+        if (fwrite(buf, 1, n, out) != n)
+            return -1;
+    return ferror(in) ? -1 : 0;
+}
+
+int adh_png_finish(adh_gnuplot *gp, const char *tmp_png, adh_outdir *out, const char *name, char *why,
+                   size_t whylen)
 {
     adh_gnuplot_cmd(gp, "unset output");
     int rc = adh_gnuplot_sync(gp, ADH_PNG_TIMEOUT_S, why, whylen);
+    /* opened once, never through a link: what is checked is what is copied */
+    int fd = rc == 0 ? open(tmp_png, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC) : -1;
+    FILE *f = fd >= 0 ? fdopen(fd, "rb") : NULL;
     struct stat st;
-    if (rc == 0 && !(stat(tmp_png, &st) == 0 && S_ISREG(st.st_mode))) {
+    if (rc == 0 && !(f && fstat(fd, &st) == 0 && S_ISREG(st.st_mode))) {
         snprintf(why, whylen, "gnuplot wrote no image to %s", tmp_png);
         rc = -1;
     }
     /* a whole PNG or nothing under the final name */
-    char bad[160];
-    if (rc == 0 && adh_png_check(tmp_png, bad, sizeof bad) != 0) {
+    const char *bad = rc == 0 ? png_fault(f) : NULL;
+    if (bad) {
         snprintf(why, whylen, "gnuplot's image is %s; removed", bad);
         rc = -1;
     }
-    if (rc == 0 && rename(tmp_png, final) != 0) {
-        snprintf(why, whylen, "cannot rename %.400s to %.400s: %s", tmp_png, final, strerror(errno));
+    if (rc == 0 && adh_outdir_write(out, name, copy_png, f, why, whylen) != 0)
         rc = -1;
-    }
-    if (rc != 0)
-        unlink(tmp_png);
+    if (f)
+        fclose(f);
+    else if (fd >= 0)
+        close(fd);
+    unlink(tmp_png);
     return rc;
 }

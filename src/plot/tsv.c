@@ -56,10 +56,10 @@ static int profiles_table(FILE *f, const void *vctx)
     return 0;
 }
 
-int adh_tsv_profiles(const adh_plot_setup *s, const adh_run *run, const char *dir, char *msg, size_t msglen)
+int adh_tsv_profiles(const adh_plot_setup *s, const adh_run *run, adh_outdir *out, char *msg, size_t msglen)
 {
     table_ctx c = { s, run, NULL, NULL, NULL };
-    return adh_outdir_write(dir, "profiles.tsv", profiles_table, &c, msg, msglen);
+    return adh_outdir_write(out, "profiles.tsv", profiles_table, &c, msg, msglen);
 }
 
 static int contact_table(FILE *f, const void *vctx)
@@ -86,7 +86,7 @@ static int contact_table(FILE *f, const void *vctx)
     return 0;
 }
 
-int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, const char *dir, char *msg, size_t msglen)
+int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, adh_outdir *out, char *msg, size_t msglen)
 {
     double *dadh0 = NULL, *dadt = NULL, *smooth = NULL;
     if (run->nrows) {
@@ -97,14 +97,14 @@ int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, const char *dir
             free(dadh0);
             free(dadt);
             free(smooth);
-            snprintf(msg, msglen, "cannot write %s/contact.tsv: out of memory", dir);
+            snprintf(msg, msglen, "cannot write %s/contact.tsv: out of memory", adh_outdir_path(out));
             return -1;
         }
         adh_speed_stepwise(run, s->drive_speed, dadh0, dadt);
         adh_speed_smoothed(run, s->drive_speed, s->dr, ADH_SPEED_CELLS, smooth);
     }
     table_ctx c = { s, run, dadh0, dadt, smooth };
-    int rc = adh_outdir_write(dir, "contact.tsv", contact_table, &c, msg, msglen);
+    int rc = adh_outdir_write(out, "contact.tsv", contact_table, &c, msg, msglen);
     free(dadh0);
     free(dadt);
     free(smooth);

@@ -13,9 +13,9 @@
 /* The comment block each table starts with: material, sigma, gamma, grid. */
 void adh_tsv_preamble(FILE *f, const adh_plot_setup *s, const char *what);
 
-/* Write dir/profiles.tsv and dir/contact.tsv (adh_outdir_write: through a
- * temporary name and a rename). 0, or -1 with msg set. */
-int adh_tsv_profiles(const adh_plot_setup *s, const adh_run *run, const char *dir, char *msg, size_t msglen);
-int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, const char *dir, char *msg, size_t msglen);
+/* Write out/profiles.tsv and out/contact.tsv (adh_outdir_write: through a
+ * new temporary and a rename). 0, or -1 with msg set. */
+int adh_tsv_profiles(const adh_plot_setup *s, const adh_run *run, adh_outdir *out, char *msg, size_t msglen);
+int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, adh_outdir *out, char *msg, size_t msglen);
 
 #endif

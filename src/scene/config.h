@@ -83,6 +83,7 @@ typedef struct adh_config {
 
     /* outputs */
     char out_dir[PATH_MAX];        /* "" = force table to standard output */
+    int overwrite;                 /* --overwrite: files under adhere's names it did not write go */
     int quiet;
     int allow_unconverged;         /* --allow-unconverged: steps at the cap exit 0 */
     int plot;                      /* 0 with --no-plot */

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 typedef struct { const char *sym; double f; } unit;
 static const unit lengths[] = { { "pm", 1e-12 }, { "nm", 1e-9 }, { "um", 1e-6 }, { "\xc2\xb5m", 1e-6 },
@@ -51,6 +52,42 @@ static int number(const char *s, double *v)
     return end != s && !*end && errno != ERANGE && isfinite(*v);
 }
 
+/* Why a token that reads as a number whole is still refused: out of a
+ * double's range or not finite; NULL when it is no number at all. */
+static const char *out_of_range(const char *s)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end)
+        return NULL;
+    if (errno == ERANGE)
+        return fabs(v) < 1 ? "is too small for a double (it underflows: magnitudes below 2.2e-308 are not kept); "
+                             "write 0 for zero"
+                           : "is too large for a double (above 1.8e308)";
+    return isfinite(v) ? NULL : "is not a finite number";
+}
+
+/* One line of f into buf (at most cap - 1 bytes, its newline kept): its
+ * length, 0 at the end, -1 when longer than that (buf then holds its first
+ * cap - 1 bytes; the rest is not read). A NUL byte is kept, and counted. */
+static long read_line(FILE *f, char *buf, size_t cap)
+{
+    size_t n = 0;
+    int c;
+    while ((c = getc(f)) != EOF) {
+        if (n + 1 >= cap) {
+            buf[n] = '\0';
+            return -1;
+        }
+        buf[n++] = (char)c;
+        if (c == '\n')
+            break;
+    }
+    buf[n] = '\0';
+    return (long)n;
+}
+
 void adh_measured_free(adh_measured *m)
 {
     free(m->h0);
@@ -68,13 +105,33 @@ int adh_measured_load(const char *path, adh_measured *m, char *why, size_t whyle
         return -1;
     }
     double fx = 1e-9, fy = 1e-9;   /* nm, nN */
-    size_t cap = 0, lineno = 0;
+    size_t cap = 0, lineno = 0, bytes = 0;
     int header_seen = 0;
     char line[4096];
-    while (fgets(line, sizeof line, f)) {
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > ADH_MEASURED_MAX_BYTES) {
+        snprintf(why, whylen, "%s: %lld bytes, more than a measured curve may hold (%d MiB, %d points): thin it "
+                 "(every k-th point) or cut it to the range you compare", path, (long long)st.st_size,
+                 ADH_MEASURED_MAX_BYTES >> 20, ADH_MEASURED_MAX_POINTS);
+        goto bad;
+    }
+    long len;
+    while ((len = read_line(f, line, sizeof line)) != 0) {
         lineno++;
-        if (!strchr(line, '\n') && !feof(f)) {
+        if (len < 0 && !memchr(line, '\0', sizeof line - 1)) {
             snprintf(why, whylen, "%s:%zu: line longer than %zu characters", path, lineno, sizeof line - 2);
+            goto bad;
+        }
+        if (memchr(line, '\0', len < 0 ? sizeof line - 1 : (size_t)len)) {
+            snprintf(why, whylen, "%s:%zu: a NUL byte: not a text file (a measured curve is text, a drive position "
+                     "and a force a line)", path, lineno);
+            goto bad;
+        }
+        bytes += (size_t)len;
+        if (bytes > ADH_MEASURED_MAX_BYTES || m->n == ADH_MEASURED_MAX_POINTS) {
+            snprintf(why, whylen, "%s:%zu: more than a measured curve may hold (%d MiB, %d points): thin it "
+                     "(every k-th point) or cut it to the range you compare", path, lineno,
+                     ADH_MEASURED_MAX_BYTES >> 20, ADH_MEASURED_MAX_POINTS);
             goto bad;
         }
         char *hash = strchr(line, '#');
@@ -118,6 +175,14 @@ int adh_measured_load(const char *path, adh_measured *m, char *why, size_t whyle
             }
             header_seen = 1;
             continue;
+        }
+        const char *range = nt == 2 ? out_of_range(tok[0]) : NULL;
+        int which = range ? 0 : 1;
+        if (!range && nt == 2)
+            range = out_of_range(tok[1]);
+        if (range) {
+            snprintf(why, whylen, "%s:%zu: '%.60s' %s", path, lineno, tok[which], range);
+            goto bad;
         }
         char *nl = strpbrk(line, "\r\n");
         if (nl)

@@ -16,8 +16,8 @@
 #include "cli/plotsetup.h"
 #include "plot/plot.h"
 
-static int write_into(const adh_config *c, const adh_grid *g, const adh_run *run, const char *dir, char *msg,
-                      size_t msglen);
+static int write_into(const adh_config *c, const adh_grid *g, const adh_run *run, const char *dir,
+                      const volatile sig_atomic_t *cancel, char *msg, size_t msglen);
 
 static void add_unique(size_t *idx, size_t *k, size_t cap, size_t i)
 {
@@ -74,7 +74,8 @@ static size_t curve_profiles(const tui_sim *s, const adh_obs *rows, adh_config *
     return np;
 }
 
-int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char *msg, size_t msglen)
+int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, const volatile sig_atomic_t *cancel,
+                  char *msg, size_t msglen)
 {
     size_t n;
     const adh_obs *rows = s->mode == ADH_MODE_STATIC ? tui_sim_curve(s, &n) : tui_sim_rows(s, &n);
@@ -103,7 +104,7 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
         c.proto.nprofiles = np;
         run.profiles = prof;
         run.nprofiles = run.profiles_cap = np;
-        return write_into(&c, s->sg, &run, dir, msg, msglen);   /* the curve's own grid */
+        return write_into(&c, s->sg, &run, dir, cancel, msg, msglen);   /* the curve's own grid */
     }
     run = *tui_sim_run(s);   /* the drive's record, with the profiles below */
     c.proto.nturns = run.nturns;
@@ -121,22 +122,23 @@ int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, char
     c.proto.nprofiles = np;
     run.profiles = prof;
     run.nprofiles = run.profiles_cap = np;
-    return write_into(&c, s->g, &run, dir, msg, msglen);
+    return write_into(&c, s->g, &run, dir, cancel, msg, msglen);
 }
 
-static int write_into(const adh_config *c, const adh_grid *g, const adh_run *run, const char *dir, char *msg,
-                      size_t msglen)
+static int write_into(const adh_config *c, const adh_grid *g, const adh_run *run, const char *dir,
+                      const volatile sig_atomic_t *cancel, char *msg, size_t msglen)
 {
-    if (adh_outdir_make(dir, msg, msglen) != 0)
-        return -1;
-    msg[0] = '\0';
     /* the files of an earlier run or an earlier p go first: what is in dir
      * is this path's */
-    if (adh_outdir_clear(dir, msg, msglen) != 0)
+    adh_outdir *od = adh_outdir_open(dir, c->overwrite ? ADH_OUTDIR_OVERWRITE : 0, msg, msglen);
+    if (!od)
         return -1;
+    msg[0] = '\0';
     adh_plot_setup ps;
     cli_plotsetup_fill(c, g, &ps);   /* the session's grid: the profiles' radii */
-    int rc = adh_plots_write(&ps, run, NULL, dir, msg, msglen, NULL, 0);
+    ps.cancel = cancel;
+    int rc = adh_plots_write(&ps, run, NULL, od, msg, msglen, NULL, 0);
+    adh_outdir_close(od);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");
     return rc == 0 ? 0 : -1;

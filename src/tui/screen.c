@@ -12,6 +12,7 @@
 
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "plot/outdir.h"
 #include "scene/measured.h"
 #include "tui/actions.h"
 #include "tui/replay.h"
@@ -587,13 +588,10 @@ int tui_draw_help(const tui_view *v)
     return n;
 }
 
-int tui_dump_screen(const char *path, char *why, size_t whylen)
+/* adh_outfile_write's writer: the screen as it stands, one text line a row. */
+static int screen_text(FILE *f, const void *ctx)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(why, whylen, "cannot write the screen to %s: %s", path, strerror(errno));
-        return -1;
-    }
+    (void)ctx;
     mbstate_t mbs;
     char line[8192];
     for (int y = 0; y < LINES; y++) {
@@ -623,9 +621,13 @@ int tui_dump_screen(const char *path, char *why, size_t whylen)
         }
         fprintf(f, "%.*s\n", (int)keep, line);
     }
-    if (fclose(f) != 0) {
-        snprintf(why, whylen, "cannot write the screen to %s: %s", path, strerror(errno));
-        return -1;
-    }
     return 0;
+}
+
+int tui_dump_screen(const char *path, char *why, size_t whylen)
+{
+    int e = adh_outfile_write(path, screen_text, NULL);
+    if (e)
+        snprintf(why, whylen, "cannot write the screen to %s: %s", path, strerror(e));
+    return e ? -1 : 0;
 }

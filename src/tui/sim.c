@@ -16,6 +16,7 @@
 #include "adhere/protocol.h"
 #include "adhere/rings.h"
 #include "adhere/status.h"
+#include "scene/budget.h"
 
 static tui_params_set params_get(const tui_sim *s);
 static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode, char *why, size_t whylen);
@@ -107,6 +108,7 @@ static void mode_config(const tui_sim *s, const tui_params_set *p, adh_mode mode
         char why[512];
         adh_config_grid_again(c, why, sizeof why);   /* a refusal keeps the grid as it is (solves say why) */
     }
+    adh_budget_operator(c);   /* the operator --batch would hold this grid in */
 }
 
 static adh_grid_asked mode_grid(const tui_sim *s, const tui_params_set *p, adh_mode mode)
@@ -382,6 +384,8 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
     adh_config c;
     tui_params_set p = params_get(s);
     mode_config(s, &p, ADH_MODE_RELAX, &c);
+    if (adh_budget_check(&c, 0, why, whylen) != 0)
+        return -1;
     int st;
     s->g = adh_config_grid_alloc(&c);
     s->k = s->g ? adh_config_kernel_alloc(&c, s->g, &st) : NULL;
@@ -409,6 +413,8 @@ static int ensure_static(tui_sim *s, char *why, size_t whylen)
     if (s->sdrv && same_grid(&s->sbuilt, &now))
         return 0;
     free_static(s);
+    if (adh_budget_check(&c, 1, why, whylen) != 0)
+        return -1;
     int st;
     s->sg = adh_config_grid_alloc(&c);
     s->sk = s->sg ? adh_config_kernel_alloc(&c, s->sg, &st) : NULL;

@@ -27,6 +27,7 @@
 #include "tui/plotpath.h"
 #include "tui/screen.h"
 #include "tui/sim.h"
+#include "plot/outdir.h"
 #include "plot/rows.h"
 #include "cli/ready.h"   /* the test readiness signal, shared with the batch drivers */
 
@@ -385,7 +386,7 @@ static void write_plots(tui *t)
         draw(t);
     }
     char msg[600];
-    if (tui_plot_path(&t->sim, &t->cfg, dir, msg, sizeof msg) == 0)
+    if (tui_plot_path(&t->sim, &t->cfg, dir, &got_signal, msg, sizeof msg) == 0)
         say(t, 0, "plots: %s", msg);   /* the writer names the files and the directory */
     else
         say(t, 1, "plots not written to %s/: %s", dir, msg);
@@ -418,32 +419,32 @@ static void param_changed(tui *t, tui_param p)
             u ? "\xc2\xb2" : "^2");
 }
 
+typedef struct rows_out {
+    const adh_obs *rows;
+    size_t n;
+} rows_out;
+
+static int rows_table(FILE *f, const void *ctx)
+{
+    const rows_out *r = ctx;
+    adh_rows_header(f);
+    for (size_t i = 0; i < r->n; i++)
+        adh_rows_write(f, &r->rows[i]);
+    return 0;
+}
+
 /* The path's rows (static mode: the curve's points so far) as force.tsv's
- * columns, under a temporary name renamed into place: a script can hold
- * them against --batch's. */
+ * columns, through a new temporary renamed into place (a link at path is
+ * replaced, never written through): a script can hold them against
+ * --batch's. */
 static int write_rows(tui *t, const char *path, char *why, size_t whylen)
 {
-    size_t n;
-    const adh_obs *rows = is_static(t) ? tui_sim_curve(&t->sim, &n) : tui_sim_rows(&t->sim, &n);
-    char tmp[4096];
-    if (snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid()) >= (int)sizeof tmp) {
-        snprintf(why, whylen, "cannot write the rows to %s: the name is too long", path);
-        return -1;
-    }
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        snprintf(why, whylen, "cannot write the rows to %s: %s", path, strerror(errno));
-        return -1;
-    }
-    adh_rows_header(f);
-    for (size_t i = 0; i < n; i++)
-        adh_rows_write(f, &rows[i]);
-    if (ferror(f) | (fclose(f) != 0) || rename(tmp, path) != 0) {
-        snprintf(why, whylen, "cannot write the rows to %s: %s", path, strerror(errno));
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
+    rows_out r;
+    r.rows = is_static(t) ? tui_sim_curve(&t->sim, &r.n) : tui_sim_rows(&t->sim, &r.n);
+    int e = adh_outfile_write(path, rows_table, &r);
+    if (e)
+        snprintf(why, whylen, "cannot write the rows to %s: %s", path, strerror(e));
+    return e ? -1 : 0;
 }
 
 /* A :set / :dump / :rows / :wait / :resize, from a script or the ':' prompt.
@@ -959,6 +960,10 @@ static void screen_close(tui *t)
 static int locale_utf8(int headless)
 {
     setlocale(LC_ALL, "");
+    /* One numeric locale, C's, wherever numbers are read or written (the
+     * tables, gnuplot's commands and data, :set E 0.5GPa): a decimal comma
+     * would break all three. The terminal keeps its LC_CTYPE. */
+    setlocale(LC_NUMERIC, "C");
     if (strcmp(nl_langinfo(CODESET), "UTF-8") == 0)
         return 1;
     /* A replay's screen is written as UTF-8 text whatever the caller's

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Every bad input named in the core issue: exit status 2, one message naming
-# the value and what is allowed, and no output file left behind.
+# the value and what is allowed (the real limit: issue 24, item 7), and no
+# output file left behind.
 . "$(dirname "$0")/lib.sh"
 
 bad() { # bad "expected text" args...
@@ -58,6 +59,16 @@ bad "out of the range of finite numbers" -E 1e999
 bad "step d = 0 m is not allowed" --step=0
 bad "more than one scene" fig1 fig2
 bad "no scene named 'nosuchscene'" nosuchscene
+
+# Messages that name the real limit (issue 24, item 7): a radius past 0.3 R
+# is not the node budget; a NUL byte and a number below a double's range in
+# --data are said to be what they are.
+bad "beyond 0.3 R = 6e-08 m where the paraboloid gap" -R 0.2um -E 10MPa --turn=-1nm
+check "... and does not blame the node budget" sh -c "! grep -q 'budget of N' '$TMP/stderr'"
+printf '1 2\n3\0004 5\n' >"$TMP/nul.dat"
+bad "nul.dat:2: a NUL byte" --data="$TMP/nul.dat"
+printf '1 2\n3 1e-320\n' >"$TMP/tiny.dat"
+bad "tiny.dat:2: '1e-320' is too small for a double (it underflows" --data="$TMP/tiny.dat"
 
 # An output path that cannot be a directory.
 touch "$TMP/afile"

@@ -4,7 +4,9 @@
 # --allow-unconverged; an unreachable eps, text after a section header, old
 # Mac line ends, empty list elements, flags that cannot go together, a FIFO
 # as replay script, a missing style file and an unwritable standard output
-# are each refused with a message (exit 2); mistakes get a hint.
+# are each refused with a message (exit 2); mistakes get a hint; a turn the
+# surfaces never reach is said as such, never success; a file name with a
+# newline breaks no table; --gnuplot-style takes a directory.
 . "$(dirname "$0")/lib.sh"
 
 # --- item 4: unconverged steps ------------------------------------------
@@ -75,6 +77,50 @@ for a in --plan --help --list-keys --version; do
     check "$a to a full disk: exit 2 with a message (got $rc: $(cat "$TMP/err"))" \
         sh -c "[ $rc -eq 2 ] && grep -q 'cannot write to standard output' '$TMP/err'"
 done
+
+# --- issue 24, item 6: a turn the surfaces never reach --------------------
+"$ADHERE" --batch -q --mode=static --turn=3nm --no-plot -o "$TMP/st3" 2>"$TMP/st3.err"
+check "--mode=static --turn=3nm (before the jump-in): not success ($(awk -F'\t' '$1 == "status"' "$TMP/st3/summary.tsv"))" \
+    sh -c "grep -qx 'status	no contact' '$TMP/st3/summary.tsv' && grep -qx 'complete	0' '$TMP/st3/summary.tsv'"
+check "... saying the surfaces never touched and what to change: $(head -c 200 "$TMP/st3.err")" \
+    sh -c "grep -q 'never came into contact' '$TMP/st3.err' && grep -q 'put the turn below' '$TMP/st3.err'"
+"$ADHERE" --batch -q --turn=3nm -N 100 --force --no-plot -o "$TMP/rx3" 2>"$TMP/rx3.err"
+check "relaxation --turn=3nm: never came into contact, not 'still in contact' ($(grep -v warning "$TMP/rx3.err" | head -c 160))" \
+    sh -c "grep -q 'never came into contact' '$TMP/rx3.err' && ! grep -q 'still in contact' '$TMP/rx3.err' && grep -qx 'status	no contact' '$TMP/rx3/summary.tsv'"
+
+# --- issue 24, item 7: a file name with a newline breaks no table ---------
+nl='
+'
+evil="$TMP/evil${nl}1	2	3"
+mkdir -p "$evil"
+printf '[material]\nE = 20GPa\n' >"$evil/x.scene"
+"$ADHERE" --batch -q -N 100 --force --eps=10pm --no-plot "$evil/x.scene" -o "$TMP/nl" 2>/dev/null
+header_first() { # file header: every line before the header is a comment
+    awk -v h="$2" '$0 == h {exit !ok} /^#/ {next} {exit 1} BEGIN {ok = 1}' "$1"
+}
+check "a scene path with a newline: force.tsv's first line that is not a comment is its header" \
+    header_first "$TMP/nl/force.tsv" "$(printf 'h0\tF\tdelta\thc\ta\tangle\titers\tbranch\tpath\tconverged\tstable\tF_rigid\tseconds')"
+check "... summary.tsv's too" header_first "$TMP/nl/summary.tsv" "$(printf 'key\tvalue')"
+check "... turns.tsv's too" header_first "$TMP/nl/turns.tsv" "$(printf 'turn_h0\tmax_load\ta_turn\tpulloff_F\tpulloff_h0\tjump_out_h0\tpath')"
+check "... the path is there, escaped: $(grep '^# scene' "$TMP/nl/force.tsv")" grep -q '^# scene: .*evil\\n1\\t2\\t3/x.scene$' "$TMP/nl/force.tsv"
+
+# --- issue 24, item 7: --gnuplot-style=DIR, as the plot code reads it ----
+if command -v gnuplot >/dev/null 2>&1; then
+    mkdir -p "$TMP/styledir"
+    printf 'set terminal pngcairo size 640,480\n' >"$TMP/styledir/style.gp"
+    "$ADHERE" --batch -q -N 100 --force --eps=10pm --plots=force --gnuplot-style="$TMP/styledir" -o "$TMP/sd" 2>"$TMP/sd.err"
+    rc=$?
+    w=$(od -An -tu1 -j16 -N4 "$TMP/sd/force.png" 2>/dev/null | awk '{print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4}')
+    check "--gnuplot-style=DIR (DIR/style.gp) is accepted and used: exit $rc, force.png $w px wide ($(head -c 120 "$TMP/sd.err"))" \
+        sh -c "[ $rc -eq 0 ] && [ '$w' = 640 ]"
+    mkdir -p "$TMP/emptydir"
+    "$ADHERE" --batch -q -N 100 --force --gnuplot-style="$TMP/emptydir" -o "$TMP/ed" 2>"$TMP/ed.err"
+    rc=$?
+    check "... a directory without style.gp is refused, naming it (exit $rc: $(head -c 160 "$TMP/ed.err"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q 'emptydir/style.gp' '$TMP/ed.err'"
+else
+    T=$((T + 1)); echo "ok $T # SKIP gnuplot is not installed"
+fi
 
 # --- errors that teach --------------------------------------------------
 refused "'GPa' looks like the unit of '-E 1': write the number and its unit together, -E 1GPa" "$ADHERE" -E 1 GPa

@@ -108,9 +108,11 @@ cat >plot.keys <<'EOF'
 p
 EOF
 rm -f commands.gp
-# an earlier run's table and the user's own file in that directory
-mkdir -p '|touch PWNED15;y'
-: >'|touch PWNED15;y/static.tsv'
+# an earlier run's table (an earlier adhere wrote it) and the user's own
+# file in that directory
+"$ADHERE" $RUN --no-plot --reference=static -o '|touch PWNED15;y' 2>/dev/null
+earlier=no
+[ -s '|touch PWNED15;y/static.tsv' ] && earlier=yes
 : >'|touch PWNED15;y/notes.txt'
 ADHERE_GNUPLOT="$TMP/gp-log" timeout 60 "$ADHERE" --replay=plot.keys --screen=plot.screen --no-clock --plots=force \
     -o '|touch PWNED15;y' inject.scene </dev/null >tui.out 2>tui.err
@@ -120,5 +122,6 @@ check "... writes force.png there" is_png '|touch PWNED15;y/force.png'
 check "... sending the title literally" grep -qF "set title $want" commands.gp
 check "... after removing the earlier run's static.tsv, keeping the user's notes.txt" \
     sh -c '[ ! -e "|touch PWNED15;y/static.tsv" ] && [ -e "|touch PWNED15;y/notes.txt" ]'
+check "... (the earlier run had written static.tsv)" [ "$earlier" = yes ]
 nothing_ran "the TUI's plot key"
 done_testing

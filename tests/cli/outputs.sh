@@ -1,10 +1,12 @@
 #!/bin/sh
-# A file under its final name is whole, and an output directory holds one
-# run: a style that makes gnuplot write text, or a full disk (a file size
-# limit stands in for it) cutting a PNG short, leaves no force.png and exits
-# 3; a table the disk refuses leaves a summary.tsv that says what is missing
-# and never "success" (exit 2); a reused -o directory keeps nothing of the
-# run before; no temporary stays behind when gnuplot dies. Prints TAP.
+# A file under its final name is whole: a style that makes gnuplot write
+# text, or a full disk (a file size limit stands in for it) cutting a PNG
+# short, leaves no force.png and exits 3; a disk that takes nothing at all
+# is said to be full, not blamed on a style; a table the disk refuses
+# leaves a summary.tsv that says what is missing and never "success" (exit
+# 2), also when the limit's signal is left at its default; no temporary
+# stays behind when gnuplot dies. (A reused -o: tests/cli/outdir.sh.)
+# Prints TAP.
 . "$(dirname "$0")/lib.sh"
 need_gnuplot
 RUN="--batch --quiet --nodes=100 -E 20GPa --eps=1e-10 --step=1nm"
@@ -12,8 +14,8 @@ cd "$TMP" || exit 1
 mkdir tmp
 export TMPDIR="$TMP/tmp"
 key() { awk -F'\t' -v k="$2" '$1 == k {print $2}' "$1/summary.tsv" 2>/dev/null; }
-no_temporaries() { # dir what
-    left=$(ls -A "$1" | grep -E '\.tmp|tmp[0-9]' | tr '\n' ' ')
+no_temporaries() { # dir what: any hidden file but adhere's manifest is one
+    left=$(ls -A "$1" | grep '^\.' | grep -v '^\.adhere-manifest$' | tr '\n' ' ')
     if [ -z "$left" ] && [ -z "$(ls -A "$TMPDIR")" ]; then ok "$2: no temporary file left"
     else not_ok "$2: temporaries left: $left $(ls -A "$TMPDIR" | tr '\n' ' ')"; fi
 }
@@ -64,6 +66,19 @@ check "... summary.tsv names it and does not say success ($(key cut not_written)
     [ "$(key cut not_written)/$(key cut status)" = "force.png/output incomplete" ]
 no_temporaries cut "a PNG cut short"
 
+# a disk that takes nothing at all: an empty image, said to be so
+cat >gp-full <<EOF
+#!/bin/sh
+trap '' XFSZ
+ulimit -f 0 && exec gnuplot "\$@"
+EOF
+chmod +x gp-full
+ADHERE_GNUPLOT="$TMP/gp-full" "$ADHERE" $RUN --plots=force -o full0 2>full0.err
+rc=$?
+check "a full disk under gnuplot: exit 3 (got $rc)" [ "$rc" -eq 3 ]
+check "... the image is said to be empty (a full disk), not blamed on a style file: $(head -c 300 full0.err)" \
+    sh -c 'grep -q "force.png: .*empty.*full disk" full0.err && ! grep -q "style file" full0.err'
+
 # profiles.tsv refused: a limit between force.tsv and profiles.tsv
 lim=$(( (tsv * 3 + 1023) / 1024 ))
 if [ $((lim * 1024)) -lt "$prof" ]; then
@@ -83,25 +98,20 @@ else
     T=$((T + 1))
 fi
 
-# --- a reused directory ----------------------------------------------------
-# run 1 writes every figure and table; stale files of other modes and of a
-# killed run sit beside them, with the user's own files
-"$ADHERE" $RUN --reference=static -o reuse 2>/dev/null
-mkdir -p reuse/run-3 reuse/run-9
-: >reuse/cost.tsv; : >reuse/sweep.tsv; : >reuse/run-3/force.tsv; : >reuse/run-3/summary.tsv
-: >reuse/.force.png.tmp4242; : >reuse/.summary.tsv.4242.tmp; : >reuse/.cost-plot.4242.dat
-: >reuse/notes.txt; : >reuse/run-9/mine.txt; : >reuse/force.tsv.bak
-check "run 1 wrote force.png, static.tsv and profiles.tsv" \
-    sh -c '[ -s reuse/force.png ] && [ -s reuse/static.tsv ] && [ -s reuse/profiles.tsv ]'
-# run 2: tables only, no turn
-"$ADHERE" $RUN --no-plot --turn=none --plots=force -o reuse 2>reuse.err
+# --- a file size limit with its signal left as the shell sets it ---------
+# (ulimit -f without trap: SIGXFSZ would kill the process): the limit is a
+# full disk, the run says so and leaves no temporary
+(ulimit -f 8 && exec "$ADHERE" $RUN --step=0.1nm -o fsize) 2>fsize.err
 rc=$?
-check "run 2 into the same directory: exit 0 (got $rc: $(head -c 200 reuse.err))" [ "$rc" -eq 0 ]
-left=$(cd reuse && ls -A | sort | tr '\n' ' ')
-check "only run 2's files and the user's remain: $left" \
-    [ "$left" = "force.tsv force.tsv.bak notes.txt run-9 summary.tsv " ]
-check "a sweep directory with the user's file in it is kept, with that file" [ -e reuse/run-9/mine.txt ]
-check "run 2's summary is run 2's (no turn: turn_h0 nan)" [ "$(key reuse turn_h0)" = nan ]
+check "ulimit -f 8, force.tsv about 28 kB (SIGXFSZ not ignored by the caller): exit 2, not killed (got $rc: $(head -c 200 fsize.err))" \
+    [ "$rc" -eq 2 ]
+check "... summary.tsv is written: complete 0, status output incomplete" \
+    [ "$(key fsize complete)/$(key fsize status)" = "0/output incomplete" ]
+check "... and names force.tsv under not_written ($(key fsize not_written))" \
+    sh -c 'printf "%s\n" "$1" | tr , "\n" | grep -qx force.tsv' sh "$(key fsize not_written)"
+check "... no force.tsv under its final name" [ ! -e fsize/force.tsv ]
+check "... the message names the file and the limit: $(head -c 200 fsize.err)" grep -q 'force.tsv: File too large' fsize.err
+no_temporaries fsize "a file size limit"
 
 # --- gnuplot dying with an image open ----------------------------------------
 cat >gp-dies <<EOF

@@ -1,6 +1,7 @@
 #!/bin/sh
 # A signal is heard in every phase: inside one long relaxation step, in a
-# long dwell, in --reference=static, in --mode=static and in --cost. Each
+# long dwell, in --reference=static, in --mode=static, in --cost, and
+# while gnuplot draws (batch and the TUI's p). Each
 # run is signalled once adhere says (through ADHERE_READY_FILE) that the
 # phase has begun -- no sleep decides when -- and must stop promptly, keep
 # what it has marked PARTIAL with status interrupted, leave no temporary
@@ -34,7 +35,8 @@ signal_run() {
 # Within 1 s of CPU work; the bound leaves room for a machine shared with
 # other jobs, and for writing the tables.
 prompt() { awk -v t="$took" 'BEGIN {exit !(t < 5)}'; }
-no_temporaries() { ! ls -a "$1" | grep -q '^\.'"[^.]"; }
+# hidden files but adhere's manifest (.adhere-manifest) are temporaries
+no_temporaries() { ! ls -a "$1" | grep -v '^\.adhere-manifest$' | grep -q '^\.'"[^.]"; }
 
 # 1. One long step: eps tight and the start close in, so the first step
 # alone runs for minutes; the flag is polled inside the step.
@@ -104,7 +106,9 @@ if command -v setsid >/dev/null 2>&1 && command -v gnuplot >/dev/null 2>&1; then
         sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
     check "no temporary file in the output directory" no_temporaries "$TMP/plot"
     check "no plot data directory left in TMPDIR" sh -c "[ -z \"\$(ls -A '$TMP/tmpdir')\" ]"
-    check "the tables are complete" grep -qx 'complete	1' "$TMP/plot/summary.tsv"
+    check "the tables are complete (force.tsv not PARTIAL)" sh -c "! grep -q '^# PARTIAL' '$TMP/plot/force.tsv'"
+    check "summary.tsv says interrupted and names the figures not drawn" \
+        sh -c "grep -qx 'status	interrupted' '$TMP/plot/summary.tsv' && grep -q '^not_written	.*png' '$TMP/plot/summary.tsv'"
 else
     T=$((T + 1)); echo "ok $T # SKIP setsid or gnuplot missing: no process group to interrupt"
 fi
@@ -117,12 +121,66 @@ check "in a sweep: SIGINT heard (phase announced $came, exit $rc after ${took} s
 check "in a sweep: stopped within 5 s (${took} s)" prompt
 check "sweep.tsv lists every run as interrupted" \
     awk -F'\t' '!/^#/ && $1 != "run" {n++; if ($NF != "interrupted") bad=1} END {exit bad || n != 4}' "$TMP/sweep/sweep.tsv"
+check "sweep.tsv says # PARTIAL: $(grep '^# PARTIAL' "$TMP/sweep/sweep.tsv")" \
+    grep -q '^# PARTIAL: interrupted by signal 2: 0 of 4 runs finished' "$TMP/sweep/sweep.tsv"
+check "and the run closes saying interrupted: $(tail -n 1 "$TMP/sweep.stderr")" \
+    grep -q '^adhere: interrupted by signal 2: 0 of 4 runs finished' "$TMP/sweep.stderr"
 
-# 8. A sweep's shared kernel: a large ring kernel takes seconds to build,
-# and the build polls the flag (before any run, so nothing is written).
-signal_run kernel kernel INT --batch -q --no-plot -N 6000 --spacing=0.25nm --kernel=ring -o "$TMP/kernel" "$TMP/sweep.scene"
+# 8. A sweep's shared kernel: a large dense ring kernel takes seconds to
+# build, and the build polls the flag (before any run, so nothing is
+# written). Past 4000 nodes only --operator=dense asks for it.
+signal_run kernel kernel INT --batch -q --no-plot -N 6000 --spacing=0.25nm --kernel=ring --operator=dense -o "$TMP/kernel" "$TMP/sweep.scene"
 check "building a sweep's kernel: SIGINT heard (phase announced $came, exit $rc after ${took} s)" \
     sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
 check "building a sweep's kernel: stopped within 5 s (${took} s)" prompt
 check "and says nothing was computed" grep -q "while building the .*kernel: nothing computed" "$TMP/kernel.stderr"
+# 9. gnuplot slow to answer (a figure of millions of points): the wait for
+# it hears SIGINT (batch) and SIGTERM (the TUI's p) within 1 s, kills it,
+# and the run says which figures it did not draw. The stand-in takes every
+# command and never answers; it says when it started (its readiness file).
+cat >"$TMP/gp-slow" <<EOF
+#!/bin/sh
+: >"\$GP_STARTED"
+# its output kept open (fd 3), as a gnuplot still drawing keeps it
+exec cat 3>&1 >/dev/null
+EOF
+chmod +x "$TMP/gp-slow"
+# gnuplot_wait NAME SIG ARGS...: adhere with ARGS and the slow gnuplot; SIG
+# once gnuplot has started; sets rc, took, came as signal_run does.
+gnuplot_wait() {
+    name=$1 sig=$2
+    shift 2
+    rm -f "$TMP/$name.started"
+    GP_STARTED="$TMP/$name.started" ADHERE_GNUPLOT="$TMP/gp-slow" "$ADHERE" "$@" >"$TMP/$name.stdout" 2>"$TMP/$name.stderr" &
+    pid=$!
+    came=0 i=0
+    while [ $i -lt 600 ] && kill -0 "$pid" 2>/dev/null; do
+        [ -e "$TMP/$name.started" ] && { came=1; break; }
+        sleep 0.1
+        i=$((i + 1))
+    done
+    t0=$(now)
+    kill -"$sig" "$pid" 2>/dev/null
+    ( i=0; while kill -0 "$pid" 2>/dev/null && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+      kill -KILL "$pid" 2>/dev/null ) &
+    guard=$!
+    wait "$pid"
+    rc=$?
+    took=$(awk -v a="$t0" -v b="$(now)" 'BEGIN {printf "%.2f", b - a}')
+    kill "$guard" 2>/dev/null
+    wait "$guard" 2>/dev/null
+}
+within1() { awk -v t="$took" 'BEGIN {exit !(t < 1)}'; }
+mkdir -p "$TMP/gptmp"
+TMPDIR="$TMP/gptmp" gnuplot_wait gpwait INT --batch -q -N 100 --force --eps=10pm -o "$TMP/gpwait"
+check "SIGINT while gnuplot draws: exit 130 within 1 s (gnuplot started $came, exit $rc after ${took} s)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ] && awk -v t=$took 'BEGIN {exit !(t < 1)}'"
+check "... summary.tsv says interrupted and names the figures not drawn" \
+    sh -c "grep -qx 'status	interrupted' '$TMP/gpwait/summary.tsv' && grep -q '^not_written	force.png' '$TMP/gpwait/summary.tsv'"
+check "... no temporary left, in the directory or in TMPDIR" \
+    sh -c "no_tmp() { ! ls -a \"\$1\" | grep -v '^\\.adhere-manifest\$' | grep -q '^\\.'\"[^.]\"; }; no_tmp '$TMP/gpwait' && [ -z \"\$(ls -A '$TMP/gptmp')\" ]"
+printf ':set N 100\n:set spacing 10nm\n:set eps 10pm\n3f\np\n' >"$TMP/gpwait.keys"
+(cd "$TMP" && gnuplot_wait tuiwait TERM --replay=gpwait.keys --screen=gpwait.screen --no-clock -o "$TMP/tuiwait" </dev/null)
+check "SIGTERM during the TUI's p while gnuplot draws: exit 130 within 1 s (gnuplot started $came, exit $rc after ${took} s)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ] && awk -v t=$took 'BEGIN {exit !(t < 1)}'"
 done_testing

@@ -1,14 +1,18 @@
 /* The gnuplot process (handshake, error detection, death, hang, missing
- * program), the contact-line speed, and adh_plots_write on a synthetic run:
- * valid PNGs of the style's size, tables intact when gnuplot is absent. */
+ * program, an image on its output before the handshake, a signal while
+ * waiting), the contact-line speed, and adh_plots_write on a synthetic
+ * run: valid PNGs of the style's size, tables intact when gnuplot is
+ * absent. */
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -16,6 +20,7 @@
 #include "adhere/params.h"
 #include "adhere/protocol.h"
 #include "plot/gnuplot.h"
+#include "plot/outdir.h"
 #include "plot/plot.h"
 #include "plot/speed.h"
 #include "plot/tsv.h"
@@ -26,13 +31,62 @@
 
 static char work[256];
 
+/* gnuplot with its log at path (made or appended to); *fd the log's
+ * descriptor, for the caller to close after adh_gnuplot_close. */
+static adh_gnuplot *open_gp(const char *path, const volatile sig_atomic_t *cancel, int *fd, char *msg,
+                            size_t len)
+{
+    *fd = open(path, O_RDWR | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (*fd < 0) {
+        snprintf(msg, len, "cannot open %s: %s", path, strerror(errno));
+        return NULL;
+    }
+    return adh_gnuplot_open(*fd, path, cancel, msg, len);
+}
+
+static void close_gp(adh_gnuplot *gp, int fd)
+{
+    adh_gnuplot_close(gp);
+    if (fd >= 0)
+        close(fd);
+}
+
 static int have_gnuplot(void)
 {
     char msg[512];
-    adh_gnuplot *gp = adh_gnuplot_open("/dev/null", msg, sizeof msg);
+    int fd;
+    adh_gnuplot *gp = open_gp("/dev/null", NULL, &fd, msg, sizeof msg);
     int ok = gp && adh_gnuplot_sync(gp, 20, msg, sizeof msg) == 0;
-    adh_gnuplot_close(gp);
+    close_gp(gp, fd);
     return ok;
+}
+
+/* adh_plots_write into dir, opened as an output directory: its status, or
+ * 2 when the directory cannot be opened (msg says why). */
+static int plots_into(const adh_plot_setup *ps, const adh_run *run, const char *dir, char *msg, size_t len)
+{
+    adh_outdir *od = adh_outdir_open(dir, 0, msg, len);
+    if (!od)
+        return 2;
+    int rc = adh_plots_write(ps, run, NULL, od, msg, len, NULL, 0);
+    adh_outdir_close(od);
+    return rc;
+}
+
+/* Files in dir whose names start with a dot, but for adhere's manifest:
+ * temporaries. */
+static int hidden_files(const char *dir)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    if (!d)
+        return -1;
+    struct dirent *e;
+    while ((e = readdir(d)))
+        n += e->d_name[0] == '.' && strcmp(e->d_name, ".") && strcmp(e->d_name, "..") &&
+             strcmp(e->d_name, ADH_OUTDIR_MANIFEST);
+    closedir(d);
+    return n;
 }
 
 static int no_children_left(void)
@@ -192,11 +246,25 @@ static void free_synthetic(synthetic *s)
 
 /* ------------------------------------------------------------- tests */
 
+static double clock_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static volatile sig_atomic_t *raised;
+static void raise_flag(int sig)
+{
+    *raised = sig;
+}
+
 static void test_process(void)
 {
     char log[300], msg[1024], last[512];
+    int fd;
     path_in(log, sizeof log, work, "proc.log");
-    adh_gnuplot *gp = adh_gnuplot_open(log, msg, sizeof msg);
+    adh_gnuplot *gp = open_gp(log, NULL, &fd, msg, sizeof msg);
     ok(gp != NULL, "gnuplot starts (%s)", gp ? "ok" : msg);
     if (!gp)
         return;
@@ -210,26 +278,35 @@ static void test_process(void)
     adh_gnuplot_cmd(gp, "y = 2");
     ok(adh_gnuplot_sync(gp, 20, msg, sizeof msg) == 0,
        "the next clean batch syncs again (errors reset)");
-    adh_gnuplot_log_last_line(log, last, sizeof last);
+    adh_gnuplot_log_last_line(fd, last, sizeof last);
     ok(strstr(last, "undefined function") != NULL,
        "gnuplot's stderr went to the log: last line \"%s\"", last);
-    adh_gnuplot_close(gp);
+    /* an image on gnuplot's output (no file to put it in) comes before the
+     * handshake on the same line: the handshake is found all the same */
+    adh_gnuplot_cmd(gp, "set terminal pngcairo size 200,100; unset output; plot x; unset output");
+    double t0 = clock_now();
+    ok(adh_gnuplot_sync(gp, 20, msg, sizeof msg) == 0 && clock_now() - t0 < 5,
+       "a PNG on gnuplot's stdout before the handshake: synced in %.2f s (%s)", clock_now() - t0, msg);
+    close_gp(gp, fd);
     ok(no_children_left(), "closing reaps gnuplot");
 }
 
 static void test_missing(void)
 {
     char log[300], msg[1024];
+    int fd, fd2;
     path_in(log, sizeof log, work, "missing.log");
     setenv("ADHERE_GNUPLOT", "/nonexistent/gnuplot", 1);
-    adh_gnuplot *gp = adh_gnuplot_open(log, msg, sizeof msg);
+    adh_gnuplot *gp = open_gp(log, NULL, &fd, msg, sizeof msg);
     ok(gp == NULL && strstr(msg, "/nonexistent/gnuplot"),
        "a missing program is reported at open: %s", msg);
     unsetenv("ADHERE_GNUPLOT");
     char *old = getenv("PATH") ? strdup(getenv("PATH")) : NULL;
     setenv("PATH", "/nonexistent", 1);
-    gp = adh_gnuplot_open(log, msg, sizeof msg);
+    gp = open_gp(log, NULL, &fd2, msg, sizeof msg);
     ok(gp == NULL && strstr(msg, "not found on PATH"), "gnuplot off the PATH: %s", msg);
+    close(fd);
+    close(fd2);
     if (old) {
         setenv("PATH", old, 1);
         free(old);
@@ -240,6 +317,7 @@ static void test_missing(void)
 static void test_death_and_hang(void)
 {
     char log[300], msg[1024], script[300];
+    int fd;
     path_in(log, sizeof log, work, "death.log");
 
     /* a "gnuplot" that complains on stderr and dies */
@@ -249,7 +327,7 @@ static void test_death_and_hang(void)
     fclose(f);
     chmod(script, 0755);
     setenv("ADHERE_GNUPLOT", script, 1);
-    adh_gnuplot *gp = adh_gnuplot_open(log, msg, sizeof msg);
+    adh_gnuplot *gp = open_gp(log, NULL, &fd, msg, sizeof msg);
     ok(gp != NULL, "a dying gnuplot still starts");
     /* SIGPIPE must be ignored only while writing: the caller's handler stays */
     struct sigaction mine, seen;
@@ -276,7 +354,7 @@ static void test_death_and_hang(void)
     ok(seen.sa_handler == SIG_DFL, "SIGPIPE disposition restored after writing");
     ok(!adh_gnuplot_alive(gp), "a dead gnuplot is not alive");
     ok(adh_gnuplot_sync(gp, 5, msg, sizeof msg) == -1, "later syncs fail at once");
-    adh_gnuplot_close(gp);
+    close_gp(gp, fd);
 
     /* a "gnuplot" that never answers */
     path_in(script, sizeof script, work, "hung-gnuplot");
@@ -285,11 +363,34 @@ static void test_death_and_hang(void)
     fclose(f);
     chmod(script, 0755);
     setenv("ADHERE_GNUPLOT", script, 1);
-    gp = adh_gnuplot_open(log, msg, sizeof msg);
+    gp = open_gp(log, NULL, &fd, msg, sizeof msg);
     rc = adh_gnuplot_sync(gp, 0.5, msg, sizeof msg);
     ok(rc == -1 && strstr(msg, "did not answer"), "a hung gnuplot times out: %s", msg);
-    adh_gnuplot_close(gp);
+    close_gp(gp, fd);
     ok(no_children_left(), "the hung child is killed and reaped");
+
+    /* a signal while waiting for it: the caller's flag ends the wait within
+     * 0.1 s of its being raised (SIGALRM raises it here, 0.2 s in), not at
+     * the timeout */
+    static volatile sig_atomic_t flag;
+    struct sigaction sa, old;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = raise_flag;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGALRM, &sa, &old);
+    raised = &flag;
+    gp = open_gp(log, &flag, &fd, msg, sizeof msg);
+    double t0 = clock_now();
+    struct itimerval it = { { 0, 0 }, { 0, 200000 } };
+    setitimer(ITIMER_REAL, &it, NULL);
+    rc = adh_gnuplot_sync(gp, 30, msg, sizeof msg);
+    double took = clock_now() - t0;
+    ok(rc == -1 && strstr(msg, "interrupted") && took < 1.0,
+       "a hung gnuplot, a signal 0.2 s in: the wait ends after %.2f s (below 1 s): %s", took, msg);
+    t0 = clock_now();
+    close_gp(gp, fd);
+    ok(clock_now() - t0 < 1.0 && no_children_left(), "and gnuplot is killed at once (%.2f s)", clock_now() - t0);
+    sigaction(SIGALRM, &old, NULL);
     unsetenv("ADHERE_GNUPLOT");
 }
 
@@ -364,11 +465,11 @@ static void test_plots(void)
 
     path_in(dir, sizeof dir, work, "plots");
     mkdir(dir, 0755);
-    int rc = adh_plots_write(&s.ps, &s.run, NULL, dir, msg, sizeof msg, NULL, 0);
+    int rc = plots_into(&s.ps, &s.run, dir, msg, sizeof msg);
     ok(rc == 0, "plots written: rc %d, %s", rc, msg);
     check_pngs(dir, 900, 600, "installed style");
     check_tables(dir, &s, "with gnuplot");
-    ok(count_matching(dir, ".tmp") == 0, "no temporary files left in the output dir");
+    ok(hidden_files(dir) == 0, "no temporary files left in the output dir");
     ok(count_matching(work, "adhere-plot-") == 0, "the data temp dir is removed");
     path_in(p, sizeof p, dir, "gnuplot.log");
     ok(!exists(p), "an empty gnuplot.log is not left behind");
@@ -395,7 +496,7 @@ static void test_plots(void)
     snprintf(s.style, sizeof s.style, "%s", style);
     path_in(dir2, sizeof dir2, work, "small");
     mkdir(dir2, 0755);
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     ok(rc == 0, "custom style: rc %d, %s", rc, msg);
     check_pngs(dir2, 640, 480, "--gnuplot-style");
 
@@ -405,7 +506,7 @@ static void test_plots(void)
     fclose(f);
     path_in(dir2, sizeof dir2, work, "badstyle");
     mkdir(dir2, 0755);
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     ok(rc == 3 && strstr(msg, "gnuplot error"), "an error in the style returns 3 and quotes "
        "gnuplot: %s", msg);
     ok(count_matching(dir2, ".png") == 0, "no PNG, not even a temporary one, after an error");
@@ -415,7 +516,7 @@ static void test_plots(void)
 
     /* a style that does not exist */
     snprintf(s.style, sizeof s.style, "%s/nope.gp", work);
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     ok(rc == 3 && strstr(msg, "nope.gp"), "a missing style file is named: %s", msg);
     s.style[0] = '\0';
 
@@ -423,7 +524,7 @@ static void test_plots(void)
     path_in(dir2, sizeof dir2, work, "nognuplot");
     mkdir(dir2, 0755);
     setenv("ADHERE_GNUPLOT", "/nonexistent/gnuplot", 1);
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     unsetenv("ADHERE_GNUPLOT");
     ok(rc == 3 && strstr(msg, "tables written"), "no gnuplot: rc 3 and says so: %s", msg);
     ok(count_matching(dir2, ".png") == 0, "no gnuplot: no PNG");
@@ -433,7 +534,7 @@ static void test_plots(void)
     path_in(dir2, sizeof dir2, work, "noplot");
     mkdir(dir2, 0755);
     s.ps.draw = 0;
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     ok(rc == 0 && count_matching(dir2, ".png") == 0, "--no-plot: rc 0, no PNG");
     check_tables(dir2, &s, "no plot");
 
@@ -445,7 +546,7 @@ static void test_plots(void)
     s.ps.r = radii;
     path_in(dir2, sizeof dir2, work, "graded");
     mkdir(dir2, 0755);
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     path_in(p, sizeof p, dir2, "profiles.tsv");
     f = fopen(p, "r");
     size_t rows = 0, same = 0;
@@ -467,7 +568,7 @@ static void test_plots(void)
     path_in(dir2, sizeof dir2, work, "select");
     mkdir(dir2, 0755);
     s.ps.figures = ADH_PLOT_CONTACT;
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     path_in(p, sizeof p, dir2, "contact.png");
     ok(rc == 0 && exists(p) && count_matching(dir2, ".png") == 1,
        "--plots=contact makes contact.png alone");
@@ -478,7 +579,7 @@ static void test_plots(void)
     mkdir(dir2, 0755);
     size_t keep = s.run.nprofiles;
     s.run.nprofiles = 0;
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     path_in(p, sizeof p, dir2, "profile.png");
     ok(rc == 0 && !exists(p) && strstr(msg, "--profiles"),
        "no profiles: profile.png skipped and the message says how: %s", msg);
@@ -493,13 +594,16 @@ static void test_plots(void)
     s.run.turns[1].max_load = -5e-8;
     s.run.turns[1].pulloff_F = -6e-7;
     s.run.turns[1].path = 2;
-    rc = adh_plots_write(&s.ps, &s.run, NULL, dir2, msg, sizeof msg, NULL, 0);
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
     ok(rc == 0, "two turns: force.png with the adhesion panel: %s", msg);
     s.run.nturns = 1;
 
-    /* an unwritable output directory */
-    rc = adh_plots_write(&s.ps, &s.run, NULL, "/nonexistent/dir", msg, sizeof msg, NULL, 0);
-    ok(rc == 2, "an unwritable dir returns 2: %s", msg);
+    /* an output directory that cannot be made (under a file) */
+    path_in(p, sizeof p, work, "afile");
+    fclose(fopen(p, "w"));
+    path_in(dir2, sizeof dir2, work, "afile/dir");
+    rc = plots_into(&s.ps, &s.run, dir2, msg, sizeof msg);
+    ok(rc == 2 && strstr(msg, "afile"), "a directory that cannot be made is refused: %s", msg);
     ok(no_children_left(), "no gnuplot left running");
     free_synthetic(&s);
 }

@@ -1,7 +1,9 @@
 /* What may stand under a final name in an output directory: adh_png_check
  * takes a whole PNG and nothing less (every cut of one, a text file, data
- * after IEND), and adh_outdir_owns / adh_outdir_clear know adhere's own
- * files from the user's. */
+ * after IEND, an empty file said as such); an output directory removes
+ * only what adhere wrote there (its manifest), refuses a user's file under
+ * an adhere name, a second run at once and a link, and writes through no
+ * link; adh_outfile_write replaces a link at the path. */
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -78,8 +80,65 @@ static void test_png_check(void)
     memcpy(more + 12, "IDAT", 4);
     put_file(path, more, n);
     ok(adh_png_check(path, why, sizeof why) != 0, "a PNG without IHDR first is refused: %s", why);
+    put_file(path, png, 0);
+    ok(adh_png_check(path, why, sizeof why) != 0 && strstr(why, "empty") && !strstr(why, "style"),
+       "an empty image (a full disk) is said to be empty, not blamed on a style: %s", why);
     snprintf(path, sizeof path, "%s/missing.png", work);
     ok(adh_png_check(path, why, sizeof why) != 0, "a missing file is refused: %s", why);
+}
+
+static int write_text(FILE *f, const void *ctx)
+{
+    fputs((const char *)ctx, f);
+    return 0;
+}
+
+static int fail_writer(FILE *f, const void *ctx)
+{
+    (void)ctx;
+    fputs("half a table", f);
+    return -1;
+}
+
+/* The file's text ("" when it cannot be read). */
+static const char *text_of(const char *path)
+{
+    static char buf[256];
+    buf[0] = '\0';
+    FILE *f = fopen(path, "r");
+    if (f) {
+        size_t n = fread(buf, 1, sizeof buf - 1, f);
+        buf[n] = '\0';
+        fclose(f);
+    }
+    return buf;
+}
+
+static int is_link(const char *path)
+{
+    struct stat st;
+    return lstat(path, &st) == 0 && S_ISLNK(st.st_mode);
+}
+
+/* Names in dir starting with a dot, but for the manifest. */
+static int hidden(const char *dir)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    struct dirent *e;
+    while (d && (e = readdir(d)))
+        n += e->d_name[0] == '.' && strcmp(e->d_name, ".") && strcmp(e->d_name, "..") &&
+             strcmp(e->d_name, ADH_OUTDIR_MANIFEST);
+    if (d)
+        closedir(d);
+    return n;
+}
+
+static void put_text(const char *dir, const char *name, const char *text)
+{
+    char p[400];
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    put_file(p, (const unsigned char *)text, strlen(text));
 }
 
 static void test_owns(void)
@@ -87,58 +146,146 @@ static void test_owns(void)
     static const char *const mine[] = {
         "force.tsv", "summary.tsv", "turns.tsv", "static.tsv", "profiles.tsv", "contact.tsv", "sweep.tsv",
         "cost.tsv", "force.png", "profile.png", "contact.png", "precontact.png", "bulge.png", "jump.png",
-        "cost.png", "gnuplot.log", "gnuplot-figures.log", ".force.png.tmp123", ".summary.tsv.4242.tmp",
-        ".cost.png.77.tmp", ".cost-plot.77.dat",
+        "cost.png", "gnuplot.log", "gnuplot-figures.log", ADH_OUTDIR_MANIFEST,
     };
     static const char *const theirs[] = {
-        "notes.txt", "force.tsv.bak", "Force.tsv", "force.tsv~", ".force.png.tmp", ".force.png.tmpX1",
-        ".summary.tsv.tmp", ".summary.tsv.12a.tmp", ".cost-plot.dat", "run-1", "my.png", ".force.tsv",
-        "gnuplot.log.old",
+        "notes.txt", "force.tsv.bak", "Force.tsv", "force.tsv~", ".force.png.tmp123", ".summary.tsv.4242.tmp",
+        "run-1", "my.png", ".force.tsv", "gnuplot.log.old",
     };
     size_t a = 0, b = 0;
     for (size_t i = 0; i < sizeof mine / sizeof mine[0]; i++)
-        if (adh_outdir_owns(mine[i]))
-            a++;
-        else
-            ok(0, "%s is adhere's", mine[i]);
+        a += adh_outdir_owns(mine[i]) != 0;
     for (size_t i = 0; i < sizeof theirs / sizeof theirs[0]; i++)
-        if (!adh_outdir_owns(theirs[i]))
-            b++;
-        else
-            ok(0, "%s is the user's", theirs[i]);
-    ok(a == sizeof mine / sizeof mine[0], "every name adhere writes, and its temporaries, are adhere's");
-    ok(b == sizeof theirs / sizeof theirs[0], "look-alike names are the user's");
+        b += !adh_outdir_owns(theirs[i]);
+    ok(a == sizeof mine / sizeof mine[0], "every name adhere writes is adhere's (%zu)", a);
+    ok(b == sizeof theirs / sizeof theirs[0], "look-alikes and temporaries are not names it writes (%zu)", b);
+}
 
-    char d[300], p[400];
+/* What adhere wrote goes with the next run; nothing else does, and nothing
+ * is written through a link. */
+static void test_outdir(void)
+{
+    char d[300], p[400], q[400], why[1200];
     snprintf(d, sizeof d, "%s/out", work);
-    mkdir(d, 0755);
-    const char *files[] = { "force.tsv", "force.png", "notes.txt", "run-2/summary.tsv", "run-5/summary.tsv",
-                            "run-5/mine.txt", "keep/force.tsv" };
-    snprintf(p, sizeof p, "%s/run-2", d), mkdir(p, 0755);
-    snprintf(p, sizeof p, "%s/run-5", d), mkdir(p, 0755);
-    snprintf(p, sizeof p, "%s/keep", d), mkdir(p, 0755);
-    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-        snprintf(p, sizeof p, "%s/%s", d, files[i]);
-        put_file(p, (const unsigned char *)"x", 1);
-    }
-    char why[300];
-    ok(adh_outdir_clear(d, why, sizeof why) == 0, "clearing a directory succeeds");
-    int gone = 0, kept = 0;
+    adh_outdir *od = adh_outdir_open(d, 0, why, sizeof why);
+    ok(od != NULL, "a new directory opens (%s)", od ? "made" : why);
+    if (!od)
+        return;
+    ok(adh_outdir_write(od, "force.tsv", write_text, "run 1\n", why, sizeof why) == 0 &&
+       adh_outdir_write(od, "force.png", write_text, "png 1\n", why, sizeof why) == 0, "two files written");
+    ok(adh_outdir_write(od, "summary.tsv", fail_writer, NULL, why, sizeof why) != 0 && strstr(why, "summary.tsv"),
+       "a writer that fails: refused, named (%s)", why);
+    snprintf(p, sizeof p, "%s/summary.tsv", d);
+    ok(access(p, F_OK) != 0 && hidden(d) == 0, "... no file under its name and no temporary left");
+    adh_outdir *two = adh_outdir_open(d, 0, why, sizeof why);
+    ok(!two && strstr(why, "in use"), "a second run into it while the first writes is refused: %s", why);
+    adh_outdir_close(two);
+    adh_outdir_close(od);
+
+    /* the user's files beside adhere's, and one of adhere's the user rewrote */
+    put_text(d, "notes.txt", "mine");
+    od = adh_outdir_open(d, 0, why, sizeof why);
+    snprintf(p, sizeof p, "%s/force.tsv", d);
+    snprintf(q, sizeof q, "%s/notes.txt", d);
+    ok(od && access(p, F_OK) != 0 && !strcmp(text_of(q), "mine"),
+       "the next run removes run 1's files and keeps the user's (%s)", od ? "opened" : why);
+    ok(adh_outdir_write(od, "force.tsv", write_text, "run 2\n", why, sizeof why) == 0, "run 2 writes force.tsv");
+    adh_outdir_close(od);
+    put_text(d, "force.tsv", "edited by the user\n");   /* in place: same inode, new size */
+    od = adh_outdir_open(d, 0, why, sizeof why);
+    ok(!od && strstr(why, "force.tsv") && strstr(why, "--overwrite") &&
+       !strcmp(text_of(p), "edited by the user\n"),
+       "a file of adhere's the user changed is no longer adhere's: refused, kept: %s", why);
+    adh_outdir_close(od);
+
+    /* a user's file under one of adhere's names, in a directory adhere never wrote */
+    char u[300];
+    snprintf(u, sizeof u, "%s/user", work);
+    mkdir(u, 0755);
+    put_text(u, "cost.tsv", "my costs");
+    od = adh_outdir_open(u, 0, why, sizeof why);
+    snprintf(q, sizeof q, "%s/cost.tsv", u);
+    ok(!od && strstr(why, "cost.tsv") && !strcmp(text_of(q), "my costs"),
+       "a user's cost.tsv in a reused directory: refused, kept: %s", why);
+    od = adh_outdir_open(u, ADH_OUTDIR_OVERWRITE, why, sizeof why);
+    ok(od && access(q, F_OK) != 0, "--overwrite: removed as if adhere had written it");
+    adh_outdir_close(od);
+
+    /* links: at a final name, and a run-K that points elsewhere */
+    char v[300];
+    snprintf(v, sizeof v, "%s/victim", work);
+    mkdir(v, 0755);
+    put_text(v, "force.tsv", "keep");
+    char l[300];
+    snprintf(l, sizeof l, "%s/links", work);
+    mkdir(l, 0755);
+    snprintf(p, sizeof p, "%s/force.tsv", l);
+    snprintf(q, sizeof q, "%s/force.tsv", v);
+    symlink(q, p);
+    od = adh_outdir_open(l, 0, why, sizeof why);
+    ok(!od && strstr(why, "force.tsv (a link)"), "a link under an adhere name refuses the directory: %s", why);
+    od = adh_outdir_open(l, ADH_OUTDIR_OVERWRITE, why, sizeof why);
+    ok(od && adh_outdir_write(od, "force.tsv", write_text, "new", why, sizeof why) == 0 && !is_link(p) &&
+       !strcmp(text_of(p), "new") && !strcmp(text_of(q), "keep"),
+       "--overwrite replaces the link itself; its target keeps its text");
+    snprintf(p, sizeof p, "%s/run-1", l);
+    symlink(v, p);
+    adh_outdir *sub = od ? adh_outdir_sub(od, "run-1", why, sizeof why) : NULL;
+    ok(!sub && strstr(why, "symbolic link") && !strcmp(text_of(q), "keep"),
+       "a run-K that is a link is not entered: %s", why);
+    adh_outdir_close(sub);
+    adh_outdir_close(od);
+    unlink(p);
+
+    /* run-K: made, recorded, emptied by the next run and removed when empty,
+     * kept with the user's file in it */
+    od = adh_outdir_open(l, 0, why, sizeof why);
+    adh_outdir *r1 = od ? adh_outdir_sub(od, "run-1", why, sizeof why) : NULL;
+    adh_outdir *r2 = od ? adh_outdir_sub(od, "run-2", why, sizeof why) : NULL;
+    ok(r1 && r2 && adh_outdir_write(r1, "summary.tsv", write_text, "1", why, sizeof why) == 0 &&
+       adh_outdir_write(r2, "summary.tsv", write_text, "2", why, sizeof why) == 0, "a sweep's run-1, run-2 written");
+    adh_outdir_close(r1), adh_outdir_close(r2), adh_outdir_close(od);
+    snprintf(p, sizeof p, "%s/run-2", l);
+    put_text(p, "mine.txt", "mine");
+    od = adh_outdir_open(l, 0, why, sizeof why);
+    snprintf(p, sizeof p, "%s/run-1", l);
+    snprintf(q, sizeof q, "%s/run-2/mine.txt", l);
     struct stat st;
-    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-        snprintf(p, sizeof p, "%s/%s", d, files[i]);
-        int there = stat(p, &st) == 0;
-        int should = !strcmp(files[i], "notes.txt") || !strcmp(files[i], "run-5/mine.txt") ||
-                     !strcmp(files[i], "keep/force.tsv");
-        gone += !there && !should;
-        kept += there && should;
-    }
-    ok(gone == 4 && kept == 3, "adhere's files go (%d of 4), the user's stay (%d of 3), also "
-       "in a directory not named run-K", gone, kept);
-    snprintf(p, sizeof p, "%s/run-2", d);
-    ok(stat(p, &st) != 0, "an emptied run-K directory goes");
-    snprintf(p, sizeof p, "%s/nonexistent", work);
-    ok(adh_outdir_clear(p, why, sizeof why) == 0, "a directory that does not exist is empty");
+    ok(od && stat(p, &st) != 0 && !strcmp(text_of(q), "mine"),
+       "the next run removes run-1 and keeps run-2 with the user's file (%s)", od ? "opened" : why);
+    snprintf(q, sizeof q, "%s/run-2/summary.tsv", l);
+    ok(access(q, F_OK) != 0, "... from which adhere's summary.tsv went");
+    adh_outdir_close(od);
+
+    /* a log: kept when it holds something, removed when empty */
+    od = adh_outdir_open(l, 0, why, sizeof why);
+    int fd = od ? adh_outdir_log_open(od, "gnuplot.log", why, sizeof why) : -1;
+    adh_outdir_log_close(od, "gnuplot.log", fd);
+    snprintf(p, sizeof p, "%s/gnuplot.log", l);
+    ok(fd >= 0 && access(p, F_OK) != 0, "an empty log is removed");
+    fd = od ? adh_outdir_log_open(od, "gnuplot.log", why, sizeof why) : -1;
+    ok(fd >= 0 && write(fd, "warning\n", 8) == 8, "a log written to");
+    adh_outdir_log_close(od, "gnuplot.log", fd);
+    adh_outdir_close(od);
+    od = adh_outdir_open(l, 0, why, sizeof why);
+    ok(od && access(p, F_OK) != 0, "... is kept, and is adhere's: the next run removes it");
+    adh_outdir_close(od);
+}
+
+/* A file at a path the user names (:rows, :dump): a link there is
+ * replaced, never written through. */
+static void test_outfile(void)
+{
+    char target[300], link[300];
+    snprintf(target, sizeof target, "%s/victim/rows-target", work);
+    snprintf(link, sizeof link, "%s/rows.tsv", work);
+    put_file(target, (const unsigned char *)"keep", 4);
+    symlink(target, link);
+    ok(adh_outfile_write(link, write_text, "rows\n") == 0 && !is_link(link) && !strcmp(text_of(link), "rows\n") &&
+       !strcmp(text_of(target), "keep"), "a link at the path is replaced; its target keeps its text");
+    ok(adh_outfile_write(link, fail_writer, NULL) != 0 && !strcmp(text_of(link), "rows\n") && hidden(work) == 0,
+       "a failed write leaves the old file and no temporary");
+    ok(adh_outfile_write("/dev/null", write_text, "x") == 0, "a device is written in place");
 }
 
 int main(void)
@@ -150,6 +297,8 @@ int main(void)
     }
     test_png_check();
     test_owns();
+    test_outdir();
+    test_outfile();
     if (!tap_failed) {
         char cmd[400];
         snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);

@@ -1,0 +1,124 @@
+#!/bin/sh
+# The output directory (-o) as an attacker and a careless user would meet
+# it: adhere never writes through a link (a symlinked run-K, a link planted
+# at the temporary name an older adhere used, gnuplot's files), never
+# deletes or replaces a file it did not write (a user's cost.tsv, sweep.tsv,
+# jump.png, run-3/force.tsv in a reused -o), refuses a second run into a
+# directory while one is writing, and writes into an -o path of 4 000
+# characters without stalling. Prints TAP.
+. "$(dirname "$0")/lib.sh"
+need_gnuplot
+cd "$TMP" || exit 1
+mkdir tmp
+export TMPDIR="$TMP/tmp"
+QUICK="--batch --quiet -N 100 --force --eps=10pm"
+key() { awk -F'\t' -v k="$2" '$1 == k {print $2}' "$1/summary.tsv" 2>/dev/null; }
+# the files of v, with their contents, one line each
+snapshot() { (cd "$1" && for f in $(ls -A | sort); do printf '%s=%s\n' "$f" "$(cat "$f" 2>/dev/null)"; done); }
+
+# --- a sweep whose run-1 is a link to a directory elsewhere ----------------
+mkdir v o
+echo keep >v/force.tsv
+echo keep >v/gnuplot.log
+ln -s ../v o/run-1
+printf '[sweep]\neps = 10pm, 20pm\n' >sweep.scene
+before=$(snapshot v)
+"$ADHERE" $QUICK sweep.scene -o o 2>sweep.err
+rc=$?
+check "a sweep into o with o/run-1 -> ../v: refused, exit 2 (got $rc: $(head -c 300 sweep.err))" [ "$rc" -eq 2 ]
+check "... v is untouched: its force.tsv and gnuplot.log kept, nothing added" [ "$(snapshot v)" = "$before" ]
+check "... the message names the link" grep -q 'run-1 (a link)' sweep.err
+"$ADHERE" $QUICK --overwrite sweep.scene -o o 2>/dev/null
+rc=$?
+check "with --overwrite: the link itself is replaced by a directory, exit 0 (got $rc)" \
+    sh -c "[ $rc -eq 0 ] && [ -d o/run-1 ] && [ ! -L o/run-1 ] && [ -s o/run-1/force.tsv ]"
+check "... and v is still untouched" [ "$(snapshot v)" = "$before" ]
+
+# --- links planted at the temporary names an older adhere used -------------
+# (its pid is visible): the run holds in a long dwell, the links go in, a
+# SIGTERM makes it write its tables
+rm -f planted.ready
+ADHERE_READY_FILE="$TMP/planted.ready" "$ADHERE" $QUICK -d 0.5nm --turn=-1nm --dwell=100000000 -o planted \
+    2>planted.err &
+pid=$!
+came=0
+wait_phase planted.ready dwell "$pid" && came=1
+for n in force.tsv summary.tsv turns.tsv profiles.tsv contact.tsv; do
+    echo keep >"v/$n.target"
+    ln -s "$TMP/v/$n.target" "planted/.$n.$pid.tmp"
+done
+ln -s "$TMP/v/gnuplot.log" "planted/.force.png.tmp$pid"
+before=$(snapshot v)
+kill -TERM "$pid"
+wait "$pid"
+rc=$?
+check "a run with links at .NAME.PID.tmp: interrupted as asked (phase seen $came, exit $rc)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
+check "... wrote its tables (force.tsv PARTIAL, summary.tsv)" \
+    sh -c "grep -q '^# PARTIAL' planted/force.tsv && [ -s planted/summary.tsv ]"
+check "... and not through the links: their targets are untouched" [ "$(snapshot v)" = "$before" ]
+check "... the links are left as they were" [ -L "planted/.force.tsv.$pid.tmp" ]
+
+# --- a user's files in a reused directory -----------------------------------
+mkdir -p user/run-3
+echo mine >user/cost.tsv
+echo mine >user/sweep.tsv
+echo mine >user/jump.png
+echo mine >user/run-3/force.tsv
+echo mine >user/notes.txt
+before=$(snapshot user; snapshot user/run-3)
+"$ADHERE" $QUICK --no-plot -o user 2>user.err
+rc=$?
+check "an unrelated run into a directory holding the user's cost.tsv, sweep.tsv, jump.png, run-3/: refused, exit 2 (got $rc)" \
+    [ "$rc" -eq 2 ]
+check "... every one of the user's files is kept as it was" [ "$(snapshot user; snapshot user/run-3)" = "$before" ]
+check "... the message names them and --overwrite: $(head -c 300 user.err)" \
+    sh -c "grep -q 'cost.tsv' user.err && grep -q 'run-3/' user.err && grep -q -- '--overwrite' user.err"
+
+# adhere's own files of an earlier run go; the user's other files stay
+"$ADHERE" $QUICK --reference=static -o reuse 2>/dev/null
+echo mine >reuse/notes.txt
+echo mine >reuse/force.tsv.bak
+"$ADHERE" $QUICK --no-plot --turn=none --plots=force -o reuse 2>reuse.err
+rc=$?
+check "run 2 into run 1's directory: exit 0 (got $rc: $(head -c 200 reuse.err))" [ "$rc" -eq 0 ]
+left=$(cd reuse && ls -A | sort | tr '\n' ' ')
+check "only run 2's files, the manifest and the user's remain: $left" \
+    [ "$left" = ".adhere-manifest force.tsv force.tsv.bak notes.txt summary.tsv " ]
+check "run 2's summary is run 2's (no turn: turn_h0 nan)" [ "$(key reuse turn_h0)" = nan ]
+# a table of adhere's the user edited is the user's now
+echo "my edit" >>reuse/force.tsv
+"$ADHERE" $QUICK --no-plot -o reuse 2>edit.err
+rc=$?
+check "a table adhere wrote and the user then edited is not removed: exit 2 (got $rc)" \
+    sh -c "[ $rc -eq 2 ] && tail -n 1 reuse/force.tsv | grep -qx 'my edit'"
+
+# --- two runs into one directory at once -------------------------------------
+rm -f first.ready
+ADHERE_READY_FILE="$TMP/first.ready" "$ADHERE" $QUICK -d 0.5nm --turn=-1nm --dwell=100000000 -o both 2>first.err &
+pid=$!
+came=0
+wait_phase first.ready dwell "$pid" && came=1
+"$ADHERE" $QUICK --no-plot -o both 2>second.err
+rc=$?
+check "a second run into a directory the first is writing: refused, exit 2 (phase seen $came, got $rc)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 2 ]"
+check "... saying it is in use: $(head -c 200 second.err)" grep -q 'in use: another adhere' second.err
+kill -TERM "$pid"
+wait "$pid"
+rc=$?
+check "... the first finishes its own tables (exit $rc, summary says interrupted)" \
+    sh -c "[ $rc -eq 130 ] && grep -qx 'status	interrupted' both/summary.tsv"
+
+# --- an -o path of about 4 080 characters ----------------------------------
+long=$TMP/L
+while [ ${#long} -lt 3880 ]; do long=$long/dddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddd; done
+long=$long/$(printf '%*s' $((4080 - ${#long} - 1)) '' | tr ' ' e)
+t0=$(date +%s)
+timeout 120 "$ADHERE" $QUICK --plots=force -o "$long" 2>long.err
+rc=$?
+took=$(($(date +%s) - t0))
+check "an -o path of ${#long} characters: exit 0 in ${took} s (got $rc: $(head -c 160 long.err))" \
+    sh -c "[ $rc -eq 0 ] && [ $took -lt 20 ]"
+check "... force.png and the tables are there" sh -c '[ -s "$1/force.png" ] && [ -s "$1/force.tsv" ]' sh "$long"
+done_testing
