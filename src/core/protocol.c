@@ -1,6 +1,4 @@
 #include "adhere/protocol.h"
-#include "adhere/cycle.h"
-#include "adhere/drive.h"
 #include "adhere/rings.h"
 
 #include <limits.h>
@@ -139,60 +137,6 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
         return ADH_EGRID;
     }
     return ADH_SUCCESS;
-}
-
-/* A thin loop over the drive (adhere/drive.h), which owns the protocol:
- * every driver gets the same rows from the same steps. */
-int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
-                     const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                     adh_step_cb cb, void *ctx, adh_run *run)
-{
-    adh_drive *d = adh_drive_alloc(g, k);
-    if (!d) {
-        run->status = ADH_ENOMEM;
-        return run->status;
-    }
-    int rc = adh_drive_set(d, m, rs, ps, run);
-    if (rc == ADH_SUCCESS)
-        rc = adh_drive_run(d, cb, ctx);
-    adh_drive_free(d);
-    run->status = rc;
-    return rc;
-}
-
-double adh_hysteresis_area(const adh_run *run)
-{
-    return adh_cycle_hysteresis(run->rows, run->nrows, (int)run->nturns);
-}
-
-/* The hysteresis left when eps -> 0: under displacement control the drive
- * follows stable equilibria only, loading on the highest-force one at each
- * h0 (the outer branch until it ends at the jump-in fold) and unloading on
- * the lowest (the contact until the jump-out fold). Between the folds, and
- * wherever lattice trapping makes stable legs overlap, the two differ: the
- * area between them is the hysteresis no slower drive removes. */
-double adh_static_hysteresis_area(const adh_run *curve, double step)
-{
-    double lo = INFINITY, hi = -INFINITY;
-    for (size_t i = 0; i < curve->nrows; i++) {
-        lo = fmin(lo, curve->rows[i].h0);
-        hi = fmax(hi, curve->rows[i].h0);
-    }
-    double area = 0;
-    for (double x = lo + 0.5 * step; x < hi; x += step) {
-        double fmax_ = -INFINITY, fmin_ = INFINITY;
-        for (size_t i = 0; i + 1 < curve->nrows; i++) {
-            const adh_obs *a = &curve->rows[i], *b = &curve->rows[i + 1];
-            if (!a->stable || !b->stable || (x - a->h0) * (x - b->h0) > 0 || a->h0 == b->h0)
-                continue;
-            double F = a->F + (b->F - a->F) * (x - a->h0) / (b->h0 - a->h0);
-            fmax_ = fmax(fmax_, F);
-            fmin_ = fmin(fmin_, F);
-        }
-        if (fmax_ > fmin_)
-            area += (fmax_ - fmin_) * step;
-    }
-    return area;
 }
 
 int adh_protocol_dwell_check(long dwell, char *why, size_t whylen)

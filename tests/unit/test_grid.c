@@ -13,6 +13,8 @@
 #include "adhere/protocol.h"
 #include "adhere/rings.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
+#include "adhere/cycle.h"
 #include "tap.h"
 
 static adh_material at_sigma(double sigma)
@@ -134,18 +136,18 @@ static int cycle(double sigma, double x, int statik, double *pulloff, double *hy
         s.h0_start = adh_protocol_auto_start(&m, 0.05e-9);
         s.h0_end = -2 * m.z0;
         adh_static_result res;
-        rc = adh_static_run(g, k, &m, &s, NULL, NULL, &run, &res);
+        rc = adh_runner_static_curve(g, k, &m, &s, NULL, NULL, &run, &res);
         *pulloff = res.pulloff_F;
-        *hyst = adh_static_hysteresis_area(&run, 0.001e-9);
+        *hyst = adh_cycle_static_hysteresis(&run, 0.001e-9);
     } else {
         adh_relax_settings rs = adh_relax_settings_default();
         rs.eps = 1e-12 * sqrt(1000.0 / (double)n);
         adh_protocol_settings ps = adh_protocol_settings_default();
         ps.turns[0] = -2 * m.z0;
-        rc = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, &run);
+        rc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &run);
         const adh_turn_result *t = adh_run_main_turn(&run);
         *pulloff = t ? t->pulloff_F : NAN;
-        *hyst = adh_hysteresis_area(&run);
+        *hyst = adh_cycle_run_hysteresis(&run);
     }
     adh_run_free(&run);
     adh_kernel_free(k);
