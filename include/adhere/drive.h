@@ -58,10 +58,12 @@ typedef struct adh_drive adh_drive;
  * need not be built: adh_drive_uniform_grid). g = NULL: rigid spheres, no
  * grid. ADH_SUCCESS; ADH_EINVAL for a value outside its limits, ADH_EGRID
  * for a grid that cannot hold the run, each with a sentence naming the
- * value and what is allowed. Whether the grid resolves the contact is
- * adh_grid_check's question (a driver may run it anyway, marked). */
+ * value and what is allowed, and in *fix (may be NULL) the ADH_FIX_* bits of
+ * the settings it asks to change, for the driver's own words (adhere/status.h).
+ * Whether the grid resolves the contact is adh_grid_check's question (a
+ * driver may run it anyway, marked). */
 int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen);
+                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen, unsigned *fix);
 /* The description of a uniform grid of n nodes of spacing dr, without its
  * nodes (r = NULL): enough for adh_drive_check and adh_protocol_check. */
 adh_grid adh_drive_uniform_grid(size_t n, double dr);

@@ -43,9 +43,11 @@ double adh_protocol_reach(const adh_material *m);
 
 /* Checks the settings and that the grid can hold the run: the pressure at
  * Rmax negligible and the contact expected well inside Rmax at the deepest
- * turn. ADH_EINVAL / ADH_EGRID with a sentence in why. g may be NULL (rigid
- * spheres, no elastic solve): then only the drive settings are checked. */
-int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
-                       const adh_grid *g, char *why, size_t whylen);
+ * turn. ADH_EINVAL / ADH_EGRID with a sentence in why, and in *fix (may be
+ * NULL) the ADH_FIX_* bits of what it asks to change (adhere/status.h).
+ * g may be NULL (rigid spheres, no elastic solve): then only the drive
+ * settings are checked. */
+int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m, const adh_grid *g, char *why,
+                       size_t whylen, unsigned *fix);
 
 #endif

@@ -17,6 +17,7 @@
 #include "adhere/rings.h"
 #include "adhere/runner.h"
 #include "adhere/status.h"
+#include "cli/advice.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
 #include "cli/ready.h"
@@ -188,6 +189,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     } else if (rc == ADH_EGRID && run.nrows) {
         char edge[400];
         adh_rings_edge_sentence(g, run.rows[run.nrows - 1].a, edge, sizeof edge);
+        cli_advice_append(edge, sizeof edge, adh_rings_edge_fix(g, run.rows[run.nrows - 1].a));
         snprintf(note, sizeof note, "the run stopped after %zu steps at h0 = %g m: %s", run.nrows,
                  run.rows[run.nrows - 1].h0, edge);
         status = CLI_EXIT_SOLVER;

@@ -165,9 +165,11 @@ static int cmp_desc(const void *a, const void *b)
 }
 
 int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen)
+                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen, unsigned *fix)
 {
     int rc;
+    if (fix)
+        *fix = 0;
     if ((rc = adh_material_validate(m, why, whylen)) != ADH_SUCCESS ||
         (rc = adh_relax_settings_validate(rs, why, whylen)) != ADH_SUCCESS)
         return rc;
@@ -188,7 +190,7 @@ int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const a
         return ADH_EINVAL;
     }
     /* g NULL: rigid spheres, eq 22 alone, only the drive is checked */
-    return adh_protocol_check(ps, m, g, why, whylen);
+    return adh_protocol_check(ps, m, g, why, whylen, fix);
 }
 
 adh_grid adh_drive_uniform_grid(size_t n, double dr)

@@ -638,7 +638,7 @@ static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode
     adh_grid_use use = mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
     if (!p->grid.graded) {
         adh_grid g = adh_drive_uniform_grid(p->nodes, params_spacing(p));
-        return adh_drive_check(&p->mat, &p->relax, &ps, use, &g, why, whylen);
+        return adh_drive_check(&p->mat, &p->relax, &ps, use, &g, why, whylen, NULL);
     }
     /* rings: the check reads their edges (cheap to lay out; no kernel) */
     adh_config c;
@@ -650,7 +650,7 @@ static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode
     if (!g)
         snprintf(why, whylen, "out of memory for a graded grid of %zu rings", p->nodes);
     else
-        rc = adh_drive_check(&p->mat, &p->relax, &ps, use, g, why, whylen);
+        rc = adh_drive_check(&p->mat, &p->relax, &ps, use, g, why, whylen, NULL);
     adh_grid_free(g);
     return rc;
 }

@@ -45,7 +45,7 @@ static int run_config(const adh_config *c, outcome *o)
     adh_grid *g = adh_grid_alloc(c->nodes, adh_config_spacing(c));
     o->rc = adh_material_validate(&c->mat, o->why, sizeof o->why);
     if (o->rc == ADH_SUCCESS)
-        o->rc = adh_protocol_check(&c->proto, &c->mat, g, o->why, sizeof o->why);
+        o->rc = adh_protocol_check(&c->proto, &c->mat, g, o->why, sizeof o->why, NULL);
     if (o->rc != ADH_SUCCESS) {
         adh_grid_free(g);
         return o->rc;

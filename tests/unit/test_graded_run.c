@@ -30,7 +30,7 @@ static int cycle(const adh_grid *g, adh_kernel_storage st, adh_run *run)
     rs.eps = 2e-12;
     adh_run_init(run);
     char why[256];
-    int rc = adh_protocol_check(&ps, &m, g, why, sizeof why);
+    int rc = adh_protocol_check(&ps, &m, g, why, sizeof why, NULL);
     if (rc == ADH_SUCCESS)
         rc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, run);
     else
