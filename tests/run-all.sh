@@ -30,7 +30,7 @@ elif [ "${ONLY:-}" = c ]; then
     set -- "$BUILD"/tests/*
 else
     set -- "$BUILD"/tests/* tests/cli/*.sh tests/scenes/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh \
-        tests/bench/smoke.sh
+        tests/source/*.sh tests/bench/smoke.sh
     [ -n "${ASAN_BUILD:-}" ] && asan=$(ls "$ASAN_BUILD"/tests/*)
     [ -n "${FUZZ_BUILD:-}" ] && set -- "$@" tests/fuzz/run.sh
 fi

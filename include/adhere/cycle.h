@@ -41,4 +41,13 @@ size_t adh_cycle_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, si
  * spheres', F_rigid. 0 when they share fewer than two positions. */
 double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path);
 
+/* The area between the loading and unloading force curves over the positions
+ * both visit (N m): the energy one cycle dissipates, for the deepest turn
+ * (adh_cycle_hysteresis interpolates, so a turn off the drive grid still
+ * pairs). 0 without unloading. */
+double adh_cycle_run_hysteresis(const adh_run *run);
+/* The same for a static curve (one path, stable flags): the area between the
+ * highest and lowest stable force at each h0, sampled every step. */
+double adh_cycle_static_hysteresis(const adh_run *curve, double step);
+
 #endif

@@ -2,8 +2,8 @@
  * style): every driver (batch, sweeps, --cost, the TUI) steps the same
  * drive, so they produce the same rows by construction.
  *
- *   d = adh_drive_alloc(grid, kernel);
- *   adh_drive_set(d, material, relax settings, protocol, run);
+ *   d = adh_drive_alloc(&adh_rule_relax, grid, kernel);
+ *   adh_drive_set(d, material, &relax_settings, protocol, run);
  *   while ((rc = adh_drive_step(d)) == ADH_CONTINUE)
  *       use adh_drive_row(d);                 (also appended to run)
  *   rc: ADH_SUCCESS (done), ADH_EINTR (cancel flag: no row for the step
@@ -15,12 +15,15 @@
  * the turns (one loading branch snapshotted at every turn, then each turn's
  * unloading branch from its snapshot), the dwell, the detection of jump-in,
  * pull-off and jump-out (filled into the run's summary as it goes), and the
- * per-step checks (grid edge, NaN, the cancel flag of the relax settings).
- * Two step rules stand behind it: the relaxation (adh_drive_set: a step
- * moves the drive and relaxes, the paper's dynamics) and the static
- * equilibrium curve (adh_drive_set_static: a step is the next accepted
- * point of the continuation, adhere/static.h, from the protocol's start
- * down to its deepest turn, through every fold). No I/O.
+ * per-step checks (grid edge, NaN, the rule's cancel flag). What a step
+ * does is its step rule's (adhere/rule.h), chosen at alloc: the relaxation
+ * (adh_rule_relax: a step moves the drive and relaxes, the paper's
+ * dynamics), the static equilibrium curve (adh_rule_static: a step is the
+ * next accepted point of the continuation, adhere/static.h, from the
+ * protocol's start down to its deepest turn, through every fold) or rigid
+ * spheres (adh_rule_rigid: eq 22). The last two walk their own path: the
+ * protocol's turns, steps by hand and retargeting are a stepped rule's.
+ * No I/O.
  *
  * A driver may also step by hand (the TUI's f and b): adh_drive_hand asks
  * for one step approaching or retracting by d from the last row, on the
@@ -41,7 +44,8 @@
 #include "adhere/params.h"
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
-#include "adhere/static.h"
+#include "adhere/rule.h"
+#include "adhere/run.h"
 
 typedef struct adh_drive adh_drive;
 
@@ -54,64 +58,59 @@ typedef struct adh_drive adh_drive;
  * need not be built: adh_drive_uniform_grid). g = NULL: rigid spheres, no
  * grid. ADH_SUCCESS; ADH_EINVAL for a value outside its limits, ADH_EGRID
  * for a grid that cannot hold the run, each with a sentence naming the
- * value and what is allowed. Whether the grid resolves the contact is
- * adh_grid_check's question (a driver may run it anyway, marked). */
+ * value and what is allowed, and in *fix (may be NULL) the ADH_FIX_* bits of
+ * the settings it asks to change, for the driver's own words (adhere/status.h).
+ * Whether the grid resolves the contact is adh_grid_check's question (a
+ * driver may run it anyway, marked). */
 int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen);
+                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen, unsigned *fix);
 /* The description of a uniform grid of n nodes of spacing dr, without its
  * nodes (r = NULL): enough for adh_drive_check and adh_protocol_check. */
 adh_grid adh_drive_uniform_grid(size_t n, double dr);
 
-/* The grid and kernel are borrowed and must outlive the drive. NULL when
- * out of memory. */
-adh_drive *adh_drive_alloc(const adh_grid *g, const adh_kernel *k);
+/* A drive stepping rule type on grid g with kernel k (borrowed: they must
+ * outlive the drive; NULL for a rule that needs none, such as rigid). Builds
+ * the rule's workspace (the static curve's: a dense copy of W). NULL when
+ * out of memory, or for a type adh_rule_check refuses. */
+adh_drive *adh_drive_alloc(const adh_rule_type *type, const adh_grid *g, const adh_kernel *k);
 void adh_drive_free(adh_drive *d);
 
-/* Puts the drive at the start of the protocol ps (the material, relax and
- * protocol settings are copied; run is borrowed and must outlive the drive,
- * it is filled with rows, turns, profiles and the summary as the drive
- * steps; it should be freshly initialised).
- * ADH_SUCCESS, or ADH_EINVAL for a step <= 0 or too many turns (the full
- * check of a run is adh_protocol_check). */
-int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings *rs,
-                  const adh_protocol_settings *ps, adh_run *run);
+/* Puts the drive at the start of the protocol ps (the material, the rule's
+ * settings and the protocol settings are copied; settings is the rule's
+ * own type: adh_relax_settings for relax, adh_static_settings for static,
+ * NULL for rigid; run is borrowed and must outlive the drive, it is filled
+ * with rows, turns, profiles and the summary as the drive steps; it should
+ * be freshly initialised). The start is ps->start, or with NAN the
+ * automatic one for ps->step.
+ * ADH_SUCCESS, or ADH_EINVAL for a step <= 0, too many turns or bad
+ * settings (the full check of a run is adh_protocol_check). A curve rule's
+ * failure at its start (the static curve's first point) is its first
+ * step's status. */
+int adh_drive_set(adh_drive *d, const adh_material *m, const void *settings, const adh_protocol_settings *ps,
+                  adh_run *run);
 
-/* The static step rule: each step reports the next accepted point of the
- * equilibrium curve (the first: the start) as a row (iters: Newton
- * iterations, branch: +1 where h0 falls along the curve, stable: det J > 0),
- * from the protocol's start (ps->start, NAN automatic with ps->step) down
- * to its deepest turn (none: ss->h0_end), the last row flagged
- * ADH_DRIVE_END; then ADH_SUCCESS. The run's jump-in and seconds follow
- * the curve. Steps by hand, snapshots and adh_drive_next are the
- * relaxation's. Builds the solver (a dense copy of W) on the first call.
- * ADH_SUCCESS (the start point is solved, or its failure is the first
- * step's status), ADH_EINVAL for bad settings, ADH_ENOMEM. */
-int adh_drive_set_static(adh_drive *d, const adh_material *m, const adh_static_settings *ss,
-                         const adh_protocol_settings *ps, adh_run *run);
-/* Where the static curve of protocol ps ends: its deepest turn, or the
- * static settings' default end without turns. */
-double adh_drive_static_end(const adh_protocol_settings *ps);
-/* The static solver behind the drive (folds, summary), NULL in relaxation. */
-const adh_static *adh_drive_static(const adh_drive *d);
+/* The run d fills (borrowed from adh_drive_set), NULL before it is set. */
+adh_run *adh_drive_record(const adh_drive *d);
 
-/* One drive step: relaxes the next position, observes it and appends its
- * row to the run. ADH_CONTINUE with the row (adh_drive_row), ADH_SUCCESS
- * once the protocol is complete (no row), ADH_EINTR when the relax
- * settings' cancel flag was raised (the step under way is dropped, no row,
- * run->interrupted = 1), else the error that ends the run (ADH_EGRID: the
- * contact reached the grid edge, its row kept; ADH_ENAN, ADH_ENOMEM: no
- * row). After a final status every further call returns it again. */
+/* The rule's workspace when d steps rule type, else NULL: for the rule's
+ * own accessors (adhere/rule_static.h). */
+void *adh_drive_workspace(const adh_drive *d, const adh_rule_type *type);
+
+/* One drive step: solves the next position (a curve rule: its next
+ * point), observes it and appends its row to the run. ADH_CONTINUE with
+ * the row (adh_drive_row), ADH_SUCCESS once the protocol is complete (no
+ * row; a curve rule's last row is flagged ADH_DRIVE_END), ADH_EINTR when
+ * the rule's cancel flag was raised (the step under way is dropped, no
+ * row, run->interrupted = 1), else the error that ends the run (ADH_EGRID:
+ * the contact reached the grid edge, its row kept; ADH_ENAN, ADH_ENOMEM: no
+ * row). After a final status every further call returns it again. A whole
+ * run with a callback per row: adh_runner_drive (adhere/runner.h). */
 int adh_drive_step(adh_drive *d);
 
-/* Steps d to the end of its protocol (a batch run, a sweep's run), calling
- * cb after every row; a nonzero return stops it. ADH_SUCCESS when the
- * protocol is complete or was stopped on request (cb, or the cancel flag:
- * run->interrupted = 1), else the error that ended the run. */
-int adh_drive_run(adh_drive *d, adh_step_cb cb, void *ctx);
-
 /* The same in batches, for a driver that must stay responsive (the TUI
- * polls keys between them): at most max_batch relaxation iterations of the
- * step under way (0: until it is done; a dwell is done whole), starting
+ * polls keys between them): at most max_batch units of the rule's work on
+ * the step under way (relaxation iterations; 0: until it is done; a dwell
+ * is done whole; a curve rule's point is one unit), starting
  * the next step when none is. ADH_CONTINUE with *row = 0 while the step
  * goes on, ADH_CONTINUE with *row = 1 when it produced its row, else as
  * adh_drive_step (*row = 1 for ADH_EGRID's kept row). The rows do not
@@ -128,7 +127,7 @@ const adh_obs *adh_drive_row(const adh_drive *d);
 int adh_drive_turn(const adh_drive *d);
 /* The start in use (the automatic one when ps->start is NAN). */
 double adh_drive_start(const adh_drive *d);
-/* The relaxed state of the last step (borrowed). */
+/* The state of the last step (borrowed), NULL for a rule without one. */
 const adh_state *adh_drive_state(const adh_drive *d);
 
 /* What the last row meant, for a driver that pauses on events (or 0). */
@@ -143,8 +142,8 @@ unsigned adh_drive_events(const adh_drive *d);
 
 /* Asks for the next step to go by hand: dir +1 approaches by d, -1
  * retracts by d (before the first row, the start is solved first, then
- * that step). ADH_SUCCESS; ADH_EINVAL for a dir other than +-1, a step
- * under way, a drive never set, a position beyond the model's reach
+ * that step). ADH_SUCCESS; ADH_EINVAL for a dir other than +-1, a curve
+ * rule, a step under way, a drive never set, a position beyond the model's reach
  * (|h0| > R/50, adh_protocol_reach) or a 65th turn; ADH_EGRID for an
  * approach from a row whose contact the grid no longer holds (at 0.9 Rmax
  * or past a graded grid's fine band): deeper in it would only grow. */
@@ -175,24 +174,26 @@ size_t adh_drive_progress(const adh_drive *d, double *change);
  * reached as a turn (it was set after the path passed it) the path turns
  * where its loading branch is now, as the next branch to unload.
  * ADH_SUCCESS, or ADH_EINVAL for a different step, too many turns, a step
- * under way; ADH_ENOMEM. */
+ * under way, a curve rule; ADH_ENOMEM. */
 int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps);
 
 /* A snapshot of a drive: the relaxed state, where it is in the protocol
  * and how much of the run it has written. Restoring it puts the drive back
  * there and cuts the run back to what it held then (vis-style undo). */
 typedef struct adh_drive_snap adh_drive_snap;
-/* A snapshot sized for d (NULL when out of memory), filled with its present state. */
+/* A snapshot sized for d (NULL when out of memory, or when d's rule has no
+ * snapshots: the static curve), filled with its present state. */
 adh_drive_snap *adh_drive_snap_alloc(const adh_drive *d);
 void adh_drive_snap_free(adh_drive_snap *s);
-/* Overwrites s with d's present state. ADH_SUCCESS or ADH_EINVAL (sizes differ). */
+/* Overwrites s with d's present state. ADH_SUCCESS or ADH_EINVAL (another
+ * rule, or sizes differ). */
 int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s);
-/* ADH_SUCCESS, or ADH_EINVAL when s was taken on another grid or holds
+/* ADH_SUCCESS, or ADH_EINVAL when s was taken of another rule or on another grid or holds
  * more than one row beyond what the run now has. A snapshot one row ahead
  * (a redo after an undo) puts its own last row back; a snapshot never
  * invents rows. The turn states it saw are shared, not copied. */
 int adh_drive_restore(adh_drive *d, const adh_drive_snap *s);
-/* The relaxed state a snapshot holds (borrowed). */
+/* The state a snapshot holds (borrowed), NULL for a rule without one. */
 const adh_state *adh_drive_snap_state(const adh_drive_snap *s);
 
 #endif

@@ -85,34 +85,6 @@ void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t le
  * (docs/static-curve.md). */
 #define ADH_GRID_STATIC_MAX_NODES 14000
 
-/* The grid a run gets when neither N nor the spacing is given. */
-typedef struct adh_grid_choice {
-    int graded;     /* 0: n uniform nodes of spacing dr; 1: rings (adhere/rings.h) */
-    size_t n;       /* nodes, or rings */
-    double dr;      /* spacing or fine ring width, m; NAN: the paper's spacing
-                       scaled with sqrt(R z0) (it then follows R and z0) */
-    double fine;    /* graded: radius of the fine band, m */
-    double ratio;   /* graded: growth of the rings past it */
-    double rmax;    /* m */
-    int hierarchical; /* hold the kernel as an H^2 matrix (adhere/h2.h): set
-                       for graded grids, whose N is past the dense product's
-                       cache cliff: a product takes 0.3-0.9 ms dense, 0.06 ms
-                       H^2 at N = 1310; --operator keeps its own) */
-} adh_grid_choice;
-
-/* The paper's grid (N = 1000 at its scaled spacing) where that resolves the
- * edge zone; else the resolved spacing out to the radius the run needs (the
- * contact at the deepest turn within 0.8 Rmax and a negligible force at the
- * edge): uniform while that takes at most ADH_GRID_UNIFORM_MAX_NODES nodes,
- * otherwise (when `graded_ok`, i.e. the ring kernel may be used) a graded
- * grid, fine over the band the contact line sweeps (1.25 x the contact
- * expected at the deepest turn) and growing x1.05 beyond. Fills *c and
- * returns ADH_SUCCESS, or ADH_EGRID with a sentence naming sigma, the grid
- * needed, its memory and what to do: beyond ADH_GRID_MAX_NODES nodes, or for
- * the static curve beyond ADH_GRID_STATIC_MAX_NODES. */
-int adh_grid_choose(const adh_material *m, adh_grid_use use, double deepest, int graded_ok, adh_grid_choice *c,
-                    char *why, size_t whylen);
-
 adh_grid *adh_grid_alloc(size_t n, double dr);
 void adh_grid_free(adh_grid *g);
 

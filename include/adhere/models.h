@@ -1,9 +1,24 @@
-/* Closed forms the numerics are checked against. SI units throughout. */
+/* Closed forms the numerics are checked against, and every derived
+ * quantity of a material. SI units throughout. */
 #ifndef ADHERE_MODELS_H
 #define ADHERE_MODELS_H
 
 #include <stddef.h>
 #include "adhere/params.h"
+
+typedef struct adh_derived {
+    double gamma;   /* surface energy A/(16 pi z0^2), J/m^2 (eq 16) */
+    double sigma;   /* gamma sqrt(R/z0^3)/E (eq 17) */
+    double mu;      /* Tabor parameter 4^(1/3) sigma^(2/3) */
+    double Estar;   /* Johnson's reduced modulus E/2 */
+    double F_jkr;   /* JKR pull-off -(3/2) pi gamma R, N (eq 1) */
+    double F_dmt;   /* DMT pull-off -2 pi gamma R, N (eq 2) */
+    double h_star;  /* analytic jump separation (eq 24), m */
+} adh_derived;
+
+/* Every derived quantity of m at once: gamma, sigma, Tabor's mu, E*, the
+ * JKR and DMT pull-offs and the jump separation. */
+void adh_material_derive(const adh_material *m, adh_derived *d);
 
 /* Rigid spheres, Derjaguin approximation (eq 22); NAN for h0 <= 0, where
  * rigid surfaces would overlap. */
@@ -52,5 +67,18 @@ int adh_jkr_drive_curve(const adh_material *m, double h0_min, adh_model_curve *c
 /* DMT from contact (overlap 0, h0 = z0, F = -2 pi gamma R) inwards: stable
  * throughout (n_load = n). ADH_SUCCESS, or ADH_EINVAL as above. */
 int adh_dmt_drive_curve(const adh_material *m, double h0_min, adh_model_curve *c);
+
+/* For the core's own model curves (JKR here, Maugis-Dugdale in maugis.c):
+ * samples a model given as F(a), overlap(a) into an adh_model_curve. */
+/* The model at contact radius a; ADH_SUCCESS or an error to pass on. */
+typedef int (*adh_radius_model)(const adh_material *m, const void *ctx, double a, double *F,
+                                 double *overlap);
+
+/* Contact radii from the one where h0 = z0 - overlap comes down to h0_min
+ * (found by bisection: the overlap must rise with a above a_fold) down to
+ * a_fold, with a_pull (a_fold <= a_pull) sampled exactly: the pull-off that
+ * ends the load-controlled part. */
+int adh_model_sample(const adh_material *m, adh_radius_model fn, const void *ctx, double a_fold,
+                     double a_pull, double h0_min, adh_model_curve *c);
 
 #endif

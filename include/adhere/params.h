@@ -1,5 +1,7 @@
-/* Material parameters of the two spheres and the quantities derived from them
- * (paper eqs 12, 16, 17; Tabor's parameter; JKR/DMT pull-off). SI units. */
+/* Material parameters of the two spheres and the quantities derived from
+ * them alone (paper eqs 12, 16, 17): gamma and Tabor's sigma. The closed
+ * forms built on them (JKR/DMT pull-off, the jump separation, all of them
+ * at once: adh_material_derive) are adhere/models.h's. SI units. */
 #ifndef ADHERE_PARAMS_H
 #define ADHERE_PARAMS_H
 
@@ -12,24 +14,12 @@ typedef struct adh_material {
     double R;   /* effective radius, m (eq 4) */
 } adh_material;
 
-typedef struct adh_derived {
-    double gamma;   /* surface energy A/(16 pi z0^2), J/m^2 (eq 16) */
-    double sigma;   /* gamma sqrt(R/z0^3)/E (eq 17) */
-    double mu;      /* Tabor parameter 4^(1/3) sigma^(2/3) */
-    double Estar;   /* Johnson's reduced modulus E/2 */
-    double F_jkr;   /* JKR pull-off -(3/2) pi gamma R, N (eq 1) */
-    double F_dmt;   /* DMT pull-off -2 pi gamma R, N (eq 2) */
-    double h_star;  /* analytic jump separation (eq 24), m */
-} adh_derived;
-
 /* The paper's Figure 1 material: E = 1 GPa, A = 1e-19 J, z0 = 0.5 nm, R = 10 um. */
 adh_material adh_material_default(void);
 
 /* ADH_SUCCESS, or ADH_EINVAL with a sentence naming the bad value and the
  * allowed range written to why (if why is not NULL). */
 int adh_material_validate(const adh_material *m, char *why, size_t whylen);
-
-void adh_material_derive(const adh_material *m, adh_derived *d);
 
 /* The work of adhesion of the Lennard-Jones law, gamma = A / (16 pi z0^2)
  * (eq 16), J/m^2, and Tabor's sigma = gamma sqrt(R / z0^3) / E (eq 17):

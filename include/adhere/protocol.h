@@ -8,10 +8,7 @@
 
 #include <stddef.h>
 #include "adhere/grid.h"
-#include "adhere/kernel.h"
-#include "adhere/observe.h"
 #include "adhere/params.h"
-#include "adhere/relax.h"
 #include "adhere/run.h"
 
 /* The longest dwell at a turn, in iterations (adh_protocol_check). */
@@ -46,29 +43,11 @@ double adh_protocol_reach(const adh_material *m);
 
 /* Checks the settings and that the grid can hold the run: the pressure at
  * Rmax negligible and the contact expected well inside Rmax at the deepest
- * turn. ADH_EINVAL / ADH_EGRID with a sentence in why. g may be NULL (rigid
- * spheres, no elastic solve): then only the drive settings are checked. */
-int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
-                       const adh_grid *g, char *why, size_t whylen);
-
-/* Called after every drive step with the row just added; return nonzero to stop. */
-typedef int (*adh_step_cb)(const adh_obs *row, const adh_run *run, void *ctx);
-
-/* Runs the whole protocol. Returns ADH_SUCCESS, or the first error (the run
- * keeps every row computed so far, run->status says why it stopped). A
- * raised rs->cancel flag or a callback asking to stop ends it with
- * ADH_SUCCESS and run->interrupted = 1; the step under way is dropped. */
-int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
-                     const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                     adh_step_cb cb, void *ctx, adh_run *run);
-
-/* The area between the loading and unloading force curves over the positions
- * both visit (N m): the energy one cycle dissipates, for the deepest turn
- * (adh_cycle_hysteresis interpolates, so a turn off the drive grid still
- * pairs). 0 without unloading. */
-double adh_hysteresis_area(const adh_run *run);
-/* The same for a static curve (one path, stable flags): the area between the
- * highest and lowest stable force at each h0, sampled every step. */
-double adh_static_hysteresis_area(const adh_run *curve, double step);
+ * turn. ADH_EINVAL / ADH_EGRID with a sentence in why, and in *fix (may be
+ * NULL) the ADH_FIX_* bits of what it asks to change (adhere/status.h).
+ * g may be NULL (rigid spheres, no elastic solve): then only the drive
+ * settings are checked. */
+int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m, const adh_grid *g, char *why,
+                       size_t whylen, unsigned *fix);
 
 #endif

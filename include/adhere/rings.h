@@ -47,8 +47,10 @@ double adh_rings_fine_radius(const adh_grid *g);
 int adh_rings_resolves(const adh_grid *g, double a);
 /* Why a run whose contact radius reached a stopped on g (the drive's grid
  * check, ADH_EGRID): the grid's edge (0.9 Rmax) or the end of a graded
- * grid's fine band, with the numbers and what to change, as a sentence. */
+ * grid's fine band, with the numbers and what to change, as a sentence;
+ * and what to change as ADH_FIX_* bits (adhere/status.h). */
 void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len);
+unsigned adh_rings_edge_fix(const adh_grid *g, double a);
 
 /* The paper's convergence measure [sum (du_n)^2]^(1/2) / N generalised:
  * du taken as constant over each ring and sampled on the uniform grid of the
@@ -69,7 +71,40 @@ double adh_rings_change_of(const adh_grid *g, double weighted_ssq);
 double adh_rings_contact_estimate(const adh_material *m, double h0);
 /* Before a run: the contact expected at the deepest position lowest (m)
  * must lie inside the fine band.
- * ADH_SUCCESS, or ADH_EGRID with a sentence in why. Uniform grids pass. */
-int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen);
+ * ADH_SUCCESS, or ADH_EGRID with a sentence in why (*fix:
+ * ADH_FIX_FINE_BAND). Uniform grids pass. */
+int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen,
+                    unsigned *fix);
+
+/* The grid a run gets when neither N nor the spacing is given. */
+typedef struct adh_rings_choice {
+    int graded;     /* 0: n uniform nodes of spacing dr; 1: rings (adhere/rings.h) */
+    size_t n;       /* nodes, or rings */
+    double dr;      /* spacing or fine ring width, m; NAN: the paper's spacing
+                       scaled with sqrt(R z0) (it then follows R and z0) */
+    double fine;    /* graded: radius of the fine band, m */
+    double ratio;   /* graded: growth of the rings past it */
+    double rmax;    /* m */
+    int hierarchical; /* hold the kernel as an H^2 matrix (adhere/h2.h): set
+                       for graded grids, whose N is past the dense product's
+                       cache cliff: a product takes 0.3-0.9 ms dense, 0.06 ms
+                       H^2 at N = 1310; an operator asked for keeps its own) */
+} adh_rings_choice;
+
+/* The paper's grid (N = 1000 at its scaled spacing) where that resolves the
+ * edge zone; else the resolved spacing out to the radius the run needs (the
+ * contact at the deepest turn within 0.8 Rmax and a negligible force at the
+ * edge): uniform while that takes at most ADH_GRID_UNIFORM_MAX_NODES nodes,
+ * otherwise (when `graded_ok`, i.e. the ring kernel may be used) a graded
+ * grid, fine over the band the contact line sweeps (1.25 x the contact
+ * expected at the deepest turn) and growing x1.05 beyond. Fills *c and
+ * returns ADH_SUCCESS, or ADH_EGRID with a sentence naming sigma, the grid
+ * needed, its memory and what to do (*fix: ADH_FIX_NODES, _SPACING, _FORCE,
+ * and for the static curve _MODE): beyond ADH_GRID_MAX_NODES nodes, or for
+ * the static curve beyond ADH_GRID_STATIC_MAX_NODES; or a grid past 0.3 R
+ * (*fix: ADH_FIX_RADIUS, _TURNS). Uniform and graded
+ * grids alike: it sits here, above both. */
+int adh_rings_choose(const adh_material *m, adh_grid_use use, double deepest, int graded_ok, adh_rings_choice *c,
+                     char *why, size_t whylen, unsigned *fix);
 
 #endif

@@ -57,7 +57,9 @@
  * LU over the active prefix (the oracle).
  *
  * Use: alloc, set (solves the start point), then iterate until it returns
- * something other than ADH_CONTINUE; or adh_static_run for the whole curve. */
+ * something other than ADH_CONTINUE; or a drive stepping adh_rule_static
+ * (adhere/rule_static.h) for the rows of a protocol, adh_runner_static
+ * (adhere/runner.h) for the whole curve. */
 #ifndef ADHERE_STATIC_H
 #define ADHERE_STATIC_H
 
@@ -170,23 +172,5 @@ adh_static_point adh_static_current(const adh_static *w);
 void adh_static_summary(const adh_static *w, adh_static_result *res);
 /* The folds found so far: their number, and a borrowed array. */
 size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds);
-
-/* The whole curve from h0_start down to h0_end, as a loop over the drive's
- * static step rule (adhere/drive.h): appends one row per point to
- * run (adh_observe plus branch = direction, path 0, converged 1, stable,
- * iters = Newton iterations), calls cb after each (nonzero stops it:
- * run->interrupted; so does the settings' cancel flag), and fills res (may be NULL). run->start and
- * run->jump_in_h0 are set; run->turns is left empty (one curve, no unloading
- * branches). Returns ADH_SUCCESS or the error that stopped it (the rows so
- * far are kept; run->status says the same). */
-int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
-                   const adh_static_settings *s, adh_step_cb cb, void *ctx,
-                   adh_run *run, adh_static_result *res);
-/* The same for a protocol: from its start (NAN: automatic for its step)
- * down to its deepest turn (none: s->h0_end), as every driver's static
- * mode runs it. */
-int adh_static_run_protocol(const adh_grid *g, const adh_kernel *k, const adh_material *m,
-                            const adh_static_settings *s, const adh_protocol_settings *ps,
-                            adh_step_cb cb, void *ctx, adh_run *run, adh_static_result *res);
 
 #endif

@@ -12,14 +12,16 @@
 
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
+#include "adhere/models.h"
 #include "adhere/protocol.h"
 #include "adhere/rings.h"
+#include "adhere/runner.h"
 #include "adhere/status.h"
+#include "cli/advice.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
 #include "cli/ready.h"
 #include "cli/progress.h"
-#include "cli/rigid.h"
 #include "cli/static.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
@@ -156,9 +158,9 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     adh_run_init(&run);
     adh_static_result sres;
     cli_ready_phase(rigid ? "rigid" : cfg->mode == ADH_MODE_STATIC ? "static" : "relax");
-    int rc = rigid ? cli_rigid_run(cfg, on_step, &ctx, &run)
+    int rc = rigid ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &cfg->mat, NULL, &cfg->proto, on_step, &ctx, &run)
            : cfg->mode == ADH_MODE_STATIC ? cli_static_run(cfg, g, k, on_step, &ctx, &run, &sres)
-           : adh_protocol_run(g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
+           : adh_runner_rule(&adh_rule_relax, g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
     /* --reference=static: the equilibrium curve beside the relaxation run. */
     adh_run ref;
     adh_run_init(&ref);
@@ -187,6 +189,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     } else if (rc == ADH_EGRID && run.nrows) {
         char edge[400];
         adh_rings_edge_sentence(g, run.rows[run.nrows - 1].a, edge, sizeof edge);
+        cli_advice_append(edge, sizeof edge, adh_rings_edge_fix(g, run.rows[run.nrows - 1].a));
         snprintf(note, sizeof note, "the run stopped after %zu steps at h0 = %g m: %s", run.nrows,
                  run.rows[run.nrows - 1].h0, edge);
         status = CLI_EXIT_SOLVER;

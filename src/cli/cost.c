@@ -13,6 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "adhere/runner.h"
 #include "adhere/static.h"
 #include "adhere/grid.h"
 #include "adhere/status.h"
@@ -75,7 +76,7 @@ static void measure(cost_run *cr, const adh_run *run)
     cr->pulloff = t ? t->pulloff_F : NAN;
     cr->a_turn = t ? t->a_turn : NAN;
     cr->jump_in = run->jump_in_h0;
-    cr->hysteresis = adh_hysteresis_area(run);
+    cr->hysteresis = adh_cycle_run_hysteresis(run);
 }
 
 static void *worker(void *arg)
@@ -100,7 +101,7 @@ static void *worker(void *arg)
         cr->kernel_seconds = adh_clock_seconds() - t0;
         adh_run run;
         adh_run_init(&run);
-        cr->status = k ? adh_protocol_run(g, k, &c.mat, &c.relax, &c.proto, cli_interrupt_step, NULL, &run) : kst;
+        cr->status = k ? adh_runner_rule(&adh_rule_relax, g, k, &c.mat, &c.relax, &c.proto, cli_interrupt_step, NULL, &run) : kst;
         if (kst == ADH_EINTR)
             run.interrupted = 1;
         if (run.interrupted)
@@ -386,7 +387,7 @@ int cli_cost_main(const cli_options *cli)
     if (srun.interrupted)
         src = ADH_EINTR;   /* part of a curve is no reference */
     /* a fine h0 grid: lattice-trapping legs are far shorter than d */
-    double static_hyst = src == ADH_SUCCESS ? adh_static_hysteresis_area(&srun, 0.002 * sc.mat.z0) : NAN;
+    double static_hyst = src == ADH_SUCCESS ? adh_cycle_static_hysteresis(&srun, 0.002 * sc.mat.z0) : NAN;
     /* the curve ends at the (deepest) turn: its contact radius there */
     double static_a = src == ADH_SUCCESS && srun.nrows ? srun.rows[srun.nrows - 1].a : NAN;
     adh_run_free(&srun);

@@ -7,7 +7,7 @@
 
 #include <signal.h>
 
-#include "adhere/protocol.h"
+#include "adhere/runner.h"
 
 void cli_interrupt_catch(void);     /* install the handlers */
 void cli_interrupt_release(void);   /* restore the previous ones */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "adhere/grid.h"
+#include "cli/advice.h"
 #include "cli/batch.h"
 #include "cli/cost.h"
 #include "cli/interrupt.h"
@@ -67,7 +68,9 @@ int main(int argc, char **argv)
     if ((cli.cfg.plots & ADH_PLOT_PROFILE) && cli.cfg.proto.nprofiles == 0 && cli.cfg.mode == ADH_MODE_RELAX)
         cli.cfg.proto.nprofiles = adh_plan_default_profiles(&cli.cfg.mat, &cli.cfg.proto, cli.cfg.proto.profiles, 6);
     /* No grid given: the one the contact's edge needs, or a refusal. */
-    if (cli.action != CLI_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why) != 0) {
+    unsigned fix;
+    if (cli.action != CLI_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why, &fix) != 0) {
+        cli_advice_append(why, sizeof why, fix);
         fprintf(stderr, "adhere: %s\n", why);
         return CLI_EXIT_USAGE;
     }

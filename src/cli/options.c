@@ -14,6 +14,7 @@
 #include "adhere/grid.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "cli/advice.h"
 #include "scene/scene.h"
 
 enum {
@@ -556,8 +557,13 @@ static int validate_run(const adh_config *cfg, char *why, size_t whylen)
         if (readable_file("gnuplot-style", style, why, whylen))
             return 2;
     }
-    if (cfg->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
-        return adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, ADH_GRID_RELAX, NULL, why, whylen) == ADH_SUCCESS ? 0 : 2;
+    unsigned fix;
+    if (cfg->mode == ADH_MODE_RIGID) {   /* eq 22 alone: no grid is built */
+        if (adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, ADH_GRID_RELAX, NULL, why, whylen, &fix) == ADH_SUCCESS)
+            return 0;
+        cli_advice_append(why, whylen, fix);
+        return 2;
+    }
     if (!(isfinite(cfg->drive_speed) && cfg->drive_speed > 0 && cfg->drive_speed < 1e3)) {
         snprintf(why, whylen, "drive speed %g m/s is not allowed: it must be above 0 and below 1000 m/s", cfg->drive_speed);
         return 2;
@@ -572,11 +578,13 @@ static int validate_run(const adh_config *cfg, char *why, size_t whylen)
         snprintf(why, whylen, "out of memory for a grid of %zu nodes", cfg->nodes);
         return 2;
     }
-    int rc = adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, adh_config_grid_use(cfg), g, why, whylen);
+    int rc = adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, adh_config_grid_use(cfg), g, why, whylen, &fix);
     if (g != &uniform)
         adh_grid_free(g);
-    if (rc != ADH_SUCCESS)
+    if (rc != ADH_SUCCESS) {
+        cli_advice_append(why, whylen, fix);
         return 2;
+    }
     adh_grid_report gr;
     adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);
     if (cfg->mode != ADH_MODE_RIGID && !gr.resolved && !cfg->force) {

@@ -11,5 +11,5 @@ int cli_static_run(const adh_config *cfg, const adh_grid *g, const adh_kernel *k
      * axis; the drive ends the curve at the protocol's deepest turn. */
     adh_protocol_settings ps = cfg->proto;
     ps.start = adh_plan_start(cfg);
-    return adh_static_run_protocol(g, k, &cfg->mat, &s, &ps, cb, ctx, run, res);
+    return adh_runner_static(g, k, &cfg->mat, &s, &ps, cb, ctx, run, res);
 }

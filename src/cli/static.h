@@ -3,7 +3,7 @@
 #ifndef ADH_CLI_STATIC_H
 #define ADH_CLI_STATIC_H
 
-#include "adhere/protocol.h"
+#include "adhere/runner.h"
 #include "adhere/static.h"
 #include "scene/config.h"
 

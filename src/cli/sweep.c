@@ -12,12 +12,13 @@
 
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
+#include "adhere/models.h"
+#include "adhere/runner.h"
 #include "adhere/status.h"
 #include "cli/batch.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
 #include "cli/ready.h"
-#include "cli/rigid.h"
 #include "cli/progress.h"
 #include "adhere/clock.h"
 #include "cli/static.h"
@@ -65,10 +66,11 @@ static void *worker(void *arg)
         /* each static run allocates its own solver (a dense copy of the
          * shared kernel): nothing of it is shared between threads */
         job->status[i] = rc.mode == ADH_MODE_RIGID
-                       ? cli_rigid_run(&rc, cli_interrupt_step, NULL, run)
+                       ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &rc.mat, NULL, &rc.proto, cli_interrupt_step, NULL, run)
                        : rc.mode == ADH_MODE_STATIC
                        ? cli_static_run(&rc, job->grid, job->kernel, cli_interrupt_step, NULL, run, &job->sres[i])
-                       : adh_protocol_run(job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto, cli_interrupt_step, NULL, run);
+                       : adh_runner_rule(&adh_rule_relax, job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto,
+                                         cli_interrupt_step, NULL, run);
         /* tables as soon as a run ends: a long sweep killed later keeps them */
         if (job->out)
             job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i]);

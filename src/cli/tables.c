@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "adhere/grid.h"
+#include "adhere/models.h"
 #include "adhere/status.h"
 
 #define VERSION_LINE "# adhere " ADH_VERSION "\n"

@@ -120,3 +120,38 @@ size_t adh_cycle_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, si
     }
     return nt;
 }
+
+double adh_cycle_run_hysteresis(const adh_run *run)
+{
+    return adh_cycle_hysteresis(run->rows, run->nrows, (int)run->nturns);
+}
+
+/* The hysteresis left when eps -> 0: under displacement control the drive
+ * follows stable equilibria only, loading on the highest-force one at each
+ * h0 (the outer branch until it ends at the jump-in fold) and unloading on
+ * the lowest (the contact until the jump-out fold). Between the folds, and
+ * wherever lattice trapping makes stable legs overlap, the two differ: the
+ * area between them is the hysteresis no slower drive removes. */
+double adh_cycle_static_hysteresis(const adh_run *curve, double step)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t i = 0; i < curve->nrows; i++) {
+        lo = fmin(lo, curve->rows[i].h0);
+        hi = fmax(hi, curve->rows[i].h0);
+    }
+    double area = 0;
+    for (double x = lo + 0.5 * step; x < hi; x += step) {
+        double fmax_ = -INFINITY, fmin_ = INFINITY;
+        for (size_t i = 0; i + 1 < curve->nrows; i++) {
+            const adh_obs *a = &curve->rows[i], *b = &curve->rows[i + 1];
+            if (!a->stable || !b->stable || (x - a->h0) * (x - b->h0) > 0 || a->h0 == b->h0)
+                continue;
+            double F = a->F + (b->F - a->F) * (x - a->h0) / (b->h0 - a->h0);
+            fmax_ = fmax(fmax_, F);
+            fmin_ = fmin(fmin_, F);
+        }
+        if (fmax_ > fmin_)
+            area += (fmax_ - fmin_) * step;
+    }
+    return area;
+}

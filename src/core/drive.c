@@ -9,16 +9,17 @@
 #include "adhere/observe.h"
 #include "adhere/rings.h"
 #include "adhere/state.h"
-#include "adhere/static.h"
 #include "adhere/status.h"
 
 typedef enum phase { PH_START = 0, PH_LOAD, PH_TURN, PH_UNLOAD, PH_DONE } phase;
 
-/* The loading state at a turn, shared by the drive and every snapshot that
- * saw it (a recorded turn never changes: recording it again makes a new
- * one), so an undo history of snapshots costs no copies of them. */
+/* The loading state at a turn (a snapshot of the rule), shared by the
+ * drive and every snapshot that saw it (a recorded turn never changes:
+ * recording it again makes a new one), so an undo history of snapshots
+ * costs no copies of them. */
 typedef struct tstate {
-    adh_state *st;
+    const adh_rule_type *type;
+    void *snap;
     int refs;
 } tstate;
 
@@ -32,19 +33,21 @@ static tstate *ts_hold(tstate *t)
 static void ts_drop(tstate *t)
 {
     if (t && --t->refs == 0) {
-        adh_state_free(t->st);
+        t->type->snap_free(t->snap);
         free(t);
     }
 }
 
-static tstate *ts_new(const adh_state *s)
+/* A turn's state: a snapshot of rule r of type t. */
+static tstate *ts_new(const adh_rule_type *type, const void *r)
 {
     tstate *t = calloc(1, sizeof *t);
-    if (!t || !(t->st = adh_state_alloc(s->n))) {
+    if (!t || !(t->snap = type->snap_alloc(r))) {
         free(t);
         return NULL;
     }
-    adh_state_copy(t->st, s);
+    type->save(r, t->snap);
+    t->type = type;
     t->refs = 1;
     return t;
 }
@@ -83,14 +86,9 @@ typedef struct cursor {
 struct adh_drive {
     const adh_grid *g;
     const adh_kernel *k;
-    adh_relax *w;
-    /* the static step rule: one accepted point of the equilibrium curve per
-     * step (built on the first adh_drive_set_static: a dense copy of W) */
-    adh_static *sw;
-    int is_static;
-    int static_rc;   /* the status of the point the next step reports */
+    const adh_rule_type *type;   /* the step rule (adhere/rule.h) */
+    void *r;                     /* and its workspace */
     adh_material m;
-    adh_relax_settings rs;
     adh_protocol_settings ps;
     adh_run *run;
     double start;
@@ -100,7 +98,8 @@ struct adh_drive {
 };
 
 struct adh_drive_snap {
-    adh_state *st;
+    const adh_rule_type *type;
+    void *snap;      /* the rule's snapshot */
     cursor c;
     adh_run marks;   /* the run's counts and turns; its arrays stay unused */
     adh_obs last;    /* the run's last row then (redo puts it back) */
@@ -122,15 +121,24 @@ static void copy_marks(adh_run *to, const adh_run *from)
     memcpy(to->turns, from->turns, sizeof to->turns);
 }
 
-adh_drive *adh_drive_alloc(const adh_grid *g, const adh_kernel *k)
+/* The rule's present state, NULL for a rule without one. */
+static const adh_state *rule_state(const adh_drive *d)
 {
+    return d->type->state ? d->type->state(d->r) : NULL;
+}
+
+adh_drive *adh_drive_alloc(const adh_rule_type *type, const adh_grid *g, const adh_kernel *k)
+{
+    if (adh_rule_check(type) != ADH_SUCCESS)
+        return NULL;
     adh_drive *d = calloc(1, sizeof *d);
     if (!d)
         return NULL;
     d->g = g;
     d->k = k;
-    d->w = adh_relax_alloc(g, k);
-    if (!d->w) {
+    d->type = type;
+    d->r = type->alloc(g, k);
+    if (!d->r) {
         free(d);
         return NULL;
     }
@@ -146,8 +154,7 @@ void adh_drive_free(adh_drive *d)
         return;
     for (size_t i = 0; i < ADH_MAX_TURNS; i++)
         ts_drop(d->ts[i]);
-    adh_relax_free(d->w);
-    adh_static_free(d->sw);
+    d->type->free(d->r);
     free(d);
 }
 
@@ -158,9 +165,11 @@ static int cmp_desc(const void *a, const void *b)
 }
 
 int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen)
+                    adh_grid_use use, const adh_grid *g, char *why, size_t whylen, unsigned *fix)
 {
     int rc;
+    if (fix)
+        *fix = 0;
     if ((rc = adh_material_validate(m, why, whylen)) != ADH_SUCCESS ||
         (rc = adh_relax_settings_validate(rs, why, whylen)) != ADH_SUCCESS)
         return rc;
@@ -181,7 +190,7 @@ int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const a
         return ADH_EINVAL;
     }
     /* g NULL: rigid spheres, eq 22 alone, only the drive is checked */
-    return adh_protocol_check(ps, m, g, why, whylen);
+    return adh_protocol_check(ps, m, g, why, whylen, fix);
 }
 
 adh_grid adh_drive_uniform_grid(size_t n, double dr)
@@ -190,14 +199,12 @@ adh_grid adh_drive_uniform_grid(size_t n, double dr)
     return g;
 }
 
-int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings *rs,
-                  const adh_protocol_settings *ps, adh_run *run)
+int adh_drive_set(adh_drive *d, const adh_material *m, const void *settings, const adh_protocol_settings *ps,
+                  adh_run *run)
 {
     if (!(ps->step > 0) || ps->nturns > ADH_MAX_TURNS || ps->nprofiles > ADH_MAX_PROFILES)
         return ADH_EINVAL;
-    d->is_static = 0;
     d->m = *m;
-    d->rs = *rs;
     d->ps = *ps;
     d->run = run;
     d->start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
@@ -211,8 +218,12 @@ int adh_drive_set(adh_drive *d, const adh_material *m, const adh_relax_settings 
     memset(&d->c, 0, sizeof d->c);
     d->c.ph = PH_START;
     d->c.row = -1;
-    adh_relax_set(d->w, &d->m, &d->rs, d->start);
-    return ADH_SUCCESS;
+    int rc = d->type->set(d->r, &d->m, settings, &d->ps, d->start);
+    if (rc != ADH_SUCCESS) {
+        d->c.ph = PH_DONE;   /* nothing to step */
+        d->c.status = rc;
+    }
+    return rc;
 }
 
 static int wants_profile(const adh_protocol_settings *ps, double h0)
@@ -223,10 +234,9 @@ static int wants_profile(const adh_protocol_settings *ps, double h0)
     return 0;
 }
 
-/* The step rule of the relaxation, in three parts: begin (move to the
- * next position, or restore a turn's snapshot, or dwell there), iterate
- * (in batches), finish (observe, record the row, note jump-in, turns,
- * pull-off and jump-out). */
+/* A stepped rule's step, in three parts: begin (move to the next position,
+ * or load a turn's snapshot, or dwell there), iterate (in batches), finish
+ * (observe, record the row, note jump-in, turns, pull-off and jump-out). */
 
 static int finish(adh_drive *d, int status)
 {
@@ -303,8 +313,7 @@ static void start(adh_drive *d, double h0, int branch, int path, size_t dwell, i
     c->dwell = dwell;
     c->at_turn = at_turn;
     c->spent = 0;
-    if (!dwell)
-        adh_relax_move(d->w, h0);
+    d->type->move(d->r, h0, dwell);
 }
 
 /* Where a step by hand in direction dir goes from the last row: loading
@@ -324,7 +333,7 @@ typedef struct hand_plan {
  * band: the grid no longer holds it. */
 static int at_edge(const adh_drive *d, const adh_obs *o)
 {
-    return o->a >= 0.9 * d->g->rmax || !adh_rings_resolves(d->g, o->a);
+    return d->g && (o->a >= 0.9 * d->g->rmax || !adh_rings_resolves(d->g, o->a));
 }
 
 static int plan_hand(const adh_drive *d, int dir, hand_plan *hp)
@@ -376,7 +385,7 @@ static int record_turn(adh_drive *d, const adh_obs *o)
 {
     adh_run *run = d->run;
     size_t ui = run->nturns;
-    tstate *t = ts_new(adh_relax_state(d->w));
+    tstate *t = ts_new(d->type, d->r);
     if (!t)
         return ADH_ENOMEM;
     ts_drop(d->ts[ui]);
@@ -478,7 +487,7 @@ static int begin(adh_drive *d)
         case PH_TURN: {
             adh_turn_result *tr = &d->run->turns[d->c.ui];
             tr->path = (int)d->c.ui + 1;
-            adh_relax_restore(d->w, d->ts[d->c.ui]->st);
+            d->type->load(d->r, d->ts[d->c.ui]->snap);
             start(d, tr->h0, -1, tr->path, ps->dwell, 0);
             return ADH_SUCCESS;
         }
@@ -500,7 +509,7 @@ static int begin(adh_drive *d)
     }
 }
 
-/* Appends a solved step's row to the run (both step rules): ADH_SUCCESS,
+/* Appends a solved step's row to the run (either kind of rule): ADH_SUCCESS,
  * ADH_ENAN for a non-finite force, deformation or radius, ADH_ENOMEM. */
 static int push_row(adh_drive *d, const adh_obs *o)
 {
@@ -538,16 +547,13 @@ static int complete(adh_drive *d, int rc)
 {
     adh_run *run = d->run;
     cursor *c = &d->c;
-    const adh_state *s = adh_relax_state(d->w);
     adh_obs o;
     memset(&o, 0, sizeof o);
-    adh_observe(d->g, &d->m, s, &o);
-    o.iters = c->dwell ? c->dwell : adh_relax_step_iterations(d->w);
+    d->type->observe(d->r, &o);
     o.seconds = c->spent;
     o.branch = c->branch;
     o.path = c->path;
     o.converged = (rc == ADH_SUCCESS);
-    o.stable = 1;
     run->iterations += o.iters;
     run->seconds += c->spent;
     c->inflight = 0;
@@ -564,7 +570,8 @@ static int complete(adh_drive *d, int rc)
         return finish(d, rc);
     if ((rc = push_row(d, &o)) != ADH_SUCCESS)
         return finish(d, rc);
-    if (wants_profile(&d->ps, c->h0) && adh_run_push_profile(run, s, c->branch, c->path) != ADH_SUCCESS)
+    if (rule_state(d) && wants_profile(&d->ps, c->h0) &&
+        adh_run_push_profile(run, rule_state(d), c->branch, c->path) != ADH_SUCCESS)
         return finish(d, ADH_ENOMEM);
     int edge = at_edge(d, &o);
     double tol = 1e-6 * d->ps.step;
@@ -630,13 +637,13 @@ static int complete(adh_drive *d, int rc)
     return ADH_CONTINUE;
 }
 
-/* The static step rule: the next accepted point (the start, solved by
- * adh_static_set, first) becomes a row, as the relaxation's step does. */
-static int static_step(adh_drive *d, int *row)
+/* A curve rule's step: the rule's next point (the first: the start)
+ * becomes a row, as a stepped rule's solved step does. */
+static int curve_step(adh_drive *d, int *row)
 {
     adh_run *run = d->run;
     cursor *c = &d->c;
-    int rc = c->row < 0 ? d->static_rc : adh_static_iterate(d->sw), rc2;
+    int rc = d->type->next(d->r), rc2;
     if (rc == ADH_EINTR) {
         run->interrupted = 1;
         return finish(d, ADH_EINTR);
@@ -645,26 +652,20 @@ static int static_step(adh_drive *d, int *row)
         return finish(d, rc);
     adh_obs o;
     memset(&o, 0, sizeof o);
-    adh_observe(d->g, &d->m, adh_static_state(d->sw), &o);
-    adh_static_point pt = adh_static_current(d->sw);
-    adh_static_result r;
-    adh_static_summary(d->sw, &r);
-    o.seconds = r.seconds - run->seconds;
-    o.iters = pt.newton;
-    o.branch = pt.direction;
-    o.path = 0;
-    o.converged = 1;
-    o.stable = pt.stable;
-    run->iterations += pt.newton;
-    run->seconds = r.seconds;
-    run->jump_in_h0 = r.jump_in_h0;
+    d->type->observe(d->r, &o);
+    run->iterations += o.iters;
+    run->seconds += o.seconds;
+    if (d->type->jump_in)
+        run->jump_in_h0 = d->type->jump_in(d->r);
+    else if (o.a > 0 && isnan(run->jump_in_h0))
+        run->jump_in_h0 = o.h0;
     if ((rc2 = push_row(d, &o)) != ADH_SUCCESS)
         return finish(d, rc2);
     *row = 1;
     if (rc == ADH_EGRID)
         return finish(d, ADH_EGRID);
     if (rc == ADH_SUCCESS) {
-        /* the curve came down to its end: this row is the last */
+        /* the path came down to its end: this row is the last */
         c->ph = PH_DONE;
         c->status = ADH_SUCCESS;
         c->events = ADH_DRIVE_END;
@@ -675,8 +676,8 @@ static int static_step(adh_drive *d, int *row)
 int adh_drive_iterate(adh_drive *d, size_t max_batch, int *row)
 {
     *row = 0;
-    if (d->is_static)
-        return d->c.ph == PH_DONE ? d->c.status : static_step(d, row);
+    if (d->type->next)
+        return d->c.ph == PH_DONE ? d->c.status : curve_step(d, row);
     if (!d->c.inflight) {
         if (d->c.ph == PH_DONE && !d->c.hand)
             return d->c.status;
@@ -686,27 +687,12 @@ int adh_drive_iterate(adh_drive *d, size_t max_batch, int *row)
     }
     cursor *c = &d->c;
     double t0 = adh_clock_seconds();
-    int rc = c->dwell ? adh_relax_dwell(d->w, c->dwell) : adh_relax_iterate(d->w, max_batch);
+    int rc = d->type->iterate(d->r, max_batch);
     c->spent += adh_clock_seconds() - t0;
     if (rc == ADH_CONTINUE)
         return ADH_CONTINUE;   /* the step goes on: call again */
     rc = complete(d, rc);
     *row = d->c.row >= 0 && (rc == ADH_CONTINUE || rc == ADH_EGRID);
-    return rc;
-}
-
-int adh_drive_run(adh_drive *d, adh_step_cb cb, void *ctx)
-{
-    int rc;
-    while ((rc = adh_drive_step(d)) == ADH_CONTINUE)
-        if (cb && cb(adh_drive_row(d), d->run, ctx)) {
-            d->run->interrupted = 1;
-            return ADH_SUCCESS;
-        }
-    if (rc == ADH_EINTR) {
-        d->run->interrupted = 1;   /* stopped on request: not an error, the run says so */
-        rc = ADH_SUCCESS;
-    }
     return rc;
 }
 
@@ -741,16 +727,29 @@ double adh_drive_start(const adh_drive *d)
 
 const adh_state *adh_drive_state(const adh_drive *d)
 {
-    return adh_relax_state(d->w);
+    return rule_state(d);
+}
+
+adh_run *adh_drive_record(const adh_drive *d)
+{
+    return d->run;
+}
+
+void *adh_drive_workspace(const adh_drive *d, const adh_rule_type *type)
+{
+    return d->type == type ? d->r : NULL;
 }
 
 adh_drive_snap *adh_drive_snap_alloc(const adh_drive *d)
 {
+    if (!d->type->snap_alloc)
+        return NULL;   /* a rule without snapshots (the static curve) */
     adh_drive_snap *s = calloc(1, sizeof *s);
     if (!s)
         return NULL;
-    s->st = adh_state_alloc(d->g->n);
-    if (!s->st) {
+    s->type = d->type;
+    s->snap = d->type->snap_alloc(d->r);
+    if (!s->snap) {
         free(s);
         return NULL;
     }
@@ -764,20 +763,28 @@ void adh_drive_snap_free(adh_drive_snap *s)
         return;
     for (size_t i = 0; i < ADH_MAX_TURNS; i++)
         ts_drop(s->ts[i]);
-    adh_state_free(s->st);
+    s->type->snap_free(s->snap);
     free(s);
 }
 
 const adh_state *adh_drive_snap_state(const adh_drive_snap *s)
 {
-    return s->st;
+    return s->type->snap_state(s->snap);
+}
+
+/* Whether snapshot s fits d: taken of the same rule, on a grid of the
+ * same size. */
+static int snap_fits(const adh_drive *d, const adh_drive_snap *s)
+{
+    const adh_state *a = adh_drive_snap_state(s), *b = rule_state(d);
+    return s->type == d->type && (a && b ? a->n == b->n : !a && !b);
 }
 
 int adh_drive_snapshot(const adh_drive *d, adh_drive_snap *s)
 {
-    if (s->st->n != d->g->n)
+    if (!snap_fits(d, s))
         return ADH_EINVAL;
-    adh_state_copy(s->st, adh_relax_state(d->w));
+    d->type->save(d->r, s->snap);
     s->c = d->c;
     s->c.hand = 0;   /* a step asked for is not part of the state it was asked from */
     ts_assign(s->ts, d->ts);
@@ -793,16 +800,16 @@ int adh_drive_restore(adh_drive *d, const adh_drive_snap *s)
 {
     adh_run *r = d->run;
     int ahead = r && s->marks.nrows == r->nrows + 1;
-    if (s->st->n != d->g->n || (r && (s->marks.nrows > r->nrows + 1 || s->marks.nprofiles > r->nprofiles + ahead)))
+    if (!snap_fits(d, s) || (r && (s->marks.nrows > r->nrows + 1 || s->marks.nprofiles > r->nprofiles + ahead)))
         return ADH_EINVAL;
     /* one row ahead of the run (a redo): the snapshot's own last row, and
      * its profile when that row stored one (the snapshot's state is it) */
     if (ahead && adh_run_push_row(r, &s->last) != ADH_SUCCESS)
         return ADH_ENOMEM;
     if (ahead && s->marks.nprofiles == r->nprofiles + 1 &&
-        adh_run_push_profile(r, s->st, s->last.branch, s->last.path) != ADH_SUCCESS)
+        adh_run_push_profile(r, adh_drive_snap_state(s), s->last.branch, s->last.path) != ADH_SUCCESS)
         return ADH_ENOMEM;
-    adh_relax_restore(d->w, s->st);
+    d->type->load(d->r, s->snap);
     d->c = s->c;
     ts_assign(d->ts, s->ts);
     if (r) {
@@ -815,8 +822,8 @@ int adh_drive_restore(adh_drive *d, const adh_drive_snap *s)
 
 int adh_drive_hand(adh_drive *d, int dir)
 {
-    if (dir != 1 && dir != -1)
-        return ADH_EINVAL;
+    if ((dir != 1 && dir != -1) || d->type->next)
+        return ADH_EINVAL;   /* a curve rule walks its own path */
     if (d->c.inflight || (d->c.ph == PH_DONE && d->c.status == ADH_EINVAL && d->c.row < 0))
         return ADH_EINVAL;   /* a step under way, or never set */
     hand_plan hp;
@@ -850,8 +857,8 @@ double adh_drive_step_position(const adh_drive *d)
 
 size_t adh_drive_progress(const adh_drive *d, double *change)
 {
-    *change = adh_relax_change(d->w);
-    return adh_relax_step_iterations(d->w);
+    *change = NAN;
+    return d->type->progress ? d->type->progress(d->r, change) : 0;
 }
 
 /* Whether the run has a turn recorded at h0. */
@@ -865,7 +872,7 @@ static int turn_recorded(const adh_drive *d, double h0)
 
 int adh_drive_retarget(adh_drive *d, const adh_protocol_settings *ps)
 {
-    if (!(ps->step == d->ps.step) || ps->nturns > ADH_MAX_TURNS || d->c.inflight)
+    if (!(ps->step == d->ps.step) || ps->nturns > ADH_MAX_TURNS || d->c.inflight || d->type->next)
         return ADH_EINVAL;
     d->ps.nturns = ps->nturns;
     memcpy(d->ps.turns, ps->turns, ps->nturns * sizeof *ps->turns);
@@ -944,41 +951,4 @@ int adh_drive_next(const adh_drive *d, size_t *turn)
 int adh_drive_status(const adh_drive *d)
 {
     return d->c.ph == PH_DONE ? d->c.status : ADH_CONTINUE;
-}
-
-int adh_drive_set_static(adh_drive *d, const adh_material *m, const adh_static_settings *ss,
-                         const adh_protocol_settings *ps, adh_run *run)
-{
-    if (!(ps->step > 0))
-        return ADH_EINVAL;
-    if (!d->sw && !(d->sw = adh_static_alloc(d->g, d->k)))
-        return ADH_ENOMEM;
-    adh_static_settings s = *ss;
-    s.h0_start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
-    if (ps->nturns)
-        s.h0_end = adh_protocol_deepest_turn(ps);
-    d->is_static = 1;
-    d->m = *m;
-    d->ps = *ps;
-    d->run = run;
-    d->start = s.h0_start;
-    run->start = s.h0_start;
-    memset(&d->c, 0, sizeof d->c);
-    d->c.ph = PH_START;
-    d->c.row = -1;
-    int rc = adh_static_set(d->sw, m, &s);
-    /* the start point solved: more points follow (ADH_SUCCESS from
-     * adh_static_iterate means the end) */
-    d->static_rc = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;   /* the first step's */
-    return rc == ADH_EINVAL ? ADH_EINVAL : ADH_SUCCESS;
-}
-
-double adh_drive_static_end(const adh_protocol_settings *ps)
-{
-    return ps->nturns ? adh_protocol_deepest_turn(ps) : adh_static_settings_default().h0_end;
-}
-
-const adh_static *adh_drive_static(const adh_drive *d)
-{
-    return d->is_static ? d->sw : NULL;
 }

@@ -3,7 +3,6 @@
 #include <math.h>
 
 #include "adhere/status.h"
-#include "core/modelcurve.h"
 
 /* Scales between the nondimensional and SI forms (see the header). */
 typedef struct md_scale {

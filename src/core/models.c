@@ -3,7 +3,17 @@
 #include <math.h>
 
 #include "adhere/status.h"
-#include "core/modelcurve.h"
+
+void adh_material_derive(const adh_material *m, adh_derived *d)
+{
+    d->gamma = adh_material_gamma(m);
+    d->sigma = adh_material_sigma(m);
+    d->mu = cbrt(4.0) * pow(d->sigma, 2.0 / 3.0);
+    d->Estar = m->E / 2.0;
+    d->F_jkr = adh_jkr_pulloff(m);
+    d->F_dmt = adh_dmt_pulloff(m);
+    d->h_star = adh_jump_separation(m);
+}
 
 double adh_rigid_force(const adh_material *m, double h0)
 {

@@ -3,7 +3,6 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "adhere/models.h"
 #include "adhere/status.h"
 
 adh_material adh_material_default(void)
@@ -34,17 +33,6 @@ int adh_material_validate(const adh_material *m, char *why, size_t whylen)
         check("R (effective radius)", m->R, 1e-9, 10.0, "m", why, whylen))
         return ADH_EINVAL;
     return ADH_SUCCESS;
-}
-
-void adh_material_derive(const adh_material *m, adh_derived *d)
-{
-    d->gamma = adh_material_gamma(m);
-    d->sigma = adh_material_sigma(m);
-    d->mu = cbrt(4.0) * pow(d->sigma, 2.0 / 3.0);
-    d->Estar = m->E / 2.0;
-    d->F_jkr = adh_jkr_pulloff(m);
-    d->F_dmt = adh_dmt_pulloff(m);
-    d->h_star = adh_jump_separation(m);
 }
 
 double adh_material_gamma(const adh_material *m)

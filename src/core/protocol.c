@@ -1,6 +1,4 @@
 #include "adhere/protocol.h"
-#include "adhere/cycle.h"
-#include "adhere/drive.h"
 #include "adhere/rings.h"
 
 #include <limits.h>
@@ -46,8 +44,15 @@ double adh_protocol_deepest_turn(const adh_protocol_settings *ps)
     return t;
 }
 
-int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
-                       const adh_grid *g, char *why, size_t whylen)
+static void set_fix(unsigned *fix, unsigned bits)
+{
+    if (fix)
+        *fix = bits;
+}
+
+/* The drive settings alone (no grid): step, dwell, turns, R and the start. */
+static int check_drive(const adh_protocol_settings *ps, const adh_material *m, char *why, size_t whylen,
+                       unsigned *fix)
 {
     if (!(isfinite(ps->step) && ps->step >= 1e-14 && ps->step <= 1e-8)) {
         snprintf(why, whylen, "step d = %g m is not allowed: it must be from 1e-14 to 1e-8 m (0.01 pm to 10 nm)", ps->step);
@@ -64,7 +69,8 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
         if (!isfinite(t) || t < -adh_protocol_reach(m)) {
             int dflt = ps->nturns == 1 && t == adh_protocol_settings_default().turns[0];
             snprintf(why, whylen, "turning point %g m%s is too deep: the model (h0 << R) allows down to -R/50 = %g m%s", t,
-                     dflt ? " (the default turn)" : "", -adh_protocol_reach(m), dflt ? "; give a shallower --turn (or turns in the scene), or a larger R" : "");
+                     dflt ? " (the default turn)" : "", -adh_protocol_reach(m), dflt ? "; give a shallower turn or a larger R" : "");
+            set_fix(fix, dflt ? ADH_FIX_TURNS | ADH_FIX_RADIUS : 0);
             return ADH_EINVAL;
         }
     }
@@ -73,8 +79,9 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
      * gap is many z0 wide: r^2/2R there is at most 0.045 R. */
     double need = (10.0 * m->z0 + fabs(lowest)) / 0.045;
     if (m->R < need) {
-        snprintf(why, whylen, "R = %g m is too small for this model: h0 << R and a negligible force at the grid edge need R >= %g m here (10 z0 plus the deepest |h0|, over 0.045)",
+        snprintf(why, whylen, "R = %g m is too small for this model: h0 << R and a negligible force at the grid edge need R >= %g m here, 10 z0 plus the deepest |h0| over 0.045",
                  m->R, need);
+        set_fix(fix, ADH_FIX_RADIUS);
         return ADH_EINVAL;
     }
     double start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
@@ -85,6 +92,7 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
         else
             snprintf(why, whylen, "start = %g m is not allowed: it must be above 0 and at most R/50 = %g m (the model needs h0 << R)",
                      start, adh_protocol_reach(m));
+        set_fix(fix, isnan(ps->start) ? ADH_FIX_RADIUS | ADH_FIX_START : 0);
         return ADH_EINVAL;
     }
     for (size_t i = 0; i < ps->nturns; i++) {
@@ -96,15 +104,23 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     double steps = (start - lowest) / ps->step;
     if (steps > 2e6) {
         snprintf(why, whylen, "%.0f drive steps of %g m from %g to %g m: at most 2e6 are allowed; take a larger step", steps, ps->step, start, lowest);
+        set_fix(fix, ADH_FIX_STEP);
         return ADH_EINVAL;
     }
-    if (!g)
-        return ADH_SUCCESS;   /* rigid spheres: no grid to check */
+    return ADH_SUCCESS;
+}
+
+/* The grid against the run: spacing, radius, the contact at the deepest
+ * turn lowest, the force beyond the edge. */
+static int check_grid(const adh_protocol_settings *ps, const adh_material *m, const adh_grid *g, double lowest,
+                      char *why, size_t whylen, unsigned *fix)
+{
     if (adh_grid_nodes_check(g->n > (size_t)LONG_MAX ? LONG_MAX : (long)g->n, why, whylen) != ADH_SUCCESS)
         return ADH_EINVAL;
     double lateral = sqrt(m->R * m->z0);
     if (g->dr > 0.25 * lateral) {
         snprintf(why, whylen, "grid spacing %g m is too coarse: the contact edge needs at most 0.25 sqrt(R z0) = %g m; use more nodes", g->dr, 0.25 * lateral);
+        set_fix(fix, ADH_FIX_NODES);
         return ADH_EGRID;
     }
     if (g->rmax > 0.3 * m->R) {
@@ -116,8 +132,9 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     double gap_edge = lowest + g->rmax * g->rmax / (2.0 * m->R);
     double a_est = 1.5 * sqrt(2.0 * m->R * fmax(0.0, m->z0 - lowest));
     if (gap_edge < 10 * m->z0 || a_est > 0.8 * g->rmax) {
-        snprintf(why, whylen, "grid radius Rmax = %g m is too short: the contact at h0 = %g m may reach %g m; use more nodes (--nodes) or a larger spacing",
+        snprintf(why, whylen, "grid radius Rmax = %g m is too short: the contact at h0 = %g m may reach %g m; use more nodes or a larger spacing",
                  g->rmax, lowest, a_est);
+        set_fix(fix, ADH_FIX_NODES | ADH_FIX_SPACING);
         return ADH_EGRID;
     }
     /* Coarser than five edge zones, the contact line moves node by node and
@@ -127,9 +144,10 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     if (ps->nturns > 0 && g->dr > 5.0 * edge) {
         snprintf(why, whylen, "grid spacing %g m is too coarse for this contact: its edge zone is about %g m wide (sigma = %.3g), and a spacing above 5 times that (%g m) locks the contact line to the nodes; use more nodes or a smaller spacing",
                  g->dr, edge, adh_material_sigma(m), 5.0 * edge);
+        set_fix(fix, ADH_FIX_NODES | ADH_FIX_SPACING);
         return ADH_EGRID;
     }
-    if (adh_rings_check(g, m, lowest, why, whylen) != ADH_SUCCESS)
+    if (adh_rings_check(g, m, lowest, why, whylen, fix) != ADH_SUCCESS)
         return ADH_EGRID;
     double tail = fabs(adh_rigid_force(m, gap_edge));
     double scale = fabs(adh_dmt_pulloff(m));
@@ -141,58 +159,14 @@ int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m,
     return ADH_SUCCESS;
 }
 
-/* A thin loop over the drive (adhere/drive.h), which owns the protocol:
- * every driver gets the same rows from the same steps. */
-int adh_protocol_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
-                     const adh_relax_settings *rs, const adh_protocol_settings *ps,
-                     adh_step_cb cb, void *ctx, adh_run *run)
+int adh_protocol_check(const adh_protocol_settings *ps, const adh_material *m, const adh_grid *g, char *why,
+                       size_t whylen, unsigned *fix)
 {
-    adh_drive *d = adh_drive_alloc(g, k);
-    if (!d) {
-        run->status = ADH_ENOMEM;
-        return run->status;
-    }
-    int rc = adh_drive_set(d, m, rs, ps, run);
-    if (rc == ADH_SUCCESS)
-        rc = adh_drive_run(d, cb, ctx);
-    adh_drive_free(d);
-    run->status = rc;
-    return rc;
-}
-
-double adh_hysteresis_area(const adh_run *run)
-{
-    return adh_cycle_hysteresis(run->rows, run->nrows, (int)run->nturns);
-}
-
-/* The hysteresis left when eps -> 0: under displacement control the drive
- * follows stable equilibria only, loading on the highest-force one at each
- * h0 (the outer branch until it ends at the jump-in fold) and unloading on
- * the lowest (the contact until the jump-out fold). Between the folds, and
- * wherever lattice trapping makes stable legs overlap, the two differ: the
- * area between them is the hysteresis no slower drive removes. */
-double adh_static_hysteresis_area(const adh_run *curve, double step)
-{
-    double lo = INFINITY, hi = -INFINITY;
-    for (size_t i = 0; i < curve->nrows; i++) {
-        lo = fmin(lo, curve->rows[i].h0);
-        hi = fmax(hi, curve->rows[i].h0);
-    }
-    double area = 0;
-    for (double x = lo + 0.5 * step; x < hi; x += step) {
-        double fmax_ = -INFINITY, fmin_ = INFINITY;
-        for (size_t i = 0; i + 1 < curve->nrows; i++) {
-            const adh_obs *a = &curve->rows[i], *b = &curve->rows[i + 1];
-            if (!a->stable || !b->stable || (x - a->h0) * (x - b->h0) > 0 || a->h0 == b->h0)
-                continue;
-            double F = a->F + (b->F - a->F) * (x - a->h0) / (b->h0 - a->h0);
-            fmax_ = fmax(fmax_, F);
-            fmin_ = fmin(fmin_, F);
-        }
-        if (fmax_ > fmin_)
-            area += (fmax_ - fmin_) * step;
-    }
-    return area;
+    set_fix(fix, 0);
+    int rc = check_drive(ps, m, why, whylen, fix);
+    if (rc != ADH_SUCCESS || !g)
+        return rc;   /* g NULL: rigid spheres, no grid to check */
+    return check_grid(ps, m, g, ps->nturns ? adh_protocol_deepest_turn(ps) : 0.0, why, whylen, fix);
 }
 
 int adh_protocol_dwell_check(long dwell, char *why, size_t whylen)

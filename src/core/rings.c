@@ -219,28 +219,153 @@ double adh_rings_contact_estimate(const adh_material *m, double h0)
     return fmax(est, hi);
 }
 
-int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen)
+static void set_fix(unsigned *fix, unsigned bits)
 {
+    if (fix)
+        *fix = bits;
+}
+
+int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, char *why, size_t whylen,
+                    unsigned *fix)
+{
+    set_fix(fix, 0);
     if (!g->graded)
         return ADH_SUCCESS;
     double a_est = adh_rings_contact_estimate(m, lowest), fine = adh_rings_fine_radius(g);
     if (a_est > 0.9 * fine) {
-        snprintf(why, whylen, "fine band radius %g m is too short: the contact at h0 = %g m may reach %g m, and its edge must stay inside the band; use a larger --fine-band",
+        snprintf(why, whylen, "fine band radius %g m is too short: the contact at h0 = %g m may reach %g m, and its edge must stay inside the band; use a larger fine band",
                  fine, lowest, a_est);
+        set_fix(fix, ADH_FIX_FINE_BAND);
         return ADH_EGRID;
     }
     return ADH_SUCCESS;
 }
 
+unsigned adh_rings_edge_fix(const adh_grid *g, double a)
+{
+    if (a >= 0.9 * g->rmax)
+        return g->graded ? ADH_FIX_GRID_RADIUS : ADH_FIX_NODES | ADH_FIX_SPACING;
+    return adh_rings_resolves(g, a) ? 0 : ADH_FIX_FINE_BAND | ADH_FIX_TURNS;
+}
+
 void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len)
 {
     if (a >= 0.9 * g->rmax)
-        snprintf(buf, len, "the contact radius a = %.4g m reached the grid's edge (0.9 Rmax = %.4g m): use more "
-                 "nodes or a larger spacing (-N, --spacing; a graded grid: --grid-radius)", a, 0.9 * g->rmax);
+        snprintf(buf, len, "the contact radius a = %.4g m reached the grid's edge (0.9 Rmax = %.4g m): use %s", a,
+                 0.9 * g->rmax, g->graded ? "a larger grid radius" : "more nodes or a larger spacing");
     else if (!adh_rings_resolves(g, a))
         snprintf(buf, len, "the contact radius a = %.4g m left the graded grid's fine band (%.4g m), where the rings "
-                 "grow too coarse for the contact's edge: widen it (--fine-band) or turn shallower", a,
+                 "grow too coarse for the contact's edge: widen the fine band or turn shallower", a,
                  adh_rings_fine_radius(g));
     else
         snprintf(buf, len, "the contact radius a = %.4g m is within the grid (Rmax = %.4g m)", a, g->rmax);
+}
+
+/* The contact radius at the deepest position, generously: JKR's a for the
+ * overlap z0 - deepest (adhesion enlarges it beyond Hertz's), or the
+ * protocol check's Hertz-based estimate, whichever is larger. */
+static double contact_estimate(const adh_material *m, double deepest)
+{
+    double depth = fmax(m->z0 - deepest, m->z0);
+    double lo = 0, hi = 10 * sqrt(2 * m->R * depth) + 10 * sqrt(m->R * m->z0);
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi), ov;
+        adh_jkr(m, mid, NULL, &ov);
+        if (ov < depth)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return fmax(hi, 1.5 * sqrt(2.0 * m->R * depth));
+}
+
+/* MB a kernel holds: dense N^2 doubles, or as H^2 ~1.3 kB a ring
+ * (measured: docs/grids-and-operators.md) */
+static double held_mb(int hierarchical, double nodes)
+{
+    return hierarchical ? 1.3e3 * nodes / 1048576.0 : nodes * nodes * sizeof(double) / 1048576.0;
+}
+
+int adh_rings_choose(const adh_material *m, adh_grid_use use, double deepest, int graded_ok, adh_rings_choice *c,
+                     char *why, size_t whylen, unsigned *fix)
+{
+    double paper_rmax = fmin(adh_grid_default_rmax(m), 0.3 * m->R);
+    double widths = adh_grid_edge_spacing(use);
+    double limit = widths * adh_edge_zone(m);
+    adh_derived d;
+    adh_material_derive(m, &d);
+    set_fix(fix, 0);
+    *c = (adh_rings_choice){ .graded = 0, .n = 1000, .dr = NAN, .fine = NAN, .ratio = 1, .rmax = paper_rmax };
+    if (paper_rmax / 1000.0 <= limit)
+        return ADH_SUCCESS;
+    /* the radius the protocol check asks for: the contact within 0.8 Rmax,
+     * the gap at the edge 10 z0 wide and the force beyond it below 1e-3 of
+     * 2 pi gamma R (gap over 36.5 z0) */
+    double a = contact_estimate(m, deepest);
+    double gap = 36.6 * m->z0 - fmin(deepest, 0.0);
+    double need = fmax(a / 0.8 * 1.05, sqrt(2.0 * m->R * gap));
+    /* a finer grid than the paper's costs N^2: only as far out as needed */
+    size_t nn = (size_t)ceil(need / limit);
+    const char *kind = "uniform";
+    if (nn <= ADH_GRID_UNIFORM_MAX_NODES || !graded_ok) {
+        c->n = nn < 10 ? 10 : nn;
+        c->dr = need / (double)c->n;
+        c->rmax = need;
+    } else {
+        /* Only the band the contact line sweeps needs the fine spacing; the
+         * rings grow beyond it as adhere/rings.h allows. */
+        kind = "graded";
+        adh_rings_spec s = { .dr = limit, .ratio = 1.05 };
+        s.fine = 1.25 * adh_rings_contact_estimate(m, fmin(deepest, 0.0));
+        s.rmax = fmax(need, 1.1 * s.fine);
+        c->graded = 1;
+        c->dr = limit;
+        c->fine = s.fine;
+        c->ratio = s.ratio;
+        c->rmax = s.rmax;
+        c->hierarchical = 1;
+        nn = adh_rings_count(&s);
+        c->n = nn;
+    }
+    /* a dense kernel's memory bounds a uniform grid; graded rings are held
+     * as H^2 (~1.3 kB a ring), bounded by the grid limit alone */
+    size_t budget = c->hierarchical ? ADH_GRID_NODES_MAX : ADH_GRID_MAX_NODES;
+    double held = held_mb(c->hierarchical, (double)nn);
+    double held_max = held_mb(c->hierarchical, (double)budget);
+    if (need > 0.3 * m->R) {
+        /* not the node budget: the paraboloid gap (eq 3) stops describing a
+         * sphere past 0.3 R, and the contact or the force's tail needs more */
+        snprintf(why, whylen,
+                 "sigma = %.3g: the contact at the deepest turn and the force's tail beyond it need the grid out "
+                 "to Rmax = %.3g m, beyond 0.3 R = %.3g m where the paraboloid gap (eq 3) stops describing a "
+                 "sphere; use a larger R, a shallower turn (the deepest is %.3g m), or a stiffer material",
+                 d.sigma, need, 0.3 * m->R, deepest);
+        set_fix(fix, ADH_FIX_RADIUS | ADH_FIX_TURNS);
+        return ADH_EGRID;
+    }
+    if (nn > budget) {
+        snprintf(why, whylen,
+                 "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
+                 "out to Rmax = %.3g m: a %s grid of N = %zu nodes (%s of %.0f MB), beyond this program's "
+                 "budget of N = %zu (%.0f MB). A grid chosen by hand runs marked resolved 0 where it is "
+                 "coarser than the resolved limit; use a stiffer material or a smaller sigma, or choose N or "
+                 "the spacing yourself and run it anyway",
+                 d.sigma, limit, widths, adh_edge_zone(m), c->rmax, kind, nn,
+                 c->hierarchical ? "an H^2 kernel" : "a dense kernel", held, budget, held_max);
+        set_fix(fix, ADH_FIX_NODES | ADH_FIX_SPACING | ADH_FIX_FORCE);
+        return ADH_EGRID;
+    }
+    if (use == ADH_GRID_STATIC && nn > ADH_GRID_STATIC_MAX_NODES) {
+        snprintf(why, whylen,
+                 "sigma = %.3g: a resolved static curve needs a grid spacing of at most %.3g m (%.2g edge-zone "
+                 "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps, "
+                 "though they step the contact line over many rings at once, cost more with N: beyond N = %d "
+                 "(19 s on one core at sigma = 100, 12875 rings) it was not measured. A grid chosen by hand "
+                 "runs marked resolved 0 where it is coarser than the limit; use the relaxation (resolved at "
+                 "this sigma), a stiffer material, or choose N or the spacing yourself and run it anyway",
+                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, held, ADH_GRID_STATIC_MAX_NODES);
+        set_fix(fix, ADH_FIX_MODE | ADH_FIX_NODES | ADH_FIX_SPACING | ADH_FIX_FORCE);
+        return ADH_EGRID;
+    }
+    return ADH_SUCCESS;
 }

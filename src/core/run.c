@@ -57,8 +57,8 @@ int adh_run_touched(const adh_run *run, double h_star, char *why, size_t whylen)
         return 1;
     snprintf(why, whylen, "the surfaces never came into contact: the drive turned at h0 = %.4g m with the contact "
              "radius still 0, so there is no jump-in, pull-off or jump-out, and the lowest force is only the force "
-             "at the turn; put the turn below the jump into contact (eq 24's gap there is h* = %.4g m; e.g. "
-             "--turn=0)", turn, h_star);
+             "at the turn; put the turn below the jump into contact, at h0 = 0 for one (eq 24's gap there is "
+             "h* = %.4g m)", turn, h_star);
     return 0;
 }
 

@@ -1,5 +1,4 @@
 #include "adhere/static.h"
-#include "adhere/drive.h"
 #include "adhere/clock.h"
 
 #include <gsl/gsl_cblas.h>
@@ -1414,41 +1413,4 @@ size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds)
     if (folds)
         *folds = w->folds;
     return w->nfolds_kept;
-}
-
-/* A thin loop over the drive's static step rule (adhere/drive.h): the
- * batch runner, sweeps, --cost and the TUI get their points from the same
- * steps. */
-int adh_static_run_protocol(const adh_grid *g, const adh_kernel *k, const adh_material *m,
-                            const adh_static_settings *s, const adh_protocol_settings *ps,
-                            adh_step_cb cb, void *ctx, adh_run *run, adh_static_result *res)
-{
-    adh_drive *d = adh_drive_alloc(g, k);
-    if (!d) {
-        run->status = ADH_ENOMEM;
-        return run->status;
-    }
-    int rc = adh_drive_set_static(d, m, s, ps, run);
-    if (rc == ADH_SUCCESS)
-        rc = adh_drive_run(d, cb, ctx);
-    const adh_static *w = adh_drive_static(d);
-    adh_static_result r;
-    memset(&r, 0, sizeof r);
-    if (w)
-        adh_static_summary(w, &r);
-    if (res)
-        *res = r;
-    run->status = rc;
-    adh_drive_free(d);
-    return rc;
-}
-
-int adh_static_run(const adh_grid *g, const adh_kernel *k, const adh_material *m,
-                   const adh_static_settings *s, adh_step_cb cb, void *ctx,
-                   adh_run *run, adh_static_result *res)
-{
-    adh_protocol_settings ps = adh_protocol_settings_default();
-    ps.nturns = 0;   /* the settings' own end */
-    ps.start = s->h0_start;
-    return adh_static_run_protocol(g, k, m, s, &ps, cb, ctx, run, res);
 }

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "adhere/models.h"
 #include "adhere/params.h"
 #include "plot/outdir.h"
 #include "plot/speed.h"

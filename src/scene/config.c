@@ -38,8 +38,10 @@ adh_grid_use adh_config_grid_use(const adh_config *c)
     return c->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
 }
 
-int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
+int adh_config_grid(adh_config *cfg, char *why, size_t whylen, unsigned *fix)
 {
+    if (fix)
+        *fix = 0;
     if (cfg->nodes_given || !isnan(cfg->spacing) || cfg->mode == ADH_MODE_RIGID)
         return 0;
     adh_config run, soft;
@@ -56,10 +58,10 @@ int adh_config_grid(adh_config *cfg, char *why, size_t whylen)
         }
     }
     double deepest = fmin(0.0, adh_protocol_deepest_turn(&cfg->proto));
-    adh_grid_choice gc;
+    adh_rings_choice gc;
     /* graded rings need the ring kernel: not when the paper's was asked for */
     int graded_ok = !(cfg->kernel_given && cfg->kernel == ADH_KERNEL_PAPER);
-    if (adh_grid_choose(&soft.mat, adh_config_grid_use(cfg), deepest, graded_ok, &gc, why, whylen) != ADH_SUCCESS)
+    if (adh_rings_choose(&soft.mat, adh_config_grid_use(cfg), deepest, graded_ok, &gc, why, whylen, fix) != ADH_SUCCESS)
         return -1;
     cfg->asked = (adh_grid_asked){ cfg->nodes, cfg->spacing, cfg->fine_band, cfg->growth, cfg->grid_radius,
                                    cfg->kernel, cfg->storage, cfg->graded };
@@ -96,7 +98,7 @@ int adh_config_grid_again(adh_config *cfg, char *why, size_t whylen)
     cfg->storage = a->storage;
     cfg->graded = a->graded;
     cfg->grid_chosen = 0;
-    if (adh_config_grid(cfg, why, whylen) != 0) {
+    if (adh_config_grid(cfg, why, whylen, NULL) != 0) {
         /* refused: the asked grid stays, and the choice is still the config's */
         cfg->grid_chosen = 1;
         return -1;

@@ -150,10 +150,11 @@ size_t adh_config_nruns(const adh_config *cfg);
 /* The resolution limit that applies: the static curve's in mode = static. */
 adh_grid_use adh_config_grid_use(const adh_config *c);
 
-/* When neither N nor the spacing was given: the grid adh_grid_choose picks
+/* When neither N nor the spacing was given: the grid adh_rings_choose picks
  * for the run with the narrowest edge zone (a sweep shares one kernel).
- * 0, or -1 with why when that grid is beyond the budget. */
-int adh_config_grid(adh_config *cfg, char *why, size_t whylen);
+ * 0, or -1 with why (and in *fix, may be NULL, the ADH_FIX_* bits of what
+ * to change, for the driver's words) when that grid is beyond the budget. */
+int adh_config_grid(adh_config *cfg, char *why, size_t whylen, unsigned *fix);
 /* The choice again, from the settings asked for, for the material and
  * protocol cfg holds now (the TUI, after an edit of E, A, z0, R or the
  * turns). Nothing happens for a grid that was given. 0, or -1 with why

@@ -10,6 +10,7 @@
 #include "adhere/models.h"
 #include "adhere/observe.h"
 #include "adhere/protocol.h"
+#include "adhere/rule_rigid.h"
 #include "adhere/units.h"
 
 static void note(adh_plan_note *list, size_t *n, const char *what, const char *fmt, ...)
@@ -30,12 +31,6 @@ static void note(adh_plan_note *list, size_t *n, const char *what, const char *f
 double adh_plan_start(const adh_config *cfg)
 {
     return isnan(cfg->proto.start) ? adh_protocol_auto_start(&cfg->mat, cfg->proto.step) : cfg->proto.start;
-}
-
-double adh_plan_rigid_end(const adh_config *cfg)
-{
-    double floor_h = 0.7 * cfg->mat.z0;
-    return cfg->proto.nturns ? fmax(adh_protocol_deepest_turn(&cfg->proto), floor_h) : floor_h;
 }
 
 int adh_plan_jobs(const adh_config *cfg)
@@ -80,7 +75,7 @@ static void plan_run(const adh_config *rc, const adh_plan *p, adh_plan_run *r)
     r->start = adh_plan_start(rc);
     double step = rc->proto.step;
     if (!p->elastic) {
-        r->end = adh_plan_rigid_end(rc);
+        r->end = adh_rule_rigid_end(&rc->mat, &rc->proto);
         r->loading_steps = 1 + (size_t)floor((r->start - r->end) / step + 1e-6);
         r->unloading_steps = 0;
         return;

@@ -63,11 +63,6 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
  * more than the runs. */
 int adh_plan_jobs(const adh_config *cfg);
 
-/* The lowest drive position of a rigid-spheres run: the deepest turn, but
- * not below 0.7 z0, just past where eq 22's repulsion balances its
- * attraction (0.794 z0); below it the rigid force soon diverges. */
-double adh_plan_rigid_end(const adh_config *cfg);
-
 /* The first drive position: the scene's, or the automatic one. */
 double adh_plan_start(const adh_config *cfg);
 

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <wchar.h>
 
+#include "adhere/models.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
 #include "plot/outdir.h"

@@ -15,6 +15,7 @@
 #include "adhere/observe.h"
 #include "adhere/protocol.h"
 #include "adhere/rings.h"
+#include "adhere/rule_static.h"
 #include "adhere/status.h"
 #include "scene/budget.h"
 
@@ -180,7 +181,7 @@ double tui_sim_curve_end(const tui_sim *s)
 {
     tui_params_set q = params_get(s);
     adh_protocol_settings ps = params_protocol(&q);
-    return adh_drive_static_end(&ps);
+    return adh_rule_static_end(&ps);
 }
 
 static int curve_started(const tui_sim *s)
@@ -389,7 +390,7 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
     int st;
     s->g = adh_config_grid_alloc(&c);
     s->k = s->g ? adh_config_kernel_alloc(&c, s->g, &st) : NULL;
-    s->drv = s->k ? adh_drive_alloc(s->g, s->k) : NULL;
+    s->drv = s->k ? adh_drive_alloc(&adh_rule_relax, s->g, s->k) : NULL;
     s->built = grid_of(&c);
     if (!s->drv) {
         free_solver(s);
@@ -418,7 +419,7 @@ static int ensure_static(tui_sim *s, char *why, size_t whylen)
     int st;
     s->sg = adh_config_grid_alloc(&c);
     s->sk = s->sg ? adh_config_kernel_alloc(&c, s->sg, &st) : NULL;
-    s->sdrv = s->sk ? adh_drive_alloc(s->sg, s->sk) : NULL;
+    s->sdrv = s->sk ? adh_drive_alloc(&adh_rule_static, s->sg, s->sk) : NULL;
     s->sbuilt = now;
     if (!s->sdrv) {
         free_static(s);
@@ -637,7 +638,7 @@ static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode
     adh_grid_use use = mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
     if (!p->grid.graded) {
         adh_grid g = adh_drive_uniform_grid(p->nodes, params_spacing(p));
-        return adh_drive_check(&p->mat, &p->relax, &ps, use, &g, why, whylen);
+        return adh_drive_check(&p->mat, &p->relax, &ps, use, &g, why, whylen, NULL);
     }
     /* rings: the check reads their edges (cheap to lay out; no kernel) */
     adh_config c;
@@ -649,7 +650,7 @@ static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode
     if (!g)
         snprintf(why, whylen, "out of memory for a graded grid of %zu rings", p->nodes);
     else
-        rc = adh_drive_check(&p->mat, &p->relax, &ps, use, g, why, whylen);
+        rc = adh_drive_check(&p->mat, &p->relax, &ps, use, g, why, whylen, NULL);
     adh_grid_free(g);
     return rc;
 }
@@ -969,7 +970,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
         s->ckey.end = tui_sim_curve_end(s);
         adh_run_free(&s->curve);
         adh_run_init(&s->curve);
-        int rc = adh_drive_set_static(s->sdrv, &s->mat, &ss, &ps, &s->curve);
+        int rc = adh_drive_set(s->sdrv, &s->mat, &ss, &ps, &s->curve);
         if (rc != ADH_SUCCESS) {
             s->cstatus = rc;
             snprintf(why, whylen, "the curve cannot start: %s", adh_strerror(rc));
@@ -979,7 +980,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     char h0[64];
     adh_format_quantity(s->curve.nrows ? s->curve.rows[s->curve.nrows - 1].h0 : s->start, ADH_Q_LENGTH, 4, h0, sizeof h0);
     int row, rc = adh_drive_iterate(s->sdrv, 0, &row);
-    const adh_static *sw = adh_drive_static(s->sdrv);
+    const adh_static *sw = adh_rule_static_solver(s->sdrv);
     adh_static_summary(sw, &s->sres);
     if (row) {
         curve_pushed(s, adh_static_state(sw));
@@ -1026,11 +1027,11 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
 {
     if (which == 2) {
         /* the solver holds the last point, unless a failed step left it elsewhere */
-        if (!s->sdrv || !adh_drive_static(s->sdrv) || !s->curve.nrows ||
+        if (!s->sdrv || !adh_rule_static_solver(s->sdrv) || !s->curve.nrows ||
             !(s->cstatus == ADH_CONTINUE || s->cstatus == ADH_SUCCESS || s->cstatus == ADH_EGRID))
             return NULL;
         *at = s->curve.nrows - 1;
-        return adh_static_state(adh_drive_static(s->sdrv));
+        return adh_static_state(adh_rule_static_solver(s->sdrv));
     }
     if (which < 0 || which > 1 || s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->curve.nrows)
         return NULL;
@@ -1041,7 +1042,7 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
 size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last)
 {
     const adh_static_fold *f;
-    size_t n = s->sdrv && adh_drive_static(s->sdrv) && s->curve.nrows ? adh_static_folds(adh_drive_static(s->sdrv), &f) : 0;
+    size_t n = s->sdrv && adh_rule_static_solver(s->sdrv) && s->curve.nrows ? adh_static_folds(adh_rule_static_solver(s->sdrv), &f) : 0;
     if (n)
         *last = f[n - 1];
     return n;

@@ -30,6 +30,7 @@
 #include "adhere/grid.h"
 #include "adhere/history.h"
 #include "adhere/kernel.h"
+#include "adhere/models.h"
 #include "adhere/params.h"
 #include "adhere/relax.h"
 #include "adhere/run.h"

@@ -22,6 +22,8 @@
 #include "adhere/models.h"
 #include "adhere/protocol.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
+#include "adhere/cycle.h"
 
 void openblas_set_num_threads(int);
 
@@ -54,20 +56,20 @@ int main(int argc, char **argv)
         s.h0_start = adh_protocol_auto_start(&m, step);
         s.h0_end = turn_z0 * m.z0;
         adh_static_result res;
-        rc = adh_static_run(g, k, &m, &s, NULL, NULL, &run, &res);
+        rc = adh_runner_static_curve(g, k, &m, &s, NULL, NULL, &run, &res);
         pulloff = res.pulloff_F;
         jump_in = res.jump_in_h0;
-        hyst = adh_static_hysteresis_area(&run, 0.001e-9);
+        hyst = adh_cycle_static_hysteresis(&run, 0.001e-9);
     } else {
         adh_relax_settings rs = adh_relax_settings_default();
         rs.eps = 1e-12 * sqrt(1000.0 / (double)n);
         adh_protocol_settings ps = adh_protocol_settings_default();
         ps.turns[0] = turn_z0 * m.z0;
-        rc = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, &run);
+        rc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &run);
         const adh_turn_result *t = adh_run_main_turn(&run);
         pulloff = t ? t->pulloff_F : NAN;
         jump_in = run.jump_in_h0;
-        hyst = adh_hysteresis_area(&run);
+        hyst = adh_cycle_run_hysteresis(&run);
     }
     printf("%s\t%g\t%g\t%zu\t%.6g\t%.8g\t%.8g\t%.8g\t%.1f\t%s\n", argv[1], sigma, x, n, dr, pulloff,
            jump_in, hyst, run.seconds, adh_strerror(rc));

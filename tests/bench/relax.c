@@ -18,6 +18,7 @@
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "scene/config.h"
 
 void openblas_set_num_threads(int);
@@ -132,7 +133,7 @@ int main(int argc, char **argv)
                 adh_run run;
                 adh_run_init(&run);
                 double t0 = now();
-                int rc = adh_protocol_run(g, k, &cfg.mat, &rs, &cfg.proto, NULL, NULL, &run);
+                int rc = adh_runner_rule(&adh_rule_relax, g, k, &cfg.mat, &rs, &cfg.proto, NULL, NULL, &run);
                 t[r] = now() - t0;
                 if (rc != ADH_SUCCESS) {
                     fprintf(stderr, "bench-relax: the cycle with %s failed: %s\n", name, adh_strerror(rc));

@@ -11,6 +11,7 @@
 #include "adhere/kernel.h"
 #include "adhere/models.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 
 static double now(void)
 {
@@ -65,7 +66,7 @@ int main(int argc, char **argv)
     adh_static_result r;
     t0 = now();
     double c0 = cpu();
-    int rc = adh_static_run(g, k, &m, &s, NULL, NULL, &run, &r);
+    int rc = adh_runner_static_curve(g, k, &m, &s, NULL, NULL, &run, &r);
     double t_run = now() - t0, c_run = cpu() - c0;
     printf("static: N=%zu kernel=%s E=%g sigma=%.3f status=%s\n", n, adh_kernel_name(kt), m.E, d.sigma,
            adh_strerror(rc));

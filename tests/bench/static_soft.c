@@ -1,5 +1,5 @@
 /* Benchmark of the static curve at large sigma on the grid a run gets by
- * default (adh_grid_choose for the static curve: the spacing at the
+ * default (adh_rings_choose for the static curve: the spacing at the
  * resolved limit 0.3 l, graded and hierarchical past 1000 nodes), with the
  * pull-off against Maugis-Dugdale. Issue 14's targets, one core: sigma =
  * 22.5 under 5 s, sigma = 75 under 15 s.
@@ -31,9 +31,9 @@ static int one(double sigma, double turn)
 {
     adh_material m = adh_material_default();
     m.E *= adh_material_sigma(&m) / sigma; /* sigma is proportional to 1/E */
-    adh_grid_choice gc;
+    adh_rings_choice gc;
     char why[1024];
-    if (adh_grid_choose(&m, ADH_GRID_STATIC, turn, 1, &gc, why, sizeof why) != ADH_SUCCESS) {
+    if (adh_rings_choose(&m, ADH_GRID_STATIC, turn, 1, &gc, why, sizeof why, NULL) != ADH_SUCCESS) {
         printf("static sigma=%.4g: refused: %s\n", sigma, why);
         return 0;
     }

@@ -26,7 +26,7 @@ bad "R (effective radius) = 0 m is out of range" -R 0
 bad "N = 5 nodes is not allowed: use 10 to 20000 nodes" -N 5
 bad "'1e3' is not allowed: expected a whole number" --nodes=1e3
 bad "too coarse" -N 20
-bad "too short" --spacing=0.5nm
+bad "too short.*; use more nodes or a larger spacing (-N, --spacing)$" --spacing=0.5nm
 bad "unknown option '--frobnicate'" --frobnicate
 bad "unknown option '-x'" -x
 bad "needs a value" --modulus
@@ -48,7 +48,7 @@ bad "--grid: 'graded2' is not a grid: use uniform or graded" --grid=graded2
 bad "--grid=graded is not allowed with --kernel=paper" --grid=graded
 bad "--growth: '1.2' is not allowed: use a ratio from 1 to 1.1" --grid=graded --kernel=ring --growth=1.2
 bad "--growth: 'x' is not allowed" --growth=x
-bad "fine band radius .* too short" --grid=graded --kernel=ring --fine-band=100nm
+bad "fine band radius .* too short.*; use a larger fine band (--fine-band)$" --grid=graded --kernel=ring --fine-band=100nm
 bad "grid radius Rmax = .* is too short" --grid=graded --kernel=ring --grid-radius=200nm
 bad "grid radius 6e-07 m is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
 bad "--growth: '0.9' is not allowed: use a ratio from 1 to 1.1" --growth=0.9
@@ -58,6 +58,11 @@ bad "--operator: 'sparse' is not an operator: use dense, hmat or h2" --operator=
 bad "out of the range of finite numbers" -E 1e999
 bad "step d = 0 m is not allowed" --step=0
 bad "more than one scene" fig1 fig2
+# the core names quantities, the CLI adds its flags
+bad "(the default turn) is too deep.*; give a shallower turn or a larger R (--turn, -R)$" -R 100nm
+bad "beyond this program's budget.*; use a stiffer material.*run it anyway (-N, --spacing, --force)$" -E 1MPa
+bad "a resolved static curve.*; use the relaxation.*run it anyway (--mode, -N, --spacing, --force)$" -E 20MPa --mode=static
+bad "at most 2e6 are allowed; take a larger step (-d)$" -d 0.01pm
 bad "no scene named 'nosuchscene'" nosuchscene
 
 # Messages that name the real limit (issue 24, item 7): a radius past 0.3 R

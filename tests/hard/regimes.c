@@ -9,6 +9,7 @@
 #include "adhere/grid.h"
 #include "adhere/protocol.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "scene/config.h"
 #include "tap.h"
 
@@ -44,13 +45,13 @@ static int run_config(const adh_config *c, outcome *o)
     adh_grid *g = adh_grid_alloc(c->nodes, adh_config_spacing(c));
     o->rc = adh_material_validate(&c->mat, o->why, sizeof o->why);
     if (o->rc == ADH_SUCCESS)
-        o->rc = adh_protocol_check(&c->proto, &c->mat, g, o->why, sizeof o->why);
+        o->rc = adh_protocol_check(&c->proto, &c->mat, g, o->why, sizeof o->why, NULL);
     if (o->rc != ADH_SUCCESS) {
         adh_grid_free(g);
         return o->rc;
     }
     adh_kernel *k = adh_kernel_alloc(g, c->kernel);
-    o->rc = adh_protocol_run(g, k, &c->mat, &c->relax, &c->proto, NULL, NULL, &o->run);
+    o->rc = adh_runner_rule(&adh_rule_relax, g, k, &c->mat, &c->relax, &c->proto, NULL, NULL, &o->run);
     adh_kernel_free(k);
     adh_grid_free(g);
     return o->rc;

@@ -1,4 +1,4 @@
-/* The drive: stepping it by hand gives adh_protocol_run's rows; restoring a
+/* The drive: stepping it by hand gives adh_runner_rule's rows; restoring a
  * snapshot and stepping again gives the same rows bit for bit (the TUI's
  * undo); it says which turn it is on; a raised cancel flag ends it with
  * ADH_EINTR and no row for the step under way. */
@@ -9,6 +9,7 @@
 #include "adhere/cycle.h"
 #include "adhere/drive.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "tap.h"
 
 static int same_rows(const adh_obs *a, const adh_obs *b, size_t n)
@@ -35,10 +36,10 @@ int main(void)
 
     adh_run ref;
     adh_run_init(&ref);
-    int prc = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, &ref);
+    int prc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &ref);
     ok(prc == ADH_SUCCESS && ref.nrows > 50, "the protocol runs (%zu rows)", ref.nrows);
 
-    adh_drive *d = adh_drive_alloc(g, k);
+    adh_drive *d = adh_drive_alloc(&adh_rule_relax, g, k);
     adh_run run;
     adh_run_init(&run);
     ok(d && adh_drive_set(d, &m, &rs, &ps, &run) == ADH_SUCCESS, "alloc and set");
@@ -126,7 +127,7 @@ int main(void)
     {
         adh_grid *gs = adh_grid_alloc(20, 10e-9);
         adh_kernel *ks = adh_kernel_alloc(gs, ADH_KERNEL_PAPER);
-        adh_drive *ds = adh_drive_alloc(gs, ks);
+        adh_drive *ds = adh_drive_alloc(&adh_rule_relax, gs, ks);
         adh_protocol_settings pe = adh_protocol_settings_default();
         pe.step = 0.25e-9;
         pe.turns[0] = -3e-9;
@@ -165,8 +166,8 @@ int main(void)
         adh_run ra, rb;
         adh_run_init(&ra);
         adh_run_init(&rb);
-        int ca = adh_protocol_run(g, k, &m, &re, &pa, NULL, NULL, &ra);
-        int cb = adh_protocol_run(g, k, &m, &re, &pb, NULL, NULL, &rb);
+        int ca = adh_runner_rule(&adh_rule_relax, g, k, &m, &re, &pa, NULL, NULL, &ra);
+        int cb = adh_runner_rule(&adh_rule_relax, g, k, &m, &re, &pb, NULL, NULL, &rb);
         ok(ca == ADH_SUCCESS && cb == ADH_SUCCESS && rb.nturns == 1 && rb.turns[0].jump_out_h0 > 3e-9 &&
            fabs(rb.turns[0].jump_out_h0 - ra.turns[0].jump_out_h0) <= pa.step * 1.001,
            "from a start at 3 nm the unloading goes past it to the jump-out (%g against %g m)",

@@ -18,6 +18,7 @@
 #include "adhere/models.h"
 #include "adhere/observe.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "tap.h"
 
 typedef struct curve {
@@ -32,7 +33,7 @@ static curve run_curve(const adh_material *m, size_t n, double dr, adh_kernel_ty
     adh_run_init(&c.run);
     adh_grid *g = adh_grid_alloc(n, dr);
     adh_kernel *k = adh_kernel_alloc(g, kt);
-    c.rc = adh_static_run(g, k, m, s, NULL, NULL, &c.run, &c.res);
+    c.rc = adh_runner_static_curve(g, k, m, s, NULL, NULL, &c.run, &c.res);
     adh_kernel_free(k);
     adh_grid_free(g);
     return c;
@@ -323,13 +324,13 @@ static void check_stops(void)
     adh_static_settings s = adh_static_settings_default();
     adh_run run;
     adh_run_init(&run);
-    int rc = adh_static_run(g, k, &m, &s, stop_after_5, NULL, &run, NULL);
+    int rc = adh_runner_static_curve(g, k, &m, &s, stop_after_5, NULL, &run, NULL);
     ok(rc == ADH_SUCCESS && run.interrupted == 1 && run.nrows == 5, "a callback stops the run after 5 rows (%zu)",
        run.nrows);
     adh_run_free(&run);
     adh_run_init(&run);
     adh_static_result r;
-    rc = adh_static_run(g, k, &m, &s, NULL, NULL, &run, &r);
+    rc = adh_runner_static_curve(g, k, &m, &s, NULL, NULL, &run, &r);
     ok(rc == ADH_EGRID && run.status == ADH_EGRID && run.nrows > 10 &&
            run.rows[run.nrows - 1].a >= 0.9 * g->rmax,
        "N 60 down to -5 nm: ADH_EGRID once the contact reaches 0.9 Rmax, rows kept (%zu)", run.nrows);

@@ -12,6 +12,7 @@
 #include "adhere/relax.h"
 #include "adhere/rings.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "tap.h"
 
 static int cycle(const adh_grid *g, adh_kernel_storage st, adh_run *run)
@@ -29,9 +30,9 @@ static int cycle(const adh_grid *g, adh_kernel_storage st, adh_run *run)
     rs.eps = 2e-12;
     adh_run_init(run);
     char why[256];
-    int rc = adh_protocol_check(&ps, &m, g, why, sizeof why);
+    int rc = adh_protocol_check(&ps, &m, g, why, sizeof why, NULL);
     if (rc == ADH_SUCCESS)
-        rc = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, run);
+        rc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, run);
     else
         printf("# %s\n", why);
     adh_kernel_free(k);
@@ -48,7 +49,7 @@ static int curve_skip(const adh_grid *g, adh_kernel_storage st, int skip, adh_st
     s.lattice_skip = skip;
     adh_run run;
     adh_run_init(&run);
-    int rc = k ? adh_static_run(g, k, &m, &s, NULL, NULL, &run, res) : ADH_ENOMEM;
+    int rc = k ? adh_runner_static_curve(g, k, &m, &s, NULL, NULL, &run, res) : ADH_ENOMEM;
     adh_run_free(&run);
     adh_kernel_free(k);
     return rc;

@@ -1,5 +1,5 @@
 /* The grid's resolution check and the automatic grid (adh_grid_check,
- * adh_grid_choose), and one cheap point of the resolution study in docs/convergence.md:
+ * adh_rings_choose), and one cheap point of the resolution study in docs/convergence.md:
  * at the limit the pull-off and hysteresis are within 1 % of a grid four
  * times finer, and a grid of one edge-zone width is not. */
 #include <math.h>
@@ -13,6 +13,8 @@
 #include "adhere/protocol.h"
 #include "adhere/rings.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
+#include "adhere/cycle.h"
 #include "tap.h"
 
 static adh_material at_sigma(double sigma)
@@ -35,18 +37,21 @@ static void check_and_choose(void)
 
     size_t n;
     double dr;
-    adh_grid_choice gc;
-    int rc = adh_grid_choose(&m, ADH_GRID_RELAX, -5e-9, 1, &gc, NULL, 0);
+    adh_rings_choice gc;
+    int rc = adh_rings_choose(&m, ADH_GRID_RELAX, -5e-9, 1, &gc, NULL, 0, NULL);
     ok(rc == ADH_SUCCESS && gc.n == 1000 && isnan(gc.dr) && !gc.graded,
        "Figure 4 relaxation: the automatic grid is the paper's (N = %zu)", gc.n);
     char why[1024];
+    unsigned fix;
     int bad = 0, refused = 0, graded = 0;
     for (double sigma = 2.25; sigma <= 200; sigma *= 1.5) {
         adh_material s = at_sigma(sigma);
         for (int use = ADH_GRID_RELAX; use <= ADH_GRID_STATIC; use++) {
-            rc = adh_grid_choose(&s, (adh_grid_use)use, -5e-9, 1, &gc, why, sizeof why);
-            if (rc == ADH_EGRID && strstr(why, "sigma = ") && strstr(why, "MB") &&
-                (strstr(why, "--force") || (use == ADH_GRID_STATIC && strstr(why, "--mode=relax")))) {
+            rc = adh_rings_choose(&s, (adh_grid_use)use, -5e-9, 1, &gc, why, sizeof why, &fix);
+            /* a refusal names sigma and the memory in quantities (never a
+             * flag), and says what to change as bits for the driver's words */
+            if (rc == ADH_EGRID && strstr(why, "sigma = ") && strstr(why, "MB") && !strstr(why, "--") &&
+                (fix & ADH_FIX_FORCE) && (fix & ADH_FIX_NODES)) {
                 refused++;
                 continue;
             }
@@ -64,8 +69,8 @@ static void check_and_choose(void)
             adh_protocol_settings ps = adh_protocol_settings_default();
             if (rc != ADH_SUCCESS || !g || g->n != n || !r.resolved ||
                 n > (gc.hierarchical ? (size_t)ADH_GRID_NODES_MAX : (size_t)ADH_GRID_MAX_NODES) ||
-                adh_protocol_check(&ps, &s, g, why, sizeof why) != ADH_SUCCESS ||
-                adh_rings_check(g, &s, -5e-9, why, sizeof why) != ADH_SUCCESS) {
+                adh_protocol_check(&ps, &s, g, why, sizeof why, NULL) != ADH_SUCCESS ||
+                adh_rings_check(g, &s, -5e-9, why, sizeof why, NULL) != ADH_SUCCESS) {
                 bad++;
                 printf("# sigma = %.3g use %d: N = %zu, dr = %.3g: %s\n", sigma, use, n, dr, why);
             }
@@ -77,43 +82,44 @@ static void check_and_choose(void)
        "checks, or is refused naming sigma, the memory and what to do (%d not; %d graded, %d refused)", bad, graded, refused);
     /* the uniform grid stays where it resolves with at most the paper's N */
     adh_material mid = at_sigma(15);
-    rc = adh_grid_choose(&mid, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
+    rc = adh_rings_choose(&mid, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why, NULL);
     ok(rc == ADH_SUCCESS && !gc.graded && gc.n <= ADH_GRID_UNIFORM_MAX_NODES,
        "sigma = 15 relaxation: uniform, N = %zu", gc.n);
     adh_material soft22 = at_sigma(22.5);
-    rc = adh_grid_choose(&soft22, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
+    rc = adh_rings_choose(&soft22, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why, NULL);
     ok(rc == ADH_SUCCESS && gc.graded && gc.dr <= 0.45 * adh_edge_zone(&soft22) * (1 + 1e-9) &&
        gc.fine >= adh_rings_contact_estimate(&soft22, -5e-9),
        "sigma = 22.5 relaxation: graded, %zu rings, fine %.3g m to %.3g m (the contact at the turn %.3g m)", gc.n, gc.dr,
        gc.fine, adh_rings_contact_estimate(&soft22, -5e-9));
-    rc = adh_grid_choose(&soft22, ADH_GRID_RELAX, -5e-9, 0, &gc, why, sizeof why);
+    rc = adh_rings_choose(&soft22, ADH_GRID_RELAX, -5e-9, 0, &gc, why, sizeof why, NULL);
     ok(rc == ADH_SUCCESS && !gc.graded, "with the paper's kernel asked for, it stays uniform (N = %zu)", gc.n);
-    rc = adh_grid_choose(&mid, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why);
+    rc = adh_rings_choose(&mid, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why, NULL);
     ok(rc == ADH_SUCCESS && gc.graded && gc.n > ADH_STATIC_EXACT_MAX_NODES && gc.n <= ADH_GRID_STATIC_MAX_NODES &&
            gc.dr <= 0.3 * adh_edge_zone(&mid) * (1 + 1e-9),
        "the static curve at sigma = 15 runs on a resolved graded grid of %zu rings (stepping over lattice folds)",
        gc.n);
     adh_material st75 = at_sigma(75);
-    rc = adh_grid_choose(&st75, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why);
+    rc = adh_rings_choose(&st75, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why, NULL);
     ok(rc == ADH_SUCCESS && gc.graded && gc.hierarchical && gc.n <= ADH_GRID_STATIC_MAX_NODES,
        "the static curve at sigma = 75 runs on a resolved graded grid of %zu rings", gc.n);
     adh_material st120 = at_sigma(120);
-    rc = adh_grid_choose(&st120, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why);
-    ok(rc == ADH_EGRID && strstr(why, "sigma = 120") && strstr(why, "--mode=relax"),
+    rc = adh_rings_choose(&st120, ADH_GRID_STATIC, -5e-9, 1, &gc, why, sizeof why, &fix);
+    ok(rc == ADH_EGRID && strstr(why, "sigma = 120") && strstr(why, "use the relaxation") && (fix & ADH_FIX_MODE),
        "the static curve at sigma = 120 is refused before it starts (%s)", why);
     /* soft contacts as the H^2 operator allows: sigma = 75 runs resolved on
      * graded rings; a dense (uniform) grid there is beyond its budget */
     adh_material soft = at_sigma(75);
-    rc = adh_grid_choose(&soft, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
+    rc = adh_rings_choose(&soft, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why, NULL);
     ok(rc == ADH_SUCCESS && gc.graded && gc.hierarchical && gc.n > ADH_GRID_MAX_NODES && gc.n <= ADH_GRID_NODES_MAX &&
            gc.dr <= 0.45 * adh_edge_zone(&soft) * (1 + 1e-9) && gc.fine >= adh_rings_contact_estimate(&soft, -5e-9),
        "sigma = 75 relaxation: graded, resolved, %zu rings held as H^2", gc.n);
-    rc = adh_grid_choose(&soft, ADH_GRID_RELAX, -5e-9, 0, &gc, why, sizeof why);
-    ok(rc == ADH_EGRID && strstr(why, "sigma = 75") && strstr(why, "dense kernel") && strstr(why, "--force"),
+    rc = adh_rings_choose(&soft, ADH_GRID_RELAX, -5e-9, 0, &gc, why, sizeof why, &fix);
+    ok(rc == ADH_EGRID && strstr(why, "sigma = 75") && strstr(why, "dense kernel") &&
+           fix == (ADH_FIX_NODES | ADH_FIX_SPACING | ADH_FIX_FORCE),
        "with the paper's kernel (uniform, dense) sigma = 75 is refused, naming sigma, the memory and what to do (%s)", why);
     adh_material softer = at_sigma(225);
-    rc = adh_grid_choose(&softer, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why);
-    ok(rc == ADH_EGRID && strstr(why, "sigma = 225") && strstr(why, "H^2 kernel") && strstr(why, "--force"),
+    rc = adh_rings_choose(&softer, ADH_GRID_RELAX, -5e-9, 1, &gc, why, sizeof why, &fix);
+    ok(rc == ADH_EGRID && strstr(why, "sigma = 225") && strstr(why, "H^2 kernel") && (fix & ADH_FIX_FORCE),
        "sigma = 225 needs more rings than the grid limit: refused, naming sigma, the memory and what to do (%s)", why);
 }
 
@@ -134,18 +140,18 @@ static int cycle(double sigma, double x, int statik, double *pulloff, double *hy
         s.h0_start = adh_protocol_auto_start(&m, 0.05e-9);
         s.h0_end = -2 * m.z0;
         adh_static_result res;
-        rc = adh_static_run(g, k, &m, &s, NULL, NULL, &run, &res);
+        rc = adh_runner_static_curve(g, k, &m, &s, NULL, NULL, &run, &res);
         *pulloff = res.pulloff_F;
-        *hyst = adh_static_hysteresis_area(&run, 0.001e-9);
+        *hyst = adh_cycle_static_hysteresis(&run, 0.001e-9);
     } else {
         adh_relax_settings rs = adh_relax_settings_default();
         rs.eps = 1e-12 * sqrt(1000.0 / (double)n);
         adh_protocol_settings ps = adh_protocol_settings_default();
         ps.turns[0] = -2 * m.z0;
-        rc = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, &run);
+        rc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &run);
         const adh_turn_result *t = adh_run_main_turn(&run);
         *pulloff = t ? t->pulloff_F : NAN;
-        *hyst = adh_hysteresis_area(&run);
+        *hyst = adh_cycle_run_hysteresis(&run);
     }
     adh_run_free(&run);
     adh_kernel_free(k);

@@ -37,7 +37,7 @@ int main(void)
     ps.step = 0.25e-9;
     ps.nturns = 1;
     ps.turns[0] = -1e-9;
-    adh_drive *d = adh_drive_alloc(g, k);
+    adh_drive *d = adh_drive_alloc(&adh_rule_relax, g, k);
     adh_run run;
     adh_run_init(&run);
     adh_history *h = adh_history_alloc();

@@ -10,6 +10,7 @@
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "tap.h"
 
 /* Relax at one position, in contact, from the undeformed surfaces down to
@@ -96,7 +97,7 @@ static void same_cycle(void)
         rs.rule = rules[r];
         rs.eps = 2e-12;
         adh_run_init(&run[r]);
-        rc[r] = adh_protocol_run(g, k, &m, &rs, &ps, NULL, NULL, &run[r]);
+        rc[r] = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &run[r]);
     }
     ok(rc[0] == ADH_SUCCESS && rc[1] == ADH_SUCCESS && run[0].nturns == 1 && run[1].nturns == 1,
        "a load/unload cycle succeeds with both rules");

@@ -9,6 +9,7 @@
 #include "adhere/models.h"
 #include "adhere/protocol.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "tap.h"
 
 typedef struct setup {
@@ -37,7 +38,7 @@ static void setup_init(setup *s, double E, size_t n, double eps)
 
 static int setup_run(setup *s)
 {
-    return adh_protocol_run(s->g, s->k, &s->m, &s->rs, &s->ps, NULL, NULL, &s->run);
+    return adh_runner_rule(&adh_rule_relax, s->g, s->k, &s->m, &s->rs, &s->ps, NULL, NULL, &s->run);
 }
 
 static void setup_free(setup *s)

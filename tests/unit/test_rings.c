@@ -8,6 +8,7 @@
 #include "adhere/kernel.h"
 #include "adhere/models.h"
 #include "adhere/rings.h"
+#include "adhere/status.h"
 #include "tap.h"
 
 /* Largest relative error of W p against D(r_n, a) for p = 1 on rings [0, a = edge m]. */
@@ -129,12 +130,21 @@ int main(void)
     char msg[400];
     double fr = adh_rings_fine_radius(g);
     adh_rings_edge_sentence(g, 1.01 * fr, msg, sizeof msg);
-    ok(strstr(msg, "left the graded grid's fine band") && strstr(msg, "--fine-band"),
-       "a contact past the fine band is named so, with what to change: %s", msg);
+    ok(strstr(msg, "left the graded grid's fine band") && strstr(msg, "widen the fine band") && !strstr(msg, "--") &&
+           adh_rings_edge_fix(g, 1.01 * fr) == (ADH_FIX_FINE_BAND | ADH_FIX_TURNS),
+       "a contact past the fine band is named so, with what to change (in quantities, and as the fine band's and "
+       "the turns' bits): %s", msg);
     adh_rings_edge_sentence(g, 0.95 * g->rmax, msg, sizeof msg);
-    ok(strstr(msg, "reached the grid's edge") && strstr(msg, "0.9 Rmax"), "a contact at 0.95 Rmax: %s", msg);
+    ok(strstr(msg, "reached the grid's edge") && strstr(msg, "0.9 Rmax") && strstr(msg, "a larger grid radius") &&
+           adh_rings_edge_fix(g, 0.95 * g->rmax) == ADH_FIX_GRID_RADIUS,
+       "a contact at 0.95 Rmax of a graded grid asks for a larger grid radius: %s", msg);
+    adh_rings_edge_sentence(u, 0.95 * u->rmax, msg, sizeof msg);
+    ok(strstr(msg, "more nodes or a larger spacing") &&
+           adh_rings_edge_fix(u, 0.95 * u->rmax) == (ADH_FIX_NODES | ADH_FIX_SPACING),
+       "a uniform grid's edge asks for more nodes or a larger spacing: %s", msg);
     adh_rings_edge_sentence(u, 0.5 * u->rmax, msg, sizeof msg);
-    ok(strstr(msg, "within the grid") != NULL, "a uniform grid has no band to leave: %s", msg);
+    ok(strstr(msg, "within the grid") != NULL && adh_rings_edge_fix(u, 0.5 * u->rmax) == 0,
+       "a uniform grid has no band to leave: %s", msg);
 
     adh_grid_free(a3), adh_grid_free(a4);
     free(du), free(edge);

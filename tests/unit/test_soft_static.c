@@ -18,7 +18,7 @@
 
 /* The static curve to turn -2 nm on graded rings of fine width dr (the
  * automatic grid's band, growth and Rmax); the result, or rc != 0. */
-static int curve(const adh_material *m, const adh_grid_choice *gc, double dr, adh_static_result *r, size_t *n)
+static int curve(const adh_material *m, const adh_rings_choice *gc, double dr, adh_static_result *r, size_t *n)
 {
     adh_rings_spec rs = { .dr = dr, .fine = gc->fine, .ratio = gc->ratio, .rmax = gc->rmax };
     adh_grid *g = adh_rings_alloc(&rs);
@@ -45,9 +45,9 @@ static void one(double sigma)
 {
     adh_material m = adh_material_default();
     m.E *= adh_material_sigma(&m) / sigma; /* sigma is proportional to 1/E */
-    adh_grid_choice gc;
+    adh_rings_choice gc;
     char why[1024];
-    int rc = adh_grid_choose(&m, ADH_GRID_STATIC, -2e-9, 1, &gc, why, sizeof why);
+    int rc = adh_rings_choose(&m, ADH_GRID_STATIC, -2e-9, 1, &gc, why, sizeof why, NULL);
     if (!ok(rc == ADH_SUCCESS && gc.graded && gc.hierarchical, "sigma = %g: the automatic static grid is graded and H^2",
             sigma))
         return;

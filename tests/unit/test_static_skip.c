@@ -12,6 +12,7 @@
 #include "adhere/maugis.h"
 #include "adhere/static.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "tap.h"
 
 typedef struct curve {
@@ -27,7 +28,7 @@ static curve run_curve(const adh_grid *g, const adh_kernel *k, const adh_materia
     adh_static_settings s = adh_static_settings_default();
     s.h0_end = -2e-9;
     s.lattice_skip = skip;
-    c.rc = adh_static_run(g, k, m, &s, NULL, NULL, &c.run, &c.res);
+    c.rc = adh_runner_static_curve(g, k, m, &s, NULL, NULL, &c.run, &c.res);
     return c;
 }
 

@@ -8,9 +8,11 @@
 
 #include "adhere/static.h"
 #include "adhere/kernel.h"
+#include "adhere/models.h"
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
 #include "adhere/status.h"
+#include "adhere/runner.h"
 #include "tap.h"
 
 /* The static force at h0 on the contact branch: the points after the last
@@ -46,7 +48,7 @@ static gap relax_against(const adh_grid *g, const adh_kernel *k, const adh_mater
     adh_run run;
     adh_run_init(&run);
     gap r = { 0, 0, NAN, NAN, 0 };
-    r.rc = adh_protocol_run(g, k, m, &rs, &ps, NULL, NULL, &run);
+    r.rc = adh_runner_rule(&adh_rule_relax, g, k, m, &rs, &ps, NULL, NULL, &run);
     double sum = 0;
     for (size_t i = 0; i < run.nrows; i++) {
         const adh_obs *o = &run.rows[i];
@@ -80,7 +82,7 @@ int main(void)
     adh_run st;
     adh_run_init(&st);
     adh_static_result sr;
-    int rc = adh_static_run(g, k, &m, &ss, NULL, NULL, &st, &sr);
+    int rc = adh_runner_static_curve(g, k, &m, &ss, NULL, NULL, &st, &sr);
     ok(rc == ADH_SUCCESS && sr.folds >= 2, "static curve to the turn: %s, %zu folds", adh_strerror(rc), sr.folds);
     size_t first = 0;
     for (size_t i = 1; i < st.nrows; i++)
