@@ -61,12 +61,6 @@ static void append(char *buf, size_t len, const char *fmt, ...)
 }
 
 
-
-double adh_plot_radius(const adh_plot_setup *s, size_t n)
-{
-    return s->r ? s->r[n] : ((double)n + 0.5) * s->dr;
-}
-
 /* A scene title makes a two-line heading, which needs more room above. */
 static int has_title(const plotter *pl)
 {
@@ -694,11 +688,11 @@ static int plot_profile(plotter *pl)
         free(pos);
         return -1;
     }
-    double amax = 0, rgrid = adh_plot_radius(s, s->nodes - 1);
+    double amax = 0, rgrid = adh_plot_setup_radius(s, s->nodes - 1);
     for (size_t k = 0; k < nsel; k++) {
         const adh_profile *pr = &run->profiles[sel[k]];
         for (size_t n = 0; n < s->nodes; n++) {
-            double r = adh_plot_radius(s, n);
+            double r = adh_plot_setup_radius(s, n);
             fprintf(f, "%.17g\t%.17g\n", r, pr->h[n]);
             if (pr->h[n] < ADH_CONTACT_FACTOR * s->mat.z0 && r > amax)
                 amax = r;

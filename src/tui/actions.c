@@ -3,7 +3,6 @@
 #include <curses.h>
 
 #include "tui/replay.h"
-#include "tui/tui.h"
 
 /* Several keys per action where terminals differ (arrows vs letters), so a
  * newcomer's first guess works. Order is the order of the help screen. */
