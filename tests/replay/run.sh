@@ -8,6 +8,7 @@
 #   tests/replay/run.sh            run
 #   tests/replay/run.sh --update   rewrite the expected files (then read them!)
 #   cases/NAME.args                extra command-line arguments for the case
+#   cases/NAME.data, NAME.scene    copied beside the script (the args may name them)
 #
 # How a screen matches its golden (screencmp.awk says it in full): text
 # exactly, every number within one unit of its last printed digit, and
@@ -49,6 +50,7 @@ run_case() {
     mkdir -p "$d"
     cp "$here/cases/$1.keys" "$d/"
     [ -f "$here/cases/$1.data" ] && cp "$here/cases/$1.data" "$d/"
+    [ -f "$here/cases/$1.scene" ] && cp "$here/cases/$1.scene" "$d/"
     args=""
     [ -f "$here/cases/$1.args" ] && args=$(cat "$here/cases/$1.args")
     t0=$(date +%s)
@@ -195,6 +197,32 @@ check ":set E 0.1GPa: graded rings, as --batch chooses ($(awk -F'\t' '$1 == "nod
     grep -q "^  N     $(awk -F'\t' '$1 == "nodes" {print $2}' "$SB2/summary.tsv" 2>/dev/null) *grid nodes (rings" "$SO/soft-E.txt"
 check "and resolved" grep -q "resolved" "$SO/soft-E.txt"
 check "the soft contact's rows are --batch -E 0.1GPa's, every one" same_rows "$SO/soft-rows.tsv" "$SB2"
+
+# The protocol is the configuration's whole, on the screen as in --batch:
+# a dwell and profiles from a scene, and (by :set, keys without a field)
+# no unloading, a dwell and profiles.
+PR=$W/protocol
+PB=$work/protocol-batch
+"$bin" --batch "$here/cases/protocol.scene" --nodes=100 --spacing=10nm --force --eps=10pm --step=0.25nm --no-plot \
+    -o "$PB" </dev/null >/dev/null 2>"$PB.err"
+check "dwell and profiles: the screen's rows are --batch's, every one ($(($(rows "$PB/force.tsv" 2>/dev/null | wc -l) - 1)) rows)" \
+    same_rows "$PR/protocol-rows.tsv" "$PB"
+check "each turn's unloading begins after the dwell: 5000 iterations, twice" \
+    [ "$(awk -F'\t' '!/^#/ && $8 == -1 && $7 == 5000' "$PR/protocol-rows.tsv" | wc -l)" = 2 ]
+check "p draws the profiles the scene asked for, as --batch stores them" \
+    sh -c "[ -s '$PB/profiles.tsv' ] && [ \"\$(grep -v '^#' '$PR/adhere-plots/profiles.tsv' | cut -f1-4 | sort -u)\" = \"\$(grep -v '^#' '$PB/profiles.tsv' | cut -f1-4 | sort -u)\" ]"
+LO=$W/loadonly
+LB=$work/loadonly-batch
+printf '[protocol]\nturns = -2nm\nunload = no\ndwell = 3000\n[output]\nprofiles = 2nm, -1nm\n' >"$work/loadonly.scene"
+"$bin" --batch "$work/loadonly.scene" --nodes=100 --spacing=10nm --force --eps=10pm --step=0.25nm --no-plot \
+    -o "$LB" </dev/null >/dev/null 2>"$LB.err"
+check "protocol.unload no: the screen's rows are --batch's, every one ($(($(rows "$LB/force.tsv" 2>/dev/null | wc -l) - 1)) rows)" \
+    same_rows "$LO/loadonly-rows.tsv" "$LB"
+check "all of them loading, the last at the turn" \
+    sh -c "! awk -F'\t' '!/^#/ && \$8 == -1' '$LO/loadonly-rows.tsv' | grep -q . && [ \"\$(tail -1 '$LO/loadonly-rows.tsv' | cut -f1)\" = -2.0000000000000001e-09 ]"
+check "r stops at the turn, and says the protocol ends there" \
+    grep -q "^at the turning point h0 = -2 nm .*the protocol ends here (protocol.unload = no)" "$LO/loadonly-turn.txt"
+check "and r again says it is complete, loading only" grep -q "^the protocol is complete: it loads only" "$LO/loadonly-complete.txt"
 
 HT=$W/handturns
 check "b at turn 1 then r: turn 1 pulls off, and r loads on to turn 2 (never reached yet)" \
