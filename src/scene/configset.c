@@ -232,8 +232,8 @@ static int set_dwell(adh_config *c, const key_def *k, const char *text, char *wh
 
 static int set_jobs(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
-    long n;
-    if (parse_count(text, 1, 64, &n, why, whylen) != 0)
+    long n = 0;
+    if (strcasecmp(text, "auto") != 0 && parse_count(text, 1, 64, &n, why, whylen) != 0)   /* auto: one per core */
         return -1;
     c->sweep.jobs = (int)n;
     return 0;
@@ -365,6 +365,13 @@ static int set_sweep(adh_config *c, const key_def *k, const char *text, char *wh
     adh_sweep *sw = &c->sweep;
     const char *name = name_of(k);
     adh_sweep_kind kind = !strcmp(name, "E") ? ADH_SWEEP_E : !strcmp(name, "sigma") ? ADH_SWEEP_SIGMA : ADH_SWEEP_EPS;
+    if (strcasecmp(text, "none") == 0) {   /* not swept: the sweep of this parameter goes */
+        if (sw->kind == kind) {
+            sw->kind = ADH_SWEEP_NONE;
+            sw->n = 0;
+        }
+        return 0;
+    }
     if (sw->kind != ADH_SWEEP_NONE && sw->kind != kind) {
         snprintf(why, whylen, "'%s' and '%s' both given: a sweep varies one parameter", adh_sweep_name(sw->kind), name);
         return -1;
@@ -490,7 +497,10 @@ static void get_dwell(const adh_config *c, const key_def *k, char *buf, size_t l
 
 static void get_jobs(const adh_config *c, const key_def *k, char *buf, size_t len)
 {
-    snprintf(buf, len, "%d", c->sweep.jobs);
+    if (c->sweep.jobs)
+        snprintf(buf, len, "%d", c->sweep.jobs);
+    else
+        snprintf(buf, len, "auto");
 }
 
 static void get_kernel(const adh_config *c, const key_def *k, char *buf, size_t len)
