@@ -654,24 +654,79 @@ static void toggle_mode(tui *t)
         say(t, 0, "relaxation: f steps the spheres together and relaxes, r runs to the turn; m: static");
 }
 
+/* A key on the help screen: PgUp/PgDn scroll, any other returns. */
+static int help_key(tui *t, int key)
+{
+    if (key == KEY_NPAGE || key == KEY_PPAGE) {
+        int page = LINES - 2 > 1 ? LINES - 2 : 1;
+        t->view.help_top += key == KEY_NPAGE ? page : -page;
+        if (t->view.help_top > t->help_lines - page)
+            t->view.help_top = t->help_lines - page;
+        if (t->view.help_top < 0)
+            t->view.help_top = 0;
+    } else {
+        t->help = 0;
+    }
+    return TODO_REDRAW;
+}
+
+/* r: static mode follows the curve to its end; relaxation takes the
+ * protocol's next step, from wherever the path is (the drive knows whether
+ * it loads or unloads). What must be redone: a solve, or nothing. */
+static int run_key(tui *t)
+{
+    char why[512];
+    t->pending = 0;
+    if (is_static(t)) {
+        char end[64];
+        fmtq(tui_sim_curve_end(&t->sim), ADH_Q_LENGTH, end, sizeof end);
+        t->run_dir = 1;
+        say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
+        return TODO_RESOLVE;
+    }
+    size_t k;
+    int next = tui_sim_next(&t->sim, &k);
+    if (next == 0) {
+        tui_sim_why_done(&t->sim, why, sizeof why);
+        say(t, 0, "%s", why);
+        return TODO_NONE;
+    }
+    t->run_dir = 1;
+    char tname[128];
+    if (next < 0)
+        tui_sim_turn_name(&t->sim, k - 1, tname, sizeof tname);
+    if (next < 0 && strcmp(tname, "the turn") != 0)
+        say(t, 0, "unloading %s until pull-off; any key pauses", tname);
+    else if (next > 0 && nturns(t) > 1 && k > 0)
+        say(t, 0, "loading to turn %zu of %zu; any key pauses", k, nturns(t));
+    else
+        say(t, 0, "%s", next < 0 ? "unloading until pull-off; any key pauses"
+                                 : "loading to the turning point; any key pauses");
+    return TODO_RESOLVE;
+}
+
+/* + and -: the selected field times f (a new turn leaves a run going). */
+static void scale_key(tui *t, double f)
+{
+    char why[512];
+    tui_param p = (tui_param)t->view.sel;
+    if (p != P_TURN) {
+        tui_sim_cancel(&t->sim);
+        stop_all(t);
+    }
+    if (tui_sim_scale(&t->sim, p, f, why, sizeof why) != 0)
+        say(t, 1, "%s; nothing changed", why);
+    else
+        key_changed(t, tui_params[p].key);
+}
+
 static int handle_key(tui *t, int key)
 {
-    char why[512], name[32];
+    char name[32];
     if (key == KEY_RESIZE)
         return TODO_REPAINT | TODO_REDRAW;
-    if (t->help) {
-        if (key == KEY_NPAGE || key == KEY_PPAGE) {
-            int page = LINES - 2 > 1 ? LINES - 2 : 1;
-            t->view.help_top += key == KEY_NPAGE ? page : -page;
-            if (t->view.help_top > t->help_lines - page)
-                t->view.help_top = t->help_lines - page;
-            if (t->view.help_top < 0)
-                t->view.help_top = 0;
-        } else {
-            t->help = 0;
-        }
-        return TODO_REDRAW;
-    }
+    if (t->help)
+        return help_key(t, key);
     if (t->editing)
         return edit_key(t, key);
     if (key >= '0' && key <= '9' && (key != '0' || t->count > 0)) {
@@ -696,40 +751,7 @@ static int handle_key(tui *t, int key)
         t->run_dir = 0;
         todo |= TODO_RESOLVE;
         break;
-    case ACT_RUN: {
-        if (is_static(t)) {
-            char end[64];
-            fmtq(tui_sim_curve_end(&t->sim), ADH_Q_LENGTH, end, sizeof end);
-            t->pending = 0;
-            t->run_dir = 1;
-            say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
-            todo |= TODO_RESOLVE;
-            break;
-        }
-        /* the protocol's next step, from wherever the path is: the drive
-         * knows whether it loads or unloads */
-        size_t k;
-        int next = tui_sim_next(&t->sim, &k);
-        t->pending = 0;
-        if (next == 0) {
-            tui_sim_why_done(&t->sim, why, sizeof why);
-            say(t, 0, "%s", why);
-            break;
-        }
-        t->run_dir = 1;
-        char tname[128];
-        if (next < 0)
-            tui_sim_turn_name(&t->sim, k - 1, tname, sizeof tname);
-        if (next < 0 && strcmp(tname, "the turn") != 0)
-            say(t, 0, "unloading %s until pull-off; any key pauses", tname);
-        else if (next > 0 && nturns(t) > 1 && k > 0)
-            say(t, 0, "loading to turn %zu of %zu; any key pauses", k, nturns(t));
-        else
-            say(t, 0, "%s", next < 0 ? "unloading until pull-off; any key pauses"
-                                     : "loading to the turning point; any key pauses");
-        todo |= TODO_RESOLVE;
-        break;
-    }
+    case ACT_RUN: todo |= run_key(t); break;
     case ACT_UNDO: move_history(t, 0, n); break;
     case ACT_REDO: move_history(t, 1, n); break;
     case ACT_RESET: {
@@ -753,19 +775,7 @@ static int handle_key(tui *t, int key)
         t->textlen = 0;
         break;
     case ACT_SCALE_UP:
-    case ACT_SCALE_DOWN: {
-        tui_param p = (tui_param)t->view.sel;
-        double f = pow(a == ACT_SCALE_UP ? 2.0 : 0.5, (double)n);
-        if (p != P_TURN) {
-            tui_sim_cancel(&t->sim);
-            stop_all(t);
-        }
-        if (tui_sim_scale(&t->sim, p, f, why, sizeof why) != 0)
-            say(t, 1, "%s; nothing changed", why);
-        else
-            key_changed(t, tui_params[p].key);
-        break;
-    }
+    case ACT_SCALE_DOWN: scale_key(t, pow(a == ACT_SCALE_UP ? 2.0 : 0.5, (double)n)); break;
     case ACT_PLOTS: todo |= TODO_REPLOT; break;
     case ACT_HELP:
         t->help = 1;
