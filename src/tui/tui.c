@@ -492,9 +492,9 @@ static int run_command(tui *t, const tui_replay_item *it, char *why, size_t whyl
         int p = tui_sim_param_lookup(it->name);
         const char *key = p >= 0 ? tui_params[p].key : it->name;
         if (p < 0 && !adh_config_key_find(key)) {
-            snprintf(why, whylen, "unknown parameter '%s' for set; the names are E A z0 R eps d N spacing turn, "
-                     "or a key of the run as a scene writes it, section.name (protocol.dwell, grid.fine_band)",
-                     it->name);
+            snprintf(why, whylen, "unknown parameter '%s' for set: a key of the run as a scene writes it, "
+                     "section.name (protocol.dwell, grid.fine_band), or a field; the names are E A z0 R eps d N "
+                     "spacing turn", it->name);
             return -1;
         }
         if (strcmp(key, "protocol.turns") != 0) {   /* a new turn leaves a run going */
