@@ -164,6 +164,56 @@ static int parse_list(const char *text, adh_quantity q, int allow_none, double *
     return 0;
 }
 
+/* Appends text to buf (holding o characters of len), whole or cut at the
+ * end; the new length. */
+static size_t append(char *buf, size_t len, size_t o, const char *text)
+{
+    size_t n = strlen(text);
+    if (o + n >= len)
+        n = o + 1 < len ? len - 1 - o : 0;
+    memcpy(buf + o, text, n);
+    buf[o + n] = '\0';
+    return o + n;
+}
+
+/* A word of a short list, each naming a value. */
+typedef struct word {
+    const char *name;
+    int value;
+} word;
+
+static const word modes[] = { { "relax", ADH_MODE_RELAX }, { "static", ADH_MODE_STATIC }, { "rigid", ADH_MODE_RIGID }, { NULL, 0 } };
+static const word grids[] = { { "uniform", 0 }, { "graded", 1 }, { NULL, 0 } };
+static const word sweep_plots[] = { { "jump", ADH_SWEEP_PLOT_JUMP }, { "force", ADH_SWEEP_PLOT_FORCE },
+                                    { "none", ADH_SWEEP_PLOT_NONE }, { NULL, 0 } };
+
+/* The value text names in list, or -1 with "'text' is not a WHAT: use A, B
+ * or C". */
+static int parse_word(const word *list, const char *what, const char *text, int *value, char *why, size_t whylen)
+{
+    size_t n = 0;
+    for (; list[n].name; n++)
+        if (strcmp(text, list[n].name) == 0) {
+            *value = list[n].value;
+            return 0;
+        }
+    snprintf(why, whylen, "'%.100s' is not a %s: use", text, what);
+    size_t o = strlen(why);
+    for (size_t i = 0; i < n; i++) {
+        o = append(why, whylen, o, i == 0 ? " " : i + 1 == n ? " or " : ", ");
+        o = append(why, whylen, o, list[i].name);
+    }
+    return -1;
+}
+
+static const char *word_name(const word *list, int value)
+{
+    for (; list->name; list++)
+        if (list->value == value)
+            return list->name;
+    return "";
+}
+
 /* A whole number; its limits are the run's check's (adh_drive_check). */
 static int parse_count(const char *text, long lo, long hi, long *n, char *why, size_t whylen)
 {
@@ -186,13 +236,10 @@ static int set_title(adh_config *c, const key_def *k, const char *text, char *wh
 
 static int set_mode(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
-    if (!strcmp(text, "relax")) c->spec.mode = ADH_MODE_RELAX;
-    else if (!strcmp(text, "static")) c->spec.mode = ADH_MODE_STATIC;
-    else if (!strcmp(text, "rigid")) c->spec.mode = ADH_MODE_RIGID;
-    else {
-        snprintf(why, whylen, "'%s' is not a mode: use relax, static or rigid", text);
+    int v;
+    if (parse_word(modes, "mode", text, &v, why, whylen) != 0)
         return -1;
-    }
+    c->spec.mode = (adh_mode)v;
     return 0;
 }
 
@@ -251,12 +298,7 @@ static int set_kernel(adh_config *c, const key_def *k, const char *text, char *w
 
 static int set_grid_kind(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
-    if (strcmp(text, "uniform") != 0 && strcmp(text, "graded") != 0) {
-        snprintf(why, whylen, "'%s' is not a grid: use uniform or graded", text);
-        return -1;
-    }
-    c->spec.grid.asked.graded = strcmp(text, "graded") == 0;
-    return 0;
+    return parse_word(grids, "grid", text, &c->spec.grid.asked.graded, why, whylen);
 }
 
 static int set_growth(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
@@ -393,13 +435,10 @@ static int set_sweep(adh_config *c, const key_def *k, const char *text, char *wh
 
 static int set_sweep_plot(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
-    if (!strcmp(text, "jump")) c->sweep.plot = ADH_SWEEP_PLOT_JUMP;
-    else if (!strcmp(text, "force")) c->sweep.plot = ADH_SWEEP_PLOT_FORCE;
-    else if (!strcmp(text, "none")) c->sweep.plot = ADH_SWEEP_PLOT_NONE;
-    else {
-        snprintf(why, whylen, "'%s' is not a sweep plot: use jump, force or none", text);
+    int v;
+    if (parse_word(sweep_plots, "sweep plot", text, &v, why, whylen) != 0)
         return -1;
-    }
+    c->sweep.plot = (adh_sweep_plot)v;
     return 0;
 }
 
@@ -419,17 +458,6 @@ static int set_size(adh_config *c, const key_def *k, const char *text, char *why
 
 /* ---- the values as text --------------------------------------------------- */
 
-/* Appends text to buf (holding o characters of len), whole or cut at the
- * end; the new length. */
-static size_t append(char *buf, size_t len, size_t o, const char *text)
-{
-    size_t n = strlen(text);
-    if (o + n >= len)
-        n = o + 1 < len ? len - 1 - o : 0;
-    memcpy(buf + o, text, n);
-    buf[o + n] = '\0';
-    return o + n;
-}
 
 /* Exact: %.17g reads back to the same double. */
 static void get_number(double v, char *buf, size_t len)
@@ -473,8 +501,7 @@ static void get_title(const adh_config *c, const key_def *k, char *buf, size_t l
 
 static void get_mode(const adh_config *c, const key_def *k, char *buf, size_t len)
 {
-    adh_mode m = c->spec.mode;
-    snprintf(buf, len, "%s", m == ADH_MODE_STATIC ? "static" : m == ADH_MODE_RIGID ? "rigid" : "relax");
+    snprintf(buf, len, "%s", word_name(modes, (int)c->spec.mode));
 }
 
 static void get_nodes(const adh_config *c, const key_def *k, char *buf, size_t len)
@@ -510,7 +537,7 @@ static void get_kernel(const adh_config *c, const key_def *k, char *buf, size_t 
 
 static void get_grid_kind(const adh_config *c, const key_def *k, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s", c->spec.grid.asked.graded ? "graded" : "uniform");
+    snprintf(buf, len, "%s", word_name(grids, c->spec.grid.asked.graded));
 }
 
 static void get_growth(const adh_config *c, const key_def *k, char *buf, size_t len)
@@ -563,8 +590,7 @@ static void get_sweep(const adh_config *c, const key_def *k, char *buf, size_t l
 
 static void get_sweep_plot(const adh_config *c, const key_def *k, char *buf, size_t len)
 {
-    adh_sweep_plot p = c->sweep.plot;
-    snprintf(buf, len, "%s", p == ADH_SWEEP_PLOT_JUMP ? "jump" : p == ADH_SWEEP_PLOT_FORCE ? "force" : "none");
+    snprintf(buf, len, "%s", word_name(sweep_plots, (int)c->sweep.plot));
 }
 
 static void get_size(const adh_config *c, const key_def *k, char *buf, size_t len)
@@ -709,7 +735,7 @@ void adh_config_reword(const char *in, adh_config_say say, void *ctx, char *out,
             out[o++] = *p++;
             continue;
         }
-        char value[128] = "", word[256];
+        char value[128] = "", said[256];
         const char *q = p + klen;
         int assigned = strncmp(q, " = ", 3) == 0;
         if (assigned) {
@@ -726,8 +752,8 @@ void adh_config_reword(const char *in, adh_config_say say, void *ctx, char *out,
             if (!assigned)
                 q = p + klen;
         }
-        say(k->pub.key, assigned ? value : NULL, word, sizeof word, ctx);
-        o = append(out, len, o, word);
+        say(k->pub.key, assigned ? value : NULL, said, sizeof said, ctx);
+        o = append(out, len, o, said);
         p = q;
     }
     out[o] = '\0';
