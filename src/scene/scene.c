@@ -54,6 +54,14 @@ static int kernel_fits(scene_parse *sp, const char *name, const char *value)
                 "paper's kernel assumes equal cells; use kernel = ring", name, value);
 }
 
+/* The configuration's words in a scene's: a key is the name under its
+ * section ("kernel", "kernel = ring"). */
+static void say_key(const char *key, const char *value, char *buf, size_t len, void *ctx)
+{
+    const char *dot = strchr(key, '.');
+    snprintf(buf, len, "%s%s%s", dot ? dot + 1 : key, value ? " = " : "", value ? value : "");
+}
+
 /* Each key = value through adh_config_set, as the flags and the TUI set
  * them; the scene adds what is about a file: sections, duplicates, an
  * explicit unload over the one turns imply, kernel and grid given together. */
@@ -75,8 +83,11 @@ static int handler(void *user, const char *section, const char *name, const char
         snprintf(sp->seen[sp->nseen++], sizeof sp->seen[0], "%s", full);
 
     int unload = c->spec.proto.unload;
-    if (adh_config_set(c, full, value, msg, sizeof msg) != 0)
-        return fail(sp, "%s: %s", name, msg);
+    if (adh_config_set(c, full, value, msg, sizeof msg) != 0) {
+        char words[400];
+        adh_config_reword(msg, say_key, NULL, words, sizeof words);
+        return fail(sp, "%s: %s", name, words);
+    }
     if (!strcmp(full, "protocol.turns") && sp->unload_given)
         c->spec.proto.unload = unload;
     sp->unload_given |= !strcmp(full, "protocol.unload");
