@@ -103,13 +103,13 @@ static void parts(void)
     /* a soft material: the grid follows it, the grid asked for stays */
     adh_config_default(&c);
     char why[512];
-    ok(set(&c, "material.E", "0.1GPa") == 0 && adh_config_grid(&c, why, sizeof why) == 0 && c.spec.grid.chosen &&
+    ok(set(&c, "material.E", "0.1GPa") == 0 && adh_config_grid(&c, why, sizeof why, NULL) == 0 && c.spec.grid.chosen &&
        c.spec.grid.use.graded && c.spec.grid.use.kernel == ADH_KERNEL_RING && !c.spec.grid.asked.graded &&
        c.spec.grid.asked.nodes == 1000 && isnan(c.spec.grid.asked.spacing),
        "E = 0.1 GPa: graded rings chosen (%zu), the uniform 1000 nodes asked for kept", c.spec.grid.use.nodes);
-    ok(set(&c, "material.E", "0.3GPa") == 0 && adh_config_grid(&c, why, sizeof why) == 0 && !c.spec.grid.use.graded &&
+    ok(set(&c, "material.E", "0.3GPa") == 0 && adh_config_grid(&c, why, sizeof why, NULL) == 0 && !c.spec.grid.use.graded &&
        c.spec.grid.use.nodes == 1000, "back at 0.3 GPa: the paper's 1000 uniform nodes again (chosen from what was asked)");
-    ok(set(&c, "grid.nodes", "300") == 0 && set(&c, "material.E", "0.1GPa") == 0 && adh_config_grid(&c, why, sizeof why) == 0 &&
+    ok(set(&c, "grid.nodes", "300") == 0 && set(&c, "material.E", "0.1GPa") == 0 && adh_config_grid(&c, why, sizeof why, NULL) == 0 &&
        !c.spec.grid.chosen && c.spec.grid.use.nodes == 300 && !c.spec.grid.use.graded,
        "N given: the grid is the one asked for, whatever the material");
     ok(set(&c, "grid.nodes", "auto") == 0 && adh_config_grid_auto(&c.spec), "N = auto: it follows the material again");
