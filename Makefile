@@ -43,7 +43,9 @@ CORE_OBJ  = $(patsubst %.c,$(BUILD)/%.o,$(wildcard src/core/*.c))
 SCENE_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(wildcard src/scene/*.c))
 PLOT_OBJ  = $(patsubst %.c,$(BUILD)/%.o,$(wildcard src/plot/*.c))
 LIB_OBJ  = $(CORE_OBJ) $(SCENE_OBJ) $(PLOT_OBJ)
-APP_SRC  = $(wildcard src/cli/*.c src/tui/*.c)
+# The drivers (cli, tui) and their small shared helpers (util: the test
+# readiness signal) link into the program.
+APP_SRC  = $(wildcard src/cli/*.c src/tui/*.c src/util/*.c)
 APP_OBJ  = $(APP_SRC:%.c=$(BUILD)/%.o)
 LIB      = $(BUILD)/libadhere.a
 SCENE_LIB = $(BUILD)/libadhere-scene.a

@@ -20,7 +20,7 @@
 #include "cli/advice.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
-#include "cli/ready.h"
+#include "util/ready.h"
 #include "cli/progress.h"
 #include "cli/static.h"
 #include "cli/sweep.h"
@@ -28,13 +28,13 @@
 #include "plot/rows.h"
 #include "plot/outdir.h"
 #include "adhere/units.h"
-#include "cli/plotsetup.h"
+#include "plot/setup.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
 
 
 typedef struct batch_ctx {
-    const adh_config *cfg;
+    const adh_run_spec *spec;
     FILE *stream;           /* force rows as they come (no --out), or NULL */
     int progress;           /* draw a progress line on stderr */
     size_t total;           /* the plan's steps back to the start (unloading ends
@@ -56,7 +56,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
             char pr[64];
             ctx->last_draw = t;
             cli_progress_text(run->nrows, ctx->total, t - ctx->t0, pr, sizeof pr);
-            if (ctx->total && o->branch < 0 && o->h0 > run->start + 1e-6 * ctx->cfg->proto.step)
+            if (ctx->total && o->branch < 0 && o->h0 > run->start + 1e-6 * ctx->spec->proto.step)
                 /* unloading on past the start, still in contact: the plan's total does not count it */
                 fprintf(stderr, "\r  unloading step %zu, past the start%s  h0 %+8.3f nm  F %+10.4g uN ", run->nrows,
                         o->a > 0 ? ", still in contact" : "", o->h0 * 1e9, o->F * 1e6);
@@ -68,25 +68,26 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
         }
     }
     /* the loading row at the deepest turn: the dwell comes next */
-    if (ctx->cfg->proto.dwell && o->path == 0 && o->branch > 0 && ctx->cfg->mode == ADH_MODE_RELAX) {
-        double deepest = adh_protocol_deepest_turn(&ctx->cfg->proto);
-        if (fabs(o->h0 - deepest) < 1e-6 * ctx->cfg->proto.step)
-            cli_ready_phase("dwell");
+    const adh_run_spec *spec = ctx->spec;
+    if (spec->proto.dwell && o->path == 0 && o->branch > 0 && spec->mode == ADH_MODE_RELAX) {
+        double deepest = adh_protocol_deepest_turn(&spec->proto);
+        if (fabs(o->h0 - deepest) < 1e-6 * spec->proto.step)
+            adh_ready_phase("dwell");
     }
     return cli_interrupt_step(o, run, NULL);
 }
 
 /* The closing line: how long, what the cycle measured, where it went. */
-static void closing_line(const adh_config *cfg, const adh_run *run, const adh_static_result *sres,
+static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh_static_result *sres,
                          double seconds, const char *out, const char *tables, const char *plots)
 {
     char t[32], F[64] = "", in[64] = "", jo[64] = "", why[512];
     double pull = NAN, jin = run->jump_in_h0, jout = NAN;
     adh_derived d;
-    adh_material_derive(&cfg->mat, &d);
-    if (cfg->mode != ADH_MODE_RIGID && !adh_run_touched(run, d.h_star, why, sizeof why)) {
+    adh_material_derive(&spec->mat, &d);
+    if (spec->mode != ADH_MODE_RIGID && !adh_run_touched(run, d.h_star, why, sizeof why)) {
         /* no contact: the lowest force is only the force at the turn */
-    } else if (cfg->mode == ADH_MODE_STATIC) {
+    } else if (spec->mode == ADH_MODE_STATIC) {
         pull = sres->pulloff_F;
         jin = sres->jump_in_h0;
         jout = sres->jump_out_h0;
@@ -115,15 +116,19 @@ static void closing_line(const adh_config *cfg, const adh_run *run, const adh_st
 static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
 {
     const adh_config *cfg = &cli->cfg;
+    /* the one run: the configuration's, with the protocol every driver steps */
+    adh_run_spec spec_;
+    adh_config_sweep_run(cfg, 0, &spec_);
+    const adh_run_spec *spec = &spec_;
     char why[1024];
     const char *out = od ? adh_outdir_path(od) : NULL;
     /* Rigid spheres need eq 22 alone: no grid, no kernel. */
-    int rigid = cfg->mode == ADH_MODE_RIGID;
-    adh_grid *g = rigid ? NULL : adh_config_grid_alloc(cfg);
+    int rigid = spec->mode == ADH_MODE_RIGID;
+    adh_grid *g = rigid ? NULL : adh_config_grid_alloc(spec);
     /* --force on a grid coarser than the resolved limit: said even with -q */
     if (!rigid) {
         adh_grid_report gr;
-        adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, adh_config_spacing(cfg), &gr);
+        adh_grid_check(&spec->mat, adh_config_grid_use(spec), spec->grid.use.nodes, adh_config_spacing(spec), &gr);
         if (!gr.resolved) {
             adh_grid_unresolved_sentence(&gr, why, sizeof why);
             fprintf(stderr, "adhere: warning: %s (--force; summary.tsv: resolved 0)\n", why);
@@ -133,14 +138,14 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     cli_interrupt_catch();
     int kst = ADH_ENOMEM;
     if (g)
-        cli_ready_phase("kernel");
-    adh_kernel *k = g ? adh_config_kernel_alloc(cfg, g, &kst) : NULL;
+        adh_ready_phase("kernel");
+    adh_kernel *k = g ? adh_config_kernel_alloc(spec, g, &kst) : NULL;
     if (!rigid && !k) {
         if (kst == ADH_EINTR)
             fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
-                    cli_interrupt_signal(), cfg->nodes);
+                    cli_interrupt_signal(), spec->grid.use.nodes);
         else
-            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
+            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : spec->grid.use.nodes);
         cli_interrupt_release();
         adh_grid_free(g);
         return kst == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
@@ -148,7 +153,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
 
     adh_plan plan;
     adh_plan_make(cfg, &plan);
-    batch_ctx ctx = { cfg, out ? NULL : stdout, !cfg->quiet && isatty(2),
+    batch_ctx ctx = { spec, out ? NULL : stdout, !cfg->output.quiet && isatty(2),
                       plan.static_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
     if (ctx.stream) {
         fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
@@ -157,18 +162,18 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     adh_run run;
     adh_run_init(&run);
     adh_static_result sres;
-    cli_ready_phase(rigid ? "rigid" : cfg->mode == ADH_MODE_STATIC ? "static" : "relax");
-    int rc = rigid ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &cfg->mat, NULL, &cfg->proto, on_step, &ctx, &run)
-           : cfg->mode == ADH_MODE_STATIC ? cli_static_run(cfg, g, k, on_step, &ctx, &run, &sres)
-           : adh_runner_rule(&adh_rule_relax, g, k, &cfg->mat, &cfg->relax, &cfg->proto, on_step, &ctx, &run);
+    adh_ready_phase(rigid ? "rigid" : spec->mode == ADH_MODE_STATIC ? "static" : "relax");
+    int rc = rigid ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &spec->mat, NULL, &spec->proto, on_step, &ctx, &run)
+           : spec->mode == ADH_MODE_STATIC ? cli_static_run(spec, g, k, on_step, &ctx, &run, &sres)
+           : adh_runner_rule(&adh_rule_relax, g, k, &spec->mat, &spec->relax, &spec->proto, on_step, &ctx, &run);
     /* --reference=static: the equilibrium curve beside the relaxation run. */
     adh_run ref;
     adh_run_init(&ref);
     adh_static_result rres;
-    int want_ref = cli->reference[0] && cfg->mode == ADH_MODE_RELAX && rc == ADH_SUCCESS && !run.interrupted;
+    int want_ref = cli->reference[0] && spec->mode == ADH_MODE_RELAX && rc == ADH_SUCCESS && !run.interrupted;
     if (want_ref) {
-        cli_ready_phase("reference");
-        int rrc = cli_static_run(cfg, g, k, NULL, NULL, &ref, &rres);
+        adh_ready_phase("reference");
+        int rrc = cli_static_run(spec, g, k, NULL, NULL, &ref, &rres);
         if (rrc != ADH_SUCCESS && !ref.interrupted) {
             fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(ref.status));
             want_ref = 0;
@@ -201,24 +206,24 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
         fprintf(stderr, "adhere: %s\n", note);
     char sep[512];
     adh_derived der;
-    adh_material_derive(&cfg->mat, &der);
+    adh_material_derive(&spec->mat, &der);
     int touched = rigid || adh_run_touched(&run, der.h_star, sep, sizeof sep);
     if (status == CLI_EXIT_OK && (!touched || !adh_run_separated(&run, sep, sizeof sep)))
         fprintf(stderr, "adhere: incomplete: %s (summary.tsv: complete 0)\n", sep);
     /* Steps at the cap change what the numbers mean: said even under -q, and
      * the run's status, unless --allow-unconverged asked for them. */
     int unconverged = run.unconverged && status == CLI_EXIT_OK;
-    if (run.unconverged && (!cfg->allow_unconverged || !cfg->quiet))
+    if (run.unconverged && (!cfg->output.allow_unconverged || !cfg->output.quiet))
         fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0%s\n",
-                run.unconverged, run.nrows, cfg->relax.max_iter, cfg->relax.eps,
-                cfg->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
-    if (unconverged && !cfg->allow_unconverged)
+                run.unconverged, run.nrows, spec->relax.max_iter, spec->relax.eps,
+                cfg->output.allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
+    if (unconverged && !cfg->output.allow_unconverged)
         status = CLI_EXIT_SOLVER;
 
     char keynames[2 * CLI_TABLES_STATIC_KEYS][32];
     cli_tables_extra extra[2 * CLI_TABLES_STATIC_KEYS];
     size_t nextra = 0;
-    if (cfg->mode == ADH_MODE_STATIC)
+    if (spec->mode == ADH_MODE_STATIC)
         nextra += cli_tables_static_keys(&sres, "", keynames, extra);
     if (want_ref)
         nextra += cli_tables_static_keys(&rres, "static_", keynames + nextra, extra + nextra);
@@ -228,8 +233,8 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
         status = CLI_EXIT_USAGE;
     }
     int partial = note[0] != '\0';
-    cli_tables tables = { cfg, &run, extra, nextra, partial, note, NULL, ref.interrupted ? "interrupted" : NULL };
-    cli_tables ref_tables = { cfg, &ref, NULL, 0, ref.interrupted, note, NULL, NULL };
+    cli_tables tables = { cfg, spec, &run, extra, nextra, partial, note, NULL, ref.interrupted ? "interrupted" : NULL };
+    cli_tables ref_tables = { cfg, spec, &ref, NULL, 0, ref.interrupted, note, NULL, NULL };
     if (ctx.stream && tables.partial)
         fprintf(ctx.stream, "# PARTIAL: %s\n", note);
     if (out) {
@@ -256,9 +261,9 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
              * here is still caught: gnuplot finishes its file, the
              * temporaries go, and the exit says interrupted. */
             char msg[1024] = "", missing[256] = "", fig[1024] = "", plots[2100] = "";
-            cli_ready_phase("plot");
+            adh_ready_phase("plot");
             adh_plot_setup ps;
-            cli_plotsetup_fill(cfg, g, &ps);
+            adh_plot_setup_fill(cfg, spec, g, &ps);
             int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, od, msg, sizeof msg, missing,
                                       sizeof missing);
             if (prc != 0) {
@@ -268,12 +273,12 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
             cli_tables_names_add(unwritten, sizeof unwritten, missing);
             /* the scene figures (Figure 1 inset, Figure 2) when asked */
             if (!cli_interrupt_signal() &&
-                cli_figures_run(cfg, &run, od, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
+                cli_figures_run(cfg, spec, &run, od, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
                 fprintf(stderr, "adhere: plots not written: %s\n", fig);
                 if (status == CLI_EXIT_OK)
                     status = CLI_EXIT_PLOT;
             }
-            if (status == CLI_EXIT_OK && !cfg->quiet) {
+            if (status == CLI_EXIT_OK && !cfg->output.quiet) {
                 char tables_[128];
                 snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s", run.nturns ? ", turns.tsv" : "",
                          want_ref ? ", static.tsv" : "");
@@ -284,7 +289,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
                              fig, in);
                 else if (fig[0])
                     snprintf(plots, sizeof plots, "wrote %s in %.1000s", fig, out);
-                closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, out, tables_, plots);
+                closing_line(spec, &run, &sres, adh_clock_seconds() - t_start, out, tables_, plots);
             }
         }
         tables.unwritten = unwritten;
@@ -294,8 +299,8 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
             fprintf(stderr, "adhere: %s\n", why);
             status = CLI_EXIT_USAGE;
         }
-    } else if (status == CLI_EXIT_OK && !cfg->quiet) {
-        closing_line(cfg, &run, &sres, adh_clock_seconds() - t_start, NULL, "", "");
+    } else if (status == CLI_EXIT_OK && !cfg->output.quiet) {
+        closing_line(spec, &run, &sres, adh_clock_seconds() - t_start, NULL, "", "");
     }
     cli_interrupt_release();
     if (cli_interrupt_signal() && !partial) {
@@ -317,8 +322,8 @@ int cli_batch_main(const cli_options *cli)
     adh_outdir *od = NULL;
     /* a directory never mixes two runs: the earlier run's files go first,
      * and another's files under adhere's names refuse it */
-    if (cfg->out_dir[0] &&
-        !(od = adh_outdir_open(cfg->out_dir, cfg->overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
+    if (cfg->output.dir[0] &&
+        !(od = adh_outdir_open(cfg->output.dir, cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
         fprintf(stderr, "adhere: %s\n", why);
         return CLI_EXIT_USAGE;
     }

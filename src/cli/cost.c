@@ -18,9 +18,9 @@
 #include "adhere/grid.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
-#include "cli/batch.h"
+#include "cli/exit.h"
 #include "cli/interrupt.h"
-#include "cli/ready.h"
+#include "util/ready.h"
 #include "cli/progress.h"
 #include "cli/static.h"
 #include "cli/tables.h"
@@ -90,14 +90,15 @@ static void *worker(void *arg)
             break;
         cost_run *cr = &job->runs[i];
         cr->ran = 1;
-        adh_config c = *job->cfg;
-        c.nodes = cr->nodes;
+        adh_run_spec c;
+        adh_config_sweep_run(job->cfg, 0, &c);
+        c.grid.use.nodes = cr->nodes;
         c.relax.eps = cr->eps;
-        c.kernel = cr->kernel;
+        c.grid.use.kernel = cr->kernel;
         double t0 = adh_clock_seconds();
-        adh_grid *g = adh_grid_alloc(c.nodes, adh_config_spacing(&c));
+        adh_grid *g = adh_grid_alloc(c.grid.use.nodes, adh_config_spacing(&c));
         int kst = ADH_ENOMEM;
-        adh_kernel *k = g ? adh_kernel_alloc_cancel(g, c.kernel, c.relax.cancel, &kst) : NULL;
+        adh_kernel *k = g ? adh_kernel_alloc_cancel(g, c.grid.use.kernel, c.relax.cancel, &kst) : NULL;
         cr->kernel_seconds = adh_clock_seconds() - t0;
         adh_run run;
         adh_run_init(&run);
@@ -112,7 +113,7 @@ static void *worker(void *arg)
         adh_grid_free(g);
         pthread_mutex_lock(&job->lock);
         job->done++;
-        if (!job->cfg->quiet) {
+        if (!job->cfg->output.quiet) {
             char pr[64];
             cli_progress_text(job->done, job->n, adh_clock_seconds() - job->t0, pr, sizeof pr);
             fprintf(stderr, "adhere: cost run %zu of %zu (N = %zu, %s, eps = %g pm): %.3g s, %zu iterations; "
@@ -182,7 +183,7 @@ static int write_cost(FILE *f, const void *ctx)
 {
     const cost_job *job = ctx;
     char rule[64];
-    adh_mix_rule_describe(&job->cfg->relax, rule, sizeof rule);
+    adh_mix_rule_describe(&job->cfg->spec.relax, rule, sizeof rule);
     fprintf(f, "# adhere %s cost report: %ld cores, BLAS %s, mixing %s; errors are relative to the most accurate run (err_*) and the static curve (static_err_*)\n",
             ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), blas_config(), rule);
     if (job->partial[0])
@@ -207,7 +208,8 @@ static int write_cost(FILE *f, const void *ctx)
 static int plot_cost(const cost_job *job, adh_outdir *out, char *msg, size_t len)
 {
     adh_session ses;
-    if (adh_session_open(&ses, out, "gnuplot.log", job->cfg->gnuplot_style, job->cfg->relax.cancel, msg, len) != 0)
+    if (adh_session_open(&ses, out, "gnuplot.log", job->cfg->output.gnuplot_style, job->cfg->spec.relax.cancel, msg,
+                         len) != 0)
         return 3;
     char data[PATH_MAX + 32];
     FILE *f = adh_session_data(&ses, "cost.dat", data, sizeof data, msg, len);
@@ -278,19 +280,19 @@ static int cost_jobs(void)
  * curve's kernel and solver at the finest N. 0, or -1 with why. */
 static int cost_budget(const adh_config *cfg, const size_t *nodes, size_t nnodes, char *why, size_t whylen)
 {
-    adh_config big = *cfg;
-    big.nodes = 0;
+    adh_run_spec big = cfg->spec;
+    big.grid.use.nodes = 0;
     for (size_t a = 0; a < nnodes; a++)
-        big.nodes = nodes[a] > big.nodes ? nodes[a] : big.nodes;
-    big.storage = ADH_STORAGE_DENSE;
-    big.graded = 0;
-    double n = (double)big.nodes, jobs = cost_jobs();
+        big.grid.use.nodes = nodes[a] > big.grid.use.nodes ? nodes[a] : big.grid.use.nodes;
+    big.grid.use.storage = ADH_STORAGE_DENSE;
+    big.grid.use.graded = 0;
+    double n = (double)big.grid.use.nodes, jobs = cost_jobs();
     double need = adh_budget_bytes(&big, 1) + jobs * 8.0 * n * n, have = adh_budget_machine_bytes();
     if (need <= have)
         return 0;
     snprintf(why, whylen, "--cost: its runs at N = %zu would hold about %.3g GB at once (%g in parallel, a dense "
              "kernel each, beside the static curve's solver), more than the %.3g GB this process may use: use "
-             "smaller --cost-nodes", big.nodes, need / 1e9, jobs, have / 1e9);
+             "smaller --cost-nodes", big.grid.use.nodes, need / 1e9, jobs, have / 1e9);
     return -1;
 }
 
@@ -312,7 +314,7 @@ int cli_cost_main(const cli_options *cli)
         fprintf(stderr, "adhere: %s\n", why);
         return CLI_EXIT_USAGE;
     }
-    if (cfg->mode != ADH_MODE_RELAX || cfg->proto.nturns == 0) {
+    if (cfg->spec.mode != ADH_MODE_RELAX || cfg->spec.proto.nturns == 0) {
         fprintf(stderr, "adhere: --cost measures the relaxation's load/unload cycle: it needs mode relax and a turning point\n");
         return CLI_EXIT_USAGE;
     }
@@ -327,10 +329,11 @@ int cli_cost_main(const cli_options *cli)
         for (int k = 0; k < 2; k++)
             for (size_t e = 0; e < neps; e++) {
                 runs[m] = (cost_run){ .eps = eps[e], .nodes = nodes[a], .kernel = (adh_kernel_type)k };
-                adh_config c = *cfg;
-                c.nodes = nodes[a];
-                c.relax.eps = eps[e];
-                c.force = 1; /* coarse grids are what the report measures */
+                static adh_config c;   /* large: not on the stack */
+                c = *cfg;
+                c.spec.grid.use.nodes = nodes[a];
+                c.spec.relax.eps = eps[e];
+                c.spec.grid.force = 1; /* coarse grids are what the report measures */
                 if (cli_options_validate(&c, why, sizeof why) != 0) {
                     fprintf(stderr, "adhere: --cost: N = %zu, eps = %g m: %s\n", nodes[a], eps[e], why);
                     free(runs);
@@ -343,8 +346,8 @@ int cli_cost_main(const cli_options *cli)
         free(runs);
         return CLI_EXIT_USAGE;
     }
-    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
-    adh_outdir *od = out ? adh_outdir_open(out, cfg->overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why) : NULL;
+    const char *out = cfg->output.dir[0] ? cfg->output.dir : NULL;
+    adh_outdir *od = out ? adh_outdir_open(out, cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why) : NULL;
     if (out && !od) {
         fprintf(stderr, "adhere: %s\n", why);
         free(runs);
@@ -353,7 +356,7 @@ int cli_cost_main(const cli_options *cli)
     qsort(runs, n, sizeof *runs, by_cost);
 
     cli_interrupt_catch();
-    cli_ready_phase("cost");
+    adh_ready_phase("cost");
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     int jobs = cost_jobs();
     cost_job job = { .cfg = cfg, .runs = runs, .n = n };
@@ -369,14 +372,15 @@ int cli_cost_main(const cli_options *cli)
 
     /* Meanwhile, on this thread: the static curve at the finest grid with
      * the exact kernel, the limit every eps should approach. */
-    adh_config sc = *cfg;
-    sc.nodes = nodes[0];
+    adh_run_spec sc;
+    adh_config_sweep_run(cfg, 0, &sc);
+    sc.grid.use.nodes = nodes[0];
     for (size_t a = 1; a < nnodes; a++)
-        sc.nodes = nodes[a] > sc.nodes ? nodes[a] : sc.nodes;
-    sc.kernel = ADH_KERNEL_RING;
-    adh_grid *g = adh_grid_alloc(sc.nodes, adh_config_spacing(&sc));
+        sc.grid.use.nodes = nodes[a] > sc.grid.use.nodes ? nodes[a] : sc.grid.use.nodes;
+    sc.grid.use.kernel = ADH_KERNEL_RING;
+    adh_grid *g = adh_grid_alloc(sc.grid.use.nodes, adh_config_spacing(&sc));
     int kst = ADH_ENOMEM;
-    adh_kernel *k = g ? adh_kernel_alloc_cancel(g, sc.kernel, sc.relax.cancel, &kst) : NULL;
+    adh_kernel *k = g ? adh_kernel_alloc_cancel(g, sc.grid.use.kernel, sc.relax.cancel, &kst) : NULL;
     adh_run srun;
     adh_run_init(&srun);
     if (kst == ADH_EINTR)
@@ -437,7 +441,7 @@ int cli_cost_main(const cli_options *cli)
     job.static_a_turn = static_a;
 
     char rule[64];
-    adh_mix_rule_describe(&cfg->relax, rule, sizeof rule);
+    adh_mix_rule_describe(&cfg->spec.relax, rule, sizeof rule);
     if (job.partial[0]) {
         printf("# PARTIAL: %s\n", job.partial);
         fprintf(stderr, "adhere: %s\n", job.partial);
@@ -446,7 +450,7 @@ int cli_cost_main(const cli_options *cli)
            n, started ? started : 1, cores, rule);
     printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "
            "hysteresis %.4g fJ, a at the turn %.4g um%s\n\n",
-           blas_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, sc.nodes, sres.pulloff_F,
+           blas_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, sc.grid.use.nodes, sres.pulloff_F,
            sres.jump_in_h0 * 1e9, static_hyst * 1e15, static_a * 1e6, src == ADH_SUCCESS ? "" : " (failed)");
     printf("%-6s %6s %7s %9s %11s %12s %10s %11s %9s | %8s %8s %8s %8s | %8s %8s %8s %8s\n", "kernel", "N", "eps/pm", "seconds",
            "iterations", "pulloff/uN", "jump-in/nm", "hyst/fJ", "a_turn/um", "pulloff", "jump-in", "hyst", "a_turn",
@@ -468,7 +472,7 @@ int cli_cost_main(const cli_options *cli)
         if (adh_outdir_write(od, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             status = CLI_EXIT_USAGE;
-        } else if (cfg->plot && !cli_interrupt_signal()) {
+        } else if (cfg->output.plot && !cli_interrupt_signal()) {
             int prc = plot_cost(&job, od, why, sizeof why);
             if (prc) {
                 fprintf(stderr, "adhere: cost.png not written: %s\n", why);
@@ -478,12 +482,12 @@ int cli_cost_main(const cli_options *cli)
     }
     cli_interrupt_release();
     adh_outdir_close(od);
-    if (status == CLI_EXIT_OK && !cfg->quiet) {
+    if (status == CLI_EXIT_OK && !cfg->output.quiet) {
         char t[32];
         cli_progress_duration(adh_clock_seconds() - job.t0, t, sizeof t);
         if (out)
             fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output, cost.tsv%s in %s/\n", t, n,
-                    cfg->plot ? " and cost.png" : "", out);
+                    cfg->output.plot ? " and cost.png" : "", out);
         else
             fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output\n", t, n);
     }

@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "adhere/models.h"
-#include "cli/sweep.h"
+#include "cli/jumps.h"
 #include "cli/tables.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
@@ -31,8 +31,8 @@ static int fig_open(figure *fg, const adh_config *cfg, adh_outdir *out, char *ms
     memset(fg, 0, sizeof *fg);
     fg->msg = msg;
     fg->msglen = msglen;
-    if (adh_session_open(&fg->ses, out, "gnuplot-figures.log", cfg->gnuplot_style, cfg->relax.cancel, msg,
-                         msglen) != 0)
+    if (adh_session_open(&fg->ses, out, "gnuplot-figures.log", cfg->output.gnuplot_style, cfg->spec.relax.cancel,
+                         msg, msglen) != 0)
         return -1;
     fg->gp = fg->ses.gp;
     return 0;
@@ -76,9 +76,9 @@ static int data_done(figure *fg, FILE *f, const char *path)
 
 /* Figure 1's inset: the computed force before contact against eq 22 at the
  * nominal position, F(h0), and at the gap eq 23 gives, F(h). */
-static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
+static int precontact(figure *fg, const adh_run_spec *spec, const adh_run *run)
 {
-    const adh_material *m = &cfg->mat;
+    const adh_material *m = &spec->mat;
     char dat[PATH_MAX + 16], eq[PATH_MAX + 16], q[ADH_GP_PATH_SIZE], q2[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
@@ -130,9 +130,9 @@ static int precontact(figure *fg, const adh_config *cfg, const adh_run *run)
 }
 
 /* Figure 2: the central bulge before contact against the gap, with eq 23. */
-static int bulge(figure *fg, const adh_config *cfg, const adh_run *run)
+static int bulge(figure *fg, const adh_run_spec *spec, const adh_run *run)
 {
-    const adh_material *m = &cfg->mat;
+    const adh_material *m = &spec->mat;
     char dat[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "c.dat", dat, sizeof dat);
     if (!f)
@@ -174,16 +174,16 @@ static void add_missing(const adh_config *cfg, unsigned written, char *list, siz
     static const struct { unsigned bit; const char *name; } figs[] = {
         { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" } };
     for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++)
-        if ((cfg->plots & figs[i].bit) && !(written & figs[i].bit))
+        if ((cfg->output.plots & figs[i].bit) && !(written & figs[i].bit))
             cli_tables_names_add(list, len, figs[i].name);
 }
 
-int cli_figures_run(const adh_config *cfg, const adh_run *run, adh_outdir *out, char *msg, size_t msglen,
-                    char *unwritten, size_t ulen)
+int cli_figures_run(const adh_config *cfg, const adh_run_spec *spec, const adh_run *run, adh_outdir *out,
+                    char *msg, size_t msglen, char *unwritten, size_t ulen)
 {
     if (msglen)
         msg[0] = '\0';
-    if (!cfg->plot || !(cfg->plots & (ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
+    if (!cfg->output.plot || !(cfg->output.plots & (ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
         return 0;
     figure fg;
     if (fig_open(&fg, cfg, out, msg, msglen) != 0) {
@@ -191,16 +191,16 @@ int cli_figures_run(const adh_config *cfg, const adh_run *run, adh_outdir *out, 
         return -1;
     }
     int rc = 0;
-    if ((cfg->plots & ADH_PLOT_PRECONTACT) && precontact(&fg, cfg, run) != 0)
+    if ((cfg->output.plots & ADH_PLOT_PRECONTACT) && precontact(&fg, spec, run) != 0)
         rc = -1;
-    if ((cfg->plots & ADH_PLOT_BULGE) && adh_gnuplot_alive(fg.gp) && bulge(&fg, cfg, run) != 0)
+    if ((cfg->output.plots & ADH_PLOT_BULGE) && adh_gnuplot_alive(fg.gp) && bulge(&fg, spec, run) != 0)
         rc = -1;
     fig_close(&fg);
     /* on success, what was written, for the run's closing line */
     if (rc == 0)
-        snprintf(msg, msglen, "%s%s%s", cfg->plots & ADH_PLOT_PRECONTACT ? "precontact.png" : "",
-                 (cfg->plots & ADH_PLOT_PRECONTACT) && (cfg->plots & ADH_PLOT_BULGE) ? ", " : "",
-                 cfg->plots & ADH_PLOT_BULGE ? "bulge.png" : "");
+        snprintf(msg, msglen, "%s%s%s", cfg->output.plots & ADH_PLOT_PRECONTACT ? "precontact.png" : "",
+                 (cfg->output.plots & ADH_PLOT_PRECONTACT) && (cfg->output.plots & ADH_PLOT_BULGE) ? ", " : "",
+                 cfg->output.plots & ADH_PLOT_BULGE ? "bulge.png" : "");
     else
         add_missing(cfg, fg.written, unwritten, ulen);
     return rc;
@@ -215,18 +215,18 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
         return -1;
     double smin = INFINITY, smax = -INFINITY;
     for (size_t i = 0; i < n; i++) {
-        adh_config rc;
+        adh_run_spec rc;
         adh_config_sweep_run(cfg, i, &rc);
         adh_derived d;
         adh_material_derive(&rc.mat, &d);
-        double h = cli_sweep_gap_before_jump(&runs[i]);
+        double h = cli_jumps_gap_before(&runs[i]);
         smin = fmin(smin, d.sigma), smax = fmax(smax, d.sigma);
         if (isfinite(h))
-            fprintf(f, "%.17g\t%.17g\t%.17g\t%d\n", d.sigma, h, d.h_star, cli_sweep_jumped(&runs[i], rc.proto.step));
+            fprintf(f, "%.17g\t%.17g\t%.17g\t%d\n", d.sigma, h, d.h_star, cli_jumps_jumped(&runs[i], rc.proto.step));
     }
     /* eq 24 as a curve of sigma: h* = (3 A sqrt(2R) / 8E)^(2/7), E from eq 17 */
     fprintf(f, "\n\n");
-    const adh_material *m = &cfg->mat;
+    const adh_material *m = &cfg->spec.mat;
     for (int k = 0; k <= 200; k++) {
         adh_material at = *m;
         double s = smin * pow(smax / smin, k / 200.0);
@@ -282,7 +282,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     int jkr_parts = 0;
     if (same_material && isfinite(xmin)) {
         adh_model_curve mc;
-        if (adh_jkr_drive_curve(&cfg->mat, xmin, &mc) == 0 && mc.n_load > 1 && mc.n > mc.n_load) {
+        if (adh_jkr_drive_curve(&cfg->spec.mat, xmin, &mc) == 0 && mc.n_load > 1 && mc.n > mc.n_load) {
             for (size_t i = 0; i < mc.n; i++) {
                 fprintf(f, "%.17g\t%.17g\n", mc.h0[i], mc.F[i]);
                 if (i + 1 == mc.n_load)
@@ -342,7 +342,7 @@ int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, adh_
 {
     if (msglen)
         msg[0] = '\0';
-    if (!cfg->plot || cfg->sweep.plot == ADH_SWEEP_PLOT_NONE || n == 0)
+    if (!cfg->output.plot || cfg->sweep.plot == ADH_SWEEP_PLOT_NONE || n == 0)
         return 0;
     figure fg;
     if (fig_open(&fg, cfg, out, msg, msglen) != 0)

@@ -11,12 +11,13 @@
 #include "plot/outdir.h"
 #include "scene/config.h"
 
-/* precontact.png and bulge.png in out when cfg->plots asks for them. 0
- * (also when none is asked or there is nothing to draw: msg says so), or -1
- * with msg when gnuplot is missing or fails; then the names of those asked
- * for and not written are added to the comma-separated list unwritten. */
-int cli_figures_run(const adh_config *cfg, const adh_run *run, adh_outdir *out, char *msg, size_t msglen,
-                    char *unwritten, size_t ulen);
+/* precontact.png and bulge.png of the run of spec (a sweep's run: its own)
+ * in out when cfg's plots ask for them. 0 (also when none is asked or
+ * there is nothing to draw: msg says so), or -1 with msg when gnuplot is
+ * missing or fails; then the names of those asked for and not written are
+ * added to the comma-separated list unwritten. */
+int cli_figures_run(const adh_config *cfg, const adh_run_spec *spec, const adh_run *run, adh_outdir *out,
+                    char *msg, size_t msglen, char *unwritten, size_t ulen);
 
 /* The sweep's combined figure (cfg->sweep.plot) from runs[0..n) in out.
  * 0, or -1 with msg. */

@@ -1,5 +1,5 @@
 #include "cli/interrupt.h"
-#include "cli/ready.h"
+#include "util/ready.h"
 
 #include <fcntl.h>
 #include <stdlib.h>
@@ -58,6 +58,6 @@ int cli_interrupt_exit(void)
 int cli_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx)
 {
     (void)row, (void)run, (void)ctx;
-    cli_ready_mark();   /* a step is done and signals are caught */
+    adh_ready_mark();   /* a step is done and signals are caught */
     return received != 0;
 }

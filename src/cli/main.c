@@ -15,6 +15,7 @@
 #include "scene/config.h"
 #include "scene/measured.h"
 #include "scene/plan.h"
+#include "tui/actions.h"
 #include "tui/tui.h"
 
 /* OpenBLAS's own; declared here so the GSL CBLAS header stays the only one.
@@ -63,10 +64,6 @@ int main(int argc, char **argv)
     default:
         break;
     }
-    /* A profile plot with no positions asked gets a spread of them, placed on
-     * the drive grid so every one is really stored (plan and run agree). */
-    if ((cli.cfg.plots & ADH_PLOT_PROFILE) && cli.cfg.proto.nprofiles == 0 && cli.cfg.mode == ADH_MODE_RELAX)
-        cli.cfg.proto.nprofiles = adh_plan_default_profiles(&cli.cfg.mat, &cli.cfg.proto, cli.cfg.proto.profiles, 6);
     /* No grid given: the one the contact's edge needs, or a refusal. */
     unsigned fix;
     if (cli.action != CLI_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why, &fix) != 0) {
@@ -80,33 +77,36 @@ int main(int argc, char **argv)
         return CLI_EXIT_USAGE;
     }
     /* Memory for the grid, whichever it is, before anything is allocated:
-     * the operator that fits, or a refusal with the estimate. A static
+     * the estimate for the operator chosen to fit, or a refusal. A static
      * curve holds its own solver; a sweep solves one per thread. */
-    unsigned solvers = cli.cfg.mode == ADH_MODE_STATIC ? (unsigned)adh_plan_jobs(&cli.cfg)
+    const adh_run_spec *spec = &cli.cfg.spec;
+    unsigned solvers = spec->mode == ADH_MODE_STATIC ? (unsigned)adh_plan_jobs(&cli.cfg)
                      : cli.reference[0] ? 1 : 0;
-    if (cli.action != CLI_ACT_COST && adh_budget_check(&cli.cfg, solvers, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+    if (cli.action != CLI_ACT_COST && adh_budget_check(spec, solvers, why, sizeof why) != 0) {
+        char words[1200];
+        cli_options_words(why, words, sizeof words);
+        fprintf(stderr, "adhere: %s\n", words);
         return CLI_EXIT_USAGE;
     }
     /* the time: a dense product reads all N^2 numbers every iteration */
-    size_t nodes = adh_budget_nodes(&cli.cfg);
-    if (cli.action != CLI_ACT_COST && !cli.cfg.quiet && cli.cfg.mode != ADH_MODE_RIGID &&
-        cli.cfg.storage == ADH_STORAGE_DENSE && nodes > ADH_GRID_MAX_NODES)
+    size_t nodes = adh_config_nodes(spec);
+    if (cli.action != CLI_ACT_COST && !cli.cfg.output.quiet && spec->mode != ADH_MODE_RIGID &&
+        spec->grid.use.storage == ADH_STORAGE_DENSE && nodes > ADH_GRID_MAX_NODES)
         fprintf(stderr, "adhere: note: --operator=dense on %zu nodes: every relaxation iteration reads the whole "
                 "%.3g GB kernel, %.3g times the work at the dense budget's %d nodes; --operator=h2 holds it in "
                 "O(N)\n", nodes, 8e-9 * (double)nodes * (double)nodes,
                 ((double)nodes / ADH_GRID_MAX_NODES) * ((double)nodes / ADH_GRID_MAX_NODES), ADH_GRID_MAX_NODES);
     /* The solvers poll the interrupt flag through their cancel hook: a
      * signal is heard inside a step, not only between steps. */
-    cli.cfg.relax.cancel = cli_interrupt_flag();
+    cli.cfg.spec.relax.cancel = cli_interrupt_flag();
     /* A measured curve is read before any work: a bad line stops here. */
     static adh_measured measured;
-    if (cli.cfg.data[0]) {
-        if (adh_measured_load(cli.cfg.data, &measured, why, sizeof why) != 0) {
+    if (cli.cfg.output.data[0]) {
+        if (adh_measured_load(cli.cfg.output.data, &measured, why, sizeof why) != 0) {
             fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
             return CLI_EXIT_USAGE;
         }
-        cli.cfg.measured = &measured;
+        cli.cfg.output.measured = &measured;
     }
     switch (cli.action) {
     case CLI_ACT_BATCH:

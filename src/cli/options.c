@@ -29,56 +29,60 @@ typedef struct option_doc {
     struct option opt;
     const char *arg;     /* argument name for --help, NULL if none */
     const char *help;
+    const char *key;     /* the configuration key it sets (adh_config_set); NULL: an action or the CLI's own */
+    const char *value;   /* a flag without an argument: the text it sets its key to */
 } option_doc;
 
 /* The one list of options: getopt_long's table and --help are both made from
- * it, so they cannot drift apart (the man page test checks the third copy). */
+ * it, so they cannot drift apart (the man page test checks the third copy).
+ * A flag that sets the configuration names its key: the flag's value goes
+ * through adh_config_set, as a scene's and a TUI edit's do. */
 static const option_doc options[] = {
-    { { "modulus", required_argument, 0, 'E' }, "PA", "combined modulus E, 2/E = sum (1-nu^2)/E_i (default 0.3GPa, Figure 4)" },
-    { { "hamaker", required_argument, 0, 'A' }, "J", "Hamaker constant A (default 1e-19J)" },
-    { { "z0", required_argument, 0, 'z' }, "M", "Lennard-Jones equilibrium separation z0 (default 0.5nm)" },
-    { { "radius", required_argument, 0, 'R' }, "M", "effective radius R (default 10um)" },
-    { { "nodes", required_argument, 0, 'N' }, "N", "grid nodes N, 10 to 20000 (default 1000, more where the contact edge needs it)" },
-    { { "spacing", required_argument, 0, OPT_SPACING }, "M", "grid spacing (default: the paper's 0.0212 sqrt(R z0), or finer where the contact edge needs it)" },
-    { { "force", no_argument, 0, OPT_FORCE }, NULL, "run a grid coarser than the resolved limit (0.45 edge-zone widths, static 0.3); marked resolved 0" },
-    { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)" },
-    { { "grid", required_argument, 0, OPT_GRID }, "uniform|graded", "radial grid: N equal rings, or fine rings over the contact then growing ones (default uniform; graded when neither N nor the spacing is given and a resolved uniform grid needs over 1000 nodes)" },
-    { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M|auto", "graded grid: radius of the fine band (default, auto: 1.25 x the contact expected at the deepest turn, JKR or overlap)" },
-    { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)" },
-    { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M|auto", "graded grid: outer radius Rmax (default, auto: the default uniform grid's, 1.5um at R=10um, z0=0.5nm)" },
-    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat|h2", "how the kernel is held: dense matrix, hierarchical by hmat-oss, or H^2 (default dense; h2 past 4000 nodes and on an automatic graded grid)" },
-    { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)" },
-    { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)" },
-    { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)" },
-    { { "mixing", required_argument, 0, OPT_MIXING }, "paper|momentum", "mixing rule of the relaxation: the paper's adaptive ratio or heavy-ball momentum (default momentum)" },
-    { { "momentum", required_argument, 0, OPT_MOMENTUM }, "B", "momentum rule: fraction of the previous update kept, 0 to below 1 (default 0.55)" },
-    { { "step", required_argument, 0, 'd' }, "M", "drive step d (default 0.05nm)" },
-    { { "start", required_argument, 0, OPT_START }, "M", "first drive position h0 (default: where the force is negligible)" },
-    { { "turn", required_argument, 0, OPT_TURN }, "M[,M...]", "turning points (default -5nm); 'none' loads to contact only" },
-    { { "dwell", required_argument, 0, OPT_DWELL }, "N", "iterations held at each turning point before unloading (default 0)" },
-    { { "mode", required_argument, 0, OPT_MODE }, "relax|static|rigid", "paper's relaxation, the static equilibrium curve, or rigid spheres only (eq 22, no elastic solve) (default relax)" },
-    { { "reference", required_argument, 0, OPT_REFERENCE }, "static", "also compute the static curve as a reference in relaxation mode" },
-    { { "batch", no_argument, 0, 'b' }, NULL, "run the protocol without the TUI and write tables" },
-    { { "out", required_argument, 0, 'o' }, "DIR", "write force.tsv, summary.tsv, turns.tsv and plots into DIR (created)" },
-    { { "overwrite", no_argument, 0, OPT_OVERWRITE }, NULL, "replace files in DIR under adhere's names that it did not write (else refused)" },
-    { { "no-plot", no_argument, 0, OPT_NO_PLOT }, NULL, "write no PNG plots" },
-    { { "plots", required_argument, 0, OPT_PLOTS }, "LIST", "plots to write: force,profile,contact (default all)" },
-    { { "profiles", required_argument, 0, OPT_PROFILES }, "M[,M...]", "drive positions where surface profiles are stored" },
-    { { "drive-speed", required_argument, 0, OPT_DRIVE_SPEED }, "M/S", "drive speed for contact-line speeds (default 1um/s)" },
-    { { "gnuplot-style", required_argument, 0, OPT_GNUPLOT_STYLE }, "FILE|DIR", "gnuplot style file, or a directory holding style.gp, overriding the installed one" },
-    { { "data", required_argument, 0, OPT_DATA }, "FILE", "a measured force-position curve (nm, nN) drawn over force.png and the TUI preview" },
-    { { "plan", no_argument, 0, OPT_PLAN }, NULL, "print the run plan (branches, steps, what is stored) and exit" },
-    { { "cost", no_argument, 0, OPT_COST }, NULL, "report what accuracy costs: runs over a grid of eps, N and kernels" },
-    { { "cost-eps", required_argument, 0, OPT_COST_EPS }, "M[,M...]", "eps values of the cost grid (default 2,1,0.5,0.2,0.1pm)" },
-    { { "cost-nodes", required_argument, 0, OPT_COST_NODES }, "N[,N...]", "node counts of the cost grid (default 500,1000,2000)" },
-    { { "replay", required_argument, 0, OPT_REPLAY }, "FILE", "drive the TUI from a keystroke script, with no terminal" },
-    { { "screen", required_argument, 0, OPT_SCREEN }, "FILE", "write the final TUI screen as text (with --replay)" },
-    { { "size", required_argument, 0, OPT_SIZE }, "COLSxROWS", "screen size for --replay (default 100x32)" },
-    { { "no-clock", no_argument, 0, OPT_NO_CLOCK }, NULL, "mask timings on the screen so replays are deterministic" },
-    { { "list-keys", no_argument, 0, OPT_LIST_KEYS }, NULL, "print the TUI's keys and exit" },
-    { { "quiet", no_argument, 0, 'q' }, NULL, "no progress line, notes or closing line on standard error (warnings stay)" },
-    { { "help", no_argument, 0, 'h' }, NULL, "print this help and exit" },
-    { { "version", no_argument, 0, 'V' }, NULL, "print the version and exit" },
+    { { "modulus", required_argument, 0, 'E' }, "PA", "combined modulus E, 2/E = sum (1-nu^2)/E_i (default 0.3GPa, Figure 4)", "material.E", NULL },
+    { { "hamaker", required_argument, 0, 'A' }, "J", "Hamaker constant A (default 1e-19J)", "material.A", NULL },
+    { { "z0", required_argument, 0, 'z' }, "M", "Lennard-Jones equilibrium separation z0 (default 0.5nm)", "material.z0", NULL },
+    { { "radius", required_argument, 0, 'R' }, "M", "effective radius R (default 10um)", "material.R", NULL },
+    { { "nodes", required_argument, 0, 'N' }, "N|auto", "grid nodes N, 10 to 20000 (default 1000, more where the contact edge needs it)", "grid.nodes", NULL },
+    { { "spacing", required_argument, 0, OPT_SPACING }, "M|auto", "grid spacing (default: the paper's 0.0212 sqrt(R z0), or finer where the contact edge needs it)", "grid.spacing", NULL },
+    { { "force", no_argument, 0, OPT_FORCE }, NULL, "run a grid coarser than the resolved limit (0.45 edge-zone widths, static 0.3); marked resolved 0", "grid.force", "yes" },
+    { { "kernel", required_argument, 0, OPT_KERNEL }, "paper|ring", "elastic kernel: the paper's eqs 18-21 or exact rings (default paper)", "grid.kernel", NULL },
+    { { "grid", required_argument, 0, OPT_GRID }, "uniform|graded", "radial grid: N equal rings, or fine rings over the contact then growing ones (default uniform; graded when neither N nor the spacing is given and a resolved uniform grid needs over 1000 nodes)", "grid.grid", NULL },
+    { { "fine-band", required_argument, 0, OPT_FINE_BAND }, "M|auto", "graded grid: radius of the fine band (default, auto: 1.25 x the contact expected at the deepest turn, JKR or overlap)", "grid.fine_band", NULL },
+    { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)", "grid.growth", NULL },
+    { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M|auto", "graded grid: outer radius Rmax (default, auto: the default uniform grid's, 1.5um at R=10um, z0=0.5nm)", "grid.radius", NULL },
+    { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat|h2", "how the kernel is held: dense matrix, hierarchical by hmat-oss, or H^2 (default dense; h2 past 4000 nodes and on an automatic graded grid)", "grid.operator", NULL },
+    { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)", "solver.eps", NULL },
+    { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)", "solver.max_iter", NULL },
+    { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)", "output.allow_unconverged", "yes" },
+    { { "mixing", required_argument, 0, OPT_MIXING }, "paper|momentum", "mixing rule of the relaxation: the paper's adaptive ratio or heavy-ball momentum (default momentum)", "solver.mixing", NULL },
+    { { "momentum", required_argument, 0, OPT_MOMENTUM }, "B", "momentum rule: fraction of the previous update kept, 0 to below 1 (default 0.55)", "solver.momentum", NULL },
+    { { "step", required_argument, 0, 'd' }, "M", "drive step d (default 0.05nm)", "protocol.step", NULL },
+    { { "start", required_argument, 0, OPT_START }, "M|auto", "first drive position h0 (default: where the force is negligible)", "protocol.start", NULL },
+    { { "turn", required_argument, 0, OPT_TURN }, "M[,M...]", "turning points (default -5nm); 'none' loads to contact only", "protocol.turns", NULL },
+    { { "dwell", required_argument, 0, OPT_DWELL }, "N", "iterations held at each turning point before unloading (default 0)", "protocol.dwell", NULL },
+    { { "mode", required_argument, 0, OPT_MODE }, "relax|static|rigid", "paper's relaxation, the static equilibrium curve, or rigid spheres only (eq 22, no elastic solve) (default relax)", "scene.mode", NULL },
+    { { "reference", required_argument, 0, OPT_REFERENCE }, "static", "also compute the static curve as a reference in relaxation mode", NULL, NULL },
+    { { "batch", no_argument, 0, 'b' }, NULL, "run the protocol without the TUI and write tables", NULL, NULL },
+    { { "out", required_argument, 0, 'o' }, "DIR", "write force.tsv, summary.tsv, turns.tsv and plots into DIR (created)", "output.dir", NULL },
+    { { "overwrite", no_argument, 0, OPT_OVERWRITE }, NULL, "replace files in DIR under adhere's names that it did not write (else refused)", "output.overwrite", "yes" },
+    { { "no-plot", no_argument, 0, OPT_NO_PLOT }, NULL, "write no PNG plots", "output.plot", "no" },
+    { { "plots", required_argument, 0, OPT_PLOTS }, "LIST", "plots to write: force,profile,contact,precontact,bulge or none (default force,profile,contact)", "output.plots", NULL },
+    { { "profiles", required_argument, 0, OPT_PROFILES }, "M[,M...]", "drive positions where surface profiles are stored", "output.profiles", NULL },
+    { { "drive-speed", required_argument, 0, OPT_DRIVE_SPEED }, "M/S", "drive speed for contact-line speeds (default 1um/s)", "output.drive_speed", NULL },
+    { { "gnuplot-style", required_argument, 0, OPT_GNUPLOT_STYLE }, "FILE|DIR", "gnuplot style file, or a directory holding style.gp, overriding the installed one", "output.gnuplot_style", NULL },
+    { { "data", required_argument, 0, OPT_DATA }, "FILE", "a measured force-position curve (nm, nN) drawn over force.png and the TUI preview", "output.data", NULL },
+    { { "plan", no_argument, 0, OPT_PLAN }, NULL, "print the run plan (branches, steps, what is stored) and exit", NULL, NULL },
+    { { "cost", no_argument, 0, OPT_COST }, NULL, "report what accuracy costs: runs over a grid of eps, N and kernels", NULL, NULL },
+    { { "cost-eps", required_argument, 0, OPT_COST_EPS }, "M[,M...]", "eps values of the cost grid (default 2,1,0.5,0.2,0.1pm)", NULL, NULL },
+    { { "cost-nodes", required_argument, 0, OPT_COST_NODES }, "N[,N...]", "node counts of the cost grid (default 500,1000,2000)", NULL, NULL },
+    { { "replay", required_argument, 0, OPT_REPLAY }, "FILE", "drive the TUI from a keystroke script, with no terminal", "tui.replay", NULL },
+    { { "screen", required_argument, 0, OPT_SCREEN }, "FILE", "write the final TUI screen as text (with --replay)", "tui.screen", NULL },
+    { { "size", required_argument, 0, OPT_SIZE }, "COLSxROWS", "screen size for --replay (default 100x32)", "tui.size", NULL },
+    { { "no-clock", no_argument, 0, OPT_NO_CLOCK }, NULL, "mask timings on the screen so replays are deterministic", "tui.no_clock", "yes" },
+    { { "list-keys", no_argument, 0, OPT_LIST_KEYS }, NULL, "print the TUI's keys and exit", NULL, NULL },
+    { { "quiet", no_argument, 0, 'q' }, NULL, "no progress line, notes or closing line on standard error (warnings stay)", "output.quiet", "yes" },
+    { { "help", no_argument, 0, 'h' }, NULL, "print this help and exit", NULL, NULL },
+    { { "version", no_argument, 0, 'V' }, NULL, "print the version and exit", NULL, NULL },
 };
 #define NOPTIONS (sizeof options / sizeof options[0])
 
@@ -102,17 +106,32 @@ void cli_options_usage(FILE *out)
                  "See adhere(1) and adhere-scene(5).\n");
 }
 
-static int quantity(const char *name, const char *arg, adh_quantity q, double *out, char *why, size_t n)
+/* The flag that sets key, "" when none does. */
+static const char *flag_of(const char *key)
 {
-    char msg[256];
-    if (adh_parse_quantity(arg, q, out, msg, sizeof msg) != 0) {
-        snprintf(why, n, "--%s: %s", name, msg);
-        return 2;
-    }
-    return 0;
+    for (size_t i = 0; i < NOPTIONS; i++)
+        if (options[i].key && strcmp(options[i].key, key) == 0)
+            return options[i].opt.name;
+    return "";
 }
 
-/* strtok would pass over an empty element ("-1nm,,-2nm"): refuse it. */
+/* The configuration's words in the CLI's: a key ("grid.kernel") becomes its
+ * flag (--kernel), "key = value" the flag with its value (--kernel=paper). */
+static void say_flag(const char *key, const char *value, char *buf, size_t len, void *ctx)
+{
+    const char *flag = flag_of(key);
+    if (!*flag)
+        snprintf(buf, len, "%s%s%s", key, value ? " = " : "", value ? value : "");
+    else
+        snprintf(buf, len, "--%s%s%s", flag, value ? "=" : "", value ? value : "");
+}
+
+void cli_options_words(const char *sentence, char *out, size_t len)
+{
+    adh_config_reword(sentence, say_flag, NULL, out, len);
+}
+
+/* strtok would pass over an empty element ("1pm,,2pm"): refuse it. */
 static int empty_element(const char *name, const char *arg, char *why, size_t n)
 {
     size_t len = strlen(arg);
@@ -123,131 +142,19 @@ static int empty_element(const char *name, const char *arg, char *why, size_t n)
     return 0;
 }
 
-/* A comma-separated list of lengths into out[]; "none" gives an empty list. */
-static int length_list(const char *name, const char *arg, double *out, size_t cap, size_t *count,
-                       char *why, size_t n)
+/* A flag: its key's value through adh_config_set, or the CLI's own. */
+static int apply(cli_options *cli, const option_doc *o, const char *arg, char *why, size_t n)
 {
-    char buf[1024];
-    if (strlen(arg) >= sizeof buf) {
-        snprintf(why, n, "--%s: list longer than %zu characters", name, sizeof buf - 1);
+    const char *name = o->opt.name;
+    if (o->key) {
+        char msg[512], words[600];
+        if (adh_config_set(&cli->cfg, o->key, o->value ? o->value : arg, msg, sizeof msg) == 0)
+            return 0;
+        cli_options_words(msg, words, sizeof words);
+        snprintf(why, n, "--%s: %s", name, words);
         return 2;
     }
-    *count = 0;
-    if (strcmp(arg, "none") == 0)
-        return 0;
-    if (empty_element(name, arg, why, n))
-        return 2;
-    snprintf(buf, sizeof buf, "%s", arg);
-    char *save = NULL;
-    for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-        if (*count == cap) {
-            snprintf(why, n, "--%s: more than %zu values", name, cap);
-            return 2;
-        }
-        if (quantity(name, tok, ADH_Q_LENGTH, &out[*count], why, n))
-            return 2;
-        (*count)++;
-    }
-    if (*count == 0) {
-        snprintf(why, n, "--%s: expected one or more lengths separated by commas", name);
-        return 2;
-    }
-    return 0;
-}
-
-/* A grid setting, by the function scene files use too. */
-static int grid_setting(int (*set)(adh_config *, const char *, char *, size_t), adh_config *cfg,
-                        const char *name, const char *arg, char *why, size_t n)
-{
-    char msg[256];
-    if (set(cfg, arg, msg, sizeof msg) != 0) {
-        snprintf(why, n, "--%s: %s", name, msg);
-        return 2;
-    }
-    return 0;
-}
-
-static int apply(cli_options *cli, int c, const char *arg, const char *name, char *why, size_t n)
-{
-    adh_config *cfg = &cli->cfg;
-    long v;
-    char msg[256];
-    switch (c) {
-    case 'E': return quantity(name, arg, ADH_Q_PRESSURE, &cfg->mat.E, why, n);
-    case 'A': return quantity(name, arg, ADH_Q_ENERGY, &cfg->mat.A, why, n);
-    case 'z': return quantity(name, arg, ADH_Q_LENGTH, &cfg->mat.z0, why, n);
-    case 'R': return quantity(name, arg, ADH_Q_LENGTH, &cfg->mat.R, why, n);
-    case 'e': return quantity(name, arg, ADH_Q_LENGTH, &cfg->relax.eps, why, n);
-    case 'd': return quantity(name, arg, ADH_Q_LENGTH, &cfg->proto.step, why, n);
-    case OPT_SPACING: return quantity(name, arg, ADH_Q_LENGTH, &cfg->spacing, why, n);
-    case OPT_START: return quantity(name, arg, ADH_Q_LENGTH, &cfg->proto.start, why, n);
-    case OPT_DRIVE_SPEED: return quantity(name, arg, ADH_Q_SPEED, &cfg->drive_speed, why, n);
-    case OPT_GRID: return grid_setting(adh_config_set_grid, cfg, name, arg, why, n);
-    case OPT_FINE_BAND: return grid_setting(adh_config_set_fine_band, cfg, name, arg, why, n);
-    case OPT_GROWTH: return grid_setting(adh_config_set_growth, cfg, name, arg, why, n);
-    case OPT_GRID_RADIUS: return grid_setting(adh_config_set_grid_radius, cfg, name, arg, why, n);
-    case OPT_OPERATOR: return grid_setting(adh_config_set_operator, cfg, name, arg, why, n);
-    case 'N':
-    case OPT_MAX_ITER:
-    case OPT_DWELL: {
-        /* a whole number here; its limits are the run's check's
-         * (adh_drive_check), the one place every driver meets them */
-        if (adh_parse_count(arg, 0, LONG_MAX, &v, msg, sizeof msg) != 0 ||
-            (c == 'N' ? adh_grid_nodes_check(v, msg, sizeof msg)
-             : c == OPT_DWELL ? adh_protocol_dwell_check(v, msg, sizeof msg)
-                              : adh_relax_max_iter_check(v, msg, sizeof msg)) != ADH_SUCCESS) {
-            snprintf(why, n, "--%s: %s", name, msg);
-            return 2;
-        }
-        if (c == 'N')
-            cfg->nodes = (size_t)v, cfg->nodes_given = 1;
-        else if (c == OPT_DWELL)
-            cfg->proto.dwell = (size_t)v;
-        else
-            cfg->relax.max_iter = (size_t)v;
-        return 0;
-    }
-    case OPT_TURN:
-        if (length_list(name, arg, cfg->proto.turns, ADH_MAX_TURNS, &cfg->proto.nturns, why, n))
-            return 2;
-        cfg->proto.unload = cfg->proto.nturns > 0;
-        return 0;
-    case OPT_PROFILES:
-        return length_list(name, arg, cfg->proto.profiles, ADH_MAX_PROFILES, &cfg->proto.nprofiles, why, n);
-    case OPT_KERNEL:
-        if (adh_kernel_parse(arg, &cfg->kernel) != 0) {
-            snprintf(why, n, "--kernel: '%s' is not a kernel: use paper or ring", arg);
-            return 2;
-        }
-        cfg->kernel_given = 1;
-        return 0;
-    case OPT_MIXING:
-        if (adh_mix_rule_parse(arg, &cfg->relax.rule) != 0) {
-            snprintf(why, n, "--mixing: '%s' is not a mixing rule: use paper or momentum", arg);
-            return 2;
-        }
-        return 0;
-    case OPT_MOMENTUM: {
-        double b;
-        if (adh_parse_quantity(arg, ADH_Q_NONE, &b, msg, sizeof msg) != 0 || !(b >= 0 && b < 1)) {
-            snprintf(why, n, "--momentum: '%s' is not allowed: a number from 0 to below 1", arg);
-            return 2;
-        }
-        cfg->relax.momentum = b;
-        return 0;
-    }
-    case OPT_MODE:
-        if (strcmp(arg, "relax") == 0)
-            cfg->mode = ADH_MODE_RELAX;
-        else if (strcmp(arg, "static") == 0)
-            cfg->mode = ADH_MODE_STATIC;
-        else if (strcmp(arg, "rigid") == 0)
-            cfg->mode = ADH_MODE_RIGID;
-        else {
-            snprintf(why, n, "--mode: '%s' is not a mode: use relax, static or rigid", arg);
-            return 2;
-        }
-        return 0;
+    switch (o->opt.val) {
     case OPT_REFERENCE:
         if (strcmp(arg, "static") != 0 && strcmp(arg, "none") != 0) {
             snprintf(why, n, "--reference: '%s' is not allowed: use static or none", arg);
@@ -255,50 +162,6 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
         }
         snprintf(cli->reference, sizeof cli->reference, "%s", strcmp(arg, "none") ? arg : "");
         return 0;
-    case OPT_PLOTS: {
-        unsigned mask = 0;
-        if (empty_element(name, arg, why, n))
-            return 2;
-        char buf[256], *save = NULL;
-        snprintf(buf, sizeof buf, "%s", arg);
-        for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-            if (strcmp(t, "force") == 0) mask |= ADH_PLOT_FORCE;
-            else if (strcmp(t, "profile") == 0) mask |= ADH_PLOT_PROFILE;
-            else if (strcmp(t, "contact") == 0) mask |= ADH_PLOT_CONTACT;
-            else {
-                snprintf(why, n, "--plots: '%s' is not a plot: use force, profile or contact, separated by commas", t);
-                return 2;
-            }
-        }
-        if (!mask) {
-            snprintf(why, n, "--plots: name at least one of force, profile, contact");
-            return 2;
-        }
-        cfg->plots = mask;
-        return 0;
-    }
-    case OPT_SIZE: {
-        int cols, rows;
-        char extra;
-        if (sscanf(arg, "%dx%d%c", &cols, &rows, &extra) != 2 || cols < 40 || cols > 1000 ||
-            rows < 12 || rows > 1000) {
-            snprintf(why, n, "--size: '%s' is not allowed: use COLSxROWS with 40-1000 columns and 12-1000 rows", arg);
-            return 2;
-        }
-        cfg->cols = cols;
-        cfg->rows = rows;
-        return 0;
-    }
-    case 'o': case OPT_REPLAY: case OPT_SCREEN: case OPT_GNUPLOT_STYLE: case OPT_DATA: {
-        char *dst = c == 'o' ? cfg->out_dir : c == OPT_REPLAY ? cfg->replay
-                  : c == OPT_SCREEN ? cfg->screen : c == OPT_DATA ? cfg->data : cfg->gnuplot_style;
-        if (!*arg || strlen(arg) >= PATH_MAX) {
-            snprintf(why, n, "--%s: a path of 1 to %d characters is needed", name, PATH_MAX - 1);
-            return 2;
-        }
-        snprintf(dst, PATH_MAX, "%s", arg);
-        return 0;
-    }
     case OPT_COST_EPS: case OPT_COST_NODES:
         if (empty_element(name, arg, why, n))
             return 2;
@@ -306,15 +169,9 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
             snprintf(why, n, "--%s: list longer than 255 characters", name);
             return 2;
         }
-        snprintf(c == OPT_COST_EPS ? cli->cost_eps : cli->cost_nodes, 256, "%s", arg);
+        snprintf(o->opt.val == OPT_COST_EPS ? cli->cost_eps : cli->cost_nodes, 256, "%s", arg);
         cli->action = CLI_ACT_COST;
         return 0;
-    case OPT_NO_CLOCK: cfg->no_clock = 1; return 0;
-    case OPT_NO_PLOT: cfg->plot = 0; return 0;
-    case 'q': cfg->quiet = 1; return 0;
-    case OPT_ALLOW_UNCONVERGED: cfg->allow_unconverged = 1; return 0;
-    case OPT_FORCE: cfg->force = 1; return 0;
-    case OPT_OVERWRITE: cfg->overwrite = 1; return 0;
     case 'b': if (cli->action == CLI_ACT_TUI) cli->action = CLI_ACT_BATCH; return 0;
     case OPT_PLAN: cli->action = CLI_ACT_PLAN; return 0;
     case OPT_COST: cli->action = CLI_ACT_COST; return 0;
@@ -322,7 +179,7 @@ static int apply(cli_options *cli, int c, const char *arg, const char *name, cha
     case 'h': cli->action = CLI_ACT_HELP; return 0;
     case 'V': cli->action = CLI_ACT_VERSION; return 0;
     }
-    snprintf(why, n, "internal: option %d has no handler", c);
+    snprintf(why, n, "internal: option %s has no handler", name);
     return 2;
 }
 
@@ -395,7 +252,23 @@ static int split_unit_hint(int argc, char **orig, const char *arg, char *why, si
     return 1;
 }
 
-int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
+/* The flags as given, before any is applied: the scene comes first. */
+typedef struct flags_seen {
+    struct { const option_doc *o; const char *arg; } list[512];
+    size_t n;
+    int info, plan, cost, batch, replay, screen, reference;
+} flags_seen;
+
+static const option_doc *option_for(int val)
+{
+    for (size_t i = 0; i < NOPTIONS; i++)
+        if (options[i].opt.val == val)
+            return &options[i];
+    return NULL;
+}
+
+/* getopt_long over argv into fs; 0, or 2 with why. */
+static int collect(int argc, char **argv, flags_seen *fs, char *why, size_t whylen)
 {
     struct option longopts[NOPTIONS + 1];
     char shortopts[3 * NOPTIONS + 2] = ":";
@@ -410,18 +283,7 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
     }
     shortopts[sl] = '\0';
     memset(&longopts[NOPTIONS], 0, sizeof longopts[0]);
-    memset(cli, 0, sizeof *cli);
-    adh_config_default(&cli->cfg);
-    /* getopt permutes argv: keep the order as typed for the hints */
-    char *orig[256];
-    int norig = argc < 256 ? argc : 256;
-    memcpy(orig, argv, (size_t)norig * sizeof *orig);
-
-    /* Two passes: the scene (positional) sets values first, then the flags
-     * override them whatever their order on the line. */
-    struct { int c; const char *arg; const char *name; } seen[512];
-    size_t nseen = 0;
-    int info = 0, plan = 0, cost = 0, batch = 0, replay = 0, screen = 0, reference = 0;
+    memset(fs, 0, sizeof *fs);
     opterr = 0;
     optind = 1;
     int c, idx;
@@ -437,48 +299,66 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
             snprintf(why, whylen, "option '%s' needs a value (see adhere --help)", argv[optind - 1]);
             return 2;
         }
-        if (nseen == sizeof seen / sizeof seen[0]) {
+        if (fs->n == sizeof fs->list / sizeof fs->list[0]) {
             snprintf(why, whylen, "too many options");
             return 2;
         }
-        const char *name = "?";
-        for (size_t i = 0; i < NOPTIONS; i++)
-            if (options[i].opt.val == c)
-                name = options[i].opt.name;
-        seen[nseen].c = c;
-        seen[nseen].arg = optarg;
-        seen[nseen].name = name;
-        nseen++;
-        info |= c == 'h' || c == 'V' || c == OPT_LIST_KEYS;
-        plan |= c == OPT_PLAN;
-        cost |= c == OPT_COST || c == OPT_COST_EPS || c == OPT_COST_NODES;
-        batch |= c == 'b';
-        replay |= c == OPT_REPLAY;
-        screen |= c == OPT_SCREEN;
-        reference |= c == OPT_REFERENCE && strcmp(optarg, "none") != 0;
+        fs->list[fs->n].o = option_for(c);
+        fs->list[fs->n].arg = optarg;
+        fs->n++;
+        fs->info |= c == 'h' || c == 'V' || c == OPT_LIST_KEYS;
+        fs->plan |= c == OPT_PLAN;
+        fs->cost |= c == OPT_COST || c == OPT_COST_EPS || c == OPT_COST_NODES;
+        fs->batch |= c == 'b';
+        fs->replay |= c == OPT_REPLAY;
+        fs->screen |= c == OPT_SCREEN;
+        fs->reference |= c == OPT_REFERENCE && strcmp(optarg, "none") != 0;
     }
+    return 0;
+}
+
+/* Flags that do not go together, and a scene beside what runs nothing. */
+static int combinations(int argc, char **argv, const flags_seen *fs, char *why, size_t whylen)
+{
     if (optind < argc - 1) {
         snprintf(why, whylen, "more than one scene given ('%s' and '%s'): name at most one", argv[optind], argv[optind + 1]);
         return 2;
     }
     /* --help, --version, --list-keys print and exit: a scene beside them is
      * a mistake, not something to load */
-    if (info && optind == argc - 1) {
+    if (fs->info && optind == argc - 1) {
         snprintf(why, whylen, "'%s': --help, --version and --list-keys take no scene and run nothing", argv[optind]);
         return 2;
     }
-    if (plan && cost) {
+    if (fs->plan && fs->cost) {
         snprintf(why, whylen, "--plan and --cost do not go together: --plan prints one run's plan, --cost runs a grid of runs; give one");
         return 2;
     }
-    if (replay && (batch || plan || cost)) {
-        snprintf(why, whylen, "--replay drives the TUI from a script; it does not go with %s", batch ? "--batch" : plan ? "--plan" : "--cost");
+    if (fs->replay && (fs->batch || fs->plan || fs->cost)) {
+        snprintf(why, whylen, "--replay drives the TUI from a script; it does not go with %s",
+                 fs->batch ? "--batch" : fs->plan ? "--plan" : "--cost");
         return 2;
     }
-    if (screen && !replay) {
+    if (fs->screen && !fs->replay) {
         snprintf(why, whylen, "--screen writes the final screen of a --replay run: give --replay=FILE too");
         return 2;
     }
+    return 0;
+}
+
+int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
+{
+    static flags_seen fs;
+    memset(cli, 0, sizeof *cli);
+    adh_config_default(&cli->cfg);
+    /* getopt permutes argv: keep the order as typed for the hints */
+    char *orig[256];
+    int norig = argc < 256 ? argc : 256;
+    memcpy(orig, argv, (size_t)norig * sizeof *orig);
+    if (collect(argc, argv, &fs, why, whylen) != 0 || combinations(argc, argv, &fs, why, whylen) != 0)
+        return 2;
+    /* Two passes: the scene (positional) sets values first, then the flags
+     * override them whatever their order on the line. */
     if (optind == argc - 1) {
         cli->scene_arg = argv[optind];
         char path[PATH_MAX];
@@ -486,41 +366,44 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
             split_unit_hint(norig, orig, cli->scene_arg, why, whylen);
             return 2;
         }
-        int rc = adh_scene_load(cli->scene_arg, &cli->cfg, why, whylen);
-        if (rc != 0)
+        if (adh_scene_load(cli->scene_arg, &cli->cfg, why, whylen) != 0)
             return 2;
     }
-    for (size_t i = 0; i < nseen; i++)
-        if (apply(cli, seen[i].c, seen[i].arg, seen[i].name, why, whylen) != 0)
+    for (size_t i = 0; i < fs.n; i++)
+        if (apply(cli, fs.list[i].o, fs.list[i].arg, why, whylen) != 0)
             return 2;
-    if (reference && cli->cfg.mode != ADH_MODE_RELAX) {
-        snprintf(why, whylen, "--reference=static is for --mode=relax: %s", cli->cfg.mode == ADH_MODE_STATIC
+    adh_mode mode = cli->cfg.spec.mode;
+    if (fs.reference && mode != ADH_MODE_RELAX) {
+        snprintf(why, whylen, "--reference=static is for --mode=relax: %s", mode == ADH_MODE_STATIC
                  ? "in static mode the run is the static curve itself" : "rigid spheres have no elastic curve to compare");
         return 2;
     }
-    if (reference && cli->action != CLI_ACT_BATCH && cli->action != CLI_ACT_PLAN) {
+    if (fs.reference && cli->action != CLI_ACT_BATCH && cli->action != CLI_ACT_PLAN) {
         snprintf(why, whylen, "--reference=static is drawn by --batch runs only");
         return 2;
     }
     return 0;
 }
 
-static int validate_run(const adh_config *cfg, char *why, size_t whylen);
+static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *why, size_t whylen);
 
-/* A sweep is valid when every one of its runs is (each sets its own E or eps). */
+/* Every run is checked (a sweep's each set their own E or eps), with the
+ * protocol it steps. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen)
 {
-    if (cfg->sweep.kind == ADH_SWEEP_NONE)
-        return validate_run(cfg, why, whylen);
+    adh_run_spec run;
+    if (cfg->sweep.kind == ADH_SWEEP_NONE) {
+        adh_config_sweep_run(cfg, 0, &run);
+        return validate_run(cfg, &run, why, whylen);
+    }
     for (size_t i = 0; i < cfg->sweep.n; i++) {
-        adh_config run;
         char msg[1024];
         adh_config_sweep_run(cfg, i, &run);
-        if (validate_run(&run, msg, sizeof msg) != 0) {
-            snprintf(why, whylen, "sweep run %zu (%s = %g): %s", i + 1, adh_sweep_name(cfg->sweep.kind),
-                     cfg->sweep.values[i], msg);
-            return 2;
-        }
+        if (validate_run(cfg, &run, msg, sizeof msg) == 0)
+            continue;
+        snprintf(why, whylen, "sweep run %zu (%s = %g): %s", i + 1, adh_sweep_name(cfg->sweep.kind),
+                 cfg->sweep.values[i], msg);
+        return 2;
     }
     return 0;
 }
@@ -541,44 +424,26 @@ static int readable_file(const char *opt, const char *path, char *why, size_t wh
     return 0;
 }
 
-static int validate_run(const adh_config *cfg, char *why, size_t whylen)
+/* The grid of run: its settings make a grid, it holds the run (the core's
+ * check) and resolves the contact (unless --force). */
+static int validate_grid(const adh_run_spec *run, char *why, size_t whylen)
 {
-    /* the material first (adh_drive_check meets it again): a graded grid is
-     * built from it below */
-    if (adh_material_validate(&cfg->mat, why, whylen) != ADH_SUCCESS ||
-        adh_relax_settings_validate(&cfg->relax, why, whylen) != ADH_SUCCESS)
+    const adh_grid_spec *u = &run->grid.use;
+    char msg[1024];
+    if (adh_config_grid_check(run, msg, sizeof msg) != 0) {
+        cli_options_words(msg, why, whylen);
         return 2;
-    if (cfg->gnuplot_style[0]) {
-        /* a directory holds style.gp (adh_plot_style_file reads it there) */
-        char style[PATH_MAX + 16];
-        struct stat st;
-        int dir = stat(cfg->gnuplot_style, &st) == 0 && S_ISDIR(st.st_mode);
-        snprintf(style, sizeof style, "%s%s", cfg->gnuplot_style, dir ? "/style.gp" : "");
-        if (readable_file("gnuplot-style", style, why, whylen))
-            return 2;
+    }
+    /* a uniform grid is checked from its description; a graded one is built */
+    double dr = adh_config_spacing(run);
+    adh_grid uniform = adh_drive_uniform_grid(u->nodes, dr);
+    adh_grid *g = u->graded ? adh_config_grid_alloc(run) : &uniform;
+    if (!g) {
+        snprintf(why, whylen, "out of memory for a grid of %zu nodes", u->nodes);
+        return 2;
     }
     unsigned fix;
-    if (cfg->mode == ADH_MODE_RIGID) {   /* eq 22 alone: no grid is built */
-        if (adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, ADH_GRID_RELAX, NULL, why, whylen, &fix) == ADH_SUCCESS)
-            return 0;
-        cli_advice_append(why, whylen, fix);
-        return 2;
-    }
-    if (!(isfinite(cfg->drive_speed) && cfg->drive_speed > 0 && cfg->drive_speed < 1e3)) {
-        snprintf(why, whylen, "drive speed %g m/s is not allowed: it must be above 0 and below 1000 m/s", cfg->drive_speed);
-        return 2;
-    }
-    if (adh_config_grid_check(cfg, why, whylen) != 0)
-        return 2;
-    /* a uniform grid is checked from its description; a graded one is built */
-    double dr = adh_config_spacing(cfg);
-    adh_grid uniform = adh_drive_uniform_grid(cfg->nodes, dr);
-    adh_grid *g = cfg->graded ? adh_config_grid_alloc(cfg) : &uniform;
-    if (!g) {
-        snprintf(why, whylen, "out of memory for a grid of %zu nodes", cfg->nodes);
-        return 2;
-    }
-    int rc = adh_drive_check(&cfg->mat, &cfg->relax, &cfg->proto, adh_config_grid_use(cfg), g, why, whylen, &fix);
+    int rc = adh_drive_check(&run->mat, &run->relax, &run->proto, adh_config_grid_use(run), g, why, whylen, &fix);
     if (g != &uniform)
         adh_grid_free(g);
     if (rc != ADH_SUCCESS) {
@@ -586,8 +451,8 @@ static int validate_run(const adh_config *cfg, char *why, size_t whylen)
         return 2;
     }
     adh_grid_report gr;
-    adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);
-    if (cfg->mode != ADH_MODE_RIGID && !gr.resolved && !cfg->force) {
+    adh_grid_check(&run->mat, adh_config_grid_use(run), u->nodes, dr, &gr);
+    if (!gr.resolved && !run->grid.force) {
         adh_grid_unresolved_sentence(&gr, why, whylen);
         size_t len = strlen(why);
         snprintf(why + len, whylen - len, "; use --spacing=%.3gm or more nodes over the same radius, or --force to run it anyway (marked resolved 0)",
@@ -595,4 +460,40 @@ static int validate_run(const adh_config *cfg, char *why, size_t whylen)
         return 2;
     }
     return 0;
+}
+
+/* Rigid spheres: eq 22 alone, no grid is built. */
+static int rigid_check(const adh_run_spec *run, char *why, size_t whylen)
+{
+    unsigned fix;
+    if (adh_drive_check(&run->mat, &run->relax, &run->proto, ADH_GRID_RELAX, NULL, why, whylen, &fix) == ADH_SUCCESS)
+        return 0;
+    cli_advice_append(why, whylen, fix);
+    return 2;
+}
+
+static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *why, size_t whylen)
+{
+    /* the material first (adh_drive_check meets it again): a graded grid is
+     * built from it below */
+    if (adh_material_validate(&run->mat, why, whylen) != ADH_SUCCESS ||
+        adh_relax_settings_validate(&run->relax, why, whylen) != ADH_SUCCESS)
+        return 2;
+    const adh_output_options *o = &cfg->output;
+    if (o->gnuplot_style[0]) {
+        /* a directory holds style.gp (adh_plot_style_file reads it there) */
+        char style[PATH_MAX + 16];
+        struct stat st;
+        int dir = stat(o->gnuplot_style, &st) == 0 && S_ISDIR(st.st_mode);
+        snprintf(style, sizeof style, "%s%s", o->gnuplot_style, dir ? "/style.gp" : "");
+        if (readable_file("gnuplot-style", style, why, whylen))
+            return 2;
+    }
+    if (run->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
+        return rigid_check(run, why, whylen);
+    if (!(isfinite(o->drive_speed) && o->drive_speed > 0 && o->drive_speed < 1e3)) {
+        snprintf(why, whylen, "drive speed %g m/s is not allowed: it must be above 0 and below 1000 m/s", o->drive_speed);
+        return 2;
+    }
+    return validate_grid(run, why, whylen);
 }

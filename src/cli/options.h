@@ -6,14 +6,14 @@
 
 #include "scene/config.h"
 
-typedef enum tui_action {
+typedef enum cli_action {
     CLI_ACT_TUI = 0, CLI_ACT_BATCH, CLI_ACT_HELP, CLI_ACT_VERSION, CLI_ACT_LIST_KEYS,
     CLI_ACT_PLAN, CLI_ACT_COST
-} tui_action;
+} cli_action;
 
 typedef struct cli_options {
     adh_config cfg;
-    tui_action action;
+    cli_action action;
     const char *scene_arg;   /* positional SCENE, or NULL */
     char reference[16];      /* --reference: "" or "static" */
     char cost_eps[256];      /* --cost-eps list, "" = default */
@@ -24,6 +24,10 @@ typedef struct cli_options {
  * flags). Returns 0, or 2 with a message in why. */
 int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen);
 void cli_options_usage(FILE *out);
+
+/* A sentence of the configuration's (naming keys: grid.kernel = paper) in
+ * the CLI's words (flags: --kernel=paper). */
+void cli_options_words(const char *sentence, char *out, size_t len);
 
 /* Checks the whole configuration before anything runs. 0 or 2 with why. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen);

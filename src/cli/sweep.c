@@ -15,15 +15,16 @@
 #include "adhere/models.h"
 #include "adhere/runner.h"
 #include "adhere/status.h"
-#include "cli/batch.h"
+#include "cli/exit.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
-#include "cli/ready.h"
+#include "cli/jumps.h"
+#include "util/ready.h"
 #include "cli/progress.h"
 #include "adhere/clock.h"
 #include "cli/static.h"
 #include "cli/tables.h"
-#include "cli/plotsetup.h"
+#include "plot/setup.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
 
@@ -60,7 +61,7 @@ static void *worker(void *arg)
         pthread_mutex_unlock(&job->lock);
         if (i >= cfg->sweep.n)
             break;
-        adh_config rc;
+        adh_run_spec rc;
         adh_config_sweep_run(cfg, i, &rc);
         adh_run *run = &job->runs[i];
         /* each static run allocates its own solver (a dense copy of the
@@ -76,7 +77,7 @@ static void *worker(void *arg)
             job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i]);
         pthread_mutex_lock(&job->lock);
         job->done++;
-        if (!cfg->quiet) {
+        if (!cfg->output.quiet) {
             char pr[64];
             cli_progress_text(job->done, cfg->sweep.n, adh_clock_seconds() - job->t0, pr, sizeof pr);
             fprintf(stderr, "adhere: run %zu of %zu (%s = %g) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
@@ -88,60 +89,10 @@ static void *worker(void *arg)
         if (run->unconverged)
             fprintf(stderr, "adhere: warning: run %zu (%s = %g): %zu of %zu steps reached the iteration cap (%zu) "
                     "without meeting eps; their rows say converged 0\n", i + 1, adh_sweep_name(cfg->sweep.kind),
-                    cfg->sweep.values[i], run->unconverged, run->nrows, cfg->relax.max_iter);
+                    cfg->sweep.values[i], run->unconverged, run->nrows, cfg->spec.relax.max_iter);
         pthread_mutex_unlock(&job->lock);
     }
     return NULL;
-}
-
-/* The first loading row in contact, and the loading row before it (-1 when
- * the branch began in contact); -1, -1 when it never touched. */
-static long first_contact(const adh_run *run, long *before)
-{
-    long prev = -1;
-    for (size_t i = 0; i < run->nrows; i++) {
-        const adh_obs *o = &run->rows[i];
-        if (o->path != 0)
-            continue;
-        if (o->a > 0) {
-            *before = prev;
-            return (long)i;
-        }
-        prev = (long)i;
-    }
-    *before = -1;
-    return -1;
-}
-
-/* A static curve (mode = static) jumps into contact at its first fold,
- * where the outer branch ends: the last stable row before the first
- * unstable one. -1 for a relaxation run (every row stable) or a curve
- * without a fold. */
-static long first_fold(const adh_run *run)
-{
-    for (size_t i = 1; i < run->nrows; i++)
-        if (!run->rows[i].stable)
-            return run->rows[i - 1].stable ? (long)i - 1 : -1;
-    return -1;
-}
-
-double cli_sweep_gap_before_jump(const adh_run *run)
-{
-    long fold = first_fold(run);
-    if (fold >= 0)
-        return run->rows[fold].hc;
-    long before, at = first_contact(run, &before);
-    return at >= 0 && before >= 0 ? run->rows[before].hc : NAN;
-}
-
-int cli_sweep_jumped(const adh_run *run, double step)
-{
-    if (first_fold(run) >= 0)
-        return 1;
-    long before, at = first_contact(run, &before);
-    if (at < 0)
-        return -1;
-    return before >= 0 && run->rows[before].hc - run->rows[at].hc > 2.0 * step ? 1 : 0;
 }
 
 /* How many runs finished (neither interrupted nor never started). */
@@ -157,7 +108,7 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
                           const int *status)
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
-    int stat = cfg->mode == ADH_MODE_STATIC && sres;
+    int stat = cfg->spec.mode == ADH_MODE_STATIC && sres;
     fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (run-K/ holds its tables), SI units (m, N, Pa, s)\n");
     if (cfg->scene[0])
         cli_tables_comment(f, "scene", cfg->scene);
@@ -175,7 +126,7 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
     fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tjumped\t%sstatus\n",
             stat ? "pulloff_F_disp\tfolds\t" : "");
     for (size_t i = 0; i < cfg->sweep.n; i++) {
-        adh_config rc;
+        adh_run_spec rc;
         adh_config_sweep_run(cfg, i, &rc);
         adh_derived d;
         adh_material_derive(&rc.mat, &d);
@@ -191,8 +142,8 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
         }
         fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%d\t",
                 i + 1, name, cfg->sweep.values[i], rc.mat.E, d.sigma, rc.relax.eps, r->jump_in_h0,
-                cli_sweep_gap_before_jump(r), d.h_star, max_load, pull, out, r->nrows, r->iterations, r->seconds,
-                cli_sweep_jumped(r, rc.proto.step));
+                cli_jumps_gap_before(r), d.h_star, max_load, pull, out, r->nrows, r->iterations, r->seconds,
+                cli_jumps_jumped(r, rc.proto.step));
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
         fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r));
@@ -221,8 +172,8 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
                       int rc, adh_outdir *dir, int data, const char *unwritten, const char *word)
 {
     char why[1024], note[256] = "", lost[512];
-    adh_config rcfg;
-    adh_config_sweep_run(cfg, i, &rcfg);
+    adh_run_spec rspec;
+    adh_config_sweep_run(cfg, i, &rspec);
     snprintf(lost, sizeof lost, "%s", unwritten ? unwritten : "");
     int partial = run->interrupted || rc != ADH_SUCCESS;
     if (run->interrupted)
@@ -232,8 +183,8 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     /* a static run's summary.tsv has the batch's static keys */
     char keynames[CLI_TABLES_STATIC_KEYS][32];
     cli_tables_extra extra[CLI_TABLES_STATIC_KEYS];
-    size_t nextra = rcfg.mode == ADH_MODE_STATIC && run->nrows ? cli_tables_static_keys(sres, "", keynames, extra) : 0;
-    cli_tables t = { &rcfg, run, extra, nextra, partial, note, lost, word };
+    size_t nextra = rspec.mode == ADH_MODE_STATIC && run->nrows ? cli_tables_static_keys(sres, "", keynames, extra) : 0;
+    cli_tables t = { cfg, &rspec, run, extra, nextra, partial, note, lost, word };
     int status = CLI_EXIT_OK;
     if (data) {
         const char *names[2] = { "force.tsv", run->nturns ? "turns.tsv" : NULL };
@@ -251,7 +202,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     }
     if (status == CLI_EXIT_OK && partial)
         return run->interrupted ? CLI_EXIT_INTERRUPTED : CLI_EXIT_SOLVER;
-    if (status == CLI_EXIT_OK && run->unconverged && !cfg->allow_unconverged) {
+    if (status == CLI_EXIT_OK && run->unconverged && !cfg->output.allow_unconverged) {
         if (data) /* said once, not again when the figures rewrite the summary */
             fprintf(stderr, "adhere: warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)\n",
                     i + 1, run->unconverged, run->nrows);
@@ -273,23 +224,23 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
                        const adh_static_result *sres, int rc, adh_outdir *dir)
 {
     char msg[1024] = "", missing[256] = "";
-    adh_config rcfg;
-    adh_config_sweep_run(cfg, i, &rcfg);
-    if (!cfg->plot)
+    adh_run_spec rspec;
+    adh_config_sweep_run(cfg, i, &rspec);
+    if (!cfg->output.plot)
         return CLI_EXIT_OK;
     int status = CLI_EXIT_OK;
     /* the plot module's figures only when one is asked: a sweep of many runs
      * should not draw what nobody wants */
-    if (rcfg.plots & ADH_PLOT_ALL) {
+    if (cfg->output.plots & ADH_PLOT_ALL) {
         adh_plot_setup ps;
-        cli_plotsetup_fill(&rcfg, g, &ps);
+        adh_plot_setup_fill(cfg, &rspec, g, &ps);
         int prc = adh_plots_write(&ps, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
         if (prc != 0) {
             fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
             status = prc == 2 ? CLI_EXIT_USAGE : CLI_EXIT_PLOT;
         }
     }
-    if (cli_figures_run(&rcfg, run, dir, msg, sizeof msg, missing, sizeof missing) != 0) {
+    if (cli_figures_run(cfg, &rspec, run, dir, msg, sizeof msg, missing, sizeof missing) != 0) {
         fprintf(stderr, "adhere: run %zu: %s\n", i + 1, msg);
         status = status ? status : CLI_EXIT_PLOT;
     }
@@ -311,8 +262,8 @@ static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, co
         { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" },
     };
     char missing[256] = "";
-    for (size_t k = 0; cfg->plot && k < sizeof figs / sizeof figs[0]; k++)
-        if (cfg->plots & figs[k].bit)
+    for (size_t k = 0; cfg->output.plot && k < sizeof figs / sizeof figs[0]; k++)
+        if (cfg->output.plots & figs[k].bit)
             cli_tables_names_add(missing, sizeof missing, figs[k].name);
     if (!*missing)
         return CLI_EXIT_OK;
@@ -355,7 +306,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     double t_start = adh_clock_seconds();
     char why[1024];
     size_t n = cfg->sweep.n;
-    if (cfg->mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_EPS) {
+    if (cfg->spec.mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_EPS) {
         /* every run would be the same equilibrium curve */
         fprintf(stderr, "adhere: a sweep of eps in mode = static would compute the same curve %zu times: "
                 "eps is the relaxation's convergence parameter; sweep E or sigma, or use mode = relax\n", n);
@@ -366,13 +317,13 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
      * kernel serves every run; rigid runs need none. */
     adh_grid *g = NULL;
     adh_kernel *k = NULL;
-    if (cfg->mode != ADH_MODE_RIGID) {
+    if (cfg->spec.mode != ADH_MODE_RIGID) {
         /* --force on a grid some runs do not resolve: said even with -q */
         for (size_t i = 0; i < n; i++) {
-            adh_config rc;
+            adh_run_spec rc;
             adh_config_sweep_run(cfg, i, &rc);
             adh_grid_report gr;
-            adh_grid_check(&rc.mat, adh_config_grid_use(&rc), rc.nodes, adh_config_spacing(&rc), &gr);
+            adh_grid_check(&rc.mat, adh_config_grid_use(&rc), rc.grid.use.nodes, adh_config_spacing(&rc), &gr);
             if (!gr.resolved) {
                 char msg[512];
                 adh_grid_unresolved_sentence(&gr, msg, sizeof msg);
@@ -382,15 +333,15 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         /* caught from here: a large ring kernel takes seconds to build */
         cli_interrupt_catch();
         int kst = ADH_ENOMEM;
-        g = adh_config_grid_alloc(cfg);
-        cli_ready_phase("kernel");
-        k = g ? adh_config_kernel_alloc(cfg, g, &kst) : NULL;
+        g = adh_config_grid_alloc(&cfg->spec);
+        adh_ready_phase("kernel");
+        k = g ? adh_config_kernel_alloc(&cfg->spec, g, &kst) : NULL;
         if (!k) {
             if (kst == ADH_EINTR)
                 fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
-                        cli_interrupt_signal(), g ? g->n : cfg->nodes);
+                        cli_interrupt_signal(), g ? g->n : cfg->spec.grid.use.nodes);
             else
-                fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->nodes);
+                fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->spec.grid.use.nodes);
             cli_interrupt_release();
             adh_grid_free(g);
             return kst == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
@@ -424,7 +375,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         openblas_set_num_threads(1);
 
     cli_interrupt_catch();
-    cli_ready_phase("sweep");
+    adh_ready_phase("sweep");
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status,
                       .out = od ? subs : NULL, .tables = tables };
@@ -451,7 +402,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
             exit_status = worse(exit_status, CLI_EXIT_INTERRUPTED);
         else if (status[i] != ADH_SUCCESS)
             exit_status = worse(exit_status, CLI_EXIT_SOLVER);
-        else if (runs[i].unconverged && !cfg->allow_unconverged)
+        else if (runs[i].unconverged && !cfg->output.allow_unconverged)
             exit_status = worse(exit_status, CLI_EXIT_SOLVER);   /* sweep.tsv says unconverged */
     }
     sweep_tables st = { cfg, runs, sres, status };
@@ -474,7 +425,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         if (adh_outdir_write(od, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             exit_status = worse(exit_status, CLI_EXIT_USAGE);
-        } else if (cfg->plot && exit_status == CLI_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
+        } else if (cfg->output.plot && exit_status == CLI_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
             char msg[1024] = "";
             if (cli_figures_sweep(cfg, runs, n, od, msg, sizeof msg) != 0) {
                 fprintf(stderr, "adhere: sweep plot not written: %s\n", msg);
@@ -486,13 +437,13 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     if (cli_interrupt_signal())
         fprintf(stderr, "adhere: interrupted by signal %d: %zu of %zu runs finished; sweep.tsv%s says which (# PARTIAL)\n",
                 cli_interrupt_signal(), finished(cfg, runs), n, out ? " and each run's summary.tsv" : "");
-    if (exit_status == CLI_EXIT_OK && !cfg->quiet) {
+    if (exit_status == CLI_EXIT_OK && !cfg->output.quiet) {
         char t[32];
         cli_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
         if (out)
             fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv%s in %s/, each run's tables%s in "
-                    "%s/run-1 ... run-%zu\n", t, n, cfg->plot && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",
-                    out, cfg->plot && cfg->plots ? " and plots" : "", out, n);
+                    "%s/run-1 ... run-%zu\n", t, n, cfg->output.plot && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",
+                    out, cfg->output.plot && cfg->output.plots ? " and plots" : "", out, n);
         else
             fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv went to standard output\n", t, n);
     }

@@ -75,7 +75,7 @@ const char *cli_tables_status_word(const adh_run *r)
 
 /* 0 when the surfaces touched and every unloading branch separated; 1 no
  * contact, 2 not separated, with why. A rigid run is not asked. */
-static int contact_fault(const adh_config *c, const adh_run *r, char *why, size_t whylen)
+static int contact_fault(const adh_run_spec *c, const adh_run *r, char *why, size_t whylen)
 {
     if (c->mode == ADH_MODE_RIGID)
         return 0;
@@ -86,14 +86,14 @@ static int contact_fault(const adh_config *c, const adh_run *r, char *why, size_
     return adh_run_separated(r, why, whylen) ? 0 : 2;
 }
 
-static int grid_resolved(const adh_config *c)
+static int grid_resolved(const adh_run_spec *c)
 {
     adh_grid_report gr;
-    adh_grid_check(&c->mat, adh_config_grid_use(c), c->nodes, adh_config_spacing(c), &gr);
+    adh_grid_check(&c->mat, adh_config_grid_use(c), c->grid.use.nodes, adh_config_spacing(c), &gr);
     return c->mode == ADH_MODE_RIGID || gr.resolved;
 }
 
-const char *cli_tables_verdict(const adh_config *c, const adh_run *r)
+const char *cli_tables_verdict(const adh_run_spec *c, const adh_run *r)
 {
     const char *word = cli_tables_status_word(r);
     if (strcmp(word, "success") != 0)
@@ -111,7 +111,7 @@ static void kv(FILE *f, const char *k, double v)
 int cli_tables_summary(FILE *f, const void *ctx)
 {
     const cli_tables *t = ctx;
-    const adh_config *c = t->cfg;
+    const adh_run_spec *c = t->spec;
     const adh_run *r = t->run;
     adh_derived d;
     adh_material_derive(&c->mat, &d);
@@ -125,7 +125,7 @@ int cli_tables_summary(FILE *f, const void *ctx)
     kv(f, "A", c->mat.A);
     kv(f, "z0", c->mat.z0);
     kv(f, "R", c->mat.R);
-    if (c->graded) {
+    if (c->grid.use.graded) {
         /* the rings actually built: N and Rmax follow from the spec */
         adh_rings_spec rs = adh_config_rings(c);
         adh_grid *g = adh_rings_alloc(&rs);
@@ -137,12 +137,12 @@ int cli_tables_summary(FILE *f, const void *ctx)
         kv(f, "growth", rs.ratio);
         adh_grid_free(g);
     } else {
-        kv(f, "nodes", (double)c->nodes);
+        kv(f, "nodes", (double)c->grid.use.nodes);
         kv(f, "spacing", adh_config_spacing(c));
-        kv(f, "rmax", (double)c->nodes * adh_config_spacing(c));
+        kv(f, "rmax", (double)c->grid.use.nodes * adh_config_spacing(c));
     }
-    fprintf(f, "kernel\t%s\n", adh_kernel_name(c->kernel));
-    fprintf(f, "operator\t%s\n", adh_kernel_storage_name(c->storage));
+    fprintf(f, "kernel\t%s\n", adh_kernel_name(c->grid.use.kernel));
+    fprintf(f, "operator\t%s\n", adh_kernel_storage_name(c->grid.use.storage));
     fprintf(f, "mode\t%s\n", c->mode == ADH_MODE_STATIC ? "static" : "relax");
     kv(f, "eps", c->relax.eps);
     kv(f, "step", c->proto.step);
@@ -173,7 +173,7 @@ int cli_tables_summary(FILE *f, const void *ctx)
      * share of the starting force from beyond Rmax (the analytic tail) */
     int rigid = c->mode == ADH_MODE_RIGID;
     adh_grid_report gr;
-    adh_grid_check(&c->mat, adh_config_grid_use(c), c->nodes, adh_config_spacing(c), &gr);
+    adh_grid_check(&c->mat, adh_config_grid_use(c), c->grid.use.nodes, adh_config_spacing(c), &gr);
     kv(f, "edge_nodes", rigid ? NAN : gr.edge_nodes);
     kv(f, "rmax_force_fraction", rigid || r->nrows == 0 ? NAN : r->rows[0].F_tail / r->rows[0].F);
     kv(f, "resolved", rigid || gr.resolved ? 1 : 0);

@@ -19,6 +19,7 @@ typedef struct cli_tables_extra {
 
 typedef struct cli_tables {
     const adh_config *cfg;
+    const adh_run_spec *spec;        /* the run's (a sweep's run K: its own) */
     const adh_run *run;
     const cli_tables_extra *extra;  /* more summary keys (static mode...), may be NULL */
     size_t nextra;
@@ -32,11 +33,11 @@ typedef struct cli_tables {
 /* The summary's status word: interrupted, unconverged (steps at the
  * iteration cap), success, or the solver's error. */
 const char *cli_tables_status_word(const adh_run *r);
-/* The status word of a run of c, as summary.tsv and sweep.tsv say it:
+/* The status word of a run of c (its specification), as summary.tsv and sweep.tsv say it:
  * cli_tables_status_word's, and for a finished run "no contact" (the
  * surfaces never touched), "not separated" (an unloading branch ended in
  * contact) or "unresolved" (a grid coarser than the limit) where that holds. */
-const char *cli_tables_verdict(const adh_config *c, const adh_run *r);
+const char *cli_tables_verdict(const adh_run_spec *c, const adh_run *r);
 /* Appends name (or a comma-separated list) to the comma-separated list in
  * buf; what does not fit is left off whole names at a time. */
 void cli_tables_names_add(char *buf, size_t len, const char *name);

@@ -5,38 +5,12 @@
 #ifndef ADH_PLOT_H
 #define ADH_PLOT_H
 
-#include <signal.h>
 #include <stddef.h>
 
-#include "adhere/params.h"
 #include "adhere/run.h"
 #include "plot/outdir.h"
+#include "plot/setup.h"
 #include "scene/figures.h"
-#include "scene/measured.h"
-
-/* What the plots of one run show, beside the run itself. Strings and
- * arrays are borrowed: they must outlive the call they are passed to. */
-typedef struct adh_plot_setup {
-    adh_material mat;              /* headings, model curves, the tables' preamble */
-    unsigned figures;              /* adh_plot_kind bits asked for: ADH_PLOT_CONTACT
-                                      also asks for contact.tsv */
-    int draw;                      /* 0: the tables only, no PNG (--no-plot) */
-    const char *title;             /* the scene's title, "" for none */
-    int rigid;                     /* rigid spheres: no JKR, DMT, MD curves (E means nothing) */
-    int equilibrium;               /* path 0 is the static equilibrium curve (--mode=static) */
-    double drive_speed;            /* |dh0/dt|, m/s: contact-line speeds */
-    double step;                   /* drive step d, m */
-    size_t nodes;                  /* the run's grid: N nodes (each profile's length), */
-    double dr;                     /* its (finest) spacing, m, */
-    const double *r;               /* and its node radii; NULL: uniform, (n + 1/2) dr */
-    const char *style;             /* gnuplot style file or directory, "" = the installed one */
-    const adh_measured *measured;  /* --data: drawn over force.png, NULL = none */
-    const volatile sig_atomic_t *cancel; /* the caller's interrupt flag: a wait for gnuplot
-                                            stops once it is raised (NULL: none) */
-} adh_plot_setup;
-
-/* Node n's radius on the setup's grid. */
-double adh_plot_radius(const adh_plot_setup *s, size_t n);
 
 /* Writes the figures s asks for into out, beside profiles.tsv (when the
  * run stored profiles) and contact.tsv (when the contact figure is asked),

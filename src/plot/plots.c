@@ -61,12 +61,6 @@ static void append(char *buf, size_t len, const char *fmt, ...)
 }
 
 
-
-double adh_plot_radius(const adh_plot_setup *s, size_t n)
-{
-    return s->r ? s->r[n] : ((double)n + 0.5) * s->dr;
-}
-
 /* A scene title makes a two-line heading, which needs more room above. */
 static int has_title(const plotter *pl)
 {
@@ -308,213 +302,196 @@ static void unload_color(int path, char *buf, size_t len)
              path - 1);
 }
 
-static int plot_force(plotter *pl)
+/* What force.png is drawn from, gathered step by step. */
+typedef struct force_fig {
+    char dat[PATH_MAX + 32];       /* force.dat: every curve, one dataset each */
+    char adh[PATH_MAX + 32];       /* adhesion.dat: adhesion against maximum load */
+    int np;                        /* the highest path */
+    int *set;                      /* set[2k + (1 - stable)]: path k's stable / unstable rows */
+    int rigid_set, meas_set, ref_set[2];
+    const adh_run *ref;            /* --reference=static, NULL */
+    model_sets jkr, dmt, md;
+    double md_lambda;
+    int models, any_disp;          /* a model curve was written; one has a part past its pull-off */
+    double flo, fhi, xmin, xmax, xpad;
+    size_t nadh, order[ADH_MAX_TURNS];   /* turns with an adhesion, in load order */
+    double fscale;
+    const char *funit;
+    int nunload;                   /* unloading branches drawn */
+    double lo, hi;                 /* the force axis */
+} force_fig;
+
+static void force_grow(force_fig *ff, double h0, double F)
+{
+    ff->flo = fmin(ff->flo, F);
+    ff->fhi = fmax(ff->fhi, F);
+    ff->xmin = fmin(ff->xmin, h0);
+    ff->xmax = fmax(ff->xmax, h0);
+}
+
+/* The computed curves: the run's paths, eq 22 before contact, the static
+ * reference, the measured points; the frame grows round them. */
+static void force_curves(plotter *pl, force_fig *ff, datafile *df)
 {
     const adh_run *run = pl->run;
-    const adh_derived *d = &pl->d;
-    if (run->nrows < 2) {
-        pl->skipped |= ADH_PLOT_FORCE;
-        append(pl->notes, sizeof pl->notes, "%sforce.png skipped: fewer than 2 rows",
-               *pl->notes ? "; " : "");
-        return 0;
+    for (int p = 0; p <= ff->np; p++)
+        for (int s = 1; s >= 0; s--)
+            ff->set[2 * p + (1 - s)] = write_force_set(df, run, p, s);
+    set_begin(df);
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        force_grow(ff, o->h0, o->F);
+        /* eq 22 only means something while the rigid surfaces are apart */
+        if (o->path == 0 && o->h0 > 0 && isfinite(o->F_rigid))
+            set_point(df, o->h0, o->F_rigid);
     }
-    char dat[PATH_MAX + 32], adh[PATH_MAX + 32], q[ADH_GP_PATH_SIZE];
-    FILE *f = data_file(pl, "force.dat", dat, sizeof dat);
+    ff->rigid_set = df->points > 1 ? set_end(df) : (set_end(df), -1);
+    /* --reference=static: the equilibrium curve (its path 0), stable and
+     * unstable stretches, a computed curve like the run's own */
+    ff->ref = pl->ref && pl->ref->nrows >= 2 ? pl->ref : NULL;
+    ff->ref_set[0] = ff->ref_set[1] = -1;
+    if (ff->ref) {
+        for (int s = 1; s >= 0; s--)
+            ff->ref_set[1 - s] = write_force_set(df, ff->ref, 0, s);
+        for (size_t i = 0; i < ff->ref->nrows; i++)
+            force_grow(ff, ff->ref->rows[i].h0, ff->ref->rows[i].F);
+    }
+    /* --data: the user's measurement, points over the model, in the frame */
+    ff->meas_set = -1;
+    const adh_measured *meas = pl->s->measured;
+    if (meas && meas->n) {
+        set_begin(df);
+        for (size_t i = 0; i < meas->n; i++) {
+            set_point(df, meas->h0[i], meas->F[i]);
+            force_grow(ff, meas->h0[i], meas->F[i]);
+        }
+        ff->meas_set = set_end(df);
+    }
+}
+
+/* The models for comparison (not for rigid spheres, where E means
+ * nothing), each over the whole width of the frame. -1 out of memory. */
+static int force_models(plotter *pl, force_fig *ff, datafile *df)
+{
+    ff->jkr = ff->dmt = ff->md = (model_sets){ -1, -1 };
+    ff->md_lambda = NAN;
+    if (!pl->s->rigid) {
+        adh_model_curve *mc = malloc(sizeof *mc);
+        if (!mc)
+            return -1;
+        const adh_material *mat = &pl->s->mat;
+        double h0_min = ff->xmin - ff->xpad;
+        if (adh_jkr_drive_curve(mat, h0_min, mc) == 0)
+            ff->jkr = write_model_sets(df, mc);
+        ff->md_lambda = adh_md_lambda(mat);
+        if (adh_md_drive_curve(mat, ff->md_lambda, h0_min, mc) == 0)
+            ff->md = write_model_sets(df, mc);
+        if (adh_dmt_drive_curve(mat, h0_min, mc) == 0)
+            ff->dmt = write_model_sets(df, mc);
+        free(mc);
+    }
+    ff->models = ff->jkr.load >= 0 || ff->jkr.disp >= 0 || ff->md.load >= 0 || ff->md.disp >= 0 ||
+                 ff->dmt.load >= 0 || ff->dmt.disp >= 0;
+    ff->any_disp = ff->jkr.disp >= 0 || ff->md.disp >= 0 || ff->dmt.disp >= 0;
+    return 0;
+}
+
+/* force.dat: every curve of the figure. */
+static int force_data(plotter *pl, force_fig *ff)
+{
+    FILE *f = data_file(pl, "force.dat", ff->dat, sizeof ff->dat);
     if (!f)
         return -1;
-
-    /* set[2k + (1 - stable)]: the index of path k's stable / unstable rows */
-    int np = max_path(run);
-    int *set = malloc(2 * ((size_t)np + 1) * sizeof *set);
-    if (!set) {
+    datafile df = { .f = f };
+    ff->flo = ff->xmin = INFINITY;
+    ff->fhi = ff->xmax = -INFINITY;
+    force_curves(pl, ff, &df);
+    ff->xpad = 0.02 * (ff->xmax - ff->xmin);
+    if (force_models(pl, ff, &df) != 0) {
         fclose(f);
         return -1;
     }
-    datafile df = { .f = f };
-    for (int p = 0; p <= np; p++)
-        for (int s = 1; s >= 0; s--)
-            set[2 * p + (1 - s)] = write_force_set(&df, run, p, s);
-    double flo = INFINITY, fhi = -INFINITY, xmin = INFINITY, xmax = -INFINITY;
-    set_begin(&df);
-    for (size_t i = 0; i < run->nrows; i++) {
-        const adh_obs *o = &run->rows[i];
-        flo = fmin(flo, o->F);
-        fhi = fmax(fhi, o->F);
-        xmin = fmin(xmin, o->h0);
-        xmax = fmax(xmax, o->h0);
-        /* eq 22 only means something while the rigid surfaces are apart */
-        if (o->path == 0 && o->h0 > 0 && isfinite(o->F_rigid))
-            set_point(&df, o->h0, o->F_rigid);
-    }
-    int rigid_set = df.points > 1 ? set_end(&df) : (set_end(&df), -1);
-    /* --reference=static: the equilibrium curve (its path 0), stable and
-     * unstable stretches, a computed curve like the run's own */
-    const adh_run *ref = pl->ref && pl->ref->nrows >= 2 ? pl->ref : NULL;
-    int ref_set[2] = { -1, -1 };
-    if (ref) {
-        for (int s = 1; s >= 0; s--)
-            ref_set[1 - s] = write_force_set(&df, ref, 0, s);
-        for (size_t i = 0; i < ref->nrows; i++) {
-            flo = fmin(flo, ref->rows[i].F);
-            fhi = fmax(fhi, ref->rows[i].F);
-            xmin = fmin(xmin, ref->rows[i].h0);
-            xmax = fmax(xmax, ref->rows[i].h0);
-        }
-    }
-    /* --data: the user's measurement, points over the model, in the frame */
-    int meas_set = -1;
-    const adh_measured *meas = pl->s->measured;
-    if (meas && meas->n) {
-        set_begin(&df);
-        for (size_t i = 0; i < meas->n; i++) {
-            set_point(&df, meas->h0[i], meas->F[i]);
-            flo = fmin(flo, meas->F[i]);
-            fhi = fmax(fhi, meas->F[i]);
-            xmin = fmin(xmin, meas->h0[i]);
-            xmax = fmax(xmax, meas->h0[i]);
-        }
-        meas_set = set_end(&df);
-    }
-    double xpad = 0.02 * (xmax - xmin);
-    /* The models for comparison (not for rigid spheres, where E means
-     * nothing), each over the whole width of the frame. */
-    model_sets jkr = { -1, -1 }, dmt = { -1, -1 }, md = { -1, -1 };
-    double md_lambda = NAN;
-    if (!pl->s->rigid) {
-        adh_model_curve *mc = malloc(sizeof *mc);
-        if (!mc) {
-            fclose(f);
-            free(set);
-            return -1;
-        }
-        const adh_material *mat = &pl->s->mat;
-        double h0_min = xmin - xpad;
-        if (adh_jkr_drive_curve(mat, h0_min, mc) == 0)
-            jkr = write_model_sets(&df, mc);
-        md_lambda = adh_md_lambda(mat);
-        if (adh_md_drive_curve(mat, md_lambda, h0_min, mc) == 0)
-            md = write_model_sets(&df, mc);
-        if (adh_dmt_drive_curve(mat, h0_min, mc) == 0)
-            dmt = write_model_sets(&df, mc);
-        free(mc);
-    }
-    int models = jkr.load >= 0 || jkr.disp >= 0 || md.load >= 0 || md.disp >= 0 ||
-                 dmt.load >= 0 || dmt.disp >= 0;
-    int any_disp = jkr.disp >= 0 || md.disp >= 0 || dmt.disp >= 0;
-    if (data_close(pl, f, dat) < 0 || df.bad) {
-        free(set);
-        return -1;
-    }
+    return data_close(pl, f, ff->dat) < 0 || df.bad ? -1 : 0;
+}
 
-    /* Adhesion against maximum load, one point per turn, in load order. */
-    size_t nadh = 0;
-    f = data_file(pl, "adhesion.dat", adh, sizeof adh);
-    if (!f) {
-        free(set);
+/* adhesion.dat: adhesion against maximum load, one point per turn, in
+ * load order. */
+static int adhesion_data(plotter *pl, force_fig *ff)
+{
+    const adh_run *run = pl->run;
+    FILE *f = data_file(pl, "adhesion.dat", ff->adh, sizeof ff->adh);
+    if (!f)
         return -1;
-    }
-    size_t order[ADH_MAX_TURNS];
+    size_t *order = ff->order, n = 0;
     for (size_t t = 0; t < run->nturns; t++)
         if (isfinite(run->turns[t].pulloff_F) && isfinite(run->turns[t].max_load))
-            order[nadh++] = t;
-    for (size_t a = 1; a < nadh; a++)
+            order[n++] = t;
+    for (size_t a = 1; a < n; a++)
         for (size_t b = a; b > 0 && run->turns[order[b]].max_load <
                                     run->turns[order[b - 1]].max_load; b--) {
             size_t x = order[b];
             order[b] = order[b - 1];
             order[b - 1] = x;
         }
-    for (size_t k = 0; k < nadh; k++)
-        fprintf(f, "%.17g\t%.17g\n", run->turns[order[k]].max_load,
-                -run->turns[order[k]].pulloff_F);
-    if (data_close(pl, f, adh) < 0) {
-        free(set);
-        return -1;
-    }
+    for (size_t k = 0; k < n; k++)
+        fprintf(f, "%.17g\t%.17g\n", run->turns[order[k]].max_load, -run->turns[order[k]].pulloff_F);
+    ff->nadh = n;
+    return data_close(pl, f, ff->adh) < 0 ? -1 : 0;
+}
 
-    double fscale;
-    const char *funit;
-    double big = fmax(fabs(flo), fmax(fabs(fhi), fabs(d->F_dmt)));
-    adh_force_unit(big, &fscale, &funit);
-    /* The key sits top right, where the force has decayed to about zero;
-     * the top of the frame is raised until the key clears every computed
-     * curve in the right 60 %. The rigid force, which shoots up near
-     * h0 = z0, may pass behind the (opaque) key: it is only a reference. */
-    int nunload = 0;
-    for (int p = 1; p <= np; p++)
-        nunload += set[2 * p] >= 0 || set[2 * p + 1] >= 0;
-    int nmodel = models ? (jkr.load >= 0 || jkr.disp >= 0) + (md.load >= 0 || md.disp >= 0) +
-                          (dmt.load >= 0 || dmt.disp >= 0) + any_disp
-                        : 2;
-    int nkey = (set[0] >= 0) + (set[1] >= 0) + (rigid_set >= 0) + nmodel + (meas_set >= 0) +
-               (ref_set[0] >= 0 || ref_set[1] >= 0) +
-               (nunload > MAX_LABELLED_UNLOADS ? 1 : nunload);
+/* The force axis: its unit, and a range whose top leaves the key room.
+ * The key sits top right, where the force has decayed to about zero; the
+ * top of the frame is raised until the key clears every computed curve in
+ * the right 60 %. The rigid force, which shoots up near h0 = z0, may pass
+ * behind the (opaque) key: it is only a reference. */
+static void force_frame(plotter *pl, force_fig *ff)
+{
+    const adh_run *run = pl->run;
+    const adh_derived *d = &pl->d;
+    double big = fmax(fabs(ff->flo), fmax(fabs(ff->fhi), fabs(d->F_dmt)));
+    adh_force_unit(big, &ff->fscale, &ff->funit);
+    ff->nunload = 0;
+    for (int p = 1; p <= ff->np; p++)
+        ff->nunload += ff->set[2 * p] >= 0 || ff->set[2 * p + 1] >= 0;
+    int nmodel = ff->models ? (ff->jkr.load >= 0 || ff->jkr.disp >= 0) + (ff->md.load >= 0 || ff->md.disp >= 0) +
+                              (ff->dmt.load >= 0 || ff->dmt.disp >= 0) + ff->any_disp
+                            : 2;
+    int nkey = (ff->set[0] >= 0) + (ff->set[1] >= 0) + (ff->rigid_set >= 0) + nmodel + (ff->meas_set >= 0) +
+               (ff->ref_set[0] >= 0 || ff->ref_set[1] >= 0) +
+               (ff->nunload > MAX_LABELLED_UNLOADS ? 1 : ff->nunload);
     /* (the model curves are only references too: they neither set the
      * range nor push the key) */
-    double right = 0, xcut = xmin + 0.4 * (xmax - xmin);
+    double right = 0, xcut = ff->xmin + 0.4 * (ff->xmax - ff->xmin);
     for (size_t i = 0; i < run->nrows; i++) {
         const adh_obs *o = &run->rows[i];
         if (o->h0 < xcut)
             continue;
         right = fmax(right, o->F);
     }
-    for (size_t i = 0; ref && i < ref->nrows; i++)
-        if (ref->rows[i].h0 >= xcut)
-            right = fmax(right, ref->rows[i].F);
-    double lo = fmin(flo, d->F_dmt);
+    for (size_t i = 0; ff->ref && i < ff->ref->nrows; i++)
+        if (ff->ref->rows[i].h0 >= xcut)
+            right = fmax(right, ff->ref->rows[i].F);
+    double lo = fmin(ff->flo, d->F_dmt);
     double frac = fmin(0.6, (17.0 * nkey + 16.0) / 470.0);
-    double hi = fmax(fhi, (right - frac * lo) / (1.0 - frac));
+    double hi = fmax(ff->fhi, (right - frac * lo) / (1.0 - frac));
     lo -= 0.04 * (hi - lo);
     hi += 0.02 * (hi - lo);
-    double pad = 0;
-    char heading[HEADING_SIZE];
-    title_string(pl, "Force vs position", heading, sizeof heading);
+    ff->lo = lo;
+    ff->hi = hi;
+}
 
-    begin_figure(pl, "force", "force.png");
-    adh_gnuplot_cmd(pl->gp, "Fu = %.17g", fscale);
-    adh_gnuplot_cmd(pl->gp, "Fjkr = %.17g", d->F_jkr);
-    adh_gnuplot_cmd(pl->gp, "Fdmt = %.17g", d->F_dmt);
-    int panel = nadh >= 2;
-    /* a two-line heading (scene title) needs more room above the panels,
-     * or it runs into the adhesion panel's top */
-    double top = has_title(pl) ? 0.90 : 0.95;
-    if (panel) {
-        adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
-        adh_gnuplot_cmd(pl->gp, "set origin 0,0");
-        adh_gnuplot_cmd(pl->gp, "set size 0.64,%g", top);
-    } else {
-        adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
-    }
-    adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
-    adh_gnuplot_cmd(pl->gp, "set ylabel \"force F (%s)\"", funit);
-    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (xmin - xpad) * 1e9,
-                    (xmax + xpad) * 1e9);
-    adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", (lo - pad) * fscale,
-                    (hi + pad) * fscale);
-    adh_gnuplot_cmd(pl->gp, "set key top right");
-
-    /* one plot command, built up clause by clause */
-    char *cmd = NULL;
-    size_t cmdcap = 0;
-    FILE *c = open_memstream(&cmd, &cmdcap);
-    if (!c) {
-        free(set);
-        return -1;
-    }
-    fprintf(c, "plot 0 ls 7 notitle");
-    const char *qdat = adh_gp_path(dat, q, sizeof q);
-    /* Underneath the run: the static reference (its unstable stretches
-     * dashed). Over it: the models (the load-controlled part in the model's
-     * line, the part past the pull-off short-dashed). Their key entries
-     * come after the run's, so the key names the run first. */
+/* The plot command's curves: the static reference underneath (its
+ * unstable stretches dashed), then the run's paths. */
+static void force_run_clauses(plotter *pl, const force_fig *ff, FILE *c, const char *qdat)
+{
     for (int s = 1; s >= 0; s--)
-        if (ref_set[1 - s] >= 0)
+        if (ff->ref_set[1 - s] >= 0)
             fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 9%s notitle", qdat,
-                    ref_set[1 - s], s ? "" : " lw 0.8 dt adh_unstable_dash");
+                    ff->ref_set[1 - s], s ? "" : " lw 0.8 dt adh_unstable_dash");
     int labelled = 0;
-    for (int p = 0; p <= np; p++) {
+    for (int p = 0; p <= ff->np; p++) {
         for (int s = 1; s >= 0; s--) {
-            int idx = set[2 * p + (1 - s)];
+            int idx = ff->set[2 * p + (1 - s)];
             if (idx < 0)
                 continue;
             char style[200], title[160];   /* style: a 127-byte colour and its widths: never cut */
@@ -533,18 +510,26 @@ static int plot_force(plotter *pl)
                 unload_color(p, lc, sizeof lc);
                 snprintf(style, sizeof style, "%s lw %s%s", lc,
                          s ? "adh_unloading_width" : "1", s ? "" : " dt adh_unstable_dash");
-                const adh_turn_result *tr = turn_of_path(run, p);
+                const adh_turn_result *tr = turn_of_path(pl->run, p);
                 if (!s)
                     snprintf(title, sizeof title, "notitle");
                 else
-                    unload_title(tr, nunload, &labelled, title, sizeof title);
+                    unload_title(tr, ff->nunload, &labelled, title, sizeof title);
             }
             fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines %s %s", qdat,
                     idx, style, title);
         }
     }
-    /* the models thin, over the run: where they agree with it both show */
-    const struct { model_sets ms; int ls; } mod[3] = { { jkr, 3 }, { md, 8 }, { dmt, 4 } };
+}
+
+/* The references over the run and the key's entries for them: the models
+ * thin (where they agree with the run both show; the load-controlled part
+ * in the model's line, the part past the pull-off short-dashed), eq 22,
+ * the measured points. Their key entries come after the run's. */
+static void force_reference_clauses(plotter *pl, const force_fig *ff, FILE *c, const char *qdat)
+{
+    const adh_derived *d = &pl->d;
+    const struct { model_sets ms; int ls; } mod[3] = { { ff->jkr, 3 }, { ff->md, 8 }, { ff->dmt, 4 } };
     for (int k = 0; k < 3; k++) {
         if (mod[k].ms.load >= 0)
             fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls %d notitle", qdat,
@@ -553,91 +538,167 @@ static int plot_force(plotter *pl)
             fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls %d "
                        "dt adh_model_disp_dash notitle", qdat, mod[k].ms.disp, mod[k].ls);
     }
-    if (rigid_set >= 0)
+    if (ff->rigid_set >= 0)
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 2 "
-                   "title \"rigid spheres (eq 22)\"", qdat, rigid_set);
+                   "title \"rigid spheres (eq 22)\"", qdat, ff->rigid_set);
     /* (the file's name is the user's text: it stays out of the command) */
-    if (meas_set >= 0)
+    if (ff->meas_set >= 0)
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with points pt 6 ps 0.8 lc rgb \"#222222\" "
-                   "title \"measured (--data)\"", qdat, meas_set);
-    if (ref_set[0] >= 0 || ref_set[1] >= 0)
+                   "title \"measured (--data)\"", qdat, ff->meas_set);
+    if (ff->ref_set[0] >= 0 || ff->ref_set[1] >= 0)
         fprintf(c, ", \\\n  keyentry with lines ls 9 title \"static equilibrium\"");
-    if (models) {
-        for (int k = 0; k < 3; k++) {
-            const model_sets *ms = &mod[k].ms;
-            if (ms->load < 0 && ms->disp < 0)
-                continue;
-            /* short titles: the key must stay narrower than the right 60 %
-             * of the frame, also in the adhesion panel's layout (the man
-             * page says what the pull-offs are) */
-            char title[128];
-            if (k == 0)
-                snprintf(title, sizeof title, "JKR, pull-off %.3g %s", d->F_jkr * fscale, funit);
-            else if (k == 1)
-                snprintf(title, sizeof title, "Maugis–Dugdale, λ = %.3g", md_lambda);
-            else
-                snprintf(title, sizeof title, "DMT, pull-off %.3g %s", d->F_dmt * fscale, funit);
-            fprintf(c, ", \\\n  keyentry with lines ls %d%s title \"%s\"", mod[k].ls,
-                    ms->load >= 0 ? "" : " dt adh_model_disp_dash", title);
-        }
-        if (any_disp)
-            fprintf(c, ", \\\n  keyentry with lines lc rgb \"#555555\" lw 1.4 dt adh_model_disp_dash "
-                       "title \"models past pull-off\"");
-    } else {
+    if (!ff->models) {
         fprintf(c, ", \\\n  Fjkr*Fu with lines ls 3 title sprintf(\"JKR −(3/2)πγR = %%.3g %s\", "
-                   "Fjkr*Fu)", funit);
+                   "Fjkr*Fu)", ff->funit);
         fprintf(c, ", \\\n  Fdmt*Fu with lines ls 4 title sprintf(\"DMT −2πγR = %%.3g %s\", "
-                   "Fdmt*Fu)", funit);
+                   "Fdmt*Fu)", ff->funit);
+        return;
     }
+    for (int k = 0; k < 3; k++) {
+        const model_sets *ms = &mod[k].ms;
+        if (ms->load < 0 && ms->disp < 0)
+            continue;
+        /* short titles: the key must stay narrower than the right 60 %
+         * of the frame, also in the adhesion panel's layout (the man
+         * page says what the pull-offs are) */
+        char title[128];
+        if (k == 0)
+            snprintf(title, sizeof title, "JKR, pull-off %.3g %s", d->F_jkr * ff->fscale, ff->funit);
+        else if (k == 1)
+            snprintf(title, sizeof title, "Maugis–Dugdale, λ = %.3g", ff->md_lambda);
+        else
+            snprintf(title, sizeof title, "DMT, pull-off %.3g %s", d->F_dmt * ff->fscale, ff->funit);
+        fprintf(c, ", \\\n  keyentry with lines ls %d%s title \"%s\"", mod[k].ls,
+                ms->load >= 0 ? "" : " dt adh_model_disp_dash", title);
+    }
+    if (ff->any_disp)
+        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#555555\" lw 1.4 dt adh_model_disp_dash "
+                   "title \"models past pull-off\"");
+}
+
+/* The force panel: frame, then one plot command built clause by clause.
+ * -1 out of memory. */
+static int force_panel(plotter *pl, const force_fig *ff)
+{
+    double pad = 0;
+    adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
+    adh_gnuplot_cmd(pl->gp, "set ylabel \"force F (%s)\"", ff->funit);
+    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (ff->xmin - ff->xpad) * 1e9,
+                    (ff->xmax + ff->xpad) * 1e9);
+    adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", (ff->lo - pad) * ff->fscale,
+                    (ff->hi + pad) * ff->fscale);
+    adh_gnuplot_cmd(pl->gp, "set key top right");
+    char *cmd = NULL, q[ADH_GP_PATH_SIZE];
+    size_t cmdcap = 0;
+    FILE *c = open_memstream(&cmd, &cmdcap);
+    if (!c)
+        return -1;
+    fprintf(c, "plot 0 ls 7 notitle");
+    const char *qdat = adh_gp_path(ff->dat, q, sizeof q);
+    force_run_clauses(pl, ff, c, qdat);
+    force_reference_clauses(pl, ff, c, qdat);
     fclose(c);
     adh_gnuplot_cmd(pl->gp, "%s", cmd);
     free(cmd);
-    free(set);
+    return 0;
+}
 
-    if (panel) {
-        adh_gnuplot_cmd(pl->gp, "set origin 0.64,0");
-        adh_gnuplot_cmd(pl->gp, "set size 0.36,%g", top);
-        adh_gnuplot_cmd(pl->gp, "unset title");
-        adh_gnuplot_cmd(pl->gp, "set autoscale");
-        adh_gnuplot_cmd(pl->gp, "set xlabel \"maximum load (%s)\"", funit);
-        /* a narrow panel: three or four ticks, or their labels collide;
-         * never fewer than two, whatever the span of the loads */
-        double lmin = INFINITY, lmax = -INFINITY, amin = INFINITY, amax = -INFINITY;
-        for (size_t k = 0; k < nadh; k++) {
-            lmin = fmin(lmin, run->turns[order[k]].max_load * fscale);
-            lmax = fmax(lmax, run->turns[order[k]].max_load * fscale);
-            amin = fmin(amin, -run->turns[order[k]].pulloff_F * fscale);
-            amax = fmax(amax, -run->turns[order[k]].pulloff_F * fscale);
-        }
-        if (lmax > lmin) {
-            double span = lmax - lmin, lo_ = lmin - 0.12 * span, hi_ = lmax + 0.12 * span;
-            double step = nice_step((hi_ - lo_) / 3.0);
-            for (int k = 0; k < 6 && floor(hi_ / step) - ceil(lo_ / step) + 1 < 3; k++)
-                step = nice_below(step);
-            adh_gnuplot_cmd(pl->gp, "set xtics %.17g", step);
-            /* an explicit range, so the JKR and DMT lines span the panel */
-            adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo_, hi_);
-        }
-        /* the adhesion and the two models, not zero: a pull-off that rises
-         * then saturates with the load (Figure 5) must not be flattened */
-        amin = fmin(amin, -d->F_jkr * fscale);
-        amax = fmax(amax, -d->F_dmt * fscale);
-        if (amax > amin) {
-            /* room below the lowest line (JKR's, as a rule) for the key */
-            double span = amax - amin, lo_ = amin - 0.35 * span, hi_ = amax + 0.1 * span;
-            double step = nice_step((hi_ - lo_) / 6.0);
-            adh_gnuplot_cmd(pl->gp, "set ytics %.17g", step);
-            adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", lo_, hi_);
-        }
-        adh_gnuplot_cmd(pl->gp, "set ylabel \"adhesion −F_{min} (%s)\"", funit);
-        adh_gnuplot_cmd(pl->gp, "set key bottom right");
-        adh_gnuplot_cmd(pl->gp,
-                        "plot %s using ($1*Fu):($2*Fu) with linespoints ls 6 title \"adhesion\", "
-                        "-Fjkr*Fu with lines ls 3 title \"JKR\", "
-                        "-Fdmt*Fu with lines ls 4 title \"DMT\"",
-                        adh_gp_path(adh, q, sizeof q));
-        adh_gnuplot_cmd(pl->gp, "unset multiplot");
+/* The adhesion panel at the right (two turns or more): adhesion against
+ * the maximum load, with JKR's and DMT's. */
+static void adhesion_panel(plotter *pl, const force_fig *ff, double top)
+{
+    const adh_run *run = pl->run;
+    const adh_derived *d = &pl->d;
+    const size_t *order = ff->order;
+    double fscale = ff->fscale;
+    char q[ADH_GP_PATH_SIZE];
+    adh_gnuplot_cmd(pl->gp, "set origin 0.64,0");
+    adh_gnuplot_cmd(pl->gp, "set size 0.36,%g", top);
+    adh_gnuplot_cmd(pl->gp, "unset title");
+    adh_gnuplot_cmd(pl->gp, "set autoscale");
+    adh_gnuplot_cmd(pl->gp, "set xlabel \"maximum load (%s)\"", ff->funit);
+    /* a narrow panel: three or four ticks, or their labels collide;
+     * never fewer than two, whatever the span of the loads */
+    double lmin = INFINITY, lmax = -INFINITY, amin = INFINITY, amax = -INFINITY;
+    for (size_t k = 0; k < ff->nadh; k++) {
+        lmin = fmin(lmin, run->turns[order[k]].max_load * fscale);
+        lmax = fmax(lmax, run->turns[order[k]].max_load * fscale);
+        amin = fmin(amin, -run->turns[order[k]].pulloff_F * fscale);
+        amax = fmax(amax, -run->turns[order[k]].pulloff_F * fscale);
     }
+    if (lmax > lmin) {
+        double span = lmax - lmin, lo_ = lmin - 0.12 * span, hi_ = lmax + 0.12 * span;
+        double step = nice_step((hi_ - lo_) / 3.0);
+        for (int k = 0; k < 6 && floor(hi_ / step) - ceil(lo_ / step) + 1 < 3; k++)
+            step = nice_below(step);
+        adh_gnuplot_cmd(pl->gp, "set xtics %.17g", step);
+        /* an explicit range, so the JKR and DMT lines span the panel */
+        adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo_, hi_);
+    }
+    /* the adhesion and the two models, not zero: a pull-off that rises
+     * then saturates with the load (Figure 5) must not be flattened */
+    amin = fmin(amin, -d->F_jkr * fscale);
+    amax = fmax(amax, -d->F_dmt * fscale);
+    if (amax > amin) {
+        /* room below the lowest line (JKR's, as a rule) for the key */
+        double span = amax - amin, lo_ = amin - 0.35 * span, hi_ = amax + 0.1 * span;
+        double step = nice_step((hi_ - lo_) / 6.0);
+        adh_gnuplot_cmd(pl->gp, "set ytics %.17g", step);
+        adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", lo_, hi_);
+    }
+    adh_gnuplot_cmd(pl->gp, "set ylabel \"adhesion −F_{min} (%s)\"", ff->funit);
+    adh_gnuplot_cmd(pl->gp, "set key bottom right");
+    adh_gnuplot_cmd(pl->gp,
+                    "plot %s using ($1*Fu):($2*Fu) with linespoints ls 6 title \"adhesion\", "
+                    "-Fjkr*Fu with lines ls 3 title \"JKR\", "
+                    "-Fdmt*Fu with lines ls 4 title \"DMT\"",
+                    adh_gp_path(ff->adh, q, sizeof q));
+    adh_gnuplot_cmd(pl->gp, "unset multiplot");
+}
+
+static int plot_force(plotter *pl)
+{
+    const adh_run *run = pl->run;
+    const adh_derived *d = &pl->d;
+    if (run->nrows < 2) {
+        pl->skipped |= ADH_PLOT_FORCE;
+        append(pl->notes, sizeof pl->notes, "%sforce.png skipped: fewer than 2 rows",
+               *pl->notes ? "; " : "");
+        return 0;
+    }
+    static force_fig ff;   /* large (two paths, the turn order) */
+    memset(&ff, 0, sizeof ff);
+    ff.np = max_path(run);
+    ff.set = malloc(2 * ((size_t)ff.np + 1) * sizeof *ff.set);
+    if (!ff.set || force_data(pl, &ff) != 0 || adhesion_data(pl, &ff) != 0) {
+        free(ff.set);
+        return -1;
+    }
+    force_frame(pl, &ff);
+    char heading[HEADING_SIZE];
+    title_string(pl, "Force vs position", heading, sizeof heading);
+
+    begin_figure(pl, "force", "force.png");
+    adh_gnuplot_cmd(pl->gp, "Fu = %.17g", ff.fscale);
+    adh_gnuplot_cmd(pl->gp, "Fjkr = %.17g", d->F_jkr);
+    adh_gnuplot_cmd(pl->gp, "Fdmt = %.17g", d->F_dmt);
+    int panel = ff.nadh >= 2;
+    /* a two-line heading (scene title) needs more room above the panels,
+     * or it runs into the adhesion panel's top */
+    double top = has_title(pl) ? 0.90 : 0.95;
+    if (panel) {
+        adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
+        adh_gnuplot_cmd(pl->gp, "set origin 0,0");
+        adh_gnuplot_cmd(pl->gp, "set size 0.64,%g", top);
+    } else {
+        adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
+    }
+    int rc = force_panel(pl, &ff);
+    free(ff.set);
+    if (rc != 0)
+        return -1;
+    if (panel)
+        adhesion_panel(pl, &ff, top);
     return finish_figure(pl, "force.png");
 }
 
@@ -649,125 +710,86 @@ static int cmp_desc(const void *a, const void *b)
     return (x < y) - (x > y);
 }
 
-static int plot_profile(plotter *pl)
+/* Which stored profiles profile.png draws: loading and the unloading
+ * branch of the deepest turn (with several turns the other branches would
+ * bury the comparison Figure 4B makes), and their distinct positions, top
+ * of the figure first, each with one colour. */
+typedef struct profile_fig {
+    const adh_turn_result *main_turn;
+    size_t nsel, *sel;             /* indices into run->profiles */
+    size_t npos;
+    double *pos;
+    char dat[PATH_MAX + 32];
+    double amax;                   /* the largest radius in contact */
+} profile_fig;
+
+static int profile_select(const adh_run *run, profile_fig *pf)
+{
+    pf->main_turn = adh_run_main_turn(run);
+    int unload_path = pf->main_turn ? pf->main_turn->path : -1;
+    pf->sel = malloc((run->nprofiles + 1) * sizeof *pf->sel);
+    pf->pos = malloc((run->nprofiles + 1) * sizeof *pf->pos);
+    if (!pf->sel || !pf->pos)
+        return -1;
+    for (size_t k = 0; k < run->nprofiles; k++)
+        if (run->profiles[k].path == 0 || run->profiles[k].path == unload_path)
+            pf->sel[pf->nsel++] = k;
+    for (size_t k = 0; k < pf->nsel; k++) {
+        double h0 = run->profiles[pf->sel[k]].h0;
+        size_t j = 0;
+        while (j < pf->npos && fabs(pf->pos[j] - h0) > 1e-15)
+            j++;
+        if (j == pf->npos)
+            pf->pos[pf->npos++] = h0;
+    }
+    qsort(pf->pos, pf->npos, sizeof *pf->pos, cmp_desc);
+    return 0;
+}
+
+/* profile.dat: h(r) of each selected profile. */
+static int profile_data(plotter *pl, profile_fig *pf)
 {
     const adh_run *run = pl->run;
     const adh_plot_setup *s = pl->s;
-    /* Loading and the unloading branch of the deepest turn: with several
-     * turns the other branches would bury the comparison Figure 4B makes. */
-    const adh_turn_result *main_turn = adh_run_main_turn(run);
-    int unload_path = main_turn ? main_turn->path : -1;
-    size_t nsel = 0, *sel = malloc((run->nprofiles + 1) * sizeof *sel);
-    double *pos = malloc((run->nprofiles + 1) * sizeof *pos);
-    if (!sel || !pos) {
-        free(sel);
-        free(pos);
+    FILE *f = data_file(pl, "profile.dat", pf->dat, sizeof pf->dat);
+    if (!f)
         return -1;
-    }
-    for (size_t k = 0; k < run->nprofiles; k++)
-        if (run->profiles[k].path == 0 || run->profiles[k].path == unload_path)
-            sel[nsel++] = k;
-    if (nsel == 0) {
-        pl->skipped |= ADH_PLOT_PROFILE;
-        append(pl->notes, sizeof pl->notes, "%sprofile.png skipped: no profiles stored "
-               "(ask with --profiles=M[,M...])", *pl->notes ? "; " : "");
-        free(sel);
-        free(pos);
-        return 0;
-    }
-    /* distinct positions, top of the figure first, each with one colour */
-    size_t npos = 0;
-    for (size_t k = 0; k < nsel; k++) {
-        double h0 = run->profiles[sel[k]].h0;
-        size_t j = 0;
-        while (j < npos && fabs(pos[j] - h0) > 1e-15)
-            j++;
-        if (j == npos)
-            pos[npos++] = h0;
-    }
-    qsort(pos, npos, sizeof *pos, cmp_desc);
-
-    char dat[PATH_MAX + 32], q[ADH_GP_PATH_SIZE];
-    FILE *f = data_file(pl, "profile.dat", dat, sizeof dat);
-    if (!f) {
-        free(sel);
-        free(pos);
-        return -1;
-    }
-    double amax = 0, rgrid = adh_plot_radius(s, s->nodes - 1);
-    for (size_t k = 0; k < nsel; k++) {
-        const adh_profile *pr = &run->profiles[sel[k]];
+    pf->amax = 0;
+    for (size_t k = 0; k < pf->nsel; k++) {
+        const adh_profile *pr = &run->profiles[pf->sel[k]];
         for (size_t n = 0; n < s->nodes; n++) {
-            double r = adh_plot_radius(s, n);
+            double r = adh_plot_setup_radius(s, n);
             fprintf(f, "%.17g\t%.17g\n", r, pr->h[n]);
-            if (pr->h[n] < ADH_CONTACT_FACTOR * s->mat.z0 && r > amax)
-                amax = r;
+            if (pr->h[n] < ADH_CONTACT_FACTOR * s->mat.z0 && r > pf->amax)
+                pf->amax = r;
         }
         fprintf(f, "\n\n");
     }
-    if (data_close(pl, f, dat) < 0) {
-        free(sel);
-        free(pos);
-        return -1;
-    }
+    return data_close(pl, f, pf->dat) < 0 ? -1 : 0;
+}
 
-    /* Frame: wide enough to show the contact and the flank beyond it, high
-     * enough that every position's parabola enters from the top. */
-    double R = s->mat.R, top = pos[0], bottom = pos[npos - 1];
-    double rise = fmax(top - bottom, 10.0 * s->mat.z0);
-    double xmax = sqrt(2.0 * R * rise);
-    if (xmax < 1.6 * amax)
-        xmax = 1.6 * amax;
-    if (xmax > rgrid)
-        xmax = rgrid;
-    double ymax = top + xmax * xmax / (2.0 * R);
-    char heading[HEADING_SIZE];
-    title_string(pl, "Surface profiles", heading, sizeof heading);
-
-    begin_figure(pl, "profile", "profile.png");
-    adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
-    adh_gnuplot_cmd(pl->gp, "set xlabel \"radial distance r (µm)\"");
-    adh_gnuplot_cmd(pl->gp, "set ylabel \"local separation h(r) (nm)\"");
-    adh_gnuplot_cmd(pl->gp, "set xrange [0:%.17g]", xmax * 1e6);
-    adh_gnuplot_cmd(pl->gp, "set yrange [0:%.17g]", ymax * 1e9);
-    adh_gnuplot_cmd(pl->gp, "set key outside right top");
-    adh_gnuplot_cmd(pl->gp, "set samples 400");
-    adh_gnuplot_cmd(pl->gp, "R = %.17g", R);
-    adh_gnuplot_cmd(pl->gp, "htop = %.17g", top);
-    /* few positions take colours spread over the whole list, not its first
-     * (similar) few; more positions than colours cycle */
-    adh_gnuplot_cmd(pl->gp, "adh_ncol = words(adh_profile_colors)");
-    adh_gnuplot_cmd(pl->gp, "adh_pcol(j) = word(adh_profile_colors, %zu > 1 && %zu <= adh_ncol "
-                    "? 1 + int(j * (adh_ncol - 1.0) / %zu + 0.5) : 1 + j %% adh_ncol)",
-                    npos, npos, npos > 1 ? npos - 1 : 1);
-
-    char *cmd = NULL;
-    size_t cmdcap = 0;
-    FILE *c = open_memstream(&cmd, &cmdcap);
-    if (!c) {
-        free(sel);
-        free(pos);
-        return -1;
-    }
-    const char *qdat = adh_gp_path(dat, q, sizeof q);
+/* The plot command: the undeformed sphere, then each profile, loading
+ * first so each position's key entry is its solid curve. */
+static void profile_clauses(plotter *pl, const profile_fig *pf, FILE *c, const char *qdat)
+{
+    const adh_run *run = pl->run;
     fprintf(c, "plot (htop + (x*1e-6)**2/(2*R))*1e9 with lines ls 5 "
-               "title \"undeformed sphere, h_0 = %.3g nm\"", top * 1e9);
+               "title \"undeformed sphere, h_0 = %.3g nm\"", pf->pos[0] * 1e9);
     int titled[ADH_MAX_PROFILES * 2] = { 0 };
     int any_unload = 0, any_load = 0;
-    /* loading first so each position's key entry is its solid curve */
     for (int pass = 0; pass < 2; pass++) {
-        for (size_t k = 0; k < nsel; k++) {
-            const adh_profile *pr = &run->profiles[sel[k]];
+        for (size_t k = 0; k < pf->nsel; k++) {
+            const adh_profile *pr = &run->profiles[pf->sel[k]];
             int loading = pr->path == 0;
             if (loading != (pass == 0))
                 continue;
             size_t j = 0;
-            while (j + 1 < npos && fabs(pos[j] - pr->h0) > 1e-15)
+            while (j + 1 < pf->npos && fabs(pf->pos[j] - pr->h0) > 1e-15)
                 j++;
             char title[96] = "notitle";
             /* a key taller than the frame helps nobody: with many positions
              * only the top and bottom ones are named */
-            int named = npos <= 16 || j == 0 || j + 1 == npos;
+            int named = pf->npos <= 16 || j == 0 || j + 1 == pf->npos;
             if (named && j < sizeof titled / sizeof titled[0] && !titled[j]) {
                 snprintf(title, sizeof title, "title \"h_0 = %.3g nm\"", pr->h0 * 1e9);
                 titled[j] = 1;
@@ -785,50 +807,90 @@ static int plot_profile(plotter *pl)
                    "title \"loading\"");
     if (any_unload)
         fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 1.6 dt 2 "
-                   "title \"unloading from h_0 = %.3g nm\"", main_turn->h0 * 1e9);
+                   "title \"unloading from h_0 = %.3g nm\"", pf->main_turn->h0 * 1e9);
+}
+
+/* The frame: wide enough to show the contact and the flank beyond it,
+ * high enough that every position's parabola enters from the top; then
+ * the curves. -1 out of memory. */
+static int profile_figure(plotter *pl, const profile_fig *pf)
+{
+    const adh_plot_setup *s = pl->s;
+    double rgrid = adh_plot_setup_radius(s, s->nodes - 1);
+    double R = s->mat.R, top = pf->pos[0], bottom = pf->pos[pf->npos - 1];
+    double rise = fmax(top - bottom, 10.0 * s->mat.z0);
+    double xmax = sqrt(2.0 * R * rise);
+    if (xmax < 1.6 * pf->amax)
+        xmax = 1.6 * pf->amax;
+    if (xmax > rgrid)
+        xmax = rgrid;
+    double ymax = top + xmax * xmax / (2.0 * R);
+    char heading[HEADING_SIZE], q[ADH_GP_PATH_SIZE];
+    title_string(pl, "Surface profiles", heading, sizeof heading);
+    adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
+    adh_gnuplot_cmd(pl->gp, "set xlabel \"radial distance r (µm)\"");
+    adh_gnuplot_cmd(pl->gp, "set ylabel \"local separation h(r) (nm)\"");
+    adh_gnuplot_cmd(pl->gp, "set xrange [0:%.17g]", xmax * 1e6);
+    adh_gnuplot_cmd(pl->gp, "set yrange [0:%.17g]", ymax * 1e9);
+    adh_gnuplot_cmd(pl->gp, "set key outside right top");
+    adh_gnuplot_cmd(pl->gp, "set samples 400");
+    adh_gnuplot_cmd(pl->gp, "R = %.17g", R);
+    adh_gnuplot_cmd(pl->gp, "htop = %.17g", top);
+    /* few positions take colours spread over the whole list, not its first
+     * (similar) few; more positions than colours cycle */
+    adh_gnuplot_cmd(pl->gp, "adh_ncol = words(adh_profile_colors)");
+    adh_gnuplot_cmd(pl->gp, "adh_pcol(j) = word(adh_profile_colors, %zu > 1 && %zu <= adh_ncol "
+                    "? 1 + int(j * (adh_ncol - 1.0) / %zu + 0.5) : 1 + j %% adh_ncol)",
+                    pf->npos, pf->npos, pf->npos > 1 ? pf->npos - 1 : 1);
+    char *cmd = NULL;
+    size_t cmdcap = 0;
+    FILE *c = open_memstream(&cmd, &cmdcap);
+    if (!c)
+        return -1;
+    profile_clauses(pl, pf, c, adh_gp_path(pf->dat, q, sizeof q));
     fclose(c);
     adh_gnuplot_cmd(pl->gp, "%s", cmd);
     free(cmd);
-    free(sel);
-    free(pos);
-    return finish_figure(pl, "profile.png");
+    return 0;
+}
+
+static int plot_profile(plotter *pl)
+{
+    profile_fig pf = { 0 };
+    int rc = -1;
+    if (profile_select(pl->run, &pf) != 0)
+        goto out;
+    if (pf.nsel == 0) {
+        pl->skipped |= ADH_PLOT_PROFILE;
+        append(pl->notes, sizeof pl->notes, "%sprofile.png skipped: no profiles stored "
+               "(ask with --profiles=M[,M...])", *pl->notes ? "; " : "");
+        rc = 0;
+        goto out;
+    }
+    if (profile_data(pl, &pf) != 0)
+        goto out;
+    begin_figure(pl, "profile", "profile.png");
+    if (profile_figure(pl, &pf) == 0)
+        rc = finish_figure(pl, "profile.png");
+out:
+    free(pf.sel);
+    free(pf.pos);
+    return rc;
 }
 
 /* -------------------------------------------------------------- contact */
 
-static int plot_contact(plotter *pl)
+/* contact.dat: per path, the step-by-step speed, the smoothed speed and the
+ * radius (in contact, plus the row either side so the jumps show), at
+ * set[3p], set[3p + 1], set[3p + 2]. */
+static int contact_data(plotter *pl, const double *dadt, const double *smooth, int np, int *set,
+                        char *dat, size_t datlen)
 {
     const adh_run *run = pl->run;
     size_t n = run->nrows;
-    double *dadh0 = n ? malloc(n * sizeof *dadh0) : NULL;
-    double *dadt = n ? malloc(n * sizeof *dadt) : NULL;
-    double *smooth = n ? malloc(n * sizeof *smooth) : NULL;
-    int np = max_path(run);
-    /* set[3p]: step-by-step speed on path p, 3p+1: smoothed speed, 3p+2:
-     * radius (in contact, plus the row either side so the jumps show) */
-    int *set = malloc(3 * ((size_t)np + 1) * sizeof *set);
-    char dat[PATH_MAX + 32], q[ADH_GP_PATH_SIZE];
-    int rc = -1;
-    if ((n && (!dadh0 || !dadt || !smooth)) || !set)
-        goto out;
-    adh_speed_stepwise(run, pl->s->drive_speed, dadh0, dadt);
-    adh_speed_smoothed(run, pl->s->drive_speed, pl->s->dr, ADH_SPEED_CELLS, smooth);
-    double xmin = INFINITY, xmax = -INFINITY;
-    for (size_t i = 0; i < n; i++)
-        if (run->rows[i].a > 0) {
-            xmin = fmin(xmin, run->rows[i].h0);
-            xmax = fmax(xmax, run->rows[i].h0);
-        }
-    if (!(xmax >= xmin)) {
-        pl->skipped |= ADH_PLOT_CONTACT;
-        append(pl->notes, sizeof pl->notes, "%scontact.png skipped: never in contact",
-               *pl->notes ? "; " : "");
-        rc = 0;
-        goto out;
-    }
-    FILE *f = data_file(pl, "contact.dat", dat, sizeof dat);
+    FILE *f = data_file(pl, "contact.dat", dat, datlen);
     if (!f)
-        goto out;
+        return -1;
     datafile df = { .f = f };
     for (int p = 0; p <= np; p++) {
         for (int k = 0; k < 2; k++) {
@@ -857,7 +919,115 @@ static int plot_contact(plotter *pl)
         }
         set[3 * p + 2] = set_end(&df);
     }
-    if (data_close(pl, f, dat) < 0 || df.bad)
+    return data_close(pl, f, dat) < 0 || df.bad ? -1 : 0;
+}
+
+/* The frame of one panel: 0 the contact-line speed above, 1 the contact
+ * radius below, sharing the x axis. */
+static void contact_frame(plotter *pl, int panel, double top, int in_mm)
+{
+    if (panel == 0) {
+        adh_gnuplot_cmd(pl->gp, "set origin 0,0.42");
+        adh_gnuplot_cmd(pl->gp, "set size 1,%.3f", top - 0.42);
+        adh_gnuplot_cmd(pl->gp, "set format x \"\"");
+        adh_gnuplot_cmd(pl->gp, "unset xlabel");
+        adh_gnuplot_cmd(pl->gp, "set bmargin 1");
+        adh_gnuplot_cmd(pl->gp, "set tmargin 0.5");
+        adh_gnuplot_cmd(pl->gp, "set ylabel \"contact-line speed da/dt (%s)\"",
+                        in_mm ? "mm/s" : "µm/s");
+        adh_gnuplot_cmd(pl->gp, "Vu = %g", in_mm ? 1e3 : 1e6);
+        adh_gnuplot_cmd(pl->gp, "set key bottom left");
+    } else {
+        adh_gnuplot_cmd(pl->gp, "set origin 0,0");
+        adh_gnuplot_cmd(pl->gp, "set size 1,0.44");
+        adh_gnuplot_cmd(pl->gp, "set format x \"%% g\"");
+        adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
+        adh_gnuplot_cmd(pl->gp, "set tmargin 1");
+        adh_gnuplot_cmd(pl->gp, "set bmargin");
+        adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
+        adh_gnuplot_cmd(pl->gp, "set ylabel \"contact radius a (µm)\"");
+        adh_gnuplot_cmd(pl->gp, "unset key");
+    }
+    /* both panels share the left margin so their x axes line up */
+    adh_gnuplot_cmd(pl->gp, "set lmargin 11");
+}
+
+/* One panel's plot command: each path's curves, loading first. -1 out of
+ * memory. */
+static int contact_panel(plotter *pl, int panel, const int *set, int np, const char *qdat)
+{
+    char *cmd = NULL;
+    size_t cmdcap = 0;
+    FILE *c = open_memstream(&cmd, &cmdcap);
+    if (!c)
+        return -1;
+    fprintf(c, "plot %s", panel == 0 ? "0 ls 7 notitle" : "NaN notitle");
+    int nunload = 0, labelled = 0;
+    for (int p = 1; p <= np; p++)
+        nunload += set[3 * p + (panel == 0 ? 1 : 2)] >= 0;
+    for (int p = 0; p <= np; p++) {
+        char lc[128], title[128];
+        const adh_turn_result *tr = turn_of_path(pl->run, p);
+        if (p == 0) {
+            snprintf(lc, sizeof lc, "lc rgb adh_loading_color");
+            snprintf(title, sizeof title, "title \"loading\"");
+        } else {
+            unload_color(p, lc, sizeof lc);
+            unload_title(tr, nunload, &labelled, title, sizeof title);
+        }
+        const char *width = p == 0 ? "adh_loading_width" : "adh_unloading_width";
+        if (panel == 0) {
+            /* step by step, thin and pale; the smoothed speed on top */
+            if (set[3 * p] >= 0)
+                fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Vu) with lines %s "
+                           "lw 0.6 notitle", qdat, set[3 * p],
+                        p == 0 ? "lc rgb \"#9aa9cf\"" : lc);
+            if (set[3 * p + 1] >= 0)
+                fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Vu) with lines %s "
+                           "lw %s %s", qdat, set[3 * p + 1], lc, width, title);
+        } else if (set[3 * p + 2] >= 0) {
+            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s lw %s "
+                       "%s", qdat, set[3 * p + 2], lc, width, title);
+        }
+    }
+    if (panel == 0)
+        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#9aa9cf\" lw 0.6 "
+                   "title \"step by step (node hops)\"");
+    fclose(c);
+    adh_gnuplot_cmd(pl->gp, "%s", cmd);
+    free(cmd);
+    return 0;
+}
+
+static int plot_contact(plotter *pl)
+{
+    const adh_run *run = pl->run;
+    size_t n = run->nrows;
+    double *dadh0 = n ? malloc(n * sizeof *dadh0) : NULL;
+    double *dadt = n ? malloc(n * sizeof *dadt) : NULL;
+    double *smooth = n ? malloc(n * sizeof *smooth) : NULL;
+    int np = max_path(run);
+    int *set = malloc(3 * ((size_t)np + 1) * sizeof *set);
+    char dat[PATH_MAX + 32], q[ADH_GP_PATH_SIZE];
+    int rc = -1;
+    if ((n && (!dadh0 || !dadt || !smooth)) || !set)
+        goto out;
+    adh_speed_stepwise(run, pl->s->drive_speed, dadh0, dadt);
+    adh_speed_smoothed(run, pl->s->drive_speed, pl->s->dr, ADH_SPEED_CELLS, smooth);
+    double xmin = INFINITY, xmax = -INFINITY;
+    for (size_t i = 0; i < n; i++)
+        if (run->rows[i].a > 0) {
+            xmin = fmin(xmin, run->rows[i].h0);
+            xmax = fmax(xmax, run->rows[i].h0);
+        }
+    if (!(xmax >= xmin)) {
+        pl->skipped |= ADH_PLOT_CONTACT;
+        append(pl->notes, sizeof pl->notes, "%scontact.png skipped: never in contact",
+               *pl->notes ? "; " : "");
+        rc = 0;
+        goto out;
+    }
+    if (contact_data(pl, dadt, smooth, np, set, dat, sizeof dat) != 0)
         goto out;
 
     /* µm/s as in Figure 8, mm/s when a large sphere makes that unwieldy */
@@ -878,73 +1048,10 @@ static int plot_contact(plotter *pl)
     adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
     adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (xmin - xpad) * 1e9,
                     (xmax + xpad) * 1e9);
-
     for (int panel = 0; panel < 2; panel++) {
-        const char *qdat = adh_gp_path(dat, q, sizeof q);
-        if (panel == 0) {
-            adh_gnuplot_cmd(pl->gp, "set origin 0,0.42");
-            adh_gnuplot_cmd(pl->gp, "set size 1,%.3f", top - 0.42);
-            adh_gnuplot_cmd(pl->gp, "set format x \"\"");
-            adh_gnuplot_cmd(pl->gp, "unset xlabel");
-            adh_gnuplot_cmd(pl->gp, "set bmargin 1");
-            adh_gnuplot_cmd(pl->gp, "set tmargin 0.5");
-            adh_gnuplot_cmd(pl->gp, "set ylabel \"contact-line speed da/dt (%s)\"",
-                            in_mm ? "mm/s" : "µm/s");
-            adh_gnuplot_cmd(pl->gp, "Vu = %g", in_mm ? 1e3 : 1e6);
-            adh_gnuplot_cmd(pl->gp, "set key bottom left");
-        } else {
-            adh_gnuplot_cmd(pl->gp, "set origin 0,0");
-            adh_gnuplot_cmd(pl->gp, "set size 1,0.44");
-            adh_gnuplot_cmd(pl->gp, "set format x \"%% g\"");
-            adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
-            adh_gnuplot_cmd(pl->gp, "set tmargin 1");
-            adh_gnuplot_cmd(pl->gp, "set bmargin");
-            adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
-            adh_gnuplot_cmd(pl->gp, "set ylabel \"contact radius a (µm)\"");
-            adh_gnuplot_cmd(pl->gp, "unset key");
-        }
-        /* both panels share the left margin so their x axes line up */
-        adh_gnuplot_cmd(pl->gp, "set lmargin 11");
-        char *cmd = NULL;
-        size_t cmdcap = 0;
-        FILE *c = open_memstream(&cmd, &cmdcap);
-        if (!c)
+        contact_frame(pl, panel, top, in_mm);
+        if (contact_panel(pl, panel, set, np, adh_gp_path(dat, q, sizeof q)) != 0)
             goto out;
-        fprintf(c, "plot %s", panel == 0 ? "0 ls 7 notitle" : "NaN notitle");
-        int nunload = 0, labelled = 0;
-        for (int p = 1; p <= np; p++)
-            nunload += set[3 * p + (panel == 0 ? 1 : 2)] >= 0;
-        for (int p = 0; p <= np; p++) {
-            char lc[128], title[128];
-            const adh_turn_result *tr = turn_of_path(run, p);
-            if (p == 0) {
-                snprintf(lc, sizeof lc, "lc rgb adh_loading_color");
-                snprintf(title, sizeof title, "title \"loading\"");
-            } else {
-                unload_color(p, lc, sizeof lc);
-                unload_title(tr, nunload, &labelled, title, sizeof title);
-            }
-            const char *width = p == 0 ? "adh_loading_width" : "adh_unloading_width";
-            if (panel == 0) {
-                /* step by step, thin and pale; the smoothed speed on top */
-                if (set[3 * p] >= 0)
-                    fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Vu) with lines %s "
-                               "lw 0.6 notitle", qdat, set[3 * p],
-                            p == 0 ? "lc rgb \"#9aa9cf\"" : lc);
-                if (set[3 * p + 1] >= 0)
-                    fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Vu) with lines %s "
-                               "lw %s %s", qdat, set[3 * p + 1], lc, width, title);
-            } else if (set[3 * p + 2] >= 0) {
-                fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s lw %s "
-                           "%s", qdat, set[3 * p + 2], lc, width, title);
-            }
-        }
-        if (panel == 0)
-            fprintf(c, ", \\\n  keyentry with lines lc rgb \"#9aa9cf\" lw 0.6 "
-                       "title \"step by step (node hops)\"");
-        fclose(c);
-        adh_gnuplot_cmd(pl->gp, "%s", cmd);
-        free(cmd);
     }
     adh_gnuplot_cmd(pl->gp, "unset multiplot");
     rc = finish_figure(pl, "contact.png");

@@ -48,7 +48,7 @@ static int profiles_table(FILE *f, const void *vctx)
     for (size_t k = 0; k < run->nprofiles; k++) {
         const adh_profile *pr = &run->profiles[k];
         for (size_t n = 0; n < s->nodes; n++) {
-            double r = adh_plot_radius(s, n);
+            double r = adh_plot_setup_radius(s, n);
             fprintf(f, "%.17g\t%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", pr->h0,
                     pr->branch, pr->path, r, pr->h[n], pr->u[n], pr->p[n],
                     pr->h0 + r * r / (2.0 * s->mat.R));

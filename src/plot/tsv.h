@@ -8,7 +8,8 @@
 #include <stdio.h>
 
 #include "adhere/run.h"
-#include "plot/plot.h"
+#include "plot/outdir.h"
+#include "plot/setup.h"
 
 /* The comment block each table starts with: material, sigma, gamma, grid. */
 void adh_tsv_preamble(FILE *f, const adh_plot_setup *s, const char *what);

@@ -72,24 +72,17 @@ double adh_budget_machine_bytes(void)
     return m < 0 ? INFINITY : m;
 }
 
-size_t adh_budget_nodes(const adh_config *cfg)
+double adh_budget_bytes(const adh_run_spec *run, unsigned solvers)
 {
-    if (!cfg->graded)
-        return cfg->nodes;
-    adh_rings_spec s = adh_config_rings(cfg);
-    return adh_rings_spec_validate(&s, NULL, 0) == 0 ? adh_rings_count(&s) : cfg->nodes;
-}
-
-double adh_budget_bytes(const adh_config *cfg, unsigned solvers)
-{
-    if (cfg->mode == ADH_MODE_RIGID)
+    if (run->mode == ADH_MODE_RIGID)
         return PROGRAM_BYTES;
-    double n = (double)adh_budget_nodes(cfg);
-    double kernel = cfg->storage == ADH_STORAGE_DENSE ? 8.0 * n * n
-                  : cfg->storage == ADH_STORAGE_HMAT ? HMAT_NODE * n : H2_NODE * n;
+    adh_kernel_storage storage = run->grid.use.storage;
+    double n = (double)adh_config_nodes(run);
+    double kernel = storage == ADH_STORAGE_DENSE ? 8.0 * n * n
+                  : storage == ADH_STORAGE_HMAT ? HMAT_NODE * n : H2_NODE * n;
     /* a static solver copies a dense kernel and factors it (2 n^2 more
      * doubles); over a hierarchical one it builds a HODLR preconditioner */
-    double solver = cfg->storage == ADH_STORAGE_DENSE ? 16.0 * (n + 1) * (n + 1) : HODLR_NODE * n;
+    double solver = storage == ADH_STORAGE_DENSE ? 16.0 * (n + 1) * (n + 1) : HODLR_NODE * n;
     return PROGRAM_BYTES + kernel + VECTORS_NODE * n + (double)solvers * solver;
 }
 
@@ -102,35 +95,29 @@ static void bytes_text(double b, char *buf, size_t len)
         snprintf(buf, len, "%.3g MB", b / 1e6);
 }
 
-void adh_budget_operator(adh_config *cfg)
+int adh_budget_check(const adh_run_spec *run, unsigned solvers, char *why, size_t whylen)
 {
-    if (cfg->mode != ADH_MODE_RIGID && !cfg->storage_given && cfg->storage == ADH_STORAGE_DENSE &&
-        adh_budget_nodes(cfg) > ADH_GRID_MAX_NODES)
-        cfg->storage = ADH_STORAGE_H2;
-}
-
-int adh_budget_check(adh_config *cfg, unsigned solvers, char *why, size_t whylen)
-{
-    if (cfg->mode == ADH_MODE_RIGID)
+    if (run->mode == ADH_MODE_RIGID)
         return 0;
-    size_t n = adh_budget_nodes(cfg);
-    adh_budget_operator(cfg);
-    double need = adh_budget_bytes(cfg, solvers), have = adh_budget_machine_bytes();
+    size_t n = adh_config_nodes(run);
+    adh_kernel_storage storage = run->grid.use.storage;
+    double need = adh_budget_bytes(run, solvers), have = adh_budget_machine_bytes();
     if (need <= have)
         return 0;
-    adh_config h2 = *cfg;
-    h2.storage = ADH_STORAGE_H2;
+    adh_run_spec h2 = *run;
+    h2.grid.use.storage = ADH_STORAGE_H2;
     char a[32], b[32], c[32];
     bytes_text(need, a, sizeof a);
     bytes_text(have, b, sizeof b);
     bytes_text(adh_budget_bytes(&h2, solvers), c, sizeof c);
-    char h2use[64] = "";
-    if (cfg->storage != ADH_STORAGE_H2)
-        snprintf(h2use, sizeof h2use, "--operator=h2 (about %s), ", c);
+    char h2use[80] = "";
+    if (storage != ADH_STORAGE_H2)
+        snprintf(h2use, sizeof h2use, "grid.operator = h2 (about %s), ", c);
+    /* keys, which each driver says in its words (adh_config_reword) */
     snprintf(why, whylen, "a run on %zu %s with the %s operator%s would hold about %s, more than the %s this "
              "process may use (available memory, ulimit -v/-d, cgroup limit): use %sfewer nodes, or the "
-             "automatic grid (no -N or --spacing; graded where a fine one is needed)",
-             n, cfg->graded ? "rings" : "nodes", adh_kernel_storage_name(cfg->storage),
+             "automatic grid (grid.nodes = auto with grid.spacing = auto; graded where a fine one is needed)",
+             n, run->grid.use.graded ? "rings" : "nodes", adh_kernel_storage_name(storage),
              solvers ? " and its static solver" : "", a, b, h2use);
     return -1;
 }

@@ -3,141 +3,224 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
 
 #include "adhere/grid.h"
 #include "adhere/models.h"
 #include "adhere/status.h"
-#include "adhere/units.h"
 
 void adh_config_default(adh_config *c)
 {
     memset(c, 0, sizeof *c);
-    c->mat = adh_material_default();
-    c->mat.E = 3e8; /* Figure 4: sigma = 7.50, the paper's hysteresis showcase */
-    c->nodes = 1000;
-    c->spacing = NAN;
-    c->kernel = ADH_KERNEL_PAPER;
-    c->storage = ADH_STORAGE_DENSE;
-    c->graded = 0;
-    c->fine_band = NAN;
-    c->growth = 1.05;
-    c->grid_radius = NAN;
-    c->relax = adh_relax_settings_default();
-    c->proto = adh_protocol_settings_default();
-    c->mode = ADH_MODE_RELAX;
-    c->plot = 1;
-    c->plots = ADH_PLOT_ALL;
-    c->drive_speed = 1e-6;
-    c->cols = 100;
-    c->rows = 32;
+    adh_run_spec *s = &c->spec;
+    s->mat = adh_material_default();
+    s->mat.E = 3e8; /* Figure 4: sigma = 7.50, the paper's hysteresis showcase */
+    s->relax = adh_relax_settings_default();
+    s->proto = adh_protocol_settings_default();
+    s->mode = ADH_MODE_RELAX;
+    s->grid.asked = (adh_grid_spec){ .nodes = 1000, .spacing = NAN, .graded = 0, .fine_band = NAN, .growth = 1.05,
+                                     .radius = NAN, .kernel = ADH_KERNEL_PAPER, .storage = ADH_STORAGE_DENSE };
+    s->grid.use = s->grid.asked;
+    c->output.plot = 1;
+    c->output.plots = ADH_PLOT_ALL;
+    c->output.drive_speed = 1e-6;
+    c->tui.cols = 100;
+    c->tui.rows = 32;
 }
 
-adh_grid_use adh_config_grid_use(const adh_config *c)
+double adh_config_start(const adh_run_spec *s)
 {
-    return c->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
+    return isnan(s->proto.start) ? adh_protocol_auto_start(&s->mat, s->proto.step) : s->proto.start;
 }
 
-int adh_config_grid(adh_config *cfg, char *why, size_t whylen, unsigned *fix)
+/* Up to max profile positions spread from the deepest turn (without turns:
+ * the jump-in gap of eq 24) to half the start, each on the drive's lattice
+ * start - k d so that the run really stores it. */
+size_t adh_config_default_profiles(const adh_material *mat, const adh_protocol_settings *ps, double *out, size_t max)
 {
-    if (fix)
-        *fix = 0;
-    if (cfg->nodes_given || !isnan(cfg->spacing) || cfg->mode == ADH_MODE_RIGID)
+    double step = ps->step;
+    if (!(step > 0) || max == 0)
         return 0;
-    adh_config run, soft;
+    double start = isnan(ps->start) ? adh_protocol_auto_start(mat, step) : ps->start;
+    adh_derived d;
+    adh_material_derive(mat, &d);
+    double lo = ps->nturns ? adh_protocol_deepest_turn(ps) : d.h_star;
+    double hi = 0.5 * start;
+    if (!(hi > lo))
+        hi = start;
+    if (!(hi > lo))
+        return 0;
+    size_t n = 0;
+    for (size_t j = 0; j < max; j++) {
+        double x = max == 1 ? lo : lo + (hi - lo) * (double)j / (double)(max - 1);
+        double k = round((start - x) / step);
+        if (k < 0)
+            k = 0;
+        double h = start - k * step;     /* exactly as the protocol computes it */
+        if (j == 0 && ps->nturns)
+            h = lo;                       /* turns are hit exactly, on their own */
+        if (n == 0 || fabs(out[n - 1] - h) > 0.5 * step)
+            out[n++] = h;
+    }
+    return n;
+}
+
+adh_protocol_settings adh_config_protocol_for(const adh_config *c, adh_mode mode)
+{
+    adh_protocol_settings ps = c->spec.proto;
+    /* a profile figure with no positions asked gets a spread of them, so
+     * that the plan and the run agree on what is stored */
+    if ((c->output.plots & ADH_PLOT_PROFILE) && ps.nprofiles == 0 && mode == ADH_MODE_RELAX)
+        ps.nprofiles = adh_config_default_profiles(&c->spec.mat, &ps, ps.profiles, 6);
+    return ps;
+}
+
+adh_protocol_settings adh_config_protocol(const adh_config *c)
+{
+    return adh_config_protocol_for(c, c->spec.mode);
+}
+
+adh_grid_use adh_config_grid_use(const adh_run_spec *s)
+{
+    return s->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
+}
+
+/* The choice for the softest run: N and the spacing, and graded rings with
+ * their band, growth, radius and operator where a uniform grid would need
+ * too many nodes. What was asked for a graded grid is kept. */
+static void grid_take(adh_grid_settings *gs, const adh_rings_choice *gc)
+{
+    adh_grid_spec *u = &gs->use;
+    u->nodes = gc->n;
+    u->spacing = gc->dr;
+    if (!gc->graded)
+        return;
+    if (!u->graded)
+        u->growth = gc->ratio;
+    u->graded = 1;
+    u->kernel = ADH_KERNEL_RING;
+    if (isnan(u->fine_band))
+        u->fine_band = gc->fine;
+    if (isnan(u->radius))
+        u->radius = gc->rmax;
+    if (gc->hierarchical && !gs->storage_given)
+        u->storage = ADH_STORAGE_H2;
+}
+
+int adh_config_grid_auto(const adh_run_spec *s)
+{
+    return !s->grid.nodes_given && isnan(s->grid.asked.spacing) && s->mode != ADH_MODE_RIGID;
+}
+
+/* The material of run i of sweep (the swept E or sigma set; eps leaves it). */
+static adh_material sweep_material(const adh_material *m, const adh_sweep *sweep, size_t i)
+{
+    adh_material r = *m;
+    if (sweep && i < sweep->n && sweep->kind == ADH_SWEEP_E)
+        r.E = sweep->values[i];
+    else if (sweep && i < sweep->n && sweep->kind == ADH_SWEEP_SIGMA)
+        r.E = adh_material_modulus_at_sigma(m, sweep->values[i]);
+    return r;
+}
+
+/* Past the dense budget's nodes a dense kernel gives way to H^2, unless
+ * the operator was given. */
+static void grid_operator(adh_run_spec *s)
+{
+    adh_grid_settings *gs = &s->grid;
+    if (s->mode != ADH_MODE_RIGID && !gs->storage_given && gs->use.storage == ADH_STORAGE_DENSE &&
+        adh_config_nodes(s) > ADH_GRID_MAX_NODES)
+        gs->use.storage = ADH_STORAGE_H2;
+}
+
+/* The choice for the run of sweep with the narrowest edge zone. */
+static int grid_choose(adh_run_spec *s, const adh_sweep *sweep, char *why, size_t whylen, unsigned *fix)
+{
+    adh_grid_settings *gs = &s->grid;
+    adh_material soft = s->mat;
     double narrowest = INFINITY;
-    for (size_t i = 0; i < adh_config_nruns(cfg); i++) {
-        adh_config_sweep_run(cfg, i, &run);
+    size_t nruns = sweep && sweep->kind != ADH_SWEEP_NONE ? sweep->n : 1;
+    for (size_t i = 0; i < nruns; i++) {
+        adh_material m = sweep_material(&s->mat, sweep, i);
         /* a bad material is the validation's to report, with its own words */
-        if (adh_material_validate(&run.mat, NULL, 0) != ADH_SUCCESS)
+        if (adh_material_validate(&m, NULL, 0) != ADH_SUCCESS)
             return 0;
-        double l = adh_edge_zone(&run.mat);
+        double l = adh_edge_zone(&m);
         if (l < narrowest) {
             narrowest = l;
-            soft = run;
+            soft = m;
         }
     }
-    double deepest = fmin(0.0, adh_protocol_deepest_turn(&cfg->proto));
+    double deepest = fmin(0.0, adh_protocol_deepest_turn(&s->proto));
     adh_rings_choice gc;
     /* graded rings need the ring kernel: not when the paper's was asked for */
-    int graded_ok = !(cfg->kernel_given && cfg->kernel == ADH_KERNEL_PAPER);
-    if (adh_rings_choose(&soft.mat, adh_config_grid_use(cfg), deepest, graded_ok, &gc, why, whylen, fix) != ADH_SUCCESS)
+    int graded_ok = !(gs->kernel_given && gs->asked.kernel == ADH_KERNEL_PAPER);
+    if (adh_rings_choose(&soft, adh_config_grid_use(s), deepest, graded_ok, &gc, why, whylen, fix) != ADH_SUCCESS)
         return -1;
-    cfg->asked = (adh_grid_asked){ cfg->nodes, cfg->spacing, cfg->fine_band, cfg->growth, cfg->grid_radius,
-                                   cfg->kernel, cfg->storage, cfg->graded };
-    cfg->grid_chosen = 1;
-    cfg->nodes = gc.n;
-    cfg->spacing = gc.dr;
-    if (gc.graded) {
-        /* a graded grid asked for keeps its own band, growth and radius */
-        if (!cfg->graded)
-            cfg->growth = gc.ratio;
-        cfg->graded = 1;
-        cfg->kernel = ADH_KERNEL_RING;
-        if (isnan(cfg->fine_band))
-            cfg->fine_band = gc.fine;
-        if (isnan(cfg->grid_radius))
-            cfg->grid_radius = gc.rmax;
-        if (gc.hierarchical && !cfg->storage_given)
-            cfg->storage = ADH_STORAGE_H2;
-    }
+    grid_take(gs, &gc);
+    gs->chosen = 1;
     return 0;
 }
 
-int adh_config_grid_again(adh_config *cfg, char *why, size_t whylen)
+int adh_config_choose_grid(adh_run_spec *s, const adh_sweep *sweep, char *why, size_t whylen, unsigned *fix)
 {
-    if (!cfg->grid_chosen)
-        return 0;
-    const adh_grid_asked *a = &cfg->asked;
-    cfg->nodes = a->nodes;
-    cfg->spacing = a->spacing;
-    cfg->fine_band = a->fine_band;
-    cfg->growth = a->growth;
-    cfg->grid_radius = a->grid_radius;
-    cfg->kernel = a->kernel;
-    cfg->storage = a->storage;
-    cfg->graded = a->graded;
-    cfg->grid_chosen = 0;
-    if (adh_config_grid(cfg, why, whylen, NULL) != 0) {
-        /* refused: the asked grid stays, and the choice is still the config's */
-        cfg->grid_chosen = 1;
-        return -1;
-    }
-    cfg->grid_chosen = 1;
-    return 0;
+    adh_grid_settings *gs = &s->grid;
+    if (fix)
+        *fix = 0;
+    gs->use = gs->asked;
+    gs->chosen = 0;
+    int rc = adh_config_grid_auto(s) ? grid_choose(s, sweep, why, whylen, fix) : 0;
+    if (rc != 0)
+        gs->use = gs->asked;
+    grid_operator(s);
+    return rc;
 }
 
-double adh_config_spacing(const adh_config *c)
+int adh_config_grid(adh_config *c, char *why, size_t whylen, unsigned *fix)
 {
-    return isnan(c->spacing) ? adh_grid_spacing_for(&c->mat, c->nodes) : c->spacing;
+    return adh_config_choose_grid(&c->spec, &c->sweep, why, whylen, fix);
 }
 
-adh_rings_spec adh_config_rings(const adh_config *c)
+size_t adh_config_nodes(const adh_run_spec *s)
 {
-    adh_rings_spec s = { .dr = adh_config_spacing(c), .ratio = c->growth, .fine = c->fine_band, .rmax = c->grid_radius };
-    if (isnan(s.rmax)) /* the default uniform grid's, whatever the spacing */
-        s.rmax = (double)c->nodes * adh_grid_spacing_for(&c->mat, c->nodes);
-    if (isnan(s.fine)) {
+    if (!s->grid.use.graded)
+        return s->grid.use.nodes;
+    adh_rings_spec r = adh_config_rings(s);
+    return adh_rings_spec_validate(&r, NULL, 0) == ADH_SUCCESS ? adh_rings_count(&r) : s->grid.use.nodes;
+}
+
+double adh_config_spacing(const adh_run_spec *s)
+{
+    const adh_grid_spec *u = &s->grid.use;
+    return isnan(u->spacing) ? adh_grid_spacing_for(&s->mat, u->nodes) : u->spacing;
+}
+
+adh_rings_spec adh_config_rings(const adh_run_spec *s)
+{
+    const adh_grid_spec *u = &s->grid.use;
+    adh_rings_spec r = { .dr = adh_config_spacing(s), .ratio = u->growth, .fine = u->fine_band, .rmax = u->radius };
+    if (isnan(r.rmax)) /* the default uniform grid's, whatever the spacing */
+        r.rmax = (double)u->nodes * adh_grid_spacing_for(&s->mat, u->nodes);
+    if (isnan(r.fine)) {
         /* the contact expected at the deepest position (with no turn, at
          * h0 = 0), and a quarter more: the contact line sweeps fine rings only */
-        double lowest = fmin(c->mat.z0, adh_protocol_deepest_turn(&c->proto));
-        s.fine = fmin(s.rmax, 1.25 * adh_rings_contact_estimate(&c->mat, fmin(lowest, 0.0)));
+        double lowest = fmin(s->mat.z0, adh_protocol_deepest_turn(&s->proto));
+        r.fine = fmin(r.rmax, 1.25 * adh_rings_contact_estimate(&s->mat, fmin(lowest, 0.0)));
     }
-    return s;
+    return r;
 }
 
-int adh_config_grid_check(const adh_config *c, char *why, size_t whylen)
+int adh_config_grid_check(const adh_run_spec *s, char *why, size_t whylen)
 {
-    if (!c->graded)
+    const adh_grid_spec *u = &s->grid.use;
+    if (!u->graded)
         return 0;
-    if (!adh_config_kernel_fits(c->kernel, c->graded)) {
-        snprintf(why, whylen, "--grid=graded is not allowed with --kernel=paper (in a scene: grid = graded with "
-                 "kernel = paper, the default): the paper's kernel assumes equal cells; use --kernel=ring "
-                 "(kernel = ring)");
+    if (!adh_config_kernel_fits(u->kernel, u->graded)) {
+        snprintf(why, whylen, "grid.grid = graded is not allowed with grid.kernel = paper (the default): the "
+                 "paper's kernel assumes equal cells; use grid.kernel = ring");
         return -1;
     }
-    adh_rings_spec s = adh_config_rings(c);
-    return adh_rings_spec_validate(&s, why, whylen) == ADH_SUCCESS ? 0 : -1;
+    adh_rings_spec r = adh_config_rings(s);
+    return adh_rings_spec_validate(&r, why, whylen) == ADH_SUCCESS ? 0 : -1;
 }
 
 int adh_config_kernel_fits(adh_kernel_type kernel, int graded)
@@ -145,83 +228,21 @@ int adh_config_kernel_fits(adh_kernel_type kernel, int graded)
     return !(graded && kernel == ADH_KERNEL_PAPER);
 }
 
-int adh_config_set_grid(adh_config *c, const char *text, char *why, size_t whylen)
+adh_grid *adh_config_grid_alloc(const adh_run_spec *s)
 {
-    if (strcmp(text, "uniform") != 0 && strcmp(text, "graded") != 0) {
-        snprintf(why, whylen, "'%s' is not a grid: use uniform or graded", text);
-        return -1;
-    }
-    c->graded = strcmp(text, "graded") == 0;
-    return 0;
-}
-
-/* A radius of the graded grid: a length above 0. */
-static int radius(const char *text, double *out, char *why, size_t whylen)
-{
-    double v;
-    if (strcasecmp(text, "auto") == 0) {   /* back to the default, as a scene's key says */
-        *out = NAN;
-        return 0;
-    }
-    if (adh_parse_quantity(text, ADH_Q_LENGTH, &v, why, whylen) != 0)
-        return -1;
-    if (!(v > 0)) {
-        snprintf(why, whylen, "'%s' is not allowed: use a length above 0", text);
-        return -1;
-    }
-    *out = v;
-    return 0;
-}
-
-int adh_config_set_fine_band(adh_config *c, const char *text, char *why, size_t whylen)
-{
-    return radius(text, &c->fine_band, why, whylen);
-}
-
-int adh_config_set_grid_radius(adh_config *c, const char *text, char *why, size_t whylen)
-{
-    return radius(text, &c->grid_radius, why, whylen);
-}
-
-int adh_config_set_growth(adh_config *c, const char *text, char *why, size_t whylen)
-{
-    double g = NAN;
-    /* the ratio's limits are the rings spec's: asked of a spec that is
-     * valid but for its ratio */
-    int number = adh_parse_quantity(text, ADH_Q_NONE, &g, NULL, 0) == 0;
-    adh_rings_spec s = { .dr = 1, .fine = 1, .ratio = g, .rmax = 1 };
-    if (!number || adh_rings_spec_validate(&s, NULL, 0) != ADH_SUCCESS) {
-        snprintf(why, whylen, "'%s' is not allowed: use a ratio from 1 to %g", text, ADH_RINGS_MAX_RATIO);
-        return -1;
-    }
-    c->growth = g;
-    return 0;
-}
-
-int adh_config_set_operator(adh_config *c, const char *text, char *why, size_t whylen)
-{
-    if (adh_kernel_storage_parse(text, &c->storage) != 0) {
-        snprintf(why, whylen, "'%s' is not an operator: use dense, hmat or h2", text);
-        return -1;
-    }
-    c->storage_given = 1;
-    return 0;
-}
-
-adh_grid *adh_config_grid_alloc(const adh_config *c)
-{
-    if (!c->graded)
-        return adh_grid_alloc(c->nodes, adh_config_spacing(c));
+    const adh_grid_spec *u = &s->grid.use;
+    if (!u->graded)
+        return adh_grid_alloc(u->nodes, adh_config_spacing(s));
     char why[256];   /* checked with a reason before; here only the verdict counts */
-    if (adh_config_grid_check(c, why, sizeof why) != 0)
+    if (adh_config_grid_check(s, why, sizeof why) != 0)
         return NULL;
-    adh_rings_spec s = adh_config_rings(c);
-    return adh_rings_alloc(&s);
+    adh_rings_spec r = adh_config_rings(s);
+    return adh_rings_alloc(&r);
 }
 
-adh_kernel *adh_config_kernel_alloc(const adh_config *c, const adh_grid *g, int *status)
+adh_kernel *adh_config_kernel_alloc(const adh_run_spec *s, const adh_grid *g, int *status)
 {
-    return adh_kernel_alloc_stored_cancel(g, c->kernel, c->storage, c->relax.cancel, status);
+    return adh_kernel_alloc_stored_cancel(g, s->grid.use.kernel, s->grid.use.storage, s->relax.cancel, status);
 }
 
 const char *adh_sweep_name(adh_sweep_kind kind)
@@ -240,24 +261,13 @@ size_t adh_config_nruns(const adh_config *c)
     return c->sweep.kind == ADH_SWEEP_NONE ? 1 : c->sweep.n;
 }
 
-void adh_config_sweep_run(const adh_config *c, size_t i, adh_config *run)
+void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run)
 {
-    *run = *c;
-    memset(&run->sweep, 0, sizeof run->sweep);
+    *run = c->spec;
+    run->proto = adh_config_protocol(c);
     if (c->sweep.kind == ADH_SWEEP_NONE || i >= c->sweep.n)
         return;
-    double v = c->sweep.values[i];
-    switch (c->sweep.kind) {
-    case ADH_SWEEP_E:
-        run->mat.E = v;
-        break;
-    case ADH_SWEEP_SIGMA:
-        run->mat.E = adh_material_modulus_at_sigma(&c->mat, v);
-        break;
-    case ADH_SWEEP_EPS:
-        run->relax.eps = v;
-        break;
-    case ADH_SWEEP_NONE:
-        break;
-    }
+    run->mat = sweep_material(&c->spec.mat, &c->sweep, i);
+    if (c->sweep.kind == ADH_SWEEP_EPS)
+        run->relax.eps = c->sweep.values[i];
 }

@@ -1,6 +1,10 @@
-/* Everything a run needs, from defaults, a scene file and command-line flags
- * (in that order of precedence, lowest first). The CLI and the TUI read
- * this one struct; the plotter is handed only what it draws. */
+/* One configuration per session, from defaults, a scene file, the flags and
+ * (in the TUI) edits, in that order, each value set by its key through
+ * adh_config_set. Three parts: the run specification (what the core is
+ * asked to compute: material, solver, protocol, one grid with what was
+ * asked and what was chosen), the output options (what the drivers write,
+ * where) and the TUI's options; a sweep varies the run specification.
+ * Passed by pointer; the plotter is handed only what it draws. */
 #ifndef ADH_SCENE_CONFIG_H
 #define ADH_SCENE_CONFIG_H
 
@@ -13,6 +17,7 @@
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
 #include "adhere/rings.h"
+#include "adhere/units.h"
 #include "scene/figures.h"
 
 #ifndef PATH_MAX
@@ -48,121 +53,179 @@ typedef struct adh_sweep {
     adh_sweep_plot plot;
 } adh_sweep;
 
-/* The grid settings as they were asked for, before adh_config_grid chose
- * (what a new choice starts from when the material changes). */
-typedef struct adh_grid_asked {
-    size_t nodes;
-    double spacing, fine_band, growth, grid_radius;
-    adh_kernel_type kernel;
-    adh_kernel_storage storage;
-    int graded;
-} adh_grid_asked;
-
-typedef struct adh_config {
-    adh_material mat;
+/* A radial grid and the kernel on it. Graded (adhere/rings.h): fine rings
+ * of the spacing over [0, fine_band], then widths growing by `growth` out
+ * to `radius`. */
+typedef struct adh_grid_spec {
     size_t nodes;                  /* N */
-    int nodes_given;               /* N set by a scene or -N (else adh_config_grid may choose) */
-    int force;                     /* --force: run a grid coarser than the resolved limit */
-    double spacing;                /* m; NAN = adh_grid_default_rmax / nodes */
-    adh_kernel_type kernel;
-    int kernel_given;              /* kernel set by a scene or --kernel (the automatic grid keeps it) */
-    adh_kernel_storage storage;    /* dense (default), hmat or h2 */
-    int storage_given;             /* --operator given (the automatic grid keeps it) */
-    /* Graded grid (adhere/rings.h): fine rings of the spacing above over
-     * [0, fine_band], then widths growing by `growth` out to grid_radius. */
+    double spacing;                /* m; NAN = the paper's grid radius (scaled with sqrt(R z0)) / N */
     int graded;
     double fine_band;              /* m; NAN = 1.25 x the contact expected at the deepest turn */
     double growth;                 /* ratio, 1 to 1.1 (default 1.05) */
-    double grid_radius;            /* m; NAN = the default uniform grid's radius */
-    int grid_chosen;               /* adh_config_grid chose the grid (from `asked`) */
-    adh_grid_asked asked;
-    adh_relax_settings relax;
-    adh_protocol_settings proto;
-    adh_mode mode;
-    adh_sweep sweep;               /* kind ADH_SWEEP_NONE: a single run */
+    double radius;                 /* m; NAN = the default uniform grid's radius */
+    adh_kernel_type kernel;
+    adh_kernel_storage storage;    /* dense (default), hmat or h2 */
+} adh_grid_spec;
 
-    /* outputs */
-    char out_dir[PATH_MAX];        /* "" = force table to standard output */
-    int overwrite;                 /* --overwrite: files under adhere's names it did not write go */
+/* The grid of a run: what was asked for, and what a run builds. While
+ * neither N nor the spacing was given, adh_config_grid chooses `use` for
+ * the material and protocol from `asked`; else `use` is `asked`. */
+typedef struct adh_grid_settings {
+    adh_grid_spec asked;           /* as the defaults, a scene, the flags and edits left it */
+    adh_grid_spec use;             /* what a run builds (adh_config_grid) */
+    int chosen;                    /* use was chosen, not given */
+    int nodes_given;               /* N set (by a scene, a flag or an edit) */
+    int kernel_given;              /* the kernel set: a choice keeps it */
+    int storage_given;             /* the operator set: a choice keeps it */
+    int force;                     /* run a grid coarser than the resolved limit (marked resolved 0) */
+} adh_grid_settings;
+
+/* What the core is asked to compute: one run. */
+typedef struct adh_run_spec {
+    adh_material mat;
+    adh_relax_settings relax;      /* the relaxation solver */
+    adh_protocol_settings proto;   /* start, step, turns, unload, dwell, profiles */
+    adh_mode mode;
+    adh_grid_settings grid;
+} adh_run_spec;
+
+/* What the drivers write, and where. */
+typedef struct adh_output_options {
+    char dir[PATH_MAX];            /* "" = force table to standard output */
+    int overwrite;                 /* files under adhere's names it did not write go */
     int quiet;
-    int allow_unconverged;         /* --allow-unconverged: steps at the cap exit 0 */
-    int plot;                      /* 0 with --no-plot */
+    int allow_unconverged;         /* steps at the cap exit 0 */
+    int plot;                      /* 0: the tables only, no PNG */
     unsigned plots;                /* mask of adh_plot_kind */
     double drive_speed;            /* m/s, for contact-line speeds */
     char gnuplot_style[PATH_MAX];  /* "" = installed style */
-    char data[PATH_MAX];           /* --data: a measured curve to overlay, "" = none */
+    char data[PATH_MAX];           /* a measured curve to overlay, "" = none */
     const struct adh_measured *measured;   /* it, read before any run (NULL = none) */
+    char title[256];               /* the scene's */
+} adh_output_options;
 
-    /* TUI */
+/* The TUI's own. */
+typedef struct adh_tui_options {
     char replay[PATH_MAX];         /* "" = interactive terminal */
     char screen[PATH_MAX];         /* final screen dump, "" = none */
     int cols, rows;                /* replay screen size */
     int no_clock;                  /* mask timings so replays are deterministic */
+} adh_tui_options;
 
+typedef struct adh_config {
+    adh_run_spec spec;
+    adh_sweep sweep;               /* kind ADH_SWEEP_NONE: a single run */
+    adh_output_options output;
+    adh_tui_options tui;
     char scene[PATH_MAX];          /* scene file in use, "" = built-in default */
-    char title[256];
 } adh_config;
 
 /* The built-in default scene: Figure 4's material (E = 0.3 GPa), the paper's
  * grid scaled with sqrt(R z0), eps = 1 pm, d = 0.05 nm, turn at -5 nm. */
 void adh_config_default(adh_config *c);
 
-/* The grid the config asks for, uniform or graded (NULL if it cannot be
- * built: adh_config_grid_check says why), and its kernel in the asked
- * storage. */
-adh_grid *adh_config_grid_alloc(const adh_config *c);
-/* The kernel the configuration asks for on g, polling its cancel flag
- * (relax.cancel); NULL with *status ADH_EINTR, ADH_EINVAL or ADH_ENOMEM. */
-adh_kernel *adh_config_kernel_alloc(const adh_config *c, const adh_grid *g, int *status);
-/* The graded grid's spec as the config resolves it (automatic values filled). */
-adh_rings_spec adh_config_rings(const adh_config *c);
-/* 0, or -1 with a sentence naming the value when the grid settings cannot
- * make a grid (a graded grid with the paper's kernel, a bad ratio...). */
-int adh_config_grid_check(const adh_config *c, char *why, size_t whylen);
+/* ---- setting by key (configset.c) ---------------------------------------
+ * Every value a scene, a flag or a TUI edit sets has a key, "section.name"
+ * as a scene writes it ("material.E", "protocol.turns"); keys a scene may
+ * not hold (outputs and the TUI's options given by flags) have one too
+ * ("output.dir", "tui.size"). */
 
-/* The grid's settings from text, one function each for --grid, --fine-band,
- * --growth, --grid-radius and --operator and the scene keys that mirror
- * them: 0, or -1 with why naming the value and what is allowed (the caller
- * prefixes the flag or key). The fine band and the grid radius must be
- * lengths above 0 here; how they fit the spacing and each other is
- * adh_config_grid_check's. An operator set here is kept by the automatic
- * grid (storage_given). */
-int adh_config_set_grid(adh_config *c, const char *text, char *why, size_t whylen);
-int adh_config_set_fine_band(adh_config *c, const char *text, char *why, size_t whylen);
-int adh_config_set_growth(adh_config *c, const char *text, char *why, size_t whylen);
-int adh_config_set_grid_radius(adh_config *c, const char *text, char *why, size_t whylen);
-int adh_config_set_operator(adh_config *c, const char *text, char *why, size_t whylen);
+/* Where a key may be given besides flags and adh_config_set. */
+enum { ADH_KEY_SCENE = 1,   /* a scene file (adhere-scene(5)) */
+       ADH_KEY_RUN = 2 };   /* part of the run specification (a TUI edit, a study) */
+
+typedef struct adh_config_key {
+    const char *key;               /* "section.name" */
+    unsigned where;                /* ADH_KEY_* bits */
+    adh_quantity q;                /* a quantity's (ADH_Q_NONE: a count, word, list or text) */
+} adh_config_key;
+
+/* Sets key from text, the same for every driver: 0, or -1 with why naming
+ * the value and what is allowed, without the key (the caller prefixes its
+ * own word for it: the flag, the scene key, the TUI's field) and nothing
+ * changed. A grid setting sets the grid asked for (adh_config_grid chooses
+ * again); turns set whether to unload (unload = there are turns). */
+int adh_config_set(adh_config *c, const char *key, const char *text, char *why, size_t whylen);
+/* A sentence of the configuration's (adh_config_set's, adh_config_grid_check's)
+ * names keys as "section.name", or "section.name = value" with a value;
+ * each driver says them in its own words: say writes the driver's word for
+ * the key (a flag, a scene key, a TUI field), value NULL when none was
+ * named. out receives the sentence reworded. */
+typedef void (*adh_config_say)(const char *key, const char *value, char *buf, size_t len, void *ctx);
+void adh_config_reword(const char *in, adh_config_say say, void *ctx, char *out, size_t len);
+/* key's value as text that adh_config_set reads back to the same value
+ * (numbers in SI, exactly; "auto", "none", lists by commas). 0, or -1 for
+ * no such key. */
+int adh_config_get(const adh_config *c, const char *key, char *buf, size_t len);
+/* The key's entry (NULL: no such key). */
+const adh_config_key *adh_config_key_find(const char *key);
+/* The i-th key of the table (NULL past the last), for lists and tests. */
+const adh_config_key *adh_config_key_at(size_t i);
+
+/* ---- the run ------------------------------------------------------------ */
+
+/* The protocol a run of c steps, as every driver (batch, sweeps, --cost,
+ * --plan, the TUI) hands it to the drive: c's own, whole (turns, unload,
+ * dwell, profiles), with profile positions spread along the path when the
+ * profile figure is asked in relaxation and none was given. */
+adh_protocol_settings adh_config_protocol(const adh_config *c);
+/* The same for c's run in mode (the TUI keeps one path per mode). */
+adh_protocol_settings adh_config_protocol_for(const adh_config *c, adh_mode mode);
+/* The positions adh_config_protocol spreads: up to max, from the deepest
+ * turn (none: the jump-in gap of eq 24) to half the start, each on the
+ * drive's lattice so that the run stores it. How many went into out. */
+size_t adh_config_default_profiles(const adh_material *mat, const adh_protocol_settings *ps, double *out, size_t max);
+/* The start a run of s begins at: s's, or the automatic one. */
+double adh_config_start(const adh_run_spec *s);
+
+/* The grid the run s builds, uniform or graded (NULL if it cannot be
+ * built: adh_config_grid_check says why), and its kernel in the storage
+ * asked for, polling the relax settings' cancel flag; NULL with *status
+ * ADH_EINTR, ADH_EINVAL or ADH_ENOMEM. */
+adh_grid *adh_config_grid_alloc(const adh_run_spec *s);
+adh_kernel *adh_config_kernel_alloc(const adh_run_spec *s, const adh_grid *g, int *status);
+/* The graded grid's spec as s resolves it (automatic values filled). */
+adh_rings_spec adh_config_rings(const adh_run_spec *s);
+/* 0, or -1 with a sentence naming the keys when the grid settings cannot
+ * make a grid (a graded grid with the paper's kernel, a bad ratio...). */
+int adh_config_grid_check(const adh_run_spec *s, char *why, size_t whylen);
 /* Whether the kernel can be used on the grid: the paper's assumes equal
  * cells, so not on a graded one. */
 int adh_config_kernel_fits(adh_kernel_type kernel, int graded);
+/* The nodes (uniform) or rings (graded) of the grid the run s builds. */
+size_t adh_config_nodes(const adh_run_spec *s);
+/* The grid spacing in use: the explicit one, or the paper's grid radius
+ * (scaled with sqrt(R z0)) divided by N. */
+double adh_config_spacing(const adh_run_spec *s);
+/* The resolution limit that applies: the static curve's in mode = static. */
+adh_grid_use adh_config_grid_use(const adh_run_spec *s);
+
+/* Whether the grid follows the material: neither N nor the spacing was
+ * given (and the spheres deform). */
+int adh_config_grid_auto(const adh_run_spec *s);
+/* The grid a run of s builds (s->grid.use): the one asked for, or, while
+ * it follows the material, the one adh_rings_choose picks for the run of
+ * sweep (NULL: none) with the narrowest edge zone (a sweep shares one
+ * kernel), for the material, protocol and mode s holds now. Either way a
+ * dense operator past ADH_GRID_MAX_NODES nodes gives way to H^2 (O(N)
+ * memory, and faster there) unless the operator was given. 0, or -1 with
+ * why (and in *fix, may be NULL, the ADH_FIX_* bits of what to change,
+ * for the driver's words) when the choice is beyond the budget (use is
+ * then the grid asked for). */
+int adh_config_choose_grid(adh_run_spec *s, const adh_sweep *sweep, char *why, size_t whylen, unsigned *fix);
+/* The same for c's run and sweep. */
+int adh_config_grid(adh_config *c, char *why, size_t whylen, unsigned *fix);
+
+/* ---- sweeps ------------------------------------------------------------- */
 
 /* Name of a sweep parameter as scenes and tables spell it ("E", "sigma",
  * "eps"), "" for none. */
 const char *adh_sweep_name(adh_sweep_kind kind);
-
-/* The configuration of run i of cfg's sweep: cfg with the swept value set
- * and the sweep removed. A config without a sweep is its own run 0. */
-void adh_config_sweep_run(const adh_config *cfg, size_t i, adh_config *run);
-
+/* The run specification of run i of c's sweep: c's, with the protocol
+ * every run steps (adh_config_protocol) and the swept value set. A config
+ * without a sweep is its own run 0. */
+void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run);
 /* Number of runs: the sweep's length, or 1. */
-size_t adh_config_nruns(const adh_config *cfg);
-
-/* The resolution limit that applies: the static curve's in mode = static. */
-adh_grid_use adh_config_grid_use(const adh_config *c);
-
-/* When neither N nor the spacing was given: the grid adh_rings_choose picks
- * for the run with the narrowest edge zone (a sweep shares one kernel).
- * 0, or -1 with why (and in *fix, may be NULL, the ADH_FIX_* bits of what
- * to change, for the driver's words) when that grid is beyond the budget. */
-int adh_config_grid(adh_config *cfg, char *why, size_t whylen, unsigned *fix);
-/* The choice again, from the settings asked for, for the material and
- * protocol cfg holds now (the TUI, after an edit of E, A, z0, R or the
- * turns). Nothing happens for a grid that was given. 0, or -1 with why
- * (cfg then keeps the grid asked for). */
-int adh_config_grid_again(adh_config *cfg, char *why, size_t whylen);
-
-/* The grid spacing in use: the explicit one, or the paper's grid radius
- * (scaled with sqrt(R z0)) divided by N. */
-double adh_config_spacing(const adh_config *c);
+size_t adh_config_nruns(const adh_config *c);
 
 #endif

@@ -28,11 +28,6 @@ static void note(adh_plan_note *list, size_t *n, const char *what, const char *f
     va_end(ap);
 }
 
-double adh_plan_start(const adh_config *cfg)
-{
-    return isnan(cfg->proto.start) ? adh_protocol_auto_start(&cfg->mat, cfg->proto.step) : cfg->proto.start;
-}
-
 int adh_plan_jobs(const adh_config *cfg)
 {
     size_t runs = adh_config_nruns(cfg);
@@ -65,14 +60,14 @@ static double jump_position(const adh_material *m)
     return adh_bulge_position(m, h);
 }
 
-static void plan_run(const adh_config *rc, const adh_plan *p, adh_plan_run *r)
+static void plan_run(const adh_run_spec *rc, const adh_plan *p, adh_plan_run *r)
 {
     adh_derived d;
     adh_material_derive(&rc->mat, &d);
     r->E = rc->mat.E;
     r->sigma = d.sigma;
     r->eps = rc->relax.eps;
-    r->start = adh_plan_start(rc);
+    r->start = adh_config_start(rc);
     double step = rc->proto.step;
     if (!p->elastic) {
         r->end = adh_rule_rigid_end(&rc->mat, &rc->proto);
@@ -98,13 +93,13 @@ static void fmt_len(double v, char *buf, size_t len)
 }
 
 /* Which profile positions some branch passes through. */
-static void plan_profiles(const adh_config *cfg, adh_plan *p)
+static void plan_profiles(const adh_run_spec *run, adh_plan *p)
 {
     const adh_plan_run *r0 = &p->runs[0];
-    double step = cfg->proto.step;
-    p->profiles_asked = cfg->proto.nprofiles;
+    double step = run->proto.step;
+    p->profiles_asked = run->proto.nprofiles;
     p->profiles_stored = 0;
-    if (!cfg->proto.nprofiles) {
+    if (!run->proto.nprofiles) {
         note(p->skipped, &p->nskipped, "profiles", "no positions asked ([output] profiles): no u, h, p profile is kept");
         return;
     }
@@ -112,15 +107,15 @@ static void plan_profiles(const adh_config *cfg, adh_plan *p)
         note(p->skipped, &p->nskipped, "profiles", "rigid spheres do not deform: no profile is kept");
         return;
     }
-    for (size_t i = 0; i < cfg->proto.nprofiles; i++) {
-        double x = cfg->proto.profiles[i];
+    for (size_t i = 0; i < run->proto.nprofiles; i++) {
+        double x = run->proto.profiles[i];
         size_t hits = 0;
         if (x <= r0->start + 1e-6 * step && (p->stop_at_contact ? x >= r0->end : x >= r0->end - 1e-6 * step) &&
             on_drive(x, r0->start, -1, step))
             hits++;
         /* unloading may go past the start, while the surfaces touch, up to the reach */
-        for (size_t t = 0; p->unloading_branches && t < cfg->proto.nturns; t++)
-            if (on_drive(x, cfg->proto.turns[t], +1, step) && x <= adh_protocol_reach(&cfg->mat) + 1e-6 * step)
+        for (size_t t = 0; p->unloading_branches && t < run->proto.nturns; t++)
+            if (on_drive(x, run->proto.turns[t], +1, step) && x <= adh_protocol_reach(&run->mat) + 1e-6 * step)
                 hits++;
         p->profiles_stored += hits;
         p->profiles_reached += hits > 0;
@@ -138,21 +133,25 @@ static void plan_profiles(const adh_config *cfg, adh_plan *p)
 void adh_plan_make(const adh_config *cfg, adh_plan *p)
 {
     memset(p, 0, sizeof *p);
+    /* what every run shares (the protocol, the mode) is run 0's */
+    adh_run_spec run0;
+    adh_config_sweep_run(cfg, 0, &run0);
+    const adh_run_spec *s0 = &run0;
     p->nruns = adh_config_nruns(cfg);
     p->jobs = adh_plan_jobs(cfg);
-    p->elastic = cfg->mode != ADH_MODE_RIGID;
-    p->static_mode = cfg->mode == ADH_MODE_STATIC;
+    p->elastic = s0->mode != ADH_MODE_RIGID;
+    p->static_mode = s0->mode == ADH_MODE_STATIC;
     p->loading_branches = 1;
-    p->stop_at_contact = p->elastic && cfg->proto.nturns == 0;
-    p->snapshots = p->elastic && cfg->proto.unload ? cfg->proto.nturns : 0;
-    p->unloading_branches = p->elastic && cfg->proto.unload ? cfg->proto.nturns : 0;
+    p->stop_at_contact = p->elastic && s0->proto.nturns == 0;
+    p->snapshots = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
+    p->unloading_branches = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
     /* every swept parameter leaves the grid alone: one kernel serves all */
     p->shared_kernel = p->elastic;
     p->kernels = p->elastic ? 1 : 0;
-    p->contact_speeds = cfg->plot && (cfg->plots & ADH_PLOT_CONTACT);
+    p->contact_speeds = cfg->output.plot && (cfg->output.plots & ADH_PLOT_CONTACT);
 
     for (size_t i = 0; i < p->nruns; i++) {
-        adh_config rc;
+        adh_run_spec rc;
         adh_config_sweep_run(cfg, i, &rc);
         plan_run(&rc, p, &p->runs[i]);
         p->runs[i].value = cfg->sweep.kind ? cfg->sweep.values[i] : NAN;
@@ -167,18 +166,18 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         note(p->skipped, &p->nskipped, "loading past contact", "no turning point (turns = none): loading stops at the jump into contact");
     if (p->elastic && !p->unloading_branches)
         note(p->skipped, &p->nskipped, "unloading", "%s",
-             cfg->proto.nturns ? "unload = no: the turns end the loading branch only" : "no turning point asked (turns = none)");
-    if (p->elastic && cfg->proto.nturns > 1 && p->unloading_branches)
+             s0->proto.nturns ? "unload = no: the turns end the loading branch only" : "no turning point asked (turns = none)");
+    if (p->elastic && s0->proto.nturns > 1 && p->unloading_branches)
         note(p->skipped, &p->nskipped, "reloading per turn", "the %zu turns share one loading branch: a state snapshot at each turn starts its unloading",
-             cfg->proto.nturns);
-    if (cfg->proto.dwell && !p->unloading_branches)
+             s0->proto.nturns);
+    if (s0->proto.dwell && !p->unloading_branches)
         note(p->skipped, &p->nskipped, "dwell", "no unloading branch to dwell before");
-    plan_profiles(cfg, p);
+    plan_profiles(s0, p);
     if (!p->contact_speeds)
         note(p->skipped, &p->nskipped, "contact-line speeds", "contact is not in [output] plots (the contact radius of each row is kept: one pass over the gap per step)");
-    if (!cfg->plot)
+    if (!cfg->output.plot)
         note(p->skipped, &p->nskipped, "plots", "--no-plot: no PNG is drawn");
-    else if (!(cfg->plots & (ADH_PLOT_ALL | ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
+    else if (!(cfg->output.plots & (ADH_PLOT_ALL | ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
         note(p->skipped, &p->nskipped, "plots of each run", "plots = none");
     if (cfg->sweep.plot && !cfg->sweep.kind)
         note(p->skipped, &p->nskipped, "sweep plot", "no swept parameter in [sweep]");
@@ -192,7 +191,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
     snprintf(what, sizeof what, "%ssummary.tsv", prefix);
     note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star, jump_in_h0, pull-off, total iterations and seconds");
-    if (p->unloading_branches || (p->elastic && cfg->proto.nturns)) {
+    if (p->unloading_branches || (p->elastic && s0->proto.nturns)) {
         snprintf(what, sizeof what, "%sturns.tsv", prefix);
         note(p->stored, &p->nstored, what, "one row per turning point: maximum load, contact radius, pull-off (adhesion vs load)");
     }
@@ -201,7 +200,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         note(p->stored, &p->nstored, what, "u, h, p at %zu of the %zu positions asked (at most %zu profiles over the branches)",
              p->profiles_reached, p->profiles_asked, p->profiles_stored);
     }
-    if (cfg->plot) {
+    if (cfg->output.plot) {
         static const struct { unsigned bit; const char *file, *what; } figs[] = {
             { ADH_PLOT_FORCE, "force.png", "force vs position, rigid eq 22, JKR and DMT; adhesion vs maximum load with 2+ turns" },
             { ADH_PLOT_PROFILE, "profile.png", "surface profiles at the stored positions" },
@@ -210,7 +209,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
             { ADH_PLOT_BULGE, "bulge.png", "central bulge before contact vs eq 23 (Figure 2)" },
         };
         for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++)
-            if (cfg->plots & figs[i].bit) {
+            if (cfg->output.plots & figs[i].bit) {
                 snprintf(what, sizeof what, "%s%s", prefix, figs[i].file);
                 /* the plot module skips a profile figure with no profile in it */
                 if (figs[i].bit == ADH_PLOT_PROFILE && !p->profiles_stored)
@@ -222,9 +221,9 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     if (p->nruns > 1 || cfg->sweep.kind) {
         note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, E, sigma, eps, jump_in_h0, h_before, h_star, max_load, pulloff_F, iterations, seconds, jumped",
              adh_sweep_name(cfg->sweep.kind));
-        if (cfg->plot && cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP)
+        if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP)
             note(p->stored, &p->nstored, "jump.png", "jump separation vs sigma against eq 24 (Figure 3)");
-        if (cfg->plot && cfg->sweep.plot == ADH_SWEEP_PLOT_FORCE)
+        if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_FORCE)
             note(p->stored, &p->nstored, "force.png", "every run's force curve with the JKR prediction (Figure 7)");
     }
 }
@@ -244,7 +243,7 @@ static adh_quantity sweep_quantity(adh_sweep_kind k)
 void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
 {
     char a[64], b[64];
-    fprintf(f, "plan: %s\n", cfg->title[0] ? cfg->title : "(untitled)");
+    fprintf(f, "plan: %s\n", cfg->output.title[0] ? cfg->output.title : "(untitled)");
     fprintf(f, "scene: %s\n", cfg->scene[0] ? cfg->scene : "(built-in default)");
     fprintf(f, "runs: %zu\n", p->nruns);
     if (cfg->sweep.kind) {
@@ -265,35 +264,35 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     else if (p->static_mode)
         fprintf(f, "mode: static (equilibrium continuation)\n");
     else {
-        adh_format_quantity(cfg->relax.eps, ADH_Q_LENGTH, 3, a, sizeof a);
+        adh_format_quantity(cfg->spec.relax.eps, ADH_Q_LENGTH, 3, a, sizeof a);
         fprintf(f, "mode: relax (the paper's relaxation, eps = %s%s)\n", a,
                 cfg->sweep.kind == ADH_SWEEP_EPS ? " unless swept" : "");
-        adh_mix_rule_describe(&cfg->relax, a, sizeof a);
-        if (cfg->relax.rule == ADH_MIX_MOMENTUM)
+        adh_mix_rule_describe(&cfg->spec.relax, a, sizeof a);
+        if (cfg->spec.relax.rule == ADH_MIX_MOMENTUM)
             fprintf(f, "mixing: %s (heavy ball, ratio from the measured stiffness)\n", a);
         else
-            fprintf(f, "mixing: %s (one adaptive ratio, at most %g)\n", a, cfg->relax.mix_max);
+            fprintf(f, "mixing: %s (one adaptive ratio, at most %g)\n", a, cfg->spec.relax.mix_max);
     }
     if (p->elastic) {
-        double dr = adh_config_spacing(cfg);
+        double dr = adh_config_spacing(&cfg->spec);
         fmt_len(dr, a, sizeof a);
-        fmt_len(dr * (double)cfg->nodes, b, sizeof b);
-        if (cfg->graded) {
+        fmt_len(dr * (double)cfg->spec.grid.use.nodes, b, sizeof b);
+        if (cfg->spec.grid.use.graded) {
             /* the graded grid's own line: its N follows from the spec */
-            adh_rings_spec rs = adh_config_rings(cfg);
+            adh_rings_spec rs = adh_config_rings(&cfg->spec);
             char c[64];
             fmt_len(rs.fine, c, sizeof c);
             fmt_len(rs.rmax, b, sizeof b);
             fprintf(f, "kernel: %s, %s, graded grid of %zu rings: spacing %s to %s, then growing x%g to Rmax %s; %zu built%s\n",
-                    adh_kernel_name(cfg->kernel), adh_kernel_storage_name(cfg->storage), adh_rings_count(&rs), a, c,
+                    adh_kernel_name(cfg->spec.grid.use.kernel), adh_kernel_storage_name(cfg->spec.grid.use.storage), adh_rings_count(&rs), a, c,
                     rs.ratio, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "");
         } else {
-            fprintf(f, "kernel: %s, N = %zu, spacing %s, Rmax %s; %zu built%s%s\n", adh_kernel_name(cfg->kernel),
-                    cfg->nodes, a, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "",
-                    cfg->storage == ADH_STORAGE_HMAT ? ", hierarchical (hmat)" : cfg->storage == ADH_STORAGE_H2 ? ", hierarchical (h2)" : "");
+            fprintf(f, "kernel: %s, N = %zu, spacing %s, Rmax %s; %zu built%s%s\n", adh_kernel_name(cfg->spec.grid.use.kernel),
+                    cfg->spec.grid.use.nodes, a, b, p->kernels, p->nruns > 1 && p->shared_kernel ? ", shared read-only by every run" : "",
+                    cfg->spec.grid.use.storage == ADH_STORAGE_HMAT ? ", hierarchical (hmat)" : cfg->spec.grid.use.storage == ADH_STORAGE_H2 ? ", hierarchical (h2)" : "");
         }
         adh_grid_report gr;
-        adh_grid_check(&cfg->mat, adh_config_grid_use(cfg), cfg->nodes, dr, &gr);
+        adh_grid_check(&cfg->spec.mat, adh_config_grid_use(&cfg->spec), cfg->spec.grid.use.nodes, dr, &gr);
         fprintf(f, "resolution: %.3g nodes across the contact's edge zone (l/spacing), %s (the limit is %g l)\n",
                 gr.edge_nodes, gr.resolved ? "resolved" : "NOT resolved, runs only with --force", gr.limit);
     } else {
@@ -305,9 +304,9 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     fprintf(f, "loading branches: %zu%s (from %s to %s%s, %s%zu steps)\n", p->loading_branches,
             p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "about " : "", b,
             p->stop_at_contact ? "ends at the jump into contact, about " : "", r0->loading_steps);
-    if (p->elastic && cfg->proto.nturns) {
-        fprintf(f, "turning points: %zu (", cfg->proto.nturns);
-        list_lengths(f, cfg->proto.turns, cfg->proto.nturns);
+    if (p->elastic && cfg->spec.proto.nturns) {
+        fprintf(f, "turning points: %zu (", cfg->spec.proto.nturns);
+        list_lengths(f, cfg->spec.proto.turns, cfg->spec.proto.nturns);
         fprintf(f, ")\n");
     } else {
         fprintf(f, "turning points: none\n");
@@ -318,9 +317,9 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         fprintf(f, " (each from its turn until the surfaces jump apart: %zu steps in all back to the start, more if they still touch there, up to the model's reach 0.02 R)", r0->unloading_steps);
     fputc('\n', f);
     if (p->unloading_branches)
-        fprintf(f, "dwell: %zu iterations at each turn before unloading\n", cfg->proto.dwell);
+        fprintf(f, "dwell: %zu iterations at each turn before unloading\n", cfg->spec.proto.dwell);
     if (p->elastic) {
-        adh_format_quantity(cfg->drive_speed, ADH_Q_SPEED, 3, a, sizeof a);
+        adh_format_quantity(cfg->output.drive_speed, ADH_Q_SPEED, 3, a, sizeof a);
         fprintf(f, "drive speed: %s (turns d a / d h0 into contact-line speeds)\n", a);
     }
     for (size_t i = 0; p->nruns > 1 && i < p->nruns; i++) {
@@ -338,33 +337,4 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         fprintf(f, "stored: %s: %s\n", p->stored[i].what, p->stored[i].why);
     for (size_t i = 0; i < p->nskipped; i++)
         fprintf(f, "skip: %s: %s\n", p->skipped[i].what, p->skipped[i].why);
-}
-
-size_t adh_plan_default_profiles(const adh_material *mat, const adh_protocol_settings *ps, double *out, size_t max)
-{
-    double step = ps->step;
-    if (!(step > 0) || max == 0)
-        return 0;
-    double start = isnan(ps->start) ? adh_protocol_auto_start(mat, step) : ps->start;
-    adh_derived d;
-    adh_material_derive(mat, &d);
-    double lo = ps->nturns ? adh_protocol_deepest_turn(ps) : d.h_star;
-    double hi = 0.5 * start;
-    if (!(hi > lo))
-        hi = start;
-    if (!(hi > lo))
-        return 0;
-    size_t n = 0;
-    for (size_t j = 0; j < max; j++) {
-        double x = max == 1 ? lo : lo + (hi - lo) * (double)j / (double)(max - 1);
-        double k = round((start - x) / step);
-        if (k < 0)
-            k = 0;
-        double h = start - k * step;     /* exactly as the protocol computes it */
-        if (j == 0 && ps->nturns)
-            h = lo;                       /* turns are hit exactly, on their own */
-        if (n == 0 || fabs(out[n - 1] - h) > 0.5 * step)
-            out[n++] = h;
-    }
-    return n;
 }

@@ -63,17 +63,4 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
  * more than the runs. */
 int adh_plan_jobs(const adh_config *cfg);
 
-/* The first drive position: the scene's, or the automatic one. */
-double adh_plan_start(const adh_config *cfg);
-
-/* A handful (at most max) of profile positions for profile.png when none
- * were asked: evenly from the deepest turn (or, with no turn, the analytic
- * jump separation, eq 24) up to half the start, each snapped onto the
- * drive's grid start - k d so the protocol really stores it (Figure 4 uses
- * -5 nm ... 8.5 nm; the default scene's start is 17 nm). Returns how many
- * were written to out. For the caller to use before the run, e.g.
- *   if (!cfg->proto.nprofiles && (cfg->plots & ADH_PLOT_PROFILE))
- *       cfg->proto.nprofiles = adh_plan_default_profiles(&cfg->mat, &cfg->proto, cfg->proto.profiles, 6); */
-size_t adh_plan_default_profiles(const adh_material *mat, const adh_protocol_settings *ps, double *out, size_t max);
-
 #endif

@@ -4,16 +4,12 @@
 #include <errno.h>
 #include <ini.h>
 #include <limits.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
 
-#include "adhere/status.h"
-#include "adhere/grid.h"
-#include "adhere/units.h"
 
 typedef struct scene_parse {
     adh_config *cfg;
@@ -26,32 +22,6 @@ typedef struct scene_parse {
     size_t nseen;
 } scene_parse;
 
-typedef enum { K_LEN, K_PRESS, K_ENERGY, K_SPEED, K_COUNT, K_LENLIST, K_KERNEL, K_MODE, K_MIXING, K_FRACTION,
-               K_PLOTS, K_BOOL, K_TEXT, K_SWEEP, K_SWEEP_PLOT, K_GRID } key_kind;
-
-typedef struct scene_key {
-    const char *section, *key;
-    key_kind kind;
-} scene_key;
-
-/* Every key a scene may hold; adhere-scene(5) documents the same list. */
-static const scene_key keys[] = {
-    { "scene", "title", K_TEXT }, { "scene", "mode", K_MODE },
-    { "material", "E", K_PRESS }, { "material", "A", K_ENERGY },
-    { "material", "z0", K_LEN }, { "material", "R", K_LEN },
-    { "grid", "nodes", K_COUNT }, { "grid", "spacing", K_LEN }, { "grid", "kernel", K_KERNEL },
-    { "grid", "grid", K_GRID }, { "grid", "fine_band", K_GRID }, { "grid", "growth", K_GRID },
-    { "grid", "radius", K_GRID }, { "grid", "operator", K_GRID },
-    { "solver", "eps", K_LEN }, { "solver", "max_iter", K_COUNT },
-    { "solver", "mixing", K_MIXING }, { "solver", "momentum", K_FRACTION },
-    { "protocol", "start", K_LEN }, { "protocol", "step", K_LEN }, { "protocol", "turns", K_LENLIST },
-    { "protocol", "dwell", K_COUNT }, { "protocol", "unload", K_BOOL },
-    { "output", "plots", K_PLOTS }, { "output", "profiles", K_LENLIST },
-    { "output", "drive_speed", K_SPEED },
-    { "sweep", "E", K_SWEEP }, { "sweep", "sigma", K_SWEEP }, { "sweep", "eps", K_SWEEP },
-    { "sweep", "jobs", K_COUNT }, { "sweep", "plot", K_SWEEP_PLOT },
-};
-
 static int fail(scene_parse *sp, const char *fmt, const char *a, const char *b)
 {
     /* inih goes on after an error and reports the first line: keep its message. */
@@ -60,66 +30,15 @@ static int fail(scene_parse *sp, const char *fmt, const char *a, const char *b)
     return 0; /* inih: 0 = error at this line */
 }
 
-/* A comma-separated list of quantities q ("none": empty when allow_none). */
-static int parse_qlist(scene_parse *sp, const char *key, const char *value, adh_quantity q, int allow_none,
-                       double *out, size_t cap, size_t *count)
+/* Whether name is a section some key a scene may hold is in. */
+static int known_section(const char *name)
 {
-    char buf[1024], msg[256];
-    *count = 0;
-    if (allow_none && strcasecmp(value, "none") == 0)
-        return 1;
-    if (strlen(value) >= sizeof buf)
-        return fail(sp, "%s: list longer than 1023 characters%s", key, "");
-    /* strtok passes over an empty element ("-1nm,,-2nm"): refuse it */
-    for (const char *seg = value;;) {
-        const char *comma = strchr(seg, ',');
-        size_t len = comma ? (size_t)(comma - seg) : strlen(seg);
-        if (strspn(seg, " \t") >= len)
-            return fail(sp, "%s: '%.200s' has an empty element: separate values by single commas", key, value);
-        if (!comma)
-            break;
-        seg = comma + 1;
-    }
-    snprintf(buf, sizeof buf, "%s", value);
-    char *save = NULL;
-    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        if (*count == cap) {
-            snprintf(msg, sizeof msg, "%zu", cap);
-            return fail(sp, "%s: more than %s values", key, msg);
-        }
-        while (*t == ' ' || *t == '\t')
-            t++;
-        if (adh_parse_quantity(t, q, &out[(*count)++], msg, sizeof msg) != 0)
-            return fail(sp, "%s: %s", key, msg);
-    }
-    if (*count)
-        return 1;
-    return fail(sp, "%s: expected values separated by commas%s", key, allow_none ? ", or none" : "");
-}
-
-static int parse_list(scene_parse *sp, const char *key, const char *value, double *out, size_t cap, size_t *count)
-{
-    return parse_qlist(sp, key, value, ADH_Q_LENGTH, 1, out, cap, count);
-}
-
-/* [sweep] E / sigma / eps: one parameter, a list of positive values. */
-static int parse_sweep(scene_parse *sp, const char *name, const char *value)
-{
-    adh_sweep *sw = &sp->cfg->sweep;
-    adh_sweep_kind kind = !strcmp(name, "E") ? ADH_SWEEP_E : !strcmp(name, "sigma") ? ADH_SWEEP_SIGMA : ADH_SWEEP_EPS;
-    if (sw->kind != ADH_SWEEP_NONE && sw->kind != kind)
-        return fail(sp, "sweep: '%s' and '%s' both given: a sweep varies one parameter", adh_sweep_name(sw->kind), name);
-    adh_quantity q = kind == ADH_SWEEP_E ? ADH_Q_PRESSURE : kind == ADH_SWEEP_EPS ? ADH_Q_LENGTH : ADH_Q_NONE;
-    if (!parse_qlist(sp, name, value, q, 0, sw->values, ADH_MAX_SWEEP, &sw->n))
-        return 0;
-    for (size_t i = 0; i < sw->n; i++)
-        if (!(sw->values[i] > 0)) {
-            char msg[64];
-            snprintf(msg, sizeof msg, "%g", sw->values[i]);
-            return fail(sp, "%s: the swept value %s is not allowed: every value must be above 0", name, msg);
-        }
-    sw->kind = kind;
-    return 1;
+    const adh_config_key *k;
+    size_t len = strlen(name);
+    for (size_t i = 0; (k = adh_config_key_at(i)); i++)
+        if ((k->where & ADH_KEY_SCENE) && strncmp(k->key, name, len) == 0 && k->key[len] == '.')
+            return 1;
+    return 0;
 }
 
 /* A scene that gives both the kernel and the grid must not pair the
@@ -127,190 +46,57 @@ static int parse_sweep(scene_parse *sp, const char *name, const char *value)
  * later of the two keys. */
 static int kernel_fits(scene_parse *sp, const char *name, const char *value)
 {
-    if (!sp->kernel_given || !sp->grid_given || adh_config_kernel_fits(sp->cfg->kernel, sp->cfg->graded))
+    const adh_grid_spec *g = &sp->cfg->spec.grid.asked;
+    if (!sp->kernel_given || !sp->grid_given || adh_config_kernel_fits(g->kernel, g->graded))
         return 1;
     return fail(sp, !strcmp(name, "kernel") ? "%s: '%s' is not allowed with grid = graded: the paper's kernel "
                 "assumes equal cells; use kernel = ring" : "%s: '%s' is not allowed with kernel = paper: the "
                 "paper's kernel assumes equal cells; use kernel = ring", name, value);
 }
 
-/* [grid] grid, fine_band, growth, radius, operator: as the flags --grid,
- * --fine-band, --growth, --grid-radius and --operator, by the same
- * functions; auto (fine band, radius) is the default. */
-static int grid_key(scene_parse *sp, const char *name, const char *value)
+/* The configuration's words in a scene's: a key is the name under its
+ * section ("kernel", "kernel = ring"). */
+static void say_key(const char *key, const char *value, char *buf, size_t len, void *ctx)
 {
-    adh_config *c = sp->cfg;
-    char msg[256];
-    int band = !strcmp(name, "fine_band"), radius = !strcmp(name, "radius");
-    int rc = band ? adh_config_set_fine_band(c, value, msg, sizeof msg)
-           : radius ? adh_config_set_grid_radius(c, value, msg, sizeof msg)
-           : !strcmp(name, "growth") ? adh_config_set_growth(c, value, msg, sizeof msg)
-           : !strcmp(name, "operator") ? adh_config_set_operator(c, value, msg, sizeof msg)
-           : adh_config_set_grid(c, value, msg, sizeof msg);
-    if (rc != 0) {
-        char full[300];
-        snprintf(full, sizeof full, "%s%s", msg, band || radius ? ", or auto" : "");
-        return fail(sp, "%s: %s", name, full);
-    }
-    if (strcmp(name, "grid") != 0)
-        return 1;
-    sp->grid_given = 1;
-    return kernel_fits(sp, name, value);
+    const char *dot = strchr(key, '.');
+    snprintf(buf, len, "%s%s%s", dot ? dot + 1 : key, value ? " = " : "", value ? value : "");
 }
 
+/* Each key = value through adh_config_set, as the flags and the TUI set
+ * them; the scene adds what is about a file: sections, duplicates, an
+ * explicit unload over the one turns imply, kernel and grid given together. */
 static int handler(void *user, const char *section, const char *name, const char *value)
 {
     scene_parse *sp = user;
     adh_config *c = sp->cfg;
-    const scene_key *k = NULL;
-    int known_section = 0;
-    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
-        if (strcmp(keys[i].section, section) != 0)
-            continue;
-        known_section = 1;
-        if (strcmp(keys[i].key, name) == 0)
-            k = &keys[i];
-    }
-    if (!known_section)
+    if (!known_section(section))
         return fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep%s", section, "");
-    if (!k)
-        return fail(sp, "unknown key '%s' in [%s] (see adhere-scene(5))", name, section);
-    char full[64];
+    char full[64], msg[400];
     snprintf(full, sizeof full, "%s.%s", section, name);
+    const adh_config_key *k = adh_config_key_find(full);
+    if (!k || !(k->where & ADH_KEY_SCENE))
+        return fail(sp, "unknown key '%s' in [%s] (see adhere-scene(5))", name, section);
     for (size_t i = 0; i < sp->nseen; i++)
         if (strcmp(sp->seen[i], full) == 0)
             return fail(sp, "key '%s' given twice in [%s]", name, section);
     if (sp->nseen < sizeof sp->seen / sizeof sp->seen[0])
         snprintf(sp->seen[sp->nseen++], sizeof sp->seen[0], "%s", full);
 
-    char msg[256];
-    double v;
-    long n;
-    int is_auto = strcasecmp(value, "auto") == 0;
-    switch (k->kind) {
-    case K_LEN: case K_PRESS: case K_ENERGY: case K_SPEED: {
-        adh_quantity q = k->kind == K_LEN ? ADH_Q_LENGTH : k->kind == K_PRESS ? ADH_Q_PRESSURE
-                       : k->kind == K_ENERGY ? ADH_Q_ENERGY : ADH_Q_SPEED;
-        double *dst = NULL;
-        if (!strcmp(full, "material.E")) dst = &c->mat.E;
-        else if (!strcmp(full, "material.A")) dst = &c->mat.A;
-        else if (!strcmp(full, "material.z0")) dst = &c->mat.z0;
-        else if (!strcmp(full, "material.R")) dst = &c->mat.R;
-        else if (!strcmp(full, "grid.spacing")) dst = &c->spacing;
-        else if (!strcmp(full, "solver.eps")) dst = &c->relax.eps;
-        else if (!strcmp(full, "protocol.start")) dst = &c->proto.start;
-        else if (!strcmp(full, "protocol.step")) dst = &c->proto.step;
-        else dst = &c->drive_speed;
-        if (is_auto && (dst == &c->spacing || dst == &c->proto.start)) {
-            *dst = NAN;
-            return 1;
-        }
-        if (adh_parse_quantity(value, q, &v, msg, sizeof msg) != 0)
-            return fail(sp, "%s: %s", name, msg);
-        *dst = v;
-        return 1;
+    int unload = c->spec.proto.unload;
+    if (adh_config_set(c, full, value, msg, sizeof msg) != 0) {
+        char words[400];
+        adh_config_reword(msg, say_key, NULL, words, sizeof words);
+        return fail(sp, "%s: %s", name, words);
     }
-    case K_COUNT: {
-        int nodes = !strcmp(name, "nodes"), jobs = !strcmp(name, "jobs");
-        if (nodes && is_auto) { /* the grid follows the physics (adh_config_grid) */
-            c->nodes = 1000;
-            c->nodes_given = 0;
-            return 1;
-        }
-        /* a whole number here; the run's limits are adh_drive_check's */
-        if (adh_parse_count(value, jobs ? 1 : 0, jobs ? 64 : LONG_MAX, &n, msg, sizeof msg) != 0 ||
-            (nodes ? adh_grid_nodes_check(n, msg, sizeof msg)
-             : !strcmp(name, "dwell") ? adh_protocol_dwell_check(n, msg, sizeof msg)
-             : !jobs ? adh_relax_max_iter_check(n, msg, sizeof msg) : ADH_SUCCESS) != ADH_SUCCESS)
-            return fail(sp, "%s: %s", name, msg);
-        if (nodes) c->nodes = (size_t)n, c->nodes_given = 1;
-        else if (jobs) c->sweep.jobs = (int)n;
-        else if (!strcmp(name, "dwell")) c->proto.dwell = (size_t)n;
-        else c->relax.max_iter = (size_t)n;
-        return 1;
-    }
-    case K_LENLIST:
-        if (!strcmp(name, "turns")) {
-            if (!parse_list(sp, name, value, c->proto.turns, ADH_MAX_TURNS, &c->proto.nturns))
-                return 0;
-            if (!sp->unload_given)
-                c->proto.unload = c->proto.nturns > 0;
-            return 1;
-        }
-        return parse_list(sp, name, value, c->proto.profiles, ADH_MAX_PROFILES, &c->proto.nprofiles);
-    case K_KERNEL:
-        if (adh_kernel_parse(value, &c->kernel) != 0)
-            return fail(sp, "kernel: '%s' is not a kernel: use paper or ring%s", value, "");
-        c->kernel_given = sp->kernel_given = 1;
+    if (!strcmp(full, "protocol.turns") && sp->unload_given)
+        c->spec.proto.unload = unload;
+    sp->unload_given |= !strcmp(full, "protocol.unload");
+    if (!strcmp(full, "grid.kernel") || !strcmp(full, "grid.grid")) {
+        sp->kernel_given |= !strcmp(name, "kernel");
+        sp->grid_given |= !strcmp(name, "grid");
         return kernel_fits(sp, name, value);
-    case K_GRID:
-        return grid_key(sp, name, value);
-    case K_MIXING:
-        if (adh_mix_rule_parse(value, &c->relax.rule) != 0)
-            return fail(sp, "mixing: '%s' is not a mixing rule: use paper or momentum%s", value, "");
-        return 1;
-    case K_FRACTION: {
-        double b;
-        if (adh_parse_quantity(value, ADH_Q_NONE, &b, msg, sizeof msg) != 0 || !(b >= 0 && b < 1))
-            return fail(sp, "momentum: '%s' is not allowed: a number from 0 to below 1%s", value, "");
-        c->relax.momentum = b;
-        return 1;
     }
-    case K_MODE:
-        if (!strcmp(value, "relax")) c->mode = ADH_MODE_RELAX;
-        else if (!strcmp(value, "static")) c->mode = ADH_MODE_STATIC;
-        else if (!strcmp(value, "rigid")) c->mode = ADH_MODE_RIGID;
-        else return fail(sp, "mode: '%s' is not a mode: use relax, static or rigid%s", value, "");
-        return 1;
-    case K_BOOL:
-        sp->unload_given = 1;
-        if (!strcasecmp(value, "yes") || !strcmp(value, "1") || !strcasecmp(value, "true")) c->proto.unload = 1;
-        else if (!strcasecmp(value, "no") || !strcmp(value, "0") || !strcasecmp(value, "false")) c->proto.unload = 0;
-        else return fail(sp, "%s: '%s' is not yes or no", name, value);
-        return 1;
-    case K_PLOTS: {
-        unsigned mask = 0;
-        int none = 0;
-        char buf[256], *save = NULL;
-        snprintf(buf, sizeof buf, "%s", value);
-        for (char *t = strtok_r(buf, ", ", &save); t; t = strtok_r(NULL, ", ", &save)) {
-            if (!strcmp(t, "force")) mask |= ADH_PLOT_FORCE;
-            else if (!strcmp(t, "profile")) mask |= ADH_PLOT_PROFILE;
-            else if (!strcmp(t, "contact")) mask |= ADH_PLOT_CONTACT;
-            else if (!strcmp(t, "precontact")) mask |= ADH_PLOT_PRECONTACT;
-            else if (!strcmp(t, "bulge")) mask |= ADH_PLOT_BULGE;
-            /* none: no figure of a single run; a sweep's combined figure
-             * ([sweep] plot) still follows --no-plot alone */
-            else if (!strcmp(t, "none")) none = 1;
-            else return fail(sp, "plots: '%s' is not a plot: use force, profile, contact, precontact, bulge or none%s", t, "");
-        }
-        if (!none && !mask)
-            return fail(sp, "plots: name at least one of force, profile, contact, precontact, bulge, or none%s%s", "", "");
-        if (none && mask)
-            return fail(sp, "plots: 'none' cannot be combined with other plots%s%s", "", "");
-        c->plots = mask;
-        return 1;
-    }
-    case K_SWEEP:
-        return parse_sweep(sp, name, value);
-    case K_SWEEP_PLOT:
-        if (!strcmp(value, "jump")) c->sweep.plot = ADH_SWEEP_PLOT_JUMP;
-        else if (!strcmp(value, "force")) c->sweep.plot = ADH_SWEEP_PLOT_FORCE;
-        else if (!strcmp(value, "none")) c->sweep.plot = ADH_SWEEP_PLOT_NONE;
-        else return fail(sp, "plot: '%s' is not a sweep plot: use jump, force or none%s", value, "");
-        return 1;
-    case K_TEXT:
-        /* shown on terminals and in figures: one line of printable text */
-        for (const unsigned char *t = (const unsigned char *)value; *t; t++)
-            if ((*t < 0x20 && *t != '\t') || *t == 0x7f) {
-                snprintf(msg, sizeof msg, "0x%02x", *t);
-                return fail(sp, "title: the control character %s is not allowed: a title is one line of "
-                            "printable text%s", msg, "");
-            }
-        snprintf(c->title, sizeof c->title, "%s", value);
-        return 1;
-    }
-    return fail(sp, "internal: key %s has no handler%s", name, "");
+    return 1;
 }
 
 static void finish_error(scene_parse *sp, int rc, char *why, size_t whylen)
@@ -375,10 +161,7 @@ static int prescan(const char *text, scene_parse *sp)
             size_t nl = (size_t)(close - t - 1) < sizeof name - 1 ? (size_t)(close - t - 1) : sizeof name - 1;
             memcpy(name, t + 1, nl);   /* a longer name is no known section either way */
             name[nl] = '\0';
-            int known = 0;
-            for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
-                known |= strcmp(keys[i].section, name) == 0;
-            if (!known) {
+            if (!known_section(name)) {
                 fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep%s", name, "");
                 return line;
             }

@@ -3,7 +3,6 @@
 #include <curses.h>
 
 #include "tui/replay.h"
-#include "tui/tui.h"
 
 /* Several keys per action where terminals differ (arrows vs letters), so a
  * newcomer's first guess works. Order is the order of the help screen. */
@@ -26,7 +25,7 @@ const tui_key_binding tui_key_table[] = {
     { 'e', ACT_EDIT, "edit the selected parameter, as <Enter>" },
     { '+', ACT_SCALE_UP, "double the selected parameter" },
     { '-', ACT_SCALE_DOWN, "halve the selected parameter" },
-    { ':', ACT_COMMAND, "command prompt: set NAME VALUE, dump FILE, rows FILE (as in replay scripts)" },
+    { ':', ACT_COMMAND, "command prompt: set NAME VALUE (a field, or a key of the run: protocol.dwell), dump FILE, rows FILE (as in replay scripts)" },
     { 'p', ACT_PLOTS, "write the plots (force, profile, contact radius) as PNG through gnuplot into ./adhere-plots/, or the directory --out names" },
     { '?', ACT_HELP, "this help; any key returns" },
     { KEY_F(1), ACT_HELP, "help, as ?" },

@@ -41,4 +41,8 @@ extern const tui_key_binding tui_key_table[];
  * they make a count prefix (see the help screen's first line). */
 tui_action tui_action_for_key(int key);
 
+/* The key table, one line per key: the key as a replay script writes it
+ * (f, <Left>, <C-r>), a TAB, what it does. For --list-keys. */
+void tui_print_keys(FILE *out);
+
 #endif

@@ -13,11 +13,11 @@
 #include "adhere/history.h"
 #include "adhere/protocol.h"
 #include "plot/outdir.h"
-#include "cli/plotsetup.h"
+#include "plot/setup.h"
 #include "plot/plot.h"
 
-static int write_into(const adh_config *c, const adh_grid *g, const adh_run *run, const char *dir,
-                      const volatile sig_atomic_t *cancel, char *msg, size_t msglen);
+static int write_into(const adh_plot_setup *ps, const adh_run *run, const char *dir, int overwrite, char *msg,
+                      size_t msglen);
 
 static void add_unique(size_t *idx, size_t *k, size_t cap, size_t i)
 {
@@ -53,11 +53,8 @@ static size_t pick_profiles(const adh_obs *rows, size_t n, const adh_turn_result
 /* Static mode: the whole curve computed so far (the cursor is only where
  * the screen looks), with profiles at the first point in contact, at the
  * pull-off and at the last point: the states the session keeps. */
-static size_t curve_profiles(const tui_sim *s, const adh_obs *rows, adh_config *c, adh_profile *prof)
+static size_t curve_profiles(const tui_sim *s, const adh_obs *rows, adh_profile *prof)
 {
-    c->mode = ADH_MODE_STATIC;
-    c->proto.nturns = 1;
-    c->proto.turns[0] = tui_sim_curve_end(s);
     size_t np = 0;
     for (int which = 0; which < 3 && np < ADH_MAX_PROFILES; which++) {
         size_t at;
@@ -67,77 +64,65 @@ static size_t curve_profiles(const tui_sim *s, const adh_obs *rows, adh_config *
             dup |= prof[k].h0 == rows[at].h0;
         if (!st || dup)
             continue;
-        prof[np] = (adh_profile){ .h0 = st->h0, .branch = rows[at].branch, .path = 0, .u = st->u, .h = st->h,
-                                  .p = st->p };
-        c->proto.profiles[np++] = st->h0;
+        prof[np++] = (adh_profile){ .h0 = st->h0, .branch = rows[at].branch, .path = 0, .u = st->u, .h = st->h,
+                                    .p = st->p };
     }
     return np;
 }
 
-int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, const volatile sig_atomic_t *cancel,
-                  char *msg, size_t msglen)
+/* Relaxation without profile positions asked: a few from the undo history
+ * where the path did something worth seeing. */
+static size_t path_profiles(const tui_sim *s, const adh_obs *rows, size_t n, const adh_run *run, adh_profile *prof)
 {
-    size_t n;
-    const adh_obs *rows = s->mode == ADH_MODE_STATIC ? tui_sim_curve(s, &n) : tui_sim_rows(s, &n);
-    if (n == 0) {
-        snprintf(msg, msglen, "nothing to plot yet");
-        return -1;
-    }
-    /* The plots describe what is on screen: the current parameters. */
-    adh_config c = *cfg;
-    c.mat = s->mat;
-    c.nodes = s->nodes;
-    c.spacing = tui_sim_spacing(s);
-    c.kernel = s->grid.kernel;
-    c.storage = s->grid.storage;
-    c.graded = s->grid.graded;
-    c.relax = s->relax;
-    c.proto.step = s->step;
-    c.proto.start = s->start;
-    c.plot = 1;
-
-    static adh_run run;   /* large (the turn table); arrays borrowed, never adh_run_free()d */
-    static adh_profile prof[ADH_MAX_PROFILES];
-    if (s->mode == ADH_MODE_STATIC) {
-        run = s->curve;   /* the static drive's record, with the profiles the session keeps */
-        size_t np = curve_profiles(s, rows, &c, prof);
-        c.proto.nprofiles = np;
-        run.profiles = prof;
-        run.nprofiles = run.profiles_cap = np;
-        return write_into(&c, s->sg, &run, dir, cancel, msg, msglen);   /* the curve's own grid */
-    }
-    run = *tui_sim_run(s);   /* the drive's record, with the profiles below */
-    c.proto.nturns = run.nturns;
-    for (size_t i = 0; i < run.nturns; i++)
-        c.proto.turns[i] = run.turns[i].h0;
-
     size_t idx[ADH_MAX_PROFILES];
-    size_t np = pick_profiles(rows, n, run.turns, run.nturns, idx, ADH_MAX_PROFILES);
+    size_t np = pick_profiles(rows, n, run->turns, run->nturns, idx, ADH_MAX_PROFILES);
     for (size_t k = 0; k < np; k++) {
         const adh_state *st = adh_history_state_at(s->path.hist, idx[k]);
         prof[k] = (adh_profile){ .h0 = st->h0, .branch = rows[idx[k]].branch, .path = rows[idx[k]].path,
                                  .u = st->u, .h = st->h, .p = st->p };
-        c.proto.profiles[k] = st->h0;
     }
-    c.proto.nprofiles = np;
-    run.profiles = prof;
-    run.nprofiles = run.profiles_cap = np;
-    return write_into(&c, s->g, &run, dir, cancel, msg, msglen);
+    return np;
 }
 
-static int write_into(const adh_config *c, const adh_grid *g, const adh_run *run, const char *dir,
-                      const volatile sig_atomic_t *cancel, char *msg, size_t msglen)
+int tui_plot_path(const tui_sim *s, const char *dir, const volatile sig_atomic_t *cancel, char *msg, size_t msglen)
+{
+    size_t n;
+    int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
+    const adh_obs *rows = stat ? tui_sim_curve(s, &n) : tui_sim_rows(s, &n);
+    if (n == 0) {
+        snprintf(msg, msglen, "nothing to plot yet");
+        return -1;
+    }
+    /* The plots describe what is on screen: the configuration now, its
+     * grid the mode's (the profiles' radii), drawn whatever --no-plot said
+     * of --batch's. */
+    adh_plot_setup ps;
+    adh_plot_setup_fill(&s->cfg, &s->cfg.spec, stat ? s->sg : s->g, &ps);
+    ps.draw = 1;
+    ps.cancel = cancel;
+    static adh_run run;   /* large (the turn table); arrays borrowed, never adh_run_free()d */
+    static adh_profile prof[ADH_MAX_PROFILES];
+    run = stat ? s->curve : *tui_sim_run(s);   /* the drive's record */
+    /* the profiles the configuration asked for are the drive's, as --batch
+     * draws them; else those the session picks */
+    if (stat || !s->cfg.spec.proto.nprofiles) {
+        size_t np = stat ? curve_profiles(s, rows, prof) : path_profiles(s, rows, n, &run, prof);
+        run.profiles = prof;
+        run.nprofiles = run.profiles_cap = np;
+    }
+    return write_into(&ps, &run, dir, s->cfg.output.overwrite, msg, msglen);
+}
+
+static int write_into(const adh_plot_setup *ps, const adh_run *run, const char *dir, int overwrite, char *msg,
+                      size_t msglen)
 {
     /* the files of an earlier run or an earlier p go first: what is in dir
      * is this path's */
-    adh_outdir *od = adh_outdir_open(dir, c->overwrite ? ADH_OUTDIR_OVERWRITE : 0, msg, msglen);
+    adh_outdir *od = adh_outdir_open(dir, overwrite ? ADH_OUTDIR_OVERWRITE : 0, msg, msglen);
     if (!od)
         return -1;
     msg[0] = '\0';
-    adh_plot_setup ps;
-    cli_plotsetup_fill(c, g, &ps);   /* the session's grid: the profiles' radii */
-    ps.cancel = cancel;
-    int rc = adh_plots_write(&ps, run, NULL, od, msg, msglen, NULL, 0);
+    int rc = adh_plots_write(ps, run, NULL, od, msg, msglen, NULL, 0);
     adh_outdir_close(od);
     if (rc != 0 && !msg[0])
         snprintf(msg, msglen, "gnuplot failed");

@@ -5,15 +5,13 @@
 #include <signal.h>
 #include <stddef.h>
 
-#include "scene/config.h"
 #include "tui/sim.h"
 
 /* Writes the plots of the path so far into dir (created if missing, and
  * cleared of the files adhere wrote there before, as -o is), with the
- * session's current parameters and cfg's plot choices; cancel is the
- * session's signal flag (a wait for gnuplot ends when it is raised). 0
- * with the writer's account of what it wrote in msg, or -1 with why. */
-int tui_plot_path(const tui_sim *s, const adh_config *cfg, const char *dir, const volatile sig_atomic_t *cancel,
-                  char *msg, size_t msglen);
+ * session's configuration as it is now (its plot choices too); cancel is
+ * the session's signal flag (a wait for gnuplot ends when it is raised).
+ * 0 with the writer's account of what it wrote in msg, or -1 with why. */
+int tui_plot_path(const tui_sim *s, const char *dir, const volatile sig_atomic_t *cancel, char *msg, size_t msglen);
 
 #endif

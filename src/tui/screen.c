@@ -114,10 +114,11 @@ static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w
         /* N and the spacing follow the material until one is set: the
          * grid --batch would choose (graded rings for soft contacts) */
         const char *how = "";
-        if (p == P_SPACING && (isnan(s->spacing) || s->grid_auto))
-            how = s->grid.graded ? ", graded" : ", auto";
-        else if (p == P_N && s->grid.graded)
-            how = s->grid.storage == ADH_STORAGE_H2 ? " (rings, H2)" : " (rings)";
+        const adh_grid_spec *g = tui_sim_grid(s);
+        if (p == P_SPACING && (isnan(g->spacing) || adh_config_grid_auto(&s->cfg.spec)))
+            how = g->graded ? ", graded" : ", auto";
+        else if (p == P_N && g->graded)
+            how = g->storage == ADH_STORAGE_H2 ? " (rings, H2)" : " (rings)";
         char pv[96];
         put(y + 1 + p, x, w, sel ? A_REVERSE : A_NORMAL, "%s%s %s %s%s", sel ? " >" : "  ",
             pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), pad(val, 12, pv, sizeof pv), pi->what, how);
@@ -159,7 +160,7 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     const tui_models *m = &s->models;
     char g[64], es[64], jkr[64], dmt[64], md[64], ji[64], jo[64];
     const char *pgr = gk(v, "\xcf\x80\xce\xb3R", "pi gamma R");
-    double unit = M_PI * d->gamma * s->mat.R;
+    double unit = M_PI * d->gamma * s->cfg.spec.mat.R;
     /* gamma is an energy per area: J/m^2, shown in mJ/m^2 where it lives */
     snprintf(g, sizeof g, "%.4g mJ/m%s", d->gamma * 1e3, gk(v, "\xc2\xb2", "^2"));
     q(d->Estar, ADH_Q_PRESSURE, es, sizeof es);
@@ -189,7 +190,7 @@ static void draw_cycle(const tui_sim *s, const tui_view *v, int y, int x, int w)
     adh_cycle c;
     tui_sim_cycle(s, &c);
     char a[64], b[64];
-    double unit = M_PI * s->der.gamma * s->mat.R;
+    double unit = M_PI * s->der.gamma * s->cfg.spec.mat.R;
     put(y, x, w, A_BOLD, " Cycle  (this path; models at the left)");
     if (isnan(c.max_load)) {
         put(y + 1, x, w, A_NORMAL, "  load, pull-off, jumps, hysteresis: step first");
@@ -287,7 +288,7 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
 
 static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
 {
-    if (s->mode == ADH_MODE_STATIC) {
+    if (tui_sim_mode(s) == ADH_MODE_STATIC) {
         draw_curve_state(s, v, y, x, w);
         return;
     }
@@ -347,7 +348,7 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     const adh_obs *cur = tui_sim_row(s);
     if (h < 4 || w < 30)
         return;
-    int stat = s->mode == ADH_MODE_STATIC;
+    int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
     const adh_measured *meas = v->measured && v->measured->n ? v->measured : NULL;
     if (stat)
         put(y0, x0, w, A_BOLD, " Equilibrium force F against drive position h0   * stable  . unstable  @ now%s",
@@ -375,9 +376,9 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
         ymin = fmin(ymin, meas->F[i]);
         ymax = fmax(ymax, meas->F[i]);
     }
-    if (xmax - xmin < s->step) {
-        xmin -= s->step;
-        xmax += s->step;
+    if (xmax - xmin < s->cfg.spec.proto.step) {
+        xmin -= s->cfg.spec.proto.step;
+        xmax += s->cfg.spec.proto.step;
     }
     if (ymax - ymin <= 0) {
         ymax = 1e-12;
@@ -442,7 +443,7 @@ void tui_draw(const tui_sim *s, const tui_view *v)
     int W = COLS, H = LINES;
     put(0, 0, W, A_REVERSE, "%-*s", W, " adhere: two elastic spheres held by a Lennard-Jones surface force");
     put(0, W - 17 > 0 ? W - 17 : 0, 17, A_REVERSE, "  ? help  q quit ");
-    int stat = s->mode == ADH_MODE_STATIC;
+    int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
     if (W >= 80) {
         int lw = W / 2 - 2 < 44 ? W / 2 - 2 : 44;
         draw_params(s, v, 1, 0, lw);
@@ -487,7 +488,7 @@ void tui_draw(const tui_sim *s, const tui_view *v)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W, v->prompt);
     else if (v->count)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W, "");
-    else if (s->mode == ADH_MODE_STATIC)
+    else if (tui_sim_mode(s) == ADH_MODE_STATIC)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W,
             " f next  b back  r run  u/U back/fwd  x reset  m relax  p plots  : cmd  ? help  q quit");
     else
@@ -564,8 +565,9 @@ int tui_draw_help(const tui_view *v)
     n = help_entry(lines, n, MAX, W, "1-9", "digits make a count for the next key: 10f steps ten times, 3j moves down three");
     if (n < MAX)
         snprintf(lines[n++], HELP_LINE, " ");
-    n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn; "
-                   "values take units: 2GPa 0.4nm 1e-19J 10um; a bare number is in the unit the panel shows");
+    n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn, or any "
+                   "key of the run as a scene writes it (protocol.dwell, grid.fine_band); values take units: 2GPa "
+                   "0.4nm 1e-19J 10um; a bare number is in the unit the panel shows");
     snprintf(msg, sizeof msg, "changing E, A, z0, R, %s, d, N or the spacing starts a new path from the "
              "start; turn only moves where r stops loading, and takes a list (1nm,0nm,-2nm): r follows each "
              "turn, shallowest first, as --batch does", gk(v, "\xce\xb5", "eps"));

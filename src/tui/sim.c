@@ -19,12 +19,9 @@
 #include "adhere/status.h"
 #include "scene/budget.h"
 
-static tui_params_set params_get(const tui_sim *s);
-static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode, char *why, size_t whylen);
-static void params_config(const tui_sim *s, const tui_params_set *p, adh_config *c);
-static adh_protocol_settings params_protocol(const tui_params_set *p);
 static void drive_attach(tui_sim *s);
 static void sync_turn(tui_sim *s);
+static void edge_words(const adh_grid *g, double a, char *why, size_t whylen);
 
 /* Turning points deepest last: the order --batch reaches them in. */
 static int cmp_desc(const void *a, const void *b)
@@ -34,130 +31,162 @@ static int cmp_desc(const void *a, const void *b)
 }
 
 const tui_param_info tui_params[P_COUNT] = {
-    [P_E] = { "E", "E", "E", "combined modulus", ADH_Q_PRESSURE },
-    [P_A] = { "A", "A", "A", "Hamaker constant", ADH_Q_ENERGY },
-    [P_Z0] = { "z0", "z0", "z0", "equilibrium gap", ADH_Q_LENGTH },
-    [P_R] = { "R", "R", "R", "sphere radius", ADH_Q_LENGTH },
-    [P_EPS] = { "eps", "\xce\xb5", "eps", "convergence (eps)", ADH_Q_LENGTH },
-    [P_D] = { "d", "d", "d", "drive step", ADH_Q_LENGTH },
-    [P_N] = { "N", "N", "N", "grid nodes", ADH_Q_NONE },
-    [P_SPACING] = { "spacing", "\xce\x94", "dr", "grid spacing", ADH_Q_LENGTH },
-    [P_TURN] = { "turn", "turn", "turn", "turning point", ADH_Q_LENGTH },
+    [P_E] = { "E", "material.E", "E", "E", "combined modulus", ADH_Q_PRESSURE },
+    [P_A] = { "A", "material.A", "A", "A", "Hamaker constant", ADH_Q_ENERGY },
+    [P_Z0] = { "z0", "material.z0", "z0", "z0", "equilibrium gap", ADH_Q_LENGTH },
+    [P_R] = { "R", "material.R", "R", "R", "sphere radius", ADH_Q_LENGTH },
+    [P_EPS] = { "eps", "solver.eps", "\xce\xb5", "eps", "convergence (eps)", ADH_Q_LENGTH },
+    [P_D] = { "d", "protocol.step", "d", "d", "drive step", ADH_Q_LENGTH },
+    [P_N] = { "N", "grid.nodes", "N", "N", "grid nodes", ADH_Q_NONE },
+    [P_SPACING] = { "spacing", "grid.spacing", "\xce\x94", "dr", "grid spacing", ADH_Q_LENGTH },
+    [P_TURN] = { "turn", "protocol.turns", "turn", "turn", "turning point", ADH_Q_LENGTH },
 };
+
+static const adh_run_spec *spec(const tui_sim *s)
+{
+    return &s->cfg.spec;
+}
 
 double tui_sim_spacing(const tui_sim *s)
 {
-    return isnan(s->spacing) ? adh_grid_spacing_for(&s->mat, s->nodes) : s->spacing;
+    return adh_config_spacing(spec(s));
 }
 
-/* The configuration of the grid for parameters p: the one the screen
- * started from, with p's material, protocol and grid. */
-static void params_config(const tui_sim *s, const tui_params_set *p, adh_config *c)
+const adh_grid_spec *tui_sim_grid(const tui_sim *s)
 {
-    *c = s->base;
-    c->mat = p->mat;
-    c->relax = p->relax;
-    c->mode = s->mode;
-    c->proto.step = p->step;
-    c->proto.start = p->start_opt;
-    c->proto.nturns = p->nturns;
-    memcpy(c->proto.turns, p->turns, p->nturns * sizeof *p->turns);
-    c->nodes = p->nodes;
-    c->spacing = p->spacing;
-    c->graded = p->grid.graded;
-    c->fine_band = p->grid.fine_band;
-    c->growth = p->grid.growth;
-    c->grid_radius = p->grid.grid_radius;
-    c->kernel = p->grid.kernel;
-    c->storage = p->grid.storage;
-    c->grid_chosen = p->grid_auto;
+    return &spec(s)->grid.use;
 }
 
-/* The grid as it stands in c: N and the spacing resolved, and a graded
+adh_mode tui_sim_mode(const tui_sim *s)
+{
+    return spec(s)->mode;
+}
+
+const double *tui_sim_turns(const tui_sim *s, size_t *n)
+{
+    *n = spec(s)->proto.nturns;
+    return spec(s)->proto.turns;
+}
+
+/* ---- the TUI's words ------------------------------------------------------ */
+
+/* The field that edits key, or P_COUNT. */
+static tui_param field_of(const char *key)
+{
+    int p = 0;
+    while (p < P_COUNT && strcmp(tui_params[p].key, key) != 0)
+        p++;
+    return (tui_param)p;
+}
+
+/* A key in the TUI's words: its field ("N", "turn = -2nm"), or the key
+ * itself, which :set takes. */
+static void say_field(const char *key, const char *value, char *buf, size_t len, void *ctx)
+{
+    tui_param p = field_of(key);
+    const char *name = p < P_COUNT ? tui_params[p].name : key;
+    snprintf(buf, len, "%s%s%s", name, value ? " = " : "", value ? value : "");
+}
+
+/* What a refusal asks to change (the core's ADH_FIX_* bits), in the order
+ * a sentence names them: the fields, or the keys :set takes. The screen
+ * runs any grid, marked UNRESOLVED where it is coarser than the limit, so
+ * "run it anyway" needs nothing here. */
+static const struct { unsigned bit; const char *here; } fix_words[] = {
+    { ADH_FIX_MODE, "m" },
+    { ADH_FIX_FINE_BAND, ":set grid.fine_band" },
+    { ADH_FIX_TURNS, "turn" },
+    { ADH_FIX_RADIUS, "R" },
+    { ADH_FIX_STEP, "d" },
+    { ADH_FIX_START, ":set protocol.start" },
+    { ADH_FIX_NODES, "N" },
+    { ADH_FIX_SPACING, "spacing" },
+    { ADH_FIX_GRID_RADIUS, ":set grid.radius" },
+};
+
+/* The core's sentence in why with the screen's words for fix after it, as
+ * " (N, spacing)"; nothing for 0 or when they do not fit. */
+static void advice(char *why, size_t whylen, unsigned fix)
+{
+    char list[160] = "";
+    size_t n = 0;
+    for (size_t i = 0; i < sizeof fix_words / sizeof fix_words[0]; i++)
+        if ((fix & fix_words[i].bit) && n + strlen(fix_words[i].here) + 3 < sizeof list)
+            n += (size_t)snprintf(list + n, sizeof list - n, "%s%s", n ? ", " : "", fix_words[i].here);
+    size_t len = strlen(why);
+    if (n && len + n + 4 <= whylen)
+        snprintf(why + len, whylen - len, " (%s)", list);
+}
+
+void tui_sim_words(const char *sentence, char *out, size_t len)
+{
+    adh_config_reword(sentence, say_field, NULL, out, len);
+}
+
+/* ---- the grid of each mode ------------------------------------------------ */
+
+/* The grid of run r as it stands: N and the spacing resolved, and a graded
  * grid's automatic band and radius (they follow the material and turns). */
-static adh_grid_asked grid_of(const adh_config *c)
+static adh_grid_spec grid_of(const adh_run_spec *r)
 {
-    adh_grid_asked g = { c->nodes, adh_config_spacing(c), c->fine_band, c->growth, c->grid_radius,
-                         c->kernel, c->storage, c->graded };
-    if (c->graded) {
-        adh_rings_spec rs = adh_config_rings(c);
+    adh_grid_spec g = r->grid.use;
+    g.spacing = adh_config_spacing(r);
+    if (g.graded) {
+        adh_rings_spec rs = adh_config_rings(r);
         g.fine_band = rs.fine;
-        g.grid_radius = rs.rmax;
+        g.radius = rs.rmax;
         g.growth = rs.ratio;
     }
     return g;
 }
 
-static int same_grid(const adh_grid_asked *a, const adh_grid_asked *b)
+static int same_grid(const adh_grid_spec *a, const adh_grid_spec *b)
 {
     /* NAN fields (automatic band, radius) are equal when both are NAN */
     #define SAME(x) (a->x == b->x || (isnan((double)a->x) && isnan((double)b->x)))
-    return a->nodes == b->nodes && SAME(spacing) && SAME(fine_band) && SAME(growth) && SAME(grid_radius) &&
+    return a->nodes == b->nodes && SAME(spacing) && SAME(fine_band) && SAME(growth) && SAME(radius) &&
            a->kernel == b->kernel && a->storage == b->storage && a->graded == b->graded;
     #undef SAME
 }
 
-/* The configuration of the parameters on screen for a mode: an automatic
- * grid is chosen per mode, as --batch --mode would (the static curve needs
- * finer rings), so the other mode's grid is chosen again; a grid given
- * stays as given. */
-static void mode_config(const tui_sim *s, const tui_params_set *p, adh_mode mode, adh_config *c)
+/* Run r in mode: an automatic grid is chosen per mode, as --batch --mode
+ * would (the static curve needs finer rings), so the other mode's grid is
+ * chosen again; a grid given stays as given. */
+static adh_run_spec mode_spec(const tui_sim *s, const adh_run_spec *r, adh_mode mode)
 {
-    params_config(s, p, c);
-    c->mode = mode;
-    if (mode != s->mode && p->grid_auto) {
-        char why[512];
-        adh_config_grid_again(c, why, sizeof why);   /* a refusal keeps the grid as it is (solves say why) */
+    adh_run_spec m = *r;
+    m.mode = mode;
+    if (mode != r->mode) {
+        char why[512];   /* a refusal keeps the grid asked for (solves say why) */
+        adh_config_choose_grid(&m, &s->cfg.sweep, why, sizeof why, NULL);
     }
-    adh_budget_operator(c);   /* the operator --batch would hold this grid in */
+    return m;
 }
 
-static adh_grid_asked mode_grid(const tui_sim *s, const tui_params_set *p, adh_mode mode)
+static adh_grid_spec mode_grid(const tui_sim *s, const adh_run_spec *r, adh_mode mode)
 {
-    adh_config c;
-    mode_config(s, p, mode, &c);
-    return grid_of(&c);
+    adh_run_spec m = mode_spec(s, r, mode);
+    return grid_of(&m);
 }
 
-/* Whether the relaxation's grid for the parameters on screen is another
- * than the one its kernel was built for. */
+/* Whether the relaxation's grid for the configuration is another than the
+ * one its kernel was built for. */
 static int grid_changed(const tui_sim *s)
 {
-    tui_params_set p = params_get(s);
-    adh_grid_asked now = mode_grid(s, &p, ADH_MODE_RELAX);
+    adh_grid_spec now = mode_grid(s, spec(s), ADH_MODE_RELAX);
     return !same_grid(&s->built, &now);
 }
 
-/* A grid that follows the material chooses again for p, as --batch would
- * for these parameters; a refusal keeps the grid asked for and says why
- * (solves are then refused). */
-static void params_regrid(const tui_sim *s, tui_params_set *p, char *why, size_t whylen)
+/* The grid on screen is the mode's: chosen again for the material, as
+ * --batch would, while it follows the material; why says why none could
+ * be chosen ("" when one was, or the grid is given). */
+static void regrid(tui_sim *s, char *why, size_t whylen)
 {
-    why[0] = '\0';
-    if (!p->grid_auto)
-        return;
-    adh_config c;
-    params_config(s, p, &c);
-    if (adh_config_grid_again(&c, why, whylen) == 0)
+    unsigned fix;
+    if (adh_config_choose_grid(&s->cfg.spec, &s->cfg.sweep, why, whylen, &fix) == 0)
         why[0] = '\0';
-    p->nodes = c.nodes;
-    p->spacing = c.spacing;
-    p->grid = (adh_grid_asked){ c.nodes, c.spacing, c.fine_band, c.growth, c.grid_radius, c.kernel, c.storage,
-                                c.graded };
-}
-
-/* An automatic grid on screen is the mode's: chosen again (N, spacing and
- * the rest shown) when the mode changed or parameters came back by undo;
- * gridchoice says why none could be chosen. */
-static void grid_follow_mode(tui_sim *s)
-{
-    tui_params_set q = params_get(s);
-    params_regrid(s, &q, s->gridchoice, sizeof s->gridchoice);
-    if (!s->grid_auto)
-        return;
-    s->nodes = q.nodes;
-    s->spacing = q.spacing;
-    s->grid = q.grid;
+    else
+        advice(why, whylen, fix);
 }
 
 enum { PROF_CONTACT = 0, PROF_PULLOFF = 1 };
@@ -179,8 +208,7 @@ static void curve_drop(tui_sim *s)
 
 double tui_sim_curve_end(const tui_sim *s)
 {
-    tui_params_set q = params_get(s);
-    adh_protocol_settings ps = params_protocol(&q);
+    adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, ADH_MODE_STATIC);
     return adh_rule_static_end(&ps);
 }
 
@@ -196,9 +224,8 @@ static void curve_check(tui_sim *s)
 {
     if (!curve_started(s))
         return;
-    const adh_material *a = &s->ckey.mat, *b = &s->mat;
-    tui_params_set p = params_get(s);
-    adh_grid_asked g = mode_grid(s, &p, ADH_MODE_STATIC);
+    const adh_material *a = &s->ckey.mat, *b = &spec(s)->mat;
+    adh_grid_spec g = mode_grid(s, spec(s), ADH_MODE_STATIC);
     if (a->E != b->E || a->A != b->A || a->z0 != b->z0 || a->R != b->R || !same_grid(&s->ckey.grid, &g) ||
         s->ckey.start != s->start || s->ckey.end != tui_sim_curve_end(s))
         curve_drop(s);
@@ -261,40 +288,78 @@ static void edits_clear(tui_edit *e, size_t *n)
     *n = 0;
 }
 
-/* The batch run's own check of grid and protocol, before any solve: a
- * newcomer who sets N = 100 learns the contact will not fit before
- * stepping into it, and a solve is refused, as --batch refuses the run. */
+/* The core's one check of every limit, the one --batch and scene files
+ * meet, on the configuration as it stands: ADH_EINVAL refuses an edit;
+ * ADH_EGRID (a grid that cannot hold the run) lets it through, shown, and
+ * a solve is refused until mended, as --batch refuses the run. why is in
+ * the screen's words. */
+static int check_words(const tui_sim *s, char *why, size_t whylen, unsigned *fix);
 
+static int params_check(const tui_sim *s, char *why, size_t whylen)
+{
+    char msg[512];
+    unsigned fix = 0;
+    int rc = check_words(s, msg, sizeof msg, &fix);
+    if (rc != ADH_SUCCESS) {
+        tui_sim_words(msg, why, whylen);   /* a sentence of the configuration's names keys */
+        advice(why, whylen, fix);
+    }
+    return rc;
+}
+
+static int check_words(const tui_sim *s, char *why, size_t whylen, unsigned *fix)
+{
+    const adh_run_spec *r = spec(s);
+    adh_protocol_settings ps = adh_config_protocol(&s->cfg);
+    adh_grid_use use = adh_config_grid_use(r);
+    if (!r->grid.use.graded) {
+        adh_grid g = adh_drive_uniform_grid(r->grid.use.nodes, adh_config_spacing(r));
+        return adh_drive_check(&r->mat, &r->relax, &ps, use, &g, why, whylen, fix);
+    }
+    /* rings: the check reads their edges (cheap to lay out; no kernel) */
+    if (adh_config_grid_check(r, why, whylen) != 0)
+        return ADH_EINVAL;
+    int rc = ADH_EGRID;
+    adh_grid *g = adh_config_grid_alloc(r);
+    if (!g)
+        snprintf(why, whylen, "out of memory for a graded grid of %zu rings", r->grid.use.nodes);
+    else
+        rc = adh_drive_check(&r->mat, &r->relax, &ps, use, g, why, whylen, fix);
+    adh_grid_free(g);
+    return rc;
+}
+
+/* The check, and the resolution the Derived panel shows: a newcomer who
+ * sets N = 100 learns the contact will not fit before stepping into it. */
 static void check_grid(tui_sim *s)
 {
-    adh_grid_check(&s->mat, s->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX, s->nodes,
-                   tui_sim_spacing(s), &s->gridres);
-    /* the resolution itself is shown on the Derived panel's E* line */
-    tui_params_set p = params_get(s);
+    const adh_run_spec *r = spec(s);
+    adh_grid_check(&r->mat, adh_config_grid_use(r), r->grid.use.nodes, tui_sim_spacing(s), &s->gridres);
     if (s->gridchoice[0])   /* no grid resolves this material within the budget */
         snprintf(s->gridwarn, sizeof s->gridwarn, "%s", s->gridchoice);
-    else if (params_check(s, &p, s->mode, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
+    else if (params_check(s, s->gridwarn, sizeof s->gridwarn) == ADH_SUCCESS)
         s->gridwarn[0] = '\0';
 }
 
 /* The closed forms for the material on screen: recomputed with it. */
 static void derive(tui_sim *s)
 {
-    adh_material_derive(&s->mat, &s->der);
+    const adh_material *mat = &spec(s)->mat;
+    adh_material_derive(mat, &s->der);
     tui_models *m = &s->models;
-    m->md_lambda = adh_md_lambda(&s->mat);
+    m->md_lambda = adh_md_lambda(mat);
     double ov = NAN;
-    if (adh_md_pulloff(&s->mat, m->md_lambda, &m->md_pulloff, NULL, NULL, &ov) != ADH_SUCCESS)
+    if (adh_md_pulloff(mat, m->md_lambda, &m->md_pulloff, NULL, NULL, &ov) != ADH_SUCCESS)
         m->md_pulloff = ov = NAN;
-    m->md_jump_out = s->mat.z0 - ov;
-    m->jump_in = adh_bulge_position(&s->mat, adh_jump_separation(&s->mat));
+    m->md_jump_out = mat->z0 - ov;
+    m->jump_in = adh_bulge_position(mat, adh_jump_separation(mat));
 }
 
 /* A change to the physics: the old path no longer belongs to these
  * parameters, so it is dropped and the next step starts at the start. */
 static void new_path(tui_sim *s)
 {
-    s->start = isnan(s->start_opt) ? adh_protocol_auto_start(&s->mat, s->step) : s->start_opt;
+    s->start = adh_config_start(spec(s));
     s->busy = 0;
     s->warn[0] = '\0';
     if (s->path.hist)
@@ -312,33 +377,31 @@ static void new_path(tui_sim *s)
     curve_check(s);
 }
 
+/* The turns shallowest first: the order the drive reaches them in, and
+ * the one the panel and "turn 3 of 8" count in. */
+static void sort_turns(tui_sim *s)
+{
+    adh_protocol_settings *p = &s->cfg.spec.proto;
+    qsort(p->turns, p->nturns, sizeof *p->turns, cmp_desc);
+}
+
 int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
 {
     memset(s, 0, sizeof *s);
     adh_run_init(&s->curve);
     adh_run_init(&s->path.run);
-    s->mat = cfg->mat;
-    s->nodes = cfg->nodes;
-    s->spacing = cfg->spacing;
-    s->base = *cfg;
-    s->grid_auto = cfg->grid_chosen;
-    s->grid = (adh_grid_asked){ cfg->nodes, cfg->spacing, cfg->fine_band, cfg->growth, cfg->grid_radius,
-                                cfg->kernel, cfg->storage, cfg->graded };
-    s->relax = cfg->relax;
-    s->step = cfg->proto.step;
-    s->start_opt = cfg->proto.start;
-    s->nturns = cfg->proto.nturns < ADH_MAX_TURNS ? cfg->proto.nturns : ADH_MAX_TURNS;
-    memcpy(s->turns, cfg->proto.turns, s->nturns * sizeof *s->turns);
-    qsort(s->turns, s->nturns, sizeof *s->turns, cmp_desc);
+    s->cfg = *cfg;
+    /* the screen relaxes or follows the static curve: rigid spheres are --batch's */
+    s->cfg.spec.mode = cfg->spec.mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
+    sort_turns(s);
     s->tcur = 0;
-    s->turn = s->nturns ? s->turns[0] : NAN;
-    tui_params_set p = params_get(s);
-    if (params_check(s, &p, cfg->mode, why, whylen) == ADH_EINVAL)
+    s->turn = spec(s)->proto.nturns ? spec(s)->proto.turns[0] : NAN;
+    regrid(s, s->gridchoice, sizeof s->gridchoice);
+    if (params_check(s, why, whylen) == ADH_EINVAL)
         return -1;
     derive(s);
     s->grid_stale = 1;
-    s->edit_moved = -1;
-    s->mode = cfg->mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
+    s->edit_moved = NULL;
     curve_drop(s);
     new_path(s);
     return 0;
@@ -354,22 +417,34 @@ void tui_sim_free(tui_sim *s)
     adh_run_free(&s->curve);
 }
 
-/* Puts the drive on the path on screen: set for the parameters on screen,
+/* Puts the drive on the path on screen: set for the configuration's
+ * relaxation protocol (turns, unload, dwell and profiles, as --batch's),
  * then restored where the path is (a path given back by undo goes on from
  * where it was). */
 static void drive_attach(tui_sim *s)
 {
-    tui_params_set p = params_get(s);
-    adh_protocol_settings ps = params_protocol(&p);
-    adh_drive_set(s->drv, &s->mat, &s->relax, &ps, &s->path.run);
+    const adh_run_spec *r = spec(s);
+    adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, ADH_MODE_RELAX);
+    adh_drive_set(s->drv, &r->mat, &r->relax, &ps, &s->path.run);
     if (path_length(s) && adh_history_restore(s->path.hist, s->drv) != ADH_SUCCESS) {
         adh_history_clear(s->path.hist);   /* states of another grid: not this path's any more */
         adh_run_free(&s->path.run);
         adh_run_init(&s->path.run);
-        adh_drive_set(s->drv, &s->mat, &s->relax, &ps, &s->path.run);
+        adh_drive_set(s->drv, &r->mat, &r->relax, &ps, &s->path.run);
     } else if (path_length(s)) {
         adh_drive_retarget(s->drv, &ps);   /* the snapshot counted its turns against the turns of its time */
     }
+}
+
+/* The memory the run of m needs, against what there is (scene/budget.h),
+ * the refusal in the screen's words. */
+static int budget(const adh_run_spec *m, unsigned solvers, char *why, size_t whylen)
+{
+    char msg[1024];
+    if (adh_budget_check(m, solvers, msg, sizeof msg) == 0)
+        return 0;
+    tui_sim_words(msg, why, whylen);
+    return -1;
 }
 
 static int ensure_solver(tui_sim *s, char *why, size_t whylen)
@@ -381,20 +456,19 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
     if (s->drv && !s->grid_stale)
         return 0;
     free_solver(s);
-    /* the grid, kernel and operator --batch builds for these parameters */
-    adh_config c;
-    tui_params_set p = params_get(s);
-    mode_config(s, &p, ADH_MODE_RELAX, &c);
-    if (adh_budget_check(&c, 0, why, whylen) != 0)
+    /* the grid, kernel and operator --batch builds for this configuration,
+     * within the memory this process may use */
+    adh_run_spec m = mode_spec(s, spec(s), ADH_MODE_RELAX);
+    if (budget(&m, 0, why, whylen) != 0)
         return -1;
     int st;
-    s->g = adh_config_grid_alloc(&c);
-    s->k = s->g ? adh_config_kernel_alloc(&c, s->g, &st) : NULL;
+    s->g = adh_config_grid_alloc(&m);
+    s->k = s->g ? adh_config_kernel_alloc(&m, s->g, &st) : NULL;
     s->drv = s->k ? adh_drive_alloc(&adh_rule_relax, s->g, s->k) : NULL;
-    s->built = grid_of(&c);
+    s->built = grid_of(&m);
     if (!s->drv) {
         free_solver(s);
-        snprintf(why, whylen, "out of memory for a grid of N = %zu nodes: try fewer", c.nodes);
+        snprintf(why, whylen, "out of memory for a grid of N = %zu nodes: try fewer", m.grid.use.nodes);
         return -1;
     }
     s->grid_stale = 0;
@@ -402,40 +476,32 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
     return 0;
 }
 
-/* The static curve's grid, kernel and drive for the parameters on screen:
- * built on its first point, and again (the curve dropped) when that grid
+/* The static curve's grid, kernel and drive for the configuration: built
+ * on its first point, and again (the curve dropped) when that grid
  * changed. */
 static int ensure_static(tui_sim *s, char *why, size_t whylen)
 {
-    adh_config c;
-    tui_params_set p = params_get(s);
-    mode_config(s, &p, ADH_MODE_STATIC, &c);
-    adh_grid_asked now = grid_of(&c);
+    adh_run_spec m = mode_spec(s, spec(s), ADH_MODE_STATIC);
+    adh_grid_spec now = grid_of(&m);
     if (s->sdrv && same_grid(&s->sbuilt, &now))
         return 0;
     free_static(s);
-    if (adh_budget_check(&c, 1, why, whylen) != 0)
+    if (budget(&m, 1, why, whylen) != 0)
         return -1;
     int st;
-    s->sg = adh_config_grid_alloc(&c);
-    s->sk = s->sg ? adh_config_kernel_alloc(&c, s->sg, &st) : NULL;
+    s->sg = adh_config_grid_alloc(&m);
+    s->sk = s->sg ? adh_config_kernel_alloc(&m, s->sg, &st) : NULL;
     s->sdrv = s->sk ? adh_drive_alloc(&adh_rule_static, s->sg, s->sk) : NULL;
     s->sbuilt = now;
     if (!s->sdrv) {
         free_static(s);
-        snprintf(why, whylen, "out of memory for the static solver on a grid of N = %zu nodes: try fewer", c.nodes);
+        snprintf(why, whylen, "out of memory for the static solver on a grid of N = %zu nodes: try fewer", m.grid.use.nodes);
         return -1;
     }
     return 0;
 }
 
-static tui_params_set params_get(const tui_sim *s)
-{
-    tui_params_set p = { s->mat, s->nodes, s->spacing, s->step, s->start_opt, s->turn, s->start, s->grid_auto,
-                         s->grid, s->relax, { 0 }, s->nturns, s->tcur };
-    memcpy(p.turns, s->turns, s->nturns * sizeof *s->turns);
-    return p;
-}
+/* ---- edits: by key, undone by snapshots ------------------------------------ */
 
 /* Pushes e on a stack of at most TUI_MAX_EDITS, forgetting the oldest. */
 static void edits_push(tui_edit *st, size_t *n, const tui_edit *e)
@@ -448,11 +514,28 @@ static void edits_push(tui_edit *st, size_t *n, const tui_edit *e)
     st[(*n)++] = *e;
 }
 
-/* Swaps the parameters and path on screen with those of edit e (popped
- * from one stack), pushing what was on screen on the other. */
+/* The key's name as the table holds it (it outlives any edit). */
+static const char *key_name(const char *key)
+{
+    const adh_config_key *k = adh_config_key_find(key);
+    return k ? k->key : NULL;
+}
+
+/* After the run specification on screen changed (an edit, undo, redo, a
+ * mode): the closed forms, the drive and the checks follow it. */
+static void spec_changed(tui_sim *s, const adh_material *before)
+{
+    const adh_material *m = &spec(s)->mat;
+    if (m->E != before->E || m->A != before->A || m->z0 != before->z0 || m->R != before->R)
+        derive(s);
+}
+
+/* Swaps the run specification and path on screen with those of edit e
+ * (popped from one stack), pushing what was on screen on the other. */
 static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, size_t *nto)
 {
-    tui_edit e = from[--(*nfrom)], back = { params_get(s), e.param, e.keeps_path, { .hist = NULL } };
+    tui_edit e = from[--(*nfrom)], back = { s->cfg.spec, "", e.keeps_path, { .hist = NULL } };
+    snprintf(back.key, sizeof back.key, "%s", e.key);
     adh_run_init(&back.path.run);
     tui_sim_cancel(s);
     if (!e.keeps_path) {
@@ -460,21 +543,13 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
         s->path = e.path;
     }
     edits_push(to, nto, &back);
-    s->mat = e.par.mat;
-    s->nodes = e.par.nodes;
-    s->spacing = e.par.spacing;
-    s->grid_auto = e.par.grid_auto;
-    s->grid = e.par.grid;
-    s->step = e.par.step;
-    s->start_opt = e.par.start_opt;
-    s->turn = e.par.turn;
-    memcpy(s->turns, e.par.turns, e.par.nturns * sizeof *s->turns);
-    s->nturns = e.par.nturns;
-    s->tcur = e.par.tcur;
-    s->start = e.par.start;
-    s->relax = e.par.relax;
-    grid_follow_mode(s);   /* they may have been set in the other mode */
-    derive(s);
+    adh_material was = spec(s)->mat;
+    adh_mode mode = spec(s)->mode;
+    s->cfg.spec = e.spec;
+    s->cfg.spec.mode = mode;   /* the edit may have been made in the other mode */
+    regrid(s, s->gridchoice, sizeof s->gridchoice);
+    s->start = adh_config_start(spec(s));
+    spec_changed(s, &was);
     s->warn[0] = '\0';
     if (s->g)
         s->grid_stale = grid_changed(s);
@@ -490,20 +565,98 @@ static void edit_swap(tui_sim *s, tui_edit *from, size_t *nfrom, tui_edit *to, s
     sync_turn(s);
     check_grid(s);
     curve_check(s);
-    s->edit_moved = e.param;
+    s->edit_moved = key_name(e.key);
 }
 
-/* The value of parameter p in SI (NAN: not set). */
+/* Whether the relaxation's grid differs between run specifications a and
+ * b (a deeper turn needs a larger one that follows the material). */
+static int relax_grid_differs(const tui_sim *s, const adh_run_spec *a, const adh_run_spec *b)
+{
+    adh_grid_spec ga = mode_grid(s, a, ADH_MODE_RELAX), gb = mode_grid(s, b, ADH_MODE_RELAX);
+    return !same_grid(&ga, &gb);
+}
+
+/* The edit of key that made the configuration on screen from `before`:
+ * the grid chosen again, the core's check (a refusal puts `before` back),
+ * then on the undo stack with the path `before` had, unless it keeps it
+ * (a new turn the built grid need not follow: where a run turns is not
+ * physics). */
+static int edit_apply(tui_sim *s, const adh_run_spec *before, const char *key, char *why, size_t whylen)
+{
+    int turns = strcmp(key, "protocol.turns") == 0;
+    char choice[512];
+    if (turns)
+        sort_turns(s);
+    regrid(s, choice, sizeof choice);
+    if (params_check(s, why, whylen) == ADH_EINVAL) {
+        s->cfg.spec = *before;
+        return -1;
+    }
+    tui_edit e = { *before, "", turns && !(s->g && relax_grid_differs(s, before, spec(s))), { .hist = NULL } };
+    snprintf(e.key, sizeof e.key, "%s", key);
+    adh_run_init(&e.path.run);
+    if (!e.keeps_path)
+        e.path = path_take(s);   /* the next step starts a new one */
+    edits_push(s->undo_edits, &s->nundo_edits, &e);
+    edits_clear(s->redo_edits, &s->nredo_edits);
+    s->edit_kept_path = e.keeps_path;
+    snprintf(s->gridchoice, sizeof s->gridchoice, "%s", choice);
+    spec_changed(s, &before->mat);
+    if (turns) {
+        s->tcur = 0;
+        s->turn = spec(s)->proto.nturns ? spec(s)->proto.turns[0] : NAN;
+    }
+    if (turns && !(s->g && grid_changed(s))) {
+        /* the path stays, and the drive turns where it is told from here
+         * on (unless the grid had to grow for a deeper turn: then the
+         * path went, as for E) */
+        if (s->drv && !s->grid_stale) {
+            adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, ADH_MODE_RELAX);
+            adh_drive_retarget(s->drv, &ps);
+        }
+        sync_turn(s);
+        check_grid(s);
+        curve_check(s);   /* but it is where the static curve ends */
+        return 0;
+    }
+    new_path(s);
+    return 0;
+}
+
+int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, size_t whylen)
+{
+    const adh_config_key *k = adh_config_key_find(key);
+    char msg[512];
+    if (!k || !(k->where & ADH_KEY_RUN) || strcmp(key, "scene.mode") == 0) {
+        snprintf(why, whylen, "%s is not set here: %s", key, k && !strcmp(key, "scene.mode")
+                 ? "m switches between relaxation and the static curve" : "the screen sets the keys of the run "
+                 "(material, grid, solver, protocol, profiles)");
+        return -1;
+    }
+    adh_run_spec before = s->cfg.spec;
+    if (adh_config_set(&s->cfg, key, text, msg, sizeof msg) != 0) {
+        char words[512];
+        tui_sim_words(msg, words, sizeof words);
+        snprintf(why, whylen, "%s: %s", key, words);
+        return -1;
+    }
+    return edit_apply(s, &before, key, why, whylen);
+}
+
+/* ---- the panel's fields ------------------------------------------------- */
+
+/* The value of field p in SI (NAN: not set). */
 static double param_value(const tui_sim *s, tui_param p)
 {
+    const adh_run_spec *r = spec(s);
     switch (p) {
-    case P_E: return s->mat.E;
-    case P_A: return s->mat.A;
-    case P_Z0: return s->mat.z0;
-    case P_R: return s->mat.R;
-    case P_EPS: return s->relax.eps;
-    case P_D: return s->step;
-    case P_N: return (double)s->nodes;
+    case P_E: return r->mat.E;
+    case P_A: return r->mat.A;
+    case P_Z0: return r->mat.z0;
+    case P_R: return r->mat.R;
+    case P_EPS: return r->relax.eps;
+    case P_D: return r->proto.step;
+    case P_N: return (double)r->grid.use.nodes;
     case P_SPACING: return tui_sim_spacing(s);
     case P_TURN: return s->turn;
     default: return NAN;
@@ -540,13 +693,19 @@ void tui_sim_param_text(const tui_sim *s, tui_param p, int utf8, char *buf, size
     double f, v = param_value(s, p);
     const char *unit = tui_sim_param_unit(s, p, utf8, &f);
     if (p == P_N)
-        snprintf(buf, len, "%zu", s->nodes);
+        snprintf(buf, len, "%zu", spec(s)->grid.use.nodes);
     else if (p == P_TURN && isnan(v))
         snprintf(buf, len, "none");
     else if (p == P_A)
         snprintf(buf, len, "%.4g J", v);
     else
         snprintf(buf, len, "%.4g %s", v / f, unit);
+}
+
+int tui_sim_field(const char *key)
+{
+    tui_param p = field_of(key);
+    return p < P_COUNT ? (int)p : -1;
 }
 
 int tui_sim_param_lookup(const char *name)
@@ -557,276 +716,108 @@ int tui_sim_param_lookup(const char *name)
     return -1;
 }
 
-/* Every parameter change goes through here, from typed text or a scale key. */
-static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whylen);
-
-/* The turns an edit of the turn gives: the list typed (staged by
- * tui_sim_set) or the one value v (NAN: none), shallowest first. */
-static void params_turns(const tui_sim *s, tui_params_set *np, double v)
+/* One value typed into field p in the configuration's words: a bare number
+ * is in the panel's unit, given on in SI, exactly (%.17g reads back to the
+ * same double); a value with a unit, a count, auto or none as typed. */
+static void field_value(const tui_sim *s, tui_param p, const char *text, char *out, size_t len)
 {
-    if (s->nstage) {
-        memcpy(np->turns, s->stage_turns, s->nstage * sizeof *np->turns);
-        np->nturns = s->nstage;
+    double x, f;
+    while (*text == ' ')
+        text++;
+    if (p != P_N && adh_parse_quantity(text, ADH_Q_NONE, &x, NULL, 0) == 0) {
+        tui_sim_param_unit(s, p, 0, &f);
+        snprintf(out, len, "%.17g", x * f);
     } else {
-        np->turns[0] = v;
-        np->nturns = isnan(v) ? 0 : 1;
+        snprintf(out, len, "%s", text);
     }
-    qsort(np->turns, np->nturns, sizeof *np->turns, cmp_desc);
-    np->tcur = 0;
-    np->turn = np->nturns ? np->turns[0] : NAN;
 }
 
-/* Whether an edit of the turn to v changes a grid that follows the
- * material (a deeper turn needs a larger one): the path cannot stay. */
-static int turn_regrids(const tui_sim *s, double v)
+/* The text typed into field p in the configuration's words (a list of
+ * turns value by value). -1 with why when it does not fit. */
+static int field_text(const tui_sim *s, tui_param p, const char *text, char *out, size_t len, char *why, size_t whylen)
 {
-    if (!s->g)
-        return 0;   /* no grid built yet: nothing to keep */
-    tui_params_set np = params_get(s), now = np;
-    params_turns(s, &np, v);
-    char why[512];
-    params_regrid(s, &np, why, sizeof why);
-    /* the path is the relaxation's: its grid decides, in either mode */
-    adh_grid_asked ga = mode_grid(s, &np, ADH_MODE_RELAX), gb = mode_grid(s, &now, ADH_MODE_RELAX);
-    return !same_grid(&ga, &gb);
-}
-
-/* An edit that took is put on the undo stack with the parameters before it
- * and (unless it kept the path) the path they had; the path on screen
- * starts afresh. */
-static int set_value(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
-{
-    tui_edit e = { params_get(s), (int)p, p == P_TURN && !turn_regrids(s, v), { .hist = NULL } };
-    adh_run_init(&e.path.run);
-    if (!e.keeps_path)
-        e.path = path_take(s);   /* the next step starts a new one */
-    if (set_value_(s, p, v, why, whylen) != 0) {
-        if (!e.keeps_path) {
-            path_free(&s->path);
-            s->path = e.path;
-        }
-        return -1;
-    }
-    edits_push(s->undo_edits, &s->nundo_edits, &e);
-    edits_clear(s->redo_edits, &s->nredo_edits);
-    s->edit_kept_path = e.keeps_path;
-    return 0;
-}
-
-/* The protocol the parameters p describe, as --batch would run it. */
-static adh_protocol_settings params_protocol(const tui_params_set *p)
-{
-    adh_protocol_settings ps = adh_protocol_settings_default();
-    ps.start = p->start_opt;
-    ps.step = p->step;
-    ps.nturns = p->nturns;
-    memcpy(ps.turns, p->turns, p->nturns * sizeof *p->turns);
-    return ps;
-}
-
-static double params_spacing(const tui_params_set *p)
-{
-    return isnan(p->spacing) ? adh_grid_spacing_for(&p->mat, p->nodes) : p->spacing;
-}
-
-/* The core's one check of every limit, the one --batch and scene files
- * meet: ADH_EINVAL refuses an edit; ADH_EGRID (a grid that cannot hold
- * the run) lets it through, shown, and a solve is refused until mended. */
-static int params_check(const tui_sim *s, const tui_params_set *p, adh_mode mode, char *why, size_t whylen)
-{
-    adh_protocol_settings ps = params_protocol(p);
-    adh_grid_use use = mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
-    if (!p->grid.graded) {
-        adh_grid g = adh_drive_uniform_grid(p->nodes, params_spacing(p));
-        return adh_drive_check(&p->mat, &p->relax, &ps, use, &g, why, whylen, NULL);
-    }
-    /* rings: the check reads their edges (cheap to lay out; no kernel) */
-    adh_config c;
-    params_config(s, p, &c);
-    int rc = ADH_EGRID;
-    if (adh_config_grid_check(&c, why, whylen) != 0)
-        return ADH_EINVAL;
-    adh_grid *g = adh_config_grid_alloc(&c);
-    if (!g)
-        snprintf(why, whylen, "out of memory for a graded grid of %zu rings", p->nodes);
-    else
-        rc = adh_drive_check(&p->mat, &p->relax, &ps, use, g, why, whylen, NULL);
-    adh_grid_free(g);
-    return rc;
-}
-
-static int set_value_(tui_sim *s, tui_param p, double v, char *why, size_t whylen)
-{
-    char choice[512];
-    const char *name = tui_params[p].name;
-    tui_params_set np = params_get(s);
-    switch (p) {
-    case P_E: np.mat.E = v; break;
-    case P_A: np.mat.A = v; break;
-    case P_Z0: np.mat.z0 = v; break;
-    case P_R: np.mat.R = v; break;
-    case P_EPS: np.relax.eps = v; break;
-    case P_D: np.step = v; break;
-    case P_N:
-        /* the limits are the core's (adh_drive_check); a count beyond any
-         * grid is held at 1e18 so that it converts, and is refused there */
-        np.nodes = v >= 0 ? (size_t)llround(fmin(v, 1e18)) : 0;
-        break;
-    case P_SPACING: np.spacing = v; break;
-    case P_TURN:
-        params_turns(s, &np, v);
-        s->nstage = 0;
-        break;
-    default:
-        snprintf(why, whylen, "%s cannot be set", name);
-        return -1;
-    }
-    if (p == P_N || p == P_SPACING) {
-        /* a grid given: uniform, with the kernel and operator asked for, as
-         * --batch -N/--spacing builds it */
-        const adh_config *b = &s->base;
-        np.grid_auto = 0;
-        np.grid.graded = b->grid_chosen ? b->asked.graded : b->graded;
-        np.grid.kernel = b->grid_chosen ? b->asked.kernel : b->kernel;
-        np.grid.storage = b->grid_chosen ? b->asked.storage : b->storage;
-        if (p == P_N && (s->grid_auto || (s->grid.graded && !np.grid.graded)))
-            np.spacing = NAN;   /* N uniform nodes at the scaled spacing, as -N alone gives: not the
-                                   automatic grid's spacing, nor N rings' fine width */
-        choice[0] = '\0';
-    } else if (p <= P_R || p == P_TURN) {
-        /* the grid follows the material and the deepest turn, as --batch's would */
-        params_regrid(s, &np, choice, sizeof choice);
-    }
-    char msg[512];
-    if (params_check(s, &np, s->mode, msg, sizeof msg) == ADH_EINVAL) {
-        snprintf(why, whylen, "%s", msg);
-        return -1;
-    }
-    s->mat = np.mat;
-    s->relax = np.relax;
-    s->step = np.step;
-    s->nodes = np.nodes;
-    s->spacing = np.spacing;
-    s->grid_auto = np.grid_auto;
-    s->grid = np.grid;
-    if (p == P_N || p == P_SPACING || p <= P_R || p == P_TURN)
-        snprintf(s->gridchoice, sizeof s->gridchoice, "%s", choice);
-    s->turn = np.turn;
-    memcpy(s->turns, np.turns, np.nturns * sizeof *s->turns);
-    s->nturns = np.nturns;
-    s->tcur = np.tcur;
-    if (p <= P_R)
-        derive(s);
-    if (p == P_TURN && !(s->g && grid_changed(s))) {
-        /* where a run turns is not physics: the path stays, and the drive
-         * turns where it is told from here on (unless the grid had to grow
-         * for a deeper turn: then set_value took the path, as for E) */
-        if (s->drv && !s->grid_stale) {
-            tui_params_set q = params_get(s);
-            adh_protocol_settings ps = params_protocol(&q);
-            adh_drive_retarget(s->drv, &ps);
-        }
-        sync_turn(s);
-        check_grid(s);
-        curve_check(s);   /* but it is where the static curve ends */
+    if (p != P_TURN || !strchr(text, ',')) {
+        field_value(s, p, text, out, len);
         return 0;
     }
-    new_path(s);
+    /* a list of turning points, as a scene's turns = ... */
+    size_t o = 0;
+    for (const char *seg = text;;) {
+        const char *comma = strchr(seg, ',');
+        char one[128], si[64];
+        size_t n = comma ? (size_t)(comma - seg) : strlen(seg);
+        if (n >= sizeof one) {
+            snprintf(why, whylen, "turn: '%.100s...' is too long a value", seg);
+            return -1;
+        }
+        memcpy(one, seg, n);
+        one[n] = '\0';
+        field_value(s, p, one, si, sizeof si);
+        o += (size_t)snprintf(out + o, o < len ? len - o : 0, "%s%s", seg == text ? "" : ",", si);
+        if (!comma)
+            break;
+        seg = comma + 1;
+    }
+    if (o >= len) {
+        snprintf(why, whylen, "turn: '%.100s' is too long a list", text);
+        return -1;
+    }
     return 0;
 }
 
 int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t whylen)
 {
     const tui_param_info *pi = &tui_params[p];
-    char msg[256];
-    double v;
-    if (p == P_N) {
-        long n;
-        if (adh_parse_count(text, 0, LONG_MAX, &n, msg, sizeof msg) != 0) {
-            snprintf(why, whylen, "%s: %s", pi->name, msg);
-            return -1;
-        }
-        v = (double)n;
-    } else if (p == P_SPACING && strcmp(text, "auto") == 0) {
-        v = NAN;
-    } else if (p == P_TURN && strchr(text, ',')) {
-        /* a list of turning points, as a scene's turn = ... */
-        char buf[1024];
-        snprintf(buf, sizeof buf, "%s", text);
-        size_t n = 0;
-        for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-            while (*tok == ' ')
-                tok++;
-            if (n == ADH_MAX_TURNS) {
-                snprintf(why, whylen, "turn: more than %d turning points in '%s'", ADH_MAX_TURNS, text);
-                return -1;
-            }
-            double x;
-            if (adh_parse_quantity(tok, ADH_Q_NONE, &x, NULL, 0) == 0) {
-                double f;
-                tui_sim_param_unit(s, p, 0, &f);
-                x *= f;
-            } else if (adh_parse_quantity(tok, pi->q, &x, msg, sizeof msg) != 0) {
-                snprintf(why, whylen, "%s: %s", pi->name, msg);
-                return -1;
-            }
-            s->stage_turns[n++] = x;
-        }
-        if (n == 0) {
-            snprintf(why, whylen, "turn: '%s' holds no turning point: give lengths separated by commas", text);
-            return -1;
-        }
-        s->nstage = n;
-        v = s->stage_turns[0];
-    } else if (adh_parse_quantity(text, ADH_Q_NONE, &v, NULL, 0) == 0) {
-        /* a bare number is in the unit the panel shows beside the value */
-        double f;
-        tui_sim_param_unit(s, p, 0, &f);
-        v *= f;
-    } else if (adh_parse_quantity(text, pi->q, &v, msg, sizeof msg) != 0) {
-        snprintf(why, whylen, "%s: %s", pi->name, msg);
+    char value[1024], msg[512];
+    if (field_text(s, p, text, value, sizeof value, why, whylen) != 0)
+        return -1;
+    adh_run_spec before = s->cfg.spec;
+    /* the spacing set on a grid that followed the material keeps the N on
+     * screen: the grid becomes yours as it is shown */
+    if (p == P_SPACING && adh_config_grid_auto(&before) && strcmp(value, "auto") != 0) {
+        char n[32];
+        snprintf(n, sizeof n, "%zu", before.grid.use.nodes);
+        adh_config_set(&s->cfg, "grid.nodes", n, msg, sizeof msg);
+    }
+    if (adh_config_set(&s->cfg, pi->key, value, msg, sizeof msg) != 0) {
+        char words[512];
+        s->cfg.spec = before;
+        tui_sim_words(msg, words, sizeof words);
+        snprintf(why, whylen, "%s: %s", pi->name, words);
         return -1;
     }
-    return set_value(s, p, v, why, whylen);
+    return edit_apply(s, &before, pi->key, why, whylen);
 }
 
 int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whylen)
 {
-    double v;
-    switch (p) {
-    case P_E: v = s->mat.E; break;
-    case P_A: v = s->mat.A; break;
-    case P_Z0: v = s->mat.z0; break;
-    case P_R: v = s->mat.R; break;
-    case P_EPS: v = s->relax.eps; break;
-    case P_D: v = s->step; break;
-    case P_N: v = (double)s->nodes; break;
-    case P_SPACING: v = tui_sim_spacing(s); break;
-    case P_TURN: v = s->turn; break;
-    default: return -1;
-    }
+    const adh_protocol_settings *ps = &spec(s)->proto;
+    double v = param_value(s, p);
+    char text[1100];
     if (isnan(v)) {
         snprintf(why, whylen, "%s is not set: type a value first", tui_params[p].name);
         return -1;
     }
-    if (p == P_TURN && s->nturns > 1) {
+    if (p == P_TURN && ps->nturns > 1) {
         /* every turning point of the list, not the one on screen alone */
-        for (size_t i = 0; i < s->nturns; i++)
-            s->stage_turns[i] = s->turns[i] * factor;
-        s->nstage = s->nturns;
-        int rc = set_value(s, p, s->stage_turns[0], why, whylen);
-        s->nstage = 0;
-        return rc;
+        size_t o = 0;
+        for (size_t i = 0; i < ps->nturns; i++)
+            o += (size_t)snprintf(text + o, sizeof text - o, "%s%.17gm", i ? "," : "", ps->turns[i] * factor);
+    } else if (p == P_N) {
+        snprintf(text, sizeof text, "%.0f", round(v * factor));
+    } else {
+        snprintf(text, sizeof text, "%.17g%s", v * factor, adh_quantity_unit(tui_params[p].q));
     }
-    return set_value(s, p, p == P_N ? round(v * factor) : v * factor, why, whylen);
+    return tui_sim_set(s, p, text, why, whylen);
 }
 
 /* The index of the turning point on screen at h0 (within the drive's
  * tolerance of a millionth of a step), or nturns: a turn made by hand. */
 static size_t turn_index(const tui_sim *s, double h0)
 {
+    const adh_protocol_settings *ps = &spec(s)->proto;
     size_t k = 0;
-    while (k < s->nturns && !(fabs(s->turns[k] - h0) < 1e-6 * s->step))
+    while (k < ps->nturns && !(fabs(ps->turns[k] - h0) < 1e-6 * ps->step))
         k++;
     return k;
 }
@@ -836,9 +827,11 @@ static size_t turn_index(const tui_sim *s, double h0)
  * (the deepest when none is left). */
 static void sync_turn(tui_sim *s)
 {
-    s->tcur = s->nturns ? s->nturns - 1 : 0;
-    s->turn = s->nturns ? s->turns[s->tcur] : NAN;
-    if (!s->nturns || !s->drv || s->grid_stale)
+    const double *turns = spec(s)->proto.turns;
+    size_t nturns = spec(s)->proto.nturns;
+    s->tcur = nturns ? nturns - 1 : 0;
+    s->turn = nturns ? turns[s->tcur] : NAN;
+    if (!nturns || !s->drv || s->grid_stale)
         return;
     const adh_run *run = &s->path.run;
     const adh_obs *o = run->nrows ? &run->rows[run->nrows - 1] : NULL;
@@ -849,11 +842,11 @@ static void sync_turn(tui_sim *s)
     else if (o && (adh_drive_events(s->drv) & ADH_DRIVE_TURN))
         t = run->turns[run->nturns - 1].h0;
     else if (adh_drive_next(s->drv, &k) > 0 && k > 0)
-        t = s->turns[k - 1];
-    size_t i = isnan(t) ? s->nturns : turn_index(s, t);
-    if (i < s->nturns) {
+        t = turns[k - 1];
+    size_t i = isnan(t) ? nturns : turn_index(s, t);
+    if (i < nturns) {
         s->tcur = i;
-        s->turn = s->turns[i];
+        s->turn = turns[i];
     }
 }
 
@@ -861,8 +854,7 @@ static void sync_turn(tui_sim *s)
  * the snapshot was taken keeps the path). */
 static void drive_restored(tui_sim *s)
 {
-    tui_params_set q = params_get(s);
-    adh_protocol_settings ps = params_protocol(&q);
+    adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, ADH_MODE_RELAX);
     adh_drive_retarget(s->drv, &ps);
     sync_turn(s);
 }
@@ -873,9 +865,10 @@ static int grid_refuses(const tui_sim *s, char *why, size_t whylen)
 {
     if (!s->gridwarn[0])
         return 0;
-    snprintf(why, whylen, "%s", s->gridwarn);
+    snprintf(why, whylen, "%s", s->gridwarn);   /* already in the TUI's words */
     return 1;
 }
+
 
 /* ---- static mode: the equilibrium curve ---------------------------------- */
 
@@ -900,8 +893,8 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
         return -1;
     } else if (s->cstatus != ADH_CONTINUE) {
         if (s->cstatus == ADH_EGRID && s->sg && s->curve.nrows) {
-            char edge[400];
-            adh_rings_edge_sentence(s->sg, s->curve.rows[s->curve.nrows - 1].a, edge, sizeof edge);
+            char edge[512];
+            edge_words(s->sg, s->curve.rows[s->curve.nrows - 1].a, edge, sizeof edge);
             snprintf(why, whylen, "the curve stopped after %zu points: %s", s->curve.nrows, edge);
         }
         else
@@ -961,16 +954,15 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     if (s->curve.nrows == 0) {
         /* the relaxation's start and deepest turn: the two share an axis,
          * as in --batch */
-        tui_params_set q = params_get(s);
-        adh_protocol_settings ps = params_protocol(&q);
+        adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, ADH_MODE_STATIC);
         adh_static_settings ss = adh_static_settings_default();
-        s->ckey.mat = s->mat;
+        s->ckey.mat = spec(s)->mat;
         s->ckey.grid = s->sbuilt;
         s->ckey.start = s->start;
         s->ckey.end = tui_sim_curve_end(s);
         adh_run_free(&s->curve);
         adh_run_init(&s->curve);
-        int rc = adh_drive_set(s->sdrv, &s->mat, &ss, &ps, &s->curve);
+        int rc = adh_drive_set(s->sdrv, &spec(s)->mat, &ss, &ps, &s->curve);
         if (rc != ADH_SUCCESS) {
             s->cstatus = rc;
             snprintf(why, whylen, "the curve cannot start: %s", adh_strerror(rc));
@@ -991,7 +983,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     if (rc == ADH_CONTINUE || rc == ADH_SUCCESS)
         return ADH_SUCCESS;
     if (rc == ADH_EGRID) {
-        adh_rings_edge_sentence(s->sg, s->curve.rows[s->curve.nrows - 1].a, why, whylen);
+        edge_words(s->sg, s->curve.rows[s->curve.nrows - 1].a, why, whylen);
         return ADH_EGRID;
     }
     if (rc == ADH_ENAN)
@@ -1007,10 +999,10 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
 void tui_sim_set_mode(tui_sim *s, adh_mode mode)
 {
     tui_sim_cancel(s);
-    s->mode = mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
+    s->cfg.spec.mode = mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
     /* the static curve has its own resolution limit: an automatic grid is
      * this mode's (each mode keeps its solver, path or curve, on its own) */
-    grid_follow_mode(s);
+    regrid(s, s->gridchoice, sizeof s->gridchoice);
     if (s->g && grid_changed(s))
         s->grid_stale = 1;
     check_grid(s);
@@ -1042,7 +1034,8 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
 size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last)
 {
     const adh_static_fold *f;
-    size_t n = s->sdrv && adh_rule_static_solver(s->sdrv) && s->curve.nrows ? adh_static_folds(adh_rule_static_solver(s->sdrv), &f) : 0;
+    const adh_static *sw = s->sdrv ? adh_rule_static_solver(s->sdrv) : NULL;
+    size_t n = sw && s->curve.nrows ? adh_static_folds(sw, &f) : 0;
     if (n)
         *last = f[n - 1];
     return n;
@@ -1054,7 +1047,7 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
         snprintf(why, whylen, "a step is already being solved");
         return -1;
     }
-    if (s->mode == ADH_MODE_STATIC)
+    if (spec(s)->mode == ADH_MODE_STATIC)
         return curve_begin(s, dir, why, whylen);
     if (grid_refuses(s, why, whylen) || ensure_solver(s, why, whylen) != 0)
         return -1;
@@ -1063,13 +1056,13 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
         double h0 = adh_drive_hand_position(s->drv, dir);
         if (hrc == ADH_EGRID) {
             /* the edge or the graded grid's fine band: the drive's own sentence says which */
-            char edge[400];
-            adh_rings_edge_sentence(s->g, adh_drive_row(s->drv)->a, edge, sizeof edge);
+            char edge[512];
+            edge_words(s->g, adh_drive_row(s->drv)->a, edge, sizeof edge);
             snprintf(why, whylen, "no approach from here: %s; b retracts", edge);
         }
-        else if (fabs(h0) > adh_protocol_reach(&s->mat))
+        else if (fabs(h0) > adh_protocol_reach(&spec(s)->mat))
             snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/50 = %g m",
-                     h0, adh_protocol_reach(&s->mat));
+                     h0, adh_protocol_reach(&spec(s)->mat));
         else
             snprintf(why, whylen, "at most %d turning points on one path: x starts a new one", ADH_MAX_TURNS);
         return -1;
@@ -1089,7 +1082,7 @@ void tui_sim_cancel(tui_sim *s)
     if (!s->busy)
         return;
     s->busy = 0;
-    if (s->mode == ADH_MODE_STATIC) {
+    if (spec(s)->mode == ADH_MODE_STATIC) {
         s->walk = 0;   /* a point is solved within one tui_sim_work: nothing half done */
         return;
     }
@@ -1101,20 +1094,27 @@ void tui_sim_cancel(tui_sim *s)
     }
 }
 
-int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
+/* The edge sentences of the core in the TUI's words. */
+static void edge_words(const adh_grid *g, double a, char *why, size_t whylen)
+{
+    adh_rings_edge_sentence(g, a, why, whylen);
+    advice(why, whylen, adh_rings_edge_fix(g, a));
+}
+
+tui_work tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
 {
     if (!s->busy)
-        return ADH_SUCCESS;
-    if (s->mode == ADH_MODE_STATIC)
-        return curve_work(s, why, whylen);
+        return TUI_WORK_STEPPED;
+    if (spec(s)->mode == ADH_MODE_STATIC)
+        return curve_work(s, why, whylen) == ADH_SUCCESS ? TUI_WORK_STEPPED : TUI_WORK_FAILED;
     int row, rc = adh_drive_iterate(s->drv, batch, &row);
     if (rc == ADH_CONTINUE && !row)
-        return rc;
+        return TUI_WORK_BUSY;
     if (row) {
         if (adh_history_push(s->path.hist, s->drv) != ADH_SUCCESS) {
             snprintf(why, whylen, "out of memory for the history");
             tui_sim_cancel(s);
-            return ADH_ENOMEM;
+            return TUI_WORK_FAILED;
         }
         edits_clear(s->redo_edits, &s->nredo_edits);   /* a new step, as a new edit, ends what could be redone */
         const adh_obs *o = adh_drive_row(s->drv);
@@ -1125,39 +1125,42 @@ int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
     }
     if (rc == ADH_CONTINUE) {
         if (adh_drive_pending(s->drv))
-            return ADH_CONTINUE;   /* the start came first: the step asked for goes on */
+            return TUI_WORK_BUSY;   /* the start came first: the step asked for goes on */
         s->busy = 0;
-        return ADH_SUCCESS;
+        return TUI_WORK_STEPPED;
     }
     s->busy = 0;
     if (rc == ADH_SUCCESS)
-        return TUI_SIM_DONE;
+        return TUI_WORK_COMPLETE;
     if (rc == ADH_EGRID) {
-        adh_rings_edge_sentence(s->g, adh_drive_row(s->drv)->a, why, whylen);
-        return ADH_EGRID;
+        edge_words(s->g, adh_drive_row(s->drv)->a, why, whylen);
+        return TUI_WORK_FAILED;
     }
     snprintf(why, whylen, "the step failed: %s; back to the previous state (try a smaller d or a larger eps)",
              adh_strerror(rc));
     s->busy = 1;
     tui_sim_cancel(s);
-    return rc;
+    return TUI_WORK_FAILED;
 }
 
 unsigned tui_sim_events(const tui_sim *s)
 {
-    return s->mode == ADH_MODE_RELAX && s->drv && path_length(s) ? adh_drive_events(s->drv) : 0;
+    return spec(s)->mode == ADH_MODE_RELAX && s->drv && path_length(s) ? adh_drive_events(s->drv) : 0;
 }
 
 int tui_sim_next(const tui_sim *s, size_t *turn)
 {
-    *turn = s->nturns ? 1 : 0;
+    *turn = spec(s)->proto.nturns ? 1 : 0;
     return s->drv && !s->grid_stale ? adh_drive_next(s->drv, turn) : +1;
 }
 
 void tui_sim_why_done(const tui_sim *s, char *buf, size_t len)
 {
     int st = s->drv && !s->grid_stale ? adh_drive_status(s->drv) : ADH_SUCCESS;
-    if (st == ADH_SUCCESS || st == ADH_CONTINUE)
+    if ((st == ADH_SUCCESS || st == ADH_CONTINUE) && !spec(s)->proto.unload && spec(s)->proto.nturns)
+        snprintf(buf, len, "the protocol is complete: it loads only (protocol.unload = no); f and b step by hand, "
+                 "x starts again");
+    else if (st == ADH_SUCCESS || st == ADH_CONTINUE)
         snprintf(buf, len, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
     else
         snprintf(buf, len, "the protocol stopped: %s (f and b still step by hand, x starts again)", adh_strerror(st));
@@ -1172,9 +1175,10 @@ void tui_sim_turn_name(const tui_sim *s, size_t i, char *buf, size_t len)
     }
     double h0 = run->turns[i].h0;
     size_t k = turn_index(s, h0);
-    if (k < s->nturns) {
-        if (s->nturns > 1)
-            snprintf(buf, len, "turn %zu of %zu", k + 1, s->nturns);
+    size_t nturns = spec(s)->proto.nturns;
+    if (k < nturns) {
+        if (nturns > 1)
+            snprintf(buf, len, "turn %zu of %zu", k + 1, nturns);
         else
             snprintf(buf, len, "the turn");
         return;
@@ -1204,8 +1208,8 @@ static int edit_undo(tui_sim *s, int redo)
 int tui_sim_undo(tui_sim *s)
 {
     tui_sim_cancel(s);
-    s->edit_moved = -1;
-    if (s->mode == ADH_MODE_STATIC) {
+    s->edit_moved = NULL;
+    if (spec(s)->mode == ADH_MODE_STATIC) {
         if (s->curve.nrows == 0 || s->ccur == 0)
             return edit_undo(s, 0);
         s->ccur--;
@@ -1221,8 +1225,8 @@ int tui_sim_undo(tui_sim *s)
 int tui_sim_redo(tui_sim *s)
 {
     tui_sim_cancel(s);
-    s->edit_moved = -1;
-    if (s->mode == ADH_MODE_STATIC) {
+    s->edit_moved = NULL;
+    if (spec(s)->mode == ADH_MODE_STATIC) {
         if (s->curve.nrows == 0 || s->ccur + 1 >= s->curve.nrows)
             return edit_undo(s, 1);
         s->ccur++;
@@ -1237,7 +1241,7 @@ int tui_sim_redo(tui_sim *s)
 
 void tui_sim_reset(tui_sim *s)
 {
-    if (s->mode == ADH_MODE_STATIC) {
+    if (spec(s)->mode == ADH_MODE_STATIC) {
         tui_sim_cancel(s);
         curve_drop(s);   /* the relaxation path is the other mode's: kept */
         return;
@@ -1248,14 +1252,14 @@ void tui_sim_reset(tui_sim *s)
 
 const adh_obs *tui_sim_row(const tui_sim *s)
 {
-    if (s->mode == ADH_MODE_STATIC)
+    if (spec(s)->mode == ADH_MODE_STATIC)
         return s->curve.nrows ? &s->curve.rows[s->ccur] : NULL;
     return s->path.run.nrows ? &s->path.run.rows[s->path.run.nrows - 1] : NULL;
 }
 
 const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
 {
-    if (s->mode == ADH_MODE_STATIC) {
+    if (spec(s)->mode == ADH_MODE_STATIC) {
         *n = s->curve.nrows ? s->ccur + 1 : 0;
         return s->curve.nrows ? s->curve.rows : NULL;
     }
@@ -1265,7 +1269,7 @@ const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
 
 size_t tui_sim_redoable(const tui_sim *s)
 {
-    if (s->mode == ADH_MODE_STATIC)
+    if (spec(s)->mode == ADH_MODE_STATIC)
         return s->curve.nrows ? s->curve.nrows - 1 - s->ccur : 0;
     return s->path.hist ? adh_history_redoable(s->path.hist) : 0;
 }
@@ -1277,14 +1281,14 @@ void tui_sim_cycle(const tui_sim *s, adh_cycle *c)
 
 double tui_sim_target(const tui_sim *s)
 {
-    if (s->mode == ADH_MODE_STATIC || !s->drv)
+    if (spec(s)->mode == ADH_MODE_STATIC || !s->drv)
         return s->target;
     return adh_drive_step_position(s->drv);
 }
 
 size_t tui_sim_progress(const tui_sim *s, double *change)
 {
-    if (s->mode == ADH_MODE_STATIC) {
+    if (spec(s)->mode == ADH_MODE_STATIC) {
         *change = 0;
         return s->curve.nrows;
     }
@@ -1294,9 +1298,8 @@ size_t tui_sim_progress(const tui_sim *s, double *change)
 
 int tui_sim_will_build(const tui_sim *s)
 {
-    if (s->mode == ADH_MODE_STATIC) {
-        tui_params_set p = params_get(s);
-        adh_grid_asked g = mode_grid(s, &p, ADH_MODE_STATIC);
+    if (spec(s)->mode == ADH_MODE_STATIC) {
+        adh_grid_spec g = mode_grid(s, spec(s), ADH_MODE_STATIC);
         return !s->sdrv || !same_grid(&s->sbuilt, &g);
     }
     return !s->g || s->grid_stale;

@@ -1,6 +1,10 @@
-/* The physics session behind the TUI: the parameters on screen, the grid,
- * kernel and relaxation solver built from them, and the history of relaxed
- * states. Only core API calls; no curses, so the loop decides when to draw.
+/* The physics session behind the TUI: the session's one configuration (a
+ * field's Enter, + and -, :set all set it by key through adh_config_set;
+ * undo keeps snapshots of its run specification), the grid, kernel and
+ * relaxation solver built from it, and the history of relaxed states. The
+ * drive steps the configuration's own protocol, as --batch's does (its
+ * turns, unload, dwell and profiles). Only core API calls; no curses, so
+ * the loop decides when to draw.
  *
  * A drive step is solved in batches (tui_sim_work) so the loop can poll keys
  * and draw progress between them. The grid and kernel are built on the first
@@ -37,13 +41,15 @@
 #include "adhere/units.h"
 #include "scene/config.h"
 
-/* The editable parameters, in panel order. */
+/* The panel's fields, in panel order: each edits one key of the
+ * configuration (adh_config_set). */
 typedef enum tui_param {
     P_E = 0, P_A, P_Z0, P_R, P_EPS, P_D, P_N, P_SPACING, P_TURN, P_COUNT
 } tui_param;
 
 typedef struct tui_param_info {
-    const char *name;      /* the :set name */
+    const char *name;      /* the field's name, as :set takes it */
+    const char *key;       /* the configuration key it edits */
     const char *label;     /* on screen (UTF-8) */
     const char *ascii;     /* on screen without UTF-8 */
     const char *what;
@@ -61,18 +67,6 @@ typedef struct tui_models {
     double jump_in;        /* drive position of the jump into contact (eq 24 through eq 23) */
 } tui_models;
 
-/* The parameters an edit changes, as they were before it. */
-typedef struct tui_params_set {
-    adh_material mat;
-    size_t nodes;
-    double spacing, step, start_opt, turn, start;
-    int grid_auto;                 /* the grid follows the material (adh_config_grid_again) */
-    adh_grid_asked grid;           /* the grid in use besides N and the spacing: graded, band, kernel, operator */
-    adh_relax_settings relax;
-    double turns[ADH_MAX_TURNS];   /* every turning point, shallowest first */
-    size_t nturns, tcur;           /* how many; the one r is on (turn = turns[tcur]) */
-} tui_params_set;
-
 /* A relaxation path: the drive's run and its undo history (hist NULL:
  * none yet). */
 typedef struct tui_path {
@@ -80,45 +74,46 @@ typedef struct tui_path {
     adh_history *hist;
 } tui_path;
 
-/* One edit on the undo (or redo) stack: the parameters on the other side of
- * it and their path. */
+/* One edit on the undo (or redo) stack: a snapshot of the run
+ * specification on the other side of it, and its path. */
 typedef struct tui_edit {
-    tui_params_set par;
-    int param;              /* which parameter the edit changed */
+    adh_run_spec spec;
+    char key[40];           /* the key the edit set */
     int keeps_path;         /* a new turn: the path is the same on both sides */
     tui_path path;
 } tui_edit;
 
 #define TUI_MAX_EDITS 32
 
+/* What tui_sim_work says of the step in progress, htop style: what the
+ * loop does next. */
+typedef enum tui_work {
+    TUI_WORK_BUSY = 0,     /* not done: call again */
+    TUI_WORK_STEPPED,      /* done and on the history (s->warn says when it hit the cap) */
+    TUI_WORK_COMPLETE,     /* the protocol was already complete: no row */
+    TUI_WORK_FAILED        /* failed, with why: back where it was (a grid edge keeps its row) */
+} tui_work;
+
 typedef struct tui_sim {
-    adh_material mat;
+    /* The session's one configuration: flags and scene first, then every
+     * edit, each through adh_config_set. Its mode is the screen's
+     * (relaxation or static), its grid's `use` the mode's. */
+    adh_config cfg;
     adh_derived der;
     tui_models models;
-    size_t nodes;
-    double spacing;            /* NAN: scaled with sqrt(R z0); graded: the fine rings' width */
-    int grid_auto;             /* no N or spacing given: the grid is chosen for the material, as --batch's */
-    adh_grid_asked grid;       /* graded or not, its band, growth and radius, kernel, operator */
-    adh_config base;           /* the configuration the screen started from (its grid as asked) */
-    adh_grid_asked built;      /* the grid the relaxation's kernel was built for (N, spacing in it) */
     char gridchoice[512];      /* why no grid could be chosen for the material on screen; "" */
-    adh_relax_settings relax;
-    double step;               /* d */
-    double start_opt;          /* the configured start, NAN = automatic */
-    double turn;               /* the turn the drive is on: turns[tcur] (NAN: none) */
-    double turns[ADH_MAX_TURNS];   /* every turning point of the scene, shallowest first */
-    size_t nturns, tcur;       /* how many (0: none), and the one the drive is on */
-    double stage_turns[ADH_MAX_TURNS];   /* a typed list on its way to set_value */
-    size_t nstage;
+    double turn;               /* the turn the drive is on: the config's turns[tcur] (NAN: none) */
+    size_t tcur;               /* (the config's turns are kept shallowest first) */
     double start;              /* the start in use */
 
     adh_grid *g;
     adh_kernel *k;
     adh_drive *drv;            /* on g and k; steps the path */
+    adh_grid_spec built;       /* the grid the relaxation's kernel was built for (N, spacing resolved) */
     tui_path path;             /* the path on screen: the drive's run and its history */
     tui_edit undo_edits[TUI_MAX_EDITS], redo_edits[TUI_MAX_EDITS];
     size_t nundo_edits, nredo_edits;
-    int edit_moved;            /* the last undo/redo took back an edit: its parameter, else -1 */
+    const char *edit_moved;    /* the key of the edit the last undo/redo took back, else NULL */
     int edit_kept_path;        /* the last edit kept the path (a turn the grid did not have to follow) */
     int grid_stale;            /* the grid changed since the kernel was built */
 
@@ -131,12 +126,11 @@ typedef struct tui_sim {
     char gridwarn[512];        /* why the grid may not hold the run to the turn; "" */
     adh_grid_report gridres;   /* the core's resolution check of the grid (Derived panel) */
 
-    adh_mode mode;             /* ADH_MODE_RELAX or ADH_MODE_STATIC: what a step does */
     /* static mode: the equilibrium curve */
     adh_drive *sdrv;           /* the static step rule's drive, built on the first static step (a dense copy of W) */
     adh_grid *sg;              /* its own grid and kernel: an automatic grid is chosen per mode, */
     adh_kernel *sk;            /* the static curve's finer (0.3 edge widths against 0.45) */
-    adh_grid_asked sbuilt;     /* the grid sg was built for */
+    adh_grid_spec sbuilt;      /* the grid sg was built for */
     adh_run curve;             /* rows: every point computed so far, in curve order */
     size_t ccur;               /* the point shown (when curve.nrows > 0) */
     int walk;                  /* the step in progress only moves the cursor: +1, -1 */
@@ -145,16 +139,17 @@ typedef struct tui_sim {
                                   once it came down to its end, else the error that
                                   stopped it (shown, never hidden) */
     adh_static_result sres;    /* summary of the points computed so far */
-    double cend;               /* where the curve ends: the turn, or -5 nm */
     struct {                   /* what the curve was computed for */
         adh_material mat;
-        adh_grid_asked grid;
+        adh_grid_spec grid;
         double start, end;
     } ckey;
     adh_state *cprof[2];       /* profiles kept: first point in contact, pull-off */
     size_t cprof_at[2];        /* their points */
 } tui_sim;
 
+/* The screen's state for cfg (copied: the session's one configuration).
+ * 0, or -1 with why when a value is outside its limits. */
 int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen);
 void tui_sim_free(tui_sim *s);
 
@@ -166,14 +161,27 @@ void tui_sim_param_text(const tui_sim *s, tui_param p, int utf8, char *buf, size
 const char *tui_sim_param_unit(const tui_sim *s, tui_param p, int utf8, double *factor);
 /* Looks up a :set name; -1 when unknown. */
 int tui_sim_param_lookup(const char *name);
+/* The field that edits a configuration key; -1 when none does. */
+int tui_sim_field(const char *key);
 
-/* Sets parameter p from text with units; a bare number is in the unit the
+/* Sets field p from text with units; a bare number is in the unit the
  * panel shows beside it (tui_sim_param_unit). 0 when set (a change to the physics
  * starts a new path from the start); -1 with a sentence naming the value and
  * what is allowed in why, nothing changed. */
 int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t whylen);
-/* Multiplies parameter p by factor, same rules. */
+/* Multiplies field p by factor, same rules. */
 int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whylen);
+/* Sets a key of the run specification (adh_config_set: "protocol.dwell",
+ * "grid.fine_band"), as an edit of the screen: the same checks, the same
+ * undo. */
+int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, size_t whylen);
+/* A sentence of the configuration's or the core's in the TUI's words: a
+ * key or flag it names becomes the field or the :set that changes it. */
+void tui_sim_words(const char *sentence, char *out, size_t len);
+/* The turning points (the config's, shallowest first), and how many. */
+const double *tui_sim_turns(const tui_sim *s, size_t *n);
+/* The mode on screen: ADH_MODE_RELAX or ADH_MODE_STATIC. */
+adh_mode tui_sim_mode(const tui_sim *s);
 
 /* Switches between relaxation and static mode. Nothing is computed: each
  * mode finds its path or curve as it left it (unless the parameters it
@@ -200,14 +208,9 @@ size_t tui_sim_curve_fold(const tui_sim *s, adh_static_fold *last);
  * the equilibrium curve being the same whichever way the drive moves); -1
  * with why at the start, at the curve's end or after the solver stopped. */
 int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen);
-/* Up to batch iterations of the step in progress. ADH_CONTINUE while not
- * done; ADH_SUCCESS when the step is done and on the history (a step that
- * hit the iteration cap is done too, with s->warn saying so); TUI_SIM_DONE
- * when the protocol was already complete (no row); an error code with why
- * when the step failed (the state is back where it was; ADH_EGRID keeps
- * its row). */
-#define TUI_SIM_DONE 100
-int tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen);
+/* Up to batch iterations of the step in progress (tui_work: busy, a step
+ * done, the protocol complete, or a failure with why). */
+tui_work tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen);
 /* Abandons the step in progress: back to the last state on the history. */
 void tui_sim_cancel(tui_sim *s);
 
@@ -228,8 +231,8 @@ void tui_sim_turn_name(const tui_sim *s, size_t i, char *buf, size_t len);
 const adh_run *tui_sim_run(const tui_sim *s);
 
 /* Undo walks back along the path (static mode: the curve); at its first
- * state it takes back the last edit, restoring the parameters before it and
- * the path they had (edit_moved says which parameter). Redo the other way.
+ * state it takes back the last edit, restoring the run specification before
+ * it and the path it had (edit_moved names the key). Redo the other way.
  * ADH_SUCCESS or ADH_EINVAL: nothing to undo (redo). */
 int tui_sim_undo(tui_sim *s);
 int tui_sim_redo(tui_sim *s);
@@ -250,6 +253,8 @@ double tui_sim_target(const tui_sim *s);
 /* Iterations so far of the step in progress, and its convergence measure. */
 size_t tui_sim_progress(const tui_sim *s, double *change);
 double tui_sim_spacing(const tui_sim *s);
+/* The grid on screen (the mode's: asked for, or chosen for the material). */
+const adh_grid_spec *tui_sim_grid(const tui_sim *s);
 /* Whether the next step of the mode on screen first builds its grid and
  * kernel (the first step, or the grid changed): a moment at large N. */
 int tui_sim_will_build(const tui_sim *s);

@@ -29,7 +29,7 @@
 #include "tui/sim.h"
 #include "plot/outdir.h"
 #include "plot/rows.h"
-#include "cli/ready.h"   /* the test readiness signal, shared with the batch drivers */
+#include "util/ready.h"   /* the test readiness signal, shared with the batch drivers */
 
 static volatile sig_atomic_t got_signal;
 
@@ -55,8 +55,7 @@ enum {
 };
 
 typedef struct tui {
-    adh_config cfg;
-    tui_sim sim;
+    tui_sim sim;        /* and in it the session's one configuration */
     tui_keysrc keys;
     tui_view view;
     int headless;
@@ -104,7 +103,20 @@ static void fmtq(double v, adh_quantity q, char *buf, size_t len)
 
 static int is_static(const tui *t)
 {
-    return t->sim.mode == ADH_MODE_STATIC;
+    return tui_sim_mode(&t->sim) == ADH_MODE_STATIC;
+}
+
+static const adh_config *config(const tui *t)
+{
+    return &t->sim.cfg;
+}
+
+/* How many turning points the protocol has. */
+static size_t nturns(const tui *t)
+{
+    size_t n;
+    tui_sim_turns(&t->sim, &n);
+    return n;
 }
 
 static const char *activity(const tui *t)
@@ -120,9 +132,9 @@ static const char *activity(const tui *t)
     if (t->run_dir) {
         size_t k;
         int unloading = tui_sim_next(&t->sim, &k) < 0;
-        if (t->sim.nturns > 1) {
+        if (nturns(t) > 1) {
             snprintf(buf, sizeof buf, "%s, turn %zu of %zu", unloading ? "running to pull-off" : "running to the turn",
-                     t->sim.tcur + 1, t->sim.nturns);
+                     t->sim.tcur + 1, nturns(t));
             return buf;
         }
         return unloading ? "running to pull-off" : "running to the turn";
@@ -179,7 +191,7 @@ static void start_step(tui *t, int dir)
     if (tui_sim_will_build(&t->sim) && !t->headless) {
         /* The kernel is built on the first step; at large N that takes a
          * moment, so say so before the screen goes quiet. */
-        say(t, 0, "building the kernel for N = %zu nodes...", t->sim.nodes);
+        say(t, 0, "building the kernel for N = %zu nodes...", tui_sim_grid(&t->sim)->nodes);
         draw(t);
     }
     if (tui_sim_begin(&t->sim, dir, why, sizeof why) != 0) {
@@ -226,7 +238,7 @@ static text96 pulloff_text(const tui *t)
     char F[64];
     tui_sim_cycle(&t->sim, &c);
     fmtq(c.pulloff_F, ADH_Q_FORCE, F, sizeof F);
-    snprintf(r.s, sizeof r.s, "%s (%.3g %s)", F, c.pulloff_F / (-M_PI * t->sim.der.gamma * t->sim.mat.R),
+    snprintf(r.s, sizeof r.s, "%s (%.3g %s)", F, c.pulloff_F / (-M_PI * t->sim.der.gamma * config(t)->spec.mat.R),
              t->view.utf8 ? "\xcf\x80\xce\xb3R" : "pi gamma R");
     return r;
 }
@@ -277,7 +289,7 @@ static int run_done(tui *t)
      * reaches its goal */
     unsigned ev = tui_sim_events(&t->sim);
     const adh_run *run = tui_sim_run(&t->sim);
-    size_t nt = t->sim.nturns;
+    size_t nt = nturns(t);
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
     /* turns are named by the protocol's numbers ("turn 3 of 8"); a turn
@@ -293,7 +305,10 @@ static int run_done(tui *t)
         snprintf(next_turn, sizeof next_turn, "the next turn");
     if (ev & ADH_DRIVE_TURN) {
         tui_sim_turn_name(&t->sim, run->nturns - 1, this_turn, sizeof this_turn);
-        if (nt <= 1 && next < 0)
+        if (next == 0)   /* unload = no: the protocol loads only */
+            say(t, 0, "at %s h0 = %s (force %s): the protocol ends here (protocol.unload = no)",
+                nt <= 1 ? "the turning point" : this_turn, h0, F);
+        else if (nt <= 1 && next < 0)
             say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until pull-off", h0, F);
         else if (next > 0)
             say(t, 0, "at %s, h0 = %s (force %s): press r to load on to %s", this_turn, h0, F, next_turn);
@@ -337,16 +352,16 @@ static int run_done(tui *t)
     return 1;
 }
 
-static void after_step(tui *t, int rc, const char *why)
+static void after_step(tui *t, tui_work rc, const char *why)
 {
-    if (rc == TUI_SIM_DONE) {
+    if (rc == TUI_WORK_COMPLETE) {
         char done[256];
         stop_all(t);
         tui_sim_why_done(&t->sim, done, sizeof done);
         say(t, 0, "%s", done);
         return;
     }
-    if (rc != ADH_SUCCESS) {
+    if (rc == TUI_WORK_FAILED) {
         stop_all(t);
         say(t, 1, "%s", why);
         return;
@@ -380,41 +395,61 @@ static void write_plots(tui *t)
         say(t, 1, "nothing to plot yet: step first (f, or r to run)");
         return;
     }
-    const char *dir = t->cfg.out_dir[0] ? t->cfg.out_dir : "adhere-plots";
+    const char *dir = config(t)->output.dir[0] ? config(t)->output.dir : "adhere-plots";
     if (!t->headless) {
         say(t, 0, "writing plots to %s/ through gnuplot...", dir);
         draw(t);
     }
     char msg[600];
-    if (tui_plot_path(&t->sim, &t->cfg, dir, &got_signal, msg, sizeof msg) == 0)
+    if (tui_plot_path(&t->sim, dir, &got_signal, msg, sizeof msg) == 0)
         say(t, 0, "plots: %s", msg);   /* the writer names the files and the directory */
     else
         say(t, 1, "plots not written to %s/: %s", dir, msg);
 }
 
-static void param_changed(tui *t, tui_param p)
+/* A key as the screen names it, and its value: a field's name and the text
+ * the panel shows ("R", "20 µm"), else the key and its value (a quantity
+ * with its unit). Returns the name. */
+static const char *key_value(const tui *t, const char *key, char *val, size_t len)
 {
-    char val[64];
-    int u = t->view.utf8;
-    tui_sim_param_text(&t->sim, p, u, val, sizeof val);
+    int p = tui_sim_field(key);
+    if (p >= 0) {
+        tui_sim_param_text(&t->sim, (tui_param)p, t->view.utf8, val, len);
+        return tui_params[p].name;
+    }
+    const adh_config_key *k = adh_config_key_find(key);
+    double v;
+    adh_config_get(config(t), key, val, len);
+    if (k && k->q != ADH_Q_NONE && adh_parse_quantity(val, ADH_Q_NONE, &v, NULL, 0) == 0)
+        fmtq(v, k->q, val, len);
+    return key;
+}
+
+/* The status line after an edit of key: what it is now, and what follows
+ * (sigma and gamma at once; a new path, or the path kept for a turn). */
+static void key_changed(tui *t, const char *key)
+{
+    char val[256];
+    const char *name = key_value(t, key, val, sizeof val);
+    int u = t->view.utf8, turn = !strcmp(key, "protocol.turns"), eps = !strcmp(key, "solver.eps");
     size_t ncurve;
     tui_sim_curve(&t->sim, &ncurve);
-    if (is_static(t) && p == P_TURN)
+    if (is_static(t) && turn)
         say(t, 0, "turn = %s: the curve now ends there%s", val, ncurve ? "" : "; f or r follows it from the start");
-    else if (p == P_TURN && t->sim.edit_kept_path)
+    else if (turn && t->sim.edit_kept_path)
         say(t, 0, "turn = %s: r now loads to there (the path is kept)", val);
-    else if (p == P_TURN)
+    else if (turn)
         say(t, 0, "turn = %s: the grid follows it (N = %zu, as --batch would choose); a new path starts from the "
-            "start", val, t->sim.nodes);
-    else if (is_static(t) && (ncurve || p == P_EPS))
+            "start", val, tui_sim_grid(&t->sim)->nodes);
+    else if (is_static(t) && (ncurve || eps))
         say(t, 0, "%s = %s: the equilibrium curve does not depend on it%s (the relaxation path restarts)",
-            tui_params[p].name, val, ncurve ? " and is kept" : "");
+            name, val, ncurve ? " and is kept" : "");
     else if (is_static(t))
         say(t, 0, "%s = %s: %s = %.4g, %s = %.4g mJ/m%s; the curve starts again from the start (f, or r to "
-            "its end)", tui_params[p].name, val, u ? "\xcf\x83" : "sigma", t->sim.der.sigma,
+            "its end)", name, val, u ? "\xcf\x83" : "sigma", t->sim.der.sigma,
             u ? "\xce\xb3" : "gamma", t->sim.der.gamma * 1e3, u ? "\xc2\xb2" : "^2");
     else
-        say(t, 0, "%s = %s: %s = %.4g, %s = %.4g mJ/m%s; a new path starts from the start", tui_params[p].name,
+        say(t, 0, "%s = %s: %s = %.4g, %s = %.4g mJ/m%s; a new path starts from the start", name,
             val, u ? "\xcf\x83" : "sigma", t->sim.der.sigma, u ? "\xce\xb3" : "gamma", t->sim.der.gamma * 1e3,
             u ? "\xc2\xb2" : "^2");
 }
@@ -453,19 +488,23 @@ static int run_command(tui *t, const tui_replay_item *it, char *why, size_t whyl
 {
     switch (it->kind) {
     case TUI_REPLAY_SET: {
+        /* a field by its name, or any key of the run by its own */
         int p = tui_sim_param_lookup(it->name);
-        if (p < 0) {
-            snprintf(why, whylen, "unknown parameter '%s' for set; the names are E A z0 R eps d N spacing turn",
-                     it->name);
+        const char *key = p >= 0 ? tui_params[p].key : it->name;
+        if (p < 0 && !adh_config_key_find(key)) {
+            snprintf(why, whylen, "unknown parameter '%s' for set: a key of the run as a scene writes it, "
+                     "section.name (protocol.dwell, grid.fine_band), or a field; the names are E A z0 R eps d N "
+                     "spacing turn", it->name);
             return -1;
         }
-        if (p != P_TURN) {
+        if (strcmp(key, "protocol.turns") != 0) {   /* a new turn leaves a run going */
             tui_sim_cancel(&t->sim);
             stop_all(t);
         }
-        if (tui_sim_set(&t->sim, (tui_param)p, it->value, why, whylen) != 0)
+        if ((p >= 0 ? tui_sim_set(&t->sim, (tui_param)p, it->value, why, whylen)
+                    : tui_sim_set_key(&t->sim, key, it->value, why, whylen)) != 0)
             return -1;
-        param_changed(t, (tui_param)p);
+        key_changed(t, key);
         return 0;
     }
     case TUI_REPLAY_DUMP:
@@ -515,7 +554,7 @@ static int edit_key(tui *t, int key)
         if (tui_sim_set(&t->sim, p, t->text, why, sizeof why) != 0)
             say(t, 1, "%s; nothing changed", why);
         else
-            param_changed(t, p);
+            key_changed(t, tui_params[p].key);
         return TODO_REDRAW;
     }
     /* The ':' prompt takes what a script's command line takes. */
@@ -549,27 +588,27 @@ static void move_history(tui *t, int redo, long n)
 {
     long done = 0;
     stop_all(t);
-    int edit = -1;
+    const char *edit = NULL;
     while (done < n && (redo ? tui_sim_redo(&t->sim) : tui_sim_undo(&t->sim)) == ADH_SUCCESS) {
         done++;
-        if (t->sim.edit_moved >= 0)
+        if (t->sim.edit_moved)
             edit = t->sim.edit_moved;
     }
     const adh_obs *o = tui_sim_row(&t->sim);
     char h0[64];
-    if (edit >= 0) {
+    if (edit) {
         /* an edit taken back or done again: say what the parameter is now
          * and what came back with it */
-        char val[64];
+        char val[256];
         size_t np;
         tui_sim_rows(&t->sim, &np);
-        tui_sim_param_text(&t->sim, (tui_param)edit, t->view.utf8, val, sizeof val);
+        const char *name = key_value(t, edit, val, sizeof val);
         if (is_static(t))
             say(t, 0, "%s the edit: %s = %s again (the relaxation path came back with it; f solves the curve)",
-                redo ? "redid" : "undid", tui_params[edit].name, val);
+                redo ? "redid" : "undid", name, val);
         else
             say(t, 0, "%s the edit: %s = %s again, with its path (%zu state%s)", redo ? "redid" : "undid",
-                tui_params[edit].name, val, np, np == 1 ? "" : "s");
+                name, val, np, np == 1 ? "" : "s");
         return;
     }
     if (!done) {
@@ -615,24 +654,79 @@ static void toggle_mode(tui *t)
         say(t, 0, "relaxation: f steps the spheres together and relaxes, r runs to the turn; m: static");
 }
 
+/* A key on the help screen: PgUp/PgDn scroll, any other returns. */
+static int help_key(tui *t, int key)
+{
+    if (key == KEY_NPAGE || key == KEY_PPAGE) {
+        int page = LINES - 2 > 1 ? LINES - 2 : 1;
+        t->view.help_top += key == KEY_NPAGE ? page : -page;
+        if (t->view.help_top > t->help_lines - page)
+            t->view.help_top = t->help_lines - page;
+        if (t->view.help_top < 0)
+            t->view.help_top = 0;
+    } else {
+        t->help = 0;
+    }
+    return TODO_REDRAW;
+}
+
+/* r: static mode follows the curve to its end; relaxation takes the
+ * protocol's next step, from wherever the path is (the drive knows whether
+ * it loads or unloads). What must be redone: a solve, or nothing. */
+static int run_key(tui *t)
+{
+    char why[512];
+    t->pending = 0;
+    if (is_static(t)) {
+        char end[64];
+        fmtq(tui_sim_curve_end(&t->sim), ADH_Q_LENGTH, end, sizeof end);
+        t->run_dir = 1;
+        say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
+        return TODO_RESOLVE;
+    }
+    size_t k;
+    int next = tui_sim_next(&t->sim, &k);
+    if (next == 0) {
+        tui_sim_why_done(&t->sim, why, sizeof why);
+        say(t, 0, "%s", why);
+        return TODO_NONE;
+    }
+    t->run_dir = 1;
+    char tname[128];
+    if (next < 0)
+        tui_sim_turn_name(&t->sim, k - 1, tname, sizeof tname);
+    if (next < 0 && strcmp(tname, "the turn") != 0)
+        say(t, 0, "unloading %s until pull-off; any key pauses", tname);
+    else if (next > 0 && nturns(t) > 1 && k > 0)
+        say(t, 0, "loading to turn %zu of %zu; any key pauses", k, nturns(t));
+    else
+        say(t, 0, "%s", next < 0 ? "unloading until pull-off; any key pauses"
+                                 : "loading to the turning point; any key pauses");
+    return TODO_RESOLVE;
+}
+
+/* + and -: the selected field times f (a new turn leaves a run going). */
+static void scale_key(tui *t, double f)
+{
+    char why[512];
+    tui_param p = (tui_param)t->view.sel;
+    if (p != P_TURN) {
+        tui_sim_cancel(&t->sim);
+        stop_all(t);
+    }
+    if (tui_sim_scale(&t->sim, p, f, why, sizeof why) != 0)
+        say(t, 1, "%s; nothing changed", why);
+    else
+        key_changed(t, tui_params[p].key);
+}
+
 static int handle_key(tui *t, int key)
 {
-    char why[512], name[32];
+    char name[32];
     if (key == KEY_RESIZE)
         return TODO_REPAINT | TODO_REDRAW;
-    if (t->help) {
-        if (key == KEY_NPAGE || key == KEY_PPAGE) {
-            int page = LINES - 2 > 1 ? LINES - 2 : 1;
-            t->view.help_top += key == KEY_NPAGE ? page : -page;
-            if (t->view.help_top > t->help_lines - page)
-                t->view.help_top = t->help_lines - page;
-            if (t->view.help_top < 0)
-                t->view.help_top = 0;
-        } else {
-            t->help = 0;
-        }
-        return TODO_REDRAW;
-    }
+    if (t->help)
+        return help_key(t, key);
     if (t->editing)
         return edit_key(t, key);
     if (key >= '0' && key <= '9' && (key != '0' || t->count > 0)) {
@@ -657,40 +751,7 @@ static int handle_key(tui *t, int key)
         t->run_dir = 0;
         todo |= TODO_RESOLVE;
         break;
-    case ACT_RUN: {
-        if (is_static(t)) {
-            char end[64];
-            fmtq(tui_sim_curve_end(&t->sim), ADH_Q_LENGTH, end, sizeof end);
-            t->pending = 0;
-            t->run_dir = 1;
-            say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
-            todo |= TODO_RESOLVE;
-            break;
-        }
-        /* the protocol's next step, from wherever the path is: the drive
-         * knows whether it loads or unloads */
-        size_t k;
-        int next = tui_sim_next(&t->sim, &k);
-        t->pending = 0;
-        if (next == 0) {
-            tui_sim_why_done(&t->sim, why, sizeof why);
-            say(t, 0, "%s", why);
-            break;
-        }
-        t->run_dir = 1;
-        char tname[128];
-        if (next < 0)
-            tui_sim_turn_name(&t->sim, k - 1, tname, sizeof tname);
-        if (next < 0 && strcmp(tname, "the turn") != 0)
-            say(t, 0, "unloading %s until pull-off; any key pauses", tname);
-        else if (next > 0 && t->sim.nturns > 1 && k > 0)
-            say(t, 0, "loading to turn %zu of %zu; any key pauses", k, t->sim.nturns);
-        else
-            say(t, 0, "%s", next < 0 ? "unloading until pull-off; any key pauses"
-                                     : "loading to the turning point; any key pauses");
-        todo |= TODO_RESOLVE;
-        break;
-    }
+    case ACT_RUN: todo |= run_key(t); break;
     case ACT_UNDO: move_history(t, 0, n); break;
     case ACT_REDO: move_history(t, 1, n); break;
     case ACT_RESET: {
@@ -714,19 +775,7 @@ static int handle_key(tui *t, int key)
         t->textlen = 0;
         break;
     case ACT_SCALE_UP:
-    case ACT_SCALE_DOWN: {
-        tui_param p = (tui_param)t->view.sel;
-        double f = pow(a == ACT_SCALE_UP ? 2.0 : 0.5, (double)n);
-        if (p != P_TURN) {
-            tui_sim_cancel(&t->sim);
-            stop_all(t);
-        }
-        if (tui_sim_scale(&t->sim, p, f, why, sizeof why) != 0)
-            say(t, 1, "%s; nothing changed", why);
-        else
-            param_changed(t, p);
-        break;
-    }
+    case ACT_SCALE_DOWN: scale_key(t, pow(a == ACT_SCALE_UP ? 2.0 : 0.5, (double)n)); break;
     case ACT_PLOTS: todo |= TODO_REPLOT; break;
     case ACT_HELP:
         t->help = 1;
@@ -845,7 +894,7 @@ static void progress(tui *t)
     char h0[64], c[64], e[64];
     fmtq(tui_sim_target(&t->sim), ADH_Q_LENGTH, h0, sizeof h0);
     fmtq(change, ADH_Q_LENGTH, c, sizeof c);
-    fmtq(t->sim.relax.eps, ADH_Q_LENGTH, e, sizeof e);
+    fmtq(config(t)->spec.relax.eps, ADH_Q_LENGTH, e, sizeof e);
     say(t, 0, "relaxing at h0 = %s: iteration %zu, change %s (done below %s); any key stops", h0, it, c, e);
     draw(t);
 }
@@ -872,9 +921,9 @@ static void loop(tui *t)
             char why[512];
             /* Batches keep a terminal responsive; a replay never reads keys
              * inside a step, so its batch size changes nothing it shows. */
-            int rc = tui_sim_work(&t->sim, t->headless ? 5000 : 200, why, sizeof why);
-            cli_ready_mark();   /* a solve is under way, signals are caught */
-            if (rc != ADH_CONTINUE)
+            tui_work rc = tui_sim_work(&t->sim, t->headless ? 5000 : 200, why, sizeof why);
+            adh_ready_mark();   /* a solve is under way, signals are caught */
+            if (rc != TUI_WORK_BUSY)
                 after_step(t, rc, why);
             continue;
         }
@@ -919,7 +968,7 @@ static int screen_open(tui *t, char *why, size_t whylen)
             return -1;
         }
         set_term(t->scr);
-        resizeterm(t->cfg.rows, t->cfg.cols);
+        resizeterm(config(t)->tui.rows, config(t)->tui.cols);
     } else {
         if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
             snprintf(why, whylen, "the TUI needs a terminal; use --batch, or --replay=FILE for a keystroke script");
@@ -979,14 +1028,9 @@ int tui_main(const adh_config *cfg)
     char why[1024];
     memset(&t, 0, sizeof t);
     t.dirty = 1;
-    t.cfg = *cfg;
-    t.headless = cfg->replay[0] != '\0';
-    if (t.cfg.cols < 40 || t.cfg.rows < 12) {
-        t.cfg.cols = 100;
-        t.cfg.rows = 32;
-    }
+    t.headless = cfg->tui.replay[0] != '\0';
     if (t.headless) {
-        if (tui_keysrc_replay(&t.keys, cfg->replay, why, sizeof why) != 0) {
+        if (tui_keysrc_replay(&t.keys, cfg->tui.replay, why, sizeof why) != 0) {
             fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
             return EXIT_BAD_INPUT;
         }
@@ -998,9 +1042,14 @@ int tui_main(const adh_config *cfg)
         tui_keysrc_free(&t.keys);
         return EXIT_BAD_INPUT;
     }
+    adh_tui_options *size = &t.sim.cfg.tui;
+    if (size->cols < 40 || size->rows < 12) {
+        size->cols = 100;
+        size->rows = 32;
+    }
     t.view.utf8 = locale_utf8(t.headless);
-    t.view.no_clock = cfg->no_clock;
-    t.view.measured = cfg->measured;
+    t.view.no_clock = cfg->tui.no_clock;
+    t.view.measured = cfg->output.measured;
 
     struct sigaction sa, old_int, old_term, old_hup;
     memset(&sa, 0, sizeof sa);
@@ -1022,18 +1071,18 @@ int tui_main(const adh_config *cfg)
         tui_keysrc_free(&t.keys);
         return EXIT_BAD_INPUT;   /* no terminal to run on: a usage error */
     }
-    if (cfg->mode == ADH_MODE_RIGID)
+    if (cfg->spec.mode == ADH_MODE_RIGID)
         say(&t, 0, "The screen relaxes step by step as the paper does; --mode=rigid is for --batch. ? lists every key.");
-    else if (cfg->mode == ADH_MODE_STATIC)
+    else if (cfg->spec.mode == ADH_MODE_STATIC)
         say(&t, 0, "Static equilibrium: f solves the curve point by point, r follows it to the end, ? lists every key.");
-    else if (cfg->title[0])
-        say(&t, 0, "%s. f steps in, r runs, ? lists every key.", cfg->title);
+    else if (cfg->output.title[0])
+        say(&t, 0, "%s. f steps in, r runs, ? lists every key.", cfg->output.title);
     else
         say(&t, 0, "Welcome. f steps the spheres together, r runs to the turning point, ? lists every key.");
     loop(&t);
-    if (cfg->screen[0] && t.exit_code == 0) {
+    if (cfg->tui.screen[0] && t.exit_code == 0) {
         draw(&t);
-        if (tui_dump_screen(cfg->screen, why, sizeof why) != 0) {
+        if (tui_dump_screen(cfg->tui.screen, why, sizeof why) != 0) {
             snprintf(t.fatal, sizeof t.fatal, "adhere: %.1000s", why);
             t.exit_code = EXIT_BAD_INPUT;   /* an unwritable output */
         }

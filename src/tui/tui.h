@@ -3,14 +3,8 @@
 #ifndef ADH_TUI_H
 #define ADH_TUI_H
 
-#include <stdio.h>
-
 #include "scene/config.h"
 
 int tui_main(const adh_config *cfg);
-
-/* The key table, one line per key: the key as a replay script writes it
- * (f, <Left>, <C-r>), a TAB, what it does. For --list-keys. */
-void tui_print_keys(FILE *out);
 
 #endif

@@ -81,13 +81,13 @@ int main(int argc, char **argv)
     int failed = 0;
     for (size_t a = 0; a < nsizes; a++) {
         for (int kind = 0; kind < 2; kind++) {
-            cfg.nodes = ns[a];
-            adh_grid *g = adh_grid_alloc(cfg.nodes, adh_config_spacing(&cfg));
+            cfg.spec.grid.use.nodes = ns[a];
+            adh_grid *g = adh_grid_alloc(cfg.spec.grid.use.nodes, adh_config_spacing(&cfg.spec));
             adh_kernel *k = adh_kernel_alloc(g, (adh_kernel_type)kind);
             adh_relax *w = adh_relax_alloc(g, k);
             adh_relax_settings rs = adh_relax_settings_default();
             rs.eps = 1e-30; /* never converged: every call is full iterations */
-            adh_relax_set(w, &cfg.mat, &rs, 0.3e-9); /* in contact: the costly regime */
+            adh_relax_set(w, &cfg.spec.mat, &rs, 0.3e-9); /* in contact: the costly regime */
             int iters = ns[a] >= 4000 ? 20 : 200;
             double t[15];
             for (int r = 0; r < repeat && r < 15; r++) {
@@ -104,8 +104,8 @@ int main(int argc, char **argv)
         }
     }
     if (cycle_n) {
-        cfg.nodes = cycle_n;
-        adh_grid *g = adh_grid_alloc(cfg.nodes, adh_config_spacing(&cfg));
+        cfg.spec.grid.use.nodes = cycle_n;
+        adh_grid *g = adh_grid_alloc(cfg.spec.grid.use.nodes, adh_config_spacing(&cfg.spec));
         adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
         printf("\nFigure 4 cycle (N = %zu, eps = 1 pm, d = 0.05 nm, turn -5 nm), one core:\n", cycle_n);
         printf("%-14s %10s %7s %11s %10s %12s %14s\n", "mixing", "seconds", "steps", "iterations",
@@ -113,12 +113,12 @@ int main(int argc, char **argv)
         /* The default first (median of up to 3); the others once each. The
          * paper's rule takes minutes: only with BENCH_PAPER=1. */
         const struct { adh_mix_rule rule; double beta; int runs; } rules[] = {
-            { ADH_MIX_MOMENTUM, cfg.relax.momentum, repeat < 3 ? repeat : 3 },
+            { ADH_MIX_MOMENTUM, cfg.spec.relax.momentum, repeat < 3 ? repeat : 3 },
             { ADH_MIX_MOMENTUM, 0.8, 1 },
             { ADH_MIX_PAPER, 0, getenv("BENCH_PAPER") && atoi(getenv("BENCH_PAPER")) ? 1 : 0 },
         };
         for (size_t q = 0; q < sizeof rules / sizeof rules[0]; q++) {
-            adh_relax_settings rs = cfg.relax;
+            adh_relax_settings rs = cfg.spec.relax;
             rs.rule = rules[q].rule;
             rs.momentum = rules[q].beta;
             char name[32];
@@ -133,7 +133,7 @@ int main(int argc, char **argv)
                 adh_run run;
                 adh_run_init(&run);
                 double t0 = now();
-                int rc = adh_runner_rule(&adh_rule_relax, g, k, &cfg.mat, &rs, &cfg.proto, NULL, NULL, &run);
+                int rc = adh_runner_rule(&adh_rule_relax, g, k, &cfg.spec.mat, &rs, &cfg.spec.proto, NULL, NULL, &run);
                 t[r] = now() - t0;
                 if (rc != ADH_SUCCESS) {
                     fprintf(stderr, "bench-relax: the cycle with %s failed: %s\n", name, adh_strerror(rc));

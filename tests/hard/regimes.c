@@ -15,18 +15,19 @@
 
 typedef struct hard_case {
     const char *name;
-    adh_config cfg;
+    adh_run_spec cfg;
 } hard_case;
 
 /* Figure 1's material (sigma = 2.25): its contact edge zone (~12 nm) is
  * resolved by the N = 100 grid (15 nm), so lattice trapping does not mask the
  * physics signs checked below; harder materials get finer grids. */
-static adh_config base(void)
+static adh_run_spec base(void)
 {
-    adh_config c;
-    adh_config_default(&c);
+    adh_config d;
+    adh_config_default(&d);
+    adh_run_spec c = d.spec;
     c.mat.E = 1e9;
-    c.nodes = 100;
+    c.grid.use.nodes = 100;
     c.relax.eps = 3e-12;
     c.proto.turns[0] = -2e-9;
     return c;
@@ -38,11 +39,11 @@ typedef struct outcome {
     char why[512];
 } outcome;
 
-static int run_config(const adh_config *c, outcome *o)
+static int run_config(const adh_run_spec *c, outcome *o)
 {
     memset(o, 0, sizeof *o);
     adh_run_init(&o->run);
-    adh_grid *g = adh_grid_alloc(c->nodes, adh_config_spacing(c));
+    adh_grid *g = adh_grid_alloc(c->grid.use.nodes, adh_config_spacing(c));
     o->rc = adh_material_validate(&c->mat, o->why, sizeof o->why);
     if (o->rc == ADH_SUCCESS)
         o->rc = adh_protocol_check(&c->proto, &c->mat, g, o->why, sizeof o->why, NULL);
@@ -50,7 +51,7 @@ static int run_config(const adh_config *c, outcome *o)
         adh_grid_free(g);
         return o->rc;
     }
-    adh_kernel *k = adh_kernel_alloc(g, c->kernel);
+    adh_kernel *k = adh_kernel_alloc(g, c->grid.use.kernel);
     o->rc = adh_runner_rule(&adh_rule_relax, g, k, &c->mat, &c->relax, &c->proto, NULL, NULL, &o->run);
     adh_kernel_free(k);
     adh_grid_free(g);
@@ -58,7 +59,7 @@ static int run_config(const adh_config *c, outcome *o)
 }
 
 /* The checks every regime must pass; returns the number of failures. */
-static void check_run(const char *name, const adh_config *c, outcome *o)
+static void check_run(const char *name, const adh_run_spec *c, outcome *o)
 {
     adh_run *r = &o->run;
     ok(o->rc == ADH_SUCCESS && r->nrows > 1, "%s: runs to the end (%s, %zu steps, %zu iterations)", name,
@@ -104,7 +105,7 @@ static void check_run(const char *name, const adh_config *c, outcome *o)
     double amax = 0;
     for (size_t i = 0; i < r->nrows; i++)
         amax = fmax(amax, r->rows[i].a);
-    double noise = 4.0 * c->mat.E * amax * c->relax.eps * sqrt((double)c->nodes);
+    double noise = 4.0 * c->mat.E * amax * c->relax.eps * sqrt((double)c->grid.use.nodes);
     size_t pairs = 0, wrong = 0;
     double excess = 0, at = 0;
     for (size_t i = 0; i < r->nrows; i++) {
@@ -135,7 +136,7 @@ static double now(void)
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-static void regime(const char *name, adh_config c)
+static void regime(const char *name, adh_run_spec c)
 {
     outcome o;
     double t0 = now();
@@ -145,7 +146,7 @@ static void regime(const char *name, adh_config c)
     adh_run_free(&o.run);
 }
 
-static void refused(const char *name, adh_config c, const char *mentions)
+static void refused(const char *name, adh_run_spec c, const char *mentions)
 {
     outcome o;
     int rc = run_config(&c, &o);
@@ -154,24 +155,24 @@ static void refused(const char *name, adh_config c, const char *mentions)
     adh_run_free(&o.run);
 }
 
-static double sigma_to_E(const adh_config *c, double sigma)
+static double sigma_to_E(const adh_run_spec *c, double sigma)
 {
     return adh_material_modulus_at_sigma(&c->mat, sigma);
 }
 
 int main(void)
 {
-    adh_config c;
+    adh_run_spec c;
     const double sigmas[] = { 0.01, 0.1, 1, 10, 100 };
     for (size_t i = 0; i < 4; i++) {
         char name[64];
         c = base();
         c.mat.E = sigma_to_E(&c, sigmas[i]);
         if (sigmas[i] >= 10) { /* the edge zone is ~0.04 sqrt(R z0): refine */
-            c.nodes = 200;
+            c.grid.use.nodes = 200;
             c.proto.turns[0] = -1e-9;
         }
-        snprintf(name, sizeof name, "sigma = %g (N = %zu)", sigmas[i], c.nodes);
+        snprintf(name, sizeof name, "sigma = %g (N = %zu)", sigmas[i], c.grid.use.nodes);
         regime(name, c);
     }
     /* sigma = 100: the contact edge zone (0.26 nm) is far below the default
@@ -179,9 +180,9 @@ int main(void)
      * the approach to contact, which has no edge zone, still runs. */
     c = base(); c.mat.E = sigma_to_E(&c, 100);
     refused("sigma = 100 on the N = 100 grid", c, "too coarse for this contact");
-    c.nodes = 1000;
+    c.grid.use.nodes = 1000;
     refused("sigma = 100 on the N = 1000 grid", c, "edge zone is about");
-    c.nodes = 100; c.proto.nturns = 0; c.proto.unload = 0;
+    c.grid.use.nodes = 100; c.proto.nturns = 0; c.proto.unload = 0;
     regime("sigma = 100, approach to contact", c);
 
     c = base(); c.mat.R = 1.5e-2; c.mat.E = 1e11; c.mat.A = 5e-19;
@@ -222,21 +223,21 @@ int main(void)
     regime("eps = 10 pm", c);
     c = base(); c.relax.eps = 0.05e-12; c.proto.turns[0] = jump - 0.3e-9;
     regime("eps = 0.05 pm", c);
-    c = base(); c.kernel = ADH_KERNEL_RING;
+    c = base(); c.grid.use.kernel = ADH_KERNEL_RING;
     regime("ring kernel", c);
 
     /* The largest grid: precontact only, and an iteration cap that the jump
      * step must hit: the cap is reported, never hidden, and nothing breaks. */
-    c = base(); c.nodes = 4000; c.proto.nturns = 0; c.proto.unload = 0; c.relax.eps = 1e-12; c.relax.max_iter = 20;
+    c = base(); c.grid.use.nodes = 4000; c.proto.nturns = 0; c.proto.unload = 0; c.relax.eps = 1e-12; c.relax.max_iter = 20;
     outcome big;
     run_config(&c, &big);
     check_run("N = 4000, capped at 20 iterations", &c, &big);
     ok(big.run.unconverged > 0, "N = 4000: the jump step hit the cap and was counted (%zu)", big.run.unconverged);
     adh_run_free(&big.run);
 
-    c = base(); c.spacing = 40e-9;
+    c = base(); c.grid.use.spacing = 40e-9;
     refused("spacing 40 nm", c, "too coarse");
-    c = base(); c.nodes = 20; c.spacing = 10e-9;
+    c = base(); c.grid.use.nodes = 20; c.grid.use.spacing = 10e-9;
     refused("a 0.2 um grid", c, "too short");
     c = base(); c.proto.turns[0] = -300e-9;
     refused("turn at -300 nm (R/50 = 200 nm)", c, "too deep");

@@ -33,10 +33,12 @@ while IFS= read -r k; do
 done <"$TMP/keys"
 # Every scene key is documented under its section in adhere-scene.5, and
 # the page documents no key the parser refuses. The keys are read from the
-# parser's own table (keys[] in src/scene/scene.c: no option prints it).
-grep -oE '\{ "[a-z]+", "[A-Za-z0-9_]+", K_' src/scene/scene.c |
-    sed -E 's/\{ "([a-z]+)", "([^"]+)".*/\1 \2/' >"$TMP/skeys"
-check "scene.c's key table is read ($(wc -l <"$TMP/skeys") keys)" [ "$(wc -l <"$TMP/skeys")" -ge 25 ]
+# configuration's own table (keys[] in src/scene/configset.c, the one every
+# scene, flag and TUI edit is set through: no option prints it); a scene
+# may hold those marked S.
+grep -oE '\{ \{ "[a-z]+\.[A-Za-z0-9_]+", S[ |,]' src/scene/configset.c |
+    sed -E 's/\{ \{ "([a-z]+)\.([^"]+)".*/\1 \2/' >"$TMP/skeys"
+check "configset.c's key table is read ($(wc -l <"$TMP/skeys") scene keys)" [ "$(wc -l <"$TMP/skeys")" -ge 25 ]
 awk '/^\.Ss \[[a-z]+\]/ { sec = $2; gsub(/[][]/, "", sec); next }
      /^\.S[hs] / { sec = "" }
      sec != "" && /^\.It Cm [A-Za-z0-9_]+ No =/ { print sec, $3 }' man/adhere-scene.5 >"$TMP/mkeys"

@@ -229,7 +229,7 @@ static void make_synthetic(synthetic *s)
         pr->h = s->store[k][1];
         pr->p = s->store[k][2];
         for (size_t n = 0; n < NODES; n++) {
-            double r = adh_plot_radius(&s->ps, n);
+            double r = adh_plot_setup_radius(&s->ps, n);
             double h = pr->h0 + r * r / (2 * m->R);
             pr->h[n] = h < m->z0 ? m->z0 : h;
             pr->u[n] = pr->h[n] - h;
@@ -409,7 +409,7 @@ static void test_contact_speed(void)
     ok_rel(dadt[unload_mid], -20e-6, 1e-6, "unloading contact line recedes at 20 um/s");
     ok(isnan(dadt[out]), "no speed out of contact");
     ok_rel(dadt[turn], -20e-6, 1e-6, "one-sided at the start of a branch");
-    ok_rel(adh_plot_radius(&s.ps, 0), 5e-9, 1e-12, "first node at dr/2");
+    ok_rel(adh_plot_setup_radius(&s.ps, 0), 5e-9, 1e-12, "first node at dr/2");
     /* smoothing a steady spreading changes nothing; on a stick-slip staircase
      * it recovers the mean speed the step-by-step derivative hides */
     double *sm = malloc(n * sizeof *sm);
@@ -485,7 +485,7 @@ static void test_plots(void)
     double h0, r;
     int b, pa;
     ok(sscanf(line, "%lg\t%d\t%d\t%lg", &h0, &b, &pa, &r) == 4 && h0 == s.run.profiles[0].h0 &&
-       r == adh_plot_radius(&s.ps, 0), "table numbers round-trip exactly");
+       r == adh_plot_setup_radius(&s.ps, 0), "table numbers round-trip exactly");
 
     /* a style of another size, given as a file */
     char style[300], dir2[300];
@@ -638,20 +638,20 @@ static void test_default_profiles(void)
     adh_config cfg;
     adh_config_default(&cfg);
     double pos[8];
-    size_t n = adh_plan_default_profiles(&cfg.mat, &cfg.proto, pos, 6);
-    double start = adh_protocol_auto_start(&cfg.mat, cfg.proto.step);
+    size_t n = adh_config_default_profiles(&cfg.spec.mat, &cfg.spec.proto, pos, 6);
+    double start = adh_protocol_auto_start(&cfg.spec.mat, cfg.spec.proto.step);
     ok(n == 6, "six default profile positions (got %zu)", n);
-    ok(n && pos[0] == cfg.proto.turns[0], "the first is the turn itself (%g)", n ? pos[0] : 0);
-    ok(n && fabs(pos[n - 1] - 0.5 * start) <= cfg.proto.step,
+    ok(n && pos[0] == cfg.spec.proto.turns[0], "the first is the turn itself (%g)", n ? pos[0] : 0);
+    ok(n && fabs(pos[n - 1] - 0.5 * start) <= cfg.spec.proto.step,
        "the last is half the start (%g vs %g)", n ? pos[n - 1] : 0, 0.5 * start);
     int on_grid = 1;
     for (size_t i = 1; i < n; i++) {
-        double k = round((start - pos[i]) / cfg.proto.step);
-        on_grid &= pos[i] == start - k * cfg.proto.step && pos[i] > pos[i - 1];
+        double k = round((start - pos[i]) / cfg.spec.proto.step);
+        on_grid &= pos[i] == start - k * cfg.spec.proto.step && pos[i] > pos[i - 1];
     }
     ok(on_grid, "each lies exactly on the drive grid start - k d, rising");
-    cfg.proto.nturns = 0;
-    n = adh_plan_default_profiles(&cfg.mat, &cfg.proto, pos, 4);
+    cfg.spec.proto.nturns = 0;
+    n = adh_config_default_profiles(&cfg.spec.mat, &cfg.spec.proto, pos, 4);
     ok(n == 4 && pos[0] > 0, "with no turn they start near the jump separation (%g)",
        n ? pos[0] : 0);
 }

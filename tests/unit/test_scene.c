@@ -23,10 +23,10 @@ static int load(const char *name, adh_config *c)
     return rc;
 }
 
-static double sigma_of(const adh_config *c)
+static double sigma_of(const adh_material *m)
 {
     adh_derived d;
-    adh_material_derive(&c->mat, &d);
+    adh_material_derive(m, &d);
     return d.sigma;
 }
 
@@ -64,21 +64,21 @@ static void default_scene_is_builtin_default(void)
     if (load("default", &c))
         return;
     adh_config_default(&d);
-    ok(same(c.mat.E, d.mat.E) && same(c.mat.A, d.mat.A) && same(c.mat.z0, d.mat.z0) && same(c.mat.R, d.mat.R),
-       "default.scene's material is the built-in default's (E = %g)", c.mat.E);
-    ok(c.nodes == d.nodes && isnan(c.spacing) && c.kernel == d.kernel, "default.scene's grid is the built-in default's");
-    ok(c.graded == d.graded && isnan(c.fine_band) && same(c.growth, d.growth) && isnan(c.grid_radius) &&
-       c.storage == d.storage && !c.storage_given, "default.scene's grid = uniform, fine_band, growth, radius are the "
-       "built-in default's and it gives no operator (growth %g)", c.growth);
-    ok(!c.kernel_given && !c.nodes_given, "default.scene leaves N and the kernel to the automatic grid, as the built-in "
+    ok(same(c.spec.mat.E, d.spec.mat.E) && same(c.spec.mat.A, d.spec.mat.A) && same(c.spec.mat.z0, d.spec.mat.z0) && same(c.spec.mat.R, d.spec.mat.R),
+       "default.scene's material is the built-in default's (E = %g)", c.spec.mat.E);
+    ok(c.spec.grid.use.nodes == d.spec.grid.use.nodes && isnan(c.spec.grid.use.spacing) && c.spec.grid.use.kernel == d.spec.grid.use.kernel, "default.scene's grid is the built-in default's");
+    ok(c.spec.grid.use.graded == d.spec.grid.use.graded && isnan(c.spec.grid.use.fine_band) && same(c.spec.grid.use.growth, d.spec.grid.use.growth) && isnan(c.spec.grid.use.radius) &&
+       c.spec.grid.use.storage == d.spec.grid.use.storage && !c.spec.grid.storage_given, "default.scene's grid = uniform, fine_band, growth, radius are the "
+       "built-in default's and it gives no operator (growth %g)", c.spec.grid.use.growth);
+    ok(!c.spec.grid.kernel_given && !c.spec.grid.nodes_given, "default.scene leaves N and the kernel to the automatic grid, as the built-in "
        "default does (so a soft material gets graded rings)");
-    ok(same(c.relax.eps, d.relax.eps) && c.relax.max_iter == d.relax.max_iter, "default.scene's solver is the built-in default's");
-    ok(isnan(c.proto.start) && same(c.proto.step, d.proto.step) && c.proto.nturns == 1 &&
-       same(c.proto.turns[0], d.proto.turns[0]) && c.proto.unload == 1 && c.proto.dwell == 0 && c.proto.nprofiles == 0,
-       "default.scene's protocol is the built-in default's (turn %g m)", c.proto.turns[0]);
-    ok(c.plots == d.plots && c.plot == 1 && same(c.drive_speed, d.drive_speed) && c.sweep.kind == ADH_SWEEP_NONE,
+    ok(same(c.spec.relax.eps, d.spec.relax.eps) && c.spec.relax.max_iter == d.spec.relax.max_iter, "default.scene's solver is the built-in default's");
+    ok(isnan(c.spec.proto.start) && same(c.spec.proto.step, d.spec.proto.step) && c.spec.proto.nturns == 1 &&
+       same(c.spec.proto.turns[0], d.spec.proto.turns[0]) && c.spec.proto.unload == 1 && c.spec.proto.dwell == 0 && c.spec.proto.nprofiles == 0,
+       "default.scene's protocol is the built-in default's (turn %g m)", c.spec.proto.turns[0]);
+    ok(c.output.plots == d.output.plots && c.output.plot == 1 && same(c.output.drive_speed, d.output.drive_speed) && c.sweep.kind == ADH_SWEEP_NONE,
        "default.scene's outputs are the built-in default's");
-    ok_rel(sigma_of(&c), 7.50, 2e-3, "default sigma (Figure 4)");
+    ok_rel(sigma_of(&c.spec.mat), 7.50, 2e-3, "default sigma (Figure 4)");
 }
 
 static void figure_parameters(void)
@@ -86,18 +86,18 @@ static void figure_parameters(void)
     adh_config c;
     adh_plan p;
     if (!load("fig1", &c)) {
-        ok_rel(sigma_of(&c), 2.25, 3e-3, "fig1 sigma");
+        ok_rel(sigma_of(&c.spec.mat), 2.25, 3e-3, "fig1 sigma");
         adh_plan_make(&c, &p);
         ok(p.loading_branches == 1 && p.unloading_branches == 0 && p.snapshots == 0 && !p.stop_at_contact,
            "fig1: approach into contact, no unloading (unload %zu)", p.unloading_branches);
-        ok(c.plots == (ADH_PLOT_FORCE | ADH_PLOT_PRECONTACT) && has_stored(&p, "precontact.png"),
+        ok(c.output.plots == (ADH_PLOT_FORCE | ADH_PLOT_PRECONTACT) && has_stored(&p, "precontact.png"),
            "fig1 draws the force and its eq 23 inset");
     }
     if (!load("fig2", &c)) {
         adh_plan_make(&c, &p);
-        ok(same(c.mat.E, 1e9) && p.stop_at_contact && p.unloading_branches == 0 && has_skip(&p, "loading past contact"),
+        ok(same(c.spec.mat.E, 1e9) && p.stop_at_contact && p.unloading_branches == 0 && has_skip(&p, "loading past contact"),
            "fig2: approach only, stops at the jump into contact");
-        ok(c.plots == ADH_PLOT_BULGE && !p.contact_speeds && p.profiles_stored == 0, "fig2 keeps only the bulge figure");
+        ok(c.output.plots == ADH_PLOT_BULGE && !p.contact_speeds && p.profiles_stored == 0, "fig2 keeps only the bulge figure");
     }
     if (!load("fig3", &c)) {
         adh_plan_make(&c, &p);
@@ -107,53 +107,53 @@ static void figure_parameters(void)
         ok(p.kernels == 1 && p.shared_kernel, "fig3: one kernel shared by every run");
         ok(p.jobs >= 1 && c.sweep.plot == ADH_SWEEP_PLOT_JUMP && has_stored(&p, "jump.png") && has_stored(&p, "sweep.tsv"),
            "fig3 writes sweep.tsv and jump.png (%d jobs)", p.jobs);
-        adh_config r;
+        adh_run_spec r;
         size_t wrong = c.sweep.n;   /* the first run whose sigma is off, if any */
         for (size_t i = 0; i < c.sweep.n && wrong == c.sweep.n; i++) {
             adh_config_sweep_run(&c, i, &r);
-            if (fabs(sigma_of(&r) - c.sweep.values[i]) > 1e-9 * c.sweep.values[i])
+            if (fabs(sigma_of(&r.mat) - c.sweep.values[i]) > 1e-9 * c.sweep.values[i])
                 wrong = i;
         }
         ok(c.sweep.n > 0 && wrong == c.sweep.n, "every fig3 run has the sigma it names (E from eq 17)%s",
            wrong < c.sweep.n ? ": one is off" : "");
         if (wrong < c.sweep.n)
-            printf("#   run %zu: sigma %g, named %g\n", wrong, sigma_of(&r), c.sweep.values[wrong]);
-        ok(same(c.mat.z0, 0.5e-9), "fig3: z0 = 0.5 nm");
+            printf("#   run %zu: sigma %g, named %g\n", wrong, sigma_of(&r.mat), c.sweep.values[wrong]);
+        ok(same(c.spec.mat.z0, 0.5e-9), "fig3: z0 = 0.5 nm");
     }
     if (!load("fig4", &c)) {
         static const double want[] = { -5, -3.5, -2, -0.5, 1, 2.5, 4, 5.5, 7, 8.5 };
-        int listed = c.proto.nprofiles == 10;
+        int listed = c.spec.proto.nprofiles == 10;
         for (size_t i = 0; listed && i < 10; i++)
-            listed = same(c.proto.profiles[i], want[i] * 1e-9);
+            listed = same(c.spec.proto.profiles[i], want[i] * 1e-9);
         ok(listed, "fig4 stores profiles at the caption's ten positions");
         adh_plan_make(&c, &p);
         ok(p.profiles_reached == 10 && p.profiles_stored >= 10, "fig4: every profile position is on a branch (%zu stored)", p.profiles_stored);
-        ok_rel(sigma_of(&c), 7.50, 2e-3, "fig4 sigma");
-        ok(c.proto.nturns == 1 && same(c.proto.turns[0], -5e-9) && p.unloading_branches == 1, "fig4 turns at -5 nm and unloads");
+        ok_rel(sigma_of(&c.spec.mat), 7.50, 2e-3, "fig4 sigma");
+        ok(c.spec.proto.nturns == 1 && same(c.spec.proto.turns[0], -5e-9) && p.unloading_branches == 1, "fig4 turns at -5 nm and unloads");
     }
     if (!load("fig5", &c)) {
-        ok_rel(sigma_of(&c), 4.36, 3e-3, "fig5 sigma");
-        ok(same(c.mat.R, 1.5e-2) && same(c.mat.E, 1e11) && same(c.mat.A, 5e-19) && c.proto.nturns == 8, "fig5: R = 1.5 cm, 8 turns");
+        ok_rel(sigma_of(&c.spec.mat), 4.36, 3e-3, "fig5 sigma");
+        ok(same(c.spec.mat.R, 1.5e-2) && same(c.spec.mat.E, 1e11) && same(c.spec.mat.A, 5e-19) && c.spec.proto.nturns == 8, "fig5: R = 1.5 cm, 8 turns");
         adh_plan_make(&c, &p);
         ok(p.loading_branches == 1 && p.snapshots == 8 && p.unloading_branches == 8,
            "fig5 plan: one loading branch, 8 snapshots, 8 unloading branches");
         ok(same(p.runs[0].end, -10e-9), "fig5 loads only to the deepest turn");
     }
     if (!load("fig6", &c)) {
-        ok_rel(sigma_of(&c), 17.43, 3e-3, "fig6 sigma");
+        ok_rel(sigma_of(&c.spec.mat), 17.43, 3e-3, "fig6 sigma");
         adh_plan_make(&c, &p);
-        ok(c.proto.nturns == 9 && p.loading_branches == 1 && p.unloading_branches == 9, "fig6: 9 turns on one loading branch");
+        ok(c.spec.proto.nturns == 9 && p.loading_branches == 1 && p.unloading_branches == 9, "fig6: 9 turns on one loading branch");
     }
     if (!load("fig7", &c)) {
         ok(c.sweep.kind == ADH_SWEEP_EPS && c.sweep.n == 3 && same(c.sweep.values[0], 1e-12) &&
            same(c.sweep.values[1], 0.5e-12) && same(c.sweep.values[2], 1e-13), "fig7 sweeps eps = 1, 0.5, 0.1 pm");
         adh_plan_make(&c, &p);
         ok(p.nruns == 3 && p.unloading_branches == 1 && c.sweep.plot == ADH_SWEEP_PLOT_FORCE, "fig7: 3 loops, combined force figure");
-        ok_rel(sigma_of(&c), 7.50, 2e-3, "fig7 sigma (Figure 4's material)");
+        ok_rel(sigma_of(&c.spec.mat), 7.50, 2e-3, "fig7 sigma (Figure 4's material)");
     }
     if (!load("fig8", &c)) {
         adh_plan_make(&c, &p);
-        ok(same(c.drive_speed, 1e-6) && p.contact_speeds && c.plots == ADH_PLOT_CONTACT, "fig8 tracks the contact line at 1 um/s");
+        ok(same(c.output.drive_speed, 1e-6) && p.contact_speeds && c.output.plots == ADH_PLOT_CONTACT, "fig8 tracks the contact line at 1 um/s");
     }
 }
 
@@ -168,7 +168,7 @@ static void planner(void)
     adh_plan_make(&c, &p);
     ok(!p.elastic && p.kernels == 0 && p.unloading_branches == 0 && has_skip(&p, "elastic solve"),
        "a rigid scene builds no kernel and does no elastic solve");
-    ok(p.runs[0].end == 0.7 * c.mat.z0, "rigid spheres with no turn stop at 0.7 z0, above h0 = 0 (got %g m)",
+    ok(p.runs[0].end == 0.7 * c.spec.mat.z0, "rigid spheres with no turn stop at 0.7 z0, above h0 = 0 (got %g m)",
        p.runs[0].end);
 
     adh_config_default(&c);
@@ -184,7 +184,7 @@ static void planner(void)
 
     adh_config_default(&c);
     adh_scene_parse_string("[protocol]\nunload = no\nturns = -1nm, -2nm\n", "u", &c, why, sizeof why);
-    ok(c.proto.unload == 0 && c.proto.nturns == 2, "unload = no holds whatever the order of the keys");
+    ok(c.spec.proto.unload == 0 && c.spec.proto.nturns == 2, "unload = no holds whatever the order of the keys");
 
     adh_config_default(&c);
     adh_scene_parse_string("[sweep]\nE = 1GPa, 2GPa\njobs = 1\n", "e", &c, why, sizeof why);
@@ -197,7 +197,7 @@ static void planner(void)
 
     adh_config_default(&c);
     adh_scene_parse_string("[output]\nplots = none\n", "n", &c, why, sizeof why);
-    ok(c.plots == 0 && c.plot == 1, "plots = none draws no figure of the run");
+    ok(c.output.plots == 0 && c.output.plot == 1, "plots = none draws no figure of the run");
 }
 
 static void bad_scenes(void)
@@ -250,20 +250,20 @@ static void grid_keys(void)
     adh_config c;
     /* parsed before ok(): its arguments are evaluated in no set order */
     int rc = parse("[grid]\nkernel = ring\ngrid = graded\nfine_band = 700nm\ngrowth = 1.08\nradius = 2um\noperator = h2\n", &c);
-    ok(rc == 0 && c.graded && c.kernel == ADH_KERNEL_RING && same(c.fine_band, 7e-7) && same(c.growth, 1.08) &&
-       same(c.grid_radius, 2e-6) && c.storage == ADH_STORAGE_H2 && c.storage_given,
+    ok(rc == 0 && c.spec.grid.use.graded && c.spec.grid.use.kernel == ADH_KERNEL_RING && same(c.spec.grid.use.fine_band, 7e-7) && same(c.spec.grid.use.growth, 1.08) &&
+       same(c.spec.grid.use.radius, 2e-6) && c.spec.grid.use.storage == ADH_STORAGE_H2 && c.spec.grid.storage_given,
        "grid = graded, fine_band, growth, radius and operator = h2 are read (band %g m, ratio %g, Rmax %g m)",
-       c.fine_band, c.growth, c.grid_radius);
+       c.spec.grid.use.fine_band, c.spec.grid.use.growth, c.spec.grid.use.radius);
     adh_config d;
     adh_config_default(&d);
     ok(parse("[grid]\ngrid = uniform\nfine_band = auto\nradius = AUTO\ngrowth = 1\noperator = dense\n", &c) == 0 &&
-       !c.graded && isnan(c.fine_band) && isnan(c.grid_radius) && c.growth == 1.0 && c.storage == ADH_STORAGE_DENSE &&
-       c.storage_given, "grid = uniform, auto band and radius (the defaults), growth 1, and an operator given "
+       !c.spec.grid.use.graded && isnan(c.spec.grid.use.fine_band) && isnan(c.spec.grid.use.radius) && c.spec.grid.use.growth == 1.0 && c.spec.grid.use.storage == ADH_STORAGE_DENSE &&
+       c.spec.grid.storage_given, "grid = uniform, auto band and radius (the defaults), growth 1, and an operator given "
        "as dense is kept by the automatic grid (storage_given)");
-    ok(parse("[grid]\noperator = hmat\ngrowth = 1.1\n", &c) == 0 && c.storage == ADH_STORAGE_HMAT && same(c.growth, 1.1),
+    ok(parse("[grid]\noperator = hmat\ngrowth = 1.1\n", &c) == 0 && c.spec.grid.use.storage == ADH_STORAGE_HMAT && same(c.spec.grid.use.growth, 1.1),
        "operator = hmat and growth = 1.1, the widest ratio, are read");
-    ok(parse("[grid]\nnodes = 500\n", &c) == 0 && !c.storage_given && c.graded == d.graded && isnan(c.fine_band) &&
-       same(c.growth, d.growth) && isnan(c.grid_radius), "a scene without the keys keeps their defaults");
+    ok(parse("[grid]\nnodes = 500\n", &c) == 0 && !c.spec.grid.storage_given && c.spec.grid.use.graded == d.spec.grid.use.graded && isnan(c.spec.grid.use.fine_band) &&
+       same(c.spec.grid.use.growth, d.spec.grid.use.growth) && isnan(c.spec.grid.use.radius), "a scene without the keys keeps their defaults");
 
     bad("[grid]\ngrid = Graded\n", 2, "grid: 'Graded' is not a grid: use uniform or graded");
     bad("[grid]\nnodes = 500\n\ngrid = rings\n", 4, "'rings' is not a grid");
@@ -283,11 +283,11 @@ static void grid_keys(void)
         "grid: 'graded' is not allowed with kernel = paper: the paper's kernel assumes equal cells; use kernel = ring");
     bad("[grid]\ngrid = graded\nkernel = paper\n", 3, "kernel: 'paper' is not allowed with grid = graded");
     ok(parse("[grid]\nkernel = paper\ngrid = uniform\n", &c) == 0 && parse("[grid]\ngrid = graded\n", &c) == 0 &&
-       c.graded && !c.kernel_given, "kernel = paper with grid = uniform parses, and grid = graded alone is left to the "
+       c.spec.grid.use.graded && !c.spec.grid.kernel_given, "kernel = paper with grid = uniform parses, and grid = graded alone is left to the "
        "run's check (a flag or the automatic grid may give the ring kernel)");
     char why[512] = "";
-    ok(adh_config_grid_check(&c, why, sizeof why) != 0 && strstr(why, "grid = graded") && strstr(why, "kernel = ring"),
-       "which refuses it with the paper's kernel, naming the scene keys too: %s", why);
+    ok(adh_config_grid_check(&c.spec, why, sizeof why) != 0 && strstr(why, "grid = graded") && strstr(why, "kernel = ring"),
+       "which refuses it with the paper's kernel, naming the keys: %s", why);
 }
 
 /* Mutated shipped scenes: each either parses or is rejected with

@@ -1,11 +1,11 @@
-#include "cli/ready.h"
+#include "util/ready.h"
 
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-void cli_ready_phase(const char *phase)
+void adh_ready_phase(const char *phase)
 {
     const char *path = getenv("ADHERE_READY_FILE");
     if (!path || !*path)
@@ -25,11 +25,11 @@ void cli_ready_phase(const char *phase)
     close(fd);
 }
 
-void cli_ready_mark(void)
+void adh_ready_mark(void)
 {
     static volatile int done;
     if (done)
         return;
     done = 1;
-    cli_ready_phase("step");
+    adh_ready_phase("step");
 }

@@ -3,13 +3,13 @@
  * "step" once the first drive step is solved. Signals are caught by then,
  * so a test waits for a line instead of sleeping before it sends one.
  * Without the variable nothing is written. */
-#ifndef ADH_CLI_READY_H
-#define ADH_CLI_READY_H
+#ifndef ADH_UTIL_READY_H
+#define ADH_UTIL_READY_H
 
 /* Appends "PHASE\n" (kernel, relax, static, rigid, reference, dwell, plot,
  * cost, sweep) in one write, so a reader sees the line whole or not at all. */
-void cli_ready_phase(const char *phase);
+void adh_ready_phase(const char *phase);
 /* Appends "step" once per process: the first solved step. */
-void cli_ready_mark(void);
+void adh_ready_mark(void);
 
 #endif

@@ -1,0 +1,760 @@
+/* Setting the configuration by key: one table of every key, each with the
+ * one function that reads its text. Scene files, the flags, the TUI's
+ * fields and :set all come here, so a value means the same and is refused
+ * with the same sentence whichever way it is given. */
+#include "scene/config.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+#include "adhere/grid.h"
+#include "adhere/status.h"
+#include "adhere/units.h"
+
+typedef struct key_def key_def;
+typedef int (*key_setter)(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen);
+typedef void (*key_getter)(const adh_config *c, const key_def *k, char *buf, size_t len);
+
+struct key_def {
+    adh_config_key pub;
+    key_setter set;
+    size_t off;                    /* the field in adh_config, for the setters that share a shape */
+    key_getter get;                /* its value as text the setter reads back to the same value */
+};
+
+#define F(field) offsetof(adh_config, field)
+
+static double *dbl(adh_config *c, const key_def *k)
+{
+    return (double *)(void *)((char *)c + k->off);
+}
+
+static int *flag(adh_config *c, const key_def *k)
+{
+    return (int *)(void *)((char *)c + k->off);
+}
+
+static const void *field(const adh_config *c, const key_def *k)
+{
+    return (const char *)c + k->off;
+}
+
+static const char *name_of(const key_def *k)
+{
+    const char *dot = strchr(k->pub.key, '.');
+    return dot ? dot + 1 : k->pub.key;
+}
+
+/* ---- the shapes ---------------------------------------------------------- */
+
+static int set_quantity(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    double v;
+    if (adh_parse_quantity(text, k->pub.q, &v, why, whylen) != 0)
+        return -1;
+    *dbl(c, k) = v;
+    return 0;
+}
+
+/* A quantity, or auto: the automatic value (NAN). */
+static int set_quantity_auto(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    if (strcasecmp(text, "auto") == 0) {
+        *dbl(c, k) = NAN;
+        return 0;
+    }
+    return set_quantity(c, k, text, why, whylen);
+}
+
+/* A length above 0, or auto: a graded grid's band and radius (how they fit
+ * the spacing and each other is adh_config_grid_check's). */
+static int set_radius(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    double v;
+    if (strcasecmp(text, "auto") == 0) {
+        *dbl(c, k) = NAN;
+        return 0;
+    }
+    int number = adh_parse_quantity(text, ADH_Q_LENGTH, &v, why, whylen) == 0;
+    if (!number || !(v > 0)) {
+        if (number)
+            snprintf(why, whylen, "'%s' is not allowed: use a length above 0", text);
+        size_t n = strlen(why);
+        snprintf(why + n, whylen - n, ", or auto");
+        return -1;
+    }
+    *dbl(c, k) = v;
+    return 0;
+}
+
+static int parse_bool(const char *text, int *out)
+{
+    if (!strcasecmp(text, "yes") || !strcmp(text, "1") || !strcasecmp(text, "true"))
+        *out = 1;
+    else if (!strcasecmp(text, "no") || !strcmp(text, "0") || !strcasecmp(text, "false"))
+        *out = 0;
+    else
+        return -1;
+    return 0;
+}
+
+static int set_bool(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    if (parse_bool(text, flag(c, k)) != 0) {
+        snprintf(why, whylen, "'%s' is not yes or no", text);
+        return -1;
+    }
+    return 0;
+}
+
+static int set_path(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    if (!*text || strlen(text) >= PATH_MAX) {
+        snprintf(why, whylen, "a path of 1 to %d characters is needed", PATH_MAX - 1);
+        return -1;
+    }
+    snprintf((char *)c + k->off, PATH_MAX, "%s", text);
+    return 0;
+}
+
+/* A comma-separated list of quantities q into out[] ("none": empty, when
+ * allow_none). */
+static int parse_list(const char *text, adh_quantity q, int allow_none, double *out, size_t cap, size_t *count,
+                      char *why, size_t whylen)
+{
+    char buf[1024];
+    size_t n = 0;
+    if (allow_none && strcasecmp(text, "none") == 0) {
+        *count = 0;
+        return 0;
+    }
+    if (strlen(text) >= sizeof buf) {
+        snprintf(why, whylen, "list longer than %zu characters", sizeof buf - 1);
+        return -1;
+    }
+    /* strtok passes over an empty element ("-1nm,,-2nm"): refuse it */
+    for (const char *seg = text;;) {
+        const char *comma = strchr(seg, ',');
+        size_t len = comma ? (size_t)(comma - seg) : strlen(seg);
+        if (strspn(seg, " \t") >= len) {
+            snprintf(why, whylen, "'%.200s' has an empty element: separate values by single commas", text);
+            return -1;
+        }
+        if (!comma)
+            break;
+        seg = comma + 1;
+    }
+    double vals[ADH_MAX_TURNS > ADH_MAX_SWEEP ? ADH_MAX_TURNS : ADH_MAX_SWEEP];
+    snprintf(buf, sizeof buf, "%s", text);
+    char *save = NULL;
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        if (n == cap || n == sizeof vals / sizeof vals[0]) {
+            snprintf(why, whylen, "more than %zu values", cap);
+            return -1;
+        }
+        if (adh_parse_quantity(t, q, &vals[n++], why, whylen) != 0)
+            return -1;
+    }
+    memcpy(out, vals, n * sizeof *vals);
+    *count = n;
+    return 0;
+}
+
+/* Appends text to buf (holding o characters of len), whole or cut at the
+ * end; the new length. */
+static size_t append(char *buf, size_t len, size_t o, const char *text)
+{
+    size_t n = strlen(text);
+    if (o + n >= len)
+        n = o + 1 < len ? len - 1 - o : 0;
+    memcpy(buf + o, text, n);
+    buf[o + n] = '\0';
+    return o + n;
+}
+
+/* A word of a short list, each naming a value. */
+typedef struct word {
+    const char *name;
+    int value;
+} word;
+
+static const word modes[] = { { "relax", ADH_MODE_RELAX }, { "static", ADH_MODE_STATIC }, { "rigid", ADH_MODE_RIGID }, { NULL, 0 } };
+static const word grids[] = { { "uniform", 0 }, { "graded", 1 }, { NULL, 0 } };
+static const word sweep_plots[] = { { "jump", ADH_SWEEP_PLOT_JUMP }, { "force", ADH_SWEEP_PLOT_FORCE },
+                                    { "none", ADH_SWEEP_PLOT_NONE }, { NULL, 0 } };
+
+/* The value text names in list, or -1 with "'text' is not a WHAT: use A, B
+ * or C". */
+static int parse_word(const word *list, const char *what, const char *text, int *value, char *why, size_t whylen)
+{
+    size_t n = 0;
+    for (; list[n].name; n++)
+        if (strcmp(text, list[n].name) == 0) {
+            *value = list[n].value;
+            return 0;
+        }
+    snprintf(why, whylen, "'%.100s' is not a %s: use", text, what);
+    size_t o = strlen(why);
+    for (size_t i = 0; i < n; i++) {
+        o = append(why, whylen, o, i == 0 ? " " : i + 1 == n ? " or " : ", ");
+        o = append(why, whylen, o, list[i].name);
+    }
+    return -1;
+}
+
+static const char *word_name(const word *list, int value)
+{
+    for (; list->name; list++)
+        if (list->value == value)
+            return list->name;
+    return "";
+}
+
+/* A whole number; its limits are the run's check's (adh_drive_check). */
+static int parse_count(const char *text, long lo, long hi, long *n, char *why, size_t whylen)
+{
+    return adh_parse_count(text, lo, hi, n, why, whylen) == 0 ? 0 : -1;
+}
+
+/* ---- each key's own ------------------------------------------------------ */
+
+static int set_title(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    /* shown on terminals and in figures: one line of printable text */
+    for (const unsigned char *t = (const unsigned char *)text; *t; t++)
+        if ((*t < 0x20 && *t != '\t') || *t == 0x7f) {
+            snprintf(why, whylen, "the control character 0x%02x is not allowed: a title is one line of printable text", *t);
+            return -1;
+        }
+    snprintf(c->output.title, sizeof c->output.title, "%s", text);
+    return 0;
+}
+
+static int set_mode(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    int v;
+    if (parse_word(modes, "mode", text, &v, why, whylen) != 0)
+        return -1;
+    c->spec.mode = (adh_mode)v;
+    return 0;
+}
+
+static int set_nodes(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    long n;
+    adh_grid_settings *g = &c->spec.grid;
+    if (strcasecmp(text, "auto") == 0) {   /* the grid follows the physics (adh_config_grid) */
+        g->asked.nodes = 1000;
+        g->nodes_given = 0;
+        return 0;
+    }
+    if (parse_count(text, 0, LONG_MAX, &n, why, whylen) != 0 || adh_grid_nodes_check(n, why, whylen) != ADH_SUCCESS)
+        return -1;
+    g->asked.nodes = (size_t)n;
+    g->nodes_given = 1;
+    return 0;
+}
+
+static int set_max_iter(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    long n;
+    if (parse_count(text, 0, LONG_MAX, &n, why, whylen) != 0 || adh_relax_max_iter_check(n, why, whylen) != ADH_SUCCESS)
+        return -1;
+    c->spec.relax.max_iter = (size_t)n;
+    return 0;
+}
+
+static int set_dwell(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    long n;
+    if (parse_count(text, 0, LONG_MAX, &n, why, whylen) != 0 || adh_protocol_dwell_check(n, why, whylen) != ADH_SUCCESS)
+        return -1;
+    c->spec.proto.dwell = (size_t)n;
+    return 0;
+}
+
+static int set_jobs(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    long n = 0;
+    if (strcasecmp(text, "auto") != 0 && parse_count(text, 1, 64, &n, why, whylen) != 0)   /* auto: one per core */
+        return -1;
+    c->sweep.jobs = (int)n;
+    return 0;
+}
+
+static int set_kernel(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    if (adh_kernel_parse(text, &c->spec.grid.asked.kernel) != 0) {
+        snprintf(why, whylen, "'%s' is not a kernel: use paper or ring", text);
+        return -1;
+    }
+    c->spec.grid.kernel_given = 1;
+    return 0;
+}
+
+static int set_grid_kind(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    return parse_word(grids, "grid", text, &c->spec.grid.asked.graded, why, whylen);
+}
+
+static int set_growth(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    double g = NAN;
+    /* the ratio's limits are the rings spec's: asked of a spec that is
+     * valid but for its ratio */
+    int number = adh_parse_quantity(text, ADH_Q_NONE, &g, NULL, 0) == 0;
+    adh_rings_spec s = { .dr = 1, .fine = 1, .ratio = g, .rmax = 1 };
+    if (!number || adh_rings_spec_validate(&s, NULL, 0) != ADH_SUCCESS) {
+        snprintf(why, whylen, "'%s' is not allowed: use a ratio from 1 to %g", text, ADH_RINGS_MAX_RATIO);
+        return -1;
+    }
+    c->spec.grid.asked.growth = g;
+    return 0;
+}
+
+static int set_operator(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    if (adh_kernel_storage_parse(text, &c->spec.grid.asked.storage) != 0) {
+        snprintf(why, whylen, "'%s' is not an operator: use dense, hmat or h2", text);
+        return -1;
+    }
+    c->spec.grid.storage_given = 1;
+    return 0;
+}
+
+static int set_mixing(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    if (adh_mix_rule_parse(text, &c->spec.relax.rule) != 0) {
+        snprintf(why, whylen, "'%s' is not a mixing rule: use paper or momentum", text);
+        return -1;
+    }
+    return 0;
+}
+
+static int set_momentum(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    double b;
+    if (adh_parse_quantity(text, ADH_Q_NONE, &b, NULL, 0) != 0 || !(b >= 0 && b < 1)) {
+        snprintf(why, whylen, "'%s' is not allowed: a number from 0 to below 1", text);
+        return -1;
+    }
+    c->spec.relax.momentum = b;
+    return 0;
+}
+
+/* Turns also say whether to unload: from every turn, when there is one. */
+static int set_turns(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    adh_protocol_settings *p = &c->spec.proto;
+    if (parse_list(text, ADH_Q_LENGTH, 1, p->turns, ADH_MAX_TURNS, &p->nturns, why, whylen) != 0)
+        return -1;
+    p->unload = p->nturns > 0;
+    return 0;
+}
+
+static int set_profiles(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    adh_protocol_settings *p = &c->spec.proto;
+    return parse_list(text, ADH_Q_LENGTH, 1, p->profiles, ADH_MAX_PROFILES, &p->nprofiles, why, whylen);
+}
+
+static int set_plots(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    static const struct { const char *name; unsigned bit; } plots[] = {
+        { "force", ADH_PLOT_FORCE }, { "profile", ADH_PLOT_PROFILE }, { "contact", ADH_PLOT_CONTACT },
+        { "precontact", ADH_PLOT_PRECONTACT }, { "bulge", ADH_PLOT_BULGE }, { "none", 0 },
+    };
+    unsigned mask = 0;
+    int none = 0;
+    char buf[256], *save = NULL;
+    if (strlen(text) >= sizeof buf || strstr(text, ",,") || text[0] == ',' || (*text && text[strlen(text) - 1] == ',')) {
+        snprintf(why, whylen, "'%.200s' has an empty element: separate values by single commas", text);
+        return -1;
+    }
+    snprintf(buf, sizeof buf, "%s", text);
+    for (char *t = strtok_r(buf, ", ", &save); t; t = strtok_r(NULL, ", ", &save)) {
+        size_t i = 0;
+        while (i < sizeof plots / sizeof plots[0] && strcmp(t, plots[i].name) != 0)
+            i++;
+        if (i == sizeof plots / sizeof plots[0]) {
+            snprintf(why, whylen, "'%s' is not a plot: use force, profile, contact, precontact, bulge or none", t);
+            return -1;
+        }
+        /* none: no figure of a single run; a sweep's combined figure
+         * follows output.plot alone */
+        none |= plots[i].bit == 0;
+        mask |= plots[i].bit;
+    }
+    if (!none && !mask) {
+        snprintf(why, whylen, "name at least one of force, profile, contact, precontact, bulge, or none");
+        return -1;
+    }
+    if (none && mask) {
+        snprintf(why, whylen, "'none' cannot be combined with other plots");
+        return -1;
+    }
+    c->output.plots = mask;
+    return 0;
+}
+
+/* [sweep] E, sigma, eps: one parameter, a list of values above 0. */
+static int set_sweep(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    adh_sweep *sw = &c->sweep;
+    const char *name = name_of(k);
+    adh_sweep_kind kind = !strcmp(name, "E") ? ADH_SWEEP_E : !strcmp(name, "sigma") ? ADH_SWEEP_SIGMA : ADH_SWEEP_EPS;
+    if (strcasecmp(text, "none") == 0) {   /* not swept: the sweep of this parameter goes */
+        if (sw->kind == kind) {
+            sw->kind = ADH_SWEEP_NONE;
+            sw->n = 0;
+        }
+        return 0;
+    }
+    if (sw->kind != ADH_SWEEP_NONE && sw->kind != kind) {
+        snprintf(why, whylen, "'%s' and '%s' both given: a sweep varies one parameter", adh_sweep_name(sw->kind), name);
+        return -1;
+    }
+    double v[ADH_MAX_SWEEP];
+    size_t n;
+    if (parse_list(text, k->pub.q, 0, v, ADH_MAX_SWEEP, &n, why, whylen) != 0)
+        return -1;
+    for (size_t i = 0; i < n; i++)
+        if (!(v[i] > 0)) {
+            snprintf(why, whylen, "the swept value %g is not allowed: every value must be above 0", v[i]);
+            return -1;
+        }
+    memcpy(sw->values, v, n * sizeof *v);
+    sw->n = n;
+    sw->kind = kind;
+    return 0;
+}
+
+static int set_sweep_plot(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    int v;
+    if (parse_word(sweep_plots, "sweep plot", text, &v, why, whylen) != 0)
+        return -1;
+    c->sweep.plot = (adh_sweep_plot)v;
+    return 0;
+}
+
+static int set_size(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    int cols, rows;
+    char extra;
+    if (sscanf(text, "%dx%d%c", &cols, &rows, &extra) != 2 || cols < 40 || cols > 1000 || rows < 12 || rows > 1000) {
+        snprintf(why, whylen, "'%s' is not allowed: use COLSxROWS with 40-1000 columns and 12-1000 rows", text);
+        return -1;
+    }
+    c->tui.cols = cols;
+    c->tui.rows = rows;
+    return 0;
+}
+
+
+/* ---- the values as text --------------------------------------------------- */
+
+
+/* Exact: %.17g reads back to the same double. */
+static void get_number(double v, char *buf, size_t len)
+{
+    snprintf(buf, len, "%.17g", v);
+}
+
+static void get_quantity(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    double v = *(const double *)field(c, k);
+    if (isnan(v))
+        snprintf(buf, len, "auto");
+    else
+        get_number(v, buf, len);
+}
+
+static void get_bool(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", *(const int *)field(c, k) ? "yes" : "no");
+}
+
+static void get_path(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", (const char *)field(c, k));
+}
+
+static void get_list(const double *v, size_t n, char *buf, size_t len)
+{
+    size_t o = append(buf, len, 0, n ? "" : "none");
+    for (size_t i = 0; i < n; i++) {
+        char one[40];
+        snprintf(one, sizeof one, "%s%.17g", i ? "," : "", v[i]);
+        o = append(buf, len, o, one);
+    }
+}
+
+static void get_title(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", c->output.title);
+}
+
+static void get_mode(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", word_name(modes, (int)c->spec.mode));
+}
+
+static void get_nodes(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    if (c->spec.grid.nodes_given)
+        snprintf(buf, len, "%zu", c->spec.grid.asked.nodes);
+    else
+        snprintf(buf, len, "auto");
+}
+
+static void get_max_iter(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%zu", c->spec.relax.max_iter);
+}
+
+static void get_dwell(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%zu", c->spec.proto.dwell);
+}
+
+static void get_jobs(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    if (c->sweep.jobs)
+        snprintf(buf, len, "%d", c->sweep.jobs);
+    else
+        snprintf(buf, len, "auto");
+}
+
+static void get_kernel(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", adh_kernel_name(c->spec.grid.asked.kernel));
+}
+
+static void get_grid_kind(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", word_name(grids, c->spec.grid.asked.graded));
+}
+
+static void get_growth(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    get_number(c->spec.grid.asked.growth, buf, len);
+}
+
+static void get_operator(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", adh_kernel_storage_name(c->spec.grid.asked.storage));
+}
+
+static void get_mixing(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", c->spec.relax.rule == ADH_MIX_PAPER ? "paper" : "momentum");
+}
+
+static void get_momentum(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    get_number(c->spec.relax.momentum, buf, len);
+}
+
+static void get_turns(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    get_list(c->spec.proto.turns, c->spec.proto.nturns, buf, len);
+}
+
+static void get_profiles(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    get_list(c->spec.proto.profiles, c->spec.proto.nprofiles, buf, len);
+}
+
+static void get_plots(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    static const char *const names[] = { "force", "profile", "contact", "precontact", "bulge" };
+    static const unsigned bits[] = { ADH_PLOT_FORCE, ADH_PLOT_PROFILE, ADH_PLOT_CONTACT, ADH_PLOT_PRECONTACT, ADH_PLOT_BULGE };
+    size_t o = append(buf, len, 0, c->output.plots ? "" : "none");
+    for (size_t i = 0; i < sizeof bits / sizeof bits[0]; i++)
+        if (c->output.plots & bits[i]) {
+            o = append(buf, len, o, o ? "," : "");
+            o = append(buf, len, o, names[i]);
+        }
+}
+
+static void get_sweep(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    int same = strcmp(adh_sweep_name(c->sweep.kind), name_of(k)) == 0;
+    get_list(c->sweep.values, same ? c->sweep.n : 0, buf, len);
+}
+
+static void get_sweep_plot(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", word_name(sweep_plots, (int)c->sweep.plot));
+}
+
+static void get_size(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%dx%d", c->tui.cols, c->tui.rows);
+}
+
+/* ---- the table ------------------------------------------------------------ */
+
+enum { S = ADH_KEY_SCENE, R = ADH_KEY_RUN };
+
+/* Every key; adhere-scene(5) documents those a scene may hold (where S),
+ * adhere(1) the flags that set the others. */
+static const key_def keys[] = {
+    { { "scene.title", S, ADH_Q_NONE }, set_title, 0, get_title },
+    { { "scene.mode", S | R, ADH_Q_NONE }, set_mode, 0, get_mode },
+    { { "material.E", S | R, ADH_Q_PRESSURE }, set_quantity, F(spec.mat.E), get_quantity },
+    { { "material.A", S | R, ADH_Q_ENERGY }, set_quantity, F(spec.mat.A), get_quantity },
+    { { "material.z0", S | R, ADH_Q_LENGTH }, set_quantity, F(spec.mat.z0), get_quantity },
+    { { "material.R", S | R, ADH_Q_LENGTH }, set_quantity, F(spec.mat.R), get_quantity },
+    { { "grid.nodes", S | R, ADH_Q_NONE }, set_nodes, 0, get_nodes },
+    { { "grid.spacing", S | R, ADH_Q_LENGTH }, set_quantity_auto, F(spec.grid.asked.spacing), get_quantity },
+    { { "grid.kernel", S | R, ADH_Q_NONE }, set_kernel, 0, get_kernel },
+    { { "grid.grid", S | R, ADH_Q_NONE }, set_grid_kind, 0, get_grid_kind },
+    { { "grid.fine_band", S | R, ADH_Q_LENGTH }, set_radius, F(spec.grid.asked.fine_band), get_quantity },
+    { { "grid.growth", S | R, ADH_Q_NONE }, set_growth, 0, get_growth },
+    { { "grid.radius", S | R, ADH_Q_LENGTH }, set_radius, F(spec.grid.asked.radius), get_quantity },
+    { { "grid.operator", S | R, ADH_Q_NONE }, set_operator, 0, get_operator },
+    { { "grid.force", R, ADH_Q_NONE }, set_bool, F(spec.grid.force), get_bool },
+    { { "solver.eps", S | R, ADH_Q_LENGTH }, set_quantity, F(spec.relax.eps), get_quantity },
+    { { "solver.max_iter", S | R, ADH_Q_NONE }, set_max_iter, 0, get_max_iter },
+    { { "solver.mixing", S | R, ADH_Q_NONE }, set_mixing, 0, get_mixing },
+    { { "solver.momentum", S | R, ADH_Q_NONE }, set_momentum, 0, get_momentum },
+    { { "protocol.start", S | R, ADH_Q_LENGTH }, set_quantity_auto, F(spec.proto.start), get_quantity },
+    { { "protocol.step", S | R, ADH_Q_LENGTH }, set_quantity, F(spec.proto.step), get_quantity },
+    { { "protocol.turns", S | R, ADH_Q_LENGTH }, set_turns, 0, get_turns },
+    { { "protocol.dwell", S | R, ADH_Q_NONE }, set_dwell, 0, get_dwell },
+    { { "protocol.unload", S | R, ADH_Q_NONE }, set_bool, F(spec.proto.unload), get_bool },
+    { { "output.plots", S, ADH_Q_NONE }, set_plots, 0, get_plots },
+    { { "output.profiles", S | R, ADH_Q_LENGTH }, set_profiles, 0, get_profiles },
+    { { "output.drive_speed", S, ADH_Q_SPEED }, set_quantity, F(output.drive_speed), get_quantity },
+    { { "output.dir", 0, ADH_Q_NONE }, set_path, F(output.dir), get_path },
+    { { "output.overwrite", 0, ADH_Q_NONE }, set_bool, F(output.overwrite), get_bool },
+    { { "output.plot", 0, ADH_Q_NONE }, set_bool, F(output.plot), get_bool },
+    { { "output.quiet", 0, ADH_Q_NONE }, set_bool, F(output.quiet), get_bool },
+    { { "output.allow_unconverged", 0, ADH_Q_NONE }, set_bool, F(output.allow_unconverged), get_bool },
+    { { "output.gnuplot_style", 0, ADH_Q_NONE }, set_path, F(output.gnuplot_style), get_path },
+    { { "output.data", 0, ADH_Q_NONE }, set_path, F(output.data), get_path },
+    { { "sweep.E", S, ADH_Q_PRESSURE }, set_sweep, 0, get_sweep },
+    { { "sweep.sigma", S, ADH_Q_NONE }, set_sweep, 0, get_sweep },
+    { { "sweep.eps", S, ADH_Q_LENGTH }, set_sweep, 0, get_sweep },
+    { { "sweep.jobs", S, ADH_Q_NONE }, set_jobs, 0, get_jobs },
+    { { "sweep.plot", S, ADH_Q_NONE }, set_sweep_plot, 0, get_sweep_plot },
+    { { "tui.replay", 0, ADH_Q_NONE }, set_path, F(tui.replay), get_path },
+    { { "tui.screen", 0, ADH_Q_NONE }, set_path, F(tui.screen), get_path },
+    { { "tui.size", 0, ADH_Q_NONE }, set_size, 0, get_size },
+    { { "tui.no_clock", 0, ADH_Q_NONE }, set_bool, F(tui.no_clock), get_bool },
+};
+#define NKEYS (sizeof keys / sizeof keys[0])
+
+static const key_def *find(const char *key)
+{
+    for (size_t i = 0; i < NKEYS; i++)
+        if (strcmp(keys[i].pub.key, key) == 0)
+            return &keys[i];
+    return NULL;
+}
+
+const adh_config_key *adh_config_key_find(const char *key)
+{
+    const key_def *k = find(key);
+    return k ? &k->pub : NULL;
+}
+
+const adh_config_key *adh_config_key_at(size_t i)
+{
+    return i < NKEYS ? &keys[i].pub : NULL;
+}
+
+int adh_config_get(const adh_config *c, const char *key, char *buf, size_t len)
+{
+    const key_def *k = find(key);
+    if (!k || len == 0)
+        return -1;
+    k->get(c, k, buf, len);
+    return 0;
+}
+
+int adh_config_set(adh_config *c, const char *key, const char *text, char *why, size_t whylen)
+{
+    const key_def *k = find(key);
+    if (!k) {
+        snprintf(why, whylen, "'%s' is not a key of the configuration", key);
+        return -1;
+    }
+    /* every setter changes nothing when it refuses: it writes last */
+    if (k->set(c, k, text, why, whylen) != 0)
+        return -1;
+    if (strncmp(key, "grid.", 5) == 0 && strcmp(key, "grid.force") != 0) {
+        /* the grid asked for changed: a run builds it until adh_config_grid
+         * chooses again */
+        c->spec.grid.use = c->spec.grid.asked;
+        c->spec.grid.chosen = 0;
+    }
+    return 0;
+}
+
+/* ---- a sentence in a driver's words ------------------------------------- */
+
+static int keychar(char ch)
+{
+    return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_';
+}
+
+/* The longest key at p (p starts no word inside another), or NULL. */
+static const key_def *key_at(const char *p, size_t *len)
+{
+    const key_def *best = NULL;
+    *len = 0;
+    for (size_t i = 0; i < NKEYS; i++) {
+        size_t n = strlen(keys[i].pub.key);
+        if (n <= *len || strncmp(p, keys[i].pub.key, n) != 0)
+            continue;
+        /* "grid.radius" is not inside "grid.radiusx", nor "grid.grid" inside "grid.grid.x" */
+        if (keychar(p[n]) || (p[n] == '.' && keychar(p[n + 1])))
+            continue;
+        best = &keys[i];
+        *len = n;
+    }
+    return best;
+}
+
+void adh_config_reword(const char *in, adh_config_say say, void *ctx, char *out, size_t len)
+{
+    size_t o = 0;
+    if (len == 0)
+        return;
+    for (const char *p = in; *p && o + 1 < len;) {
+        size_t klen;
+        const key_def *k = (p == in || !(keychar(p[-1]) || p[-1] == '.')) ? key_at(p, &klen) : NULL;
+        if (!k) {
+            out[o++] = *p++;
+            continue;
+        }
+        char value[128] = "", said[256];
+        const char *q = p + klen;
+        int assigned = strncmp(q, " = ", 3) == 0;
+        if (assigned) {
+            const char *v = q + 3;
+            size_t n = strcspn(v, " ,;:)");
+            if (n && v[n - 1] == '.' && (v[n] == '\0' || v[n] == ' '))
+                n--;   /* the sentence's full stop */
+            if (n >= sizeof value)
+                n = sizeof value - 1;
+            memcpy(value, v, n);
+            value[n] = '\0';
+            q = v + n;
+            assigned = n > 0;
+            if (!assigned)
+                q = p + klen;
+        }
+        say(k->pub.key, assigned ? value : NULL, said, sizeof said, ctx);
+        o = append(out, len, o, said);
+        p = q;
+    }
+    out[o] = '\0';
+}

@@ -1,0 +1,182 @@
+/* The configuration by key: every key reads back what it holds, refuses
+ * what it cannot hold without changing anything, and the configuration's
+ * parts (one grid asked and chosen, the protocol every driver steps, a
+ * sweep's runs) are what scenes and flags leave in them. */
+#include <math.h>
+#include <string.h>
+
+#include "adhere/models.h"
+#include "scene/config.h"
+#include "scene/scene.h"
+#include "tap.h"
+
+static int set(adh_config *c, const char *key, const char *text)
+{
+    char why[512];
+    return adh_config_set(c, key, text, why, sizeof why);
+}
+
+/* Every key's value as text sets it again to the same value: the text
+ * adh_config_get writes is the one adh_config_set reads (numbers exactly). */
+static void round_trip(const char *scene)
+{
+    static adh_config c, again;
+    adh_config_default(&c);
+    char why[512] = "";
+    if (scene)
+        ok(adh_scene_load(scene, &c, why, sizeof why) == 0, "%s loads %s", scene, why);
+    int same = 1;
+    const adh_config_key *k;
+    for (size_t i = 0; (k = adh_config_key_at(i)); i++) {
+        char text[4096], back[4096];
+        again = c;
+        adh_config_get(&c, k->key, text, sizeof text);
+        int rc = adh_config_set(&again, k->key, text, why, sizeof why);
+        adh_config_get(&again, k->key, back, sizeof back);
+        /* an empty path is "not given": the one text no setter takes */
+        if (!(rc == 0 && strcmp(text, back) == 0) && !(rc != 0 && text[0] == '\0')) {
+            same = 0;
+            printf("#   %s: '%s' read back as '%s' (%s)\n", k->key, text, back, rc ? why : "set");
+        }
+    }
+    ok(same, "every key of %s reads back what it holds (%s)", scene ? scene : "the defaults", "get, set, get");
+    /* and the run specification itself is the same */
+    again = c;
+    for (size_t i = 0; (k = adh_config_key_at(i)); i++) {
+        char text[4096];
+        adh_config_get(&c, k->key, text, sizeof text);
+        if (text[0] && (k->where & ADH_KEY_RUN))
+            adh_config_set(&again, k->key, text, why, sizeof why);
+    }
+    ok(again.spec.mat.E == c.spec.mat.E && again.spec.relax.eps == c.spec.relax.eps &&
+       again.spec.proto.nturns == c.spec.proto.nturns && again.spec.proto.step == c.spec.proto.step &&
+       !memcmp(again.spec.proto.turns, c.spec.proto.turns, sizeof c.spec.proto.turns) &&
+       again.spec.proto.dwell == c.spec.proto.dwell && again.spec.proto.unload == c.spec.proto.unload,
+       "setting every key of the run from its text gives %s's run again, to the last bit", scene ? scene : "the default");
+}
+
+/* A refused value changes nothing, and the sentence names the value. */
+static void refusals(void)
+{
+    static adh_config c, before;
+    adh_config_default(&c);
+    before = c;
+    const adh_config_key *k;
+    int unchanged = 1, named = 1;
+    for (size_t i = 0; (k = adh_config_key_at(i)); i++) {
+        char why[512] = "", text[64];
+        if (!strcmp(k->key, "scene.title"))
+            continue;   /* any printable text is a title */
+        /* a path (empty by default) takes any text but none */
+        adh_config_get(&c, k->key, text, sizeof text);
+        const char *bad = text[0] ? "1nm,,x" : "";
+        if (adh_config_set(&c, k->key, bad, why, sizeof why) == 0) {
+            printf("#   %s took '%s'\n", k->key, bad);
+            named = 0;
+        }
+        unchanged &= memcmp(&c, &before, sizeof c) == 0;
+        named &= why[0] != '\0';
+    }
+    ok(unchanged, "a key refusing '1nm,,x' (a path: '') leaves the whole configuration as it was");
+    ok(named, "and says why, every key");
+    char why[512];
+    ok(adh_config_set(&c, "material.E", "5nm", why, sizeof why) != 0 && strstr(why, "'5nm' is a length"),
+       "E = 5nm: %s", why);
+    ok(adh_config_set(&c, "grid.growth", "1.2", why, sizeof why) != 0 && strstr(why, "1 to 1.1"), "growth 1.2: %s", why);
+    ok(adh_config_set(&c, "protocol.turns", "-1nm,,-2nm", why, sizeof why) != 0 && strstr(why, "empty element"),
+       "an empty element in a list: %s", why);
+    ok(adh_config_set(&c, "material.sigma", "3", why, sizeof why) != 0 && strstr(why, "material.sigma"),
+       "no key material.sigma: %s", why);
+    ok(set(&c, "sweep.E", "1GPa,2GPa") == 0 && adh_config_set(&c, "sweep.sigma", "1", why, sizeof why) != 0 &&
+       strstr(why, "one parameter"), "a sweep varies one parameter: %s", why);
+}
+
+/* Turns imply unloading; the grid asked for is kept beside the one chosen. */
+static void parts(void)
+{
+    static adh_config c;
+    adh_config_default(&c);
+    ok(set(&c, "protocol.unload", "no") == 0 && set(&c, "protocol.turns", "-1nm,-2nm") == 0 && c.spec.proto.unload == 1 &&
+       c.spec.proto.nturns == 2, "turns set unloading from them, as --turn and a scene's turns do");
+    ok(set(&c, "protocol.turns", "none") == 0 && c.spec.proto.unload == 0 && c.spec.proto.nturns == 0,
+       "turns none: loading to contact only");
+    /* a soft material: the grid follows it, the grid asked for stays */
+    adh_config_default(&c);
+    char why[512];
+    ok(set(&c, "material.E", "0.1GPa") == 0 && adh_config_grid(&c, why, sizeof why, NULL) == 0 && c.spec.grid.chosen &&
+       c.spec.grid.use.graded && c.spec.grid.use.kernel == ADH_KERNEL_RING && !c.spec.grid.asked.graded &&
+       c.spec.grid.asked.nodes == 1000 && isnan(c.spec.grid.asked.spacing),
+       "E = 0.1 GPa: graded rings chosen (%zu), the uniform 1000 nodes asked for kept", c.spec.grid.use.nodes);
+    ok(set(&c, "material.E", "0.3GPa") == 0 && adh_config_grid(&c, why, sizeof why, NULL) == 0 && !c.spec.grid.use.graded &&
+       c.spec.grid.use.nodes == 1000, "back at 0.3 GPa: the paper's 1000 uniform nodes again (chosen from what was asked)");
+    ok(set(&c, "grid.nodes", "300") == 0 && set(&c, "material.E", "0.1GPa") == 0 && adh_config_grid(&c, why, sizeof why, NULL) == 0 &&
+       !c.spec.grid.chosen && c.spec.grid.use.nodes == 300 && !c.spec.grid.use.graded,
+       "N given: the grid is the one asked for, whatever the material");
+    ok(set(&c, "grid.nodes", "auto") == 0 && adh_config_grid_auto(&c.spec), "N = auto: it follows the material again");
+}
+
+/* The protocol every driver steps: the configuration's, with profile
+ * positions spread along the path when the profile figure wants them. */
+static void protocol(void)
+{
+    static adh_config c;
+    adh_config_default(&c);
+    set(&c, "protocol.dwell", "700");
+    adh_protocol_settings ps = adh_config_protocol(&c);
+    ok(ps.dwell == 700 && ps.unload && ps.nturns == 1 && ps.nprofiles == 6,
+       "the default plots ask for profiles: 6 positions spread, the dwell and turns kept (%zu)", ps.nprofiles);
+    double want[8];
+    size_t n = adh_config_default_profiles(&c.spec.mat, &c.spec.proto, want, 6);
+    ok(n == ps.nprofiles && !memcmp(want, ps.profiles, n * sizeof *want), "at adh_config_default_profiles' positions");
+    ok(c.spec.proto.nprofiles == 0, "and the configuration itself still asks for none");
+    ps = adh_config_protocol_for(&c, ADH_MODE_STATIC);
+    ok(ps.nprofiles == 0, "the static curve's protocol has none added");
+    set(&c, "output.profiles", "1nm,-1nm");
+    ps = adh_config_protocol(&c);
+    ok(ps.nprofiles == 2 && ps.profiles[0] == 1e-9, "positions asked are the ones stepped");
+    set(&c, "output.profiles", "none");
+    set(&c, "output.plots", "force");
+    ok(adh_config_protocol(&c).nprofiles == 0, "no profile figure, no positions added");
+
+    /* a sweep's run: the base's protocol, its own swept value */
+    adh_config_default(&c);
+    set(&c, "sweep.sigma", "1,10");
+    adh_run_spec run;
+    adh_config_sweep_run(&c, 1, &run);
+    adh_derived d;
+    adh_material_derive(&run.mat, &d);
+    ok(fabs(d.sigma - 10) < 1e-9 && run.proto.nprofiles == adh_config_protocol(&c).nprofiles,
+       "sweep run 2: sigma %g, the base's profile positions", d.sigma);
+}
+
+static void say_flag(const char *key, const char *value, char *buf, size_t len, void *ctx)
+{
+    snprintf(buf, len, "<%s%s%s>", key, value ? "|" : "", value ? value : "");
+}
+
+/* Sentences name keys; each driver says them in its words. */
+static void reword(void)
+{
+    char out[256];
+    adh_config_reword("grid.grid = graded is not allowed with grid.kernel = paper; use grid.kernel = ring.", say_flag,
+                      NULL, out, sizeof out);
+    ok(!strcmp(out, "<grid.grid|graded> is not allowed with <grid.kernel|paper>; use <grid.kernel|ring>."),
+       "keys and their values go to the driver's words: %s", out);
+    adh_config_reword("more grid.nodes or a larger grid.spacing, grid.radiusx", say_flag, NULL, out, sizeof out);
+    ok(!strcmp(out, "more <grid.nodes> or a larger <grid.spacing>, grid.radiusx"),
+       "a key without a value too, and not inside another word: %s", out);
+    adh_config_reword("grid.nodes", say_flag, NULL, out, 6);
+    ok(strlen(out) == 5, "cut at the buffer's end");
+}
+
+int main(void)
+{
+    round_trip(NULL);
+    round_trip("fig5");
+    round_trip("fig7");
+    refusals();
+    parts();
+    protocol();
+    reword();
+    return tap_done();
+}
