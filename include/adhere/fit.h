@@ -50,6 +50,12 @@ typedef struct adh_fit_progress {
     int jacobian;            /* 1: an evaluation for a finite difference */
 } adh_fit_progress;
 
+/* The fit stops when the trust region's next trial step would move every
+ * free parameter by less than this fraction of its standard error (the
+ * data cannot tell such points apart; further steps would chase the
+ * model's own noise), or an accepted step moved each by less than xtol. */
+#define ADH_FIT_STEP_SE 0.1
+
 typedef struct adh_fit_settings {
     unsigned free;                 /* mask of 1u << adh_fit_param */
     adh_material start;            /* start values (and the fixed ones) */
@@ -85,7 +91,8 @@ typedef struct adh_fit_result {
     size_t evals, failed;    /* model evaluations, and those that failed */
     size_t iterations;
     double seconds;
-    int gsl_info;            /* why the trust region stopped: 1 small step, 2 small gradient */
+    int gsl_info;            /* why it stopped: 1 small step (xtol), 2 small gradient, 3 no step
+                                lowers chi2, 4 the next step below ADH_FIT_STEP_SE */
 } adh_fit_result;
 
 typedef struct adh_fit adh_fit;

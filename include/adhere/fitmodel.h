@@ -57,6 +57,12 @@ adh_fit_model_settings adh_fit_model_settings_default(void);
 
 typedef struct adh_fit_model adh_fit_model;
 
+/* A trial far from the start can cost far more than the start (a large
+ * sigma on a grid chosen for a small one: every lattice fold resolved). Its
+ * curve is capped at this many times the first evaluation's points, and
+ * refused past them (ADH_EMAXITER): the fit steps back. */
+#define ADH_FIT_MODEL_POINTS_FACTOR 8
+
 /* g and k are borrowed. NULL when out of memory. */
 adh_fit_model *adh_fit_model_alloc(const adh_grid *g, const adh_kernel *k, const adh_fit_model_settings *s);
 void adh_fit_model_free(adh_fit_model *fm);

@@ -24,6 +24,8 @@ struct adh_fit_model {
     const adh_kernel *k;
     adh_fit_model_settings s;
     adh_static *w;               /* built on the first static evaluation */
+    size_t first_points;         /* the first curve's points: later ones are capped at
+                                    ADH_FIT_MODEL_POINTS_FACTOR times as many */
     size_t n, cap;               /* the curve */
     double *h0, *F;
     int *stable;
@@ -220,6 +222,8 @@ static int eval_static(adh_fit_model *fm, const adh_material *m, double lo, doub
     double step = fm->s.step;
     ss.h0_start = fmax(adh_protocol_auto_start(m, step), step * ceil((hi + fm->s.margin) / step));
     ss.h0_end = fmin(lo - fm->s.margin, -m->z0);
+    if (fm->first_points)
+        ss.max_points = ADH_FIT_MODEL_POINTS_FACTOR * fm->first_points;
     int rc = trace_static(fm, m, &ss);
     /* The continuation can stall in its last steps towards the end (seen
      * at h0_end = -2.25 nm at Figure 1's material): once the curve is below
@@ -231,6 +235,8 @@ static int eval_static(adh_fit_model *fm, const adh_material *m, double lo, doub
         ss.h0_end -= 0.37 * step;
         rc = trace_static(fm, m, &ss);
     }
+    if (rc == ADH_SUCCESS && !fm->first_points)
+        fm->first_points = fm->n;
     return rc == ADH_SUCCESS ? static_branches(fm) : rc;
 }
 
@@ -245,7 +251,7 @@ static int eval_relax(adh_fit_model *fm, const adh_material *m, double lo)
     if (rc == ADH_SUCCESS && run.interrupted)
         rc = ADH_EINTR;
     size_t *idx = malloc((run.nrows ? run.nrows : 1) * sizeof *idx);
-    if (!idx)
+    if (!idx && rc == ADH_SUCCESS)
         rc = ADH_ENOMEM;
     for (size_t i = 0; rc == ADH_SUCCESS && i < run.nrows; i++)
         rc = curve_push(fm, run.rows[i].h0, run.rows[i].F, 1);
