@@ -13,6 +13,7 @@
 #include "cli/batch.h"
 #include "cli/fitreport.h"
 #include "cli/interrupt.h"
+#include "cli/ready.h"
 #include "plot/outdir.h"
 #include "scene/config.h"
 #include "scene/fitdata.h"
@@ -122,6 +123,7 @@ static int build(fit_run *fr, char *why, size_t whylen)
 static int progress(const adh_fit_progress *p, void *ctx)
 {
     const fit_run *fr = ctx;
+    cli_ready_mark();   /* the first evaluation is in: a test may signal now */
     if (fr->cli->cfg.quiet)
         return 0;
     char line[512];
@@ -178,6 +180,7 @@ int cli_fit_main(cli_options *cli)
         return refuse(why);
     }
     cli_interrupt_catch();
+    cli_ready_phase("fit");
     adh_fit_result res;
     adh_fit *f = NULL;
     adh_grid_report gr;

@@ -85,6 +85,7 @@ static void commands(const adh_fitplot *p, adh_gnuplot *gp, const char *dat, con
     adh_gnuplot_cmd(gp, "set origin 0,0");
     adh_gnuplot_cmd(gp, "set size 1,0.32");
     adh_gnuplot_cmd(gp, "unset title");
+    adh_gnuplot_cmd(gp, "unset key");
     adh_gnuplot_cmd(gp, "set format x '%%g'");
     adh_gnuplot_cmd(gp, "set autoscale y");
     adh_gnuplot_cmd(gp, "set xlabel \"drive position (nm, measured)\"");

@@ -1,0 +1,56 @@
+#!/bin/sh
+# adhere fit through the command line: the shipped synthetic curve
+# (share/adhere/data/fig1-synthetic.tsv: Figure 1's parameters, 1 % noise,
+# a header with spaces and units, three columns) fitted on a coarse
+# resolved grid (N = 300, 2.5 nm) from a start off by (1.3, 0.8); what it
+# writes; the best scene opens; the refusals; SIGINT keeps the best so far.
+. "$(dirname "$0")/lib.sh"
+need_gnuplot
+DATA=${ADHERE_SRC:-.}/share/adhere/data/fig1-synthetic.tsv
+COARSE="-N 300 --spacing=2.5nm"
+D=$TMP/fit
+"$ADHERE" fit --data="$DATA" -E 1.3GPa -A 0.8e-19J $COARSE -o "$D" fig1 >"$TMP/fit.out" 2>"$TMP/fit.err"
+rc=$?
+check "adhere fit exits 0 with a fit ($rc: $(tail -1 "$TMP/fit.err"))" sh -c "[ $rc -eq 0 ] && grep -qx 'result: fit' '$TMP/fit.out'"
+E=$(awk -F'\t' '$1 == "E" {print $2}' "$D/fit.tsv")
+A=$(awk -F'\t' '$1 == "A" {print $2}' "$D/fit.tsv")
+check "fit.tsv: E = $E Pa within 2 % of 1 GPa" awk -v v="$E" 'BEGIN {exit !(v > 0.98e9 && v < 1.02e9)}'
+check "fit.tsv: A = $A J within 2 % of 1e-19 J" awk -v v="$A" 'BEGIN {exit !(v > 0.98e-19 && v < 1.02e-19)}'
+check "the report gives standard errors, correlations, chi2 per point, evaluations and time" \
+    sh -c "grep -q '^E .*MPa (0\.[0-9]* %)' '$TMP/fit.out' && grep -q '^correlation:' '$TMP/fit.out' && grep -q '^chi2 per point: ' '$TMP/fit.out' && grep -q '^model evaluations: [0-9]* (0 failed), [0-9]* iterations, [0-9.]* s' '$TMP/fit.out'"
+check "progress: a line per model evaluation" sh -c "[ \$(grep -c '^  eval ' '$TMP/fit.err') -ge 5 ]"
+n=$(grep -cv '^#' "$D/fit-points.tsv")
+check "fit-points.tsv: every point with its model value and residual ($n lines)" [ "$n" -eq 201 ]
+check "fit.png is a PNG" sh -c "head -c 8 '$D/fit.png' | od -c | grep -q 'P   N   G'"
+check "the best scene opens: adhere --plan OUT/best.scene" sh -c "'$ADHERE' --plan '$D/best.scene' >'$TMP/plan' 2>&1 && grep -q '^mode: static' '$TMP/plan'"
+check "no temporary file is left" sh -c "! ls -a '$D' | grep -q '^\.[^.]'"
+
+# refusals: exit 2, the reason, nothing written
+"$ADHERE" fit fig1 >/dev/null 2>"$TMP/e1"
+check "adhere fit without --data is refused ($(cat "$TMP/e1"))" sh -c "[ $? -eq 2 ] && grep -q 'adhere fit needs the measured curve: --data=FILE' '$TMP/e1'"
+"$ADHERE" fit --data="$DATA" --free=E,gamma fig1 >/dev/null 2>"$TMP/e2"
+check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep -q "^adhere: --free: 'gamma' is not a parameter: use E, A, z0, R, offset and baseline" "$TMP/e2"
+"$ADHERE" --batch --free=E fig1 >/dev/null 2>"$TMP/e3"
+check "--free outside adhere fit is refused ($(cat "$TMP/e3"))" grep -q "are adhere fit's" "$TMP/e3"
+printf 'Separation (nm)\tForce (nN)\n5\t-1\n4\tnan\n' >"$TMP/nan.tsv"
+"$ADHERE" fit --data="$TMP/nan.tsv" -o "$TMP/nanout" fig1 >/dev/null 2>"$TMP/e4"
+rc=$?
+check "a NaN in the data: exit 2, 'adhere: FILE:3:' and why, nothing written ($(cat "$TMP/e4"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q '^adhere: $TMP/nan.tsv:3: column 2 (the force): .nan. is not a finite number' '$TMP/e4' && [ ! -e '$TMP/nanout' ]"
+awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
+"$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
+check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
+
+# SIGINT during the fit: the best point so far, marked PARTIAL, exit 130
+rm -f "$TMP/int.ready"
+ADHERE_READY_FILE="$TMP/int.ready" "$ADHERE" fit --data="$DATA" -E 3GPa -A 0.3e-19J $COARSE -o "$TMP/int" fig1 \
+    >"$TMP/int.out" 2>"$TMP/int.err" &
+pid=$!
+came=0
+wait_phase "$TMP/int.ready" step "$pid" && came=1
+kill -INT "$pid" 2>/dev/null
+wait "$pid"
+rc=$?
+check "SIGINT after the first evaluation: exit 130 (phase came $came, exit $rc)" sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
+check "the report and fit.tsv say PARTIAL" sh -c "grep -q '^# PARTIAL' '$TMP/int.out' && grep -q '^# PARTIAL' '$TMP/int/fit.tsv'"
+done_testing
