@@ -41,6 +41,12 @@ awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
 
+# make install puts the shipped curve where adhere(1)'s example reads it
+SRC=${ADHERE_SRC:-.}
+make --no-print-directory -s -C "$SRC" install DESTDIR="$TMP/inst" PREFIX=/usr >"$TMP/inst.log" 2>&1
+check "make install installs share/adhere/data/fig1-synthetic.tsv ($(tail -1 "$TMP/inst.log"))" \
+    cmp -s "$DATA" "$TMP/inst/usr/share/adhere/data/fig1-synthetic.tsv"
+
 # SIGINT during the fit: the best point so far, marked PARTIAL, exit 130
 rm -f "$TMP/int.ready"
 ADHERE_READY_FILE="$TMP/int.ready" "$ADHERE" fit --data="$DATA" -E 3GPa -A 0.3e-19J $COARSE -o "$TMP/int" fig1 \
