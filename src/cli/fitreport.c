@@ -99,6 +99,10 @@ static void print_warnings(FILE *out, const cli_fit_report *r)
             fprintf(out, "warning: %s is not determined: its standard error is as large as the value itself (or "
                     "the Jacobian is singular): unidentifiable from these data\n", adh_fit_param_name((adh_fit_param)i));
     }
+    if (r->fs->model.kind == ADH_FIT_MODEL_RELAX)
+        fprintf(out, "warning: with the relaxation model the standard errors are not to be trusted: its jumps move by "
+                "whole drive steps as the parameters change, so chi2 is piecewise and the Jacobian's differences "
+                "can span a jump (the values are good to about a step's worth)\n");
     if (!r->grid_resolved)
         fprintf(out, "warning: the grid does not resolve the contact's edge zone at the optimum (%.2f nodes across "
                 "it): the model's numbers may be off by more than 1 %%\n", r->grid_edge_nodes);

@@ -41,6 +41,24 @@ awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
 
+# --model=relax: a curve the relaxation made (E = 1 GPa, loaded to -2 nm
+# and unloaded; its force.tsv's h0, F and path, with noise of about 1 % of
+# the pull-off from awk's generator, seeded) fitted by the relaxation
+"$ADHERE" --batch -q --no-plot -E 1GPa --turn=-2nm $COARSE --eps=3pm -o "$TMP/relaxgen" 2>/dev/null
+awk -F'\t' 'BEGIN {srand(7); print "h0 (nm)\tF (nN)\tpath"}
+    !/^#/ && $1 != "h0" && $9 <= 1 {u = rand(); v = rand(); n = sqrt(-2 * log(1 - u)) * cos(6.283185307 * v)
+    printf "%.6f\t%.6f\t%s\n", $1 * 1e9, $2 * 1e9 + 3.75 * n, $9}' "$TMP/relaxgen/force.tsv" >"$TMP/relax.tsv"
+"$ADHERE" fit --model=relax --data="$TMP/relax.tsv" --columns=1,2 -E 1.3GPa -A 0.8e-19J $COARSE --eps=3pm \
+    -o "$TMP/relaxfit" fig1 >"$TMP/relax.out" 2>"$TMP/relax.err"
+E=$(awk -F'\t' '$1 == "E" {print $2}' "$TMP/relaxfit/fit.tsv")
+A=$(awk -F'\t' '$1 == "A" {print $2}' "$TMP/relaxfit/fit.tsv")
+# (5 %: the relaxation's jumps move by whole drive steps as E and A change,
+# so its chi2 is piecewise and the fit lands within a step's worth)
+check "--model=relax recovers the relaxation's E = $E Pa and A = $A J within 5 %" \
+    awk -v e="$E" -v a="$A" 'BEGIN {exit !(e > 0.95e9 && e < 1.05e9 && a > 0.95e-19 && a < 1.05e-19)}'
+check "and says it used the relaxation, and that its standard errors are not to be trusted" \
+    sh -c "grep -q '^fit: 2 free parameters, relaxation model' '$TMP/relax.out' && grep -q '^warning: with the relaxation model the standard errors' '$TMP/relax.out'"
+
 # make install puts the shipped curve where adhere(1)'s example reads it
 SRC=${ADHERE_SRC:-.}
 make --no-print-directory -s -C "$SRC" install DESTDIR="$TMP/inst" PREFIX=/usr >"$TMP/inst.log" 2>&1

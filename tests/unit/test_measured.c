@@ -73,8 +73,13 @@ int main(void)
     ok(rc == 0 && m.nonmonotonic_line == 4, "a position going back for two points is noted, line %zu", rc ? 0 : m.nonmonotonic_line);
     if (rc == 0)
         adh_measured_free(&m);
-    rc = load("h0 (nm)\tF (nN)\n5\t0\n4\t0\n4\t1\n", NULL, &m, why, sizeof why);
-    ok(rc != 0 && strstr(why, ":4: the position repeats"), "a position repeated: refused (%s)", why);
+    rc = load("h0 (nm)\tF (nN)\n5\t0\n4\t0\n3\t1\n3\t2\n4\t0\n5\t0\n", NULL, &m, why, sizeof why);
+    ok(rc == 0 && m.nseg == 2 && m.seg[0].n == 4 && m.seg[1].first == 3 && m.seg[1].n == 3 && !m.nonmonotonic_line,
+       "a turn written twice: two segments, the second writing the retract's first point (%s)", rc ? why : "ok");
+    if (rc == 0)
+        adh_measured_free(&m);
+    rc = load("h0 (nm)\tF (nN)\n5\t0\n5\t1\n", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":3: the position never changes"), "a position that never changes: refused (%s)", why);
     rc = load("1\t2\t3\n4\t5\n", "1,2", &m, why, sizeof why);
     ok(rc != 0 && strstr(why, ":2: 2 columns where the file has 3"), "a short line: refused (%s)", why);
     rc = load("h0 (nm),F (nN),t (s)\n1,2,3\n", "4,2", &m, why, sizeof why);
