@@ -161,13 +161,16 @@ static void branch_eval(const branch *b, double h, double *F, double *slope)
 /* The static curve's outer and contact branches (see the header). */
 static int static_branches(adh_fit_model *fm)
 {
-    size_t n = fm->n, *idx = malloc((n ? n : 1) * sizeof *idx);
+    size_t n = fm->n;
+    if (n < 2)
+        return ADH_ESTALL;   /* a curve of one point: nothing to interpolate */
+    size_t *idx = malloc(n * sizeof *idx);
     if (!idx)
         return ADH_ENOMEM;
     size_t kf = 0;
     while (kf + 1 < n && fm->h0[kf + 1] < fm->h0[kf])
         kf++;
-    for (size_t i = 0; i <= kf && i < n; i++)
+    for (size_t i = 0; i <= kf; i++)
         idx[i] = i;
     int rc = branch_set(&fm->b[0], fm->h0, fm->F, idx, kf + 1, 0);
     size_t kmax = kf;
