@@ -173,8 +173,10 @@ int cli_fit_main(cli_options *cli)
         release(&fr);
         return refuse(why);
     }
+    /* the output directory opened (and locked) before the work */
     const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
-    if (out && (adh_outdir_make(out, why, sizeof why) != 0 || adh_outdir_clear(out, why, sizeof why) != 0)) {
+    adh_outdir *od = NULL;
+    if (out && !(od = adh_outdir_open(out, cfg->overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
         adh_fitdata_free(&fr.fd);
         release(&fr);
         return refuse(why);
@@ -190,6 +192,7 @@ int cli_fit_main(cli_options *cli)
         st = fit_once(&fr, &res, &f);
         if (!f) {
             cli_interrupt_release();
+            adh_outdir_close(od);
             adh_fitdata_free(&fr.fd);
             release(&fr);
             snprintf(why, sizeof why, "the fit could not start: %s", adh_strerror(st));
@@ -226,7 +229,7 @@ int cli_fit_main(cli_options *cli)
     cli_fit_print(stdout, &r);
     int rc = CLI_EXIT_OK;
     if (out && isfinite(res.chi2)) {
-        int wr = cli_fit_write(&r, out, cfg->plot, why, sizeof why);
+        int wr = cli_fit_write(&r, od, cfg->plot, why, sizeof why);
         if (wr != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             rc = wr == 3 ? CLI_EXIT_PLOT : CLI_EXIT_USAGE;
@@ -240,6 +243,7 @@ int cli_fit_main(cli_options *cli)
                 out, out);
     else if (!cfg->quiet)
         fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s\n", word, fr.evals, res.seconds);
+    adh_outdir_close(od);
     adh_fit_free(f);
     adh_fitdata_free(&fr.fd);
     release(&fr);

@@ -10,7 +10,6 @@
 #include "adhere/units.h"
 #include "plot/fitplot.h"
 #include "plot/outdir.h"
-#include "plot/plot.h"
 
 static const char *const units[ADH_FIT_NPARAM] = { "Pa", "J", "m", "m", "m", "N" };
 static const adh_quantity quantities[ADH_FIT_NPARAM] = { ADH_Q_PRESSURE, ADH_Q_ENERGY, ADH_Q_LENGTH, ADH_Q_LENGTH,
@@ -226,7 +225,7 @@ static int write_scene(FILE *f, const void *ctx)
     return 0;
 }
 
-int cli_fit_write(const cli_fit_report *r, const char *dir, int plot, char *why, size_t whylen)
+int cli_fit_write(const cli_fit_report *r, adh_outdir *dir, int plot, char *why, size_t whylen)
 {
     if (adh_outdir_write(dir, "fit.tsv", write_fit_tsv, r, why, whylen) != 0 ||
         adh_outdir_write(dir, "fit-points.tsv", write_points_tsv, r, why, whylen) != 0 ||
@@ -247,13 +246,12 @@ int cli_fit_write(const cli_fit_report *r, const char *dir, int plot, char *why,
         cx[i] = r->ch0[i] + r->res->value[ADH_FIT_OFFSET];
         cF[i] = r->cF[i] + r->res->value[ADH_FIT_BASELINE];
     }
-    char title[512], style[4096], msg[1024];
+    char title[512], msg[1024];
     snprintf(title, sizeof title, "adhere fit: E = %.4g GPa, A = %.4g J (%s model)", r->res->best.E * 1e-9,
              r->res->best.A, r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relaxation" : "static");
-    int st = adh_plot_style_file(r->cfg->gnuplot_style, style, sizeof style, msg, sizeof msg);
     adh_fitplot p = { .n = n, .x = r->fd->x, .F = r->fd->F, .resid = r->resid, .dir = r->fd->dir, .ncurve = nc,
-                      .cx = cx, .cF = cF, .stable = r->cstable, .title = title, .style = st < 0 ? "" : style };
-    int rc = adh_fitplot_write(&p, dir, msg, sizeof msg);
+                      .cx = cx, .cF = cF, .stable = r->cstable, .title = title, .style = r->cfg->gnuplot_style };
+    int rc = adh_fitplot_write(&p, dir, r->fs->cancel, msg, sizeof msg);
     free(cx);
     free(cF);
     if (rc != 0) {

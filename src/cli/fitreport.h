@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "adhere/fit.h"
+#include "plot/outdir.h"
 #include "scene/config.h"
 #include "scene/fitdata.h"
 
@@ -38,7 +39,7 @@ int cli_fit_verdict(const cli_fit_report *r, const char **word);
 /* The report on out (standard output). */
 void cli_fit_print(FILE *out, const cli_fit_report *r);
 /* fit.tsv, fit-points.tsv, best.scene (and fit.png unless plot is 0) into
- * dir. 0, or 2 (a table) / 3 (the figure) with why. */
-int cli_fit_write(const cli_fit_report *r, const char *dir, int plot, char *why, size_t whylen);
+ * out. 0, or 2 (a table) / 3 (the figure) with why. */
+int cli_fit_write(const cli_fit_report *r, adh_outdir *out, int plot, char *why, size_t whylen);
 
 #endif

@@ -5,13 +5,10 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
-#include "plot/outdir.h"
-#include "plot/png.h"
+#include "plot/session.h"
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
@@ -96,36 +93,27 @@ static void commands(const adh_fitplot *p, adh_gnuplot *gp, const char *dat, con
     adh_gnuplot_cmd(gp, "unset multiplot");
 }
 
-int adh_fitplot_write(const adh_fitplot *p, const char *dir, char *why, size_t whylen)
+int adh_fitplot_write(const adh_fitplot *p, adh_outdir *out, const volatile sig_atomic_t *cancel, char *why,
+                      size_t whylen)
 {
-    char tmpdir[PATH_MAX], dat[PATH_MAX + 32], log[PATH_MAX + 32], tmp_png[PATH_MAX + 64], final[PATH_MAX + 32];
-    if (adh_outdir_temp("adhere-fit", tmpdir, sizeof tmpdir, why, whylen) != 0)
+    adh_session ss;
+    if (adh_session_open(&ss, out, "gnuplot.log", p->style, cancel, why, whylen) != 0)
         return -1;
-    snprintf(dat, sizeof dat, "%s/fit.dat", tmpdir);
-    snprintf(log, sizeof log, "%s/gnuplot.log", dir);
-    snprintf(tmp_png, sizeof tmp_png, "%s/.fit.png.tmp%ld", dir, (long)getpid());
-    snprintf(final, sizeof final, "%s/fit.png", dir);
+    char dat[PATH_MAX + 64];
     int stable_of[512], rc = -1, nk = -1;
-    FILE *f = fopen(dat, "w");
+    FILE *f = adh_session_data(&ss, "fit.dat", dat, sizeof dat, why, whylen);
     if (f) {
         nk = write_data(p, f, stable_of, 512);
-        if (fclose(f) != 0)
+        if (fclose(f) != 0 || nk < 0) {
+            snprintf(why, whylen, "cannot write %.3000s: %s", dat, strerror(errno));
             nk = -1;
+        }
     }
-    if (nk < 0)
-        snprintf(why, whylen, "cannot write %.3000s: %s", dat, strerror(errno));
-    adh_gnuplot *gp = nk < 0 ? NULL : adh_gnuplot_open(log, why, whylen);
-    if (gp) {
-        adh_png_begin(gp, p->style, "fit", tmp_png);
-        commands(p, gp, dat, stable_of, nk);
-        rc = adh_png_finish(gp, tmp_png, final, why, whylen);
-        adh_gnuplot_close(gp);
+    if (nk >= 0) {
+        adh_session_begin(&ss, "fit", "fit.png");
+        commands(p, ss.gp, dat, stable_of, nk);
+        rc = adh_session_end(&ss, "fit.png", why, whylen);
     }
-    unlink(tmp_png);
-    unlink(dat);
-    rmdir(tmpdir);
-    struct stat st;
-    if (stat(log, &st) == 0 && st.st_size == 0)
-        unlink(log);
+    adh_session_close(&ss);
     return rc;
 }

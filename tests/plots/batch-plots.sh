@@ -224,7 +224,7 @@ check '! grep -qFf "$T/rawname" "$T/data.gp" && grep -qFf "$T/quotedname" "$T/da
 printf '1 -2\n3 -4\n5 oops\n' >"$T/bad.txt"
 "$BIN" $RUN --turn=-2nm --data="$T/bad.txt" -o "$T/baddata" 2>"$T/bad.err"
 rc=$?
-check '[ $rc -eq 2 ] && grep -q "^adhere: $T/bad.txt:3: column 2 (the force): .oops. is not a number" "$T/bad.err" && [ ! -e "$T/baddata/force.tsv" ]' \
+check '[ $rc -eq 2 ] && grep -q "^adhere: $T/bad.txt:3: .oops. is not a number (column 2, the force)" "$T/bad.err" && [ ! -e "$T/baddata/force.tsv" ]' \
     "a malformed --data file is refused with FILE:LINE and exit 2 before the run ($rc: $(cat "$T/bad.err"))"
 printf 'z force\n1 2\n3 4\n' >"$T/nounit.txt"
 "$BIN" $RUN --turn=-2nm --data="$T/nounit.txt" -o "$T/nounit" 2>"$T/nounit.err"

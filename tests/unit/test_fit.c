@@ -84,11 +84,11 @@ static void refused(const char *path, const char *text, const char *columns, siz
 /* Every refusal of the data path names the file and line and says why. */
 static void refusals(const char *path)
 {
-    refused(path, "h0 (nm)\tF (nN)\n1\t2\n0.5\tnan\n", NULL, 2, ":3: column 2 (the force): 'nan' is not a finite",
+    refused(path, "h0 (nm)\tF (nN)\n1\t2\n0.5\tnan\n", NULL, 2, ":3: 'nan' is not a finite number (a gap in the measurement?) (column 2, the force)",
             "a NaN");
-    refused(path, "1 2\n0.5 1e-320\n", NULL, 2, ":2: column 2 (the force): '1e-320' is below the smallest normal",
+    refused(path, "1 2\n0.5 1e-320\n", NULL, 2, ":2: '1e-320' is too small for a double (it underflows",
             "1e-320");
-    refused(path, "1 2\n0.5 abc\n", NULL, 2, ":2: column 2 (the force): 'abc' is not a number", "a non-number");
+    refused(path, "1 2\n0.5 abc\n", NULL, 2, ":2: 'abc' is not a number (column 2, the force)", "a non-number");
     refused(path, "1 2", NULL, 2, ":1: a NUL byte", "a NUL byte");
     refused(path, "z force\n1 2\n", NULL, 2, ":1: the header's 'z' does not name the position's unit",
             "a header without units");
