@@ -23,6 +23,9 @@ n=$(grep -cv '^#' "$D/fit-points.tsv")
 check "fit-points.tsv: every point with its model value and residual ($n lines)" [ "$n" -eq 201 ]
 check "fit.png is a PNG" sh -c "head -c 8 '$D/fit.png' | od -c | grep -q 'P   N   G'"
 check "the best scene opens: adhere --plan OUT/best.scene" sh -c "'$ADHERE' --plan '$D/best.scene' >'$TMP/plan' 2>&1 && grep -q '^mode: static' '$TMP/plan'"
+printf 'q\n' >"$TMP/q.keys"
+"$ADHERE" --replay="$TMP/q.keys" --screen="$TMP/best.screen" "$D/best.scene" >/dev/null 2>&1
+check "and the TUI opens it with the best E and A" sh -c "grep -q '^ >E     1.00[0-9] GPa' '$TMP/best.screen' && grep -Eq '^  A     1(\.00[0-9])?e-19 J' '$TMP/best.screen'"
 check "no temporary file is left (adhere's manifest aside)" sh -c "! ls -a '$D' | grep -v '^\.adhere-manifest$' | grep -q '^\.[^.]'"
 
 # refusals: exit 2, the reason, nothing written
@@ -60,10 +63,12 @@ check "and says it used the relaxation, and that its standard errors are not to 
     sh -c "grep -q '^fit: 2 free parameters, relaxation model' '$TMP/relax.out' && grep -q '^warning: with the relaxation model the standard errors' '$TMP/relax.out'"
 
 # make install puts the shipped curve where adhere(1)'s example reads it
+# (the default PREFIX, so the built tree's compiled-in data directory is
+# the same and nothing is rebuilt; DESTDIR keeps it in the test's directory)
 SRC=${ADHERE_SRC:-.}
-make --no-print-directory -s -C "$SRC" install DESTDIR="$TMP/inst" PREFIX=/usr >"$TMP/inst.log" 2>&1
+make --no-print-directory -s -C "$SRC" install DESTDIR="$TMP/inst" >"$TMP/inst.log" 2>&1
 check "make install installs share/adhere/data/fig1-synthetic.tsv ($(tail -1 "$TMP/inst.log"))" \
-    cmp -s "$DATA" "$TMP/inst/usr/share/adhere/data/fig1-synthetic.tsv"
+    cmp -s "$DATA" "$TMP/inst/usr/local/share/adhere/data/fig1-synthetic.tsv"
 
 # SIGINT during the fit: the best point so far, marked PARTIAL, exit 130
 rm -f "$TMP/int.ready"
