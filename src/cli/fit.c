@@ -10,11 +10,13 @@
 #include "adhere/kernel.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "cli/advice.h"
 #include "cli/batch.h"
 #include "cli/fitreport.h"
 #include "cli/interrupt.h"
 #include "cli/ready.h"
 #include "plot/outdir.h"
+#include "scene/budget.h"
 #include "scene/config.h"
 #include "scene/fitdata.h"
 
@@ -91,7 +93,14 @@ static int configure(fit_run *fr, char *why, size_t whylen)
     cfg->proto.turns[0] = step * floor(lo / step) - step;
     cfg->proto.unload = 1;
     cfg->proto.nprofiles = 0;
-    if (adh_config_grid(cfg, why, whylen) != 0 || cli_options_validate(cfg, why, whylen) != 0)
+    unsigned fix = 0;
+    if (adh_config_grid(cfg, why, whylen, &fix) != 0) {
+        cli_advice_append(why, whylen, fix);
+        return -1;
+    }
+    /* the checks every run meets, and memory for one static solver */
+    if (cli_options_validate(cfg, why, whylen) != 0 ||
+        adh_budget_check(cfg, cfg->mode == ADH_MODE_STATIC, why, whylen) != 0)
         return -1;
     return 0;
 }

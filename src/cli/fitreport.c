@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "adhere/kernel.h"
+#include "adhere/models.h"
 #include "adhere/params.h"
 #include "adhere/status.h"
 #include "adhere/units.h"

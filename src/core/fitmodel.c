@@ -8,7 +8,9 @@
 
 #include "adhere/observe.h"
 #include "adhere/protocol.h"
+#include "adhere/rule.h"
 #include "adhere/run.h"
+#include "adhere/runner.h"
 #include "adhere/status.h"
 
 /* One branch, ascending in h0, with its interpolant. */
@@ -256,7 +258,7 @@ static int eval_relax(adh_fit_model *fm, const adh_material *m, double lo)
     ps.turns[0] = fm->s.step * floor((lo - fm->s.margin) / fm->s.step);
     adh_run run;
     adh_run_init(&run);
-    int rc = adh_protocol_run(fm->g, fm->k, m, &fm->s.relax, &ps, NULL, NULL, &run);
+    int rc = adh_runner_rule(&adh_rule_relax, fm->g, fm->k, m, &fm->s.relax, &ps, NULL, NULL, &run);
     if (rc == ADH_SUCCESS && run.interrupted)
         rc = ADH_EINTR;
     size_t *idx = malloc((run.nrows ? run.nrows : 1) * sizeof *idx);
