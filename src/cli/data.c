@@ -5,7 +5,7 @@
 int cli_data_load(cli_options *cli, char *why, size_t whylen)
 {
     static adh_measured measured[CLI_MAX_DATA];
-    cli->cfg.measured = NULL;
+    cli->cfg.output.measured = NULL;
     for (size_t i = 0; i < cli->ndata; i++) {
         if (adh_measured_load(cli->data[i], cli->columns, &measured[i], why, whylen) != 0)
             return -1;
@@ -13,6 +13,6 @@ int cli_data_load(cli_options *cli, char *why, size_t whylen)
             measured[i - 1].next = &measured[i];
     }
     if (cli->ndata)
-        cli->cfg.measured = &measured[0];
+        cli->cfg.output.measured = &measured[0];
     return 0;
 }

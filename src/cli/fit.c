@@ -14,7 +14,7 @@
 #include "cli/batch.h"
 #include "cli/fitreport.h"
 #include "cli/interrupt.h"
-#include "cli/ready.h"
+#include "util/ready.h"
 #include "plot/outdir.h"
 #include "scene/budget.h"
 #include "scene/config.h"
@@ -70,9 +70,9 @@ static int settings(fit_run *fr, char *why, size_t whylen)
         return -1;
     }
     fr->fs.model.kind = strcmp(model, "relax") == 0 ? ADH_FIT_MODEL_RELAX : ADH_FIT_MODEL_STATIC;
-    fr->fs.model.relax = cfg->relax;
-    fr->fs.model.step = cfg->proto.step;
-    fr->fs.start = cfg->mat;
+    fr->fs.model.relax = cfg->spec.relax;
+    fr->fs.model.step = cfg->spec.proto.step;
+    fr->fs.start = cfg->spec.mat;
     fr->fs.offset = cli->fit.offset;
     fr->fs.baseline = cli->fit.baseline;
     fr->fs.cancel = cli_interrupt_flag();
@@ -85,14 +85,14 @@ static int settings(fit_run *fr, char *why, size_t whylen)
 static int configure(fit_run *fr, char *why, size_t whylen)
 {
     adh_config *cfg = &fr->cli->cfg;
-    double lo = INFINITY, step = cfg->proto.step;
+    double lo = INFINITY, step = cfg->spec.proto.step;
     for (size_t i = 0; i < fr->fd.d.n; i++)
         lo = fmin(lo, fr->fd.d.x[i] - fr->fs.offset);
-    cfg->mode = fr->fs.model.kind == ADH_FIT_MODEL_RELAX ? ADH_MODE_RELAX : ADH_MODE_STATIC;
-    cfg->proto.nturns = 1;
-    cfg->proto.turns[0] = step * floor(lo / step) - step;
-    cfg->proto.unload = 1;
-    cfg->proto.nprofiles = 0;
+    cfg->spec.mode = fr->fs.model.kind == ADH_FIT_MODEL_RELAX ? ADH_MODE_RELAX : ADH_MODE_STATIC;
+    cfg->spec.proto.nturns = 1;
+    cfg->spec.proto.turns[0] = step * floor(lo / step) - step;
+    cfg->spec.proto.unload = 1;
+    cfg->spec.proto.nprofiles = 0;
     unsigned fix = 0;
     if (adh_config_grid(cfg, why, whylen, &fix) != 0) {
         cli_advice_append(why, whylen, fix);
@@ -100,7 +100,7 @@ static int configure(fit_run *fr, char *why, size_t whylen)
     }
     /* the checks every run meets, and memory for one static solver */
     if (cli_options_validate(cfg, why, whylen) != 0 ||
-        adh_budget_check(cfg, cfg->mode == ADH_MODE_STATIC, why, whylen) != 0)
+        adh_budget_check(&cfg->spec, cfg->spec.mode == ADH_MODE_STATIC, why, whylen) != 0)
         return -1;
     return 0;
 }
@@ -118,22 +118,22 @@ static int build(fit_run *fr, char *why, size_t whylen)
     const adh_config *cfg = &fr->cli->cfg;
     int st = ADH_ENOMEM;
     release(fr);
-    fr->g = adh_config_grid_alloc(cfg);
-    fr->k = fr->g ? adh_config_kernel_alloc(cfg, fr->g, &st) : NULL;
+    fr->g = adh_config_grid_alloc(&cfg->spec);
+    fr->k = fr->g ? adh_config_kernel_alloc(&cfg->spec, fr->g, &st) : NULL;
     if (!fr->k) {
-        snprintf(why, whylen, "the grid or kernel of %zu nodes could not be built: %s", cfg->nodes, adh_strerror(st));
+        snprintf(why, whylen, "the grid or kernel of %zu nodes could not be built: %s", cfg->spec.grid.use.nodes, adh_strerror(st));
         return -1;
     }
-    fr->dr = adh_config_spacing(cfg);
-    fr->nodes = cfg->nodes;
+    fr->dr = adh_config_spacing(&cfg->spec);
+    fr->nodes = cfg->spec.grid.use.nodes;
     return 0;
 }
 
 static int progress(const adh_fit_progress *p, void *ctx)
 {
     const fit_run *fr = ctx;
-    cli_ready_mark();   /* the first evaluation is in: a test may signal now */
-    if (fr->cli->cfg.quiet)
+    adh_ready_mark();   /* the first evaluation is in: a test may signal now */
+    if (fr->cli->cfg.output.quiet)
         return 0;
     char line[512];
     int n = snprintf(line, sizeof line, "  eval %3zu%s iter %2zu ", fr->evals + p->evals, p->jacobian ? " (J)" : "    ",
@@ -174,7 +174,7 @@ int cli_fit_main(cli_options *cli)
     adh_config *cfg = &cli->cfg;
     if (settings(&fr, why, sizeof why) != 0)
         return refuse(why);
-    if (adh_fitdata_make(cfg->measured, (size_t)__builtin_popcount(fr.fs.free), &fr.fs.start, fr.fs.offset, &fr.fd,
+    if (adh_fitdata_make(cfg->output.measured, (size_t)__builtin_popcount(fr.fs.free), &fr.fs.start, fr.fs.offset, &fr.fd,
                          why, sizeof why) != 0)
         return refuse(why);
     if (configure(&fr, why, sizeof why) != 0 || build(&fr, why, sizeof why) != 0) {
@@ -183,15 +183,15 @@ int cli_fit_main(cli_options *cli)
         return refuse(why);
     }
     /* the output directory opened (and locked) before the work */
-    const char *out = cfg->out_dir[0] ? cfg->out_dir : NULL;
+    const char *out = cfg->output.dir[0] ? cfg->output.dir : NULL;
     adh_outdir *od = NULL;
-    if (out && !(od = adh_outdir_open(out, cfg->overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
+    if (out && !(od = adh_outdir_open(out, cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
         adh_fitdata_free(&fr.fd);
         release(&fr);
         return refuse(why);
     }
     cli_interrupt_catch();
-    cli_ready_phase("fit");
+    adh_ready_phase("fit");
     adh_fit_result res;
     adh_fit *f = NULL;
     adh_grid_report gr;
@@ -210,18 +210,18 @@ int cli_fit_main(cli_options *cli)
         adh_grid_check(&res.best, use, fr.nodes, fr.dr, &gr);
         /* a grid chosen for the start may not resolve the optimum (E and A
          * set sigma, hence the edge zone): choose again there, refit from it */
-        if (gr.resolved || !cfg->grid_chosen || refits == MAX_REFITS || st == ADH_EINTR ||
+        if (gr.resolved || !adh_config_grid_auto(&cfg->spec) || refits == MAX_REFITS || st == ADH_EINTR ||
             !isfinite(res.chi2))
             break;
-        if (!cfg->quiet)
+        if (!cfg->output.quiet)
             fprintf(stderr, "adhere: the grid chosen for the start has %.2f nodes across the edge zone at the optimum "
                     "(%.2f needed): choosing it again there and fitting from the optimum\n", gr.edge_nodes,
                     1.0 / gr.limit);
-        cfg->mat = res.best;
+        cfg->spec.mat = res.best;
         fr.fs.start = res.best;
         fr.fs.offset = res.value[ADH_FIT_OFFSET];
         fr.fs.baseline = res.value[ADH_FIT_BASELINE];
-        if (adh_config_grid_again(cfg, why, sizeof why) != 0 || build(&fr, why, sizeof why) != 0)
+        if (adh_config_grid(cfg, why, sizeof why, NULL) != 0 || build(&fr, why, sizeof why) != 0)
             break;
         adh_fit_free(f);
         f = NULL;
@@ -238,7 +238,7 @@ int cli_fit_main(cli_options *cli)
     cli_fit_print(stdout, &r);
     int rc = CLI_EXIT_OK;
     if (out && isfinite(res.chi2)) {
-        int wr = cli_fit_write(&r, od, cfg->plot, why, sizeof why);
+        int wr = cli_fit_write(&r, od, cfg->output.plot, why, sizeof why);
         if (wr != 0) {
             fprintf(stderr, "adhere: %s\n", why);
             rc = wr == 3 ? CLI_EXIT_PLOT : CLI_EXIT_USAGE;
@@ -246,11 +246,11 @@ int cli_fit_main(cli_options *cli)
     }
     const char *word;
     int verdict = cli_fit_verdict(&r, &word);
-    if (!cfg->quiet && out && rc == CLI_EXIT_OK)
+    if (!cfg->output.quiet && out && rc == CLI_EXIT_OK)
         fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s; wrote fit.tsv, fit-points.tsv, best.scene%s "
-                "in %s (open it: adhere %s/best.scene)\n", word, fr.evals, res.seconds, cfg->plot ? ", fit.png" : "",
+                "in %s (open it: adhere %s/best.scene)\n", word, fr.evals, res.seconds, cfg->output.plot ? ", fit.png" : "",
                 out, out);
-    else if (!cfg->quiet)
+    else if (!cfg->output.quiet)
         fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s\n", word, fr.evals, res.seconds);
     adh_outdir_close(od);
     adh_fit_free(f);

@@ -123,8 +123,8 @@ void cli_fit_print(FILE *out, const cli_fit_report *r)
             res->nfree, res->nfree == 1 ? "" : "s", r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relaxation" : "static",
             res->n, napp, res->n - napp, r->fd->ncontact);
     fprintf(out, "grid: %s, N = %zu, spacing %.3g nm%s; at the optimum %.2f nodes across the contact's edge zone (%s)%s\n",
-            cfg->graded ? "graded" : "uniform", cfg->nodes, adh_config_spacing(cfg) * 1e9,
-            cfg->grid_chosen ? ", chosen for the start values" : ", as given",
+            cfg->spec.grid.use.graded ? "graded" : "uniform", cfg->spec.grid.use.nodes, adh_config_spacing(&cfg->spec) * 1e9,
+            adh_config_grid_auto(&cfg->spec) ? ", chosen for the start values" : ", as given",
             r->grid_edge_nodes, r->grid_resolved ? "resolved" : "NOT resolved",
             r->refits ? ", chosen again at the optimum" : "");
     print_params(out, r);
@@ -161,11 +161,11 @@ static int write_fit_tsv(FILE *f, const void *ctx)
     if (r->partial)
         fprintf(f, "# PARTIAL: interrupted, the best point so far\n");
     fprintf(f, "# result: %s\n", word);
-    for (const adh_measured *m = r->cfg->measured; m; m = m->next)
+    for (const adh_measured *m = r->cfg->output.measured; m; m = m->next)
         fprintf(f, "# data: %s (%zu points)\n", m->name, m->n);
     fprintf(f, "# model: %s; grid N = %zu, spacing %.6g m; %zu model evaluations, %.3f s\n",
-            r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relax" : "static", r->cfg->nodes,
-            adh_config_spacing(r->cfg), r->evals, r->seconds);
+            r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relax" : "static", r->cfg->spec.grid.use.nodes,
+            adh_config_spacing(&r->cfg->spec), r->evals, r->seconds);
     fprintf(f, "# chi2 %.9g N^2, %zu points, chi2/point %.9g N^2, scatter %.9g N, chi2/dof against it %.6g\n",
             res->chi2, res->n, res->chi2 / (double)res->n, res->noise, res->chi2_red);
     fprintf(f, "parameter\tvalue\tstd_error\tunit\tfree\tflag");
@@ -212,17 +212,17 @@ static int write_scene(FILE *f, const void *ctx)
     const char *word;
     cli_fit_verdict(r, &word);
     fprintf(f, "# adhere fit's best model (%s)%s\n", word, r->partial ? " # PARTIAL" : "");
-    for (const adh_measured *d = cfg->measured; d; d = d->next)
+    for (const adh_measured *d = cfg->output.measured; d; d = d->next)
         fprintf(f, "# fitted to %s\n", d->name);
     fprintf(f, "# position offset %.6g nm, force baseline %.6g nN: model h0 = measured - offset\n",
             r->res->value[ADH_FIT_OFFSET] * 1e9, r->res->value[ADH_FIT_BASELINE] * 1e9);
     fprintf(f, "\n[scene]\ntitle = best fit: E = %.4g GPa, A = %.4g J\nmode = %s\n", m->E * 1e-9, m->A,
             r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relax" : "static");
     fprintf(f, "\n[material]\nE = %.10gPa\nA = %.10gJ\nz0 = %.10gm\nR = %.10gm\n", m->E, m->A, m->z0, m->R);
-    if (!cfg->graded)
-        fprintf(f, "\n[grid]\nnodes = %zu\nspacing = %.10gm\nkernel = %s\n", cfg->nodes, adh_config_spacing(cfg),
-                adh_kernel_name(cfg->kernel));
-    fprintf(f, "\n[protocol]\nstep = %.10gm\nturns = %.10gm\n", cfg->proto.step, cfg->proto.turns[0]);
+    if (!cfg->spec.grid.use.graded)
+        fprintf(f, "\n[grid]\nnodes = %zu\nspacing = %.10gm\nkernel = %s\n", cfg->spec.grid.use.nodes, adh_config_spacing(&cfg->spec),
+                adh_kernel_name(cfg->spec.grid.use.kernel));
+    fprintf(f, "\n[protocol]\nstep = %.10gm\nturns = %.10gm\n", cfg->spec.proto.step, cfg->spec.proto.turns[0]);
     return 0;
 }
 
@@ -251,7 +251,7 @@ int cli_fit_write(const cli_fit_report *r, adh_outdir *dir, int plot, char *why,
     snprintf(title, sizeof title, "adhere fit: E = %.4g GPa, A = %.4g J (%s model)", r->res->best.E * 1e-9,
              r->res->best.A, r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relaxation" : "static");
     adh_fitplot p = { .n = n, .x = r->fd->x, .F = r->fd->F, .resid = r->resid, .dir = r->fd->dir, .ncurve = nc,
-                      .cx = cx, .cF = cF, .stable = r->cstable, .title = title, .style = r->cfg->gnuplot_style };
+                      .cx = cx, .cF = cF, .stable = r->cstable, .title = title, .style = r->cfg->output.gnuplot_style };
     int rc = adh_fitplot_write(&p, dir, r->fs->cancel, msg, sizeof msg);
     free(cx);
     free(cF);

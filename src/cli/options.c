@@ -182,7 +182,7 @@ static int apply_data_fit(cli_options *cli, const option_doc *o, const char *arg
             snprintf(why, n, "--%s: '%s' is too long", name, arg);
             return 2;
         }
-        snprintf(dst, len, "%s", arg);
+        memcpy(dst, arg, strlen(arg) + 1);   /* fits: checked above */
         cli->fit.given = 1;
         return 0;
     }
