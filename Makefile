@@ -178,11 +178,12 @@ bench: all $(BENCH_BIN)
 	@tests/bench/run.sh $(BUILD)
 
 install: all
-	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(DATADIR)/scenes $(DESTDIR)$(DATADIR)/gnuplot \
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(DATADIR)/scenes $(DESTDIR)$(DATADIR)/gnuplot $(DESTDIR)$(DATADIR)/data \
 	  $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
 	install -m 755 $(BIN) $(DESTDIR)$(BINDIR)/adhere
 	for f in share/adhere/scenes/*.scene; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/scenes/; done; true
 	for f in share/adhere/gnuplot/*.gp; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/gnuplot/; done; true
+	for f in share/adhere/data/*.tsv; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/data/; done; true
 	install -m 644 man/adhere.1 $(DESTDIR)$(MANDIR)/man1/adhere.1
 	[ ! -e man/adhere-scene.5 ] || install -m 644 man/adhere-scene.5 $(DESTDIR)$(MANDIR)/man5/adhere-scene.5
 

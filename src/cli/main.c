@@ -9,11 +9,12 @@
 #include "cli/advice.h"
 #include "cli/batch.h"
 #include "cli/cost.h"
+#include "cli/data.h"
+#include "cli/fit.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "scene/budget.h"
 #include "scene/config.h"
-#include "scene/measured.h"
 #include "scene/plan.h"
 #include "tui/actions.h"
 #include "tui/tui.h"
@@ -64,6 +65,16 @@ int main(int argc, char **argv)
     default:
         break;
     }
+    /* A measured curve is read before any work: a bad line stops here. */
+    if (cli_data_load(&cli, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);   /* then FILE:LINE:, as compilers do */
+        return CLI_EXIT_USAGE;
+    }
+    /* A fit chooses its own grid, for the start values and the data */
+    if (cli.action == CLI_ACT_FIT) {
+        cli.cfg.spec.relax.cancel = cli_interrupt_flag();
+        return cli_fit_main(&cli);
+    }
     /* No grid given: the one the contact's edge needs, or a refusal. */
     unsigned fix;
     if (cli.action != CLI_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why, &fix) != 0) {
@@ -99,15 +110,6 @@ int main(int argc, char **argv)
     /* The solvers poll the interrupt flag through their cancel hook: a
      * signal is heard inside a step, not only between steps. */
     cli.cfg.spec.relax.cancel = cli_interrupt_flag();
-    /* A measured curve is read before any work: a bad line stops here. */
-    static adh_measured measured;
-    if (cli.cfg.output.data[0]) {
-        if (adh_measured_load(cli.cfg.output.data, &measured, why, sizeof why) != 0) {
-            fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
-            return CLI_EXIT_USAGE;
-        }
-        cli.cfg.output.measured = &measured;
-    }
     switch (cli.action) {
     case CLI_ACT_BATCH:
         return cli_batch_main(&cli);

@@ -22,7 +22,8 @@ enum {
     OPT_NO_CLOCK, OPT_LIST_KEYS, OPT_NO_PLOT, OPT_PLOTS, OPT_PROFILES, OPT_DRIVE_SPEED,
     OPT_GNUPLOT_STYLE, OPT_PLAN, OPT_DWELL, OPT_MODE, OPT_REFERENCE, OPT_COST, OPT_COST_EPS,
     OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE, OPT_DATA,
-    OPT_GRID, OPT_FINE_BAND, OPT_GROWTH, OPT_GRID_RADIUS, OPT_OPERATOR, OPT_OVERWRITE
+    OPT_GRID, OPT_FINE_BAND, OPT_GROWTH, OPT_GRID_RADIUS, OPT_OPERATOR, OPT_OVERWRITE, OPT_COLUMNS, OPT_FREE,
+    OPT_MODEL, OPT_OFFSET, OPT_BASELINE
 };
 
 typedef struct option_doc {
@@ -70,7 +71,12 @@ static const option_doc options[] = {
     { { "profiles", required_argument, 0, OPT_PROFILES }, "M[,M...]", "drive positions where surface profiles are stored", "output.profiles", NULL },
     { { "drive-speed", required_argument, 0, OPT_DRIVE_SPEED }, "M/S", "drive speed for contact-line speeds (default 1um/s)", "output.drive_speed", NULL },
     { { "gnuplot-style", required_argument, 0, OPT_GNUPLOT_STYLE }, "FILE|DIR", "gnuplot style file, or a directory holding style.gp, overriding the installed one", "output.gnuplot_style", NULL },
-    { { "data", required_argument, 0, OPT_DATA }, "FILE", "a measured force-position curve (nm, nN) drawn over force.png and the TUI preview", "output.data", NULL },
+    { { "data", required_argument, 0, OPT_DATA }, "FILE", "a measured force-position curve (nm, nN, or the header's units) drawn over force.png and the TUI preview; up to 8, each in the key", NULL, NULL },
+    { { "columns", required_argument, 0, OPT_COLUMNS }, "POS,FORCE", "--data's position and force columns, by number from 1 or header name (default: the only two, or by name)", NULL, NULL },
+    { { "free", required_argument, 0, OPT_FREE }, "LIST", "adhere fit: the parameters to fit, from E,A,z0,R,offset,baseline (default E,A)", NULL, NULL },
+    { { "model", required_argument, 0, OPT_MODEL }, "static|relax", "adhere fit: the static curve, or the relaxation's loading and unloading branches (default static)", NULL, NULL },
+    { { "offset", required_argument, 0, OPT_OFFSET }, "M", "adhere fit: start value of the position offset (model h0 = measured - offset, default 0)", NULL, NULL },
+    { { "baseline", required_argument, 0, OPT_BASELINE }, "N", "adhere fit: start value of the force baseline (measured = model + baseline, default 0)", NULL, NULL },
     { { "plan", no_argument, 0, OPT_PLAN }, NULL, "print the run plan (branches, steps, what is stored) and exit", NULL, NULL },
     { { "cost", no_argument, 0, OPT_COST }, NULL, "report what accuracy costs: runs over a grid of eps, N and kernels", NULL, NULL },
     { { "cost-eps", required_argument, 0, OPT_COST_EPS }, "M[,M...]", "eps values of the cost grid (default 2,1,0.5,0.2,0.1pm)", NULL, NULL },
@@ -89,8 +95,10 @@ static const option_doc options[] = {
 void cli_options_usage(FILE *out)
 {
     fprintf(out, "usage: adhere [OPTIONS] [SCENE]\n"
+                 "       adhere fit --data=FILE [--free=LIST] [OPTIONS] [SCENE]\n"
                  "Two elastic spheres with a Lennard-Jones surface force (Attard 2000).\n"
-                 "Without --batch, opens the TUI. Numbers are SI or take a unit: 1GPa 0.5nm 10um 1e-19J.\n\n");
+                 "Without --batch, opens the TUI; fit fits the model to a measured curve.\n"
+                 "Numbers are SI or take a unit: 1GPa 0.5nm 10um 1e-19J.\n\n");
     for (size_t i = 0; i < NOPTIONS; i++) {
         const option_doc *o = &options[i];
         char lhs[64];
@@ -142,9 +150,76 @@ static int empty_element(const char *name, const char *arg, char *why, size_t n)
     return 0;
 }
 
+/* --data (repeatable: the first is also the configuration's output.data),
+ * --columns and adhere fit's own flags, kept as typed. */
+static int apply_data_fit(cli_options *cli, const option_doc *o, const char *arg, char *why, size_t n)
+{
+    const char *name = o->opt.name;
+    char msg[512];
+    switch (o->opt.val) {
+    case OPT_DATA:
+        if (cli->ndata == CLI_MAX_DATA) {
+            snprintf(why, n, "--data: at most %d files", CLI_MAX_DATA);
+            return 2;
+        }
+        if (cli->ndata == 0 && adh_config_set(&cli->cfg, "output.data", arg, msg, sizeof msg) != 0) {
+            snprintf(why, n, "--data: %s", msg);
+            return 2;
+        }
+        cli->data[cli->ndata++] = arg;
+        return 0;
+    case OPT_COLUMNS:
+        if (strlen(arg) >= sizeof cli->columns) {
+            snprintf(why, n, "--columns: longer than %zu characters", sizeof cli->columns - 1);
+            return 2;
+        }
+        snprintf(cli->columns, sizeof cli->columns, "%s", arg);
+        return 0;
+    case OPT_FREE: case OPT_MODEL: {
+        char *dst = o->opt.val == OPT_FREE ? cli->fit.free : cli->fit.model;
+        size_t len = o->opt.val == OPT_FREE ? sizeof cli->fit.free : sizeof cli->fit.model;
+        if (strlen(arg) >= len) {
+            snprintf(why, n, "--%s: '%s' is too long", name, arg);
+            return 2;
+        }
+        memcpy(dst, arg, strlen(arg) + 1);   /* fits: checked above */
+        cli->fit.given = 1;
+        return 0;
+    }
+    case OPT_OFFSET: case OPT_BASELINE:
+        cli->fit.given = 1;
+        if (adh_parse_quantity(arg, o->opt.val == OPT_OFFSET ? ADH_Q_LENGTH : ADH_Q_FORCE,
+                               o->opt.val == OPT_OFFSET ? &cli->fit.offset : &cli->fit.baseline, msg, sizeof msg) != 0) {
+            snprintf(why, n, "--%s: %s", name, msg);
+            return 2;
+        }
+        return 0;
+    }
+    return -1;
+}
+
+/* adhere fit's line: a fit, not a run, so the run's actions do not go with it. */
+static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
+{
+    if (action) {
+        snprintf(why, whylen, "adhere fit fits and writes its report: --batch, --plan, --cost, --replay, --help and "
+                 "--version do not go with it");
+        return 2;
+    }
+    if (cli->ndata == 0) {
+        snprintf(why, whylen, "adhere fit needs the measured curve: --data=FILE");
+        return 2;
+    }
+    cli->action = CLI_ACT_FIT;
+    return 0;
+}
+
 /* A flag: its key's value through adh_config_set, or the CLI's own. */
 static int apply(cli_options *cli, const option_doc *o, const char *arg, char *why, size_t n)
 {
+    int rc = apply_data_fit(cli, o, arg, why, n);
+    if (rc >= 0)
+        return rc;
     const char *name = o->opt.name;
     if (o->key) {
         char msg[512], words[600];
@@ -351,6 +426,12 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
     static flags_seen fs;
     memset(cli, 0, sizeof *cli);
     adh_config_default(&cli->cfg);
+    /* adhere fit: a subcommand, the rest of the line its options */
+    int fit = argc > 1 && strcmp(argv[1], "fit") == 0;
+    if (fit) {
+        argc--;
+        argv++;
+    }
     /* getopt permutes argv: keep the order as typed for the hints */
     char *orig[256];
     int norig = argc < 256 ? argc : 256;
@@ -372,6 +453,12 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
     for (size_t i = 0; i < fs.n; i++)
         if (apply(cli, fs.list[i].o, fs.list[i].arg, why, whylen) != 0)
             return 2;
+    if (fit)
+        return fit_check(cli, fs.batch || fs.plan || fs.cost || fs.replay || fs.info, why, whylen);
+    if (cli->fit.given) {
+        snprintf(why, whylen, "--free, --model, --offset and --baseline are adhere fit's: write 'adhere fit --data=FILE ...'");
+        return 2;
+    }
     adh_mode mode = cli->cfg.spec.mode;
     if (fs.reference && mode != ADH_MODE_RELAX) {
         snprintf(why, whylen, "--reference=static is for --mode=relax: %s", mode == ADH_MODE_STATIC

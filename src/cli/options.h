@@ -8,8 +8,18 @@
 
 typedef enum cli_action {
     CLI_ACT_TUI = 0, CLI_ACT_BATCH, CLI_ACT_HELP, CLI_ACT_VERSION, CLI_ACT_LIST_KEYS,
-    CLI_ACT_PLAN, CLI_ACT_COST
+    CLI_ACT_PLAN, CLI_ACT_COST, CLI_ACT_FIT
 } cli_action;
+
+#define CLI_MAX_DATA 8   /* --data files (ADH_MEASURED_MAX_FILES) */
+
+/* adhere fit's own options, as typed (src/cli/fit.c reads them). */
+typedef struct cli_fit_options {
+    char free[128];          /* --free list, "" = E,A */
+    char model[16];          /* --model: "" = static, relax */
+    double offset, baseline; /* --offset, --baseline start values (m, N) */
+    int given;               /* one of them was given (refused without fit) */
+} cli_fit_options;
 
 typedef struct cli_options {
     adh_config cfg;
@@ -18,10 +28,15 @@ typedef struct cli_options {
     char reference[16];      /* --reference: "" or "static" */
     char cost_eps[256];      /* --cost-eps list, "" = default */
     char cost_nodes[256];    /* --cost-nodes list, "" = default */
+    const char *data[CLI_MAX_DATA];   /* every --data FILE, in order (the first is also output.data) */
+    size_t ndata;
+    char columns[256];       /* --columns POS,FORCE, "" = automatic */
+    cli_fit_options fit;
 } cli_options;
 
 /* Fills cli from argv (defaults, then the scene if one is named, then the
- * flags). Returns 0, or 2 with a message in why. */
+ * flags). `adhere fit ...` (the first argument) is the fit subcommand.
+ * Returns 0, or 2 with a message in why. */
 int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen);
 void cli_options_usage(FILE *out);
 

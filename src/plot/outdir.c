@@ -45,7 +45,7 @@ struct adh_outdir {
  * adhere(1) lists the same under FILES. */
 static const char *const owned[] = {
     "force.tsv", "summary.tsv", "turns.tsv", "static.tsv", "profiles.tsv", "contact.tsv",
-    "sweep.tsv", "cost.tsv",
+    "sweep.tsv", "cost.tsv", "fit.tsv", "fit-points.tsv", "best.scene", "fit.png",
     "force.png", "profile.png", "contact.png", "precontact.png", "bulge.png", "jump.png", "cost.png",
     "gnuplot.log", "gnuplot-figures.log", ADH_OUTDIR_MANIFEST,
 };

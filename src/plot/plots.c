@@ -308,7 +308,10 @@ typedef struct force_fig {
     char adh[PATH_MAX + 32];       /* adhesion.dat: adhesion against maximum load */
     int np;                        /* the highest path */
     int *set;                      /* set[2k + (1 - stable)]: path k's stable / unstable rows */
-    int rigid_set, meas_set, ref_set[2];
+    int rigid_set, ref_set[2];
+    int meas_set[2 * ADH_MEASURED_MAX_FILES];   /* --data: file f's approach [2f], retract [2f + 1] */
+    const adh_measured *meas_file[ADH_MEASURED_MAX_FILES];
+    int nmeas;
     const adh_run *ref;            /* --reference=static, NULL */
     model_sets jkr, dmt, md;
     double md_lambda;
@@ -356,16 +359,25 @@ static void force_curves(plotter *pl, force_fig *ff, datafile *df)
         for (size_t i = 0; i < ff->ref->nrows; i++)
             force_grow(ff, ff->ref->rows[i].h0, ff->ref->rows[i].F);
     }
-    /* --data: the user's measurement, points over the model, in the frame */
-    ff->meas_set = -1;
-    const adh_measured *meas = pl->s->measured;
-    if (meas && meas->n) {
-        set_begin(df);
-        for (size_t i = 0; i < meas->n; i++) {
-            set_point(df, meas->h0[i], meas->F[i]);
-            force_grow(ff, meas->h0[i], meas->F[i]);
+    /* --data: the user's measurements, points over the model, in the
+     * frame: each file's approach and retract apart */
+    ff->nmeas = 0;
+    for (const adh_measured *m = pl->s->measured; m && ff->nmeas < ADH_MEASURED_MAX_FILES; m = m->next) {
+        ff->meas_file[ff->nmeas] = m;
+        for (int r = 0; r < 2; r++) {
+            set_begin(df);
+            for (size_t sg = 0; sg < m->nseg; sg++) {
+                const adh_measured_segment *seg = &m->seg[sg];
+                if ((seg->dir < 0) != r)
+                    continue;
+                for (size_t i = seg->first; i < seg->first + seg->n; i++) {
+                    set_point(df, m->h0[i], m->F[i]);
+                    force_grow(ff, m->h0[i], m->F[i]);
+                }
+            }
+            ff->meas_set[2 * ff->nmeas + r] = df->points ? set_end(df) : (set_end(df), -1);
         }
-        ff->meas_set = set_end(df);
+        ff->nmeas++;
     }
 }
 
@@ -456,7 +468,10 @@ static void force_frame(plotter *pl, force_fig *ff)
     int nmodel = ff->models ? (ff->jkr.load >= 0 || ff->jkr.disp >= 0) + (ff->md.load >= 0 || ff->md.disp >= 0) +
                               (ff->dmt.load >= 0 || ff->dmt.disp >= 0) + ff->any_disp
                             : 2;
-    int nkey = (ff->set[0] >= 0) + (ff->set[1] >= 0) + (ff->rigid_set >= 0) + nmodel + (ff->meas_set >= 0) +
+    int nmeas_sets = 0;
+    for (int i = 0; i < 2 * ff->nmeas; i++)
+        nmeas_sets += ff->meas_set[i] >= 0;
+    int nkey = (ff->set[0] >= 0) + (ff->set[1] >= 0) + (ff->rigid_set >= 0) + nmodel + nmeas_sets +
                (ff->ref_set[0] >= 0 || ff->ref_set[1] >= 0) +
                (ff->nunload > MAX_LABELLED_UNLOADS ? 1 : ff->nunload);
     /* (the model curves are only references too: they neither set the
@@ -541,10 +556,19 @@ static void force_reference_clauses(plotter *pl, const force_fig *ff, FILE *c, c
     if (ff->rigid_set >= 0)
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 2 "
                    "title \"rigid spheres (eq 22)\"", qdat, ff->rigid_set);
-    /* (the file's name is the user's text: it stays out of the command) */
-    if (ff->meas_set >= 0)
-        fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with points pt 6 ps 0.8 lc rgb \"#222222\" "
-                   "title \"measured (--data)\"", qdat, ff->meas_set);
+    /* each file in the key by its name: the user's text, quoted so that
+     * gnuplot expands nothing in it (adh_gp_quote); approach points open
+     * circles, retract points open triangles */
+    for (int i = 0; i < 2 * ff->nmeas; i++) {
+        if (ff->meas_set[i] < 0)
+            continue;
+        static const char *const colors[] = { "#222222", "#8e44ad", "#16a085", "#d35400" };
+        char name[ADH_GP_QUOTED_SIZE(128)];
+        adh_gp_quoted(ff->meas_file[i / 2]->name, name, sizeof name);
+        fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with points pt %d ps 0.8 lc rgb \"%s\" "
+                   "title %s.' %s' noenhanced", qdat, ff->meas_set[i], i % 2 ? 8 : 6, colors[(i / 2) % 4], name,
+                i % 2 ? "retract" : "approach");
+    }
     if (ff->ref_set[0] >= 0 || ff->ref_set[1] >= 0)
         fprintf(c, ", \\\n  keyentry with lines ls 9 title \"static equilibrium\"");
     if (!ff->models) {

@@ -2,28 +2,47 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 
-typedef struct { const char *sym; double f; } unit;
-static const unit lengths[] = { { "pm", 1e-12 }, { "nm", 1e-9 }, { "um", 1e-6 }, { "\xc2\xb5m", 1e-6 },
-                                { "mm", 1e-3 }, { "m", 1 } };
-static const unit forces[] = { { "pN", 1e-12 }, { "nN", 1e-9 }, { "uN", 1e-6 }, { "\xc2\xb5N", 1e-6 },
-                               { "mN", 1e-3 }, { "N", 1 } };
+#define MAX_COLS 64
 
-/* The unit a header token names: inside [] or (), or after _ or /
- * ("h0[nm]", "F(nN)", "force_pN", "h0/nm"). 0 when none of the list. */
-static double unit_of(const char *tok, const unit *u, size_t nu)
+typedef struct unit { const char *sym; double f; } unit;
+/* micro as "u", the micro sign U+00B5 and the Greek mu U+03BC */
+static const unit lengths[] = { { "pm", 1e-12 }, { "nm", 1e-9 }, { "um", 1e-6 }, { "\xc2\xb5m", 1e-6 },
+                                { "\xce\xbcm", 1e-6 }, { "mm", 1e-3 }, { "m", 1 } };
+static const unit forces[] = { { "pN", 1e-12 }, { "nN", 1e-9 }, { "uN", 1e-6 }, { "\xc2\xb5N", 1e-6 },
+                               { "\xce\xbcN", 1e-6 }, { "mN", 1e-3 }, { "N", 1 } };
+#define NUNITS(u) (sizeof u / sizeof u[0])
+
+const char *adh_measured_dir_name(int dir)
 {
-    const char *p = tok + strcspn(tok, "[(_/");
-    if (!*p)
+    return dir > 0 ? "approach" : "retract";
+}
+
+/* The unit a header name gives: inside [] or (), or after _ or /
+ * ("h0[nm]", "Force (nN)", "force_pN", "h0/nm"). 0 when none of the list. */
+static double unit_of(const char *name, const unit *u, size_t nu)
+{
+    const char *p = strrchr(name, '(');
+    if (!p || (strrchr(name, '[') && strrchr(name, '[') > p))
+        p = strrchr(name, '[');
+    if (!p)
+        p = strrchr(name, '_');
+    if (!p)
+        p = strrchr(name, '/');
+    if (!p)
         return 0;
     char sym[16];
     size_t k = 0;
-    for (p++; *p && *p != ']' && *p != ')' && k + 1 < sizeof sym; p++)
+    for (p++; *p == ' '; p++)
+        ;
+    for (; *p && *p != ']' && *p != ')' && *p != ' ' && k + 1 < sizeof sym; p++)
         sym[k++] = *p;
     sym[k] = '\0';
     for (size_t i = 0; i < nu; i++)
@@ -32,45 +51,345 @@ static double unit_of(const char *tok, const unit *u, size_t nu)
     return 0;
 }
 
-/* Splits line into at most 3 tokens at blanks, tabs and commas. */
-static int split(char *line, char **tok)
+static char *trim(char *s)
+{
+    while (*s == ' ' || *s == '\t')
+        s++;
+    size_t n = strlen(s);
+    while (n && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r' || s[n - 1] == '\n'))
+        s[--n] = '\0';
+    return s;
+}
+
+/* The separator of a file, from its first line with content: a tab, a
+ * comma, a semicolon, else blanks. */
+static char separator_of(const char *line)
+{
+    return strchr(line, '\t') ? '\t' : strchr(line, ',') ? ',' : strchr(line, ';') ? ';' : ' ';
+}
+
+/* Splits line in place into fields. Blank-separated, a field that is a unit
+ * alone ("(nm)", "[nN]") joins the name before it ("h0 (nm)"). Returns the
+ * count, or MAX_COLS + 1 when there are more. */
+static int split(char *line, char sep, char **f)
 {
     int n = 0;
-    for (char *p = strtok(line, " \t,\r\n"); p; p = strtok(NULL, " \t,\r\n"))
-        if (n < 3)
-            tok[n++] = p;
-        else
-            return 4;
+    if (sep != ' ') {
+        for (char *p = line;; n++) {
+            char *end = strchr(p, sep);
+            if (n == MAX_COLS)
+                return MAX_COLS + 1;
+            if (end)
+                *end = '\0';
+            f[n] = trim(p);
+            if (!end) {
+                n++;
+                break;
+            }
+            p = end + 1;
+        }
+        return n == 1 && !*f[0] ? 0 : n;
+    }
+    char *save = NULL;
+    for (char *p = strtok_r(line, " \t,;\r\n", &save); p; p = strtok_r(NULL, " \t,;\r\n", &save)) {
+        if (n > 0 && (*p == '(' || *p == '[') && !isdigit((unsigned char)p[1]) && p[1] != '-' && p[1] != '.') {
+            f[n - 1][strlen(f[n - 1])] = ' ';   /* the blank strtok cut: the unit joins its name */
+            continue;
+        }
+        if (n == MAX_COLS)
+            return MAX_COLS + 1;
+        f[n++] = p;
+    }
     return n;
 }
 
-static int number(const char *s, double *v)
+/* A number in field s: 0, or -1 with what it is instead in why ("is not
+ * a number", "is too small for a double ..."). */
+static int number(const char *s, double *v, char *why, size_t whylen)
 {
     char *end;
     errno = 0;
     *v = strtod(s, &end);
-    return end != s && !*end && errno != ERANGE && isfinite(*v);
+    if (end == s || *end)
+        snprintf(why, whylen, "is not a number");
+    else if (!isfinite(*v))
+        snprintf(why, whylen, "is not a finite number (a gap in the measurement?)");
+    else if (errno == ERANGE || (*v != 0 && fabs(*v) < DBL_MIN))
+        snprintf(why, whylen, fabs(*v) < 1 ? "is too small for a double (it underflows: magnitudes below 2.2e-308 "
+                                             "are not kept); write 0 for zero"
+                                           : "is too large for a double (above 1.8e308)");
+    else
+        return 0;
+    return -1;
 }
 
-/* Why a token that reads as a number whole is still refused: out of a
- * double's range or not finite; NULL when it is no number at all. */
-static const char *out_of_range(const char *s)
+/* The name of a header field without its unit, lower case. */
+static void bare_name(const char *field, char *out, size_t len)
+{
+    size_t k = 0;
+    for (const char *p = field; *p && !strchr("[(_/", *p) && k + 1 < len; p++)
+        out[k++] = (char)tolower((unsigned char)*p);
+    while (k && out[k - 1] == ' ')
+        k--;
+    out[k] = '\0';
+}
+
+static int is_word(const char *name, const char *const *words)
+{
+    for (; *words; words++)
+        if (strcmp(name, *words) == 0)
+            return 1;
+    return 0;
+}
+
+/* One column named by spec: a 1-based number or a header name (a unique
+ * prefix will do). -1 with why when it names none or several. */
+static int column_of(const char *spec, char **hdr, int nh, int ncols, char *why, size_t whylen)
 {
     char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (end == s || *end)
-        return NULL;
-    if (errno == ERANGE)
-        return fabs(v) < 1 ? "is too small for a double (it underflows: magnitudes below 2.2e-308 are not kept); "
-                             "write 0 for zero"
-                           : "is too large for a double (above 1.8e308)";
-    return isfinite(v) ? NULL : "is not a finite number";
+    long k = strtol(spec, &end, 10);
+    if (end != spec && !*end) {
+        if (k < 1 || k > ncols) {
+            snprintf(why, whylen, "column %ld does not exist: the file has %d", k, ncols);
+            return -1;
+        }
+        return (int)k - 1;
+    }
+    if (!nh) {
+        snprintf(why, whylen, "column '%.40s' is named, but the file has no header: give its number", spec);
+        return -1;
+    }
+    int found = -1, exact = -1, nfound = 0;
+    char want[64], have[64];
+    bare_name(spec, want, sizeof want);
+    for (int i = 0; i < nh; i++) {
+        bare_name(hdr[i], have, sizeof have);
+        if (strcmp(have, want) == 0)
+            exact = i;
+        if (strncmp(have, want, strlen(want)) == 0) {
+            found = i;
+            nfound++;
+        }
+    }
+    if (exact >= 0)
+        return exact;
+    if (nfound != 1) {
+        snprintf(why, whylen, "column '%.40s' %s", spec, nfound ? "names more than one column: give more of the name or its number"
+                                                              : "is not in the header");
+        return -1;
+    }
+    return found;
+}
+
+/* The position and force columns: from spec "POS,FORCE", the only two, or
+ * the header's names. 0, or -1 with why. */
+static int choose_columns(const char *spec, char **hdr, int nh, int ncols, int *cx, int *cy, char *why,
+                          size_t whylen)
+{
+    if (spec && *spec) {
+        char buf[256];
+        snprintf(buf, sizeof buf, "%s", spec);
+        char *comma = strchr(buf, ',');
+        if (!comma || strchr(comma + 1, ',')) {
+            snprintf(why, whylen, "--columns=%.60s: give two columns, POS,FORCE (numbers from 1 or header names)", spec);
+            return -1;
+        }
+        *comma = '\0';
+        if ((*cx = column_of(trim(buf), hdr, nh, ncols, why, whylen)) < 0 ||
+            (*cy = column_of(trim(comma + 1), hdr, nh, ncols, why, whylen)) < 0)
+            return -1;
+        if (*cx == *cy) {
+            snprintf(why, whylen, "--columns=%.60s names one column twice", spec);
+            return -1;
+        }
+        return 0;
+    }
+    if (ncols == 2) {
+        *cx = 0;
+        *cy = 1;
+        return 0;
+    }
+    static const char *const pos[] = { "h0", "h", "z", "x", "d", "position", "separation", "distance", "height",
+                                       "displacement", "piezo", "tip-sample separation", "indentation", NULL };
+    static const char *const force[] = { "f", "force", "load", "vdeflection", NULL };
+    *cx = *cy = -1;
+    int nx = 0, ny = 0;
+    char name[64];
+    for (int i = 0; i < nh; i++) {
+        bare_name(hdr[i], name, sizeof name);
+        if (is_word(name, pos)) {
+            *cx = i;
+            nx++;
+        }
+        if (is_word(name, force)) {
+            *cy = i;
+            ny++;
+        }
+    }
+    if (nx == 1 && ny == 1)
+        return 0;
+    snprintf(why, whylen, "%d columns%s: say which are the position and the force with --columns=POS,FORCE "
+             "(numbers from 1 or header names)", ncols, nh ? " and no single position and force name among them" : " and no header");
+    return -1;
+}
+
+/* Appends a point, growing the arrays. 0 or -1 (out of memory). */
+static int push(adh_measured *m, size_t *cap, double x, double y, size_t line)
+{
+    if (m->n == *cap) {
+        size_t nc = *cap ? 2 * *cap : 256;
+        double *a = realloc(m->h0, nc * sizeof *a);
+        if (!a)
+            return -1;
+        m->h0 = a;
+        double *b = realloc(m->F, nc * sizeof *b);
+        if (!b)
+            return -1;
+        m->F = b;
+        size_t *c = realloc(m->line, nc * sizeof *c);
+        if (!c)
+            return -1;
+        m->line = c;
+        *cap = nc;
+    }
+    m->h0[m->n] = x;
+    m->F[m->n] = y;
+    m->line[m->n] = line;
+    m->n++;
+    return 0;
+}
+
+/* Segments where the position turns. A position that repeats the one
+ * before (a turn written twice) continues the segment it is in. A segment
+ * of fewer than 3 points between turns is a position going back and
+ * forth, not a segment: it is noted (nonmonotonic_line). 0, or -1 with why
+ * for a file whose positions never change or turn too often. */
+static int segments(adh_measured *m, char *why, size_t whylen)
+{
+    m->nseg = 0;
+    size_t i = 0;
+    while (i + 1 < m->n) {
+        size_t k = i;
+        while (k + 1 < m->n && m->h0[k + 1] == m->h0[i])
+            k++;
+        if (k + 1 == m->n) {   /* the rest repeats one position */
+            if (m->nseg == 0) {
+                snprintf(why, whylen, "%s:%zu: the position never changes (%g m): a position column must", m->path,
+                         m->line[m->n - 1], m->h0[i]);
+                return -1;
+            }
+            m->seg[m->nseg - 1].n = m->n - m->seg[m->nseg - 1].first;
+            break;
+        }
+        int dir = m->h0[k + 1] < m->h0[k] ? 1 : -1;
+        size_t j = k + 1;
+        while (j + 1 < m->n && (m->h0[j + 1] - m->h0[j]) * (dir > 0 ? -1 : 1) >= 0)
+            j++;
+        size_t n = j - i + 1;
+        if (m->nseg > 0 && n < 3 && j + 1 < m->n && !m->nonmonotonic_line)
+            m->nonmonotonic_line = m->line[i + 1];
+        if (m->nseg == ADH_MEASURED_MAX_SEGMENTS) {
+            snprintf(why, whylen, "%s:%zu: more than %d segments (the position turns too often)", m->path,
+                     m->line[i], ADH_MEASURED_MAX_SEGMENTS);
+            return -1;
+        }
+        /* a segment shares its turning point with the next */
+        m->seg[m->nseg++] = (adh_measured_segment){ .first = i, .n = n, .dir = dir };
+        i = j;
+        if (j + 1 == m->n)
+            break;
+    }
+    return 0;
+}
+
+/* The header line: the column names, and the units of the chosen two. */
+static int header(adh_measured *m, char **f, int nf, const char *columns, int *cx, int *cy, double *fx,
+                  double *fy, size_t lineno, char *why, size_t whylen)
+{
+    char msg[512];
+    if (choose_columns(columns, f, nf, nf, cx, cy, msg, sizeof msg) != 0) {
+        snprintf(why, whylen, "%s:%zu: %s", m->path, lineno, msg);
+        return -1;
+    }
+    *fx = unit_of(f[*cx], lengths, NUNITS(lengths));
+    *fy = unit_of(f[*cy], forces, NUNITS(forces));
+    if (*fx == 0 || *fy == 0) {
+        snprintf(why, whylen, "%s:%zu: the header's '%.60s' does not name the %s unit: write e.g. 'h0 (nm)' "
+                 "and 'F (nN)' (lengths pm nm um mm m, forces pN nN uN mN N; um or \xc2\xb5m)", m->path, lineno,
+                 *fx == 0 ? f[*cx] : f[*cy], *fx == 0 ? "position's" : "force's");
+        return -1;
+    }
+    snprintf(m->columns, sizeof m->columns, "%.70s, %.70s", f[*cx], f[*cy]);
+    return 0;
+}
+
+/* One line: a header before any point, else a point. 0, or -1 with why. */
+static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, const char *columns, char *sep,
+                      int *ncols, int *cx, int *cy, double *fx, double *fy, size_t *cap, char *why, size_t whylen)
+{
+    if (memchr(line, '\0', len)) {
+        snprintf(why, whylen, "%s:%zu: a NUL byte: this is not a text table (a binary file?)", m->path, lineno);
+        return -1;
+    }
+    char *hash = strchr(line, '#');
+    if (hash)
+        *hash = '\0';
+    if (!*trim(line))
+        return 0;
+    if (!*sep)
+        *sep = separator_of(line);
+    char *f[MAX_COLS + 1], msg[256];
+    int nf = split(line, *sep, f);
+    if (nf == 0)
+        return 0;
+    if (nf > MAX_COLS) {
+        snprintf(why, whylen, "%s:%zu: more than %d columns", m->path, lineno, MAX_COLS);
+        return -1;
+    }
+    double v;
+    int first_number = number(f[0], &v, msg, sizeof msg) == 0;
+    if (!*ncols && !first_number && m->n == 0) {   /* the header */
+        *ncols = nf;
+        return header(m, f, nf, columns, cx, cy, fx, fy, lineno, why, whylen);
+    }
+    if (!*ncols) {   /* the first point, without a header: nm and nN */
+        *ncols = nf;
+        if (choose_columns(columns, NULL, 0, nf, cx, cy, msg, sizeof msg) != 0) {
+            snprintf(why, whylen, "%s:%zu: %s", m->path, lineno, msg);
+            return -1;
+        }
+    }
+    if (nf != *ncols) {
+        snprintf(why, whylen, "%s:%zu: %d column%s where the file has %d", m->path, lineno, nf, nf == 1 ? "" : "s",
+                 *ncols);
+        return -1;
+    }
+    double x, y;
+    for (int c = 0; c < 2; c++) {
+        int col = c ? *cy : *cx;
+        if (number(f[col], c ? &y : &x, msg, sizeof msg) != 0) {
+            snprintf(why, whylen, "%s:%zu: '%.40s' %s (column %d, the %s)", m->path, lineno, f[col], msg, col + 1,
+                     c ? "force" : "position");
+            return -1;
+        }
+    }
+    if (m->n == ADH_MEASURED_MAX_POINTS) {
+        snprintf(why, whylen, "%s:%zu: more than a measured curve may hold (%d MiB, %d points): thin it (every k-th "
+                 "point) or cut it to the range you compare", m->path, lineno, ADH_MEASURED_MAX_BYTES >> 20,
+                 ADH_MEASURED_MAX_POINTS);
+        return -1;
+    }
+    if (push(m, cap, x * *fx, y * *fy, lineno) != 0) {
+        snprintf(why, whylen, "%s:%zu: out of memory", m->path, lineno);
+        return -1;
+    }
+    return 0;
 }
 
 /* One line of f into buf (at most cap - 1 bytes, its newline kept): its
- * length, 0 at the end, -1 when longer than that (buf then holds its first
- * cap - 1 bytes; the rest is not read). A NUL byte is kept, and counted. */
+ * length, 0 at the end, -1 when longer than that (the rest is not read):
+ * memory is bounded before a byte is read. A NUL byte is kept, and
+ * counted. */
 static long read_line(FILE *f, char *buf, size_t cap)
 {
     size_t n = 0;
@@ -92,104 +411,52 @@ void adh_measured_free(adh_measured *m)
 {
     free(m->h0);
     free(m->F);
+    free(m->line);
     m->h0 = m->F = NULL;
-    m->n = 0;
+    m->line = NULL;
+    m->n = m->nseg = 0;
 }
 
-int adh_measured_load(const char *path, adh_measured *m, char *why, size_t whylen)
+int adh_measured_load(const char *path, const char *columns, adh_measured *m, char *why, size_t whylen)
 {
     memset(m, 0, sizeof *m);
+    snprintf(m->path, sizeof m->path, "%s", path);
+    const char *base = strrchr(path, '/');
+    snprintf(m->name, sizeof m->name, "%s", base && base[1] ? base + 1 : path);
     FILE *f = fopen(path, "r");
     if (!f) {
         snprintf(why, whylen, "%s: cannot read the measured curve: %s", path, strerror(errno));
         return -1;
     }
-    double fx = 1e-9, fy = 1e-9;   /* nm, nN */
+    double fx = 1e-9, fy = 1e-9;   /* nm, nN without a header */
     size_t cap = 0, lineno = 0, bytes = 0;
-    int header_seen = 0;
-    char line[4096];
     struct stat st;
     if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > ADH_MEASURED_MAX_BYTES) {
         snprintf(why, whylen, "%s: %lld bytes, more than a measured curve may hold (%d MiB, %d points): thin it "
                  "(every k-th point) or cut it to the range you compare", path, (long long)st.st_size,
                  ADH_MEASURED_MAX_BYTES >> 20, ADH_MEASURED_MAX_POINTS);
-        goto bad;
+        fclose(f);
+        return -1;
     }
+    int ncols = 0, cx = 0, cy = 1;
+    char sep = 0, line[ADH_MEASURED_MAX_LINE + 2];
     long len;
     while ((len = read_line(f, line, sizeof line)) != 0) {
         lineno++;
-        if (len < 0 && !memchr(line, '\0', sizeof line - 1)) {
-            snprintf(why, whylen, "%s:%zu: line longer than %zu characters", path, lineno, sizeof line - 2);
+        bytes += len < 0 ? sizeof line : (size_t)len;
+        if (len < 0) {
+            snprintf(why, whylen, "%s:%zu: line longer than %d bytes", path, lineno, ADH_MEASURED_MAX_LINE);
             goto bad;
         }
-        if (memchr(line, '\0', len < 0 ? sizeof line - 1 : (size_t)len)) {
-            snprintf(why, whylen, "%s:%zu: a NUL byte: not a text file (a measured curve is text, a drive position "
-                     "and a force a line)", path, lineno);
-            goto bad;
-        }
-        bytes += (size_t)len;
-        if (bytes > ADH_MEASURED_MAX_BYTES || m->n == ADH_MEASURED_MAX_POINTS) {
+        if (bytes > ADH_MEASURED_MAX_BYTES) {   /* a pipe or a file that grew: fstat could not tell */
             snprintf(why, whylen, "%s:%zu: more than a measured curve may hold (%d MiB, %d points): thin it "
                      "(every k-th point) or cut it to the range you compare", path, lineno,
                      ADH_MEASURED_MAX_BYTES >> 20, ADH_MEASURED_MAX_POINTS);
             goto bad;
         }
-        char *hash = strchr(line, '#');
-        if (hash)
-            *hash = '\0';
-        char copy[4096], *tok[3];
-        snprintf(copy, sizeof copy, "%s", line);
-        int nt = split(copy, tok);
-        if (nt == 0)
-            continue;
-        double x, y;
-        if (nt == 2 && number(tok[0], &x) && number(tok[1], &y)) {
-            if (m->n == cap) {
-                size_t nc = cap ? 2 * cap : 256;
-                double *a = realloc(m->h0, nc * sizeof *a);
-                if (a)
-                    m->h0 = a;
-                double *b = a ? realloc(m->F, nc * sizeof *b) : NULL;
-                if (!b) {
-                    snprintf(why, whylen, "%s:%zu: out of memory", path, lineno);
-                    goto bad;
-                }
-                m->F = b;
-                cap = nc;
-            }
-            m->h0[m->n] = x * fx;
-            m->F[m->n] = y * fy;
-            m->n++;
-            continue;
-        }
-        /* a header, before any number: it must name both units */
-        if (nt == 2 && m->n == 0 && !header_seen && !isdigit((unsigned char)tok[0][0]) && tok[0][0] != '-' &&
-            tok[0][0] != '+' && tok[0][0] != '.') {
-            fx = unit_of(tok[0], lengths, sizeof lengths / sizeof lengths[0]);
-            fy = unit_of(tok[1], forces, sizeof forces / sizeof forces[0]);
-            if (fx == 0 || fy == 0) {
-                snprintf(why, whylen, "%s:%zu: the header '%s %s' does not name the %s unit: write e.g. "
-                         "'h0[nm] F[nN]' (lengths pm nm um mm m, forces pN nN uN mN N)", path, lineno, tok[0],
-                         tok[1], fx == 0 ? "position's" : "force's");
-                goto bad;
-            }
-            header_seen = 1;
-            continue;
-        }
-        const char *range = nt == 2 ? out_of_range(tok[0]) : NULL;
-        int which = range ? 0 : 1;
-        if (!range && nt == 2)
-            range = out_of_range(tok[1]);
-        if (range) {
-            snprintf(why, whylen, "%s:%zu: '%.60s' %s", path, lineno, tok[which], range);
+        if (parse_line(m, line, (size_t)len, lineno, columns, &sep, &ncols, &cx, &cy, &fx, &fy, &cap, why,
+                       whylen) != 0)
             goto bad;
-        }
-        char *nl = strpbrk(line, "\r\n");
-        if (nl)
-            *nl = '\0';
-        snprintf(why, whylen, "%s:%zu: '%.60s' is not two numbers: each line is a drive position and a force "
-                 "(nm and nN, or the units a header names, e.g. 'h0[nm] F[nN]')", path, lineno, line);
-        goto bad;
     }
     if (ferror(f)) {
         snprintf(why, whylen, "%s:%zu: read error: %s", path, lineno, strerror(errno));
@@ -200,6 +467,8 @@ int adh_measured_load(const char *path, adh_measured *m, char *why, size_t whyle
                  m->n == 1 ? "" : "s");
         goto bad;
     }
+    if (segments(m, why, whylen) != 0)
+        goto bad;
     fclose(f);
     return 0;
 bad:

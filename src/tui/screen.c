@@ -370,11 +370,12 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
         ymin = fmin(ymin, rows[i].F);
         ymax = fmax(ymax, rows[i].F);
     }
-    for (size_t i = 0; meas && i < meas->n; i++) {
-        xmin = fmin(xmin, meas->h0[i]);
-        xmax = fmax(xmax, meas->h0[i]);
-        ymin = fmin(ymin, meas->F[i]);
-        ymax = fmax(ymax, meas->F[i]);
+    for (const adh_measured *m = meas; m; m = m->next)   /* every --data file */
+    for (size_t i = 0; i < m->n; i++) {
+        xmin = fmin(xmin, m->h0[i]);
+        xmax = fmax(xmax, m->h0[i]);
+        ymin = fmin(ymin, m->F[i]);
+        ymax = fmax(ymax, m->F[i]);
     }
     if (xmax - xmin < s->cfg.spec.proto.step) {
         xmin -= s->cfg.spec.proto.step;
@@ -392,9 +393,10 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     for (int c = 0; c < pw; c++)
         grid[zero * pw + c] = '-';
     /* the measurement under the computed path: where they meet, the model shows */
-    for (size_t i = 0; meas && i < meas->n; i++) {
-        int c = (int)lround((meas->h0[i] - xmin) / (xmax - xmin) * (pw - 1));
-        int r = (int)lround((ymax - meas->F[i]) / (ymax - ymin) * (ph - 1));
+    for (const adh_measured *m = meas; m; m = m->next)
+    for (size_t i = 0; i < m->n; i++) {
+        int c = (int)lround((m->h0[i] - xmin) / (xmax - xmin) * (pw - 1));
+        int r = (int)lround((ymax - m->F[i]) / (ymax - ymin) * (ph - 1));
         grid[r * pw + c] = 'x';
     }
     /* loading first, so unloading shows where they meet; in static mode

@@ -24,3 +24,6 @@ ADHERE=./adhere tests/bench/soft.sh
 echo
 # shellcheck disable=SC2086 # the sizes are words
 "$BUILD/tests/bench-operator" "${BENCH_DENSE_MAX:-10000}" "${BENCH_HMAT_MAX:-100000}" ${BENCH_OPERATOR_N:-1000 3000 10000 30000 100000}
+echo
+# adhere fit: E and A to the shipped 200-point Figure 1 curve, evaluations and seconds
+"$BUILD/tests/bench-fit"

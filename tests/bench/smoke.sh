@@ -30,6 +30,8 @@ bench static_soft 2.25
 bench static 300
 # the kernel storages at N = 200 and 400 (dense and hmat-oss at 200 only)
 bench operator 200 200 200 400
+# adhere fit on the shipped curve, one start, on a coarse grid
+bench fit 300 2.5e-9
 # the soft-contact relaxation goals through the CLI, each run a few steps
 if SOFT_SMOKE=1 ADHERE="${ADHERE_BIN:-./adhere}" tests/bench/soft.sh >"$out" 2>&1; then
     ok "soft.sh runs ($(wc -l <"$out") lines)"

@@ -212,19 +212,24 @@ GPLOG=$T/data.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-2
     --plots=force --data="$q" -o "$D" 2>"$T/data.err"
 rc=$?
 check '[ $rc -eq 0 ] && [ "$(png_size "$D/force.png")" = "$size" ]' "--data: force.png made ($rc: $(head -c 200 "$T/data.err"))"
-i=$(index_of 'with points .*title "measured \(--data\)"' "$T/data.gp")
+i=$(index_of "with points .*title 'it'.+txt'[.]' retract'" "$T/data.gp")
 check '[ -n "$i" ] && [ "$(dataset "$i" "$T/data.gp.force.dat" | awk "{printf \"%.6g %.6g\\n\", \$1, \$2}" | tr "\n" " ")" = "2e-09 -1.5e-07 4e-09 -1.2e-07 6e-09 -5e-08 " ]' \
-    "the measured points are drawn (index $i), in the units the header names (um, pN)"
-check '! grep -q "measured\\\\\"\\.txt\|it.s" "$T/data.gp"' "the file's name never reaches gnuplot's commands"
+    "the measured points are drawn (index $i), in the units the header names (um, pN), named in the key"
+printf '%s' "it's" >"$T/rawname"
+cat >"$T/quotedname" <<'QUOTED'
+title 'it'."\047".'s "measured".txt'.' retract'
+QUOTED
+check '! grep -qFf "$T/rawname" "$T/data.gp" && grep -qFf "$T/quotedname" "$T/data.gp"' \
+    "the file's name reaches gnuplot's commands only as adh_gp_quote writes it, in the key"
 printf '1 -2\n3 -4\n5 oops\n' >"$T/bad.txt"
 "$BIN" $RUN --turn=-2nm --data="$T/bad.txt" -o "$T/baddata" 2>"$T/bad.err"
 rc=$?
-check '[ $rc -eq 2 ] && grep -q "^$T/bad.txt:3: .5 oops. is not two numbers" "$T/bad.err" && [ ! -e "$T/baddata/force.tsv" ]' \
+check '[ $rc -eq 2 ] && grep -q "^adhere: $T/bad.txt:3: .oops. is not a number (column 2, the force)" "$T/bad.err" && [ ! -e "$T/baddata/force.tsv" ]' \
     "a malformed --data file is refused with FILE:LINE and exit 2 before the run ($rc: $(cat "$T/bad.err"))"
 printf 'z force\n1 2\n3 4\n' >"$T/nounit.txt"
 "$BIN" $RUN --turn=-2nm --data="$T/nounit.txt" -o "$T/nounit" 2>"$T/nounit.err"
 rc=$?
-check '[ $rc -eq 2 ] && grep -q "nounit.txt:1: the header .z force. does not name the position.s unit" "$T/nounit.err"' \
+check '[ $rc -eq 2 ] && grep -q "^adhere: .*nounit.txt:1: the header.s .z. does not name the position.s unit" "$T/nounit.err"' \
     "a header without units is refused, naming what to write ($(cat "$T/nounit.err"))"
 
 # --- --no-plot ------------------------------------------------------------

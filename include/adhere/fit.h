@@ -1,0 +1,125 @@
+/* Fitting the model to a measured force curve: the parameters that make
+ * the model's force match measured forces at measured drive positions, in
+ * the least-squares sense, by GSL's nonlinear least squares
+ * (gsl_multifit_nlinear, Levenberg-Marquardt trust region).
+ *
+ * The residual of point i is  F_i - baseline - F_model(x_i - offset), the
+ * model's branch chosen per point (adhere/fitmodel.h). The free parameters
+ * are searched in scaled coordinates: log(p / start) for E, A, z0 and R
+ * (positive, and a factor is what matters), offset / z0 and
+ * baseline / |F_JKR| at the start. The Jacobian is forward differences of
+ * the model for E, A, z0 and R (one model evaluation each), and exact for
+ * the offset (the branch's slope) and the baseline (-1).
+ *
+ *   adh_fit *f = adh_fit_alloc(g, k, &data, &settings);
+ *   adh_fit_run(f, &result);      (progress per evaluation through a callback)
+ *   adh_fit_free(f);
+ *
+ * No I/O. */
+#ifndef ADHERE_FIT_H
+#define ADHERE_FIT_H
+
+#include <signal.h>
+#include <stddef.h>
+#include "adhere/fitmodel.h"
+#include "adhere/grid.h"
+#include "adhere/kernel.h"
+#include "adhere/params.h"
+
+typedef enum adh_fit_param {
+    ADH_FIT_E = 0, ADH_FIT_A, ADH_FIT_Z0, ADH_FIT_R, ADH_FIT_OFFSET, ADH_FIT_BASELINE, ADH_FIT_NPARAM
+} adh_fit_param;
+
+/* "E", "A", "z0", "R", "offset", "baseline". */
+const char *adh_fit_param_name(adh_fit_param p);
+/* The parameter a name (as above, case-insensitive) means: 0, or -1. */
+int adh_fit_param_parse(const char *name, adh_fit_param *p);
+
+/* Why a parameter's value cannot be trusted (result.flags[p]). */
+enum {
+    ADH_FIT_AT_LIMIT = 1,     /* it ran to the end of its search range */
+    ADH_FIT_UNDETERMINED = 2  /* its standard error is above its value (or J is singular) */
+};
+
+typedef struct adh_fit_progress {
+    size_t evals;            /* model evaluations so far */
+    size_t iterations;       /* trust-region iterations so far */
+    double value[ADH_FIT_NPARAM];   /* the point just evaluated */
+    double chi2;             /* its sum of squared residuals, N^2; INFINITY when the model failed */
+    double best_chi2;        /* the best so far */
+    int jacobian;            /* 1: an evaluation for a finite difference */
+} adh_fit_progress;
+
+/* The fit stops when the trust region's next trial step would move every
+ * free parameter by less than this fraction of its standard error (the
+ * data cannot tell such points apart; further steps would chase the
+ * model's own noise), or an accepted step moved each by less than xtol. */
+#define ADH_FIT_STEP_SE 0.1
+
+typedef struct adh_fit_settings {
+    unsigned free;                 /* mask of 1u << adh_fit_param */
+    adh_material start;            /* start values (and the fixed ones) */
+    double offset, baseline;       /* start values, m and N */
+    adh_fit_model_settings model;  /* which model, its solver settings */
+    size_t max_iter;               /* trust-region iterations (default 50) */
+    double xtol;                   /* stop when a step changes every scaled parameter by less (1e-4) */
+    double fd_step;                /* forward-difference step in log(p) (default 1e-2: the model's own noise, the lattice's, must stay small beside the change) */
+    double range;                  /* a factor: E, A, z0, R are searched within start / range
+                                      .. start * range, clipped to the model's limits (default 100) */
+    const volatile sig_atomic_t *cancel;   /* raised: stop with the best so far (ADH_EINTR) */
+    /* called after every model evaluation; nonzero stops as cancel does */
+    int (*progress)(const adh_fit_progress *p, void *ctx);
+    void *ctx;
+} adh_fit_settings;
+
+adh_fit_settings adh_fit_settings_default(void);
+
+typedef struct adh_fit_result {
+    int status;              /* ADH_SUCCESS; ADH_EINTR (partial: the best so far);
+                                ADH_EMAXITER; or the model's error at the start */
+    unsigned free;
+    double value[ADH_FIT_NPARAM];   /* best values (SI: Pa, J, m, m, m, N) */
+    double se[ADH_FIT_NPARAM];      /* standard errors (NAN for fixed ones) */
+    double corr[ADH_FIT_NPARAM][ADH_FIT_NPARAM];   /* correlations among the free ones */
+    unsigned flags[ADH_FIT_NPARAM]; /* ADH_FIT_AT_LIMIT, ADH_FIT_UNDETERMINED */
+    adh_material best;       /* the best material */
+    size_t n, nfree;         /* points, free parameters */
+    double chi2;             /* sum of squared residuals, N^2 */
+    double rms;              /* sqrt(chi2 / n), N */
+    double noise;            /* the data's own scatter (adh_fit_noise), N */
+    double chi2_red;         /* chi2 / (noise^2 (n - nfree)): about 1 when the model fits */
+    size_t evals, failed;    /* model evaluations, and those that failed */
+    size_t iterations;
+    double seconds;
+    int gsl_info;            /* why it stopped: 1 small step (xtol), 2 small gradient, 3 no step
+                                lowers chi2, 4 the next step below ADH_FIT_STEP_SE */
+} adh_fit_result;
+
+typedef struct adh_fit adh_fit;
+
+/* The grid, kernel and data are borrowed and must outlive the fit. NULL
+ * with ADH_EINVAL (no free parameter, fewer points than free parameters)
+ * or ADH_ENOMEM in *status. */
+adh_fit *adh_fit_alloc(const adh_grid *g, const adh_kernel *k, const adh_fit_data *d, const adh_fit_settings *s,
+                       int *status);
+void adh_fit_free(adh_fit *f);
+
+/* Runs the fit. res is filled whatever the status (the best point found). */
+int adh_fit_run(adh_fit *f, adh_fit_result *res);
+
+/* The model's whole curve at the best point (one more evaluation; in the
+ * model's coordinates, without offset and baseline): its length, 0 when it
+ * fails; the arrays are borrowed until the next evaluation. */
+size_t adh_fit_best_curve(adh_fit *f, const double **h0, const double **F, const int **stable);
+
+/* The residuals of the best point (n of them, N), and its model forces. */
+const double *adh_fit_residuals(const adh_fit *f);
+const double *adh_fit_model_forces(const adh_fit *f);
+
+/* The data's own scatter, N: per segment the second differences of the
+ * force at neighbouring points (the jump's left out), 1.4826 median |d2| /
+ * sqrt(6), a robust standard deviation of independent noise on a curve
+ * smooth at the points' spacing. NAN for fewer than 5 points. */
+double adh_fit_noise(const adh_fit_data *d);
+
+#endif

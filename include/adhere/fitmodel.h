@@ -1,0 +1,85 @@
+/* The model a fit holds against measured points (adhere/fit.h): the force
+ * at each point's drive position, from the branch that point is on.
+ *
+ * The static model (default) follows the equilibrium curve (adhere/static.h)
+ * from above the highest point down past the deepest: its outer branch runs
+ * from the start to the first fold (the jump-in), its contact branch from
+ * the fold with the largest h0 after it (the jump-out) to the end, with the
+ * lattice folds' few picometres of back-and-forth left out (only points
+ * below every earlier one are kept). Which of the two a point is compared
+ * with is the data's own word: a point past the data's jump (contact = 1)
+ * against the contact branch, the others against the outer branch. So the
+ * residuals are continuous in the parameters (a model jump moving past a
+ * point does not switch its branch); a point where its branch does not
+ * reach (past the model's fold) takes the branch's end value, and the
+ * misfit grows with the distance to it.
+ *
+ * The relaxation model (on request) runs the paper's protocol with one turn
+ * below the deepest point: approach points against its loading branch,
+ * retract points against its unloading branch, as the drive ran them.
+ *
+ * Between the curve's points a monotone cubic (GSL's Steffen interpolation)
+ * gives the force and its slope. The solver is allocated once and reused by
+ * every evaluation (a dense copy of the kernel, or its HODLR form); each
+ * evaluation traces the whole curve for its material. No I/O. */
+#ifndef ADHERE_FITMODEL_H
+#define ADHERE_FITMODEL_H
+
+#include <stddef.h>
+#include "adhere/grid.h"
+#include "adhere/kernel.h"
+#include "adhere/params.h"
+#include "adhere/relax.h"
+#include "adhere/static.h"
+
+/* Measured points, in the model's units and sign (x: drive position, m,
+ * larger further apart; F: N, positive repulsive). */
+typedef struct adh_fit_data {
+    size_t n;
+    const double *x;
+    const double *F;
+    const int *dir;        /* +1 approach (x falls), -1 retract */
+    const int *contact;    /* 1: past the segment's jump (in contact), 0: before it */
+    const int *seg;        /* the segment of each point */
+} adh_fit_data;
+
+typedef enum adh_fit_model_kind { ADH_FIT_MODEL_STATIC = 0, ADH_FIT_MODEL_RELAX = 1 } adh_fit_model_kind;
+
+typedef struct adh_fit_model_settings {
+    adh_fit_model_kind kind;
+    adh_static_settings statics;   /* h0_start and h0_end are set per evaluation */
+    adh_relax_settings relax;      /* the relaxation model's */
+    double step;                   /* drive step of the relaxation, and the start's rounding, m */
+    double margin;                 /* the curve runs this far past the data's ends, m */
+} adh_fit_model_settings;
+
+adh_fit_model_settings adh_fit_model_settings_default(void);
+
+typedef struct adh_fit_model adh_fit_model;
+
+/* A trial far from the start can cost far more than the start (a large
+ * sigma on a grid chosen for a small one: every lattice fold resolved). Its
+ * curve is capped at this many times the first evaluation's points, and
+ * refused past them (ADH_EMAXITER): the fit steps back. */
+#define ADH_FIT_MODEL_POINTS_FACTOR 8
+
+/* g and k are borrowed. NULL when out of memory. */
+adh_fit_model *adh_fit_model_alloc(const adh_grid *g, const adh_kernel *k, const adh_fit_model_settings *s);
+void adh_fit_model_free(adh_fit_model *fm);
+
+/* The model's force at every point's position x_i - offset (F, N) and its
+ * slope dF/dh0 there (slope, N/m; may be NULL). ADH_SUCCESS, ADH_EINTR
+ * (the settings' cancel flag), or the solver's error (ADH_ESTALL,
+ * ADH_EGRID, ...: no value then). */
+int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, const adh_fit_data *d, double *F,
+                       double *slope);
+
+/* The branches of the last successful evaluation, ascending in h0: 0 the
+ * outer (static) or loading (relaxation) branch, 1 the contact or
+ * unloading branch. Their length; *h0 and *F borrowed. */
+size_t adh_fit_model_branch(const adh_fit_model *fm, int which, const double **h0, const double **F);
+
+/* The last evaluation's curve (every point, in the order solved; borrowed). */
+size_t adh_fit_model_curve(const adh_fit_model *fm, const double **h0, const double **F, const int **stable);
+
+#endif

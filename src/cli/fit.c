@@ -1,0 +1,264 @@
+#include "cli/fit.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/fit.h"
+#include "adhere/grid.h"
+#include "adhere/kernel.h"
+#include "adhere/status.h"
+#include "adhere/units.h"
+#include "cli/advice.h"
+#include "cli/batch.h"
+#include "cli/fitreport.h"
+#include "cli/interrupt.h"
+#include "util/ready.h"
+#include "plot/outdir.h"
+#include "scene/budget.h"
+#include "scene/config.h"
+#include "scene/fitdata.h"
+
+/* A fit refits on a grid chosen for its optimum at most this often. */
+#define MAX_REFITS 2
+
+typedef struct fit_run {
+    cli_options *cli;
+    adh_fit_settings fs;
+    adh_fitdata fd;
+    adh_grid *g;
+    adh_kernel *k;
+    double dr;                /* the built grid's (finest) spacing */
+    size_t nodes;
+    size_t evals;             /* over every fit */
+    double t0;
+} fit_run;
+
+static int parse_free(const char *text, unsigned *mask, char *why, size_t whylen)
+{
+    char buf[128], *save = NULL;
+    snprintf(buf, sizeof buf, "%s", *text ? text : "E,A");
+    *mask = 0;
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        adh_fit_param p;
+        if (adh_fit_param_parse(t, &p) != 0) {
+            snprintf(why, whylen, "--free: '%s' is not a parameter: use E, A, z0, R, offset and baseline, separated by commas", t);
+            return -1;
+        }
+        *mask |= 1u << p;
+    }
+    if (!*mask) {
+        snprintf(why, whylen, "--free: name at least one of E, A, z0, R, offset, baseline");
+        return -1;
+    }
+    return 0;
+}
+
+/* The fit's settings from the line and the scene: the start values, the
+ * free parameters, the model and its solver. */
+static int settings(fit_run *fr, char *why, size_t whylen)
+{
+    const cli_options *cli = fr->cli;
+    const adh_config *cfg = &cli->cfg;
+    fr->fs = adh_fit_settings_default();
+    if (parse_free(cli->fit.free, &fr->fs.free, why, whylen) != 0)
+        return -1;
+    const char *model = cli->fit.model;
+    if (*model && strcmp(model, "static") != 0 && strcmp(model, "relax") != 0) {
+        snprintf(why, whylen, "--model: '%s' is not a model: use static or relax", model);
+        return -1;
+    }
+    fr->fs.model.kind = strcmp(model, "relax") == 0 ? ADH_FIT_MODEL_RELAX : ADH_FIT_MODEL_STATIC;
+    fr->fs.model.relax = cfg->spec.relax;
+    fr->fs.model.step = cfg->spec.proto.step;
+    fr->fs.start = cfg->spec.mat;
+    fr->fs.offset = cli->fit.offset;
+    fr->fs.baseline = cli->fit.baseline;
+    fr->fs.cancel = cli_interrupt_flag();
+    return 0;
+}
+
+/* The configuration as the fit runs it: the mode its model is, one turn a
+ * step below the deepest point (the grid must hold the contact there), and
+ * the grid chosen for the start values when none was given. */
+static int configure(fit_run *fr, char *why, size_t whylen)
+{
+    adh_config *cfg = &fr->cli->cfg;
+    double lo = INFINITY, step = cfg->spec.proto.step;
+    for (size_t i = 0; i < fr->fd.d.n; i++)
+        lo = fmin(lo, fr->fd.d.x[i] - fr->fs.offset);
+    cfg->spec.mode = fr->fs.model.kind == ADH_FIT_MODEL_RELAX ? ADH_MODE_RELAX : ADH_MODE_STATIC;
+    cfg->spec.proto.nturns = 1;
+    cfg->spec.proto.turns[0] = step * floor(lo / step) - step;
+    cfg->spec.proto.unload = 1;
+    cfg->spec.proto.nprofiles = 0;
+    unsigned fix = 0;
+    if (adh_config_grid(cfg, why, whylen, &fix) != 0) {
+        cli_advice_append(why, whylen, fix);
+        return -1;
+    }
+    /* the checks every run meets, and memory for one static solver */
+    if (cli_options_validate(cfg, why, whylen) != 0 ||
+        adh_budget_check(&cfg->spec, cfg->spec.mode == ADH_MODE_STATIC, why, whylen) != 0)
+        return -1;
+    return 0;
+}
+
+static void release(fit_run *fr)
+{
+    adh_kernel_free(fr->k);
+    adh_grid_free(fr->g);
+    fr->k = NULL;
+    fr->g = NULL;
+}
+
+static int build(fit_run *fr, char *why, size_t whylen)
+{
+    const adh_config *cfg = &fr->cli->cfg;
+    int st = ADH_ENOMEM;
+    release(fr);
+    fr->g = adh_config_grid_alloc(&cfg->spec);
+    fr->k = fr->g ? adh_config_kernel_alloc(&cfg->spec, fr->g, &st) : NULL;
+    if (!fr->k) {
+        snprintf(why, whylen, "the grid or kernel of %zu nodes could not be built: %s", cfg->spec.grid.use.nodes, adh_strerror(st));
+        return -1;
+    }
+    fr->dr = adh_config_spacing(&cfg->spec);
+    fr->nodes = cfg->spec.grid.use.nodes;
+    return 0;
+}
+
+static int progress(const adh_fit_progress *p, void *ctx)
+{
+    const fit_run *fr = ctx;
+    adh_ready_mark();   /* the first evaluation is in: a test may signal now */
+    if (fr->cli->cfg.output.quiet)
+        return 0;
+    char line[512];
+    int n = snprintf(line, sizeof line, "  eval %3zu%s iter %2zu ", fr->evals + p->evals, p->jacobian ? " (J)" : "    ",
+                     p->iterations);
+    for (int i = 0; i < ADH_FIT_NPARAM && n < (int)sizeof line - 64; i++)
+        if (fr->fs.free & 1u << i)
+            n += snprintf(line + n, sizeof line - (size_t)n, " %s %.6g", adh_fit_param_name((adh_fit_param)i),
+                          p->value[i]);
+    fprintf(stderr, "%s  chi2 %.4g N^2  best %.4g\n", line, p->chi2, p->best_chi2);
+    return 0;
+}
+
+/* One fit on the grid built; then the resolution at its optimum. */
+static int fit_once(fit_run *fr, adh_fit_result *res, adh_fit **out)
+{
+    int st;
+    fr->fs.progress = progress;
+    fr->fs.ctx = fr;
+    adh_fit *f = adh_fit_alloc(fr->g, fr->k, &fr->fd.d, &fr->fs, &st);
+    if (!f)
+        return st;
+    adh_fit_run(f, res);
+    fr->evals += res->evals;
+    *out = f;
+    return res->status;
+}
+
+static int refuse(const char *why)
+{
+    fprintf(stderr, "adhere: %s\n", why);
+    return CLI_EXIT_USAGE;
+}
+
+int cli_fit_main(cli_options *cli)
+{
+    fit_run fr = { .cli = cli };
+    char why[2048];
+    adh_config *cfg = &cli->cfg;
+    if (settings(&fr, why, sizeof why) != 0)
+        return refuse(why);
+    if (adh_fitdata_make(cfg->output.measured, (size_t)__builtin_popcount(fr.fs.free), &fr.fs.start, fr.fs.offset, &fr.fd,
+                         why, sizeof why) != 0)
+        return refuse(why);
+    if (configure(&fr, why, sizeof why) != 0 || build(&fr, why, sizeof why) != 0) {
+        adh_fitdata_free(&fr.fd);
+        release(&fr);
+        return refuse(why);
+    }
+    /* the output directory opened (and locked) before the work */
+    const char *out = cfg->output.dir[0] ? cfg->output.dir : NULL;
+    adh_outdir *od = NULL;
+    if (out && !(od = adh_outdir_open(out, cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
+        adh_fitdata_free(&fr.fd);
+        release(&fr);
+        return refuse(why);
+    }
+    cli_interrupt_catch();
+    adh_ready_phase("fit");
+    adh_fit_result res;
+    adh_fit *f = NULL;
+    adh_grid_report gr;
+    int refits = 0, st;
+    adh_grid_use use = fr.fs.model.kind == ADH_FIT_MODEL_RELAX ? ADH_GRID_RELAX : ADH_GRID_STATIC;
+    for (;;) {
+        st = fit_once(&fr, &res, &f);
+        if (!f) {
+            cli_interrupt_release();
+            adh_outdir_close(od);
+            adh_fitdata_free(&fr.fd);
+            release(&fr);
+            snprintf(why, sizeof why, "the fit could not start: %s", adh_strerror(st));
+            return refuse(why);
+        }
+        adh_grid_check(&res.best, use, fr.nodes, fr.dr, &gr);
+        /* a grid chosen for the start may not resolve the optimum (E and A
+         * set sigma, hence the edge zone): choose again there, refit from it */
+        if (gr.resolved || !adh_config_grid_auto(&cfg->spec) || refits == MAX_REFITS || st == ADH_EINTR ||
+            !isfinite(res.chi2))
+            break;
+        if (!cfg->output.quiet)
+            fprintf(stderr, "adhere: the grid chosen for the start has %.2f nodes across the edge zone at the optimum "
+                    "(%.2f needed): choosing it again there and fitting from the optimum\n", gr.edge_nodes,
+                    1.0 / gr.limit);
+        cfg->spec.mat = res.best;
+        fr.fs.start = res.best;
+        fr.fs.offset = res.value[ADH_FIT_OFFSET];
+        fr.fs.baseline = res.value[ADH_FIT_BASELINE];
+        if (adh_config_grid(cfg, why, sizeof why, NULL) != 0 || build(&fr, why, sizeof why) != 0)
+            break;
+        adh_fit_free(f);
+        f = NULL;
+        refits++;
+    }
+    cli_interrupt_release();
+    cli_fit_report r = { .cfg = cfg, .fd = &fr.fd, .res = &res, .fs = &fr.fs, .model = adh_fit_model_forces(f),
+                         .resid = adh_fit_residuals(f), .grid_edge_nodes = gr.edge_nodes,
+                         .grid_resolved = gr.resolved, .refits = refits, .evals = fr.evals,
+                         .partial = st == ADH_EINTR };
+    /* the best model's whole curve, for the figure (one more evaluation) */
+    r.ncurve = isfinite(res.chi2) ? adh_fit_best_curve(f, &r.ch0, &r.cF, &r.cstable) : 0;
+    r.seconds = res.seconds;
+    cli_fit_print(stdout, &r);
+    int rc = CLI_EXIT_OK;
+    if (out && isfinite(res.chi2)) {
+        int wr = cli_fit_write(&r, od, cfg->output.plot, why, sizeof why);
+        if (wr != 0) {
+            fprintf(stderr, "adhere: %s\n", why);
+            rc = wr == 3 ? CLI_EXIT_PLOT : CLI_EXIT_USAGE;
+        }
+    }
+    const char *word;
+    int verdict = cli_fit_verdict(&r, &word);
+    if (!cfg->output.quiet && out && rc == CLI_EXIT_OK)
+        fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s; wrote fit.tsv, fit-points.tsv, best.scene%s "
+                "in %s (open it: adhere %s/best.scene)\n", word, fr.evals, res.seconds, cfg->output.plot ? ", fit.png" : "",
+                out, out);
+    else if (!cfg->output.quiet)
+        fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s\n", word, fr.evals, res.seconds);
+    adh_outdir_close(od);
+    adh_fit_free(f);
+    adh_fitdata_free(&fr.fd);
+    release(&fr);
+    if (r.partial)
+        return cli_interrupt_exit();
+    if (rc != CLI_EXIT_OK)
+        return rc;
+    return verdict ? CLI_EXIT_SOLVER : CLI_EXIT_OK;
+}

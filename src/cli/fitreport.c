@@ -1,0 +1,263 @@
+#include "cli/fitreport.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/kernel.h"
+#include "adhere/models.h"
+#include "adhere/params.h"
+#include "adhere/status.h"
+#include "adhere/units.h"
+#include "plot/fitplot.h"
+#include "plot/outdir.h"
+
+static const char *const units[ADH_FIT_NPARAM] = { "Pa", "J", "m", "m", "m", "N" };
+static const adh_quantity quantities[ADH_FIT_NPARAM] = { ADH_Q_PRESSURE, ADH_Q_ENERGY, ADH_Q_LENGTH, ADH_Q_LENGTH,
+                                                         ADH_Q_LENGTH, ADH_Q_FORCE };
+
+static int is_free(const cli_fit_report *r, int p)
+{
+    return (r->res->free & 1u << p) != 0;
+}
+
+int cli_fit_verdict(const cli_fit_report *r, const char **word)
+{
+    const adh_fit_result *res = r->res;
+    unsigned flags = 0;
+    for (int i = 0; i < ADH_FIT_NPARAM; i++)
+        flags |= res->flags[i];
+    *word = r->partial ? "partial (interrupted: the best point so far)"
+          : !isfinite(res->chi2) ? "failed (the model could not be evaluated)"
+          : flags ? "unidentifiable (a parameter is not determined by these data: not a fit)"
+          : res->status == ADH_EMAXITER ? "not converged (iteration cap)"
+          : res->status != ADH_SUCCESS ? "failed"
+          : res->chi2_red > CLI_FIT_POOR_CHI2 ? "poor fit (the residuals are well above the data's own scatter)"
+          : "fit";
+    return strcmp(*word, "fit") != 0;
+}
+
+static void value_text(int p, double v, char *buf, size_t len)
+{
+    if (p == ADH_FIT_OFFSET || p == ADH_FIT_BASELINE) {   /* may be 0 or negative */
+        if (p == ADH_FIT_OFFSET)
+            snprintf(buf, len, "%.5g nm", v * 1e9);
+        else
+            snprintf(buf, len, "%.5g nN", v * 1e9);
+        return;
+    }
+    adh_format_quantity(v, quantities[p], 5, buf, len);
+}
+
+static void print_params(FILE *out, const cli_fit_report *r)
+{
+    const adh_fit_result *res = r->res;
+    fprintf(out, "%-9s %-14s %-24s %s\n", "parameter", "best", "standard error", "start");
+    for (int i = 0; i < ADH_FIT_NPARAM; i++) {
+        char v[64], s[64], st[64], se[80];
+        double start[ADH_FIT_NPARAM] = { r->fs->start.E, r->fs->start.A, r->fs->start.z0, r->fs->start.R,
+                                         r->fs->offset, r->fs->baseline };
+        value_text(i, res->value[i], v, sizeof v);
+        value_text(i, start[i], st, sizeof st);
+        if (!is_free(r, i)) {
+            fprintf(out, "%-9s %-14s %-24s (fixed)\n", adh_fit_param_name((adh_fit_param)i), v, "-");
+            continue;
+        }
+        value_text(i, res->se[i], s, sizeof s);
+        if (i <= ADH_FIT_R)
+            snprintf(se, sizeof se, "%s (%.2g %%)", s, 100 * res->se[i] / res->value[i]);
+        else
+            snprintf(se, sizeof se, "%s", s);
+        fprintf(out, "%-9s %-14s %-24s %s\n", adh_fit_param_name((adh_fit_param)i), v, se, st);
+    }
+    adh_derived d;
+    adh_material_derive(&res->best, &d);
+    fprintf(out, "derived: gamma = A/(16 pi z0^2) = %.4g mJ/m^2, sigma = %.4g, JKR pull-off %.4g nN\n",
+            d.gamma * 1e3, d.sigma, d.F_jkr * 1e9);
+}
+
+static void print_warnings(FILE *out, const cli_fit_report *r)
+{
+    const adh_fit_result *res = r->res;
+    for (int i = 0; i < ADH_FIT_NPARAM; i++)
+        for (int j = i + 1; j < ADH_FIT_NPARAM; j++) {
+            double c = res->corr[i][j];
+            if (!is_free(r, i) || !is_free(r, j) || !(fabs(c) > CLI_FIT_CORR_WARN))
+                continue;
+            int az = (i == ADH_FIT_A && j == ADH_FIT_Z0);
+            fprintf(out, "warning: %s and %s are correlated at %.4f: the data fix a combination of them, not each "
+                    "alone%s; fix one (leave it out of --free)\n", adh_fit_param_name((adh_fit_param)i),
+                    adh_fit_param_name((adh_fit_param)j), c,
+                    az ? " (A and z0 trade off: the surface energy A/(16 pi z0^2) and the range z0 act together, "
+                         "and a force curve fixes mainly the energy)" : "");
+        }
+    for (int i = 0; i < ADH_FIT_NPARAM; i++) {
+        if (res->flags[i] & ADH_FIT_AT_LIMIT)
+            fprintf(out, "warning: %s ran to the limit of its search range: unidentifiable from these data, not a "
+                    "fit value\n", adh_fit_param_name((adh_fit_param)i));
+        else if (res->flags[i] & ADH_FIT_UNDETERMINED)
+            fprintf(out, "warning: %s is not determined: its standard error is as large as the value itself (or "
+                    "the Jacobian is singular): unidentifiable from these data\n", adh_fit_param_name((adh_fit_param)i));
+    }
+    if (r->fs->model.kind == ADH_FIT_MODEL_RELAX)
+        fprintf(out, "warning: with the relaxation model the standard errors are not to be trusted: its jumps move by "
+                "whole drive steps as the parameters change, so chi2 is piecewise and the Jacobian's differences "
+                "can span a jump (the values are good to about a step's worth)\n");
+    if (!r->grid_resolved)
+        fprintf(out, "warning: the grid does not resolve the contact's edge zone at the optimum (%.2f nodes across "
+                "it): the model's numbers may be off by more than 1 %%\n", r->grid_edge_nodes);
+}
+
+void cli_fit_print(FILE *out, const cli_fit_report *r)
+{
+    const adh_fit_result *res = r->res;
+    const adh_config *cfg = r->cfg;
+    const char *word;
+    cli_fit_verdict(r, &word);
+    if (r->partial)
+        fprintf(out, "# PARTIAL: interrupted, the best point so far\n");
+    size_t napp = 0;
+    for (size_t i = 0; i < r->fd->d.n; i++)
+        napp += r->fd->d.dir[i] > 0;
+    fprintf(out, "fit: %zu free parameter%s, %s model, %zu points (%zu approach, %zu retract; %zu in contact)\n",
+            res->nfree, res->nfree == 1 ? "" : "s", r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relaxation" : "static",
+            res->n, napp, res->n - napp, r->fd->ncontact);
+    fprintf(out, "grid: %s, N = %zu, spacing %.3g nm%s; at the optimum %.2f nodes across the contact's edge zone (%s)%s\n",
+            cfg->spec.grid.use.graded ? "graded" : "uniform", cfg->spec.grid.use.nodes, adh_config_spacing(&cfg->spec) * 1e9,
+            adh_config_grid_auto(&cfg->spec) ? ", chosen for the start values" : ", as given",
+            r->grid_edge_nodes, r->grid_resolved ? "resolved" : "NOT resolved",
+            r->refits ? ", chosen again at the optimum" : "");
+    print_params(out, r);
+    fprintf(out, "correlation:");
+    for (int j = 0; j < ADH_FIT_NPARAM; j++)
+        if (is_free(r, j))
+            fprintf(out, " %9s", adh_fit_param_name((adh_fit_param)j));
+    fprintf(out, "\n");
+    for (int i = 0; i < ADH_FIT_NPARAM; i++) {
+        if (!is_free(r, i))
+            continue;
+        fprintf(out, "  %-9s  ", adh_fit_param_name((adh_fit_param)i));
+        for (int j = 0; j < ADH_FIT_NPARAM; j++)
+            if (is_free(r, j))
+                fprintf(out, " %9.4f", res->corr[i][j]);
+        fprintf(out, "\n");
+    }
+    fprintf(out, "chi2 per point: %.4g N^2 (rms residual %.4g nN); the data's own scatter %.4g nN: chi2 per degree "
+            "of freedom against it %.3g (about 1 when the model fits)\n", res->chi2 / (double)res->n, res->rms * 1e9,
+            res->noise * 1e9, res->chi2_red);
+    fprintf(out, "model evaluations: %zu (%zu failed), %zu iterations, %.2f s\n", r->evals, res->failed,
+            res->iterations, r->seconds);
+    print_warnings(out, r);
+    fprintf(out, "result: %s\n", word);
+}
+
+static int write_fit_tsv(FILE *f, const void *ctx)
+{
+    const cli_fit_report *r = ctx;
+    const adh_fit_result *res = r->res;
+    const char *word;
+    cli_fit_verdict(r, &word);
+    fprintf(f, "# adhere %s fit\n", ADH_VERSION);
+    if (r->partial)
+        fprintf(f, "# PARTIAL: interrupted, the best point so far\n");
+    fprintf(f, "# result: %s\n", word);
+    for (const adh_measured *m = r->cfg->output.measured; m; m = m->next)
+        fprintf(f, "# data: %s (%zu points)\n", m->name, m->n);
+    fprintf(f, "# model: %s; grid N = %zu, spacing %.6g m; %zu model evaluations, %.3f s\n",
+            r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relax" : "static", r->cfg->spec.grid.use.nodes,
+            adh_config_spacing(&r->cfg->spec), r->evals, r->seconds);
+    fprintf(f, "# chi2 %.9g N^2, %zu points, chi2/point %.9g N^2, scatter %.9g N, chi2/dof against it %.6g\n",
+            res->chi2, res->n, res->chi2 / (double)res->n, res->noise, res->chi2_red);
+    fprintf(f, "parameter\tvalue\tstd_error\tunit\tfree\tflag");
+    for (int j = 0; j < ADH_FIT_NPARAM; j++)
+        if (is_free(r, j))
+            fprintf(f, "\tcorr_%s", adh_fit_param_name((adh_fit_param)j));
+    fprintf(f, "\n");
+    for (int i = 0; i < ADH_FIT_NPARAM; i++) {
+        const char *flag = res->flags[i] & ADH_FIT_AT_LIMIT ? "at_limit"
+                         : res->flags[i] & ADH_FIT_UNDETERMINED ? "undetermined" : "-";
+        fprintf(f, "%s\t%.10g\t%.6g\t%s\t%d\t%s", adh_fit_param_name((adh_fit_param)i), res->value[i], res->se[i],
+                units[i], is_free(r, i), flag);
+        for (int j = 0; j < ADH_FIT_NPARAM; j++)
+            if (is_free(r, j))
+                fprintf(f, "\t%.6g", res->corr[i][j]);
+        fprintf(f, "\n");
+    }
+    return 0;
+}
+
+static int write_points_tsv(FILE *f, const void *ctx)
+{
+    const cli_fit_report *r = ctx;
+    const adh_fitdata *fd = r->fd;
+    fprintf(f, "# adhere %s fit: each measured point, the best model there and the residual (SI units)\n",
+            ADH_VERSION);
+    if (r->partial)
+        fprintf(f, "# PARTIAL: interrupted, the best point so far\n");
+    fprintf(f, "file\tline\tposition\tF\tdirection\tcontact\tF_model\tresidual\n");
+    for (size_t i = 0; i < fd->d.n; i++)
+        fprintf(f, "%s\t%zu\t%.10g\t%.10g\t%s\t%d\t%.10g\t%.6g\n", fd->file[i]->name, fd->line[i], fd->x[i],
+                fd->F[i], adh_measured_dir_name(fd->dir[i]), fd->contact[i],
+                r->model[i] + r->res->value[ADH_FIT_BASELINE], r->resid[i]);
+    return 0;
+}
+
+/* A scene the TUI and --batch open: the best material, the fit's grid
+ * and its deepest turn. */
+static int write_scene(FILE *f, const void *ctx)
+{
+    const cli_fit_report *r = ctx;
+    const adh_config *cfg = r->cfg;
+    const adh_material *m = &r->res->best;
+    const char *word;
+    cli_fit_verdict(r, &word);
+    fprintf(f, "# adhere fit's best model (%s)%s\n", word, r->partial ? " # PARTIAL" : "");
+    for (const adh_measured *d = cfg->output.measured; d; d = d->next)
+        fprintf(f, "# fitted to %s\n", d->name);
+    fprintf(f, "# position offset %.6g nm, force baseline %.6g nN: model h0 = measured - offset\n",
+            r->res->value[ADH_FIT_OFFSET] * 1e9, r->res->value[ADH_FIT_BASELINE] * 1e9);
+    fprintf(f, "\n[scene]\ntitle = best fit: E = %.4g GPa, A = %.4g J\nmode = %s\n", m->E * 1e-9, m->A,
+            r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relax" : "static");
+    fprintf(f, "\n[material]\nE = %.10gPa\nA = %.10gJ\nz0 = %.10gm\nR = %.10gm\n", m->E, m->A, m->z0, m->R);
+    if (!cfg->spec.grid.use.graded)
+        fprintf(f, "\n[grid]\nnodes = %zu\nspacing = %.10gm\nkernel = %s\n", cfg->spec.grid.use.nodes, adh_config_spacing(&cfg->spec),
+                adh_kernel_name(cfg->spec.grid.use.kernel));
+    fprintf(f, "\n[protocol]\nstep = %.10gm\nturns = %.10gm\n", cfg->spec.proto.step, cfg->spec.proto.turns[0]);
+    return 0;
+}
+
+int cli_fit_write(const cli_fit_report *r, adh_outdir *dir, int plot, char *why, size_t whylen)
+{
+    if (adh_outdir_write(dir, "fit.tsv", write_fit_tsv, r, why, whylen) != 0 ||
+        adh_outdir_write(dir, "fit-points.tsv", write_points_tsv, r, why, whylen) != 0 ||
+        adh_outdir_write(dir, "best.scene", write_scene, r, why, whylen) != 0)
+        return 2;
+    if (!plot)
+        return 0;
+    size_t n = r->fd->d.n, nc = r->ncurve;
+    double *cx = malloc((nc ? nc : 1) * sizeof *cx), *cF = malloc((nc ? nc : 1) * sizeof *cF);
+    if (!cx || !cF) {
+        free(cx);
+        free(cF);
+        snprintf(why, whylen, "out of memory for fit.png");
+        return 3;
+    }
+    /* the model in the measured coordinates */
+    for (size_t i = 0; i < nc; i++) {
+        cx[i] = r->ch0[i] + r->res->value[ADH_FIT_OFFSET];
+        cF[i] = r->cF[i] + r->res->value[ADH_FIT_BASELINE];
+    }
+    char title[512], msg[1024];
+    snprintf(title, sizeof title, "adhere fit: E = %.4g GPa, A = %.4g J (%s model)", r->res->best.E * 1e-9,
+             r->res->best.A, r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relaxation" : "static");
+    adh_fitplot p = { .n = n, .x = r->fd->x, .F = r->fd->F, .resid = r->resid, .dir = r->fd->dir, .ncurve = nc,
+                      .cx = cx, .cF = cF, .stable = r->cstable, .title = title, .style = r->cfg->output.gnuplot_style };
+    int rc = adh_fitplot_write(&p, dir, r->fs->cancel, msg, sizeof msg);
+    free(cx);
+    free(cF);
+    if (rc != 0) {
+        snprintf(why, whylen, "fit.png: %s", msg);
+        return 3;
+    }
+    return 0;
+}

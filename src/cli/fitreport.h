@@ -1,0 +1,45 @@
+/* What adhere fit reports: the text on standard output, fit.tsv,
+ * fit-points.tsv, best.scene and fit.png. */
+#ifndef ADH_CLI_FITREPORT_H
+#define ADH_CLI_FITREPORT_H
+
+#include <stdio.h>
+
+#include "adhere/fit.h"
+#include "plot/outdir.h"
+#include "scene/config.h"
+#include "scene/fitdata.h"
+
+/* Poor: chi2 per degree of freedom, against the data's own scatter, above this. */
+#define CLI_FIT_POOR_CHI2 4.0
+/* A correlation above this in magnitude is warned of. */
+#define CLI_FIT_CORR_WARN 0.99
+
+typedef struct cli_fit_report {
+    const adh_config *cfg;       /* the scene, grid and model settings used */
+    const adh_fitdata *fd;
+    const adh_fit_result *res;
+    const adh_fit_settings *fs;
+    const double *model, *resid; /* at the points, N */
+    size_t ncurve;               /* the best model's curve, in model coordinates */
+    const double *ch0, *cF;
+    const int *cstable;
+    double grid_edge_nodes;      /* nodes across the edge zone at the optimum */
+    int grid_resolved;           /* at the optimum */
+    int refits;                  /* fits again on a grid chosen for the optimum */
+    size_t evals;                /* over every fit */
+    double seconds;
+    int partial;                 /* interrupted: the best so far */
+} cli_fit_report;
+
+/* "fit", "poor fit", "unidentifiable", "not converged", "partial",
+ * "failed": the verdict, and 0 when it is a fit. */
+int cli_fit_verdict(const cli_fit_report *r, const char **word);
+
+/* The report on out (standard output). */
+void cli_fit_print(FILE *out, const cli_fit_report *r);
+/* fit.tsv, fit-points.tsv, best.scene (and fit.png unless plot is 0) into
+ * out. 0, or 2 (a table) / 3 (the figure) with why. */
+int cli_fit_write(const cli_fit_report *r, adh_outdir *out, int plot, char *why, size_t whylen);
+
+#endif

@@ -1,0 +1,85 @@
+#!/bin/sh
+# adhere fit through the command line: the shipped synthetic curve
+# (share/adhere/data/fig1-synthetic.tsv: Figure 1's parameters, 1 % noise,
+# a header with spaces and units, three columns) fitted on a coarse
+# resolved grid (N = 300, 2.5 nm) from a start off by (1.3, 0.8); what it
+# writes; the best scene opens; the refusals; SIGINT keeps the best so far.
+. "$(dirname "$0")/lib.sh"
+need_gnuplot
+DATA=${ADHERE_SRC:-.}/share/adhere/data/fig1-synthetic.tsv
+COARSE="-N 300 --spacing=2.5nm"
+D=$TMP/fit
+"$ADHERE" fit --data="$DATA" -E 1.3GPa -A 0.8e-19J $COARSE -o "$D" fig1 >"$TMP/fit.out" 2>"$TMP/fit.err"
+rc=$?
+check "adhere fit exits 0 with a fit ($rc: $(tail -1 "$TMP/fit.err"))" sh -c "[ $rc -eq 0 ] && grep -qx 'result: fit' '$TMP/fit.out'"
+E=$(awk -F'\t' '$1 == "E" {print $2}' "$D/fit.tsv")
+A=$(awk -F'\t' '$1 == "A" {print $2}' "$D/fit.tsv")
+check "fit.tsv: E = $E Pa within 2 % of 1 GPa" awk -v v="$E" 'BEGIN {exit !(v > 0.98e9 && v < 1.02e9)}'
+check "fit.tsv: A = $A J within 2 % of 1e-19 J" awk -v v="$A" 'BEGIN {exit !(v > 0.98e-19 && v < 1.02e-19)}'
+check "the report gives standard errors, correlations, chi2 per point, evaluations and time" \
+    sh -c "grep -q '^E .*MPa (0\.[0-9]* %)' '$TMP/fit.out' && grep -q '^correlation:' '$TMP/fit.out' && grep -q '^chi2 per point: ' '$TMP/fit.out' && grep -q '^model evaluations: [0-9]* (0 failed), [0-9]* iterations, [0-9.]* s' '$TMP/fit.out'"
+check "progress: a line per model evaluation" sh -c "[ \$(grep -c '^  eval ' '$TMP/fit.err') -ge 5 ]"
+n=$(grep -cv '^#' "$D/fit-points.tsv")
+check "fit-points.tsv: every point with its model value and residual ($n lines)" [ "$n" -eq 201 ]
+check "fit.png is a PNG" sh -c "head -c 8 '$D/fit.png' | od -c | grep -q 'P   N   G'"
+check "the best scene opens: adhere --plan OUT/best.scene" sh -c "'$ADHERE' --plan '$D/best.scene' >'$TMP/plan' 2>&1 && grep -q '^mode: static' '$TMP/plan'"
+printf 'q\n' >"$TMP/q.keys"
+"$ADHERE" --replay="$TMP/q.keys" --screen="$TMP/best.screen" "$D/best.scene" >/dev/null 2>&1
+check "and the TUI opens it with the best E and A" sh -c "grep -q '^ >E     1.00[0-9] GPa' '$TMP/best.screen' && grep -Eq '^  A     1(\.00[0-9])?e-19 J' '$TMP/best.screen'"
+check "no temporary file is left (adhere's manifest aside)" sh -c "! ls -a '$D' | grep -v '^\.adhere-manifest$' | grep -q '^\.[^.]'"
+
+# refusals: exit 2, the reason, nothing written
+"$ADHERE" fit fig1 >/dev/null 2>"$TMP/e1"
+check "adhere fit without --data is refused ($(cat "$TMP/e1"))" sh -c "[ $? -eq 2 ] && grep -q 'adhere fit needs the measured curve: --data=FILE' '$TMP/e1'"
+"$ADHERE" fit --data="$DATA" --free=E,gamma fig1 >/dev/null 2>"$TMP/e2"
+check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep -q "^adhere: --free: 'gamma' is not a parameter: use E, A, z0, R, offset and baseline" "$TMP/e2"
+"$ADHERE" --batch --free=E fig1 >/dev/null 2>"$TMP/e3"
+check "--free outside adhere fit is refused ($(cat "$TMP/e3"))" grep -q "are adhere fit's" "$TMP/e3"
+printf 'Separation (nm)\tForce (nN)\n5\t-1\n4\tnan\n' >"$TMP/nan.tsv"
+"$ADHERE" fit --data="$TMP/nan.tsv" -o "$TMP/nanout" fig1 >/dev/null 2>"$TMP/e4"
+rc=$?
+check "a NaN in the data: exit 2, 'adhere: FILE:3:' and why, nothing written ($(cat "$TMP/e4"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q '^adhere: $TMP/nan.tsv:3: .nan. is not a finite number (a gap in the measurement?) (column 2, the force)' '$TMP/e4' && [ ! -e '$TMP/nanout' ]"
+awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
+"$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
+check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
+
+# --model=relax: a curve the relaxation made (E = 1 GPa, loaded to -2 nm
+# and unloaded; its force.tsv's h0, F and path, with noise of about 1 % of
+# the pull-off from awk's generator, seeded) fitted by the relaxation
+"$ADHERE" --batch -q --no-plot -E 1GPa --turn=-2nm $COARSE --eps=3pm -o "$TMP/relaxgen" 2>/dev/null
+awk -F'\t' 'BEGIN {srand(7); print "h0 (nm)\tF (nN)\tpath"}
+    !/^#/ && $1 != "h0" && $9 <= 1 {u = rand(); v = rand(); n = sqrt(-2 * log(1 - u)) * cos(6.283185307 * v)
+    printf "%.6f\t%.6f\t%s\n", $1 * 1e9, $2 * 1e9 + 3.75 * n, $9}' "$TMP/relaxgen/force.tsv" >"$TMP/relax.tsv"
+"$ADHERE" fit --model=relax --data="$TMP/relax.tsv" --columns=1,2 -E 1.3GPa -A 0.8e-19J $COARSE --eps=3pm \
+    -o "$TMP/relaxfit" fig1 >"$TMP/relax.out" 2>"$TMP/relax.err"
+E=$(awk -F'\t' '$1 == "E" {print $2}' "$TMP/relaxfit/fit.tsv")
+A=$(awk -F'\t' '$1 == "A" {print $2}' "$TMP/relaxfit/fit.tsv")
+# (5 %: the relaxation's jumps move by whole drive steps as E and A change,
+# so its chi2 is piecewise and the fit lands within a step's worth)
+check "--model=relax recovers the relaxation's E = $E Pa and A = $A J within 5 %" \
+    awk -v e="$E" -v a="$A" 'BEGIN {exit !(e > 0.95e9 && e < 1.05e9 && a > 0.95e-19 && a < 1.05e-19)}'
+check "and says it used the relaxation, and that its standard errors are not to be trusted" \
+    sh -c "grep -q '^fit: 2 free parameters, relaxation model' '$TMP/relax.out' && grep -q '^warning: with the relaxation model the standard errors' '$TMP/relax.out'"
+
+# make install puts the shipped curve where adhere(1)'s example reads it
+# (the default PREFIX, so the built tree's compiled-in data directory is
+# the same and nothing is rebuilt; DESTDIR keeps it in the test's directory)
+SRC=${ADHERE_SRC:-.}
+make --no-print-directory -s -C "$SRC" install DESTDIR="$TMP/inst" >"$TMP/inst.log" 2>&1
+check "make install installs share/adhere/data/fig1-synthetic.tsv ($(tail -1 "$TMP/inst.log"))" \
+    cmp -s "$DATA" "$TMP/inst/usr/local/share/adhere/data/fig1-synthetic.tsv"
+
+# SIGINT during the fit: the best point so far, marked PARTIAL, exit 130
+rm -f "$TMP/int.ready"
+ADHERE_READY_FILE="$TMP/int.ready" "$ADHERE" fit --data="$DATA" -E 3GPa -A 0.3e-19J $COARSE -o "$TMP/int" fig1 \
+    >"$TMP/int.out" 2>"$TMP/int.err" &
+pid=$!
+came=0
+wait_phase "$TMP/int.ready" step "$pid" && came=1
+kill -INT "$pid" 2>/dev/null
+wait "$pid"
+rc=$?
+check "SIGINT after the first evaluation: exit 130 (phase came $came, exit $rc)" sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
+check "the report and fit.tsv say PARTIAL" sh -c "grep -q '^# PARTIAL' '$TMP/int.out' && grep -q '^# PARTIAL' '$TMP/int/fit.tsv'"
+done_testing

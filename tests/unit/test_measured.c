@@ -1,0 +1,93 @@
+/* --data as instruments write it (scene/measured.h): separators, headers
+ * with spaces and units, columns by name or number, the segments. Each
+ * file is written here and read back; the values are the file's numbers
+ * times the units' factors, exactly as typed. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "scene/measured.h"
+#include "tap.h"
+
+static char path[64];
+
+static int load(const char *text, const char *columns, adh_measured *m, char *why, size_t whylen)
+{
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+    return adh_measured_load(path, columns, m, why, whylen);
+}
+
+/* 0 when m holds n points, the first (x0, F0) and the last (x1, F1), in SI. */
+static int holds(const adh_measured *m, size_t n, double x0, double F0, double x1, double F1)
+{
+    return m->n == n && fabs(m->h0[0] - x0) <= 1e-12 * fabs(x0) && fabs(m->F[0] - F0) <= 1e-12 * fabs(F0) &&
+           fabs(m->h0[n - 1] - x1) <= 1e-12 * fabs(x1) && fabs(m->F[n - 1] - F1) <= 1e-12 * fabs(F1);
+}
+
+static void reads(const char *what, const char *text, const char *columns, size_t n, double x0, double F0, double x1,
+                  double F1)
+{
+    adh_measured m;
+    char why[512] = "";
+    int rc = load(text, columns, &m, why, sizeof why);
+    ok(rc == 0 && holds(&m, n, x0, F0, x1, F1), "%s (%s)", what, rc ? why : m.columns);
+    if (rc == 0)
+        adh_measured_free(&m);
+}
+
+int main(void)
+{
+    snprintf(path, sizeof path, "/tmp/adhere-test-measured-%ld.txt", (long)getpid());
+    reads("no header: nm and nN", "3 -1\n2 -2\n", NULL, 2, 3e-9, -1e-9, 2e-9, -2e-9);
+    reads("CSV with 'z (nm),F (nN)'", "z (nm),F (nN)\n3,-1\n2,-2\n", NULL, 2, 3e-9, -1e-9, 2e-9, -2e-9);
+    reads("TSV with 'Separation (nm)<TAB>Force (nN)'", "Separation (nm)\tForce (nN)\n3\t-1\n2\t-2\n", NULL, 2, 3e-9,
+          -1e-9, 2e-9, -2e-9);
+    reads("blank-separated with the unit a word of its own: 'h0 (um)  F (pN)'", "h0 (um)  F (pN)\n0.003 -1000\n0.002 -2000\n",
+          NULL, 2, 3e-9, -1e-9, 2e-9, -2e-9);
+    reads("the micro sign: 'h0 (\xc2\xb5m)', 'F (\xc2\xb5N)'", "h0 (\xc2\xb5m),F (\xc2\xb5N)\n0.003,-0.001\n0.002,-0.002\n",
+          NULL, 2, 3e-9, -1e-9, 2e-9, -2e-9);
+    reads("the Greek mu: 'h0 (\xce\xbcm)'", "h0 (\xce\xbcm);F (nN)\n0.003;-1\n0.002;-2\n", NULL, 2, 3e-9, -1e-9, 2e-9,
+          -2e-9);
+    reads("metres and newtons: 'h0[m] F[N]'", "h0[m] F[N]\n3e-9 -1e-9\n2e-9 -2e-9\n", NULL, 2, 3e-9, -1e-9, 2e-9, -2e-9);
+    const char *three = "# exported\nTime (s)\tForce (nN)\tSeparation (nm)\n0\t-1\t3\n0.1\t-2\t2\n0.2\t-3\t1\n";
+    reads("three columns: the position and force found by name", three, NULL, 3, 3e-9, -1e-9, 1e-9, -3e-9);
+    reads("three columns chosen by number (--columns=3,2)", three, "3,2", 3, 3e-9, -1e-9, 1e-9, -3e-9);
+    reads("three columns chosen by name (--columns=Separation,Force)", three, "Separation,Force", 3, 3e-9, -1e-9, 1e-9,
+          -3e-9);
+    reads("three columns chosen by a prefix of the name (--columns=sep,for)", three, "sep,for", 3, 3e-9, -1e-9, 1e-9,
+          -3e-9);
+
+    adh_measured m;
+    char why[512];
+    int rc = load("h0 (nm)\tF (nN)\n3\t0\n2\t-1\n1\t-5\n2\t-6\n3\t-1\n4\t0\n3.5\t0\n3\t0\n2.5\t-0.5\n", NULL, &m, why,
+                  sizeof why);
+    ok(rc == 0 && m.nseg == 3 && m.seg[0].dir == 1 && m.seg[0].n == 3 && m.seg[1].dir == -1 && m.seg[1].n == 4 &&
+       m.seg[2].dir == 1 && m.seg[2].n == 4 && !m.nonmonotonic_line,
+       "approach, retract, approach: three segments by the position's direction, each turn shared");
+    if (rc == 0)
+        adh_measured_free(&m);
+    rc = load("h0 (nm)\tF (nN)\n5\t0\n4\t0\n4.5\t0\n3\t0\n2\t0\n1\t0\n", NULL, &m, why, sizeof why);
+    ok(rc == 0 && m.nonmonotonic_line == 4, "a position going back for two points is noted, line %zu", rc ? 0 : m.nonmonotonic_line);
+    if (rc == 0)
+        adh_measured_free(&m);
+    rc = load("h0 (nm)\tF (nN)\n5\t0\n4\t0\n3\t1\n3\t2\n4\t0\n5\t0\n", NULL, &m, why, sizeof why);
+    ok(rc == 0 && m.nseg == 2 && m.seg[0].n == 4 && m.seg[1].first == 3 && m.seg[1].n == 3 && !m.nonmonotonic_line,
+       "a turn written twice: two segments, the second writing the retract's first point (%s)", rc ? why : "ok");
+    if (rc == 0)
+        adh_measured_free(&m);
+    rc = load("h0 (nm)\tF (nN)\n5\t0\n5\t1\n", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":3: the position never changes"), "a position that never changes: refused (%s)", why);
+    rc = load("1\t2\t3\n4\t5\n", "1,2", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":2: 2 columns where the file has 3"), "a short line: refused (%s)", why);
+    rc = load("h0 (nm),F (nN),t (s)\n1,2,3\n", "4,2", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, "column 4 does not exist: the file has 3"), "a column beyond the file: refused (%s)", why);
+    rc = load("1,2,3\n2,3,4\n", "h0,F", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, "the file has no header: give its number"), "a name without a header: refused (%s)", why);
+    rc = load("Separation (nm),Sep2 (nm),F (nN)\n1,2,3\n", "sep,F", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, "names more than one column"), "an ambiguous prefix: refused (%s)", why);
+    unlink(path);
+    return tap_done();
+}
