@@ -65,6 +65,7 @@
 
 #include <signal.h>
 #include <stddef.h>
+#include "adhere/folds.h"
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
 #include "adhere/params.h"
@@ -113,12 +114,8 @@ int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t
 /* Up to this many folds are kept with their position and force. */
 #define ADH_STATIC_MAX_FOLDS 4096
 
-typedef struct adh_static_fold {
-    double h0;           /* where the drive turns, m (interpolated between points) */
-    double F;            /* force there, N */
-    int kind;            /* -1: h0 has a local minimum (approach jumps in here);
-                            +1: a local maximum (retraction jumps here) */
-} adh_static_fold;
+/* A fold: where the drive turns (adhere/folds.h). */
+typedef adh_fold adh_static_fold;
 
 typedef struct adh_static_result {
     double jump_in_h0;     /* first fold, where the outer branch ends; NAN if none */
