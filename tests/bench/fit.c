@@ -46,7 +46,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: bench-fit [N DR | write PATH]\n");
         return 2;
     }
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     if (argc == 3 && strcmp(argv[1], "write") == 0) {
         static synth s;
         if (synth_make(&s, g, k, &truth, 8e-9, -2e-9, 100, 100, 0.01, 2026, 0, 0) != 0 ||
