@@ -75,8 +75,9 @@ extern const adh_precond_type *adh_precond_hodlr;
 adh_precond *adh_precond_alloc(const adh_precond_type *T, size_t n, adh_precond_entry_fn entry, void *ctx);
 void adh_precond_free(adh_precond *p);
 
-/* Factorizes B at the point sys describes. ADH_SUCCESS; ADH_ESING when B
- * is singular as held (a pivot exactly zero or not finite: not a simple
+/* Factorizes B at the point sys describes; its border is the operator's
+ * until adh_precond_border names another. ADH_SUCCESS; ADH_ESING when B is
+ * singular as held (a pivot exactly zero or not finite: not a simple
  * fold); ADH_ENOMEM. */
 int adh_precond_set(adh_precond *p, const adh_precond_system *sys);
 

@@ -24,7 +24,8 @@ typedef struct hodlr {
     adh_hodlr *h;
     double *Jg;        /* J^-1 g at the point set */
     double *x2;        /* J^-1 g of the operator's border */
-    const double *nu;  /* the operator's border row (borrowed) */
+    const double *nu;  /* the operator's border row (borrowed, or nu0) */
+    double *nu0;       /* the border row at the point set */
     double schur;      /* ... and its Schur complement nh - theta nu.x2 */
     double theta;
 } hodlr;
@@ -46,12 +47,13 @@ static void *hodlr_alloc(size_t n, adh_precond_entry_fn entry, void *ctx)
         return NULL;
     P->n = n;
     P->h = adh_hodlr_alloc(n, entry, ctx, ADH_HODLR_TOL, ADH_HODLR_LEAF);
-    P->Jg = malloc(2 * n * sizeof *P->Jg);
+    P->Jg = malloc(3 * n * sizeof *P->Jg);
     if (!P->h || !P->Jg) {
         hodlr_free(P);
         return NULL;
     }
     P->x2 = P->Jg + n;
+    P->nu0 = P->x2 + n;
     return P;
 }
 
@@ -61,6 +63,7 @@ static int hodlr_set(void *state, const adh_precond_system *sys, size_t *active,
     size_t n = P->n;
     double th = sys->theta;
     P->theta = th;
+    *active = 0;
     int rc = adh_hodlr_factorize(P->h, sys->alpha, sys->d);
     if (rc != ADH_SUCCESS)
         return rc;
@@ -73,6 +76,11 @@ static int hodlr_set(void *state, const adh_precond_system *sys, size_t *active,
         return ADH_ESING;
     *active = n;
     *det_sign = adh_hodlr_det_sign(P->h) * (sc < 0 ? -1 : 1);
+    /* until a border says otherwise, the operator's is the one set */
+    memcpy(P->nu0, sys->nu, n * sizeof *P->nu0);
+    memcpy(P->x2, P->Jg, n * sizeof *P->x2);
+    P->nu = P->nu0;
+    P->schur = sc;
     return ADH_SUCCESS;
 }
 
@@ -110,7 +118,7 @@ static void hodlr_apply(void *state, const double *v, double *z)
 static size_t hodlr_bytes(const void *state)
 {
     const hodlr *P = state;
-    return adh_hodlr_bytes(P->h) + 2 * P->n * sizeof *P->Jg;
+    return adh_hodlr_bytes(P->h) + 3 * P->n * sizeof *P->Jg;
 }
 
 static const adh_precond_type hodlr_type = {
