@@ -19,6 +19,8 @@ DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox man
 # GSL through OpenBLAS's CBLAS and LAPACK (dgetrf), not the reference
 # gslcblas: several times faster on the dense kernel products and LU that
 # dominate the run time. BLAS_LIBS swaps the BLAS (make check-fp does).
+# LAPACK is called through lapacke's header (-llapacke); its dgetrf is
+# still the one BLAS_LIBS brings, which the program loads first.
 # Recursive (=) on purpose: pkg-config runs when a recipe needs it, after
 # `deps` has installed it.
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)

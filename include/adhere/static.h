@@ -56,6 +56,11 @@
  * in O(N log^2 N), with no dense N x N copy; a dense kernel keeps the dense
  * LU over the active prefix (the oracle).
  *
+ * The parts, each usable alone: flexible GMRES (adhere/fgmres.h), the
+ * preconditioners (adhere/precond.h), the fold bookkeeping
+ * (adhere/folds.h); the step strategies are src/core/static_*.c
+ * (docs/static-solver.md).
+ *
  * Use: alloc, set (solves the start point), then iterate until it returns
  * something other than ADH_CONTINUE; or a drive stepping adh_rule_static
  * (adhere/rule_static.h) for the rows of a protocol, adh_runner_static

@@ -75,6 +75,18 @@ static inline void tap_skip(const char *why)
     ok(fabs((got) - (want)) <= (tol) * fabs(want), "%s: got %.6g, want %.6g (rel tol %g)", what, \
        (double)(got), (double)(want), (double)(tol))
 
+/* max_i |a_i - b_i| over max_i |b_i|: how far a vector is from a
+ * reference, relative to the reference's size. */
+static inline double tap_maxrel(const double *a, const double *b, size_t n)
+{
+    double e = 0, s = 0;
+    for (size_t i = 0; i < n; i++) {
+        e = fmax(e, fabs(a[i] - b[i]));
+        s = fmax(s, fabs(b[i]));
+    }
+    return e / s;
+}
+
 static inline int tap_done(void)
 {
     printf("1..%d\n", tap_n);

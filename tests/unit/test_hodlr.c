@@ -20,16 +20,6 @@ static double entry(void *ctx, size_t i, size_t j)
     return adh_kernel_entry(ctx, i, j);
 }
 
-static double maxrel(const double *a, const double *b, size_t n)
-{
-    double e = 0, s = 0;
-    for (size_t i = 0; i < n; i++) {
-        e = fmax(e, fabs(a[i] - b[i]));
-        s = fmax(s, fabs(b[i]));
-    }
-    return e / s;
-}
-
 /* Solves the dense A x = b and returns det A's sign (0: singular). */
 static int dense_solve(const double *W, size_t n, double alpha, const double *d, double *b)
 {
@@ -69,7 +59,7 @@ int main(void)
         for (size_t j = 0; j < n; j++)
             yd[i] += W[i * n + j] * v[j];
     }
-    ok(maxrel(y, yd, n) < 1e-7, "product within 1e-7 of dense (%.1e)", maxrel(y, yd, n));
+    ok(tap_maxrel(y, yd, n) < 1e-7, "product within 1e-7 of dense (%.1e)", tap_maxrel(y, yd, n));
 
     /* d as -(2/E) p'(h) on a contact of radius 250 nm: large and positive
      * inside (alpha d W ~ 4 per ring, as at the resolved static limit), a
@@ -89,16 +79,16 @@ int main(void)
             y[i] = yd[i] = v[i];
         adh_hodlr_solve(h, y);
         int ds = dense_solve(W, n, alpha, d, yd);
-        ok(rc == ADH_SUCCESS && maxrel(y, yd, n) < 1e-5, "solve (edge bump %g) within 1e-5 of dense LU (%.1e)", scale,
-           maxrel(y, yd, n));
+        ok(rc == ADH_SUCCESS && tap_maxrel(y, yd, n) < 1e-5, "solve (edge bump %g) within 1e-5 of dense LU (%.1e)", scale,
+           tap_maxrel(y, yd, n));
         ok(ds != 0 && adh_hodlr_det_sign(h) == ds, "det sign %+d as dense LU's %+d", adh_hodlr_det_sign(h), ds);
         /* the single-precision copy: float rounding (6e-8) grown by the
          * conditioning, still far inside the preconditioner's 1e-4 */
         for (size_t i = 0; i < n; i++)
             yd[i] = v[i];
         adh_hodlr_solve_single(h, yd);
-        ok(maxrel(yd, y, n) < 1e-4 && maxrel(yd, y, n) > 0,
-           "single-precision solve (edge bump %g) within 1e-4 of the double one (%.1e)", scale, maxrel(yd, y, n));
+        ok(tap_maxrel(yd, y, n) < 1e-4 && tap_maxrel(yd, y, n) > 0,
+           "single-precision solve (edge bump %g) within 1e-4 of the double one (%.1e)", scale, tap_maxrel(yd, y, n));
         /* a right side single precision cannot hold: the double solve */
         for (size_t i = 0; i < n; i++)
             y[i] = yd[i] = 1e300 * v[i];
