@@ -60,18 +60,22 @@ static int apply_M(void *ctx, const double *x, double *z)
 static int lapack_solve(const problem *p, double *x)
 {
     size_t n = p->n, m = n + 1;
-    double *B = malloc(m * m * sizeof *B), *e = calloc(m, sizeof *e);
+    double *B = malloc(m * m * sizeof *B);
     lapack_int *piv = malloc(m * sizeof *piv);
-    for (size_t j = 0; j < m; j++) {
-        e[j] = 1;
-        apply_B((void *)p, e, B + j * m); /* column j of B: B stored column-major */
-        e[j] = 0;
+    /* B column-major, as apply_B applies it */
+    for (size_t j = 0; j < n; j++) {
+        for (size_t i = 0; i < n; i++)
+            B[i + j * m] = (i == j) + p->alpha * p->W[i * n + j] * p->d[j];
+        B[n + j * m] = p->theta * p->nu[j];
     }
+    for (size_t i = 0; i < n; i++)
+        B[i + n * m] = p->g[i];
+    B[n + n * m] = p->nh;
     int sign = LAPACKE_dgetrf(LAPACK_COL_MAJOR, (lapack_int)m, (lapack_int)m, B, (lapack_int)m, piv) == 0;
     for (size_t i = 0; i < m && sign; i++)
         sign *= (piv[i] != (lapack_int)i + 1 ? -1 : 1) * (B[i + i * m] < 0 ? -1 : 1);
     LAPACKE_dgetrs(LAPACK_COL_MAJOR, 'N', (lapack_int)m, 1, B, (lapack_int)m, piv, x, (lapack_int)m);
-    free(B), free(e), free(piv);
+    free(B), free(piv);
     return sign;
 }
 
