@@ -3,7 +3,7 @@
  * (kernel_dense.c, kernel_hier.c), and the closed forms they all share. */
 #include "adhere/kernel.h"
 #include "adhere/status.h"
-#include "core/kernel_parts.h"
+#include "core/kernel.h"
 
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>

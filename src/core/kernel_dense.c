@@ -2,7 +2,7 @@
  * paper's kernel is symmetric as held (k-matrix times dr, r_j applied in
  * the product), the ring kernel is the full influence matrix. */
 #include "adhere/status.h"
-#include "core/kernel_parts.h"
+#include "core/kernel.h"
 
 #include <gsl/gsl_cblas.h>
 #include <stdlib.h>

@@ -6,7 +6,7 @@
 #include "adhere/hmatrix.h"
 #include "adhere/rings.h"
 #include "adhere/status.h"
-#include "core/kernel_parts.h"
+#include "core/kernel.h"
 
 #include <gsl/gsl_integration.h>
 #include <math.h>

@@ -2,7 +2,7 @@
  * start point), iterate (one accepted point by the step strategy in
  * effect: static_arclength.c, or static_qstep.c with static_front.c), and
  * the accepted point's bookkeeping. The parts are listed in
- * static_parts.h. */
+ * src/core/static.h. */
 #include "adhere/static.h"
 #include "adhere/clock.h"
 
@@ -15,7 +15,7 @@
 #include "adhere/observe.h"
 #include "adhere/rings.h"
 #include "adhere/status.h"
-#include "core/static_parts.h"
+#include "core/static.h"
 
 adh_static_settings adh_static_settings_default(void)
 {

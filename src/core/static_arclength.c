@@ -8,7 +8,7 @@
  * the curve that runs back). The step adapts to the tangent's turn, to
  * Newton's effort and to the gaps' change, so that every node crossing
  * the law's barrier (a lattice-trapping fold pair) is resolved. */
-#include "core/static_parts.h"
+#include "core/static.h"
 
 #include <math.h>
 

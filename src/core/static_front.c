@@ -5,7 +5,7 @@
  * gap profiles out as a travelling front, and within a few rings of the
  * jump-out and the pull-off the steps in Q (every phase) take over again,
  * so that the lattice's extremes are found as before. */
-#include "core/static_parts.h"
+#include "core/static.h"
 
 #include <math.h>
 #include <string.h>

@@ -1,11 +1,11 @@
-/* The static solver's Newton-Krylov corrector (static_parts.h): G(u, h0)
+/* The static solver's Newton-Krylov corrector (src/core/static.h): G(u, h0)
  * = u + (2/E) W p(h0 + r^2/2R - u) and its Jacobian J = I - (2/E) W
  * diag(p'(h)) at a point, the bordered system [J g; theta nu^T nh] solved
  * by flexible GMRES (adhere/fgmres.h) with a preconditioner
  * (adhere/precond.h) set at a recent point, and Newton's iteration on G = 0
  * plus one constraint. Each Newton step uses the exact Jacobian at the
  * iterate; only the preconditioner lags. */
-#include "core/static_parts.h"
+#include "core/static.h"
 
 #include <math.h>
 #include <stdlib.h>

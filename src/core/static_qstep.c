@@ -9,7 +9,7 @@
  * (adhere/folds.h): lattice folds a step spans are stepped over, physical
  * ones (jump-in, jump-out) are found as on the exact curve. Once a contact
  * of a few rings has formed, front steps (static_front.c) take over. */
-#include "core/static_parts.h"
+#include "core/static.h"
 
 #include <math.h>
 #include <string.h>

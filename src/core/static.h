@@ -1,5 +1,5 @@
-/* The parts of the static solver (adhere/static.h), shared by its files
- * and by nothing else:
+/* The parts of the static solver, private to it (the public header is
+ * adhere/static.h), shared by its files and by nothing else:
  *
  *   static.c            the facade: alloc, set (the start point), iterate
  *                       (one accepted point, by the strategy in effect),
@@ -18,8 +18,8 @@
  * Folds and pull-off are adhere/folds.h's. Notation: x = (u, h0); the
  * metric is |x|^2 = (theta sum u_n^2 + h0^2) / z0^2 (theta = u_weight), so
  * tangents and arclength s are dimensionless / in z0. */
-#ifndef ADH_STATIC_PARTS_H
-#define ADH_STATIC_PARTS_H
+#ifndef ADH_CORE_STATIC_H
+#define ADH_CORE_STATIC_H
 
 #include "adhere/fgmres.h"
 #include "adhere/folds.h"

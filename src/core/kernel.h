@@ -1,10 +1,11 @@
-/* The kernel operator's parts (adhere/kernel.h), shared by its files and
- * by nothing else: kernel.c (the interface, the closed forms, names),
- * kernel_dense.c (the dense matrix) and kernel_hier.c (hmat-oss and H^2).
+/* The kernel operator's parts, private to it (the public header is
+ * adhere/kernel.h), shared by its files and by nothing else: kernel.c (the
+ * interface, the closed forms, names), kernel_dense.c (the dense matrix)
+ * and kernel_hier.c (hmat-oss and H^2).
  * Each storage supplies its product, entry, bytes and free; the diagonal
  * is the entry's. */
-#ifndef ADH_KERNEL_PARTS_H
-#define ADH_KERNEL_PARTS_H
+#ifndef ADH_CORE_KERNEL_H
+#define ADH_CORE_KERNEL_H
 
 #include "adhere/kernel.h"
 
