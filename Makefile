@@ -13,17 +13,19 @@ CFLAGS  ?= -O2 -g
 WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wformat-truncation=2
 PKGS     = gsl ncursesw inih openblas
 DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux \
-           liblapack-dev libblas-dev \
+           liblapack-dev libblas-dev liblapacke-dev \
            clang libclang-rt-14-dev libhmat-oss-dev locales
 
 # GSL through OpenBLAS's CBLAS and LAPACK (dgetrf), not the reference
 # gslcblas: several times faster on the dense kernel products and LU that
 # dominate the run time. BLAS_LIBS swaps the BLAS (make check-fp does).
+# LAPACK is called through lapacke's header (-llapacke); its dgetrf is
+# still the one BLAS_LIBS brings, which the program loads first.
 # Recursive (=) on purpose: pkg-config runs when a recipe needs it, after
 # `deps` has installed it.
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 BLAS_LIBS  = $(shell pkg-config --libs openblas 2>/dev/null)
-PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl -lhmat $(BLAS_LIBS) \
+PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl -lhmat -llapacke $(BLAS_LIBS) \
              $(shell pkg-config --libs ncursesw inih 2>/dev/null) -lpthread -lm
 ADH_VERSION = 0.1.0
 CPPFLAGS += -Iinclude -Isrc -DADH_VERSION='"$(ADH_VERSION)"' -D_POSIX_C_SOURCE=200809L -DADH_DATADIR='"$(DATADIR)"'

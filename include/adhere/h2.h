@@ -49,8 +49,8 @@ adh_h2_settings adh_h2_settings_default(void);
 adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s);
 void adh_h2_free(adh_h2 *h);
 
-/* y = H v. Reentrant: concurrent calls work in their own workspace. 0 on
- * success, -1 when that workspace could not be allocated. */
+/* y = H v. Reentrant: concurrent calls work in their own workspace.
+ * ADH_SUCCESS, or ADH_ENOMEM when that workspace could not be allocated. */
 int adh_h2_apply(adh_h2 *h, const double *v, double *y);
 
 /* Bytes held (near field, couplings, bases and transfers, workspace). */

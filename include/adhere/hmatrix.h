@@ -28,8 +28,9 @@ adh_hmatrix *adh_hmatrix_alloc(size_t n, const double *x, adh_hmatrix_entry_fn e
 void adh_hmatrix_free(adh_hmatrix *h);
 
 /* y = H v. scratch: n doubles of the caller's (the library permutes its
- * input in place). 0 on success. Calls are serialised: the library toggles
- * process-wide threading settings during a product. */
+ * input in place). ADH_SUCCESS, or ADH_ENOMEM when hmat-oss failed.
+ * Calls are serialised: the library toggles process-wide threading
+ * settings during a product. */
 int adh_hmatrix_apply(adh_hmatrix *h, const double *v, double *y, double *scratch);
 
 /* Bytes held by the stored blocks (dense leaves and low-rank factors). */

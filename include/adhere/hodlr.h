@@ -15,8 +15,8 @@
  * where a dense LU costs N^3 / 3 and N^2 numbers. det A = product of the
  * leaves' and capacitance matrices' determinants, so its sign comes free.
  *
- * The static mode (adhere/static.h) uses it to precondition its
- * Newton-Krylov solves with the whole Jacobian I - (2/E) W diag(p'(h)). */
+ * adhere/precond.h's HODLR preconditioner is built on it (the static
+ * mode's Jacobian I - (2/E) W diag(p'(h)), whole). */
 #ifndef ADHERE_HODLR_H
 #define ADHERE_HODLR_H
 
@@ -32,9 +32,9 @@ typedef struct adh_hodlr adh_hodlr;
 adh_hodlr *adh_hodlr_alloc(size_t n, adh_hodlr_entry_fn entry, void *ctx, double tol, size_t leaf);
 void adh_hodlr_free(adh_hodlr *h);
 
-/* Factorizes A = I + alpha W diag(d) (d: n numbers, copied). 0 on success,
- * 1 when a pivot is exactly zero or not finite (A singular as held), -1 out
- * of memory. */
+/* Factorizes A = I + alpha W diag(d) (d: n numbers, copied). ADH_SUCCESS;
+ * ADH_ESING when a pivot is exactly zero or not finite (A singular as
+ * held); ADH_ENOMEM. */
 int adh_hodlr_factorize(adh_hodlr *h, double alpha, const double *d);
 
 /* Solves A x = b in place (b: n numbers) with the last factorization. */

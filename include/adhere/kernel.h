@@ -28,31 +28,39 @@ typedef enum adh_kernel_storage {
     ADH_STORAGE_H2 = 2
 } adh_kernel_storage;
 
+/* The operator W, one interface over every storage: apply (the product),
+ * entry, diagonal, bytes. */
 typedef struct adh_kernel adh_kernel;
 
-/* The ring kernel takes any grid, graded too (adhere/rings.h): ring j's
- * influence is D(r, edge[j+1]) - D(r, edge[j]). The paper's kernel takes
- * the uniform grid only (NULL for a graded one). */
-adh_kernel *adh_kernel_alloc(const adh_grid *g, adh_kernel_type type);
-/* The same, polling the caller's cancel flag (may be NULL) once per column:
- * a large ring kernel takes seconds. NULL with *status ADH_EINTR when the
- * flag was raised, ADH_ENOMEM when memory ran out. */
-adh_kernel *adh_kernel_alloc_cancel(const adh_grid *g, adh_kernel_type type,
-                                    const volatile sig_atomic_t *cancel, int *status);
+/* What to build. Zero is the default: the paper's kernel, held dense. */
+typedef struct adh_kernel_settings {
+    adh_kernel_type type;
+    adh_kernel_storage storage;
+    const volatile sig_atomic_t *cancel; /* polled once per column while a
+                            dense matrix is built (a large ring kernel takes
+                            seconds): nonzero stops it with ADH_EINTR; a
+                            hierarchical one is assembled in one call. NULL:
+                            never */
+} adh_kernel_settings;
+
+adh_kernel_settings adh_kernel_settings_default(void);
+
+/* The kernel on grid g (borrowed: it must outlive the kernel). The ring
+ * kernel takes any grid, graded too (adhere/rings.h): ring j's influence
+ * is D(r, edge[j+1]) - D(r, edge[j]). The paper's kernel takes the uniform
+ * grid only. NULL with *status (status may be NULL): ADH_EINVAL for the
+ * paper's kernel on a graded grid or an unknown type or storage,
+ * ADH_ENOMEM, ADH_EINTR when the cancel flag was raised; else *status is
+ * ADH_SUCCESS. */
+adh_kernel *adh_kernel_alloc(const adh_grid *g, const adh_kernel_settings *s, int *status);
 void adh_kernel_free(adh_kernel *k);
-/* The kernel held as storage s. adh_kernel_alloc is the dense one. */
-adh_kernel *adh_kernel_alloc_stored(const adh_grid *g, adh_kernel_type type, adh_kernel_storage s);
-/* The same, polling cancel as adh_kernel_alloc_cancel does (the dense
- * build; a hierarchical one is assembled in one call). */
-adh_kernel *adh_kernel_alloc_stored_cancel(const adh_grid *g, adh_kernel_type type, adh_kernel_storage s,
-                                           const volatile sig_atomic_t *cancel, int *status);
 adh_kernel_type adh_kernel_kind(const adh_kernel *k);
 adh_kernel_storage adh_kernel_storage_of(const adh_kernel *k);
 /* "dense", "hmat" or "h2". */
 const char *adh_kernel_storage_name(adh_kernel_storage s);
 /* ADH_SUCCESS, or ADH_EINVAL when name is not "dense", "hmat" or "h2". */
 int adh_kernel_storage_parse(const char *name, adh_kernel_storage *s);
-/* Bytes the stored matrix holds. */
+/* Bytes the stored matrix holds (a memory budget's measure). */
 size_t adh_kernel_bytes(const adh_kernel *k);
 const char *adh_kernel_name(adh_kernel_type type);
 /* ADH_SUCCESS, or ADH_EINVAL when name is neither "paper" nor "ring". */

@@ -33,7 +33,8 @@ double adh_md_lambda(const adh_material *m);
 double adh_md_stress(const adh_material *m, double lambda);
 
 /* The point at contact radius a > 0. ADH_EINVAL for a <= 0 or lambda <= 0,
- * ADH_EMAXITER if the root for c could not be bracketed. */
+ * ADH_EMAXITER if the root for c could not be bracketed or GSL's root
+ * solver did not converge, ADH_ENOMEM. */
 int adh_md_at_radius(const adh_material *m, double lambda, double a, adh_md_point *pt);
 
 /* The curve on n >= 2 contact radii spaced evenly from a_max/n to a_max. */

@@ -56,6 +56,11 @@
  * in O(N log^2 N), with no dense N x N copy; a dense kernel keeps the dense
  * LU over the active prefix (the oracle).
  *
+ * The parts, each usable alone: flexible GMRES (adhere/fgmres.h), the
+ * preconditioners (adhere/precond.h), the fold bookkeeping
+ * (adhere/folds.h); the step strategies are src/core/static_*.c
+ * (docs/static-solver.md).
+ *
  * Use: alloc, set (solves the start point), then iterate until it returns
  * something other than ADH_CONTINUE; or a drive stepping adh_rule_static
  * (adhere/rule_static.h) for the rows of a protocol, adh_runner_static
@@ -65,6 +70,7 @@
 
 #include <signal.h>
 #include <stddef.h>
+#include "adhere/folds.h"
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
 #include "adhere/params.h"
@@ -113,12 +119,8 @@ int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t
 /* Up to this many folds are kept with their position and force. */
 #define ADH_STATIC_MAX_FOLDS 4096
 
-typedef struct adh_static_fold {
-    double h0;           /* where the drive turns, m (interpolated between points) */
-    double F;            /* force there, N */
-    int kind;            /* -1: h0 has a local minimum (approach jumps in here);
-                            +1: a local maximum (retraction jumps here) */
-} adh_static_fold;
+/* A fold: where the drive turns (adhere/folds.h). */
+typedef adh_fold adh_static_fold;
 
 typedef struct adh_static_result {
     double jump_in_h0;     /* first fold, where the outer branch ends; NAN if none */

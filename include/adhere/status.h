@@ -12,7 +12,8 @@ enum adh_status {
     ADH_ENAN = 4,        /* a NaN or infinity appeared in the solution */
     ADH_EGRID = 5,       /* the grid is too short or too coarse for the state */
     ADH_ESTALL = 6,      /* continuation could not make progress */
-    ADH_EINTR = 7        /* the caller's cancel flag was raised: stopped on request */
+    ADH_EINTR = 7,       /* the caller's cancel flag was raised: stopped on request */
+    ADH_ESING = 8        /* a matrix is singular as held (an exactly zero pivot) */
 };
 
 /* What a refusal asks to change, as bits of the `unsigned *fix` a check

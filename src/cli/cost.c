@@ -98,7 +98,8 @@ static void *worker(void *arg)
         double t0 = adh_clock_seconds();
         adh_grid *g = adh_grid_alloc(c.grid.use.nodes, adh_config_spacing(&c));
         int kst = ADH_ENOMEM;
-        adh_kernel *k = g ? adh_kernel_alloc_cancel(g, c.grid.use.kernel, c.relax.cancel, &kst) : NULL;
+        adh_kernel_settings ks = { .type = c.grid.use.kernel, .cancel = c.relax.cancel };
+        adh_kernel *k = g ? adh_kernel_alloc(g, &ks, &kst) : NULL;
         cr->kernel_seconds = adh_clock_seconds() - t0;
         adh_run run;
         adh_run_init(&run);
@@ -380,7 +381,8 @@ int cli_cost_main(const cli_options *cli)
     sc.grid.use.kernel = ADH_KERNEL_RING;
     adh_grid *g = adh_grid_alloc(sc.grid.use.nodes, adh_config_spacing(&sc));
     int kst = ADH_ENOMEM;
-    adh_kernel *k = g ? adh_kernel_alloc_cancel(g, sc.grid.use.kernel, sc.relax.cancel, &kst) : NULL;
+    adh_kernel_settings ks = { .type = sc.grid.use.kernel, .cancel = sc.relax.cancel };
+    adh_kernel *k = g ? adh_kernel_alloc(g, &ks, &kst) : NULL;
     adh_run srun;
     adh_run_init(&srun);
     if (kst == ADH_EINTR)

@@ -1,6 +1,7 @@
 /* adhere: the command line. Parses options, then hands over to the batch
  * runner, the plan or cost reports, or the TUI. */
 #include <errno.h>
+#include <gsl/gsl_errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -47,6 +48,11 @@ int main(int argc, char **argv)
      * per core instead. */
     if (openblas_set_num_threads)
         openblas_set_num_threads(1);
+    /* GSL's default error handler aborts the process; the core reads GSL's
+     * return values and reports through its own status codes. The handler
+     * is process-wide, so the program sets it, once, and the library never
+     * does. */
+    gsl_set_error_handler_off();
     char why[1024];
     if (cli_options_parse(argc, argv, &cli, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);

@@ -439,7 +439,6 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
         fill_result(f, res);
         return res->status = ADH_ENOMEM;
     }
-    gsl_error_handler_t *old = gsl_set_error_handler_off();
     int status = ADH_CONTINUE, ginfo = 0, gs = gsl_multifit_nlinear_init(x, &fdf, w);
     if (gs != GSL_SUCCESS || !isfinite(f->best_chi2))
         status = f->stop ? ADH_EINTR : f->model_status != ADH_SUCCESS ? f->model_status : ADH_EINVAL;
@@ -483,7 +482,6 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
             status = ADH_SUCCESS;
         }
     }
-    gsl_set_error_handler(old);
     fill_result(f, res);
     res->gsl_info = ginfo;
     if (isfinite(f->best_chi2))

@@ -1,4 +1,5 @@
 #include "adhere/h2.h"
+#include "adhere/status.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -135,24 +136,24 @@ static size_t build_tree(h2_build *b, size_t i0, size_t n, size_t parent)
 static int grow(void **a, size_t *cap, size_t need, size_t size)
 {
     if (need <= *cap)
-        return 0;
+        return ADH_SUCCESS;
     size_t c = *cap ? *cap : 64;
     while (c < need)
         c *= 2;
     void *x = realloc(*a, c * size);
     if (!x)
-        return -1;
+        return ADH_ENOMEM;
     *a = x;
     *cap = c;
-    return 0;
+    return ADH_SUCCESS;
 }
 
 static void add_far(h2_build *b, size_t x, size_t y)
 {
     adh_h2 *h = b->h;
     size_t p = h->p, P = h->P;
-    if (grow((void **)&h->far, &b->cap_far, h->nfar + 1, sizeof *h->far) ||
-        grow((void **)&h->K, &b->cap_K, h->nfar + 1, P * P * sizeof *h->K)) {
+    if (grow((void **)&h->far, &b->cap_far, h->nfar + 1, sizeof *h->far) != ADH_SUCCESS ||
+        grow((void **)&h->K, &b->cap_K, h->nfar + 1, P * P * sizeof *h->K) != ADH_SUCCESS) {
         b->fail = 1;
         return;
     }
@@ -172,7 +173,7 @@ static void add_near(h2_build *b, size_t x, size_t y)
 {
     adh_h2 *h = b->h;
     const h2_cluster *X = &h->cl[x], *Y = &h->cl[y];
-    if (grow((void **)&h->near, &b->cap_near, h->nnear + 1, sizeof *h->near)) {
+    if (grow((void **)&h->near, &b->cap_near, h->nnear + 1, sizeof *h->near) != ADH_SUCCESS) {
         b->fail = 1;
         return;
     }
@@ -193,7 +194,7 @@ static int near_order(const void *pa, const void *pb)
 static int near_fill(adh_h2 *h, const adh_h2_problem *pb)
 {
     if (h->nnear == 0)
-        return 0;
+        return ADH_SUCCESS;
     qsort(h->near, h->nnear, sizeof *h->near, near_order);
     size_t m = 0;
     for (size_t b = 1; b < h->nnear; b++) {
@@ -214,12 +215,12 @@ static int near_fill(adh_h2 *h, const adh_h2_problem *pb)
         h->near = shrunk;
     h->B = malloc(h->nB * sizeof *h->B);
     if (!h->B)
-        return -1;
+        return ADH_ENOMEM;
     for (size_t b = 0; b < h->nnear; b++) {
         const h2_near *nb = &h->near[b];
         pb->block(pb->ctx, nb->i0, nb->ni, nb->j0, nb->nj, h->B + nb->off);
     }
-    return 0;
+    return ADH_SUCCESS;
 }
 
 /* The blocks of two disjoint clusters, x's cells before y's: one far
@@ -326,7 +327,7 @@ adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s)
         }
     }
     build_self(&b, 0);
-    if (b.fail || near_fill(h, pb) != 0)
+    if (b.fail || near_fill(h, pb) != ADH_SUCCESS)
         goto fail;
     free(h->node);
     h->node = NULL;
@@ -451,14 +452,14 @@ int adh_h2_apply(adh_h2 *h, const double *v, double *y)
     if (pthread_mutex_trylock(&h->lock) == 0) {
         product(h, v, y, h->work);
         pthread_mutex_unlock(&h->lock);
-        return 0;
+        return ADH_SUCCESS;
     }
     double *w = malloc(2 * h->ncl * h->P * sizeof *w);
     if (!w)
-        return -1;
+        return ADH_ENOMEM;
     product(h, v, y, w);
     free(w);
-    return 0;
+    return ADH_SUCCESS;
 }
 
 size_t adh_h2_bytes(const adh_h2 *h)

@@ -1,4 +1,5 @@
 #include "adhere/hmatrix.h"
+#include "adhere/status.h"
 
 #include <hmat/hmat.h>
 #include <pthread.h>
@@ -122,7 +123,7 @@ int adh_hmatrix_apply(adh_hmatrix *h, const double *v, double *y, double *scratc
     pthread_mutex_lock(&h->lock);
     int rc = iface.gemv('N', &one, h->m, scratch, &zero, y, 1);
     pthread_mutex_unlock(&h->lock);
-    return rc;
+    return rc == 0 ? ADH_SUCCESS : ADH_ENOMEM; /* hmat-oss fails when it cannot allocate */
 }
 
 size_t adh_hmatrix_bytes(const adh_hmatrix *h)

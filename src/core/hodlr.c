@@ -1,14 +1,14 @@
 #include "adhere/hodlr.h"
+#include "adhere/status.h"
 
 #include <gsl/gsl_cblas.h>
+#include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* LAPACK (OpenBLAS's, as the program is linked). */
-extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
-extern void dgetri_(const int *n, double *a, const int *lda, const int *ipiv, double *work, const int *lwork,
-                    int *info);
+/* LAPACK (OpenBLAS's, as the program is linked) through lapacke's _work
+ * calls: column-major, no copies, no NaN scan. */
 
 /* Matrices are column-major. A node covers cells lo .. lo+n-1; an inner
  * node's children split them at lo + n0. */
@@ -51,33 +51,39 @@ struct adh_hodlr {
     size_t kmax;
 };
 
+/* ADH_SUCCESS, ADH_ESING (a pivot exactly zero or not finite) or
+ * ADH_EINVAL (LAPACK refused an argument). */
 static int lu(double *a, int n, int *piv, int *sign)
 {
-    int info = 0;
     if (n == 0) {
         *sign = 1;
-        return 0;
+        return ADH_SUCCESS;
     }
-    dgetrf_(&n, &n, a, &n, piv, &info);
-    if (info < 0)
-        return -1;
+    if (LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, n, n, a, n, piv) < 0)
+        return ADH_EINVAL;
     int s = 1;
     for (int i = 0; i < n; i++) {
         double d = a[i + (size_t)i * n];
         if (d == 0 || !isfinite(d))
-            return 1;
+            return ADH_ESING;
         if (piv[i] != i + 1)
             s = -s;
         if (d < 0)
             s = -s;
     }
     *sign = s;
-    return 0;
+    return ADH_SUCCESS;
+}
+
+/* The inverse from lu's factors, in place (work: lw numbers). */
+static int lu_inverse(double *a, int n, const int *piv, double *work, int lw)
+{
+    return LAPACKE_dgetri_work(LAPACK_COL_MAJOR, n, a, n, piv, work, lw) == 0 ? ADH_SUCCESS : ADH_ESING;
 }
 
 /* Cross approximation with partial pivoting of W's block rows i0.., columns
  * j0..: U (ni x k) V^T (nj x k), stopping when the last cross is below tol
- * of the approximation's Frobenius norm. 0, or -1 out of memory. */
+ * of the approximation's Frobenius norm. ADH_SUCCESS or ADH_ENOMEM. */
 static int aca(adh_hodlr *h, size_t i0, size_t ni, size_t j0, size_t nj, double **Uo, double **Vo, size_t *ko)
 {
     size_t kmax = ni < nj ? ni : nj, cap = 16 < kmax ? 16 : kmax, k = 0;
@@ -147,10 +153,10 @@ static int aca(adh_hodlr *h, size_t i0, size_t ni, size_t j0, size_t nj, double 
     h->bytes_w += k * (ni + nj) * sizeof *U;
     if (k > h->max_rank)
         h->max_rank = k;
-    return 0;
+    return ADH_SUCCESS;
 oom:
     free(U), free(V), free(row), free(col), free(used);
-    return -1;
+    return ADH_ENOMEM;
 }
 
 static int build(adh_hodlr *h, size_t lo, size_t n)
@@ -185,9 +191,9 @@ static int build(adh_hodlr *h, size_t lo, size_t n)
     size_t n0 = n / 2, n1 = n - n0;
     double *U01, *V01, *U10, *V10;
     size_t k01, k10;
-    if (aca(h, lo, n0, lo + n0, n1, &U01, &V01, &k01) < 0)
+    if (aca(h, lo, n0, lo + n0, n1, &U01, &V01, &k01) != ADH_SUCCESS)
         return -1;
-    if (aca(h, lo + n0, n1, lo, n0, &U10, &V10, &k10) < 0) {
+    if (aca(h, lo + n0, n1, lo, n0, &U10, &V10, &k10) != ADH_SUCCESS) {
         free(U01), free(V01);
         return -1;
     }
@@ -255,8 +261,10 @@ adh_hodlr *adh_hodlr_alloc(size_t n, adh_hodlr_entry_fn entry, void *ctx, double
 }
 
 /* Solves A_b X = B in place for node b (B: b->n rows of nrhs columns,
- * leading dimension ldb) with its factorization. */
-static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
+ * leading dimension ldb) with its factorization. ADH_SUCCESS, or
+ * ADH_ENOMEM when a multi-column solve (factorize's) could not allocate:
+ * one column never allocates. */
+static int solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
 {
     node *b = &h->nodes[id];
     if (b->c[0] < 0) {
@@ -264,23 +272,24 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
         if (nrhs == 1) {
             cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n, (int)n, 1.0, b->Al, (int)n, B, 1, 0.0, b->lt, 1);
             memcpy(B, b->lt, n * sizeof *B);
-            return;
+            return ADH_SUCCESS;
         }
         double *T = malloc(n * nrhs * sizeof *T);
         if (!T)
-            return;
+            return ADH_ENOMEM;
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n, (int)nrhs, (int)n, 1.0, b->Al, (int)n, B,
                     (int)ldb, 0.0, T, (int)n);
         for (size_t c = 0; c < nrhs; c++)
             memcpy(B + c * ldb, T + c * n, n * sizeof *B);
         free(T);
-        return;
+        return ADH_SUCCESS;
     }
     size_t n0 = b->n0, n1 = b->n - n0, K = b->k01 + b->k10;
-    solve_node(h, b->c[0], B, ldb, nrhs);
-    solve_node(h, b->c[1], B + n0, ldb, nrhs);
-    if (K == 0)
-        return;
+    int rc = solve_node(h, b->c[0], B, ldb, nrhs);
+    if (rc == ADH_SUCCESS)
+        rc = solve_node(h, b->c[1], B + n0, ldb, nrhs);
+    if (rc != ADH_SUCCESS || K == 0)
+        return rc;
     int kk = (int)K, nr = (int)nrhs;
     if (nrhs == 1) {
         /* one column (GMRES): matrix-vector products, not dgemm's blocking */
@@ -297,11 +306,11 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
         if (b->k10)
             cblas_dgemv(CblasColMajor, CblasNoTrans, (int)n1, (int)b->k10, -1.0, b->Y1, (int)n1, t + b->k01, 1, 1.0,
                         B + n0, 1);
-        return;
+        return ADH_SUCCESS;
     }
     double *T0 = malloc(2 * K * nrhs * sizeof *T0), *T = T0 + K * nrhs;
     if (!T0)
-        return; /* only a multi-column solve allocates: factorize's */
+        return ADH_ENOMEM;
     if (b->k01)
         cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)b->k01, (int)nrhs, (int)n1, 1.0, b->Vt01,
                     (int)n1, B + n0, (int)ldb, 0.0, T0, (int)K);
@@ -316,6 +325,7 @@ static void solve_node(adh_hodlr *h, int id, double *B, size_t ldb, size_t nrhs)
         cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, (int)n1, (int)nrhs, (int)b->k10, -1.0, b->Y1,
                     (int)n1, T + b->k01, (int)K, 1.0, B + n0, (int)ldb);
     free(T0);
+    return ADH_SUCCESS;
 }
 
 static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
@@ -329,15 +339,13 @@ static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
                 b->Al[i + j * n] = s * b->Wl[i + j * n];
             b->Al[j + j * n] += 1.0;
         }
-        int rc = lu(b->Al, (int)n, b->piv, &b->sign), nn = (int)n, lw = 64 * (int)n, info = 0;
-        if (rc == 0)
-            dgetri_(&nn, b->Al, &nn, b->piv, b->lt, &lw, &info);
-        return rc != 0 ? rc : info != 0 ? 1 : 0;
+        int rc = lu(b->Al, (int)n, b->piv, &b->sign);
+        return rc != ADH_SUCCESS ? rc : lu_inverse(b->Al, (int)n, b->piv, b->lt, 64 * (int)n);
     }
     int rc = factor_node(h, b->c[0], alpha, d);
-    if (rc == 0)
+    if (rc == ADH_SUCCESS)
         rc = factor_node(h, b->c[1], alpha, d);
-    if (rc != 0)
+    if (rc != ADH_SUCCESS)
         return rc;
     b = &h->nodes[id];
     size_t n0 = b->n0, n1 = b->n - n0, k01 = b->k01, k10 = b->k10, K = k01 + k10;
@@ -350,12 +358,14 @@ static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
             b->Vt10[j + l * n0] = alpha * b->V10[j + l * n0] * d0[j];
     if (k01) {
         memcpy(b->Y0, b->U01, k01 * n0 * sizeof *b->Y0);
-        solve_node(h, b->c[0], b->Y0, n0, k01);
+        rc = solve_node(h, b->c[0], b->Y0, n0, k01);
     }
-    if (k10) {
+    if (k10 && rc == ADH_SUCCESS) {
         memcpy(b->Y1, b->U10, k10 * n1 * sizeof *b->Y1);
-        solve_node(h, b->c[1], b->Y1, n1, k10);
+        rc = solve_node(h, b->c[1], b->Y1, n1, k10);
     }
+    if (rc != ADH_SUCCESS)
+        return rc;
     double *S = b->S;
     memset(S, 0, K * K * sizeof *S);
     for (size_t i = 0; i < K; i++)
@@ -369,11 +379,9 @@ static int factor_node(adh_hodlr *h, int id, double alpha, const double *d)
     int s = 1;
     rc = lu(S, (int)K, b->spiv, &s);
     b->sign = s * h->nodes[b->c[0]].sign * h->nodes[b->c[1]].sign;
-    if (rc != 0)
+    if (rc != ADH_SUCCESS)
         return rc;
-    int kk = (int)K, lw = 64 * (int)(h->kmax + 1), info = 0;
-    dgetri_(&kk, S, &kk, b->spiv, h->work, &lw, &info);
-    return info != 0 ? 1 : 0;
+    return lu_inverse(S, (int)K, b->spiv, h->work, 64 * (int)(h->kmax + 1));
 }
 
 /* 0 when a number does not fit (a factor near singularity can pass FLT_MAX) */
@@ -391,7 +399,7 @@ int adh_hodlr_factorize(adh_hodlr *h, double alpha, const double *d)
 {
     h->single = 0;
     int rc = factor_node(h, 0, alpha, d);
-    if (rc != 0)
+    if (rc != ADH_SUCCESS)
         return rc;
     int fits = 1;
     for (size_t i = 0; i < h->nnodes; i++) {
@@ -406,7 +414,7 @@ int adh_hodlr_factorize(adh_hodlr *h, double alpha, const double *d)
         fits &= to_float(b->Yf + my + mv, b->S, (b->k01 + b->k10) * (b->k01 + b->k10));
     }
     h->single = fits;
-    return 0;
+    return ADH_SUCCESS;
 }
 
 void adh_hodlr_solve(adh_hodlr *h, double *b)

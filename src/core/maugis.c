@@ -1,5 +1,9 @@
 #include "adhere/maugis.h"
 
+#include <float.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+#include <gsl/gsl_roots.h>
 #include <math.h>
 
 #include "adhere/status.h"
@@ -65,11 +69,37 @@ static void md_of_s(double lambda, double s, double *A, double *P, double *D)
     *D = Ab * Ab - 4.0 / 3.0 * Ab * lambda * s;
 }
 
-static double lhs_eq1(double lambda, double Ab, double s)
+typedef struct eq1_ctx {
+    double lambda, Ab;
+} eq1_ctx;
+
+/* eq 1, left side minus right, as a function of s */
+static double lhs_eq1(double s, void *ctx)
 {
+    const eq1_ctx *c = ctx;
     double X, Y;
     xy_of(s, &X, &Y);
-    return 0.5 * lambda * Ab * Ab * X + 4.0 / 3.0 * lambda * lambda * Ab * Y - 1.0;
+    return 0.5 * c->lambda * c->Ab * c->Ab * X + 4.0 / 3.0 * c->lambda * c->lambda * c->Ab * Y - 1.0;
+}
+
+/* Brent's method (GSL) on f's sign change in [lo, hi]: f(lo) < 0 <= f(hi)
+ * (checked by the caller: GSL's error handler never hears of a bad
+ * bracket). The root to a few units of rounding, in *x. */
+static int root_in(gsl_function *f, double lo, double hi, double *x)
+{
+    gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!rs)
+        return ADH_ENOMEM;
+    int rc = gsl_root_fsolver_set(rs, f, lo, hi) == GSL_SUCCESS ? GSL_CONTINUE : GSL_EFAILED;
+    for (int i = 0; i < 200 && rc == GSL_CONTINUE; i++) {
+        if (gsl_root_fsolver_iterate(rs) != GSL_SUCCESS)
+            break;
+        rc = gsl_root_test_interval(gsl_root_fsolver_x_lower(rs), gsl_root_fsolver_x_upper(rs), 0,
+                                    4 * DBL_EPSILON);
+    }
+    *x = gsl_root_fsolver_root(rs);
+    gsl_root_fsolver_free(rs);
+    return rc == GSL_SUCCESS ? ADH_SUCCESS : ADH_EMAXITER;
 }
 
 int adh_md_at_radius(const adh_material *m, double lambda, double a, adh_md_point *pt)
@@ -78,23 +108,23 @@ int adh_md_at_radius(const adh_material *m, double lambda, double a, adh_md_poin
         return ADH_EINVAL;
     md_scale sc = scale_of(m);
     double Ab = a / sc.a;
-    /* eq 1 rises monotonically in s from -1 at s = 0 */
+    eq1_ctx ctx = { lambda, Ab };
+    gsl_function f = { lhs_eq1, &ctx };
+    /* eq 1 rises monotonically in s from -1 at s = 0: bracket the root */
     double lo = 0, hi = 1;
     int k = 0;
-    while (lhs_eq1(lambda, Ab, hi) < 0) {
+    while (lhs_eq1(hi, &ctx) < 0) {
         lo = hi;
         hi *= 4;
         if (++k > 60)
             return ADH_EMAXITER;
     }
-    for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; i++) {
-        double mid = 0.5 * (lo + hi);
-        if (lhs_eq1(lambda, Ab, mid) < 0)
-            lo = mid;
-        else
-            hi = mid;
+    double s = hi, A, P, D;
+    if (lhs_eq1(hi, &ctx) > 0) {
+        int rc = root_in(&f, lo, hi, &s);
+        if (rc != ADH_SUCCESS)
+            return rc;
     }
-    double s = 0.5 * (lo + hi), A, P, D;
     md_of_s(lambda, s, &A, &P, &D);
     /* P and D from the given A (the root's A differs by rounding only) */
     double m2 = 1.0 + s * s;
@@ -119,19 +149,34 @@ int adh_md_curve(const adh_material *m, double lambda, double a_max, size_t n, a
     return ADH_SUCCESS;
 }
 
-/* Minimum over log s of P (which = 0) or D (which = 1): a scan, then golden
- * section in the bracket. Returns the s of the minimum, or -1 when the
- * minimum is at the end of the scan (none inside: the DMT-like limit). */
+typedef struct pd_ctx {
+    double lambda;
+    int which;
+} pd_ctx;
+
+/* P (which = 0) or D (which = 1) at s = 10^x */
+static double pd_of(double x, void *ctx)
+{
+    const pd_ctx *c = ctx;
+    double A, P, D;
+    md_of_s(c->lambda, pow(10.0, x), &A, &P, &D);
+    return c->which ? D : P;
+}
+
+/* Minimum over log s of P (which = 0) or D (which = 1): a scan brackets
+ * it, then Brent's minimization (GSL) places it. Returns the s of the
+ * minimum, or -1 when the minimum is at the end of the scan (none inside:
+ * the DMT-like limit). A minimum flat to rounding over the bracket is the
+ * scan's point. */
 static double md_min(double lambda, int which)
 {
     const double l0 = -6.0, l1 = 7.0;
     const int nscan = 521;
+    pd_ctx ctx = { lambda, which };
     double best = INFINITY;
     int ib = 0;
     for (int i = 0; i < nscan; i++) {
-        double s = pow(10.0, l0 + (l1 - l0) * i / (nscan - 1)), A, P, D;
-        md_of_s(lambda, s, &A, &P, &D);
-        double v = which ? D : P;
+        double v = pd_of(l0 + (l1 - l0) * i / (nscan - 1), &ctx);
         if (v < best) {
             best = v;
             ib = i;
@@ -140,31 +185,28 @@ static double md_min(double lambda, int which)
     if (ib == nscan - 1)
         return -1;
     double step = (l1 - l0) / (nscan - 1);
-    double x0 = l0 + (ib - 1) * step, x1 = l0 + (ib + 1) * step;
-    const double gr = 0.5 * (sqrt(5.0) - 1.0);
-    double xa = x1 - gr * (x1 - x0), xb = x0 + gr * (x1 - x0), fa, fb, A, P, D;
-    md_of_s(lambda, pow(10.0, xa), &A, &P, &D);
-    fa = which ? D : P;
-    md_of_s(lambda, pow(10.0, xb), &A, &P, &D);
-    fb = which ? D : P;
-    for (int it = 0; it < 100 && x1 - x0 > 1e-13; it++) {
-        if (fa < fb) {
-            x1 = xb;
-            xb = xa;
-            fb = fa;
-            xa = x1 - gr * (x1 - x0);
-            md_of_s(lambda, pow(10.0, xa), &A, &P, &D);
-            fa = which ? D : P;
-        } else {
-            x0 = xa;
-            xa = xb;
-            fa = fb;
-            xb = x0 + gr * (x1 - x0);
-            md_of_s(lambda, pow(10.0, xb), &A, &P, &D);
-            fb = which ? D : P;
-        }
+    double xm = l0 + ib * step, x0 = xm - step, x1 = xm + step;
+    double f0 = pd_of(x0, &ctx), f1 = pd_of(x1, &ctx);
+    if (!(best < f0 && best < f1)) /* GSL's condition for a bracket */
+        return pow(10.0, xm);
+    gsl_function f = { pd_of, &ctx };
+    gsl_min_fminimizer *ms = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+    if (!ms)
+        return pow(10.0, xm);
+    /* The bracket shrinks until P or D is flat to rounding over it (about
+     * 3e-8 decades: a minimum's place is fixed to the square root of the
+     * rounding only), then stays: the cap of iterations ends it there. */
+    int rc = gsl_min_fminimizer_set_with_values(ms, &f, xm, best, x0, f0, x1, f1);
+    for (int it = 0; it < 100 && rc == GSL_SUCCESS; it++) {
+        if (gsl_min_fminimizer_iterate(ms) != GSL_SUCCESS)
+            break;
+        if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(ms), gsl_min_fminimizer_x_upper(ms), 1e-12, 0) ==
+            GSL_SUCCESS)
+            break;
     }
-    return pow(10.0, 0.5 * (x0 + x1));
+    double x = gsl_min_fminimizer_x_minimum(ms);
+    gsl_min_fminimizer_free(ms);
+    return pow(10.0, x);
 }
 
 int adh_md_pulloff(const adh_material *m, double lambda, double *F_load, double *a_load,

@@ -12,6 +12,7 @@ const char *adh_strerror(int status)
     case ADH_EGRID: return "the grid is too short or too coarse for this state";
     case ADH_ESTALL: return "continuation could not make progress";
     case ADH_EINTR: return "stopped on request";
+    case ADH_ESING: return "a matrix is singular";
     default: return "unknown status";
     }
 }

@@ -242,7 +242,8 @@ adh_grid *adh_config_grid_alloc(const adh_run_spec *s)
 
 adh_kernel *adh_config_kernel_alloc(const adh_run_spec *s, const adh_grid *g, int *status)
 {
-    return adh_kernel_alloc_stored_cancel(g, s->grid.use.kernel, s->grid.use.storage, s->relax.cancel, status);
+    adh_kernel_settings ks = { .type = s->grid.use.kernel, .storage = s->grid.use.storage, .cancel = s->relax.cancel };
+    return adh_kernel_alloc(g, &ks, status);
 }
 
 const char *adh_sweep_name(adh_sweep_kind kind)

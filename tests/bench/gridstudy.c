@@ -44,7 +44,7 @@ int main(int argc, char **argv)
     double dr = x * adh_edge_zone(&m);
     size_t n = (size_t)ceil(rmax_l * lat / dr);
     adh_grid *g = adh_grid_alloc(n, dr);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     if (!k)
         return 1;
     adh_run run;

@@ -108,7 +108,7 @@ int main(int argc, char **argv)
         adh_kernel *d = NULL;
         if (n <= dense_max) {
             double t0 = cpu();
-            d = adh_kernel_alloc_stored(g, ADH_KERNEL_RING, ADH_STORAGE_DENSE);
+            d = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_RING }, NULL);
             double ta = cpu() - t0;
             if (d) {
                 double tp = product_time(d, p, yd, scr);
@@ -128,7 +128,8 @@ int main(int argc, char **argv)
                 continue;
             }
             double t0 = cpu();
-            adh_kernel *h = adh_kernel_alloc_stored(g, ADH_KERNEL_RING, fast[s]);
+            adh_kernel_settings ks = { .type = ADH_KERNEL_RING, .storage = fast[s] };
+            adh_kernel *h = adh_kernel_alloc(g, &ks, NULL);
             double ta = cpu() - t0;
             if (!h) {
                 printf("%8zu %6s failed to assemble\n", n, name);

@@ -83,7 +83,7 @@ int main(int argc, char **argv)
         for (int kind = 0; kind < 2; kind++) {
             cfg.spec.grid.use.nodes = ns[a];
             adh_grid *g = adh_grid_alloc(cfg.spec.grid.use.nodes, adh_config_spacing(&cfg.spec));
-            adh_kernel *k = adh_kernel_alloc(g, (adh_kernel_type)kind);
+            adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = (adh_kernel_type)kind }, NULL);
             adh_relax *w = adh_relax_alloc(g, k);
             adh_relax_settings rs = adh_relax_settings_default();
             rs.eps = 1e-30; /* never converged: every call is full iterations */
@@ -106,7 +106,7 @@ int main(int argc, char **argv)
     if (cycle_n) {
         cfg.spec.grid.use.nodes = cycle_n;
         adh_grid *g = adh_grid_alloc(cfg.spec.grid.use.nodes, adh_config_spacing(&cfg.spec));
-        adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+        adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
         printf("\nFigure 4 cycle (N = %zu, eps = 1 pm, d = 0.05 nm, turn -5 nm), one core:\n", cycle_n);
         printf("%-14s %10s %7s %11s %10s %12s %14s\n", "mixing", "seconds", "steps", "iterations",
                "per step", "in contact", "pull-off (N)");

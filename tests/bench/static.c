@@ -47,7 +47,7 @@ int main(int argc, char **argv)
     adh_material_derive(&m, &d);
     double t0 = now();
     adh_grid *g = adh_grid_alloc(n, 1.5e-9);
-    adh_kernel *k = g ? adh_kernel_alloc(g, kt) : NULL;
+    adh_kernel *k = g ? adh_kernel_alloc(g, &(adh_kernel_settings){ .type = kt }, NULL) : NULL;
     if (!k) {
         fprintf(stderr, "out of memory\n");
         return 1;

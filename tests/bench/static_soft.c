@@ -46,7 +46,8 @@ static int one(double sigma, double turn)
         g = adh_grid_alloc(gc.n, isnan(gc.dr) ? adh_grid_spacing_for(&m, gc.n) : gc.dr);
     }
     adh_kernel_type kt = gc.graded ? ADH_KERNEL_RING : ADH_KERNEL_PAPER;
-    adh_kernel *k = g ? adh_kernel_alloc_stored(g, kt, gc.hierarchical ? ADH_STORAGE_H2 : ADH_STORAGE_DENSE) : NULL;
+    adh_kernel_settings ks = { .type = kt, .storage = gc.hierarchical ? ADH_STORAGE_H2 : ADH_STORAGE_DENSE };
+    adh_kernel *k = g ? adh_kernel_alloc(g, &ks, NULL) : NULL;
     if (!k) {
         fprintf(stderr, "out of memory\n");
         return 1;

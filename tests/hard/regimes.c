@@ -51,7 +51,7 @@ static int run_config(const adh_run_spec *c, outcome *o)
         adh_grid_free(g);
         return o->rc;
     }
-    adh_kernel *k = adh_kernel_alloc(g, c->grid.use.kernel);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = c->grid.use.kernel }, NULL);
     o->rc = adh_runner_rule(&adh_rule_relax, g, k, &c->mat, &c->relax, &c->proto, NULL, NULL, &o->run);
     adh_kernel_free(k);
     adh_grid_free(g);

@@ -33,6 +33,14 @@ __attribute__((constructor)) static void tap_one_blas_thread(void)
         openblas_set_num_threads(1);
 }
 
+/* ... and with GSL's error handler off, as adhere sets it at start (src/
+ * cli/main.c): the core reports through its status codes, never abort. */
+#include <gsl/gsl_errno.h>
+__attribute__((constructor)) static void tap_gsl_handler_off(void)
+{
+    gsl_set_error_handler_off();
+}
+
 #define ok(cond, ...) tap_ok(!!(cond), __FILE__, __LINE__, __VA_ARGS__)
 
 static inline int tap_ok(int pass, const char *file, int line, const char *fmt, ...)
@@ -66,6 +74,18 @@ static inline void tap_skip(const char *why)
 #define ok_rel(got, want, tol, what) \
     ok(fabs((got) - (want)) <= (tol) * fabs(want), "%s: got %.6g, want %.6g (rel tol %g)", what, \
        (double)(got), (double)(want), (double)(tol))
+
+/* max_i |a_i - b_i| over max_i |b_i|: how far a vector is from a
+ * reference, relative to the reference's size. */
+static inline double tap_maxrel(const double *a, const double *b, size_t n)
+{
+    double e = 0, s = 0;
+    for (size_t i = 0; i < n; i++) {
+        e = fmax(e, fabs(a[i] - b[i]));
+        s = fmax(s, fabs(b[i]));
+    }
+    return e / s;
+}
 
 static inline int tap_done(void)
 {

@@ -25,7 +25,7 @@ int main(void)
 {
     adh_material m = adh_material_default();
     adh_grid *g = adh_grid_alloc(100, 10e-9);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     adh_relax_settings rs = adh_relax_settings_default();
     rs.eps = 10e-12;
     adh_protocol_settings ps = adh_protocol_settings_default();
@@ -126,7 +126,7 @@ int main(void)
      * rows past the edge), while retracting goes on */
     {
         adh_grid *gs = adh_grid_alloc(20, 10e-9);
-        adh_kernel *ks = adh_kernel_alloc(gs, ADH_KERNEL_PAPER);
+        adh_kernel *ks = adh_kernel_alloc(gs, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
         adh_drive *ds = adh_drive_alloc(&adh_rule_relax, gs, ks);
         adh_protocol_settings pe = adh_protocol_settings_default();
         pe.step = 0.25e-9;

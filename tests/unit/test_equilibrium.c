@@ -32,7 +32,7 @@ static curve run_curve(const adh_material *m, size_t n, double dr, adh_kernel_ty
     curve c;
     adh_run_init(&c.run);
     adh_grid *g = adh_grid_alloc(n, dr);
-    adh_kernel *k = adh_kernel_alloc(g, kt);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = kt }, NULL);
     c.rc = adh_runner_static_curve(g, k, m, s, NULL, NULL, &c.run, &c.res);
     adh_kernel_free(k);
     adh_grid_free(g);
@@ -74,7 +74,7 @@ static void check_points(void)
 {
     adh_material m = adh_material_default();
     adh_grid *g = adh_grid_alloc(160, adh_grid_default_spacing(&m));
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     adh_static *w = adh_static_alloc(g, k);
     adh_static_settings s = adh_static_settings_default();
     s.h0_end = 1.5e-9; /* past the jump-out fold, inside the grid */
@@ -320,7 +320,7 @@ static void check_stops(void)
 {
     adh_material m = adh_material_default();
     adh_grid *g = adh_grid_alloc(60, adh_grid_default_spacing(&m));
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     adh_static_settings s = adh_static_settings_default();
     adh_run run;
     adh_run_init(&run);

@@ -127,7 +127,7 @@ int main(void)
 {
     adh_material truth = adh_material_default();   /* Figure 1: E = 1 GPa, A = 1e-19 J, z0 = 0.5 nm, R = 10 um */
     adh_grid *g = adh_grid_alloc(300, 2.5e-9);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     G = g;
     K = k;
     static synth s;

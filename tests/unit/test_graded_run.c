@@ -19,7 +19,7 @@ static int cycle(const adh_grid *g, adh_kernel_storage st, adh_run *run)
 {
     adh_material m = adh_material_default();
     m.E = 3e8;
-    adh_kernel *k = adh_kernel_alloc_stored(g, ADH_KERNEL_RING, st);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_RING, .storage = st }, NULL);
     if (!k)
         return ADH_ENOMEM;
     adh_protocol_settings ps = adh_protocol_settings_default();
@@ -44,7 +44,7 @@ static int cycle(const adh_grid *g, adh_kernel_storage st, adh_run *run)
 static int curve_skip(const adh_grid *g, adh_kernel_storage st, int skip, adh_static_result *res)
 {
     adh_material m = adh_material_default();
-    adh_kernel *k = adh_kernel_alloc_stored(g, ADH_KERNEL_RING, st);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_RING, .storage = st }, NULL);
     adh_static_settings s = adh_static_settings_default();
     s.lattice_skip = skip;
     adh_run run;

@@ -131,7 +131,7 @@ static int cycle(double sigma, double x, int statik, double *pulloff, double *hy
     double dr = x * adh_edge_zone(&m);
     size_t n = (size_t)ceil(12.0 * sqrt(m.R * m.z0) / dr);
     adh_grid *g = adh_grid_alloc(n, dr);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     adh_run run;
     adh_run_init(&run);
     int rc;

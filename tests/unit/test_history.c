@@ -30,7 +30,7 @@ int main(void)
 {
     adh_material m = adh_material_default();
     adh_grid *g = adh_grid_alloc(100, 10e-9);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     adh_relax_settings rs = adh_relax_settings_default();
     rs.eps = 10e-12;
     adh_protocol_settings ps = adh_protocol_settings_default();

@@ -43,8 +43,8 @@ int main(void)
        "D is continuous across r = a");
 
     adh_grid *g = adh_grid_alloc(400, 1.5e-9);
-    adh_kernel *ring = adh_kernel_alloc(g, ADH_KERNEL_RING);
-    adh_kernel *paper = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *ring = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_RING }, NULL);
+    adh_kernel *paper = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     ok(ring && paper, "kernels of 400 nodes allocate");
     double at = 0;
     double er = disk_error(ring, g, 100, 0, &at);
@@ -68,7 +68,7 @@ int main(void)
     /* The kernel scales with the grid: W(dr) = dr W(1), so a material change
      * never needs a rebuild and a grid change always does. */
     adh_grid *g2 = adh_grid_alloc(400, 3e-9);
-    adh_kernel *ring2 = adh_kernel_alloc(g2, ADH_KERNEL_RING);
+    adh_kernel *ring2 = adh_kernel_alloc(g2, &(adh_kernel_settings){ .type = ADH_KERNEL_RING }, NULL);
     ok_rel(adh_kernel_entry(ring2, 7, 50), 2 * adh_kernel_entry(ring, 7, 50), 1e-12, "kernel doubles with the spacing");
 
     adh_kernel_type t;

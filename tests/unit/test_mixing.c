@@ -64,7 +64,7 @@ static void same_equilibrium(void)
     adh_material m = adh_material_default(); /* Figure 4: sigma = 7.5 */
     size_t n = 120;
     adh_grid *g = adh_grid_alloc(n, 1.5e-6 / (double)n / 3.0);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     both b = both_rules(g, k, &m, 1e-15);
     ok(b.rp == ADH_SUCCESS && b.rm == ADH_SUCCESS, "both rules converge in contact at eps 1e-15 m (%d, %d)", b.rp,
        b.rm);
@@ -84,7 +84,7 @@ static void same_cycle(void)
     adh_material m = adh_material_default();
     size_t n = 150;
     adh_grid *g = adh_grid_alloc(n, 1.5e-6 / (double)n / 2.5);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     adh_protocol_settings ps = adh_protocol_settings_default();
     ps.turns[0] = -2e-9;
     ps.nturns = 1;
@@ -158,7 +158,7 @@ static void stiff_contact(void)
     m.E /= 10; /* sigma = 75, on 10 nm nodes */
     size_t n = 60;
     adh_grid *g = adh_grid_alloc(n, 1.5e-6 / (double)n / 2.5);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     both b = both_rules(g, k, &m, 1e-13);
     ok(b.rp == ADH_SUCCESS && b.rm == ADH_SUCCESS && b.worst < 1e-11,
        "stiff contact: both rules reach the same deformation (max |du| = %.2g m < 1e-11 m)", b.worst);

@@ -48,8 +48,8 @@ static void compare(const char *where, const adh_grid *g, adh_kernel_type type, 
 {
     char what[96];
     snprintf(what, sizeof what, "%s, %s, %s", where, adh_kernel_name(type), adh_kernel_storage_name(st));
-    adh_kernel *d = adh_kernel_alloc_stored(g, type, ADH_STORAGE_DENSE);
-    adh_kernel *h = adh_kernel_alloc_stored(g, type, st);
+    adh_kernel *d = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = type, .storage = ADH_STORAGE_DENSE }, NULL);
+    adh_kernel *h = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = type, .storage = st }, NULL);
     if (!ok(d && h, "%s: dense and hierarchical kernels of %zu nodes allocate", what, g->n)) {
         adh_kernel_free(d);
         adh_kernel_free(h);
@@ -83,8 +83,10 @@ int main(void)
         compare("uniform N=1500", u, ADH_KERNEL_RING, fast[s]);
         compare("uniform N=1500", u, ADH_KERNEL_PAPER, fast[s]);
         compare("graded", g, ADH_KERNEL_RING, fast[s]);
-        ok(adh_kernel_alloc_stored(g, ADH_KERNEL_PAPER, fast[s]) == NULL, "the paper's kernel refuses a graded grid in %s storage",
-           adh_kernel_storage_name(fast[s]));
+        adh_kernel_settings ks = { .type = ADH_KERNEL_PAPER, .storage = fast[s] };
+        int st = ADH_SUCCESS;
+        ok(adh_kernel_alloc(g, &ks, &st) == NULL && st == ADH_EINVAL,
+           "the paper's kernel refuses a graded grid in %s storage (ADH_EINVAL)", adh_kernel_storage_name(fast[s]));
     }
     /* Small grids: a single leaf, and a few clusters (the H^2 tree's edge cases). */
     for (size_t n = 1; n <= 100; n = n * 10) {

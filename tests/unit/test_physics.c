@@ -27,7 +27,7 @@ static void setup_init(setup *s, double E, size_t n, double eps)
     s->m = adh_material_default();
     s->m.E = E;
     s->g = adh_grid_alloc(n, adh_grid_default_rmax(&s->m) / (double)n);
-    s->k = adh_kernel_alloc(s->g, ADH_KERNEL_PAPER);
+    s->k = adh_kernel_alloc(s->g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     s->rs = adh_relax_settings_default();
     s->rs.eps = eps;
     s->ps = adh_protocol_settings_default();

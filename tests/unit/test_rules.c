@@ -134,7 +134,7 @@ static void registered(const adh_material *m, const adh_protocol_settings *ps)
 #undef ENTRY
     };
     adh_grid *g = adh_grid_alloc(100, 10e-9);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
     adh_relax_settings rs = adh_relax_settings_default();
     rs.eps = 10e-12;
     adh_static_settings ss = adh_static_settings_default();

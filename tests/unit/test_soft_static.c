@@ -22,7 +22,8 @@ static int curve(const adh_material *m, const adh_rings_choice *gc, double dr, a
 {
     adh_rings_spec rs = { .dr = dr, .fine = gc->fine, .ratio = gc->ratio, .rmax = gc->rmax };
     adh_grid *g = adh_rings_alloc(&rs);
-    adh_kernel *k = g ? adh_kernel_alloc_stored(g, ADH_KERNEL_RING, ADH_STORAGE_H2) : NULL;
+    adh_kernel_settings ks = { .type = ADH_KERNEL_RING, .storage = ADH_STORAGE_H2 };
+    adh_kernel *k = g ? adh_kernel_alloc(g, &ks, NULL) : NULL;
     adh_static *w = k ? adh_static_alloc(g, k) : NULL;
     int rc = ADH_ENOMEM;
     if (w) {

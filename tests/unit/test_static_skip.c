@@ -45,7 +45,7 @@ int main(void)
     double dr = adh_grid_edge_spacing(ADH_GRID_STATIC) * adh_edge_zone(&m);
     size_t n = (size_t)ceil(0.55e-6 / dr);
     adh_grid *g = adh_grid_alloc(n, dr);
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_RING);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_RING }, NULL);
     curve ex = run_curve(g, k, &m, 0);
     curve sk = run_curve(g, k, &m, 1);
     ok(ex.rc == ADH_SUCCESS && sk.rc == ADH_SUCCESS, "both curves end at the turn (exact %s, skip %s; N = %zu)",

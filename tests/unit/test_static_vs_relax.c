@@ -75,7 +75,7 @@ int main(void)
     adh_material_derive(&m, &d);
     double turn = 1.5e-9;
     adh_grid *g = adh_grid_alloc(100, 2 * adh_grid_default_spacing(&m));
-    adh_kernel *k = adh_kernel_alloc(g, ADH_KERNEL_PAPER);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
 
     adh_static_settings ss = adh_static_settings_default();
     ss.h0_end = turn;
