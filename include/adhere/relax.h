@@ -32,7 +32,8 @@ typedef struct adh_relax_settings {
     adh_mix_rule rule;
     double momentum;     /* momentum rule: fraction of the previous update kept
                             up to the reference stiffness (adh_relax_scaled_momentum) */
-    double eps;          /* convergence: sqrt(sum (u_new - u_old)^2) / N < eps, m */
+    double eps;          /* convergence: the change's norm referred to the
+                            paper's grid below this (adh_relax_measure), m */
     double rtol;         /* and the central change |u_new(0) - u_old(0)| at most
                             rtol (|u(0)| + |d|) + eps/1000: the step's shift has relaxed */
     double mix_max;      /* largest mixing ratio (paper: 0.2) */
@@ -52,10 +53,32 @@ int adh_mix_rule_parse(const char *name, adh_mix_rule *rule);
 /* "paper" or "momentum B": the rule as reports name it. */
 void adh_mix_rule_describe(const adh_relax_settings *s, char *buf, size_t len);
 int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t whylen);
-/* The smallest eps the convergence measure can reach in double precision on
- * n nodes when deformations are up to `depth` (m): its rounding floor,
- * 256 DBL_EPSILON depth / sqrt(n). Below it every step would run to the cap. */
-double adh_relax_eps_floor(size_t n, double depth);
+/* What eps bounds. The paper's measure, [sum_n (u_new - u_old)^2]^(1/2) / N
+ * with u_new eq 11's deformation before mixing (the residual), on its own
+ * grid (uniform, N_ref = 1000 nodes of spacing D_ref: adh_grid_spacing_for
+ * at 1000 nodes, 1.5 nm at R = 10 um, z0 = 0.5 nm). There it is
+ * ||du|| / (N_ref sqrt(D_ref)), ||du||^2 = int du^2 dr = sum_n w_n du_n^2
+ * (w_n the ring widths), a norm that converges as the grid is refined and
+ * gains little from far rings (du ~ 1/r there). Every grid uses that norm
+ * and that divisor:
+ *     change = [sum_n w_n du_n^2]^(1/2) / (N_ref sqrt(D_ref)),
+ * so eps means the same drive on every grid, and on the paper's grid the
+ * arithmetic is the paper's. Uniform: the paper's measure times
+ * (N / N_ref) sqrt(D / D_ref). */
+#define ADH_RELAX_EPS_NODES 1000
+/* D_ref for material m, m. */
+double adh_relax_eps_ref_spacing(const adh_material *m);
+/* sqrt(dr / D_ref) of grid g (exactly 1 on the paper's spacing): the
+ * measure is sqrt(sum_n (w_n / dr) du_n^2) times this over N_ref. */
+double adh_relax_change_scale(const adh_grid *g, const adh_material *m);
+/* The measure of a change du (length g->n) on grid g; NAN out of memory. */
+double adh_relax_measure(const adh_grid *g, const adh_material *m, const double *du);
+/* The smallest eps the measure can reach in double precision on grid g
+ * (its n, dr and rmax are read) when deformations are up to `depth` (m):
+ * its rounding floor, 256 DBL_EPSILON depth sqrt(Rmax / D_ref) / N_ref
+ * (256 DBL_EPSILON depth / sqrt(N) on the paper's grid). Below it every
+ * step would run to the cap. */
+double adh_relax_eps_floor(const adh_grid *g, const adh_material *m, double depth);
 
 /* The momentum rule's beta for the set one and a stiffness bound s: the
  * set beta up to s = ADH_RELAX_MOMENTUM_REF (the stiffest contact of the

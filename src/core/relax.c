@@ -39,6 +39,8 @@ struct adh_relax {
     double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x;
                           in an update, the new gaps */
     double *ring_w;    /* eps's weight of each node (adhere/rings.h) */
+    double eps_scale;  /* sqrt(dr / the paper grid's spacing): the measure's
+                          reference (adh_relax_change_scale) */
     double stiffness;  /* upper bound on the largest eigenvalue of (2/E) W |p'| */
     size_t since_estimate;
     double best_change;   /* smallest change since the momentum last restarted */
@@ -114,13 +116,42 @@ int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t w
     return ADH_SUCCESS;
 }
 
-double adh_relax_eps_floor(size_t n, double depth)
+double adh_relax_eps_ref_spacing(const adh_material *m)
 {
-    /* The measure is sqrt(sum du^2)/N; rounding leaves du of order
-     * DBL_EPSILON |u| per node, times the few dozen terms that matter in
-     * each kernel sum: measured, the floor sits near 1e-23 m for N = 200
-     * and 1.5 nm deep, where steps stop converging. */
-    return 256.0 * DBL_EPSILON * fabs(depth) / sqrt((double)(n ? n : 1));
+    return adh_grid_spacing_for(m, ADH_RELAX_EPS_NODES);
+}
+
+double adh_relax_change_scale(const adh_grid *g, const adh_material *m)
+{
+    double ratio = g->dr / adh_relax_eps_ref_spacing(m);
+    /* the paper's grid however its spacing was written down (1.5nm, or
+     * scaled from R and z0): the paper's arithmetic, digit for digit */
+    if (fabs(ratio - 1.0) < 1e-9)
+        return 1.0;
+    return sqrt(ratio);
+}
+
+double adh_relax_measure(const adh_grid *g, const adh_material *m, const double *du)
+{
+    double *wt = malloc(g->n * sizeof *wt), ssq = 0;
+    if (!wt)
+        return NAN;
+    adh_rings_change_weights(g, wt);
+    for (size_t i = 0; i < g->n; i++)
+        ssq += wt[i] * du[i] * du[i];
+    free(wt);
+    return sqrt(ssq) * adh_relax_change_scale(g, m) / (double)ADH_RELAX_EPS_NODES;
+}
+
+double adh_relax_eps_floor(const adh_grid *g, const adh_material *m, double depth)
+{
+    /* Rounding leaves du of order DBL_EPSILON |u| per node, times the few
+     * dozen terms that matter in each kernel sum (measured: on the paper's
+     * measure sqrt(sum du^2)/N the floor sits near 1e-23 m for N = 200 and
+     * 1.5 nm deep, where steps stop converging). Such a du on every ring
+     * has the norm sqrt(Rmax) of itself, whatever the spacing. */
+    double ref = adh_relax_eps_ref_spacing(m);
+    return 256.0 * DBL_EPSILON * fabs(depth) * sqrt(g->rmax / ref) / (double)ADH_RELAX_EPS_NODES;
 }
 
 adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
@@ -143,6 +174,7 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->work = w->unew + 5 * g->n;
     w->ring_w = w->unew + 7 * g->n;
     adh_rings_change_weights(g, w->ring_w);
+    w->eps_scale = 1.0;
     return w;
 }
 
@@ -210,6 +242,7 @@ int adh_relax_set(adh_relax *w, const adh_material *m, const adh_relax_settings 
 {
     w->m = *m;
     w->s = *s;
+    w->eps_scale = adh_relax_change_scale(w->g, m);
     for (size_t i = 0; i < w->g->n; i++) {
         w->shape[i] = w->g->r[i] * w->g->r[i] / (2.0 * m->R);
         w->st->u[i] = 0.0;
@@ -372,10 +405,11 @@ static int relax_once(adh_relax *w)
     double wssq = (wssq4[0] + wssq4[1]) + (wssq4[2] + wssq4[3]);
     if (!isfinite(ssq))
         return ADH_ENAN;
-    /* eps as the paper writes it: [sum (u_new - u_old)^2]^(1/2) / N (its
-     * graded-grid form in adhere/rings.h reduces to this), with
-     * u_new the eq 11 deformation before it is mixed in. */
-    w->change = adh_rings_change_of(w->g, wssq);
+    /* eps as the paper writes it on the paper's grid, [sum (u_new -
+     * u_old)^2]^(1/2) / N with u_new the eq 11 deformation before it is
+     * mixed in; on any other grid the same norm of the change over r,
+     * referred to that grid (adh_relax_measure: the same product). */
+    w->change = sqrt(wssq) * w->eps_scale / (double)ADH_RELAX_EPS_NODES;
     /* Converged: keep the state whose change was measured, not one more
      * mixed update of it. With momentum the state must also be at rest: a
      * small change while the last update was large is the state passing

@@ -160,24 +160,6 @@ void adh_rings_change_weights(const adh_grid *g, double *wt)
         wt[i] = g->graded ? adh_rings_width(g, i) / g->dr : 1.0;
 }
 
-double adh_rings_change_of(const adh_grid *g, double weighted_ssq)
-{
-    return sqrt(weighted_ssq) / (g->graded ? g->rmax / g->dr : (double)g->n);
-}
-
-double adh_rings_change(const adh_grid *g, const double *du)
-{
-    double ssq = 0;
-    if (!g->graded) {
-        for (size_t i = 0; i < g->n; i++)
-            ssq += du[i] * du[i];
-    } else {
-        for (size_t i = 0; i < g->n; i++)
-            ssq += adh_rings_width(g, i) / g->dr * du[i] * du[i];
-    }
-    return adh_rings_change_of(g, ssq);
-}
-
 double adh_rings_fine_radius(const adh_grid *g)
 {
     if (!g->graded)
