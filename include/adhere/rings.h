@@ -53,10 +53,11 @@ void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len)
 unsigned adh_rings_edge_fix(const adh_grid *g, double a);
 
 /* The weights of the relaxation's convergence measure (adhere/relax.h,
- * adh_relax_measure): ring width over the finest width, w_n / dr, so that
- * dr sum_n wt_n du_n^2 is the integral of du^2 over r with du constant on
- * each ring; exactly 1 on a uniform grid. */
-void adh_rings_change_weights(const adh_grid *g, double *wt);
+ * adh_relax_measure): the part of each ring within [0, rclip] over the
+ * finest width, so that dr sum_n wt_n du_n^2 is the integral of du^2 over
+ * r < rclip with du constant on each ring; exactly 1 for every ring of a
+ * uniform grid inside rclip (INFINITY: no clip). */
+void adh_rings_change_weights(const adh_grid *g, double rclip, double *wt);
 
 /* The contact radius expected at drive position h0 (m): the larger of the
  * estimate adh_protocol_check uses for the grid radius (the undeformed

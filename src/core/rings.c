@@ -154,10 +154,15 @@ size_t adh_rings_locate(const adh_grid *g, double r)
     return lo;
 }
 
-void adh_rings_change_weights(const adh_grid *g, double *wt)
+void adh_rings_change_weights(const adh_grid *g, double rclip, double *wt)
 {
-    for (size_t i = 0; i < g->n; i++)
-        wt[i] = g->graded ? adh_rings_width(g, i) / g->dr : 1.0;
+    for (size_t i = 0; i < g->n; i++) {
+        double a = adh_rings_edge(g, i), b = adh_rings_edge(g, i + 1);
+        if (b <= rclip)
+            wt[i] = g->graded ? adh_rings_width(g, i) / g->dr : 1.0;
+        else
+            wt[i] = a < rclip ? (rclip - a) / g->dr : 0.0;
+    }
 }
 
 double adh_rings_fine_radius(const adh_grid *g)

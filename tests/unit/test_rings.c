@@ -98,9 +98,9 @@ int main(void)
      * test_eps): 1 on a uniform grid, a ring's width in fine widths. */
     double e2w[4] = { 0, 1e-9, 2e-9, 4e-9 }, wt[300];
     adh_grid *a3 = adh_rings_alloc_edges(3, e2w);
-    adh_rings_change_weights(a3, wt);
+    adh_rings_change_weights(a3, INFINITY, wt);
     ok(wt[0] == 1 && wt[1] == 1 && fabs(wt[2] - 2) < 1e-12, "a wide ring weighs as the fine rings it spans");
-    adh_rings_change_weights(u, wt);
+    adh_rings_change_weights(u, INFINITY, wt);
     int ones = 1;
     for (size_t i = 0; i < n; i++)
         ones &= wt[i] == 1.0;
