@@ -257,11 +257,11 @@ check "a bare 20 typed into R (shown in µm) is 20 µm, and the echo says so" \
     sh -c "grep -q '^ >R     20 µm ' '$EU/edit-r.txt' && grep -q '^R = 20 µm: σ = 10.61' '$EU/edit-r.txt'"
 check "the edit starts a new path" grep -q "path   0 states" "$EU/edit-r.txt"
 check "u after the edit restores the parameters and their path" \
-    sh -c "grep -q '^ >R     10 µm ' '$EU/edit-undo.txt' && grep -q 'path   124 states' '$EU/edit-undo.txt' && grep -q '^undid the edit: R = 10 µm again, with its path (124 states)' '$EU/edit-undo.txt'"
+    sh -c "grep -q '^ >R     10 µm ' '$EU/edit-undo.txt' && grep -q 'path   130 states' '$EU/edit-undo.txt' && grep -q '^undid the edit: R = 10 µm again, with its path (130 states)' '$EU/edit-undo.txt'"
 check "with the path's numbers exactly (state and cycle)" [ "$(sed -n '3,18p' "$EU/edit-undo.txt" | cut -c46-)" = "$(sed -n '3,18p' "$EU/edit-cycle.txt" | cut -c46-)" ]
 check "U puts the edit back" sh -c "grep -q '^ >R     20 µm ' '$EU/edit-redo.txt' && grep -q '^redid the edit: R = 20 µm' '$EU/edit-redo.txt'"
 check "+ doubles A, and u takes it back with the path" \
-    sh -c "grep -q '^ >A     2e-19 J' '$EU/edit-plus.txt' && grep -q '^ >A     1e-19 J' '$EU/edit-undo.screen' && grep -q 'path   124 states' '$EU/edit-undo.screen'"
+    sh -c "grep -q '^ >A     2e-19 J' '$EU/edit-plus.txt' && grep -q '^ >A     1e-19 J' '$EU/edit-undo.screen' && grep -q 'path   130 states' '$EU/edit-undo.screen'"
 
 MD=$W/measured
 check "--data draws the measured curve in the preview before any step, named in its key" \
