@@ -499,8 +499,8 @@ static int relax_once(adh_relax *w)
      * is alpha / (1 - beta) times their change; twice that is allowed. */
     w->converged = w->change < w->s.eps;
     /* eps alone passes an unrelaxed shift wherever u is small: the step's
-     * shift d spreads over N nodes as d / sqrt(N), below eps for d = 0.05 nm
-     * and N >= 2500, and a bulge of a few pm is lost in it. The central
+     * shift d counts as d / sqrt(1000) on every grid (1.6 pm at d = 0.05
+     * nm: below a larger eps), and a bulge of a few pm is lost in it. The central
      * deformation (eq 14) must also have settled to rtol (1e-3) of itself plus
      * the step (in contact u(0) passes through 0 near h0 = z0). In
      * contact the centre is held by the stiff contact modes and settles long
