@@ -74,7 +74,7 @@ int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t w
  * means the same drive on every grid, and on the paper's grid the
  * arithmetic is the paper's, digit for digit. */
 #define ADH_RELAX_EPS_NODES 1000
-#define ADH_RELAX_FAR_RINGS ADH_STATE_FAR
+#define ADH_RELAX_FAR_RINGS ADH_STATE_FAR /* 8: far_change sums them in 8 registers */
 /* D_ref for material m, m. */
 double adh_relax_eps_ref_spacing(const adh_material *m);
 /* The measure's weights on grid g for material m: wt[n] (g->n of them) the

@@ -42,7 +42,8 @@ struct adh_relax {
     double eps_scale;  /* and its scale, sqrt(dr / D_ref) */
     /* The rings the measure adds beyond a grid short of the paper's radius
      * (adh_relax_far_rings): their weights in fine widths, the kernel rows
-     * from the grid's pressure to their middles (nfar x n), their change
+     * from the grid's pressure to their middles (node by node: n x
+     * ADH_RELAX_FAR_RINGS, so one pass sums all rings at once), their change
      * and the momentum rule's update of them; their deformation is the
      * state's (adh_state.far). */
     size_t nfar;
@@ -283,10 +284,10 @@ static void far_set(adh_relax *w)
     w->nfar = adh_relax_far_rings(g, &w->m, r, fw);
     for (size_t k = 0; k < w->nfar; k++) {
         w->far_w[k] = fw[k] / g->dr;
-        double *row = w->far_k + k * g->n, prev = 0;
+        double prev = 0;
         for (size_t j = 0; j < g->n; j++) {
             double next = adh_disk_integral(r[k], adh_rings_edge(g, j + 1));
-            row[j] = next - prev;
+            w->far_k[j * ADH_RELAX_FAR_RINGS + k] = next - prev;
             prev = next;
         }
     }
@@ -438,17 +439,22 @@ ADH_SIMD_CLONES static int update(adh_relax *w, double alpha, double beta)
 /* The far rings' change, eq 11 at their middles from the grid's pressure
  * (scale = -2/E) less their deformation, into far_du; returns its part of
  * the measure's weighted sum. */
-static double far_change(adh_relax *w, double scale)
+ADH_SIMD_CLONES static double far_change(adh_relax *w, double scale)
 {
     size_t n = w->g->n;
-    const double *p = w->st->p;
-    double sum = 0;
+    const double *p = w->st->p, *kt = w->far_k;
+    /* ring by ring the sums would be chains of dependent additions: node
+     * by node all eight rings advance at once, in registers and vectors */
+    double t0 = 0, t1 = 0, t2 = 0, t3 = 0, t4 = 0, t5 = 0, t6 = 0, t7 = 0;
+    for (size_t j = 0; j < n; j++) {
+        const double *kr = kt + j * ADH_RELAX_FAR_RINGS;
+        double pj = p[j];
+        t0 += kr[0] * pj, t1 += kr[1] * pj, t2 += kr[2] * pj, t3 += kr[3] * pj;
+        t4 += kr[4] * pj, t5 += kr[5] * pj, t6 += kr[6] * pj, t7 += kr[7] * pj;
+    }
+    double t[ADH_RELAX_FAR_RINGS] = { t0, t1, t2, t3, t4, t5, t6, t7 }, sum = 0;
     for (size_t k = 0; k < w->nfar; k++) {
-        const double *row = w->far_k + k * n;
-        double t = 0;
-        for (size_t j = 0; j < n; j++)
-            t += row[j] * p[j];
-        w->far_du[k] = scale * t - w->st->far[k];
+        w->far_du[k] = scale * t[k] - w->st->far[k];
         sum += w->far_w[k] * w->far_du[k] * w->far_du[k];
     }
     return sum;
