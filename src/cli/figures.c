@@ -260,13 +260,15 @@ static int hysteresis_panel(figure *fg, const adh_config *cfg, const adh_run *ru
     FILE *f = fig_data(fg, "c.dat", dat, sizeof dat);
     if (!f)
         return -1;
-    double hmax = isnan(static_hyst) ? 0 : static_hyst;
+    double hmax = isnan(static_hyst) ? 0 : static_hyst, emin = INFINITY, emax = 0;
     for (size_t i = 0; i < n; i++) {
         const adh_turn_result *mt = adh_run_main_turn(&runs[i]);
         double h = mt ? adh_cycle_hysteresis(runs[i].rows, runs[i].nrows, mt->path) : NAN;
         if (isfinite(h)) {
             fprintf(f, "%.17g\t%.17g\n", cfg->sweep.values[i], h);
             hmax = fmax(hmax, h);
+            emin = fmin(emin, cfg->sweep.values[i]);
+            emax = fmax(emax, cfg->sweep.values[i]);
         }
     }
     if (data_done(fg, f, dat) < 0)
@@ -276,6 +278,15 @@ static int hysteresis_panel(figure *fg, const adh_config *cfg, const adh_run *ru
     adh_gnuplot_cmd(fg->gp, "set size 0.36,0.95");
     adh_gnuplot_cmd(fg->gp, "set autoscale");
     adh_gnuplot_cmd(fg->gp, "set logscale x");
+    if (emax > 0) /* the points off the frame, a tic at each */
+        adh_gnuplot_cmd(fg->gp, "set xrange [%.17g:%.17g]", emin * 1e12 / 1.6, emax * 1e12 * 1.6);
+    char tics[ADH_MAX_SWEEP * 32 + 16] = "set xtics (", one[32];
+    for (size_t i = 0; i < n && i < ADH_MAX_SWEEP; i++) {
+        int w = snprintf(one, sizeof one, "%s%.3g", i ? ", " : "", cfg->sweep.values[i] * 1e12);
+        if (w > 0 && strlen(tics) + (size_t)w + 2 < sizeof tics)
+            strcat(tics, one);
+    }
+    adh_gnuplot_cmd(fg->gp, "%s)", tics);
     adh_gnuplot_cmd(fg->gp, "set xlabel \"ε (pm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"hysteresis (fJ)\"");
     adh_gnuplot_cmd(fg->gp, "set yrange [0:%.17g]", 1.15 * hmax * 1e15);
