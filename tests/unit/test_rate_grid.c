@@ -21,6 +21,7 @@
 #include "adhere/relax.h"
 #include "adhere/status.h"
 #include "adhere/rings.h"
+#include "adhere/runner.h"
 #include "tap.h"
 
 #define STEP 0.2e-9   /* drive step, m */
@@ -45,8 +46,8 @@ static result cycle(const adh_material *m, adh_grid *g)
     adh_run run;
     adh_run_init(&run);
     char why[512];
-    if (k && (r.rc = adh_protocol_check(&ps, m, g, why, sizeof why)) == ADH_SUCCESS)
-        r.rc = adh_protocol_run(g, k, m, &rs, &ps, NULL, NULL, &run);
+    if (k && (r.rc = adh_protocol_check(&ps, m, g, why, sizeof why, NULL)) == ADH_SUCCESS)
+        r.rc = adh_runner_rule(&adh_rule_relax, g, k, m, &rs, &ps, NULL, NULL, &run);
     else if (k)
         printf("# %s\n", why);
     adh_cycle c;
@@ -82,9 +83,9 @@ int main(void)
 {
     adh_material m = adh_material_default();
     m.E = adh_material_modulus_at_sigma(&m, 15);
-    adh_grid_choice gc;
+    adh_rings_choice gc;
     char why[1024];
-    int rc = adh_grid_choose(&m, ADH_GRID_RELAX, 0, 1, &gc, why, sizeof why);
+    int rc = adh_rings_choose(&m, ADH_GRID_RELAX, 0, 1, &gc, why, sizeof why, NULL);
     ok(rc == ADH_SUCCESS && !gc.graded, "sigma = 15, turn 0: the automatic grid is uniform, N = %zu, dr = %.4g m",
        gc.n, gc.dr);
     if (rc != ADH_SUCCESS)
