@@ -37,7 +37,7 @@ typedef struct result {
 static result cycle(const adh_material *m, adh_grid *g)
 {
     result r = { NAN, NAN, NAN, NAN, g ? g->n : 0, ADH_ENOMEM };
-    adh_kernel *k = g ? adh_kernel_alloc_stored(g, ADH_KERNEL_RING, ADH_STORAGE_H2) : NULL;
+    adh_kernel *k = g ? adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_RING, .storage = ADH_STORAGE_H2 }, NULL) : NULL;
     adh_protocol_settings ps = adh_protocol_settings_default();
     ps.turns[0] = 0;
     ps.nturns = 1;
