@@ -32,7 +32,8 @@ typedef struct adh_relax_settings {
     adh_mix_rule rule;
     double momentum;     /* momentum rule: fraction of the previous update kept
                             up to the reference stiffness (adh_relax_scaled_momentum) */
-    double eps;          /* convergence: sqrt(sum (u_new - u_old)^2) / N < eps, m */
+    double eps;          /* convergence: the change's norm referred to the
+                            paper's grid below this (adh_relax_measure), m */
     double rtol;         /* and the central change |u_new(0) - u_old(0)| at most
                             rtol (|u(0)| + |d|) + eps/1000: the step's shift has relaxed */
     double mix_max;      /* largest mixing ratio (paper: 0.2) */
@@ -52,10 +53,48 @@ int adh_mix_rule_parse(const char *name, adh_mix_rule *rule);
 /* "paper" or "momentum B": the rule as reports name it. */
 void adh_mix_rule_describe(const adh_relax_settings *s, char *buf, size_t len);
 int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t whylen);
-/* The smallest eps the convergence measure can reach in double precision on
- * n nodes when deformations are up to `depth` (m): its rounding floor,
- * 256 DBL_EPSILON depth / sqrt(n). Below it every step would run to the cap. */
-double adh_relax_eps_floor(size_t n, double depth);
+/* What eps bounds. The paper's measure, [sum_n (u_new - u_old)^2]^(1/2) / N
+ * with u_new eq 11's deformation before mixing (the residual), on its own
+ * grid: uniform, N_ref = 1000 nodes of spacing D_ref (adh_grid_spacing_for
+ * at 1000 nodes: 1.5 nm at R = 10 um, z0 = 0.5 nm), out to R_ref = N_ref
+ * D_ref. There it is ||du|| / (N_ref sqrt(D_ref)), with ||du||^2 =
+ * int_0^R_ref du^2 dr = sum_n w_n du_n^2 (w_n the ring widths): a norm that
+ * converges as the grid is refined. Every grid measures that norm over
+ * that radius, with that divisor:
+ *     change = [sum_n w_n du_n^2 + sum_k w_k du_k^2]^(1/2) / (N_ref sqrt(D_ref)),
+ * w_n clipped to r < R_ref, and k over rings beyond a grid short of R_ref
+ * (adh_relax_far_rings). The radius must be the paper's because the change
+ * out of contact does not fall off: a drive step shifts u by d everywhere,
+ * and far out that shift relaxes as one flat mode, at the mixing's pace
+ * like the contact line (at the end of a Figure 4 step du is 33 pm from
+ * 0.3 to 1.5 um), so a norm over a larger radius ends every step later and
+ * one over a smaller radius earlier. The rings beyond a short grid carry
+ * what the paper's grid has there: no pressure, eq 11's deformation from
+ * the grid's pressure, the drive's shift, and the same mixing. eps then
+ * means the same drive on every grid, and on the paper's grid the
+ * arithmetic is the paper's, digit for digit. */
+#define ADH_RELAX_EPS_NODES 1000
+#define ADH_RELAX_FAR_RINGS ADH_STATE_FAR /* 8: far_change sums them in 8 registers */
+/* D_ref for material m, m. */
+double adh_relax_eps_ref_spacing(const adh_material *m);
+/* The measure's weights on grid g for material m: wt[n] (g->n of them) the
+ * part of ring n inside R_ref over dr; returns sqrt(dr / D_ref). On the
+ * paper's grid 1 and 1 exactly. */
+double adh_relax_change_weights(const adh_grid *g, const adh_material *m, double *wt);
+/* The rings the measure adds beyond grid g when it ends short of R_ref:
+ * ADH_RELAX_FAR_RINGS of them, geometric from Rmax to R_ref, their
+ * middles r[] and widths w[] (m); 0 when g reaches R_ref. */
+size_t adh_relax_far_rings(const adh_grid *g, const adh_material *m, double *r, double *w);
+/* The measure of a change du (length g->n) on grid g and du_far on its far
+ * rings (as many as adh_relax_far_rings gives; unread when none); NAN out
+ * of memory. */
+double adh_relax_measure(const adh_grid *g, const adh_material *m, const double *du, const double *du_far);
+/* The smallest eps the measure can reach in double precision when
+ * deformations are up to `depth` (m): its rounding floor, 256 DBL_EPSILON
+ * depth / sqrt(N_ref), the same on every grid (rounding per node does not
+ * shrink with the spacing, and the measure spans R_ref). Below it every
+ * step would run to the cap. */
+double adh_relax_eps_floor(double depth);
 
 /* The momentum rule's beta for the set one and a stiffness bound s: the
  * set beta up to s = ADH_RELAX_MOMENTUM_REF (the stiffest contact of the

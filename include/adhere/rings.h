@@ -52,17 +52,12 @@ int adh_rings_resolves(const adh_grid *g, double a);
 void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len);
 unsigned adh_rings_edge_fix(const adh_grid *g, double a);
 
-/* The paper's convergence measure [sum (du_n)^2]^(1/2) / N generalised:
- * du taken as constant over each ring and sampled on the uniform grid of the
- * finest width dr out to the same radius, i.e.
- *     [sum_n (w_n / dr) du_n^2]^(1/2) / (rmax / dr),   w_n = ring width.
- * On a uniform grid w_n = dr and rmax / dr = N: the paper's, exactly. */
-double adh_rings_change(const adh_grid *g, const double *du);
-/* The same in two parts, for a caller that sums as it goes: the weights
- * w_n / dr (n of them, into wt), and the measure from sum_n wt_n du_n du_n
- * (that product order gives adh_rings_change's digits). */
-void adh_rings_change_weights(const adh_grid *g, double *wt);
-double adh_rings_change_of(const adh_grid *g, double weighted_ssq);
+/* The weights of the relaxation's convergence measure (adhere/relax.h,
+ * adh_relax_measure): the part of each ring within [0, rclip] over the
+ * finest width, so that dr sum_n wt_n du_n^2 is the integral of du^2 over
+ * r < rclip with du constant on each ring; exactly 1 for every ring of a
+ * uniform grid inside rclip (INFINITY: no clip). */
+void adh_rings_change_weights(const adh_grid *g, double rclip, double *wt);
 
 /* The contact radius expected at drive position h0 (m): the larger of the
  * estimate adh_protocol_check uses for the grid radius (the undeformed

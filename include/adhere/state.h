@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#define ADH_STATE_FAR 8
+
 typedef struct adh_state {
     size_t n;
     double h0;     /* drive position: closest approach of the undeformed surfaces, m */
@@ -13,6 +15,9 @@ typedef struct adh_state {
     double *p;     /* pressure p_s(h(r_n)), Pa (eq 10) */
     double mix;    /* the relaxation's mixing ratio: part of the dynamic
                       state, so a restored snapshot resumes exactly */
+    double far[ADH_STATE_FAR]; /* the relaxation's deformation on the rings
+                      its convergence measure adds beyond a grid short of
+                      the paper's radius (adhere/relax.h); 0 otherwise */
 } adh_state;
 
 adh_state *adh_state_alloc(size_t n);

@@ -1,4 +1,6 @@
 #include "cli/batch.h"
+
+#include "adhere/cycle.h"
 #include "adhere/clock.h"
 
 #include <errno.h>
@@ -77,12 +79,14 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
     return cli_interrupt_step(o, run, NULL);
 }
 
-/* The closing line: how long, what the cycle measured, where it went. */
+/* The closing line: how long, what the cycle measured (with the static
+ * reference's loop, static_hyst, when there is one: the share of the
+ * hysteresis no slower drive removes), where it went. */
 static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh_static_result *sres,
-                         double seconds, const char *out, const char *tables, const char *plots)
+                         double static_hyst, double seconds, const char *out, const char *tables, const char *plots)
 {
-    char t[32], F[64] = "", in[64] = "", jo[64] = "", why[512];
-    double pull = NAN, jin = run->jump_in_h0, jout = NAN;
+    char t[32], F[64] = "", in[64] = "", jo[64] = "", hy[96] = "", why[512];
+    double pull = NAN, jin = run->jump_in_h0, jout = NAN, hyst = NAN;
     adh_derived d;
     adh_material_derive(&spec->mat, &d);
     if (spec->mode != ADH_MODE_RIGID && !adh_run_touched(run, d.h_star, why, sizeof why)) {
@@ -91,19 +95,25 @@ static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh
         pull = sres->pulloff_F;
         jin = sres->jump_in_h0;
         jout = sres->jump_out_h0;
+        hyst = cli_tables_static_hysteresis(run, &spec->mat);
     } else {
         const adh_turn_result *tr = adh_run_main_turn(run);
         if (tr) {
             pull = tr->pulloff_F;
             jout = tr->jump_out_h0;
+            hyst = adh_cycle_hysteresis(run->rows, run->nrows, tr->path);
         }
     }
+    if (!isnan(hyst) && !isnan(static_hyst))
+        snprintf(hy, sizeof hy, ", hysteresis %.4g fJ (static %.4g fJ)", hyst * 1e15, static_hyst * 1e15);
+    else if (!isnan(hyst))
+        snprintf(hy, sizeof hy, ", hysteresis %.4g fJ", hyst * 1e15);
     cli_progress_duration(seconds, t, sizeof t);
     adh_format_quantity(pull, ADH_Q_FORCE, 4, F, sizeof F);
     adh_format_quantity(jin, ADH_Q_LENGTH, 4, in, sizeof in);
     adh_format_quantity(jout, ADH_Q_LENGTH, 4, jo, sizeof jo);
-    fprintf(stderr, "adhere: done in %s: pull-off %s, jump-in %s, jump-out %s; ", t, isnan(pull) ? "none" : F,
-            isnan(jin) ? "none" : in, isnan(jout) ? "none" : jo);
+    fprintf(stderr, "adhere: done in %s: pull-off %s, jump-in %s, jump-out %s%s; ", t, isnan(pull) ? "none" : F,
+            isnan(jin) ? "none" : in, isnan(jout) ? "none" : jo, hy);
     if (out && strncmp(plots, "wrote ", 6) == 0)
         fprintf(stderr, "wrote %s, %s\n", tables, plots + 6);
     else if (out)
@@ -170,10 +180,15 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     adh_run ref;
     adh_run_init(&ref);
     adh_static_result rres;
+    int ref_resolved = 0;
     int want_ref = cli->reference[0] && spec->mode == ADH_MODE_RELAX && rc == ADH_SUCCESS && !run.interrupted;
     if (want_ref) {
         adh_ready_phase("reference");
-        int rrc = cli_static_run(spec, g, k, NULL, NULL, &ref, &rres);
+        char rwhy[1024];
+        int rrc = cli_static_reference(spec, g, k, &ref, &rres, &ref_resolved, rwhy, sizeof rwhy);
+        if (!ref_resolved)
+            fprintf(stderr, "adhere: warning: the static reference curve is not resolved: %s (summary.tsv: "
+                    "static_resolved 0)\n", rwhy);
         if (rrc != ADH_SUCCESS && !ref.interrupted) {
             fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(ref.status));
             want_ref = 0;
@@ -220,13 +235,16 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     if (unconverged && !cfg->output.allow_unconverged)
         status = CLI_EXIT_SOLVER;
 
+    double ref_hyst = want_ref ? cli_tables_static_hysteresis(&ref, &spec->mat) : NAN;
     char keynames[2 * CLI_TABLES_STATIC_KEYS][32];
-    cli_tables_extra extra[2 * CLI_TABLES_STATIC_KEYS];
+    cli_tables_extra extra[2 * CLI_TABLES_STATIC_KEYS + 1];
     size_t nextra = 0;
     if (spec->mode == ADH_MODE_STATIC)
-        nextra += cli_tables_static_keys(&sres, "", keynames, extra);
+        nextra += cli_tables_static_keys(&sres, cli_tables_static_hysteresis(&run, &spec->mat), "", keynames, extra);
     if (want_ref)
-        nextra += cli_tables_static_keys(&rres, "static_", keynames + nextra, extra + nextra);
+        nextra += cli_tables_static_keys(&rres, ref_hyst, "static_", keynames + nextra, extra + nextra);
+    if (want_ref)
+        extra[nextra++] = (cli_tables_extra){ "static_resolved", ref_resolved };
     /* A force table streamed to a full disk or a closed pipe is lost: say so. */
     if (ctx.stream && (fflush(ctx.stream) != 0 || ferror(ctx.stream))) {
         fprintf(stderr, "adhere: cannot write the force table to standard output: %s\n", strerror(errno));
@@ -289,7 +307,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
                              fig, in);
                 else if (fig[0])
                     snprintf(plots, sizeof plots, "wrote %s in %.1000s", fig, out);
-                closing_line(spec, &run, &sres, adh_clock_seconds() - t_start, out, tables_, plots);
+                closing_line(spec, &run, &sres, ref_hyst, adh_clock_seconds() - t_start, out, tables_, plots);
             }
         }
         tables.unwritten = unwritten;
@@ -300,7 +318,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
             status = CLI_EXIT_USAGE;
         }
     } else if (status == CLI_EXIT_OK && !cfg->output.quiet) {
-        closing_line(spec, &run, &sres, adh_clock_seconds() - t_start, NULL, "", "");
+        closing_line(spec, &run, &sres, ref_hyst, adh_clock_seconds() - t_start, NULL, "", "");
     }
     cli_interrupt_release();
     if (cli_interrupt_signal() && !partial) {

@@ -393,7 +393,7 @@ int cli_cost_main(const cli_options *cli)
     if (srun.interrupted)
         src = ADH_EINTR;   /* part of a curve is no reference */
     /* a fine h0 grid: lattice-trapping legs are far shorter than d */
-    double static_hyst = src == ADH_SUCCESS ? adh_cycle_static_hysteresis(&srun, 0.002 * sc.mat.z0) : NAN;
+    double static_hyst = src == ADH_SUCCESS ? cli_tables_static_hysteresis(&srun, &sc.mat) : NAN;
     /* the curve ends at the (deepest) turn: its contact radius there */
     double static_a = src == ADH_SUCCESS && srun.nrows ? srun.rows[srun.nrows - 1].a : NAN;
     adh_run_free(&srun);

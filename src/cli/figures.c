@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "adhere/cycle.h"
 #include "adhere/models.h"
 #include "cli/jumps.h"
 #include "cli/tables.h"
@@ -249,9 +250,62 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     return fig_end(fg, "jump.png", 0);
 }
 
+/* Figure 7's second panel: each run's hysteresis (the area between its
+ * branches, adh_cycle_hysteresis) against eps, and the static curve's
+ * loop as the line eps -> 0 tends to (the paper: the branches "will
+ * eventually coalesce" about the equilibrium). Data in c.dat. */
+static int hysteresis_panel(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n, double static_hyst)
+{
+    char dat[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
+    FILE *f = fig_data(fg, "c.dat", dat, sizeof dat);
+    if (!f)
+        return -1;
+    double hmax = isnan(static_hyst) ? 0 : static_hyst, emin = INFINITY, emax = 0;
+    for (size_t i = 0; i < n; i++) {
+        const adh_turn_result *mt = adh_run_main_turn(&runs[i]);
+        double h = mt ? adh_cycle_hysteresis(runs[i].rows, runs[i].nrows, mt->path) : NAN;
+        if (isfinite(h)) {
+            fprintf(f, "%.17g\t%.17g\n", cfg->sweep.values[i], h);
+            hmax = fmax(hmax, h);
+            emin = fmin(emin, cfg->sweep.values[i]);
+            emax = fmax(emax, cfg->sweep.values[i]);
+        }
+    }
+    if (data_done(fg, f, dat) < 0)
+        return -1;
+    adh_gnuplot_cmd(fg->gp, "unset title");
+    adh_gnuplot_cmd(fg->gp, "set origin 0.64,0");
+    adh_gnuplot_cmd(fg->gp, "set size 0.36,0.95");
+    adh_gnuplot_cmd(fg->gp, "set autoscale");
+    adh_gnuplot_cmd(fg->gp, "set logscale x");
+    if (emax > 0) /* the points off the frame, a tic at each */
+        adh_gnuplot_cmd(fg->gp, "set xrange [%.17g:%.17g]", emin * 1e12 / 1.6, emax * 1e12 * 1.6);
+    char tics[ADH_MAX_SWEEP * 32 + 16] = "set xtics (", one[32];
+    for (size_t i = 0; i < n && i < ADH_MAX_SWEEP; i++) {
+        int w = snprintf(one, sizeof one, "%s%.3g", i ? ", " : "", cfg->sweep.values[i] * 1e12);
+        if (w > 0 && strlen(tics) + (size_t)w + 2 < sizeof tics)
+            strcat(tics, one);
+    }
+    adh_gnuplot_cmd(fg->gp, "%s)", tics);
+    adh_gnuplot_cmd(fg->gp, "set xlabel \"ε (pm)\"");
+    adh_gnuplot_cmd(fg->gp, "set ylabel \"hysteresis (fJ)\"");
+    adh_gnuplot_cmd(fg->gp, "set yrange [0:%.17g]", 1.15 * hmax * 1e15);
+    adh_gnuplot_cmd(fg->gp, "set key bottom right");
+    if (isnan(static_hyst))
+        adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e12):($2*1e15) with linespoints lw 2 pt 7 lc rgb \"#1f3f8f\" "
+                        "title \"relaxation\"", adh_gp_path(dat, q, sizeof q));
+    else
+        adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e12):($2*1e15) with linespoints lw 2 pt 7 lc rgb \"#1f3f8f\" "
+                        "title \"relaxation\", %.17g with lines lw 3 lc rgb \"#000000\" dt (5,4) "
+                        "title \"static (ε → 0)\"", adh_gp_path(dat, q, sizeof q), static_hyst * 1e15);
+    adh_gnuplot_cmd(fg->gp, "unset multiplot");
+    return 0;
+}
+
 /* Figure 7: every run's loading and unloading curves, with the JKR
- * equilibrium curve when the runs share one material. */
-static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n)
+ * equilibrium curve when the runs share one material; an eps sweep adds
+ * the hysteresis panel. */
+static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n, double static_hyst)
 {
     char dat[PATH_MAX + 16], jkr[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
@@ -297,7 +351,14 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     const char *fu;
     adh_force_unit(fbig, &fs, &fu);
     fig_begin(fg, "force.png");
-    adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", adh_sweep_name(cfg->sweep.kind));
+    if (same_material) {
+        adh_gnuplot_cmd(fg->gp, "set multiplot title \"Force vs position for each %s, and the hysteresis (Figure 7)\"",
+                        adh_sweep_name(cfg->sweep.kind));
+        adh_gnuplot_cmd(fg->gp, "set origin 0,0");
+        adh_gnuplot_cmd(fg->gp, "set size 0.64,0.95");
+    } else {
+        adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", adh_sweep_name(cfg->sweep.kind));
+    }
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
     /* the loops hang below zero and the curves are flat past the jump-out:
@@ -334,11 +395,13 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     fclose(c);
     adh_gnuplot_cmd(fg->gp, "%s", cmd);
     free(cmd);
+    if (same_material && hysteresis_panel(fg, cfg, runs, n, static_hyst) != 0)
+        return -1;
     return fig_end(fg, "force.png", 0);
 }
 
-int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, adh_outdir *out,
-                      char *msg, size_t msglen)
+int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, double static_hysteresis,
+                      adh_outdir *out, char *msg, size_t msglen)
 {
     if (msglen)
         msg[0] = '\0';
@@ -347,7 +410,7 @@ int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, adh_
     figure fg;
     if (fig_open(&fg, cfg, out, msg, msglen) != 0)
         return -1;
-    int rc = cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP ? jump(&fg, cfg, runs, n) : force_overlay(&fg, cfg, runs, n);
+    int rc = cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP ? jump(&fg, cfg, runs, n) : force_overlay(&fg, cfg, runs, n, static_hysteresis);
     fig_close(&fg);
     return rc;
 }

@@ -19,9 +19,11 @@
 int cli_figures_run(const adh_config *cfg, const adh_run_spec *spec, const adh_run *run, adh_outdir *out,
                     char *msg, size_t msglen, char *unwritten, size_t ulen);
 
-/* The sweep's combined figure (cfg->sweep.plot) from runs[0..n) in out.
+/* The sweep's combined figure (cfg->sweep.plot) from runs[0..n) in out;
+ * an eps sweep's Figure 7 has a panel of hysteresis against eps, with
+ * static_hysteresis (the static curve's loop; NAN: none) as its line.
  * 0, or -1 with msg. */
-int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, adh_outdir *out,
-                      char *msg, size_t msglen);
+int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, double static_hysteresis,
+                      adh_outdir *out, char *msg, size_t msglen);
 
 #endif

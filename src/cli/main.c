@@ -15,6 +15,7 @@
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "scene/budget.h"
+#include "cli/static.h"
 #include "scene/config.h"
 #include "scene/plan.h"
 #include "tui/actions.h"
@@ -123,6 +124,8 @@ int main(int argc, char **argv)
         adh_plan plan;
         adh_plan_make(&cli.cfg, &plan);
         adh_plan_print(stdout, &cli.cfg, &plan);
+        if (cli.reference[0])
+            cli_static_reference_plan(stdout, &cli.cfg.spec);
         return stdout_done();
     }
     case CLI_ACT_COST:

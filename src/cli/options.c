@@ -52,7 +52,7 @@ static const option_doc options[] = {
     { { "growth", required_argument, 0, OPT_GROWTH }, "R", "graded grid: width ratio of neighbouring rings past the band, 1 to 1.1 (default 1.05)", "grid.growth", NULL },
     { { "grid-radius", required_argument, 0, OPT_GRID_RADIUS }, "M|auto", "graded grid: outer radius Rmax (default, auto: the default uniform grid's, 1.5um at R=10um, z0=0.5nm)", "grid.radius", NULL },
     { { "operator", required_argument, 0, OPT_OPERATOR }, "dense|hmat|h2", "how the kernel is held: dense matrix, hierarchical by hmat-oss, or H^2 (default dense; h2 past 4000 nodes and on an automatic graded grid)", "grid.operator", NULL },
-    { { "eps", required_argument, 0, 'e' }, "M", "convergence: sqrt(sum du^2)/N below this ends a step (default 1pm)", "solver.eps", NULL },
+    { { "eps", required_argument, 0, 'e' }, "M", "convergence: the change per iteration below this ends a step, measured as the paper's sqrt(sum du^2)/N on its own grid, so the same eps is the same drive on every grid (default 1pm)", "solver.eps", NULL },
     { { "max-iter", required_argument, 0, OPT_MAX_ITER }, "N", "iteration cap per step; reaching it is reported (default 200000)", "solver.max_iter", NULL },
     { { "allow-unconverged", no_argument, 0, OPT_ALLOW_UNCONVERGED }, NULL, "accept steps that reach the cap: exit 0 (the summary still says unconverged)", "output.allow_unconverged", "yes" },
     { { "mixing", required_argument, 0, OPT_MIXING }, "paper|momentum", "mixing rule of the relaxation: the paper's adaptive ratio or heavy-ball momentum (default momentum)", "solver.mixing", NULL },

@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "adhere/cycle.h"
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
 #include "adhere/models.h"
@@ -105,7 +106,7 @@ static size_t finished(const adh_config *cfg, const adh_run *runs)
 }
 
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                          const int *status)
+                          const int *status, double static_hysteresis, int static_resolved)
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
     int stat = cfg->spec.mode == ADH_MODE_STATIC && sres;
@@ -118,12 +119,17 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
     if (stat)
         fprintf(f, "# mode static: each run is the equilibrium curve; jump_in_h0 its first fold, h_before the central gap at the last stable point before it;\n"
                    "# max_load the force at the curve's end (the turn); pulloff_F the load-controlled pull-off (minimum force), pulloff_F_disp the force at the jump-out fold;\n"
-                   "# jumped: 1 the curve has a fold, 0 contact came without one, -1 no contact; steps the curve's points, iterations its Newton iterations\n");
+                   "# jumped: 1 the curve has a fold, 0 contact came without one, -1 no contact; steps the curve's points, iterations its Newton iterations;\n"
+                   "# hysteresis: the equilibrium loop's area (displacement control: the highest and lowest stable force at each h0), J\n");
     else
         fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n"
-                   "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n");
+                   "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n"
+                   "# pulloff_F: the force minimum on unloading; jump_out_h0: where the surfaces separate; hysteresis: the area between loading and unloading, J\n");
     fprintf(f, "# swept: the parameter the sweep varies (%s), value: its value in this run\n", name);
-    fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tjumped\t%sstatus\n",
+    if (!isnan(static_hysteresis))
+        fprintf(f, "# static_hysteresis: %.17g J, the static curve's loop (eps -> 0: the jump instabilities' share of every run's hysteresis)%s\n",
+                static_hysteresis, static_resolved ? "" : ", on a grid that does not resolve it");
+    fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tjumped\thysteresis\t%sstatus\n",
             stat ? "pulloff_F_disp\tfolds\t" : "");
     for (size_t i = 0; i < cfg->sweep.n; i++) {
         adh_run_spec rc;
@@ -133,17 +139,19 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
         const adh_run *r = &runs[i];
         const adh_turn_result *mt = adh_run_main_turn(r);
         double max_load = mt ? mt->max_load : NAN, pull = mt ? mt->pulloff_F : NAN, out = mt ? mt->jump_out_h0 : NAN;
+        double hyst = mt ? adh_cycle_hysteresis(r->rows, r->nrows, mt->path) : NAN;
         if (stat) {
             /* a run that never started has no summary worth the name */
             int ran = r->nrows > 0;
             max_load = ran && status[i] == ADH_SUCCESS && !r->interrupted ? r->rows[r->nrows - 1].F : NAN;
             pull = ran ? sres[i].pulloff_F : NAN;
             out = ran ? sres[i].jump_out_h0 : NAN;
+            hyst = ran ? cli_tables_static_hysteresis(r, &rc.mat) : NAN;
         }
-        fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%d\t",
+        fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%d\t%.17g\t",
                 i + 1, name, cfg->sweep.values[i], rc.mat.E, d.sigma, rc.relax.eps, r->jump_in_h0,
                 cli_jumps_gap_before(r), d.h_star, max_load, pull, out, r->nrows, r->iterations, r->seconds,
-                cli_jumps_jumped(r, rc.proto.step));
+                cli_jumps_jumped(r, rc.proto.step), hyst);
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
         fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r));
@@ -156,12 +164,42 @@ typedef struct sweep_tables {
     const adh_run *runs;
     const adh_static_result *sres;
     const int *status;
+    double static_hysteresis;
+    int static_resolved;
 } sweep_tables;
 
 static int write_sweep(FILE *f, const void *ctx)
 {
     const sweep_tables *t = ctx;
-    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
+    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status, t->static_hysteresis, t->static_resolved);
+}
+
+/* An eps sweep drawn as Figure 7: its runs' hysteresis against eps needs
+ * the value eps -> 0 leaves, the static curve's loop (one curve: eps does
+ * not enter it). NAN when not asked or when the curve failed; *resolved
+ * whether its grid resolves it. */
+static double sweep_static_hysteresis(const adh_config *cfg, const adh_grid *g, const adh_kernel *k, int *resolved)
+{
+    *resolved = 0;
+    if (cfg->sweep.kind != ADH_SWEEP_EPS || cfg->spec.mode != ADH_MODE_RELAX || !cfg->output.plot ||
+        cfg->sweep.plot != ADH_SWEEP_PLOT_FORCE || cli_interrupt_signal())
+        return NAN;
+    adh_run_spec rs;
+    adh_config_sweep_run(cfg, 0, &rs);
+    adh_run ref;
+    adh_run_init(&ref);
+    adh_static_result res;
+    adh_ready_phase("reference");
+    char why[1024];
+    int st = cli_static_reference(&rs, g, k, &ref, &res, resolved, why, sizeof why);
+    if (!*resolved)
+        fprintf(stderr, "adhere: warning: Figure 7's equilibrium line comes from a static curve the grid does not "
+                "resolve: %s\n", why);
+    double h = st == ADH_SUCCESS && !ref.interrupted ? cli_tables_static_hysteresis(&ref, &rs.mat) : NAN;
+    if (st != ADH_SUCCESS && !ref.interrupted)
+        fprintf(stderr, "adhere: the static curve for Figure 7's equilibrium line failed: %s\n", adh_strerror(st));
+    adh_run_free(&ref);
+    return h;
 }
 
 /* Tables of run i in dir (out/run-K): force.tsv and turns.tsv when data
@@ -183,7 +221,8 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     /* a static run's summary.tsv has the batch's static keys */
     char keynames[CLI_TABLES_STATIC_KEYS][32];
     cli_tables_extra extra[CLI_TABLES_STATIC_KEYS];
-    size_t nextra = rspec.mode == ADH_MODE_STATIC && run->nrows ? cli_tables_static_keys(sres, "", keynames, extra) : 0;
+    size_t nextra = rspec.mode == ADH_MODE_STATIC && run->nrows
+                  ? cli_tables_static_keys(sres, cli_tables_static_hysteresis(run, &rspec.mat), "", keynames, extra) : 0;
     cli_tables t = { cfg, &rspec, run, extra, nextra, partial, note, lost, word };
     int status = CLI_EXIT_OK;
     if (data) {
@@ -392,6 +431,8 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
+    int static_resolved;
+    double static_hyst = sweep_static_hysteresis(cfg, g, k, &static_resolved);
 
     int exit_status = CLI_EXIT_OK;
     for (size_t i = 0; i < n; i++) {
@@ -405,9 +446,9 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         else if (runs[i].unconverged && !cfg->output.allow_unconverged)
             exit_status = worse(exit_status, CLI_EXIT_SOLVER);   /* sweep.tsv says unconverged */
     }
-    sweep_tables st = { cfg, runs, sres, status };
+    sweep_tables st = { cfg, runs, sres, status, static_hyst, static_resolved };
     if (!out) {
-        cli_sweep_table(stdout, cfg, runs, sres, status);
+        cli_sweep_table(stdout, cfg, runs, sres, status, static_hyst, static_resolved);
     } else {
         for (size_t i = 0; i < n; i++) {
             if (tables[i] < 0) /* never started: its tables say interrupted */
@@ -427,7 +468,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
             exit_status = worse(exit_status, CLI_EXIT_USAGE);
         } else if (cfg->output.plot && exit_status == CLI_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
             char msg[1024] = "";
-            if (cli_figures_sweep(cfg, runs, n, od, msg, sizeof msg) != 0) {
+            if (cli_figures_sweep(cfg, runs, n, static_hyst, od, msg, sizeof msg) != 0) {
                 fprintf(stderr, "adhere: sweep plot not written: %s\n", msg);
                 exit_status = worse(exit_status, CLI_EXIT_PLOT);
             }

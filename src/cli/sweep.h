@@ -18,8 +18,11 @@
 int cli_sweep_main(const cli_options *cli, adh_outdir *out);
 
 /* sweep.tsv: one row per run. runs[i] is run i of cfg's sweep; in mode =
- * static sres[i] is its curve's summary (pulloff_F_disp and folds columns). */
+ * static sres[i] is its curve's summary (pulloff_F_disp and folds columns).
+ * static_hysteresis, unless NAN, is the static curve's loop area (an eps
+ * sweep's Figure 7), said in a comment line (and whether its grid
+ * resolved it). */
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                          const int *status);
+                    const int *status, double static_hysteresis, int static_resolved);
 
 #endif

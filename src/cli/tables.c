@@ -9,6 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "adhere/cycle.h"
 #include "adhere/grid.h"
 #include "adhere/models.h"
 #include "adhere/status.h"
@@ -162,6 +163,7 @@ int cli_tables_summary(FILE *f, const void *ctx)
         kv(f, "pulloff_F", mt ? mt->pulloff_F : NAN);
         kv(f, "pulloff_h0", mt ? mt->pulloff_h0 : NAN);
         kv(f, "jump_out_h0", mt ? mt->jump_out_h0 : NAN);
+        kv(f, "hysteresis", mt ? adh_cycle_hysteresis(r->rows, r->nrows, mt->path) : NAN);
     }
     for (size_t i = 0; i < t->nextra; i++)
         kv(f, t->extra[i].key, t->extra[i].value);
@@ -200,16 +202,23 @@ int cli_tables_turns(FILE *f, const void *ctx)
 {
     const cli_tables *t = ctx;
     comment_head(f, t, "turning points: the adhesion (-pulloff_F) against the maximum load (Figures 5, 6 insets)");
-    fputs("turn_h0\tmax_load\ta_turn\tpulloff_F\tpulloff_h0\tjump_out_h0\tpath\n", f);
-    for (size_t i = 0; i < t->run->nturns; i++) {
-        const adh_turn_result *tr = &t->run->turns[i];
-        fprintf(f, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%d\n", tr->h0, tr->max_load, tr->a_turn,
-                tr->pulloff_F, tr->pulloff_h0, tr->jump_out_h0, tr->path);
+    fputs("turn_h0\tmax_load\ta_turn\tpulloff_F\tpulloff_h0\tjump_out_h0\tpath\thysteresis\n", f);
+    const adh_run *r = t->run;
+    for (size_t i = 0; i < r->nturns; i++) {
+        const adh_turn_result *tr = &r->turns[i];
+        fprintf(f, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%d\t%.17g\n", tr->h0, tr->max_load, tr->a_turn,
+                tr->pulloff_F, tr->pulloff_h0, tr->jump_out_h0, tr->path,
+                tr->path > 0 ? adh_cycle_hysteresis(r->rows, r->nrows, tr->path) : NAN);
     }
     return 0;
 }
 
-size_t cli_tables_static_keys(const adh_static_result *res, const char *prefix,
+double cli_tables_static_hysteresis(const adh_run *curve, const adh_material *m)
+{
+    return curve->nrows ? adh_cycle_static_hysteresis(curve, CLI_TABLES_HYSTERESIS_STEP * m->z0) : NAN;
+}
+
+size_t cli_tables_static_keys(const adh_static_result *res, double hysteresis, const char *prefix,
                               char names[][32], cli_tables_extra *extra)
 {
     const struct { const char *key; double value; } v[CLI_TABLES_STATIC_KEYS] = {
@@ -221,6 +230,7 @@ size_t cli_tables_static_keys(const adh_static_result *res, const char *prefix,
         { "folds", (double)res->folds },
         { "points", (double)res->points },
         { "newton_iterations", (double)res->newton_iterations },
+        { "hysteresis", hysteresis },
     };
     for (size_t i = 0; i < CLI_TABLES_STATIC_KEYS; i++) {
         snprintf(names[i], 32, "%s%s", prefix, v[i].key);

@@ -49,10 +49,17 @@ int cli_tables_force(FILE *f, const void *tables);
 int cli_tables_summary(FILE *f, const void *tables);
 int cli_tables_turns(FILE *f, const void *tables);
 
-/* The summary keys of a static result, prefixed ("" or "static_"), into
- * extra[] (at most CLI_TABLES_STATIC_KEYS entries); returns how many. */
-#define CLI_TABLES_STATIC_KEYS 8
-size_t cli_tables_static_keys(const adh_static_result *res, const char *prefix,
+/* The equilibrium loop's area of a static curve (adh_cycle_static_hysteresis
+ * sampled every CLI_TABLES_HYSTERESIS_STEP z0): the hysteresis no slower
+ * drive removes, the jump instabilities'. NAN for an empty curve. */
+#define CLI_TABLES_HYSTERESIS_STEP 0.002
+double cli_tables_static_hysteresis(const adh_run *curve, const adh_material *m);
+
+/* The summary keys of a static result and its loop's area (above),
+ * prefixed ("" or "static_"), into extra[] (at most CLI_TABLES_STATIC_KEYS
+ * entries); returns how many. */
+#define CLI_TABLES_STATIC_KEYS 9
+size_t cli_tables_static_keys(const adh_static_result *res, double hysteresis, const char *prefix,
                               char names[][32], cli_tables_extra *extra);
 
 #endif

@@ -178,10 +178,10 @@ int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const a
         double deepest = 0;
         for (size_t i = 0; i < ps->nturns && i < ADH_MAX_TURNS; i++)
             deepest = fmin(deepest, ps->turns[i]);
-        double floor_eps = adh_relax_eps_floor(g->n, m->z0 - deepest);
+        double floor_eps = adh_relax_eps_floor(m->z0 - deepest);
         if (rs->eps < floor_eps) {
-            snprintf(why, whylen, "eps = %g m is below what double precision can reach on %zu nodes with deformations up to %g m: the smallest eps allowed here is %g m",
-                     rs->eps, g->n, m->z0 - deepest, floor_eps);
+            snprintf(why, whylen, "eps = %g m is below what double precision can reach with deformations up to %g m: the smallest eps allowed here is %g m",
+                     rs->eps, m->z0 - deepest, floor_eps);
             return ADH_EINVAL;
         }
     }

@@ -38,7 +38,17 @@ struct adh_relax {
     double *perron;    /* momentum rule: power-iteration vector of the stiffness */
     double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x;
                           in an update, the new gaps */
-    double *ring_w;    /* eps's weight of each node (adhere/rings.h) */
+    double *ring_w;    /* eps's weight of each node (adh_relax_change_weights) */
+    double eps_scale;  /* and its scale, sqrt(dr / D_ref) */
+    /* The rings the measure adds beyond a grid short of the paper's radius
+     * (adh_relax_far_rings): their weights in fine widths, the kernel rows
+     * from the grid's pressure to their middles (node by node: n x
+     * ADH_RELAX_FAR_RINGS, so one pass sums all rings at once), their change
+     * and the momentum rule's update of them; their deformation is the
+     * state's (adh_state.far). */
+    size_t nfar;
+    double far_w[ADH_RELAX_FAR_RINGS], far_du[ADH_RELAX_FAR_RINGS], far_vel[ADH_RELAX_FAR_RINGS];
+    double *far_k;
     double stiffness;  /* upper bound on the largest eigenvalue of (2/E) W |p'| */
     size_t since_estimate;
     double best_change;   /* smallest change since the momentum last restarted */
@@ -114,13 +124,63 @@ int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t w
     return ADH_SUCCESS;
 }
 
-double adh_relax_eps_floor(size_t n, double depth)
+double adh_relax_eps_ref_spacing(const adh_material *m)
 {
-    /* The measure is sqrt(sum du^2)/N; rounding leaves du of order
-     * DBL_EPSILON |u| per node, times the few dozen terms that matter in
-     * each kernel sum: measured, the floor sits near 1e-23 m for N = 200
-     * and 1.5 nm deep, where steps stop converging. */
-    return 256.0 * DBL_EPSILON * fabs(depth) / sqrt((double)(n ? n : 1));
+    return adh_grid_spacing_for(m, ADH_RELAX_EPS_NODES);
+}
+
+double adh_relax_change_weights(const adh_grid *g, const adh_material *m, double *wt)
+{
+    double ref = adh_relax_eps_ref_spacing(m), ratio = g->dr / ref;
+    /* the paper's grid however its spacing was written down (1.5nm, or
+     * scaled from R and z0): the paper's arithmetic, digit for digit */
+    if (fabs(ratio - 1.0) < 1e-9 && !g->graded && g->n == ADH_RELAX_EPS_NODES) {
+        adh_rings_change_weights(g, INFINITY, wt);
+        return 1.0;
+    }
+    adh_rings_change_weights(g, (double)ADH_RELAX_EPS_NODES * ref, wt);
+    return fabs(ratio - 1.0) < 1e-9 ? 1.0 : sqrt(ratio);
+}
+
+size_t adh_relax_far_rings(const adh_grid *g, const adh_material *m, double *r, double *w)
+{
+    double rref = (double)ADH_RELAX_EPS_NODES * adh_relax_eps_ref_spacing(m);
+    if (!(g->rmax < rref * (1 - 1e-9)))
+        return 0;
+    /* geometric, finer near the grid where the change still bends */
+    double q = pow(rref / g->rmax, 1.0 / ADH_RELAX_FAR_RINGS), a = g->rmax;
+    for (size_t k = 0; k < ADH_RELAX_FAR_RINGS; k++) {
+        double b = k + 1 == ADH_RELAX_FAR_RINGS ? rref : a * q;
+        r[k] = 0.5 * (a + b);
+        w[k] = b - a;
+        a = b;
+    }
+    return ADH_RELAX_FAR_RINGS;
+}
+
+double adh_relax_measure(const adh_grid *g, const adh_material *m, const double *du, const double *du_far)
+{
+    double *wt = malloc(g->n * sizeof *wt), ssq = 0, fr[ADH_RELAX_FAR_RINGS], fw[ADH_RELAX_FAR_RINGS];
+    if (!wt)
+        return NAN;
+    double scale = adh_relax_change_weights(g, m, wt);
+    for (size_t i = 0; i < g->n; i++)
+        ssq += wt[i] * du[i] * du[i];
+    free(wt);
+    size_t nfar = adh_relax_far_rings(g, m, fr, fw);
+    for (size_t k = 0; k < nfar; k++)
+        ssq += fw[k] / g->dr * du_far[k] * du_far[k];
+    return sqrt(ssq) * scale / (double)ADH_RELAX_EPS_NODES;
+}
+
+double adh_relax_eps_floor(double depth)
+{
+    /* Rounding leaves du of order DBL_EPSILON |u| per node, times the few
+     * dozen terms that matter in each kernel sum (measured: the floor sits
+     * near 1e-23 m on the paper's grid with N = 200 and 1.5 nm deep, where
+     * steps stop converging). Such a du on every ring has the norm of the
+     * paper's radius, whatever the grid. */
+    return 256.0 * DBL_EPSILON * fabs(depth) / sqrt((double)ADH_RELAX_EPS_NODES);
 }
 
 adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
@@ -142,7 +202,11 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->perron = w->unew + 4 * g->n;
     w->work = w->unew + 5 * g->n;
     w->ring_w = w->unew + 7 * g->n;
-    adh_rings_change_weights(g, w->ring_w);
+    w->far_k = malloc(ADH_RELAX_FAR_RINGS * g->n * sizeof *w->far_k);
+    if (!w->far_k) {
+        adh_relax_free(w);
+        return NULL;
+    }
     return w;
 }
 
@@ -152,6 +216,7 @@ void adh_relax_free(adh_relax *w)
         return;
     adh_state_free(w->st);
     free(w->unew);
+    free(w->far_k);
     free(w);
 }
 
@@ -173,6 +238,8 @@ static void momentum_reset(adh_relax *w)
         w->vel[i] = 0.0;
         w->perron[i] = 1.0;
     }
+    for (size_t k = 0; k < ADH_RELAX_FAR_RINGS; k++)
+        w->far_vel[k] = 0.0;
     w->stiffness = 0.0;
     w->damping = 1.0;
     w->beta = w->s.momentum;
@@ -206,16 +273,40 @@ static void estimate_stiffness(adh_relax *w)
     w->since_estimate = 0;
 }
 
+/* The far rings of the measure (adh_relax_far_rings) for the material
+ * set: their weights and kernel rows, the exact ring kernel from the
+ * grid's rings (the far rings lie beyond them, where the paper's kernel
+ * and the ring kernel agree to (dr/r)^2). */
+static void far_set(adh_relax *w)
+{
+    double r[ADH_RELAX_FAR_RINGS], fw[ADH_RELAX_FAR_RINGS];
+    const adh_grid *g = w->g;
+    w->nfar = adh_relax_far_rings(g, &w->m, r, fw);
+    for (size_t k = 0; k < w->nfar; k++) {
+        w->far_w[k] = fw[k] / g->dr;
+        double prev = 0;
+        for (size_t j = 0; j < g->n; j++) {
+            double next = adh_disk_integral(r[k], adh_rings_edge(g, j + 1));
+            w->far_k[j * ADH_RELAX_FAR_RINGS + k] = next - prev;
+            prev = next;
+        }
+    }
+}
+
 int adh_relax_set(adh_relax *w, const adh_material *m, const adh_relax_settings *s, double h0)
 {
     w->m = *m;
     w->s = *s;
+    w->eps_scale = adh_relax_change_weights(w->g, m, w->ring_w);
+    far_set(w);
     for (size_t i = 0; i < w->g->n; i++) {
         w->shape[i] = w->g->r[i] * w->g->r[i] / (2.0 * m->R);
         w->st->u[i] = 0.0;
     }
     w->st->h0 = h0;
     w->st->mix = s->mix_max;
+    for (size_t k = 0; k < ADH_STATE_FAR; k++)
+        w->st->far[k] = 0.0;
     w->prev_central = 0;
     w->change = 0;
     w->iters = 0;
@@ -234,6 +325,8 @@ void adh_relax_move(adh_relax *w, double h0_new)
     double shift = h0_new - w->st->h0;
     for (size_t i = 0; i < w->st->n; i++)
         w->st->u[i] += shift;
+    for (size_t k = 0; k < w->nfar; k++)
+        w->st->far[k] += shift;
     w->st->h0 = h0_new;
     w->shifted = shift != 0;
     if (shift != 0)
@@ -281,6 +374,8 @@ static double momentum_ratio(adh_relax *w)
     if (w->change > 2.0 * w->best_change) {
         for (size_t i = 0; i < w->st->n; i++)
             w->vel[i] = 0.0;
+        for (size_t k = 0; k < w->nfar; k++)
+            w->far_vel[k] = 0.0;
         w->best_change = w->change;
         w->damping = fmax(1e-3, w->damping * w->s.mix_down);
         estimate_stiffness(w);
@@ -341,6 +436,30 @@ ADH_SIMD_CLONES static int update(adh_relax *w, double alpha, double beta)
     return 0;
 }
 
+/* The far rings' change, eq 11 at their middles from the grid's pressure
+ * (scale = -2/E) less their deformation, into far_du; returns its part of
+ * the measure's weighted sum. */
+ADH_SIMD_CLONES static double far_change(adh_relax *w, double scale)
+{
+    size_t n = w->g->n;
+    const double *p = w->st->p, *kt = w->far_k;
+    /* ring by ring the sums would be chains of dependent additions: node
+     * by node all eight rings advance at once, in registers and vectors */
+    double t0 = 0, t1 = 0, t2 = 0, t3 = 0, t4 = 0, t5 = 0, t6 = 0, t7 = 0;
+    for (size_t j = 0; j < n; j++) {
+        const double *kr = kt + j * ADH_RELAX_FAR_RINGS;
+        double pj = p[j];
+        t0 += kr[0] * pj, t1 += kr[1] * pj, t2 += kr[2] * pj, t3 += kr[3] * pj;
+        t4 += kr[4] * pj, t5 += kr[5] * pj, t6 += kr[6] * pj, t7 += kr[7] * pj;
+    }
+    double t[ADH_RELAX_FAR_RINGS] = { t0, t1, t2, t3, t4, t5, t6, t7 }, sum = 0;
+    for (size_t k = 0; k < w->nfar; k++) {
+        w->far_du[k] = scale * t[k] - w->st->far[k];
+        sum += w->far_w[k] * w->far_du[k] * w->far_du[k];
+    }
+    return sum;
+}
+
 /* One pass of eq 11 with mixing: v = beta v + alpha (u_new - u), u += v,
  * with beta = 0 under the paper's rule. An update that would close the gap
  * somewhere (h <= 0, where the law has no meaning) is undone: the momentum
@@ -370,12 +489,15 @@ static int relax_once(adh_relax *w)
     }
     double ssq = (ssq4[0] + ssq4[1]) + (ssq4[2] + ssq4[3]);
     double wssq = (wssq4[0] + wssq4[1]) + (wssq4[2] + wssq4[3]);
+    if (w->nfar)
+        wssq += far_change(w, scale);
     if (!isfinite(ssq))
         return ADH_ENAN;
-    /* eps as the paper writes it: [sum (u_new - u_old)^2]^(1/2) / N (its
-     * graded-grid form in adhere/rings.h reduces to this), with
-     * u_new the eq 11 deformation before it is mixed in. */
-    w->change = adh_rings_change_of(w->g, wssq);
+    /* eps as the paper writes it on the paper's grid, [sum (u_new -
+     * u_old)^2]^(1/2) / N with u_new the eq 11 deformation before it is
+     * mixed in; on any other grid the same norm of the change over the
+     * paper grid's radius (adh_relax_measure: the same product). */
+    w->change = sqrt(wssq) * w->eps_scale / (double)ADH_RELAX_EPS_NODES;
     /* Converged: keep the state whose change was measured, not one more
      * mixed update of it. With momentum the state must also be at rest: a
      * small change while the last update was large is the state passing
@@ -383,8 +505,8 @@ static int relax_once(adh_relax *w)
      * is alpha / (1 - beta) times their change; twice that is allowed. */
     w->converged = w->change < w->s.eps;
     /* eps alone passes an unrelaxed shift wherever u is small: the step's
-     * shift d spreads over N nodes as d / sqrt(N), below eps for d = 0.05 nm
-     * and N >= 2500, and a bulge of a few pm is lost in it. The central
+     * shift d counts as d / sqrt(1000) on every grid (1.6 pm at d = 0.05
+     * nm: below a larger eps), and a bulge of a few pm is lost in it. The central
      * deformation (eq 14) must also have settled to rtol (1e-3) of itself plus
      * the step (in contact u(0) passes through 0 near h0 = z0). In
      * contact the centre is held by the stiff contact modes and settles long
@@ -413,6 +535,8 @@ static int relax_once(adh_relax *w)
         if (beta > 0) {
             for (size_t i = 0; i < n; i++)
                 w->vel[i] = 0.0;
+            for (size_t f = 0; f < w->nfar; f++)
+                w->far_vel[f] = 0.0;
             beta = 0;
             continue;
         }
@@ -421,6 +545,11 @@ static int relax_once(adh_relax *w)
             return ADH_ENAN;
         }
         alpha = fmax(w->s.mix_min, alpha * 0.5);
+    }
+    /* the far rings move as the grid's far nodes do */
+    for (size_t f = 0; f < w->nfar; f++) {
+        w->far_vel[f] = beta * w->far_vel[f] + alpha * w->far_du[f];
+        st->far[f] += w->far_vel[f];
     }
     st->mix = alpha;
     return ADH_SUCCESS;

@@ -154,28 +154,15 @@ size_t adh_rings_locate(const adh_grid *g, double r)
     return lo;
 }
 
-void adh_rings_change_weights(const adh_grid *g, double *wt)
+void adh_rings_change_weights(const adh_grid *g, double rclip, double *wt)
 {
-    for (size_t i = 0; i < g->n; i++)
-        wt[i] = g->graded ? adh_rings_width(g, i) / g->dr : 1.0;
-}
-
-double adh_rings_change_of(const adh_grid *g, double weighted_ssq)
-{
-    return sqrt(weighted_ssq) / (g->graded ? g->rmax / g->dr : (double)g->n);
-}
-
-double adh_rings_change(const adh_grid *g, const double *du)
-{
-    double ssq = 0;
-    if (!g->graded) {
-        for (size_t i = 0; i < g->n; i++)
-            ssq += du[i] * du[i];
-    } else {
-        for (size_t i = 0; i < g->n; i++)
-            ssq += adh_rings_width(g, i) / g->dr * du[i] * du[i];
+    for (size_t i = 0; i < g->n; i++) {
+        double a = adh_rings_edge(g, i), b = adh_rings_edge(g, i + 1);
+        if (b <= rclip)
+            wt[i] = g->graded ? adh_rings_width(g, i) / g->dr : 1.0;
+        else
+            wt[i] = a < rclip ? (rclip - a) / g->dr : 0.0;
     }
-    return adh_rings_change_of(g, ssq);
 }
 
 double adh_rings_fine_radius(const adh_grid *g)

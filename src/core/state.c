@@ -32,6 +32,7 @@ void adh_state_copy(adh_state *dst, const adh_state *src)
 {
     dst->h0 = src->h0;
     dst->mix = src->mix;
+    memcpy(dst->far, src->far, sizeof dst->far);
     memcpy(dst->u, src->u, 3 * src->n * sizeof(double));
 }
 

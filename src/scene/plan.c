@@ -190,10 +190,10 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     snprintf(what, sizeof what, "%sforce.tsv", prefix);
     note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
     snprintf(what, sizeof what, "%ssummary.tsv", prefix);
-    note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star, jump_in_h0, pull-off, total iterations and seconds");
+    note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, hysteresis, total iterations and seconds");
     if (p->unloading_branches || (p->elastic && s0->proto.nturns)) {
         snprintf(what, sizeof what, "%sturns.tsv", prefix);
-        note(p->stored, &p->nstored, what, "one row per turning point: maximum load, contact radius, pull-off (adhesion vs load)");
+        note(p->stored, &p->nstored, what, "one row per turning point: maximum load, contact radius, pull-off, jump-out, hysteresis (adhesion vs load)");
     }
     if (p->profiles_stored) {
         snprintf(what, sizeof what, "%sprofiles.tsv", prefix);
@@ -219,12 +219,15 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
             }
     }
     if (p->nruns > 1 || cfg->sweep.kind) {
-        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, E, sigma, eps, jump_in_h0, h_before, h_star, max_load, pulloff_F, iterations, seconds, jumped",
+        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, E, sigma, eps, jump_in_h0, h_before, h_star, max_load, pulloff_F, jump_out_h0, iterations, seconds, jumped, hysteresis",
              adh_sweep_name(cfg->sweep.kind));
         if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP)
             note(p->stored, &p->nstored, "jump.png", "jump separation vs sigma against eq 24 (Figure 3)");
         if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_FORCE)
-            note(p->stored, &p->nstored, "force.png", "every run's force curve with the JKR prediction (Figure 7)");
+            note(p->stored, &p->nstored, "force.png", cfg->sweep.kind == ADH_SWEEP_EPS && !p->static_mode
+                 ? "every run's force curve with the JKR prediction, and the hysteresis against eps with the static "
+                   "curve's (its own resolved grid) as its line (Figure 7)"
+                 : "every run's force curve with the JKR prediction (Figure 7)");
     }
 }
 

@@ -11,7 +11,7 @@ const tui_key_binding tui_key_table[] = {
     { KEY_RIGHT, ACT_FORWARD, "step forward, as f" },
     { 'b', ACT_BACK, "step back: retract by d and relax (a count repeats: 10b)" },
     { KEY_LEFT, ACT_BACK, "step back, as b" },
-    { 'r', ACT_RUN, "run: load to the turning point, or, once unloading, until pull-off; any key pauses" },
+    { 'r', ACT_RUN, "run: load to the turning point, or, once unloading, until the surfaces jump apart (the jump-out); any key pauses" },
     { 'u', ACT_UNDO, "undo: back to the previous state on the path (exactly as it was); at its first state, takes back the last edit: the parameters before it and the path they had" },
     { 'U', ACT_REDO, "redo: forward again along the undone states and edits" },
     { 'r' & 0x1f, ACT_REDO, "redo, as U" },

@@ -158,7 +158,7 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
 {
     const adh_derived *d = &s->der;
     const tui_models *m = &s->models;
-    char g[64], es[64], jkr[64], dmt[64], md[64], ji[64], jo[64];
+    char g[64], es[64], jkr[64], dmt[64], md[64], ji[64], jo[64], hs[64];
     const char *pgr = gk(v, "\xcf\x80\xce\xb3R", "pi gamma R");
     double unit = M_PI * d->gamma * s->cfg.spec.mat.R;
     /* gamma is an energy per area: J/m^2, shown in mJ/m^2 where it lives */
@@ -168,6 +168,7 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     q(d->F_dmt, ADH_Q_FORCE, dmt, sizeof dmt);
     q(m->md_pulloff, ADH_Q_FORCE, md, sizeof md);
     q(m->jump_in, ADH_Q_LENGTH, ji, sizeof ji);
+    q(d->h_star, ADH_Q_LENGTH, hs, sizeof hs);
     q(m->md_jump_out, ADH_Q_LENGTH, jo, sizeof jo);
     put(y, x, w, A_BOLD, " Derived from the parameters; models");
     put(y + 1, x, w, A_NORMAL, "  %s %.4g   %s %.4g   %s %s", gk(v, "\xcf\x83", "sigma"), d->sigma,
@@ -180,7 +181,9 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     put(y + 3, x, w, A_NORMAL, "  pull-off JKR %s DMT %s", jkr, dmt);
     put(y + 4, x, w, A_NORMAL, "    M-D %s = %.3g %s (%s %.3g)", md, m->md_pulloff / -unit, pgr,
         gk(v, "\xce\xbb", "lambda"), m->md_lambda);
-    put(y + 5, x, w, A_NORMAL, "  jump-in %s (eq 24), out %s M-D", ji, isnan(m->md_jump_out) ? "none" : jo);
+    /* eq 24 is a gap; the jump-in it gives (through eq 23) a drive position */
+    put(y + 5, x, w, A_NORMAL, "  eq 24: gap h* %s, jump-in %s", hs, ji);
+    put(y + 6, x, w, A_NORMAL, "  M-D jump-out %s", isnan(m->md_jump_out) ? "none" : jo);
 }
 
 /* Relaxation: the cycle on the path so far, the quantities an experiment
@@ -202,17 +205,21 @@ static void draw_cycle(const tui_sim *s, const tui_view *v, int y, int x, int w)
         put(y + 1, x, w, A_NORMAL, "  load   max %s; a %s at the turn", a, c.a_turn > 0 ? b : "0");
     else
         put(y + 1, x, w, A_NORMAL, "  load   %s deepest so far, a %s", a, c.a_turn > 0 ? b : "0");
+    /* pull-off: the force minimum on unloading; jump-out: where the
+     * surfaces separate (the tables' pulloff_F and jump_out_h0) */
     q(c.pulloff_F, ADH_Q_FORCE, a, sizeof a);
+    q(c.pulloff_h0, ADH_Q_LENGTH, b, sizeof b);
     if (c.unloading)
-        put(y + 2, x, w, A_NORMAL, "  pull   %s = %.3g %s", a, c.pulloff_F / -unit, gk(v, "\xcf\x80\xce\xb3R", "pi gamma R"));
+        put(y + 2, x, w, A_NORMAL, "  pull-off %s = %.3g %s at %s", a, c.pulloff_F / -unit,
+            gk(v, "\xcf\x80\xce\xb3R", "pi gamma R"), b);
     else
-        put(y + 2, x, w, A_NORMAL, "  pull   not unloaded yet");
+        put(y + 2, x, w, A_NORMAL, "  pull-off not unloaded yet");
     q(c.jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
     q(c.jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
-    put(y + 3, x, w, A_NORMAL, "  jumps  in %s, out %s", isnan(c.jump_in_h0) ? "not yet" : a,
+    put(y + 3, x, w, A_NORMAL, "  jump-in %s, jump-out %s", isnan(c.jump_in_h0) ? "not yet" : a,
         isnan(c.jump_out_h0) ? "not yet" : b);
     if (c.unloading)
-        put(y + 4, x, w, A_NORMAL, "  hyst   %.4g fJ (area between the branches)", c.hysteresis * 1e15);
+        put(y + 4, x, w, A_NORMAL, "  hysteresis %.4g fJ (area between the branches)", c.hysteresis * 1e15);
 }
 
 /* The rows both modes show for a solved point: position, force, central
@@ -266,10 +273,12 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
         }
         q(r->pulloff_F, ADH_Q_FORCE, a, sizeof a);
         q(r->pulloff_F_disp, ADH_Q_FORCE, b, sizeof b);
+        /* the pull-off is the force minimum; the force where the surfaces
+         * leave at fixed h0 is the jump-out's (summary: pulloff_F_disp) */
         if (isnan(r->pulloff_F_disp))
-            put(y + 8, x, w, A_NORMAL, "  pull   %s at fixed load; at fixed h0 not yet", a);
+            put(y + 8, x, w, A_NORMAL, "  pull-off %s; F at the jump-out not yet", a);
         else
-            put(y + 8, x, w, A_NORMAL, "  pull   %s at fixed load, %s at fixed h0", a, b);
+            put(y + 8, x, w, A_NORMAL, "  pull-off %s; F at the jump-out %s", a, b);
     }
     put(y + 9, x, w, A_NORMAL, "  mode   static (m: relaxation), %s", v->activity);
     if (s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS) {

@@ -133,11 +133,11 @@ static const char *activity(const tui *t)
         size_t k;
         int unloading = tui_sim_next(&t->sim, &k) < 0;
         if (nturns(t) > 1) {
-            snprintf(buf, sizeof buf, "%s, turn %zu of %zu", unloading ? "running to pull-off" : "running to the turn",
+            snprintf(buf, sizeof buf, "%s, turn %zu of %zu", unloading ? "running to the jump-out" : "running to the turn",
                      t->sim.tcur + 1, nturns(t));
             return buf;
         }
-        return unloading ? "running to pull-off" : "running to the turn";
+        return unloading ? "running to the jump-out" : "running to the turn";
     }
     if (t->sim.busy)
         return t->pending ? "stepping" : "solving a step";
@@ -228,18 +228,22 @@ static void describe_point(tui *t)
     t->folds_seen = s->sres.folds;
 }
 
-/* The pull-off of the path's unloading branch, "-850 nN (3.4 πγR)": the
- * number the user came for, not the force after the jump. */
-typedef struct { char s[96]; } text96;
-static text96 pulloff_text(const tui *t)
+/* The pull-off of the path's unloading branch, its force minimum, "-850 nN
+ * (3.4 πγR) at 3.75 nm" (where, when `where`: the panel says it too, and a
+ * status line that goes on to the next turn has no room for it): the
+ * number the user came for, not the force after the jump, and not where
+ * the surfaces jumped apart (the jump-out). */
+typedef struct { char s[160]; } text96;
+static text96 pulloff_text(const tui *t, int where)
 {
     text96 r;
     adh_cycle c;
-    char F[64];
+    char F[64], h0[64];
     tui_sim_cycle(&t->sim, &c);
     fmtq(c.pulloff_F, ADH_Q_FORCE, F, sizeof F);
-    snprintf(r.s, sizeof r.s, "%s (%.3g %s)", F, c.pulloff_F / (-M_PI * t->sim.der.gamma * config(t)->spec.mat.R),
-             t->view.utf8 ? "\xcf\x80\xce\xb3R" : "pi gamma R");
+    fmtq(c.pulloff_h0, ADH_Q_LENGTH, h0, sizeof h0);
+    snprintf(r.s, sizeof r.s, "%s (%.3g %s)%s%s", F, c.pulloff_F / (-M_PI * t->sim.der.gamma * config(t)->spec.mat.R),
+             t->view.utf8 ? "\xcf\x80\xce\xb3R" : "pi gamma R", where ? " at " : "", where ? h0 : "");
     return r;
 }
 
@@ -261,8 +265,8 @@ static void describe_step(tui *t)
     if (o->a > 0 && !was && n >= 2)
         say(t, 0, "jumped into contact at h0 = %s: contact radius %s, force %s", h0, a, F);
     else if (o->a == 0 && was)
-        say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0,
-            pulloff_text(t).s, F);
+        say(t, 0, "jumped out at h0 = %s: pull-off %s; F after the jump %s", h0,
+            pulloff_text(t, 1).s, F);
     else
         say(t, 0, "%s to h0 = %s: force %s%s%s", o->branch > 0 ? "approached" : "retracted", h0, F,
             o->a > 0 ? ", contact radius " : ", not in contact", o->a > 0 ? a : "");
@@ -281,7 +285,7 @@ static int run_done(tui *t)
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
         fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
         fmtq(r->pulloff_F_disp, ADH_Q_FORCE, pd, sizeof pd);
-        say(t, 0, "curve complete at h0 = %s (%zu points, %zu folds): pull-off %s, at fixed h0 %s",
+        say(t, 0, "curve complete at h0 = %s (%zu points, %zu folds): pull-off %s, F at jump-out %s",
             h0, t->sim.curve.nrows, r->folds, pl, pd);
         return 1;
     }
@@ -309,11 +313,11 @@ static int run_done(tui *t)
             say(t, 0, "at %s h0 = %s (force %s): the protocol ends here (protocol.unload = no)",
                 nt <= 1 ? "the turning point" : this_turn, h0, F);
         else if (nt <= 1 && next < 0)
-            say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until pull-off", h0, F);
+            say(t, 0, "at the turning point h0 = %s (force %s): press r to unload until the jump-out", h0, F);
         else if (next > 0)
             say(t, 0, "at %s, h0 = %s (force %s): press r to load on to %s", this_turn, h0, F, next_turn);
         else
-            say(t, 0, "at %s, h0 = %s (force %s): press r to unload %s until pull-off (from its state on the way in)",
+            say(t, 0, "at %s, h0 = %s (force %s): press r to unload %s until the jump-out (from its state on the way in)",
                 this_turn, h0, F, next_turn);
         return 1;
     }
@@ -332,12 +336,12 @@ static int run_done(tui *t)
         snprintf(then, sizeof then, "; r loads on to %s", next_turn);
     if (ev & ADH_DRIVE_PULLOFF) {
         if (next != 0)
-            say(t, 0, "pulled off at h0 = %s (%s): pull-off %s%s", h0, this_turn, pulloff_text(t).s, then);
+            say(t, 0, "jumped out at h0 = %s (%s): pull-off %s%s", h0, this_turn, pulloff_text(t, 0).s, then);
         else if (nt > 1)
-            say(t, 0, "pulled off at h0 = %s (%s): pull-off %s; force after the jump %s", h0, this_turn,
-                pulloff_text(t).s, F);
+            say(t, 0, "jumped out at h0 = %s (%s): pull-off %s; F after the jump %s", h0, this_turn,
+                pulloff_text(t, 0).s, F);
         else
-            say(t, 0, "pulled off at h0 = %s: pull-off %s; force after the jump %s", h0, pulloff_text(t).s, F);
+            say(t, 0, "jumped out at h0 = %s: pull-off %s; F after the jump %s", h0, pulloff_text(t, 1).s, F);
         return 1;
     }
     int touched = 0;
@@ -696,11 +700,11 @@ static int run_key(tui *t)
     if (next < 0)
         tui_sim_turn_name(&t->sim, k - 1, tname, sizeof tname);
     if (next < 0 && strcmp(tname, "the turn") != 0)
-        say(t, 0, "unloading %s until pull-off; any key pauses", tname);
+        say(t, 0, "unloading %s until the jump-out; any key pauses", tname);
     else if (next > 0 && nturns(t) > 1 && k > 0)
         say(t, 0, "loading to turn %zu of %zu; any key pauses", k, nturns(t));
     else
-        say(t, 0, "%s", next < 0 ? "unloading until pull-off; any key pauses"
+        say(t, 0, "%s", next < 0 ? "unloading until the jump-out; any key pauses"
                                  : "loading to the turning point; any key pauses");
     return TODO_RESOLVE;
 }

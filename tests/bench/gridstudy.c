@@ -7,9 +7,10 @@
  * Usage: bench-gridstudy MODE SIGMA X [TURN_Z0 [RMAX]]
  *   MODE relax | static; X = spacing / l, l = (243 pi^2/128) E z0^4 / A;
  *   TURN_Z0 the turning point in z0 (default -2); RMAX the grid radius in
- *   sqrt(R z0) (default 12). In relax mode eps = 1 pm sqrt(1000 / N): the
- *   same residual per node as the paper's eps at N = 1000, so refining the
- *   grid does not also slow the drive.
+ *   sqrt(R z0) (default 12). In relax mode eps = 1 pm, which means one
+ *   drive on every grid (adh_relax_measure: the change's norm over the
+ *   paper grid's radius), so refining the grid does not also change the
+ *   drive.
  * Prints one tab-separated line: mode sigma x N spacing pulloff_F jump_in_h0
  * hysteresis seconds status. Not part of make bench (minutes per point). */
 #include <math.h>
@@ -62,7 +63,7 @@ int main(int argc, char **argv)
         hyst = adh_cycle_static_hysteresis(&run, 0.001e-9);
     } else {
         adh_relax_settings rs = adh_relax_settings_default();
-        rs.eps = 1e-12 * sqrt(1000.0 / (double)n);
+        rs.eps = 1e-12;
         adh_protocol_settings ps = adh_protocol_settings_default();
         ps.turns[0] = turn_z0 * m.z0;
         rc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &run);

@@ -22,6 +22,11 @@ echo
 # Figure 6: ~12 minutes)
 ADHERE=./adhere tests/bench/soft.sh
 echo
+# the rate-dependent numbers against the grid and the mixing rule at sigma
+# = 7.5 and 22.5 (docs/convergence.md; ~15 minutes, most of it the paper's
+# mixing rule)
+ADHERE=./adhere tests/bench/rategrid.sh
+echo
 # shellcheck disable=SC2086 # the sizes are words
 "$BUILD/tests/bench-operator" "${BENCH_DENSE_MAX:-10000}" "${BENCH_HMAT_MAX:-100000}" ${BENCH_OPERATOR_N:-1000 3000 10000 30000 100000}
 echo

@@ -39,5 +39,12 @@ else
     no "soft.sh runs"
     sed 's/^/#   /' "$out"
 fi
+# the grid and mixing comparisons of the rate-dependent numbers, a few steps each
+if RATE_SMOKE=1 ADHERE="${ADHERE_BIN:-./adhere}" tests/bench/rategrid.sh >"$out" 2>&1; then
+    ok "rategrid.sh runs ($(wc -l <"$out") lines)"
+else
+    no "rategrid.sh runs"
+    sed 's/^/#   /' "$out"
+fi
 echo "1..$n"
 [ "$failed" -eq 0 ]

@@ -1,10 +1,13 @@
 #!/bin/sh
 # adhere --cost on a tiny grid: every run of the grid is reported, the most
 # accurate one is the reference (zero error), tighter eps costs more
-# iterations, and cost.tsv and cost.png are written.
+# iterations, and cost.tsv and cost.png are written. (eps is the paper
+# grid's drive on these 15 nm grids too, a faster one than the paper's
+# measure gave on them: 1 pm now brings the contact radius within 1 % of
+# the static curve's, as 4 pm did then.)
 . "$(dirname "$0")/lib.sh"
 out="$TMP/cost"
-"$ADHERE" --cost -E 1GPa --turn=-1nm --spacing=15nm --cost-nodes=60,80 --cost-eps=10pm,4pm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
+"$ADHERE" --cost -E 1GPa --turn=-1nm --spacing=15nm --cost-nodes=60,80 --cost-eps=4pm,1pm -o "$out" >"$TMP/stdout" 2>"$TMP/stderr"
 rc=$?
 check "each cost run says how many of the 8 are done, the share and the time left" \
     sh -c "[ \$(grep -c '^adhere: cost run [0-9] of 8 .*; [1-8] of 8 done, *[0-9]* %' '$TMP/stderr') -eq 8 ] && grep -q '8 of 8 done, 100 %' '$TMP/stderr' && grep -q 'of 8 done, .*left' '$TMP/stderr'"
@@ -14,14 +17,14 @@ check "the report names the cores and the BLAS" sh -c "grep -q 'on [0-9]* cores'
 rows=$(grep -cE '^(paper|ring) ' "$TMP/stdout")
 check "8 runs reported: 2 N x 2 eps x 2 kernels ($rows)" [ "$rows" -eq 8 ]
 check "cost.tsv has a row per run" [ "$(grep -cE '^(paper|ring)	' "$out/cost.tsv")" -eq 8 ]
-check "the reference (N = 80, ring, 4 pm) has zero error" awk -F'\t' '$1=="ring" && $2==80 && $3<5e-12 && $13==0 && $15==0 {f=1} END {exit !f}' "$out/cost.tsv"
-check "every other error is finite and positive" awk -F'\t' '/^(paper|ring)/ && !($1=="ring" && $2==80 && $3<5e-12) && !($13>0 && $13<10) {bad=1} END {exit bad}' "$out/cost.tsv"
-check "tighter eps costs more iterations at every N and kernel" awk -F'\t' '/^(paper|ring)/ {it[$1 $2 ($3<5e-12)] = $6} END {for (k in it) if (substr(k, length(k)) == "1" && it[k] <= it[substr(k, 1, length(k)-1) "0"]) bad=1; exit bad}' "$out/cost.tsv"
+check "the reference (N = 80, ring, 1 pm) has zero error" awk -F'\t' '$1=="ring" && $2==80 && $3<2e-12 && $13==0 && $15==0 {f=1} END {exit !f}' "$out/cost.tsv"
+check "every other error is finite and positive" awk -F'\t' '/^(paper|ring)/ && !($1=="ring" && $2==80 && $3<2e-12) && !($13>0 && $13<10) {bad=1} END {exit bad}' "$out/cost.tsv"
+check "tighter eps costs more iterations at every N and kernel" awk -F'\t' '/^(paper|ring)/ {it[$1 $2 ($3<2e-12)] = $6} END {for (k in it) if (substr(k, length(k)) == "1" && it[k] <= it[substr(k, 1, length(k)-1) "0"]) bad=1; exit bad}' "$out/cost.tsv"
 sh=$(sed -n 's/^# static curve.s hysteresis (eps -> 0, displacement control): //p' "$out/cost.tsv" | cut -d' ' -f1)
 check "the static curve's hysteresis ($sh J) is positive and below every run's: a slower drive leaves less" \
     awk -F'\t' -v s="$sh" 'BEGIN {if (!(s > 0)) bad = 1} /^(paper|ring)/ && !($11 > s && $19 > 0) {bad = 1} END {exit bad}' "$out/cost.tsv"
-check "at 4 pm the contact radius at the turn is within 1 % of the static curve's, nearer than at 10 pm" \
-    awk -F'\t' '/^(paper|ring)/ {e[$1 $2 ($3 < 5e-12)] = $20} END {for (k in e) if (substr(k, length(k)) == "1" && !(e[k] < 0.01 && e[k] < e[substr(k, 1, length(k)-1) "0"])) bad = 1; exit bad || length(e) != 8}' "$out/cost.tsv"
+check "at 1 pm the contact radius at the turn is within 1 % of the static curve's, nearer than at 4 pm" \
+    awk -F'\t' '/^(paper|ring)/ {e[$1 $2 ($3 < 2e-12)] = $20} END {for (k in e) if (substr(k, length(k)) == "1" && !(e[k] < 0.01 && e[k] < e[substr(k, 1, length(k)-1) "0"])) bad = 1; exit bad || length(e) != 8}' "$out/cost.tsv"
 check "cost.png is a PNG" sh -c "head -c 8 '$out/cost.png' | od -An -c | grep -q 'P   N   G'"
 "$ADHERE" --cost -q --cost-nodes=5 >/dev/null 2>"$TMP/stderr"; rc=$?
 check "--cost-nodes=5 is refused with exit 2 ($(cat "$TMP/stderr"))" sh -c "[ $rc -eq 2 ] && grep -q 'use 10 to 20000 nodes' '$TMP/stderr'"

@@ -101,7 +101,7 @@ header_first() { # file header: every line before the header is a comment
 check "a scene path with a newline: force.tsv's first line that is not a comment is its header" \
     header_first "$TMP/nl/force.tsv" "$(printf 'h0\tF\tdelta\thc\ta\tangle\titers\tbranch\tpath\tconverged\tstable\tF_rigid\tseconds')"
 check "... summary.tsv's too" header_first "$TMP/nl/summary.tsv" "$(printf 'key\tvalue')"
-check "... turns.tsv's too" header_first "$TMP/nl/turns.tsv" "$(printf 'turn_h0\tmax_load\ta_turn\tpulloff_F\tpulloff_h0\tjump_out_h0\tpath')"
+check "... turns.tsv's too" header_first "$TMP/nl/turns.tsv" "$(printf 'turn_h0\tmax_load\ta_turn\tpulloff_F\tpulloff_h0\tjump_out_h0\tpath\thysteresis')"
 check "... the path is there, escaped: $(grep '^# scene' "$TMP/nl/force.tsv")" grep -q '^# scene: .*evil\\n1\\t2\\t3/x.scene$' "$TMP/nl/force.tsv"
 
 # --- issue 24, item 7: --gnuplot-style=DIR, as the plot code reads it ----

@@ -30,6 +30,21 @@ check "static.tsv is written beside force.tsv" [ -s "$ref/static.tsv" ]
 check "summary.tsv has static_pulloff_F" grep -q "^static_pulloff_F	" "$ref/summary.tsv"
 rp=$(val pulloff_F "$ref/summary.tsv"); sp=$(val static_pulloff_F "$ref/summary.tsv")
 check "the relaxation pull-off $rp is at least as strong as the static one $sp (dynamic hysteresis)" awk "BEGIN {exit !($rp <= $sp * 0.99)}"
+rh=$(val hysteresis "$ref/summary.tsv"); sh=$(val static_hysteresis "$ref/summary.tsv")
+check "summary.tsv has the relaxation's hysteresis $rh J and the static curve's $sh J, smaller (no slower drive removes it)" \
+    awk "BEGIN {exit !($rh > 0 && $sh > 0 && $sh < $rh)}"
+check "on the -N 100 grid the static reference is not resolved: static_resolved 0, and said on stderr" \
+    sh -c "[ '$(val static_resolved "$ref/summary.tsv")' = 0 ] && grep -q 'static reference curve is not resolved' '$TMP/err'"
+check "static mode's summary.tsv has the equilibrium loop's hysteresis" \
+    awk "BEGIN {exit !($(val hysteresis "$out/summary.tsv") > 0)}"
+# With the grid chosen for the relaxation, the reference gets the static
+# curve's own resolved grid (0.3 l, not the relaxation's 0.45 l); --plan says which.
+"$ADHERE" --plan --reference=static >"$TMP/plan" 2>"$TMP/err"
+check "--plan --reference=static names the reference's own resolved grid" \
+    grep -q "^reference: the static curve on its own uniform grid of [0-9]* nodes .*: resolved" "$TMP/plan"
+"$ADHERE" --plan --reference=static -N 1000 >"$TMP/plan" 2>"$TMP/err"
+check "and with -N 1000 (the relaxation's grid, 0.43 l) says it is not resolved" \
+    grep -q "^reference: the static curve on the relaxation's uniform grid of 1000 nodes .*: NOT resolved" "$TMP/plan"
 # A sweep in mode = static: each run is the whole curve, in parallel; the
 # runs' summaries and sweep.tsv carry the static keys.
 cat >"$TMP/static-sweep.scene" <<'SCENE'

@@ -138,9 +138,11 @@ check "30 steps of 0.5 nm reach contact" sh -c "grep 'contact radius' '$S/steps-
 check "3 steps back are on the unloading branch" grep -q "branch unloading" "$S/steps.screen"
 C=$W/contact
 check "r stops at the turning point, in contact" sh -c "grep -q 'at the turning point h0 = -2 nm' '$C/contact-turn.txt' && grep 'contact radius' '$C/contact-turn.txt' | grep -vq 'not in'"
-check "r again unloads until pull-off, out of contact" sh -c "grep -q 'pulled off at h0' '$C/contact.screen' && grep -q 'not in contact' '$C/contact.screen'"
-check "the status line gives the pull-off (the minimum force, in N and πγR), not only the force after the jump" \
-    grep -Eq "^pulled off at h0 = [0-9.]+ nm: pull-off -[0-9.]+ nN \([0-9.]+ πγR\); force after the jump -[0-9.]+ nN" "$C/contact.screen"
+check "r again unloads until the jump-out, out of contact" sh -c "grep -q 'jumped out at h0' '$C/contact.screen' && grep -q 'not in contact' '$C/contact.screen'"
+check "the status line names the jump-out (where they separate) and the pull-off (the minimum force, in N and πγR, and where), not only the force after the jump" \
+    grep -Eq "^jumped out at h0 = [0-9.]+ nm: pull-off -[0-9.]+ nN \([0-9.]+ πγR\) at [0-9.]+ nm; F after the jump -[0-9.]+ nN" "$C/contact.screen"
+check "the pull-off's position is the force minimum's, before the jump-out" \
+    sh -c "grep -q 'pull-off -868.8 nN = 3.48 πγR at 7.75 nm' '$C/contact.screen' && grep -q 'jump-in 2.75 nm, jump-out 11 nm' '$C/contact.screen'"
 check "the preview shows both branches" sh -c "grep -q 'o' '$C/contact.screen' && sed -n '16,30p' '$C/contact.screen' | grep -q '+'"
 # One drive, two drivers: the screen's r and --batch step the same core
 # object, so the same scene gives the same rows, every one, bit for bit
@@ -233,8 +235,8 @@ check "b undone at the start: r loads to the turn (the undone step by hand is no
     grep -q "^at turn 1 of 2, h0 = -1 nm" "$HT/handturns-undo.txt"
 check "+ on the turn field doubles the whole list: turn 1 of 2 is now at -2 nm" \
     grep -q "^at turn 1 of 2, h0 = -2 nm" "$HT/handturns-scaled.txt"
-check "a turn set where the loading branch is: r unloads from there to pull-off" \
-    grep -q "^pulled off at h0 = " "$HT/handturns-here.txt"
+check "a turn set where the loading branch is: r unloads from there to the jump-out" \
+    grep -q "^jumped out at h0 = " "$HT/handturns-here.txt"
 
 U=$W/undo
 check "undo gives back the earlier state's numbers exactly" [ "$(state "$U/undo-back.txt")" = "$(state "$U/undo-32.txt")" ]
@@ -248,7 +250,7 @@ check "a new step drops what could be redone" grep -q "error: nothing to redo" "
 # The cycle's numbers on the state panel, and edits on the undo history.
 EU=$W/edit-undo
 check "after a cycle the panel shows max load, pull-off in N and in πγR, jumps, hysteresis" \
-    sh -c "grep -q 'load   max -[0-9.]* nN; a [0-9.]* nm at the turn' '$EU/edit-cycle.txt' && grep -q 'pull   -[0-9.]* nN = [0-9.]* πγR' '$EU/edit-cycle.txt' && grep -q 'jumps  in [0-9.]* nm, out [0-9.]* nm' '$EU/edit-cycle.txt' && grep -q 'hyst   [0-9.]* fJ' '$EU/edit-cycle.txt'"
+    sh -c "grep -q 'load   max -[0-9.]* nN; a [0-9.]* nm at the turn' '$EU/edit-cycle.txt' && grep -q 'pull-off -[0-9.]* nN = [0-9.]* πγR at [0-9.]* nm' '$EU/edit-cycle.txt' && grep -q 'jump-in [0-9.]* nm, jump-out [0-9.]* nm' '$EU/edit-cycle.txt' && grep -q 'hysteresis [0-9.]* fJ' '$EU/edit-cycle.txt'"
 check "beside the JKR, DMT and Maugis-Dugdale predictions" \
     sh -c "grep -q 'pull-off JKR -375 nN DMT -500 nN' '$EU/edit-cycle.txt' && grep -q 'M-D -375.8 nN = 1.5 πγR (λ 7.06)' '$EU/edit-cycle.txt'"
 check "the label 'before any solve' does not stay after solving" sh -c "! grep -q 'before any solve' '$EU/edit-cycle.txt'"
@@ -257,11 +259,11 @@ check "a bare 20 typed into R (shown in µm) is 20 µm, and the echo says so" \
     sh -c "grep -q '^ >R     20 µm ' '$EU/edit-r.txt' && grep -q '^R = 20 µm: σ = 10.61' '$EU/edit-r.txt'"
 check "the edit starts a new path" grep -q "path   0 states" "$EU/edit-r.txt"
 check "u after the edit restores the parameters and their path" \
-    sh -c "grep -q '^ >R     10 µm ' '$EU/edit-undo.txt' && grep -q 'path   124 states' '$EU/edit-undo.txt' && grep -q '^undid the edit: R = 10 µm again, with its path (124 states)' '$EU/edit-undo.txt'"
+    sh -c "grep -q '^ >R     10 µm ' '$EU/edit-undo.txt' && grep -q 'path   130 states' '$EU/edit-undo.txt' && grep -q '^undid the edit: R = 10 µm again, with its path (130 states)' '$EU/edit-undo.txt'"
 check "with the path's numbers exactly (state and cycle)" [ "$(sed -n '3,18p' "$EU/edit-undo.txt" | cut -c46-)" = "$(sed -n '3,18p' "$EU/edit-cycle.txt" | cut -c46-)" ]
 check "U puts the edit back" sh -c "grep -q '^ >R     20 µm ' '$EU/edit-redo.txt' && grep -q '^redid the edit: R = 20 µm' '$EU/edit-redo.txt'"
 check "+ doubles A, and u takes it back with the path" \
-    sh -c "grep -q '^ >A     2e-19 J' '$EU/edit-plus.txt' && grep -q '^ >A     1e-19 J' '$EU/edit-undo.screen' && grep -q 'path   124 states' '$EU/edit-undo.screen'"
+    sh -c "grep -q '^ >A     2e-19 J' '$EU/edit-plus.txt' && grep -q '^ >A     1e-19 J' '$EU/edit-undo.screen' && grep -q 'path   130 states' '$EU/edit-undo.screen'"
 
 MD=$W/measured
 check "--data draws the measured curve in the preview before any step, named in its key" \
@@ -319,8 +321,8 @@ if [ -s "$SB/summary.tsv" ]; then
     check "and the screen's points are --batch --mode=static's rows, every one" same_rows "$ST/static-rows.tsv" "$SB"
     check "with its $folds folds, jump-in $(nm "$(sval jump_in_h0)") and jump-out $(nm "$(sval jump_out_h0)")" \
         grep -q "folds  $folds; jump-in $(nm "$(sval jump_in_h0)"), jump-out $(nm "$(sval jump_out_h0)")" "$ST/static-end.txt"
-    check "and its pull-offs $(nN "$(sval pulloff_F)") (fixed load) and $(nN "$(sval pulloff_F_disp)") (fixed h0)" \
-        grep -q "pull   $(nN "$(sval pulloff_F)") at fixed load, $(nN "$(sval pulloff_F_disp)") at fixed h0" "$ST/static-end.txt"
+    check "and its pull-off $(nN "$(sval pulloff_F)") (the minimum force) and force at the jump-out $(nN "$(sval pulloff_F_disp)")" \
+        grep -q "pull-off $(nN "$(sval pulloff_F)"); F at the jump-out $(nN "$(sval pulloff_F_disp)")" "$ST/static-end.txt"
 else
     fail "--batch --mode=static with the static case's settings wrote no summary: $(head -c 300 "$work/static-batch.err")"
 fi

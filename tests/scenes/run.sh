@@ -106,6 +106,14 @@ check "eps sweep: the smaller eps takes more iterations" sh -c "grep -v '^#' '$d
 e1=$(summary "$d/run-1" eps) e2=$(summary "$d/run-2" eps)
 check "eps sweep: the runs' eps are 8 and 4 pm ($e1, $e2)" awk "BEGIN {exit !($e1 > 7.99e-12 && $e1 < 8.01e-12 && $e2 > 3.99e-12 && $e2 < 4.01e-12)}"
 check "eps sweep: combined force.png" [ -s "$d/force.png" ]
+check "eps sweep: every run's hysteresis in sweep.tsv (column 17), positive" \
+    sh -c "grep -v '^#' '$d/sweep.tsv' | awk -F'\t' 'NR == 1 && \$17 != \"hysteresis\" {bad = 1} NR > 1 && !(\$17 > 0) {bad = 1} END {exit bad}'"
+h1=$(grep -v '^#' "$d/sweep.tsv" | awk -F'\t' 'NR == 2 {print $17}') s1=$(summary "$d/run-1" hysteresis)
+t1=$(awk -F'\t' '$1 + 0 == $1 && $7 == 1 {print $8}' "$d/run-1/turns.tsv")
+check "eps sweep: run-1's summary.tsv and turns.tsv carry sweep.tsv's hysteresis ($h1, $s1, $t1)" \
+    sh -c "[ -n '$h1' ] && [ '$s1' = '$h1' ] && [ '$t1' = '$h1' ]"
+check "eps sweep drawn as Figure 7: sweep.tsv gives the static curve's loop for its equilibrium line" \
+    grep -q "^# static_hysteresis: [0-9.e+-]* J" "$d/sweep.tsv"
 "$ADHERE" --batch -q "$TMP/eps.scene" -N 100 --force >"$TMP/stdout" 2>"$TMP/stderr"
 check "a sweep without --out prints sweep.tsv on stdout" sh -c "grep -v '^#' '$TMP/stdout' | head -1 | grep -q '^run	swept	value'"
 

@@ -145,7 +145,8 @@ static int cycle(double sigma, double x, int statik, double *pulloff, double *hy
         *hyst = adh_cycle_static_hysteresis(&run, 0.001e-9);
     } else {
         adh_relax_settings rs = adh_relax_settings_default();
-        rs.eps = 1e-12 * sqrt(1000.0 / (double)n);
+        /* eps means one drive on every grid (adh_relax_measure) */
+        rs.eps = 1e-12;
         adh_protocol_settings ps = adh_protocol_settings_default();
         ps.turns[0] = -2 * m.z0;
         rc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &run);

@@ -1,6 +1,6 @@
 /* Graded radial grids (adhere/rings.h): their geometry, the exact ring
  * kernel on arbitrary edges against the disk formula, the uniform grid as
- * the special case, and the generalised convergence measure. */
+ * the special case, and the convergence measure's weights. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -94,19 +94,17 @@ int main(void)
     ok(dr_diff <= 1e-14 * u->rmax, "same nodes to rounding (worst %.1e m)", dr_diff);
     ok(diff <= 1e-12 * big, "graded kernel on uniform edges = uniform ring kernel to rounding (max diff %.1e of %.1e)", diff, big);
 
-    /* The generalised change reduces to the paper's on a uniform grid. */
-    double *du = malloc(n * sizeof *du), ssq = 0;
-    for (size_t i = 0; i < n; i++) {
-        du[i] = 1e-12 * sin(0.1 * (double)i) + 3e-13;
-        ssq += du[i] * du[i];
-    }
-    ok_rel(adh_rings_change(u, du), sqrt(ssq) / (double)n, 1e-14, "uniform grid: change is the paper's sqrt(sum du^2)/N");
-    ok_rel(adh_rings_change(ge, du), sqrt(ssq) / (double)n, 1e-9, "graded path on uniform edges: the same");
-    /* A ring twice as wide counts as two fine rings of the same du. */
-    double e2w[4] = { 0, 1e-9, 2e-9, 4e-9 }, e4[5] = { 0, 1e-9, 2e-9, 3e-9, 4e-9 };
-    double d3[3] = { 1, 2, 3 }, d4[4] = { 1, 2, 3, 3 };
-    adh_grid *a3 = adh_rings_alloc_edges(3, e2w), *a4 = adh_rings_alloc_edges(4, e4);
-    ok_rel(adh_rings_change(a3, d3), adh_rings_change(a4, d4), 1e-12, "a wide ring weighs as the fine rings it spans");
+    /* The convergence measure's weights (adh_relax_measure, tested in
+     * test_eps): 1 on a uniform grid, a ring's width in fine widths. */
+    double e2w[4] = { 0, 1e-9, 2e-9, 4e-9 }, wt[300];
+    adh_grid *a3 = adh_rings_alloc_edges(3, e2w);
+    adh_rings_change_weights(a3, INFINITY, wt);
+    ok(wt[0] == 1 && wt[1] == 1 && fabs(wt[2] - 2) < 1e-12, "a wide ring weighs as the fine rings it spans");
+    adh_rings_change_weights(u, INFINITY, wt);
+    int ones = 1;
+    for (size_t i = 0; i < n; i++)
+        ones &= wt[i] == 1.0;
+    ok(ones, "uniform grid: every weight exactly 1");
     ok(adh_rings_alloc_edges(3, (double[]){ 0, 2e-9, 1e-9, 3e-9 }) == NULL, "edges that do not increase are refused");
 
     adh_rings_spec bad = spec;
@@ -149,8 +147,8 @@ int main(void)
     ok(strstr(msg, "within the grid") != NULL && adh_rings_edge_fix(u, 0.5 * u->rmax) == 0,
        "a uniform grid has no band to leave: %s", msg);
 
-    adh_grid_free(a3), adh_grid_free(a4);
-    free(du), free(edge);
+    adh_grid_free(a3);
+    free(edge);
     adh_kernel_free(ku), adh_kernel_free(ke);
     adh_grid_free(ge), adh_grid_free(u), adh_grid_free(g);
     return tap_done();

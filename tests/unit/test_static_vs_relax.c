@@ -89,18 +89,22 @@ int main(void)
         if (st.rows[i].branch != st.rows[i - 1].branch)
             first = i;
 
+    /* eps is the paper grid's drive (adh_relax_measure): on this short,
+     * coarse grid a looser one than the paper's measure was here (about
+     * 3x), so the three are tenfold apart: between 3 and 1 pm the
+     * pull-off, read at the drive's steps, wavers by 0.15 % */
     gap fast = relax_against(g, k, &m, 1e-11, turn, &st, first);
-    gap slow = relax_against(g, k, &m, 3e-12, turn, &st, first);
-    gap slowest = relax_against(g, k, &m, 1e-12, turn, &st, first);
+    gap slow = relax_against(g, k, &m, 1e-12, turn, &st, first);
+    gap slowest = relax_against(g, k, &m, 1e-13, turn, &st, first);
     ok(fast.rc == ADH_SUCCESS && slow.rc == ADH_SUCCESS && slowest.rc == ADH_SUCCESS,
-       "relaxation runs at eps 1e-11, 3e-12 and 1e-12 succeed");
+       "relaxation runs at eps 1e-11, 1e-12 and 1e-13 succeed");
     ok(fast.rows > 10 && slow.rows > 10 && slowest.rows > 10,
        "in-contact rows compared with the static curve: %zu, %zu, %zu", fast.rows, slow.rows, slowest.rows);
     ok(slowest.mean < slow.mean && slow.mean < fast.mean,
        "relaxation approaches the static curve as eps falls: mean |F - F_static| %.3g > %.3g > %.3g N", fast.mean,
        slow.mean, slowest.mean);
-    ok(slowest.mean < 0.5 * fast.mean, "tenfold smaller eps at least halves the distance (%.3g -> %.3g N)", fast.mean,
-       slowest.mean);
+    ok(slowest.mean < 0.5 * slow.mean, "tenfold smaller eps (1 -> 0.1 pm) at least halves the distance (%.3g -> %.3g N)",
+       slow.mean, slowest.mean);
     ok(fabs(slowest.pulloff - sr.pulloff_F) < fabs(slow.pulloff - sr.pulloff_F) &&
            fabs(slow.pulloff - sr.pulloff_F) < fabs(fast.pulloff - sr.pulloff_F),
        "the relaxation pull-off nears the static one as eps falls: %.5g, %.5g, %.5g -> %.5g N", fast.pulloff,
@@ -110,7 +114,7 @@ int main(void)
      * critical slowing down at the fold, a step or two later). */
     double step = adh_protocol_settings_default().step;
     ok(slowest.jump_in <= sr.jump_in_h0 + 1e-3 * step && slowest.jump_in >= sr.jump_in_h0 - 3 * step,
-       "eps 1e-12: relaxation jump-in %.4g nm lies at or just past the static fold %.4g nm (within 3 steps)",
+       "eps 1e-13: relaxation jump-in %.4g nm lies at or just past the static fold %.4g nm (within 3 steps)",
        slowest.jump_in * 1e9, sr.jump_in_h0 * 1e9);
     ok(slowest.jump_in >= slow.jump_in && slow.jump_in >= fast.jump_in,
        "the jump-in moves up towards the fold as eps falls: %.4g, %.4g, %.4g nm", fast.jump_in * 1e9,
