@@ -24,10 +24,22 @@ double adh_budget_machine_bytes(void);
  * solver's matrices, and the program's own. */
 double adh_budget_bytes(const adh_run_spec *run, unsigned solvers);
 
+/* Whether need bytes fit, with `threads` threads computing: need within
+ * the memory there is, and need and the address space the threads map
+ * beside it (the BLAS's working buffer each) within ulimit -v and -d. *have
+ * the bytes there are for need; *address_bound (may be NULL) 1 when the
+ * address-space limit is the lesser. */
+int adh_budget_fits(double need, unsigned threads, double *have, int *address_bound);
+
 /* The estimate against the machine (the operator is the grid's:
  * adh_config_choose_grid gives a large dense one up for H^2). 0, or -1
  * with a sentence naming the estimate, the memory there is, and what to
  * use instead (keys: adh_config_reword). */
 int adh_budget_check(const adh_run_spec *run, unsigned solvers, char *why, size_t whylen);
+
+/* adh_budget_check for a run on `threads` threads at once (a sweep's); the
+ * above counts max(solvers, 1). */
+int adh_budget_check_threads(const adh_run_spec *run, unsigned solvers, unsigned threads, char *why,
+                             size_t whylen);
 
 #endif
