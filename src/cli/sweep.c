@@ -42,6 +42,7 @@ typedef struct sweep_job {
     int *status;               /* adh status of each run */
     adh_outdir **out;          /* each run's DIR/run-K, or NULL: nothing but sweep.tsv on stdout */
     int *tables;               /* exit status of writing run i's tables; -1 not yet */
+    char (*lost)[CLI_SWEEP_LOST]; /* each run's files not written (summary.tsv's not_written) */
     size_t next;               /* the next run to start, under lock */
     size_t done;
     double t0;                 /* when the runs began */
@@ -49,7 +50,7 @@ typedef struct sweep_job {
 } sweep_job;
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, adh_outdir *out);
+                        int rc, adh_outdir *out, char *lost);
 
 static void *worker(void *arg)
 {
@@ -74,7 +75,7 @@ static void *worker(void *arg)
                                          cli_interrupt_step, NULL, run);
         /* tables as soon as a run ends: a long sweep killed later keeps them */
         if (job->out)
-            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i]);
+            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i], job->lost[i]);
         pthread_mutex_lock(&job->lock);
         job->done++;
         if (!cfg->output.quiet) {
@@ -105,7 +106,7 @@ static size_t finished(const adh_config *cfg, const adh_run *runs)
 }
 
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                          const int *status)
+                    const int *status, const char (*lost)[CLI_SWEEP_LOST])
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
     int stat = cfg->spec.mode == ADH_MODE_STATIC && sres;
@@ -146,7 +147,12 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
                 cli_jumps_jumped(r, rc.proto.step));
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r));
+        /* the run's summary.tsv's word: a run whose files were not all
+         * written is not a success there, nor here */
+        const char *word = status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r);
+        if (!strcmp(word, "success") && lost && lost[i][0])
+            word = "output incomplete";
+        fprintf(f, "%s\n", word);
     }
     return 0;
 }
@@ -156,25 +162,26 @@ typedef struct sweep_tables {
     const adh_run *runs;
     const adh_static_result *sres;
     const int *status;
+    const char (*lost)[CLI_SWEEP_LOST];
 } sweep_tables;
 
 static int write_sweep(FILE *f, const void *ctx)
 {
     const sweep_tables *t = ctx;
-    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status);
+    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status, t->lost);
 }
 
 /* Tables of run i in dir (out/run-K): force.tsv and turns.tsv when data
  * is set, then summary.tsv, last, naming what was not written (those that
- * failed here, and the list in unwritten); word, when not NULL, is its
- * status. Returns an exit status. */
+ * failed here or before, kept in lost, and the list in unwritten); word,
+ * when not NULL, is its status. Returns an exit status. */
 static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                      int rc, adh_outdir *dir, int data, const char *unwritten, const char *word)
+                      int rc, adh_outdir *dir, int data, const char *unwritten, const char *word, char *lost)
 {
-    char why[1024], note[256] = "", lost[512];
+    char why[1024], note[256] = "";
     adh_run_spec rspec;
     adh_config_sweep_run(cfg, i, &rspec);
-    snprintf(lost, sizeof lost, "%s", unwritten ? unwritten : "");
+    cli_tables_names_add(lost, CLI_SWEEP_LOST, unwritten ? unwritten : "");
     int partial = run->interrupted || rc != ADH_SUCCESS;
     if (run->interrupted)
         snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run->nrows);
@@ -199,6 +206,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
     if (adh_outdir_write(dir, "summary.tsv", cli_tables_summary, &t, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         status = CLI_EXIT_USAGE;
+        cli_tables_names_add(lost, CLI_SWEEP_LOST, "summary.tsv");   /* sweep.tsv says it */
     }
     if (status == CLI_EXIT_OK && partial)
         return run->interrupted ? CLI_EXIT_INTERRUPTED : CLI_EXIT_SOLVER;
@@ -212,16 +220,16 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
 }
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, adh_outdir *out)
+                        int rc, adh_outdir *out, char *lost)
 {
-    return run_tables(cfg, i, run, sres, rc, out, 1, NULL, NULL);
+    return run_tables(cfg, i, run, sres, rc, out, 1, NULL, NULL, lost);
 }
 
 /* Figures of run i in out/run-K (its tables are there); when one is not
  * written, the run's summary.tsv is written again to say so. An exit
  * status. */
 static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const adh_run *run,
-                       const adh_static_result *sres, int rc, adh_outdir *dir)
+                       const adh_static_result *sres, int rc, adh_outdir *dir, char *lost)
 {
     char msg[1024] = "", missing[256] = "";
     adh_run_spec rspec;
@@ -245,7 +253,8 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
         status = status ? status : CLI_EXIT_PLOT;
     }
     if (*missing) {
-        int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL);
+        int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL,
+                             lost);
         if (trc == CLI_EXIT_USAGE)
             status = trc;
     }
@@ -255,7 +264,7 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
 /* Run i's figures not drawn (a signal came first): its summary.tsv names
  * those asked for and says interrupted. An exit status. */
 static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                         int rc, adh_outdir *dir)
+                         int rc, adh_outdir *dir, char *lost)
 {
     static const struct { unsigned bit; const char *name; } figs[] = {
         { ADH_PLOT_FORCE, "force.png" }, { ADH_PLOT_PROFILE, "profile.png" }, { ADH_PLOT_CONTACT, "contact.png" },
@@ -267,7 +276,7 @@ static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, co
             cli_tables_names_add(missing, sizeof missing, figs[k].name);
     if (!*missing)
         return CLI_EXIT_OK;
-    int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, "interrupted");
+    int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, "interrupted", lost);
     return trc == CLI_EXIT_USAGE ? trc : cli_interrupt_exit();
 }
 
@@ -351,10 +360,11 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     adh_static_result *sres = calloc(n, sizeof *sres);
     int *status = calloc(n, sizeof *status);
     int *tables = calloc(n, sizeof *tables);
+    char (*lost)[CLI_SWEEP_LOST] = calloc(n, sizeof *lost);
     adh_outdir **subs = calloc(n, sizeof *subs);
     int jobs = adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
-    int failed = !runs || !sres || !status || !tables || !subs || !threads ? CLI_EXIT_SOLVER : 0;
+    int failed = !runs || !sres || !status || !tables || !lost || !subs || !threads ? CLI_EXIT_SOLVER : 0;
     if (failed)
         snprintf(why, sizeof why, "out of memory for %zu runs", n);
     else if (od && open_runs(od, n, subs, why, sizeof why) != 0)
@@ -362,7 +372,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     if (failed) {
         cli_interrupt_release();
         fprintf(stderr, "adhere: %s\n", why);
-        free(runs), free(sres), free(status), free(tables), free(subs), free(threads);
+        free(runs), free(sres), free(status), free(tables), free(subs), free(threads), free(lost);
         adh_kernel_free(k), adh_grid_free(g);
         return failed;
     }
@@ -378,7 +388,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     adh_ready_phase("sweep");
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status,
-                      .out = od ? subs : NULL, .tables = tables };
+                      .out = od ? subs : NULL, .tables = tables, .lost = lost };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();
     int started = 0;
@@ -405,20 +415,20 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         else if (runs[i].unconverged && !cfg->output.allow_unconverged)
             exit_status = worse(exit_status, CLI_EXIT_SOLVER);   /* sweep.tsv says unconverged */
     }
-    sweep_tables st = { cfg, runs, sres, status };
+    sweep_tables st = { cfg, runs, sres, status, lost };
     if (!out) {
-        cli_sweep_table(stdout, cfg, runs, sres, status);
+        cli_sweep_table(stdout, cfg, runs, sres, status, NULL);
     } else {
         for (size_t i = 0; i < n; i++) {
             if (tables[i] < 0) /* never started: its tables say interrupted */
-                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], subs[i]);
+                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], subs[i], lost[i]);
             exit_status = worse(exit_status, tables[i]);
             int plot = tables[i] == CLI_EXIT_OK ||
                        (tables[i] == CLI_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS);
             if (plot && cli_interrupt_signal())
-                exit_status = worse(exit_status, plots_skipped(cfg, i, &runs[i], &sres[i], status[i], subs[i]));
+                exit_status = worse(exit_status, plots_skipped(cfg, i, &runs[i], &sres[i], status[i], subs[i], lost[i]));
             else if (plot)
-                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], subs[i]));
+                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], subs[i], lost[i]));
         }
         if (cli_interrupt_signal())   /* while the tables or plots were written */
             exit_status = worse(exit_status, cli_interrupt_exit());
@@ -451,7 +461,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         adh_run_free(&runs[i]);
         adh_outdir_close(subs[i]);
     }
-    free(runs), free(sres), free(status), free(tables), free(subs), free(threads);
+    free(runs), free(sres), free(status), free(tables), free(subs), free(threads), free(lost);
     adh_kernel_free(k);
     adh_grid_free(g);
     return exit_status;
