@@ -413,7 +413,8 @@ static int overwrite(adh_outdir *d, const char *name, const struct stat *st, int
 
 /* Files under adhere's names that its manifest does not prove its own:
  * refused by name, or with OVERWRITE removed. */
-static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
+/* d's entries, from the first; NULL with why. */
+static DIR *listing(adh_outdir *d, char *why, size_t whylen)
 {
     int dup_fd = dup(d->fd);
     DIR *dir = dup_fd >= 0 ? fdopendir(dup_fd) : NULL;
@@ -421,8 +422,43 @@ static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
         if (dup_fd >= 0)
             close(dup_fd);
         snprintf(why, whylen, "cannot read %.3000s: %s", d->path, strerror(errno));
-        return -1;
+    } else {
+        rewinddir(dir);   /* a dup shares the offset an earlier listing left at the end */
     }
+    return dir;
+}
+
+/* A directory where adhere writes a file (force.tsv/, its manifest) is
+ * refused even with OVERWRITE: adhere removes no directory of the user's,
+ * and nothing can be renamed over one. 0, or -1 with why. */
+static int dir_at_file(adh_outdir *d, char *why, size_t whylen)
+{
+    DIR *dir = listing(d, why, whylen);
+    if (!dir)
+        return -1;
+    int rc = 0;
+    struct dirent *de;
+    while (rc == 0 && (de = readdir(dir)) != NULL) {
+        struct stat st;
+        if (adh_outdir_owns(de->d_name) && fstatat(d->fd, de->d_name, &st, AT_SYMLINK_NOFOLLOW) == 0 &&
+            S_ISDIR(st.st_mode)) {
+            snprintf(why, whylen, "%.3000s/%.40s is a directory, where adhere writes a file: refused, not "
+                     "replaced (adhere removes no directory of yours, --overwrite neither); move it away, or "
+                     "choose another -o", d->path, de->d_name);
+            rc = -1;
+        }
+    }
+    closedir(dir);
+    return rc;
+}
+
+static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
+{
+    if (dir_at_file(d, why, whylen) != 0)
+        return -1;
+    DIR *dir = listing(d, why, whylen);
+    if (!dir)
+        return -1;
     char list[600] = "";
     size_t count = 0;
     int rc = 0;
@@ -430,7 +466,8 @@ static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
     while (rc == 0 && (de = readdir(dir)) != NULL) {
         const char *name = de->d_name;
         int manifest = strcmp(name, ADH_OUTDIR_MANIFEST) == 0;
-        int mine = adh_outdir_owns(name) || is_run_dir(name);
+        /* a run-K is adhere's only at the top: it makes none inside one */
+        int mine = adh_outdir_owns(name) || (depth == 0 && is_run_dir(name));
         struct stat st;
         if ((!mine && !owned_temporary(name)) || fstatat(d->fd, name, &st, AT_SYMLINK_NOFOLLOW) != 0)
             continue;

@@ -93,6 +93,22 @@ rc=$?
 check "a table adhere wrote and the user then edited is not removed: exit 2 (got $rc)" \
     sh -c "[ $rc -eq 2 ] && tail -n 1 reuse/force.tsv | grep -qx 'my edit'"
 
+# --- a directory where adhere writes a file --------------------------------
+# --overwrite used to be offered and taken, the run computed, and force.tsv
+# then could not be written (exit 2 at the end, its table lost)
+mkdir -p dirs/force.tsv dirs2/.adhere-manifest
+for ow in "" --overwrite; do
+    "$ADHERE" $QUICK --no-plot $ow -o dirs 2>"dirs$ow.err"
+    rc=$?
+    check "a directory at dirs/force.tsv${ow:+ with $ow}: refused before the run, exit 2 (got $rc: $(head -c 200 "dirs$ow.err"))" \
+        sh -c "[ $rc -eq 2 ] && [ ! -e dirs/summary.tsv ] && [ -d dirs/force.tsv ] && grep -q 'force.tsv is a directory' 'dirs$ow.err'"
+done
+check "... and --overwrite is not offered for it" sh -c "! grep -q 'pass --overwrite' dirs.err"
+"$ADHERE" $QUICK --no-plot --overwrite -o dirs2 2>dirs2.err
+rc=$?
+check "a directory at the manifest's name, --overwrite: refused, exit 2, naming it (got $rc: $(head -c 160 dirs2.err))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'adhere-manifest is a directory' dirs2.err"
+
 # --- two runs into one directory at once -------------------------------------
 rm -f first.ready
 ADHERE_READY_FILE="$TMP/first.ready" "$ADHERE" $QUICK -d 0.5nm --turn=-1nm --dwell=100000000 -o both 2>first.err &
