@@ -316,6 +316,18 @@ static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)
 static int clear(adh_outdir *d, int depth, char *why, size_t whylen);
 static int foreign(adh_outdir *d, int depth, char *why, size_t whylen);
 
+/* d locked for this run (held until it is closed): 0, or -1 with why when
+ * another adhere holds it. */
+static int lock(adh_outdir *d, char *why, size_t whylen)
+{
+    if (flock(d->fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+        snprintf(why, whylen, "%.3000s is in use: another adhere is writing into it (it holds the directory's "
+                 "lock); wait for it to finish, or choose another -o", d->path);
+        return -1;
+    }
+    return 0;
+}
+
 /* The directory name in dirfd, never through a link: d with no entries
  * yet, or NULL with why. */
 static adh_outdir *open_at(int dirfd, const char *name, const char *path, unsigned flags, char *why, size_t whylen)
@@ -349,6 +361,11 @@ static int empty_subdir(adh_outdir *d, const char *name, unsigned flags, char *w
     adh_outdir *s = open_at(d->fd, name, path, flags, why, whylen);
     if (!s)
         return -1;
+    /* a run writing into DIR/run-K itself (-o DIR/run-K) holds its lock */
+    if (lock(s, why, whylen) != 0) {
+        adh_outdir_close(s);
+        return -1;
+    }
     load(s);
     int rc = clear(s, 1, why, whylen);
     if (rc == 0 && (flags & ADH_OUTDIR_OVERWRITE))
@@ -497,11 +514,8 @@ static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
  * manifest written: d is ready for this run's files. */
 static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
 {
-    if (flock(d->fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
-        snprintf(why, whylen, "%.3000s is in use: another adhere is writing into it (it holds the directory's "
-                 "lock); wait for it to finish, or choose another -o", d->path);
+    if (lock(d, why, whylen) != 0)
         return -1;
-    }
     if (faccessat(d->fd, ".", W_OK | X_OK, AT_EACCESS) != 0) {
         snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));
         return -1;

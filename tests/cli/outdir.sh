@@ -126,6 +126,36 @@ rc=$?
 check "... the first finishes its own tables (exit $rc, summary says interrupted)" \
     sh -c "[ $rc -eq 130 ] && grep -qx 'status	interrupted' both/summary.tsv"
 
+# --- a run into an earlier sweep's run-1 while a sweep is started into its parent
+# The run holds run-1's lock while gnuplot draws (a stand-in that never
+# answers, and says when it started); the sweep must not empty run-1 under
+# it: it used to remove the run's tables and the directory itself.
+cat >gp-slow <<EOF
+#!/bin/sh
+: >"\$GP_STARTED"
+exec cat 3>&1 >/dev/null
+EOF
+chmod +x gp-slow
+"$ADHERE" $QUICK --no-plot sweep.scene -o nest 2>/dev/null
+rm -f nest.started
+GP_STARTED="$TMP/nest.started" ADHERE_GNUPLOT="$TMP/gp-slow" "$ADHERE" $QUICK --plots=force -o nest/run-1 \
+    2>inner.err &
+pid=$!
+i=0
+while [ ! -e nest.started ] && kill -0 "$pid" 2>/dev/null && [ $i -lt 600 ]; do sleep 0.1; i=$((i + 1)); done
+ino=$(ls -i nest/run-1/force.tsv 2>/dev/null | cut -d' ' -f1)
+"$ADHERE" $QUICK --no-plot sweep.scene -o nest 2>outer.err
+rc=$?
+kept=0
+[ -n "$ino" ] && [ "$(ls -i nest/run-1/force.tsv 2>/dev/null | cut -d' ' -f1)" = "$ino" ] && kept=1
+kill -INT "$pid"
+wait "$pid"
+check "a sweep into nest while a run writes into nest/run-1: refused, exit 2 (got $rc: $(head -c 200 outer.err))" \
+    sh -c "[ -e nest.started ] && [ $rc -eq 2 ] && grep -q 'run-1 is in use' outer.err"
+check "... the run's tables were left where they were (its force.tsv still there: $kept)" [ "$kept" -eq 1 ]
+check "... and the run finished into them (summary.tsv names force.png not written)" \
+    grep -q '^not_written	force.png' nest/run-1/summary.tsv
+
 # --- an -o path of about 4 080 characters ----------------------------------
 long=$TMP/L
 while [ ${#long} -lt 3880 ]; do long=$long/dddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddddd; done
