@@ -30,6 +30,8 @@ typedef struct entry {
     long long size;         /* -1: a directory, or a log that grows */
     long long mt_sec;
     long mt_nsec;
+    long long ct_sec;       /* the change time: a chmod, a link, an edit */
+    long ct_nsec;           /* whose mtime was set back all move it */
 } entry;
 
 struct adh_outdir {
@@ -177,7 +179,7 @@ static int entry_name_ok(const char *name)
 }
 
 static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsigned long long ino,
-                   long long size, long long sec, long nsec)
+                   long long size, const struct timespec *mt, const struct timespec *ct)
 {
     if (d->n == d->cap) {
         size_t cap = d->cap ? 2 * d->cap : 16;
@@ -187,7 +189,8 @@ static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsi
         d->e = e;
         d->cap = cap;
     }
-    d->e[d->n++] = (entry){ .dev = dev, .ino = ino, .size = size, .mt_sec = sec, .mt_nsec = nsec };
+    d->e[d->n++] = (entry){ .dev = dev, .ino = ino, .size = size, .mt_sec = (long long)mt->tv_sec,
+                            .mt_nsec = mt->tv_nsec, .ct_sec = (long long)ct->tv_sec, .ct_nsec = ct->tv_nsec };
     snprintf(d->e[d->n - 1].name, sizeof d->e[0].name, "%s", name);
     return 0;
 }
@@ -196,8 +199,7 @@ static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsi
 static int add_entry(adh_outdir *d, const char *name, const struct stat *st, int grows)
 {
     return add_raw(d, name, (unsigned long long)st->st_dev, (unsigned long long)st->st_ino,
-                   grows || S_ISDIR(st->st_mode) ? -1 : (long long)st->st_size, (long long)st->st_mtim.tv_sec,
-                   st->st_mtim.tv_nsec);
+                   grows || S_ISDIR(st->st_mode) ? -1 : (long long)st->st_size, &st->st_mtim, &st->st_ctim);
 }
 
 static void drop_entry(adh_outdir *d, size_t i)
@@ -215,7 +217,8 @@ static int same(const entry *e, const struct stat *st)
     if (e->dev != (unsigned long long)st->st_dev || e->ino != (unsigned long long)st->st_ino)
         return 0;
     return e->size < 0 || (e->size == (long long)st->st_size && e->mt_sec == (long long)st->st_mtim.tv_sec &&
-                           e->mt_nsec == st->st_mtim.tv_nsec);
+                           e->mt_nsec == st->st_mtim.tv_nsec && e->ct_sec == (long long)st->st_ctim.tv_sec &&
+                           e->ct_nsec == st->st_ctim.tv_nsec);
 }
 
 /* The entry of d that name (a file, or "run-K" for the directory) is
@@ -233,15 +236,16 @@ static long find(const adh_outdir *d, const char *name, const struct stat *st)
 static int manifest_table(FILE *f, const void *ctx)
 {
     const adh_outdir *d = ctx;
-    fputs("# adhere: the files it wrote in this directory (name, device, inode, size, modification time);\n"
-          "# a later run removes only those that are still the same, and writes nothing through a link\n", f);
+    fputs("# adhere: the files it wrote in this directory (name, device, inode, size, modification time,\n"
+          "# change time); a later run removes only those that are still the same, and writes nothing through\n"
+          "# a link\n", f);
     for (size_t i = 0; i < d->n; i++) {
         const entry *e = &d->e[i];
         if (e->size < 0)
-            fprintf(f, "%s\t%llu\t%llu\t-\t-\n", e->name, e->dev, e->ino);
+            fprintf(f, "%s\t%llu\t%llu\t-\t-\t-\n", e->name, e->dev, e->ino);
         else
-            fprintf(f, "%s\t%llu\t%llu\t%lld\t%lld.%09ld\n", e->name, e->dev, e->ino, e->size, e->mt_sec,
-                    e->mt_nsec);
+            fprintf(f, "%s\t%llu\t%llu\t%lld\t%lld.%09ld\t%lld.%09ld\n", e->name, e->dev, e->ino, e->size,
+                    e->mt_sec, e->mt_nsec, e->ct_sec, e->ct_nsec);
     }
     return 0;
 }
@@ -260,19 +264,35 @@ static int save(adh_outdir *d)
     return 0;
 }
 
+/* "SEC.NSEC" into t: 1, or 0. */
+static int parse_time(const char *text, struct timespec *t)
+{
+    long long sec;
+    long nsec;
+    if (sscanf(text, "%lld.%ld", &sec, &nsec) != 2 || nsec < 0 || nsec > 999999999)
+        return 0;
+    t->tv_sec = (time_t)sec;
+    t->tv_nsec = nsec;
+    return 1;
+}
+
+/* One line of the manifest. A file's line without its change time (an
+ * adhere before it recorded one) proves nothing: the file is then refused,
+ * unless --overwrite. */
 static void parse_line(adh_outdir *d, const char *line)
 {
-    char name[64], size[32], mtime[48];
+    char name[64], size[32], mtime[48], ctime[48];
     unsigned long long dev, ino;
-    if (line[0] == '#' || sscanf(line, "%63[^\t]\t%llu\t%llu\t%31s\t%47s", name, &dev, &ino, size, mtime) != 5 ||
-        !entry_name_ok(name))
+    int got = line[0] == '#' ? 0 : sscanf(line, "%63[^\t]\t%llu\t%llu\t%31s\t%47s\t%47s", name, &dev, &ino, size,
+                                          mtime, ctime);
+    if (got < 5 || !entry_name_ok(name))
         return;
-    long long bytes = -1, sec = 0;
-    long nsec = 0;
-    if (strcmp(size, "-") != 0 && (sscanf(size, "%lld", &bytes) != 1 || bytes < 0 ||
-                                   sscanf(mtime, "%lld.%ld", &sec, &nsec) != 2))
+    long long bytes = -1;
+    struct timespec mt = { 0, 0 }, ct = { 0, 0 };
+    if (strcmp(size, "-") != 0 && (got < 6 || sscanf(size, "%lld", &bytes) != 1 || bytes < 0 ||
+                                   !parse_time(mtime, &mt) || !parse_time(ctime, &ct)))
         return;
-    add_raw(d, name, dev, ino, bytes, sec, nsec);
+    add_raw(d, name, dev, ino, bytes, &mt, &ct);
 }
 
 /* d's manifest into its entries. One that is not a regular file of this
@@ -647,13 +667,20 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
     struct stat st;
     int fd = temp_create(d->fd, name, tmp, sizeof tmp);
     int e = fd < 0 ? errno : fill(fd, writer, ctx, &st);
-    /* recorded before the rename and the older record kept until after it:
-     * whichever file a kill leaves under name, the manifest proves it */
+    /* recorded before the rename (a manifest that cannot be written stops
+     * it), and again after it, which moves the change time: a kill between
+     * the two leaves the new file unproven, so a later run refuses it (never
+     * takes it for the user's), and the older record keeps the older file
+     * proven until it is replaced */
     size_t before = d->n;
     if (!e && (add_entry(d, name, &st, 0) != 0 || save(d) != 0))
         e = errno ? errno : ENOMEM;
     if (!e && renameat(d->fd, tmp, d->fd, name) != 0)
         e = errno;
+    struct stat now;
+    if (!e && fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 && now.st_dev == st.st_dev &&
+        now.st_ino == st.st_ino)
+        add_entry(d, name, &now, 0);
     if (e) {
         if (fd >= 0)
             unlinkat(d->fd, tmp, 0);

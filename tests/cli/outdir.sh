@@ -93,6 +93,22 @@ rc=$?
 check "a table adhere wrote and the user then edited is not removed: exit 2 (got $rc)" \
     sh -c "[ $rc -eq 2 ] && tail -n 1 reuse/force.tsv | grep -qx 'my edit'"
 
+# a table the user made read-only, and one edited in place and given its
+# modification time back (touch -r): the user's now (their change time
+# moved); both used to be taken for adhere's and removed
+"$ADHERE" $QUICK --no-plot -o kept 2>/dev/null
+chmod 444 kept/force.tsv
+cp -p kept/turns.tsv turns.orig
+printf 'X' | dd of=kept/turns.tsv bs=1 seek=2 conv=notrunc 2>/dev/null
+touch -r turns.orig kept/turns.tsv
+ino=$(ls -i kept/force.tsv | cut -d' ' -f1)
+"$ADHERE" $QUICK --no-plot -o kept 2>kept.err
+rc=$?
+check "a read-only force.tsv and a turns.tsv edited with its mtime set back: refused, exit 2 (got $rc: $(head -c 200 kept.err))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'force.tsv' kept.err && grep -q 'turns.tsv' kept.err"
+check "... both kept as the user left them" \
+    sh -c "[ \"\$(ls -i kept/force.tsv | cut -d' ' -f1)\" = $ino ] && [ \"\$(stat -c %a kept/force.tsv)\" = 444 ] && [ \"\$(cut -c3 kept/turns.tsv | head -n 1)\" = X ]"
+
 # --- a directory where adhere writes a file --------------------------------
 # --overwrite used to be offered and taken, the run computed, and force.tsv
 # then could not be written (exit 2 at the end, its table lost)
