@@ -175,7 +175,7 @@ static int entry_name_ok(const char *name)
         snprintf(base, sizeof base, "%.*s", (int)(n - 1), name);
         return is_run_dir(base);
     }
-    return adh_outdir_owns(name) && strcmp(name, ADH_OUTDIR_MANIFEST) != 0;
+    return (adh_outdir_owns(name) || owned_temporary(name)) && strcmp(name, ADH_OUTDIR_MANIFEST) != 0;
 }
 
 static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsigned long long ino,
@@ -656,6 +656,21 @@ static void not_replaced(const adh_outdir *d, const char *name, char *why, size_
              "--overwrite replaces it)", d->path, name);
 }
 
+/* The newest record of name kept, every older one and tmp's dropped. */
+static void keep_newest(adh_outdir *d, const char *name, const char *tmp)
+{
+    long newest = -1;
+    for (size_t i = 0; i < d->n; i++)
+        if (!strcmp(d->e[i].name, name))
+            newest = (long)i;
+    entry keep = newest >= 0 ? d->e[newest] : (entry){ .size = 0 };
+    for (size_t i = d->n; i-- > 0;)
+        if (!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, tmp))
+            drop_entry(d, i);
+    if (newest >= 0)
+        d->e[d->n++] = keep;   /* room: at least that one was dropped */
+}
+
 int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, const void *ctx, char *why,
                      size_t whylen)
 {
@@ -665,22 +680,26 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
     }
     char tmp[64];
     struct stat st;
+    size_t before = d->n;
     int fd = temp_create(d->fd, name, tmp, sizeof tmp);
-    int e = fd < 0 ? errno : fill(fd, writer, ctx, &st);
+    int e = fd < 0 ? errno : 0;
+    /* the temporary is recorded (by identity) before a byte goes into it:
+     * one a kill leaves is the next run's to remove */
+    if (!e && (fstat(fd, &st) != 0 || add_entry(d, tmp, &st, 1) != 0 || save(d) != 0)) {
+        e = errno ? errno : ENOMEM;
+        close(fd);
+    } else if (!e) {
+        e = fill(fd, writer, ctx, &st);
+    }
     /* recorded before the rename (a manifest that cannot be written stops
      * it), and again after it, which moves the change time: a kill between
      * the two leaves the new file unproven, so a later run refuses it (never
      * takes it for the user's), and the older record keeps the older file
      * proven until it is replaced */
-    size_t before = d->n;
     if (!e && (add_entry(d, name, &st, 0) != 0 || save(d) != 0))
         e = errno ? errno : ENOMEM;
     if (!e && renameat(d->fd, tmp, d->fd, name) != 0)
         e = errno;
-    struct stat now;
-    if (!e && fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 && now.st_dev == st.st_dev &&
-        now.st_ino == st.st_ino)
-        add_entry(d, name, &now, 0);
     if (e) {
         if (fd >= 0)
             unlinkat(d->fd, tmp, 0);
@@ -688,9 +707,10 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
         snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, name, strerror(e));
         return -1;
     }
-    for (size_t i = d->n - 1; i-- > 0;)
-        if (!strcmp(d->e[i].name, name))
-            drop_entry(d, i);
+    struct stat now;
+    if (fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 && now.st_dev == st.st_dev && now.st_ino == st.st_ino)
+        add_entry(d, name, &now, 0);
+    keep_newest(d, name, tmp);
     save(d);
     return 0;
 }
