@@ -17,14 +17,18 @@
  * only sweep.tsv is written, to standard output. */
 int cli_sweep_main(const cli_options *cli, adh_outdir *out);
 
-/* A run's files not written, comma-separated (its summary.tsv's not_written). */
-#define CLI_SWEEP_LOST 256
+/* What a run's summary.tsv said: the files not written (comma-separated,
+ * its not_written) and its status word ("" before it was written). */
+typedef struct cli_sweep_said {
+    char lost[256];
+    char word[32];
+} cli_sweep_said;
 
 /* sweep.tsv: one row per run. runs[i] is run i of cfg's sweep; in mode =
  * static sres[i] is its curve's summary (pulloff_F_disp and folds columns);
- * lost[i] (lost may be NULL) the files of run i not written, whose status
- * is then not success, as its summary.tsv's is not. */
+ * said[i] (said may be NULL: no run directories) what its summary.tsv
+ * said, whose status word sweep.tsv repeats. */
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                    const int *status, const char (*lost)[CLI_SWEEP_LOST]);
+                    const int *status, const cli_sweep_said *said);
 
 #endif
