@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "adhere/grid.h"
+#include "adhere/protocol.h"
 #include "adhere/rings.h"
 
 /* Measured peaks (VmHWM at the first step, N = 2000 to 20000; docs/
@@ -18,6 +19,11 @@
 #define HMAT_NODE 4.0e3                  /* measured 2.9 kB */
 #define HODLR_NODE 6.0e3                 /* static preconditioner, measured 4.4 kB */
 #define VECTORS_NODE 400.0               /* the solvers' vectors, ~25 doubles a node */
+/* An interactive path keeps every state it passed, for undo: a snapshot of
+ * the deformation, gap and pressure, 3 doubles a node (24.4 B measured at
+ * N = 5000, 100 steps), and the step's row and its record. */
+#define SNAPSHOT_NODE 24.5
+#define SNAPSHOT_STEP 512.0
 /* Address space a computing thread maps beside that, counted only against
  * ulimit -v and -d: OpenBLAS maps a 128 MiB working buffer for each thread
  * on its first LAPACK or level-2/3 call (blas_memory_alloc) and, before
@@ -184,6 +190,35 @@ static void bytes_text(double b, char *buf, size_t len)
         snprintf(buf, len, "%.3g GB", b / 1e9);
     else
         snprintf(buf, len, "%.3g MB", b / 1e6);
+}
+
+double adh_budget_path_steps(const adh_run_spec *run)
+{
+    double start = adh_config_start(run), step = run->proto.step;
+    double deepest = run->proto.nturns ? adh_protocol_deepest_turn(&run->proto) : 0.0;
+    double steps = fmax(0.0, start - deepest) / step + 1;
+    for (size_t i = 0; run->proto.unload && i < run->proto.nturns; i++)
+        steps += fmax(0.0, start - run->proto.turns[i]) / step + 1;
+    return steps;
+}
+
+int adh_budget_check_path(const adh_run_spec *run, size_t kept, char *why, size_t whylen)
+{
+    if (run->mode == ADH_MODE_RIGID)
+        return 0;
+    double n = (double)adh_config_nodes(run), steps = adh_budget_path_steps(run);
+    double per_step = SNAPSHOT_NODE * n + SNAPSHOT_STEP;
+    double path = fmax(0.0, steps - (double)kept) * per_step, have;
+    if (adh_budget_fits(adh_budget_bytes(run, 0) + path, 1, &have, NULL))
+        return 0;
+    char a[32], b[32], c[32];
+    bytes_text(steps * per_step, a, sizeof a);
+    bytes_text(have, b, sizeof b);
+    bytes_text(per_step, c, sizeof c);
+    snprintf(why, whylen, "undo would keep %s for this path (%.0f steps to the turn and back, %s a step on %.0f "
+             "nodes), more than the %s this process may use: take a larger protocol.step, fewer grid.nodes, or a "
+             "turn nearer the start", a, steps, c, n, b);
+    return -1;
 }
 
 int adh_budget_check_threads(const adh_run_spec *run, unsigned solvers, unsigned threads, char *why,

@@ -42,4 +42,14 @@ int adh_budget_check(const adh_run_spec *run, unsigned solvers, char *why, size_
 int adh_budget_check_threads(const adh_run_spec *run, unsigned solvers, unsigned threads, char *why,
                              size_t whylen);
 
+/* The steps of run's protocol: loading to the deepest turn and unloading
+ * from each back to the start (the plan's count, give or take a step). */
+double adh_budget_path_steps(const adh_run_spec *run);
+
+/* An interactive path keeps every state for undo: run's whole protocol
+ * kept so (kept steps already are), beside the run's own estimate, against
+ * the memory there is. 0, or -1 with a sentence naming the path, what it
+ * would keep and what to change (keys: adh_config_reword). */
+int adh_budget_check_path(const adh_run_spec *run, size_t kept, char *why, size_t whylen);
+
 #endif

@@ -71,6 +71,16 @@ check "a small run under ulimit -v 200 MB ... 700 MB: never hung (hung at:${hung
 check "... each refused naming ulimit -v ($refused) or run to its end ($ran)${other:+; otherwise:$other}" \
     sh -c "[ -z '$other' ] && [ $refused -gt 0 ] && [ $ran -gt 0 ]"
 
+# The TUI keeps every state of its path for undo (3 doubles a node a
+# step): at N = 20000 and d = 0.1 pm the path to the turn and back (438 506
+# steps) would keep 215 GB. It is refused before a step, on the screen; it
+# used to step on until the machine ran out.
+printf ':set N 20000\n:set d 0.1pm\nf\n' >path.keys
+"$ADHERE" --replay=path.keys --screen=path.screen --size=200x32 --no-clock </dev/null >path.out 2>&1
+rc=$?
+check "the TUI at N = 20000, d = 0.1 pm: its first step refused, naming the undo states (exit $rc: $(grep -o 'error: .*' path.screen | cut -c1-160))" \
+    sh -c "[ $rc -eq 0 ] && grep -q 'undo would keep [0-9.]* GB for this path' path.screen && grep -q 'path   0 states' path.screen"
+
 # --data: a million points and one more, and a file of 65 MiB
 awk 'BEGIN {for (i = 0; i <= 1000000; i++) print i * 1e-3, 1}' >many.dat
 "$ADHERE" --batch -q -N 100 --force --data=many.dat -o many 2>many.err
