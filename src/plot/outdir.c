@@ -70,9 +70,12 @@ int adh_outdir_owns(const char *name)
     return 0;
 }
 
+/* run-K as a sweep names it: K from 1, no leading zero (a user's run-01
+ * or run-0 is no name of adhere's) */
 static int is_run_dir(const char *name)
 {
-    return strncmp(name, "run-", 4) == 0 && all_digits(name + 4, strlen(name + 4)) && strlen(name) < 24;
+    return strncmp(name, "run-", 4) == 0 && name[4] >= '1' && name[4] <= '9' &&
+           all_digits(name + 4, strlen(name + 4)) && strlen(name) < 24;
 }
 
 /* A temporary of an owned name: .NAME.XXXXXX (this version), or an older

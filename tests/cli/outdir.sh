@@ -75,6 +75,13 @@ check "... every one of the user's files is kept as it was" [ "$(snapshot user; 
 check "... the message names them and --overwrite: $(head -c 300 user.err)" \
     sh -c "grep -q 'cost.tsv' user.err && grep -q 'run-3/' user.err && grep -q -- '--overwrite' user.err"
 
+# a user's run-01/ and run-0/ are no names of adhere's (it writes run-1 ...)
+mkdir -p lookalike/run-01 lookalike/run-0
+"$ADHERE" $QUICK --no-plot -o lookalike 2>lookalike.err
+rc=$?
+check "a directory holding the user's run-01/ and run-0/: run, exit 0, both kept (got $rc: $(grep -v warning lookalike.err | head -c 160))" \
+    sh -c "[ $rc -eq 0 ] && [ -d lookalike/run-01 ] && [ -d lookalike/run-0 ]"
+
 # adhere's own files of an earlier run go; the user's other files stay
 "$ADHERE" $QUICK --reference=static -o reuse 2>/dev/null
 echo mine >reuse/notes.txt
