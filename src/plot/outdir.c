@@ -575,6 +575,24 @@ static int make_path(const char *path, char *why, size_t whylen)
     }
 }
 
+/* Why the directory path did not open (e), in words that say what is there. */
+static void open_failed(const char *path, int e, char *why, size_t whylen)
+{
+    struct stat st;
+    char target[512];
+    ssize_t n = e == ENOENT ? readlink(path, target, sizeof target - 1) : -1;
+    if (n >= 0) {
+        target[n] = '\0';
+        snprintf(why, whylen, "cannot write into %.3000s: it is a symbolic link to %.400s, which does not exist; "
+                 "make that directory, or choose another -o", path, target);
+    } else if (e == EACCES && stat(path, &st) == 0 && S_ISDIR(st.st_mode) && access(path, W_OK | X_OK) == 0) {
+        snprintf(why, whylen, "cannot read directory %.3000s: %s (adhere reads a directory before it writes "
+                 "into it, to remove only its own files)", path, strerror(e));
+    } else {
+        snprintf(why, whylen, "cannot write into %.3000s: %s", path, strerror(e));
+    }
+}
+
 adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen)
 {
     if (!path[0] || strlen(path) >= PATH_MAX) {
@@ -587,7 +605,7 @@ adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t 
      * names inside it are the ones no link may redirect */
     int fd = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) {
-        snprintf(why, whylen, "cannot write into %.3000s: %s", path, strerror(errno));
+        open_failed(path, errno, why, whylen);
         return NULL;
     }
     adh_outdir *d = outdir_new(fd, flags, path);

@@ -34,6 +34,13 @@ check "with --overwrite: the link itself is replaced by a directory, exit 0 (got
     sh -c "[ $rc -eq 0 ] && [ -d o/run-1 ] && [ ! -L o/run-1 ] && [ -s o/run-1/force.tsv ]"
 check "... and v is still untouched" [ "$(snapshot v)" = "$before" ]
 
+# -o a link to a directory that does not exist: said so, not "No such file"
+ln -s missing-dir dangling
+"$ADHERE" $QUICK --no-plot -o dangling 2>dangling.err
+rc=$?
+check "-o a dangling link: exit 2, naming the link and its target (got $rc: $(head -c 200 dangling.err))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'symbolic link to missing-dir, which does not exist' dangling.err && [ -L dangling ]"
+
 # --- links planted at the temporary names an older adhere used -------------
 # (its pid is visible): the run holds in a long dwell, the links go in, a
 # SIGTERM makes it write its tables
