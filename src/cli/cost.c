@@ -278,7 +278,8 @@ static int cost_jobs(void)
 
 /* Memory before anything is allocated: the runs in parallel hold a dense
  * kernel each (the report measures dense kernels), beside the static
- * curve's kernel and solver at the finest N. 0, or -1 with why. */
+ * curve's kernel and solver at the finest N, and every thread its BLAS
+ * buffer (under ulimit -v). 0, or -1 with why. */
 static int cost_budget(const adh_config *cfg, const size_t *nodes, size_t nnodes, char *why, size_t whylen)
 {
     adh_run_spec big = cfg->spec;
@@ -288,12 +289,13 @@ static int cost_budget(const adh_config *cfg, const size_t *nodes, size_t nnodes
     big.grid.use.storage = ADH_STORAGE_DENSE;
     big.grid.use.graded = 0;
     double n = (double)big.grid.use.nodes, jobs = cost_jobs();
-    double need = adh_budget_bytes(&big, 1) + jobs * 8.0 * n * n, have = adh_budget_machine_bytes();
-    if (need <= have)
+    double need = adh_budget_bytes(&big, 1) + jobs * 8.0 * n * n, have;
+    /* the workers and this thread, which solves the static curve meanwhile */
+    if (adh_budget_fits(need, (unsigned)jobs + 1, &have, NULL))
         return 0;
     snprintf(why, whylen, "--cost: its runs at N = %zu would hold about %.3g GB at once (%g in parallel, a dense "
-             "kernel each, beside the static curve's solver), more than the %.3g GB this process may use: use "
-             "smaller --cost-nodes", big.grid.use.nodes, need / 1e9, jobs, have / 1e9);
+             "kernel each, beside the static curve's solver), more than the %.3g GB this process may use (available memory, "
+             "ulimit -v/-d less the BLAS's buffers, cgroup limit): use smaller --cost-nodes", big.grid.use.nodes, need / 1e9, jobs, have / 1e9);
     return -1;
 }
 

@@ -5,6 +5,8 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "adhere/grid.h"
 #include "cli/advice.h"
@@ -36,7 +38,28 @@ static int stdout_done(void)
     return CLI_EXIT_OK;
 }
 
+static int run(int argc, char **argv);
+
+/* Under an address-space limit (ulimit -v, -d) OpenBLAS's own threads may
+ * be stuck retrying a working buffer that can never be mapped (before
+ * 0.3.30 it retries forever), and its exit handler joins them: adhere then
+ * never ended, even refusing or printing --version. There, what was
+ * written is flushed and the process leaves without the libraries' exit
+ * handlers (they only free memory); elsewhere main returns as usual. */
 int main(int argc, char **argv)
+{
+    int status = run(argc, argv);
+    struct rlimit as, data;
+    if ((getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) ||
+        (getrlimit(RLIMIT_DATA, &data) == 0 && data.rlim_cur != RLIM_INFINITY)) {
+        if (fflush(NULL) != 0 && status == CLI_EXIT_OK)
+            status = CLI_EXIT_USAGE;
+        _exit(status);
+    }
+    return status;
+}
+
+static int run(int argc, char **argv)
 {
     static cli_options cli;
     /* A file size limit (ulimit -f) is a full disk: the write fails with
@@ -100,7 +123,8 @@ int main(int argc, char **argv)
     const adh_run_spec *spec = &cli.cfg.spec;
     unsigned solvers = spec->mode == ADH_MODE_STATIC ? (unsigned)adh_plan_jobs(&cli.cfg)
                      : cli.reference[0] ? 1 : 0;
-    if (cli.action != CLI_ACT_COST && adh_budget_check(spec, solvers, why, sizeof why) != 0) {
+    if (cli.action != CLI_ACT_COST &&
+        adh_budget_check_threads(spec, solvers, (unsigned)adh_plan_jobs(&cli.cfg), why, sizeof why) != 0) {
         char words[1200];
         cli_options_words(why, words, sizeof words);
         fprintf(stderr, "adhere: %s\n", words);

@@ -43,6 +43,7 @@ typedef struct sweep_job {
     int *status;               /* adh status of each run */
     adh_outdir **out;          /* each run's DIR/run-K, or NULL: nothing but sweep.tsv on stdout */
     int *tables;               /* exit status of writing run i's tables; -1 not yet */
+    cli_sweep_said *said;      /* what each run's summary.tsv said */
     size_t next;               /* the next run to start, under lock */
     size_t done;
     double t0;                 /* when the runs began */
@@ -50,7 +51,7 @@ typedef struct sweep_job {
 } sweep_job;
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, adh_outdir *out);
+                        int rc, adh_outdir *out, cli_sweep_said *said);
 
 static void *worker(void *arg)
 {
@@ -75,7 +76,7 @@ static void *worker(void *arg)
                                          cli_interrupt_step, NULL, run);
         /* tables as soon as a run ends: a long sweep killed later keeps them */
         if (job->out)
-            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i]);
+            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i], &job->said[i]);
         pthread_mutex_lock(&job->lock);
         job->done++;
         if (!cfg->output.quiet) {
@@ -106,7 +107,8 @@ static size_t finished(const adh_config *cfg, const adh_run *runs)
 }
 
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                          const int *status, double static_hysteresis, int static_resolved)
+                    const int *status, double static_hysteresis, int static_resolved,
+                    const cli_sweep_said *said)
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
     int stat = cfg->spec.mode == ADH_MODE_STATIC && sres;
@@ -116,6 +118,9 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
     if (finished(cfg, runs) < cfg->sweep.n)
         fprintf(f, "# PARTIAL: interrupted by signal %d: %zu of %zu runs finished; the others say interrupted\n",
                 cli_interrupt_signal(), finished(cfg, runs), cfg->sweep.n);
+    else if (cli_interrupt_signal())
+        fprintf(f, "# PARTIAL: interrupted by signal %d while the figures were drawn: every run finished, its "
+                "tables whole; those whose figures were not drawn say interrupted\n", cli_interrupt_signal());
     if (stat)
         fprintf(f, "# mode static: each run is the equilibrium curve; jump_in_h0 its first fold, h_before the central gap at the last stable point before it;\n"
                    "# max_load the force at the curve's end (the turn); pulloff_F the load-controlled pull-off (minimum force), pulloff_F_disp the force at the jump-out fold;\n"
@@ -154,7 +159,15 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
                 cli_jumps_jumped(r, rc.proto.step), hyst);
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        fprintf(f, "%s\n", status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r));
+        /* the run's summary.tsv's word (a run whose files were not all
+         * written, or whose figures a signal stopped, is no success there);
+         * its own verdict without one */
+        const char *word = status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r);
+        if (said && said[i].word[0])
+            word = said[i].word;
+        else if (!strcmp(word, "success") && said && said[i].lost[0])
+            word = "output incomplete";
+        fprintf(f, "%s\n", word);
     }
     return 0;
 }
@@ -166,12 +179,13 @@ typedef struct sweep_tables {
     const int *status;
     double static_hysteresis;
     int static_resolved;
+    const cli_sweep_said *said;
 } sweep_tables;
 
 static int write_sweep(FILE *f, const void *ctx)
 {
     const sweep_tables *t = ctx;
-    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status, t->static_hysteresis, t->static_resolved);
+    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status, t->static_hysteresis, t->static_resolved, t->said);
 }
 
 /* An eps sweep drawn as Figure 7: its runs' hysteresis against eps needs
@@ -204,15 +218,16 @@ static double sweep_static_hysteresis(const adh_config *cfg, const adh_grid *g, 
 
 /* Tables of run i in dir (out/run-K): force.tsv and turns.tsv when data
  * is set, then summary.tsv, last, naming what was not written (those that
- * failed here, and the list in unwritten); word, when not NULL, is its
- * status. Returns an exit status. */
+ * failed here or before, kept in said, and the list in unwritten); word,
+ * when not NULL, is its status, which said keeps. Returns an exit status. */
 static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                      int rc, adh_outdir *dir, int data, const char *unwritten, const char *word)
+                      int rc, adh_outdir *dir, int data, const char *unwritten, const char *word, cli_sweep_said *said)
 {
-    char why[1024], note[256] = "", lost[512];
+    char *lost = said->lost;
+    char why[1024], note[256] = "";
     adh_run_spec rspec;
     adh_config_sweep_run(cfg, i, &rspec);
-    snprintf(lost, sizeof lost, "%s", unwritten ? unwritten : "");
+    cli_tables_names_add(lost, sizeof said->lost, unwritten ? unwritten : "");
     int partial = run->interrupted || rc != ADH_SUCCESS;
     if (run->interrupted)
         snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run->nrows);
@@ -232,12 +247,16 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
             if (names[k] && adh_outdir_write(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = CLI_EXIT_USAGE;
-                cli_tables_names_add(lost, sizeof lost, names[k]);
+                cli_tables_names_add(lost, sizeof said->lost, names[k]);
             }
     }
     if (adh_outdir_write(dir, "summary.tsv", cli_tables_summary, &t, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         status = CLI_EXIT_USAGE;
+        cli_tables_names_add(lost, sizeof said->lost, "summary.tsv");   /* sweep.tsv says it */
+        said->word[0] = '\0';
+    } else {
+        snprintf(said->word, sizeof said->word, "%s", cli_tables_summary_word(&t));
     }
     if (status == CLI_EXIT_OK && partial)
         return run->interrupted ? CLI_EXIT_INTERRUPTED : CLI_EXIT_SOLVER;
@@ -251,16 +270,16 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
 }
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, adh_outdir *out)
+                        int rc, adh_outdir *out, cli_sweep_said *said)
 {
-    return run_tables(cfg, i, run, sres, rc, out, 1, NULL, NULL);
+    return run_tables(cfg, i, run, sres, rc, out, 1, NULL, NULL, said);
 }
 
 /* Figures of run i in out/run-K (its tables are there); when one is not
  * written, the run's summary.tsv is written again to say so. An exit
  * status. */
 static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const adh_run *run,
-                       const adh_static_result *sres, int rc, adh_outdir *dir)
+                       const adh_static_result *sres, int rc, adh_outdir *dir, cli_sweep_said *said)
 {
     char msg[1024] = "", missing[256] = "";
     adh_run_spec rspec;
@@ -284,7 +303,8 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
         status = status ? status : CLI_EXIT_PLOT;
     }
     if (*missing) {
-        int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL);
+        int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL,
+                             said);
         if (trc == CLI_EXIT_USAGE)
             status = trc;
     }
@@ -294,7 +314,7 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
 /* Run i's figures not drawn (a signal came first): its summary.tsv names
  * those asked for and says interrupted. An exit status. */
 static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                         int rc, adh_outdir *dir)
+                         int rc, adh_outdir *dir, cli_sweep_said *said)
 {
     static const struct { unsigned bit; const char *name; } figs[] = {
         { ADH_PLOT_FORCE, "force.png" }, { ADH_PLOT_PROFILE, "profile.png" }, { ADH_PLOT_CONTACT, "contact.png" },
@@ -306,7 +326,7 @@ static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, co
             cli_tables_names_add(missing, sizeof missing, figs[k].name);
     if (!*missing)
         return CLI_EXIT_OK;
-    int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, "interrupted");
+    int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, "interrupted", said);
     return trc == CLI_EXIT_USAGE ? trc : cli_interrupt_exit();
 }
 
@@ -390,10 +410,11 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     adh_static_result *sres = calloc(n, sizeof *sres);
     int *status = calloc(n, sizeof *status);
     int *tables = calloc(n, sizeof *tables);
+    cli_sweep_said *said = calloc(n, sizeof *said);
     adh_outdir **subs = calloc(n, sizeof *subs);
     int jobs = adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
-    int failed = !runs || !sres || !status || !tables || !subs || !threads ? CLI_EXIT_SOLVER : 0;
+    int failed = !runs || !sres || !status || !tables || !said || !subs || !threads ? CLI_EXIT_SOLVER : 0;
     if (failed)
         snprintf(why, sizeof why, "out of memory for %zu runs", n);
     else if (od && open_runs(od, n, subs, why, sizeof why) != 0)
@@ -401,7 +422,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     if (failed) {
         cli_interrupt_release();
         fprintf(stderr, "adhere: %s\n", why);
-        free(runs), free(sres), free(status), free(tables), free(subs), free(threads);
+        free(runs), free(sres), free(status), free(tables), free(subs), free(threads), free(said);
         adh_kernel_free(k), adh_grid_free(g);
         return failed;
     }
@@ -417,7 +438,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     adh_ready_phase("sweep");
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status,
-                      .out = od ? subs : NULL, .tables = tables };
+                      .out = od ? subs : NULL, .tables = tables, .said = said };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();
     int started = 0;
@@ -446,20 +467,20 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         else if (runs[i].unconverged && !cfg->output.allow_unconverged)
             exit_status = worse(exit_status, CLI_EXIT_SOLVER);   /* sweep.tsv says unconverged */
     }
-    sweep_tables st = { cfg, runs, sres, status, static_hyst, static_resolved };
+    sweep_tables st = { cfg, runs, sres, status, static_hyst, static_resolved, said };
     if (!out) {
-        cli_sweep_table(stdout, cfg, runs, sres, status, static_hyst, static_resolved);
+        cli_sweep_table(stdout, cfg, runs, sres, status, static_hyst, static_resolved, NULL);
     } else {
         for (size_t i = 0; i < n; i++) {
             if (tables[i] < 0) /* never started: its tables say interrupted */
-                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], subs[i]);
+                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], subs[i], &said[i]);
             exit_status = worse(exit_status, tables[i]);
             int plot = tables[i] == CLI_EXIT_OK ||
                        (tables[i] == CLI_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS);
             if (plot && cli_interrupt_signal())
-                exit_status = worse(exit_status, plots_skipped(cfg, i, &runs[i], &sres[i], status[i], subs[i]));
+                exit_status = worse(exit_status, plots_skipped(cfg, i, &runs[i], &sres[i], status[i], subs[i], &said[i]));
             else if (plot)
-                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], subs[i]));
+                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], subs[i], &said[i]));
         }
         if (cli_interrupt_signal())   /* while the tables or plots were written */
             exit_status = worse(exit_status, cli_interrupt_exit());
@@ -492,7 +513,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         adh_run_free(&runs[i]);
         adh_outdir_close(subs[i]);
     }
-    free(runs), free(sres), free(status), free(tables), free(subs), free(threads);
+    free(runs), free(sres), free(status), free(tables), free(subs), free(threads), free(said);
     adh_kernel_free(k);
     adh_grid_free(g);
     return exit_status;

@@ -17,12 +17,21 @@
  * only sweep.tsv is written, to standard output. */
 int cli_sweep_main(const cli_options *cli, adh_outdir *out);
 
+/* What a run's summary.tsv said: the files not written (comma-separated,
+ * its not_written) and its status word ("" before it was written). */
+typedef struct cli_sweep_said {
+    char lost[256];
+    char word[32];
+} cli_sweep_said;
+
 /* sweep.tsv: one row per run. runs[i] is run i of cfg's sweep; in mode =
  * static sres[i] is its curve's summary (pulloff_F_disp and folds columns).
  * static_hysteresis, unless NAN, is the static curve's loop area (an eps
  * sweep's Figure 7), said in a comment line (and whether its grid
- * resolved it). */
+ * resolved it). said[i] (said may be NULL: no run directories) is what its
+ * summary.tsv said, whose status word sweep.tsv repeats. */
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                    const int *status, double static_hysteresis, int static_resolved);
+                    const int *status, double static_hysteresis, int static_resolved,
+                    const cli_sweep_said *said);
 
 #endif

@@ -104,6 +104,12 @@ const char *cli_tables_verdict(const adh_run_spec *c, const adh_run *r)
     return fault == 1 ? "no contact" : fault == 2 ? "not separated" : !grid_resolved(c) ? "unresolved" : word;
 }
 
+const char *cli_tables_summary_word(const cli_tables *t)
+{
+    const char *word = t->status ? t->status : cli_tables_verdict(t->spec, t->run);
+    return !strcmp(word, "success") && t->unwritten && *t->unwritten ? "output incomplete" : word;
+}
+
 static void kv(FILE *f, const char *k, double v)
 {
     fprintf(f, "%s\t%.17g\n", k, v);
@@ -191,10 +197,7 @@ int cli_tables_summary(FILE *f, const void *ctx)
         fprintf(f, "not_written\t%s\n", t->unwritten);
     /* success only for a finished, converged run on a resolved grid that
      * touched and separated, every file of which was written */
-    const char *word = t->status ? t->status : cli_tables_verdict(c, r);
-    if (!strcmp(word, "success") && lost)
-        word = "output incomplete";
-    fprintf(f, "status\t%s\n", word);
+    fprintf(f, "status\t%s\n", cli_tables_summary_word(t));
     return 0;
 }
 

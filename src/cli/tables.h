@@ -38,6 +38,10 @@ const char *cli_tables_status_word(const adh_run *r);
  * surfaces never touched), "not separated" (an unloading branch ended in
  * contact) or "unresolved" (a grid coarser than the limit) where that holds. */
 const char *cli_tables_verdict(const adh_run_spec *c, const adh_run *r);
+/* summary.tsv's status word for t: t->status when set, else the run's
+ * verdict, and "output incomplete" for a success some file of which was
+ * not written. */
+const char *cli_tables_summary_word(const cli_tables *t);
 /* Appends name (or a comma-separated list) to the comma-separated list in
  * buf; what does not fit is left off whole names at a time. */
 void cli_tables_names_add(char *buf, size_t len, const char *name);

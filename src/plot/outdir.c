@@ -30,6 +30,8 @@ typedef struct entry {
     long long size;         /* -1: a directory, or a log that grows */
     long long mt_sec;
     long mt_nsec;
+    long long ct_sec;       /* the change time: a chmod, a link, an edit */
+    long ct_nsec;           /* whose mtime was set back all move it */
 } entry;
 
 struct adh_outdir {
@@ -68,9 +70,12 @@ int adh_outdir_owns(const char *name)
     return 0;
 }
 
+/* run-K as a sweep names it: K from 1, no leading zero (a user's run-01
+ * or run-0 is no name of adhere's) */
 static int is_run_dir(const char *name)
 {
-    return strncmp(name, "run-", 4) == 0 && all_digits(name + 4, strlen(name + 4)) && strlen(name) < 24;
+    return strncmp(name, "run-", 4) == 0 && name[4] >= '1' && name[4] <= '9' &&
+           all_digits(name + 4, strlen(name + 4)) && strlen(name) < 24;
 }
 
 /* A temporary of an owned name: .NAME.XXXXXX (this version), or an older
@@ -173,11 +178,11 @@ static int entry_name_ok(const char *name)
         snprintf(base, sizeof base, "%.*s", (int)(n - 1), name);
         return is_run_dir(base);
     }
-    return adh_outdir_owns(name) && strcmp(name, ADH_OUTDIR_MANIFEST) != 0;
+    return (adh_outdir_owns(name) || owned_temporary(name)) && strcmp(name, ADH_OUTDIR_MANIFEST) != 0;
 }
 
 static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsigned long long ino,
-                   long long size, long long sec, long nsec)
+                   long long size, const struct timespec *mt, const struct timespec *ct)
 {
     if (d->n == d->cap) {
         size_t cap = d->cap ? 2 * d->cap : 16;
@@ -187,7 +192,8 @@ static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsi
         d->e = e;
         d->cap = cap;
     }
-    d->e[d->n++] = (entry){ .dev = dev, .ino = ino, .size = size, .mt_sec = sec, .mt_nsec = nsec };
+    d->e[d->n++] = (entry){ .dev = dev, .ino = ino, .size = size, .mt_sec = (long long)mt->tv_sec,
+                            .mt_nsec = mt->tv_nsec, .ct_sec = (long long)ct->tv_sec, .ct_nsec = ct->tv_nsec };
     snprintf(d->e[d->n - 1].name, sizeof d->e[0].name, "%s", name);
     return 0;
 }
@@ -196,8 +202,7 @@ static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsi
 static int add_entry(adh_outdir *d, const char *name, const struct stat *st, int grows)
 {
     return add_raw(d, name, (unsigned long long)st->st_dev, (unsigned long long)st->st_ino,
-                   grows || S_ISDIR(st->st_mode) ? -1 : (long long)st->st_size, (long long)st->st_mtim.tv_sec,
-                   st->st_mtim.tv_nsec);
+                   grows || S_ISDIR(st->st_mode) ? -1 : (long long)st->st_size, &st->st_mtim, &st->st_ctim);
 }
 
 static void drop_entry(adh_outdir *d, size_t i)
@@ -215,7 +220,8 @@ static int same(const entry *e, const struct stat *st)
     if (e->dev != (unsigned long long)st->st_dev || e->ino != (unsigned long long)st->st_ino)
         return 0;
     return e->size < 0 || (e->size == (long long)st->st_size && e->mt_sec == (long long)st->st_mtim.tv_sec &&
-                           e->mt_nsec == st->st_mtim.tv_nsec);
+                           e->mt_nsec == st->st_mtim.tv_nsec && e->ct_sec == (long long)st->st_ctim.tv_sec &&
+                           e->ct_nsec == st->st_ctim.tv_nsec);
 }
 
 /* The entry of d that name (a file, or "run-K" for the directory) is
@@ -233,15 +239,16 @@ static long find(const adh_outdir *d, const char *name, const struct stat *st)
 static int manifest_table(FILE *f, const void *ctx)
 {
     const adh_outdir *d = ctx;
-    fputs("# adhere: the files it wrote in this directory (name, device, inode, size, modification time);\n"
-          "# a later run removes only those that are still the same, and writes nothing through a link\n", f);
+    fputs("# adhere: the files it wrote in this directory (name, device, inode, size, modification time,\n"
+          "# change time); a later run removes only those that are still the same, and writes nothing through\n"
+          "# a link\n", f);
     for (size_t i = 0; i < d->n; i++) {
         const entry *e = &d->e[i];
         if (e->size < 0)
-            fprintf(f, "%s\t%llu\t%llu\t-\t-\n", e->name, e->dev, e->ino);
+            fprintf(f, "%s\t%llu\t%llu\t-\t-\t-\n", e->name, e->dev, e->ino);
         else
-            fprintf(f, "%s\t%llu\t%llu\t%lld\t%lld.%09ld\n", e->name, e->dev, e->ino, e->size, e->mt_sec,
-                    e->mt_nsec);
+            fprintf(f, "%s\t%llu\t%llu\t%lld\t%lld.%09ld\t%lld.%09ld\n", e->name, e->dev, e->ino, e->size,
+                    e->mt_sec, e->mt_nsec, e->ct_sec, e->ct_nsec);
     }
     return 0;
 }
@@ -260,19 +267,35 @@ static int save(adh_outdir *d)
     return 0;
 }
 
+/* "SEC.NSEC" into t: 1, or 0. */
+static int parse_time(const char *text, struct timespec *t)
+{
+    long long sec;
+    long nsec;
+    if (sscanf(text, "%lld.%ld", &sec, &nsec) != 2 || nsec < 0 || nsec > 999999999)
+        return 0;
+    t->tv_sec = (time_t)sec;
+    t->tv_nsec = nsec;
+    return 1;
+}
+
+/* One line of the manifest. A file's line without its change time (an
+ * adhere before it recorded one) proves nothing: the file is then refused,
+ * unless --overwrite. */
 static void parse_line(adh_outdir *d, const char *line)
 {
-    char name[64], size[32], mtime[48];
+    char name[64], size[32], mtime[48], ctime[48];
     unsigned long long dev, ino;
-    if (line[0] == '#' || sscanf(line, "%63[^\t]\t%llu\t%llu\t%31s\t%47s", name, &dev, &ino, size, mtime) != 5 ||
-        !entry_name_ok(name))
+    int got = line[0] == '#' ? 0 : sscanf(line, "%63[^\t]\t%llu\t%llu\t%31s\t%47s\t%47s", name, &dev, &ino, size,
+                                          mtime, ctime);
+    if (got < 5 || !entry_name_ok(name))
         return;
-    long long bytes = -1, sec = 0;
-    long nsec = 0;
-    if (strcmp(size, "-") != 0 && (sscanf(size, "%lld", &bytes) != 1 || bytes < 0 ||
-                                   sscanf(mtime, "%lld.%ld", &sec, &nsec) != 2))
+    long long bytes = -1;
+    struct timespec mt = { 0, 0 }, ct = { 0, 0 };
+    if (strcmp(size, "-") != 0 && (got < 6 || sscanf(size, "%lld", &bytes) != 1 || bytes < 0 ||
+                                   !parse_time(mtime, &mt) || !parse_time(ctime, &ct)))
         return;
-    add_raw(d, name, dev, ino, bytes, sec, nsec);
+    add_raw(d, name, dev, ino, bytes, &mt, &ct);
 }
 
 /* d's manifest into its entries. One that is not a regular file of this
@@ -316,6 +339,18 @@ static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)
 static int clear(adh_outdir *d, int depth, char *why, size_t whylen);
 static int foreign(adh_outdir *d, int depth, char *why, size_t whylen);
 
+/* d locked for this run (held until it is closed): 0, or -1 with why when
+ * another adhere holds it. */
+static int lock(adh_outdir *d, char *why, size_t whylen)
+{
+    if (flock(d->fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+        snprintf(why, whylen, "%.3000s is in use: another adhere is writing into it (it holds the directory's "
+                 "lock); wait for it to finish, or choose another -o", d->path);
+        return -1;
+    }
+    return 0;
+}
+
 /* The directory name in dirfd, never through a link: d with no entries
  * yet, or NULL with why. */
 static adh_outdir *open_at(int dirfd, const char *name, const char *path, unsigned flags, char *why, size_t whylen)
@@ -349,6 +384,11 @@ static int empty_subdir(adh_outdir *d, const char *name, unsigned flags, char *w
     adh_outdir *s = open_at(d->fd, name, path, flags, why, whylen);
     if (!s)
         return -1;
+    /* a run writing into DIR/run-K itself (-o DIR/run-K) holds its lock */
+    if (lock(s, why, whylen) != 0) {
+        adh_outdir_close(s);
+        return -1;
+    }
     load(s);
     int rc = clear(s, 1, why, whylen);
     if (rc == 0 && (flags & ADH_OUTDIR_OVERWRITE))
@@ -413,7 +453,8 @@ static int overwrite(adh_outdir *d, const char *name, const struct stat *st, int
 
 /* Files under adhere's names that its manifest does not prove its own:
  * refused by name, or with OVERWRITE removed. */
-static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
+/* d's entries, from the first; NULL with why. */
+static DIR *listing(adh_outdir *d, char *why, size_t whylen)
 {
     int dup_fd = dup(d->fd);
     DIR *dir = dup_fd >= 0 ? fdopendir(dup_fd) : NULL;
@@ -421,8 +462,43 @@ static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
         if (dup_fd >= 0)
             close(dup_fd);
         snprintf(why, whylen, "cannot read %.3000s: %s", d->path, strerror(errno));
-        return -1;
+    } else {
+        rewinddir(dir);   /* a dup shares the offset an earlier listing left at the end */
     }
+    return dir;
+}
+
+/* A directory where adhere writes a file (force.tsv/, its manifest) is
+ * refused even with OVERWRITE: adhere removes no directory of the user's,
+ * and nothing can be renamed over one. 0, or -1 with why. */
+static int dir_at_file(adh_outdir *d, char *why, size_t whylen)
+{
+    DIR *dir = listing(d, why, whylen);
+    if (!dir)
+        return -1;
+    int rc = 0;
+    struct dirent *de;
+    while (rc == 0 && (de = readdir(dir)) != NULL) {
+        struct stat st;
+        if (adh_outdir_owns(de->d_name) && fstatat(d->fd, de->d_name, &st, AT_SYMLINK_NOFOLLOW) == 0 &&
+            S_ISDIR(st.st_mode)) {
+            snprintf(why, whylen, "%.3000s/%.40s is a directory, where adhere writes a file: refused, not "
+                     "replaced (adhere removes no directory of yours, --overwrite neither); move it away, or "
+                     "choose another -o", d->path, de->d_name);
+            rc = -1;
+        }
+    }
+    closedir(dir);
+    return rc;
+}
+
+static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
+{
+    if (dir_at_file(d, why, whylen) != 0)
+        return -1;
+    DIR *dir = listing(d, why, whylen);
+    if (!dir)
+        return -1;
     char list[600] = "";
     size_t count = 0;
     int rc = 0;
@@ -430,7 +506,8 @@ static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
     while (rc == 0 && (de = readdir(dir)) != NULL) {
         const char *name = de->d_name;
         int manifest = strcmp(name, ADH_OUTDIR_MANIFEST) == 0;
-        int mine = adh_outdir_owns(name) || is_run_dir(name);
+        /* a run-K is adhere's only at the top: it makes none inside one */
+        int mine = adh_outdir_owns(name) || (depth == 0 && is_run_dir(name));
         struct stat st;
         if ((!mine && !owned_temporary(name)) || fstatat(d->fd, name, &st, AT_SYMLINK_NOFOLLOW) != 0)
             continue;
@@ -460,11 +537,8 @@ static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
  * manifest written: d is ready for this run's files. */
 static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
 {
-    if (flock(d->fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
-        snprintf(why, whylen, "%.3000s is in use: another adhere is writing into it (it holds the directory's "
-                 "lock); wait for it to finish, or choose another -o", d->path);
+    if (lock(d, why, whylen) != 0)
         return -1;
-    }
     if (faccessat(d->fd, ".", W_OK | X_OK, AT_EACCESS) != 0) {
         snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));
         return -1;
@@ -501,6 +575,24 @@ static int make_path(const char *path, char *why, size_t whylen)
     }
 }
 
+/* Why the directory path did not open (e), in words that say what is there. */
+static void open_failed(const char *path, int e, char *why, size_t whylen)
+{
+    struct stat st;
+    char target[512];
+    ssize_t n = e == ENOENT ? readlink(path, target, sizeof target - 1) : -1;
+    if (n >= 0) {
+        target[n] = '\0';
+        snprintf(why, whylen, "cannot write into %.3000s: it is a symbolic link to %.400s, which does not exist; "
+                 "make that directory, or choose another -o", path, target);
+    } else if (e == EACCES && stat(path, &st) == 0 && S_ISDIR(st.st_mode) && access(path, W_OK | X_OK) == 0) {
+        snprintf(why, whylen, "cannot read directory %.3000s: %s (adhere reads a directory before it writes "
+                 "into it, to remove only its own files)", path, strerror(e));
+    } else {
+        snprintf(why, whylen, "cannot write into %.3000s: %s", path, strerror(e));
+    }
+}
+
 adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen)
 {
     if (!path[0] || strlen(path) >= PATH_MAX) {
@@ -513,7 +605,7 @@ adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t 
      * names inside it are the ones no link may redirect */
     int fd = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) {
-        snprintf(why, whylen, "cannot write into %.3000s: %s", path, strerror(errno));
+        open_failed(path, errno, why, whylen);
         return NULL;
     }
     adh_outdir *d = outdir_new(fd, flags, path);
@@ -585,6 +677,21 @@ static void not_replaced(const adh_outdir *d, const char *name, char *why, size_
              "--overwrite replaces it)", d->path, name);
 }
 
+/* The newest record of name kept, every older one and tmp's dropped. */
+static void keep_newest(adh_outdir *d, const char *name, const char *tmp)
+{
+    long newest = -1;
+    for (size_t i = 0; i < d->n; i++)
+        if (!strcmp(d->e[i].name, name))
+            newest = (long)i;
+    entry keep = newest >= 0 ? d->e[newest] : (entry){ .size = 0 };
+    for (size_t i = d->n; i-- > 0;)
+        if (!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, tmp))
+            drop_entry(d, i);
+    if (newest >= 0)
+        d->e[d->n++] = keep;   /* room: at least that one was dropped */
+}
+
 int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, const void *ctx, char *why,
                      size_t whylen)
 {
@@ -594,11 +701,22 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
     }
     char tmp[64];
     struct stat st;
-    int fd = temp_create(d->fd, name, tmp, sizeof tmp);
-    int e = fd < 0 ? errno : fill(fd, writer, ctx, &st);
-    /* recorded before the rename and the older record kept until after it:
-     * whichever file a kill leaves under name, the manifest proves it */
     size_t before = d->n;
+    int fd = temp_create(d->fd, name, tmp, sizeof tmp);
+    int e = fd < 0 ? errno : 0;
+    /* the temporary is recorded (by identity) before a byte goes into it:
+     * one a kill leaves is the next run's to remove */
+    if (!e && (fstat(fd, &st) != 0 || add_entry(d, tmp, &st, 1) != 0 || save(d) != 0)) {
+        e = errno ? errno : ENOMEM;
+        close(fd);
+    } else if (!e) {
+        e = fill(fd, writer, ctx, &st);
+    }
+    /* recorded before the rename (a manifest that cannot be written stops
+     * it), and again after it, which moves the change time: a kill between
+     * the two leaves the new file unproven, so a later run refuses it (never
+     * takes it for the user's), and the older record keeps the older file
+     * proven until it is replaced */
     if (!e && (add_entry(d, name, &st, 0) != 0 || save(d) != 0))
         e = errno ? errno : ENOMEM;
     if (!e && renameat(d->fd, tmp, d->fd, name) != 0)
@@ -610,9 +728,10 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
         snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, name, strerror(e));
         return -1;
     }
-    for (size_t i = d->n - 1; i-- > 0;)
-        if (!strcmp(d->e[i].name, name))
-            drop_entry(d, i);
+    struct stat now;
+    if (fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 && now.st_dev == st.st_dev && now.st_ino == st.st_ino)
+        add_entry(d, name, &now, 0);
+    keep_newest(d, name, tmp);
     save(d);
     return 0;
 }

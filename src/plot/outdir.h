@@ -4,7 +4,7 @@
  * link: temporaries are created new (O_EXCL, O_NOFOLLOW) and renamed into
  * place, a sweep's run-K is opened with O_NOFOLLOW. adhere keeps a manifest
  * (.adhere-manifest) of what it wrote, each file with its device, inode,
- * size and modification time, and removes from an earlier run only the
+ * size, modification and change time, and removes from an earlier run only the
  * files the manifest proves are still the ones it wrote: a file of the user's
  * is never deleted or replaced, unless --overwrite says so. A lock on the
  * directory refuses a second run into it while one is writing. */

@@ -1,5 +1,6 @@
 #include "scene/budget.h"
 
+#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,6 +9,7 @@
 #include <unistd.h>
 
 #include "adhere/grid.h"
+#include "adhere/protocol.h"
 #include "adhere/rings.h"
 
 /* Measured peaks (VmHWM at the first step, N = 2000 to 20000; docs/
@@ -17,6 +19,18 @@
 #define HMAT_NODE 4.0e3                  /* measured 2.9 kB */
 #define HODLR_NODE 6.0e3                 /* static preconditioner, measured 4.4 kB */
 #define VECTORS_NODE 400.0               /* the solvers' vectors, ~25 doubles a node */
+/* An interactive path keeps every state it passed, for undo: a snapshot of
+ * the deformation, gap and pressure, 3 doubles a node (24.4 B measured at
+ * N = 5000, 100 steps), and the step's row and its record. */
+#define SNAPSHOT_NODE 24.5
+#define SNAPSHOT_STEP 512.0
+/* Address space a computing thread maps beside that, counted only against
+ * ulimit -v and -d: OpenBLAS maps a 128 MiB working buffer for each thread
+ * on its first LAPACK or level-2/3 call (blas_memory_alloc) and, before
+ * 0.3.30, retries forever when it cannot, deaf to signals; glibc reserves
+ * a 64 MiB arena for each thread past the first. Measured: docs/security.md. */
+#define BLAS_BUFFER_VM (128.0 * 1048576)
+#define ARENA_VM (64.0 * 1048576)
 
 /* A "key: value kB" line of a /proc file, in bytes; -1 when absent. */
 static double proc_kb(const char *path, const char *key)
@@ -55,21 +69,104 @@ static double least(double a, double b)
     return b >= 0 && (a < 0 || b < a) ? b : a;
 }
 
-double adh_budget_machine_bytes(void)
+/* Bytes of memory there are: the machine's available memory
+ * (/proc/meminfo's MemAvailable, else sysconf) and a cgroup's limit. -1
+ * when unknown. */
+static double memory_room(void)
 {
     double m = proc_kb("/proc/meminfo", "MemAvailable");
     if (m < 0) {
         long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
         m = pages > 0 && size > 0 ? (double)pages * (double)size : -1;
     }
+    m = least(m, cgroup_limit("/sys/fs/cgroup/memory.max"));
+    return least(m, cgroup_limit("/sys/fs/cgroup/memory/memory.limit_in_bytes"));
+}
+
+/* Bytes of address space the limits leave (ulimit -v, and -d, which since
+ * Linux 4.7 counts private mappings too), less what is mapped; -1 when
+ * neither is set. */
+static double address_room(void)
+{
+    double m = -1;
     struct rlimit rl;
     if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
         m = least(m, fmax(0.0, (double)rl.rlim_cur - fmax(0.0, proc_kb("/proc/self/status", "VmSize"))));
     if (getrlimit(RLIMIT_DATA, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
         m = least(m, fmax(0.0, (double)rl.rlim_cur - fmax(0.0, proc_kb("/proc/self/status", "VmData"))));
-    m = least(m, cgroup_limit("/sys/fs/cgroup/memory.max"));
-    m = least(m, cgroup_limit("/sys/fs/cgroup/memory/memory.limit_in_bytes"));
+    return m;
+}
+
+/* Threads of this process but the calling one: asked before adhere starts
+ * any, the BLAS's own, which map their working buffer and an arena as
+ * they start, concurrently with main. */
+static unsigned other_threads(void)
+{
+    DIR *dir = opendir("/proc/self/task");
+    if (!dir)
+        return 0;
+    unsigned n = 0;
+    struct dirent *de;
+    while ((de = readdir(dir)) != NULL)
+        n += de->d_name[0] != '.';
+    closedir(dir);
+    return n > 1 ? n - 1 : 0;
+}
+
+/* BLAS working buffers mapped so far: anonymous mappings of their size. */
+static unsigned buffers_mapped(void)
+{
+    FILE *f = fopen("/proc/self/maps", "r");
+    if (!f)
+        return 0;
+    unsigned n = 0;
+    char line[512];
+    while (fgets(line, sizeof line, f)) {
+        unsigned long long a, b, inode;
+        int path = 0;
+        if (sscanf(line, "%llx-%llx %*s %*s %*s %llu %n", &a, &b, &inode, &path) < 3)
+            continue;
+        double size = (double)(b - a);
+        n += inode == 0 && (path == 0 || line[path] == '\0' || line[path] == '\n') && size >= BLAS_BUFFER_VM &&
+             size < BLAS_BUFFER_VM + 1048576;
+    }
+    fclose(f);
+    return n;
+}
+
+/* Address space that `threads` computing threads map beside what the
+ * estimate counts, mostly never touched (so it weighs only against an
+ * address-space limit): a BLAS working buffer for each of them and of the
+ * BLAS's own threads, less those mapped already, an arena for each such
+ * thread still to map one, and, when they are more than one (started
+ * threads, main only waiting), a stack and an arena for each. */
+static double threads_reserve(unsigned threads)
+{
+    struct rlimit rl;
+    double stack = getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY ? (double)rl.rlim_cur
+                                                                                      : 8.0 * 1048576;
+    unsigned t = threads ? threads : 1, own = other_threads(), mapped = buffers_mapped();
+    unsigned unmapped = t + own > mapped ? t + own - mapped : 0;
+    unsigned own_unmapped = own > mapped ? own - mapped : 0;
+    return unmapped * BLAS_BUFFER_VM + own_unmapped * ARENA_VM + (t > 1 ? t : 0) * (stack + ARENA_VM);
+}
+
+double adh_budget_machine_bytes(void)
+{
+    double m = least(memory_room(), address_room());
     return m < 0 ? INFINITY : m;
+}
+
+int adh_budget_fits(double need, unsigned threads, double *have, int *address_bound)
+{
+    double mem = memory_room(), as = address_room();
+    if (as >= 0)
+        as = fmax(0.0, as - threads_reserve(threads));
+    double m = least(mem, as);
+    *have = m < 0 ? INFINITY : m;
+    if (address_bound)
+        *address_bound = as >= 0 && (mem < 0 || as < mem);
+    return need <= *have;
 }
 
 double adh_budget_bytes(const adh_run_spec *run, unsigned solvers)
@@ -95,29 +192,70 @@ static void bytes_text(double b, char *buf, size_t len)
         snprintf(buf, len, "%.3g MB", b / 1e6);
 }
 
-int adh_budget_check(const adh_run_spec *run, unsigned solvers, char *why, size_t whylen)
+double adh_budget_path_steps(const adh_run_spec *run)
+{
+    double start = adh_config_start(run), step = run->proto.step;
+    double deepest = run->proto.nturns ? adh_protocol_deepest_turn(&run->proto) : 0.0;
+    double steps = fmax(0.0, start - deepest) / step + 1;
+    for (size_t i = 0; run->proto.unload && i < run->proto.nturns; i++)
+        steps += fmax(0.0, start - run->proto.turns[i]) / step + 1;
+    return steps;
+}
+
+int adh_budget_check_path(const adh_run_spec *run, size_t kept, char *why, size_t whylen)
+{
+    if (run->mode == ADH_MODE_RIGID)
+        return 0;
+    double n = (double)adh_config_nodes(run), steps = adh_budget_path_steps(run);
+    double per_step = SNAPSHOT_NODE * n + SNAPSHOT_STEP;
+    double path = fmax(0.0, steps - (double)kept) * per_step, have;
+    if (adh_budget_fits(adh_budget_bytes(run, 0) + path, 1, &have, NULL))
+        return 0;
+    char a[32], b[32], c[32];
+    bytes_text(steps * per_step, a, sizeof a);
+    bytes_text(have, b, sizeof b);
+    bytes_text(per_step, c, sizeof c);
+    snprintf(why, whylen, "undo would keep %s for this path (%.0f steps to the turn and back, %s a step on %.0f "
+             "nodes), more than the %s this process may use: take a larger protocol.step, fewer grid.nodes, or a "
+             "turn nearer the start", a, steps, c, n, b);
+    return -1;
+}
+
+int adh_budget_check_threads(const adh_run_spec *run, unsigned solvers, unsigned threads, char *why,
+                             size_t whylen)
 {
     if (run->mode == ADH_MODE_RIGID)
         return 0;
     size_t n = adh_config_nodes(run);
     adh_kernel_storage storage = run->grid.use.storage;
-    double need = adh_budget_bytes(run, solvers), have = adh_budget_machine_bytes();
-    if (need <= have)
+    double need = adh_budget_bytes(run, solvers), have;
+    int address;
+    if (adh_budget_fits(need, threads, &have, &address))
         return 0;
     adh_run_spec h2 = *run;
     h2.grid.use.storage = ADH_STORAGE_H2;
-    char a[32], b[32], c[32];
+    char a[32], b[32], c[32], r[32];
     bytes_text(need, a, sizeof a);
     bytes_text(have, b, sizeof b);
     bytes_text(adh_budget_bytes(&h2, solvers), c, sizeof c);
-    char h2use[80] = "";
+    bytes_text(threads_reserve(threads), r, sizeof r);
+    char h2use[80] = "", limit[300] = "";
     if (storage != ADH_STORAGE_H2)
         snprintf(h2use, sizeof h2use, "grid.operator = h2 (about %s), ", c);
+    if (address)
+        snprintf(limit, sizeof limit, "raise or lift ulimit -v/-d (the address space left, less the %s the BLAS "
+                 "and %u computing thread%s map beside the run), ", r, threads ? threads : 1,
+                 threads > 1 ? "s" : "");
     /* keys, which each driver says in its words (adh_config_reword) */
     snprintf(why, whylen, "a run on %zu %s with the %s operator%s would hold about %s, more than the %s this "
-             "process may use (available memory, ulimit -v/-d, cgroup limit): use %sfewer nodes, or the "
+             "process may use (available memory, ulimit -v/-d, cgroup limit): %suse %sfewer nodes, or the "
              "automatic grid (grid.nodes = auto with grid.spacing = auto; graded where a fine one is needed)",
              n, run->grid.use.graded ? "rings" : "nodes", adh_kernel_storage_name(storage),
-             solvers ? " and its static solver" : "", a, b, h2use);
+             solvers ? " and its static solver" : "", a, b, limit, h2use);
     return -1;
+}
+
+int adh_budget_check(const adh_run_spec *run, unsigned solvers, char *why, size_t whylen)
+{
+    return adh_budget_check_threads(run, solvers, solvers > 1 ? solvers : 1, why, whylen);
 }

@@ -24,10 +24,32 @@ double adh_budget_machine_bytes(void);
  * solver's matrices, and the program's own. */
 double adh_budget_bytes(const adh_run_spec *run, unsigned solvers);
 
+/* Whether need bytes fit, with `threads` threads computing: need within
+ * the memory there is, and need and the address space the threads map
+ * beside it (the BLAS's working buffer each) within ulimit -v and -d. *have
+ * the bytes there are for need; *address_bound (may be NULL) 1 when the
+ * address-space limit is the lesser. */
+int adh_budget_fits(double need, unsigned threads, double *have, int *address_bound);
+
 /* The estimate against the machine (the operator is the grid's:
  * adh_config_choose_grid gives a large dense one up for H^2). 0, or -1
  * with a sentence naming the estimate, the memory there is, and what to
  * use instead (keys: adh_config_reword). */
 int adh_budget_check(const adh_run_spec *run, unsigned solvers, char *why, size_t whylen);
+
+/* adh_budget_check for a run on `threads` threads at once (a sweep's); the
+ * above counts max(solvers, 1). */
+int adh_budget_check_threads(const adh_run_spec *run, unsigned solvers, unsigned threads, char *why,
+                             size_t whylen);
+
+/* The steps of run's protocol: loading to the deepest turn and unloading
+ * from each back to the start (the plan's count, give or take a step). */
+double adh_budget_path_steps(const adh_run_spec *run);
+
+/* An interactive path keeps every state for undo: run's whole protocol
+ * kept so (kept steps already are), beside the run's own estimate, against
+ * the memory there is. 0, or -1 with a sentence naming the path, what it
+ * would keep and what to change (keys: adh_config_reword). */
+int adh_budget_check_path(const adh_run_spec *run, size_t kept, char *why, size_t whylen);
 
 #endif

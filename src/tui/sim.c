@@ -447,6 +447,18 @@ static int budget(const adh_run_spec *m, unsigned solvers, char *why, size_t why
     return -1;
 }
 
+/* The path to the turn and back keeps a state a step for undo: its memory
+ * too, before a step is taken (scene/budget.h). */
+static int path_budget(const tui_sim *s, char *why, size_t whylen)
+{
+    char msg[1024];
+    adh_run_spec m = mode_spec(s, spec(s), ADH_MODE_RELAX);
+    if (adh_budget_check_path(&m, path_length(s), msg, sizeof msg) == 0)
+        return 0;
+    tui_sim_words(msg, why, whylen);
+    return -1;
+}
+
 static int ensure_solver(tui_sim *s, char *why, size_t whylen)
 {
     if (!s->path.hist && !(s->path.hist = adh_history_alloc())) {
@@ -1049,7 +1061,7 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
     }
     if (spec(s)->mode == ADH_MODE_STATIC)
         return curve_begin(s, dir, why, whylen);
-    if (grid_refuses(s, why, whylen) || ensure_solver(s, why, whylen) != 0)
+    if (grid_refuses(s, why, whylen) || path_budget(s, why, whylen) != 0 || ensure_solver(s, why, whylen) != 0)
         return -1;
     int hrc = dir != 0 ? adh_drive_hand(s->drv, dir) : ADH_SUCCESS;
     if (hrc != ADH_SUCCESS) {

@@ -41,6 +41,46 @@ check "... naming the estimate and what to use: $(head -c 300 dense.err)" \
     sh -c "grep -q 'about 3.2[0-9]* GB' dense.err && grep -q -- '--operator=h2' dense.err"
 check "... before anything was written" [ ! -e dense/force.tsv ]
 
+# Under an address-space limit the BLAS's working buffers (OpenBLAS maps
+# 128 MiB a thread and, before 0.3.30, retries forever when it cannot,
+# deaf to signals) are counted: a run either fits or is refused, and
+# adhere ends either way. It used to hang below about 340 MB, even for
+# --version (the library's exit handler joins its thread, stuck retrying).
+# guarded LIMIT_KB ARGS...: adhere under ulimit -v, killed after 20 s; rc
+guarded() {
+    lim=$1
+    shift
+    (ulimit -v "$lim" && exec timeout -s KILL 20 "$ADHERE" "$@") >guarded.out 2>guarded.err
+    rc=$?
+}
+guarded 150000 --version
+check "adhere --version under ulimit -v 150000 ends, exit 0 (got $rc)" [ "$rc" -eq 0 ]
+hung="" refused=0 ran=0 other=""
+for lim in 200000 300000 400000 500000 700000; do
+    for mode in relax static; do
+        guarded "$lim" --batch -q --no-plot -N 200 --force -R 1um -d 0.5nm --turn=-1nm --eps=10pm --mode=$mode -o lim
+        case $rc in
+        0) ran=$((ran + 1)) ;;
+        2) grep -q 'ulimit -v' guarded.err && refused=$((refused + 1)) || other="$other $lim/$mode: $(head -c 200 guarded.err)" ;;
+        137) hung="$hung $lim/$mode" ;;
+        *) other="$other $lim/$mode: exit $rc" ;;
+        esac
+    done
+done
+check "a small run under ulimit -v 200 MB ... 700 MB: never hung (hung at:${hung:- none})" [ -z "$hung" ]
+check "... each refused naming ulimit -v ($refused) or run to its end ($ran)${other:+; otherwise:$other}" \
+    sh -c "[ -z '$other' ] && [ $refused -gt 0 ] && [ $ran -gt 0 ]"
+
+# The TUI keeps every state of its path for undo (3 doubles a node a
+# step): at N = 20000 and d = 0.1 pm the path to the turn and back (438 506
+# steps) would keep 215 GB. It is refused before a step, on the screen; it
+# used to step on until the machine ran out.
+printf ':set N 20000\n:set d 0.1pm\nf\n' >path.keys
+"$ADHERE" --replay=path.keys --screen=path.screen --size=200x32 --no-clock </dev/null >path.out 2>&1
+rc=$?
+check "the TUI at N = 20000, d = 0.1 pm: its first step refused, naming the undo states (exit $rc: $(grep -o 'error: .*' path.screen | cut -c1-160))" \
+    sh -c "[ $rc -eq 0 ] && grep -q 'undo would keep [0-9.]* GB for this path' path.screen && grep -q 'path   0 states' path.screen"
+
 # --data: a million points and one more, and a file of 65 MiB
 awk 'BEGIN {for (i = 0; i <= 1000000; i++) print i * 1e-3, 1}' >many.dat
 "$ADHERE" --batch -q -N 100 --force --data=many.dat -o many 2>many.err

@@ -122,6 +122,20 @@ else
     T=$((T + 1)); echo "ok $T # SKIP gnuplot is not installed"
 fi
 
+# --- a sweep's table says each run's status as its summary.tsv does --------
+# gnuplot missing: every run's figures are not written, its summary says
+# output incomplete; sweep.tsv used to say success for each
+printf '[sweep]\neps = 10pm, 20pm\n' >"$TMP/nogp.scene"
+ADHERE_GNUPLOT="$TMP/no-such-gnuplot" "$ADHERE" --batch -q -R 1um -d 0.5nm --turn=-1nm --plots=force \
+    "$TMP/nogp.scene" -o "$TMP/nogp" 2>/dev/null
+rc=$?
+sweep_word() { awk -F'\t' -v r="$1" '$1 == r {print $NF}' "$TMP/nogp/sweep.tsv"; }
+summary_word() { awk -F'\t' '$1 == "status" {print $2}' "$TMP/nogp/run-$1/summary.tsv"; }
+check "a sweep without gnuplot: exit 3 (got $rc), each run's summary says output incomplete" \
+    sh -c "[ $rc -eq 3 ] && [ '$(summary_word 1)' = 'output incomplete' ] && [ '$(summary_word 2)' = 'output incomplete' ]"
+check "... and so does sweep.tsv (run 1: '$(sweep_word 1)', run 2: '$(sweep_word 2)')" \
+    sh -c "[ '$(sweep_word 1)' = 'output incomplete' ] && [ '$(sweep_word 2)' = 'output incomplete' ]"
+
 # --- errors that teach --------------------------------------------------
 refused "'GPa' looks like the unit of '-E 1': write the number and its unit together, -E 1GPa" "$ADHERE" -E 1 GPa
 refused "unknown unit 'GPA' (units are case-sensitive: did you mean 'GPa'?)" "$ADHERE" -E 1GPA

@@ -34,6 +34,13 @@ check "with --overwrite: the link itself is replaced by a directory, exit 0 (got
     sh -c "[ $rc -eq 0 ] && [ -d o/run-1 ] && [ ! -L o/run-1 ] && [ -s o/run-1/force.tsv ]"
 check "... and v is still untouched" [ "$(snapshot v)" = "$before" ]
 
+# -o a link to a directory that does not exist: said so, not "No such file"
+ln -s missing-dir dangling
+"$ADHERE" $QUICK --no-plot -o dangling 2>dangling.err
+rc=$?
+check "-o a dangling link: exit 2, naming the link and its target (got $rc: $(head -c 200 dangling.err))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'symbolic link to missing-dir, which does not exist' dangling.err && [ -L dangling ]"
+
 # --- links planted at the temporary names an older adhere used -------------
 # (its pid is visible): the run holds in a long dwell, the links go in, a
 # SIGTERM makes it write its tables
@@ -75,6 +82,13 @@ check "... every one of the user's files is kept as it was" [ "$(snapshot user; 
 check "... the message names them and --overwrite: $(head -c 300 user.err)" \
     sh -c "grep -q 'cost.tsv' user.err && grep -q 'run-3/' user.err && grep -q -- '--overwrite' user.err"
 
+# a user's run-01/ and run-0/ are no names of adhere's (it writes run-1 ...)
+mkdir -p lookalike/run-01 lookalike/run-0
+"$ADHERE" $QUICK --no-plot -o lookalike 2>lookalike.err
+rc=$?
+check "a directory holding the user's run-01/ and run-0/: run, exit 0, both kept (got $rc: $(grep -v warning lookalike.err | head -c 160))" \
+    sh -c "[ $rc -eq 0 ] && [ -d lookalike/run-01 ] && [ -d lookalike/run-0 ]"
+
 # adhere's own files of an earlier run go; the user's other files stay
 "$ADHERE" $QUICK --reference=static -o reuse 2>/dev/null
 echo mine >reuse/notes.txt
@@ -93,6 +107,38 @@ rc=$?
 check "a table adhere wrote and the user then edited is not removed: exit 2 (got $rc)" \
     sh -c "[ $rc -eq 2 ] && tail -n 1 reuse/force.tsv | grep -qx 'my edit'"
 
+# a table the user made read-only, and one edited in place and given its
+# modification time back (touch -r): the user's now (their change time
+# moved); both used to be taken for adhere's and removed
+"$ADHERE" $QUICK --no-plot -o kept 2>/dev/null
+chmod 444 kept/force.tsv
+cp -p kept/turns.tsv turns.orig
+printf 'X' | dd of=kept/turns.tsv bs=1 seek=2 conv=notrunc 2>/dev/null
+touch -r turns.orig kept/turns.tsv
+ino=$(ls -i kept/force.tsv | cut -d' ' -f1)
+"$ADHERE" $QUICK --no-plot -o kept 2>kept.err
+rc=$?
+check "a read-only force.tsv and a turns.tsv edited with its mtime set back: refused, exit 2 (got $rc: $(head -c 200 kept.err))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'force.tsv' kept.err && grep -q 'turns.tsv' kept.err"
+check "... both kept as the user left them" \
+    sh -c "[ \"\$(ls -i kept/force.tsv | cut -d' ' -f1)\" = $ino ] && [ \"\$(stat -c %a kept/force.tsv)\" = 444 ] && [ \"\$(cut -c3 kept/turns.tsv | head -n 1)\" = X ]"
+
+# --- a directory where adhere writes a file --------------------------------
+# --overwrite used to be offered and taken, the run computed, and force.tsv
+# then could not be written (exit 2 at the end, its table lost)
+mkdir -p dirs/force.tsv dirs2/.adhere-manifest
+for ow in "" --overwrite; do
+    "$ADHERE" $QUICK --no-plot $ow -o dirs 2>"dirs$ow.err"
+    rc=$?
+    check "a directory at dirs/force.tsv${ow:+ with $ow}: refused before the run, exit 2 (got $rc: $(head -c 200 "dirs$ow.err"))" \
+        sh -c "[ $rc -eq 2 ] && [ ! -e dirs/summary.tsv ] && [ -d dirs/force.tsv ] && grep -q 'force.tsv is a directory' 'dirs$ow.err'"
+done
+check "... and --overwrite is not offered for it" sh -c "! grep -q 'pass --overwrite' dirs.err"
+"$ADHERE" $QUICK --no-plot --overwrite -o dirs2 2>dirs2.err
+rc=$?
+check "a directory at the manifest's name, --overwrite: refused, exit 2, naming it (got $rc: $(head -c 160 dirs2.err))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'adhere-manifest is a directory' dirs2.err"
+
 # --- two runs into one directory at once -------------------------------------
 rm -f first.ready
 ADHERE_READY_FILE="$TMP/first.ready" "$ADHERE" $QUICK -d 0.5nm --turn=-1nm --dwell=100000000 -o both 2>first.err &
@@ -109,6 +155,36 @@ wait "$pid"
 rc=$?
 check "... the first finishes its own tables (exit $rc, summary says interrupted)" \
     sh -c "[ $rc -eq 130 ] && grep -qx 'status	interrupted' both/summary.tsv"
+
+# --- a run into an earlier sweep's run-1 while a sweep is started into its parent
+# The run holds run-1's lock while gnuplot draws (a stand-in that never
+# answers, and says when it started); the sweep must not empty run-1 under
+# it: it used to remove the run's tables and the directory itself.
+cat >gp-slow <<EOF
+#!/bin/sh
+: >"\$GP_STARTED"
+exec cat 3>&1 >/dev/null
+EOF
+chmod +x gp-slow
+"$ADHERE" $QUICK --no-plot sweep.scene -o nest 2>/dev/null
+rm -f nest.started
+GP_STARTED="$TMP/nest.started" ADHERE_GNUPLOT="$TMP/gp-slow" "$ADHERE" $QUICK --plots=force -o nest/run-1 \
+    2>inner.err &
+pid=$!
+i=0
+while [ ! -e nest.started ] && kill -0 "$pid" 2>/dev/null && [ $i -lt 600 ]; do sleep 0.1; i=$((i + 1)); done
+ino=$(ls -i nest/run-1/force.tsv 2>/dev/null | cut -d' ' -f1)
+"$ADHERE" $QUICK --no-plot sweep.scene -o nest 2>outer.err
+rc=$?
+kept=0
+[ -n "$ino" ] && [ "$(ls -i nest/run-1/force.tsv 2>/dev/null | cut -d' ' -f1)" = "$ino" ] && kept=1
+kill -INT "$pid"
+wait "$pid"
+check "a sweep into nest while a run writes into nest/run-1: refused, exit 2 (got $rc: $(head -c 200 outer.err))" \
+    sh -c "[ -e nest.started ] && [ $rc -eq 2 ] && grep -q 'run-1 is in use' outer.err"
+check "... the run's tables were left where they were (its force.tsv still there: $kept)" [ "$kept" -eq 1 ]
+check "... and the run finished into them (summary.tsv names force.png not written)" \
+    grep -q '^not_written	force.png' nest/run-1/summary.tsv
 
 # --- an -o path of about 4 080 characters ----------------------------------
 long=$TMP/L

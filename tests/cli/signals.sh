@@ -179,6 +179,18 @@ check "... summary.tsv says interrupted and names the figures not drawn" \
     sh -c "grep -qx 'status	interrupted' '$TMP/gpwait/summary.tsv' && grep -q '^not_written	force.png' '$TMP/gpwait/summary.tsv'"
 check "... no temporary left, in the directory or in TMPDIR" \
     sh -c "no_tmp() { ! ls -a \"\$1\" | grep -v '^\\.adhere-manifest\$' | grep -q '^\\.'\"[^.]\"; }; no_tmp '$TMP/gpwait' && [ -z \"\$(ls -A '$TMP/gptmp')\" ]"
+# a sweep: its runs finished, their figures stopped; sweep.tsv says what
+# each run's summary.tsv says (it used to say success, with no # PARTIAL
+# line though the closing line pointed at one)
+printf '[sweep]\neps = 10pm, 20pm\n' >"$TMP/gpsweep.scene"
+TMPDIR="$TMP/gptmp" gnuplot_wait gpsweep INT --batch -q -R 1um -d 0.5nm --turn=-1nm --plots=force "$TMP/gpsweep.scene" \
+    -o "$TMP/gpsweep"
+sweep_word() { awk -F'\t' -v r="$1" '$1 == r {print $NF}' "$TMP/gpsweep/sweep.tsv"; }
+check "SIGINT while gnuplot draws a sweep's figures: exit 130 within 1 s (gnuplot started $came, exit $rc after ${took} s)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ] && awk -v t=$took 'BEGIN {exit !(t < 1)}'"
+check "... each run's summary.tsv and sweep.tsv say interrupted (sweep.tsv: $(sweep_word 1), $(sweep_word 2))" \
+    sh -c "grep -qx 'status	interrupted' '$TMP/gpsweep/run-1/summary.tsv' && grep -qx 'status	interrupted' '$TMP/gpsweep/run-2/summary.tsv' && [ '$(sweep_word 1)' = interrupted ] && [ '$(sweep_word 2)' = interrupted ]"
+check "... and sweep.tsv has its # PARTIAL line" grep -q '^# PARTIAL: interrupted by signal 2 while the figures' "$TMP/gpsweep/sweep.tsv"
 printf ':set N 100\n:set spacing 10nm\n:set eps 10pm\n3f\np\n' >"$TMP/gpwait.keys"
 (cd "$TMP" && gnuplot_wait tuiwait TERM --replay=gpwait.keys --screen=gpwait.screen --no-clock -o "$TMP/tuiwait" </dev/null)
 check "SIGTERM during the TUI's p while gnuplot draws: exit 130 within 1 s (gnuplot started $came, exit $rc after ${took} s)" \

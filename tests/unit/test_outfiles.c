@@ -5,10 +5,12 @@
  * an adhere name, a second run at once and a link, and writes through no
  * link; adh_outfile_write replaces a link at the path. */
 #include <dirent.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "plot/outdir.h"
@@ -272,6 +274,48 @@ static void test_outdir(void)
     adh_outdir_close(od);
 }
 
+/* A writer that says it has begun (a byte on the pipe ctx names) and then
+ * waits for ever: the process is killed inside it. */
+static int stuck_writer(FILE *f, const void *ctx)
+{
+    const int *fds = ctx;
+    fputs("half a table", f);
+    fflush(f);
+    (void)!write(fds[1], "w", 1);
+    for (;;)
+        pause();
+    return 0;
+}
+
+/* A run killed (SIGKILL) while it writes a file leaves its temporary; the
+ * next run into the directory removes it: the manifest recorded it first. */
+static void test_killed_writer(void)
+{
+    char d[300], why[1200];
+    snprintf(d, sizeof d, "%s/killed", work);
+    int fds[2];
+    if (pipe(fds) != 0)
+        return;
+    pid_t pid = fork();
+    if (pid == 0) {
+        adh_outdir *od = adh_outdir_open(d, 0, why, sizeof why);
+        if (od)
+            adh_outdir_write(od, "force.tsv", stuck_writer, fds, why, sizeof why);
+        _exit(1);
+    }
+    char c = 0;
+    ssize_t got = read(fds[0], &c, 1);   /* the writer has begun */
+    kill(pid, SIGKILL);
+    waitpid(pid, NULL, 0);
+    close(fds[0]);
+    close(fds[1]);
+    ok(got == 1 && hidden(d) == 1, "a run killed while writing force.tsv leaves one temporary (%d)", hidden(d));
+    adh_outdir *od = adh_outdir_open(d, 0, why, sizeof why);
+    ok(od && hidden(d) == 0, "the next run into the directory removes it (%s, %d left)", od ? "opened" : why,
+       hidden(d));
+    adh_outdir_close(od);
+}
+
 /* A file at a path the user names (:rows, :dump): a link there is
  * replaced, never written through. */
 static void test_outfile(void)
@@ -298,6 +342,7 @@ int main(void)
     test_png_check();
     test_owns();
     test_outdir();
+    test_killed_writer();
     test_outfile();
     if (!tap_failed) {
         char cmd[400];
