@@ -82,16 +82,17 @@ static void *worker(void *arg)
         if (!cfg->output.quiet) {
             char pr[64];
             cli_progress_text(job->done, cfg->sweep.n, adh_clock_seconds() - job->t0, pr, sizeof pr);
-            fprintf(stderr, "adhere: run %zu of %zu (%s = %g) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
-                    i + 1, cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i],
+            fprintf(stderr, "adhere: run %zu of %zu (%s = %s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
+                    i + 1, cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), adh_sweep_value_text(cfg->sweep.kind, cfg->sweep.values[i]).s,
                     run->interrupted ? "interrupted" : job->status[i] == ADH_SUCCESS ? "done" : adh_strerror(job->status[i]),
                     run->nrows, run->iterations, run->seconds, job->done, cfg->sweep.n, pr);
         }
         /* not hidden by -q: it changes what the run's numbers mean */
         if (run->unconverged)
-            fprintf(stderr, "adhere: warning: run %zu (%s = %g): %zu of %zu steps reached the iteration cap (%zu) "
+            fprintf(stderr, "adhere: warning: run %zu (%s = %s): %zu of %zu steps reached the iteration cap (%zu) "
                     "without meeting eps; their rows say converged 0\n", i + 1, adh_sweep_name(cfg->sweep.kind),
-                    cfg->sweep.values[i], run->unconverged, run->nrows, cfg->spec.relax.max_iter);
+                    adh_sweep_value_text(cfg->sweep.kind, cfg->sweep.values[i]).s, run->unconverged, run->nrows,
+                    cfg->spec.relax.max_iter);
         pthread_mutex_unlock(&job->lock);
     }
     return NULL;

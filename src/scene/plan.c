@@ -238,11 +238,6 @@ static void list_lengths(FILE *f, const double *v, size_t n)
     fputs(" nm", f);
 }
 
-static adh_quantity sweep_quantity(adh_sweep_kind k)
-{
-    return k == ADH_SWEEP_E ? ADH_Q_PRESSURE : k == ADH_SWEEP_EPS ? ADH_Q_LENGTH : ADH_Q_NONE;
-}
-
 void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
 {
     char a[64], b[64];
@@ -255,7 +250,7 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
             if (cfg->sweep.kind == ADH_SWEEP_SIGMA)
                 snprintf(a, sizeof a, "%g", cfg->sweep.values[i]);
             else
-                adh_format_quantity(cfg->sweep.values[i], sweep_quantity(cfg->sweep.kind), 4, a, sizeof a);
+                adh_format_quantity(cfg->sweep.values[i], adh_sweep_quantity(cfg->sweep.kind), 4, a, sizeof a);
             fprintf(f, "%s %s", i ? "," : "", a);
         }
         fprintf(f, " (each an independent run)\n");
@@ -329,8 +324,8 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         const adh_plan_run *r = &p->runs[i];
         fmt_len(r->start, a, sizeof a);
         fmt_len(r->end, b, sizeof b);
-        fprintf(f, "run %zu: E = %.4g Pa, sigma = %.4g, eps = %g pm: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
-                i + 1, r->E, r->sigma, r->eps * 1e12, a,
+        fprintf(f, "run %zu: E = %s, sigma = %.4g, eps = %s: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
+                i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
                 p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
     }
     fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",

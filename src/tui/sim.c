@@ -1073,8 +1073,8 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
             snprintf(why, whylen, "no approach from here: %s; b retracts", edge);
         }
         else if (fabs(h0) > adh_protocol_reach(&spec(s)->mat))
-            snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/50 = %g m",
-                     h0, adh_protocol_reach(&spec(s)->mat));
+            snprintf(why, whylen, "h0 = %s is out of reach: the model (h0 << R) allows |h0| up to R/50 = %s",
+                     adh_qtext(h0, ADH_Q_LENGTH).s, adh_qtext(adh_protocol_reach(&spec(s)->mat), ADH_Q_LENGTH).s);
         else
             snprintf(why, whylen, "at most %d turning points on one path: x starts a new one", ADH_MAX_TURNS);
         return -1;
