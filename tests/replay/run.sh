@@ -395,7 +395,7 @@ check "a bad :set value names FILE:LINE, the value and what is wanted" \
 check "an unknown :set name lists the names" grep -q "^bad-name.keys:1: unknown parameter 'sigma'.*E A z0 R eps d N spacing turn" "$W/bad-name/stderr"
 
 check "a grid too short for the turn is flagged before any solve" \
-    sh -c "grep -q '! grid radius Rmax = 1.5e-07 m is too short' '$W/grid-warn/grid-warn.screen' && grep -q 'use' '$W/grid-warn/grid-warn.screen' && grep -q 'path   0 states' '$W/grid-warn/grid-warn.screen'"
+    sh -c "grep -q '! grid radius Rmax = 150 nm is too short' '$W/grid-warn/grid-warn.screen' && grep -q 'use' '$W/grid-warn/grid-warn.screen' && grep -q 'path   0 states' '$W/grid-warn/grid-warn.screen'"
 check "an unwritable :dump names FILE:LINE and the file" \
     grep -q "^bad-dump.keys:2: cannot write the screen to no-such-dir/screen.txt: No such file" "$W/bad-dump/stderr"
 
