@@ -71,11 +71,14 @@ static const char *pad(const char *s, int w, char *buf, size_t len)
     return buf;
 }
 
-/* text word-wrapped into at most maxlines lines of w columns from (y, x). */
-static void put_wrapped(int y, int x, int w, int maxlines, attr_t attr, const char *text)
+/* text word-wrapped into at most maxlines lines of w columns from (y, x)
+ * (draw 0: only counted); the lines it takes. Columns are characters (the
+ * labels' Greek letters are one column each). */
+static int wrap_text(int y, int x, int w, int maxlines, attr_t attr, const char *text, int draw)
 {
     const char *p = text;
-    for (int line = 0; line < maxlines && *p; line++) {
+    int line = 0;
+    for (; line < maxlines && *p; line++) {
         int len = (int)strlen(p), take = len;
         if (len > w) {
             take = w;
@@ -84,11 +87,18 @@ static void put_wrapped(int y, int x, int w, int maxlines, attr_t attr, const ch
             if (take == 0)
                 take = w;
         }
-        put(y + line, x, w, attr, "%.*s", take, p);
+        if (draw)
+            put(y + line, x, w, attr, "%.*s", take, p);
         p += take;
         while (*p == ' ')
             p++;
     }
+    return line;
+}
+
+static void put_wrapped(int y, int x, int w, int maxlines, attr_t attr, const char *text)
+{
+    wrap_text(y, x, w, maxlines, attr, text, 1);
 }
 
 static const char *gk(const tui_view *v, const char *utf8, const char *ascii)
@@ -491,10 +501,18 @@ void tui_draw(const tui_sim *s, const tui_view *v)
             draw_preview(s, v, y, 0, pb - y, W);
         draw_params_compact(s, v, pb, 0, W, 1);
     }
-    /* the status line in plain words, then the prompt or the key hints */
-    if (v->status && v->status[0])
-        put(H - 2, 0, W, v->status_error ? A_BOLD : A_NORMAL, "%s%s", v->status_error ? "error: " : "",
-            v->status);
+    /* the status line in plain words, wrapped upwards over what is above it
+     * when it does not fit (an error's advice comes last), then the prompt
+     * or the key hints */
+    if (v->status && v->status[0]) {
+        char st[1200];
+        snprintf(st, sizeof st, "%s%s", v->status_error ? "error: " : "", v->status);
+        /* a short screen keeps its rows for the state and the parameters */
+        int n = wrap_text(0, 0, W, H >= 24 ? 3 : 1, 0, st, 0);
+        for (int y = H - 1 - n; y < H - 1; y++)
+            put(y, 0, W, A_NORMAL, "%-*s", W, "");
+        wrap_text(H - 1 - n, 0, W, n, v->status_error ? A_BOLD : A_NORMAL, st, 1);
+    }
     if (v->prompt)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W, v->prompt);
     else if (v->count)

@@ -330,10 +330,14 @@ check "the end of the curve is said, on the state and status lines" \
     sh -c "grep -q 'curve  complete, ends at h0 = -5 nm' '$ST/static-end.txt' && grep -q '^curve complete at h0 = -5 nm' '$ST/static-end.txt'"
 check "the preview marks stable (*) and unstable (.) points" \
     sh -c "sed -n '17,30p' '$ST/static-end.txt' | cut -c12- | grep -q '[*]' && sed -n '17,30p' '$ST/static-end.txt' | cut -c12- | grep -q '[.]'"
-check "p in static mode writes force.png as a PNG" \
-    sh -c "[ \"\$(head -c 8 '$ST/adhere-plots/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && grep -q '^plots: wrote force.png' '$ST/static-plots.txt'"
+check "p in static mode writes force.png as a PNG, into static/ beside the relaxation's" \
+    sh -c "[ \"\$(head -c 8 '$ST/adhere-plots/static/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && grep -q '^plots: wrote force.png' '$ST/static-plots.txt' && grep -q 'adhere-plots/static' '$ST/static-plots.txt'"
 check "its profiles: first contact, pull-off and the curve's end (3)" \
-    [ "$(grep -v '^#' "$ST/adhere-plots/profiles.tsv" | tail -n +2 | cut -f1 | sort -u | wc -l)" -eq 3 ]
+    [ "$(grep -v '^#' "$ST/adhere-plots/static/profiles.tsv" | tail -n +2 | cut -f1 | sort -u | wc -l)" -eq 3 ]
+check "its contact.tsv has no speed: a curve of equilibria does not move in time" \
+    sh -c "grep -q '^# the static equilibrium curve: nothing moves along it' '$ST/adhere-plots/static/contact.tsv' && ! awk -F'\t' '!/^#/ && \$1 != \"h0\" && \$6 != \"nan\"' '$ST/adhere-plots/static/contact.tsv' | grep -q ."
+check "p back in relaxation keeps both: the path's plots in adhere-plots/, the curve's in static/" \
+    sh -c "[ -s '$ST/adhere-plots/force.png' ] && [ -s '$ST/adhere-plots/static/force.png' ] && [ -s '$ST/adhere-plots/static/contact.png' ] && grep -q '^plots: wrote force.png' '$ST/static-relaxplots.txt'"
 check "changing eps keeps the curve ($(at "$ST/static-eps.txt")) and says why" \
     sh -c "[ '$(at "$ST/static-eps.txt")' = '$(at "$ST/static-end.txt")' ] && grep -q '^eps = 2 pm: the equilibrium curve does not depend on it and is kept' '$ST/static-eps.txt'"
 check "changing E drops the curve and says it starts again" \
@@ -344,7 +348,7 @@ check "m back to relaxation shows its own (empty) path" \
 check "m to static again finds the curve as it was ($(at "$ST/static-again.txt"), nothing solved)" \
     sh -c "[ '$(at "$ST/static-again.txt")' = '3 of 3' ] && grep -q 'nothing solved again' '$ST/static-again.txt'"
 check "and m back finds the relaxation path (2 states) as it was" \
-    sh -c "grep -q 'path   2 states' '$ST/static.screen' && grep -q 'relaxation: back on the path' '$ST/static.screen'"
+    sh -c "grep -q 'path   2 states' '$ST/static-relaxback.txt' && grep -q 'relaxation: back on the path' '$ST/static-relaxback.txt'"
 # One check of every limit, in the core: :set refuses what --batch refuses,
 # with the core's same sentence, each driver naming what to change in
 # parentheses after it in its own words (the CLI its flags, the screen its
@@ -374,7 +378,8 @@ done
 PO=$W/plots-out
 check "--out chooses where p writes in the TUI" \
     sh -c "[ \"\$(head -c 8 '$PO/my-plots/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && [ ! -e '$PO/adhere-plots' ] && grep -q '^plots: wrote force.png.* in my-plots' '$PO/plots-out.screen'"
-check "p says which plots it wrote and where" sh -c "grep '^plots: ' '$W/plots/plots.screen' | grep 'force.png, profile.png, contact.png' | grep -q 'adhere-plots'"
+check "p says which plots it wrote and where (the status wraps rather than cut the directory)" \
+    sh -c "grep -A2 '^plots: ' '$W/plots/plots.screen' | tr '\n' ' ' | grep 'force.png, profile.png, contact.png' | grep -q 'in adhere-plots'"
 
 R=$W/resize
 check "after :resize 80x24 the screen is 24 lines of at most 80 columns" \
