@@ -71,9 +71,9 @@ static void commands(const adh_fitplot *p, adh_gnuplot *gp, const char *dat, con
     adh_gnuplot_cmd(gp, "set ylabel \"force F (%s)\"", unit);
     adh_gnuplot_cmd(gp, "set key top right");
     adh_gnuplot_cmd(gp, "plot 0 ls 7 notitle, \\");
-    adh_gnuplot_cmd(gp, "  %s index 0 using ($1*1e9):($2*Fu) with points pt 6 ps 0.7 lc rgb \"#1f3f8f\" "
+    adh_gnuplot_cmd(gp, "  %s index 0 using ($1*1e9):($2*Fu) with points pt 6 ps 0.7 lc rgb adh_loading_color "
                         "title \"measured, approach\", \\", q);
-    adh_gnuplot_cmd(gp, "  %s index 1 using ($1*1e9):($2*Fu) with points pt 8 ps 0.7 lc rgb \"#c0392b\" "
+    adh_gnuplot_cmd(gp, "  %s index 1 using ($1*1e9):($2*Fu) with points pt 8 ps 0.7 lc rgb word(adh_unload_colors, 1) "
                         "title \"measured, retract\"%s", q, nk ? ", \\" : "");
     for (int k = 0; k < nk; k++)
         adh_gnuplot_cmd(gp, "  %s index %d using ($1*1e9):($2*Fu) with lines lc rgb \"#000000\" lw %s %s%s", q,
@@ -88,8 +88,8 @@ static void commands(const adh_fitplot *p, adh_gnuplot *gp, const char *dat, con
     adh_gnuplot_cmd(gp, "set xlabel \"drive position (nm, measured)\"");
     adh_gnuplot_cmd(gp, "set ylabel \"residual (%s)\"", unit);
     adh_gnuplot_cmd(gp, "plot 0 ls 7 notitle, %s index 0 using ($1*1e9):($3*Fu) with points pt 6 ps 0.5 "
-                        "lc rgb \"#1f3f8f\" notitle, %s index 1 using ($1*1e9):($3*Fu) with points pt 8 ps 0.5 "
-                        "lc rgb \"#c0392b\" notitle", q, q);
+                        "lc rgb adh_loading_color notitle, %s index 1 using ($1*1e9):($3*Fu) with points pt 8 ps 0.5 "
+                        "lc rgb word(adh_unload_colors, 1) notitle", q, q);
     adh_gnuplot_cmd(gp, "unset multiplot");
 }
 
