@@ -12,6 +12,7 @@
 #include "cli/advice.h"
 #include "cli/batch.h"
 #include "cli/cost.h"
+#include "cli/estimate.h"
 #include "cli/data.h"
 #include "cli/fit.h"
 #include "cli/interrupt.h"
@@ -169,6 +170,7 @@ static int run(int argc, char **argv)
         adh_plan_print(stdout, &cli.cfg, &plan);
         if (cli.reference[0])
             cli_static_reference_plan(stdout, &cli.cfg.spec);
+        cli_estimate_print(stdout, &cli.cfg, &plan);
         return stdout_done();
     }
     case CLI_ACT_COST:
