@@ -988,7 +988,7 @@ static int contact_data(plotter *pl, const double *dadt, const double *smooth, i
 
 /* The frame of one panel: 0 the contact-line speed above, 1 the contact
  * radius below, sharing the x axis. */
-static void contact_frame(plotter *pl, int panel, double top, int in_mm, int keyrows)
+static void contact_frame(plotter *pl, int panel, double top, int in_mm, int keyrows, double amax)
 {
     if (panel == 0) {
         adh_gnuplot_cmd(pl->gp, "set origin 0,0.42");
@@ -1010,6 +1010,9 @@ static void contact_frame(plotter *pl, int panel, double top, int in_mm, int key
         adh_gnuplot_cmd(pl->gp, "set tmargin 1");
         adh_gnuplot_cmd(pl->gp, "set bmargin %.3g", 4.2 + 1.05 * keyrows);
         adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
+        /* a low panel: four or five tics, not nine */
+        if (amax > 0)
+            adh_gnuplot_cmd(pl->gp, "set ytics %.17g", nice_step(amax * 1e6 / 4.5));
         adh_gnuplot_cmd(pl->gp, "set ylabel \"contact radius a (µm)\"");
         adh_gnuplot_cmd(pl->gp, "unset key");
     }
@@ -1180,8 +1183,11 @@ static int plot_contact(plotter *pl)
     branch_styles(pl);
     int nunload = contact_unloads(set, np);
     int keyrows = (2 + (nunload > MAX_LABELLED_UNLOADS ? 1 : nunload) + 2) / 3;
+    double amax = 0;
+    for (size_t i = 0; i < n; i++)
+        amax = fmax(amax, run->rows[i].a);
     for (int panel = 0; panel < 2; panel++) {
-        contact_frame(pl, panel, top, in_mm, keyrows);
+        contact_frame(pl, panel, top, in_mm, keyrows, amax);
         if (contact_panel(pl, panel, set, np, adh_gp_path(dat, q, sizeof q)) != 0)
             goto out;
     }

@@ -708,10 +708,30 @@ void tui_sim_param_text(const tui_sim *s, tui_param p, int utf8, char *buf, size
         snprintf(buf, len, "%zu", spec(s)->grid.use.nodes);
     else if (p == P_TURN && isnan(v))
         snprintf(buf, len, "none");
+    else if (p == P_TURN && spec(s)->proto.nturns > 1)   /* a list: its ends, shallowest first */
+        snprintf(buf, len, "%.4g %s %.4g %s", spec(s)->proto.turns[0] / f, utf8 ? "\xe2\x80\xa6" : "...",
+                 spec(s)->proto.turns[spec(s)->proto.nturns - 1] / f, unit);
     else if (p == P_A)
         snprintf(buf, len, "%.4g J", v);
     else
         snprintf(buf, len, "%.4g %s", v / f, unit);
+}
+
+void tui_sim_turns_text(const tui_sim *s, char *buf, size_t len)
+{
+    const adh_protocol_settings *p = &spec(s)->proto;
+    size_t o = 0;
+    buf[0] = '\0';
+    if (!p->nturns) {
+        snprintf(buf, len, "none");
+        return;
+    }
+    for (size_t i = 0; i < p->nturns && o + 1 < len; i++) {
+        int w = snprintf(buf + o, len - o, "%s%.4g", i ? ", " : "", p->turns[i] * 1e9);
+        o += w > 0 ? (size_t)w : 0;
+    }
+    if (o + 1 < len)
+        snprintf(buf + o, len - o, " nm");
 }
 
 int tui_sim_field(const char *key)

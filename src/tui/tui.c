@@ -285,8 +285,9 @@ static int run_done(tui *t)
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
         fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
         fmtq(r->pulloff_F_disp, ADH_Q_FORCE, pd, sizeof pd);
-        say(t, 0, "curve complete at h0 = %s (%zu points, %zu folds): pull-off %s, F at jump-out %s",
-            h0, t->sim.curve.nrows, r->folds, pl, pd);
+        size_t physical = !isnan(r->jump_in_h0) + !isnan(r->jump_out_h0);
+        say(t, 0, "curve complete at h0 = %s (%zu points; jump-in, jump-out and %zu lattice folds): pull-off %s, "
+            "F at jump-out %s", h0, t->sim.curve.nrows, r->folds > physical ? r->folds - physical : 0, pl, pd);
         return 1;
     }
     /* the drive says what the row meant; the run pauses where a branch
@@ -420,6 +421,10 @@ static void write_plots(tui *t)
 static const char *key_value(const tui *t, const char *key, char *val, size_t len)
 {
     int p = tui_sim_field(key);
+    if (p == P_TURN) {   /* a list is said whole */
+        tui_sim_turns_text(&t->sim, val, len);
+        return tui_params[p].name;
+    }
     if (p >= 0) {
         tui_sim_param_text(&t->sim, (tui_param)p, t->view.utf8, val, len);
         return tui_params[p].name;

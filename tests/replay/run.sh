@@ -185,8 +185,8 @@ check "turn 1 pulls off at --batch's $(pulloff 1) mN, and r goes on with turn 2"
 check "turn 8 pulls off last, at --batch's $(pulloff 8) mN" grep -q "pull-off $(pulloff 8) mN" "$M/multiturn-pull8.txt"
 check "then r says the protocol is complete" grep -q "^the protocol is complete" "$M/multiturn-complete.txt"
 check "one state back, r unloads turn 8 again to the same pull-off" grep -q "pull-off $(pulloff 8) mN" "$M/multiturn-again.txt"
-check "the panel shows the turn of the branch on screen (turn 1: 2 nm, turn 8: -10 nm)" \
-    sh -c "grep -q '^  turn  2 nm ' '$M/multiturn-pull1.txt' && grep -q '^  turn  -10 nm ' '$M/multiturn-pull8.txt'"
+check "the turn field shows the list; the state the turn of the branch on screen (turn 1: 2 nm, turn 8: -10 nm)" \
+    sh -c "grep -q '^  turn  2 … -10 nm   8 turning points' '$M/multiturn-pull1.txt' && grep -q 'branch unloading from turn 1 of 8, 2 nm' '$M/multiturn-pull1.txt' && grep -q 'branch unloading from turn 8 of 8, -10 nm' '$M/multiturn-pull8.txt'"
 
 # A soft material set on the screen gets --batch's grid for it, and the
 # same rows.
@@ -319,8 +319,8 @@ if [ -s "$SB/summary.tsv" ]; then
     # both step the drive's static rule: the same points, every one (Newton
     # iteration counts too); no seconds column to mask in the comparison
     check "and the screen's points are --batch --mode=static's rows, every one" same_rows "$ST/static-rows.tsv" "$SB"
-    check "with its $folds folds, jump-in $(nm "$(sval jump_in_h0)") and jump-out $(nm "$(sval jump_out_h0)")" \
-        grep -q "folds  $folds; jump-in $(nm "$(sval jump_in_h0)"), jump-out $(nm "$(sval jump_out_h0)")" "$ST/static-end.txt"
+    check "its physical folds, jump-in $(nm "$(sval jump_in_h0)") and jump-out $(nm "$(sval jump_out_h0)"), apart from its $((folds - 2)) lattice folds ($folds in all)" \
+        grep -q "folds  jump-in $(nm "$(sval jump_in_h0)"), out $(nm "$(sval jump_out_h0)"), +$((folds - 2)) lattice" "$ST/static-end.txt"
     check "and its pull-off $(nN "$(sval pulloff_F)") (the minimum force) and force at the jump-out $(nN "$(sval pulloff_F_disp)")" \
         grep -q "pull-off $(nN "$(sval pulloff_F)"); F at the jump-out $(nN "$(sval pulloff_F_disp)")" "$ST/static-end.txt"
 else
@@ -393,6 +393,22 @@ check "at 40x12 stepping shows the state" sh -c "grep -q 'h0     16.7 nm' '$W/sm
 check "and keeps every parameter in view in a compact form" \
     sh -c "grep -q '^E 300 MPa  A 1e-19 J  z0 0.5 nm  R 10 µm' '$W/small/small-state.txt' && grep -q '^turn -5 nm' '$W/small/small-state.txt'"
 check "at 40x12 selecting shows the parameters" sh -c "grep -q '^ >A ' '$W/small/small.screen' && [ \$(wc -l <'$W/small/small.screen') = 12 ] && [ \$(wc -L <'$W/small/small.screen') -le 40 ]"
+
+# An ordinary terminal, 100 x 24 (issue 28, item 5)
+SH=$W/short
+check "at 100x24 the screen is 24 lines of at most 100 columns" \
+    sh -c "[ \$(wc -l <'$SH/short.screen') = 24 ] && [ \$(wc -L <'$SH/short.screen') -le 100 ]"
+check "at 100x24 the preview keeps its plot, its range in the heading" \
+    sh -c "grep -q '^ F against h0  + loading  o unloading  @ now  *h0 2 nm to 17 nm' '$SH/short.screen' && grep -q '^ -177.9 nN|@' '$SH/short.screen'"
+check "the state's words wrap at 100 columns, none cut" \
+    sh -c "grep -q 'run to the turning\$' '$SH/short-0.txt' && grep -q 'point, ? for every key' '$SH/short-0.txt'"
+check "the turn field shows its list: the ends, shallowest first, and the count" \
+    sh -c "grep -q '^  turn  2 … -2 nm    3 turning points' '$SH/short.screen' && grep -q '^turn = 2, 1, -2 nm: r now loads to there' '$SH/short-0.txt'"
+RP=$W/runplot
+check "p during r pauses the run and draws the path so far, r going on from there" \
+    sh -c "grep -A2 '^paused at h0 = ' '$RP/runplot-paused.txt' | tr '\n' ' ' | grep -q 'plots: wrote force.png.*in adhere-plots.*; r goes on' && [ -s '$RP/adhere-plots/force.png' ] && grep -q '^at the turning point h0 = -5 nm' '$RP/runplot.screen'"
+check "... drawn from the 12 states of the path so far" \
+    sh -c "grep -q 'path   12 states' '$RP/runplot-paused.txt'"
 
 check "a bad token names FILE:LINE and the token" grep -q "^bad-token.keys:3: unknown key <Foo>" "$W/bad-token/stderr"
 check "a bad :set value names FILE:LINE, the value and what is wanted" \
