@@ -636,7 +636,7 @@ static void force_reference_clauses(plotter *pl, const force_fig *ff, FILE *c, c
         fprintf(c, ", \\\n  keyentry with lines ls 3 lc rgb adh_model_disp_color lw 1 "
                    "title \"models past pull-off (grey)\"");
     if (ff->panel)
-        fprintf(c, ", \\\n  keyentry with linespoints ls 6 title \"adhesion vs maximum load (right)\"");
+        fprintf(c, ", \\\n  keyentry with linespoints ls 6 title \"adhesion vs max load (right)\"");
 }
 
 /* The force panel: frame, the key below it, then one plot command built
@@ -648,7 +648,7 @@ static int force_panel(plotter *pl, const force_fig *ff)
     adh_gnuplot_cmd(pl->gp, "set ylabel \"force F (%s)\"", ff->funit);
     adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (ff->xmin - ff->xpad) * 1e9, ff->xright * 1e9);
     adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", ff->lo * ff->fscale, ff->hi * ff->fscale);
-    adh_gnuplot_cmd(pl->gp, "set key at screen 0.5, screen 0.01 center bottom vertical maxrows %d", ff->keyrows);
+    adh_gnuplot_cmd(pl->gp, "set key at screen 0.5, screen 0.01 center bottom vertical maxrows %d width -2", ff->keyrows);
     adh_gnuplot_cmd(pl->gp, "set bmargin %.3g", ff->bmargin);
     branch_styles(pl);
     char *cmd = NULL, q[ADH_GP_PATH_SIZE];
