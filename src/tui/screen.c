@@ -646,7 +646,7 @@ int tui_draw_help(const tui_view *v)
         snprintf(lines[n++], HELP_LINE, " ");
     n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn, or any "
                    "key of the run as a scene writes it (protocol.dwell, grid.fine_band); values take units: 2GPa "
-                   "0.4nm 1e-19J 10um; a bare number is in the unit the panel shows");
+                   "0.4nm 1e-19J 10um; a bare number is in the unit the screen shows (nm for a position)");
     snprintf(msg, sizeof msg, "changing E, A, z0, R, %s, d, N or the spacing starts a new path from the "
              "start; turn only moves where r stops loading, and takes a list (1nm,0nm,-2nm): r follows each "
              "turn, shallowest first, as --batch does", gk(v, "\xce\xb5", "eps"));
