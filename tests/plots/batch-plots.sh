@@ -331,6 +331,30 @@ hmin=$(awk -F'\t' '!/^#/ && $1 != "run" {print $8}' "$T/jump/sweep.tsv" | sort -
 check 'echo "$yr $hmin" | awk "{exit !(\$1 > 0 && \$1 >= \$3 * 1e9 / 1.5 && \$2 < 10)}" && grep -q "^set ytics (" "$T/jump.gp"' \
     "Figure 3's gap axis ($yr nm) starts within a factor 1.5 of the smallest gap ($hmin m), with its own tics"
 
+# Figure 7's frame: the runs' curves to where they flatten, not the start;
+# the key below it; each run's colour from the style
+cat >"$T/f7.scene" <<'SCENE'
+[scene]
+title = Figure 7, small
+[material]
+E = 1GPa
+[protocol]
+turns = -2nm
+[output]
+plots = none
+[sweep]
+eps = 3pm, 2pm
+plot = force
+SCENE
+GPLOG=$T/f7.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN "$T/f7.scene" -o "$T/f7" 2>"$T/f7.err"
+xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/f7.gp" | tail -1)
+hmax=$(awk -F'\t' '!/^#/ && $1 != "h0" {if ($1 > m) m = $1} END {print m}' "$T/f7/run-1/force.tsv")
+jout=$(awk -F'\t' '$1 == "jump_out_h0" {print $2}' "$T/f7/run-1/summary.tsv")
+check '[ -s "$T/f7/force.png" ] && echo "$xr $hmax $jout" | awk "{exit !(\$2 < 0.8 * \$3 * 1e9 && \$2 > \$4 * 1e9)}"' \
+    "Figure 7's position axis ($xr nm) ends short of the start ($hmax m), past the jump-out ($jout m)"
+check 'grep -q "^set key outside below" "$T/f7.gp" && grep -q "lc rgb word(adh_sweep_colors, 1 + 1 % words(adh_sweep_colors)) title \"ε = 2 pm\"" "$T/f7.gp"' \
+    "Figure 7's key below the frame, each run in the style's sweep colours"
+
 # --- --no-plot ------------------------------------------------------------
 D=$T/noplot
 "$BIN" $RUN --no-plot -o "$D" 2>/dev/null
