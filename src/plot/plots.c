@@ -667,6 +667,19 @@ static int force_panel(plotter *pl, const force_fig *ff)
     return 0;
 }
 
+/* The characters of the labels of the tics every step from lo to hi, a
+ * space between each. */
+static int tic_chars(double lo, double hi, double step)
+{
+    int n = 0;
+    for (double k = ceil(lo / step); k * step <= hi * (1 + 1e-12) && n < 1000; k++) {
+        char t[32];
+        double v = fabs(k) < 1e-9 ? 0 : k * step;   /* no "-0", no 1e-17 */
+        n += snprintf(t, sizeof t, "%g", v) + 2;
+    }
+    return n;
+}
+
 /* The adhesion panel at the right (two turns or more): adhesion against
  * the maximum load, with JKR's and DMT's. */
 static void adhesion_panel(plotter *pl, const force_fig *ff, double top)
@@ -695,6 +708,9 @@ static void adhesion_panel(plotter *pl, const force_fig *ff, double top)
         double step = nice_step((hi_ - lo_) / 3.0);
         for (int k = 0; k < 6 && floor(hi_ / step) - ceil(lo_ / step) + 1 < 3; k++)
             step = nice_below(step);
+        /* their labels must not touch: some 30 characters fit the panel */
+        while (tic_chars(lo_, hi_, step) > 30)
+            step = nice_step(1.01 * step * 1.5);
         adh_gnuplot_cmd(pl->gp, "set xtics %.17g", step);
         /* an explicit range, so the JKR and DMT lines span the panel */
         adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo_, hi_);

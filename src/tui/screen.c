@@ -498,9 +498,17 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
         return;
     }
     int y = y0 + 1 + ph;
+    /* the axis's labels never run into each other: the middle one goes
+     * (or shortens) where the ends leave no room for it */
+    int lol = (int)strlen(lo), hil = (int)strlen(hi);
     put(y, x0 + lab, pw, A_NORMAL, "%s", lo);
-    put(y, x0 + lab + pw / 2 - 14, 28, A_NORMAL, "h0 (approach <- -> retract)");
-    put(y, x0 + lab + pw - (int)strlen(hi), (int)strlen(hi), A_NORMAL, "%s", hi);
+    const char *mid = pw - lol - hil >= 32 ? "h0 (approach <- -> retract)" : pw - lol - hil >= 6 ? "h0" : "";
+    int ml = (int)strlen(mid), mx = lab + pw / 2 - (ml + 1) / 2;
+    if (mx < lab + lol + 1)
+        mx = lab + lol + 1;
+    if (ml)
+        put(y, x0 + mx, ml, A_NORMAL, "%s", mid);
+    put(y, x0 + lab + pw - hil, hil, A_NORMAL, "%s", hi);
     (void)v;
 }
 

@@ -175,6 +175,8 @@ xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/panel.gp" | tail -1)
 xt=$(sed -n 's/^set xtics \(.*\)$/\1/p' "$T/panel.gp" | tail -1)
 check 'echo "$xr $xt" | awk "{lo = \$1; hi = \$2; st = \$3; n = 0; for (k = int(lo / st) - 1; k <= int(hi / st) + 1; k++) if (k * st >= lo && k * st <= hi) n++; exit !(st > 0 && n >= 3)}"' \
     "the adhesion panel has at least three load ticks with two turns (range $xr, step $xt)"
+check 'echo "$xr $xt" | awk "{lo = \$1; hi = \$2; st = \$3; n = 0; for (k = int(lo / st) - 1; k <= int(hi / st) + 1; k++) if (k * st >= lo && k * st <= hi) n += length(sprintf(\"%g\", k * st)) + 2; exit !(n <= 30)}"' \
+    "its tick labels fit the narrow panel without touching (at most 30 characters in all)"
 yr=$(sed -n 's/^set yrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/panel.gp" | tail -1)
 check 'echo "$yr" | awk "{exit !(NF == 2 && \$1 > 0 && \$2 > \$1)}"' "its adhesion axis does not start at 0 ($yr), so a rise then saturation shows"
 cat >"$T/units.scene" <<'SCENE'

@@ -406,6 +406,8 @@ check "the turn field shows its list: the ends, shallowest first, and the count"
     sh -c "grep -q '^  turn  2 … -2 nm    3 turning points' '$SH/short.screen' && grep -q '^turn = 2, 1, -2 nm: r now loads to there' '$SH/short-0.txt'"
 check ":set of a key outside the panel reads a bare number in the unit it is shown in (protocol.start 12: 12 nm)" \
     sh -c "grep -q '^protocol.start = 12 nm' '$W/setunit/setunit-start.txt' && grep -q 'start 12 nm' '$W/setunit/setunit-start.txt' && grep -q '^grid.fine_band = 500 nm' '$W/setunit/setunit.screen'"
+check "at 40 columns the preview's axis labels stand apart (its ends whole, the middle shortened)" \
+    sh -c "grep -Eq '^ {11}7 nm +h0 +17 nm\$' '$W/narrow/narrow.screen'"
 RP=$W/runplot
 check "p during r pauses the run and draws the path so far, r going on from there" \
     sh -c "grep -A2 '^paused at h0 = ' '$RP/runplot-paused.txt' | tr '\n' ' ' | grep -q 'plots: wrote force.png.*in adhere-plots.*; r goes on' && [ -s '$RP/adhere-plots/force.png' ] && grep -q '^at the turning point h0 = -5 nm' '$RP/runplot.screen'"
