@@ -1,6 +1,7 @@
 #define NCURSES_WIDECHAR 1
 #include "tui/screen.h"
 
+#include <ctype.h>
 #include <curses.h>
 #include <errno.h>
 #include <math.h>
@@ -27,6 +28,21 @@ static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
  * parameters on a short screen): a panel drawn above stops there. */
 static int clip_bottom = 1 << 30;
 
+/* Where a line too long for w columns is cut: before the last clause
+ * (", ", "; ", " (") that ends within them, so a narrow terminal loses
+ * the line's last words whole ("path 2 states, 0 to redo", not "...;
+ * start 16.9") and never shows a number without its unit; w when no
+ * clause ends in the second half of the line. */
+static int clause_end(const wchar_t *s, int w)
+{
+    for (int c = w - 1; c >= w / 2; c--)
+        if ((s[c] == L',' || s[c] == L';') && s[c + 1] == L' ')
+            return c;
+        else if (s[c] == L' ' && s[c + 1] == L'(' && c < w)
+            return c;
+    return w;
+}
+
 static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
 {
     char buf[1024];
@@ -47,7 +63,10 @@ static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
         return;
     }
     attron(attr);
-    mvaddnwstr(y, x, wbuf, (int)n < w ? (int)n : w);
+    size_t text = n;   /* without the blanks that pad it */
+    while (text > 0 && wbuf[text - 1] == L' ')
+        text--;
+    mvaddnwstr(y, x, wbuf, (int)n < w ? (int)n : (int)text <= w ? w : clause_end(wbuf, w));
     attroff(attr);
 }
 
@@ -71,6 +90,13 @@ static const char *pad(const char *s, int w, char *buf, size_t len)
     return buf;
 }
 
+/* Whether the blank at p[i] stands between a number and its unit. */
+static int unit_follows(const char *p, int i)
+{
+    unsigned char next = (unsigned char)p[i + 1];
+    return i > 0 && isdigit((unsigned char)p[i - 1]) && (isalpha(next) || next >= 0x80);
+}
+
 /* text word-wrapped into at most maxlines lines of w columns from (y, x)
  * (draw 0: only counted); the lines it takes. Columns are characters (the
  * labels' Greek letters are one column each). */
@@ -81,9 +107,13 @@ static int wrap_text(int y, int x, int w, int maxlines, attr_t attr, const char 
     for (; line < maxlines && *p; line++) {
         int len = (int)strlen(p), take = len;
         if (len > w) {
+            /* at a blank, but not between a number and its unit
+             * ("force -3.435" above "pN") where another blank will do */
             take = w;
-            while (take > 0 && p[take] != ' ')
+            while (take > 0 && (p[take] != ' ' || unit_follows(p, take)))
                 take--;
+            for (int t = w; take == 0 && t > 0; t--)
+                take = p[t] == ' ' ? t : 0;
             if (take == 0)
                 take = w;
         }
@@ -223,9 +253,9 @@ static void draw_cycle(const tui_sim *s, const tui_view *v, int y, int x, int w)
     q(c.max_load, ADH_Q_FORCE, a, sizeof a);
     q(c.a_turn, ADH_Q_LENGTH, b, sizeof b);
     if (c.unloading)
-        put(y + 1, x, w, A_NORMAL, "  load   max %s; a %s at the turn", a, c.a_turn > 0 ? b : "0");
+        put(y + 1, x, w, A_NORMAL, "  load   max %s; a %s at the turn", a, c.a_turn > 0 ? b : "0 nm");
     else
-        put(y + 1, x, w, A_NORMAL, "  load   %s deepest so far, a %s", a, c.a_turn > 0 ? b : "0");
+        put(y + 1, x, w, A_NORMAL, "  load   %s deepest so far, a %s", a, c.a_turn > 0 ? b : "0 nm");
     /* pull-off: the force minimum on unloading; jump-out: where the
      * surfaces separate (the tables' pulloff_F and jump_out_h0) */
     q(c.pulloff_F, ADH_Q_FORCE, a, sizeof a);

@@ -406,6 +406,12 @@ check "the turn field shows its list: the ends, shallowest first, and the count"
     sh -c "grep -q '^  turn  2 … -2 nm    3 turning points' '$SH/short.screen' && grep -q '^turn = 2, 1, -2 nm: r now loads to there' '$SH/short-0.txt'"
 check ":set of a key outside the panel reads a bare number in the unit it is shown in (protocol.start 12: 12 nm)" \
     sh -c "grep -q '^protocol.start = 12 nm' '$W/setunit/setunit-start.txt' && grep -q 'start 12 nm' '$W/setunit/setunit-start.txt' && grep -q '^grid.fine_band = 500 nm' '$W/setunit/setunit.screen'"
+# A line too long for a narrow screen loses its last clause whole, and a
+# wrapped message never puts a number on one line and its unit on the next.
+check "at 80 and 40 columns no line ends in a number without its unit" \
+    sh -c "cd '$W' && ! grep -E '[0-9]\$' resize/resize.screen resize/resize-60x40.txt small/small.screen small/small-state.txt narrow/narrow.screen short/short.screen short/short-0.txt"
+check "at 80 columns the state's rows end at a clause (path ... to redo, not '; start 17 n')" \
+    sh -c "grep -Eq 'path   [0-9]+ states, 0 to redo\$' '$W/resize/resize.screen' && grep -Eq ' F +-?[0-9.]+ [pn]N +force\$' '$W/resize/resize.screen'"
 check "at 40 columns the preview's axis labels stand apart (its ends whole, the middle shortened)" \
     sh -c "grep -Eq '^ {11}7 nm +h0 +17 nm\$' '$W/narrow/narrow.screen'"
 RP=$W/runplot
