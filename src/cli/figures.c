@@ -305,7 +305,9 @@ static int hysteresis_panel(figure *fg, const adh_config *cfg, const adh_run *ru
     adh_gnuplot_cmd(fg->gp, "set xlabel \"ε (pm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"hysteresis (fJ)\"");
     adh_gnuplot_cmd(fg->gp, "set yrange [0:%.17g]", 1.15 * hmax * 1e15);
-    adh_gnuplot_cmd(fg->gp, "set key bottom right");
+    /* inside, where the hysteresis (growing with eps) leaves room: the
+     * force panel's "outside below" would otherwise hold, under the label */
+    adh_gnuplot_cmd(fg->gp, "set key inside top left");
     if (isnan(static_hyst))
         adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e12):($2*1e15) with linespoints lw 2 pt 7 lc rgb \"#1f3f8f\" "
                         "title \"relaxation\"", adh_gp_path(dat, q, sizeof q));

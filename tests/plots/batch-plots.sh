@@ -349,13 +349,18 @@ eps = 3pm, 2pm
 plot = force
 SCENE
 GPLOG=$T/f7.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN "$T/f7.scene" -o "$T/f7" 2>"$T/f7.err"
-xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/f7.gp" | tail -1)
+# (the force panel's range is the first; the hysteresis panel's follows)
+xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/f7.gp" | head -1)
 hmax=$(awk -F'\t' '!/^#/ && $1 != "h0" {if ($1 > m) m = $1} END {print m}' "$T/f7/run-1/force.tsv")
 jout=$(awk -F'\t' '$1 == "jump_out_h0" {print $2}' "$T/f7/run-1/summary.tsv")
 check '[ -s "$T/f7/force.png" ] && echo "$xr $hmax $jout" | awk "{exit !(\$2 < 0.8 * \$3 * 1e9 && \$2 > \$4 * 1e9)}"' \
     "Figure 7's position axis ($xr nm) ends short of the start ($hmax m), past the jump-out ($jout m)"
 check 'grep -q "^set key outside below" "$T/f7.gp" && grep -q "lc rgb word(adh_sweep_colors, 1 + 1 % words(adh_sweep_colors)) title \"ε = 2 pm\"" "$T/f7.gp"' \
     "Figure 7's key below the frame, each run in the style's sweep colours"
+# the hysteresis panel's key inside its frame: the force panel's "outside
+# below" would hold otherwise and put it over the panel's eps label
+check 'sed -n "/^set origin 0.64,0/,\$p" "$T/f7.gp" | grep -q "^set key inside "' \
+    "Figure 7's hysteresis panel keeps its key inside its frame, off its x label"
 
 # --- --no-plot ------------------------------------------------------------
 D=$T/noplot
