@@ -96,6 +96,15 @@ $(BUILD)/datadir.stamp: FORCE
 .PHONY: FORCE
 $(LIB_OBJ) $(APP_OBJ): $(BUILD)/datadir.stamp
 
+# The installed style is compiled in as the figures' defaults (png.c): one
+# palette, whether or not a style file is found. Comments ("# " after a
+# blank) and blank lines go; colours ("#CC6677") stay.
+$(BUILD)/gen/style.inc: share/adhere/gnuplot/style.gp
+	@mkdir -p $(dir $@)
+	sed -e '/^#/d' -e 's/  *# .*$$//' -e '/^ *$$/d' -e 's/\\/\\\\/g' -e 's/"/\\"/g' -e 's/.*/"&",/' $< >$@
+$(BUILD)/src/plot/png.o: $(BUILD)/gen/style.inc
+$(BUILD)/src/plot/png.o: CPPFLAGS += -I$(BUILD)/gen
+
 $(BUILD)/%.o: %.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<

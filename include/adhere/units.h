@@ -21,7 +21,24 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
 int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, size_t whylen);
 /* The SI unit symbol of q ("m", "Pa", ...), "" for ADH_Q_NONE. */
 const char *adh_quantity_unit(adh_quantity q);
-/* Formats value with the best metric prefix, e.g. 3e8 Pa -> "300 MPa". */
+/* Formats value with the best metric prefix, e.g. 3e8 Pa -> "300 MPa";
+ * zero takes the prefix its quantity is usually read in ("0 nm", "0 nN"). */
 void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, size_t len);
+
+/* A quantity as text for a sentence, four significant digits with its
+ * prefix (adh_format_quantity): the one way every message writes a value.
+ * The text lives until the end of the full expression that made it:
+ *     snprintf(why, n, "R = %s is too small", adh_qtext(R, ADH_Q_LENGTH).s); */
+typedef struct adh_qtext_buf {
+    char s[48];
+} adh_qtext_buf;
+adh_qtext_buf adh_qtext(double value, adh_quantity q);
+/* The same as a value is typed, number and unit together in ASCII
+ * ("1.58nm", "10um"): for the values a message tells the user to give. */
+adh_qtext_buf adh_qtext_arg(double value, adh_quantity q);
+
+/* Whether text (a number, or a comma-separated list of them) gives no unit
+ * anywhere: a bare number, read in SI by flags and scenes. */
+int adh_quantity_is_bare(const char *text);
 
 #endif

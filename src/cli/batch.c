@@ -210,8 +210,8 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
         char edge[400];
         adh_rings_edge_sentence(g, run.rows[run.nrows - 1].a, edge, sizeof edge);
         cli_advice_append(edge, sizeof edge, adh_rings_edge_fix(g, run.rows[run.nrows - 1].a));
-        snprintf(note, sizeof note, "the run stopped after %zu steps at h0 = %g m: %s", run.nrows,
-                 run.rows[run.nrows - 1].h0, edge);
+        snprintf(note, sizeof note, "the run stopped after %zu steps at h0 = %s: %s", run.nrows,
+                 adh_qtext(run.rows[run.nrows - 1].h0, ADH_Q_LENGTH).s, edge);
         status = CLI_EXIT_SOLVER;
     } else if (rc != ADH_SUCCESS) {
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run.nrows, adh_strerror(rc));
@@ -229,8 +229,8 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
      * the run's status, unless --allow-unconverged asked for them. */
     int unconverged = run.unconverged && status == CLI_EXIT_OK;
     if (run.unconverged && (!cfg->output.allow_unconverged || !cfg->output.quiet))
-        fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %g m; their rows say converged 0%s\n",
-                run.unconverged, run.nrows, spec->relax.max_iter, spec->relax.eps,
+        fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %s; their rows say converged 0%s\n",
+                run.unconverged, run.nrows, spec->relax.max_iter, adh_qtext(spec->relax.eps, ADH_Q_LENGTH).s,
                 cfg->output.allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
     if (unconverged && !cfg->output.allow_unconverged)
         status = CLI_EXIT_SOLVER;

@@ -338,7 +338,7 @@ int cli_cost_main(const cli_options *cli)
                 c.spec.relax.eps = eps[e];
                 c.spec.grid.force = 1; /* coarse grids are what the report measures */
                 if (cli_options_validate(&c, why, sizeof why) != 0) {
-                    fprintf(stderr, "adhere: --cost: N = %zu, eps = %g m: %s\n", nodes[a], eps[e], why);
+                    fprintf(stderr, "adhere: --cost: N = %zu, eps = %s: %s\n", nodes[a], adh_qtext(eps[e], ADH_Q_LENGTH).s, why);
                     free(runs);
                     return CLI_EXIT_USAGE;
                 }

@@ -12,6 +12,7 @@
 #include "adhere/models.h"
 #include "cli/jumps.h"
 #include "cli/tables.h"
+#include "plot/axes.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
 #include "plot/outdir.h"
@@ -123,9 +124,9 @@ static int precontact(figure *fg, const adh_run_spec *spec, const adh_run *run)
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
     adh_gnuplot_cmd(fg->gp, "set key bottom right");
-    adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*%.17g) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
-                    "'' using ($1*1e9):($3*%.17g) with lines lw 2.5 lc rgb \"#000000\" title \"rigid F(h_0) (eq 22)\", "
-                    "%s using ($1*1e9):($2*%.17g) with lines dt 3 lw 2 lc rgb \"#1f3f8f\" title \"F(h), h from eq 23\"",
+    adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*%.17g) with points pt 6 lc rgb adh_loading_color title \"computed\", "
+                    "'' using ($1*1e9):($3*%.17g) with lines ls 2 lw 2 title \"rigid F(h_0) (eq 22)\", "
+                    "%s using ($1*1e9):($2*%.17g) with lines ls 3 title \"F(h), h from eq 23\"",
                     adh_gp_path(dat, q, sizeof q), fs, fs, adh_gp_path(eq, q2, sizeof q2), fs);
     return fig_end(fg, "precontact.png", ADH_PLOT_PRECONTACT);
 }
@@ -162,8 +163,8 @@ static int bulge(figure *fg, const adh_run_spec *spec, const adh_run *run)
     adh_gnuplot_cmd(fg->gp, "A = %.17g; R = %.17g; E = %.17g", m->A, m->R, m->E);
     adh_gnuplot_cmd(fg->gp, "set xrange [%.17g:%.17g]", hmin * 1e9 * 0.95, hmax * 1e9);
     adh_gnuplot_cmd(fg->gp, "set samples 400");
-    adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*1e9) with points pt 6 lc rgb \"#c0392b\" title \"computed\", "
-                    "-A*sqrt(2*R)/(8*E*(x*1e-9)**2.5)*1e9 with lines lw 2 lc rgb \"#1f3f8f\" title \"eq 23\"",
+    adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e9):($2*1e9) with points pt 6 lc rgb adh_loading_color title \"computed\", "
+                    "-A*sqrt(2*R)/(8*E*(x*1e-9)**2.5)*1e9 with lines ls 2 lw 1.5 title \"eq 23\"",
                     adh_gp_path(dat, q, sizeof q));
     return fig_end(fg, "bulge.png", ADH_PLOT_BULGE);
 }
@@ -214,7 +215,7 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
-    double smin = INFINITY, smax = -INFINITY;
+    double smin = INFINITY, smax = -INFINITY, hlo = INFINITY, hhi = -INFINITY;
     for (size_t i = 0; i < n; i++) {
         adh_run_spec rc;
         adh_config_sweep_run(cfg, i, &rc);
@@ -222,8 +223,10 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
         adh_material_derive(&rc.mat, &d);
         double h = cli_jumps_gap_before(&runs[i]);
         smin = fmin(smin, d.sigma), smax = fmax(smax, d.sigma);
-        if (isfinite(h))
+        if (isfinite(h)) {
             fprintf(f, "%.17g\t%.17g\t%.17g\t%d\n", d.sigma, h, d.h_star, cli_jumps_jumped(&runs[i], rc.proto.step));
+            hlo = fmin(hlo, h), hhi = fmax(hhi, h);
+        }
     }
     /* eq 24 as a curve of sigma: h* = (3 A sqrt(2R) / 8E)^(2/7), E from eq 17 */
     fprintf(f, "\n\n");
@@ -232,20 +235,32 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
         adh_material at = *m;
         double s = smin * pow(smax / smin, k / 200.0);
         at.E = adh_material_modulus_at_sigma(m, s);
-        fprintf(f, "%.17g\t%.17g\n", s, adh_jump_separation(&at));
+        double h = adh_jump_separation(&at);
+        fprintf(f, "%.17g\t%.17g\n", s, h);
+        hlo = fmin(hlo, h), hhi = fmax(hhi, h);
     }
     if (data_done(fg, f, dat) < 0)
         return -1;
     fig_begin(fg, "jump.png");
     adh_gnuplot_cmd(fg->gp, "set title \"Jump into contact (Figure 3), z_0 = %.3g nm\"", m->z0 * 1e9);
     adh_gnuplot_cmd(fg->gp, "set logscale xy");
+    /* the axes hold the points and eq 24 with a margin, not the decades
+     * round them (an empty band below the lowest gap) */
+    char tics[256];
+    double xlo = smin / 1.5, xhi = smax * 1.5, ylo = hlo * 1e9 / 1.25, yhi = hhi * 1e9 * 1.25;
+    adh_gnuplot_cmd(fg->gp, "set xrange [%.17g:%.17g]", xlo, xhi);
+    adh_gp_log_tics(xlo, xhi, tics, sizeof tics);
+    adh_gnuplot_cmd(fg->gp, "set xtics %s", tics);
+    adh_gnuplot_cmd(fg->gp, "set yrange [%.17g:%.17g]", ylo, yhi);
+    adh_gp_log_tics(ylo, yhi, tics, sizeof tics);
+    adh_gnuplot_cmd(fg->gp, "set ytics %s", tics);
     adh_gnuplot_cmd(fg->gp, "set xlabel \"adhesion–elasticity parameter σ (eq 17)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"gap before the jump h (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set key top left");
     /* filled: a jump; open: contact came gradually, the last gap before it (as the paper) */
-    adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($4 == 1 ? $2*1e9 : NaN) with points pt 7 ps 1.2 lc rgb \"#c0392b\" title \"jump (computed)\", "
-                    "'' index 0 using 1:($4 == 1 ? NaN : $2*1e9) with points pt 6 ps 1.2 lc rgb \"#c0392b\" title \"last gap before contact, no jump\", "
-                    "'' index 1 using 1:($2*1e9) with lines lw 2.5 dt 3 lc rgb \"#1f3f8f\" title \"eq 24\"",
+    adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($4 == 1 ? $2*1e9 : NaN) with points pt 7 ps 1.2 lc rgb adh_loading_color title \"jump (computed)\", "
+                    "'' index 0 using 1:($4 == 1 ? NaN : $2*1e9) with points pt 6 ps 1.2 lc rgb adh_loading_color title \"last gap before contact, no jump\", "
+                    "'' index 1 using 1:($2*1e9) with lines lw 2.5 dt 3 lc rgb \"#000000\" title \"eq 24\"",
                     adh_gp_path(dat, q, sizeof q));
     return fig_end(fg, "jump.png", 0);
 }
@@ -290,7 +305,9 @@ static int hysteresis_panel(figure *fg, const adh_config *cfg, const adh_run *ru
     adh_gnuplot_cmd(fg->gp, "set xlabel \"ε (pm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"hysteresis (fJ)\"");
     adh_gnuplot_cmd(fg->gp, "set yrange [0:%.17g]", 1.15 * hmax * 1e15);
-    adh_gnuplot_cmd(fg->gp, "set key bottom right");
+    /* inside, where the hysteresis (growing with eps) leaves room: the
+     * force panel's "outside below" would otherwise hold, under the label */
+    adh_gnuplot_cmd(fg->gp, "set key inside top left");
     if (isnan(static_hyst))
         adh_gnuplot_cmd(fg->gp, "plot %s using ($1*1e12):($2*1e15) with linespoints lw 2 pt 7 lc rgb \"#1f3f8f\" "
                         "title \"relaxation\"", adh_gp_path(dat, q, sizeof q));
@@ -311,7 +328,7 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
-    double fbig = 0, fmin_ = 0, fmax_ = 0, xmin = INFINITY;
+    double fbig = 0, fmin_ = 0, fmax_ = 0, xmin = INFINITY, xmax = -INFINITY;
     int same_material = cfg->sweep.kind == ADH_SWEEP_EPS;
     for (size_t i = 0; i < n; i++) {
         for (size_t j = 0; j < runs[i].nrows; j++) {
@@ -323,9 +340,16 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
             fmin_ = fmin(fmin_, o->F);
             fmax_ = fmax(fmax_, o->F);
             xmin = fmin(xmin, o->h0);
+            xmax = fmax(xmax, o->h0);
         }
         fprintf(f, "\n\n");
     }
+    /* the frame ends where every curve has flattened to zero */
+    double active = xmin;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < runs[i].nrows; j++)
+            if (fabs(runs[i].rows[j].F) >= 0.01 * (fmax_ - fmin_))
+                active = fmax(active, runs[i].rows[j].h0);
     if (data_done(fg, f, dat) < 0)
         return -1;
     f = fig_data(fg, "b.dat", jkr, sizeof jkr);
@@ -362,11 +386,12 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
     /* the loops hang below zero and the curves are flat past the jump-out:
-     * the range spans the data (with a margin above zero), the key sits at
-     * the right, halfway down, where only the flat tails run (above it) */
-    adh_gnuplot_cmd(fg->gp, "set key right center");
-    double top = fmax(fmax_, 0.0) + 0.15 * (fmax(fmax_, 0.0) - fmin_);
-    adh_gnuplot_cmd(fg->gp, "set yrange [%.17g:%.17g]", 1.1 * fmin_ * fs, top * fs);
+     * the range spans the data, to where the curves have flattened; the
+     * key sits below the frame */
+    adh_gnuplot_cmd(fg->gp, "set key outside below center horizontal");
+    double top = fmax(fmax_, 0.0) + 0.04 * (fmax(fmax_, 0.0) - fmin_);
+    adh_gnuplot_cmd(fg->gp, "set yrange [%.17g:%.17g]", (fmin_ - 0.04 * (fmax(fmax_, 0.0) - fmin_)) * fs, top * fs);
+    adh_gnuplot_cmd(fg->gp, "set xrange [%.17g:%.17g]", xmin * 1e9, adh_plot_active_right(active, xmin, xmax) * 1e9);
     char *cmd = NULL;
     size_t cap = 0;
     FILE *c = open_memstream(&cmd, &cap);
@@ -381,16 +406,16 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
             snprintf(label, sizeof label, "ε = %g pm", cfg->sweep.values[i] * 1e12);
         else
             snprintf(label, sizeof label, "%s = %g", adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i]);
-        /* light to heavy, as the paper's eps = 1, 0.5, 0.1 pm */
-        static const char *const colors[] = { "#8fb8de", "#4a7fc1", "#1f3f8f", "#c0392b", "#e67e22", "#27ae60", "#8e44ad" };
-        fprintf(c, ", %s index %zu using ($1*1e9):($2*%.17g) with lines lw %.2g lc rgb \"%s\" title \"%s\"",
-                adh_gp_path(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1),
-                colors[i % (sizeof colors / sizeof colors[0])], label);
+        /* light to heavy, as the paper's eps = 1, 0.5, 0.1 pm: the style's
+         * sweep colours run from light to dark, the widths from thin up */
+        fprintf(c, ", %s index %zu using ($1*1e9):($2*%.17g) with lines lw %.2g "
+                   "lc rgb word(adh_sweep_colors, 1 + %zu %% words(adh_sweep_colors)) title \"%s\"",
+                adh_gp_path(dat, q, sizeof q), i, fs, 1.0 + 2.0 * (double)i / (double)(n > 1 ? n - 1 : 1), i, label);
     }
     if (jkr_parts)
-        fprintf(c, ", %s index 0 using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" "
-                   "title \"JKR equilibrium (dashed: fixed h_0)\", "
-                   "'' index 1 using ($1*1e9):($2*%.17g) with lines lw 3 lc rgb \"#000000\" dt (5,4) "
+        fprintf(c, ", %s index 0 using ($1*1e9):($2*%.17g) with lines ls 3 lw 2 "
+                   "title \"JKR equilibrium (grey: past its pull-off, fixed h_0)\", "
+                   "'' index 1 using ($1*1e9):($2*%.17g) with lines ls 3 lw 2 lc rgb adh_model_disp_color "
                    "notitle", adh_gp_path(jkr, q, sizeof q), fs, fs);
     fclose(c);
     adh_gnuplot_cmd(fg->gp, "%s", cmd);

@@ -12,6 +12,7 @@
 #include "cli/advice.h"
 #include "cli/batch.h"
 #include "cli/cost.h"
+#include "cli/estimate.h"
 #include "cli/data.h"
 #include "cli/fit.h"
 #include "cli/interrupt.h"
@@ -36,6 +37,37 @@ static int stdout_done(void)
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
+}
+
+/* Before any work: the grid (the one the contact's edge needs when none
+ * was given, or a refusal), every run valid, the memory for the grid,
+ * whichever it is, before anything is allocated (a static curve holds its
+ * own solver; a sweep solves one per thread). 0, or the exit status with
+ * why in the CLI's words. */
+static int checked(adh_config *cfg, const cli_options *cli, char *why, size_t len)
+{
+    unsigned fix;
+    if (adh_config_grid(cfg, why, len, &fix) != 0) {
+        cli_advice_append(why, len, fix);
+        return CLI_EXIT_USAGE;
+    }
+    if (cli_options_validate(cfg, why, len) != 0)
+        return CLI_EXIT_USAGE;
+    const adh_run_spec *spec = &cfg->spec;
+    unsigned solvers = spec->mode == ADH_MODE_STATIC ? (unsigned)adh_plan_jobs(cfg) : cli->reference[0] ? 1 : 0;
+    char msg[1200];
+    if (adh_budget_check_threads(spec, solvers, (unsigned)adh_plan_jobs(cfg), msg, sizeof msg) != 0) {
+        cli_options_words(msg, why, len);
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+/* adh_config_unit_hint's test of a configuration with a unit put right. */
+static int accept(adh_config *copy, void *ctx)
+{
+    char why[1200];
+    return checked(copy, ctx, why, sizeof why);
 }
 
 static int run(int argc, char **argv);
@@ -105,31 +137,19 @@ static int run(int argc, char **argv)
         cli.cfg.spec.relax.cancel = cli_interrupt_flag();
         return cli_fit_main(&cli);
     }
-    /* No grid given: the one the contact's edge needs, or a refusal. */
-    unsigned fix;
-    if (cli.action != CLI_ACT_COST && adh_config_grid(&cli.cfg, why, sizeof why, &fix) != 0) {
-        cli_advice_append(why, sizeof why, fix);
-        fprintf(stderr, "adhere: %s\n", why);
-        return CLI_EXIT_USAGE;
+    if (cli.action != CLI_ACT_COST) {   /* --cost replaces N and eps and checks each of its runs itself */
+        int rc = checked(&cli.cfg, &cli, why, sizeof why);
+        if (rc != 0) {
+            /* a bare number read in SI may have meant the screen's unit */
+            char hint[1024];
+            if (adh_config_unit_hint(&cli.cfg, accept, &cli, hint, sizeof hint) == 1)
+                fprintf(stderr, "adhere: %s (a bare number is in SI units: %s)\n", hint, why);
+            else
+                fprintf(stderr, "adhere: %s\n", why);
+            return rc;
+        }
     }
-    /* --cost replaces N and eps and checks each of its runs itself. */
-    if (cli.action != CLI_ACT_COST && cli_options_validate(&cli.cfg, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
-        return CLI_EXIT_USAGE;
-    }
-    /* Memory for the grid, whichever it is, before anything is allocated:
-     * the estimate for the operator chosen to fit, or a refusal. A static
-     * curve holds its own solver; a sweep solves one per thread. */
     const adh_run_spec *spec = &cli.cfg.spec;
-    unsigned solvers = spec->mode == ADH_MODE_STATIC ? (unsigned)adh_plan_jobs(&cli.cfg)
-                     : cli.reference[0] ? 1 : 0;
-    if (cli.action != CLI_ACT_COST &&
-        adh_budget_check_threads(spec, solvers, (unsigned)adh_plan_jobs(&cli.cfg), why, sizeof why) != 0) {
-        char words[1200];
-        cli_options_words(why, words, sizeof words);
-        fprintf(stderr, "adhere: %s\n", words);
-        return CLI_EXIT_USAGE;
-    }
     /* the time: a dense product reads all N^2 numbers every iteration */
     size_t nodes = adh_config_nodes(spec);
     if (cli.action != CLI_ACT_COST && !cli.cfg.output.quiet && spec->mode != ADH_MODE_RIGID &&
@@ -150,6 +170,7 @@ static int run(int argc, char **argv)
         adh_plan_print(stdout, &cli.cfg, &plan);
         if (cli.reference[0])
             cli_static_reference_plan(stdout, &cli.cfg.spec);
+        cli_estimate_print(stdout, &cli.cfg, &plan);
         return stdout_done();
     }
     case CLI_ACT_COST:

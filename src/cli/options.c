@@ -60,6 +60,7 @@ static const option_doc options[] = {
     { { "step", required_argument, 0, 'd' }, "M", "drive step d (default 0.05nm)", "protocol.step", NULL },
     { { "start", required_argument, 0, OPT_START }, "M|auto", "first drive position h0 (default: where the force is negligible)", "protocol.start", NULL },
     { { "turn", required_argument, 0, OPT_TURN }, "M[,M...]", "turning points (default -5nm); 'none' loads to contact only", "protocol.turns", NULL },
+    { { "turns", required_argument, 0, OPT_TURN }, "M[,M...]", "the same as --turn, by the scene key's name", "protocol.turns", NULL },
     { { "dwell", required_argument, 0, OPT_DWELL }, "N", "iterations held at each turning point before unloading (default 0)", "protocol.dwell", NULL },
     { { "mode", required_argument, 0, OPT_MODE }, "relax|static|rigid", "paper's relaxation, the static equilibrium curve, or rigid spheres only (eq 22, no elastic solve) (default relax)", "scene.mode", NULL },
     { { "reference", required_argument, 0, OPT_REFERENCE }, "static", "also compute the static curve as a reference in relaxation mode", NULL, NULL },
@@ -223,8 +224,11 @@ static int apply(cli_options *cli, const option_doc *o, const char *arg, char *w
     const char *name = o->opt.name;
     if (o->key) {
         char msg[512], words[600];
-        if (adh_config_set(&cli->cfg, o->key, o->value ? o->value : arg, msg, sizeof msg) == 0)
+        if (adh_config_set(&cli->cfg, o->key, o->value ? o->value : arg, msg, sizeof msg) == 0) {
+            snprintf(words, sizeof words, "--%s", name);
+            adh_config_note_given(&cli->cfg, o->key, o->value ? o->value : arg, words);
             return 0;
+        }
         cli_options_words(msg, words, sizeof words);
         snprintf(why, n, "--%s: %s", name, words);
         return 2;
@@ -258,24 +262,38 @@ static int apply(cli_options *cli, const option_doc *o, const char *arg, char *w
     return 2;
 }
 
-/* Edit distance of two short strings (for "did you mean"). */
-static size_t distance(const char *a, const char *b)
+/* How far a name may be from the one meant: a letter in a short name, two
+ * in a longer one. */
+static size_t near_enough(const char *name)
 {
-    size_t la = strlen(a), lb = strlen(b);
-    if (la > 40 || lb > 40)
-        return 99;
-    size_t d[41][41];
-    for (size_t i = 0; i <= la; i++)
-        d[i][0] = i;
-    for (size_t j = 0; j <= lb; j++)
-        d[0][j] = j;
-    for (size_t i = 1; i <= la; i++)
-        for (size_t j = 1; j <= lb; j++) {
-            size_t sub = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
-            size_t del = d[i - 1][j] + 1, ins = d[i][j - 1] + 1;
-            d[i][j] = sub < del ? (sub < ins ? sub : ins) : (del < ins ? del : ins);
+    size_t n = strlen(name);
+    return n >= 4 ? 2 : n >= 2 ? 1 : 0;
+}
+
+/* The option an unknown "--NAME[=VALUE]" most likely meant: a short
+ * option's letter exactly ("--E": -E), a long name within a small edit
+ * distance, or the name of the key a flag sets ("--max_iter": solver.max_iter,
+ * --max-iter). */
+static const option_doc *meant(const char *name, int *letter)
+{
+    const option_doc *best = NULL;
+    size_t bd = near_enough(name) + 1;
+    for (size_t i = 0; i < NOPTIONS; i++) {
+        const option_doc *o = &options[i];
+        size_t d = adh_config_name_distance(name, o->opt.name);
+        if (o->opt.val < 256 && name[0] == o->opt.val && !name[1])
+            d = 0;   /* the letter itself, case and all */
+        if (o->key && strchr(o->key, '.')) {
+            size_t dk = adh_config_name_distance(name, strchr(o->key, '.') + 1);
+            d = dk < d ? dk : d;
         }
-    return d[la][lb];
+        if (d < bd) {
+            bd = d;
+            best = o;
+        }
+    }
+    *letter = best && best->opt.val < 256 && name[0] == best->opt.val && !name[1];
+    return best;
 }
 
 static void unknown_option(const char *arg, char *why, size_t whylen)
@@ -283,21 +301,23 @@ static void unknown_option(const char *arg, char *why, size_t whylen)
     char name[64];
     snprintf(name, sizeof name, "%s", arg + (arg[0] == '-' && arg[1] == '-' ? 2 : 0));
     char *eq = strchr(name, '=');
+    const char *value = eq ? strchr(arg, '=') + 1 : NULL;
     if (eq)
         *eq = '\0';
-    const char *best = NULL;
-    size_t bd = 3;
-    for (size_t i = 0; i < NOPTIONS; i++) {
-        size_t dd = distance(name, options[i].opt.name);
-        if (dd < bd) {
-            bd = dd;
-            best = options[i].opt.name;
-        }
-    }
-    if (best && arg[0] == '-' && arg[1] == '-')
-        snprintf(why, whylen, "unknown option '%s': did you mean --%s? (see adhere --help)", arg, best);
-    else
+    int letter = 0;
+    const option_doc *o = arg[0] == '-' && arg[1] == '-' ? meant(name, &letter) : NULL;
+    if (!o) {
         snprintf(why, whylen, "unknown option '%s' (see adhere --help)", arg);
+        return;
+    }
+    char longform[300];
+    snprintf(longform, sizeof longform, "--%s%s%.200s", o->opt.name, value && o->arg ? "=" : "",
+             value && o->arg ? value : "");
+    if (letter)   /* "--E=1GPa": -E 1GPa was meant */
+        snprintf(why, whylen, "unknown option '%s': did you mean -%c%s%.200s (%s)? (see adhere --help)", arg,
+                 o->opt.val, value ? " " : "", value ? value : "", longform);
+    else
+        snprintf(why, whylen, "unknown option '%s': did you mean %s? (see adhere --help)", arg, longform);
 }
 
 /* A positional that is no scene but a unit ("-E 1 GPa"): the number and
@@ -488,8 +508,8 @@ int cli_options_validate(const adh_config *cfg, char *why, size_t whylen)
         adh_config_sweep_run(cfg, i, &run);
         if (validate_run(cfg, &run, msg, sizeof msg) == 0)
             continue;
-        snprintf(why, whylen, "sweep run %zu (%s = %g): %s", i + 1, adh_sweep_name(cfg->sweep.kind),
-                 cfg->sweep.values[i], msg);
+        snprintf(why, whylen, "sweep run %zu (%s = %s): %s", i + 1, adh_sweep_name(cfg->sweep.kind),
+                 adh_sweep_value_text(cfg->sweep.kind, cfg->sweep.values[i]).s, msg);
         return 2;
     }
     return 0;
@@ -542,8 +562,8 @@ static int validate_grid(const adh_run_spec *run, char *why, size_t whylen)
     if (!gr.resolved && !run->grid.force) {
         adh_grid_unresolved_sentence(&gr, why, whylen);
         size_t len = strlen(why);
-        snprintf(why + len, whylen - len, "; use --spacing=%.3gm or more nodes over the same radius, or --force to run it anyway (marked resolved 0)",
-                 gr.max_spacing);
+        snprintf(why + len, whylen - len, "; use --spacing=%s or more nodes over the same radius, or --force to run it anyway (marked resolved 0)",
+                 adh_qtext_arg(gr.max_spacing, ADH_Q_LENGTH).s);
         return 2;
     }
     return 0;
@@ -579,7 +599,7 @@ static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *wh
     if (run->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
         return rigid_check(run, why, whylen);
     if (!(isfinite(o->drive_speed) && o->drive_speed > 0 && o->drive_speed < 1e3)) {
-        snprintf(why, whylen, "drive speed %g m/s is not allowed: it must be above 0 and below 1000 m/s", o->drive_speed);
+        snprintf(why, whylen, "drive speed %s is not allowed: it must be above 0 and below 1000 m/s", adh_qtext(o->drive_speed, ADH_Q_SPEED).s);
         return 2;
     }
     return validate_grid(run, why, whylen);

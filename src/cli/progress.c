@@ -15,6 +15,17 @@ void cli_progress_duration(double s, char *buf, size_t len)
         snprintf(buf, len, "%d h %02d min", (int)(s / 3600), (int)fmod(s / 60, 60));
 }
 
+void cli_progress_left(double frac, double left, char *buf, size_t len)
+{
+    if (!isfinite(left) || frac >= 1) {
+        snprintf(buf, len, "%3.0f %%", 100 * frac);
+        return;
+    }
+    char t[32];
+    cli_progress_duration(left, t, sizeof t);
+    snprintf(buf, len, "%3.0f %%, about %s left", 100 * frac, t);
+}
+
 void cli_progress_text(size_t done, size_t total, double elapsed, char *buf, size_t len)
 {
     if (total == 0) {

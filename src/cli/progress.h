@@ -12,4 +12,8 @@ void cli_progress_text(size_t done, size_t total, double elapsed, char *buf, siz
 /* A duration as people read it: "12.3 s", "4 min 10 s", "1 h 5 min". */
 void cli_progress_duration(double seconds, char *buf, size_t len);
 
+/* "67 %, about 5 min 40 s left" (share of the cost done), or "67 %" when
+ * left is unknown. */
+void cli_progress_left(double frac, double left, char *buf, size_t len);
+
 #endif

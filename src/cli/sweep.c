@@ -46,12 +46,29 @@ typedef struct sweep_job {
     cli_sweep_said *said;      /* what each run's summary.tsv said */
     size_t next;               /* the next run to start, under lock */
     size_t done;
+    int jobs;                  /* runs at once */
     double t0;                 /* when the runs began */
+    adh_plan_progress *eta;          /* each run's expected cost, start and time: the time left */
     pthread_mutex_t lock;
 } sweep_job;
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
                         int rc, adh_outdir *out, cli_sweep_said *said);
+
+/* "67 %, about 5 min left", weighing each run by its expected iterations:
+ * a run at a fifth of the eps takes five times as long, and the last runs
+ * of Figure 7 are the longest (job->lock held). */
+static void eta_text(const sweep_job *job, char *buf, size_t len)
+{
+    size_t n = job->cfg->sweep.n;
+    double all = 0, done = 0;
+    for (size_t i = 0; i < n; i++) {
+        all += job->eta[i].cost;
+        done += job->eta[i].state == 2 ? job->eta[i].cost : 0;
+    }
+    double left = adh_plan_time_left(job->eta, n, job->jobs, adh_clock_seconds(), 0);
+    cli_progress_left(all > 0 ? done / all : 1, job->done < n ? left : NAN, buf, len);
+}
 
 static void *worker(void *arg)
 {
@@ -66,6 +83,10 @@ static void *worker(void *arg)
         adh_run_spec rc;
         adh_config_sweep_run(cfg, i, &rc);
         adh_run *run = &job->runs[i];
+        pthread_mutex_lock(&job->lock);
+        job->eta[i].state = 1;
+        job->eta[i].started = adh_clock_seconds();
+        pthread_mutex_unlock(&job->lock);
         /* each static run allocates its own solver (a dense copy of the
          * shared kernel): nothing of it is shared between threads */
         job->status[i] = rc.mode == ADH_MODE_RIGID
@@ -79,19 +100,22 @@ static void *worker(void *arg)
             job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i], &job->said[i]);
         pthread_mutex_lock(&job->lock);
         job->done++;
+        job->eta[i].state = 2;
+        job->eta[i].seconds = adh_clock_seconds() - job->eta[i].started;
         if (!cfg->output.quiet) {
             char pr[64];
-            cli_progress_text(job->done, cfg->sweep.n, adh_clock_seconds() - job->t0, pr, sizeof pr);
-            fprintf(stderr, "adhere: run %zu of %zu (%s = %g) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
-                    i + 1, cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i],
+            eta_text(job, pr, sizeof pr);
+            fprintf(stderr, "adhere: run %zu of %zu (%s = %s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
+                    i + 1, cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), adh_sweep_value_text(cfg->sweep.kind, cfg->sweep.values[i]).s,
                     run->interrupted ? "interrupted" : job->status[i] == ADH_SUCCESS ? "done" : adh_strerror(job->status[i]),
                     run->nrows, run->iterations, run->seconds, job->done, cfg->sweep.n, pr);
         }
         /* not hidden by -q: it changes what the run's numbers mean */
         if (run->unconverged)
-            fprintf(stderr, "adhere: warning: run %zu (%s = %g): %zu of %zu steps reached the iteration cap (%zu) "
+            fprintf(stderr, "adhere: warning: run %zu (%s = %s): %zu of %zu steps reached the iteration cap (%zu) "
                     "without meeting eps; their rows say converged 0\n", i + 1, adh_sweep_name(cfg->sweep.kind),
-                    cfg->sweep.values[i], run->unconverged, run->nrows, cfg->spec.relax.max_iter);
+                    adh_sweep_value_text(cfg->sweep.kind, cfg->sweep.values[i]).s, run->unconverged, run->nrows,
+                    cfg->spec.relax.max_iter);
         pthread_mutex_unlock(&job->lock);
     }
     return NULL;
@@ -414,6 +438,13 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     adh_outdir **subs = calloc(n, sizeof *subs);
     int jobs = adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
+    /* each run's expected cost, for the time left */
+    static adh_plan_progress eta[ADH_MAX_SWEEP];
+    for (size_t i = 0; i < n && i < ADH_MAX_SWEEP; i++) {
+        adh_run_spec rs;
+        adh_config_sweep_run(cfg, i, &rs);
+        eta[i] = (adh_plan_progress){ .cost = rs.mode == ADH_MODE_RELAX ? adh_plan_iterations(&rs) : 1.0 };
+    }
     int failed = !runs || !sres || !status || !tables || !said || !subs || !threads ? CLI_EXIT_SOLVER : 0;
     if (failed)
         snprintf(why, sizeof why, "out of memory for %zu runs", n);
@@ -438,7 +469,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     adh_ready_phase("sweep");
 
     sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status,
-                      .out = od ? subs : NULL, .tables = tables, .said = said };
+                      .out = od ? subs : NULL, .tables = tables, .said = said, .jobs = jobs, .eta = eta };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();
     int started = 0;

@@ -10,6 +10,7 @@
 #include "adhere/rings.h"
 #include "adhere/state.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 typedef enum phase { PH_START = 0, PH_LOAD, PH_TURN, PH_UNLOAD, PH_DONE } phase;
 
@@ -180,13 +181,13 @@ int adh_drive_check(const adh_material *m, const adh_relax_settings *rs, const a
             deepest = fmin(deepest, ps->turns[i]);
         double floor_eps = adh_relax_eps_floor(m->z0 - deepest);
         if (rs->eps < floor_eps) {
-            snprintf(why, whylen, "eps = %g m is below what double precision can reach with deformations up to %g m: the smallest eps allowed here is %g m",
-                     rs->eps, m->z0 - deepest, floor_eps);
+            snprintf(why, whylen, "eps = %s is below what double precision can reach with deformations up to %s: the smallest eps allowed here is %s",
+                     adh_qtext(rs->eps, ADH_Q_LENGTH).s, adh_qtext(m->z0 - deepest, ADH_Q_LENGTH).s, adh_qtext(floor_eps, ADH_Q_LENGTH).s);
             return ADH_EINVAL;
         }
     }
     if (g && !(isfinite(g->dr) && g->dr > 0)) {
-        snprintf(why, whylen, "spacing = %g m is not allowed: it must be above 0", g->dr);
+        snprintf(why, whylen, "spacing = %s is not allowed: it must be above 0", adh_qtext(g->dr, ADH_Q_LENGTH).s);
         return ADH_EINVAL;
     }
     /* g NULL: rigid spheres, eq 22 alone, only the drive is checked */

@@ -6,6 +6,7 @@
 
 #include "adhere/models.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 /* The paper's grid, 1.5 nm at R = 10 um and z0 = 0.5 nm, is 0.0212 sqrt(R z0):
  * lateral lengths scale with sqrt(R z0), so this keeps the same nodes per
@@ -51,10 +52,10 @@ void adh_grid_check(const adh_material *m, adh_grid_use use, size_t n, double dr
 void adh_grid_unresolved_sentence(const adh_grid_report *r, char *buf, size_t len)
 {
     snprintf(buf, len,
-             "grid spacing %.3g m is coarser than the resolved limit %.3g m at sigma = %.3g (%.2g widths of "
-             "the contact's edge zone, %.3g m; this grid has %.2f nodes across it): pull-off, jump-in and "
+             "grid spacing %s is coarser than the resolved limit %s at sigma = %.3g (%.2g widths of "
+             "the contact's edge zone, %s; this grid has %.2f nodes across it): pull-off, jump-in and "
              "hysteresis may be off by more than 1 %%",
-             r->dr, r->max_spacing, r->sigma, r->limit, r->edge, r->edge_nodes);
+             adh_qtext(r->dr, ADH_Q_LENGTH).s, adh_qtext(r->max_spacing, ADH_Q_LENGTH).s, r->sigma, r->limit, adh_qtext(r->edge, ADH_Q_LENGTH).s, r->edge_nodes);
 }
 
 adh_grid *adh_grid_alloc(size_t n, double dr)

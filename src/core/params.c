@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 adh_material adh_material_default(void)
 {
@@ -14,23 +15,23 @@ adh_material adh_material_default(void)
 /* Each quantity must be finite and positive; the upper bounds reject values
  * that are surely a unit slip (a 1 km sphere, a 1e15 Pa modulus) rather than
  * physics, so the message can say so before a solve produces garbage. */
-static int check(const char *name, double v, double lo, double hi, const char *unit,
+static int check(const char *name, double v, double lo, double hi, adh_quantity q,
                  char *why, size_t n)
 {
     if (isfinite(v) && v >= lo && v <= hi)
         return 0;
     if (why)
-        snprintf(why, n, "%s = %g %s is out of range: allowed %g to %g %s", name, v, unit,
-                 lo, hi, unit);
+        snprintf(why, n, "%s = %s is out of range: allowed %s to %s", name, adh_qtext(v, q).s,
+                 adh_qtext(lo, q).s, adh_qtext(hi, q).s);
     return 1;
 }
 
 int adh_material_validate(const adh_material *m, char *why, size_t whylen)
 {
-    if (check("E (modulus)", m->E, 1e3, 1e13, "Pa", why, whylen) ||
-        check("A (Hamaker constant)", m->A, 1e-24, 1e-15, "J", why, whylen) ||
-        check("z0 (equilibrium separation)", m->z0, 1e-12, 1e-7, "m", why, whylen) ||
-        check("R (effective radius)", m->R, 1e-9, 10.0, "m", why, whylen))
+    if (check("E (modulus)", m->E, 1e3, 1e13, ADH_Q_PRESSURE, why, whylen) ||
+        check("A (Hamaker constant)", m->A, 1e-24, 1e-15, ADH_Q_ENERGY, why, whylen) ||
+        check("z0 (equilibrium separation)", m->z0, 1e-12, 1e-7, ADH_Q_LENGTH, why, whylen) ||
+        check("R (effective radius)", m->R, 1e-9, 10.0, ADH_Q_LENGTH, why, whylen))
         return ADH_EINVAL;
     return ADH_SUCCESS;
 }

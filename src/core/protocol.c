@@ -10,6 +10,7 @@
 
 #include "adhere/models.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 adh_protocol_settings adh_protocol_settings_default(void)
 {
@@ -55,7 +56,7 @@ static int check_drive(const adh_protocol_settings *ps, const adh_material *m, c
                        unsigned *fix)
 {
     if (!(isfinite(ps->step) && ps->step >= 1e-14 && ps->step <= 1e-8)) {
-        snprintf(why, whylen, "step d = %g m is not allowed: it must be from 1e-14 to 1e-8 m (0.01 pm to 10 nm)", ps->step);
+        snprintf(why, whylen, "step d = %s is not allowed: it must be from 0.01 pm to 10 nm", adh_qtext(ps->step, ADH_Q_LENGTH).s);
         return ADH_EINVAL;
     }
     if (adh_protocol_dwell_check(ps->dwell > ADH_PROTOCOL_MAX_DWELL ? LONG_MAX : (long)ps->dwell, why, whylen) != ADH_SUCCESS)
@@ -68,8 +69,9 @@ static int check_drive(const adh_protocol_settings *ps, const adh_material *m, c
         double t = ps->turns[i];
         if (!isfinite(t) || t < -adh_protocol_reach(m)) {
             int dflt = ps->nturns == 1 && t == adh_protocol_settings_default().turns[0];
-            snprintf(why, whylen, "turning point %g m%s is too deep: the model (h0 << R) allows down to -R/50 = %g m%s", t,
-                     dflt ? " (the default turn)" : "", -adh_protocol_reach(m), dflt ? "; give a shallower turn or a larger R" : "");
+            snprintf(why, whylen, "turning point %s%s is too deep: the model (h0 << R) allows down to -R/50 = %s%s",
+                     adh_qtext(t, ADH_Q_LENGTH).s, dflt ? " (the default turn)" : "", adh_qtext(-adh_protocol_reach(m), ADH_Q_LENGTH).s,
+                     dflt ? "; give a shallower turn or a larger R" : "");
             set_fix(fix, dflt ? ADH_FIX_TURNS | ADH_FIX_RADIUS : 0);
             return ADH_EINVAL;
         }
@@ -79,31 +81,32 @@ static int check_drive(const adh_protocol_settings *ps, const adh_material *m, c
      * gap is many z0 wide: r^2/2R there is at most 0.045 R. */
     double need = (10.0 * m->z0 + fabs(lowest)) / 0.045;
     if (m->R < need) {
-        snprintf(why, whylen, "R = %g m is too small for this model: h0 << R and a negligible force at the grid edge need R >= %g m here, 10 z0 plus the deepest |h0| over 0.045",
-                 m->R, need);
+        snprintf(why, whylen, "R = %s is too small for this model: h0 << R and a negligible force at the grid edge need R >= %s here, 10 z0 plus the deepest |h0| over 0.045",
+                 adh_qtext(m->R, ADH_Q_LENGTH).s, adh_qtext(need, ADH_Q_LENGTH).s);
         set_fix(fix, ADH_FIX_RADIUS);
         return ADH_EINVAL;
     }
     double start = isnan(ps->start) ? adh_protocol_auto_start(m, ps->step) : ps->start;
     if (!isfinite(start) || start <= 0 || start > adh_protocol_reach(m)) {
         if (isnan(ps->start))
-            snprintf(why, whylen, "R = %g m is too small for this material: the automatic start (where the force is negligible: the bulge of eq 23 below 0.01 z0 and 4 jump separations out) is %g m, above R/50 = %g m (the model needs h0 << R); use a larger R, or give a start up to %g m",
-                     m->R, start, adh_protocol_reach(m), adh_protocol_reach(m));
+            snprintf(why, whylen, "R = %s is too small for this material: the automatic start (where the force is negligible: the bulge of eq 23 below 0.01 z0 and 4 jump separations out) is %s, above R/50 = %s (the model needs h0 << R); use a larger R, or give a start up to %s",
+                     adh_qtext(m->R, ADH_Q_LENGTH).s, adh_qtext(start, ADH_Q_LENGTH).s, adh_qtext(adh_protocol_reach(m), ADH_Q_LENGTH).s, adh_qtext(adh_protocol_reach(m), ADH_Q_LENGTH).s);
         else
-            snprintf(why, whylen, "start = %g m is not allowed: it must be above 0 and at most R/50 = %g m (the model needs h0 << R)",
-                     start, adh_protocol_reach(m));
+            snprintf(why, whylen, "start = %s is not allowed: it must be above 0 and at most R/50 = %s (the model needs h0 << R)",
+                     adh_qtext(start, ADH_Q_LENGTH).s, adh_qtext(adh_protocol_reach(m), ADH_Q_LENGTH).s);
         set_fix(fix, isnan(ps->start) ? ADH_FIX_RADIUS | ADH_FIX_START : 0);
         return ADH_EINVAL;
     }
     for (size_t i = 0; i < ps->nturns; i++) {
         if (ps->turns[i] >= start) {
-            snprintf(why, whylen, "turning point %g m is not allowed: it must lie below the start %g m", ps->turns[i], start);
+            snprintf(why, whylen, "turning point %s is not allowed: it must lie below the start %s", adh_qtext(ps->turns[i], ADH_Q_LENGTH).s, adh_qtext(start, ADH_Q_LENGTH).s);
             return ADH_EINVAL;
         }
     }
     double steps = (start - lowest) / ps->step;
     if (steps > 2e6) {
-        snprintf(why, whylen, "%.0f drive steps of %g m from %g to %g m: at most 2e6 are allowed; take a larger step", steps, ps->step, start, lowest);
+        snprintf(why, whylen, "%.0f drive steps of %s from %s to %s: at most 2e6 are allowed; take a larger step", steps,
+                 adh_qtext(ps->step, ADH_Q_LENGTH).s, adh_qtext(start, ADH_Q_LENGTH).s, adh_qtext(lowest, ADH_Q_LENGTH).s);
         set_fix(fix, ADH_FIX_STEP);
         return ADH_EINVAL;
     }
@@ -119,12 +122,13 @@ static int check_grid(const adh_protocol_settings *ps, const adh_material *m, co
         return ADH_EINVAL;
     double lateral = sqrt(m->R * m->z0);
     if (g->dr > 0.25 * lateral) {
-        snprintf(why, whylen, "grid spacing %g m is too coarse: the contact edge needs at most 0.25 sqrt(R z0) = %g m; use more nodes", g->dr, 0.25 * lateral);
+        snprintf(why, whylen, "grid spacing %s is too coarse: the contact edge needs at most 0.25 sqrt(R z0) = %s; use more nodes",
+                 adh_qtext(g->dr, ADH_Q_LENGTH).s, adh_qtext(0.25 * lateral, ADH_Q_LENGTH).s);
         set_fix(fix, ADH_FIX_NODES);
         return ADH_EGRID;
     }
     if (g->rmax > 0.3 * m->R) {
-        snprintf(why, whylen, "grid radius Rmax = N x spacing = %g m is not << R = %g m: at most 0.3 R is allowed", g->rmax, m->R);
+        snprintf(why, whylen, "grid radius Rmax = N x spacing = %s is not << R = %s: at most 0.3 R is allowed", adh_qtext(g->rmax, ADH_Q_LENGTH).s, adh_qtext(m->R, ADH_Q_LENGTH).s);
         return ADH_EGRID;
     }
     /* The contact at the deepest position: the undeformed overlap radius,
@@ -132,8 +136,8 @@ static int check_grid(const adh_protocol_settings *ps, const adh_material *m, co
     double gap_edge = lowest + g->rmax * g->rmax / (2.0 * m->R);
     double a_est = 1.5 * sqrt(2.0 * m->R * fmax(0.0, m->z0 - lowest));
     if (gap_edge < 10 * m->z0 || a_est > 0.8 * g->rmax) {
-        snprintf(why, whylen, "grid radius Rmax = %g m is too short: the contact at h0 = %g m may reach %g m; use more nodes or a larger spacing",
-                 g->rmax, lowest, a_est);
+        snprintf(why, whylen, "grid radius Rmax = %s is too short: the contact at h0 = %s may reach %s; use more nodes or a larger spacing",
+                 adh_qtext(g->rmax, ADH_Q_LENGTH).s, adh_qtext(lowest, ADH_Q_LENGTH).s, adh_qtext(a_est, ADH_Q_LENGTH).s);
         set_fix(fix, ADH_FIX_NODES | ADH_FIX_SPACING);
         return ADH_EGRID;
     }
@@ -142,8 +146,8 @@ static int check_grid(const adh_protocol_settings *ps, const adh_material *m, co
      * 100 on the N = 100 default grid: every step at the iteration cap). */
     double edge = adh_edge_zone(m);
     if (ps->nturns > 0 && g->dr > 5.0 * edge) {
-        snprintf(why, whylen, "grid spacing %g m is too coarse for this contact: its edge zone is about %g m wide (sigma = %.3g), and a spacing above 5 times that (%g m) locks the contact line to the nodes; use more nodes or a smaller spacing",
-                 g->dr, edge, adh_material_sigma(m), 5.0 * edge);
+        snprintf(why, whylen, "grid spacing %s is too coarse for this contact: its edge zone is about %s wide (sigma = %.3g), and a spacing above 5 times that (%s) locks the contact line to the nodes; use more nodes or a smaller spacing",
+                 adh_qtext(g->dr, ADH_Q_LENGTH).s, adh_qtext(edge, ADH_Q_LENGTH).s, adh_material_sigma(m), adh_qtext(5.0 * edge, ADH_Q_LENGTH).s);
         set_fix(fix, ADH_FIX_NODES | ADH_FIX_SPACING);
         return ADH_EGRID;
     }
@@ -152,8 +156,8 @@ static int check_grid(const adh_protocol_settings *ps, const adh_material *m, co
     double tail = fabs(adh_rigid_force(m, gap_edge));
     double scale = fabs(adh_dmt_pulloff(m));
     if (tail > 1e-3 * scale) {
-        snprintf(why, whylen, "grid radius Rmax = %g m is too short: the force beyond it (%g N) is not negligible against 2 pi gamma R = %g N",
-                 g->rmax, tail, scale);
+        snprintf(why, whylen, "grid radius Rmax = %s is too short: the force beyond it (%s) is not negligible against 2 pi gamma R = %s",
+                 adh_qtext(g->rmax, ADH_Q_LENGTH).s, adh_qtext(tail, ADH_Q_FORCE).s, adh_qtext(scale, ADH_Q_FORCE).s);
         return ADH_EGRID;
     }
     return ADH_SUCCESS;

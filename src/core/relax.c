@@ -10,6 +10,7 @@
 
 #include "adhere/law.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 /* The per-node passes built for AVX2 and for the baseline, the loader
  * picking the CPU's (GCC's ifunc). Each node's arithmetic is the same in
@@ -95,7 +96,7 @@ void adh_mix_rule_describe(const adh_relax_settings *s, char *buf, size_t len)
 int adh_relax_settings_validate(const adh_relax_settings *s, char *why, size_t whylen)
 {
     if (!(isfinite(s->eps) && s->eps > 0 && s->eps < 1e-6)) {
-        snprintf(why, whylen, "eps = %g m is not allowed: it must be above 0 and below 1e-6 m (1 um)", s->eps);
+        snprintf(why, whylen, "eps = %s is not allowed: it must be above 0 and below 1 um", adh_qtext(s->eps, ADH_Q_LENGTH).s);
         return ADH_EINVAL;
     }
     if (!(isfinite(s->rtol) && s->rtol > 0 && s->rtol < 1)) {

@@ -2,6 +2,7 @@
 
 #include "adhere/models.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -10,11 +11,11 @@
 int adh_rings_spec_validate(const adh_rings_spec *s, char *why, size_t whylen)
 {
     if (!(isfinite(s->dr) && s->dr > 0)) {
-        snprintf(why, whylen, "fine ring width %g m is not allowed: it must be above 0", s->dr);
+        snprintf(why, whylen, "fine ring width %s is not allowed: it must be above 0", adh_qtext(s->dr, ADH_Q_LENGTH).s);
         return ADH_EINVAL;
     }
     if (!(isfinite(s->fine) && s->fine >= s->dr)) {
-        snprintf(why, whylen, "fine band radius %g m is not allowed: it must be at least one fine ring (%g m)", s->fine, s->dr);
+        snprintf(why, whylen, "fine band radius %s is not allowed: it must be at least one fine ring (%s)", adh_qtext(s->fine, ADH_Q_LENGTH).s, adh_qtext(s->dr, ADH_Q_LENGTH).s);
         return ADH_EINVAL;
     }
     if (!(s->ratio >= 1.0 && s->ratio <= ADH_RINGS_MAX_RATIO)) {
@@ -22,13 +23,13 @@ int adh_rings_spec_validate(const adh_rings_spec *s, char *why, size_t whylen)
         return ADH_EINVAL;
     }
     if (!(isfinite(s->rmax) && s->rmax >= s->fine)) {
-        snprintf(why, whylen, "grid radius %g m is not allowed: it must be at least the fine band's %g m", s->rmax, s->fine);
+        snprintf(why, whylen, "grid radius %s is not allowed: it must be at least the fine band's %s", adh_qtext(s->rmax, ADH_Q_LENGTH).s, adh_qtext(s->fine, ADH_Q_LENGTH).s);
         return ADH_EINVAL;
     }
     /* Bounds the ring count: a ratio of 1 past the band is a uniform grid. */
     if (s->rmax / s->dr > 1e8) {
-        snprintf(why, whylen, "grid radius %g m over fine width %g m is %g rings wide: at most 1e8 is allowed",
-                 s->rmax, s->dr, s->rmax / s->dr);
+        snprintf(why, whylen, "grid radius %s over fine width %s is %g rings wide: at most 1e8 is allowed",
+                 adh_qtext(s->rmax, ADH_Q_LENGTH).s, adh_qtext(s->dr, ADH_Q_LENGTH).s, s->rmax / s->dr);
         return ADH_EINVAL;
     }
     return ADH_SUCCESS;
@@ -220,8 +221,8 @@ int adh_rings_check(const adh_grid *g, const adh_material *m, double lowest, cha
         return ADH_SUCCESS;
     double a_est = adh_rings_contact_estimate(m, lowest), fine = adh_rings_fine_radius(g);
     if (a_est > 0.9 * fine) {
-        snprintf(why, whylen, "fine band radius %g m is too short: the contact at h0 = %g m may reach %g m, and its edge must stay inside the band; use a larger fine band",
-                 fine, lowest, a_est);
+        snprintf(why, whylen, "fine band radius %s is too short: the contact at h0 = %s may reach %s, and its edge must stay inside the band; use a larger fine band",
+                 adh_qtext(fine, ADH_Q_LENGTH).s, adh_qtext(lowest, ADH_Q_LENGTH).s, adh_qtext(a_est, ADH_Q_LENGTH).s);
         set_fix(fix, ADH_FIX_FINE_BAND);
         return ADH_EGRID;
     }
@@ -238,14 +239,14 @@ unsigned adh_rings_edge_fix(const adh_grid *g, double a)
 void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len)
 {
     if (a >= 0.9 * g->rmax)
-        snprintf(buf, len, "the contact radius a = %.4g m reached the grid's edge (0.9 Rmax = %.4g m): use %s", a,
-                 0.9 * g->rmax, g->graded ? "a larger grid radius" : "more nodes or a larger spacing");
+        snprintf(buf, len, "the contact radius a = %s reached the grid's edge (0.9 Rmax = %s): use %s", adh_qtext(a, ADH_Q_LENGTH).s,
+                 adh_qtext(0.9 * g->rmax, ADH_Q_LENGTH).s, g->graded ? "a larger grid radius" : "more nodes or a larger spacing");
     else if (!adh_rings_resolves(g, a))
-        snprintf(buf, len, "the contact radius a = %.4g m left the graded grid's fine band (%.4g m), where the rings "
-                 "grow too coarse for the contact's edge: widen the fine band or turn shallower", a,
-                 adh_rings_fine_radius(g));
+        snprintf(buf, len, "the contact radius a = %s left the graded grid's fine band (%s), where the rings "
+                 "grow too coarse for the contact's edge: widen the fine band or turn shallower", adh_qtext(a, ADH_Q_LENGTH).s,
+                 adh_qtext(adh_rings_fine_radius(g), ADH_Q_LENGTH).s);
     else
-        snprintf(buf, len, "the contact radius a = %.4g m is within the grid (Rmax = %.4g m)", a, g->rmax);
+        snprintf(buf, len, "the contact radius a = %s is within the grid (Rmax = %s)", adh_qtext(a, ADH_Q_LENGTH).s, adh_qtext(g->rmax, ADH_Q_LENGTH).s);
 }
 
 /* The contact radius at the deepest position, generously: JKR's a for the
@@ -324,33 +325,33 @@ int adh_rings_choose(const adh_material *m, adh_grid_use use, double deepest, in
          * sphere past 0.3 R, and the contact or the force's tail needs more */
         snprintf(why, whylen,
                  "sigma = %.3g: the contact at the deepest turn and the force's tail beyond it need the grid out "
-                 "to Rmax = %.3g m, beyond 0.3 R = %.3g m where the paraboloid gap (eq 3) stops describing a "
-                 "sphere; use a larger R, a shallower turn (the deepest is %.3g m), or a stiffer material",
-                 d.sigma, need, 0.3 * m->R, deepest);
+                 "to Rmax = %s, beyond 0.3 R = %s where the paraboloid gap (eq 3) stops describing a "
+                 "sphere; use a larger R, a shallower turn (the deepest is %s), or a stiffer material",
+                 d.sigma, adh_qtext(need, ADH_Q_LENGTH).s, adh_qtext(0.3 * m->R, ADH_Q_LENGTH).s, adh_qtext(deepest, ADH_Q_LENGTH).s);
         set_fix(fix, ADH_FIX_RADIUS | ADH_FIX_TURNS);
         return ADH_EGRID;
     }
     if (nn > budget) {
         snprintf(why, whylen,
-                 "sigma = %.3g needs a grid spacing of at most %.3g m (%.2g edge-zone widths of %.3g m) "
-                 "out to Rmax = %.3g m: a %s grid of N = %zu nodes (%s of %.0f MB), beyond this program's "
+                 "sigma = %.3g needs a grid spacing of at most %s (%.2g edge-zone widths of %s) "
+                 "out to Rmax = %s: a %s grid of N = %zu nodes (%s of %.0f MB), beyond this program's "
                  "budget of N = %zu (%.0f MB). A grid chosen by hand runs marked resolved 0 where it is "
                  "coarser than the resolved limit; use a stiffer material or a smaller sigma, or choose N or "
                  "the spacing yourself and run it anyway",
-                 d.sigma, limit, widths, adh_edge_zone(m), c->rmax, kind, nn,
+                 d.sigma, adh_qtext(limit, ADH_Q_LENGTH).s, widths, adh_qtext(adh_edge_zone(m), ADH_Q_LENGTH).s, adh_qtext(c->rmax, ADH_Q_LENGTH).s, kind, nn,
                  c->hierarchical ? "an H^2 kernel" : "a dense kernel", held, budget, held_max);
         set_fix(fix, ADH_FIX_NODES | ADH_FIX_SPACING | ADH_FIX_FORCE);
         return ADH_EGRID;
     }
     if (use == ADH_GRID_STATIC && nn > ADH_GRID_STATIC_MAX_NODES) {
         snprintf(why, whylen,
-                 "sigma = %.3g: a resolved static curve needs a grid spacing of at most %.3g m (%.2g edge-zone "
-                 "widths of %.3g m), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps, "
+                 "sigma = %.3g: a resolved static curve needs a grid spacing of at most %s (%.2g edge-zone "
+                 "widths of %s), a %s grid of N = %zu nodes (%.0f MB kernel), and its Newton steps, "
                  "though they step the contact line over many rings at once, cost more with N: beyond N = %d "
                  "(19 s on one core at sigma = 100, 12875 rings) it was not measured. A grid chosen by hand "
                  "runs marked resolved 0 where it is coarser than the limit; use the relaxation (resolved at "
                  "this sigma), a stiffer material, or choose N or the spacing yourself and run it anyway",
-                 d.sigma, limit, widths, adh_edge_zone(m), kind, nn, held, ADH_GRID_STATIC_MAX_NODES);
+                 d.sigma, adh_qtext(limit, ADH_Q_LENGTH).s, widths, adh_qtext(adh_edge_zone(m), ADH_Q_LENGTH).s, kind, nn, held, ADH_GRID_STATIC_MAX_NODES);
         set_fix(fix, ADH_FIX_MODE | ADH_FIX_NODES | ADH_FIX_SPACING | ADH_FIX_FORCE);
         return ADH_EGRID;
     }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 void adh_run_init(adh_run *run)
 {
@@ -36,9 +37,9 @@ int adh_run_separated(const adh_run *run, char *why, size_t whylen)
                 h_end = run->rows[j].h0;
                 break;
             }
-        snprintf(why, whylen, "the surfaces never separated: unloading from the turn at h0 = %.4g m ended at "
-                 "h0 = %.4g m still in contact (contact radius %.4g m), so there is no jump-out and the "
-                 "pull-off is only the lowest force seen", t->h0, h_end, a_end);
+        snprintf(why, whylen, "the surfaces never separated: unloading from the turn at h0 = %s ended at "
+                 "h0 = %s still in contact (contact radius %s), so there is no jump-out and the "
+                 "pull-off is only the lowest force seen", adh_qtext(t->h0, ADH_Q_LENGTH).s, adh_qtext(h_end, ADH_Q_LENGTH).s, adh_qtext(a_end, ADH_Q_LENGTH).s);
         return 0;
     }
     return 1;
@@ -55,10 +56,10 @@ int adh_run_touched(const adh_run *run, double h_star, char *why, size_t whylen)
     }
     if (run->nrows == 0)
         return 1;
-    snprintf(why, whylen, "the surfaces never came into contact: the drive turned at h0 = %.4g m with the contact "
+    snprintf(why, whylen, "the surfaces never came into contact: the drive turned at h0 = %s with the contact "
              "radius still 0, so there is no jump-in, pull-off or jump-out, and the lowest force is only the force "
              "at the turn; put the turn below the jump into contact, at h0 = 0 for one (eq 24's gap there is "
-             "h* = %.4g m)", turn, h_star);
+             "h* = %s)", adh_qtext(turn, ADH_Q_LENGTH).s, adh_qtext(h_star, ADH_Q_LENGTH).s);
     return 0;
 }
 

@@ -3,6 +3,7 @@
  * effect: static_arclength.c, or static_qstep.c with static_front.c), and
  * the accepted point's bookkeeping. The parts are listed in
  * src/core/static.h. */
+#include "adhere/units.h"
 #include "adhere/static.h"
 #include "adhere/clock.h"
 
@@ -54,7 +55,8 @@ int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t
     if (!(s->active_tol >= 0 && s->active_tol <= 1))
         BAD("active_tol %g is not allowed: it must be from 0 to 1", s->active_tol);
     if (!isnan(s->h0_start) && !(isfinite(s->h0_start) && s->h0_start > s->h0_end))
-        BAD("static start %g m must be finite and above the end %g m", s->h0_start, s->h0_end);
+        BAD("static start %s must be finite and above the end %s", adh_qtext(s->h0_start, ADH_Q_LENGTH).s,
+            adh_qtext(s->h0_end, ADH_Q_LENGTH).s);
     if (!isfinite(s->h0_end))
         BAD("static end position must be finite");
     if (s->lattice_skip < -1 || s->lattice_skip > 1)

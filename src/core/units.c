@@ -177,18 +177,64 @@ void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, si
         { "T", 1e12 }, { "G", 1e9 }, { "M", 1e6 }, { "k", 1e3 }, { "", 1 },
         { "m", 1e-3 }, { "u", 1e-6 }, { "n", 1e-9 }, { "p", 1e-12 }, { "f", 1e-15 },
     };
-    if (q == ADH_Q_NONE || !isfinite(value) || value == 0) {
-        snprintf(buf, len, "%.*g %s", digits, value, unit_sym[q]);
+    /* zero in the prefix its quantity is read in: "0 nm" beside "2.85 nm" */
+    static const char *const zero_prefix[] = {
+        [ADH_Q_NONE] = "", [ADH_Q_LENGTH] = "n", [ADH_Q_PRESSURE] = "", [ADH_Q_ENERGY] = "",
+        [ADH_Q_SPEED] = "u", [ADH_Q_FORCE] = "n",
+    };
+    if (value == 0) {
+        snprintf(buf, len, "0%s%s%s", q == ADH_Q_NONE ? "" : " ", zero_prefix[q], unit_sym[q]);
+        return;
+    }
+    if (q == ADH_Q_NONE || !isfinite(value)) {
+        snprintf(buf, len, "%.*g%s%s", digits, value, q == ADH_Q_NONE ? "" : " ", unit_sym[q]);
         return;
     }
     double a = fabs(value);
     size_t i = 0, n = sizeof pick / sizeof pick[0];
     while (i + 1 < n && a < pick[i].f * 0.9995)
         i++;
+    /* past the prefixes' reach (1e-30 m, 1e15 Pa): SI with its exponent */
+    if (a < pick[n - 1].f * 0.9995 || a >= pick[0].f * 999.5) {
+        snprintf(buf, len, "%.*g %s", digits, value, unit_sym[q]);
+        return;
+    }
     /* Energies read better in plain J with an exponent (1e-19 J, not 100 zJ). */
     if (q == ADH_Q_ENERGY) {
         snprintf(buf, len, "%.*g J", digits, value);
         return;
     }
     snprintf(buf, len, "%.*g %s%s", digits, value / pick[i].f, pick[i].sym, unit_sym[q]);
+}
+
+adh_qtext_buf adh_qtext(double value, adh_quantity q)
+{
+    adh_qtext_buf t;
+    adh_format_quantity(value, q, 4, t.s, sizeof t.s);
+    return t;
+}
+
+adh_qtext_buf adh_qtext_arg(double value, adh_quantity q)
+{
+    adh_qtext_buf t = adh_qtext(value, q);
+    char *sp = strchr(t.s, ' ');
+    if (sp)
+        memmove(sp, sp + 1, strlen(sp));
+    return t;
+}
+
+int adh_quantity_is_bare(const char *text)
+{
+    for (const char *p = text; p && *p;) {
+        char *end;
+        strtod(p, &end);
+        if (end == p)
+            return 0;
+        while (*end == ' ' || *end == '\t')
+            end++;
+        if (*end && *end != ',')
+            return 0;
+        p = *end == ',' ? end + 1 : end;
+    }
+    return 1;
 }

@@ -99,3 +99,4 @@ void adh_format_modulus(double v, char *buf, size_t len)
     else
         snprintf(buf, len, "%.3g kPa", v * 1e-3);
 }
+

@@ -46,7 +46,7 @@ struct adh_outdir {
 /* Every name any mode writes (batch, sweep, cost, the TUI's plot key);
  * adhere(1) lists the same under FILES. */
 static const char *const owned[] = {
-    "force.tsv", "summary.tsv", "turns.tsv", "static.tsv", "profiles.tsv", "contact.tsv",
+    "force.tsv", "summary.tsv", "turns.tsv", "static.tsv", "profiles.tsv", "contact.tsv", "models.tsv",
     "sweep.tsv", "cost.tsv", "fit.tsv", "fit-points.tsv", "best.scene", "fit.png",
     "force.png", "profile.png", "contact.png", "precontact.png", "bulge.png", "jump.png", "cost.png",
     "gnuplot.log", "gnuplot-figures.log", ADH_OUTDIR_MANIFEST,

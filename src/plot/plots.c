@@ -16,8 +16,10 @@
 #include "adhere/maugis.h"
 #include "adhere/models.h"
 #include "adhere/params.h"
+#include "plot/axes.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
+#include "plot/models.h"
 #include "plot/outdir.h"
 #include "plot/png.h"
 #include "plot/session.h"
@@ -227,7 +229,7 @@ static void unload_title(const adh_turn_result *tr, int nunload, int *labelled, 
     if (nunload > MAX_LABELLED_UNLOADS)
         snprintf(title, len, (*labelled)++ ? "notitle" : "title \"unloading (%d branches)\"", nunload);
     else if (tr)
-        snprintf(title, len, "title \"unloading from h_0 = %.3g nm\"", tr->h0 * 1e9);
+        snprintf(title, len, "title \"unloading from %.3g nm\"", tr->h0 * 1e9);
     else
         snprintf(title, len, "title \"unloading\"");
 }
@@ -254,10 +256,11 @@ static int finish_figure(plotter *pl, const char *name)
 
 /* ---------------------------------------------------------------- force */
 
-/* One dataset: the rows of path whose stability is `stable`, plus the row
- * after each such stretch so dashed and solid stretches meet; a blank line
- * breaks the curve between stretches. Returns its index or -1 if empty. */
-static int write_force_set(datafile *df, const adh_run *run, int path, int stable)
+/* One dataset: h0 and the force (radius: the contact radius) of the rows
+ * of path whose stability is `stable`, plus the row after each such
+ * stretch so dashed and solid stretches meet; a blank line breaks the
+ * curve between stretches. Returns its index or -1 if empty. */
+static int write_stability_set(datafile *df, const adh_run *run, int path, int stable, int radius)
 {
     int prev_stable = -1;
     if (set_begin(df) < 0)
@@ -267,7 +270,7 @@ static int write_force_set(datafile *df, const adh_run *run, int path, int stabl
         if (o->path != path)
             continue;
         if (o->stable == stable || prev_stable == stable)
-            set_point(df, o->h0, o->F);
+            set_point(df, o->h0, radius ? o->a : o->F);
         else
             set_break(df);
         prev_stable = o->stable;
@@ -296,10 +299,21 @@ static model_sets write_model_sets(datafile *df, const adh_model_curve *c)
     return ms;
 }
 
+/* Unloading branch k (path k) takes the k-th colour of the style and the
+ * k-th dash, cycling; when the colours and dashes would start over
+ * together, the dashes move on by one, so no two of the first colours x
+ * dashes branches look alike. */
+static void branch_styles(plotter *pl)
+{
+    adh_gnuplot_cmd(pl->gp, "adh_nc = words(adh_unload_colors); adh_nd = words(adh_unload_dashes)");
+    adh_gnuplot_cmd(pl->gp, "adh_ucol(p) = word(adh_unload_colors, 1 + (p - 1) %% adh_nc)");
+    adh_gnuplot_cmd(pl->gp, "adh_udash(p) = int(word(adh_unload_dashes, 1 + ((p - 1) + (p - 1) / adh_nc * "
+                    "(adh_nc %% adh_nd == 0)) %% adh_nd))");
+}
+
 static void unload_color(int path, char *buf, size_t len)
 {
-    snprintf(buf, len, "lc rgb word(adh_unload_colors, 1 + %d %% words(adh_unload_colors))",
-             path - 1);
+    snprintf(buf, len, "lc rgb adh_ucol(%d)", path);
 }
 
 /* What force.png is drawn from, gathered step by step. */
@@ -322,6 +336,10 @@ typedef struct force_fig {
     const char *funit;
     int nunload;                   /* unloading branches drawn */
     double lo, hi;                 /* the force axis */
+    double xright;                 /* the position axis's right end, m */
+    int panel;                     /* the adhesion panel beside it (two turns or more) */
+    int keyrows;                   /* the key's rows, three entries a row, under both panels */
+    double bmargin;                /* both panels' bottom margin, character heights: the key's room */
 } force_fig;
 
 static void force_grow(force_fig *ff, double h0, double F)
@@ -339,13 +357,13 @@ static void force_curves(plotter *pl, force_fig *ff, datafile *df)
     const adh_run *run = pl->run;
     for (int p = 0; p <= ff->np; p++)
         for (int s = 1; s >= 0; s--)
-            ff->set[2 * p + (1 - s)] = write_force_set(df, run, p, s);
+            ff->set[2 * p + (1 - s)] = write_stability_set(df, run, p, s, 0);
     set_begin(df);
+    double last = INFINITY;
     for (size_t i = 0; i < run->nrows; i++) {
         const adh_obs *o = &run->rows[i];
         force_grow(ff, o->h0, o->F);
-        /* eq 22 only means something while the rigid surfaces are apart */
-        if (o->path == 0 && o->h0 > 0 && isfinite(o->F_rigid))
+        if (adh_plot_rigid_point(o, &last))
             set_point(df, o->h0, o->F_rigid);
     }
     ff->rigid_set = df->points > 1 ? set_end(df) : (set_end(df), -1);
@@ -355,7 +373,7 @@ static void force_curves(plotter *pl, force_fig *ff, datafile *df)
     ff->ref_set[0] = ff->ref_set[1] = -1;
     if (ff->ref) {
         for (int s = 1; s >= 0; s--)
-            ff->ref_set[1 - s] = write_force_set(df, ff->ref, 0, s);
+            ff->ref_set[1 - s] = write_stability_set(df, ff->ref, 0, s, 0);
         for (size_t i = 0; i < ff->ref->nrows; i++)
             force_grow(ff, ff->ref->rows[i].h0, ff->ref->rows[i].F);
     }
@@ -385,23 +403,16 @@ static void force_curves(plotter *pl, force_fig *ff, datafile *df)
  * nothing), each over the whole width of the frame. -1 out of memory. */
 static int force_models(plotter *pl, force_fig *ff, datafile *df)
 {
-    ff->jkr = ff->dmt = ff->md = (model_sets){ -1, -1 };
-    ff->md_lambda = NAN;
-    if (!pl->s->rigid) {
-        adh_model_curve *mc = malloc(sizeof *mc);
-        if (!mc)
-            return -1;
-        const adh_material *mat = &pl->s->mat;
-        double h0_min = ff->xmin - ff->xpad;
-        if (adh_jkr_drive_curve(mat, h0_min, mc) == 0)
-            ff->jkr = write_model_sets(df, mc);
-        ff->md_lambda = adh_md_lambda(mat);
-        if (adh_md_drive_curve(mat, ff->md_lambda, h0_min, mc) == 0)
-            ff->md = write_model_sets(df, mc);
-        if (adh_dmt_drive_curve(mat, h0_min, mc) == 0)
-            ff->dmt = write_model_sets(df, mc);
-        free(mc);
-    }
+    adh_plot_models *m = malloc(sizeof *m);
+    if (!m)
+        return -1;
+    /* the curves of models.tsv: they start where force.png's frame does */
+    adh_plot_models_make(pl->s, ff->xmin - ff->xpad, m);
+    ff->jkr = write_model_sets(df, &m->curve[ADH_PLOT_JKR]);
+    ff->md = write_model_sets(df, &m->curve[ADH_PLOT_MD]);
+    ff->dmt = write_model_sets(df, &m->curve[ADH_PLOT_DMT]);
+    ff->md_lambda = m->lambda;
+    free(m);
     ff->models = ff->jkr.load >= 0 || ff->jkr.disp >= 0 || ff->md.load >= 0 || ff->md.disp >= 0 ||
                  ff->dmt.load >= 0 || ff->dmt.disp >= 0;
     ff->any_disp = ff->jkr.disp >= 0 || ff->md.disp >= 0 || ff->dmt.disp >= 0;
@@ -451,20 +462,43 @@ static int adhesion_data(plotter *pl, force_fig *ff)
     return data_close(pl, f, ff->adh) < 0 ? -1 : 0;
 }
 
-/* The force axis: its unit, and a range whose top leaves the key room.
- * The key sits top right, where the force has decayed to about zero; the
- * top of the frame is raised until the key clears every computed curve in
- * the right 60 %. The rigid force, which shoots up near h0 = z0, may pass
- * behind the (opaque) key: it is only a reference. */
+
+/* The largest h0 of run's rows, or active, at which |F| reaches 1 % of
+ * span: where its curves have not yet flattened to zero. */
+static double rows_active(const adh_run *run, double span, double active)
+{
+    for (size_t i = 0; run && i < run->nrows; i++)
+        if (fabs(run->rows[i].F) >= 0.01 * span && run->rows[i].h0 > active)
+            active = run->rows[i].h0;
+    return active;
+}
+
+/* The force axis: its unit and a range round the computed curves and the
+ * deepest model pull-off (the key sits below the frame: no room is kept
+ * for it); the position axis to where the curves have flattened. The rigid
+ * force, which shoots up near h0 = z0, runs off the top: it is only a
+ * reference. */
 static void force_frame(plotter *pl, force_fig *ff)
 {
-    const adh_run *run = pl->run;
     const adh_derived *d = &pl->d;
     double big = fmax(fabs(ff->flo), fmax(fabs(ff->fhi), fabs(d->F_dmt)));
     adh_force_unit(big, &ff->fscale, &ff->funit);
     ff->nunload = 0;
     for (int p = 1; p <= ff->np; p++)
         ff->nunload += ff->set[2 * p] >= 0 || ff->set[2 * p + 1] >= 0;
+    double lo = fmin(ff->flo, pl->s->rigid ? ff->flo : d->F_dmt), hi = fmax(ff->fhi, 0.0);
+    double span = hi - lo;
+    lo -= 0.04 * span;
+    hi += 0.04 * span;
+    ff->lo = lo;
+    ff->hi = hi;
+    /* the measured points are data too: the frame keeps them whole */
+    double active = rows_active(ff->ref, span, rows_active(pl->run, span, ff->xmin));
+    for (const adh_measured *m = pl->s->measured; m; m = m->next)
+        for (size_t i = 0; i < m->n; i++)
+            active = fmax(active, m->h0[i]);
+    ff->xright = adh_plot_active_right(active, ff->xmin, ff->xmax + ff->xpad);
+    /* the key below, in up to three columns: the tics, the label and its rows */
     int nmodel = ff->models ? (ff->jkr.load >= 0 || ff->jkr.disp >= 0) + (ff->md.load >= 0 || ff->md.disp >= 0) +
                               (ff->dmt.load >= 0 || ff->dmt.disp >= 0) + ff->any_disp
                             : 2;
@@ -472,27 +506,35 @@ static void force_frame(plotter *pl, force_fig *ff)
     for (int i = 0; i < 2 * ff->nmeas; i++)
         nmeas_sets += ff->meas_set[i] >= 0;
     int nkey = (ff->set[0] >= 0) + (ff->set[1] >= 0) + (ff->rigid_set >= 0) + nmodel + nmeas_sets +
-               (ff->ref_set[0] >= 0 || ff->ref_set[1] >= 0) +
+               (ff->ref_set[0] >= 0 || ff->ref_set[1] >= 0) + ff->panel +
                (ff->nunload > MAX_LABELLED_UNLOADS ? 1 : ff->nunload);
-    /* (the model curves are only references too: they neither set the
-     * range nor push the key) */
-    double right = 0, xcut = ff->xmin + 0.4 * (ff->xmax - ff->xmin);
-    for (size_t i = 0; i < run->nrows; i++) {
-        const adh_obs *o = &run->rows[i];
-        if (o->h0 < xcut)
-            continue;
-        right = fmax(right, o->F);
+    ff->keyrows = (nkey + 2) / 3;
+    ff->bmargin = 4.2 + 1.05 * ff->keyrows;
+}
+
+/* The style and key title of path p's stretch (stable or not). */
+static void run_clause_style(plotter *pl, const force_fig *ff, int p, int stable, int *labelled, char *style,
+                             size_t slen, char *title, size_t tlen)
+{
+    if (p == 0) {
+        snprintf(style, slen, "ls 1%s", stable ? "" : " lw 1.2 dt adh_unstable_dash");
+        /* the static mode's path 0 is the whole equilibrium curve */
+        if (pl->s->equilibrium)
+            snprintf(title, tlen, "title \"%s\"", stable ? "static equilibrium" : "unstable (displacement control)");
+        else
+            snprintf(title, tlen, "title \"loading%s\"", stable ? "" : " (unstable)");
+        return;
     }
-    for (size_t i = 0; ff->ref && i < ff->ref->nrows; i++)
-        if (ff->ref->rows[i].h0 >= xcut)
-            right = fmax(right, ff->ref->rows[i].F);
-    double lo = fmin(ff->flo, d->F_dmt);
-    double frac = fmin(0.6, (17.0 * nkey + 16.0) / 470.0);
-    double hi = fmax(ff->fhi, (right - frac * lo) / (1.0 - frac));
-    lo -= 0.04 * (hi - lo);
-    hi += 0.02 * (hi - lo);
-    ff->lo = lo;
-    ff->hi = hi;
+    char lc[128];
+    unload_color(p, lc, sizeof lc);
+    if (stable)
+        snprintf(style, slen, "%s lw adh_unloading_width dt adh_udash(%d)", lc, p);
+    else
+        snprintf(style, slen, "%s lw 1 dt adh_unstable_dash", lc);
+    if (!stable)
+        snprintf(title, tlen, "notitle");
+    else
+        unload_title(turn_of_path(pl->run, p), ff->nunload, labelled, title, tlen);
 }
 
 /* The plot command's curves: the static reference underneath (its
@@ -509,60 +551,57 @@ static void force_run_clauses(plotter *pl, const force_fig *ff, FILE *c, const c
             int idx = ff->set[2 * p + (1 - s)];
             if (idx < 0)
                 continue;
-            char style[200], title[160];   /* style: a 127-byte colour and its widths: never cut */
-            if (p == 0) {
-                snprintf(style, sizeof style, "ls 1%s",
-                         s ? "" : " lw 1.2 dt adh_unstable_dash");
-                /* the static mode's path 0 is the whole equilibrium curve */
-                if (pl->s->equilibrium)
-                    snprintf(title, sizeof title, "title \"%s\"",
-                             s ? "static equilibrium" : "unstable (displacement control)");
-                else
-                    snprintf(title, sizeof title, "title \"loading%s\"",
-                             s ? "" : " (unstable)");
-            } else {
-                char lc[128];
-                unload_color(p, lc, sizeof lc);
-                snprintf(style, sizeof style, "%s lw %s%s", lc,
-                         s ? "adh_unloading_width" : "1", s ? "" : " dt adh_unstable_dash");
-                const adh_turn_result *tr = turn_of_path(pl->run, p);
-                if (!s)
-                    snprintf(title, sizeof title, "notitle");
-                else
-                    unload_title(tr, ff->nunload, &labelled, title, sizeof title);
-            }
+            char style[200], title[160];   /* style: a colour, its width and dash: never cut */
+            run_clause_style(pl, ff, p, s, &labelled, style, sizeof style, title, sizeof title);
             fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines %s %s", qdat,
                     idx, style, title);
         }
     }
 }
 
-/* The references over the run and the key's entries for them: the models
- * thin (where they agree with the run both show; the load-controlled part
- * in the model's line, the part past the pull-off short-dashed), eq 22,
- * the measured points. Their key entries come after the run's. */
+/* The model curves, the load-controlled part in the model's line and the
+ * part past the pull-off in the same dash, thin and grey. Maugis-Dugdale
+ * is a grey band under the others: where it and JKR agree (lambda above
+ * 3) JKR's dashes show on it. */
+static const struct { int ls; const char *name; } model_line[3] = { { 8, "md" }, { 3, "jkr" }, { 4, "dmt" } };
+
+static const model_sets *model_of(const force_fig *ff, int k)
+{
+    return k == 0 ? &ff->md : k == 1 ? &ff->jkr : &ff->dmt;
+}
+
+static void force_model_clauses(const force_fig *ff, FILE *c, const char *qdat, int band)
+{
+    for (int k = 0; k < 3; k++) {
+        const model_sets *ms = model_of(ff, k);
+        if ((k == 0) != band)
+            continue;
+        if (ms->load >= 0)
+            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls %d notitle", qdat, ms->load,
+                    model_line[k].ls);
+        if (ms->disp >= 0)
+            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls %d lc rgb adh_model_disp_color "
+                       "lw %s notitle", qdat, ms->disp, model_line[k].ls, k == 0 ? "2" : "1");
+    }
+}
+
+/* The references over the run and the key's entries for them: eq 22, the
+ * measured points, the models. Their key entries come after the run's. */
 static void force_reference_clauses(plotter *pl, const force_fig *ff, FILE *c, const char *qdat)
 {
     const adh_derived *d = &pl->d;
-    const struct { model_sets ms; int ls; } mod[3] = { { ff->jkr, 3 }, { ff->md, 8 }, { ff->dmt, 4 } };
-    for (int k = 0; k < 3; k++) {
-        if (mod[k].ms.load >= 0)
-            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls %d notitle", qdat,
-                    mod[k].ms.load, mod[k].ls);
-        if (mod[k].ms.disp >= 0)
-            fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls %d "
-                       "dt adh_model_disp_dash notitle", qdat, mod[k].ms.disp, mod[k].ls);
-    }
+    force_model_clauses(ff, c, qdat, 0);
     if (ff->rigid_set >= 0)
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with lines ls 2 "
                    "title \"rigid spheres (eq 22)\"", qdat, ff->rigid_set);
     /* each file in the key by its name: the user's text, quoted so that
      * gnuplot expands nothing in it (adh_gp_quote); approach points open
-     * circles, retract points open triangles */
+     * circles, retract points open triangles; the files in black and
+     * greys, apart from the run's colours */
     for (int i = 0; i < 2 * ff->nmeas; i++) {
         if (ff->meas_set[i] < 0)
             continue;
-        static const char *const colors[] = { "#222222", "#8e44ad", "#16a085", "#d35400" };
+        static const char *const colors[] = { "#000000", "#555555", "#888888", "#aaaaaa" };
         char name[ADH_GP_QUOTED_SIZE(128)];
         adh_gp_quoted(ff->meas_file[i / 2]->name, name, sizeof name);
         fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Fu) with points pt %d ps 0.8 lc rgb \"%s\" "
@@ -578,53 +617,67 @@ static void force_reference_clauses(plotter *pl, const force_fig *ff, FILE *c, c
                    "Fdmt*Fu)", ff->funit);
         return;
     }
-    for (int k = 0; k < 3; k++) {
-        const model_sets *ms = &mod[k].ms;
+    for (int k = 1; k < 4; k++) {
+        int m = k % 3;   /* JKR, DMT, then Maugis-Dugdale: the key in the paper's order */
+        const model_sets *ms = model_of(ff, m);
         if (ms->load < 0 && ms->disp < 0)
             continue;
-        /* short titles: the key must stay narrower than the right 60 %
-         * of the frame, also in the adhesion panel's layout (the man
-         * page says what the pull-offs are) */
-        char title[128];
-        if (k == 0)
+        char title[128];   /* short: the man page says what the pull-offs are */
+        if (m == 1)
             snprintf(title, sizeof title, "JKR, pull-off %.3g %s", d->F_jkr * ff->fscale, ff->funit);
-        else if (k == 1)
+        else if (m == 0)
             snprintf(title, sizeof title, "Maugis–Dugdale, λ = %.3g", ff->md_lambda);
         else
             snprintf(title, sizeof title, "DMT, pull-off %.3g %s", d->F_dmt * ff->fscale, ff->funit);
-        fprintf(c, ", \\\n  keyentry with lines ls %d%s title \"%s\"", mod[k].ls,
-                ms->load >= 0 ? "" : " dt adh_model_disp_dash", title);
+        fprintf(c, ", \\\n  keyentry with lines ls %d%s title \"%s\"", model_line[m].ls,
+                ms->load >= 0 ? "" : " lc rgb adh_model_disp_color", title);
     }
     if (ff->any_disp)
-        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#555555\" lw 1.4 dt adh_model_disp_dash "
-                   "title \"models past pull-off\"");
+        fprintf(c, ", \\\n  keyentry with lines ls 3 lc rgb adh_model_disp_color lw 1 "
+                   "title \"models past pull-off (grey)\"");
+    if (ff->panel)
+        fprintf(c, ", \\\n  keyentry with linespoints ls 6 title \"adhesion vs max load (right)\"");
 }
 
-/* The force panel: frame, then one plot command built clause by clause.
- * -1 out of memory. */
+/* The force panel: frame, the key below it, then one plot command built
+ * clause by clause: the Maugis-Dugdale band under everything, the run's
+ * curves, the references over them. -1 out of memory. */
 static int force_panel(plotter *pl, const force_fig *ff)
 {
-    double pad = 0;
     adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(pl->gp, "set ylabel \"force F (%s)\"", ff->funit);
-    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (ff->xmin - ff->xpad) * 1e9,
-                    (ff->xmax + ff->xpad) * 1e9);
-    adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", (ff->lo - pad) * ff->fscale,
-                    (ff->hi + pad) * ff->fscale);
-    adh_gnuplot_cmd(pl->gp, "set key top right");
+    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (ff->xmin - ff->xpad) * 1e9, ff->xright * 1e9);
+    adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", ff->lo * ff->fscale, ff->hi * ff->fscale);
+    adh_gnuplot_cmd(pl->gp, "set key at screen 0.5, screen 0.01 center bottom vertical maxrows %d width -2", ff->keyrows);
+    adh_gnuplot_cmd(pl->gp, "set bmargin %.3g", ff->bmargin);
+    branch_styles(pl);
     char *cmd = NULL, q[ADH_GP_PATH_SIZE];
     size_t cmdcap = 0;
     FILE *c = open_memstream(&cmd, &cmdcap);
     if (!c)
         return -1;
-    fprintf(c, "plot 0 ls 7 notitle");
     const char *qdat = adh_gp_path(ff->dat, q, sizeof q);
+    fprintf(c, "plot 0 ls 7 notitle");
+    force_model_clauses(ff, c, qdat, 1);
     force_run_clauses(pl, ff, c, qdat);
     force_reference_clauses(pl, ff, c, qdat);
     fclose(c);
     adh_gnuplot_cmd(pl->gp, "%s", cmd);
     free(cmd);
     return 0;
+}
+
+/* The characters of the labels of the tics every step from lo to hi, a
+ * space between each. */
+static int tic_chars(double lo, double hi, double step)
+{
+    int n = 0;
+    for (double k = ceil(lo / step); k * step <= hi * (1 + 1e-12) && n < 1000; k++) {
+        char t[32];
+        double v = fabs(k) < 1e-9 ? 0 : k * step;   /* no "-0", no 1e-17 */
+        n += snprintf(t, sizeof t, "%g", v) + 2;
+    }
+    return n;
 }
 
 /* The adhesion panel at the right (two turns or more): adhesion against
@@ -655,6 +708,9 @@ static void adhesion_panel(plotter *pl, const force_fig *ff, double top)
         double step = nice_step((hi_ - lo_) / 3.0);
         for (int k = 0; k < 6 && floor(hi_ / step) - ceil(lo_ / step) + 1 < 3; k++)
             step = nice_below(step);
+        /* their labels must not touch: some 30 characters fit the panel */
+        while (tic_chars(lo_, hi_, step) > 30)
+            step = nice_step(1.01 * step * 1.5);
         adh_gnuplot_cmd(pl->gp, "set xtics %.17g", step);
         /* an explicit range, so the JKR and DMT lines span the panel */
         adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo_, hi_);
@@ -664,18 +720,19 @@ static void adhesion_panel(plotter *pl, const force_fig *ff, double top)
     amin = fmin(amin, -d->F_jkr * fscale);
     amax = fmax(amax, -d->F_dmt * fscale);
     if (amax > amin) {
-        /* room below the lowest line (JKR's, as a rule) for the key */
-        double span = amax - amin, lo_ = amin - 0.35 * span, hi_ = amax + 0.1 * span;
+        double span = amax - amin, lo_ = amin - 0.1 * span, hi_ = amax + 0.1 * span;
         double step = nice_step((hi_ - lo_) / 6.0);
         adh_gnuplot_cmd(pl->gp, "set ytics %.17g", step);
         adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", lo_, hi_);
     }
     adh_gnuplot_cmd(pl->gp, "set ylabel \"adhesion −F_{min} (%s)\"", ff->funit);
-    adh_gnuplot_cmd(pl->gp, "set key bottom right");
+    /* its entries are in the force panel's key, whose room below it keeps */
+    adh_gnuplot_cmd(pl->gp, "unset key");
+    adh_gnuplot_cmd(pl->gp, "set bmargin %.3g", ff->bmargin);
     adh_gnuplot_cmd(pl->gp,
-                    "plot %s using ($1*Fu):($2*Fu) with linespoints ls 6 title \"adhesion\", "
-                    "-Fjkr*Fu with lines ls 3 title \"JKR\", "
-                    "-Fdmt*Fu with lines ls 4 title \"DMT\"",
+                    "plot %s using ($1*Fu):($2*Fu) with linespoints ls 6 notitle, "
+                    "-Fjkr*Fu with lines ls 3 notitle, "
+                    "-Fdmt*Fu with lines ls 4 notitle",
                     adh_gp_path(ff->adh, q, sizeof q));
     adh_gnuplot_cmd(pl->gp, "unset multiplot");
 }
@@ -698,6 +755,7 @@ static int plot_force(plotter *pl)
         free(ff.set);
         return -1;
     }
+    ff.panel = ff.nadh >= 2;
     force_frame(pl, &ff);
     char heading[HEADING_SIZE];
     title_string(pl, "Force vs position", heading, sizeof heading);
@@ -706,7 +764,7 @@ static int plot_force(plotter *pl)
     adh_gnuplot_cmd(pl->gp, "Fu = %.17g", ff.fscale);
     adh_gnuplot_cmd(pl->gp, "Fjkr = %.17g", d->F_jkr);
     adh_gnuplot_cmd(pl->gp, "Fdmt = %.17g", d->F_dmt);
-    int panel = ff.nadh >= 2;
+    int panel = ff.panel;
     /* a two-line heading (scene title) needs more room above the panels,
      * or it runs into the adhesion panel's top */
     double top = has_title(pl) ? 0.90 : 0.95;
@@ -798,7 +856,7 @@ static void profile_clauses(plotter *pl, const profile_fig *pf, FILE *c, const c
 {
     const adh_run *run = pl->run;
     fprintf(c, "plot (htop + (x*1e-6)**2/(2*R))*1e9 with lines ls 5 "
-               "title \"undeformed sphere, h_0 = %.3g nm\"", pf->pos[0] * 1e9);
+               "title \"undeformed, %.3g nm\"", pf->pos[0] * 1e9);
     int titled[ADH_MAX_PROFILES * 2] = { 0 };
     int any_unload = 0, any_load = 0;
     for (int pass = 0; pass < 2; pass++) {
@@ -815,7 +873,7 @@ static void profile_clauses(plotter *pl, const profile_fig *pf, FILE *c, const c
              * only the top and bottom ones are named */
             int named = pf->npos <= 16 || j == 0 || j + 1 == pf->npos;
             if (named && j < sizeof titled / sizeof titled[0] && !titled[j]) {
-                snprintf(title, sizeof title, "title \"h_0 = %.3g nm\"", pr->h0 * 1e9);
+                snprintf(title, sizeof title, "title \"%.3g nm\"", pr->h0 * 1e9);
                 titled[j] = 1;
             }
             any_unload |= !loading;
@@ -827,11 +885,11 @@ static void profile_clauses(plotter *pl, const profile_fig *pf, FILE *c, const c
         }
     }
     if (any_load)
-        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 2 dt 1 "
+        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#888888\" lw 2 dt 1 "
                    "title \"loading\"");
     if (any_unload)
-        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#000000\" lw 1.6 dt 2 "
-                   "title \"unloading from h_0 = %.3g nm\"", pf->main_turn->h0 * 1e9);
+        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#888888\" lw 1.6 dt 2 "
+                   "title \"unloading from %.3g nm\"", pf->main_turn->h0 * 1e9);
 }
 
 /* The frame: wide enough to show the contact and the flank beyond it,
@@ -856,16 +914,14 @@ static int profile_figure(plotter *pl, const profile_fig *pf)
     adh_gnuplot_cmd(pl->gp, "set ylabel \"local separation h(r) (nm)\"");
     adh_gnuplot_cmd(pl->gp, "set xrange [0:%.17g]", xmax * 1e6);
     adh_gnuplot_cmd(pl->gp, "set yrange [0:%.17g]", ymax * 1e9);
-    adh_gnuplot_cmd(pl->gp, "set key outside right top");
+    adh_gnuplot_cmd(pl->gp, "set key outside right top vertical title \"h_0\" noautotitle");
     adh_gnuplot_cmd(pl->gp, "set samples 400");
     adh_gnuplot_cmd(pl->gp, "R = %.17g", R);
     adh_gnuplot_cmd(pl->gp, "htop = %.17g", top);
-    /* few positions take colours spread over the whole list, not its first
-     * (similar) few; more positions than colours cycle */
-    adh_gnuplot_cmd(pl->gp, "adh_ncol = words(adh_profile_colors)");
-    adh_gnuplot_cmd(pl->gp, "adh_pcol(j) = word(adh_profile_colors, %zu > 1 && %zu <= adh_ncol "
-                    "? 1 + int(j * (adh_ncol - 1.0) / %zu + 0.5) : 1 + j %% adh_ncol)",
-                    pf->npos, pf->npos, pf->npos > 1 ? pf->npos - 1 : 1);
+    /* each position its own colour (a qualitative list: loading and
+     * unloading at one position are told apart by their dash alone);
+     * more positions than colours cycle */
+    adh_gnuplot_cmd(pl->gp, "adh_pcol(j) = word(adh_profile_colors, 1 + j %% words(adh_profile_colors))");
     char *cmd = NULL;
     size_t cmdcap = 0;
     FILE *c = open_memstream(&cmd, &cmdcap);
@@ -948,7 +1004,7 @@ static int contact_data(plotter *pl, const double *dadt, const double *smooth, i
 
 /* The frame of one panel: 0 the contact-line speed above, 1 the contact
  * radius below, sharing the x axis. */
-static void contact_frame(plotter *pl, int panel, double top, int in_mm)
+static void contact_frame(plotter *pl, int panel, double top, int in_mm, int keyrows, double amax)
 {
     if (panel == 0) {
         adh_gnuplot_cmd(pl->gp, "set origin 0,0.42");
@@ -960,20 +1016,33 @@ static void contact_frame(plotter *pl, int panel, double top, int in_mm)
         adh_gnuplot_cmd(pl->gp, "set ylabel \"contact-line speed da/dt (%s)\"",
                         in_mm ? "mm/s" : "µm/s");
         adh_gnuplot_cmd(pl->gp, "Vu = %g", in_mm ? 1e3 : 1e6);
-        adh_gnuplot_cmd(pl->gp, "set key bottom left");
+        /* one key for both panels, below them: out of the data */
+        adh_gnuplot_cmd(pl->gp, "set key at screen 0.5, screen 0.01 center bottom vertical maxrows %d", keyrows);
     } else {
         adh_gnuplot_cmd(pl->gp, "set origin 0,0");
         adh_gnuplot_cmd(pl->gp, "set size 1,0.44");
         adh_gnuplot_cmd(pl->gp, "set format x \"%% g\"");
         adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
         adh_gnuplot_cmd(pl->gp, "set tmargin 1");
-        adh_gnuplot_cmd(pl->gp, "set bmargin");
+        adh_gnuplot_cmd(pl->gp, "set bmargin %.3g", 4.2 + 1.05 * keyrows);
         adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
+        /* a low panel: four or five tics, not nine */
+        if (amax > 0)
+            adh_gnuplot_cmd(pl->gp, "set ytics %.17g", nice_step(amax * 1e6 / 4.5));
         adh_gnuplot_cmd(pl->gp, "set ylabel \"contact radius a (µm)\"");
         adh_gnuplot_cmd(pl->gp, "unset key");
     }
     /* both panels share the left margin so their x axes line up */
     adh_gnuplot_cmd(pl->gp, "set lmargin 11");
+}
+
+/* Unloading branches with a smoothed speed: the key's entries. */
+static int contact_unloads(const int *set, int np)
+{
+    int n = 0;
+    for (int p = 1; p <= np; p++)
+        n += set[3 * p + 1] >= 0;
+    return n;
 }
 
 /* One panel's plot command: each path's curves, loading first. -1 out of
@@ -986,9 +1055,7 @@ static int contact_panel(plotter *pl, int panel, const int *set, int np, const c
     if (!c)
         return -1;
     fprintf(c, "plot %s", panel == 0 ? "0 ls 7 notitle" : "NaN notitle");
-    int nunload = 0, labelled = 0;
-    for (int p = 1; p <= np; p++)
-        nunload += set[3 * p + (panel == 0 ? 1 : 2)] >= 0;
+    int nunload = contact_unloads(set, np), labelled = 0;
     for (int p = 0; p <= np; p++) {
         char lc[128], title[128];
         const adh_turn_result *tr = turn_of_path(pl->run, p);
@@ -999,23 +1066,30 @@ static int contact_panel(plotter *pl, int panel, const int *set, int np, const c
             unload_color(p, lc, sizeof lc);
             unload_title(tr, nunload, &labelled, title, sizeof title);
         }
+        /* the key is the speed panel's: the radius panel's curves go untitled */
+        if (panel == 1)
+            snprintf(title, sizeof title, "notitle");
+        char smooth[160];   /* the branch's colour and dash */
+        if (p == 0)
+            snprintf(smooth, sizeof smooth, "%s dt 1", lc);
+        else
+            snprintf(smooth, sizeof smooth, "%s dt adh_udash(%d)", lc, p);
         const char *width = p == 0 ? "adh_loading_width" : "adh_unloading_width";
         if (panel == 0) {
             /* step by step, thin and pale; the smoothed speed on top */
             if (set[3 * p] >= 0)
                 fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Vu) with lines %s "
-                           "lw 0.6 notitle", qdat, set[3 * p],
-                        p == 0 ? "lc rgb \"#9aa9cf\"" : lc);
+                           "lw 0.6 notitle", qdat, set[3 * p], p == 0 ? "lc rgb adh_hop_color" : lc);
             if (set[3 * p + 1] >= 0)
                 fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*Vu) with lines %s "
-                           "lw %s %s", qdat, set[3 * p + 1], lc, width, title);
+                           "lw %s %s", qdat, set[3 * p + 1], smooth, width, title);
         } else if (set[3 * p + 2] >= 0) {
             fprintf(c, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines %s lw %s "
-                       "%s", qdat, set[3 * p + 2], lc, width, title);
+                       "%s", qdat, set[3 * p + 2], smooth, width, title);
         }
     }
     if (panel == 0)
-        fprintf(c, ", \\\n  keyentry with lines lc rgb \"#9aa9cf\" lw 0.6 "
+        fprintf(c, ", \\\n  keyentry with lines lc rgb adh_hop_color lw 0.6 "
                    "title \"step by step (node hops)\"");
     fclose(c);
     adh_gnuplot_cmd(pl->gp, "%s", cmd);
@@ -1023,8 +1097,69 @@ static int contact_panel(plotter *pl, int panel, const int *set, int np, const c
     return 0;
 }
 
+/* The h0 range of the rows in contact, padded; 0 when never in contact. */
+static int contact_range(plotter *pl, double *lo, double *hi)
+{
+    const adh_run *run = pl->run;
+    double xmin = INFINITY, xmax = -INFINITY;
+    for (size_t i = 0; i < run->nrows; i++)
+        if (run->rows[i].a > 0) {
+            xmin = fmin(xmin, run->rows[i].h0);
+            xmax = fmax(xmax, run->rows[i].h0);
+        }
+    if (!(xmax >= xmin)) {
+        pl->skipped |= ADH_PLOT_CONTACT;
+        append(pl->notes, sizeof pl->notes, "%scontact.png skipped: never in contact", *pl->notes ? "; " : "");
+        return 0;
+    }
+    double xpad = fmax(0.03 * (xmax - xmin), 2 * fabs(pl->s->step));
+    *lo = xmin - xpad;
+    *hi = xmax + xpad;
+    return 1;
+}
+
+/* Static mode: a curve of equilibria has no speed (nothing moves along it
+ * in time), so contact.png is the contact radius a(h0) alone, its stable
+ * stretches solid and the unstable ones dashed, through the folds. */
+static int plot_contact_static(plotter *pl)
+{
+    double lo, hi;
+    if (!contact_range(pl, &lo, &hi))
+        return 0;
+    char dat[PATH_MAX + 32], q[ADH_GP_PATH_SIZE], heading[HEADING_SIZE];
+    FILE *f = data_file(pl, "contact.dat", dat, sizeof dat);
+    if (!f)
+        return -1;
+    datafile df = { .f = f };
+    int set[2];
+    for (int s = 1; s >= 0; s--)
+        set[1 - s] = write_stability_set(&df, pl->run, 0, s, 1);
+    if (data_close(pl, f, dat) < 0 || df.bad)
+        return -1;
+    title_string(pl, "Contact radius along the static equilibrium curve", heading, sizeof heading);
+    begin_figure(pl, "contact", "contact.png");
+    adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
+    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo * 1e9, hi * 1e9);
+    adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
+    adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
+    adh_gnuplot_cmd(pl->gp, "set ylabel \"contact radius a (µm)\"");
+    adh_gnuplot_cmd(pl->gp, "set key outside below center horizontal");
+    const char *qdat = adh_gp_path(dat, q, sizeof q);
+    char stable[ADH_GP_PATH_SIZE + 128] = "", unstable[ADH_GP_PATH_SIZE + 160] = "";
+    if (set[0] >= 0)
+        snprintf(stable, sizeof stable, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines ls 1 title \"stable\"",
+                 qdat, set[0]);
+    if (set[1] >= 0)
+        snprintf(unstable, sizeof unstable, ", \\\n  %s index %d using ($1*1e9):($2*1e6) with lines ls 1 lw 1.2 "
+                 "dt adh_unstable_dash title \"unstable (displacement control)\"", qdat, set[1]);
+    adh_gnuplot_cmd(pl->gp, "plot NaN notitle%s%s", stable, unstable);
+    return finish_figure(pl, "contact.png");
+}
+
 static int plot_contact(plotter *pl)
 {
+    if (pl->s->equilibrium)
+        return plot_contact_static(pl);
     const adh_run *run = pl->run;
     size_t n = run->nrows;
     double *dadh0 = n ? malloc(n * sizeof *dadh0) : NULL;
@@ -1038,16 +1173,8 @@ static int plot_contact(plotter *pl)
         goto out;
     adh_speed_stepwise(run, pl->s->drive_speed, dadh0, dadt);
     adh_speed_smoothed(run, pl->s->drive_speed, pl->s->dr, ADH_SPEED_CELLS, smooth);
-    double xmin = INFINITY, xmax = -INFINITY;
-    for (size_t i = 0; i < n; i++)
-        if (run->rows[i].a > 0) {
-            xmin = fmin(xmin, run->rows[i].h0);
-            xmax = fmax(xmax, run->rows[i].h0);
-        }
-    if (!(xmax >= xmin)) {
-        pl->skipped |= ADH_PLOT_CONTACT;
-        append(pl->notes, sizeof pl->notes, "%scontact.png skipped: never in contact",
-               *pl->notes ? "; " : "");
+    double xlo, xhi;
+    if (!contact_range(pl, &xlo, &xhi)) {
         rc = 0;
         goto out;
     }
@@ -1060,8 +1187,6 @@ static int plot_contact(plotter *pl)
         if (isfinite(smooth[i]))
             vmax = fmax(vmax, fabs(smooth[i]));
     int in_mm = vmax >= 2e-3;
-    double step = fabs(pl->s->step);
-    double xpad = fmax(0.03 * (xmax - xmin), 2 * step);
     char heading[HEADING_SIZE], what[96];
     snprintf(what, sizeof what, "Contact line at drive speed %.3g µm/s",
              pl->s->drive_speed * 1e6);
@@ -1070,10 +1195,15 @@ static int plot_contact(plotter *pl)
     double top = has_title(pl) ? 0.90 : 0.94;
     begin_figure(pl, "contact", "contact.png");
     adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
-    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (xmin - xpad) * 1e9,
-                    (xmax + xpad) * 1e9);
+    adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", xlo * 1e9, xhi * 1e9);
+    branch_styles(pl);
+    int nunload = contact_unloads(set, np);
+    int keyrows = (2 + (nunload > MAX_LABELLED_UNLOADS ? 1 : nunload) + 2) / 3;
+    double amax = 0;
+    for (size_t i = 0; i < n; i++)
+        amax = fmax(amax, run->rows[i].a);
     for (int panel = 0; panel < 2; panel++) {
-        contact_frame(pl, panel, top, in_mm);
+        contact_frame(pl, panel, top, in_mm, keyrows, amax);
         if (contact_panel(pl, panel, set, np, adh_gp_path(dat, q, sizeof q)) != 0)
             goto out;
     }
@@ -1121,7 +1251,7 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
     /* Only the tables that were asked for: profiles where profiles were
      * stored, contact-line tracking when the contact plot is wanted. A
      * table that cannot be written (a full disk) does not stop the others. */
-    char tables[64] = "";
+    char tables[96] = "";   /* profiles.tsv, contact.tsv, models.tsv */
     if (run->nprofiles > 0) {
         if (adh_tsv_profiles(s, run, out, why, sizeof why) != 0) {
             snprintf(table_error, sizeof table_error, "%s", why);
@@ -1137,6 +1267,16 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
             add_name(unwritten, ulen, "contact.tsv");
         } else {
             strcat(tables, *tables ? ", contact.tsv" : "contact.tsv");
+        }
+    }
+    /* the model curves force.png draws, so it can be drawn again */
+    if ((s->figures & ADH_PLOT_FORCE) && !s->rigid && run->nrows) {
+        if (adh_tsv_models(s, run, reference, out, why, sizeof why) != 0) {
+            if (!*table_error)
+                snprintf(table_error, sizeof table_error, "%s", why);
+            add_name(unwritten, ulen, "models.tsv");
+        } else {
+            strcat(tables, *tables ? ", models.tsv" : "models.tsv");
         }
     }
     if (!want) {

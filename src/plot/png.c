@@ -15,30 +15,10 @@
 #endif
 
 /* Defaults sent before the style file, so a style may set only what it
- * changes and a missing style still gives the same figures. */
+ * changes and a missing style still gives the same figures: the installed
+ * style itself, compiled in (the Makefile makes style.inc of it). */
 static const char *const builtin_style[] = {
-    "set terminal pngcairo size 900,600 enhanced font \"DejaVu Sans,11\" linewidth 1",
-    "set encoding utf8",
-    "set grid lc rgb \"#dddddd\"",
-    "set tics out nomirror",
-    "set key box opaque samplen 2.5 spacing 1.1 font \",10\"",
-    "adh_loading_color = \"#1f3f8f\"",
-    "adh_unload_colors = \"#c0392b #e67e22 #27ae60 #8e44ad #16a085 #d35400 #2c3e50\"",
-    "adh_profile_colors = \"#1f3f8f #2e6fb7 #3aa0c8 #27ae60 #8bc34a #c9b600 #e67e22 #d35400 "
-    "#c0392b #8e44ad\"",
-    "adh_loading_width = 2.5",
-    "adh_unloading_width = 1.6",
-    "adh_unstable_dash = 2",
-    "adh_model_disp_dash = \"- \"",
-    "set style line 1 lc rgb adh_loading_color lw adh_loading_width",
-    "set style line 2 lc rgb \"#000000\" lw 1.2",
-    "set style line 3 lc rgb \"#2ca02c\" lw 1.8",
-    "set style line 4 lc rgb \"#6a1b9a\" lw 1.4 dt 4",
-    "set style line 5 lc rgb \"#000000\" lw 1.2 dt 3",
-    "set style line 6 lc rgb \"#c0392b\" lw 1.6 pt 7 ps 0.9",
-    "set style line 7 lc rgb \"#888888\" lw 1",
-    "set style line 8 lc rgb \"#e377c2\" lw 0.9",
-    "set style line 9 lc rgb \"#26a69a\" lw 1.2",
+#include "style.inc"
 };
 
 void adh_png_begin(adh_gnuplot *gp, const char *style, const char *figure, const char *tmp_png)

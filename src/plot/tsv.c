@@ -11,7 +11,7 @@
 #include "plot/speed.h"
 
 /* The comment block each table starts with: material, sigma, gamma, grid. */
-static void preamble(FILE *f, const adh_plot_setup *s, const char *what)
+void adh_tsv_preamble(FILE *f, const adh_plot_setup *s, const char *what)
 {
     adh_derived d;
     adh_material_derive(&s->mat, &d);
@@ -33,7 +33,7 @@ static int profiles_table(FILE *f, const void *vctx)
     const table_ctx *c = vctx;
     const adh_plot_setup *s = c->s;
     const adh_run *run = c->run;
-    preamble(f, s, "surface profiles at the stored drive positions");
+    adh_tsv_preamble(f, s, "surface profiles at the stored drive positions");
     fprintf(f, "# branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading "
                "branch\n");
     for (size_t t = 0; t < run->nturns; t++)
@@ -68,7 +68,7 @@ static int contact_table(FILE *f, const void *vctx)
     const table_ctx *c = vctx;
     const adh_plot_setup *s = c->s;
     const adh_run *run = c->run;
-    preamble(f, s, "contact radius and contact-line speed");
+    adh_tsv_preamble(f, s, "contact radius and contact-line speed");
     fprintf(f, "# in contact where the gap is below %.2g z0; a = 0 out of contact\n",
             ADH_CONTACT_FACTOR);
     fprintf(f, "# drive speed |dh0/dt| = %.17g m/s (h0 falls on loading, rises on "
@@ -76,6 +76,9 @@ static int contact_table(FILE *f, const void *vctx)
                "nan out of contact\n", s->drive_speed);
     fprintf(f, "# da_dt_smooth: least-squares slope over the steps in which the contact line crosses "
                "%g grid spacings (it sticks and slips node by node)\n", ADH_SPEED_CELLS);
+    if (s->equilibrium)
+        fprintf(f, "# the static equilibrium curve: nothing moves along it in time, so da_dt and da_dt_smooth "
+                   "are nan; da_dh0 is its slope (infinite at its folds)\n");
     fprintf(f, "# SI units: h0, a in m, da_dh0 dimensionless, da_dt and da_dt_smooth in "
                "m/s\n");
     fprintf(f, "h0\tbranch\tpath\ta\tda_dh0\tda_dt\tda_dt_smooth\n");
@@ -103,6 +106,8 @@ int adh_tsv_contact(const adh_plot_setup *s, const adh_run *run, adh_outdir *out
         }
         adh_speed_stepwise(run, s->drive_speed, dadh0, dadt);
         adh_speed_smoothed(run, s->drive_speed, s->dr, ADH_SPEED_CELLS, smooth);
+        for (size_t i = 0; s->equilibrium && i < run->nrows; i++)
+            dadt[i] = smooth[i] = NAN;
     }
     table_ctx c = { s, run, dadh0, dadt, smooth };
     int rc = adh_outdir_write(out, "contact.tsv", contact_table, &c, msg, msglen);

@@ -246,6 +246,21 @@ adh_kernel *adh_config_kernel_alloc(const adh_run_spec *s, const adh_grid *g, in
     return adh_kernel_alloc(g, &ks, status);
 }
 
+adh_quantity adh_sweep_quantity(adh_sweep_kind kind)
+{
+    return kind == ADH_SWEEP_E ? ADH_Q_PRESSURE : kind == ADH_SWEEP_EPS ? ADH_Q_LENGTH : ADH_Q_NONE;
+}
+
+adh_qtext_buf adh_sweep_value_text(adh_sweep_kind kind, double value)
+{
+    adh_qtext_buf t;
+    if (kind == ADH_SWEEP_SIGMA || kind == ADH_SWEEP_NONE)
+        snprintf(t.s, sizeof t.s, "%.4g", value);
+    else
+        t = adh_qtext(value, adh_sweep_quantity(kind));
+    return t;
+}
+
 const char *adh_sweep_name(adh_sweep_kind kind)
 {
     switch (kind) {

@@ -112,12 +112,24 @@ typedef struct adh_tui_options {
     int no_clock;                  /* mask timings so replays are deterministic */
 } adh_tui_options;
 
+/* A quantity given as a bare number, which flags and scenes read in SI:
+ * kept so that a refusal of the run can ask whether a unit the screen
+ * shows was meant (adh_config_unit_hint). */
+#define ADH_MAX_GIVEN 16
+typedef struct adh_given {
+    char key[32];                  /* "material.R" */
+    char text[96];                 /* as given: "10", "-5,-2" */
+    char where[160];               /* who gave it: a flag ("--radius"), or a scene file */
+} adh_given;
+
 typedef struct adh_config {
     adh_run_spec spec;
     adh_sweep sweep;               /* kind ADH_SWEEP_NONE: a single run */
     adh_output_options output;
     adh_tui_options tui;
     char scene[PATH_MAX];          /* scene file in use, "" = built-in default */
+    adh_given given[ADH_MAX_GIVEN];  /* the bare quantities of the flags and the scene */
+    size_t ngiven;
 } adh_config;
 
 /* The built-in default scene: Figure 4's material (E = 0.3 GPa), the paper's
@@ -138,6 +150,8 @@ typedef struct adh_config_key {
     const char *key;               /* "section.name" */
     unsigned where;                /* ADH_KEY_* bits */
     adh_quantity q;                /* a quantity's (ADH_Q_NONE: a count, word, list or text) */
+    const char *units;             /* the units a screen shows it in, largest first ("GPa MPa kPa");
+                                      NULL: SI itself (J), or no quantity */
 } adh_config_key;
 
 /* Sets key from text, the same for every driver: 0, or -1 with why naming
@@ -161,6 +175,31 @@ int adh_config_get(const adh_config *c, const char *key, char *buf, size_t len);
 const adh_config_key *adh_config_key_find(const char *key);
 /* The i-th key of the table (NULL past the last), for lists and tests. */
 const adh_config_key *adh_config_key_at(size_t i);
+/* The unit of k's units a screen shows value in: the largest not above
+ * |value| (the smallest for smaller values); *factor its size in SI. NULL
+ * when k has none. ASCII ("um"). */
+const char *adh_config_key_unit(const adh_config_key *k, double value, double *factor);
+
+/* Edit distance of two names, letters compared without case ("Turn" and
+ * "turns": 1): for "did you mean". */
+size_t adh_config_name_distance(const char *a, const char *b);
+/* The key a scene's unknown name in section most likely meant: a scene
+ * key in that section within a small edit distance, else the same name in
+ * another section ("E" in [protocol]: material.E). NULL when none is near. */
+const adh_config_key *adh_config_key_suggest(const char *section, const char *name);
+
+/* A flag or a scene set key from text (already through adh_config_set):
+ * where says who ("--radius", a scene's file). A quantity given bare (no
+ * unit anywhere, not 0) is remembered; given with a unit, forgotten. */
+void adh_config_note_given(adh_config *c, const char *key, const char *text, const char *where);
+/* After c was refused (accept(c) != 0): each bare quantity tried on a copy
+ * of c in each of its key's units; accept(copy, ctx) == 0 says the copy
+ * would run. out receives, for the first bare quantity some unit rescues,
+ * "R = 10 m is out of range; did you mean --radius=10um?" (a scene's:
+ * "did you mean R = 10um in FILE?"). 1 with out written, 0 when no unit
+ * rescues any (out = ""), -1 out of memory. */
+int adh_config_unit_hint(const adh_config *c, int (*accept)(adh_config *copy, void *ctx), void *ctx, char *out,
+                         size_t len);
 
 /* ---- the run ------------------------------------------------------------ */
 
@@ -221,6 +260,10 @@ int adh_config_grid(adh_config *c, char *why, size_t whylen, unsigned *fix);
 /* Name of a sweep parameter as scenes and tables spell it ("E", "sigma",
  * "eps"), "" for none. */
 const char *adh_sweep_name(adh_sweep_kind kind);
+/* The quantity of a sweep parameter (E a pressure, eps a length, sigma a
+ * plain number), and a swept value as a sentence writes it ("0.5 pm"). */
+adh_quantity adh_sweep_quantity(adh_sweep_kind kind);
+adh_qtext_buf adh_sweep_value_text(adh_sweep_kind kind, double value);
 /* The run specification of run i of c's sweep: c's, with the protocol
  * every run steps (adh_config_protocol) and the swept value set. A config
  * without a sweep is its own run 0. */

@@ -424,7 +424,7 @@ static int set_sweep(adh_config *c, const key_def *k, const char *text, char *wh
         return -1;
     for (size_t i = 0; i < n; i++)
         if (!(v[i] > 0)) {
-            snprintf(why, whylen, "the swept value %g is not allowed: every value must be above 0", v[i]);
+            snprintf(why, whylen, "the swept value %s is not allowed: every value must be above 0", adh_qtext(v[i], k->pub.q).s);
             return -1;
         }
     memcpy(sw->values, v, n * sizeof *v);
@@ -605,49 +605,49 @@ enum { S = ADH_KEY_SCENE, R = ADH_KEY_RUN };
 /* Every key; adhere-scene(5) documents those a scene may hold (where S),
  * adhere(1) the flags that set the others. */
 static const key_def keys[] = {
-    { { "scene.title", S, ADH_Q_NONE }, set_title, 0, get_title },
-    { { "scene.mode", S | R, ADH_Q_NONE }, set_mode, 0, get_mode },
-    { { "material.E", S | R, ADH_Q_PRESSURE }, set_quantity, F(spec.mat.E), get_quantity },
-    { { "material.A", S | R, ADH_Q_ENERGY }, set_quantity, F(spec.mat.A), get_quantity },
-    { { "material.z0", S | R, ADH_Q_LENGTH }, set_quantity, F(spec.mat.z0), get_quantity },
-    { { "material.R", S | R, ADH_Q_LENGTH }, set_quantity, F(spec.mat.R), get_quantity },
-    { { "grid.nodes", S | R, ADH_Q_NONE }, set_nodes, 0, get_nodes },
-    { { "grid.spacing", S | R, ADH_Q_LENGTH }, set_quantity_auto, F(spec.grid.asked.spacing), get_quantity },
-    { { "grid.kernel", S | R, ADH_Q_NONE }, set_kernel, 0, get_kernel },
-    { { "grid.grid", S | R, ADH_Q_NONE }, set_grid_kind, 0, get_grid_kind },
-    { { "grid.fine_band", S | R, ADH_Q_LENGTH }, set_radius, F(spec.grid.asked.fine_band), get_quantity },
-    { { "grid.growth", S | R, ADH_Q_NONE }, set_growth, 0, get_growth },
-    { { "grid.radius", S | R, ADH_Q_LENGTH }, set_radius, F(spec.grid.asked.radius), get_quantity },
-    { { "grid.operator", S | R, ADH_Q_NONE }, set_operator, 0, get_operator },
-    { { "grid.force", R, ADH_Q_NONE }, set_bool, F(spec.grid.force), get_bool },
-    { { "solver.eps", S | R, ADH_Q_LENGTH }, set_quantity, F(spec.relax.eps), get_quantity },
-    { { "solver.max_iter", S | R, ADH_Q_NONE }, set_max_iter, 0, get_max_iter },
-    { { "solver.mixing", S | R, ADH_Q_NONE }, set_mixing, 0, get_mixing },
-    { { "solver.momentum", S | R, ADH_Q_NONE }, set_momentum, 0, get_momentum },
-    { { "protocol.start", S | R, ADH_Q_LENGTH }, set_quantity_auto, F(spec.proto.start), get_quantity },
-    { { "protocol.step", S | R, ADH_Q_LENGTH }, set_quantity, F(spec.proto.step), get_quantity },
-    { { "protocol.turns", S | R, ADH_Q_LENGTH }, set_turns, 0, get_turns },
-    { { "protocol.dwell", S | R, ADH_Q_NONE }, set_dwell, 0, get_dwell },
-    { { "protocol.unload", S | R, ADH_Q_NONE }, set_bool, F(spec.proto.unload), get_bool },
-    { { "output.plots", S, ADH_Q_NONE }, set_plots, 0, get_plots },
-    { { "output.profiles", S | R, ADH_Q_LENGTH }, set_profiles, 0, get_profiles },
-    { { "output.drive_speed", S, ADH_Q_SPEED }, set_quantity, F(output.drive_speed), get_quantity },
-    { { "output.dir", 0, ADH_Q_NONE }, set_path, F(output.dir), get_path },
-    { { "output.overwrite", 0, ADH_Q_NONE }, set_bool, F(output.overwrite), get_bool },
-    { { "output.plot", 0, ADH_Q_NONE }, set_bool, F(output.plot), get_bool },
-    { { "output.quiet", 0, ADH_Q_NONE }, set_bool, F(output.quiet), get_bool },
-    { { "output.allow_unconverged", 0, ADH_Q_NONE }, set_bool, F(output.allow_unconverged), get_bool },
-    { { "output.gnuplot_style", 0, ADH_Q_NONE }, set_path, F(output.gnuplot_style), get_path },
-    { { "output.data", 0, ADH_Q_NONE }, set_path, F(output.data), get_path },
-    { { "sweep.E", S, ADH_Q_PRESSURE }, set_sweep, 0, get_sweep },
-    { { "sweep.sigma", S, ADH_Q_NONE }, set_sweep, 0, get_sweep },
-    { { "sweep.eps", S, ADH_Q_LENGTH }, set_sweep, 0, get_sweep },
-    { { "sweep.jobs", S, ADH_Q_NONE }, set_jobs, 0, get_jobs },
-    { { "sweep.plot", S, ADH_Q_NONE }, set_sweep_plot, 0, get_sweep_plot },
-    { { "tui.replay", 0, ADH_Q_NONE }, set_path, F(tui.replay), get_path },
-    { { "tui.screen", 0, ADH_Q_NONE }, set_path, F(tui.screen), get_path },
-    { { "tui.size", 0, ADH_Q_NONE }, set_size, 0, get_size },
-    { { "tui.no_clock", 0, ADH_Q_NONE }, set_bool, F(tui.no_clock), get_bool },
+    { { "scene.title", S, ADH_Q_NONE, NULL }, set_title, 0, get_title },
+    { { "scene.mode", S | R, ADH_Q_NONE, NULL }, set_mode, 0, get_mode },
+    { { "material.E", S | R, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_quantity, F(spec.mat.E), get_quantity },
+    { { "material.A", S | R, ADH_Q_ENERGY, NULL }, set_quantity, F(spec.mat.A), get_quantity },
+    { { "material.z0", S | R, ADH_Q_LENGTH, "nm" }, set_quantity, F(spec.mat.z0), get_quantity },
+    { { "material.R", S | R, ADH_Q_LENGTH, "mm um" }, set_quantity, F(spec.mat.R), get_quantity },
+    { { "grid.nodes", S | R, ADH_Q_NONE, NULL }, set_nodes, 0, get_nodes },
+    { { "grid.spacing", S | R, ADH_Q_LENGTH, "nm" }, set_quantity_auto, F(spec.grid.asked.spacing), get_quantity },
+    { { "grid.kernel", S | R, ADH_Q_NONE, NULL }, set_kernel, 0, get_kernel },
+    { { "grid.grid", S | R, ADH_Q_NONE, NULL }, set_grid_kind, 0, get_grid_kind },
+    { { "grid.fine_band", S | R, ADH_Q_LENGTH, "um nm" }, set_radius, F(spec.grid.asked.fine_band), get_quantity },
+    { { "grid.growth", S | R, ADH_Q_NONE, NULL }, set_growth, 0, get_growth },
+    { { "grid.radius", S | R, ADH_Q_LENGTH, "um nm" }, set_radius, F(spec.grid.asked.radius), get_quantity },
+    { { "grid.operator", S | R, ADH_Q_NONE, NULL }, set_operator, 0, get_operator },
+    { { "grid.force", R, ADH_Q_NONE, NULL }, set_bool, F(spec.grid.force), get_bool },
+    { { "solver.eps", S | R, ADH_Q_LENGTH, "pm" }, set_quantity, F(spec.relax.eps), get_quantity },
+    { { "solver.max_iter", S | R, ADH_Q_NONE, NULL }, set_max_iter, 0, get_max_iter },
+    { { "solver.mixing", S | R, ADH_Q_NONE, NULL }, set_mixing, 0, get_mixing },
+    { { "solver.momentum", S | R, ADH_Q_NONE, NULL }, set_momentum, 0, get_momentum },
+    { { "protocol.start", S | R, ADH_Q_LENGTH, "nm" }, set_quantity_auto, F(spec.proto.start), get_quantity },
+    { { "protocol.step", S | R, ADH_Q_LENGTH, "nm" }, set_quantity, F(spec.proto.step), get_quantity },
+    { { "protocol.turns", S | R, ADH_Q_LENGTH, "nm" }, set_turns, 0, get_turns },
+    { { "protocol.dwell", S | R, ADH_Q_NONE, NULL }, set_dwell, 0, get_dwell },
+    { { "protocol.unload", S | R, ADH_Q_NONE, NULL }, set_bool, F(spec.proto.unload), get_bool },
+    { { "output.plots", S, ADH_Q_NONE, NULL }, set_plots, 0, get_plots },
+    { { "output.profiles", S | R, ADH_Q_LENGTH, "nm" }, set_profiles, 0, get_profiles },
+    { { "output.drive_speed", S, ADH_Q_SPEED, "um/s" }, set_quantity, F(output.drive_speed), get_quantity },
+    { { "output.dir", 0, ADH_Q_NONE, NULL }, set_path, F(output.dir), get_path },
+    { { "output.overwrite", 0, ADH_Q_NONE, NULL }, set_bool, F(output.overwrite), get_bool },
+    { { "output.plot", 0, ADH_Q_NONE, NULL }, set_bool, F(output.plot), get_bool },
+    { { "output.quiet", 0, ADH_Q_NONE, NULL }, set_bool, F(output.quiet), get_bool },
+    { { "output.allow_unconverged", 0, ADH_Q_NONE, NULL }, set_bool, F(output.allow_unconverged), get_bool },
+    { { "output.gnuplot_style", 0, ADH_Q_NONE, NULL }, set_path, F(output.gnuplot_style), get_path },
+    { { "output.data", 0, ADH_Q_NONE, NULL }, set_path, F(output.data), get_path },
+    { { "sweep.E", S, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_sweep, 0, get_sweep },
+    { { "sweep.sigma", S, ADH_Q_NONE, NULL }, set_sweep, 0, get_sweep },
+    { { "sweep.eps", S, ADH_Q_LENGTH, "pm" }, set_sweep, 0, get_sweep },
+    { { "sweep.jobs", S, ADH_Q_NONE, NULL }, set_jobs, 0, get_jobs },
+    { { "sweep.plot", S, ADH_Q_NONE, NULL }, set_sweep_plot, 0, get_sweep_plot },
+    { { "tui.replay", 0, ADH_Q_NONE, NULL }, set_path, F(tui.replay), get_path },
+    { { "tui.screen", 0, ADH_Q_NONE, NULL }, set_path, F(tui.screen), get_path },
+    { { "tui.size", 0, ADH_Q_NONE, NULL }, set_size, 0, get_size },
+    { { "tui.no_clock", 0, ADH_Q_NONE, NULL }, set_bool, F(tui.no_clock), get_bool },
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -668,6 +668,35 @@ const adh_config_key *adh_config_key_find(const char *key)
 const adh_config_key *adh_config_key_at(size_t i)
 {
     return i < NKEYS ? &keys[i].pub : NULL;
+}
+
+/* The size of one unit of q ("um" for a length: 1e-6). */
+static double unit_size(const char *unit, adh_quantity q)
+{
+    char text[32];
+    double v = NAN;
+    snprintf(text, sizeof text, "1%s", unit);
+    return adh_parse_quantity(text, q, &v, NULL, 0) == 0 ? v : NAN;
+}
+
+const char *adh_config_key_unit(const adh_config_key *k, double value, double *factor)
+{
+    static char unit[16];   /* the table's text, one key's unit at a time */
+    if (!k || !k->units)
+        return NULL;
+    /* largest first: the first unit not above the value, else the last */
+    for (const char *p = k->units; *p;) {
+        size_t n = strcspn(p, " "), m = n < sizeof unit ? n : sizeof unit - 1;
+        memcpy(unit, p, m);
+        unit[m] = '\0';
+        *factor = unit_size(unit, k->q);
+        p += n;
+        while (*p == ' ')
+            p++;
+        if (!*p || fabs(value) >= 0.9995 * *factor)
+            break;
+    }
+    return unit;
 }
 
 int adh_config_get(const adh_config *c, const char *key, char *buf, size_t len)

@@ -1,3 +1,4 @@
+#include "adhere/units.h"
 #include "scene/fitdata.h"
 
 #include <math.h>
@@ -56,10 +57,10 @@ static long find_jump(const adh_measured *m, const adh_measured_segment *s, char
     double med = a[(s->n - 1) / 2];
     free(a);
     if (!(bestd > ADH_FITDATA_JUMP_RATIO * med)) {
-        snprintf(why, whylen, "%s:%zu-%zu: no jump in this %s segment: its largest force step %s (%.3g N) is %.2g "
+        snprintf(why, whylen, "%s:%zu-%zu: no jump in this %s segment: its largest force step %s (%s) is %.2g "
                  "times the median step, not %g; a fit places the contact branch by the jump %s contact",
                  m->path, m->line[s->first], m->line[s->first + s->n - 1], adh_measured_dir_name(s->dir),
-                 s->dir > 0 ? "down" : "up", bestd, med > 0 ? bestd / med : INFINITY, ADH_FITDATA_JUMP_RATIO,
+                 s->dir > 0 ? "down" : "up", adh_qtext(bestd, ADH_Q_FORCE).s, med > 0 ? bestd / med : INFINITY, ADH_FITDATA_JUMP_RATIO,
                  s->dir > 0 ? "into" : "out of");
         return -1;
     }
@@ -123,9 +124,9 @@ static int ranges(adh_fitdata *fd, const adh_material *start, double offset, cha
     for (size_t i = 0; i < fd->d.n; i++) {
         double h = fd->x[i] - offset;
         if (!(fabs(h) <= reach)) {
-            snprintf(why, whylen, "%s:%zu: the position %.4g m is beyond the model's reach (|h0| up to R/50 = %.3g m "
-                     "at R = %.3g m): check the position's unit in the header", fd->file[i]->path, fd->line[i], h,
-                     reach, start->R);
+            snprintf(why, whylen, "%s:%zu: the position %s is beyond the model's reach (|h0| up to R/50 = %s "
+                     "at R = %s): check the position's unit in the header", fd->file[i]->path, fd->line[i],
+                     adh_qtext(h, ADH_Q_LENGTH).s, adh_qtext(reach, ADH_Q_LENGTH).s, adh_qtext(start->R, ADH_Q_LENGTH).s);
             return -1;
         }
         if (fd->F[i] < fd->F[imin])
@@ -133,9 +134,9 @@ static int ranges(adh_fitdata *fd, const adh_material *start, double offset, cha
     }
     double ratio = fabs(fd->F[imin]) / fjkr;
     if (!(ratio > 1.0 / 30 && ratio < 30)) {
-        snprintf(why, whylen, "%s:%zu: the strongest attraction, %.3g N, is %.3g times the JKR pull-off at the start "
-                 "values (%.3g N): check the force's unit in the header, or start A and R nearer", fd->file[imin]->path,
-                 fd->line[imin], fd->F[imin], ratio, -fjkr);
+        snprintf(why, whylen, "%s:%zu: the strongest attraction, %s, is %.3g times the JKR pull-off at the start "
+                 "values (%s): check the force's unit in the header, or start A and R nearer", fd->file[imin]->path,
+                 fd->line[imin], adh_qtext(fd->F[imin], ADH_Q_FORCE).s, ratio, adh_qtext(-fjkr, ADH_Q_FORCE).s);
         return -1;
     }
     return 0;

@@ -1,3 +1,4 @@
+#include "adhere/units.h"
 #include "scene/measured.h"
 
 #include <ctype.h>
@@ -274,8 +275,8 @@ static int segments(adh_measured *m, char *why, size_t whylen)
             k++;
         if (k + 1 == m->n) {   /* the rest repeats one position */
             if (m->nseg == 0) {
-                snprintf(why, whylen, "%s:%zu: the position never changes (%g m): a position column must", m->path,
-                         m->line[m->n - 1], m->h0[i]);
+                snprintf(why, whylen, "%s:%zu: the position never changes (%s): a position column must", m->path,
+                         m->line[m->n - 1], adh_qtext(m->h0[i], ADH_Q_LENGTH).s);
                 return -1;
             }
             m->seg[m->nseg - 1].n = m->n - m->seg[m->nseg - 1].first;

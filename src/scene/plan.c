@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -60,6 +61,51 @@ static double jump_position(const adh_material *m)
     return adh_bulge_position(m, h);
 }
 
+/* Relaxation iterations a step in contact takes at eps = 1 pm against sigma,
+ * measured (docs/performance.md): Figures 1, 5, 4 and 6, the sigma = 22.5
+ * and 75 cycles of make bench (the mixing's beta follows the contact's
+ * stiffness past sigma ~ 10, so the count falls again at 75); log-log
+ * interpolation between them, the ends held beyond. */
+static double contact_iterations(double sigma)
+{
+    static const double s[] = { 2.25, 4.36, 7.5, 17.4, 22.5, 75 }, it[] = { 109, 256, 540, 867, 909, 377 };
+    size_t n = sizeof s / sizeof s[0], k = 1;
+    if (!(sigma > s[0]))
+        return it[0];
+    if (sigma >= s[n - 1])
+        return it[n - 1];
+    while (sigma > s[k])
+        k++;
+    double t = log(sigma / s[k - 1]) / log(s[k] / s[k - 1]);
+    return it[k - 1] * pow(it[k] / it[k - 1], t);
+}
+
+double adh_plan_iterations(const adh_run_spec *spec)
+{
+    const adh_protocol_settings *ps = &spec->proto;
+    double step = ps->step, start = adh_config_start(spec);
+    double jump = jump_position(&spec->mat);
+    adh_derived d;
+    adh_material_derive(&spec->mat, &d);
+    double per_contact = contact_iterations(d.sigma) * pow(spec->relax.eps / 1e-12, -0.72), per_free = 17.0;
+    double deepest = ps->nturns ? adh_protocol_deepest_turn(ps) : jump;
+    double in = fmax(0.0, (jump - deepest) / step), out = fmax(0.0, (start - deepest) / step) - in;
+    double contact = in, free = out;
+    /* unloading: in contact from each turn to JKR's fold (where a
+     * displacement-driven contact jumps apart), then free to the start */
+    static adh_model_curve jkr;   /* large; plans are made one at a time */
+    double fold = jump;
+    if (adh_jkr_drive_curve(&spec->mat, deepest, &jkr) == 0 && jkr.n)
+        fold = jkr.h0[jkr.n - 1];
+    for (size_t i = 0; ps->unload && i < ps->nturns; i++) {
+        double t = ps->turns[i];
+        double c = fmax(0.0, (fmax(fold, t) - t) / step);
+        contact += c;
+        free += fmax(0.0, (start - t) / step - c);
+    }
+    return contact * per_contact + free * per_free;
+}
+
 static void plan_run(const adh_run_spec *rc, const adh_plan *p, adh_plan_run *r)
 {
     adh_derived d;
@@ -73,6 +119,7 @@ static void plan_run(const adh_run_spec *rc, const adh_plan *p, adh_plan_run *r)
         r->end = adh_rule_rigid_end(&rc->mat, &rc->proto);
         r->loading_steps = 1 + (size_t)floor((r->start - r->end) / step + 1e-6);
         r->unloading_steps = 0;
+        r->iterations = (double)r->loading_steps;
         return;
     }
     r->end = p->stop_at_contact ? jump_position(&rc->mat) : adh_protocol_deepest_turn(&rc->proto);
@@ -85,6 +132,7 @@ static void plan_run(const adh_run_spec *rc, const adh_plan *p, adh_plan_run *r)
     if (p->unloading_branches)
         for (size_t i = 0; i < rc->proto.nturns; i++)
             r->unloading_steps += 1 + (size_t)floor((r->start - rc->proto.turns[i]) / step + 1e-6);
+    r->iterations = p->static_mode ? (double)(r->loading_steps + r->unloading_steps) : adh_plan_iterations(rc);
 }
 
 static void fmt_len(double v, char *buf, size_t len)
@@ -238,11 +286,6 @@ static void list_lengths(FILE *f, const double *v, size_t n)
     fputs(" nm", f);
 }
 
-static adh_quantity sweep_quantity(adh_sweep_kind k)
-{
-    return k == ADH_SWEEP_E ? ADH_Q_PRESSURE : k == ADH_SWEEP_EPS ? ADH_Q_LENGTH : ADH_Q_NONE;
-}
-
 void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
 {
     char a[64], b[64];
@@ -255,7 +298,7 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
             if (cfg->sweep.kind == ADH_SWEEP_SIGMA)
                 snprintf(a, sizeof a, "%g", cfg->sweep.values[i]);
             else
-                adh_format_quantity(cfg->sweep.values[i], sweep_quantity(cfg->sweep.kind), 4, a, sizeof a);
+                adh_format_quantity(cfg->sweep.values[i], adh_sweep_quantity(cfg->sweep.kind), 4, a, sizeof a);
             fprintf(f, "%s %s", i ? "," : "", a);
         }
         fprintf(f, " (each an independent run)\n");
@@ -329,15 +372,66 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         const adh_plan_run *r = &p->runs[i];
         fmt_len(r->start, a, sizeof a);
         fmt_len(r->end, b, sizeof b);
-        fprintf(f, "run %zu: E = %.4g Pa, sigma = %.4g, eps = %g pm: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
-                i + 1, r->E, r->sigma, r->eps * 1e12, a,
+        fprintf(f, "run %zu: E = %s, sigma = %.4g, eps = %s: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
+                i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
                 p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
     }
     fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",
             p->loading_steps, p->unloading_steps,
             p->unloading_branches ? " (more if the surfaces still touch there)" : "");
+    if (p->elastic && !p->static_mode) {
+        double it = 0;
+        for (size_t i = 0; i < p->nruns; i++)
+            it += p->runs[i].iterations;
+        fprintf(f, "iterations: about %.2g (some 17 a step out of contact; in contact %.0f a step at sigma = %.3g "
+                   "and eps = 1 pm, more as eps^-0.72 for smaller eps)\n", it, contact_iterations(p->runs[0].sigma),
+                p->runs[0].sigma);
+    }
     for (size_t i = 0; i < p->nstored; i++)
         fprintf(f, "stored: %s: %s\n", p->stored[i].what, p->stored[i].why);
     for (size_t i = 0; i < p->nskipped; i++)
         fprintf(f, "skip: %s: %s\n", p->skipped[i].what, p->skipped[i].why);
+}
+
+double adh_plan_time_left(const adh_plan_progress *runs, size_t n, int jobs, double now, double pace)
+{
+    double cost = 0, secs = 0;
+    for (size_t i = 0; i < n; i++)
+        if (runs[i].state == 2) {
+            cost += runs[i].cost;
+            secs += runs[i].seconds;
+        }
+    if (cost > 0 && secs > 0)
+        pace = cost / secs;
+    if (!(pace > 0) || jobs < 1 || n == 0)
+        return NAN;
+    /* when each job comes free: the runs under way end at their expected
+     * time; then the waiting ones, in order, on the first job free */
+    double *free_at = calloc((size_t)jobs, sizeof *free_at);
+    if (!free_at)
+        return NAN;
+    int busy = 0;
+    for (size_t i = 0; i < n; i++)
+        if (runs[i].state == 1) {
+            double need = runs[i].cost / pace, ran = now - runs[i].started;
+            double end = now + fmax(need - ran, 0.1 * need);
+            if (busy < jobs)
+                free_at[busy++] = end;
+        }
+    for (int j = busy; j < jobs; j++)
+        free_at[j] = now;
+    for (size_t i = 0; i < n; i++) {
+        if (runs[i].state != 0)
+            continue;
+        int j0 = 0;
+        for (int j = 1; j < jobs; j++)
+            if (free_at[j] < free_at[j0])
+                j0 = j;
+        free_at[j0] += runs[i].cost / pace;
+    }
+    double end = now;
+    for (int j = 0; j < jobs; j++)
+        end = fmax(end, free_at[j]);
+    free(free_at);
+    return end - now;
 }

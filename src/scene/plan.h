@@ -28,6 +28,8 @@ typedef struct adh_plan_run {
                                  ends at the jump into contact) */
     size_t unloading_steps;   /* upper bound over all unloading branches: each
                                  ends when the surfaces jump apart */
+    double iterations;        /* relaxation iterations expected (adh_plan_iterations);
+                                 in static and rigid mode the steps: a cost, not a count */
 } adh_plan_run;
 
 typedef struct adh_plan {
@@ -62,5 +64,33 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
 /* Runs at once for a sweep: [sweep] jobs, else one per online core, never
  * more than the runs. */
 int adh_plan_jobs(const adh_config *cfg);
+
+/* The relaxation iterations a run of spec is expected to take, from the
+ * measured dynamics: about 17 a step out of contact; in contact, at
+ * eps = 1 pm, from 109 a step at sigma = 2.25 to 909 at 22.5 (Figures 1,
+ * 4, 5, 6 and the bench's cycles), growing as eps^-0.72 for smaller eps
+ * (Figure 7: 224 670, 370 010 and 1 185 902 iterations at 1, 0.5 and
+ * 0.1 pm). The steps in contact are those below the jump into contact
+ * (eq 24, eq 23) on loading, and from each turn up to JKR's fold on
+ * unloading. Within a factor of two of a run's own count (tests); it
+ * weighs a sweep's runs for its time left, and --plan's time follows. */
+double adh_plan_iterations(const adh_run_spec *spec);
+
+/* Runs done a few at a time (a sweep's jobs), each weighed by its expected
+ * cost (the plan's iterations: a run at eps = 0.1 pm costs five of one at
+ * 1 pm). */
+typedef struct adh_plan_progress {
+    double cost;       /* expected cost, any unit */
+    int state;         /* 0 waiting, 1 under way, 2 done */
+    double started;    /* when it started (clock seconds), states 1 and 2 */
+    double seconds;    /* how long it took, state 2 */
+} adh_plan_progress;
+
+/* The time left until every run is done, jobs at a time: the pace (cost a
+ * second, one job's) is that of the runs done so far, over their own
+ * seconds, else pace when above 0, else unknown (NAN); a run under way has
+ * the rest of its expected time to go (at least a tenth of it); waiting
+ * runs take the first job to come free, in order. */
+double adh_plan_time_left(const adh_plan_progress *runs, size_t n, int jobs, double now, double pace);
 
 #endif

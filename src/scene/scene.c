@@ -74,8 +74,21 @@ static int handler(void *user, const char *section, const char *name, const char
     char full[64], msg[400];
     snprintf(full, sizeof full, "%s.%s", section, name);
     const adh_config_key *k = adh_config_key_find(full);
-    if (!k || !(k->where & ADH_KEY_SCENE))
-        return fail(sp, "unknown key '%s' in [%s] (see adhere-scene(5))", name, section);
+    if (!k || !(k->where & ADH_KEY_SCENE)) {
+        const adh_config_key *near = adh_config_key_suggest(section, name);
+        if (!near)
+            return fail(sp, "unknown key '%s' in [%s] (see adhere-scene(5))", name, section);
+        char sec[32];   /* the key's section: a table's name, short */
+        const char *dot = strchr(near->key, '.');
+        size_t sl = (size_t)(dot - near->key) < sizeof sec ? (size_t)(dot - near->key) : sizeof sec - 1;
+        memcpy(sec, near->key, sl);
+        sec[sl] = '\0';
+        if (strcmp(sec, section) == 0)
+            return fail(sp, "unknown key '%s': did you mean '%s'? (see adhere-scene(5))", name, dot + 1);
+        snprintf(msg, sizeof msg, "unknown key '%s' in [%s]: did you mean '%s' in [%s]? (see adhere-scene(5))", name,
+                 section, dot + 1, sec);
+        return fail(sp, "%s%s", msg, "");
+    }
     for (size_t i = 0; i < sp->nseen; i++)
         if (strcmp(sp->seen[i], full) == 0)
             return fail(sp, "key '%s' given twice in [%s]", name, section);
@@ -88,6 +101,7 @@ static int handler(void *user, const char *section, const char *name, const char
         adh_config_reword(msg, say_key, NULL, words, sizeof words);
         return fail(sp, "%s: %s", name, words);
     }
+    adh_config_note_given(c, full, value, sp->file);
     if (!strcmp(full, "protocol.turns") && sp->unload_given)
         c->spec.proto.unload = unload;
     sp->unload_given |= !strcmp(full, "protocol.unload");

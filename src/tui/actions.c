@@ -26,7 +26,7 @@ const tui_key_binding tui_key_table[] = {
     { '+', ACT_SCALE_UP, "double the selected parameter" },
     { '-', ACT_SCALE_DOWN, "halve the selected parameter" },
     { ':', ACT_COMMAND, "command prompt: set NAME VALUE (a field, or a key of the run: protocol.dwell), dump FILE, rows FILE (as in replay scripts)" },
-    { 'p', ACT_PLOTS, "write the plots (force, profile, contact radius) as PNG through gnuplot into ./adhere-plots/, or the directory --out names" },
+    { 'p', ACT_PLOTS, "write the plots (force, profile, contact radius) as PNG through gnuplot into ./adhere-plots/, or the directory --out names; the static curve's into static/ there; during r, pause and draw the path so far" },
     { '?', ACT_HELP, "this help; any key returns" },
     { KEY_F(1), ACT_HELP, "help, as ?" },
     { 'l' & 0x1f, ACT_REDRAW, "redraw the screen" },

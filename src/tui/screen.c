@@ -1,6 +1,7 @@
 #define NCURSES_WIDECHAR 1
 #include "tui/screen.h"
 
+#include <ctype.h>
 #include <curses.h>
 #include <errno.h>
 #include <math.h>
@@ -27,6 +28,21 @@ static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
  * parameters on a short screen): a panel drawn above stops there. */
 static int clip_bottom = 1 << 30;
 
+/* Where a line too long for w columns is cut: before the last clause
+ * (", ", "; ", " (") that ends within them, so a narrow terminal loses
+ * the line's last words whole ("path 2 states, 0 to redo", not "...;
+ * start 16.9") and never shows a number without its unit; w when no
+ * clause ends in the second half of the line. */
+static int clause_end(const wchar_t *s, int w)
+{
+    for (int c = w - 1; c >= w / 2; c--)
+        if ((s[c] == L',' || s[c] == L';') && s[c + 1] == L' ')
+            return c;
+        else if (s[c] == L' ' && s[c + 1] == L'(' && c < w)
+            return c;
+    return w;
+}
+
 static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
 {
     char buf[1024];
@@ -47,7 +63,10 @@ static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
         return;
     }
     attron(attr);
-    mvaddnwstr(y, x, wbuf, (int)n < w ? (int)n : w);
+    size_t text = n;   /* without the blanks that pad it */
+    while (text > 0 && wbuf[text - 1] == L' ')
+        text--;
+    mvaddnwstr(y, x, wbuf, (int)n < w ? (int)n : (int)text <= w ? w : clause_end(wbuf, w));
     attroff(attr);
 }
 
@@ -71,24 +90,45 @@ static const char *pad(const char *s, int w, char *buf, size_t len)
     return buf;
 }
 
-/* text word-wrapped into at most maxlines lines of w columns from (y, x). */
-static void put_wrapped(int y, int x, int w, int maxlines, attr_t attr, const char *text)
+/* Whether the blank at p[i] stands between a number and its unit. */
+static int unit_follows(const char *p, int i)
+{
+    unsigned char next = (unsigned char)p[i + 1];
+    return i > 0 && isdigit((unsigned char)p[i - 1]) && (isalpha(next) || next >= 0x80);
+}
+
+/* text word-wrapped into at most maxlines lines of w columns from (y, x)
+ * (draw 0: only counted); the lines it takes. Columns are characters (the
+ * labels' Greek letters are one column each). */
+static int wrap_text(int y, int x, int w, int maxlines, attr_t attr, const char *text, int draw)
 {
     const char *p = text;
-    for (int line = 0; line < maxlines && *p; line++) {
+    int line = 0;
+    for (; line < maxlines && *p; line++) {
         int len = (int)strlen(p), take = len;
         if (len > w) {
+            /* at a blank, but not between a number and its unit
+             * ("force -3.435" above "pN") where another blank will do */
             take = w;
-            while (take > 0 && p[take] != ' ')
+            while (take > 0 && (p[take] != ' ' || unit_follows(p, take)))
                 take--;
+            for (int t = w; take == 0 && t > 0; t--)
+                take = p[t] == ' ' ? t : 0;
             if (take == 0)
                 take = w;
         }
-        put(y + line, x, w, attr, "%.*s", take, p);
+        if (draw)
+            put(y + line, x, w, attr, "%.*s", take, p);
         p += take;
         while (*p == ' ')
             p++;
     }
+    return line;
+}
+
+static void put_wrapped(int y, int x, int w, int maxlines, attr_t attr, const char *text)
+{
+    wrap_text(y, x, w, maxlines, attr, text, 1);
 }
 
 static const char *gk(const tui_view *v, const char *utf8, const char *ascii)
@@ -119,9 +159,15 @@ static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w
             how = g->graded ? ", graded" : ", auto";
         else if (p == P_N && g->graded)
             how = g->storage == ADH_STORAGE_H2 ? " (rings, H2)" : " (rings)";
-        char pv[96];
+        char pv[96], what[64];
+        size_t nturns;
+        tui_sim_turns(s, &nturns);
+        if (p == P_TURN && nturns > 1)   /* the field shows the list's ends */
+            snprintf(what, sizeof what, "%zu turning points", nturns);
+        else
+            snprintf(what, sizeof what, "%s", pi->what);
         put(y + 1 + p, x, w, sel ? A_REVERSE : A_NORMAL, "%s%s %s %s%s", sel ? " >" : "  ",
-            pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), pad(val, 12, pv, sizeof pv), pi->what, how);
+            pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), pad(val, 12, pv, sizeof pv), what, how);
     }
 }
 
@@ -134,8 +180,13 @@ static int draw_params_compact(const tui_sim *s, const tui_view *v, int y, int x
     int line = 0, col = 0;
     for (int p = 0; p < P_COUNT; p++) {
         char val[64], item[96];
+        size_t nturns;
+        tui_sim_turns(s, &nturns);
         tui_sim_param_text(s, (tui_param)p, v->utf8, val, sizeof val);
-        snprintf(item, sizeof item, "%s %s", v->utf8 ? tui_params[p].label : tui_params[p].ascii, val);
+        if (p == P_TURN && nturns > 1)
+            snprintf(item, sizeof item, "%s %s, %zu turns", tui_params[p].ascii, val, nturns);
+        else
+            snprintf(item, sizeof item, "%s %s", v->utf8 ? tui_params[p].label : tui_params[p].ascii, val);
         int len = (int)mbstowcs(NULL, item, 0);
         if (len < 0)
             len = (int)strlen(item);
@@ -202,9 +253,9 @@ static void draw_cycle(const tui_sim *s, const tui_view *v, int y, int x, int w)
     q(c.max_load, ADH_Q_FORCE, a, sizeof a);
     q(c.a_turn, ADH_Q_LENGTH, b, sizeof b);
     if (c.unloading)
-        put(y + 1, x, w, A_NORMAL, "  load   max %s; a %s at the turn", a, c.a_turn > 0 ? b : "0");
+        put(y + 1, x, w, A_NORMAL, "  load   max %s; a %s at the turn", a, c.a_turn > 0 ? b : "0 nm");
     else
-        put(y + 1, x, w, A_NORMAL, "  load   %s deepest so far, a %s", a, c.a_turn > 0 ? b : "0");
+        put(y + 1, x, w, A_NORMAL, "  load   %s deepest so far, a %s", a, c.a_turn > 0 ? b : "0 nm");
     /* pull-off: the force minimum on unloading; jump-out: where the
      * surfaces separate (the tables' pulloff_F and jump_out_h0) */
     q(c.pulloff_F, ADH_Q_FORCE, a, sizeof a);
@@ -256,18 +307,32 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
         q(s->start, ADH_Q_LENGTH, a, sizeof a);
         q(tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
         put(y + 1, x, w, A_NORMAL, "  h0     %-12s start, not solved yet", a);
-        put(y + 2, x, w, A_NORMAL, "  Press f to solve the first point, r to follow");
-        put(y + 3, x, w, A_NORMAL, "  the equilibrium curve through its folds down to");
-        put(y + 4, x, w, A_NORMAL, "  h0 = %s; m returns to relaxation.", b);
+        char msg[200], *sp = strchr(b, ' ');
+        /* number and unit on one line: a no-break space where it can be */
+        char end[72];
+        if (sp && v->utf8)
+            snprintf(end, sizeof end, "%.*s\xc2\xa0%s", (int)(sp - b), b, sp + 1);
+        else
+            snprintf(end, sizeof end, "%s", b);
+        snprintf(msg, sizeof msg, "Press f to solve the first point, r to follow the equilibrium curve through "
+                 "its folds down to h0 = %s; m returns to relaxation.", end);
+        put_wrapped(y + 2, x + 2, w - 2, 3, A_NORMAL, msg);
     } else {
         draw_point_rows(o, 0, v, y, x, w);
         put(y + 6, x, w, o->stable ? A_NORMAL : A_BOLD, "  point  %zu of %zu, %s, %zu Newton iteration%s", s->ccur + 1,
             s->curve.nrows, o->stable ? "stable" : "UNSTABLE", o->iters, o->iters == 1 ? "" : "s");
         if (r->folds) {
+            /* the physical folds, where an experiment jumps, apart from
+             * those of the grid's lattice (the contact line crossing a node) */
             q(r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
             q(r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
-            put(y + 7, x, w, A_NORMAL, "  folds  %zu; jump-in %s, jump-out %s", r->folds, a,
-                isnan(r->jump_out_h0) ? "not yet" : b);
+            size_t physical = !isnan(r->jump_in_h0) + !isnan(r->jump_out_h0);
+            size_t lattice = r->folds > physical ? r->folds - physical : 0;
+            char more[48] = "";
+            if (lattice)
+                snprintf(more, sizeof more, ", +%zu lattice", lattice);
+            put(y + 7, x, w, A_NORMAL, "  folds  jump-in %s, out %s%s", a, isnan(r->jump_out_h0) ? "not yet" : b,
+                more);
         } else {
             put(y + 7, x, w, A_NORMAL, "  folds  none yet");
         }
@@ -309,9 +374,9 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
     if (!o) {
         q(s->start, ADH_Q_LENGTH, a, sizeof a);
         put(y + 1, x, w, A_NORMAL, "  h0     %-12s start position, not solved yet", a);
-        put(y + 2, x, w, A_NORMAL, "  Press f to approach by d, r to run to the turning point,");
-        put(y + 3, x, w, A_NORMAL, "  ? for every key. Edits change the numbers at the left");
-        put(y + 4, x, w, A_NORMAL, "  at once; a solve starts only when you step.");
+        put_wrapped(y + 2, x + 2, w - 2, 3, A_NORMAL, "Press f to approach by d, r to run to the turning "
+                    "point, ? for every key. Edits change the numbers at the left at once; a solve starts only "
+                    "when you step.");
     } else {
         draw_point_rows(o, 1, v, y, x, w);
         if (v->no_clock)
@@ -324,8 +389,19 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
             snprintf(b, sizeof b, "%.2f s", o->seconds);
         put(y + 6, x, w, A_NORMAL, "  step   %zu iteration%s, %s%s", o->iters, o->iters == 1 ? "" : "s", b,
             o->converged ? "" : ", NOT converged");
+        /* with several turns, which one the branch goes to or comes from
+         * (the turn field shows the whole list) */
+        size_t nt;
+        const double *turns = tui_sim_turns(s, &nt);
+        char t[128] = "";
+        if (nt > 1 && o->branch > 0 && !isnan(s->turn))
+            snprintf(t, sizeof t, ", to %s", adh_qtext(s->turn, ADH_Q_LENGTH).s);
+        else if (nt > 1 && o->path >= 1 && (size_t)o->path <= nt)
+            snprintf(t, sizeof t, " from turn %d of %zu, %s", o->path, nt, adh_qtext(turns[o->path - 1], ADH_Q_LENGTH).s);
         if (o->branch > 0)
-            put(y + 7, x, w, A_NORMAL, "  branch loading (approaching)");
+            put(y + 7, x, w, A_NORMAL, "  branch loading (approaching)%s", t);
+        else if (*t)
+            put(y + 7, x, w, A_NORMAL, "  branch unloading%s", t);
         else
             put(y + 7, x, w, A_NORMAL, "  branch unloading (retracting), path %d", o->path);
     }
@@ -355,18 +431,20 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     size_t n;
     const adh_obs *rows = tui_sim_rows(s, &n);
     const adh_obs *cur = tui_sim_row(s);
-    if (h < 4 || w < 30)
+    if (h < 3 || w < 30)
         return;
+    /* short of rows (24 lines): the plot's rows, its range in the heading */
+    int compact = h < 5;
     int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
     const adh_measured *meas = v->measured && v->measured->n ? v->measured : NULL;
     if (stat)
-        put(y0, x0, w, A_BOLD, " Equilibrium force F against drive position h0   * stable  . unstable  @ now%s",
-            meas ? "  x measured" : "");
+        put(y0, x0, w, A_BOLD, " %s  * stable  . unstable  @ now%s", compact ? "Equilibrium F against h0"
+            : "Equilibrium force F against drive position h0 ", meas ? "  x measured" : "");
     else
-        put(y0, x0, w, A_BOLD, " Force F against drive position h0   + loading  o unloading  @ now%s",
-            meas ? "  x measured" : "");
+        put(y0, x0, w, A_BOLD, " %s  + loading  o unloading  @ now%s", compact ? "F against h0"
+            : "Force F against drive position h0 ", meas ? "  x measured" : "");
     const int lab = 11;
-    int pw = w - lab - 1, ph = h - 2;
+    int pw = w - lab - 1, ph = h - (compact ? 1 : 2);
     if (n == 0 && !meas) {
         put(y0 + ph / 2, x0 + lab, pw, A_NORMAL, "%s", stat ? "(the equilibrium curve appears here as it is solved)"
                                                           : "(the force-position curve appears here as you step)");
@@ -441,10 +519,26 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     char lo[64], hi[64];
     q(xmin, ADH_Q_LENGTH, lo, sizeof lo);
     q(xmax, ADH_Q_LENGTH, hi, sizeof hi);
+    if (compact) {   /* the position axis in words, at the heading's end */
+        char range[160];
+        snprintf(range, sizeof range, "h0 %s to %s ", lo, hi);
+        int rl = (int)strlen(range);
+        if (rl < w - 40)
+            put(y0, x0 + w - rl, rl, A_NORMAL, "%s", range);
+        return;
+    }
     int y = y0 + 1 + ph;
+    /* the axis's labels never run into each other: the middle one goes
+     * (or shortens) where the ends leave no room for it */
+    int lol = (int)strlen(lo), hil = (int)strlen(hi);
     put(y, x0 + lab, pw, A_NORMAL, "%s", lo);
-    put(y, x0 + lab + pw / 2 - 14, 28, A_NORMAL, "h0 (approach <- -> retract)");
-    put(y, x0 + lab + pw - (int)strlen(hi), (int)strlen(hi), A_NORMAL, "%s", hi);
+    const char *mid = pw - lol - hil >= 32 ? "h0 (approach <- -> retract)" : pw - lol - hil >= 6 ? "h0" : "";
+    int ml = (int)strlen(mid), mx = lab + pw / 2 - (ml + 1) / 2;
+    if (mx < lab + lol + 1)
+        mx = lab + lol + 1;
+    if (ml)
+        put(y, x0 + mx, ml, A_NORMAL, "%s", mid);
+    put(y, x0 + lab + pw - hil, hil, A_NORMAL, "%s", hi);
     (void)v;
 }
 
@@ -462,8 +556,12 @@ void tui_draw(const tui_sim *s, const tui_view *v)
         draw_state(s, v, 1, lw + 1, W - lw - 1);
         if (!stat)
             draw_cycle(s, v, 13, lw + 1, W - lw - 1);
-        if (H - 2 - 18 >= 5)
+        /* the preview in the rows left: whole from 25 lines, its plot
+         * alone at 23 and 24, else a word on how to see it */
+        if (H - 2 - 18 >= 3)
             draw_preview(s, v, 18, 0, H - 2 - 18, W);
+        else if (H - 2 - 18 >= 1)
+            put(18, 0, W, A_NORMAL, " (the force preview needs 23 lines: a taller window shows it)");
     } else if (v->params_first && H < 40) {
         /* Narrow and short, a parameter being worked on: the parameters
          * and what they give come first. */
@@ -491,10 +589,18 @@ void tui_draw(const tui_sim *s, const tui_view *v)
             draw_preview(s, v, y, 0, pb - y, W);
         draw_params_compact(s, v, pb, 0, W, 1);
     }
-    /* the status line in plain words, then the prompt or the key hints */
-    if (v->status && v->status[0])
-        put(H - 2, 0, W, v->status_error ? A_BOLD : A_NORMAL, "%s%s", v->status_error ? "error: " : "",
-            v->status);
+    /* the status line in plain words, wrapped upwards over what is above it
+     * when it does not fit (an error's advice comes last), then the prompt
+     * or the key hints */
+    if (v->status && v->status[0]) {
+        char st[1200];
+        snprintf(st, sizeof st, "%s%s", v->status_error ? "error: " : "", v->status);
+        /* a short screen keeps its rows for the state and the parameters */
+        int n = wrap_text(0, 0, W, H >= 24 ? 3 : 1, 0, st, 0);
+        for (int y = H - 1 - n; y < H - 1; y++)
+            put(y, 0, W, A_NORMAL, "%-*s", W, "");
+        wrap_text(H - 1 - n, 0, W, n, v->status_error ? A_BOLD : A_NORMAL, st, 1);
+    }
     if (v->prompt)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W, v->prompt);
     else if (v->count)
@@ -578,7 +684,7 @@ int tui_draw_help(const tui_view *v)
         snprintf(lines[n++], HELP_LINE, " ");
     n = help_entry(lines, n, MAX, W, ":set", "NAME VALUE sets a parameter: E A z0 R eps d N spacing turn, or any "
                    "key of the run as a scene writes it (protocol.dwell, grid.fine_band); values take units: 2GPa "
-                   "0.4nm 1e-19J 10um; a bare number is in the unit the panel shows");
+                   "0.4nm 1e-19J 10um; a bare number is in the unit the screen shows (nm for a position)");
     snprintf(msg, sizeof msg, "changing E, A, z0, R, %s, d, N or the spacing starts a new path from the "
              "start; turn only moves where r stops loading, and takes a list (1nm,0nm,-2nm): r follows each "
              "turn, shallowest first, as --batch does", gk(v, "\xce\xb5", "eps"));

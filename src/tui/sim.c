@@ -635,6 +635,34 @@ static int edit_apply(tui_sim *s, const adh_run_spec *before, const char *key, c
     return 0;
 }
 
+/* A :set key's text in the configuration's words: on the screen a bare
+ * number is in the unit shown, here the unit its key is shown in for its
+ * present value (protocol.start in nm, grid.fine_band in um or nm), each
+ * element of a list; given on in SI, exactly. Anything else as typed. */
+static void key_value_in_unit(const tui_sim *s, const adh_config_key *k, const char *text, char *out, size_t len)
+{
+    char cur[1024];
+    double now = NAN, f = 1;
+    snprintf(out, len, "%s", text);
+    if (!k->units || !adh_quantity_is_bare(text) || adh_config_get(&s->cfg, k->key, cur, sizeof cur) != 0)
+        return;
+    now = strtod(cur, NULL);   /* "auto", "none": 0, the smallest unit */
+    if (!adh_config_key_unit(k, now, &f))
+        return;
+    size_t o = 0;
+    out[0] = '\0';
+    for (const char *p = text; *p;) {
+        char *end, one[40];
+        double v = strtod(p, &end);
+        int w = snprintf(one, sizeof one, "%s%.17g", o ? "," : "", v * f);
+        if (w < 0 || o + (size_t)w >= len)
+            break;   /* a list longer than the buffer: the setter refuses it */
+        memcpy(out + o, one, (size_t)w + 1);
+        o += (size_t)w;
+        p = strchr(end, ',') ? strchr(end, ',') + 1 : end + strlen(end);
+    }
+}
+
 int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, size_t whylen)
 {
     const adh_config_key *k = adh_config_key_find(key);
@@ -646,7 +674,9 @@ int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, si
         return -1;
     }
     adh_run_spec before = s->cfg.spec;
-    if (adh_config_set(&s->cfg, key, text, msg, sizeof msg) != 0) {
+    char value[1024];
+    key_value_in_unit(s, k, text, value, sizeof value);
+    if (adh_config_set(&s->cfg, key, value, msg, sizeof msg) != 0) {
         char words[512];
         tui_sim_words(msg, words, sizeof words);
         snprintf(why, whylen, "%s: %s", key, words);
@@ -708,10 +738,30 @@ void tui_sim_param_text(const tui_sim *s, tui_param p, int utf8, char *buf, size
         snprintf(buf, len, "%zu", spec(s)->grid.use.nodes);
     else if (p == P_TURN && isnan(v))
         snprintf(buf, len, "none");
+    else if (p == P_TURN && spec(s)->proto.nturns > 1)   /* a list: its ends, shallowest first */
+        snprintf(buf, len, "%.4g %s %.4g %s", spec(s)->proto.turns[0] / f, utf8 ? "\xe2\x80\xa6" : "...",
+                 spec(s)->proto.turns[spec(s)->proto.nturns - 1] / f, unit);
     else if (p == P_A)
         snprintf(buf, len, "%.4g J", v);
     else
         snprintf(buf, len, "%.4g %s", v / f, unit);
+}
+
+void tui_sim_turns_text(const tui_sim *s, char *buf, size_t len)
+{
+    const adh_protocol_settings *p = &spec(s)->proto;
+    size_t o = 0;
+    buf[0] = '\0';
+    if (!p->nturns) {
+        snprintf(buf, len, "none");
+        return;
+    }
+    for (size_t i = 0; i < p->nturns && o + 1 < len; i++) {
+        int w = snprintf(buf + o, len - o, "%s%.4g", i ? ", " : "", p->turns[i] * 1e9);
+        o += w > 0 ? (size_t)w : 0;
+    }
+    if (o + 1 < len)
+        snprintf(buf + o, len - o, " nm");
 }
 
 int tui_sim_field(const char *key)
@@ -1073,8 +1123,8 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
             snprintf(why, whylen, "no approach from here: %s; b retracts", edge);
         }
         else if (fabs(h0) > adh_protocol_reach(&spec(s)->mat))
-            snprintf(why, whylen, "h0 = %g m is out of reach: the model (h0 << R) allows |h0| up to R/50 = %g m",
-                     h0, adh_protocol_reach(&spec(s)->mat));
+            snprintf(why, whylen, "h0 = %s is out of reach: the model (h0 << R) allows |h0| up to R/50 = %s",
+                     adh_qtext(h0, ADH_Q_LENGTH).s, adh_qtext(adh_protocol_reach(&spec(s)->mat), ADH_Q_LENGTH).s);
         else
             snprintf(why, whylen, "at most %d turning points on one path: x starts a new one", ADH_MAX_TURNS);
         return -1;

@@ -156,6 +156,9 @@ void tui_sim_free(tui_sim *s);
 /* The text of a parameter's value as the panel shows it ("10 µm"; "um"
  * without utf8): in the unit the panel reads a bare number in. */
 void tui_sim_param_text(const tui_sim *s, tui_param p, int utf8, char *buf, size_t len);
+/* The turns as a sentence says them: all of them, shallowest first
+ * ("2, 1.5, 1, 0 nm"), or "none". */
+void tui_sim_turns_text(const tui_sim *s, char *buf, size_t len);
 /* That unit for p's present value ("nm", "GPa"; "" for N), and its factor
  * to SI. */
 const char *tui_sim_param_unit(const tui_sim *s, tui_param p, int utf8, double *factor);

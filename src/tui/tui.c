@@ -285,8 +285,9 @@ static int run_done(tui *t)
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
         fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
         fmtq(r->pulloff_F_disp, ADH_Q_FORCE, pd, sizeof pd);
-        say(t, 0, "curve complete at h0 = %s (%zu points, %zu folds): pull-off %s, F at jump-out %s",
-            h0, t->sim.curve.nrows, r->folds, pl, pd);
+        size_t physical = !isnan(r->jump_in_h0) + !isnan(r->jump_out_h0);
+        say(t, 0, "curve complete at h0 = %s (%zu points; jump-in, jump-out and %zu lattice folds): pull-off %s, "
+            "F at jump-out %s", h0, t->sim.curve.nrows, r->folds > physical ? r->folds - physical : 0, pl, pd);
         return 1;
     }
     /* the drive says what the row meant; the run pauses where a branch
@@ -399,7 +400,10 @@ static void write_plots(tui *t)
         say(t, 1, "nothing to plot yet: step first (f, or r to run)");
         return;
     }
-    const char *dir = config(t)->output.dir[0] ? config(t)->output.dir : "adhere-plots";
+    /* the static curve's plots beside the relaxation's, not over them */
+    char dir[PATH_MAX + 16];
+    snprintf(dir, sizeof dir, "%s%s", config(t)->output.dir[0] ? config(t)->output.dir : "adhere-plots",
+             is_static(t) ? "/static" : "");
     if (!t->headless) {
         say(t, 0, "writing plots to %s/ through gnuplot...", dir);
         draw(t);
@@ -417,6 +421,10 @@ static void write_plots(tui *t)
 static const char *key_value(const tui *t, const char *key, char *val, size_t len)
 {
     int p = tui_sim_field(key);
+    if (p == P_TURN) {   /* a list is said whole */
+        tui_sim_turns_text(&t->sim, val, len);
+        return tui_params[p].name;
+    }
     if (p >= 0) {
         tui_sim_param_text(&t->sim, (tui_param)p, t->view.utf8, val, len);
         return tui_params[p].name;
@@ -811,6 +819,21 @@ static void redo_todo(tui *t, int todo)
 }
 
 
+/* What the key that paused a run does besides: q quits; p draws the path
+ * so far (the run stays paused: r goes on from there). */
+static void paused_by(tui *t, int key, const char *h0)
+{
+    tui_action a = tui_action_for_key(key);
+    if (a == ACT_QUIT)
+        t->quit = 1;
+    if (a != ACT_PLOTS)
+        return;
+    write_plots(t);
+    char was[sizeof t->status];
+    snprintf(was, sizeof was, "%s", t->status);
+    say(t, t->status_error, "paused at h0 = %s, %s; r goes on", h0, was);
+}
+
 /* A key while a step is being solved (terminal only): the key that started
  * the steps, held down, asks for one more; any other key pauses. */
 static void busy_key(tui *t, int key)
@@ -831,8 +854,7 @@ static void busy_key(tui *t, int key)
     if (o)
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     say(t, 0, "paused at h0 = %s (the unfinished step was dropped); r goes on", h0);
-    if (tui_action_for_key(key) == ACT_QUIT)
-        t->quit = 1;
+    paused_by(t, key, h0);
 }
 
 static void handle_item(tui *t, const tui_replay_item *it)
@@ -872,8 +894,7 @@ static void run_next(tui *t)
                 char h0[64];
                 fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
                 say(t, 0, "paused at h0 = %s; r goes on", h0);
-                if (tui_action_for_key(it.key) == ACT_QUIT)
-                    t->quit = 1;
+                paused_by(t, it.key, h0);
                 return;
             }
             handle_item(t, &it);

@@ -19,10 +19,10 @@ bad() { # bad "expected text" args...
 }
 
 bad "E (modulus) = 0 Pa is out of range" -E 0
-bad "E (modulus) = -1e+09 Pa is out of range" -E -1GPa
+bad "E (modulus) = -1 GPa is out of range: allowed 1 kPa to 10 TPa" -E -1GPa
 bad "A (Hamaker constant) = 0 J is out of range" -A 0
-bad "z0 (equilibrium separation) = -5e-10 m" --z0=-0.5nm
-bad "R (effective radius) = 0 m is out of range" -R 0
+bad "z0 (equilibrium separation) = -500 pm is out of range: allowed 1 pm to 100 nm" --z0=-0.5nm
+bad "R (effective radius) = 0 nm is out of range" -R 0
 bad "N = 5 nodes is not allowed: use 10 to 20000 nodes" -N 5
 bad "'1e3' is not allowed: expected a whole number" --nodes=1e3
 bad "too coarse" -N 20
@@ -38,11 +38,11 @@ bad "is a length (m, nm, um, ...), but a pressure" -E 5nm
 bad "is a pressure (Pa, MPa, GPa, ...), but a length" --eps=1GPa
 bad "must lie below the start" --turn=50nm
 bad "must lie below the start" --start=5nm --turn=-1nm,6nm
-bad "eps = 0 m is not allowed" --eps=0
+bad "eps = 0 nm is not allowed" --eps=0
 bad "--mixing: 'fast' is not a mixing rule: use paper or momentum" --mixing=fast
 bad "--momentum: '1' is not allowed: a number from 0 to below 1" --momentum=1
 bad "--momentum: 'x' is not allowed" --momentum=x
-bad "eps = -1e-12 m is not allowed" --eps=-1pm
+bad "eps = -1 pm is not allowed" --eps=-1pm
 bad "'paperish' is not a kernel" --kernel=paperish
 bad "--grid: 'graded2' is not a grid: use uniform or graded" --grid=graded2
 bad "--grid=graded is not allowed with --kernel=paper" --grid=graded
@@ -50,13 +50,13 @@ bad "--growth: '1.2' is not allowed: use a ratio from 1 to 1.1" --grid=graded --
 bad "--growth: 'x' is not allowed" --growth=x
 bad "fine band radius .* too short.*; use a larger fine band (--fine-band)$" --grid=graded --kernel=ring --fine-band=100nm
 bad "grid radius Rmax = .* is too short" --grid=graded --kernel=ring --grid-radius=200nm
-bad "grid radius 6e-07 m is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
+bad "grid radius 600 nm is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
 bad "--growth: '0.9' is not allowed: use a ratio from 1 to 1.1" --growth=0.9
 bad "--fine-band: '-1nm' is not allowed: use a length above 0" --fine-band=-1nm
 bad "--grid-radius: '0' is not allowed: use a length above 0" --grid-radius=0
 bad "--operator: 'sparse' is not an operator: use dense, hmat or h2" --operator=sparse
 bad "out of the range of finite numbers" -E 1e999
-bad "step d = 0 m is not allowed" --step=0
+bad "step d = 0 nm is not allowed" --step=0
 bad "more than one scene" fig1 fig2
 # the core names quantities, the CLI adds its flags
 bad "(the default turn) is too deep.*; give a shallower turn or a larger R (--turn, -R)$" -R 100nm
@@ -68,12 +68,40 @@ bad "no scene named 'nosuchscene'" nosuchscene
 # Messages that name the real limit (issue 24, item 7): a radius past 0.3 R
 # is not the node budget; a NUL byte and a number below a double's range in
 # --data are said to be what they are.
-bad "beyond 0.3 R = 6e-08 m where the paraboloid gap" -R 0.2um -E 10MPa --turn=-1nm
+bad "beyond 0.3 R = 60 nm where the paraboloid gap" -R 0.2um -E 10MPa --turn=-1nm
 check "... and does not blame the node budget" sh -c "! grep -q 'budget of N' '$TMP/stderr'"
 printf '1 2\n3\0004 5\n' >"$TMP/nul.dat"
 bad "nul.dat:2: a NUL byte" --data="$TMP/nul.dat"
 printf '1 2\n3 1e-320\n' >"$TMP/tiny.dat"
 bad "tiny.dat:2: '1e-320' is too small for a double (it underflows" --data="$TMP/tiny.dat"
+
+# A bare number is SI (issue 28, item 2): where the same number in the unit
+# the screen shows would run, the refusal says so, by the flag or the
+# scene's key; where no unit rescues it, the refusal stands alone.
+bad "^adhere: R = 10 m is out of range; did you mean --radius=10um? (a bare number is in SI units: sigma = 7.5e+03 needs" -R 10
+bad "^adhere: turns = -5 m is out of range; did you mean --turn=-5nm? (a bare number is in SI units: turning point -5 m is too deep" --turn=-5
+bad "turns = -5 m, -2 m is out of range; did you mean --turn=-5nm,-2nm?" --turn=-5,-2
+bad "eps = 1 m is out of range; did you mean --eps=1pm?" --eps=1
+bad "z0 = 500 mm is out of range; did you mean --z0=0.5nm?" -z 0.5
+bad "E = 1 Pa is out of range; did you mean --modulus=1GPa? (a bare number is in SI units: E (modulus) = 1 Pa is out of range: allowed 1 kPa to 10 TPa)" -E 1
+printf '[material]\nE = 300\n' >"$TMP/e300.scene"
+bad "E = 300 Pa is out of range; did you mean E = 300GPa or E = 300MPa in $TMP/e300.scene?" "$TMP/e300.scene"
+bad "^adhere: grid spacing 2 m is too coarse" --spacing=2
+check "... and a bare number no unit rescues gets no hint" sh -c "! grep -q 'did you mean' '$TMP/stderr'"
+bad "^adhere: E (modulus) = 300 Pa is out of range" -E 300Pa
+check "... nor one given with its unit" sh -c "! grep -q 'did you mean' '$TMP/stderr'"
+# Names (issue 28, item 6): the scene key's name is a flag too; a mistyped
+# one gets the flag, by a short option's letter or a key's name
+bad "unknown option '--E=1GPa': did you mean -E 1GPa (--modulus=1GPa)?" --E=1GPa
+bad "unknown option '--max_iter=9': did you mean --max-iter=9?" --max_iter=9
+bad "unknown option '--trun=-1nm': did you mean --turn=-1nm?" --trun=-1nm
+bad "unknown option '--xyzzy' (see adhere --help)" --xyzzy
+"$ADHERE" --plan --turns=-1nm,-2nm >"$TMP/plan" 2>&1
+check "--turns sets the turns as --turn does" grep -q "turning points: 2 (-1, -2 nm)" "$TMP/plan"
+printf '[protocol]\nturn = -2nm\n' >"$TMP/turn.scene"
+bad "turn.scene:2: unknown key 'turn': did you mean 'turns'? (see adhere-scene(5))" "$TMP/turn.scene"
+printf '[protocol]\nR = 2um\n' >"$TMP/r.scene"
+bad "r.scene:2: unknown key 'R' in \\[protocol\\]: did you mean 'R' in \\[material\\]?" "$TMP/r.scene"
 
 # An output path that cannot be a directory.
 touch "$TMP/afile"

@@ -9,7 +9,12 @@ need_gnuplot
 DATA=${ADHERE_SRC:-.}/share/adhere/data/fig1-synthetic.tsv
 COARSE="-N 300 --spacing=2.5nm"
 D=$TMP/fit
-"$ADHERE" fit --data="$DATA" -E 1.3GPa -A 0.8e-19J $COARSE -o "$D" fig1 >"$TMP/fit.out" 2>"$TMP/fit.err"
+# a gnuplot that logs the commands fit.png is drawn with
+GP=$(command -v gnuplot)
+printf '#!/bin/sh\ntee -a "%s" | "%s" "$@"\n' "$TMP/fit.gp" "$GP" >"$TMP/logging-gnuplot"
+chmod +x "$TMP/logging-gnuplot"
+ADHERE_GNUPLOT=$TMP/logging-gnuplot "$ADHERE" fit --data="$DATA" -E 1.3GPa -A 0.8e-19J $COARSE -o "$D" fig1 \
+    >"$TMP/fit.out" 2>"$TMP/fit.err"
 rc=$?
 check "adhere fit exits 0 with a fit ($rc: $(tail -1 "$TMP/fit.err"))" sh -c "[ $rc -eq 0 ] && grep -qx 'result: fit' '$TMP/fit.out'"
 E=$(awk -F'\t' '$1 == "E" {print $2}' "$D/fit.tsv")
@@ -22,6 +27,25 @@ check "progress: a line per model evaluation" sh -c "[ \$(grep -c '^  eval ' '$T
 n=$(grep -cv '^#' "$D/fit-points.tsv")
 check "fit-points.tsv: every point with its model value and residual ($n lines)" [ "$n" -eq 201 ]
 check "fit.png is a PNG" sh -c "head -c 8 '$D/fit.png' | od -c | grep -q 'P   N   G'"
+# fit.png's key in a corner of the force panel that holds no measured
+# point: the box (45 % of the frame's width, 30 % of its height) its corner
+# names, in the frame the log sets, against fit-points.tsv's points
+key=$(sed -n 's/^set key \(\(top\|bottom\) .*\)/\1/p' "$TMP/fit.gp" | head -1)
+frame=$(sed -n 's/^set [xy]range \[\(.*\):\(.*\)\]$/\1 \2/p' "$TMP/fit.gp" | head -2 | tr '\n' ' ')
+Fu=$(sed -n 's/^Fu = //p' "$TMP/fit.gp")
+inkey=$(awk -F'\t' -v key="$key" -v frame="$frame" -v fu="$Fu" '
+    BEGIN {split(frame, f, " "); x0 = f[1]; x1 = f[2]; y0 = f[3]; y1 = f[4]
+           xa = key ~ /right/ ? x1 - 0.45 * (x1 - x0) : x0; xb = key ~ /right/ ? x1 : x0 + 0.45 * (x1 - x0)
+           ya = key ~ /top/ ? y1 - 0.3 * (y1 - y0) : y0; yb = key ~ /top/ ? y1 : y0 + 0.3 * (y1 - y0)}
+    NR > 2 {x = $3 * 1e9; y = $4 * fu; n += x >= xa && x <= xb && y >= ya && y <= yb}
+    END {print n + 0}' "$D/fit-points.tsv")
+check "fit.png's key ($key) covers none of the measured points ($inkey in its box)" \
+    sh -c "[ -n '$key' ] && [ '$key' != 'top right opaque' ] && [ '$inkey' -eq 0 ]"
+# the residuals, a few nN under a curve in uN, in their own unit
+rmax=$(awk -F'\t' 'NR > 2 {r = $8 < 0 ? -$8 : $8; m = r > m ? r : m} END {print m}' "$D/fit-points.tsv")
+check "fit.png's residual panel in nN (the largest residual $rmax N), the force panel in uN" \
+    sh -c "awk -v r='$rmax' 'BEGIN {exit !(r >= 1e-10 && r < 1e-7)}' && grep -q '^set ylabel \"residual (nN)\"' '$TMP/fit.gp' && grep -q '^set ylabel \"force F (µN)\"' '$TMP/fit.gp'"
+check "fit.png's panels share one left margin, so their x axes line up" grep -q '^set lmargin ' "$TMP/fit.gp"
 check "the best scene opens: adhere --plan OUT/best.scene" sh -c "'$ADHERE' --plan '$D/best.scene' >'$TMP/plan' 2>&1 && grep -q '^mode: static' '$TMP/plan'"
 printf 'q\n' >"$TMP/q.keys"
 "$ADHERE" --replay="$TMP/q.keys" --screen="$TMP/best.screen" "$D/best.scene" >/dev/null 2>&1

@@ -66,9 +66,9 @@ fi
 "$ADHERE" --batch -q --mode=rigid -N 10 --turn=-1nm -o "$TMP/rigid" >/dev/null 2>"$TMP/rigid.err"
 rc=$?
 check "--mode=rigid builds no grid, so a coarse N is no error (exit $rc: $(head -c 120 "$TMP/rigid.err"))" [ "$rc" -eq 0 ]
-refused "too small for this material: the automatic start .* is 7.35e-09 m.* give a start" \
+refused "too small for this material: the automatic start .* is 7.35 nm.* give a start" \
     "$ADHERE" --plan -R 150nm --turn=none
-refused "turning point -5e-09 m (the default turn) is too deep.*give a shallower turn or a larger R (--turn, -R)" "$ADHERE" --plan -R 150nm
+refused "turning point -5 nm (the default turn) is too deep.*give a shallower turn or a larger R (--turn, -R)" "$ADHERE" --plan -R 150nm
 refused "--gnuplot-style=$TMP/none.gp: No such file" "$ADHERE" --batch -q --gnuplot-style="$TMP/none.gp" -o "$TMP/st"
 check "a missing style file is found before the run: no table written" [ ! -e "$TMP/st/force.tsv" ]
 for a in --plan --help --list-keys --version; do

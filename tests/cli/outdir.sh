@@ -97,8 +97,8 @@ echo mine >reuse/force.tsv.bak
 rc=$?
 check "run 2 into run 1's directory: exit 0 (got $rc: $(head -c 200 reuse.err))" [ "$rc" -eq 0 ]
 left=$(cd reuse && ls -A | sort | tr '\n' ' ')
-check "only run 2's files, the manifest and the user's remain: $left" \
-    [ "$left" = ".adhere-manifest force.tsv force.tsv.bak notes.txt summary.tsv " ]
+check "only run 2's files (its tables: --plots=force writes models.tsv with --no-plot too), the manifest and the user's remain: $left" \
+    [ "$left" = ".adhere-manifest force.tsv force.tsv.bak models.tsv notes.txt summary.tsv " ]
 check "run 2's summary is run 2's (no turn: turn_h0 nan)" [ "$(key reuse turn_h0)" = nan ]
 # a table of adhere's the user edited is the user's now
 echo "my edit" >>reuse/force.tsv

@@ -72,15 +72,17 @@ check '[ $rc -eq 0 ] && [ "$s" = "$size" ]' "two turns: force.png with its adhes
 check '[ ! -e "$D/profile.png" ] && [ ! -e "$D/contact.png" ]' "--plots=force makes force.png alone"
 
 # --- force.png's references: the static curve and the models -------------
-# A gnuplot that logs its commands and keeps force.png's data before adhere
-# removes it, then passes everything to the real gnuplot.
+# A gnuplot that logs its commands and keeps the figures' data files
+# (GPLOG.force.dat, GPLOG.contact.dat, ...) before adhere removes them, then
+# passes everything to the real gnuplot.
 GP=$(command -v gnuplot)
 cat >"$T/logging-gnuplot" <<EOF
 #!/bin/sh
 tee -a "\$GPLOG" | "$GP" "\$@"
 rc=\$?
-f=\$(sed -n "s/^  '\\(.*force\\.dat\\)' index .*/\\1/p" "\$GPLOG" | tail -1)
-[ -n "\$f" ] && cp "\$f" "\$GPLOG.force.dat"
+for f in \$(sed -n "s/.*'\\([^']*\\/[a-z]*\\.dat\\)'.*/\\1/p" "\$GPLOG" | sort -u); do
+    cp "\$f" "\$GPLOG.\$(basename "\$f")" 2>/dev/null
+done
 exit \$rc
 EOF
 chmod +x "$T/logging-gnuplot"
@@ -115,7 +117,7 @@ check '[ "$nun" -eq 0 ] || [ -n "$j" ]' "its $nun unstable points are drawn dash
 # the models on h0 = z0 - overlap: JKR's load part ends at -(3/2) pi gamma R,
 # its dashed part at the fold, -(5/6) pi gamma R; DMT ends at h0 = z0, -2 pi gamma R
 jkr=$(val F_jkr "$D/summary.tsv"); dmt=$(val F_dmt "$D/summary.tsv"); z0=$(val z0 "$D/summary.tsv")
-i=$(index_of 'ls 3 notitle' "$L"); k=$(index_of 'ls 3 dt adh_model_disp_dash' "$L")
+i=$(index_of 'ls 3 notitle' "$L"); k=$(index_of 'ls 3 lc rgb adh_model_disp_color' "$L")
 check '[ -n "$i" ] && dataset "$i" "$L.force.dat" | awk -v f="$jkr" "{m = NR == 1 || \$2 < m ? \$2 : m; last = \$2} END {exit !(NR > 10 && m == last && (m - f) ^ 2 < (1e-9 * f) ^ 2)}"' \
     "JKR's load-controlled part (index $i) ends at its minimum, -(3/2) pi gamma R = $jkr N"
 check '[ -n "$k" ] && dataset "$k" "$L.force.dat" | awk -v f="$jkr" "{last = \$2} END {exit !(NR > 10 && (last - f * 5 / 9) ^ 2 < (1e-9 * f) ^ 2)}"' \
@@ -173,6 +175,8 @@ xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/panel.gp" | tail -1)
 xt=$(sed -n 's/^set xtics \(.*\)$/\1/p' "$T/panel.gp" | tail -1)
 check 'echo "$xr $xt" | awk "{lo = \$1; hi = \$2; st = \$3; n = 0; for (k = int(lo / st) - 1; k <= int(hi / st) + 1; k++) if (k * st >= lo && k * st <= hi) n++; exit !(st > 0 && n >= 3)}"' \
     "the adhesion panel has at least three load ticks with two turns (range $xr, step $xt)"
+check 'echo "$xr $xt" | awk "{lo = \$1; hi = \$2; st = \$3; n = 0; for (k = int(lo / st) - 1; k <= int(hi / st) + 1; k++) if (k * st >= lo && k * st <= hi) n += length(sprintf(\"%g\", k * st)) + 2; exit !(n <= 30)}"' \
+    "its tick labels fit the narrow panel without touching (at most 30 characters in all)"
 yr=$(sed -n 's/^set yrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/panel.gp" | tail -1)
 check 'echo "$yr" | awk "{exit !(NF == 2 && \$1 > 0 && \$2 > \$1)}"' "its adhesion axis does not start at 0 ($yr), so a rise then saturation shows"
 cat >"$T/units.scene" <<'SCENE'
@@ -231,6 +235,132 @@ printf 'z force\n1 2\n3 4\n' >"$T/nounit.txt"
 rc=$?
 check '[ $rc -eq 2 ] && grep -q "^adhere: .*nounit.txt:1: the header.s .z. does not name the position.s unit" "$T/nounit.err"' \
     "a header without units is refused, naming what to write ($(cat "$T/nounit.err"))"
+
+# --- plots fit for a paper (issue 28, item 4) -----------------------------
+# The palette: every colour the style gives the run differs from every other
+# and from the loading colour; the references (models, rigid spheres) are
+# black or grey, each with its own dash or width, so none shares a hue with
+# a branch; JKR and Maugis-Dugdale never draw the same line.
+ST="$SRC/share/adhere/gnuplot/style.gp"
+word_list() { sed -n "s/^$1 = \"\\(.*\\)\"/\\1/p" "$ST" | tr ' ' '\n'; }
+loadc=$(word_list adh_loading_color)
+nun=$(word_list adh_unload_colors | wc -l)
+check '[ "$nun" -ge 6 ] && [ "$(word_list adh_unload_colors | tr a-f A-F | sort -u | wc -l)" -eq "$nun" ] && ! word_list adh_unload_colors | grep -qix "$loadc"' \
+    "the style's $nun unloading colours are all different, and none is the loading colour $loadc"
+npc=$(word_list adh_profile_colors | wc -l)
+check '[ "$npc" -ge 10 ] && [ "$(word_list adh_profile_colors | tr a-f A-F | sort -u | wc -l)" -eq "$npc" ]' \
+    "each of the $npc profile positions of Figure 4 takes its own colour"
+lsdef() { sed -n "s/^set style line $1 \\(.*\\) *# .*/\\1/p" "$ST" | sed 's/ *$//'; }
+grey() { echo "$1" | grep -qE 'lc rgb "#([0-9a-fA-F]{2})\1\1"'; }
+check 'grey "$(lsdef 2)" && grey "$(lsdef 3)" && grey "$(lsdef 4)" && grey "$(lsdef 8)"' \
+    "rigid spheres, JKR, DMT and Maugis-Dugdale are drawn in black or grey: $(lsdef 3); $(lsdef 8); $(lsdef 4)"
+check '[ "$(lsdef 3)" != "$(lsdef 8)" ] && [ "$(lsdef 3)" != "$(lsdef 4)" ] && [ "$(lsdef 4)" != "$(lsdef 8)" ] && ! word_list adh_unload_colors | grep -qi "^#000000$"' \
+    "JKR, DMT and Maugis-Dugdale each have their own line, and no branch is black"
+# force.png of a two-turn run: each branch its own colour and dash, the
+# key below the frame, no x range past where the curves flatten
+D=$T/paper
+GPLOG=$T/paper.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-2nm,0 --eps=3pm --plots=force \
+    -o "$D" 2>"$T/paper.err"
+rc=$?
+check '[ $rc -eq 0 ] && [ -s "$D/force.png" ]' "a two-turn run's force.png ($rc: $(head -c 200 "$T/paper.err"))"
+check 'grep -q "lc rgb adh_ucol(1) lw adh_unloading_width dt adh_udash(1)" "$T/paper.gp" && grep -q "lc rgb adh_ucol(2) lw adh_unloading_width dt adh_udash(2)" "$T/paper.gp"' \
+    "each unloading branch is drawn in its own colour and dash"
+# the style's colour and dash of each of nine branches, by gnuplot itself
+cat >"$T/udash.gp" <<GPEOF
+load "$ST"
+$(grep -E '^adh_(nc|ucol|udash)' "$T/paper.gp" | sed 's/^/ /')
+do for [p=1:9] { print adh_ucol(p), adh_udash(p) }
+GPEOF
+sed -i 's/^ //' "$T/udash.gp"
+gnuplot "$T/udash.gp" 2>"$T/udash.txt"
+check '[ "$(wc -l <"$T/udash.txt")" -eq 9 ] && [ "$(sort -u "$T/udash.txt" | wc -l)" -eq 9 ]' \
+    "nine branches (Figure 6) never repeat a colour with the same dash: $(tr '\n' ';' <"$T/udash.txt")"
+check 'grep -q "^set key at screen 0.5, screen 0.01 center bottom" "$T/paper.gp" && ! grep -q "^set key \\(top\\|bottom\\|right\\|left\\)" "$T/paper.gp"' \
+    "force.png's key sits below the frames, never over the data"
+xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/paper.gp" | head -1)
+start=$(awk -F'\t' '!/^#/ && $1 != "h0" {print $1; exit}' "$D/force.tsv")
+last=$(awk -F'\t' '!/^#/ && $1 != "h0" && $9 > 0 && $5 > 0 {if ($1 > m) m = $1} END {print m}' "$D/force.tsv")
+check 'echo "$xr $start $last" | awk "{exit !(\$2 < \$3 * 1e9 && \$2 > \$4 * 1e9)}"' \
+    "the position axis ($xr nm) stops short of the start ($start m), past the last contact ($last m)"
+check '[ "$(grep -c "^set yrange" "$T/paper.gp")" -ge 1 ]' "the force axis is set from the data"
+# models.tsv: the curves force.png draws, against their closed forms
+M=$D/models.tsv
+mval() { awk -F'\t' -v m="$1" -v p="$2" '$1 == m && $2 == p {print $'"$3"'}' "$M"; }
+summ() { awk -F'\t' -v k="$1" '$1 == k {print $2}' "$D/summary.tsv"; }
+jkr=$(summ F_jkr); dmt=$(summ F_dmt); z0=$(summ z0)
+check '[ -s "$M" ] && head -20 "$M" | grep -qx "$(printf "model\tpart\th0\tF")"' "models.tsv is written beside force.tsv, with its header"
+check 'mval jkr load 4 | awk -v f="$jkr" "{m = NR == 1 || \$1 < m ? \$1 : m; last = \$1} END {exit !(NR > 10 && m == last && (m - f) ^ 2 < (1e-9 * f) ^ 2)}"' \
+    "models.tsv: JKR's load part ends at its minimum, -(3/2) pi gamma R = $jkr N"
+check 'mval jkr displacement 4 | awk -v f="$jkr" "{last = \$1} END {exit !(NR > 10 && (last - f * 5 / 9) ^ 2 < (1e-9 * f) ^ 2)}"' \
+    "models.tsv: JKR's displacement part ends at the fold, -(5/6) pi gamma R"
+check 'mval dmt load 3 | tail -1 | awk -v z="$z0" "{exit !((\$1 - z) ^ 2 < (1e-9 * z) ^ 2)}" && mval dmt load 4 | tail -1 | awk -v f="$dmt" "{exit !((\$1 - f) ^ 2 < (1e-9 * f) ^ 2)}"' \
+    "models.tsv: DMT ends at contact, h0 = z0, with -2 pi gamma R = $dmt N"
+check 'mval maugis_dugdale load 4 | awk -v j="$jkr" -v d="$dmt" "{m = NR == 1 || \$1 < m ? \$1 : m} END {exit !(NR > 10 && m < j && m > d)}"' \
+    "models.tsv: Maugis-Dugdale pulls off between JKR and DMT"
+awk -F'\t' '!/^#/ && $1 != "h0" && $9 == 0 && $1 > 0 {printf "%.12g %.12g\n", $1, $12}' "$D/force.tsv" | sort >"$T/rigid.want"
+awk -F'\t' '$1 == "rigid" {printf "%.12g %.12g\n", $3, $4}' "$M" | sort >"$T/rigid.got"
+check '[ "$(wc -l <"$T/rigid.got")" -gt 10 ] && cmp -s "$T/rigid.want" "$T/rigid.got"' \
+    "models.tsv: eq 22 at every approach position before contact, as force.tsv's F_rigid ($(wc -l <"$T/rigid.got") rows)"
+# one spelling of units and no title that repeats the heading's numbers
+check '! grep -h "^set .*title\|^set .*label\|title \"" "$T"/*.gp | grep -q "um/s\|sigma = [0-9]"' \
+    "no figure writes um/s or repeats sigma in words (µm/s, σ in the heading)"
+check '! grep -h "^title" "$SRC"/share/adhere/scenes/*.scene | grep -qi "sigma = \|E = [0-9]\|R = [0-9]\|um/s"' \
+    "the shipped scenes' titles leave sigma, E, R and speeds to the headings"
+
+# The static curve's contact.png: the contact radius alone (a curve of
+# equilibria has no speed), stable and unstable stretches apart; its
+# contact.tsv says the speeds are nan
+D=$T/staticc
+GPLOG=$T/staticc.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-2nm --mode=static \
+    --plots=contact -o "$D" 2>"$T/staticc.err"
+rc=$?
+check '[ $rc -eq 0 ] && [ "$(png_size "$D/contact.png")" = "$size" ]' "--mode=static: contact.png made ($rc: $(head -c 200 "$T/staticc.err"))"
+check '! grep -q "speed" "$T/staticc.gp" && grep -q "set ylabel \"contact radius a (µm)\"" "$T/staticc.gp"' \
+    "--mode=static: no speed panel, the contact radius labelled"
+check 'grep -q "with lines ls 1 title \"stable\"" "$T/staticc.gp" && grep -q "dt adh_unstable_dash title \"unstable (displacement control)\"" "$T/staticc.gp"' \
+    "--mode=static: stable and unstable stretches styled apart in the key"
+i=$(index_of 'ls 1 title "stable"' "$T/staticc.gp")
+grep -v '^#' "$D/force.tsv" | awk -F'\t' 'NR > 1 && $11 == 1 {printf "%.9g %.9g\n", $1, $5}' | sort -u >"$T/sa.want"
+dataset "$i" "$T/staticc.gp.contact.dat" | awk '{printf "%.9g %.9g\n", $1, $2}' | sort -u >"$T/sa.got"
+check '[ -n "$i" ] && [ "$(wc -l <"$T/sa.want")" -gt 10 ] && [ -z "$(comm -23 "$T/sa.want" "$T/sa.got")" ]' \
+    "--mode=static: the solid curve holds every stable row's contact radius ($(wc -l <"$T/sa.want") rows)"
+check 'awk -F"\t" "!/^#/ && \$1 != \"h0\" && (\$6 != \"nan\" || \$7 != \"nan\") {bad++} END {exit bad > 0}" "$D/contact.tsv" && grep -q "^# the static equilibrium curve: nothing moves along it" "$D/contact.tsv"' \
+    "--mode=static: contact.tsv's speeds are nan, and it says why"
+
+# Figure 3's axes hold the points, not the decades round them
+yr=$(sed -n 's/^set yrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/jump.gp" | tail -1)
+hmin=$(awk -F'\t' '!/^#/ && $1 != "run" {print $8}' "$T/jump/sweep.tsv" | sort -g | head -1)
+check 'echo "$yr $hmin" | awk "{exit !(\$1 > 0 && \$1 >= \$3 * 1e9 / 1.5 && \$2 < 10)}" && grep -q "^set ytics (" "$T/jump.gp"' \
+    "Figure 3's gap axis ($yr nm) starts within a factor 1.5 of the smallest gap ($hmin m), with its own tics"
+
+# Figure 7's frame: the runs' curves to where they flatten, not the start;
+# the key below it; each run's colour from the style
+cat >"$T/f7.scene" <<'SCENE'
+[scene]
+title = Figure 7, small
+[material]
+E = 1GPa
+[protocol]
+turns = -2nm
+[output]
+plots = none
+[sweep]
+eps = 3pm, 2pm
+plot = force
+SCENE
+GPLOG=$T/f7.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN "$T/f7.scene" -o "$T/f7" 2>"$T/f7.err"
+# (the force panel's range is the first; the hysteresis panel's follows)
+xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/f7.gp" | head -1)
+hmax=$(awk -F'\t' '!/^#/ && $1 != "h0" {if ($1 > m) m = $1} END {print m}' "$T/f7/run-1/force.tsv")
+jout=$(awk -F'\t' '$1 == "jump_out_h0" {print $2}' "$T/f7/run-1/summary.tsv")
+check '[ -s "$T/f7/force.png" ] && echo "$xr $hmax $jout" | awk "{exit !(\$2 < 0.8 * \$3 * 1e9 && \$2 > \$4 * 1e9)}"' \
+    "Figure 7's position axis ($xr nm) ends short of the start ($hmax m), past the jump-out ($jout m)"
+check 'grep -q "^set key outside below" "$T/f7.gp" && grep -q "lc rgb word(adh_sweep_colors, 1 + 1 % words(adh_sweep_colors)) title \"ε = 2 pm\"" "$T/f7.gp"' \
+    "Figure 7's key below the frame, each run in the style's sweep colours"
+# the hysteresis panel's key inside its frame: the force panel's "outside
+# below" would hold otherwise and put it over the panel's eps label
+check 'sed -n "/^set origin 0.64,0/,\$p" "$T/f7.gp" | grep -q "^set key inside "' \
+    "Figure 7's hysteresis panel keeps its key inside its frame, off its x label"
 
 # --- --no-plot ------------------------------------------------------------
 D=$T/noplot

@@ -185,8 +185,8 @@ check "turn 1 pulls off at --batch's $(pulloff 1) mN, and r goes on with turn 2"
 check "turn 8 pulls off last, at --batch's $(pulloff 8) mN" grep -q "pull-off $(pulloff 8) mN" "$M/multiturn-pull8.txt"
 check "then r says the protocol is complete" grep -q "^the protocol is complete" "$M/multiturn-complete.txt"
 check "one state back, r unloads turn 8 again to the same pull-off" grep -q "pull-off $(pulloff 8) mN" "$M/multiturn-again.txt"
-check "the panel shows the turn of the branch on screen (turn 1: 2 nm, turn 8: -10 nm)" \
-    sh -c "grep -q '^  turn  2 nm ' '$M/multiturn-pull1.txt' && grep -q '^  turn  -10 nm ' '$M/multiturn-pull8.txt'"
+check "the turn field shows the list; the state the turn of the branch on screen (turn 1: 2 nm, turn 8: -10 nm)" \
+    sh -c "grep -q '^  turn  2 … -10 nm   8 turning points' '$M/multiturn-pull1.txt' && grep -q 'branch unloading from turn 1 of 8, 2 nm' '$M/multiturn-pull1.txt' && grep -q 'branch unloading from turn 8 of 8, -10 nm' '$M/multiturn-pull8.txt'"
 
 # A soft material set on the screen gets --batch's grid for it, and the
 # same rows.
@@ -319,8 +319,8 @@ if [ -s "$SB/summary.tsv" ]; then
     # both step the drive's static rule: the same points, every one (Newton
     # iteration counts too); no seconds column to mask in the comparison
     check "and the screen's points are --batch --mode=static's rows, every one" same_rows "$ST/static-rows.tsv" "$SB"
-    check "with its $folds folds, jump-in $(nm "$(sval jump_in_h0)") and jump-out $(nm "$(sval jump_out_h0)")" \
-        grep -q "folds  $folds; jump-in $(nm "$(sval jump_in_h0)"), jump-out $(nm "$(sval jump_out_h0)")" "$ST/static-end.txt"
+    check "its physical folds, jump-in $(nm "$(sval jump_in_h0)") and jump-out $(nm "$(sval jump_out_h0)"), apart from its $((folds - 2)) lattice folds ($folds in all)" \
+        grep -q "folds  jump-in $(nm "$(sval jump_in_h0)"), out $(nm "$(sval jump_out_h0)"), +$((folds - 2)) lattice" "$ST/static-end.txt"
     check "and its pull-off $(nN "$(sval pulloff_F)") (the minimum force) and force at the jump-out $(nN "$(sval pulloff_F_disp)")" \
         grep -q "pull-off $(nN "$(sval pulloff_F)"); F at the jump-out $(nN "$(sval pulloff_F_disp)")" "$ST/static-end.txt"
 else
@@ -330,10 +330,14 @@ check "the end of the curve is said, on the state and status lines" \
     sh -c "grep -q 'curve  complete, ends at h0 = -5 nm' '$ST/static-end.txt' && grep -q '^curve complete at h0 = -5 nm' '$ST/static-end.txt'"
 check "the preview marks stable (*) and unstable (.) points" \
     sh -c "sed -n '17,30p' '$ST/static-end.txt' | cut -c12- | grep -q '[*]' && sed -n '17,30p' '$ST/static-end.txt' | cut -c12- | grep -q '[.]'"
-check "p in static mode writes force.png as a PNG" \
-    sh -c "[ \"\$(head -c 8 '$ST/adhere-plots/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && grep -q '^plots: wrote force.png' '$ST/static-plots.txt'"
+check "p in static mode writes force.png as a PNG, into static/ beside the relaxation's" \
+    sh -c "[ \"\$(head -c 8 '$ST/adhere-plots/static/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && grep -q '^plots: wrote force.png' '$ST/static-plots.txt' && grep -q 'adhere-plots/static' '$ST/static-plots.txt'"
 check "its profiles: first contact, pull-off and the curve's end (3)" \
-    [ "$(grep -v '^#' "$ST/adhere-plots/profiles.tsv" | tail -n +2 | cut -f1 | sort -u | wc -l)" -eq 3 ]
+    [ "$(grep -v '^#' "$ST/adhere-plots/static/profiles.tsv" | tail -n +2 | cut -f1 | sort -u | wc -l)" -eq 3 ]
+check "its contact.tsv has no speed: a curve of equilibria does not move in time" \
+    sh -c "grep -q '^# the static equilibrium curve: nothing moves along it' '$ST/adhere-plots/static/contact.tsv' && ! awk -F'\t' '!/^#/ && \$1 != \"h0\" && \$6 != \"nan\"' '$ST/adhere-plots/static/contact.tsv' | grep -q ."
+check "p back in relaxation keeps both: the path's plots in adhere-plots/, the curve's in static/" \
+    sh -c "[ -s '$ST/adhere-plots/force.png' ] && [ -s '$ST/adhere-plots/static/force.png' ] && [ -s '$ST/adhere-plots/static/contact.png' ] && grep -q '^plots: wrote force.png' '$ST/static-relaxplots.txt'"
 check "changing eps keeps the curve ($(at "$ST/static-eps.txt")) and says why" \
     sh -c "[ '$(at "$ST/static-eps.txt")' = '$(at "$ST/static-end.txt")' ] && grep -q '^eps = 2 pm: the equilibrium curve does not depend on it and is kept' '$ST/static-eps.txt'"
 check "changing E drops the curve and says it starts again" \
@@ -344,7 +348,7 @@ check "m back to relaxation shows its own (empty) path" \
 check "m to static again finds the curve as it was ($(at "$ST/static-again.txt"), nothing solved)" \
     sh -c "[ '$(at "$ST/static-again.txt")' = '3 of 3' ] && grep -q 'nothing solved again' '$ST/static-again.txt'"
 check "and m back finds the relaxation path (2 states) as it was" \
-    sh -c "grep -q 'path   2 states' '$ST/static.screen' && grep -q 'relaxation: back on the path' '$ST/static.screen'"
+    sh -c "grep -q 'path   2 states' '$ST/static-relaxback.txt' && grep -q 'relaxation: back on the path' '$ST/static-relaxback.txt'"
 # One check of every limit, in the core: :set refuses what --batch refuses,
 # with the core's same sentence, each driver naming what to change in
 # parentheses after it in its own words (the CLI its flags, the screen its
@@ -374,7 +378,8 @@ done
 PO=$W/plots-out
 check "--out chooses where p writes in the TUI" \
     sh -c "[ \"\$(head -c 8 '$PO/my-plots/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && [ ! -e '$PO/adhere-plots' ] && grep -q '^plots: wrote force.png.* in my-plots' '$PO/plots-out.screen'"
-check "p says which plots it wrote and where" sh -c "grep '^plots: ' '$W/plots/plots.screen' | grep 'force.png, profile.png, contact.png' | grep -q 'adhere-plots'"
+check "p says which plots it wrote and where (the status wraps rather than cut the directory)" \
+    sh -c "grep -A2 '^plots: ' '$W/plots/plots.screen' | tr '\n' ' ' | grep 'force.png, profile.png, contact.png' | grep -q 'in adhere-plots'"
 
 R=$W/resize
 check "after :resize 80x24 the screen is 24 lines of at most 80 columns" \
@@ -389,13 +394,39 @@ check "and keeps every parameter in view in a compact form" \
     sh -c "grep -q '^E 300 MPa  A 1e-19 J  z0 0.5 nm  R 10 µm' '$W/small/small-state.txt' && grep -q '^turn -5 nm' '$W/small/small-state.txt'"
 check "at 40x12 selecting shows the parameters" sh -c "grep -q '^ >A ' '$W/small/small.screen' && [ \$(wc -l <'$W/small/small.screen') = 12 ] && [ \$(wc -L <'$W/small/small.screen') -le 40 ]"
 
+# An ordinary terminal, 100 x 24 (issue 28, item 5)
+SH=$W/short
+check "at 100x24 the screen is 24 lines of at most 100 columns" \
+    sh -c "[ \$(wc -l <'$SH/short.screen') = 24 ] && [ \$(wc -L <'$SH/short.screen') -le 100 ]"
+check "at 100x24 the preview keeps its plot, its range in the heading" \
+    sh -c "grep -q '^ F against h0  + loading  o unloading  @ now  *h0 2 nm to 17 nm' '$SH/short.screen' && grep -Eq '^ -[0-9.]+ nN\|@' '$SH/short.screen'"
+check "the state's words wrap at 100 columns, none cut" \
+    sh -c "grep -q 'run to the turning\$' '$SH/short-0.txt' && grep -q 'point, ? for every key' '$SH/short-0.txt'"
+check "the turn field shows its list: the ends, shallowest first, and the count" \
+    sh -c "grep -q '^  turn  2 … -2 nm    3 turning points' '$SH/short.screen' && grep -q '^turn = 2, 1, -2 nm: r now loads to there' '$SH/short-0.txt'"
+check ":set of a key outside the panel reads a bare number in the unit it is shown in (protocol.start 12: 12 nm)" \
+    sh -c "grep -q '^protocol.start = 12 nm' '$W/setunit/setunit-start.txt' && grep -q 'start 12 nm' '$W/setunit/setunit-start.txt' && grep -q '^grid.fine_band = 500 nm' '$W/setunit/setunit.screen'"
+# A line too long for a narrow screen loses its last clause whole, and a
+# wrapped message never puts a number on one line and its unit on the next.
+check "at 80 and 40 columns no line ends in a number without its unit" \
+    sh -c "cd '$W' && ! grep -E '[0-9]\$' resize/resize.screen resize/resize-60x40.txt small/small.screen small/small-state.txt narrow/narrow.screen short/short.screen short/short-0.txt"
+check "at 80 columns the state's rows end at a clause (path ... to redo, not '; start 17 n')" \
+    sh -c "grep -Eq 'path   [0-9]+ states, 0 to redo\$' '$W/resize/resize.screen' && grep -Eq ' F +-?[0-9.]+ [pn]N +force\$' '$W/resize/resize.screen'"
+check "at 40 columns the preview's axis labels stand apart (its ends whole, the middle shortened)" \
+    sh -c "grep -Eq '^ {11}7 nm +h0 +17 nm\$' '$W/narrow/narrow.screen'"
+RP=$W/runplot
+check "p during r pauses the run and draws the path so far, r going on from there" \
+    sh -c "grep -A2 '^paused at h0 = ' '$RP/runplot-paused.txt' | tr '\n' ' ' | grep -q 'plots: wrote force.png.*in adhere-plots.*; r goes on' && [ -s '$RP/adhere-plots/force.png' ] && grep -q '^at the turning point h0 = -5 nm' '$RP/runplot.screen'"
+check "... drawn from the 12 states of the path so far" \
+    sh -c "grep -q 'path   12 states' '$RP/runplot-paused.txt'"
+
 check "a bad token names FILE:LINE and the token" grep -q "^bad-token.keys:3: unknown key <Foo>" "$W/bad-token/stderr"
 check "a bad :set value names FILE:LINE, the value and what is wanted" \
     grep -q "^bad-set.keys:3: E: '5nm' is a length (m, nm, um, ...), but a pressure" "$W/bad-set/stderr"
 check "an unknown :set name lists the names" grep -q "^bad-name.keys:1: unknown parameter 'sigma'.*E A z0 R eps d N spacing turn" "$W/bad-name/stderr"
 
 check "a grid too short for the turn is flagged before any solve" \
-    sh -c "grep -q '! grid radius Rmax = 1.5e-07 m is too short' '$W/grid-warn/grid-warn.screen' && grep -q 'use' '$W/grid-warn/grid-warn.screen' && grep -q 'path   0 states' '$W/grid-warn/grid-warn.screen'"
+    sh -c "grep -q '! grid radius Rmax = 150 nm is too short' '$W/grid-warn/grid-warn.screen' && grep -q 'use' '$W/grid-warn/grid-warn.screen' && grep -q 'path   0 states' '$W/grid-warn/grid-warn.screen'"
 check "an unwritable :dump names FILE:LINE and the file" \
     grep -q "^bad-dump.keys:2: cannot write the screen to no-such-dir/screen.txt: No such file" "$W/bad-dump/stderr"
 

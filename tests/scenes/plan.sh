@@ -131,6 +131,32 @@ check "an automatic graded grid keeps the scene's operator = dense ($(kline "$TM
 same_kernel "as it keeps --operator=dense" "$TMP/soft.scene" "-E 0.1GPa --operator=dense"
 same_kernel "and --operator=h2 overrides it" "$TMP/soft.scene --operator=h2" "-E 0.1GPa"
 
+# --plan's time (issue 28, item 6): every relaxation's plan says its
+# iterations and an estimated time, from one kernel product timed on its
+# grid; the static curve's and rigid spheres' say what they do. Against a
+# run of the same settings in this session: the iterations within a factor
+# 2 of the run's own count, the time within a factor 4 of its seconds.
+has_re default '^time: under a second'   # (its plan is --mode=rigid's by now)
+for s in fig1 fig4 fig5 fig6 fig7 fig8; do
+    has_re $s '^iterations: about [0-9.e+]+ '
+    has_re $s '^time: about [0-9]+(\.[0-9])? (s|min [0-9]+ s|h [0-9]+ min) \([0-9.e+]+ iterations, each about one kernel product: [0-9.e+-]+ ms'
+done
+plan default --mode=static
+has_re default '^time: not estimated: the static curve'
+QUICKRUN="-N 200 --force -E 1GPa --turn=-3nm --eps=2pm"
+# shellcheck disable=SC2086
+"$ADHERE" --plan $QUICKRUN >"$TMP/quick.plan" 2>&1
+# shellcheck disable=SC2086
+"$ADHERE" --batch -q $QUICKRUN -o "$TMP/quick" 2>/dev/null
+pit=$(sed -n 's/^iterations: about \([0-9.e+]*\) .*/\1/p' "$TMP/quick.plan")
+rit=$(awk -F'\t' '$1 == "iterations" {print $2}' "$TMP/quick/summary.tsv")
+check "the plan's iterations ($pit) are within a factor 2 of the run's ($rit)" \
+    awk -v p="$pit" -v r="$rit" 'BEGIN {exit !(p > 0 && r > 0 && p / r < 2 && r / p < 2)}'
+ptime=$(sed -n 's/^time: about \([0-9.]*\) s .*/\1/p' "$TMP/quick.plan")
+rtime=$(awk -F'\t' '$1 == "seconds" {print $2}' "$TMP/quick/summary.tsv")
+check "the plan's time ($ptime s) is within a factor 4 of the run's ($rtime s), both in this session" \
+    awk -v p="$ptime" -v r="$rtime" 'BEGIN {exit !(p > 0 && r > 0 && p / r < 4 && r / p < 4)}'
+
 # --plan runs nothing and writes nothing.
 "$ADHERE" --plan fig4 -o "$TMP/noplan" >/dev/null 2>&1
 check "--plan writes no output directory" [ ! -e "$TMP/noplan" ]

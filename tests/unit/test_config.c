@@ -169,6 +169,63 @@ static void reword(void)
     ok(strlen(out) == 5, "cut at the buffer's end");
 }
 
+/* A stand-in for the CLI's checks: R from 1 um to 1 mm runs. */
+static int r_in_range(adh_config *c, void *ctx)
+{
+    (void)ctx;
+    return c->spec.mat.R >= 1e-6 && c->spec.mat.R <= 1e-3 ? 0 : -1;
+}
+
+/* A bare number teaches (issue 28, item 2): the units a screen shows each
+ * key in, and the hint that names the ones that would run. */
+static void units_and_hints(void)
+{
+    double f = 0;
+    const adh_config_key *E = adh_config_key_find("material.E"), *R = adh_config_key_find("material.R");
+    const char *u = adh_config_key_unit(E, 3e8, &f);
+    ok(u && !strcmp(u, "MPa") && f == 1e6, "E = 300 MPa is shown in MPa (%s, %g)", u ? u : "-", f);
+    u = adh_config_key_unit(E, 5e9, &f);
+    ok(u && !strcmp(u, "GPa") && f == 1e9, "E = 5 GPa in GPa (%s)", u ? u : "-");
+    u = adh_config_key_unit(E, 2e4, &f);
+    ok(u && !strcmp(u, "kPa"), "E = 20 kPa in kPa, the smallest (%s)", u ? u : "-");
+    u = adh_config_key_unit(R, 1.5e-2, &f);
+    ok(u && !strcmp(u, "mm") && f == 1e-3, "R = 1.5 cm in mm (%s)", u ? u : "-");
+    u = adh_config_key_unit(R, 10e-6, &f);
+    ok(u && !strcmp(u, "um") && fabs(f - 1e-6) < 1e-21, "R = 10 um in um (%s)", u ? u : "-");
+    ok(!adh_config_key_unit(adh_config_key_find("material.A"), 1e-19, &f), "A has no unit but SI's J");
+
+    static adh_config c;
+    char why[512], hint[512];
+    adh_config_default(&c);
+    adh_config_set(&c, "material.R", "10", why, sizeof why);
+    adh_config_note_given(&c, "material.R", "10", "--radius");
+    ok(adh_config_unit_hint(&c, r_in_range, NULL, hint, sizeof hint) == 1 &&
+       !strcmp(hint, "R = 10 m is out of range; did you mean --radius=10um?"), "-R 10: %s", hint);
+    adh_config_set(&c, "material.R", "0.5", why, sizeof why);
+    adh_config_note_given(&c, "material.R", "0.5", "s.scene");
+    ok(adh_config_unit_hint(&c, r_in_range, NULL, hint, sizeof hint) == 1 &&
+       !strcmp(hint, "R = 500 mm is out of range; did you mean R = 0.5mm in s.scene?"), "a scene's R = 0.5: %s", hint);
+    adh_config_set(&c, "material.R", "5000", why, sizeof why);
+    adh_config_note_given(&c, "material.R", "5000", "--radius");
+    ok(adh_config_unit_hint(&c, r_in_range, NULL, hint, sizeof hint) == 0 && !hint[0],
+       "5000 is out of range in every unit: no hint");
+    adh_config_note_given(&c, "material.R", "5000um", "--radius");
+    ok(c.ngiven == 0 && adh_config_unit_hint(&c, r_in_range, NULL, hint, sizeof hint) == 0,
+       "given again with a unit, the bare value is forgotten");
+    adh_config_note_given(&c, "protocol.turns", "0", "--turn");
+    ok(adh_config_unit_hint(&c, r_in_range, NULL, hint, sizeof hint) == 0, "a zero is zero in any unit: no hint");
+    adh_config_note_given(&c, "grid.nodes", "100", "-N");
+    ok(c.ngiven == 1, "a count is no quantity: not remembered (%zu)", c.ngiven);
+
+    const adh_config_key *k = adh_config_key_suggest("protocol", "turn");
+    ok(k && !strcmp(k->key, "protocol.turns"), "[protocol] turn: turns (%s)", k ? k->key : "none");
+    k = adh_config_key_suggest("protocol", "E");
+    ok(k && !strcmp(k->key, "material.E"), "[protocol] E: material.E (%s)", k ? k->key : "none");
+    k = adh_config_key_suggest("material", "z");
+    ok(!k, "[material] z: nothing near enough for a one-letter name (%s)", k ? k->key : "none");
+    ok(adh_config_name_distance("Turns", "turn") == 1, "names compare without case");
+}
+
 int main(void)
 {
     round_trip(NULL);
@@ -178,5 +235,6 @@ int main(void)
     parts();
     protocol();
     reword();
+    units_and_hints();
     return tap_done();
 }

@@ -115,7 +115,7 @@ static void refusals(const char *path)
     len = snprintf(buf, sizeof buf, "h0 (um)\tF (nN)\n");
     for (int i = 0; i < 40; i++)
         len += snprintf(buf + len, sizeof buf - (size_t)len, "%g\t%g\n", 6.0 - 0.2 * i, i < 30 ? -1.0 : -300.0);
-    refused(path, buf, NULL, 2, ":2: the position 6e-06 m is beyond the model's reach", "positions in the wrong unit");
+    refused(path, buf, NULL, 2, ":2: the position 6 um is beyond the model's reach", "positions in the wrong unit");
     /* pN written where the file meant nN: the adhesion is 1000 times too small */
     len = snprintf(buf, sizeof buf, "h0 (nm)\tF (pN)\n");
     for (int i = 0; i < 40; i++)

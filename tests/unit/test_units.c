@@ -67,5 +67,30 @@ int main(void)
     ok(strcmp(buf, "300 MPa") == 0, "3e8 Pa formats as '300 MPa' (got '%s')", buf);
     adh_format_quantity(-5e-9, ADH_Q_LENGTH, 3, buf, sizeof buf);
     ok(strcmp(buf, "-5 nm") == 0, "-5e-9 m formats as '-5 nm' (got '%s')", buf);
+
+    /* every message writes a value through one formatter (issue 28, item 2):
+     * an engineering prefix, zero in the prefix its quantity is read in,
+     * values past the prefixes in SI with an exponent */
+    static const struct { double v; adh_quantity q; const char *want; } eng[] = {
+        { 1e-8, ADH_Q_LENGTH, "10 nm" }, { 1.5811e-9, ADH_Q_LENGTH, "1.581 nm" }, { 3.24e-11, ADH_Q_LENGTH, "32.4 pm" },
+        { 1e-12, ADH_Q_LENGTH, "1 pm" }, { 0, ADH_Q_LENGTH, "0 nm" }, { 0, ADH_Q_FORCE, "0 nN" },
+        { -2e-7, ADH_Q_LENGTH, "-200 nm" }, { 10, ADH_Q_LENGTH, "10 m" }, { 1e-30, ADH_Q_LENGTH, "1e-30 m" },
+        { 1e13, ADH_Q_PRESSURE, "10 TPa" }, { 1e16, ADH_Q_PRESSURE, "1e+16 Pa" }, { 1e-6, ADH_Q_SPEED, "1 um/s" },
+        { 0.5, ADH_Q_NONE, "0.5" }, { 1e-19, ADH_Q_ENERGY, "1e-19 J" },
+    };
+    for (size_t i = 0; i < sizeof eng / sizeof eng[0]; i++) {
+        const char *got = adh_qtext(eng[i].v, eng[i].q).s;
+        ok(strcmp(got, eng[i].want) == 0, "%g %s is written '%s' (got '%s')", eng[i].v, adh_quantity_unit(eng[i].q),
+           eng[i].want, got);
+    }
+    ok(strcmp(adh_qtext_arg(1.58e-9, ADH_Q_LENGTH).s, "1.58nm") == 0, "as typed: 1.58nm (got %s)",
+       adh_qtext_arg(1.58e-9, ADH_Q_LENGTH).s);
+    double back = 0;
+    ok(adh_parse_quantity(adh_qtext_arg(3.3e-8, ADH_Q_LENGTH).s, ADH_Q_LENGTH, &back, NULL, 0) == 0 && fabs(back - 3.3e-8) < 1e-20,
+       "a value as typed reads back (%g)", back);
+    ok(adh_quantity_is_bare("10") && adh_quantity_is_bare(" -5, -2") && adh_quantity_is_bare("1e-19"),
+       "bare numbers and lists of them are bare");
+    ok(!adh_quantity_is_bare("10um") && !adh_quantity_is_bare("-5,-2nm") && !adh_quantity_is_bare("none") &&
+       !adh_quantity_is_bare("auto"), "a unit anywhere, or a word, is not bare");
     return tap_done();
 }

@@ -1,0 +1,66 @@
+#include "cli/estimate.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "adhere/clock.h"
+#include "adhere/kernel.h"
+#include "cli/progress.h"
+
+double cli_estimate_iteration(const adh_config *cfg, double *build)
+{
+    double t0 = adh_clock_seconds();
+    adh_grid *g = adh_config_grid_alloc(&cfg->spec);
+    int st = 0;
+    adh_kernel *k = g ? adh_config_kernel_alloc(&cfg->spec, g, &st) : NULL;
+    *build = adh_clock_seconds() - t0;
+    double *v = k ? malloc(3 * g->n * sizeof *v) : NULL;
+    double per = NAN;
+    if (v) {
+        for (size_t i = 0; i < g->n; i++)
+            v[i] = 1.0 / (1.0 + (double)i);   /* a pressure falling off from the axis */
+        size_t reps = 0;
+        double t1 = adh_clock_seconds(), t = t1;
+        while (reps < 5 || t - t1 < 0.2) {
+            adh_kernel_apply(k, v, v + g->n, v + 2 * g->n);
+            reps++;
+            t = adh_clock_seconds();
+        }
+        per = (t - t1) / (double)reps;
+    }
+    free(v);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+    return per;
+}
+
+void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
+{
+    if (!plan->elastic) {
+        fprintf(f, "time: under a second (eq 22 at each position, no elastic solve)\n");
+        return;
+    }
+    if (plan->static_mode) {
+        fprintf(f, "time: not estimated: the static curve's Newton steps cost as its folds and grid make them "
+                   "(seconds on the paper's grid, up to some 20 s at sigma = 100)\n");
+        return;
+    }
+    double build, per = cli_estimate_iteration(cfg, &build);
+    if (!isfinite(per)) {
+        fprintf(f, "time: not estimated (the kernel could not be built here)\n");
+        return;
+    }
+    /* the runs, jobs at a time, at one iteration per kernel product */
+    static adh_plan_progress runs[ADH_MAX_SWEEP];
+    double iterations = 0;
+    for (size_t i = 0; i < plan->nruns && i < ADH_MAX_SWEEP; i++) {
+        runs[i] = (adh_plan_progress){ .cost = plan->runs[i].iterations };
+        iterations += plan->runs[i].iterations;
+    }
+    double wall = build + adh_plan_time_left(runs, plan->nruns, plan->jobs, 0, 1.0 / per);
+    char t[32];
+    cli_progress_duration(wall, t, sizeof t);
+    fprintf(f, "time: about %s (%.2g iterations, each about one kernel product: %.3g ms on this machine, timed "
+               "now%s; the kernel built in %.2g s)\n", t, iterations, per * 1e3,
+            plan->jobs > 1 ? ", the runs shared out over the jobs" : "", build);
+}

@@ -1,0 +1,20 @@
+/* --plan's estimated time: the plan's expected iterations, each about one
+ * product of the run's kernel, timed here on the grid the run will use. */
+#ifndef ADH_CLI_ESTIMATE_H
+#define ADH_CLI_ESTIMATE_H
+
+#include <stdio.h>
+
+#include "scene/config.h"
+#include "scene/plan.h"
+
+/* The seconds of one relaxation iteration on cfg's grid: the kernel built
+ * (*build gets how long that took) and applied until 0.2 s have passed (at
+ * least 5 times). NAN when the grid or kernel cannot be made. */
+double cli_estimate_iteration(const adh_config *cfg, double *build);
+
+/* "time: about 1 min 50 s (2.1e+05 iterations at 0.5 ms, ...)" for a
+ * relaxation; what is not estimated, and why, otherwise. */
+void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
+
+#endif
