@@ -33,6 +33,10 @@ int cli_static_reference_spec(const adh_run_spec *spec, adh_run_spec *ss, char *
         ss->grid = spec->grid;
         why[0] = '\0';
     }
+    /* and the static mode's operator on it (dense where the relaxation
+     * took H^2 on a uniform grid: its dense LU is the oracle) */
+    if (!ss->grid.storage_given)
+        ss->grid.use.storage = adh_config_storage_for(ss, ADH_MODE_STATIC);
     adh_grid_report gr;
     adh_grid_check(&ss->mat, ADH_GRID_STATIC, adh_config_nodes(ss), adh_config_spacing(ss), &gr);
     if (!gr.resolved)
