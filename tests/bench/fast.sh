@@ -52,7 +52,8 @@ printed() {
     done
 }
 
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load $(cut -d' ' -f1-3 /proc/loadavg)"
+machine="$(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "machine: $machine, load $(cut -d' ' -f1-3 /proc/loadavg)"
 for f in $figures; do
     r=0
     while [ "$r" -lt "$rounds" ]; do
@@ -67,8 +68,8 @@ for f in $figures; do
     printed "$tmp/fig$f-default" >"$tmp/b"
     [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b" || { same=DIFFERENT; failed=1; }
     op=$(awk -F'\t' '$1 == "operator" {print $2}' "$tmp/fig$f-default/summary.tsv" "$tmp/fig$f-default"/run-1/summary.tsv 2>/dev/null | head -1)
-    printf 'ratio: Figure %s, dense / default (%s): %.2f (%.1f / %.1f CPU s, median of %d), printed numbers %s\n' \
-        "$f" "$op" "$(echo "$d $n" | awk '{print $1 / $2}')" "$d" "$n" "$rounds" "$same"
+    printf 'ratio: Figure %s, dense / default (%s): %.2f (%.1f / %.1f CPU s, median of %d), printed numbers %s; %s\n' \
+        "$f" "$op" "$(echo "$d $n" | awk '{print $1 / $2}')" "$d" "$n" "$rounds" "$same" "$machine"
 done
 
 # the static curve's cost against sigma: E for each sigma, the rest default
@@ -85,11 +86,11 @@ if [ -s "$tmp/static-20.cpu" ]; then
     for s in $sigmas; do
         [ -s "$tmp/static-$s.cpu" ] || continue
         t=$(median "$tmp/static-$s.cpu")
-        printf 'ratio: static curve, sigma = %s / sigma = 20: %.2f (%.2f / %.2f CPU s, median of %d; %s nodes, %s points, %s)\n' \
+        printf 'ratio: static curve, sigma = %s / sigma = 20: %.2f (%.2f / %.2f CPU s, median of %d; %s nodes, %s points, %s); %s\n' \
             "$s" "$(echo "$t $t20" | awk '{print $1 / $2}')" "$t" "$t20" "$rounds" \
             "$(awk -F'\t' '$1 == "nodes" {print $2}' "$tmp/static-$s/summary.tsv")" \
             "$(awk -F'\t' '$1 == "points" {print $2}' "$tmp/static-$s/summary.tsv")" \
-            "$(awk -F'\t' '$1 == "operator" {print $2}' "$tmp/static-$s/summary.tsv")"
+            "$(awk -F'\t' '$1 == "operator" {print $2}' "$tmp/static-$s/summary.tsv")" "$machine"
     done
 fi
 exit "$failed"
