@@ -4,8 +4,9 @@
 # machine's load falls on both alike; medians over the rounds. One line per
 # ratio:
 #   - each figure's default run against --operator=dense (Figures 1 to 8 as
-#     shipped; BENCH_FIGURES, default "4", names which: "1 2 3 4 5 6 7 8"
-#     takes an hour on one core, most of it Figures 3, 6 and 7 dense), the
+#     shipped; BENCH_FIGURES, default "1 2 3 4 5 8", names which: ~11
+#     minutes on one core at 3 rounds, most of it Figure 3 dense; "6 7"
+#     add most of an hour, Figure 7 dense alone ~10 minutes a round), the
 #     printed numbers compared too (every summary value to 10 digits);
 #   - the static curve at each sigma of BENCH_SIGMAS (default 1 2 5 7.5 10
 #     15 20 50 100; E set for each, defaults otherwise) against sigma = 20.
@@ -17,7 +18,7 @@ ADHERE=${ADHERE:-./adhere}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 rounds=${BENCH_ROUNDS:-3}
-figures=${BENCH_FIGURES:-4}
+figures=${BENCH_FIGURES:-1 2 3 4 5 8}
 sigmas=${BENCH_SIGMAS:-1 2 5 7.5 10 15 20 50 100}
 short=""
 if [ "${FAST_SMOKE:-0}" = 1 ]; then

@@ -7,7 +7,7 @@
 # 2 x 10^4); BENCH_HMAT_MAX (default 100000) the largest assembled by
 # hmat-oss (70 s at 10^5); BENCH_OPERATOR_N (default "1000 3000 10000 30000
 # 100000"); BENCH_FIG6=1 adds Figure 6 to the soft-contact relaxation goals;
-# BENCH_FIGURES (default 4) the figures whose default run is timed against
+# BENCH_FIGURES (default "1 2 3 4 5 8") the figures whose default run is timed against
 # --operator=dense (tests/bench/fast.sh).
 BUILD=${1:-build}
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
