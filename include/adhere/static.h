@@ -101,8 +101,10 @@ typedef struct adh_static_settings {
                             over the lattice folds a step spans; folds and
                             pull-off from the parabola through the last three
                             points; max_angle, max_gap_step and ds_max do not
-                            apply. -1 (default): 1 on grids of more than
-                            ADH_STATIC_EXACT_MAX_NODES nodes */
+                            apply. -1 (default): adh_static_skips, 1 where
+                            the exact curve is estimated to cost more than
+                            3x the steps, or past ADH_STATIC_EXACT_MAX_NODES
+                            nodes */
     const volatile sig_atomic_t *cancel; /* polled before every Newton iteration:
                             nonzero stops with ADH_EINTR; NULL = never */
 } adh_static_settings;
@@ -115,6 +117,30 @@ int adh_static_settings_validate(const adh_static_settings *s, char *why, size_t
  * lattice folds: the exact curve traces the contact line across every fine
  * ring, several points a ring (74 CPU s at sigma = 15, 1219 rings). */
 #define ADH_STATIC_EXACT_MAX_NODES 1000
+/* The automatic choice between the exact curve and the steps, by their
+ * cost in points (a point costs about the same on either path, on the
+ * same grid and preconditioner). The exact curve resolves the contact
+ * line's crossing of every fine ring up to the deepest turn: about
+ * a/dr crossings (a the contact radius expected there,
+ * adh_rings_contact_estimate), each ~1.3 points or fewer with at least 4
+ * nodes across the edge zone l, ~3 below (there the line snaps ring by
+ * ring, a lattice fold pair at most crossings). Measured, points per
+ * crossing: 0.4 (sigma = 1, 17.6 nodes across l), 0.7 (2, 8.8), 1.0 (3,
+ * 5.9), 1.3 (4, 4.4) on the paper's grid at turn -5 nm, 1.1 (3.75, 6.5
+ * and 7); 3.1 (5, 3.5), 8.1 (7.5, 3.3), 4.4 (3.75, 3.3), 2.3 (2.25, 3.45).
+ * The steps take ~ADH_STATIC_STEP_POINTS points (measured 85 to 154 from
+ * sigma = 1 to 7.5) whatever the grid. The exact curve, the oracle, is
+ * kept where it is estimated within 3x the steps' cost; past
+ * ADH_STATIC_EXACT_MAX_NODES the steps always (docs/static-curve.md). A
+ * grid coarser than the static limit (run by hand) keeps the exact curve:
+ * the steps' accuracy was measured on resolved grids only. */
+#define ADH_STATIC_STEP_POINTS 150
+/* The exact curve's points as estimated above, for grid g, material m and
+ * the curve's end (deepest position) h0_end. */
+double adh_static_exact_points(const adh_grid *g, const adh_material *m, double h0_end);
+/* 1 when lattice_skip = -1 steps over the lattice folds: the one rule of
+ * every driver. */
+int adh_static_skips(const adh_grid *g, const adh_material *m, double h0_end);
 
 /* Up to this many folds are kept with their position and force. */
 #define ADH_STATIC_MAX_FOLDS 4096

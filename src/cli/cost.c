@@ -79,6 +79,22 @@ static void measure(cost_run *cr, const adh_run *run)
     cr->hysteresis = adh_cycle_run_hysteresis(run);
 }
 
+/* Run 0's spec on the uniform grid of n nodes in mode, with the operator
+ * that mode takes there unless one was given (adh_config_storage_for): the
+ * cost of what a run of that N costs by default. */
+static adh_run_spec cost_spec(const adh_config *cfg, size_t n, adh_mode mode)
+{
+    adh_run_spec c;
+    adh_config_sweep_run(cfg, 0, &c);
+    c.mode = mode;
+    c.grid.use.nodes = n;
+    c.grid.use.graded = 0;
+    c.grid.chosen = 0;
+    c.grid.chosen_h2 = 0;
+    c.grid.use.storage = adh_config_storage_for(&c, mode);
+    return c;
+}
+
 static void *worker(void *arg)
 {
     cost_job *job = arg;
@@ -90,16 +106,13 @@ static void *worker(void *arg)
             break;
         cost_run *cr = &job->runs[i];
         cr->ran = 1;
-        adh_run_spec c;
-        adh_config_sweep_run(job->cfg, 0, &c);
-        c.grid.use.nodes = cr->nodes;
+        adh_run_spec c = cost_spec(job->cfg, cr->nodes, ADH_MODE_RELAX);
         c.relax.eps = cr->eps;
         c.grid.use.kernel = cr->kernel;
         double t0 = adh_clock_seconds();
         adh_grid *g = adh_grid_alloc(c.grid.use.nodes, adh_config_spacing(&c));
         int kst = ADH_ENOMEM;
-        adh_kernel_settings ks = { .type = c.grid.use.kernel, .cancel = c.relax.cancel };
-        adh_kernel *k = g ? adh_kernel_alloc(g, &ks, &kst) : NULL;
+        adh_kernel *k = g ? adh_config_kernel_alloc(&c, g, &kst) : NULL;
         cr->kernel_seconds = adh_clock_seconds() - t0;
         adh_run run;
         adh_run_init(&run);
@@ -276,26 +289,25 @@ static int cost_jobs(void)
     return cores > 1 ? (int)(cores < 8 ? cores : 8) : 1;
 }
 
-/* Memory before anything is allocated: the runs in parallel hold a dense
- * kernel each (the report measures dense kernels), beside the static
+/* Memory before anything is allocated: the runs in parallel hold a kernel
+ * each (each run's program share counted too: a margin), beside the static
  * curve's kernel and solver at the finest N, and every thread its BLAS
  * buffer (under ulimit -v). 0, or -1 with why. */
 static int cost_budget(const adh_config *cfg, const size_t *nodes, size_t nnodes, char *why, size_t whylen)
 {
-    adh_run_spec big = cfg->spec;
-    big.grid.use.nodes = 0;
+    size_t n = 0;
     for (size_t a = 0; a < nnodes; a++)
-        big.grid.use.nodes = nodes[a] > big.grid.use.nodes ? nodes[a] : big.grid.use.nodes;
-    big.grid.use.storage = ADH_STORAGE_DENSE;
-    big.grid.use.graded = 0;
-    double n = (double)big.grid.use.nodes, jobs = cost_jobs();
-    double need = adh_budget_bytes(&big, 1) + jobs * 8.0 * n * n, have;
+        n = nodes[a] > n ? nodes[a] : n;
+    adh_run_spec sc = cost_spec(cfg, n, ADH_MODE_STATIC), rc = cost_spec(cfg, n, ADH_MODE_RELAX);
+    double jobs = cost_jobs();
+    double need = adh_budget_bytes(&sc, 1) + jobs * adh_budget_bytes(&rc, 0), have;
     /* the workers and this thread, which solves the static curve meanwhile */
     if (adh_budget_fits(need, (unsigned)jobs + 1, &have, NULL))
         return 0;
-    snprintf(why, whylen, "--cost: its runs at N = %zu would hold about %.3g GB at once (%g in parallel, a dense "
-             "kernel each, beside the static curve's solver), more than the %.3g GB this process may use (available memory, "
-             "ulimit -v/-d less the BLAS's buffers, cgroup limit): use smaller --cost-nodes", big.grid.use.nodes, need / 1e9, jobs, have / 1e9);
+    snprintf(why, whylen, "--cost: its runs at N = %zu would hold about %.3g GB at once (%g in parallel, a %s "
+             "kernel each, beside the static curve's solver), more than the %.3g GB this process may use (available "
+             "memory, ulimit -v/-d less the BLAS's buffers, cgroup limit): use smaller --cost-nodes", n, need / 1e9,
+             jobs, adh_kernel_storage_name(rc.grid.use.storage), have / 1e9);
     return -1;
 }
 
@@ -375,16 +387,14 @@ int cli_cost_main(const cli_options *cli)
 
     /* Meanwhile, on this thread: the static curve at the finest grid with
      * the exact kernel, the limit every eps should approach. */
-    adh_run_spec sc;
-    adh_config_sweep_run(cfg, 0, &sc);
-    sc.grid.use.nodes = nodes[0];
+    size_t finest = nodes[0];
     for (size_t a = 1; a < nnodes; a++)
-        sc.grid.use.nodes = nodes[a] > sc.grid.use.nodes ? nodes[a] : sc.grid.use.nodes;
+        finest = nodes[a] > finest ? nodes[a] : finest;
+    adh_run_spec sc = cost_spec(cfg, finest, ADH_MODE_STATIC);
     sc.grid.use.kernel = ADH_KERNEL_RING;
     adh_grid *g = adh_grid_alloc(sc.grid.use.nodes, adh_config_spacing(&sc));
     int kst = ADH_ENOMEM;
-    adh_kernel_settings ks = { .type = sc.grid.use.kernel, .cancel = sc.relax.cancel };
-    adh_kernel *k = g ? adh_kernel_alloc(g, &ks, &kst) : NULL;
+    adh_kernel *k = g ? adh_config_kernel_alloc(&sc, g, &kst) : NULL;
     adh_run srun;
     adh_run_init(&srun);
     if (kst == ADH_EINTR)

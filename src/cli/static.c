@@ -33,6 +33,10 @@ int cli_static_reference_spec(const adh_run_spec *spec, adh_run_spec *ss, char *
         ss->grid = spec->grid;
         why[0] = '\0';
     }
+    /* and the static mode's operator on it (dense where the relaxation
+     * took H^2 on a uniform grid: its dense LU is the oracle) */
+    if (!ss->grid.storage_given)
+        ss->grid.use.storage = adh_config_storage_for(ss, ADH_MODE_STATIC);
     adh_grid_report gr;
     adh_grid_check(&ss->mat, ADH_GRID_STATIC, adh_config_nodes(ss), adh_config_spacing(ss), &gr);
     if (!gr.resolved)
@@ -40,14 +44,19 @@ int cli_static_reference_spec(const adh_run_spec *spec, adh_run_spec *ss, char *
     return gr.resolved;
 }
 
-/* Whether ss's grid and kernel are spec's: the relaxation's serve. */
-static int same_grid(const adh_run_spec *ss, const adh_run_spec *spec)
+/* Whether ss's grid (and kernel type) is spec's. */
+static int same_rings(const adh_run_spec *ss, const adh_run_spec *spec)
 {
     const adh_grid_spec *a = &ss->grid.use, *b = &spec->grid.use;
     adh_rings_spec ra = adh_config_rings(ss), rb = adh_config_rings(spec);
     return adh_config_nodes(ss) == adh_config_nodes(spec) && a->graded == b->graded && a->kernel == b->kernel &&
-           a->storage == b->storage && ra.dr == rb.dr &&
-           (!a->graded || (ra.fine == rb.fine && ra.rmax == rb.rmax && ra.ratio == rb.ratio));
+           ra.dr == rb.dr && (!a->graded || (ra.fine == rb.fine && ra.rmax == rb.rmax && ra.ratio == rb.ratio));
+}
+
+/* ... and held the same way: the relaxation's grid and kernel serve. */
+static int same_grid(const adh_run_spec *ss, const adh_run_spec *spec)
+{
+    return same_rings(ss, spec) && ss->grid.use.storage == spec->grid.use.storage;
 }
 
 int cli_static_reference(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k, adh_run *ref,
@@ -80,10 +89,13 @@ void cli_static_reference_plan(FILE *f, const adh_run_spec *spec)
     adh_format_quantity(adh_config_spacing(&ss), ADH_Q_LENGTH, 4, dr, sizeof dr);
     adh_format_quantity(g ? g->rmax : NAN, ADH_Q_LENGTH, 4, rmax, sizeof rmax);
     const adh_grid_spec *u = &ss.grid.use;
-    fprintf(f, "reference: the static curve on %s %s grid of %zu %s (spacing %s, Rmax %s, %s kernel, %s): %s%s\n",
-            same_grid(&ss, spec) ? "the relaxation's" : "its own", u->graded ? "graded" : "uniform",
+    /* the relaxation's grid may be held another way for the static curve
+     * (dense where the relaxation takes H^2 on a uniform grid) */
+    int rings = same_rings(&ss, spec), own = rings && !same_grid(&ss, spec);
+    fprintf(f, "reference: the static curve on %s %s grid of %zu %s (spacing %s, Rmax %s, %s kernel, %s%s): %s%s\n",
+            rings ? "the relaxation's" : "its own", u->graded ? "graded" : "uniform",
             g ? g->n : adh_config_nodes(&ss), u->graded ? "rings" : "nodes", dr, rmax, adh_kernel_name(u->kernel),
-            adh_kernel_storage_name(u->storage), resolved ? "resolved (the static limit is 0.3 l)" : "NOT resolved: ",
-            resolved ? "" : why);
+            adh_kernel_storage_name(u->storage), own ? ", a kernel of its own" : "",
+            resolved ? "resolved (the static limit is 0.3 l)" : "NOT resolved: ", resolved ? "" : why);
     adh_grid_free(g);
 }

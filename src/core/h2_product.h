@@ -37,6 +37,40 @@ H2_TARGET static inline double H2_NAME(vdot)(const double *a, const double *b, s
     return V_HSUM(s);
 }
 
+/* out[0 .. 4) = H2_NAME(vdot) of the rows a, a + P, a + 2P, a + 3P with
+ * b, each summed in vdot's order: four chains side by side. */
+H2_TARGET static inline void H2_NAME(vdot4)(const double *a, const double *b, size_t P, double *out)
+{
+    V b0 = V_LOAD(b);
+    V s0 = V_MUL(V_LOAD(a), b0), s1 = V_MUL(V_LOAD(a + P), b0);
+    V s2 = V_MUL(V_LOAD(a + 2 * P), b0), s3 = V_MUL(V_LOAD(a + 3 * P), b0);
+    for (size_t k = 4; k < P; k += 4) {
+        V bk = V_LOAD(b + k);
+        s0 = V_ADD(s0, V_MUL(V_LOAD(a + k), bk));
+        s1 = V_ADD(s1, V_MUL(V_LOAD(a + P + k), bk));
+        s2 = V_ADD(s2, V_MUL(V_LOAD(a + 2 * P + k), bk));
+        s3 = V_ADD(s3, V_MUL(V_LOAD(a + 3 * P + k), bk));
+    }
+    out[0] = V_HSUM(s0);
+    out[1] = V_HSUM(s1);
+    out[2] = V_HSUM(s2);
+    out[3] = V_HSUM(s3);
+}
+
+/* x[0 .. m) (+)= the m rows at a, P apart, each dotted with b: by fours */
+H2_TARGET static inline void H2_NAME(vdots)(double *x, int add, const double *a, const double *b, size_t m, size_t P)
+{
+    size_t i = 0;
+    for (; i + 4 <= m; i += 4) {
+        double d[4];
+        H2_NAME(vdot4)(a + i * P, b, P, d);
+        for (size_t r = 0; r < 4; r++)
+            x[i + r] = add ? x[i + r] + d[r] : d[r];
+    }
+    for (; i < m; i++)
+        x[i] = add ? x[i] + H2_NAME(vdot)(a + i * P, b, P) : H2_NAME(vdot)(a + i * P, b, P);
+}
+
 /* a[0 .. n) . b[0 .. n) for any n: two vector sums, a short product being
  * bound by the latency of its chain of additions */
 H2_TARGET static inline double H2_NAME(dot)(const double *a, const double *b, size_t n)
@@ -55,6 +89,49 @@ H2_TARGET static inline double H2_NAME(dot)(const double *a, const double *b, si
     for (; i < n; i++)
         t += a[i] * b[i];
     return t;
+}
+
+/* out[0 .. 4) = the rows a, a + n, a + 2n, a + 3n dotted with b, each
+ * summed as H2_NAME(dot) sums it, the same additions in the same order:
+ * the four rows' chains of additions run side by side (a row alone waits
+ * on each addition's latency) and b is loaded once for the four. Named
+ * accumulators, not arrays: an array of vectors is kept in memory. */
+H2_TARGET static inline void H2_NAME(dot4)(const double *a, const double *b, size_t n, double *out)
+{
+    const double *a1 = a + n, *a2 = a1 + n, *a3 = a2 + n;
+    V p0 = V_ZERO, q0 = V_ZERO, p1 = V_ZERO, q1 = V_ZERO, p2 = V_ZERO, q2 = V_ZERO, p3 = V_ZERO, q3 = V_ZERO;
+    size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        V b0 = V_LOAD(b + i), b1 = V_LOAD(b + i + 4);
+        p0 = V_ADD(p0, V_MUL(V_LOAD(a + i), b0));
+        q0 = V_ADD(q0, V_MUL(V_LOAD(a + i + 4), b1));
+        p1 = V_ADD(p1, V_MUL(V_LOAD(a1 + i), b0));
+        q1 = V_ADD(q1, V_MUL(V_LOAD(a1 + i + 4), b1));
+        p2 = V_ADD(p2, V_MUL(V_LOAD(a2 + i), b0));
+        q2 = V_ADD(q2, V_MUL(V_LOAD(a2 + i + 4), b1));
+        p3 = V_ADD(p3, V_MUL(V_LOAD(a3 + i), b0));
+        q3 = V_ADD(q3, V_MUL(V_LOAD(a3 + i + 4), b1));
+    }
+    if (i + 4 <= n) {
+        V b0 = V_LOAD(b + i);
+        p0 = V_ADD(p0, V_MUL(V_LOAD(a + i), b0));
+        p1 = V_ADD(p1, V_MUL(V_LOAD(a1 + i), b0));
+        p2 = V_ADD(p2, V_MUL(V_LOAD(a2 + i), b0));
+        p3 = V_ADD(p3, V_MUL(V_LOAD(a3 + i), b0));
+        i += 4;
+    }
+    double t0 = V_HSUM(V_ADD(p0, q0)), t1 = V_HSUM(V_ADD(p1, q1));
+    double t2 = V_HSUM(V_ADD(p2, q2)), t3 = V_HSUM(V_ADD(p3, q3));
+    for (; i < n; i++) {
+        t0 += a[i] * b[i];
+        t1 += a1[i] * b[i];
+        t2 += a2[i] * b[i];
+        t3 += a3[i] * b[i];
+    }
+    out[0] = t0;
+    out[1] = t1;
+    out[2] = t2;
+    out[3] = t3;
 }
 
 H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double *y, double *work)
@@ -81,29 +158,33 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
         size_t x = h->far[f][0], yc = h->far[f][1];
         const double *mx = M + x * P, *my = M + yc * P;
         double *lx = L + x * P, *ly = L + yc * P;
-        for (size_t a = 0; a < p; a++)
-            lx[a] += H2_NAME(vdot)(K + a * P, my, P);
+        H2_NAME(vdots)(lx, 1, K, my, p, P);
         H2_NAME(gemtv)(ly, mx, K, p, P);
     }
     /* downward: each parent's expansion into its children */
     for (size_t c = 1; c < ncl; c++) {
         const double *T = h->T + c * P * P, *lp = L + h->cl[c].parent * P;
         double *l = L + c * P;
-        for (size_t k = 0; k < p; k++)
-            l[k] += H2_NAME(vdot)(T + k * P, lp, P);
+        H2_NAME(vdots)(l, 1, T, lp, p, P);
     }
     for (size_t c = 0; c < ncl; c++) {
         const h2_cluster *X = &h->cl[c];
         if (X->child[0] != 0)
             continue;
         const double *l = L + c * P;
-        for (size_t i = X->i0; i < X->i0 + X->n; i++)
-            y[i] = H2_NAME(vdot)(h->U + i * P, l, P);
+        H2_NAME(vdots)(y + X->i0, 0, h->U + X->i0 * P, l, X->n, P);
     }
     for (size_t b = 0; b < h->nnear; b++) {
         const h2_near *nb = &h->near[b];
         const double *B = h->B + nb->off, *vy = v + nb->j0;
-        for (size_t i = 0; i < nb->ni; i++)
+        size_t i = 0;
+        for (; i + 4 <= nb->ni; i += 4) {
+            double d[4];
+            H2_NAME(dot4)(B + i * nb->nj, vy, nb->nj, d);
+            for (size_t r = 0; r < 4; r++)
+                y[nb->i0 + i + r] += d[r];
+        }
+        for (; i < nb->ni; i++)
             y[nb->i0 + i] += H2_NAME(dot)(B + i * nb->nj, vy, nb->nj);
     }
 }

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "adhere/law.h"
+#include "adhere/models.h"
 #include "adhere/observe.h"
 #include "adhere/rings.h"
 #include "adhere/status.h"
@@ -269,7 +270,7 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->ds = w->s.ds_init;
     w->nw.act = w->s.active_tol;
     w->det_sign = +1;
-    w->skip = s->lattice_skip < 0 ? n > ADH_STATIC_EXACT_MAX_NODES : s->lattice_skip;
+    w->skip = s->lattice_skip < 0 ? adh_static_skips(w->grid, m, s->h0_end) : s->lattice_skip;
     adh_folds_set(w->folds, w->skip ? ADH_FOLDS_PARABOLA : ADH_FOLDS_HERMITE);
     w->q.nhist = 0;
     w->end_next = 0;
@@ -277,6 +278,20 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     int rc = start(w);
     w->res.seconds += adh_clock_seconds() - t0;
     return rc;
+}
+
+double adh_static_exact_points(const adh_grid *g, const adh_material *m, double h0_end)
+{
+    double l = adh_edge_zone(m), crossings = adh_rings_contact_estimate(m, fmin(h0_end, 0.0)) / g->dr;
+    return crossings * (l >= 4.0 * g->dr ? 1.3 : 3.0);
+}
+
+int adh_static_skips(const adh_grid *g, const adh_material *m, double h0_end)
+{
+    /* resolved as adh_grid_check says, with its margin */
+    int resolved = g->dr <= ADH_GRID_EDGE_SPACING_STATIC * adh_edge_zone(m) * (1 + 1e-9);
+    return g->n > ADH_STATIC_EXACT_MAX_NODES ||
+           (resolved && adh_static_exact_points(g, m, h0_end) > 3.0 * ADH_STATIC_STEP_POINTS);
 }
 
 int adh_static_iterate(adh_static *w)

@@ -80,6 +80,15 @@ int static_arclength_iterate(adh_static *w)
             return rc;
         double turn = 0, gr = 0;
         int ok = rc == ADH_SUCCESS;
+        if (ok && !fix && w->trial->h0 < w->s.h0_end && w->tau_h < 0) {
+            /* the corrector (held on the plane normal to the tangent, not
+             * at a given h0) went past the end: land on it instead, from
+             * here. Accepted, the point past the end would have no way on:
+             * the landing from there runs back against the tangent and
+             * every cut step is judged so again (the curve stalled). */
+            w->end_next = 1;
+            continue;
+        }
         if (ok) {
             gr = gap_ratio(w);
             if (gr > 1) {
@@ -108,5 +117,6 @@ int static_arclength_iterate(adh_static *w)
         /* a failed step is usually a fold just ahead: cut hard */
         w->res.rejected++;
         w->ds *= 0.25;
+        w->end_next = 0; /* nearer first: the end from closer by */
     }
 }

@@ -169,18 +169,25 @@ int adh_budget_fits(double need, unsigned threads, double *have, int *address_bo
     return need <= *have;
 }
 
+static double kernel_bytes(adh_kernel_storage storage, double n)
+{
+    return storage == ADH_STORAGE_DENSE ? 8.0 * n * n : storage == ADH_STORAGE_HMAT ? HMAT_NODE * n : H2_NODE * n;
+}
+
 double adh_budget_bytes(const adh_run_spec *run, unsigned solvers)
 {
     if (run->mode == ADH_MODE_RIGID)
         return PROGRAM_BYTES;
     adh_kernel_storage storage = run->grid.use.storage;
+    /* a relaxation's static reference takes the static mode's operator,
+     * a kernel of its own where that is not the run's */
+    adh_kernel_storage ss = run->mode == ADH_MODE_STATIC ? storage : adh_config_storage_for(run, ADH_MODE_STATIC);
     double n = (double)adh_config_nodes(run);
-    double kernel = storage == ADH_STORAGE_DENSE ? 8.0 * n * n
-                  : storage == ADH_STORAGE_HMAT ? HMAT_NODE * n : H2_NODE * n;
     /* a static solver copies a dense kernel and factors it (2 n^2 more
      * doubles); over a hierarchical one it builds a HODLR preconditioner */
-    double solver = storage == ADH_STORAGE_DENSE ? 16.0 * (n + 1) * (n + 1) : HODLR_NODE * n;
-    return PROGRAM_BYTES + kernel + VECTORS_NODE * n + (double)solvers * solver;
+    double solver = ss == ADH_STORAGE_DENSE ? 16.0 * (n + 1) * (n + 1) : HODLR_NODE * n;
+    double own = solvers && ss != storage ? kernel_bytes(ss, n) : 0;
+    return PROGRAM_BYTES + kernel_bytes(storage, n) + own + VECTORS_NODE * n + (double)solvers * solver;
 }
 
 /* "3.2 GB", "130 MB" */
@@ -234,6 +241,7 @@ int adh_budget_check_threads(const adh_run_spec *run, unsigned solvers, unsigned
         return 0;
     adh_run_spec h2 = *run;
     h2.grid.use.storage = ADH_STORAGE_H2;
+    h2.grid.storage_given = 1;
     char a[32], b[32], c[32], r[32];
     bytes_text(need, a, sizeof a);
     bytes_text(have, b, sizeof b);

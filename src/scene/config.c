@@ -102,6 +102,7 @@ static void grid_take(adh_grid_settings *gs, const adh_rings_choice *gc)
         u->fine_band = gc->fine;
     if (isnan(u->radius))
         u->radius = gc->rmax;
+    gs->chosen_h2 = gc->hierarchical;
     if (gc->hierarchical && !gs->storage_given)
         u->storage = ADH_STORAGE_H2;
 }
@@ -122,14 +123,22 @@ static adh_material sweep_material(const adh_material *m, const adh_sweep *sweep
     return r;
 }
 
-/* Past the dense budget's nodes a dense kernel gives way to H^2, unless
- * the operator was given. */
+adh_kernel_storage adh_config_storage_for(const adh_run_spec *s, adh_mode mode)
+{
+    const adh_grid_settings *gs = &s->grid;
+    if (gs->storage_given || mode == ADH_MODE_RIGID)
+        return gs->use.storage;
+    size_t n = adh_config_nodes(s);
+    /* an automatic graded grid (adh_rings_choose) is held as H^2 in every mode */
+    int h2 = gs->chosen_h2 || n > ADH_GRID_MAX_NODES ||
+             (mode == ADH_MODE_RELAX && !gs->use.graded && n >= ADH_CONFIG_H2_MIN_NODES);
+    return h2 ? ADH_STORAGE_H2 : ADH_STORAGE_DENSE;
+}
+
 static void grid_operator(adh_run_spec *s)
 {
-    adh_grid_settings *gs = &s->grid;
-    if (s->mode != ADH_MODE_RIGID && !gs->storage_given && gs->use.storage == ADH_STORAGE_DENSE &&
-        adh_config_nodes(s) > ADH_GRID_MAX_NODES)
-        gs->use.storage = ADH_STORAGE_H2;
+    if (s->mode != ADH_MODE_RIGID && !s->grid.storage_given)
+        s->grid.use.storage = adh_config_storage_for(s, s->mode);
 }
 
 /* The choice for the run of sweep with the narrowest edge zone. */
@@ -168,6 +177,7 @@ int adh_config_choose_grid(adh_run_spec *s, const adh_sweep *sweep, char *why, s
         *fix = 0;
     gs->use = gs->asked;
     gs->chosen = 0;
+    gs->chosen_h2 = 0;
     int rc = adh_config_grid_auto(s) ? grid_choose(s, sweep, why, whylen, fix) : 0;
     if (rc != 0)
         gs->use = gs->asked;

@@ -74,6 +74,7 @@ typedef struct adh_grid_settings {
     adh_grid_spec asked;           /* as the defaults, a scene, the flags and edits left it */
     adh_grid_spec use;             /* what a run builds (adh_config_grid) */
     int chosen;                    /* use was chosen, not given */
+    int chosen_h2;                 /* ... as graded rings held as H^2 (adh_rings_choose) */
     int nodes_given;               /* N set (by a scene, a flag or an edit) */
     int kernel_given;              /* the kernel set: a choice keeps it */
     int storage_given;             /* the operator set: a choice keeps it */
@@ -245,15 +246,31 @@ int adh_config_grid_auto(const adh_run_spec *s);
 /* The grid a run of s builds (s->grid.use): the one asked for, or, while
  * it follows the material, the one adh_rings_choose picks for the run of
  * sweep (NULL: none) with the narrowest edge zone (a sweep shares one
- * kernel), for the material, protocol and mode s holds now. Either way a
- * dense operator past ADH_GRID_MAX_NODES nodes gives way to H^2 (O(N)
- * memory, and faster there) unless the operator was given. 0, or -1 with
+ * kernel), for the material, protocol and mode s holds now. Either way the
+ * operator is adh_config_storage_for's for the mode unless it was given.
+ * 0, or -1 with
  * why (and in *fix, may be NULL, the ADH_FIX_* bits of what to change,
  * for the driver's words) when the choice is beyond the budget (use is
  * then the grid asked for). */
 int adh_config_choose_grid(adh_run_spec *s, const adh_sweep *sweep, char *why, size_t whylen, unsigned *fix);
 /* The same for c's run and sweep. */
 int adh_config_grid(adh_config *c, char *why, size_t whylen, unsigned *fix);
+
+/* From this many nodes the relaxation holds a uniform grid's kernel as H^2
+ * unless the operator is given: there the H^2 product is the faster (measured: 3.0
+ * against 3.1 us at N = 200, 5.0 against 6.2 at 300, 20 against 68 at 1000,
+ * paper kernel) and within ~3e-12 of the dense one, which moves no
+ * iteration count and no printed digit (docs/performance.md). */
+#define ADH_CONFIG_H2_MIN_NODES 256
+/* The operator a run of s in mode takes on s's grid (after the choice of
+ * the grid): the one given; else H^2 on an automatic graded grid, past
+ * ADH_GRID_MAX_NODES nodes, and for the relaxation on a uniform grid from
+ * ADH_CONFIG_H2_MIN_NODES nodes; else dense (a graded grid given by hand
+ * keeps it as before: not measured for this choice). The static mode keeps the
+ * dense kernel on the rest: its dense LU there is the oracle, and the
+ * HODLR preconditioner an H^2 kernel takes moves its Newton iterations,
+ * points and folds (docs/performance.md). */
+adh_kernel_storage adh_config_storage_for(const adh_run_spec *s, adh_mode mode);
 
 /* ---- sweeps ------------------------------------------------------------- */
 

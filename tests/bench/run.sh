@@ -6,7 +6,9 @@
 # dense in the storage benchmark (N^2 x 8 bytes: 0.8 GB at 10^4, 3.2 GB at
 # 2 x 10^4); BENCH_HMAT_MAX (default 100000) the largest assembled by
 # hmat-oss (70 s at 10^5); BENCH_OPERATOR_N (default "1000 3000 10000 30000
-# 100000"); BENCH_FIG6=1 adds Figure 6 to the soft-contact relaxation goals.
+# 100000"); BENCH_FIG6=1 adds Figure 6 to the soft-contact relaxation goals;
+# BENCH_FIGURES (default "1 2 3 4 5 8") the figures whose default run is timed against
+# --operator=dense (tests/bench/fast.sh).
 BUILD=${1:-build}
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 echo "threads: one per run (OpenBLAS set to 1 thread)"
@@ -26,6 +28,10 @@ echo
 # = 7.5 and 22.5 (docs/convergence.md; ~15 minutes, most of it the paper's
 # mixing rule)
 ADHERE=./adhere tests/bench/rategrid.sh
+echo
+# the default operator against --operator=dense per figure, and the static
+# curve's cost against sigma (BENCH_FIGURES, BENCH_SIGMAS, BENCH_ROUNDS)
+ADHERE=./adhere tests/bench/fast.sh
 echo
 # shellcheck disable=SC2086 # the sizes are words
 "$BUILD/tests/bench-operator" "${BENCH_DENSE_MAX:-10000}" "${BENCH_HMAT_MAX:-100000}" ${BENCH_OPERATOR_N:-1000 3000 10000 30000 100000}

@@ -46,5 +46,13 @@ else
     no "rategrid.sh runs"
     sed 's/^/#   /' "$out"
 fi
+# the default against the dense oracle and the static curve against sigma,
+# each a few steps long
+if FAST_SMOKE=1 ADHERE="${ADHERE_BIN:-./adhere}" tests/bench/fast.sh >"$out" 2>&1; then
+    ok "fast.sh runs ($(wc -l <"$out") lines)"
+else
+    no "fast.sh runs"
+    sed 's/^/#   /' "$out"
+fi
 echo "1..$n"
 [ "$failed" -eq 0 ]

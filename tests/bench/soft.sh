@@ -4,8 +4,9 @@
 # GPa, eps = 1 pm, d = 0.05 nm, turn -2 nm; goal under 60 s) and the sigma
 # = 75 one (E = 30 MPa; goal under 5 minutes), each with its iterations per
 # step, and Figure 5
-# on a graded grid (ring kernel, H^2) against its default, the paper's
-# uniform grid (goal 3x faster, adhesion at each turn within 1 %). With
+# on a graded grid (ring kernel, H^2) against the paper's uniform grid held
+# dense as the goal was set (goal 3x faster, adhesion at each turn within
+# 1 %; the default now holds that grid as H^2: tests/bench/fast.sh). With
 # BENCH_FIG6=1 also Figure 6 against a resolved uniform grid (paper kernel,
 # dense, N = 1121): ~12 minutes. Seconds are each run's own (summary.tsv).
 # SOFT_SMOKE=1 (make check) runs each comparison a few steps long: the
@@ -75,7 +76,7 @@ compare() {
                 if (d > worst) worst = d
             }
             x = tf > 0 ? ts / tf : 0
-            printf "target: %s 3x faster than its default grid: %.1fx (%s); adhesion at %d turns within 1 %%: largest difference %.2f %% (%s)\n",
+            printf "target: %s 3x faster than the uniform grid, dense: %.1fx (%s); adhesion at %d turns within 1 %%: largest difference %.2f %% (%s)\n",
                    label, x, (x >= 3 ? "met" : "not met"), nf, 100 * worst, (worst <= 0.01 && nf == ns ? "met" : "not met")
         }' "$tmp/$slow/turns.tsv" "$tmp/$fast/turns.tsv"
 }
@@ -97,7 +98,7 @@ if run sigma75 -E 30.01MPa --turn=-2nm; then
                                        (s < 300 && st == "success" ? "met" : "not met") }'
 fi
 short=$near
-run fig5-uniform fig5
+run fig5-uniform fig5 --operator=dense
 run fig5-graded fig5 --grid=graded --kernel=ring --operator=h2
 compare fig5-graded fig5-uniform "Figure 5 on a graded grid"
 if [ "${BENCH_FIG6:-0}" = 1 ]; then

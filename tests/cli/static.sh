@@ -107,4 +107,12 @@ sed 's/^E = .*/eps = 1pm, 2pm/' "$TMP/static-sweep.scene" >"$TMP/eps-static.scen
 rc=$?
 check "an eps sweep in mode = static is refused with exit 2, saying why (got $rc: $(cat "$TMP/err"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'same curve 2 times' '$TMP/err'"
+# The command that stopped with "continuation could not make progress" (a
+# corrector step past the turn, tests/unit/test_static_skip.c): it ends at
+# the turn, with the jumps and pull-off of a finished curve.
+"$ADHERE" --batch -q --mode=static fig1 -N 200 --spacing=3.4nm --turn=-2.25nm -o "$TMP/land" >/dev/null 2>"$TMP/err"
+rc=$?
+last=$(grep -v '^#' "$TMP/land/force.tsv" | tail -1 | cut -f1)
+check "fig1 static at N = 200, 3.4 nm, turn -2.25 nm: exit 0, ends at the turn ($rc, last h0 $last: $(head -c 200 "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && awk 'BEGIN {exit !($last > -2.2501e-9 && $last < -2.2499e-9)}' && grep -qx 'status	success' '$TMP/land/summary.tsv'"
 done_testing
