@@ -22,7 +22,7 @@
  * along an arclength s of the path in (u, base speed x t): the residual
  *     u + W (cinf p + cdel q) = 0
  *     tau q' - (p - q) t' = 0
- *     theta |u'|^2 + (v t')^2 = z0^2        (' = d/ds, theta = 1/N)
+ *     theta |u'|^2 [+ h0'^2] + (v t')^2 = z0^2   (' = d/ds, theta = 1/N)
  *    [h0 - base(t) - F/k = 0]
  * Its Newton systems, with q eliminated (its block is diagonal), are the
  * elastic Jacobian I - c W diag(p'(h)) at an effective compliance between
@@ -31,10 +31,11 @@
  * matrix under a hierarchical kernel). Along s the path goes smoothly
  * through a fold of the instantaneous problem, where t turns back
  * (t' = 0): that root of t' is where the sphere jumps (under a spring, its
- * instability). The jump is crossed at frozen time and q, along the same
- * path's unstable leg (q' = 0), to where the base comes back to the
- * fold's position: the other stable branch. Energies are integrated
- * alongside (IDAS quadratures): the drive's work, the viscous dissipation
+ * instability). The jump itself is fast against tau: it relaxes at frozen
+ * time, base and q, overdamped (u' = -G(u) in a pseudo-time, by the same
+ * integrator and preconditioner), from the fold nudged along the path to
+ * the stable state it lands on. Energies are integrated alongside (IDAS
+ * quadratures): the drive's work, the viscous dissipation
  *     D = (cdel / tau) <p - q, W (p - q)>
  * (<a, b> = sum_n 2 pi w_n a_n b_n, w_n the ring weights), and the stored
  * energy is
@@ -90,7 +91,7 @@ typedef struct adh_visco_settings {
     double active_tol;   /* the preconditioner's dense LU takes node j where
                             c |p'(h_j)| sum_n |W_nj| exceeds this (as static) */
     size_t max_steps;    /* integrator steps of the whole run (ADH_EMAXITER beyond) */
-    size_t max_jump_steps; /* steps of one jump's crossing (ADH_ESTALL beyond) */
+    size_t max_jump_steps; /* steps of one jump's relaxation (ADH_ESTALL beyond) */
     const volatile sig_atomic_t *cancel; /* polled every step: nonzero stops
                             with ADH_EINTR; NULL = never */
 } adh_visco_settings;
@@ -117,8 +118,6 @@ typedef struct adh_visco_event {
     double h0_after, F_after, a_after; /* after a jump (else the same) */
     double loss;            /* energy the jump released, J (else 0): stored energy
                                before - after */
-    double loss_path;       /* the same from the work of the base along the
-                               crossing's path (frozen q): a check of it */
 } adh_visco_event;
 
 /* Energy accounts of a path, J. */
@@ -145,8 +144,8 @@ typedef struct adh_visco_result {
                               turn, dwell, unloading back to the start), J */
     adh_visco_energy cycle; /* that cycle's accounts */
     double time;           /* physical time at the end (or now), s */
-    size_t steps;          /* integrator steps (jump crossings included) */
-    size_t jumps;          /* jumps crossed */
+    size_t steps;          /* integrator steps (jumps' relaxations included) */
+    size_t jumps;          /* jumps */
     size_t newton;         /* Newton iterations */
     size_t krylov;         /* GMRES iterations */
     size_t setups;         /* preconditioner factorizations */
@@ -179,7 +178,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
  * ADH_SUCCESS when the protocol is complete (no row); ADH_EINTR on the
  * cancel flag; otherwise the error that stopped it (ADH_EGRID: the
  * contact reached 0.9 Rmax or left a graded grid's fine band; ADH_ESTALL:
- * the integrator or a jump's crossing failed; ADH_EMAXITER: max_steps).
+ * the integrator or a jump's relaxation failed; ADH_EMAXITER: max_steps).
  * After a final status every call returns it again. */
 int adh_visco_iterate(adh_visco *w);
 

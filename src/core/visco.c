@@ -20,12 +20,15 @@
 
 #define VISCO_START_ITERS 400   /* the start's fixed-point iterations */
 
+
 static void snaps_free(adh_visco *w)
 {
     for (size_t i = 0; i < ADH_MAX_TURNS; i++) {
         free(w->snap[i].y);
         w->snap[i].y = NULL;
     }
+    free(w->yfold);
+    w->yfold = NULL;
 }
 
 void adh_visco_free(adh_visco *w)
@@ -140,35 +143,34 @@ static adh_visco_energy accounts_now(adh_visco *w)
 }
 
 /* Before IDAS starts again: fold its counters and quadratures in (once:
- * until it starts, there is nothing live to add). *jump_work: the base's
- * work along a crossing (may be NULL). */
-static void fold_in(adh_visco *w, double *jump_work)
+ * until it starts, there is nothing live to add). */
+static void fold_in(adh_visco *w)
 {
     long c[5];
     counters(w, c);
     for (int i = 0; i < 5; i++)
         w->stat0[i] += c[i];
     w->acc = accounts_now(w);
-    if (jump_work)
-        *jump_work = w->ida && w->live ? N_VGetArrayPointer(w->yq)[QJUMP] : 0;
     w->live = 0;
 }
 
-/* Starts the integrator at y under the current segment (y' its tangent,
- * or given). */
-static int restart(adh_visco *w, double *y, const double *yp_given)
+/* Starts the integrator at s and y under the current segment and mode
+ * (y' the path's tangent, or given). */
+static int restart(adh_visco *w, double s, double *y, const double *yp_given)
 {
-    fold_in(w, NULL);
+    fold_in(w);
     double *ypv = malloc(w->len * sizeof *ypv);
     if (!ypv)
         return ADH_ENOMEM;
-    int rc = ADH_SUCCESS;
-    if (yp_given)
+    /* on the path (or, for a crossing, on the equilibria at its h0)
+     * within a thousandth of the tolerance first */
+    int rc = adh_visco_polish(w, y, w->mode == MODE_PATH);
+    if (rc == ADH_SUCCESS && yp_given)
         memcpy(ypv, yp_given, w->len * sizeof *ypv);
-    else
+    else if (rc == ADH_SUCCESS)
         rc = adh_visco_tangent(w, y, ypv);
     if (rc == ADH_SUCCESS)
-        rc = adh_visco_dae_start(w, w->s_now, y, ypv);
+        rc = adh_visco_dae_start(w, s, y, ypv);
     w->live = rc == ADH_SUCCESS;
     free(ypv);
     return rc;
@@ -331,7 +333,6 @@ static void seg_set(adh_visco *w, int kind, double t0, double b0)
 {
     visco_seg *sg = &w->seg;
     sg->kind = kind;
-    sg->frozen = 0;
     sg->t0 = t0;
     sg->b0 = b0;
     sg->bdot = kind == SEG_LOAD ? -w->dr.speed_in : kind == SEG_UNLOAD ? w->dr.speed_out : 0;
@@ -339,7 +340,7 @@ static void seg_set(adh_visco *w, int kind, double t0, double b0)
     sg->tl_end = w->dr.dwell;
     sg->branch = kind == SEG_LOAD ? +1 : -1;
     sg->target = kind == SEG_LOAD ? (w->ti < w->nturns ? w->turns[w->ti] : NAN) : w->b_start;
-    w->lam = 1;
+    w->mode = MODE_PATH;
     sg->prof = next_profile(w);
 }
 
@@ -378,6 +379,9 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     for (size_t i = 0; i < ps->nturns; i++)
         if (!(w->snap[i].y = malloc(w->len * sizeof *w->snap[i].y)))
             return ADH_ENOMEM;
+    /* a fold's state, and a jump's start and its y' */
+    if (!(w->yfold = malloc(3 * w->len * sizeof *w->yfold)))
+        return ADH_ENOMEM;
     if ((rc = adh_visco_dae_create(w)) != ADH_SUCCESS)
         return rc;
     double h0 = isnan(ps->start) ? auto_start(w) : ps->start;
@@ -399,7 +403,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     load_state(w, y);
     w->in_contact = 0;
     w->acc.stored0 = w->acc.stored = adh_visco_energy_of(w, y, NULL, NULL, NULL);
-    rc = restart(w, y, NULL);
+    rc = restart(w, w->s_now, y, NULL);
     if (rc != ADH_SUCCESS)
         return rc;
     load_state(w, y);
@@ -436,7 +440,7 @@ static int begin_turn(adh_visco *w, size_t k)
     w->seg.branch = -1;
     seg_set(w, w->dr.dwell > 0 ? SEG_DWELL : SEG_UNLOAD, sn->t, sn->base);
     w->seg.path = (int)k + 1;
-    fold_in(w, NULL);
+    fold_in(w);
     w->acc = sn->acc;
     load_state(w, y);
     adh_turn_result *tr = &w->run->turns[k];
@@ -450,7 +454,7 @@ static int begin_turn(adh_visco *w, size_t k)
     tr->path = (int)k + 1;
     w->run->nturns = k + 1;
     w->in_contact = tr->a_turn > 0;
-    int rc = restart(w, y, NULL);
+    int rc = restart(w, w->s_now, y, NULL);
     if (rc != ADH_SUCCESS)
         return rc;
     w->first_pending = 1;
@@ -493,7 +497,7 @@ static int segment_end(adh_visco *w, double t0)
         w->seg.path = (int)w->ui + 1;
         y[w->IT] = 0;
         add_event(w, ADH_VISCO_UNLOAD);
-        int brc = restart(w, y, NULL);
+        int brc = restart(w, w->s_now, y, NULL);
         if (brc != ADH_SUCCESS)
             return stop(w, brc);
         return finish_row(w, rc);
@@ -511,11 +515,18 @@ static int segment_end(adh_visco *w, double t0)
     return rc;
 }
 
-/* A fold of the path (t' = 0): the row of its last stable point, then the
- * crossing at frozen time and q from there. */
+/* A fold of the path (t' = 0): the row of its last stable point, then
+ * the jump's crossing from there (visco_cross.c). Without a spring the
+ * crossing's system is the path's with q' = 0, which at t' = 0 is the
+ * same residual: the integrator goes on without a new start (a new start
+ * on a point a root's interpolation placed within the tolerance of the
+ * path would have to correct its residual along the fold's null
+ * direction through t, with t' ~ cj dt unbounded as the first step
+ * shrinks). Under a spring the fold is the spring's, where J_u is
+ * regular, and the crossing starts anew there. */
 static int fold(adh_visco *w, double t0)
 {
-    double *y = N_VGetArrayPointer(w->y);
+    double *y = N_VGetArrayPointer(w->y), *yp = N_VGetArrayPointer(w->yp);
     int rc = push_row(w, t0);
     adh_visco_event *e = &w->pending;
     memset(e, 0, sizeof *e);
@@ -523,18 +534,28 @@ static int fold(adh_visco *w, double t0)
     e->path = w->seg.path;
     e->t = w->t_now, e->base = w->base_now, e->h0 = w->st->h0, e->F = w->F_now, e->a = contact_radius(w);
     w->U_before = adh_visco_energy_of(w, y, NULL, NULL, NULL);
-    /* No new start: at the fold t' = 0, so q' = lam (p - q) t' / tau is
-     * the same either side of the switch, and the integrator goes on
-     * (a new start here, on a point a root's interpolation placed within
-     * the tolerance of the path, would have to correct its residual along
-     * the fold's null direction through t, with t' ~ cj dt unbounded as
-     * the first step shrinks). The step already taken past the fold ran
-     * q back in time by the step's overshoot in t, second order in it. */
-    w->seg.frozen = 1;
-    w->lam = 0;
-    w->seg.tl_fold = y[w->IT];
+    memcpy(w->yfold, y, w->len * sizeof *y);
+    w->s_fold = w->s_now;
+    w->b_fold = w->base_now;
+    w->seg_fold = w->seg;
     w->jump_steps = 0;
-    adh_visco_root_directions(w);
+    w->mode = MODE_CROSS;
+    w->phase = 1;
+    w->cross_dir = 0;
+    if (!w->spring && w->seg.bdot == 0) {
+        /* a dwell: h0 moves through tl at a virtual speed */
+        w->seg.bdot = w->seg.vm;
+        w->seg.b0 = w->b_fold - w->seg.bdot * y[w->IT];
+    }
+    if (!w->spring) {
+        adh_visco_root_directions(w);
+        return finish_row(w, rc);
+    }
+    double *yp0 = w->yfold + w->len;
+    adh_visco_cross_start(w, yp, yp0);
+    int brc = restart(w, w->s_now, y, yp0);
+    if (brc != ADH_SUCCESS)
+        return stop(w, brc);
     return finish_row(w, rc);
 }
 
@@ -556,27 +577,33 @@ static void contact_changed(adh_visco *w, int now, double h0, double t, double b
     }
 }
 
-/* The crossing landed where the base is back at the fold's position. */
+/* The crossing is back at the fold's base on the other branch: the
+ * path goes on from there (time and q as at the fold). */
 static int land(adh_visco *w, double t0)
 {
-    double *y = N_VGetArrayPointer(w->y), jw = 0;
-    y[w->IT] = w->seg.tl_fold;
-    fold_in(w, &jw);
-    w->seg.frozen = 0;
-    w->lam = 1;
+    double *y = N_VGetArrayPointer(w->y), moved = 0;
+    size_t n = w->n;
+    memcpy(y + w->IQ, w->yfold + w->IQ, (n + 1) * sizeof *y);
+    w->seg = w->seg_fold;
+    w->mode = MODE_PATH;
+    for (size_t i = 0; i < n; i++)
+        moved = fmax(moved, fabs(y[i] - w->yfold[i]));
+    if (!(moved > w->s.tol * w->m.z0)) {
+        snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s came back to its fold", w->t_now);
+        return stop(w, ADH_ESTALL);
+    }
     load_state(w, y);
     adh_visco_event e = w->pending;
     double U = adh_visco_energy_of(w, y, NULL, NULL, NULL);
     e.h0_after = w->st->h0, e.F_after = w->F_now, e.a_after = contact_radius(w);
     e.loss = w->U_before - U;
-    e.loss_path = -jw;
     w->acc.jumps += e.loss;
     w->res.jumps++;
     if (add_event(w, ADH_VISCO_JUMP) == ADH_SUCCESS)
         w->ev[w->nev - 1] = e;
     if ((e.a_after > 0) != (e.a > 0))
         contact_changed(w, e.a_after > 0, e.h0, e.t, e.base);
-    int rc = restart(w, y, NULL);
+    int rc = restart(w, w->s_now, y, NULL);
     if (rc != ADH_SUCCESS)
         return stop(w, rc);
     load_state(w, y);
@@ -584,6 +611,23 @@ static int land(adh_visco *w, double t0)
     if (w->seg.kind == SEG_LOAD && w->ti < w->nturns && w->st->h0 <= w->turns[w->ti])
         return segment_end(w, t0);
     return finish_row(w, push_row(w, t0));
+}
+
+/* A root during a crossing: its phase 1 ends where the base's coordinate
+ * turns (once it has moved off the fold's by ten tolerances: a turn
+ * within them is the fold's own), phase 2 where it is back. */
+static int cross_root(adh_visco *w, const int *rf, double t0)
+{
+    const double *y = N_VGetArrayPointer(w->y);
+    double db = adh_visco_cross_base(w, y) - w->b_fold;
+    if (w->phase == 1 && rf[ROOT_FOLD] && fabs(db) > 10 * w->s.tol * w->m.z0) {
+        w->phase = 2;
+        w->cross_dir = db > 0 ? -1 : +1;
+        adh_visco_root_directions(w);
+    } else if (w->phase == 2 && rf[ROOT_END]) {
+        return land(w, t0);
+    }
+    return ADH_CONTINUE;
 }
 
 static int on_roots(adh_visco *w, const int *rf, double t0)
@@ -631,18 +675,19 @@ int adh_visco_iterate(adh_visco *w)
         if (flag < 0)
             return stop(w, ADH_ESTALL);
         w->s_now = s;
-        if (w->seg.frozen) {
+        if (w->mode == MODE_CROSS) {
             int rf[NROOTS] = { 0 };
-            if (flag == IDA_ROOT_RETURN)
+            if (flag == IDA_ROOT_RETURN) {
                 IDAGetRootInfo(w->ida, rf);
-            if (w->seg.frozen == 1 && rf[ROOT_FOLD]) {
-                w->seg.frozen = 2; /* past the other fold: now watch for the base's return */
-                adh_visco_root_directions(w);
-            } else if (w->seg.frozen == 2 && rf[ROOT_END]) {
-                return land(w, t0);
+                int rc = cross_root(w, rf, t0);
+                if (rc != ADH_CONTINUE || w->mode == MODE_PATH)
+                    return rc;
             }
-            if (++w->jump_steps > (long)w->s.max_jump_steps)
+            if (++w->jump_steps > (long)w->s.max_jump_steps) {
+                snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s did not land in %zu steps", w->t_now,
+                         w->s.max_jump_steps);
                 return stop(w, ADH_ESTALL);
+            }
             continue;
         }
         load_state(w, N_VGetArrayPointer(w->y));

@@ -15,24 +15,27 @@
 /* Parts of a segment of the path (one IDAS initialisation each). */
 enum { SEG_LOAD = 1, SEG_DWELL = 2, SEG_UNLOAD = 3 };
 
-/* The roots watched (IDAS's rootfinding): the fold (t' = 0), the
- * segment's end, a force minimum, contact, a profile position. */
+/* What IDAS integrates: the path along its arclength s, or a jump's
+ * crossing: the equilibria at frozen time and q followed from the fold
+ * along their own arclength in (u, h0) to the other branch where the
+ * base is back at the fold's position (visco_cross.c). */
+enum { MODE_PATH = 0, MODE_CROSS = 1 };
+
+/* The roots watched along the path (IDAS's rootfinding): the fold
+ * (t' = 0), the segment's end, a force minimum, contact, a profile
+ * position. */
 enum { ROOT_FOLD = 0, ROOT_END, ROOT_PULLOFF, ROOT_CONTACT, ROOT_PROFILE, NROOTS };
 
-/* The quadratures: the base's work, the viscous dissipation, and the
- * (virtual) base's work along a jump's crossing. */
-enum { QWORK = 0, QDISS, QJUMP, NQUAD };
+/* The quadratures: the base's work, the viscous dissipation. */
+enum { QWORK = 0, QDISS, NQUAD };
 
 typedef struct visco_seg {
     int kind;        /* SEG_* */
-    int frozen;      /* crossing a jump (q' = 0, the time a path parameter):
-                        1 on its way back to the other fold, 2 from there */
     double t0;       /* absolute time where the local time y[IT] is 0, s */
     double b0;       /* base there, m */
     double bdot;     /* base speed, m/s (signed: < 0 approaching) */
     double vm;       /* the metric's speed: time enters s as vm t, m/s */
     double tl_end;   /* dwell: local time it ends */
-    double tl_fold;  /* frozen: local time of the fold crossed */
     double target;   /* load: the next turn's h0; unload: the start base */
     double prof;     /* the next profile position of the base (NAN none) */
     int path, branch;
@@ -78,9 +81,10 @@ struct adh_visco {
     /* the tangent's linear solve (u[, h0]) */
     SUNLinearSolver tls;
     N_Vector tx, tb;
-    int tls_factored;
+    int tan_row;         /* the tangent's operator has the spring's row */
     /* the preconditioner's data at its setup */
-    double p_cj, p_alpha, p_ceff, p_tp, p_lam;
+    double p_cj, p_alpha, p_ceff, p_tp;
+    int p_mode;
     /* IDAS's counters restart with each initialisation: what the earlier
      * ones counted (steps, Newton and GMRES iterations, setups, error
      * test failures) */
@@ -89,8 +93,18 @@ struct adh_visco {
 
     visco_seg seg;
     double s_now;        /* the path parameter now */
-    double lam;          /* 1, or 0 while crossing a jump */
-    long jump_steps;     /* steps of the crossing under way */
+    int mode;            /* MODE_PATH, or MODE_CROSS during a jump */
+    int phase;           /* a crossing: 1 until the base's coordinate turns
+                            (the S's other fold), 2 from there */
+    int cross_dir;       /* -1 loading (the base's coordinate falls back
+                            to the fold's), +1 unloading */
+    double b_fold;       /* the base at the fold */
+    visco_seg seg_fold;  /* the segment as it was (a dwell's crossing moves
+                            h0 through tl at a virtual speed) */
+    double s_fold;       /* where on the path the jump under way began */
+    double *yfold;       /* its state there (len), and a crossing's start
+                            and y' (2 len more) */
+    long jump_steps;     /* steps of the crossing so far */
     adh_visco_event pending; /* the jump being crossed: its side before */
     double U_before;
 
@@ -122,27 +136,63 @@ struct adh_visco {
     char errmsg[160];    /* IDAS's last error, for the report */
 };
 
-/* visco_dae.c */
+/* visco_dae.c: IDAS, its callbacks (dispatched by mode), the roots and
+ * quadratures, and the helpers of both systems */
 int adh_visco_dae_create(adh_visco *w);
 void adh_visco_dae_destroy(adh_visco *w);
+/* (Re)starts IDAS at s with y, yp under the current segment and mode. */
+int adh_visco_dae_start(adh_visco *w, double s, const double *y, const double *yp);
+/* The roots' directions for the current segment. */
+void adh_visco_root_directions(adh_visco *w);
+/* For the tests: jtimes against a difference of the residual (*fd,
+ * relative), and P^-1 M v against v (*pre, in tolerances), at the
+ * integrator's y, y' and the given cj. */
+int adh_visco_dae_check(adh_visco *w, double cj, double *fd, double *pre);
 /* h0 of y under the segment, and the base */
 double adh_visco_h0_of(const adh_visco *w, const double *y);
 double adh_visco_base_of(const adh_visco *w, const double *y);
 /* h, p from u and h0 into w->h, w->p; 0, or -1 when a gap closed */
 int adh_visco_gaps(adh_visco *w, const double *u, double h0);
+/* D = p'(h) at w->h into w->D */
+void adh_visco_slopes(adh_visco *w);
 /* The force of w->p at h0 (eq 13, tail included) */
 double adh_visco_force(const adh_visco *w, double h0);
+/* The tail's force beyond Rmax, and its slope dF_tail/dh0 */
+double adh_visco_tail(const adh_visco *w, double h0, double *slope);
+/* out = W x (the kernel's product) */
+void adh_visco_apply(adh_visco *w, const double *x, double *out);
+/* dF/ds at y, y' (h and p' at y computed here, w's buffers untouched) */
+double adh_visco_force_rate(const adh_visco *w, const double *y, const double *d);
+
+/* visco_path.c: the path's residual, Jacobian products, preconditioner,
+ * and the tangent that starts each segment */
+int adh_visco_path_res(adh_visco *w, const double *y, const double *d, double *r);
+void adh_visco_path_jtimes(adh_visco *w, const double *y, const double *d, const double *v, double *Jv,
+                           double cj);
+int adh_visco_path_psetup(adh_visco *w, const double *y, const double *d, double cj);
+void adh_visco_path_psolve(adh_visco *w, const double *r, double *z);
 /* y' consistent with y under the current segment (the tangent, t' > 0),
  * into yp. ADH_SUCCESS, or ADH_ESTALL when the solve fails. */
 int adh_visco_tangent(adh_visco *w, const double *y, double *yp);
-/* (Re)starts IDAS at s with y, yp under the current segment. */
-int adh_visco_dae_start(adh_visco *w, double s, const double *y, const double *yp);
-/* The roots' directions for the current segment (and crossing phase). */
-void adh_visco_root_directions(adh_visco *w);
+/* Gives the tangent's GMRES its operator and preconditioner. */
+int adh_visco_tangent_setup(adh_visco *w);
+/* Newton on the equilibrium at y's q and time (u, and h0 by the spring's
+ * equation when row is 1; h0 held with 0), to well within the tolerance.
+ * ADH_SUCCESS or ADH_ESTALL. */
+int adh_visco_polish(adh_visco *w, double *y, int row);
 
-/* For the tests: jtimes against a difference of the residual, and the
- * preconditioner against M (adh_visco_dae_check in visco_dae.c). */
-int adh_visco_dae_check(adh_visco *w, double cj, double *fd, double *pre);
+/* visco_cross.c: a jump's crossing, the same four, its start, and its
+ * roots (the base's coordinate h0 - F/k: its turn, then its return) */
+int adh_visco_cross_res(adh_visco *w, const double *y, const double *d, double *r);
+void adh_visco_cross_jtimes(adh_visco *w, const double *y, const double *d, const double *v, double *Jv,
+                            double cj);
+int adh_visco_cross_psetup(adh_visco *w, const double *y, const double *d, double cj);
+void adh_visco_cross_psolve(adh_visco *w, const double *r, double *z);
+/* y' at the fold for the crossing, from the path's y' there. */
+void adh_visco_cross_start(adh_visco *w, const double *d, double *yp0);
+void adh_visco_cross_roots(adh_visco *w, const double *y, const double *d, double *g);
+/* The base's coordinate h0 - F/k of y (h0 without a spring). */
+double adh_visco_cross_base(const adh_visco *w, const double *y);
 
 /* visco_energy.c */
 /* U of y (the stored energy), with parts (any may be NULL); uses w->h,
