@@ -148,7 +148,8 @@ typedef struct adh_visco_result {
     size_t jumps;          /* jumps */
     size_t newton;         /* Newton iterations */
     size_t krylov;         /* GMRES iterations */
-    size_t setups;         /* preconditioner factorizations */
+    size_t setups;         /* preconditioner factorizations (a dense LU, or HODLR's;
+                              its low-rank updates apart) */
     size_t error_fails;    /* steps the error test rejected */
     double seconds;        /* wall time */
 } adh_visco_result;

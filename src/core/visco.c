@@ -362,6 +362,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     w->len = 2 * n + 1 + (size_t)w->spring;
     w->cinf = 2.0 / v->Einf;
     w->cdel = fmax(0.0, 2.0 * (1.0 / v->E0 - 1.0 / v->Einf));
+    adh_visco_pre_base(w->pre, w->cinf);
     w->theta = 1.0 / (double)n;
     w->pref = m->A / (6.0 * M_PI * pow(m->z0, 3));
     for (size_t i = 0; i < n; i++)
@@ -433,6 +434,7 @@ static int begin_turn(adh_visco *w, size_t k)
     double *y = N_VGetArrayPointer(w->y);
     memcpy(y, sn->y, w->len * sizeof *y);
     w->ui = k;
+    w->extended = 0;
     /* profiles: the unloading ones are those above the turn */
     w->pi = 0;
     while (w->pi < w->nprof && w->prof[w->pi] > sn->base)
@@ -502,6 +504,20 @@ static int segment_end(adh_visco *w, double t0)
             return stop(w, brc);
         return finish_row(w, rc);
     }
+    if (w->in_contact && !w->extended && rc == ADH_CONTINUE) {
+        /* still in contact where the base started (a spring's pull on the
+         * sphere reaches this far): retraction goes on until the surfaces
+         * are apart (contact_changed ends it a z0 after), at most as far
+         * as twice the adhesive force Einf/E0 times the law's DMT
+         * pull-off stretches the spring */
+        adh_material m0 = w->m;
+        adh_derived dv;
+        adh_material_derive(&m0, &dv);
+        double reach = 2.0 * w->v.Einf / w->v.E0 * fabs(dv.F_dmt) / w->dr.spring;
+        w->extended = 1;
+        w->seg.target = w->b_start + (isfinite(reach) ? reach : 0) + 10 * w->m.z0;
+        return finish_row(w, rc);
+    }
     add_event(w, ADH_VISCO_END);
     rc = finish_row(w, rc);
     close_cycle(w);
@@ -569,6 +585,8 @@ static void contact_changed(adh_visco *w, int now, double h0, double t, double b
         if (w->nturns == 0)
             w->finishing = 1;
     }
+    if (!now && w->extended && w->seg.kind == SEG_UNLOAD)
+        w->seg.target = fmin(w->seg.target, base + w->m.z0);
     adh_turn_result *tr = turn_now(w);
     if (!now && tr && isnan(tr->jump_out_h0)) {
         tr->jump_out_h0 = h0;
@@ -672,8 +690,15 @@ int adh_visco_iterate(adh_visco *w)
             return stop(w, ADH_EMAXITER);
         double s;
         int flag = IDASolve(w->ida, w->s_now + 1.0, &s, w->y, w->yp, IDA_ONE_STEP);
-        if (flag < 0)
+        if (flag < 0) {
+            char ida[200];
+            snprintf(ida, sizeof ida, "%.199s", w->errmsg);
+            const double *y = N_VGetArrayPointer(w->y);
+            snprintf(w->errmsg, sizeof w->errmsg, "the integrator stopped %s at t = %.6g s, h0 = %.6g m (%s)",
+                     w->mode == MODE_CROSS ? "crossing a jump" : "on the path", w->t_now, adh_visco_h0_of(w, y),
+                     ida);
             return stop(w, ADH_ESTALL);
+        }
         w->s_now = s;
         if (w->mode == MODE_CROSS) {
             int rf[NROOTS] = { 0 };
@@ -738,7 +763,7 @@ void adh_visco_summary(const adh_visco *w, adh_visco_result *res)
     res->steps = (size_t)(w->stat0[0] + c[0]);
     res->newton = (size_t)(w->stat0[1] + c[1]);
     res->krylov = (size_t)(w->stat0[2] + c[2]);
-    res->setups = (size_t)(w->stat0[3] + c[3]);
+    res->setups = adh_visco_pre_factorizations(w->pre);
     res->error_fails = (size_t)(w->stat0[4] + c[4]);
     res->time = w->t_now;
     res->seconds = w->run ? w->run->seconds : 0;

@@ -15,9 +15,7 @@
 #include "adhere/status.h"
 
 #define VISCO_KRYLOV 30 /* GMRES dimension in the integrator's solves */
-#ifndef VISCO_REFRESH
-#define VISCO_REFRESH 0.1 /* adh_visco_pre_drift beyond which it is set up again */
-#endif
+#define VISCO_NEWTON_COEF 0.03
 
 double adh_visco_base_of(const adh_visco *w, const double *y)
 {
@@ -122,7 +120,7 @@ static int jtsetup(realtype s, N_Vector yy, N_Vector yp, N_Vector rr, realtype c
         double tp = d[w->IT];
         c = w->cinf + w->cdel * tp / (w->v.tau * (cj + tp / w->v.tau));
     }
-    if (w->p_mode != w->mode || adh_visco_pre_drift(w->pre, c, w->D) > VISCO_REFRESH)
+    if (w->p_mode != w->mode || adh_visco_pre_stale(w->pre, c, w->D))
         return psetup(s, yy, yp, rr, cj, w);
     return 0;
 }
@@ -285,6 +283,21 @@ static void tolerances(adh_visco *w)
         a[w->IH] = tol * z0;
 }
 
+/* Under a spring h0 = base + F/k follows the force, which the gaps move
+ * by F_n' du_n = 2 pi w_n p'(h_n) du_n: u's tolerance passes on to h0
+ * multiplied by |2 pi w p'| / k (root sum of squares, as the tolerance
+ * is a root mean square), large for a soft spring in contact. h0 is held
+ * to that, or to its own tolerance where it is tighter. */
+static double spring_gain(const adh_visco *w, const double *y)
+{
+    double h0 = y[w->IH], s = 0;
+    for (size_t i = 0; i < w->n; i++) {
+        double g = w->area[i] * adh_lj_dpressure(h0 + w->shape[i] - y[i], w->m.A, w->m.z0);
+        s += g * g;
+    }
+    return fmax(1.0, sqrt(s) / w->dr.spring);
+}
+
 /* The error weights: relative and absolute for u and q, absolute only
  * for the clock and h0, whose size is where the run is, not how precise
  * it must be (a relative part would loosen the time of events as a run
@@ -302,6 +315,8 @@ static int weights(N_Vector yy, N_Vector ewt, void *data)
         e[i] = 1.0 / (rt * fabs(y[i]) + a[i]);
     for (size_t i = 2 * w->n; i < w->len; i++)
         e[i] = sl / a[i];
+    if (w->spring)
+        e[w->IH] /= spring_gain(w, y);
     return 0;
 }
 
@@ -327,6 +342,12 @@ static int first_init(adh_visco *w, double s)
     bad = bad || IDASetQuadErrCon(w->ida, SUNTRUE) != IDA_SUCCESS;
     bad = bad || IDAQuadSStolerances(w->ida, w->s.tol, w->s.tol * escale) != IDA_SUCCESS;
     bad = bad || IDASetMaxNumSteps(w->ida, 100000) != IDA_SUCCESS;
+    /* Newton's corrections to a thirtieth of the tolerance, not a third:
+     * the normalisation holds u', and u' = cj du cannot absorb an
+     * algebraic residual a step left behind once the next step has to be
+     * short (measured: soft springs near their snap-out failed at 0.33
+     * and 0.1) */
+    bad = bad || IDASetNonlinConvCoef(w->ida, VISCO_NEWTON_COEF) != IDA_SUCCESS;
     return bad ? ADH_ENOMEM : ADH_SUCCESS;
 }
 

@@ -124,6 +124,7 @@ struct adh_visco {
     double t_now, base_now;
     double F_now;
     int in_contact;
+    int extended;        /* unloading goes on past the start until apart */
     adh_run *run;
     adh_visco_event *ev;
     size_t nev, evcap;
@@ -133,7 +134,7 @@ struct adh_visco {
                             branch's first, from its turn's snapshot) */
     int finishing;       /* the next call ends the run */
     int done, status;
-    char errmsg[160];    /* IDAS's last error, for the report */
+    char errmsg[320];    /* why the run stopped (IDAS's last words within) */
 };
 
 /* visco_dae.c: IDAS, its callbacks (dispatched by mode), the roots and

@@ -30,6 +30,21 @@ extern void dgetrs_(const char *trans, const int *n, const int *nrhs, const doub
 /* As the static mode's HODLR preconditioner (static.c). */
 #define VISCO_HODLR_TOL 1e-4
 #define VISCO_HODLR_LEAF 64
+/* Woodbury: at most this many nodes updated, and Y columns kept, before
+ * a new factorization; a node enters the update when its column moved by
+ * more than VISCO_UPDATE_MIN (|cf dd| W_jj); outside [1/2, 2] cf the
+ * compliance is factorized anew. */
+#define VISCO_RANK 48
+#define VISCO_YCACHE 96
+#define VISCO_UPDATE_MIN 0.1
+/* A new setup is due when a diagonal entry of J moved by more than this
+ * (relative; adh_visco_pre_drift): a dense LU is exact and redone at 0.1;
+ * HODLR's updates and compliance floor leave more to GMRES, and a setup
+ * costs more there. Measured: at 0.3 the dense path lost a soft spring's
+ * snap-out (N = 300, k = 1 N/m); HODLR at 0.3 took 5.1 s CPU for the
+ * sigma = 22.5 cycle against 7.7 s at 0.1 (and 1.0 lost a jump-out). */
+#define VISCO_STALE_DENSE 0.1
+#define VISCO_STALE_HODLR 0.3
 
 struct adh_visco_pre {
     size_t n;
@@ -44,10 +59,32 @@ struct adh_visco_pre {
     double *d;        /* its diag, n */
     double *wdiag;    /* W_jj */
     double *t;        /* scratch, n + nb */
+    double *kscr;     /* the kernel's scratch, n */
     size_t nb;        /* borders */
     double *B, *C;    /* nb columns, nb rows of n */
     double *Z;        /* HODLR: J^-1 B, nb columns */
     double Sinv[ADH_VISCO_BORDER_MAX * ADH_VISCO_BORDER_MAX]; /* HODLR: the Schur complement's inverse */
+    /* HODLR: the factorization is of J_f = I - cf W diag(df); p'(h)'s
+     * changes since (the contact line crossing nodes) ride on it as a
+     * Woodbury update at the nodes R, J = J_f - W_{:,R} diag(delta) E_R^T,
+     * delta = cf (d - df) there, with Y = J_f^-1 W e_j kept for each node
+     * once computed (VISCO_UPDATE_MIN). A compliance other than cf is left to GMRES: with P
+     * exact for J(cf), P J(c) has eigenvalues 1 + (c/cf - 1)(1 - mu),
+     * mu those of P, in [1, c/cf] for the stable modes (target() below). */
+    const adh_kernel *k;
+    int have;         /* a factorization exists */
+    double cf;        /* its compliance */
+    double cbase;     /* the floor it prefers (adh_visco_pre_base) */
+    double *df, *deff; /* factorized diag; the one represented (df, updated at R) */
+    size_t r, ny;     /* nodes updated; columns of Y computed */
+    size_t R[VISCO_RANK];
+    double delta[VISCO_RANK];
+    size_t ynode[VISCO_YCACHE]; /* Y's columns are J_f^-1 W e_ynode */
+    double *Y;        /* VISCO_YCACHE columns of n */
+    double K[VISCO_RANK * VISCO_RANK]; /* LU of I - diag(delta) Y_RR */
+    int kpiv[VISCO_RANK];
+    size_t col[VISCO_RANK];  /* Y's column of R[a] */
+    size_t factorizations, updates;
 };
 
 static double hodlr_entry(void *ctx, size_t i, size_t j)
@@ -66,6 +103,7 @@ void adh_visco_pre_free(adh_visco_pre *p)
     free(p->piv);
     free(p->d);
     free(p->wdiag);
+    free(p->Y);
     free(p);
 }
 
@@ -83,12 +121,14 @@ adh_visco_pre *adh_visco_pre_alloc(const adh_grid *g, const adh_kernel *k)
         p->piv = malloc(nl * sizeof *p->piv);
     } else {
         p->hw = adh_hodlr_alloc(n, hodlr_entry, (void *)k, VISCO_HODLR_TOL, VISCO_HODLR_LEAF);
+        p->Y = malloc((VISCO_YCACHE + 2) * n * sizeof *p->Y);
     }
+    p->k = k;
     p->colnorm = calloc(n, sizeof *p->colnorm);
     p->wdiag = malloc(n * sizeof *p->wdiag);
-    /* d, t, B, C, Z */
-    p->d = malloc((2 + 3 * ADH_VISCO_BORDER_MAX) * nl * sizeof *p->d);
-    if ((dense ? !p->W || !p->LU || !p->piv : !p->hw) || !p->colnorm || !p->d || !p->wdiag) {
+    /* d, t, B, C, Z, kscr */
+    p->d = malloc((3 + 3 * ADH_VISCO_BORDER_MAX) * nl * sizeof *p->d);
+    if ((dense ? !p->W || !p->LU || !p->piv : !p->hw || !p->Y) || !p->colnorm || !p->d || !p->wdiag) {
         adh_visco_pre_free(p);
         return NULL;
     }
@@ -96,6 +136,11 @@ adh_visco_pre *adh_visco_pre_alloc(const adh_grid *g, const adh_kernel *k)
     p->B = p->t + nl;
     p->C = p->B + ADH_VISCO_BORDER_MAX * n;
     p->Z = p->C + ADH_VISCO_BORDER_MAX * n;
+    p->kscr = p->Z + ADH_VISCO_BORDER_MAX * n;
+    if (p->Y) {
+        p->df = p->Y + VISCO_YCACHE * n;
+        p->deff = p->df + n;
+    }
     for (size_t j = 0; j < n; j++)
         p->wdiag[j] = adh_kernel_diagonal(k, j);
     for (size_t i = 0; i < n && dense; i++)
@@ -130,23 +175,132 @@ static int small_inverse(size_t nb, double *S)
     return ADH_SUCCESS;
 }
 
-/* HODLR: the whole J, the border by its Schur complement C0 - C J^-1 B. */
-static int factor_hodlr(adh_visco_pre *p, const double *C0)
+/* HODLR: x <- J^-1 x with the factorization and its Woodbury update;
+ * single: the single-precision factor solve (a preconditioner's). */
+static void solve_hodlr(adh_visco_pre *p, double *x, int single)
+{
+    size_t n = p->n, r = p->r;
+    if (single)
+        adh_hodlr_solve_single(p->hw, x);
+    else
+        adh_hodlr_solve(p->hw, x);
+    if (r == 0)
+        return;
+    double t[VISCO_RANK];
+    for (size_t a = 0; a < r; a++)
+        t[a] = p->delta[a] * x[p->R[a]];
+    int rr = (int)r, one = 1, info = 0;
+    dgetrs_("N", &rr, &one, p->K, &rr, p->kpiv, t, &rr, &info);
+    for (size_t a = 0; a < r; a++)
+        cblas_daxpy((int)n, t[a], p->Y + p->col[a] * n, 1, x, 1);
+}
+
+/* Y's column for node j: J_f^-1 W e_j, computed once per factorization. */
+static int ycolumn(adh_visco_pre *p, size_t j, size_t *col)
+{
+    size_t n = p->n;
+    for (size_t c = 0; c < p->ny; c++)
+        if (p->ynode[c] == j) {
+            *col = c;
+            return ADH_SUCCESS;
+        }
+    if (p->ny == VISCO_YCACHE)
+        return ADH_EMAXITER;
+    double *y = p->Y + p->ny * n;
+    memset(p->t, 0, n * sizeof *p->t);
+    p->t[j] = 1;
+    adh_kernel_apply(p->k, p->t, y, p->kscr);
+    adh_hodlr_solve(p->hw, y);
+    p->ynode[p->ny] = j;
+    *col = p->ny++;
+    return ADH_SUCCESS;
+}
+
+/* How much J's diagonal at node j moved, relative: |c W_jj (d - d')| /
+ * |1 - c W_jj d'|. Deep in contact J_jj is large and p'(h) changes a
+ * little with the load; at the contact line it crosses zero and J_jj ~ 1:
+ * those are the columns that move. */
+static double moved(const adh_visco_pre *p, double c, double d, double dold, size_t j)
+{
+    double cw = c * p->wdiag[j];
+    return fabs(cw * (d - dold)) / fmax(1.0, fabs(1.0 - cw * dold));
+}
+
+/* The Woodbury update for diag d at the factorized compliance:
+ * ADH_EMAXITER when it would take too many nodes (factorize anew). */
+static int update_hodlr(adh_visco_pre *p, const double *d)
+{
+    size_t n = p->n, r = 0;
+    for (size_t j = 0; j < n; j++) {
+        if (!(moved(p, p->cf, d[j], p->df[j], j) > VISCO_UPDATE_MIN))
+            continue;
+        if (r == VISCO_RANK)
+            return ADH_EMAXITER;
+        p->R[r] = j;
+        p->delta[r] = p->cf * (d[j] - p->df[j]);
+        if (ycolumn(p, j, &p->col[r]) != ADH_SUCCESS)
+            return ADH_EMAXITER;
+        r++;
+    }
+    memcpy(p->deff, p->df, n * sizeof *d);
+    for (size_t a = 0; a < r; a++)
+        p->deff[p->R[a]] = d[p->R[a]];
+    p->r = r;
+    if (r == 0)
+        return ADH_SUCCESS;
+    for (size_t a = 0; a < r; a++) /* column-major K = I - diag(delta) Y_RR */
+        for (size_t b = 0; b < r; b++)
+            p->K[a + b * r] = (a == b) - p->delta[a] * p->Y[p->col[b] * n + p->R[a]];
+    int rr = (int)r, info = 0;
+    dgetrf_(&rr, &rr, p->K, &rr, p->kpiv, &info);
+    if (info != 0)
+        return ADH_EMAXITER;
+    p->updates++;
+    return ADH_SUCCESS;
+}
+
+/* HODLR: the compliance factorized for c: the floor (the instantaneous
+ * one) while c is within twice it, so that a fold of the instantaneous
+ * problem, where the path's Jacobian is singular, is exactly where the
+ * factorization's is; else c itself, kept while within 30 %. */
+static double target(const adh_visco_pre *p, double c)
+{
+    if (p->cbase > 0 && c < 2 * p->cbase)
+        return p->cbase;
+    if (p->have && p->cf != p->cbase && fabs(c / p->cf - 1) < 0.3)
+        return p->cf;
+    return c;
+}
+
+/* HODLR: the whole J (factorized anew, or updated), the border by its
+ * Schur complement C0 - C J^-1 B. */
+static int factor_hodlr(adh_visco_pre *p, double c, const double *C0)
 {
     size_t n = p->n, nb = p->nb;
-    int rc = adh_hodlr_factorize(p->hw, -p->c, p->d);
+    c = target(p, c);
+    int fresh = !p->have || c != p->cf || update_hodlr(p, p->d) != ADH_SUCCESS;
+    if (fresh) {
+        p->have = 0;
+        int rc = adh_hodlr_factorize(p->hw, -c, p->d);
+        if (rc != 0)
+            return rc < 0 ? ADH_ENOMEM : ADH_ESTALL;
+        p->have = 1;
+        p->cf = c;
+        memcpy(p->df, p->d, n * sizeof *p->d);
+        memcpy(p->deff, p->d, n * sizeof *p->d);
+        p->r = p->ny = 0;
+        p->factorizations++;
+    }
     p->m = n;
-    if (rc != 0)
-        return rc < 0 ? ADH_ENOMEM : ADH_ESTALL;
     double S[ADH_VISCO_BORDER_MAX * ADH_VISCO_BORDER_MAX];
     for (size_t a = 0; a < nb; a++) {
         memcpy(p->Z + a * n, p->B + a * n, n * sizeof *p->Z);
-        adh_hodlr_solve(p->hw, p->Z + a * n);
+        solve_hodlr(p, p->Z + a * n, 0);
     }
     for (size_t a = 0; a < nb; a++)
         for (size_t b = 0; b < nb; b++)
             S[a * nb + b] = C0[a * nb + b] - cblas_ddot((int)n, p->C + a * n, 1, p->Z + b * n, 1);
-    rc = small_inverse(nb, S);
+    int rc = small_inverse(nb, S);
     memcpy(p->Sinv, S, nb * nb * sizeof *S);
     return rc;
 }
@@ -184,6 +338,7 @@ static int factor_dense(adh_visco_pre *p, double act, const double *C0)
     }
     int nn = (int)ld, info = 0;
     dgetrf_(&nn, &nn, L, &nn, p->piv, &info);
+    p->factorizations++;
     return info == 0 ? ADH_SUCCESS : ADH_ESTALL;
 }
 
@@ -200,7 +355,7 @@ int adh_visco_pre_factor(adh_visco_pre *p, double c, const double *d, double act
         memcpy(p->B, B, nb * n * sizeof *B);
         memcpy(p->C, C, nb * n * sizeof *C);
     }
-    return p->hw ? factor_hodlr(p, C0) : factor_dense(p, act, C0);
+    return p->hw ? factor_hodlr(p, c, C0) : factor_dense(p, act, C0);
 }
 
 void adh_visco_pre_solve(adh_visco_pre *p, const double *r, const double *rxi, double *x, double *xi)
@@ -209,7 +364,7 @@ void adh_visco_pre_solve(adh_visco_pre *p, const double *r, const double *rxi, d
     if (x != r)
         memcpy(x, r, n * sizeof *x);
     if (p->hw) {
-        adh_hodlr_solve_single(p->hw, x);
+        solve_hodlr(p, x, 1);
         double e[ADH_VISCO_BORDER_MAX];
         for (size_t a = 0; a < nb; a++)
             e[a] = rxi[a] - cblas_ddot((int)n, p->C + a * n, 1, x, 1);
@@ -243,9 +398,33 @@ void adh_visco_pre_solve(adh_visco_pre *p, const double *r, const double *rxi, d
 double adh_visco_pre_drift(const adh_visco_pre *p, double c, const double *d)
 {
     double m = 0;
+    if (p->hw) {
+        /* the compliance is GMRES's (target), p'(h) the update's */
+        if (!p->have || target(p, c) != p->cf)
+            return INFINITY;
+        for (size_t j = 0; j < p->n; j++)
+            m = fmax(m, moved(p, p->cf, d[j], p->deff[j], j));
+        return m;
+    }
     for (size_t j = 0; j < p->n; j++)
-        m = fmax(m, fabs(c * d[j] - p->c * p->d[j]) * p->wdiag[j]);
+        m = fmax(m, fabs(c * d[j] - p->c * p->d[j]) * p->wdiag[j] / fmax(1.0, fabs(1.0 - p->c * p->wdiag[j] * p->d[j])));
     return m;
+}
+
+void adh_visco_pre_base(adh_visco_pre *p, double c)
+{
+    p->cbase = c;
+    p->have = 0;
+}
+
+int adh_visco_pre_stale(const adh_visco_pre *p, double c, const double *d)
+{
+    return adh_visco_pre_drift(p, c, d) > (p->hw ? VISCO_STALE_HODLR : VISCO_STALE_DENSE);
+}
+
+size_t adh_visco_pre_factorizations(const adh_visco_pre *p)
+{
+    return p->factorizations;
 }
 
 size_t adh_visco_pre_active(const adh_visco_pre *p)

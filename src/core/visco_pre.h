@@ -27,7 +27,9 @@ void adh_visco_pre_free(adh_visco_pre *p);
  * rows of n, C0 nb x nb (row-major); all copied. Dense: an LU of the
  * active block bordered (as static.c's, exact for the truncated J, and
  * regular at a fold of J where the border makes it so); HODLR: the whole
- * J and the border by its Schur complement. act: the active threshold.
+ * J, factorized anew or, when only p'(h) at a few nodes moved, updated
+ * (Woodbury), and the border by its Schur complement. act: the active
+ * threshold.
  * ADH_SUCCESS, ADH_ENOMEM, or ADH_ESTALL when singular as held. */
 int adh_visco_pre_factor(adh_visco_pre *p, double c, const double *d, double act, size_t nb, const double *B,
                          const double *C, const double *C0);
@@ -37,10 +39,21 @@ int adh_visco_pre_factor(adh_visco_pre *p, double c, const double *d, double act
 void adh_visco_pre_solve(adh_visco_pre *p, const double *r, const double *rxi, double *x, double *xi);
 
 /* How far J = I - c W diag(d) has moved from the one factorized: the
- * largest |c d_j - c' d'_j| W_jj over the nodes (W_jj the self-influence),
- * a bound of each column's change near the diagonal, where the contact
- * line's nodes change it most. */
+ * largest change of a diagonal entry relative to it, |c d_j - c' d'_j|
+ * W_jj / max(1, |1 - c' W_jj d'_j|) (W_jj the self-influence): the
+ * contact line's nodes, where p'(h) crosses zero, move most. Under HODLR
+ * measured against the factorization with its update, and infinite when
+ * c is off the factorized compliance by more than a factor 2. */
 double adh_visco_pre_drift(const adh_visco_pre *p, double c, const double *d);
+/* Whether that drift calls for a new setup (thresholds in visco_pre.c). */
+int adh_visco_pre_stale(const adh_visco_pre *p, double c, const double *d);
+
+/* The compliance a HODLR factorization uses for any c below twice it (the
+ * instantaneous one): 0 none. Forgets the factorization. */
+void adh_visco_pre_base(adh_visco_pre *p, double c);
+
+/* Factorizations so far (the dense LU or HODLR's; Woodbury updates apart). */
+size_t adh_visco_pre_factorizations(const adh_visco_pre *p);
 
 /* Nodes in the last factorization (n with HODLR). */
 size_t adh_visco_pre_active(const adh_visco_pre *p);
