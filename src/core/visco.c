@@ -256,19 +256,19 @@ static double auto_start(const adh_visco *w)
     return h;
 }
 
-/* The start at sphere position h0 with q = 0: u = -cinf W p by fixed
- * point (a contraction this far out). y gets u, q = 0, tl = 0[, h0];
- * *base the base that holds it there. */
+/* The start at sphere position h0, at rest: the material has relaxed
+ * there (q = p), so u = -(2/E0) W p, by fixed point (a contraction this
+ * far out). y gets u, q, tl = 0[, h0]; *base the base that holds it. */
 static int solve_start(adh_visco *w, double h0, double *y, double *base)
 {
     size_t n = w->n;
+    double c0 = w->cinf + w->cdel, du = INFINITY;
     memset(y, 0, w->len * sizeof *y);
-    double du = INFINITY;
     for (int it = 0; it < VISCO_START_ITERS && !(du < 1e-13 * w->m.z0); it++) {
         if (adh_visco_gaps(w, y, h0) < 0)
             return ADH_ESTALL;
         for (size_t i = 0; i < n; i++)
-            w->tmp[i] = w->cinf * w->p[i];
+            w->tmp[i] = c0 * w->p[i];
         adh_kernel_apply(w->k, w->tmp, w->tmp2, w->scratch);
         du = 0;
         for (size_t i = 0; i < n; i++) {
@@ -278,6 +278,7 @@ static int solve_start(adh_visco *w, double h0, double *y, double *base)
     }
     if (!(du < 1e-13 * w->m.z0) || adh_visco_gaps(w, y, h0) < 0)
         return ADH_ESTALL;
+    memcpy(y + w->IQ, w->p, n * sizeof *y);
     double F = adh_visco_force(w, h0);
     *base = w->spring ? h0 - F / w->dr.spring : h0;
     if (w->spring)
@@ -336,7 +337,11 @@ static void seg_set(adh_visco *w, int kind, double t0, double b0)
     sg->t0 = t0;
     sg->b0 = b0;
     sg->bdot = kind == SEG_LOAD ? -w->dr.speed_in : kind == SEG_UNLOAD ? w->dr.speed_out : 0;
-    sg->vm = kind == SEG_LOAD ? w->dr.speed_in : kind == SEG_UNLOAD ? w->dr.speed_out : w->m.z0 / w->v.tau;
+    /* the metric's speed: the base's, but at least z0 per tau, so that
+     * time counts while q relaxes at a standing (or crawling) base: the
+     * path there must not look vertical (t' ~ 0, a fold to the rootfinder) */
+    double vt = w->m.z0 / w->v.tau;
+    sg->vm = fmax(kind == SEG_LOAD ? w->dr.speed_in : kind == SEG_UNLOAD ? w->dr.speed_out : 0, vt);
     sg->tl_end = w->dr.dwell;
     sg->branch = kind == SEG_LOAD ? +1 : -1;
     sg->target = kind == SEG_LOAD ? (w->ti < w->nturns ? w->turns[w->ti] : NAN) : w->b_start;
@@ -362,7 +367,12 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     w->len = 2 * n + 1 + (size_t)w->spring;
     w->cinf = 2.0 / v->Einf;
     w->cdel = fmax(0.0, 2.0 * (1.0 / v->E0 - 1.0 / v->Einf));
-    adh_visco_pre_base(w->pre, w->cinf);
+    /* a HODLR factorization at nine tenths of the instantaneous compliance:
+     * at a fold of the instantaneous problem J is singular, and a bordered
+     * solve through the Schur complement of a factorization singular there
+     * too would be all cancellation; at 0.9 cinf the fold's mode has
+     * eigenvalue 0.1 and the mismatch is GMRES's (visco_pre.c) */
+    adh_visco_pre_base(w->pre, 0.9 * w->cinf);
     w->theta = 1.0 / (double)n;
     w->pref = m->A / (6.0 * M_PI * pow(m->z0, 3));
     for (size_t i = 0; i < n; i++)
@@ -559,8 +569,8 @@ static int fold(adh_visco *w, double t0)
     w->phase = 1;
     w->cross_dir = 0;
     if (!w->spring && w->seg.bdot == 0) {
-        /* a dwell: h0 moves through tl at a virtual speed */
-        w->seg.bdot = w->seg.vm;
+        /* a dwell: h0 moves through tl at a virtual speed, z0 per tau */
+        w->seg.bdot = w->m.z0 / w->v.tau;
         w->seg.b0 = w->b_fold - w->seg.bdot * y[w->IT];
     }
     if (!w->spring) {

@@ -13,7 +13,7 @@
  * crossing. Measured in (u, h0) the path is as smooth as the static
  * curve; measured with the base (h0 - F/k, which the force's small
  * wiggles move by F'/k) a soft spring would fold it into hairpins.
- *     no spring: y = (u, q, tl),     r_q = q',  r_t = the normalisation
+ *     no spring: y = (u, q, tl),     r_q = q',  r_t = the path's normalisation
  *     spring:    y = (u, q, tl, h0), r_q = q',  r_t = tl', r_h = the normalisation
  * The Newton matrix, q (and tl) eliminated, is J_u = I - cinf W diag(D)
  * bordered by the parameter's column and the normalisation's row. */
@@ -29,11 +29,13 @@
  * weight: P = h0 (spring) or tl. */
 static size_t param(const adh_visco *w, double *gP, double *sc, double *wP)
 {
-    double vm = fabs(w->seg.bdot), z0 = w->m.z0;
+    double vm = w->seg.vm, z0 = w->m.z0;
     if (w->spring) {
         *gP = 1, *sc = 1.0 / z0, *wP = 1;
         return w->IH;
     }
+    /* the path's own normalisation, so that the switch at the fold (where
+     * t' = 0) changes nothing but q' = 0 */
     *gP = w->seg.bdot, *sc = 1.0 / (vm * z0), *wP = vm * vm;
     return w->IT;
 }

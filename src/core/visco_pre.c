@@ -259,10 +259,10 @@ static int update_hodlr(adh_visco_pre *p, const double *d)
     return ADH_SUCCESS;
 }
 
-/* HODLR: the compliance factorized for c: the floor (the instantaneous
- * one) while c is within twice it, so that a fold of the instantaneous
- * problem, where the path's Jacobian is singular, is exactly where the
- * factorization's is; else c itself, kept while within 30 %. */
+/* HODLR: the compliance factorized for c: the floor (just below the
+ * instantaneous one, adh_visco_pre_base) while c is within twice it, so
+ * that the factorization is regular across the instantaneous problem's
+ * folds; else c itself, kept while within 30 %. */
 static double target(const adh_visco_pre *p, double c)
 {
     if (p->cbase > 0 && c < 2 * p->cbase)

@@ -48,8 +48,8 @@ double adh_visco_pre_drift(const adh_visco_pre *p, double c, const double *d);
 /* Whether that drift calls for a new setup (thresholds in visco_pre.c). */
 int adh_visco_pre_stale(const adh_visco_pre *p, double c, const double *d);
 
-/* The compliance a HODLR factorization uses for any c below twice it (the
- * instantaneous one): 0 none. Forgets the factorization. */
+/* The compliance a HODLR factorization uses for any c below twice it
+ * (just below the instantaneous one): 0 none. Forgets the factorization. */
 void adh_visco_pre_base(adh_visco_pre *p, double c);
 
 /* Factorizations so far (the dense LU or HODLR's; Woodbury updates apart). */
