@@ -23,7 +23,7 @@ typedef struct fixture {
     adh_kernel *k;
 } fixture;
 
-static fixture fix_open(size_t n, double spacing_factor)
+static inline fixture fix_open(size_t n, double spacing_factor)
 {
     fixture f;
     f.m = adh_material_default();
@@ -36,7 +36,7 @@ static fixture fix_open(size_t n, double spacing_factor)
     return f;
 }
 
-static void fix_close(fixture *f)
+static inline void fix_close(fixture *f)
 {
     adh_kernel_free(f->k);
     adh_grid_free(f->g);
@@ -44,7 +44,7 @@ static void fix_close(fixture *f)
 
 /* The static curve at modulus E down to the turn (ds_max: its longest
  * step; the default 5 samples the far field coarsely). */
-static int fix_static(const fixture *f, double E, double ds_max, adh_run *run, adh_static_result *r)
+static inline int fix_static(const fixture *f, double E, double ds_max, adh_run *run, adh_static_result *r)
 {
     adh_material m = f->m;
     m.E = E;
@@ -67,7 +67,7 @@ typedef struct vrun {
 /* One cycle: E0 = the fixture's E, Einf = ratio E0, tau = FIX_TAU, the
  * drive d, tolerance tol, from start (NAN: the automatic one). Free with
  * vrun_free. */
-static vrun fix_visco_from(const fixture *f, double ratio, const adh_visco_drive *d, double tol, double start)
+static inline vrun fix_visco_from(const fixture *f, double ratio, const adh_visco_drive *d, double tol, double start)
 {
     vrun v;
     adh_sls sls = { f->m.E, ratio * f->m.E, FIX_TAU };
@@ -91,18 +91,18 @@ static vrun fix_visco_from(const fixture *f, double ratio, const adh_visco_drive
     return v;
 }
 
-static vrun fix_visco(const fixture *f, double ratio, const adh_visco_drive *d, double tol)
+static inline vrun fix_visco(const fixture *f, double ratio, const adh_visco_drive *d, double tol)
 {
     return fix_visco_from(f, ratio, d, tol, NAN);
 }
 
-static void vrun_free(vrun *v)
+static inline void vrun_free(vrun *v)
 {
     adh_visco_free(v->w);
     adh_run_free(&v->run);
 }
 
-static adh_visco_drive fix_drive(double v_in, double v_out)
+static inline adh_visco_drive fix_drive(double v_in, double v_out)
 {
     adh_visco_drive d = adh_visco_drive_default();
     d.speed_in = v_in;
@@ -111,7 +111,7 @@ static adh_visco_drive fix_drive(double v_in, double v_out)
 }
 
 /* Distance from point (x, y) to the segment (x0, y0)-(x1, y1). */
-static double seg_dist(double x, double y, double x0, double y0, double x1, double y1)
+static inline double seg_dist(double x, double y, double x0, double y0, double x1, double y1)
 {
     double dx = x1 - x0, dy = y1 - y0, l2 = dx * dx + dy * dy;
     double t = l2 > 0 ? ((x - x0) * dx + (y - y0) * dy) / l2 : 0;
@@ -126,7 +126,7 @@ static double seg_dist(double x, double y, double x0, double y0, double x1, doub
  * many rows had a segment in reach (within 0.1 z0 in h0). Rows within
  * 1 pm of a fold are left out: a slow drive's sphere is on its way from
  * one branch to the other there. */
-static double static_gap(const adh_run *run, const adh_run *st, const adh_static_result *sr, double z0,
+static inline double static_gap(const adh_run *run, const adh_run *st, const adh_static_result *sr, double z0,
                          size_t *compared)
 {
     double worst = 0, Fs = fabs(sr->pulloff_F);
@@ -154,7 +154,7 @@ static double static_gap(const adh_run *run, const adh_run *st, const adh_static
 
 /* work - (dU + dissipation + jumps), relative to the work (or to the
  * largest of the parts when the work is tiny). */
-static double energy_gap(const adh_visco_energy *e)
+static inline double energy_gap(const adh_visco_energy *e)
 {
     double du = e->stored - e->stored0, rest = du + e->dissipated + e->jumps;
     double scale = fmax(fabs(e->work), fmax(fabs(du), fmax(e->dissipated, e->jumps)));
