@@ -91,7 +91,8 @@ typedef struct adh_visco_settings {
     double active_tol;   /* the preconditioner's dense LU takes node j where
                             c |p'(h_j)| sum_n |W_nj| exceeds this (as static) */
     size_t max_steps;    /* integrator steps of the whole run (ADH_EMAXITER beyond) */
-    size_t max_jump_steps; /* steps of one jump's relaxation (ADH_ESTALL beyond) */
+    size_t max_jump_steps; /* steps of one jump's relaxation, where following the
+                            equilibria got lost (ADH_ESTALL beyond) */
     const volatile sig_atomic_t *cancel; /* polled every step: nonzero stops
                             with ADH_EINTR; NULL = never */
 } adh_visco_settings;
@@ -146,6 +147,9 @@ typedef struct adh_visco_result {
     double time;           /* physical time at the end (or now), s */
     size_t steps;          /* integrator steps (jumps' relaxations included) */
     size_t jumps;          /* jumps */
+    size_t jumps_relaxed;  /* of which landed by relaxing, where following the
+                              equilibria got lost (lattice folds of a grid that
+                              does not resolve the contact edge) */
     size_t newton;         /* Newton iterations */
     size_t krylov;         /* GMRES iterations */
     size_t setups;         /* preconditioner factorizations (a dense LU, or HODLR's;
@@ -183,9 +187,14 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
  * After a final status every call returns it again. */
 int adh_visco_iterate(adh_visco *w);
 
-/* The whole protocol: calls cb after each row (nonzero stops it, run->
- * interrupted = 1, ADH_SUCCESS). Returns ADH_SUCCESS or the error. */
-int adh_visco_run(adh_visco *w, adh_step_cb cb, void *ctx);
+/* The whole protocol, without a callback (a driver steps the rule,
+ * adhere/rule_visco.h, through the drive and the runner). Returns
+ * ADH_SUCCESS or the error. */
+int adh_visco_run(adh_visco *w);
+
+/* 1 when the row the last iterate returned is the protocol's last (the
+ * next call returns ADH_SUCCESS). */
+int adh_visco_last(const adh_visco *w);
 
 /* Why the run stopped, when it stopped on an error (the integrator's own
  * words for ADH_ESTALL); "" otherwise. */
@@ -201,6 +210,18 @@ void adh_visco_summary(const adh_visco *w, adh_visco_result *res);
 size_t adh_visco_events(const adh_visco *w, const adh_visco_event **ev);
 /* The stored energy U of the current state, J, and its parts. */
 double adh_visco_stored(const adh_visco *w, double *elastic, double *surface, double *spring);
+
+/* The settings of the viscoelastic step rule (adhere/rule_visco.h): the
+ * material beyond adh_material (whose E is E0), the instrument and the
+ * integrator. */
+typedef struct adh_visco_rule_settings {
+    adh_sls sls;
+    adh_visco_drive drive;
+    adh_visco_settings s;
+} adh_visco_rule_settings;
+
+/* Einf = E0 = E (elastic), tau = 1 ms, the default drive and integrator. */
+adh_visco_rule_settings adh_visco_rule_settings_default(double E);
 
 /* The instrument's jumps on an elastic (static) curve: where the base
  * h0 - F/k turns, i.e. dF/dh0 = k, located on the stable rows of curve

@@ -19,6 +19,12 @@
 #include "adhere/status.h"
 
 #define VISCO_START_ITERS 400   /* the start's fixed-point iterations */
+/* A crossing that has not landed in this many steps is lost (a resolved
+ * grid's crossings take tens to a few hundred): the jump relaxes instead. */
+#define VISCO_CROSS_STEPS 1000
+/* A relaxation has landed when nothing moves faster than this many
+ * tolerances per unit pseudo-time (its rates are 1 and more). */
+#define VISCO_REST 1e-3
 
 
 static void snaps_free(adh_visco *w)
@@ -163,8 +169,9 @@ static int restart(adh_visco *w, double s, double *y, const double *yp_given)
     if (!ypv)
         return ADH_ENOMEM;
     /* on the path (or, for a crossing, on the equilibria at its h0)
-     * within a thousandth of the tolerance first */
-    int rc = adh_visco_polish(w, y, w->mode == MODE_PATH);
+     * within a thousandth of the tolerance first; a relaxation starts
+     * off them on purpose */
+    int rc = w->mode == MODE_FLOW ? ADH_SUCCESS : adh_visco_polish(w, y, w->mode == MODE_PATH);
     if (rc == ADH_SUCCESS && yp_given)
         memcpy(ypv, yp_given, w->len * sizeof *ypv);
     else if (rc == ADH_SUCCESS)
@@ -375,6 +382,14 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     adh_visco_pre_base(w->pre, 0.9 * w->cinf);
     w->theta = 1.0 / (double)n;
     w->pref = m->A / (6.0 * M_PI * pow(m->z0, 3));
+    /* how far a spring can stretch: twice the adhesive force Einf/E0
+     * times the law's DMT pull-off, over k; and how far from its fold a
+     * jump's crossing may take the sphere: the model's reach, R/50, and
+     * that */
+    adh_derived dv;
+    adh_material_derive(&w->m, &dv);
+    w->stretch = w->spring ? 2.0 * v->Einf / v->E0 * fabs(dv.F_dmt) / d->spring : 0;
+    w->reach = 0.02 * m->R + w->stretch;
     for (size_t i = 0; i < n; i++)
         w->shape[i] = w->g->r[i] * w->g->r[i] / (2.0 * m->R);
     w->nev = 0;
@@ -390,9 +405,10 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     for (size_t i = 0; i < ps->nturns; i++)
         if (!(w->snap[i].y = malloc(w->len * sizeof *w->snap[i].y)))
             return ADH_ENOMEM;
-    /* a fold's state, and a jump's start and its y' */
-    if (!(w->yfold = malloc(3 * w->len * sizeof *w->yfold)))
+    if (!(w->yfold = malloc(6 * w->len * sizeof *w->yfold)))
         return ADH_ENOMEM;
+    w->ypfold = w->yfold + w->len, w->ywork = w->ypfold + w->len;
+    w->yprev = w->ywork + w->len, w->ypprev = w->yprev + w->len, w->ypflow = w->ypprev + w->len;
     if ((rc = adh_visco_dae_create(w)) != ADH_SUCCESS)
         return rc;
     double h0 = isnan(ps->start) ? auto_start(w) : ps->start;
@@ -518,14 +534,9 @@ static int segment_end(adh_visco *w, double t0)
         /* still in contact where the base started (a spring's pull on the
          * sphere reaches this far): retraction goes on until the surfaces
          * are apart (contact_changed ends it a z0 after), at most as far
-         * as twice the adhesive force Einf/E0 times the law's DMT
-         * pull-off stretches the spring */
-        adh_material m0 = w->m;
-        adh_derived dv;
-        adh_material_derive(&m0, &dv);
-        double reach = 2.0 * w->v.Einf / w->v.E0 * fabs(dv.F_dmt) / w->dr.spring;
+         * as the spring can stretch */
         w->extended = 1;
-        w->seg.target = w->b_start + (isfinite(reach) ? reach : 0) + 10 * w->m.z0;
+        w->seg.target = w->b_start + w->stretch + 10 * w->m.z0;
         return finish_row(w, rc);
     }
     add_event(w, ADH_VISCO_END);
@@ -561,13 +572,15 @@ static int fold(adh_visco *w, double t0)
     e->t = w->t_now, e->base = w->base_now, e->h0 = w->st->h0, e->F = w->F_now, e->a = contact_radius(w);
     w->U_before = adh_visco_energy_of(w, y, NULL, NULL, NULL);
     memcpy(w->yfold, y, w->len * sizeof *y);
+    memcpy(w->ypfold, N_VGetArrayPointer(w->yp), w->len * sizeof *y);
     w->s_fold = w->s_now;
     w->b_fold = w->base_now;
     w->seg_fold = w->seg;
     w->jump_steps = 0;
     w->mode = MODE_CROSS;
+    w->have_prev = 0;
     w->phase = 1;
-    w->cross_dir = 0;
+    w->cross_dir = w->seg.bdot > 0 ? +1 : w->seg.bdot < 0 ? -1 : w->spring ? 0 : +1;
     if (!w->spring && w->seg.bdot == 0) {
         /* a dwell: h0 moves through tl at a virtual speed, z0 per tau */
         w->seg.bdot = w->m.z0 / w->v.tau;
@@ -577,7 +590,7 @@ static int fold(adh_visco *w, double t0)
         adh_visco_root_directions(w);
         return finish_row(w, rc);
     }
-    double *yp0 = w->yfold + w->len;
+    double *yp0 = w->ywork;
     adh_visco_cross_start(w, yp, yp0);
     int brc = restart(w, w->s_now, y, yp0);
     if (brc != ADH_SUCCESS)
@@ -614,6 +627,7 @@ static int land(adh_visco *w, double t0)
     memcpy(y + w->IQ, w->yfold + w->IQ, (n + 1) * sizeof *y);
     w->seg = w->seg_fold;
     w->mode = MODE_PATH;
+    IDASetMaxStep(w->ida, 0); /* the crossing's limit, if it set one, is off */
     for (size_t i = 0; i < n; i++)
         moved = fmax(moved, fabs(y[i] - w->yfold[i]));
     if (!(moved > w->s.tol * w->m.z0)) {
@@ -641,16 +655,105 @@ static int land(adh_visco *w, double t0)
     return finish_row(w, push_row(w, t0));
 }
 
+/* The crossing got lost: the jump relaxes instead, from the fold. */
+static int start_flow(adh_visco *w)
+{
+    double *y0 = N_VGetArrayPointer(w->y);
+    w->seg = w->seg_fold;
+    IDASetMaxStep(w->ida, 0);
+    w->mode = MODE_FLOW;
+    w->jump_steps = 0;
+    w->res.jumps_relaxed++;
+    int rc = adh_visco_flow_start(w, w->yfold, w->ypfold, y0, w->ypflow);
+    return rc == ADH_SUCCESS ? restart(w, 0.0, y0, w->ypflow) : rc;
+}
+
+/* The crossing's metric product of a and b (u, and the parameter: tl
+ * without a spring, h0 with one), per z0^2. */
+static double cross_dot(const adh_visco *w, const double *a, const double *b)
+{
+    double d = 0;
+    for (size_t i = 0; i < w->n; i++)
+        d += a[i] * b[i];
+    d *= w->theta;
+    if (w->spring)
+        d += a[w->IH] * b[w->IH];
+    else
+        d += w->seg.vm * w->seg.vm * a[w->IT] * b[w->IT];
+    return d;
+}
+
+/* Whether the crossing's last step went backwards: its secant against
+ * the tangent of the step before. At a lattice fold's hairpin a step can
+ * land on the leg that comes back, and the crossing would retrace the
+ * way it came (to the outer branch and out to infinity). */
+static int cross_reversed(adh_visco *w)
+{
+    if (!w->have_prev)
+        return 0;
+    const double *y = N_VGetArrayPointer(w->y), *prev = w->yprev, *tp = w->ypprev;
+    double *sec = w->ywork; /* the crossing's start is long used */
+    for (size_t i = 0; i < w->len; i++)
+        sec[i] = y[i] - prev[i];
+    return cross_dot(w, sec, tp) < 0;
+}
+
+static void cross_keep(adh_visco *w)
+{
+    memcpy(w->yprev, N_VGetArrayPointer(w->y), w->len * sizeof(double));
+    memcpy(w->ypprev, N_VGetArrayPointer(w->yp), w->len * sizeof(double));
+    w->s_prev = w->s_now;
+    w->have_prev = 1;
+}
+
+/* Whether the crossing has lost its way: too many steps (a ladder of
+ * lattice folds), or the sphere beyond the model's reach (|h0 - h0_fold|
+ * over R/50) or the contact beyond the grid. */
+static int cross_lost(adh_visco *w)
+{
+    const double *y = N_VGetArrayPointer(w->y);
+    double h0 = adh_visco_h0_of(w, y), a;
+    if (w->jump_steps > VISCO_CROSS_STEPS || fabs(h0 - adh_visco_h0_of(w, w->yfold)) > w->reach)
+        return 1;
+    if (adh_visco_gaps(w, y, h0) < 0)
+        return 1;
+    a = adh_contact_radius(w->g, w->h, w->m.z0);
+    return a >= 0.9 * w->g->rmax;
+}
+
+/* Back to the crossing's last good point, with steps at most a quarter of
+ * the one that went backwards, until the crossing lands. */
+static int cross_retry(adh_visco *w)
+{
+    double h;
+    IDAGetLastStep(w->ida, &h);
+    if (++w->jump_steps > VISCO_CROSS_STEPS)
+        return start_flow(w);
+    double *y = N_VGetArrayPointer(w->y);
+    memcpy(y, w->yprev, w->len * sizeof *y);
+    w->s_now = w->s_prev;
+    int rc = restart(w, w->s_now, y, w->ypprev);
+    if (rc == ADH_SUCCESS)
+        IDASetMaxStep(w->ida, 0.25 * fabs(h));
+    return rc;
+}
+
 /* A root during a crossing: its phase 1 ends where the base's coordinate
- * turns (once it has moved off the fold's by ten tolerances: a turn
- * within them is the fold's own), phase 2 where it is back. */
+ * b turns back (the S's other fold), phase 2 where it is back at the
+ * fold's: the first branch that holds at the same base, however small
+ * the S (a lattice fold's). Along the path b moves as the drive,
+ * sign(bdot), until the fold; beyond it the other way: it turns back the
+ * drive's way, and crosses the fold's base the drive's way. A dwell
+ * under a spring has no such sign: there the turn is the first one ten
+ * tolerances off the fold's base (closer, it is the fold's own). */
 static int cross_root(adh_visco *w, const int *rf, double t0)
 {
     const double *y = N_VGetArrayPointer(w->y);
     double db = adh_visco_cross_base(w, y) - w->b_fold;
-    if (w->phase == 1 && rf[ROOT_FOLD] && fabs(db) > 10 * w->s.tol * w->m.z0) {
+    if (w->phase == 1 && rf[ROOT_FOLD] && (w->cross_dir != 0 || fabs(db) > 10 * w->s.tol * w->m.z0)) {
         w->phase = 2;
-        w->cross_dir = db > 0 ? -1 : +1;
+        if (w->cross_dir == 0)
+            w->cross_dir = db > 0 ? -1 : +1;
         adh_visco_root_directions(w);
     } else if (w->phase == 2 && rf[ROOT_END]) {
         return land(w, t0);
@@ -700,6 +803,12 @@ int adh_visco_iterate(adh_visco *w)
             return stop(w, ADH_EMAXITER);
         double s;
         int flag = IDASolve(w->ida, w->s_now + 1.0, &s, w->y, w->yp, IDA_ONE_STEP);
+        if (flag < 0 && w->mode == MODE_CROSS) {
+            int brc = start_flow(w);
+            if (brc != ADH_SUCCESS)
+                return stop(w, brc);
+            continue;
+        }
         if (flag < 0) {
             char ida[200];
             snprintf(ida, sizeof ida, "%.199s", w->errmsg);
@@ -709,8 +818,30 @@ int adh_visco_iterate(adh_visco *w)
                      ida);
             return stop(w, ADH_ESTALL);
         }
+        if (w->mode == MODE_FLOW) {
+            if (adh_visco_flow_speed(w, N_VGetArrayPointer(w->yp)) < VISCO_REST)
+                return land(w, t0);
+            if (++w->jump_steps > (long)w->s.max_jump_steps) {
+                snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s did not come to rest", w->t_now);
+                return stop(w, ADH_ESTALL);
+            }
+            continue;
+        }
         w->s_now = s;
+        if (w->mode == MODE_CROSS && cross_lost(w)) {
+            int brc = start_flow(w);
+            if (brc != ADH_SUCCESS)
+                return stop(w, brc);
+            continue;
+        }
+        if (w->mode == MODE_CROSS && cross_reversed(w)) {
+            int brc = cross_retry(w);
+            if (brc != ADH_SUCCESS)
+                return stop(w, brc);
+            continue;
+        }
         if (w->mode == MODE_CROSS) {
+            cross_keep(w);
             int rf[NROOTS] = { 0 };
             if (flag == IDA_ROOT_RETURN) {
                 IDAGetRootInfo(w->ida, rf);
@@ -718,11 +849,7 @@ int adh_visco_iterate(adh_visco *w)
                 if (rc != ADH_CONTINUE || w->mode == MODE_PATH)
                     return rc;
             }
-            if (++w->jump_steps > (long)w->s.max_jump_steps) {
-                snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s did not land in %zu steps", w->t_now,
-                         w->s.max_jump_steps);
-                return stop(w, ADH_ESTALL);
-            }
+            ++w->jump_steps;
             continue;
         }
         load_state(w, N_VGetArrayPointer(w->y));
@@ -734,15 +861,17 @@ int adh_visco_iterate(adh_visco *w)
     }
 }
 
-int adh_visco_run(adh_visco *w, adh_step_cb cb, void *ctx)
+int adh_visco_run(adh_visco *w)
 {
     int rc;
     while ((rc = adh_visco_iterate(w)) == ADH_CONTINUE)
-        if (cb && cb(&w->run->rows[w->run->nrows - 1], w->run, ctx)) {
-            w->run->interrupted = 1;
-            return stop(w, ADH_SUCCESS);
-        }
+        ;
     return rc == ADH_EINTR ? ADH_SUCCESS : rc;
+}
+
+int adh_visco_last(const adh_visco *w)
+{
+    return w->finishing && !w->done;
 }
 
 const char *adh_visco_why(const adh_visco *w)

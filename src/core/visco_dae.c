@@ -78,7 +78,9 @@ static int res(realtype s, N_Vector yy, N_Vector yp, N_Vector rr, void *data)
     adh_visco *w = data;
     const double *y = N_VGetArrayPointer(yy), *d = N_VGetArrayPointer(yp);
     double *r = N_VGetArrayPointer(rr);
-    int rc = w->mode == MODE_CROSS ? adh_visco_cross_res(w, y, d, r) : adh_visco_path_res(w, y, d, r);
+    int rc = w->mode == MODE_CROSS  ? adh_visco_cross_res(w, y, d, r)
+             : w->mode == MODE_FLOW ? adh_visco_flow_res(w, y, d, r)
+                                    : adh_visco_path_res(w, y, d, r);
     if (rc)
         return rc;
     for (size_t i = 0; i < w->len; i++)
@@ -94,7 +96,9 @@ static int psetup(realtype s, N_Vector yy, N_Vector yp, N_Vector rr, realtype cj
     if (adh_visco_gaps(w, y, adh_visco_h0_of(w, y)) < 0)
         return 1;
     adh_visco_slopes(w);
-    int rc = w->mode == MODE_CROSS ? adh_visco_cross_psetup(w, y, d, cj) : adh_visco_path_psetup(w, y, d, cj);
+    int rc = w->mode == MODE_CROSS  ? adh_visco_cross_psetup(w, y, d, cj)
+             : w->mode == MODE_FLOW ? adh_visco_flow_psetup(w, y, cj)
+                                    : adh_visco_path_psetup(w, y, d, cj);
     return rc == ADH_SUCCESS ? 0 : rc == ADH_ENOMEM ? -1 : 1;
 }
 
@@ -116,6 +120,8 @@ static int jtsetup(realtype s, N_Vector yy, N_Vector yp, N_Vector rr, realtype c
     double c;
     if (w->mode == MODE_CROSS) {
         c = w->cinf;
+    } else if (w->mode == MODE_FLOW) {
+        c = w->cinf / (1.0 + cj);
     } else {
         double tp = d[w->IT];
         c = w->cinf + w->cdel * tp / (w->v.tau * (cj + tp / w->v.tau));
@@ -133,6 +139,8 @@ static int jtimes(realtype s, N_Vector yy, N_Vector yp, N_Vector rr, N_Vector vv
     double *Jv = N_VGetArrayPointer(Jvv);
     if (w->mode == MODE_CROSS)
         adh_visco_cross_jtimes(w, y, d, v, Jv, cj);
+    else if (w->mode == MODE_FLOW)
+        adh_visco_flow_jtimes(w, y, v, Jv, cj);
     else
         adh_visco_path_jtimes(w, y, d, v, Jv, cj);
     return 0;
@@ -146,6 +154,8 @@ static int psolve(realtype s, N_Vector yy, N_Vector yp, N_Vector rr, N_Vector rv
     double *z = N_VGetArrayPointer(zvec);
     if (w->mode == MODE_CROSS)
         adh_visco_cross_psolve(w, r, z);
+    else if (w->mode == MODE_FLOW)
+        adh_visco_flow_psolve(w, r, z);
     else
         adh_visco_path_psolve(w, r, z);
     return 0;
@@ -174,6 +184,8 @@ static int roots(realtype s, N_Vector yy, N_Vector yp, realtype *g, void *data)
         adh_visco_cross_roots(w, y, d, g);
         return 0;
     }
+    if (w->mode == MODE_FLOW)
+        return 0;
     double h0 = adh_visco_h0_of(w, y), base = adh_visco_base_of(w, y), tl = y[w->IT];
     g[ROOT_FOLD] = d[w->IT];
     if (sg->kind == SEG_LOAD && isfinite(sg->target))
@@ -211,7 +223,7 @@ static int quad(realtype s, N_Vector yy, N_Vector yp, N_Vector rQ, void *data)
     const double *y = N_VGetArrayPointer(yy), *d = N_VGetArrayPointer(yp);
     double *q = N_VGetArrayPointer(rQ), h0 = adh_visco_h0_of(w, y), tp = d[w->IT];
     q[QWORK] = q[QDISS] = 0;
-    if (w->mode == MODE_CROSS)
+    if (w->mode != MODE_PATH)
         return 0;
     if (adh_visco_gaps(w, y, h0) < 0)
         return 1;
@@ -378,7 +390,7 @@ void adh_visco_root_directions(adh_visco *w)
     if (w->seg.kind == SEG_LOAD)
         dir[ROOT_END] = -1;
     if (w->mode == MODE_CROSS) {
-        dir[ROOT_FOLD] = 0;
+        dir[ROOT_FOLD] = w->cross_dir;
         dir[ROOT_END] = w->cross_dir;
     }
     dir[ROOT_PROFILE] = w->seg.kind == SEG_LOAD ? -1 : +1;

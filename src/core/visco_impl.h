@@ -18,8 +18,10 @@ enum { SEG_LOAD = 1, SEG_DWELL = 2, SEG_UNLOAD = 3 };
 /* What IDAS integrates: the path along its arclength s, or a jump's
  * crossing: the equilibria at frozen time and q followed from the fold
  * along their own arclength in (u, h0) to the other branch where the
- * base is back at the fold's position (visco_cross.c). */
-enum { MODE_PATH = 0, MODE_CROSS = 1 };
+ * base is back at the fold's position (visco_cross.c); or, where that
+ * gets lost (a lattice-fold ladder of an unresolved grid), the jump's
+ * overdamped relaxation at frozen time, base and q (visco_flow.c). */
+enum { MODE_PATH = 0, MODE_CROSS = 1, MODE_FLOW = 2 };
 
 /* The roots watched along the path (IDAS's rootfinding): the fold
  * (t' = 0), the segment's end, a force minimum, contact, a profile
@@ -102,14 +104,19 @@ struct adh_visco {
     visco_seg seg_fold;  /* the segment as it was (a dwell's crossing moves
                             h0 through tl at a virtual speed) */
     double s_fold;       /* where on the path the jump under way began */
-    double *yfold;       /* its state there (len), and a crossing's start
-                            and y' (2 len more) */
+    /* len each, one block (yfold owns it): the fold's state and y'; a
+     * crossing's start y' (or step's secant); its last good point and y';
+     * a relaxation's start y' */
+    double *yfold, *ypfold, *ywork, *yprev, *ypprev, *ypflow;
     long jump_steps;     /* steps of the crossing so far */
+    int have_prev;       /* a crossing's last good point is kept (yprev) */
+    double s_prev;       /* and where it was */
     adh_visco_event pending; /* the jump being crossed: its side before */
     double U_before;
 
     /* the protocol */
     double b_start, h0_start;
+    double stretch, reach;   /* a spring's largest stretch; a crossing's reach, m */
     size_t nturns;
     double turns[ADH_MAX_TURNS];    /* h0, shallowest first */
     visco_snap snap[ADH_MAX_TURNS];
@@ -194,6 +201,18 @@ void adh_visco_cross_start(adh_visco *w, const double *d, double *yp0);
 void adh_visco_cross_roots(adh_visco *w, const double *y, const double *d, double *g);
 /* The base's coordinate h0 - F/k of y (h0 without a spring). */
 double adh_visco_cross_base(const adh_visco *w, const double *y);
+
+/* visco_flow.c: a jump's relaxation, the same four, its start, its speed */
+int adh_visco_flow_res(adh_visco *w, const double *y, const double *d, double *r);
+void adh_visco_flow_jtimes(adh_visco *w, const double *y, const double *v, double *Jv, double cj);
+int adh_visco_flow_psetup(adh_visco *w, const double *y, double cj);
+void adh_visco_flow_psolve(adh_visco *w, const double *r, double *z);
+/* The relaxation's start from the fold y nudged along the path's tangent
+ * d; y' = -(the residual). */
+int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double *y0, double *yp0);
+/* How fast it still moves: max over u (and h0) of |y'| / atol, per unit
+ * pseudo-time. */
+double adh_visco_flow_speed(const adh_visco *w, const double *d);
 
 /* visco_energy.c */
 /* U of y (the stored energy), with parts (any may be NULL); uses w->h,

@@ -69,3 +69,13 @@ int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t w
         BAD("max_steps (%zu) and max_jump_steps (%zu) must be at least 10", s->max_steps, s->max_jump_steps);
     return ADH_SUCCESS;
 }
+
+adh_visco_rule_settings adh_visco_rule_settings_default(double E)
+{
+    adh_visco_rule_settings r = {
+        .sls = { .E0 = E, .Einf = E, .tau = 1e-3 },
+        .drive = adh_visco_drive_default(),
+        .s = adh_visco_settings_default(),
+    };
+    return r;
+}

@@ -5,11 +5,11 @@
  * from the states, a jump's loss as the stored energy before minus after);
  * within 1 %. With Einf = E0 there is no dissipation, and the work over a
  * cycle is the static curve's hysteresis, the area between its stable
- * branches (adh_static_hysteresis_area). */
+ * branches (adh_cycle_static_hysteresis). */
 #include <math.h>
 #include <stdio.h>
 
-#include "adhere/protocol.h"
+#include "adhere/cycle.h"
 #include "tap.h"
 #include "visco_fixture.h"
 
@@ -44,7 +44,7 @@ int main(void)
     adh_run st;
     adh_static_result sr;
     ok(fix_static(&f, f.m.E, 0.5, &st, &sr) == ADH_SUCCESS, "the static curve at E0");
-    double area = adh_static_hysteresis_area(&st, 1e-13);
+    double area = adh_cycle_static_hysteresis(&st, 1e-13);
     d = fix_drive(1e-6, 1e-6);
     vrun v = fix_visco(&f, 1.0, &d, 1e-4);
     ok(v.rc == ADH_SUCCESS && v.r.cycle.dissipated == 0, "Einf = E0: no dissipation");

@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "adhere/rule_visco.h"
+#include "adhere/runner.h"
 #include "tap.h"
 #include "visco_fixture.h"
 
@@ -73,20 +75,31 @@ int main(void)
     ok(adh_visco_iterate(w) == ADH_EINTR && run.interrupted, "the cancel flag stops it (interrupted)");
     ok(adh_visco_iterate(w) == ADH_EINTR, "and every later call says so");
 
-    /* a callback that stops after 20 rows */
+    /* as a step rule through the drive and the runner: a callback that
+     * stops after 20 rows */
     adh_run_free(&run);
     s.cancel = NULL;
     size_t stop_at = 20;
-    adh_visco_set(w, &f.m, &good, &d, &s, &ps, &run, why, sizeof why);
-    rc = adh_visco_run(w, stop_after, &stop_at);
-    ok(rc == ADH_SUCCESS && run.interrupted && run.nrows == 20, "a callback stops the run after its row 20 (%zu rows)",
-       run.nrows);
+    adh_visco_rule_settings rs = { good, d, s };
+    fixture f3 = fix_open(FIX_N, 1.0);
+    rc = adh_runner_rule(&adh_rule_visco, f3.g, f3.k, &f3.m, &rs, &ps, stop_after, &stop_at, &run);
+    ok(rc == ADH_SUCCESS && run.interrupted && run.nrows == 20,
+       "the rule, through the runner: a callback stops the run after its row 20 (%zu rows)", run.nrows);
+    adh_run_free(&run);
+    rc = adh_runner_rule(&adh_rule_visco, f3.g, f3.k, &f3.m, &rs, &ps, NULL, NULL, &run);
+    ok(rc == ADH_SUCCESS && !isnan(run.jump_in_h0) && run.rows[run.nrows - 1].path == 1 &&
+           run.rows[run.nrows - 1].h0 >= run.start,
+       "the rule runs the whole cycle: jump-in at %.4g nm, the last row unloading at the start", run.jump_in_h0 * 1e9);
+    adh_run_free(&run);
+    adh_runner_rule(&adh_rule_visco, f3.g, f3.k, &f3.m, NULL, &ps, NULL, NULL, &run);
+    ok(run.status == ADH_SUCCESS && run.nrows > 10, "and with no settings (elastic at E, 1 um/s)");
+    fix_close(&f3);
 
     /* the step cap */
     adh_run_free(&run);
     s.max_steps = 30;
     adh_visco_set(w, &f.m, &good, &d, &s, &ps, &run, why, sizeof why);
-    rc = adh_visco_run(w, NULL, NULL);
+    rc = adh_visco_run(w);
     ok(rc == ADH_EMAXITER && run.status == ADH_EMAXITER, "30 steps: ADH_EMAXITER");
 
     /* the grid's edge: 100 nodes (150 nm) and a turn at -3 nm */
@@ -94,7 +107,7 @@ int main(void)
     s = adh_visco_settings_default();
     ps.turns[0] = -3e-9;
     adh_visco_set(w, &f.m, &good, &d, &s, &ps, &run, why, sizeof why);
-    rc = adh_visco_run(w, NULL, NULL);
+    rc = adh_visco_run(w);
     ok(rc == ADH_EGRID && run.rows[run.nrows - 1].a >= 0.9 * f.g->rmax,
        "the contact reaches 0.9 Rmax: ADH_EGRID, its row kept (a = %.3g m)", run.rows[run.nrows - 1].a);
 

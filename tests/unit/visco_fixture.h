@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "adhere/kernel.h"
+#include "adhere/runner.h"
 #include "adhere/static.h"
 #include "adhere/status.h"
 #include "adhere/visco.h"
@@ -52,7 +53,7 @@ static inline int fix_static(const fixture *f, double E, double ds_max, adh_run 
     ss.h0_end = FIX_TURN;
     ss.ds_max = ds_max;
     adh_run_init(run);
-    return adh_static_run(f->g, f->k, &m, &ss, NULL, NULL, run, r);
+    return adh_runner_static_curve(f->g, f->k, &m, &ss, NULL, NULL, run, r);
 }
 
 typedef struct vrun {
@@ -81,7 +82,7 @@ static inline vrun fix_visco_from(const fixture *f, double ratio, const adh_visc
     char why[256] = "";
     v.rc = v.w ? adh_visco_set(v.w, &f->m, &sls, d, &s, &ps, &v.run, why, sizeof why) : ADH_ENOMEM;
     if (v.rc == ADH_SUCCESS)
-        v.rc = adh_visco_run(v.w, NULL, NULL);
+        v.rc = adh_visco_run(v.w);
     if (v.rc != ADH_SUCCESS)
         printf("# run stopped: %s %s %s\n", adh_strerror(v.rc), why, v.w ? adh_visco_why(v.w) : "");
     if (v.w) {
