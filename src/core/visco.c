@@ -4,7 +4,7 @@
  * base is back at the start. One integrator step a call; events (a fold,
  * contact, a force minimum, a turn, a profile position, a segment's end)
  * are IDAS's roots. */
-#include "visco_impl.h"
+#include "visco.h"
 
 #include <idas/idas.h>
 #include <math.h>

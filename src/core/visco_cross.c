@@ -17,7 +17,7 @@
  *     spring:    y = (u, q, tl, h0), r_q = q',  r_t = tl', r_h = the normalisation
  * The Newton matrix, q (and tl) eliminated, is J_u = I - cinf W diag(D)
  * bordered by the parameter's column and the normalisation's row. */
-#include "visco_impl.h"
+#include "visco.h"
 
 #include <math.h>
 #include <string.h>

@@ -2,7 +2,7 @@
  * callbacks, which hand over to the path's system (visco_path.c) or a
  * jump's crossing (visco_cross.c) by mode, the roots and quadratures of
  * the path, and the helpers both systems use. */
-#include "visco_impl.h"
+#include "visco.h"
 
 #include <idas/idas.h>
 #include <math.h>

@@ -1,6 +1,6 @@
 /* Energies of the viscoelastic solver's states (adhere/visco.h), and the
  * instrument's jumps on an elastic curve. */
-#include "visco_impl.h"
+#include "visco.h"
 
 #include <math.h>
 #include <string.h>

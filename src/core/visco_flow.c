@@ -15,7 +15,7 @@
  * other branch, this lands on the first stable state downhill, which on a
  * resolved grid is the same branch and on an unresolved one may be a
  * lattice-pinned state near it. */
-#include "visco_impl.h"
+#include "visco.h"
 
 #include <math.h>
 #include <string.h>

@@ -7,7 +7,7 @@
  *     r_t = sig ((theta |u'|^2 [+ h0'^2] + (vm tl')^2) / z0^2 - 1),  sig = z0 / 2 vm
  *    [r_h = h0 - base(tl) - F / k]
  * with h = h0 + r^2/2R - u, p = p(h), D = p'(h). */
-#include "visco_impl.h"
+#include "visco.h"
 
 #include <math.h>
 #include <string.h>

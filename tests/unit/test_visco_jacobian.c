@@ -2,11 +2,11 @@
  * residual: the Newton matrix's products (one kernel product each) match
  * a difference quotient of the residual, and the preconditioner inverts
  * them, on a state in contact, with and without a spring, dense and H^2.
- * Internal (src/core/visco_impl.h). */
+ * Internal (src/core/visco.h). */
 #include <math.h>
 #include <stdio.h>
 
-#include "core/visco_impl.h"
+#include "core/visco.h"
 #include "adhere/rings.h"
 #include "tap.h"
 #include "visco_fixture.h"

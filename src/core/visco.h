@@ -1,9 +1,13 @@
-/* The viscoelastic solver's insides, shared by its files: visco.c (the
- * protocol, one step a call), visco_dae.c (the system IDAS integrates and
- * its linear algebra), visco_energy.c (energies, checks, the spring's
- * folds on a static curve). Internal to the core. */
-#ifndef ADH_VISCO_IMPL_H
-#define ADH_VISCO_IMPL_H
+/* The viscoelastic solver's insides (the public face is adhere/visco.h),
+ * shared by its files: visco.c (the protocol, one step a call),
+ * visco_dae.c (IDAS, its callbacks, roots, quadratures), visco_path.c (the
+ * path's system and its tangent), visco_cross.c (a jump's crossing),
+ * visco_flow.c (a jump's relaxation, the crossing's fallback),
+ * visco_energy.c (energies, the spring's folds on a static curve),
+ * visco_pre.c (the preconditioner), visco_params.c (inputs). Internal to
+ * the core. */
+#ifndef ADH_CORE_VISCO_H
+#define ADH_CORE_VISCO_H
 
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
