@@ -531,12 +531,12 @@ static int segment_end(adh_visco *w, double t0)
         return finish_row(w, rc);
     }
     if (w->in_contact && !w->extended && rc == ADH_CONTINUE) {
-        /* still in contact where the base started (a spring's pull on the
-         * sphere reaches this far): retraction goes on until the surfaces
-         * are apart (contact_changed ends it a z0 after), at most as far
-         * as the spring can stretch */
+        /* still in contact where the base started (a spring's pull, or a
+         * slow peel, reaches this far): retraction goes on until the
+         * surfaces are apart (contact_changed ends it a z0 after), at most
+         * as far as the model reaches, R/50, and the spring stretches */
         w->extended = 1;
-        w->seg.target = w->b_start + w->stretch + 10 * w->m.z0;
+        w->seg.target = w->b_start + w->reach;
         return finish_row(w, rc);
     }
     add_event(w, ADH_VISCO_END);

