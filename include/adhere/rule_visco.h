@@ -20,5 +20,9 @@ const adh_visco *adh_rule_visco_solver(const adh_drive *d);
  * rule's drive does not keep: every turn's summary (pull-off, jump-out)
  * and the profiles at the protocol's positions of the base. */
 const adh_run *adh_rule_visco_record(const adh_drive *d);
+/* Moves what the record keeps beyond the rows (the turns' summaries and
+ * the profiles) into run, the drive's own record, at the end of a run:
+ * run then holds the whole run as a stepped rule's drive leaves it. */
+void adh_rule_visco_take(adh_drive *d, adh_run *run);
 
 #endif

@@ -225,8 +225,9 @@ adh_visco_rule_settings adh_visco_rule_settings_default(double E);
 
 /* The instrument's jumps on an elastic (static) curve: where the base
  * h0 - F/k turns, i.e. dF/dh0 = k, located on the stable rows of curve
- * (in the order of the rows, linearly interpolated between them). Fills
- * up to max positions (h0, m) into at; returns how many there are. */
-size_t adh_visco_spring_folds(const adh_run *curve, double k, double *at, size_t max);
+ * (in the order of the rows, interpolated between them). Fills up to max
+ * positions (h0, m) into at and the base's there into base (may be NULL);
+ * returns how many there are. */
+size_t adh_visco_spring_folds(const adh_run *curve, double k, double *at, double *base, size_t max);
 
 #endif

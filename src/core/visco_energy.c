@@ -60,7 +60,7 @@ double adh_visco_stored(const adh_visco *w, double *elastic, double *surface, do
 
 /* Where b = h0 - F/k turns along the rows i-1, i, i+1: the parabola
  * through them in the distance along (h0, F/k); h0 there. */
-static double turn_of_base(const adh_obs *r, double k)
+static double turn_of_base(const adh_obs *r, double k, double *base)
 {
     double x[3] = { 0 }, b[3], h[3];
     for (int j = 0; j < 3; j++) {
@@ -73,12 +73,13 @@ static double turn_of_base(const adh_obs *r, double k)
     double c = (d2 - d1) / (x[2] - x[0]), bb = d1 + c * (x[1] - x[0]);
     double t = c != 0 ? x[1] - bb / (2 * c) : x[1];
     t = fmin(x[2], fmax(x[0], t));
+    *base = b[1] + bb * (t - x[1]) + c * (t - x[1]) * (t - x[1]);
     double e1 = (h[1] - h[0]) / (x[1] - x[0]), e2 = (h[2] - h[1]) / (x[2] - x[1]);
     double ch = (e2 - e1) / (x[2] - x[0]), bh = e1 + ch * (x[1] - x[0]);
     return h[1] + bh * (t - x[1]) + ch * (t - x[1]) * (t - x[1]);
 }
 
-size_t adh_visco_spring_folds(const adh_run *curve, double k, double *at, size_t max)
+size_t adh_visco_spring_folds(const adh_run *curve, double k, double *at, double *base, size_t max)
 {
     size_t found = 0;
     for (size_t i = 1; i + 1 < curve->nrows; i++) {
@@ -88,8 +89,12 @@ size_t adh_visco_spring_folds(const adh_run *curve, double k, double *at, size_t
         double b0 = r[0].h0 - r[0].F / k, b1 = r[1].h0 - r[1].F / k, b2 = r[2].h0 - r[2].F / k;
         if (!((b1 - b0) * (b2 - b1) < 0))
             continue;
-        if (found < max)
-            at[found] = turn_of_base(r, k);
+        double b;
+        if (found < max) {
+            at[found] = turn_of_base(r, k, &b);
+            if (base)
+                base[found] = b;
+        }
         found++;
     }
     return found;

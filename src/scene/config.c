@@ -20,6 +20,7 @@ void adh_config_default(adh_config *c)
     s->grid.asked = (adh_grid_spec){ .nodes = 1000, .spacing = NAN, .graded = 0, .fine_band = NAN, .growth = 1.05,
                                      .radius = NAN, .kernel = ADH_KERNEL_PAPER, .storage = ADH_STORAGE_DENSE };
     s->grid.use = s->grid.asked;
+    s->time = adh_time_settings_default();
     c->output.plot = 1;
     c->output.plots = ADH_PLOT_ALL;
     c->output.drive_speed = 1e-6;
@@ -69,7 +70,7 @@ adh_protocol_settings adh_config_protocol_for(const adh_config *c, adh_mode mode
     adh_protocol_settings ps = c->spec.proto;
     /* a profile figure with no positions asked gets a spread of them, so
      * that the plan and the run agree on what is stored */
-    if ((c->output.plots & ADH_PLOT_PROFILE) && ps.nprofiles == 0 && mode == ADH_MODE_RELAX)
+    if ((c->output.plots & ADH_PLOT_PROFILE) && ps.nprofiles == 0 && (mode == ADH_MODE_RELAX || mode == ADH_MODE_TIME))
         ps.nprofiles = adh_config_default_profiles(&c->spec.mat, &ps, ps.profiles, 6);
     return ps;
 }
@@ -81,7 +82,8 @@ adh_protocol_settings adh_config_protocol(const adh_config *c)
 
 adh_grid_use adh_config_grid_use(const adh_run_spec *s)
 {
-    return s->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
+    /* physical time crosses its folds as the static curve does */
+    return s->mode == ADH_MODE_STATIC || s->mode == ADH_MODE_TIME ? ADH_GRID_STATIC : ADH_GRID_RELAX;
 }
 
 /* The choice for the softest run: N and the spacing, and graded rings with
@@ -277,6 +279,9 @@ const char *adh_sweep_name(adh_sweep_kind kind)
     case ADH_SWEEP_E: return "E";
     case ADH_SWEEP_SIGMA: return "sigma";
     case ADH_SWEEP_EPS: return "eps";
+    case ADH_SWEEP_SPEED: return "speed";
+    case ADH_SWEEP_SPEED_OUT: return "speed_out";
+    case ADH_SWEEP_SPRING: return "spring";
     case ADH_SWEEP_NONE: break;
     }
     return "";
@@ -294,6 +299,13 @@ void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run)
     if (c->sweep.kind == ADH_SWEEP_NONE || i >= c->sweep.n)
         return;
     run->mat = sweep_material(&c->spec.mat, &c->sweep, i);
+    double v = c->sweep.values[i];
     if (c->sweep.kind == ADH_SWEEP_EPS)
-        run->relax.eps = c->sweep.values[i];
+        run->relax.eps = v;
+    else if (c->sweep.kind == ADH_SWEEP_SPEED)
+        run->time.speed_in = run->time.speed_out = v;
+    else if (c->sweep.kind == ADH_SWEEP_SPEED_OUT)
+        run->time.speed_out = v;
+    else if (c->sweep.kind == ADH_SWEEP_SPRING)
+        run->time.spring = v;
 }

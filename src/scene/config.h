@@ -24,8 +24,10 @@
 #define PATH_MAX 4096
 #endif
 
-/* RIGID: eq 22 at the drive positions, no kernel and no elastic solve. */
-typedef enum adh_mode { ADH_MODE_RELAX = 0, ADH_MODE_STATIC = 1, ADH_MODE_RIGID = 2 } adh_mode;
+/* RIGID: eq 22 at the drive positions, no kernel and no elastic solve.
+ * TIME: physical time (adhere/visco.h), a standard linear solid or an
+ * elastic sphere driven at a speed through the instrument's spring. */
+typedef enum adh_mode { ADH_MODE_RELAX = 0, ADH_MODE_STATIC = 1, ADH_MODE_RIGID = 2, ADH_MODE_TIME = 3 } adh_mode;
 
 /* A sweep: one parameter takes a list of values, each an independent run
  * (Figure 3's sigma, Figure 7's eps). Every other value is the scene's. */
@@ -33,7 +35,11 @@ typedef enum adh_sweep_kind {
     ADH_SWEEP_NONE = 0,
     ADH_SWEEP_E,       /* combined modulus, Pa */
     ADH_SWEEP_SIGMA,   /* sets E = gamma sqrt(R/z0^3) / sigma (eq 17) */
-    ADH_SWEEP_EPS      /* convergence parameter, m */
+    ADH_SWEEP_EPS,     /* convergence parameter, m */
+    ADH_SWEEP_SPEED,   /* the drive's speed both ways, m/s (mode time) */
+    ADH_SWEEP_SPEED_OUT, /* the retraction's speed, m/s (mode time) */
+    ADH_SWEEP_SPRING   /* the instrument's stiffness, N/m (mode time; mode static:
+                          the snap points of one curve) */
 } adh_sweep_kind;
 
 /* Combined figures of a sweep, drawn from every run at once. */
@@ -81,6 +87,22 @@ typedef struct adh_grid_settings {
     int force;                     /* run a grid coarser than the resolved limit (marked resolved 0) */
 } adh_grid_settings;
 
+/* Physical time (mode time) and the instrument: the material beyond
+ * adh_material (whose E is the relaxed modulus E0) and the drive. */
+typedef struct adh_time_settings {
+    int sls;                       /* material = sls: a standard linear solid (else elastic) */
+    double Einf;                   /* instantaneous modulus, Pa; NAN = 10 E0 */
+    double tau;                    /* relaxation time, s */
+    double speed_in, speed_out;    /* the base's speed approaching and retracting, m/s */
+    double dwell;                  /* held at each turn, s */
+    double spring;                 /* instrument stiffness k, N/m; INFINITY = none */
+    unsigned given;                /* ADH_TIME_* bits: keys set, which a mode that
+                                      cannot use them refuses */
+} adh_time_settings;
+
+enum { ADH_TIME_E0 = 1, ADH_TIME_EINF = 2, ADH_TIME_TAU = 4, ADH_TIME_SPEED = 8, ADH_TIME_DWELL = 16,
+       ADH_TIME_SPRING = 32 };
+
 /* What the core is asked to compute: one run. */
 typedef struct adh_run_spec {
     adh_material mat;
@@ -88,6 +110,7 @@ typedef struct adh_run_spec {
     adh_protocol_settings proto;   /* start, step, turns, unload, dwell, profiles */
     adh_mode mode;
     adh_grid_settings grid;
+    adh_time_settings time;        /* mode time's material and drive; the spring also static's */
 } adh_run_spec;
 
 /* What the drivers write, and where. */
@@ -125,6 +148,7 @@ typedef struct adh_given {
 
 typedef struct adh_config {
     adh_run_spec spec;
+    int mode_given;                /* scene.mode was set: material = sls does not choose it */
     adh_sweep sweep;               /* kind ADH_SWEEP_NONE: a single run */
     adh_output_options output;
     adh_tui_options tui;
@@ -271,6 +295,27 @@ int adh_config_grid(adh_config *c, char *why, size_t whylen, unsigned *fix);
  * HODLR preconditioner an H^2 kernel takes moves its Newton iterations,
  * points and folds (docs/performance.md). */
 adh_kernel_storage adh_config_storage_for(const adh_run_spec *s, adh_mode mode);
+
+/* ---- physical time (timespec.c) ----------------------------------------- */
+
+struct adh_visco_rule_settings;
+
+/* Elastic, Einf = 10 E0 when made a solid, tau = 1 ms, 1 um/s both ways,
+ * no dwell, no spring. */
+adh_time_settings adh_time_settings_default(void);
+/* The instantaneous modulus of run s: Einf, or 10 E0 when automatic; E0
+ * (the material's E) for an elastic material. */
+double adh_config_einf(const adh_run_spec *s);
+/* The viscoelastic step rule's settings of run s (adhere/rule_visco.h):
+ * the solid (or the elastic material at E), the drive, the integrator
+ * polling s's cancel flag. */
+void adh_config_visco(const adh_run_spec *s, struct adh_visco_rule_settings *out);
+/* 0, or -1 with a sentence naming the keys, when run s's material, drive
+ * and mode do not fit: a solid outside mode time, a solid's key or the
+ * drive's for an elastic material or a mode without physical time, the
+ * spring in relaxation or for rigid spheres, an iteration dwell in
+ * physical time, Einf below E0, a sweep the mode cannot run. */
+int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why, size_t whylen);
 
 /* ---- sweeps ------------------------------------------------------------- */
 

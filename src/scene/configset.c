@@ -14,6 +14,7 @@
 #include "adhere/grid.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "adhere/visco.h"
 
 typedef struct key_def key_def;
 typedef int (*key_setter)(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen);
@@ -182,7 +183,9 @@ typedef struct word {
     int value;
 } word;
 
-static const word modes[] = { { "relax", ADH_MODE_RELAX }, { "static", ADH_MODE_STATIC }, { "rigid", ADH_MODE_RIGID }, { NULL, 0 } };
+static const word modes[] = { { "relax", ADH_MODE_RELAX }, { "static", ADH_MODE_STATIC }, { "rigid", ADH_MODE_RIGID },
+                              { "time", ADH_MODE_TIME }, { NULL, 0 } };
+static const word materials[] = { { "elastic", 0 }, { "sls", 1 }, { NULL, 0 } };
 static const word grids[] = { { "uniform", 0 }, { "graded", 1 }, { NULL, 0 } };
 static const word sweep_plots[] = { { "jump", ADH_SWEEP_PLOT_JUMP }, { "force", ADH_SWEEP_PLOT_FORCE },
                                     { "none", ADH_SWEEP_PLOT_NONE }, { NULL, 0 } };
@@ -240,6 +243,7 @@ static int set_mode(adh_config *c, const key_def *k, const char *text, char *why
     if (parse_word(modes, "mode", text, &v, why, whylen) != 0)
         return -1;
     c->spec.mode = (adh_mode)v;
+    c->mode_given = 1;   /* kept whatever the material: adh_config_time_check refuses a mismatch */
     return 0;
 }
 
@@ -406,7 +410,10 @@ static int set_sweep(adh_config *c, const key_def *k, const char *text, char *wh
 {
     adh_sweep *sw = &c->sweep;
     const char *name = name_of(k);
-    adh_sweep_kind kind = !strcmp(name, "E") ? ADH_SWEEP_E : !strcmp(name, "sigma") ? ADH_SWEEP_SIGMA : ADH_SWEEP_EPS;
+    adh_sweep_kind kind = ADH_SWEEP_NONE;
+    for (int i = ADH_SWEEP_E; i <= ADH_SWEEP_SPRING; i++)
+        if (!strcmp(name, adh_sweep_name((adh_sweep_kind)i)))
+            kind = (adh_sweep_kind)i;
     if (strcasecmp(text, "none") == 0) {   /* not swept: the sweep of this parameter goes */
         if (sw->kind == kind) {
             sw->kind = ADH_SWEEP_NONE;
@@ -452,6 +459,82 @@ static int set_size(adh_config *c, const key_def *k, const char *text, char *why
     }
     c->tui.cols = cols;
     c->tui.rows = rows;
+    return 0;
+}
+
+/* ---- physical time (mode time) ------------------------------------------ */
+
+/* The material: a standard linear solid runs in physical time, unless the
+ * mode was given (adh_config_time_check then says whether they fit). */
+static int set_material_kind(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    int v;
+    if (parse_word(materials, "material", text, &v, why, whylen) != 0)
+        return -1;
+    c->spec.time.sls = v;
+    if (!c->mode_given)
+        c->spec.mode = v ? ADH_MODE_TIME : c->spec.mode == ADH_MODE_TIME ? ADH_MODE_RELAX : c->spec.mode;
+    return 0;
+}
+
+/* One value of the solid or the drive, checked by the core's own limits
+ * (adh_sls_validate, adh_visco_drive_validate) with the others at values
+ * they allow; how it fits the others is adh_config_time_check's. */
+static int time_value_ok(const char *name, double v, char *why, size_t whylen)
+{
+    adh_sls m = { 1e9, 1e9, 1 };
+    adh_visco_drive d = adh_visco_drive_default();
+    if (!strcmp(name, "E0"))
+        m.E0 = m.Einf = v;
+    else if (!strcmp(name, "Einf"))
+        m.E0 = m.Einf = v;
+    else if (!strcmp(name, "tau"))
+        m.tau = v;
+    else if (!strcmp(name, "dwell_time"))
+        d.dwell = v;
+    else if (!strcmp(name, "spring"))
+        d.spring = v;
+    else
+        d.speed_in = d.speed_out = v;
+    return adh_sls_validate(&m, why, whylen) == ADH_SUCCESS && adh_visco_drive_validate(&d, why, whylen) == ADH_SUCCESS;
+}
+
+static unsigned time_bit(const char *name)
+{
+    return !strcmp(name, "E0") ? ADH_TIME_E0 : !strcmp(name, "Einf") ? ADH_TIME_EINF : !strcmp(name, "tau") ? ADH_TIME_TAU
+         : !strcmp(name, "dwell_time") ? ADH_TIME_DWELL : !strcmp(name, "spring") ? ADH_TIME_SPRING : ADH_TIME_SPEED;
+}
+
+/* E0 (the material's E under its solid's name), Einf (or auto), tau,
+ * dwell_time and spring (or none). */
+static int set_time_quantity(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    const char *name = name_of(k);
+    double v;
+    if (!strcmp(name, "Einf") && strcasecmp(text, "auto") == 0)
+        v = NAN;
+    else if (!strcmp(name, "spring") && strcasecmp(text, "none") == 0)
+        v = INFINITY;
+    else if (adh_parse_quantity(text, k->pub.q, &v, why, whylen) != 0 || !time_value_ok(name, v, why, whylen))
+        return -1;
+    *dbl(c, k) = v;
+    c->spec.time.given |= time_bit(name);
+    return 0;
+}
+
+/* speed = V (both ways) or Vin, Vout. */
+static int set_speed(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    double v[2];
+    size_t n;
+    if (parse_list(text, ADH_Q_SPEED, 0, v, 2, &n, why, whylen) != 0)
+        return -1;
+    for (size_t i = 0; i < n; i++)
+        if (!time_value_ok("speed", v[i], why, whylen))
+            return -1;
+    c->spec.time.speed_in = v[0];
+    c->spec.time.speed_out = v[n - 1];
+    c->spec.time.given |= ADH_TIME_SPEED;
     return 0;
 }
 
@@ -598,6 +681,28 @@ static void get_size(const adh_config *c, const key_def *k, char *buf, size_t le
     snprintf(buf, len, "%dx%d", c->tui.cols, c->tui.rows);
 }
 
+
+static void get_material_kind(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", word_name(materials, c->spec.time.sls));
+}
+
+static void get_time_quantity(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    double v = *(const double *)field(c, k);
+    if (isinf(v))
+        snprintf(buf, len, "none");
+    else
+        get_quantity(c, k, buf, len);
+}
+
+static void get_speed(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    const adh_time_settings *t = &c->spec.time;
+    double v[2] = { t->speed_in, t->speed_out };
+    get_list(v, t->speed_in == t->speed_out ? 1 : 2, buf, len);
+}
+
 /* ---- the table ------------------------------------------------------------ */
 
 enum { S = ADH_KEY_SCENE, R = ADH_KEY_RUN };
@@ -611,6 +716,10 @@ static const key_def keys[] = {
     { { "material.A", S | R, ADH_Q_ENERGY, NULL }, set_quantity, F(spec.mat.A), get_quantity },
     { { "material.z0", S | R, ADH_Q_LENGTH, "nm" }, set_quantity, F(spec.mat.z0), get_quantity },
     { { "material.R", S | R, ADH_Q_LENGTH, "mm um" }, set_quantity, F(spec.mat.R), get_quantity },
+    { { "material.material", S | R, ADH_Q_NONE, NULL }, set_material_kind, 0, get_material_kind },
+    { { "material.E0", S | R, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_time_quantity, F(spec.mat.E), get_quantity },
+    { { "material.Einf", S | R, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_time_quantity, F(spec.time.Einf), get_quantity },
+    { { "material.tau", S | R, ADH_Q_TIME, NULL }, set_time_quantity, F(spec.time.tau), get_quantity },
     { { "grid.nodes", S | R, ADH_Q_NONE, NULL }, set_nodes, 0, get_nodes },
     { { "grid.spacing", S | R, ADH_Q_LENGTH, "nm" }, set_quantity_auto, F(spec.grid.asked.spacing), get_quantity },
     { { "grid.kernel", S | R, ADH_Q_NONE, NULL }, set_kernel, 0, get_kernel },
@@ -629,6 +738,9 @@ static const key_def keys[] = {
     { { "protocol.turns", S | R, ADH_Q_LENGTH, "nm" }, set_turns, 0, get_turns },
     { { "protocol.dwell", S | R, ADH_Q_NONE, NULL }, set_dwell, 0, get_dwell },
     { { "protocol.unload", S | R, ADH_Q_NONE, NULL }, set_bool, F(spec.proto.unload), get_bool },
+    { { "protocol.speed", S | R, ADH_Q_SPEED, NULL }, set_speed, 0, get_speed },
+    { { "protocol.dwell_time", S | R, ADH_Q_TIME, NULL }, set_time_quantity, F(spec.time.dwell), get_quantity },
+    { { "protocol.spring", S | R, ADH_Q_STIFFNESS, NULL }, set_time_quantity, F(spec.time.spring), get_time_quantity },
     { { "output.plots", S, ADH_Q_NONE, NULL }, set_plots, 0, get_plots },
     { { "output.profiles", S | R, ADH_Q_LENGTH, "nm" }, set_profiles, 0, get_profiles },
     { { "output.drive_speed", S, ADH_Q_SPEED, "um/s" }, set_quantity, F(output.drive_speed), get_quantity },
@@ -642,6 +754,9 @@ static const key_def keys[] = {
     { { "sweep.E", S, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_sweep, 0, get_sweep },
     { { "sweep.sigma", S, ADH_Q_NONE, NULL }, set_sweep, 0, get_sweep },
     { { "sweep.eps", S, ADH_Q_LENGTH, "pm" }, set_sweep, 0, get_sweep },
+    { { "sweep.speed", S, ADH_Q_SPEED, NULL }, set_sweep, 0, get_sweep },
+    { { "sweep.speed_out", S, ADH_Q_SPEED, NULL }, set_sweep, 0, get_sweep },
+    { { "sweep.spring", S, ADH_Q_STIFFNESS, NULL }, set_sweep, 0, get_sweep },
     { { "sweep.jobs", S, ADH_Q_NONE, NULL }, set_jobs, 0, get_jobs },
     { { "sweep.plot", S, ADH_Q_NONE, NULL }, set_sweep_plot, 0, get_sweep_plot },
     { { "tui.replay", 0, ADH_Q_NONE, NULL }, set_path, F(tui.replay), get_path },

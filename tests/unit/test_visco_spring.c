@@ -34,7 +34,7 @@ int main(void)
     double k[3] = { 40, 10, 1 }, snap_in[3];
     for (int i = 0; i < 3; i++) {
         double at[16];
-        size_t nf = adh_visco_spring_folds(&st, k[i], at, 16);
+        size_t nf = adh_visco_spring_folds(&st, k[i], at, NULL, 16);
         adh_visco_drive d = fix_drive(1e-6, 1e-6);
         d.spring = k[i];
         vrun v = fix_visco(&f, 1.0, &d, 1e-4);
