@@ -211,6 +211,13 @@ size_t adh_visco_events(const adh_visco *w, const adh_visco_event **ev);
 /* The stored energy U of the current state, J, and its parts. */
 double adh_visco_stored(const adh_visco *w, double *elastic, double *surface, double *spring);
 
+/* The automatic start for material m (its E the relaxed modulus) and
+ * step: the elastic one (force negligible, deformation below 1 % of z0),
+ * and under a spring k (INFINITY: none) where rigid spheres' force rises
+ * at most a quarter of k per metre (F' = A R / 3 h^3), well outside the
+ * snap-in. On the step's lattice. */
+double adh_visco_auto_start(const adh_material *m, double spring, double step);
+
 /* The settings of the viscoelastic step rule (adhere/rule_visco.h): the
  * material beyond adh_material (whose E is E0), the instrument and the
  * integrator. */

@@ -168,7 +168,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     adh_plan plan;
     adh_plan_make(cfg, &plan);
     batch_ctx ctx = { spec, out ? NULL : stdout, !cfg->output.quiet && isatty(2),
-                      plan.static_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
+                      plan.static_mode || plan.time_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
     int timed = spec->mode == ADH_MODE_TIME;
     if (ctx.stream) {
         fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);

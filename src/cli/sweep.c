@@ -25,6 +25,7 @@
 #include "adhere/clock.h"
 #include "cli/static.h"
 #include "cli/tables.h"
+#include "cli/timerun.h"
 #include "plot/setup.h"
 #include "plot/plot.h"
 #include "scene/plan.h"
@@ -40,6 +41,8 @@ typedef struct sweep_job {
     const adh_kernel *kernel;  /* shared, read-only: apply takes a scratch per call */
     adh_run *runs;
     adh_static_result *sres;   /* mode = static: each run's folds, jumps, pull-offs */
+    cli_time_out *tout;        /* mode = time: each run's summary and events */
+    int share;                 /* every run is run 0's curve (a spring swept over one static curve) */
     int *status;               /* adh status of each run */
     adh_outdir **out;          /* each run's DIR/run-K, or NULL: nothing but sweep.tsv on stdout */
     int *tables;               /* exit status of writing run i's tables; -1 not yet */
@@ -53,7 +56,7 @@ typedef struct sweep_job {
 } sweep_job;
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, adh_outdir *out, cli_sweep_said *said);
+                        const cli_time_out *tout, int rc, adh_outdir *out, cli_sweep_said *said);
 
 /* "67 %, about 5 min left", weighing each run by its expected iterations:
  * a run at a fifth of the eps takes five times as long, and the last runs
@@ -89,15 +92,19 @@ static void *worker(void *arg)
         pthread_mutex_unlock(&job->lock);
         /* each static run allocates its own solver (a dense copy of the
          * shared kernel): nothing of it is shared between threads */
-        job->status[i] = rc.mode == ADH_MODE_RIGID
+        job->status[i] = job->share && i > 0   /* the same curve: run 0's, done before (one job) */
+                       ? cli_time_share(run, &job->runs[0], &job->sres[i], &job->sres[0], job->status[0])
+                       : rc.mode == ADH_MODE_RIGID
                        ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &rc.mat, NULL, &rc.proto, cli_interrupt_step, NULL, run)
+                       : rc.mode == ADH_MODE_TIME
+                       ? cli_time_run(&rc, job->grid, job->kernel, cli_interrupt_step, NULL, run, &job->tout[i])
                        : rc.mode == ADH_MODE_STATIC
                        ? cli_static_run(&rc, job->grid, job->kernel, cli_interrupt_step, NULL, run, &job->sres[i])
                        : adh_runner_rule(&adh_rule_relax, job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto,
                                          cli_interrupt_step, NULL, run);
         /* tables as soon as a run ends: a long sweep killed later keeps them */
         if (job->out)
-            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], job->status[i], job->out[i], &job->said[i]);
+            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], &job->tout[i], job->status[i], job->out[i], &job->said[i]);
         pthread_mutex_lock(&job->lock);
         job->done++;
         job->eta[i].state = 2;
@@ -130,13 +137,31 @@ static size_t finished(const adh_config *cfg, const adh_run *runs)
     return k;
 }
 
+/* The run's summary.tsv's word (a run whose files were not all written,
+ * or whose figures a signal stopped, is no success there); its own
+ * verdict without one. */
+static const char *run_word(const adh_config *cfg, size_t i, const adh_run *runs, const int *status,
+                            const cli_sweep_said *said)
+{
+    adh_run_spec rc;
+    adh_config_sweep_run(cfg, i, &rc);
+    const adh_run *r = &runs[i];
+    const char *word = status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r);
+    if (said && said[i].word[0])
+        word = said[i].word;
+    else if (!strcmp(word, "success") && said && said[i].lost[0])
+        word = "output incomplete";
+    return word;
+}
+
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                    const int *status, double static_hysteresis, int static_resolved,
+                    const cli_time_out *tout, const int *status, double static_hysteresis, int static_resolved,
                     const cli_sweep_said *said)
 {
     const char *name = adh_sweep_name(cfg->sweep.kind);
     int stat = cfg->spec.mode == ADH_MODE_STATIC && sres;
-    fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (run-K/ holds its tables), SI units (m, N, Pa, s)\n");
+    fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (run-K/ holds its tables), SI units (m, N, Pa, s%s)\n",
+            cfg->spec.mode == ADH_MODE_TIME || cfg->sweep.kind == ADH_SWEEP_SPRING ? ", J, N/m" : "");
     if (cfg->scene[0])
         cli_tables_comment(f, "scene", cfg->scene);
     if (finished(cfg, runs) < cfg->sweep.n)
@@ -145,6 +170,13 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
     else if (cli_interrupt_signal())
         fprintf(f, "# PARTIAL: interrupted by signal %d while the figures were drawn: every run finished, its "
                 "tables whole; those whose figures were not drawn say interrupted\n", cli_interrupt_signal());
+    if (cli_time_sweep_head(f, cfg)) {   /* physical time, or a spring's snap points */
+        for (size_t i = 0; i < cfg->sweep.n; i++) {
+            cli_time_sweep_row(f, cfg, i, runs, tout);
+            fprintf(f, "\t%s\n", run_word(cfg, i, runs, status, said));
+        }
+        return 0;
+    }
     if (stat)
         fprintf(f, "# mode static: each run is the equilibrium curve; jump_in_h0 its first fold, h_before the central gap at the last stable point before it;\n"
                    "# max_load the force at the curve's end (the turn); pulloff_F the load-controlled pull-off (minimum force), pulloff_F_disp the force at the jump-out fold;\n"
@@ -183,15 +215,7 @@ int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const a
                 cli_jumps_jumped(r, rc.proto.step), hyst);
         if (stat)
             fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        /* the run's summary.tsv's word (a run whose files were not all
-         * written, or whose figures a signal stopped, is no success there);
-         * its own verdict without one */
-        const char *word = status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r);
-        if (said && said[i].word[0])
-            word = said[i].word;
-        else if (!strcmp(word, "success") && said && said[i].lost[0])
-            word = "output incomplete";
-        fprintf(f, "%s\n", word);
+        fprintf(f, "%s\n", run_word(cfg, i, runs, status, said));
     }
     return 0;
 }
@@ -200,6 +224,7 @@ typedef struct sweep_tables {
     const adh_config *cfg;
     const adh_run *runs;
     const adh_static_result *sres;
+    const cli_time_out *tout;
     const int *status;
     double static_hysteresis;
     int static_resolved;
@@ -209,7 +234,7 @@ typedef struct sweep_tables {
 static int write_sweep(FILE *f, const void *ctx)
 {
     const sweep_tables *t = ctx;
-    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->status, t->static_hysteresis, t->static_resolved, t->said);
+    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->tout, t->status, t->static_hysteresis, t->static_resolved, t->said);
 }
 
 /* An eps sweep drawn as Figure 7: its runs' hysteresis against eps needs
@@ -245,7 +270,8 @@ static double sweep_static_hysteresis(const adh_config *cfg, const adh_grid *g, 
  * failed here or before, kept in said, and the list in unwritten); word,
  * when not NULL, is its status, which said keeps. Returns an exit status. */
 static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                      int rc, adh_outdir *dir, int data, const char *unwritten, const char *word, cli_sweep_said *said)
+                      const cli_time_out *tout, int rc, adh_outdir *dir, int data, const char *unwritten,
+                      const char *word, cli_sweep_said *said)
 {
     char *lost = said->lost;
     char why[1024], note[256] = "";
@@ -259,16 +285,23 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(rc));
     /* a static run's summary.tsv has the batch's static keys */
     char keynames[CLI_TABLES_STATIC_KEYS][32];
-    cli_tables_extra extra[CLI_TABLES_STATIC_KEYS];
+    cli_tables_extra extra[CLI_TABLES_STATIC_KEYS + CLI_TIME_KEYS];
     size_t nextra = rspec.mode == ADH_MODE_STATIC && run->nrows
                   ? cli_tables_static_keys(sres, cli_tables_static_hysteresis(run, &rspec.mat), "", keynames, extra) : 0;
+    double snap[CLI_TIME_SNAP_KEYS];
+    int timed = rspec.mode == ADH_MODE_TIME;
+    if (rspec.mode == ADH_MODE_STATIC && run->nrows && isfinite(rspec.time.spring))
+        nextra += cli_time_snap_keys(run, rspec.time.spring, snap, extra + nextra);
+    if (timed)
+        nextra += cli_time_keys(tout, extra + nextra);
     cli_tables t = { cfg, &rspec, run, extra, nextra, partial, note, lost, word };
     int status = CLI_EXIT_OK;
     if (data) {
-        const char *names[2] = { "force.tsv", run->nturns ? "turns.tsv" : NULL };
-        adh_outdir_writer writers[2] = { cli_tables_force, cli_tables_turns };
-        for (int k = 0; k < 2; k++)
-            if (names[k] && adh_outdir_write(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
+        const char *names[3] = { "force.tsv", run->nturns ? "turns.tsv" : NULL, timed ? "events.tsv" : NULL };
+        adh_outdir_writer writers[3] = { cli_tables_force, cli_tables_turns, cli_time_events };
+        const void *ctx[3] = { &t, &t, tout };
+        for (int k = 0; k < 3; k++)
+            if (names[k] && adh_outdir_write(dir, names[k], writers[k], ctx[k], why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = CLI_EXIT_USAGE;
                 cli_tables_names_add(lost, sizeof said->lost, names[k]);
@@ -294,16 +327,17 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const
 }
 
 static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        int rc, adh_outdir *out, cli_sweep_said *said)
+                        const cli_time_out *tout, int rc, adh_outdir *out, cli_sweep_said *said)
 {
-    return run_tables(cfg, i, run, sres, rc, out, 1, NULL, NULL, said);
+    return run_tables(cfg, i, run, sres, tout, rc, out, 1, NULL, NULL, said);
 }
 
 /* Figures of run i in out/run-K (its tables are there); when one is not
  * written, the run's summary.tsv is written again to say so. An exit
  * status. */
 static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const adh_run *run,
-                       const adh_static_result *sres, int rc, adh_outdir *dir, cli_sweep_said *said)
+                       const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir,
+                       cli_sweep_said *said)
 {
     char msg[1024] = "", missing[256] = "";
     adh_run_spec rspec;
@@ -327,7 +361,7 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
         status = status ? status : CLI_EXIT_PLOT;
     }
     if (*missing) {
-        int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL,
+        int trc = run_tables(cfg, i, run, sres, tout, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL,
                              said);
         if (trc == CLI_EXIT_USAGE)
             status = trc;
@@ -338,7 +372,7 @@ static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const
 /* Run i's figures not drawn (a signal came first): its summary.tsv names
  * those asked for and says interrupted. An exit status. */
 static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                         int rc, adh_outdir *dir, cli_sweep_said *said)
+                         const cli_time_out *tout, int rc, adh_outdir *dir, cli_sweep_said *said)
 {
     static const struct { unsigned bit; const char *name; } figs[] = {
         { ADH_PLOT_FORCE, "force.png" }, { ADH_PLOT_PROFILE, "profile.png" }, { ADH_PLOT_CONTACT, "contact.png" },
@@ -350,7 +384,7 @@ static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, co
             cli_tables_names_add(missing, sizeof missing, figs[k].name);
     if (!*missing)
         return CLI_EXIT_OK;
-    int trc = run_tables(cfg, i, run, sres, rc, dir, 0, missing, "interrupted", said);
+    int trc = run_tables(cfg, i, run, sres, tout, rc, dir, 0, missing, "interrupted", said);
     return trc == CLI_EXIT_USAGE ? trc : cli_interrupt_exit();
 }
 
@@ -432,11 +466,15 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     }
     adh_run *runs = calloc(n, sizeof *runs);
     adh_static_result *sres = calloc(n, sizeof *sres);
+    cli_time_out *tout = calloc(n, sizeof *tout);
     int *status = calloc(n, sizeof *status);
     int *tables = calloc(n, sizeof *tables);
     cli_sweep_said *said = calloc(n, sizeof *said);
     adh_outdir **subs = calloc(n, sizeof *subs);
-    int jobs = adh_plan_jobs(cfg);
+    /* a spring swept over one static curve: the curve once, its snap
+     * points for each k */
+    int share = cfg->spec.mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_SPRING;
+    int jobs = share ? 1 : adh_plan_jobs(cfg);
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
     /* each run's expected cost, for the time left */
     static adh_plan_progress eta[ADH_MAX_SWEEP];
@@ -445,7 +483,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         adh_config_sweep_run(cfg, i, &rs);
         eta[i] = (adh_plan_progress){ .cost = rs.mode == ADH_MODE_RELAX ? adh_plan_iterations(&rs) : 1.0 };
     }
-    int failed = !runs || !sres || !status || !tables || !said || !subs || !threads ? CLI_EXIT_SOLVER : 0;
+    int failed = !runs || !sres || !tout || !status || !tables || !said || !subs || !threads ? CLI_EXIT_SOLVER : 0;
     if (failed)
         snprintf(why, sizeof why, "out of memory for %zu runs", n);
     else if (od && open_runs(od, n, subs, why, sizeof why) != 0)
@@ -453,7 +491,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     if (failed) {
         cli_interrupt_release();
         fprintf(stderr, "adhere: %s\n", why);
-        free(runs), free(sres), free(status), free(tables), free(subs), free(threads), free(said);
+        free(runs), free(sres), free(tout), free(status), free(tables), free(subs), free(threads), free(said);
         adh_kernel_free(k), adh_grid_free(g);
         return failed;
     }
@@ -468,7 +506,7 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     cli_interrupt_catch();
     adh_ready_phase("sweep");
 
-    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .status = status,
+    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .tout = tout, .share = share, .status = status,
                       .out = od ? subs : NULL, .tables = tables, .said = said, .jobs = jobs, .eta = eta };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();
@@ -498,20 +536,20 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
         else if (runs[i].unconverged && !cfg->output.allow_unconverged)
             exit_status = worse(exit_status, CLI_EXIT_SOLVER);   /* sweep.tsv says unconverged */
     }
-    sweep_tables st = { cfg, runs, sres, status, static_hyst, static_resolved, said };
+    sweep_tables st = { cfg, runs, sres, tout, status, static_hyst, static_resolved, said };
     if (!out) {
-        cli_sweep_table(stdout, cfg, runs, sres, status, static_hyst, static_resolved, NULL);
+        cli_sweep_table(stdout, cfg, runs, sres, tout, status, static_hyst, static_resolved, NULL);
     } else {
         for (size_t i = 0; i < n; i++) {
             if (tables[i] < 0) /* never started: its tables say interrupted */
-                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], status[i], subs[i], &said[i]);
+                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], &tout[i], status[i], subs[i], &said[i]);
             exit_status = worse(exit_status, tables[i]);
             int plot = tables[i] == CLI_EXIT_OK ||
                        (tables[i] == CLI_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS);
             if (plot && cli_interrupt_signal())
-                exit_status = worse(exit_status, plots_skipped(cfg, i, &runs[i], &sres[i], status[i], subs[i], &said[i]));
+                exit_status = worse(exit_status, plots_skipped(cfg, i, &runs[i], &sres[i], &tout[i], status[i], subs[i], &said[i]));
             else if (plot)
-                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], status[i], subs[i], &said[i]));
+                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], &tout[i], status[i], subs[i], &said[i]));
         }
         if (cli_interrupt_signal())   /* while the tables or plots were written */
             exit_status = worse(exit_status, cli_interrupt_exit());
@@ -520,7 +558,10 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
             exit_status = worse(exit_status, CLI_EXIT_USAGE);
         } else if (cfg->output.plot && exit_status == CLI_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
             char msg[1024] = "";
-            if (cli_figures_sweep(cfg, runs, n, static_hyst, od, msg, sizeof msg) != 0) {
+            int frc = cfg->sweep.plot == ADH_SWEEP_PLOT_SPEED || cfg->sweep.plot == ADH_SWEEP_PLOT_SNAP
+                    ? cli_time_sweep_figure(cfg, g, k, runs, tout, n, od, msg, sizeof msg)
+                    : cli_figures_sweep(cfg, runs, n, static_hyst, od, msg, sizeof msg);
+            if (frc != 0) {
                 fprintf(stderr, "adhere: sweep plot not written: %s\n", msg);
                 exit_status = worse(exit_status, CLI_EXIT_PLOT);
             }
@@ -542,9 +583,10 @@ int cli_sweep_main(const cli_options *cli, adh_outdir *od)
     }
     for (size_t i = 0; i < n; i++) {
         adh_run_free(&runs[i]);
+        cli_time_out_free(&tout[i]);
         adh_outdir_close(subs[i]);
     }
-    free(runs), free(sres), free(status), free(tables), free(subs), free(threads), free(said);
+    free(runs), free(sres), free(tout), free(status), free(tables), free(subs), free(threads), free(said);
     adh_kernel_free(k);
     adh_grid_free(g);
     return exit_status;

@@ -10,6 +10,7 @@
 #include "adhere/static.h"
 #include "adhere/protocol.h"
 #include "cli/options.h"
+#include "cli/timerun.h"
 #include "plot/outdir.h"
 
 /* Runs cli->cfg's sweep into out (opened by the caller: run-K/ are made
@@ -25,13 +26,14 @@ typedef struct cli_sweep_said {
 } cli_sweep_said;
 
 /* sweep.tsv: one row per run. runs[i] is run i of cfg's sweep; in mode =
- * static sres[i] is its curve's summary (pulloff_F_disp and folds columns).
+ * static sres[i] is its curve's summary (pulloff_F_disp and folds columns);
+ * in mode = time tout[i] its summary (cli/timerun.h's table).
  * static_hysteresis, unless NAN, is the static curve's loop area (an eps
  * sweep's Figure 7), said in a comment line (and whether its grid
  * resolved it). said[i] (said may be NULL: no run directories) is what its
  * summary.tsv said, whose status word sweep.tsv repeats. */
 int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                    const int *status, double static_hysteresis, int static_resolved,
+                    const cli_time_out *tout, const int *status, double static_hysteresis, int static_resolved,
                     const cli_sweep_said *said);
 
 #endif

@@ -129,3 +129,81 @@ int cli_time_events(FILE *f, const void *vo)
     }
     return 0;
 }
+
+int cli_time_share(adh_run *to, const adh_run *from, adh_static_result *sto, const adh_static_result *sfrom,
+                   int status)
+{
+    for (size_t i = 0; i < from->nrows; i++)
+        if (adh_run_push_row(to, &from->rows[i]) != ADH_SUCCESS)
+            return ADH_ENOMEM;
+    memcpy(to->turns, from->turns, sizeof to->turns);
+    to->nturns = from->nturns;
+    to->jump_in_h0 = from->jump_in_h0;
+    to->start = from->start;
+    to->iterations = from->iterations;
+    to->seconds = from->seconds;
+    to->interrupted = from->interrupted;
+    to->status = from->status;
+    *sto = *sfrom;
+    return status;
+}
+
+static void cell(FILE *f, double v)
+{
+    fprintf(f, "\t%.17g", v);
+}
+
+/* A row of the time sweep's table. */
+static void time_row(FILE *f, const cli_time_out *o, const adh_run *r)
+{
+    const adh_visco_result *x = &o->res;
+    const adh_turn_result *mt = adh_run_main_turn(r);
+    double v[] = { o->vs.sls.E0, o->vs.sls.Einf, o->vs.sls.tau, o->vs.drive.speed_in, o->vs.drive.speed_out,
+                   o->vs.drive.spring, x->jump_in_h0, x->jump_in_base, mt ? mt->max_load : NAN, x->pulloff_F,
+                   x->pulloff_h0, x->pulloff_base, x->jump_out_h0, x->jump_out_base, x->hysteresis,
+                   x->cycle.dissipated, x->time };
+    for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+        cell(f, v[i]);
+    fprintf(f, "\t%zu\t%.6g", x->steps, r->seconds);
+}
+
+int cli_time_sweep_head(FILE *f, const adh_config *cfg)
+{
+    int timed = cfg->spec.mode == ADH_MODE_TIME;
+    int snap = cfg->spec.mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_SPRING;
+    if (!timed && !snap)
+        return 0;
+    if (timed)
+        fprintf(f, "# physical time: hysteresis the base's work over the deepest turn's cycle, dissipated its "
+                   "viscous part; pull-off the lowest force on that unloading; *_base the instrument's base there; "
+                   "time the run's physical time, time_steps its integrator steps\n");
+    else
+        fprintf(f, "# one static curve serves every k: snap_in where the base h0 - F/k first turns on approach "
+                   "(dF/dh0 = k), snap_out where it turns last, on retraction\n");
+    fprintf(f, "# swept: the parameter the sweep varies (%s), value: its value in this run\n",
+            adh_sweep_name(cfg->sweep.kind));
+    if (timed)
+        fputs("run\tswept\tvalue\tE0\tEinf\ttau\tspeed_in\tspeed_out\tspring\tjump_in_h0\tjump_in_base\tmax_load\t"
+              "pulloff_F\tpulloff_h0\tpulloff_base\tjump_out_h0\tjump_out_base\thysteresis\tdissipated\ttime\t"
+              "time_steps\tseconds\tstatus\n", f);
+    else
+        fputs("run\tswept\tvalue\tspring\tsnap_in_h0\tsnap_in_base\tsnap_out_h0\tsnap_out_base\tstatus\n", f);
+    return 1;
+}
+
+void cli_time_sweep_row(FILE *f, const adh_config *cfg, size_t i, const adh_run *runs, const cli_time_out *tout)
+{
+    const adh_run *r = &runs[i];
+    fprintf(f, "%zu\t%s\t%.17g", i + 1, adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i]);
+    if (cfg->spec.mode == ADH_MODE_TIME) {
+        time_row(f, &tout[i], r);
+        return;
+    }
+    adh_run_spec rc;
+    adh_config_sweep_run(cfg, i, &rc);
+    double store[CLI_TIME_SNAP_KEYS];
+    cli_tables_extra x[CLI_TIME_SNAP_KEYS];
+    cli_time_snap_keys(r, rc.time.spring, store, x);
+    for (size_t k = 0; k < CLI_TIME_SNAP_KEYS; k++)
+        cell(f, r->nrows ? store[k] : NAN);
+}

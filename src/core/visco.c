@@ -245,18 +245,18 @@ static int cmp_desc(const void *a, const void *b)
     return (x < y) - (x > y);
 }
 
-/* Where the automatic start is: the elastic one at E0 (force negligible,
- * deformation below 1 % of z0), and under a spring where the rigid
- * spheres' force rises at most a quarter of k per metre (F' = A R /
- * 3 h^3), well outside the snap-in. On the protocol's step lattice. */
 static double auto_start(const adh_visco *w)
 {
     adh_material m0 = w->m;
     m0.E = w->v.E0;
-    double step = w->ps.step > 0 ? w->ps.step : 0.05e-9;
-    double h = adh_protocol_auto_start(&m0, step);
-    if (w->spring) {
-        double hs = cbrt(4.0 * w->m.A * w->m.R / (3.0 * w->dr.spring));
+    return adh_visco_auto_start(&m0, w->spring ? w->dr.spring : INFINITY, w->ps.step > 0 ? w->ps.step : 0.05e-9);
+}
+
+double adh_visco_auto_start(const adh_material *m, double spring, double step)
+{
+    double h = adh_protocol_auto_start(m, step);
+    if (spring < INFINITY) {
+        double hs = cbrt(4.0 * m->A * m->R / (3.0 * spring));
         if (hs > h)
             h = step * ceil(hs / step);
     }

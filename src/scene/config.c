@@ -7,6 +7,7 @@
 #include "adhere/grid.h"
 #include "adhere/models.h"
 #include "adhere/status.h"
+#include "adhere/visco.h"
 
 void adh_config_default(adh_config *c)
 {
@@ -30,7 +31,12 @@ void adh_config_default(adh_config *c)
 
 double adh_config_start(const adh_run_spec *s)
 {
-    return isnan(s->proto.start) ? adh_protocol_auto_start(&s->mat, s->proto.step) : s->proto.start;
+    if (!isnan(s->proto.start))
+        return s->proto.start;
+    /* a static curve under a spring starts outside its snap-in */
+    if (s->mode == ADH_MODE_STATIC && isfinite(s->time.spring))
+        return adh_visco_auto_start(&s->mat, s->time.spring, s->proto.step);
+    return adh_protocol_auto_start(&s->mat, s->proto.step);
 }
 
 /* Up to max profile positions spread from the deepest turn (without turns:
@@ -260,7 +266,9 @@ adh_kernel *adh_config_kernel_alloc(const adh_run_spec *s, const adh_grid *g, in
 
 adh_quantity adh_sweep_quantity(adh_sweep_kind kind)
 {
-    return kind == ADH_SWEEP_E ? ADH_Q_PRESSURE : kind == ADH_SWEEP_EPS ? ADH_Q_LENGTH : ADH_Q_NONE;
+    return kind == ADH_SWEEP_E ? ADH_Q_PRESSURE : kind == ADH_SWEEP_EPS ? ADH_Q_LENGTH
+         : kind == ADH_SWEEP_SPEED || kind == ADH_SWEEP_SPEED_OUT ? ADH_Q_SPEED
+         : kind == ADH_SWEEP_SPRING ? ADH_Q_STIFFNESS : ADH_Q_NONE;
 }
 
 adh_qtext_buf adh_sweep_value_text(adh_sweep_kind kind, double value)
@@ -308,4 +316,11 @@ void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run)
         run->time.speed_out = v;
     else if (c->sweep.kind == ADH_SWEEP_SPRING)
         run->time.spring = v;
+    if (c->sweep.kind == ADH_SWEEP_SPRING && run->mode == ADH_MODE_STATIC && isnan(run->proto.start)) {
+        /* one curve serves every k: it starts outside the softest one's snap-in */
+        double soft = INFINITY;
+        for (size_t j = 0; j < c->sweep.n; j++)
+            soft = fmin(soft, c->sweep.values[j]);
+        run->proto.start = adh_visco_auto_start(&run->mat, soft, run->proto.step);
+    }
 }

@@ -46,7 +46,10 @@ typedef enum adh_sweep_kind {
 typedef enum adh_sweep_plot {
     ADH_SWEEP_PLOT_NONE = 0,
     ADH_SWEEP_PLOT_JUMP,   /* Figure 3: jump separation vs sigma against eq 24 (jump.png) */
-    ADH_SWEEP_PLOT_FORCE   /* Figure 7: every run's force curve and the JKR curve (force.png) */
+    ADH_SWEEP_PLOT_FORCE,  /* Figure 7: every run's force curve and the JKR curve (force.png) */
+    ADH_SWEEP_PLOT_SPEED,  /* physical time: pull-off and hysteresis against the swept speed,
+                              the static pull-offs at E0 and Einf as lines (speed.png) */
+    ADH_SWEEP_PLOT_SNAP    /* the spring: snap-in and snap-out against k (snap.png) */
 } adh_sweep_plot;
 
 #define ADH_MAX_SWEEP 32

@@ -188,6 +188,7 @@ static const word modes[] = { { "relax", ADH_MODE_RELAX }, { "static", ADH_MODE_
 static const word materials[] = { { "elastic", 0 }, { "sls", 1 }, { NULL, 0 } };
 static const word grids[] = { { "uniform", 0 }, { "graded", 1 }, { NULL, 0 } };
 static const word sweep_plots[] = { { "jump", ADH_SWEEP_PLOT_JUMP }, { "force", ADH_SWEEP_PLOT_FORCE },
+                                    { "speed", ADH_SWEEP_PLOT_SPEED }, { "snap", ADH_SWEEP_PLOT_SNAP },
                                     { "none", ADH_SWEEP_PLOT_NONE }, { NULL, 0 } };
 
 /* The value text names in list, or -1 with "'text' is not a WHAT: use A, B

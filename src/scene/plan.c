@@ -189,6 +189,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     p->jobs = adh_plan_jobs(cfg);
     p->elastic = s0->mode != ADH_MODE_RIGID;
     p->static_mode = s0->mode == ADH_MODE_STATIC;
+    p->time_mode = s0->mode == ADH_MODE_TIME;
     p->loading_branches = 1;
     p->stop_at_contact = p->elastic && s0->proto.nturns == 0;
     p->snapshots = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
@@ -231,12 +232,22 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         note(p->skipped, &p->nskipped, "sweep plot", "no swept parameter in [sweep]");
     if (p->static_mode)
         note(p->skipped, &p->nskipped, "relaxation", "mode = static: the equilibrium curve is followed by continuation, no eps steps");
+    if (p->time_mode)
+        note(p->skipped, &p->nskipped, "relaxation", "mode = time: the path is integrated in physical time, no eps steps; "
+             "rows fall where the integrator's tolerance puts them, not on the drive step d");
 
     /* what is stored */
     const char *prefix = cfg->sweep.kind ? "run-K/" : "";
     char what[64];
     snprintf(what, sizeof what, "%sforce.tsv", prefix);
-    note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
+    if (p->time_mode)
+        note(p->stored, &p->nstored, what, "one row per integrator step: t, base, h0, F, delta, hc, a, angle, Newton iterations, F_rigid (eq 22)");
+    else
+        note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
+    if (p->time_mode) {
+        snprintf(what, sizeof what, "%sevents.tsv", prefix);
+        note(p->stored, &p->nstored, what, "jumps, contact, pull-off, turns located in time: t, base, h0, F, a before and after");
+    }
     snprintf(what, sizeof what, "%ssummary.tsv", prefix);
     note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, hysteresis, total iterations and seconds");
     if (p->unloading_branches || (p->elastic && s0->proto.nturns)) {
@@ -276,6 +287,15 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
                  ? "every run's force curve with the JKR prediction, and the hysteresis against eps with the static "
                    "curve's (its own resolved grid) as its line (Figure 7)"
                  : "every run's force curve with the JKR prediction (Figure 7)");
+        if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_SPEED)
+            note(p->stored, &p->nstored, "speed.png", "pull-off and hysteresis against the speed, log axis; the static "
+                 "pull-offs at E0 and Einf as lines (two static curves more)");
+        if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_SNAP)
+            note(p->stored, &p->nstored, "snap.png", "snap-in and snap-out against the spring, log axis, with rigid "
+                 "spheres' (eq 22)");
+        if (p->static_mode && cfg->sweep.kind == ADH_SWEEP_SPRING)
+            note(p->skipped, &p->nskipped, "a curve per k", "the spring does not change the static curve: it is "
+                 "computed once, and each k's snap points are read off it (where dF/dh0 = k)");
     }
 }
 
@@ -309,6 +329,8 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         fprintf(f, "mode: rigid (eq 22 only)\n");
     else if (p->static_mode)
         fprintf(f, "mode: static (equilibrium continuation)\n");
+    else if (p->time_mode)
+        adh_plan_time_print(f, cfg);
     else {
         adh_format_quantity(cfg->spec.relax.eps, ADH_Q_LENGTH, 3, a, sizeof a);
         fprintf(f, "mode: relax (the paper's relaxation, eps = %s%s)\n", a,
@@ -347,9 +369,13 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     const adh_plan_run *r0 = &p->runs[0];
     fmt_len(r0->start, a, sizeof a);
     fmt_len(r0->end, b, sizeof b);
-    fprintf(f, "loading branches: %zu%s (from %s to %s%s, %s%zu steps)\n", p->loading_branches,
-            p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "about " : "", b,
-            p->stop_at_contact ? "ends at the jump into contact, about " : "", r0->loading_steps);
+    if (p->time_mode)   /* the integrator's steps, not the drive's */
+        fprintf(f, "loading branches: %zu%s (the base from %s to %s%s)\n", p->loading_branches,
+                p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "the jump into contact, about " : "", b);
+    else
+        fprintf(f, "loading branches: %zu%s (from %s to %s%s, %s%zu steps)\n", p->loading_branches,
+                p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "about " : "", b,
+                p->stop_at_contact ? "ends at the jump into contact, about " : "", r0->loading_steps);
     if (p->elastic && cfg->spec.proto.nturns) {
         fprintf(f, "turning points: %zu (", cfg->spec.proto.nturns);
         list_lengths(f, cfg->spec.proto.turns, cfg->spec.proto.nturns);
@@ -359,12 +385,14 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     }
     fprintf(f, "snapshots: %zu%s\n", p->snapshots, p->snapshots ? " (the state at each turn, where its unloading starts)" : "");
     fprintf(f, "unloading branches: %zu%s", p->unloading_branches, p->nruns > 1 && p->unloading_branches ? " per run" : "");
-    if (p->unloading_branches)
+    if (p->unloading_branches && p->time_mode)
+        fprintf(f, " (each from its turn, after the dwell, until the base is back at the start and the surfaces are apart, up to the model's reach 0.02 R)");
+    else if (p->unloading_branches)
         fprintf(f, " (each from its turn until the surfaces jump apart: %zu steps in all back to the start, more if they still touch there, up to the model's reach 0.02 R)", r0->unloading_steps);
     fputc('\n', f);
-    if (p->unloading_branches)
+    if (p->unloading_branches && !p->time_mode)
         fprintf(f, "dwell: %zu iterations at each turn before unloading\n", cfg->spec.proto.dwell);
-    if (p->elastic) {
+    if (p->elastic && !p->time_mode) {
         adh_format_quantity(cfg->output.drive_speed, ADH_Q_SPEED, 3, a, sizeof a);
         fprintf(f, "drive speed: %s (turns d a / d h0 into contact-line speeds)\n", a);
     }
@@ -376,10 +404,13 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
                 i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
                 p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
     }
-    fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",
-            p->loading_steps, p->unloading_steps,
-            p->unloading_branches ? " (more if the surfaces still touch there)" : "");
-    if (p->elastic && !p->static_mode) {
+    if (p->time_mode)
+        fprintf(f, "steps: as many as the integrator's tolerance needs (short ones at every fold, jump and turn)\n");
+    else
+        fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",
+                p->loading_steps, p->unloading_steps,
+                p->unloading_branches ? " (more if the surfaces still touch there)" : "");
+    if (p->elastic && !p->static_mode && !p->time_mode) {
         double it = 0;
         for (size_t i = 0; i < p->nruns; i++)
             it += p->runs[i].iterations;

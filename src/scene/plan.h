@@ -38,6 +38,7 @@ typedef struct adh_plan {
     int jobs;                 /* runs at once */
     int elastic;              /* 0: rigid spheres only (eq 22), no kernel at all */
     int static_mode;          /* the equilibrium continuation instead of relaxation */
+    int time_mode;            /* physical time (mode time): the integrator's own steps */
     int shared_kernel;        /* one kernel serves every run (same grid) */
     size_t kernels;           /* kernels built in all */
     size_t loading_branches;  /* per run */
@@ -60,6 +61,10 @@ void adh_plan_make(const adh_config *cfg, adh_plan *plan);
 
 /* Prints it as "key: value" lines, one note per "stored:" / "skip:" line. */
 void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
+
+/* The physical-time lines of the plan (plantime.c): the material, the
+ * drive, the spring and the time the protocol spans. */
+void adh_plan_time_print(FILE *f, const adh_config *cfg);
 
 /* Runs at once for a sweep: [sweep] jobs, else one per online core, never
  * more than the runs. */

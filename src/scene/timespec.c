@@ -64,6 +64,12 @@ static int sweep_fits(const adh_config *c, adh_mode mode, char *why, size_t whyl
     if (k == ADH_SWEEP_SPRING && mode != ADH_MODE_TIME && mode != ADH_MODE_STATIC)
         BAD("sweep.spring varies the instrument's spring: scene.mode = %s cannot take one (scene.mode = static for "
             "the snap points of the static curve, or physical time)", mode_word(mode));
+    adh_sweep_plot plot = c->sweep.plot;
+    if (plot == ADH_SWEEP_PLOT_SPEED && !timed)
+        BAD("sweep.plot = speed draws the pull-off against the swept speed: sweep.speed or sweep.speed_out is "
+            "needed");
+    if (plot == ADH_SWEEP_PLOT_SNAP && k != ADH_SWEEP_SPRING)
+        BAD("sweep.plot = snap draws the snap points against the spring: sweep.spring is needed");
     if (k == ADH_SWEEP_EPS && mode == ADH_MODE_TIME)
         BAD("sweep.eps varies the relaxation's convergence parameter: physical time has none (its steps follow a "
             "tolerance on the solution)");
