@@ -119,7 +119,8 @@ void cli_options_usage(FILE *out)
         snprintf(lhs + n, sizeof lhs - (size_t)n, "--%s%s%s", o->opt.name, o->arg ? "=" : "", o->arg ? o->arg : "");
         fprintf(out, "  %-28s %s\n", lhs, o->help);
     }
-    fprintf(out, "\nSCENE is a scene file or the name of a shipped one (default, fig1 ... fig8).\n"
+    fprintf(out, "\nSCENE is a scene file or the name of a shipped one (default, fig1 ... fig8, visco,\n"
+                 "visco-speed, afm).\n"
                  "See adhere(1) and adhere-scene(5).\n");
 }
 

@@ -495,8 +495,10 @@ static int time_value_ok(const char *name, double v, char *why, size_t whylen)
         d.dwell = v;
     else if (!strcmp(name, "spring"))
         d.spring = v;
+    else if (!strcmp(name, "speed_out"))
+        d.speed_out = v;
     else
-        d.speed_in = d.speed_out = v;
+        d.speed_in = v;
     return adh_sls_validate(&m, why, whylen) == ADH_SUCCESS && adh_visco_drive_validate(&d, why, whylen) == ADH_SUCCESS;
 }
 
@@ -531,7 +533,7 @@ static int set_speed(adh_config *c, const key_def *k, const char *text, char *wh
     if (parse_list(text, ADH_Q_SPEED, 0, v, 2, &n, why, whylen) != 0)
         return -1;
     for (size_t i = 0; i < n; i++)
-        if (!time_value_ok("speed", v[i], why, whylen))
+        if (!time_value_ok(i ? "speed_out" : "speed_in", v[i], why, whylen))
             return -1;
     c->spec.time.speed_in = v[0];
     c->spec.time.speed_out = v[n - 1];
