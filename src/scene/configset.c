@@ -473,8 +473,14 @@ static int set_material_kind(adh_config *c, const key_def *k, const char *text, 
     if (parse_word(materials, "material", text, &v, why, whylen) != 0)
         return -1;
     c->spec.time.sls = v;
+    if (!v)   /* elastic over a solid (a flag over a scene's): its keys go with it */
+        c->spec.time.given &= ~(unsigned)(ADH_TIME_E0 | ADH_TIME_EINF | ADH_TIME_TAU);
+    /* elastic leaves physical time unless its drive was given (a speed,
+     * a dwell in seconds, a spring): then it is an elastic sphere in time */
+    unsigned drive = c->spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);
     if (!c->mode_given)
-        c->spec.mode = v ? ADH_MODE_TIME : c->spec.mode == ADH_MODE_TIME ? ADH_MODE_RELAX : c->spec.mode;
+        c->spec.mode = v || (drive && c->spec.mode == ADH_MODE_TIME) ? ADH_MODE_TIME
+                     : c->spec.mode == ADH_MODE_TIME ? ADH_MODE_RELAX : c->spec.mode;
     return 0;
 }
 
