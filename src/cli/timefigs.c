@@ -95,19 +95,20 @@ static int speed_figure(tfig *fg, const adh_config *cfg, const adh_grid *g, cons
     adh_gnuplot_cmd(gp, "set y2label \"hysteresis (%s)\"", eu);
     adh_gnuplot_cmd(gp, "set ytics nomirror");
     adh_gnuplot_cmd(gp, "set y2tics");
-    adh_gnuplot_cmd(gp, "set yrange [0:*]");
-    adh_gnuplot_cmd(gp, "set y2range [0:*]");
-    adh_gnuplot_cmd(gp, "set key center left");
+    /* the data in the lower two thirds, the key above them */
+    adh_gnuplot_cmd(gp, "set yrange [0:%.17g]", 1.5 * fbig * fs);
+    adh_gnuplot_cmd(gp, "set y2range [0:%.17g]", 1.5 * ebig * es);
+    adh_gnuplot_cmd(gp, "set key top left Left reverse maxrows 3 width -4");
     /* where the drive moves z0 in tau: below it the solid relaxes as it goes */
     adh_gnuplot_cmd(gp, "set arrow from %.17g, graph 0 to %.17g, graph 1 nohead dt 3 lc rgb \"#888888\"",
                     s.mat.z0 / s.time.tau, s.mat.z0 / s.time.tau);
-    adh_gnuplot_cmd(gp, "set label \"V τ = z_0\" at %.17g, graph 0.04 offset 0.5,0 tc rgb \"#666666\"",
+    adh_gnuplot_cmd(gp, "set label \"V τ = z_0\" at %.17g, graph 0.72 offset 0.5,0 tc rgb \"#666666\"",
                     s.mat.z0 / s.time.tau);
     adh_gnuplot_cmd(gp, "plot %s using 1:($2*%.17g) with linespoints pt 7 lw 2 lc rgb \"#c0392b\" title \"pull-off\", "
                         "'' using 1:($3*%.17g) axes x1y2 with linespoints pt 5 lw 2 lc rgb \"#1f3f8f\" title \"hysteresis\", "
                         "%.17g with lines dt 2 lw 2 lc rgb \"#27ae60\" title \"static pull-off at E0\", "
                         "%.17g with lines dt 4 lw 2 lc rgb \"#8e44ad\" title \"static pull-off at E∞\", "
-                        "%.17g with lines dt 3 lw 2 lc rgb \"#e67e22\" title \"E∞/E0 × static pull-off at E0 (crack theory's bound)\"",
+                        "%.17g with lines dt 3 lw 2 lc rgb \"#e67e22\" title \"E∞/E0 × the one at E0 (crack theory's bound)\"",
                     adh_gp_path(dat, q, sizeof q), fs, es, -p0 * fs, -pinf * fs, -ratio * p0 * fs);
     char why[1024];
     if (adh_session_end(&fg->ses, "speed.png", why, sizeof why) != 0) {
