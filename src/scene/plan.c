@@ -277,9 +277,15 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
                     note(p->stored, &p->nstored, what, "%s", figs[i].what);
             }
     }
+    int snaps = p->static_mode && cfg->sweep.kind == ADH_SWEEP_SPRING;
     if (p->nruns > 1 || cfg->sweep.kind) {
-        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, E, sigma, eps, jump_in_h0, h_before, h_star, max_load, pulloff_F, jump_out_h0, iterations, seconds, jumped, hysteresis",
-             adh_sweep_name(cfg->sweep.kind));
+        if (p->time_mode || snaps)
+            note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, %s", adh_sweep_name(cfg->sweep.kind),
+                 snaps ? "the snap-in's and snap-out's h0 and base" : "the solid and drive, jumps, pull-off, their "
+                 "bases, hysteresis, dissipated, time");
+        else
+            note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, E, sigma, eps, jump_in_h0, h_before, h_star, max_load, pulloff_F, jump_out_h0, iterations, seconds, jumped, hysteresis",
+                 adh_sweep_name(cfg->sweep.kind));
         if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP)
             note(p->stored, &p->nstored, "jump.png", "jump separation vs sigma against eq 24 (Figure 3)");
         if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_FORCE)
@@ -291,8 +297,8 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
             note(p->stored, &p->nstored, "speed.png", "pull-off and hysteresis against the speed, log axis; the static "
                  "pull-offs at E0 and Einf as lines (two static curves more)");
         if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_SNAP)
-            note(p->stored, &p->nstored, "snap.png", "snap-in and snap-out against the spring, log axis, with rigid "
-                 "spheres' (eq 22)");
+            note(p->stored, &p->nstored, "snap.png", "the snap-in distance (base and sphere) against the spring, log "
+                 "axes, with rigid spheres' (eq 22)");
         if (p->static_mode && cfg->sweep.kind == ADH_SWEEP_SPRING)
             note(p->skipped, &p->nskipped, "a curve per k", "the spring does not change the static curve: it is "
                  "computed once, and each k's snap points are read off it (where dF/dh0 = k)");
@@ -321,7 +327,8 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
                 adh_format_quantity(cfg->sweep.values[i], adh_sweep_quantity(cfg->sweep.kind), 4, a, sizeof a);
             fprintf(f, "%s %s", i ? "," : "", a);
         }
-        fprintf(f, " (each an independent run)\n");
+        fprintf(f, "%s\n", cfg->spec.mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_SPRING
+                ? " (one static curve serves every k)" : " (each an independent run)");
         fprintf(f, "parallel: %d run%s at once%s\n", p->jobs, p->jobs == 1 ? "" : "s",
                 p->jobs > 1 ? " (one thread each; BLAS single-threaded)" : "");
     }

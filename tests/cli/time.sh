@@ -51,6 +51,10 @@ check "--plan visco: mode time" grep -q '^mode: time (physical time' "$TMP/plan"
 check "--plan visco: the solid" grep -qF 'material: standard linear solid: E0 = 300 MPa (relaxed, sigma 7.503), Einf = 3 GPa (instantaneous, sigma 0.7503), tau = 1 ms' "$TMP/plan"
 check "--plan visco: the drive and the time it spans" sh -c "grep -qF 'drive: the base at 1 um/s approaching, 1 um/s retracting' '$TMP/plan' && grep -q '^time: about 43.9 ms' '$TMP/plan'"
 check "--plan visco stores events.tsv" grep -q '^stored: events.tsv' "$TMP/plan"
+"$ADHERE" --plan visco-speed >"$TMP/plans" 2>&1
+check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans'"
+"$ADHERE" --plan afm >"$TMP/plana" 2>&1
+check "--plan afm: one static curve serves every k, snap.png" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^skip: a curve per k: ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
 check "--plan fig4 (elastic) does not run in time" sh -c "grep -q '^mode: relax' '$TMP/plan4' && ! grep -q 'events.tsv\|^material:' '$TMP/plan4'"
 
