@@ -79,7 +79,7 @@ static int figure4(size_t n)
            "(wall s: relax, visco)");
     adh_kernel_storage st[2] = { ADH_STORAGE_DENSE, ADH_STORAGE_H2 };
     for (int i = 0; i < 2; i++) {
-        adh_kernel *k = adh_kernel_alloc_stored(g, ADH_KERNEL_PAPER, st[i]);
+        adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER, .storage = st[i] }, NULL);
         adh_relax_settings rs = adh_relax_settings_default();
         adh_protocol_settings ps = adh_protocol_settings_default();
         adh_run run;
@@ -118,8 +118,9 @@ static int soft(double sigma)
     } else {
         g = adh_grid_alloc(gc.n, isnan(gc.dr) ? adh_grid_spacing_for(&m, gc.n) : gc.dr);
     }
-    adh_kernel *k = adh_kernel_alloc_stored(g, gc.graded ? ADH_KERNEL_RING : ADH_KERNEL_PAPER,
-                                            gc.hierarchical ? ADH_STORAGE_H2 : ADH_STORAGE_DENSE);
+    adh_kernel_settings ks = { .type = gc.graded ? ADH_KERNEL_RING : ADH_KERNEL_PAPER,
+                               .storage = gc.hierarchical ? ADH_STORAGE_H2 : ADH_STORAGE_DENSE };
+    adh_kernel *k = adh_kernel_alloc(g, &ks, NULL);
     adh_static_settings ss = adh_static_settings_default();
     ss.h0_end = turn;
     adh_run run;

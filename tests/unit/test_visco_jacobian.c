@@ -15,7 +15,7 @@ static void check(const char *what, adh_kernel_storage storage, double spring, d
 {
     adh_material m = adh_material_default();
     adh_grid *g = adh_grid_alloc(FIX_N, adh_grid_default_spacing(&m));
-    adh_kernel *k = adh_kernel_alloc_stored(g, ADH_KERNEL_RING, storage);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_RING, .storage = storage }, NULL);
     adh_sls sls = { m.E, 10 * m.E, FIX_TAU };
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
     d.spring = spring;

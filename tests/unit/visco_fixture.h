@@ -29,7 +29,7 @@ static inline fixture fix_open(size_t n, double spacing_factor)
     fixture f;
     f.m = adh_material_default();
     f.g = adh_grid_alloc(n, spacing_factor * adh_grid_default_spacing(&f.m));
-    f.k = f.g ? adh_kernel_alloc(f.g, ADH_KERNEL_PAPER) : NULL;
+    f.k = f.g ? adh_kernel_alloc(f.g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL) : NULL;
     if (!f.k) {
         printf("Bail out! out of memory\n");
         exit(1);
