@@ -14,11 +14,12 @@ static double slope(const adh_obs *x, const adh_obs *y)
     return (y->a - x->a) / dh;
 }
 
-/* Rows in physical time (mode time) carry their time: the speed is then
- * da/dt itself, dwells included. */
+/* Rows in physical time (mode time) carry their time, which a run in time
+ * advances: the speed is then da/dt itself, dwells included. (Rows made
+ * without it, zeroed, have t = 0 throughout.) */
 static int timed(const adh_run *run)
 {
-    return run->nrows > 0 && isfinite(run->rows[0].t);
+    return run->nrows > 1 && isfinite(run->rows[0].t) && run->rows[run->nrows - 1].t > run->rows[0].t;
 }
 
 /* da/dt between two rows of a timed run, NAN out of contact. */
