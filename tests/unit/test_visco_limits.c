@@ -8,7 +8,8 @@
  * h0 in z0 and F in pull-offs. The material starts at rest, relaxed, and
  * fast the start's relaxed bulge stays frozen in: 4 pm from the automatic
  * start at 10.5 nm (2.5 % where the curve is steepest), so the fast cycle
- * starts further out. */
+ * starts further out. The same two limits again in tau at 1 um/s: tau
+ * -> 0 is E0's curve, tau -> inf Einf's. */
 #include <math.h>
 #include <stdio.h>
 
@@ -67,6 +68,25 @@ int main(void)
     ok_rel(v.r.pulloff_F, sinf.pulloff_F, 1e-2, "fast: pull-off as the static curve's at Einf");
     gap = static_gap(&v.run, &stinf, &sinf, f.m.z0, &cmp);
     ok(cmp > 100 && gap < 1e-2, "fast: %zu rows within 1 %% of Einf's curve (largest gap %.3g)", cmp, gap);
+    vrun_free(&v);
+
+    /* the same limits in tau at one speed, 1 um/s (the model's only
+     * clock is tau: what counts is speed x tau against z0, and the
+     * cycle's time against tau) */
+    d = fix_drive(1e-6, 1e-6);
+    v = fix_visco_tau(&f, 10.0, 1e-11, &d, 1e-4, NAN);
+    ok(v.rc == ADH_SUCCESS, "tau -> 0 (10 ps at 1 um/s): the cycle runs");
+    ok_rel(v.r.pulloff_F, s0.pulloff_F, 1e-2, "tau -> 0: pull-off as the static curve's at E0");
+    ok_rel(v.r.jump_out_h0, s0.jump_out_h0, 1e-2, "tau -> 0: jump-out at E0's fold");
+    gap = static_gap(&v.run, &st0, &s0, f.m.z0, &cmp);
+    ok(cmp > 100 && gap < 1e-2, "tau -> 0: %zu rows within 1 %% of E0's curve (largest gap %.3g)", cmp, gap);
+    vrun_free(&v);
+    v = fix_visco_tau(&f, 10.0, 1e3, &d, 1e-4, 30e-9);
+    ok(v.rc == ADH_SUCCESS && v.r.time < 1e-3 * 1e3, "tau -> inf (1000 s at 1 um/s): the cycle runs, in %.3g s",
+       v.r.time);
+    ok_rel(v.r.pulloff_F, sinf.pulloff_F, 1e-2, "tau -> inf: pull-off as the static curve's at Einf");
+    gap = static_gap(&v.run, &stinf, &sinf, f.m.z0, &cmp);
+    ok(cmp > 100 && gap < 1e-2, "tau -> inf: %zu rows within 1 %% of Einf's curve (largest gap %.3g)", cmp, gap);
     vrun_free(&v);
 
     adh_run_free(&st0);

@@ -65,13 +65,14 @@ typedef struct vrun {
     adh_visco *w;
 } vrun;
 
-/* One cycle: E0 = the fixture's E, Einf = ratio E0, tau = FIX_TAU, the
- * drive d, tolerance tol, from start (NAN: the automatic one). Free with
- * vrun_free. */
-static inline vrun fix_visco_from(const fixture *f, double ratio, const adh_visco_drive *d, double tol, double start)
+/* One cycle: E0 = the fixture's E, Einf = ratio E0, relaxation time tau,
+ * the drive d, tolerance tol, from start (NAN: the automatic one). Free
+ * with vrun_free. */
+static inline vrun fix_visco_tau(const fixture *f, double ratio, double tau, const adh_visco_drive *d, double tol,
+                                 double start)
 {
     vrun v;
-    adh_sls sls = { f->m.E, ratio * f->m.E, FIX_TAU };
+    adh_sls sls = { f->m.E, ratio * f->m.E, tau };
     adh_visco_settings s = adh_visco_settings_default();
     s.tol = tol;
     adh_protocol_settings ps = adh_protocol_settings_default();
@@ -90,6 +91,12 @@ static inline vrun fix_visco_from(const fixture *f, double ratio, const adh_visc
         v.nev = adh_visco_events(v.w, &v.ev);
     }
     return v;
+}
+
+/* The same at tau = FIX_TAU. */
+static inline vrun fix_visco_from(const fixture *f, double ratio, const adh_visco_drive *d, double tol, double start)
+{
+    return fix_visco_tau(f, ratio, FIX_TAU, d, tol, start);
 }
 
 static inline vrun fix_visco(const fixture *f, double ratio, const adh_visco_drive *d, double tol)
