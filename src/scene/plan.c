@@ -249,7 +249,10 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         note(p->stored, &p->nstored, what, "jumps, contact, pull-off, turns located in time: t, base, h0, F, a before and after");
     }
     snprintf(what, sizeof what, "%ssummary.tsv", prefix);
-    note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, hysteresis, total iterations and seconds");
+    if (p->time_mode)   /* cli/timerun.c's keys besides the run's */
+        note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, the solid and the drive, hysteresis, dissipated, jump_loss, stored_change, the times and bases of the jumps and the pull-off, time, the integrator's steps and iterations");
+    else
+        note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, hysteresis, total iterations and seconds");
     if (p->unloading_branches || (p->elastic && s0->proto.nturns)) {
         snprintf(what, sizeof what, "%sturns.tsv", prefix);
         note(p->stored, &p->nstored, what, "one row per turning point: maximum load, contact radius, pull-off, jump-out, hysteresis (adhesion vs load)");

@@ -51,6 +51,7 @@ check "--plan visco: mode time" grep -q '^mode: time (physical time' "$TMP/plan"
 check "--plan visco: the solid" grep -qF 'material: standard linear solid: E0 = 300 MPa (relaxed, sigma 7.503), Einf = 3 GPa (instantaneous, sigma 0.7503), tau = 1 ms' "$TMP/plan"
 check "--plan visco: the drive and the time it spans" sh -c "grep -qF 'drive: the base at 1 um/s approaching, 1 um/s retracting' '$TMP/plan' && grep -q '^time: about 43.9 ms' '$TMP/plan'"
 check "--plan visco stores events.tsv" grep -q '^stored: events.tsv' "$TMP/plan"
+check "--plan visco: summary.tsv with the solid, the drive, hysteresis and dissipated" grep -q "^stored: summary.tsv: .*the solid and the drive, hysteresis, dissipated" "$TMP/plan"
 "$ADHERE" --plan visco-speed >"$TMP/plans" 2>&1
 check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
