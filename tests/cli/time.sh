@@ -110,4 +110,7 @@ check "a speed sweep exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
 check "it wrote speed.png" [ -s "$d/speed.png" ]
 check "the faster retraction's pull-off is larger and below Einf/E0 times the slow one" sh -c \
     "grep -v '^#' '$d/sweep.tsv' | tail -n +2 | awk -F'\t' '{p[NR] = -\$13} END {exit !(p[2] > 1.5 * p[1] && p[2] < 10 * p[1])}'"
+check "each row's status is its run's summary.tsv's ($(grep -v '^#' "$d/sweep.tsv" | tail -n +2 | cut -f23 | tr '\n' ' '))" sh -c \
+    "for k in 1 2; do w=\$(awk -F'\t' '\$1 == \"status\" {print \$2}' '$d'/run-\$k/summary.tsv); \
+     grep -v '^#' '$d/sweep.tsv' | awk -F'\t' -v k=\$k -v w=\"\$w\" '\$1 == k {f = 1; if (\$NF != w || w == \"\") exit 1} END {exit !f}' || exit 1; done"
 done_testing
