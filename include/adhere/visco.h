@@ -150,6 +150,8 @@ typedef struct adh_visco_result {
     size_t jumps_relaxed;  /* of which landed by relaxing, where following the
                               equilibria got lost (lattice folds of a grid that
                               does not resolve the contact edge) */
+    size_t folds_resumed;  /* roots of t' that were no fold (the relaxation
+                              came back to them): the path went on, no jump */
     size_t newton;         /* Newton iterations */
     size_t krylov;         /* GMRES iterations */
     size_t setups;         /* preconditioner factorizations (a dense LU, or HODLR's;

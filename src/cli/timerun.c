@@ -73,6 +73,7 @@ size_t cli_time_keys(const cli_time_out *o, cli_tables_extra *x)
         { "time_steps", (double)r->steps },
         { "jumps", (double)r->jumps },
         { "jumps_relaxed", (double)r->jumps_relaxed },
+        { "folds_resumed", (double)r->folds_resumed },
         { "newton_iterations", (double)r->newton },
         { "krylov_iterations", (double)r->krylov },
         { "tolerance", o->vs.s.tol },

@@ -25,6 +25,12 @@
 /* A relaxation has landed when nothing moves faster than this many
  * tolerances per unit pseudo-time (its rates are 1 and more). */
 #define VISCO_REST 1e-3
+/* A relaxed jump's push off its fold along the path's tangent (per z0):
+ * first a thousandth, ten times more each time the relaxation comes back
+ * to the fold (the root put the fold on its stable side, further from it
+ * than the push), up to a tenth. */
+#define VISCO_NUDGE 1e-3
+#define VISCO_NUDGE_MAX 0.1
 
 
 static void snaps_free(adh_visco *w)
@@ -396,6 +402,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     memset(&w->acc, 0, sizeof w->acc);
     memset(w->stat0, 0, sizeof w->stat0);
     memset(&w->res, 0, sizeof w->res);
+    w->t_resumed = NAN;
     w->res.jump_in_h0 = w->res.jump_out_h0 = w->res.pulloff_F = NAN;
     w->res.jump_in_t = w->res.jump_in_base = w->res.jump_out_t = w->res.jump_out_base = NAN;
     w->res.pulloff_h0 = w->res.pulloff_t = w->res.pulloff_base = NAN;
@@ -577,6 +584,7 @@ static int fold(adh_visco *w, double t0)
     w->b_fold = w->base_now;
     w->seg_fold = w->seg;
     w->jump_steps = 0;
+    w->nudge = VISCO_NUDGE;
     w->mode = MODE_CROSS;
     w->have_prev = 0;
     w->phase = 1;
@@ -618,9 +626,44 @@ static void contact_changed(adh_visco *w, int now, double h0, double t, double b
     }
 }
 
+/* Whether y's u is within the tolerance of the fold's: a jump that came
+ * back to where it began. */
+static int came_back(const adh_visco *w)
+{
+    const double *y = N_VGetArrayPointer(w->y);
+    double moved = 0;
+    for (size_t i = 0; i < w->n; i++)
+        moved = fmax(moved, fabs(y[i] - w->yfold[i]));
+    return !(moved > w->s.tol * w->m.z0);
+}
+
+/* The relaxation came back to the fold from every push (up to a tenth
+ * of z0): the state is stable there, and t' touched zero without a fold
+ * (where the contact line crosses a ring fast, the path's u' is large
+ * and t' small). No jump: the path goes on from the fold's state. A
+ * second time at the same instant it is stuck. */
+static int resume(adh_visco *w, double t0)
+{
+    double *y = N_VGetArrayPointer(w->y);
+    if (w->t_now == w->t_resumed) {
+        snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s came back to its fold", w->t_now);
+        return stop(w, ADH_ESTALL);
+    }
+    w->t_resumed = w->t_now;
+    w->res.jumps_relaxed--;
+    w->res.folds_resumed++;
+    memcpy(y, w->yfold, w->len * sizeof *y);
+    int rc = restart(w, w->s_fold, y, NULL);
+    if (rc != ADH_SUCCESS)
+        return stop(w, rc);
+    load_state(w, y);
+    return finish_row(w, push_row(w, t0));
+}
+
 /* The crossing is back at the fold's base on the other branch: the
- * path goes on from there (time and q as at the fold). */
-static int land(adh_visco *w, double t0)
+ * path goes on from there (time and q as at the fold). With crossed 0 it
+ * relaxed there instead. */
+static int land(adh_visco *w, double t0, int crossed)
 {
     double *y = N_VGetArrayPointer(w->y), moved = 0;
     size_t n = w->n;
@@ -630,10 +673,8 @@ static int land(adh_visco *w, double t0)
     IDASetMaxStep(w->ida, 0); /* the crossing's limit, if it set one, is off */
     for (size_t i = 0; i < n; i++)
         moved = fmax(moved, fabs(y[i] - w->yfold[i]));
-    if (!(moved > w->s.tol * w->m.z0)) {
-        snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s came back to its fold", w->t_now);
-        return stop(w, ADH_ESTALL);
-    }
+    if (!crossed && !(moved > w->s.tol * w->m.z0))
+        return resume(w, t0);
     load_state(w, y);
     adh_visco_event e = w->pending;
     double U = adh_visco_energy_of(w, y, NULL, NULL, NULL);
@@ -664,7 +705,7 @@ static int start_flow(adh_visco *w)
     w->mode = MODE_FLOW;
     w->jump_steps = 0;
     w->res.jumps_relaxed++;
-    int rc = adh_visco_flow_start(w, w->yfold, w->ypfold, y0, w->ypflow);
+    int rc = adh_visco_flow_start(w, w->yfold, w->ypfold, w->nudge, y0, w->ypflow);
     return rc == ADH_SUCCESS ? restart(w, 0.0, y0, w->ypflow) : rc;
 }
 
@@ -756,7 +797,7 @@ static int cross_root(adh_visco *w, const int *rf, double t0)
             w->cross_dir = db > 0 ? -1 : +1;
         adh_visco_root_directions(w);
     } else if (w->phase == 2 && rf[ROOT_END]) {
-        return land(w, t0);
+        return land(w, t0, 1);
     }
     return ADH_CONTINUE;
 }
@@ -819,8 +860,17 @@ int adh_visco_iterate(adh_visco *w)
             return stop(w, ADH_ESTALL);
         }
         if (w->mode == MODE_FLOW) {
+            if (adh_visco_flow_speed(w, N_VGetArrayPointer(w->yp)) < VISCO_REST && came_back(w) &&
+                w->nudge < VISCO_NUDGE_MAX) {
+                w->nudge *= 10;   /* relaxed back to the fold: pushed harder */
+                w->res.jumps_relaxed--;   /* the same jump, counted again as it starts */
+                int brc = start_flow(w);
+                if (brc != ADH_SUCCESS)
+                    return stop(w, brc);
+                continue;
+            }
             if (adh_visco_flow_speed(w, N_VGetArrayPointer(w->yp)) < VISCO_REST)
-                return land(w, t0);
+                return land(w, t0, 0);
             if (++w->jump_steps > (long)w->s.max_jump_steps) {
                 snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s did not come to rest", w->t_now);
                 return stop(w, ADH_ESTALL);

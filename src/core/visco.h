@@ -113,6 +113,9 @@ struct adh_visco {
      * a relaxation's start y' */
     double *yfold, *ypfold, *ywork, *yprev, *ypprev, *ypflow;
     long jump_steps;     /* steps of the crossing so far */
+    double nudge;        /* a relaxed jump's push off its fold, per z0 */
+    double t_resumed;    /* when the path last went on through a root of t'
+                            that was no fold (resume) */
     int have_prev;       /* a crossing's last good point is kept (yprev) */
     double s_prev;       /* and where it was */
     adh_visco_event pending; /* the jump being crossed: its side before */
@@ -212,8 +215,8 @@ void adh_visco_flow_jtimes(adh_visco *w, const double *y, const double *v, doubl
 int adh_visco_flow_psetup(adh_visco *w, const double *y, double cj);
 void adh_visco_flow_psolve(adh_visco *w, const double *r, double *z);
 /* The relaxation's start from the fold y nudged along the path's tangent
- * d; y' = -(the residual). */
-int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double *y0, double *yp0);
+ * d (nudge times it); y' = -(the residual). */
+int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double nudge, double *y0, double *yp0);
 /* How fast it still moves: max over u (and h0) of |y'| / atol, per unit
  * pseudo-time. */
 double adh_visco_flow_speed(const adh_visco *w, const double *d);

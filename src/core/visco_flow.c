@@ -22,9 +22,6 @@
 
 #include "adhere/status.h"
 
-/* The nudge off the fold, in units of z0 along the path's metric. */
-#define VISCO_NUDGE 1e-3
-
 int adh_visco_flow_res(adh_visco *w, const double *y, const double *d, double *r)
 {
     size_t n = w->n;
@@ -112,13 +109,13 @@ void adh_visco_flow_psolve(adh_visco *w, const double *r, double *z)
         z[w->IH] = xi[0];
 }
 
-int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double *y0, double *yp0)
+int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double nudge, double *y0, double *yp0)
 {
     memcpy(y0, y, w->len * sizeof *y);
     for (size_t i = 0; i < w->n; i++)
-        y0[i] += VISCO_NUDGE * d[i];
+        y0[i] += nudge * d[i];
     if (w->spring)
-        y0[w->IH] += VISCO_NUDGE * d[w->IH];
+        y0[w->IH] += nudge * d[w->IH];
     memset(yp0, 0, w->len * sizeof *yp0);
     if (adh_visco_flow_res(w, y0, yp0, w->bord) != 0)
         return ADH_ESTALL;
