@@ -182,7 +182,7 @@ void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, si
     /* zero in the prefix its quantity is read in: "0 nm" beside "2.85 nm" */
     static const char *const zero_prefix[] = {
         [ADH_Q_NONE] = "", [ADH_Q_LENGTH] = "n", [ADH_Q_PRESSURE] = "", [ADH_Q_ENERGY] = "",
-        [ADH_Q_SPEED] = "u", [ADH_Q_FORCE] = "n",
+        [ADH_Q_SPEED] = "u", [ADH_Q_FORCE] = "n", [ADH_Q_TIME] = "", [ADH_Q_STIFFNESS] = "",
     };
     if (value == 0) {
         snprintf(buf, len, "0%s%s%s", q == ADH_Q_NONE ? "" : " ", zero_prefix[q], unit_sym[q]);

@@ -209,7 +209,8 @@ const adh_config_key *adh_config_key_at(size_t i);
 const char *adh_config_key_unit(const adh_config_key *k, double value, double *factor);
 
 /* Edit distance of two names, letters compared without case ("Turn" and
- * "turns": 1): for "did you mean". */
+ * "turns": 1), two neighbours swapped one edit ("trun" and "turn": 1): for
+ * "did you mean". */
 size_t adh_config_name_distance(const char *a, const char *b);
 /* The key a scene's unknown name in section most likely meant: a scene
  * key in that section within a small edit distance, else the same name in
