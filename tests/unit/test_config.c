@@ -88,7 +88,7 @@ static void refusals(void)
     ok(adh_config_set(&c, "material.sigma", "3", why, sizeof why) != 0 && strstr(why, "material.sigma"),
        "no key material.sigma: %s", why);
     ok(set(&c, "sweep.E", "1GPa,2GPa") == 0 && adh_config_set(&c, "sweep.sigma", "1", why, sizeof why) != 0 &&
-       strstr(why, "one parameter"), "a sweep varies one parameter: %s", why);
+       strstr(why, "both set the modulus"), "sigma and E do not go together (sigma sets E): %s", why);
 }
 
 /* Turns imply unloading; the grid asked for is kept beside the one chosen. */
