@@ -166,13 +166,35 @@ static int curves(adh_session *ses, const adh_config *cfg, const cli_studyrow *r
     return adh_session_end(ses, "curves.png", why, whylen);
 }
 
+/* Without map = COLUMN: the pull-off, or where no run has one (rigid
+ * spheres do not unload, an approach stops at contact) the first of these
+ * that some run has. */
+static const char *auto_column(const cli_studyrow *rows, size_t n)
+{
+    static const char *const cols[] = { "pulloff_F", "max_load", "jump_in_h0", "h_before" };
+    for (size_t k = 0; k < sizeof cols / sizeof cols[0]; k++) {
+        int c = cli_studyrow_column(cols[k]);
+        for (size_t i = 0; i < n; i++)
+            if (isfinite(rows[i].v[c]))
+                return cols[k];
+    }
+    return cols[0];
+}
+
 int cli_mapfig_draw(adh_session *ses, const adh_config *cfg, const cli_studyrow *rows, size_t n, int as_map,
                     char *why, size_t whylen)
 {
-    const char *col = cfg->sweep.map[0] ? cfg->sweep.map : "pulloff_F";
+    const char *col = cfg->sweep.map[0] ? cfg->sweep.map : auto_column(rows, n);
     int c = cli_studyrow_column(col);
     if (c < 0 || !cfg->sweep.naxes || (as_map && cfg->sweep.naxes < 2)) {
         snprintf(why, whylen, "no %s of %s to draw", as_map ? "map" : "curves", col);
+        return -1;
+    }
+    size_t finite = 0;
+    for (size_t i = 0; i < n; i++)
+        finite += isfinite(rows[i].v[c]) != 0;
+    if (!finite) {
+        snprintf(why, whylen, "no run has a %s to draw (every one is nan: see sweep.tsv's status)", col);
         return -1;
     }
     double scale;

@@ -9,8 +9,9 @@
 #include "plot/session.h"
 #include "scene/config.h"
 
-/* The map (as_map) or the curves of cfg->sweep.map (pulloff_F by default)
- * from rows[0..n) through ses. 0, or -1 with why. */
+/* The map (as_map) or the curves of cfg->sweep.map (by default the
+ * pull-off, or, where no run has one, the first of max_load, jump_in_h0,
+ * h_before some run has) from rows[0..n) through ses. 0, or -1 with why. */
 int cli_mapfig_draw(adh_session *ses, const adh_config *cfg, const cli_studyrow *rows, size_t n, int as_map,
                     char *why, size_t whylen);
 

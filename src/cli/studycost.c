@@ -137,10 +137,11 @@ void cli_studycost_print(FILE *f, const cli_studycost *e)
         return;
     }
     cli_progress_duration(e->seconds, t, sizeof t);
-    fprintf(f, "expected time: about %s on %d core%s (a pilot of the first and last drives%s%s: %.0f iterations a "
-            "step, %.3g ms an iteration here; a guide within a factor of about 3)\n", t, e->jobs, e->jobs == 1 ? "" : "s",
-            e->pilot_nodes ? " on a coarse grid" : "", e->pilot_cut ? ", cut at 3 s each" : "", e->per_step,
-            e->t_iter * 1e3);
+    fprintf(f, "expected time: about %s on %d core%s (a pilot of the first and last drives%s%s", t, e->jobs,
+            e->jobs == 1 ? "" : "s", e->pilot_nodes ? " on a coarse grid" : "", e->pilot_cut ? ", cut at 3 s each" : "");
+    if (e->per_step > 0)
+        fprintf(f, ": %.0f iterations a step, %.3g ms an iteration here", e->per_step, e->t_iter * 1e3);
+    fprintf(f, "; a guide within a factor of about 3)\n");
 }
 
 /* The file system of dir, or of its nearest parent that exists. */
@@ -192,7 +193,7 @@ int cli_studycost_fits(const adh_config *cfg, const adh_plan *p, FILE *f, char *
         return -1;
     }
     struct rlimit rl;
-    double table = 2 * 1400.0 * (double)p->nruns / 2;
+    double table = ADH_PLAN_ROW_BYTES * (double)p->nruns;
     if (getrlimit(RLIMIT_FSIZE, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && table > (double)rl.rlim_cur) {
         snprintf(why, whylen, "sweep.tsv would be about %.3g MB, past the file size limit of %.3g MB (ulimit -f)",
                  table / 1e6, (double)rl.rlim_cur / 1e6);

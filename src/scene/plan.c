@@ -210,14 +210,14 @@ static void plan_study_files(const adh_config *cfg, adh_plan *p)
 }
 
 /* About how much the study writes: each run's row twice (runs.tsv and
- * sweep.tsv, ~60 numbers), and with run-K directories their tables (a
+ * sweep.tsv: ~50 numbers, 550 bytes measured, counted 800), and with run-K directories their tables (a
  * force row per step) and figures. */
 static void plan_bytes(const adh_config *cfg, adh_plan *p)
 {
     p->run_dirs = cfg->sweep.naxes ? adh_sweep_run_dirs(&cfg->sweep) : 1;
     double steps = (double)(p->loading_steps + p->unloading_steps);
     double runs = (double)p->nruns;
-    p->bytes = cfg->sweep.naxes ? 2 * 1400.0 * runs + 4096 : 0;
+    p->bytes = cfg->sweep.naxes ? 2 * ADH_PLAN_ROW_BYTES * runs + 4096 : 0;
     if (p->run_dirs) {
         int figs = 0;
         for (unsigned b = 1; b <= ADH_PLOT_BULGE; b <<= 1)

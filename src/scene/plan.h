@@ -12,6 +12,7 @@
 #define ADH_PLAN_MAX_NOTES 32
 #define ADH_PLAN_MAX_RUNS 32      /* runs listed one by one; the totals count them all */
 #define ADH_PLAN_MAX_KERNELS 64   /* distinct grids told apart (more are counted as new) */
+#define ADH_PLAN_ROW_BYTES 800.0  /* a run's row of sweep.tsv, at most (about 550 measured) */
 
 typedef struct adh_plan_note {
     char what[64];
