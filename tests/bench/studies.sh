@@ -14,14 +14,7 @@ if [ "${STUDIES_SMOKE:-0}" = 1 ]; then
 else
     flags="-N 400 --force --eps=2pm"
 fi
-cat >"$tmp/map.scene" <<'S'
-[output]
-plots = none
-
-[sweep]
-sigma = 1.5, 3, 5, 7.5
-turns = -0.5nm, -1nm, -1.5nm, -2nm
-S
+cp "$(dirname "$0")/../cli/map.scene" "$tmp/map.scene"
 now() { date +%s.%N; }
 echo "studies: a 4 x 4 map (sigma x turn: 16 runs, 4 drives), $flags"
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"

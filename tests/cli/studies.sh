@@ -10,14 +10,7 @@
 # and the plan's count, time and refusals.
 . "$(dirname "$0")/lib.sh"
 
-cat >"$TMP/map.scene" <<'S'
-[output]
-plots = none
-
-[sweep]
-sigma = 1.5, 3, 5, 7.5
-turns = -0.5nm, -1nm, -1.5nm, -2nm
-S
+cp "$(dirname "$0")/map.scene" "$TMP/map.scene"
 TINY="--batch -N 100 --force --eps=10pm"
 # the table without its timing column (seconds, the 15th) and without the
 # scene's path (the same file here)

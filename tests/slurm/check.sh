@@ -104,14 +104,7 @@ took=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN {printf "%.1f", b - a}')
 check "sinfo shows the node idle (after $took s)" [ "$state" = idle ]
 [ "$state" = idle ] || { sed 's/^/#   /' "$D"/log/*.log "$D"/log/*.out; finish; }
 
-cat >"$D/map.scene" <<'S'
-[output]
-plots = none
-
-[sweep]
-sigma = 1.5, 3, 5, 7.5
-turns = -0.5nm, -1nm, -1.5nm, -2nm
-S
+cp "$(dirname "$0")/../cli/map.scene" "$D/map.scene"
 FLAGS="-N 100 --force --eps=10pm"
 # shellcheck disable=SC2086
 out=$(ADHERE="$ADHERE" "$EXAMPLES/submit.sh" "$D/map.scene" "$D/study" 4 $FLAGS 2>&1)
