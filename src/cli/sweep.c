@@ -397,8 +397,10 @@ static size_t mark_interrupted(study_job *job)
         size_t m = adh_sweep_drive_runs(job->cfg, u, members);
         for (size_t j = 0; j < m; j++) {
             size_t i = members[j];
-            if (job->rows[i].done && strcmp(job->rows[i].status, "interrupted"))
+            if (job->rows[i].done) {   /* ended, or stopped mid-way (its tables say so) */
+                missing += !strcmp(job->rows[i].status, "interrupted");
                 continue;
+            }
             missing++;
             cli_studyrow_empty(&job->rows[i], job->cfg, i, "interrupted");
             if (!job->od || !job->run_dirs)
