@@ -126,7 +126,9 @@ static int values_fit(const adh_config *c, const adh_sweep_axis *a, char *why, s
     }
     *scratch = *c;
     int rc = 0;
-    for (size_t j = 0; j < a->n && rc == 0; j++) {
+    /* a range's values lie between its ends, which the key takes or not
+     * as they do (its limits are intervals): the ends are checked */
+    for (size_t j = 0; j < a->n && rc == 0; j = a->spacing == ADH_SWEEP_LIST || j + 1 == a->n ? j + 1 : a->n - 1) {
         char text[64], msg[400];
         double v = adh_sweep_value(a, j, text, sizeof text);
         if (strcmp(a->key, SIGMA) != 0 && adh_config_set(scratch, a->key, text, msg, sizeof msg) != 0) {
