@@ -271,12 +271,9 @@ int cli_figures_curve(int dirfd, size_t i, adh_run *run, char *why, size_t whyle
     char name[64];
     snprintf(name, sizeof name, "run-%zu/force.tsv", i + 1);
     adh_run_init(run);
-    int fd = openat(dirfd, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
+    FILE *f = adh_outdir_read(dirfd, name);
     if (!f) {
         snprintf(why, whylen, "cannot read %s: %s", name, strerror(errno));
-        if (fd >= 0)
-            close(fd);
         return -1;
     }
     char line[1024];

@@ -239,14 +239,11 @@ int cli_study_read(cli_study *st, adh_config *cfg, int dirfd, const char *path, 
 {
     memset(st, 0, sizeof *st);
     st->owned = 1;
-    int fd = openat(dirfd, "study.tsv", O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    if (fd < 0 && errno == ENOENT)
+    FILE *f = adh_outdir_read(dirfd, "study.tsv");
+    if (!f && errno == ENOENT)
         return 0;
-    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
     if (!f) {
         snprintf(why, whylen, "cannot read %.3000s/study.tsv: %s", path, strerror(errno));
-        if (fd >= 0)
-            close(fd);
         return -1;
     }
     char *line = NULL, fp[17] = "";
@@ -302,14 +299,11 @@ long cli_study_read_rows(const cli_study *st, int dirfd, const char *path, cli_s
                          size_t *partial_lines, char *why, size_t whylen)
 {
     *partial_lines = 0;
-    int fd = openat(dirfd, "runs.tsv", O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    if (fd < 0 && errno == ENOENT)
+    FILE *f = adh_outdir_read(dirfd, "runs.tsv");
+    if (!f && errno == ENOENT)
         return 0;
-    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
     if (!f) {
         snprintf(why, whylen, "cannot read %.3000s/runs.tsv: %s", path, strerror(errno));
-        if (fd >= 0)
-            close(fd);
         return -1;
     }
     char *line = NULL, mark[64];

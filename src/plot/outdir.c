@@ -696,6 +696,24 @@ int adh_outdir_fd(const adh_outdir *d)
     return d->fd;
 }
 
+FILE *adh_outdir_read(int dirfd, const char *name)
+{
+    int fd = openat(dirfd, name, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    struct stat st;
+    if (fd >= 0 && (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))) {
+        close(fd);
+        errno = EINVAL;   /* a pipe or device under the name: not adhere's */
+        return NULL;
+    }
+    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
+    if (!f && fd >= 0) {
+        int e = errno;
+        close(fd);
+        errno = e;
+    }
+    return f;
+}
+
 int adh_outdir_has(const adh_outdir *d, const char *name)
 {
     struct stat st;

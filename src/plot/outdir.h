@@ -46,6 +46,11 @@ int adh_outdir_clear(adh_outdir *d, char *why, size_t whylen);
  * (openat with O_NOFOLLOW); writes go through adh_outdir_write. */
 int adh_outdir_fd(const adh_outdir *d);
 
+/* name in the directory dirfd (a path below it: "run-3/force.tsv"), a
+ * regular file opened for reading without following a link at its last
+ * component; NULL with errno (ENOENT: none there). */
+FILE *adh_outdir_read(int dirfd, const char *name);
+
 /* Whether name in d is a file or directory the manifest proves adhere
  * wrote (and is still as it wrote it). */
 int adh_outdir_has(const adh_outdir *d, const char *name);
