@@ -100,6 +100,25 @@ static int map(adh_session *ses, const adh_config *cfg, const cli_studyrow *rows
     return adh_session_end(ses, "map.png", why, whylen);
 }
 
+/* An axis's values in a unit people read: lengths in nm, pressures in
+ * MPa or GPa, the rest in SI. */
+static double axis_scale(const adh_sweep_axis *x, const char **unit)
+{
+    double big = 0;
+    for (size_t j = 0; j < x->n; j++)
+        big = fmax(big, fabs(adh_sweep_value(x, j, NULL, 0)));
+    *unit = adh_quantity_unit((adh_quantity)x->quantity)[0] ? adh_quantity_unit((adh_quantity)x->quantity) : "1";
+    if (x->quantity == ADH_Q_LENGTH) {
+        *unit = "nm";
+        return 1e9;
+    }
+    if (x->quantity == ADH_Q_PRESSURE) {
+        *unit = big >= 1e9 ? "GPa" : "MPa";
+        return big >= 1e9 ? 1e-9 : 1e-6;
+    }
+    return 1;
+}
+
 /* The column against the last key: a curve for each value of the others
  * (their combination in the key). */
 static int curves(adh_session *ses, const adh_config *cfg, const cli_studyrow *rows, size_t n, int c,
@@ -118,9 +137,11 @@ static int curves(adh_session *ses, const adh_config *cfg, const cli_studyrow *r
         words |= isnan(v);
         positive &= v > 0;
     }
+    const char *unit;
+    double xs = axis_scale(x, &unit);
     for (size_t g = 0; g < ncurves; g++) {
         for (size_t j = 0; j < x->n; j++)
-            fprintf(f, "%.17g\t%.17g\n", words ? (double)j : adh_sweep_value(x, j, NULL, 0),
+            fprintf(f, "%.17g\t%.17g\n", words ? (double)j : adh_sweep_value(x, j, NULL, 0) * xs,
                     rows[g * x->n + j].v[c] * scale);
         fprintf(f, "\n\n");
     }
@@ -131,8 +152,7 @@ static int curves(adh_session *ses, const adh_config *cfg, const cli_studyrow *r
     adh_session_begin(ses, "curves.png", "curves.png");
     adh_gnuplot *gp = ses->gp;
     adh_gnuplot_cmd(gp, "set title \"%s against %s\" noenhanced", col, x->name);
-    adh_gnuplot_cmd(gp, "set xlabel \"%s (%s)\"", x->name, adh_quantity_unit((adh_quantity)x->quantity)[0]
-                    ? adh_quantity_unit((adh_quantity)x->quantity) : "1");
+    adh_gnuplot_cmd(gp, "set xlabel \"%s (%s)\" noenhanced", x->name, unit);
     adh_gnuplot_cmd(gp, "set ylabel \"%s\" noenhanced", label);
     if (words)
         index_tics(gp, "xtics", x);

@@ -149,6 +149,10 @@ check "... its ends exact and its middle the geometric mean, 10^8.5 Pa" \
     awk -F'\t' '!/^#/ && $1 == 1 && $4 != 10000000 {bad = 1} !/^#/ && $1 == 13 && $4 != 10000000000 {bad = 1}
                 !/^#/ && $1 == 7 {r = $4 / 316227766.01683795; if (r < 1 - 1e-15 || r > 1 + 1e-15) bad = 1} END {exit bad}' "$TMP/log/sweep.tsv"
 check "... with no run-K directory (--run-dirs=no)" sh -c "! ls -d '$TMP'/log/run-* >/dev/null 2>&1"
+"$ADHERE" --batch -q --mode=rigid --sweep='E=1GPa..4GPa,4' --sweep='z0=0.3nm,0.5nm' --sweep=plot=curves -o "$TMP/curves" 2>"$TMP/err"
+rc=$?
+check "plot = curves draws curves.png (rigid spheres: jump_in_h0 against z0, a curve per E; exit $rc $(head -c 200 "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && [ -s '$TMP/curves/curves.png' ] && [ ! -e '$TMP/curves/map.png' ]"
 "$ADHERE" --plan -N 100 --force --eps=10pm "$TMP/map.scene" --shard 2/3 -o "$TMP/p" >"$TMP/plan" 2>&1
 check "the plan counts the runs" grep -qx 'runs: 16' "$TMP/plan"
 check "... the study's product" grep -q '^study: 16 runs, every combination of the 2 keys (4 x 4' "$TMP/plan"
