@@ -38,6 +38,7 @@ typedef struct study_job {
     cli_kcache *kc;
     size_t *todo, ntodo, next;     /* the drives to step, in the order taken */
     cli_studyrow *rows;            /* every run's row: those done filled */
+    unsigned char *whole;          /* run i ended here, its tables whole (its figures maybe not) */
     adh_outdir *od;                /* NULL: sweep.tsv on standard output alone */
     int run_dirs;
     int rows_fd;                   /* runs.tsv, appended a row at a time; -1 none */
@@ -113,6 +114,7 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
     adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
     pthread_mutex_lock(&job->lock);
     job->rows[i] = row;
+    job->whole[i] = !run->interrupted && out != CLI_EXIT_USAGE;
     if (!run->interrupted && job->od)
         append_row(job, &row);
     job->exit_status = cli_runout_worse(job->exit_status, out);
@@ -398,7 +400,8 @@ static size_t mark_interrupted(study_job *job)
         for (size_t j = 0; j < m; j++) {
             size_t i = members[j];
             if (job->rows[i].done) {   /* ended, or stopped mid-way (its tables say so) */
-                missing += !strcmp(job->rows[i].status, "interrupted");
+                /* a run whose figures alone a signal stopped is no missing run */
+                missing += !strcmp(job->rows[i].status, "interrupted") && !job->whole[i];
                 continue;
             }
             missing++;
@@ -488,10 +491,13 @@ static void study_outputs(study_job *job, size_t missing)
 {
     const adh_config *cfg = job->cfg;
     size_t n = job->st->nruns;
-    char partial[160] = "", why[1024];
+    char partial[224] = "", why[1024];
     if (missing)
         snprintf(partial, sizeof partial, "interrupted by signal %d: %zu of %zu runs finished; the others say interrupted",
                  cli_interrupt_signal(), n - missing, n);
+    else if (cli_interrupt_signal())
+        snprintf(partial, sizeof partial, "interrupted by signal %d while the figures were drawn: every run finished, "
+                 "its tables whole; those whose figures were not drawn say interrupted", cli_interrupt_signal());
     int resolved;
     double hyst = cli_sweep_static_hysteresis(cfg, job->kc, &resolved);
     table_ctx t = { cfg, job->rows, partial, job->run_dirs, hyst, resolved };
@@ -520,7 +526,7 @@ static void closing(const study_job *job, double t_start, size_t missing)
     const adh_config *cfg = job->cfg;
     const cli_study *st = job->st;
     char t[32];
-    if (missing) {
+    if (missing || cli_interrupt_signal()) {
         fprintf(stderr, "adhere: interrupted by signal %d: %zu of %zu runs finished; %s says which (# PARTIAL)%s\n",
                 cli_interrupt_signal(), cli_study_shard_runs(st) - missing, cli_study_shard_runs(st),
                 st->shard_n > 1 ? "runs.tsv" : job->od ? "sweep.tsv and each run's summary.tsv" : "sweep.tsv",
@@ -671,10 +677,11 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
     study_job job = { .cfg = cfg, .st = &st, .od = od, .rows_fd = -1, .exit_status = CLI_EXIT_OK,
                       .run_dirs = od && adh_sweep_run_dirs(&cfg->sweep), .shared = st.ndrives < st.nruns };
     job.rows = calloc(st.nruns, sizeof *job.rows);
+    job.whole = calloc(st.nruns, sizeof *job.whole);
     job.todo = calloc(st.ndrives, sizeof *job.todo);
     adh_run_spec *grids = malloc(ADH_PLAN_MAX_KERNELS * sizeof *grids);
     size_t ngrids = 0;
-    int rc = !job.rows || !job.todo || !grids ? CLI_EXIT_SOLVER : 0;
+    int rc = !job.rows || !job.whole || !job.todo || !grids ? CLI_EXIT_SOLVER : 0;
     if (rc)
         snprintf(why, sizeof why, "out of memory for %zu runs", st.nruns);
     else
@@ -694,7 +701,7 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
         fprintf(stderr, "adhere: %s\n", why);
         if (job.rows_fd >= 0)
             adh_outdir_log_close(od, "runs.tsv", job.rows_fd);
-        free(job.rows), free(job.todo);
+        free(job.rows), free(job.whole), free(job.todo);
         return rc;
     }
     warn_unresolved(&job);
@@ -703,7 +710,7 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
         cli_interrupt_release();
         adh_outdir_log_close(od, "runs.tsv", job.rows_fd);
         cli_kcache_free(job.kc);
-        free(job.rows), free(job.todo);
+        free(job.rows), free(job.whole), free(job.todo);
         return rc;
     }
     pthread_mutex_init(&job.lock, NULL);
@@ -722,6 +729,6 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
     pthread_mutex_destroy(&job.lock);
     pthread_mutex_destroy(&job.dirs);
     cli_kcache_free(job.kc);
-    free(job.rows), free(job.todo);
+    free(job.rows), free(job.whole), free(job.todo);
     return job.exit_status;
 }
