@@ -7,7 +7,8 @@
 # shard still running or cut short (unless --allow-partial, which marks
 # the table # PARTIAL); two shards are never written into one directory;
 # runs that share a loading branch match the runs stepped alone; ranges
-# and the plan's count, time and refusals.
+# and the plan's count, time and refusals; an eps study merged has Figure
+# 7's static line (# static_hysteresis) as the whole study does.
 . "$(dirname "$0")/lib.sh"
 
 cp "$(dirname "$0")/map.scene" "$TMP/map.scene"
@@ -51,6 +52,19 @@ for k in $(seq 1 16); do
     [ -n "$s" ] && [ "$s" = "$m" ] || bad=1
 done
 check "each run's status in the merged table is its summary.tsv's (here: unresolved, --force)" [ "$bad" -eq 0 ]
+
+# --- an eps study's Figure 7: the merge draws the static curve's line too ---
+printf '[sweep]\neps = 10pm, 40pm\nplot = force\n' >"$TMP/eps.scene"
+EPS="--batch -q -R 1um -d 0.5nm --turn=-1nm"
+"$ADHERE" $EPS "$TMP/eps.scene" -o "$TMP/epsw" 2>"$TMP/err" &&
+    "$ADHERE" $EPS "$TMP/eps.scene" --shard=1/2 -o "$TMP/eps1" 2>>"$TMP/err" &&
+    "$ADHERE" $EPS "$TMP/eps.scene" --shard=2/2 -o "$TMP/eps2" 2>>"$TMP/err" &&
+    "$ADHERE" merge -q -o "$TMP/epsm" "$TMP/eps1" "$TMP/eps2" 2>>"$TMP/err"
+rc=$?
+check "an eps study whole and in 2 shards, merged (exit $rc: $(head -c 300 "$TMP/err"))" [ "$rc" -eq 0 ]
+check "... both tables give the static curve's loop (# static_hysteresis) and are the same but for timing" \
+    sh -c "grep -q '^# static_hysteresis: [0-9]' '$TMP/epsm/sweep.tsv' && untimed() { grep -v '^# scene:' \"\$1\" | cut -f1-14,16-; }; untimed '$TMP/epsw/sweep.tsv' >'$TMP/ea'; untimed '$TMP/epsm/sweep.tsv' >'$TMP/eb'; cmp -s '$TMP/ea' '$TMP/eb'"
+check "... and Figure 7 with its hysteresis panel in each" sh -c "[ -s '$TMP/epsw/force.png' ] && [ -s '$TMP/epsm/force.png' ]"
 
 # --- resumed: one run's result removed, the rerun steps that one alone ---
 # (in place: a copy of the directory is not adhere's, its manifest says)
