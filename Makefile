@@ -60,19 +60,29 @@ HARD_BIN = $(HARD_SRC:tests/hard/%.c=$(BUILD)/tests/hard-%)
 BENCH_SRC = $(wildcard tests/bench/*.c)
 BENCH_BIN = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/tests/bench-%)
 
-.PHONY: all deps run check check-asan check-fp check-fuzz check-slurm asan-build fuzz-build bench install \
+.PHONY: all deps run check check-asan check-fp check-fuzz check-slurm deps-slurm asan-build fuzz-build bench install \
         uninstall clean
 
 all: deps $(BIN)
 
-# Installs what is missing and nothing else: a no-op when every package is there.
-deps:
-	@missing=""; for p in $(DEBS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+# Installs what of the packages $(1) is missing and nothing else: a no-op
+# when every package is there.
+define install_debs
+	@missing=""; for p in $(1); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then \
-	  if [ "$$(id -u)" != 0 ]; then echo "adhere needs:$$missing (run 'make deps' as root, or apt-get install them)" >&2; exit 1; fi; \
+	  if [ "$$(id -u)" != 0 ]; then echo "adhere needs:$$missing (run 'make $@' as root, or apt-get install them)" >&2; exit 1; fi; \
 	  echo "installing:$$missing"; \
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null || exit 1; \
 	fi
+endef
+
+deps:
+	$(call install_debs,$(DEBS))
+
+# Slurm and munge for make check-slurm alone (no other target needs them).
+SLURM_DEBS = slurm-wlm munge
+deps-slurm:
+	$(call install_debs,$(SLURM_DEBS))
 
 $(BIN): $(APP_OBJ) $(LIBS)
 	@mkdir -p $(dir $@)
@@ -191,7 +201,7 @@ bench: all $(BENCH_BIN)
 # The Slurm example (share/adhere/examples) on a single-node Slurm this
 # target starts and stops (as root; installs slurm-wlm and munge, which
 # nothing else needs). About 10 s; not in `check` (docs/studies.md).
-check-slurm: all
+check-slurm: all deps-slurm
 	@ADHERE_BIN=$(abspath $(BIN)) tests/slurm/check.sh
 
 install: all

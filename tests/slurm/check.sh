@@ -1,8 +1,8 @@
 #!/bin/sh
 # make check-slurm: the shipped Slurm example (share/adhere/examples) on a
-# single-node Slurm started here. As root: installs slurm-wlm and munge
-# when missing, writes a minimal slurm.conf (one node, localhost, 2 CPUs,
-# no cgroups) into a private directory, starts munged (its own socket and
+# single-node Slurm started here. As root (make deps-slurm installs
+# slurm-wlm and munge first), writes a minimal slurm.conf (one node,
+# localhost, 2 CPUs, no cgroups) into a private directory, starts munged (its own socket and
 # key copy), slurmctld -D and slurmd -D in the background, waits for sinfo
 # to show the node idle (polling, no fixed delay), submits a 16-run map as
 # 4 shards through submit.sh, waits for the merge job to leave the queue,
@@ -24,16 +24,10 @@ if [ "$(id -u)" != 0 ]; then
     not_ok "make check-slurm starts Slurm's daemons as root: run it as root"
     finish
 fi
-missing=""
-for p in slurm-wlm munge; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
-if [ -n "$missing" ]; then
-    echo "# installing:$missing"
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $missing >/dev/null
-fi
 for c in munged slurmctld slurmd sinfo sbatch squeue scontrol; do
     command -v "$c" >/dev/null 2>&1 || PATH=$PATH:/usr/sbin
 done
-check "slurm-wlm and munge are installed" sh -c 'command -v slurmctld && command -v munged' >/dev/null
+check "slurm-wlm and munge are installed (make deps-slurm)" sh -c 'command -v slurmctld && command -v munged' >/dev/null
 
 D=$(mktemp -d /tmp/adhere-slurm-XXXXXX)
 chmod 755 "$D"
