@@ -569,7 +569,7 @@ static void warn_unresolved(const study_job *job)
             adh_grid_check(&rc.mat, adh_config_grid_use(&rc), rc.grid.use.nodes, adh_config_spacing(&rc), &gr);
             if (gr.resolved)
                 continue;
-            if (said++ == 10) {
+            if (said++ >= 10) {
                 more++;
                 continue;
             }
