@@ -254,22 +254,6 @@ static int out_is_named(const merge *m, char *why, size_t whylen)
     return 2;
 }
 
-typedef struct merged_table {
-    const adh_config *cfg;
-    const cli_studyrow *rows;
-    const char *partial;
-    double static_hysteresis;
-    int static_resolved;
-} merged_table;
-
-static int table(FILE *f, const void *ctx)
-{
-    const merged_table *t = ctx;
-    cli_studyrow_table(f, t->cfg, t->rows, t->partial, adh_sweep_run_dirs(&t->cfg->sweep), t->static_hysteresis,
-                       t->static_resolved);
-    return 0;
-}
-
 /* sweep.tsv (standard output without -o) and the study's figure. An exit status. */
 static int write_out(merge *m, const char *partial)
 {
@@ -290,13 +274,13 @@ static int write_out(merge *m, const char *partial)
         cli_interrupt_release();
         cli_kcache_free(kc);
     }
-    merged_table t = { cfg, m->rows, partial, hyst, resolved };
+    cli_studyrow_sweep t = { cfg, m->rows, partial, adh_sweep_run_dirs(&cfg->sweep), hyst, resolved };
     char why[1024];
     if (!m->out) {
-        table(stdout, &t);
+        cli_studyrow_table(stdout, &t);
         return fflush(stdout) == 0 && !ferror(stdout) ? CLI_EXIT_OK : CLI_EXIT_USAGE;
     }
-    if (adh_outdir_write(m->out, "sweep.tsv", table, &t, why, sizeof why) != 0) {
+    if (adh_outdir_write(m->out, "sweep.tsv", cli_studyrow_table, &t, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         return CLI_EXIT_USAGE;
     }

@@ -314,9 +314,14 @@ int cli_studyrow_parse(const adh_config *cfg, const char *line, cli_studyrow *ro
     return 0;
 }
 
-void cli_studyrow_table(FILE *f, const adh_config *cfg, const cli_studyrow *rows, const char *partial, int run_dirs,
-                        double static_hysteresis, int static_resolved)
+int cli_studyrow_table(FILE *f, const void *ctx)
 {
+    const cli_studyrow_sweep *t = ctx;
+    const adh_config *cfg = t->cfg;
+    const cli_studyrow *rows = t->rows;
+    const char *partial = t->partial;
+    double static_hysteresis = t->static_hysteresis;
+    int run_dirs = t->run_dirs, static_resolved = t->static_resolved;
     const adh_sweep *s = &cfg->sweep;
     fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (%s), SI units (m, N, Pa, s)\n",
             run_dirs ? "run-K/ holds its tables" : "run_dirs = no: no run-K/");
@@ -348,4 +353,5 @@ void cli_studyrow_table(FILE *f, const adh_config *cfg, const cli_studyrow *rows
     size_t n = adh_config_nruns(cfg);
     for (size_t i = 0; i < n; i++)
         cli_studyrow_write(f, cfg, &rows[i]);
+    return 0;
 }

@@ -49,12 +49,21 @@ int cli_studyrow_is_header(const adh_config *cfg, const char *line);
  * not one of cfg's rows (a column short, a number that does not read, a
  * run out of range, swept values not the run's). */
 int cli_studyrow_parse(const adh_config *cfg, const char *line, cli_studyrow *row);
-/* sweep.tsv: its comment lines (the version, the scene, partial when not
- * NULL or "": why some rows have no result, and unless NAN the static
- * curve's loop of an eps sweep's Figure 7 and whether its grid resolved
- * it), the header and a row for every run of cfg's study (rows[i] run i). */
-void cli_studyrow_table(FILE *f, const adh_config *cfg, const cli_studyrow *rows, const char *partial, int run_dirs,
-                        double static_hysteresis, int static_resolved);
+/* What sweep.tsv is made of: cfg's study, rows[i] run i's row, partial
+ * (NULL or "": none) why some rows have no result, run_dirs whether run-K/
+ * are written, static_hysteresis unless NAN the static curve's loop of an
+ * eps sweep's Figure 7 and static_resolved whether its grid resolved it. */
+typedef struct cli_studyrow_sweep {
+    const adh_config *cfg;
+    const cli_studyrow *rows;
+    const char *partial;
+    int run_dirs;
+    double static_hysteresis;
+    int static_resolved;
+} cli_studyrow_sweep;
+/* sweep.tsv from t (a cli_studyrow_sweep): its comment lines, the header
+ * and a row for every run; an adh_outdir_write writer. 0. */
+int cli_studyrow_table(FILE *f, const void *t);
 /* The column name's number index (CLI_ROW_*), or -1 (a word, or none). */
 int cli_studyrow_column(const char *name);
 /* Whether a row's status says the run has its result: anything but

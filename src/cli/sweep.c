@@ -441,22 +441,6 @@ static int row_exit(const adh_config *cfg, const cli_studyrow *row)
     return !strcmp(row->status, "output incomplete") ? CLI_EXIT_PLOT : CLI_EXIT_SOLVER;
 }
 
-typedef struct table_ctx {
-    const adh_config *cfg;
-    const cli_studyrow *rows;
-    const char *partial;
-    int run_dirs;
-    double static_hysteresis;
-    int static_resolved;
-} table_ctx;
-
-static int sweep_table(FILE *f, const void *ctx)
-{
-    const table_ctx *t = ctx;
-    cli_studyrow_table(f, t->cfg, t->rows, t->partial, t->run_dirs, t->static_hysteresis, t->static_resolved);
-    return 0;
-}
-
 double cli_sweep_static_hysteresis(const adh_config *cfg, cli_kcache *kc, int *resolved)
 {
     *resolved = 0;
@@ -500,12 +484,12 @@ static void study_outputs(study_job *job, size_t missing)
                  "its tables whole; those whose figures were not drawn say interrupted", cli_interrupt_signal());
     int resolved;
     double hyst = cli_sweep_static_hysteresis(cfg, job->kc, &resolved);
-    table_ctx t = { cfg, job->rows, partial, job->run_dirs, hyst, resolved };
+    cli_studyrow_sweep t = { cfg, job->rows, partial, job->run_dirs, hyst, resolved };
     if (!job->od) {
-        sweep_table(stdout, &t);
+        cli_studyrow_table(stdout, &t);
         return;
     }
-    if (adh_outdir_write(job->od, "sweep.tsv", sweep_table, &t, why, sizeof why) != 0) {
+    if (adh_outdir_write(job->od, "sweep.tsv", cli_studyrow_table, &t, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
         job->exit_status = cli_runout_worse(job->exit_status, CLI_EXIT_USAGE);
         return;
