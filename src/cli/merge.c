@@ -273,6 +273,11 @@ static int write_out(merge *m, const char *partial)
         hyst = cli_sweep_static_hysteresis(cfg, kc, &resolved);
         cli_interrupt_release();
         cli_kcache_free(kc);
+        if (cli_interrupt_signal()) {   /* a table without its line would pass for the whole study's */
+            fprintf(stderr, "adhere: interrupted by signal %d during the static curve for Figure 7's line: nothing "
+                    "written\n", cli_interrupt_signal());
+            return cli_interrupt_exit();
+        }
     }
     cli_studyrow_sweep t = { cfg, m->rows, partial, adh_sweep_run_dirs(&cfg->sweep), hyst, resolved };
     char why[1024];

@@ -476,14 +476,18 @@ static void study_outputs(study_job *job, size_t missing)
     const adh_config *cfg = job->cfg;
     size_t n = job->st->nruns;
     char partial[224] = "", why[1024];
-    if (missing)
-        snprintf(partial, sizeof partial, "interrupted by signal %d: %zu of %zu runs finished; the others say interrupted",
-                 cli_interrupt_signal(), n - missing, n);
-    else if (cli_interrupt_signal())
-        snprintf(partial, sizeof partial, "interrupted by signal %d while the figures were drawn: every run finished, "
-                 "its tables whole; those whose figures were not drawn say interrupted", cli_interrupt_signal());
     int resolved;
     double hyst = cli_sweep_static_hysteresis(cfg, job->kc, &resolved);
+    int sig = cli_interrupt_signal();   /* also one that stopped the static curve */
+    if (missing)
+        snprintf(partial, sizeof partial, "interrupted by signal %d: %zu of %zu runs finished; the others say interrupted",
+                 sig, n - missing, n);
+    else if (sig && isnan(hyst) && adh_sweep_fig7_panel(cfg) && cfg->output.plot)
+        snprintf(partial, sizeof partial, "interrupted by signal %d: every run finished, its tables whole; not the "
+                 "static curve for Figure 7's line", sig);
+    else if (sig)
+        snprintf(partial, sizeof partial, "interrupted by signal %d while the figures were drawn: every run finished, "
+                 "its tables whole; those whose figures were not drawn say interrupted", sig);
     cli_studyrow_sweep t = { cfg, job->rows, partial, job->run_dirs, hyst, resolved };
     if (!job->od) {
         cli_studyrow_table(stdout, &t);
@@ -494,7 +498,7 @@ static void study_outputs(study_job *job, size_t missing)
         job->exit_status = cli_runout_worse(job->exit_status, CLI_EXIT_USAGE);
         return;
     }
-    if (!cfg->output.plot || job->exit_status != CLI_EXIT_OK || adh_sweep_plot_kind(&cfg->sweep) == ADH_SWEEP_PLOT_NONE)
+    if (!cfg->output.plot || job->exit_status != CLI_EXIT_OK || sig || adh_sweep_plot_kind(&cfg->sweep) == ADH_SWEEP_PLOT_NONE)
         return;
     int fd = adh_outdir_fd(job->od);
     cli_figures_curves curves = { &fd, 1 };
