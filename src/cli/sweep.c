@@ -32,6 +32,8 @@
 /* OpenBLAS's own threads would fight the sweep's for the same cores. */
 void openblas_set_num_threads(int n) __attribute__((weak));   /* none in the reference BLAS */
 
+#define ETA_MAX_DRIVES 2000
+
 typedef struct study_job {
     const adh_config *cfg;
     const cli_study *st;
@@ -46,6 +48,8 @@ typedef struct study_job {
     size_t done, total;            /* runs finished now, runs to step now */
     int exit_status;
     double t0;
+    adh_plan_progress *eta;        /* todo[a]'s expected cost and progress (NULL: by runs alone) */
+    int jobs;                      /* drives at once */
     pthread_mutex_t lock;          /* the queue, rows, runs.tsv, messages */
     pthread_mutex_t dirs;          /* od itself: a run-K made (its manifest) */
 } study_job;
@@ -78,6 +82,25 @@ static void append_row(study_job *job, const cli_studyrow *row)
         job->exit_status = CLI_EXIT_USAGE;
     }
     free(text);
+}
+
+/* "67 %, about 5 min left": the drives weighed by their expected
+ * iterations (a run at a fifth of the eps takes five times as long), under
+ * way and waiting shared out over the jobs; by runs alone past
+ * ETA_MAX_DRIVES (job->lock held). */
+static void progress_text(const study_job *job, char *buf, size_t len)
+{
+    if (!job->eta) {
+        cli_progress_text(job->done, job->total, adh_clock_seconds() - job->t0, buf, len);
+        return;
+    }
+    double all = 0, done = 0;
+    for (size_t a = 0; a < job->ntodo; a++) {
+        all += job->eta[a].cost;
+        done += job->eta[a].state == 2 ? job->eta[a].cost : 0;
+    }
+    double left = adh_plan_time_left(job->eta, job->ntodo, job->jobs, adh_clock_seconds(), 0);
+    cli_progress_left(all > 0 ? done / all : 1, job->done < job->total ? left : NAN, buf, len);
 }
 
 /* Run i (specification spec) ended: its run-K, its row, a line on stderr. */
@@ -120,7 +143,7 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
     job->exit_status = cli_runout_worse(job->exit_status, out);
     job->done++;
     if (!cfg->output.quiet) {
-        cli_progress_text(job->done, job->total, adh_clock_seconds() - job->t0, pr, sizeof pr);
+        progress_text(job, pr, sizeof pr);
         fprintf(stderr, "adhere: run %zu of %zu (%s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
                 i + 1, job->st->nruns, which, run->interrupted ? "interrupted" : row.status, run->nrows,
                 run->iterations, run->seconds, job->done, job->total, pr);
@@ -209,9 +232,10 @@ static void share_out(study_job *job, const adh_run_spec *ds, const adh_run *run
     }
 }
 
-static void step_drive(study_job *job, size_t u)
+/* The drive todo[a]. */
+static void step_drive(study_job *job, size_t a)
 {
-    size_t members[ADH_MAX_TURNS], nodes;
+    size_t u = job->todo[a], members[ADH_MAX_TURNS], nodes;
     size_t n = adh_sweep_drive_runs(job->cfg, u, members);
     adh_run_spec ds;
     adh_sweep_drive_spec(job->cfg, u, &ds);
@@ -219,7 +243,19 @@ static void step_drive(study_job *job, size_t u)
     adh_static_result sres;
     adh_run_init(&run);
     memset(&sres, 0, sizeof sres);
+    if (job->eta) {
+        pthread_mutex_lock(&job->lock);
+        job->eta[a].state = 1;
+        job->eta[a].started = adh_clock_seconds();
+        pthread_mutex_unlock(&job->lock);
+    }
     int st = step_cached(job, &ds, &run, &sres, &nodes);
+    if (job->eta) {
+        pthread_mutex_lock(&job->lock);
+        job->eta[a].state = 2;
+        job->eta[a].seconds = adh_clock_seconds() - job->eta[a].started;
+        pthread_mutex_unlock(&job->lock);
+    }
     if (!job->shared)
         finished(job, members[0], &ds, &run, &sres, st);
     else
@@ -233,11 +269,11 @@ static void *worker(void *arg)
     for (;;) {
         pthread_mutex_lock(&job->lock);
         int more = job->next < job->ntodo && !cli_interrupt_signal();
-        size_t u = more ? job->todo[job->next++] : 0;
+        size_t a = more ? job->next++ : 0;
         pthread_mutex_unlock(&job->lock);
         if (!more)
             return NULL;
-        step_drive(job, u);
+        step_drive(job, a);
     }
 }
 
@@ -600,6 +636,16 @@ static int first_kernel(study_job *job)
 static void step_all(study_job *job, int jobs)
 {
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
+    /* each drive's expected cost, for the time left: its iterations in
+     * relaxation (adh_plan_iterations), else a step each; O(drives) a
+     * progress line, so for a few thousand drives at most */
+    job->jobs = jobs;
+    job->eta = job->ntodo <= ETA_MAX_DRIVES ? calloc(job->ntodo ? job->ntodo : 1, sizeof *job->eta) : NULL;
+    for (size_t a = 0; job->eta && a < job->ntodo; a++) {
+        adh_run_spec ds;
+        adh_sweep_drive_spec(job->cfg, job->todo[a], &ds);
+        job->eta[a].cost = ds.mode == ADH_MODE_RELAX ? adh_plan_iterations(&ds) : 1.0;
+    }
     int started = 0;
     if (jobs > 1 && openblas_set_num_threads)
         openblas_set_num_threads(1);
@@ -614,6 +660,8 @@ static void step_all(study_job *job, int jobs)
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     free(threads);
+    free(job->eta);
+    job->eta = NULL;
 }
 
 /* Rows, the drives to step, runs.tsv: the study ready to step. 0, or an exit status. */
