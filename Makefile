@@ -14,7 +14,7 @@ WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wformat-truncation=2
 PKGS     = gsl ncursesw inih openblas
 DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux \
            liblapack-dev libblas-dev liblapacke-dev \
-           clang libclang-rt-14-dev libhmat-oss-dev locales libsundials-dev
+           clang libclang-rt-14-dev libhmat-oss-dev locales libsundials-dev parallel
 
 # GSL through OpenBLAS's CBLAS and LAPACK (dgetrf), not the reference
 # gslcblas: several times faster on the dense kernel products and LU that
@@ -60,19 +60,29 @@ HARD_BIN = $(HARD_SRC:tests/hard/%.c=$(BUILD)/tests/hard-%)
 BENCH_SRC = $(wildcard tests/bench/*.c)
 BENCH_BIN = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/tests/bench-%)
 
-.PHONY: all deps run check check-asan check-fp check-fuzz asan-build fuzz-build bench install \
+.PHONY: all deps run check check-asan check-fp check-fuzz check-slurm deps-slurm asan-build fuzz-build bench install \
         uninstall clean
 
 all: deps $(BIN)
 
-# Installs what is missing and nothing else: a no-op when every package is there.
-deps:
-	@missing=""; for p in $(DEBS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+# Installs what of the packages $(1) is missing and nothing else: a no-op
+# when every package is there.
+define install_debs
+	@missing=""; for p in $(1); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then \
-	  if [ "$$(id -u)" != 0 ]; then echo "adhere needs:$$missing (run 'make deps' as root, or apt-get install them)" >&2; exit 1; fi; \
+	  if [ "$$(id -u)" != 0 ]; then echo "adhere needs:$$missing (run 'make $@' as root, or apt-get install them)" >&2; exit 1; fi; \
 	  echo "installing:$$missing"; \
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null || exit 1; \
 	fi
+endef
+
+deps:
+	$(call install_debs,$(DEBS))
+
+# Slurm and munge for make check-slurm alone (no other target needs them).
+SLURM_DEBS = slurm-wlm munge
+deps-slurm:
+	$(call install_debs,$(SLURM_DEBS))
 
 $(BIN): $(APP_OBJ) $(LIBS)
 	@mkdir -p $(dir $@)
@@ -188,13 +198,21 @@ check-fuzz: fuzz-build
 bench: all $(BENCH_BIN)
 	@tests/bench/run.sh $(BUILD)
 
+# The Slurm example (share/adhere/examples) on a single-node Slurm this
+# target starts and stops (as root; installs slurm-wlm and munge, which
+# nothing else needs). About 10 s; not in `check` (docs/studies.md).
+check-slurm: all deps-slurm
+	@ADHERE_BIN=$(abspath $(BIN)) tests/slurm/check.sh
+
 install: all
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(DATADIR)/scenes $(DESTDIR)$(DATADIR)/gnuplot $(DESTDIR)$(DATADIR)/data \
-	  $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
+	  $(DESTDIR)$(DATADIR)/examples $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
 	install -m 755 $(BIN) $(DESTDIR)$(BINDIR)/adhere
 	for f in share/adhere/scenes/*.scene; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/scenes/; done; true
 	for f in share/adhere/gnuplot/*.gp; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/gnuplot/; done; true
 	for f in share/adhere/data/*.tsv; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(DATADIR)/data/; done; true
+	install -m 755 share/adhere/examples/study.sbatch share/adhere/examples/merge.sbatch \
+	  share/adhere/examples/submit.sh $(DESTDIR)$(DATADIR)/examples/
 	install -m 644 man/adhere.1 $(DESTDIR)$(MANDIR)/man1/adhere.1
 	[ ! -e man/adhere-scene.5 ] || install -m 644 man/adhere-scene.5 $(DESTDIR)$(MANDIR)/man5/adhere-scene.5
 

@@ -63,6 +63,17 @@ int adh_run_separated(const adh_run *run, char *why, size_t whylen);
  * below h_star, eq 24's gap at the jump). An empty run is not asked: 1. */
 int adh_run_touched(const adh_run *run, double h_star, char *why, size_t whylen);
 
+/* The run a drive of turn t alone would have recorded, from src, whose
+ * drive stepped several turns (one loading branch, an unloading branch
+ * from each): its loading rows down to the turn, the turn's unloading
+ * branch as path 1, the profiles on them (n values each, the grid's
+ * nodes), the jump-in when it came before the turn, and its counts summed
+ * over those rows. Status and interruption are the caller's to set. The
+ * same numbers as the turn's own run when the drive stepped to the same
+ * positions (shallower turns on the lattice start - k d), else within the
+ * solver's tolerance. ADH_SUCCESS or ADH_ENOMEM (out then empty). */
+int adh_run_turn(const adh_run *src, size_t t, size_t n, adh_run *out);
+
 /* The row index that follows / precedes row i on the same path, or -1. */
 long adh_run_next_on_path(const adh_run *run, size_t i);
 long adh_run_prev_on_path(const adh_run *run, size_t i);

@@ -346,20 +346,21 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     return status;
 }
 
-int cli_batch_main(const cli_options *cli)
+int cli_batch_main(cli_options *cli)
 {
     const adh_config *cfg = &cli->cfg;
     double t_start = adh_clock_seconds();
     char why[1024];
     adh_outdir *od = NULL;
-    /* a directory never mixes two runs: the earlier run's files go first,
-     * and another's files under adhere's names refuse it */
-    if (cfg->output.dir[0] &&
-        !(od = adh_outdir_open(cfg->output.dir, cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why))) {
+    /* a directory never mixes two runs: the earlier run's files go first
+     * (a study keeps them until it knows they are not its own: it resumes
+     * itself), and another's files under adhere's names refuse it */
+    unsigned flags = (cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0) | (cfg->sweep.naxes ? ADH_OUTDIR_KEEP : 0);
+    if (cfg->output.dir[0] && !(od = adh_outdir_open(cfg->output.dir, flags, why, sizeof why))) {
         fprintf(stderr, "adhere: %s\n", why);
         return CLI_EXIT_USAGE;
     }
-    int rc = cfg->sweep.kind != ADH_SWEEP_NONE ? cli_sweep_main(cli, od) : run_batch(cli, od, t_start);
+    int rc = cfg->sweep.naxes ? cli_sweep_main(cli, od) : run_batch(cli, od, t_start);
     adh_outdir_close(od);
     return rc;
 }

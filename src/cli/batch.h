@@ -6,6 +6,6 @@
 #include "cli/exit.h"
 #include "cli/options.h"
 
-int cli_batch_main(const cli_options *cli);
+int cli_batch_main(cli_options *cli);
 
 #endif

@@ -51,16 +51,20 @@ void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
         return;
     }
     /* the runs, jobs at a time, at one iteration per kernel product */
-    static adh_plan_progress runs[ADH_MAX_SWEEP];
+    /* the runs the plan lists (a study's first ADH_PLAN_MAX_RUNS: its own
+     * line, from a pilot, has them all) */
+    static adh_plan_progress runs[ADH_PLAN_MAX_RUNS];
+    size_t n = plan->nruns < ADH_PLAN_MAX_RUNS ? plan->nruns : ADH_PLAN_MAX_RUNS;
     double iterations = 0;
-    for (size_t i = 0; i < plan->nruns && i < ADH_MAX_SWEEP; i++) {
+    for (size_t i = 0; i < n; i++) {
         runs[i] = (adh_plan_progress){ .cost = plan->runs[i].iterations };
         iterations += plan->runs[i].iterations;
     }
-    double wall = build + adh_plan_time_left(runs, plan->nruns, plan->jobs, 0, 1.0 / per);
+    double wall = build + adh_plan_time_left(runs, n, plan->jobs, 0, 1.0 / per);
     char t[32];
     cli_progress_duration(wall, t, sizeof t);
     fprintf(f, "time: about %s (%.2g iterations, each about one kernel product: %.3g ms on this machine, timed "
-               "now%s; the kernel built in %.2g s)\n", t, iterations, per * 1e3,
-            plan->jobs > 1 ? ", the runs shared out over the jobs" : "", build);
+               "now%s; the kernel built in %.2g s)%s\n", t, iterations, per * 1e3,
+            plan->jobs > 1 ? ", the runs shared out over the jobs" : "", build,
+            n < plan->nruns ? "; the first runs alone" : "");
 }

@@ -1,6 +1,7 @@
 #include "cli/figures.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,6 +12,8 @@
 #include "adhere/cycle.h"
 #include "adhere/models.h"
 #include "cli/jumps.h"
+#include "cli/studyrow.h"
+#include "cli/mapfig.h"
 #include "cli/tables.h"
 #include "plot/axes.h"
 #include "plot/gnuplot.h"
@@ -208,8 +211,9 @@ int cli_figures_run(const adh_config *cfg, const adh_run_spec *spec, const adh_r
     return rc;
 }
 
-/* Figure 3: the gap just before the jump against sigma, with eq 24. */
-static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n)
+/* Figure 3: the gap just before the jump against sigma, with eq 24, from
+ * the rows (sigma, h_before, h_star, jumped). */
+static int jump(figure *fg, const adh_config *cfg, const cli_studyrow *rows, size_t n)
 {
     char dat[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
@@ -217,14 +221,11 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
         return -1;
     double smin = INFINITY, smax = -INFINITY, hlo = INFINITY, hhi = -INFINITY;
     for (size_t i = 0; i < n; i++) {
-        adh_run_spec rc;
-        adh_config_sweep_run(cfg, i, &rc);
-        adh_derived d;
-        adh_material_derive(&rc.mat, &d);
-        double h = cli_jumps_gap_before(&runs[i]);
-        smin = fmin(smin, d.sigma), smax = fmax(smax, d.sigma);
+        const double *v = rows[i].v;
+        double h = v[CLI_ROW_H_BEFORE];
+        smin = fmin(smin, v[CLI_ROW_SIGMA]), smax = fmax(smax, v[CLI_ROW_SIGMA]);
         if (isfinite(h)) {
-            fprintf(f, "%.17g\t%.17g\t%.17g\t%d\n", d.sigma, h, d.h_star, cli_jumps_jumped(&runs[i], rc.proto.step));
+            fprintf(f, "%.17g\t%.17g\t%.17g\t%d\n", v[CLI_ROW_SIGMA], h, v[CLI_ROW_H_STAR], (int)v[CLI_ROW_JUMPED]);
             hlo = fmin(hlo, h), hhi = fmax(hhi, h);
         }
     }
@@ -265,25 +266,133 @@ static int jump(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n
     return fig_end(fg, "jump.png", 0);
 }
 
-/* Figure 7's second panel: each run's hysteresis (the area between its
- * branches, adh_cycle_hysteresis) against eps, and the static curve's
- * loop as the line eps -> 0 tends to (the paper: the branches "will
- * eventually coalesce" about the equilibrium). Data in c.dat. */
-static int hysteresis_panel(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n, double static_hyst)
+int cli_figures_curve(int dirfd, size_t i, adh_run *run, char *why, size_t whylen)
+{
+    char name[64];
+    snprintf(name, sizeof name, "run-%zu/force.tsv", i + 1);
+    adh_run_init(run);
+    FILE *f = adh_outdir_read(dirfd, name);
+    if (!f) {
+        snprintf(why, whylen, "cannot read %s: %s", name, strerror(errno));
+        return -1;
+    }
+    char line[1024];
+    int rc = 0;
+    while (rc == 0 && fgets(line, sizeof line, f)) {
+        if (line[0] == '#' || !strncmp(line, "h0\t", 3))
+            continue;
+        adh_obs o;
+        memset(&o, 0, sizeof o);
+        char *p = line, *end;
+        o.h0 = strtod(p, &end);
+        int ok = end != p && *end == '\t';
+        o.F = ok ? strtod(end + 1, &end) : NAN;
+        ok = ok && *end == '\t';
+        for (int col = 2; ok && col < 8; col++)   /* to the path, the 9th */
+            ok = (end = strchr(end + 1, '\t')) != NULL;
+        o.path = ok ? (int)strtol(end + 1, &end, 10) : 0;
+        if (!ok || *end != '\t' || adh_run_push_row(run, &o) != 0)
+            rc = -1;
+    }
+    fclose(f);
+    if (rc != 0) {
+        snprintf(why, whylen, "%s: a row that does not read", name);
+        adh_run_free(run);
+    }
+    return rc;
+}
+
+/* "ε = 1 pm" for an eps sweep's run (the paper's labels), else each key's
+ * value. */
+static void run_label(const adh_config *cfg, size_t i, char *label, size_t len)
+{
+    const adh_sweep *s = &cfg->sweep;
+    size_t idx[ADH_SWEEP_MAX_AXES];
+    adh_sweep_index(s, i, idx);
+    label[0] = '\0';
+    for (size_t k = 0; k < s->naxes; k++) {
+        char text[64], piece[128];
+        double v = adh_sweep_value(&s->axis[k], idx[k], text, sizeof text);
+        if (s->naxes == 1 && !strcmp(s->axis[k].key, "solver.eps"))
+            snprintf(piece, sizeof piece, "ε = %g pm", v * 1e12);
+        else if (isnan(v))
+            snprintf(piece, sizeof piece, "%s%s = %s", k ? ", " : "", s->axis[k].name, text);
+        else
+            snprintf(piece, sizeof piece, "%s%s = %g", k ? ", " : "", s->axis[k].name, v);
+        size_t o = strlen(label), m = strlen(piece);
+        if (o + m >= len)
+            break;
+        memcpy(label + o, piece, m + 1);
+    }
+}
+
+/* Every run's rows of its force.tsv (h0, F) into f, a blank line between
+ * branches and two between runs; the range they span. */
+static int overlay_data(figure *fg, FILE *f, const cli_figures_curves *cv, size_t n, double *fbig, double *fmin_,
+                        double *fmax_, double *xmin, double *xmax)
+{
+    for (size_t i = 0; i < n; i++) {
+        adh_run r;
+        char why[256];
+        if (cli_figures_curve(cv->fd[cv->n > 1 ? i : 0], i, &r, why, sizeof why) != 0) {
+            snprintf(fg->msg, fg->msglen, "%s", why);
+            return -1;
+        }
+        for (size_t j = 0; j < r.nrows; j++) {
+            const adh_obs *o = &r.rows[j];
+            if (j > 0 && o->path != r.rows[j - 1].path)
+                fputc('\n', f); /* a break between branches */
+            fprintf(f, "%.17g\t%.17g\n", o->h0, o->F);
+            *fbig = fmax(*fbig, fabs(o->F));
+            *fmin_ = fmin(*fmin_, o->F);
+            *fmax_ = fmax(*fmax_, o->F);
+            *xmin = fmin(*xmin, o->h0);
+            *xmax = fmax(*xmax, o->h0);
+        }
+        fprintf(f, "\n\n");
+        adh_run_free(&r);
+    }
+    return 0;
+}
+
+/* The largest h0 where some run's |F| reaches thresh (read again from the
+ * runs' force.tsv) into *active, which holds its start. 0, or -1 with msg. */
+static int overlay_active(figure *fg, const cli_figures_curves *cv, size_t n, double thresh, double *active)
+{
+    for (size_t i = 0; i < n; i++) {
+        adh_run r;
+        char why[256];
+        if (cli_figures_curve(cv->fd[cv->n > 1 ? i : 0], i, &r, why, sizeof why) != 0) {
+            snprintf(fg->msg, fg->msglen, "%s", why);
+            return -1;
+        }
+        for (size_t j = 0; j < r.nrows; j++)
+            if (fabs(r.rows[j].F) >= thresh)
+                *active = fmax(*active, r.rows[j].h0);
+        adh_run_free(&r);
+    }
+    return 0;
+}
+
+/* Figure 7's second panel: each run's hysteresis (its row's, the area
+ * between its branches) against eps, and the static curve's loop as the
+ * line eps -> 0 tends to (the paper: the branches "will eventually
+ * coalesce" about the equilibrium). Data in c.dat. */
+static int hysteresis_panel(figure *fg, const adh_config *cfg, const cli_studyrow *rows, size_t n, double static_hyst)
 {
     char dat[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "c.dat", dat, sizeof dat);
     if (!f)
         return -1;
+    const adh_sweep_axis *eps = &cfg->sweep.axis[0];
     double hmax = isnan(static_hyst) ? 0 : static_hyst, emin = INFINITY, emax = 0;
     for (size_t i = 0; i < n; i++) {
-        const adh_turn_result *mt = adh_run_main_turn(&runs[i]);
-        double h = mt ? adh_cycle_hysteresis(runs[i].rows, runs[i].nrows, mt->path) : NAN;
+        double h = rows[i].v[CLI_ROW_HYSTERESIS], e = adh_sweep_value(eps, i, NULL, 0);
         if (isfinite(h)) {
-            fprintf(f, "%.17g\t%.17g\n", cfg->sweep.values[i], h);
+            fprintf(f, "%.17g\t%.17g\n", e, h);
             hmax = fmax(hmax, h);
-            emin = fmin(emin, cfg->sweep.values[i]);
-            emax = fmax(emax, cfg->sweep.values[i]);
+            emin = fmin(emin, e);
+            emax = fmax(emax, e);
         }
     }
     if (data_done(fg, f, dat) < 0)
@@ -295,13 +404,20 @@ static int hysteresis_panel(figure *fg, const adh_config *cfg, const adh_run *ru
     adh_gnuplot_cmd(fg->gp, "set logscale x");
     if (emax > 0) /* the points off the frame, a tic at each */
         adh_gnuplot_cmd(fg->gp, "set xrange [%.17g:%.17g]", emin * 1e12 / 1.6, emax * 1e12 * 1.6);
-    char tics[ADH_MAX_SWEEP * 32 + 16] = "set xtics (", one[32];
-    for (size_t i = 0; i < n && i < ADH_MAX_SWEEP; i++) {
-        int w = snprintf(one, sizeof one, "%s%.3g", i ? ", " : "", cfg->sweep.values[i] * 1e12);
-        if (w > 0 && strlen(tics) + (size_t)w + 2 < sizeof tics)
-            strcat(tics, one);
+    char *tics = NULL;
+    size_t cap = 0;
+    FILE *t = open_memstream(&tics, &cap);
+    if (!t) {
+        snprintf(fg->msg, fg->msglen, "out of memory");
+        return -1;
     }
-    adh_gnuplot_cmd(fg->gp, "%s)", tics);
+    fprintf(t, "set xtics (");
+    for (size_t i = 0; i < n; i++)
+        fprintf(t, "%s%.3g", i ? ", " : "", adh_sweep_value(eps, i, NULL, 0) * 1e12);
+    fprintf(t, ")");
+    fclose(t);
+    adh_gnuplot_cmd(fg->gp, "%s", tics);
+    free(tics);
     adh_gnuplot_cmd(fg->gp, "set xlabel \"ε (pm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"hysteresis (fJ)\"");
     adh_gnuplot_cmd(fg->gp, "set yrange [0:%.17g]", 1.15 * hmax * 1e15);
@@ -319,37 +435,28 @@ static int hysteresis_panel(figure *fg, const adh_config *cfg, const adh_run *ru
     return 0;
 }
 
-/* Figure 7: every run's loading and unloading curves, with the JKR
- * equilibrium curve when the runs share one material; an eps sweep adds
- * the hysteresis panel. */
-static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs, size_t n, double static_hyst)
+/* Figure 7: every run's loading and unloading curves (read back from its
+ * run-K/force.tsv), with the JKR equilibrium curve when the runs share one
+ * material; an eps sweep adds the hysteresis panel. */
+static int force_overlay(figure *fg, const adh_config *cfg, const cli_figures_curves *cv, const cli_studyrow *rows,
+                         size_t n, double static_hyst)
 {
     char dat[PATH_MAX + 16], jkr[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = fig_data(fg, "a.dat", dat, sizeof dat);
     if (!f)
         return -1;
     double fbig = 0, fmin_ = 0, fmax_ = 0, xmin = INFINITY, xmax = -INFINITY;
-    int same_material = cfg->sweep.kind == ADH_SWEEP_EPS;
-    for (size_t i = 0; i < n; i++) {
-        for (size_t j = 0; j < runs[i].nrows; j++) {
-            const adh_obs *o = &runs[i].rows[j];
-            if (j > 0 && o->path != runs[i].rows[j - 1].path)
-                fputc('\n', f); /* a break between branches */
-            fprintf(f, "%.17g\t%.17g\n", o->h0, o->F);
-            fbig = fmax(fbig, fabs(o->F));
-            fmin_ = fmin(fmin_, o->F);
-            fmax_ = fmax(fmax_, o->F);
-            xmin = fmin(xmin, o->h0);
-            xmax = fmax(xmax, o->h0);
-        }
-        fprintf(f, "\n\n");
+    int same_material = !adh_sweep_touches(&cfg->sweep, "material.") && !adh_sweep_axis_of(&cfg->sweep, "sigma");
+    if (overlay_data(fg, f, cv, n, &fbig, &fmin_, &fmax_, &xmin, &xmax) != 0) {
+        fclose(f);
+        return -1;
     }
     /* the frame ends where every curve has flattened to zero */
     double active = xmin;
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < runs[i].nrows; j++)
-            if (fabs(runs[i].rows[j].F) >= 0.01 * (fmax_ - fmin_))
-                active = fmax(active, runs[i].rows[j].h0);
+    if (overlay_active(fg, cv, n, 0.01 * (fmax_ - fmin_), &active) != 0) {
+        fclose(f);
+        return -1;
+    }
     if (data_done(fg, f, dat) < 0)
         return -1;
     f = fig_data(fg, "b.dat", jkr, sizeof jkr);
@@ -375,13 +482,15 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     const char *fu;
     adh_force_unit(fbig, &fs, &fu);
     fig_begin(fg, "force.png");
-    if (same_material) {
+    const adh_sweep *sw = &cfg->sweep;
+    int panel = adh_sweep_fig7_panel(cfg);
+    if (panel) {
         adh_gnuplot_cmd(fg->gp, "set multiplot title \"Force vs position for each %s, and the hysteresis (Figure 7)\"",
-                        adh_sweep_name(cfg->sweep.kind));
+                        sw->axis[0].name);
         adh_gnuplot_cmd(fg->gp, "set origin 0,0");
         adh_gnuplot_cmd(fg->gp, "set size 0.64,0.95");
     } else {
-        adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", adh_sweep_name(cfg->sweep.kind));
+        adh_gnuplot_cmd(fg->gp, "set title \"Force vs position for each %s (Figure 7)\"", sw->naxes == 1 ? sw->axis[0].name : "run");
     }
     adh_gnuplot_cmd(fg->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"force F (%s)\"", fu);
@@ -401,11 +510,8 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     }
     fprintf(c, "plot 0 lc rgb \"#888888\" notitle");
     for (size_t i = 0; i < n; i++) {
-        char label[64];
-        if (cfg->sweep.kind == ADH_SWEEP_EPS)
-            snprintf(label, sizeof label, "ε = %g pm", cfg->sweep.values[i] * 1e12);
-        else
-            snprintf(label, sizeof label, "%s = %g", adh_sweep_name(cfg->sweep.kind), cfg->sweep.values[i]);
+        char label[256];
+        run_label(cfg, i, label, sizeof label);
         /* light to heavy, as the paper's eps = 1, 0.5, 0.1 pm: the style's
          * sweep colours run from light to dark, the widths from thin up */
         fprintf(c, ", %s index %zu using ($1*1e9):($2*%.17g) with lines lw %.2g "
@@ -420,22 +526,27 @@ static int force_overlay(figure *fg, const adh_config *cfg, const adh_run *runs,
     fclose(c);
     adh_gnuplot_cmd(fg->gp, "%s", cmd);
     free(cmd);
-    if (same_material && hysteresis_panel(fg, cfg, runs, n, static_hyst) != 0)
+    if (panel && hysteresis_panel(fg, cfg, rows, n, static_hyst) != 0)
         return -1;
     return fig_end(fg, "force.png", 0);
 }
 
-int cli_figures_sweep(const adh_config *cfg, const adh_run *runs, size_t n, double static_hysteresis,
-                      adh_outdir *out, char *msg, size_t msglen)
+int cli_figures_sweep(const adh_config *cfg, const cli_studyrow *rows, size_t n, const cli_figures_curves *curves,
+                      double static_hysteresis, adh_outdir *out, char *msg, size_t msglen)
 {
     if (msglen)
         msg[0] = '\0';
-    if (!cfg->output.plot || cfg->sweep.plot == ADH_SWEEP_PLOT_NONE || n == 0)
+    adh_sweep_plot plot = adh_sweep_plot_kind(&cfg->sweep);
+    if (!cfg->output.plot || plot == ADH_SWEEP_PLOT_NONE || n == 0)
         return 0;
+    if (plot == ADH_SWEEP_PLOT_SPEED || plot == ADH_SWEEP_PLOT_SNAP)
+        return cli_time_sweep_figure(cfg, rows, n, out, msg, msglen);
     figure fg;
     if (fig_open(&fg, cfg, out, msg, msglen) != 0)
         return -1;
-    int rc = cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP ? jump(&fg, cfg, runs, n) : force_overlay(&fg, cfg, runs, n, static_hysteresis);
+    int rc = plot == ADH_SWEEP_PLOT_JUMP ? jump(&fg, cfg, rows, n)
+           : plot == ADH_SWEEP_PLOT_FORCE ? force_overlay(&fg, cfg, curves, rows, n, static_hysteresis)
+           : cli_mapfig_draw(&fg.ses, cfg, rows, n, plot == ADH_SWEEP_PLOT_MAP, msg, msglen);
     fig_close(&fg);
     return rc;
 }

@@ -15,6 +15,9 @@
 #include "cli/estimate.h"
 #include "cli/data.h"
 #include "cli/fit.h"
+#include "cli/studycost.h"
+#include "cli/study.h"
+#include "cli/merge.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "scene/budget.h"
@@ -37,6 +40,38 @@ static int stdout_done(void)
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
+}
+
+/* --plan: the plan, and for a study its shard, expected time, disk; a
+ * study that would not fit is refused (exit 2) after its plan. */
+static int plan(cli_options *cli)
+{
+    static adh_plan p;
+    char why[1024];
+    adh_plan_make(&cli->cfg, &p);
+    adh_plan_print(stdout, &cli->cfg, &p);
+    if (cli->reference[0])
+        cli_static_reference_plan(stdout, &cli->cfg.spec);
+    cli_estimate_print(stdout, &cli->cfg, &p);
+    if (!cli->cfg.sweep.naxes)
+        return stdout_done();
+    if (cli->shard_n) {
+        cli_study st;
+        cli_study_from_cli(&st, cli);
+        printf("shard: %u of %u: drives %u, %u, ... (%zu of the %zu runs); adhere merge joins the shards\n",
+               st.shard_k, st.shard_n, st.shard_k, st.shard_k + st.shard_n, cli_study_shard_runs(&st), st.nruns);
+        printf("fingerprint: %s\n", st.fingerprint);
+    }
+    cli_studycost e;
+    cli_studycost_time(&cli->cfg, &p, &e);
+    cli_studycost_print(stdout, &e);
+    int fits = cli_studycost_fits(&cli->cfg, &p, stdout, why, sizeof why);
+    int rc = stdout_done();
+    if (fits != 0) {
+        fprintf(stderr, "adhere: refused: %s\n", why);
+        return CLI_EXIT_USAGE;
+    }
+    return rc;
 }
 
 /* Before any work: the grid (the one the contact's edge needs when none
@@ -125,6 +160,8 @@ static int run(int argc, char **argv)
     case CLI_ACT_LIST_KEYS:
         tui_print_keys(stdout);
         return stdout_done();
+    case CLI_ACT_MERGE:   /* the study and its grid are the shards' */
+        return cli_merge_main(&cli);
     default:
         break;
     }
@@ -165,15 +202,8 @@ static int run(int argc, char **argv)
     switch (cli.action) {
     case CLI_ACT_BATCH:
         return cli_batch_main(&cli);
-    case CLI_ACT_PLAN: {
-        adh_plan plan;
-        adh_plan_make(&cli.cfg, &plan);
-        adh_plan_print(stdout, &cli.cfg, &plan);
-        if (cli.reference[0])
-            cli_static_reference_plan(stdout, &cli.cfg.spec);
-        cli_estimate_print(stdout, &cli.cfg, &plan);
-        return stdout_done();
-    }
+    case CLI_ACT_PLAN:
+        return plan(&cli);
     case CLI_ACT_COST:
         return cli_cost_main(&cli);
     default:

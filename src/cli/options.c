@@ -1,5 +1,6 @@
 #include "cli/options.h"
 
+#include <ctype.h>
 #include <getopt.h>
 #include <limits.h>
 #include <math.h>
@@ -15,7 +16,9 @@
 #include "adhere/status.h"
 #include "adhere/units.h"
 #include "cli/advice.h"
+#include "cli/studyrow.h"
 #include "scene/scene.h"
+#include "adhere/run.h"
 
 enum {
     OPT_SPACING = 256, OPT_START, OPT_TURN, OPT_KERNEL, OPT_REPLAY, OPT_SCREEN, OPT_SIZE,
@@ -24,7 +27,8 @@ enum {
     OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE, OPT_DATA,
     OPT_GRID, OPT_FINE_BAND, OPT_GROWTH, OPT_GRID_RADIUS, OPT_OPERATOR, OPT_OVERWRITE, OPT_COLUMNS, OPT_FREE,
     OPT_MODEL, OPT_OFFSET, OPT_BASELINE, OPT_MATERIAL, OPT_E0, OPT_EINF, OPT_TAU, OPT_SPEED, OPT_DWELL_TIME,
-    OPT_SPRING
+    OPT_SPRING,
+    OPT_SWEEP, OPT_RUN_DIRS, OPT_SHARD, OPT_ALLOW_PARTIAL
 };
 
 typedef struct option_doc {
@@ -86,6 +90,11 @@ static const option_doc options[] = {
     { { "model", required_argument, 0, OPT_MODEL }, "static|relax", "adhere fit: the static curve, or the relaxation's loading and unloading branches (default static)", NULL, NULL },
     { { "offset", required_argument, 0, OPT_OFFSET }, "M", "adhere fit: start value of the position offset (model h0 = measured - offset, default 0)", NULL, NULL },
     { { "baseline", required_argument, 0, OPT_BASELINE }, "N", "adhere fit: start value of the force baseline (measured = model + baseline, default 0)", NULL, NULL },
+    { { "sweep", required_argument, 0, OPT_SWEEP }, "KEY=VALUES", "sweep KEY (E, sigma, turns, ...) over V1,V2,... or LO..HI,[lin|log,]N; given again, every combination (as [sweep])", NULL, NULL },
+    { { "jobs", required_argument, 0, 'j' }, "N|auto", "runs of a sweep at once (default auto: one per core)", "sweep.jobs", NULL },
+    { { "run-dirs", required_argument, 0, OPT_RUN_DIRS }, "yes|no|auto", "a sweep's run-K directories, each run's tables and plots (default auto: up to 32 runs)", "sweep.run_dirs", NULL },
+    { { "shard", required_argument, 0, OPT_SHARD }, "K/N", "run shard K of N of a sweep (its drives K, K+N, ...) into -o DIR; a rerun skips the runs done", NULL, NULL },
+    { { "allow-partial", no_argument, 0, OPT_ALLOW_PARTIAL }, NULL, "adhere merge: join shards with runs missing (sweep.tsv says # PARTIAL)", NULL, NULL },
     { { "plan", no_argument, 0, OPT_PLAN }, NULL, "print the run plan (branches, steps, what is stored) and exit", NULL, NULL },
     { { "cost", no_argument, 0, OPT_COST }, NULL, "report what accuracy costs: runs over a grid of eps, N and kernels", NULL, NULL },
     { { "cost-eps", required_argument, 0, OPT_COST_EPS }, "M[,M...]", "eps values of the cost grid (default 2,1,0.5,0.2,0.1pm)", NULL, NULL },
@@ -105,6 +114,7 @@ void cli_options_usage(FILE *out)
 {
     fprintf(out, "usage: adhere [OPTIONS] [SCENE]\n"
                  "       adhere fit --data=FILE [--free=LIST] [OPTIONS] [SCENE]\n"
+                 "       adhere merge [-o DIR] [--allow-partial] SHARD_DIR...\n"
                  "Two elastic spheres with a Lennard-Jones surface force (Attard 2000).\n"
                  "Without --batch, opens the TUI; fit fits the model to a measured curve.\n"
                  "Numbers are SI or take a unit: 1GPa 0.5nm 10um 1e-19J.\n\n");
@@ -224,6 +234,50 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
     return 0;
 }
 
+/* A key a flag set, and its text, kept for the study's fingerprint. */
+static int record(cli_options *cli, const char *key, const char *value, char *why, size_t n)
+{
+    if (cli->nset == CLI_MAX_SET) {
+        snprintf(why, n, "more than %d options", CLI_MAX_SET);
+        return 2;
+    }
+    cli_set *s = &cli->set[cli->nset++];
+    snprintf(s->key, sizeof s->key, "%s", key);
+    s->value = value;
+    return 0;
+}
+
+/* --sweep KEY=VALUES: the key sweep.KEY, as a scene's [sweep] KEY = VALUES. */
+static int sweep_flag(cli_options *cli, const char *arg, char *why, size_t n)
+{
+    const char *eq = strchr(arg, '=');
+    char key[64], msg[512];
+    if (!eq || eq == arg || (size_t)(eq - arg) >= sizeof key - 6) {
+        snprintf(why, n, "--sweep: '%.100s' is not KEY=VALUES (e.g. --sweep=E=1GPa,2GPa or --sweep='sigma=0.1..10,log,5')", arg);
+        return 2;
+    }
+    snprintf(key, sizeof key, "sweep.%.*s", (int)(eq - arg), arg);
+    if (adh_config_set(&cli->cfg, key, eq + 1, msg, sizeof msg) != 0) {
+        snprintf(why, n, "--sweep: %.*s: %s", (int)(eq - arg), arg, msg);
+        return 2;
+    }
+    return record(cli, key, eq + 1, why, n);
+}
+
+/* --shard K/N: 1 <= K <= N <= 100000. */
+static int shard_flag(cli_options *cli, const char *arg, char *why, size_t n)
+{
+    unsigned k, m;
+    char extra;
+    if (sscanf(arg, "%u/%u%c", &k, &m, &extra) != 2 || k < 1 || k > m || m > ADH_SWEEP_MAX_RUNS || !isdigit((unsigned char)arg[0])) {
+        snprintf(why, n, "--shard: '%.60s' is not allowed: use K/N with 1 <= K <= N <= %d (shard K of N)", arg, ADH_SWEEP_MAX_RUNS);
+        return 2;
+    }
+    cli->shard_k = k;
+    cli->shard_n = m;
+    return 0;
+}
+
 /* A flag: its key's value through adh_config_set, or the CLI's own. */
 static int apply(cli_options *cli, const option_doc *o, const char *arg, char *why, size_t n)
 {
@@ -236,13 +290,20 @@ static int apply(cli_options *cli, const option_doc *o, const char *arg, char *w
         if (adh_config_set(&cli->cfg, o->key, o->value ? o->value : arg, msg, sizeof msg) == 0) {
             snprintf(words, sizeof words, "--%s", name);
             adh_config_note_given(&cli->cfg, o->key, o->value ? o->value : arg, words);
-            return 0;
+            return record(cli, o->key, o->value ? o->value : arg, why, n);
         }
         cli_options_words(msg, words, sizeof words);
         snprintf(why, n, "--%s: %s", name, words);
         return 2;
     }
     switch (o->opt.val) {
+    case OPT_SWEEP:
+        return sweep_flag(cli, arg, why, n);
+    case OPT_SHARD:
+        return shard_flag(cli, arg, why, n);
+    case OPT_ALLOW_PARTIAL:
+        cli->allow_partial = 1;
+        return 0;
     case OPT_REFERENCE:
         if (strcmp(arg, "static") != 0 && strcmp(arg, "none") != 0) {
             snprintf(why, n, "--reference: '%s' is not allowed: use static or none", arg);
@@ -421,6 +482,39 @@ static int collect(int argc, char **argv, flags_seen *fs, char *why, size_t whyl
     return 0;
 }
 
+/* adhere merge's line: directories, and only the flags about its own
+ * outputs (the study itself is the shards'). */
+static int merge_line(cli_options *cli, int argc, char **argv, const flags_seen *fs, char *why, size_t whylen)
+{
+    static const char *const allowed[] = { "out", "overwrite", "quiet", "no-plot", "gnuplot-style", "allow-partial" };
+    for (size_t i = 0; i < fs->n; i++) {
+        const char *name = fs->list[i].o->opt.name;
+        size_t k = 0;
+        while (k < sizeof allowed / sizeof allowed[0] && strcmp(allowed[k], name) != 0)
+            k++;
+        if (k == sizeof allowed / sizeof allowed[0]) {
+            snprintf(why, whylen, "adhere merge takes the study from its shards' directories: --%s does not go with it "
+                     "(merge takes -o, --overwrite, -q, --no-plot, --gnuplot-style and --allow-partial)", name);
+            return 2;
+        }
+        if (apply(cli, fs->list[i].o, fs->list[i].arg, why, whylen) != 0)
+            return 2;
+    }
+    if (optind >= argc) {
+        snprintf(why, whylen, "adhere merge: name the shards' directories (adhere merge -o DIR SHARD_DIR...)");
+        return 2;
+    }
+    for (int i = optind; i < argc; i++) {
+        if (cli->nmerge == CLI_MAX_MERGE) {
+            snprintf(why, whylen, "adhere merge: more than %d directories", CLI_MAX_MERGE);
+            return 2;
+        }
+        cli->merge[cli->nmerge++] = argv[i];
+    }
+    cli->action = CLI_ACT_MERGE;
+    return 0;
+}
+
 /* Flags that do not go together, and a scene beside what runs nothing. */
 static int combinations(int argc, char **argv, const flags_seen *fs, char *why, size_t whylen)
 {
@@ -455,9 +549,11 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
     static flags_seen fs;
     memset(cli, 0, sizeof *cli);
     adh_config_default(&cli->cfg);
-    /* adhere fit: a subcommand, the rest of the line its options */
+    /* adhere fit and adhere merge: subcommands, the rest of the line their
+     * options (and merge's directories) */
     int fit = argc > 1 && strcmp(argv[1], "fit") == 0;
-    if (fit) {
+    int merge = argc > 1 && strcmp(argv[1], "merge") == 0;
+    if (fit || merge) {
         argc--;
         argv++;
     }
@@ -465,19 +561,24 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
     char *orig[256];
     int norig = argc < 256 ? argc : 256;
     memcpy(orig, argv, (size_t)norig * sizeof *orig);
-    if (collect(argc, argv, &fs, why, whylen) != 0 || combinations(argc, argv, &fs, why, whylen) != 0)
+    if (collect(argc, argv, &fs, why, whylen) != 0)
+        return 2;
+    if (merge)
+        return merge_line(cli, argc, argv, &fs, why, whylen);
+    if (combinations(argc, argv, &fs, why, whylen) != 0)
         return 2;
     /* Two passes: the scene (positional) sets values first, then the flags
      * override them whatever their order on the line. */
     if (optind == argc - 1) {
         cli->scene_arg = argv[optind];
         char path[PATH_MAX];
-        if (adh_scene_find(cli->scene_arg, path, sizeof path, why, whylen) != 0) {
+        if (adh_scene_read(cli->scene_arg, path, sizeof path, &cli->scene_text, why, whylen) != 0) {
             split_unit_hint(norig, orig, cli->scene_arg, why, whylen);
             return 2;
         }
-        if (adh_scene_load(cli->scene_arg, &cli->cfg, why, whylen) != 0)
+        if (adh_scene_parse_string(cli->scene_text, path, &cli->cfg, why, whylen) != 0)
             return 2;
+        snprintf(cli->cfg.scene, sizeof cli->cfg.scene, "%s", path);
     }
     for (size_t i = 0; i < fs.n; i++)
         if (apply(cli, fs.list[i].o, fs.list[i].arg, why, whylen) != 0)
@@ -486,6 +587,20 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
         return fit_check(cli, fs.batch || fs.plan || fs.cost || fs.replay || fs.info, why, whylen);
     if (cli->fit.given) {
         snprintf(why, whylen, "--free, --model, --offset and --baseline are adhere fit's: write 'adhere fit --data=FILE ...'");
+        return 2;
+    }
+    if (cli->allow_partial) {
+        snprintf(why, whylen, "--allow-partial is adhere merge's: adhere merge --allow-partial -o DIR SHARD_DIR...");
+        return 2;
+    }
+    if (cli->shard_n && !cli->cfg.sweep.naxes) {
+        snprintf(why, whylen, "--shard=%u/%u splits a sweep: give a scene with a [sweep] section, or --sweep=KEY=VALUES",
+                 cli->shard_k, cli->shard_n);
+        return 2;
+    }
+    if (cli->shard_n && !cli->cfg.output.dir[0] && cli->action == CLI_ACT_BATCH) {
+        snprintf(why, whylen, "--shard=%u/%u writes its runs into a directory for adhere merge: give -o DIR (one for each shard)",
+                 cli->shard_k, cli->shard_n);
         return 2;
     }
     adh_mode mode = cli->cfg.spec.mode;
@@ -503,22 +618,58 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
 
 static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *why, size_t whylen);
 
-/* Every run is checked (a sweep's each set their own E or eps), with the
+/* A sweep's figure fits its keys: a map needs two, Figure 3's jump a
+ * material swept (sigma, E, A, z0 or R), the column shown is sweep.tsv's. */
+static int sweep_plot_fits(const adh_config *cfg, char *why, size_t whylen)
+{
+    const adh_sweep *s = &cfg->sweep;
+    adh_sweep_plot plot = adh_sweep_plot_kind(s);
+    if (plot == ADH_SWEEP_PLOT_MAP && s->naxes < 2) {
+        snprintf(why, whylen, "[sweep] plot = map draws two swept keys against each other: this sweep has %zu; use "
+                 "plot = curves", s->naxes);
+        return 2;
+    }
+    if (plot == ADH_SWEEP_PLOT_JUMP && !adh_sweep_touches(s, "material.") && !adh_sweep_axis_of(s, "sigma")) {
+        snprintf(why, whylen, "[sweep] plot = jump draws the jump against sigma: sweep sigma (or E, A, z0, R)");
+        return 2;
+    }
+    if (s->map[0] && cli_studyrow_column(s->map) < 0) {
+        snprintf(why, whylen, "[sweep] map = %s: no number column of that name in sweep.tsv (pulloff_F, max_load, "
+                 "jump_in_h0, jump_out_h0, h_before, iterations, ...)", s->map);
+        return 2;
+    }
+    char msg[1024];
+    if (adh_config_time_sweep_check(cfg, msg, sizeof msg) != 0) {
+        cli_options_words(msg, why, whylen);
+        return 2;
+    }
+    if (s->run_dirs == 0 && plot == ADH_SWEEP_PLOT_FORCE) {
+        snprintf(why, whylen, "[sweep] plot = force draws every run's force curve from its run-K/force.tsv: "
+                 "run_dirs = no leaves them out (use run_dirs = yes or auto)");
+        return 2;
+    }
+    return 0;
+}
+
+/* Every run is checked (a sweep's each set their own keys), with the
  * protocol it steps. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen)
 {
     adh_run_spec run;
-    if (cfg->sweep.kind == ADH_SWEEP_NONE) {
+    if (!cfg->sweep.naxes) {
         adh_config_sweep_run(cfg, 0, &run);
         return validate_run(cfg, &run, why, whylen);
     }
-    for (size_t i = 0; i < cfg->sweep.n; i++) {
-        char msg[1024];
+    if (sweep_plot_fits(cfg, why, whylen) != 0)
+        return 2;
+    size_t n = adh_config_nruns(cfg);
+    for (size_t i = 0; i < n; i++) {
+        char msg[1024], which[256];
         adh_config_sweep_run(cfg, i, &run);
         if (validate_run(cfg, &run, msg, sizeof msg) == 0)
             continue;
-        snprintf(why, whylen, "sweep run %zu (%s = %s): %s", i + 1, adh_sweep_name(cfg->sweep.kind),
-                 adh_sweep_value_text(cfg->sweep.kind, cfg->sweep.values[i]).s, msg);
+        adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
+        snprintf(why, whylen, "sweep run %zu (%s): %s", i + 1, which, msg);
         return 2;
     }
     return 0;

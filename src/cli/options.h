@@ -8,7 +8,7 @@
 
 typedef enum cli_action {
     CLI_ACT_TUI = 0, CLI_ACT_BATCH, CLI_ACT_HELP, CLI_ACT_VERSION, CLI_ACT_LIST_KEYS,
-    CLI_ACT_PLAN, CLI_ACT_COST, CLI_ACT_FIT
+    CLI_ACT_PLAN, CLI_ACT_COST, CLI_ACT_FIT, CLI_ACT_MERGE
 } cli_action;
 
 #define CLI_MAX_DATA 8   /* --data files (ADH_MEASURED_MAX_FILES) */
@@ -21,6 +21,16 @@ typedef struct cli_fit_options {
     int given;               /* one of them was given (refused without fit) */
 } cli_fit_options;
 
+#define CLI_MAX_SET 512      /* flags that set a key */
+#define CLI_MAX_MERGE 4096   /* shard directories adhere merge joins */
+
+/* A flag's key and its text, as given (a study's fingerprint is made of
+ * them and the scene's text). */
+typedef struct cli_set {
+    char key[64];
+    const char *value;
+} cli_set;
+
 typedef struct cli_options {
     adh_config cfg;
     cli_action action;
@@ -32,11 +42,19 @@ typedef struct cli_options {
     size_t ndata;
     char columns[256];       /* --columns POS,FORCE, "" = automatic */
     cli_fit_options fit;
+    char *scene_text;        /* the scene file's text, or NULL (the built-in default) */
+    cli_set set[CLI_MAX_SET];   /* every flag that set a key, in order */
+    size_t nset;
+    unsigned shard_k, shard_n;  /* --shard K/N; 0/0: the whole study */
+    int allow_partial;       /* adhere merge --allow-partial */
+    const char *merge[CLI_MAX_MERGE];   /* adhere merge's shard directories */
+    size_t nmerge;
 } cli_options;
 
 /* Fills cli from argv (defaults, then the scene if one is named, then the
- * flags). `adhere fit ...` (the first argument) is the fit subcommand.
- * Returns 0, or 2 with a message in why. */
+ * flags). `adhere fit ...` (the first argument) is the fit subcommand,
+ * `adhere merge [OPTIONS] DIR...` joins a study's shards. Returns 0, or 2
+ * with a message in why. */
 int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen);
 void cli_options_usage(FILE *out);
 

@@ -1,593 +1,781 @@
 #include "cli/sweep.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <pthread.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "adhere/cycle.h"
+#include "adhere/clock.h"
 #include "adhere/grid.h"
-#include "adhere/kernel.h"
-#include "adhere/models.h"
 #include "adhere/runner.h"
 #include "adhere/status.h"
+#include "cli/studycost.h"
 #include "cli/exit.h"
 #include "cli/figures.h"
 #include "cli/interrupt.h"
-#include "cli/jumps.h"
-#include "util/ready.h"
+#include "cli/kcache.h"
 #include "cli/progress.h"
-#include "adhere/clock.h"
+#include "cli/runout.h"
 #include "cli/static.h"
-#include "cli/tables.h"
 #include "cli/timerun.h"
-#include "plot/setup.h"
-#include "plot/plot.h"
+#include "cli/study.h"
+#include "cli/studyrow.h"
+#include "cli/tables.h"
+#include "scene/budget.h"
 #include "scene/plan.h"
+#include "util/ready.h"
 
 /* OpenBLAS's own threads would fight the sweep's for the same cores. */
 void openblas_set_num_threads(int n) __attribute__((weak));   /* none in the reference BLAS */
 
+#define ETA_MAX_DRIVES 2000
 
-
-typedef struct sweep_job {
+typedef struct study_job {
     const adh_config *cfg;
-    const adh_grid *grid;      /* shared, read-only */
-    const adh_kernel *kernel;  /* shared, read-only: apply takes a scratch per call */
-    adh_run *runs;
-    adh_static_result *sres;   /* mode = static: each run's folds, jumps, pull-offs */
-    cli_time_out *tout;        /* mode = time: each run's summary and events */
-    int share;                 /* every run is run 0's curve (a spring swept over one static curve) */
-    int *status;               /* adh status of each run */
-    adh_outdir **out;          /* each run's DIR/run-K, or NULL: nothing but sweep.tsv on stdout */
-    int *tables;               /* exit status of writing run i's tables; -1 not yet */
-    cli_sweep_said *said;      /* what each run's summary.tsv said */
-    size_t next;               /* the next run to start, under lock */
-    size_t done;
-    int jobs;                  /* runs at once */
-    double t0;                 /* when the runs began */
-    adh_plan_progress *eta;          /* each run's expected cost, start and time: the time left */
-    pthread_mutex_t lock;
-} sweep_job;
+    const cli_study *st;
+    cli_kcache *kc;
+    size_t *todo, ntodo, next;     /* the drives to step, in the order taken */
+    cli_studyrow *rows;            /* every run's row: those done filled */
+    unsigned char *whole;          /* run i ended here, its tables whole (its figures maybe not) */
+    adh_outdir *od;                /* NULL: sweep.tsv on standard output alone */
+    int run_dirs;
+    int rows_fd;                   /* runs.tsv, appended a row at a time; -1 none */
+    int shared;                    /* runs that differ only in their turn share drives */
+    size_t done, total;            /* runs finished now, runs to step now */
+    int exit_status;
+    double t0;
+    adh_plan_progress *eta;        /* todo[a]'s expected cost and progress (NULL: by runs alone) */
+    int jobs;                      /* drives at once */
+    pthread_mutex_t lock;          /* the queue, rows, runs.tsv, messages */
+    pthread_mutex_t dirs;          /* od itself: a run-K made (its manifest) */
+} study_job;
 
-static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        const cli_time_out *tout, int rc, adh_outdir *out, cli_sweep_said *said);
+/* ---- one run's results --------------------------------------------------- */
 
-/* "67 %, about 5 min left", weighing each run by its expected iterations:
- * a run at a fifth of the eps takes five times as long, and the last runs
- * of Figure 7 are the longest (job->lock held). */
-static void eta_text(const sweep_job *job, char *buf, size_t len)
+/* The exit status a finished run calls for. */
+static int run_exit(const adh_config *cfg, const adh_run *run, int status)
 {
-    size_t n = job->cfg->sweep.n;
-    double all = 0, done = 0;
-    for (size_t i = 0; i < n; i++) {
-        all += job->eta[i].cost;
-        done += job->eta[i].state == 2 ? job->eta[i].cost : 0;
+    if (run->interrupted)
+        return CLI_EXIT_INTERRUPTED;
+    if (status != ADH_SUCCESS || (run->unconverged && !cfg->output.allow_unconverged))
+        return CLI_EXIT_SOLVER;
+    return CLI_EXIT_OK;
+}
+
+/* runs.tsv gets the row in one write: a kill leaves it whole or cut, and a
+ * cut row does not read back. */
+static void append_row(study_job *job, const cli_studyrow *row)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&text, &len);
+    if (!m)
+        return;
+    cli_studyrow_write(m, job->cfg, row);
+    fclose(m);
+    if (job->rows_fd >= 0 && write(job->rows_fd, text, len) != (ssize_t)len && job->exit_status != CLI_EXIT_USAGE) {
+        fprintf(stderr, "adhere: cannot write %s/runs.tsv: %s\n", adh_outdir_path(job->od), strerror(errno));
+        job->exit_status = CLI_EXIT_USAGE;
     }
-    double left = adh_plan_time_left(job->eta, n, job->jobs, adh_clock_seconds(), 0);
-    cli_progress_left(all > 0 ? done / all : 1, job->done < n ? left : NAN, buf, len);
+    free(text);
+}
+
+/* "67 %, about 5 min left": the drives weighed by their expected
+ * iterations (a run at a fifth of the eps takes five times as long), under
+ * way and waiting shared out over the jobs; by runs alone past
+ * ETA_MAX_DRIVES (job->lock held). */
+static void progress_text(const study_job *job, char *buf, size_t len)
+{
+    if (!job->eta) {
+        cli_progress_text(job->done, job->total, adh_clock_seconds() - job->t0, buf, len);
+        return;
+    }
+    double all = 0, done = 0;
+    for (size_t a = 0; a < job->ntodo; a++) {
+        all += job->eta[a].cost;
+        done += job->eta[a].state == 2 ? job->eta[a].cost : 0;
+    }
+    double left = adh_plan_time_left(job->eta, job->ntodo, job->jobs, adh_clock_seconds(), 0);
+    cli_progress_left(all > 0 ? done / all : 1, job->done < job->total ? left : NAN, buf, len);
+}
+
+/* Run i (specification spec) ended: its run-K, its row, a line on stderr. */
+static void finished(study_job *job, size_t i, const adh_run_spec *spec, const adh_run *run,
+                     const adh_static_result *sres, const cli_time_out *tout, int status)
+{
+    const adh_config *cfg = job->cfg;
+    cli_studyrow row;
+    cli_studyrow_fill(&row, i, spec, run, sres, tout, status);
+    int out = run_exit(cfg, run, status);
+    if (job->od && job->run_dirs) {
+        char name[32], why[1024];
+        snprintf(name, sizeof name, "run-%zu", i + 1);
+        pthread_mutex_lock(&job->dirs);
+        adh_outdir *dir = adh_outdir_sub(job->od, name, why, sizeof why);
+        pthread_mutex_unlock(&job->dirs);
+        if (!dir) {
+            fprintf(stderr, "adhere: %s\n", why);
+            out = CLI_EXIT_USAGE;
+        } else {
+            cli_runout_said said;
+            int w = cli_runout_write(cfg, i, spec, run, sres, tout, status, dir, &said);
+            /* the row repeats the word its summary.tsv said last (a file not
+             * written, figures a signal stopped: no success there) */
+            if (said.word[0])
+                snprintf(row.status, sizeof row.status, "%s", said.word);
+            else if (!strcmp(row.status, "success") && said.lost[0])
+                snprintf(row.status, sizeof row.status, "output incomplete");
+            out = cli_runout_worse(out, w);
+            adh_outdir_close(dir);
+        }
+    }
+    char which[256], pr[64];
+    adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
+    pthread_mutex_lock(&job->lock);
+    job->rows[i] = row;
+    job->whole[i] = !run->interrupted && out != CLI_EXIT_USAGE;
+    if (!run->interrupted && job->od)
+        append_row(job, &row);
+    job->exit_status = cli_runout_worse(job->exit_status, out);
+    job->done++;
+    if (!cfg->output.quiet) {
+        progress_text(job, pr, sizeof pr);
+        fprintf(stderr, "adhere: run %zu of %zu (%s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
+                i + 1, job->st->nruns, which, run->interrupted ? "interrupted" : row.status, run->nrows,
+                run->iterations, run->seconds, job->done, job->total, pr);
+    }
+    /* not hidden by -q: it changes what the run's numbers mean */
+    if (run->unconverged)
+        fprintf(stderr, "adhere: warning: run %zu (%s): %zu of %zu steps reached the iteration cap (%zu) "
+                "without meeting eps; their rows say converged 0\n", i + 1, which, run->unconverged, run->nrows,
+                spec->relax.max_iter);
+    pthread_mutex_unlock(&job->lock);
+}
+
+/* ---- stepping a drive ------------------------------------------------------ */
+
+/* The drive of spec on grid g with kernel k (NULL for rigid spheres); a
+ * run in physical time leaves its summary and events in tout. */
+static int step(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k, adh_run *run,
+                adh_static_result *sres, cli_time_out *tout)
+{
+    return spec->mode == ADH_MODE_RIGID
+               ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &spec->mat, NULL, &spec->proto, cli_interrupt_step, NULL, run)
+           : spec->mode == ADH_MODE_TIME
+               ? cli_time_run(spec, g, k, cli_interrupt_step, NULL, run, tout)
+           : spec->mode == ADH_MODE_STATIC
+               ? cli_static_run(spec, g, k, cli_interrupt_step, NULL, run, sres)
+               : adh_runner_rule(&adh_rule_relax, g, k, &spec->mat, &spec->relax, &spec->proto, cli_interrupt_step,
+                                 NULL, run);
+}
+
+/* Steps spec with its kernel from the cache: the adh status. */
+static int step_cached(study_job *job, const adh_run_spec *spec, adh_run *run, adh_static_result *sres,
+                       cli_time_out *tout, size_t *n)
+{
+    const adh_grid *g = NULL;
+    const adh_kernel *k = NULL;
+    int st = spec->mode == ADH_MODE_RIGID ? ADH_SUCCESS : cli_kcache_get(job->kc, spec, &g, &k);
+    if (st == ADH_EINTR)
+        run->interrupted = 1;
+    if (st == ADH_SUCCESS)
+        st = step(spec, g, k, run, sres, tout);
+    *n = g ? g->n : 0;
+    cli_kcache_put(job->kc, k);
+    return st;
+}
+
+/* A run of a shared drive stepped alone: the drive stopped before its turn was done. */
+static void step_alone(study_job *job, size_t i, const adh_run_spec *spec)
+{
+    adh_run run;
+    adh_static_result sres;
+    cli_time_out tout;
+    size_t n;
+    adh_run_init(&run);
+    memset(&sres, 0, sizeof sres);
+    memset(&tout, 0, sizeof tout);
+    int st = step_cached(job, spec, &run, &sres, &tout, &n);
+    finished(job, i, spec, &run, &sres, &tout, st);
+    cli_time_out_free(&tout);
+    adh_run_free(&run);
+}
+
+/* The runs of a drive that stepped several turns: each one's own run
+ * taken from it, or, when the drive stopped before the turn was done
+ * (not for a signal), stepped alone. */
+static void share_out(study_job *job, const adh_run_spec *ds, const adh_run *run, int status, size_t n,
+                      const size_t *members, size_t nodes)
+{
+    int last_path = run->nrows ? run->rows[run->nrows - 1].path : 0;
+    int ended = status == ADH_SUCCESS && !run->interrupted;
+    for (size_t j = 0; j < n; j++) {
+        if (job->rows[members[j]].done)
+            continue;   /* done before (a resumed drive): its row and run-K stay */
+        adh_run_spec ms = *ds;
+        adh_run_spec own;
+        adh_config_sweep_run(job->cfg, members[j], &own);
+        ms.proto.turns[0] = own.proto.turns[0];
+        ms.proto.nturns = 1;
+        size_t t = 0;
+        while (t < run->nturns && run->turns[t].h0 != ms.proto.turns[0])
+            t++;
+        int done = t < run->nturns && (ended || (run->turns[t].path > 0 && run->turns[t].path < last_path));
+        adh_run mr;
+        if (done && adh_run_turn(run, t, nodes, &mr) == ADH_SUCCESS) {
+            finished(job, members[j], &ms, &mr, NULL, NULL, ADH_SUCCESS);
+            adh_run_free(&mr);
+        } else if (run->interrupted || cli_interrupt_signal()) {
+            adh_run_init(&mr);
+            mr.interrupted = 1;
+            finished(job, members[j], &ms, &mr, NULL, NULL, ADH_SUCCESS);
+        } else {
+            step_alone(job, members[j], &ms);
+        }
+    }
+}
+
+/* The drive todo[a]. */
+static void step_drive(study_job *job, size_t a)
+{
+    size_t u = job->todo[a], members[ADH_MAX_TURNS], nodes;
+    size_t n = adh_sweep_drive_runs(job->cfg, u, members);
+    adh_run_spec ds;
+    adh_sweep_drive_spec(job->cfg, u, &ds);
+    adh_run run;
+    adh_static_result sres;
+    cli_time_out tout;
+    adh_run_init(&run);
+    memset(&sres, 0, sizeof sres);
+    memset(&tout, 0, sizeof tout);
+    if (job->eta) {
+        pthread_mutex_lock(&job->lock);
+        job->eta[a].state = 1;
+        job->eta[a].started = adh_clock_seconds();
+        pthread_mutex_unlock(&job->lock);
+    }
+    int st = step_cached(job, &ds, &run, &sres, &tout, &nodes);
+    if (job->eta) {
+        pthread_mutex_lock(&job->lock);
+        job->eta[a].state = 2;
+        job->eta[a].seconds = adh_clock_seconds() - job->eta[a].started;
+        pthread_mutex_unlock(&job->lock);
+    }
+    if (!job->shared)
+        finished(job, members[0], &ds, &run, &sres, &tout, st);
+    else
+        share_out(job, &ds, &run, st, n, members, nodes);
+    cli_time_out_free(&tout);
+    adh_run_free(&run);
 }
 
 static void *worker(void *arg)
 {
-    sweep_job *job = arg;
-    const adh_config *cfg = job->cfg;
+    study_job *job = arg;
     for (;;) {
         pthread_mutex_lock(&job->lock);
-        size_t i = job->next < cfg->sweep.n && !cli_interrupt_signal() ? job->next++ : cfg->sweep.n;
+        int more = job->next < job->ntodo && !cli_interrupt_signal();
+        size_t a = more ? job->next++ : 0;
         pthread_mutex_unlock(&job->lock);
-        if (i >= cfg->sweep.n)
-            break;
-        adh_run_spec rc;
-        adh_config_sweep_run(cfg, i, &rc);
-        adh_run *run = &job->runs[i];
-        pthread_mutex_lock(&job->lock);
-        job->eta[i].state = 1;
-        job->eta[i].started = adh_clock_seconds();
-        pthread_mutex_unlock(&job->lock);
-        /* each static run allocates its own solver (a dense copy of the
-         * shared kernel): nothing of it is shared between threads */
-        job->status[i] = job->share && i > 0   /* the same curve: run 0's, done before (one job) */
-                       ? cli_time_share(run, &job->runs[0], &job->sres[i], &job->sres[0], job->status[0])
-                       : rc.mode == ADH_MODE_RIGID
-                       ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &rc.mat, NULL, &rc.proto, cli_interrupt_step, NULL, run)
-                       : rc.mode == ADH_MODE_TIME
-                       ? cli_time_run(&rc, job->grid, job->kernel, cli_interrupt_step, NULL, run, &job->tout[i])
-                       : rc.mode == ADH_MODE_STATIC
-                       ? cli_static_run(&rc, job->grid, job->kernel, cli_interrupt_step, NULL, run, &job->sres[i])
-                       : adh_runner_rule(&adh_rule_relax, job->grid, job->kernel, &rc.mat, &rc.relax, &rc.proto,
-                                         cli_interrupt_step, NULL, run);
-        /* tables as soon as a run ends: a long sweep killed later keeps them */
-        if (job->out)
-            job->tables[i] = write_tables(cfg, i, run, &job->sres[i], &job->tout[i], job->status[i], job->out[i], &job->said[i]);
-        pthread_mutex_lock(&job->lock);
-        job->done++;
-        job->eta[i].state = 2;
-        job->eta[i].seconds = adh_clock_seconds() - job->eta[i].started;
-        if (!cfg->output.quiet) {
-            char pr[64];
-            eta_text(job, pr, sizeof pr);
-            fprintf(stderr, "adhere: run %zu of %zu (%s = %s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
-                    i + 1, cfg->sweep.n, adh_sweep_name(cfg->sweep.kind), adh_sweep_value_text(cfg->sweep.kind, cfg->sweep.values[i]).s,
-                    run->interrupted ? "interrupted" : job->status[i] == ADH_SUCCESS ? "done" : adh_strerror(job->status[i]),
-                    run->nrows, run->iterations, run->seconds, job->done, cfg->sweep.n, pr);
-        }
-        /* not hidden by -q: it changes what the run's numbers mean */
-        if (run->unconverged)
-            fprintf(stderr, "adhere: warning: run %zu (%s = %s): %zu of %zu steps reached the iteration cap (%zu) "
-                    "without meeting eps; their rows say converged 0\n", i + 1, adh_sweep_name(cfg->sweep.kind),
-                    adh_sweep_value_text(cfg->sweep.kind, cfg->sweep.values[i]).s, run->unconverged, run->nrows,
-                    cfg->spec.relax.max_iter);
-        pthread_mutex_unlock(&job->lock);
+        if (!more)
+            return NULL;
+        step_drive(job, a);
     }
-    return NULL;
 }
 
-/* How many runs finished (neither interrupted nor never started). */
-static size_t finished(const adh_config *cfg, const adh_run *runs)
+/* ---- the study's directory ------------------------------------------------- */
+
+/* An earlier run of this study's shard in od: its rows into rows (1), or
+ * nothing (0: od is cleared of another study's files); -1 with why. */
+static int resume(const cli_study *st, adh_outdir *od, cli_studyrow *rows, char *why, size_t whylen)
 {
-    size_t k = 0;
-    for (size_t i = 0; i < cfg->sweep.n; i++)
-        k += !runs[i].interrupted;
-    return k;
+    adh_config *old = malloc(sizeof *old);
+    if (!old) {
+        snprintf(why, whylen, "out of memory");
+        return -1;
+    }
+    cli_study prev;
+    char msg[1024];
+    const char *path = adh_outdir_path(od);
+    int r = cli_study_read(&prev, old, adh_outdir_fd(od), path, msg, sizeof msg);
+    int same = r == 1 && !strcmp(prev.fingerprint, st->fingerprint);
+    int other_shard = same && (prev.shard_k != st->shard_k || prev.shard_n != st->shard_n);
+    if (other_shard)
+        snprintf(why, whylen, "%.800s holds shard %u/%u of this study, not %u/%u: give each shard its own -o "
+                 "directory (adhere merge joins them)", path, prev.shard_k, prev.shard_n, st->shard_k, st->shard_n);
+    cli_study_free(&prev);
+    free(old);
+    if (other_shard)
+        return -1;
+    if (same) {
+        size_t cut;
+        long n = cli_study_read_rows(st, adh_outdir_fd(od), path, rows, &cut, why, whylen);
+        return n < 0 ? -1 : 1;
+    }
+    if (r < 0 && !st->cfg->output.quiet)
+        fprintf(stderr, "adhere: note: %s; starting the study afresh\n", msg);
+    return adh_outdir_clear(od, why, whylen) == 0 ? 0 : -1;
 }
 
-/* The run's summary.tsv's word (a run whose files were not all written,
- * or whose figures a signal stopped, is no success there); its own
- * verdict without one. */
-static const char *run_word(const adh_config *cfg, size_t i, const adh_run *runs, const int *status,
-                            const cli_sweep_said *said)
+/* Whether run i's result is complete: its row, and its run-K with its
+ * summary where run-K directories are written. */
+static int done_before(const study_job *job, size_t i)
 {
-    adh_run_spec rc;
-    adh_config_sweep_run(cfg, i, &rc);
-    const adh_run *r = &runs[i];
-    const char *word = status[i] != ADH_SUCCESS && !r->interrupted ? adh_strerror(status[i]) : cli_tables_verdict(&rc, r);
-    if (said && said[i].word[0])
-        word = said[i].word;
-    else if (!strcmp(word, "success") && said && said[i].lost[0])
-        word = "output incomplete";
-    return word;
-}
-
-int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                    const cli_time_out *tout, const int *status, double static_hysteresis, int static_resolved,
-                    const cli_sweep_said *said)
-{
-    const char *name = adh_sweep_name(cfg->sweep.kind);
-    int stat = cfg->spec.mode == ADH_MODE_STATIC && sres;
-    fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (run-K/ holds its tables), SI units (m, N, Pa, s%s)\n",
-            cfg->spec.mode == ADH_MODE_TIME || cfg->sweep.kind == ADH_SWEEP_SPRING ? ", J, N/m" : "");
-    if (cfg->scene[0])
-        cli_tables_comment(f, "scene", cfg->scene);
-    if (finished(cfg, runs) < cfg->sweep.n)
-        fprintf(f, "# PARTIAL: interrupted by signal %d: %zu of %zu runs finished; the others say interrupted\n",
-                cli_interrupt_signal(), finished(cfg, runs), cfg->sweep.n);
-    else if (cli_interrupt_signal())
-        fprintf(f, "# PARTIAL: interrupted by signal %d while the figures were drawn: every run finished, its "
-                "tables whole; those whose figures were not drawn say interrupted\n", cli_interrupt_signal());
-    if (cli_time_sweep_head(f, cfg)) {   /* physical time, or a spring's snap points */
-        for (size_t i = 0; i < cfg->sweep.n; i++) {
-            cli_time_sweep_row(f, cfg, i, runs, tout);
-            fprintf(f, "\t%s\n", run_word(cfg, i, runs, status, said));
-        }
+    if (!cli_studyrow_complete(&job->rows[i]))
         return 0;
+    if (!job->run_dirs)
+        return 1;
+    char name[40];
+    struct stat sb;
+    snprintf(name, sizeof name, "run-%zu", i + 1);
+    if (!adh_outdir_has(job->od, name))
+        return 0;
+    snprintf(name, sizeof name, "run-%zu/summary.tsv", i + 1);
+    return fstatat(adh_outdir_fd(job->od), name, &sb, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(sb.st_mode);
+}
+
+/* runs.tsv rewritten with the rows kept (a row cut by a kill goes), then
+ * opened for the rows to come. 0, or -1 with why. */
+typedef struct kept_rows {
+    const cli_study *st;
+    const cli_studyrow *rows;
+} kept_rows;
+
+static int kept_table(FILE *f, const void *ctx)
+{
+    const kept_rows *k = ctx;
+    cli_study_rows_head(f, k->st);
+    for (size_t i = 0; i < k->st->nruns; i++)
+        if (k->rows[i].done)
+            cli_studyrow_write(f, k->st->cfg, &k->rows[i]);
+    return 0;
+}
+
+static int open_rows(study_job *job, char *why, size_t whylen)
+{
+    kept_rows k = { job->st, job->rows };
+    if (adh_outdir_write(job->od, "runs.tsv", kept_table, &k, why, whylen) != 0)
+        return -1;
+    job->rows_fd = adh_outdir_append(job->od, "runs.tsv", why, whylen);
+    return job->rows_fd < 0 ? -1 : 0;
+}
+
+/* ---- the drives to step ---------------------------------------------------- */
+
+static const unsigned *by_group;   /* qsort's comparison reads it: one study at a time */
+
+static int group_order(const void *a, const void *b)
+{
+    size_t x = *(const size_t *)a, y = *(const size_t *)b;
+    if (by_group[x] != by_group[y])
+        return by_group[x] < by_group[y] ? -1 : 1;
+    return (x > y) - (x < y);
+}
+
+/* This shard's drives with a run not done, those of one grid together
+ * (a kernel serves them in a row); in todo, how many. The distinct grids'
+ * specifications (up to max) go into grids, their number into *ngrids. */
+static size_t drives_to_step(study_job *job, size_t *todo, adh_run_spec *grids, size_t max, size_t *ngrids)
+{
+    const cli_study *st = job->st;
+    size_t n = 0, members[ADH_MAX_TURNS];
+    unsigned *group = malloc(st->ndrives * sizeof *group);
+    *ngrids = 0;
+    for (size_t u = st->shard_k - 1; u < st->ndrives; u += st->shard_n) {
+        size_t m = adh_sweep_drive_runs(job->cfg, u, members), left = 0;
+        for (size_t j = 0; j < m; j++)
+            left += !job->rows[members[j]].done;
+        if (!left)
+            continue;
+        adh_run_spec ds;
+        adh_sweep_drive_spec(job->cfg, u, &ds);
+        size_t g = 0;
+        while (g < *ngrids && !adh_config_same_grid(&grids[g], &ds))
+            g++;
+        if (g == *ngrids && g < max)
+            grids[(*ngrids)++] = ds;
+        if (group)
+            group[u] = (unsigned)g;
+        todo[n++] = u;
     }
-    if (stat)
-        fprintf(f, "# mode static: each run is the equilibrium curve; jump_in_h0 its first fold, h_before the central gap at the last stable point before it;\n"
-                   "# max_load the force at the curve's end (the turn); pulloff_F the load-controlled pull-off (minimum force), pulloff_F_disp the force at the jump-out fold;\n"
-                   "# jumped: 1 the curve has a fold, 0 contact came without one, -1 no contact; steps the curve's points, iterations its Newton iterations;\n"
-                   "# hysteresis: the equilibrium loop's area (displacement control: the highest and lowest stable force at each h0), J\n");
-    else
-        fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n"
-                   "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n"
-                   "# pulloff_F: the force minimum on unloading; jump_out_h0: where the surfaces separate; hysteresis: the area between loading and unloading, J\n");
-    fprintf(f, "# swept: the parameter the sweep varies (%s), value: its value in this run\n", name);
-    if (!isnan(static_hysteresis))
-        fprintf(f, "# static_hysteresis: %.17g J, the static curve's loop (eps -> 0: the jump instabilities' share of every run's hysteresis)%s\n",
-                static_hysteresis, static_resolved ? "" : ", on a grid that does not resolve it");
-    fprintf(f, "run\tswept\tvalue\tE\tsigma\teps\tjump_in_h0\th_before\th_star\tmax_load\tpulloff_F\tjump_out_h0\tsteps\titerations\tseconds\tjumped\thysteresis\t%sstatus\n",
-            stat ? "pulloff_F_disp\tfolds\t" : "");
-    for (size_t i = 0; i < cfg->sweep.n; i++) {
-        adh_run_spec rc;
-        adh_config_sweep_run(cfg, i, &rc);
-        adh_derived d;
-        adh_material_derive(&rc.mat, &d);
-        const adh_run *r = &runs[i];
-        const adh_turn_result *mt = adh_run_main_turn(r);
-        double max_load = mt ? mt->max_load : NAN, pull = mt ? mt->pulloff_F : NAN, out = mt ? mt->jump_out_h0 : NAN;
-        double hyst = mt ? adh_cycle_hysteresis(r->rows, r->nrows, mt->path) : NAN;
-        if (stat) {
-            /* a run that never started has no summary worth the name */
-            int ran = r->nrows > 0;
-            max_load = ran && status[i] == ADH_SUCCESS && !r->interrupted ? r->rows[r->nrows - 1].F : NAN;
-            pull = ran ? sres[i].pulloff_F : NAN;
-            out = ran ? sres[i].jump_out_h0 : NAN;
-            hyst = ran ? cli_tables_static_hysteresis(r, &rc.mat) : NAN;
-        }
-        fprintf(f, "%zu\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%.6g\t%d\t%.17g\t",
-                i + 1, name, cfg->sweep.values[i], rc.mat.E, d.sigma, rc.relax.eps, r->jump_in_h0,
-                cli_jumps_gap_before(r), d.h_star, max_load, pull, out, r->nrows, r->iterations, r->seconds,
-                cli_jumps_jumped(r, rc.proto.step), hyst);
-        if (stat)
-            fprintf(f, "%.17g\t%zu\t", r->nrows ? sres[i].pulloff_F_disp : NAN, r->nrows ? sres[i].folds : (size_t)0);
-        fprintf(f, "%s\n", run_word(cfg, i, runs, status, said));
+    /* drives of one grid in a row, each grid's in drive order */
+    by_group = group;
+    if (group)
+        qsort(todo, n, sizeof *todo, group_order);
+    free(group);
+    return n;
+}
+
+/* ---- the study ------------------------------------------------------------- */
+
+/* The kernels the runs hold at once fit in memory: each distinct grid's
+ * estimate, the largest times the kernels alive at once. 0, or -1 with why. */
+static int kernels_fit(const adh_config *cfg, const adh_run_spec *grids, size_t ngrids, int jobs, size_t keep,
+                       char *why, size_t whylen)
+{
+    unsigned solvers = cfg->spec.mode == ADH_MODE_STATIC ? (unsigned)jobs : 0;
+    double most = 0;
+    for (size_t g = 0; g < ngrids; g++) {
+        if (adh_budget_check(&grids[g], solvers, why, whylen) != 0)
+            return -1;
+        most = fmax(most, adh_budget_bytes(&grids[g], solvers));
+    }
+    size_t alive = ngrids < (size_t)jobs + keep ? ngrids : (size_t)jobs + keep;
+    double have = adh_budget_machine_bytes();
+    if (ngrids > 1 && most * (double)alive > have) {
+        snprintf(why, whylen, "the study's runs have %zu grids: %zu kernels at once need about %.3g GB, there is "
+                 "%.3g GB; give fewer jobs (--jobs) or shard the study", ngrids, alive, most * (double)alive / 1e9,
+                 have / 1e9);
+        return -1;
     }
     return 0;
 }
 
-typedef struct sweep_tables {
-    const adh_config *cfg;
-    const adh_run *runs;
-    const adh_static_result *sres;
-    const cli_time_out *tout;
-    const int *status;
-    double static_hysteresis;
-    int static_resolved;
-    const cli_sweep_said *said;
-} sweep_tables;
-
-static int write_sweep(FILE *f, const void *ctx)
+/* The runs of this shard that did not end (a signal came first): rows
+ * that say interrupted, and their tables where run-K directories are. */
+static size_t mark_interrupted(study_job *job)
 {
-    const sweep_tables *t = ctx;
-    return cli_sweep_table(f, t->cfg, t->runs, t->sres, t->tout, t->status, t->static_hysteresis, t->static_resolved, t->said);
+    const cli_study *st = job->st;
+    size_t members[ADH_MAX_TURNS], missing = 0;
+    for (size_t u = st->shard_k - 1; u < st->ndrives; u += st->shard_n) {
+        size_t m = adh_sweep_drive_runs(job->cfg, u, members);
+        for (size_t j = 0; j < m; j++) {
+            size_t i = members[j];
+            if (job->rows[i].done) {   /* ended, or stopped mid-way (its tables say so) */
+                /* a run whose figures alone a signal stopped is no missing run */
+                missing += !strcmp(job->rows[i].status, "interrupted") && !job->whole[i];
+                continue;
+            }
+            missing++;
+            cli_studyrow_empty(&job->rows[i], job->cfg, i, "interrupted");
+            if (!job->od || !job->run_dirs)
+                continue;
+            char name[32], why[1024];
+            adh_run none;
+            adh_run_spec spec;
+            adh_run_init(&none);
+            none.interrupted = 1;
+            adh_config_sweep_run(job->cfg, i, &spec);
+            snprintf(name, sizeof name, "run-%zu", i + 1);
+            adh_outdir *dir = adh_outdir_sub(job->od, name, why, sizeof why);
+            cli_runout_said said;
+            int t = dir ? cli_runout_tables(job->cfg, i, &spec, &none, NULL, NULL, ADH_SUCCESS, dir, &said) : CLI_EXIT_USAGE;
+            if (!dir)
+                fprintf(stderr, "adhere: %s\n", why);
+            job->exit_status = cli_runout_worse(job->exit_status, t);
+            adh_outdir_close(dir);
+        }
+    }
+    return missing;
 }
 
-/* An eps sweep drawn as Figure 7: its runs' hysteresis against eps needs
- * the value eps -> 0 leaves, the static curve's loop (one curve: eps does
- * not enter it). NAN when not asked or when the curve failed; *resolved
- * whether its grid resolves it. */
-static double sweep_static_hysteresis(const adh_config *cfg, const adh_grid *g, const adh_kernel *k, int *resolved)
+/* The exit status of a row from an earlier run of the study. */
+static int row_exit(const adh_config *cfg, const cli_studyrow *row)
+{
+    static const char *const fine[] = { "success", "no contact", "not separated", "unresolved" };
+    if (!strcmp(row->status, "interrupted"))
+        return CLI_EXIT_INTERRUPTED;
+    if (!strcmp(row->status, "unconverged"))
+        return cfg->output.allow_unconverged ? CLI_EXIT_OK : CLI_EXIT_SOLVER;
+    for (size_t k = 0; k < sizeof fine / sizeof fine[0]; k++)
+        if (!strcmp(row->status, fine[k]))
+            return CLI_EXIT_OK;
+    return !strcmp(row->status, "output incomplete") ? CLI_EXIT_PLOT : CLI_EXIT_SOLVER;
+}
+
+double cli_sweep_static_hysteresis(const adh_config *cfg, cli_kcache *kc, int *resolved)
 {
     *resolved = 0;
-    if (cfg->sweep.kind != ADH_SWEEP_EPS || cfg->spec.mode != ADH_MODE_RELAX || !cfg->output.plot ||
-        cfg->sweep.plot != ADH_SWEEP_PLOT_FORCE || cli_interrupt_signal())
+    if (!adh_sweep_fig7_panel(cfg) || !cfg->output.plot || cli_interrupt_signal())
         return NAN;
     adh_run_spec rs;
     adh_config_sweep_run(cfg, 0, &rs);
+    const adh_grid *g;
+    const adh_kernel *k;
+    int st = cli_kcache_get(kc, &rs, &g, &k);
     adh_run ref;
     adh_run_init(&ref);
     adh_static_result res;
-    adh_ready_phase("reference");
     char why[1024];
-    int st = cli_static_reference(&rs, g, k, &ref, &res, resolved, why, sizeof why);
-    if (!*resolved)
-        fprintf(stderr, "adhere: warning: Figure 7's equilibrium line comes from a static curve the grid does not "
-                "resolve: %s\n", why);
+    adh_ready_phase("reference");
+    if (st == ADH_SUCCESS) {
+        st = cli_static_reference(&rs, g, k, &ref, &res, resolved, why, sizeof why);
+        cli_kcache_put(kc, k);
+        if (!*resolved)
+            fprintf(stderr, "adhere: warning: Figure 7's equilibrium line comes from a static curve the grid does not "
+                    "resolve: %s\n", why);
+    }
     double h = st == ADH_SUCCESS && !ref.interrupted ? cli_tables_static_hysteresis(&ref, &rs.mat) : NAN;
-    if (st != ADH_SUCCESS && !ref.interrupted)
+    if (st != ADH_SUCCESS && st != ADH_EINTR && !ref.interrupted)
         fprintf(stderr, "adhere: the static curve for Figure 7's equilibrium line failed: %s\n", adh_strerror(st));
     adh_run_free(&ref);
     return h;
 }
 
-/* Tables of run i in dir (out/run-K): force.tsv and turns.tsv when data
- * is set, then summary.tsv, last, naming what was not written (those that
- * failed here or before, kept in said, and the list in unwritten); word,
- * when not NULL, is its status, which said keeps. Returns an exit status. */
-static int run_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                      const cli_time_out *tout, int rc, adh_outdir *dir, int data, const char *unwritten,
-                      const char *word, cli_sweep_said *said)
+/* The whole study's table and figure (not a shard's: adhere merge writes those). */
+static void study_outputs(study_job *job, size_t missing)
 {
-    char *lost = said->lost;
-    char why[1024], note[256] = "";
-    adh_run_spec rspec;
-    adh_config_sweep_run(cfg, i, &rspec);
-    cli_tables_names_add(lost, sizeof said->lost, unwritten ? unwritten : "");
-    int partial = run->interrupted || rc != ADH_SUCCESS;
-    if (run->interrupted)
-        snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run->nrows);
-    else if (rc != ADH_SUCCESS)
-        snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(rc));
-    /* a static run's summary.tsv has the batch's static keys */
-    char keynames[CLI_TABLES_STATIC_KEYS][32];
-    cli_tables_extra extra[CLI_TABLES_STATIC_KEYS + CLI_TIME_KEYS];
-    size_t nextra = rspec.mode == ADH_MODE_STATIC && run->nrows
-                  ? cli_tables_static_keys(sres, cli_tables_static_hysteresis(run, &rspec.mat), "", keynames, extra) : 0;
-    double snap[CLI_TIME_SNAP_KEYS];
-    int timed = rspec.mode == ADH_MODE_TIME;
-    if (rspec.mode == ADH_MODE_STATIC && run->nrows && isfinite(rspec.time.spring))
-        nextra += cli_time_snap_keys(run, rspec.time.spring, snap, extra + nextra);
-    if (timed)
-        nextra += cli_time_keys(tout, extra + nextra);
-    cli_tables t = { cfg, &rspec, run, extra, nextra, partial, note, lost, word };
-    int status = CLI_EXIT_OK;
-    if (data) {
-        const char *names[3] = { "force.tsv", run->nturns ? "turns.tsv" : NULL, timed ? "events.tsv" : NULL };
-        adh_outdir_writer writers[3] = { cli_tables_force, cli_tables_turns, cli_time_events };
-        const void *ctx[3] = { &t, &t, tout };
-        for (int k = 0; k < 3; k++)
-            if (names[k] && adh_outdir_write(dir, names[k], writers[k], ctx[k], why, sizeof why) != 0) {
-                fprintf(stderr, "adhere: %s\n", why);
-                status = CLI_EXIT_USAGE;
-                cli_tables_names_add(lost, sizeof said->lost, names[k]);
-            }
+    const adh_config *cfg = job->cfg;
+    size_t n = job->st->nruns;
+    char partial[224] = "", why[1024];
+    int resolved;
+    double hyst = cli_sweep_static_hysteresis(cfg, job->kc, &resolved);
+    int sig = cli_interrupt_signal();   /* also one that stopped the static curve */
+    if (missing)
+        snprintf(partial, sizeof partial, "interrupted by signal %d: %zu of %zu runs finished; the others say interrupted",
+                 sig, n - missing, n);
+    else if (sig && isnan(hyst) && adh_sweep_fig7_panel(cfg) && cfg->output.plot)
+        snprintf(partial, sizeof partial, "interrupted by signal %d: every run finished, its tables whole; not the "
+                 "static curve for Figure 7's line", sig);
+    else if (sig)
+        snprintf(partial, sizeof partial, "interrupted by signal %d while the figures were drawn: every run finished, "
+                 "its tables whole; those whose figures were not drawn say interrupted", sig);
+    cli_studyrow_sweep t = { cfg, job->rows, partial, job->run_dirs, hyst, resolved };
+    if (!job->od) {
+        cli_studyrow_table(stdout, &t);
+        return;
     }
-    if (adh_outdir_write(dir, "summary.tsv", cli_tables_summary, &t, why, sizeof why) != 0) {
+    if (adh_outdir_write(job->od, "sweep.tsv", cli_studyrow_table, &t, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        status = CLI_EXIT_USAGE;
-        cli_tables_names_add(lost, sizeof said->lost, "summary.tsv");   /* sweep.tsv says it */
-        said->word[0] = '\0';
-    } else {
-        snprintf(said->word, sizeof said->word, "%s", cli_tables_summary_word(&t));
+        job->exit_status = cli_runout_worse(job->exit_status, CLI_EXIT_USAGE);
+        return;
     }
-    if (status == CLI_EXIT_OK && partial)
-        return run->interrupted ? CLI_EXIT_INTERRUPTED : CLI_EXIT_SOLVER;
-    if (status == CLI_EXIT_OK && run->unconverged && !cfg->output.allow_unconverged) {
-        if (data) /* said once, not again when the figures rewrite the summary */
-            fprintf(stderr, "adhere: warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)\n",
-                    i + 1, run->unconverged, run->nrows);
-        return CLI_EXIT_SOLVER;
+    if (!cfg->output.plot || job->exit_status != CLI_EXIT_OK || sig || adh_sweep_plot_kind(&cfg->sweep) == ADH_SWEEP_PLOT_NONE)
+        return;
+    int fd = adh_outdir_fd(job->od);
+    cli_figures_curves curves = { &fd, 1 };
+    if (cli_figures_sweep(cfg, job->rows, n, &curves, hyst, job->od, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: sweep plot not written: %s\n", why);
+        job->exit_status = cli_runout_worse(job->exit_status, CLI_EXIT_PLOT);
     }
-    return status;
 }
 
-static int write_tables(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                        const cli_time_out *tout, int rc, adh_outdir *out, cli_sweep_said *said)
+/* The last line: how long, how many, where. */
+static void closing(const study_job *job, double t_start, size_t missing)
 {
-    return run_tables(cfg, i, run, sres, tout, rc, out, 1, NULL, NULL, said);
+    const adh_config *cfg = job->cfg;
+    const cli_study *st = job->st;
+    char t[32];
+    if (missing || cli_interrupt_signal()) {
+        fprintf(stderr, "adhere: interrupted by signal %d: %zu of %zu runs finished; %s says which (# PARTIAL)%s\n",
+                cli_interrupt_signal(), cli_study_shard_runs(st) - missing, cli_study_shard_runs(st),
+                st->shard_n > 1 ? "runs.tsv" : job->od ? "sweep.tsv and each run's summary.tsv" : "sweep.tsv",
+                job->od ? "; run it again to step the rest" : "");
+        return;
+    }
+    if (job->exit_status != CLI_EXIT_OK || cfg->output.quiet)
+        return;
+    cli_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
+    const char *out = job->od ? adh_outdir_path(job->od) : NULL;
+    size_t before = cli_study_shard_runs(st) - job->total;
+    char again[96] = "";
+    if (before)
+        snprintf(again, sizeof again, " (%zu done before, kept)", before);
+    if (!out)
+        fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv went to standard output\n", t, st->nruns);
+    else if (st->shard_n > 1)
+        fprintf(stderr, "adhere: done in %s: shard %u of %u, %zu of the study's %zu runs%s, in %s/runs.tsv; "
+                "adhere merge joins the shards\n", t, st->shard_k, st->shard_n, cli_study_shard_runs(st), st->nruns,
+                again, out);
+    else
+        fprintf(stderr, "adhere: done in %s: %zu runs%s; sweep.tsv%s in %s/%s\n", t, st->nruns, again,
+                cfg->output.plot && adh_sweep_plot_kind(&cfg->sweep) != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",
+                out, job->run_dirs ? ", each run's tables in run-1 ... run-N" : "");
 }
 
-/* Figures of run i in out/run-K (its tables are there); when one is not
- * written, the run's summary.tsv is written again to say so. An exit
- * status. */
-static int write_plots(const adh_config *cfg, const adh_grid *g, size_t i, const adh_run *run,
-                       const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir,
-                       cli_sweep_said *said)
+/* --force on a grid some runs do not resolve: said even with -q (the
+ * first ten). */
+static void warn_unresolved(const study_job *job)
 {
-    char msg[1024] = "", missing[256] = "";
-    adh_run_spec rspec;
-    adh_config_sweep_run(cfg, i, &rspec);
-    if (!cfg->output.plot)
-        return CLI_EXIT_OK;
-    int status = CLI_EXIT_OK;
-    /* the plot module's figures only when one is asked: a sweep of many runs
-     * should not draw what nobody wants */
-    if (cfg->output.plots & ADH_PLOT_ALL) {
-        adh_plot_setup ps;
-        adh_plot_setup_fill(cfg, &rspec, g, &ps);
-        int prc = adh_plots_write(&ps, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
-        if (prc != 0) {
-            fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
-            status = prc == 2 ? CLI_EXIT_USAGE : CLI_EXIT_PLOT;
+    size_t members[ADH_MAX_TURNS], said = 0, more = 0;
+    for (size_t a = 0; a < job->ntodo; a++) {
+        size_t m = adh_sweep_drive_runs(job->cfg, job->todo[a], members);
+        for (size_t j = 0; j < m; j++) {
+            adh_run_spec rc;
+            adh_config_sweep_run(job->cfg, members[j], &rc);
+            if (rc.mode == ADH_MODE_RIGID || job->rows[members[j]].done)
+                continue;
+            adh_grid_report gr;
+            adh_grid_check(&rc.mat, adh_config_grid_use(&rc), rc.grid.use.nodes, adh_config_spacing(&rc), &gr);
+            if (gr.resolved)
+                continue;
+            if (said++ >= 10) {
+                more++;
+                continue;
+            }
+            char msg[512];
+            adh_grid_unresolved_sentence(&gr, msg, sizeof msg);
+            fprintf(stderr, "adhere: warning: run %zu: %s (--force; its summary.tsv: resolved 0)\n", members[j] + 1, msg);
         }
     }
-    if (cli_figures_run(cfg, &rspec, run, dir, msg, sizeof msg, missing, sizeof missing) != 0) {
-        fprintf(stderr, "adhere: run %zu: %s\n", i + 1, msg);
-        status = status ? status : CLI_EXIT_PLOT;
-    }
-    if (*missing) {
-        int trc = run_tables(cfg, i, run, sres, tout, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL,
-                             said);
-        if (trc == CLI_EXIT_USAGE)
-            status = trc;
-    }
-    return status;
+    if (more)
+        fprintf(stderr, "adhere: warning: and %zu more runs on grids that do not resolve them (sweep.tsv: resolved 0)\n", more);
 }
 
-/* Run i's figures not drawn (a signal came first): its summary.tsv names
- * those asked for and says interrupted. An exit status. */
-static int plots_skipped(const adh_config *cfg, size_t i, const adh_run *run, const adh_static_result *sres,
-                         const cli_time_out *tout, int rc, adh_outdir *dir, cli_sweep_said *said)
+/* The first drive's kernel, built before any run starts (a large one takes
+ * seconds; a signal then stops the study with nothing computed). 0, or an
+ * exit status. */
+static int first_kernel(study_job *job)
 {
-    static const struct { unsigned bit; const char *name; } figs[] = {
-        { ADH_PLOT_FORCE, "force.png" }, { ADH_PLOT_PROFILE, "profile.png" }, { ADH_PLOT_CONTACT, "contact.png" },
-        { ADH_PLOT_PRECONTACT, "precontact.png" }, { ADH_PLOT_BULGE, "bulge.png" },
-    };
-    char missing[256] = "";
-    for (size_t k = 0; cfg->output.plot && k < sizeof figs / sizeof figs[0]; k++)
-        if (cfg->output.plots & figs[k].bit)
-            cli_tables_names_add(missing, sizeof missing, figs[k].name);
-    if (!*missing)
-        return CLI_EXIT_OK;
-    int trc = run_tables(cfg, i, run, sres, tout, rc, dir, 0, missing, "interrupted", said);
-    return trc == CLI_EXIT_USAGE ? trc : cli_interrupt_exit();
-}
-
-static int worse(int a, int b)
-{
-    /* usage/output errors first, then interruption, solver failure, plots */
-    static const int rank[] = { CLI_EXIT_OK, CLI_EXIT_PLOT, CLI_EXIT_SOLVER, CLI_EXIT_INTERRUPTED, CLI_EXIT_USAGE };
-    int ra = 0, rb = 0;
-    for (int k = 0; k < 5; k++) {
-        if (rank[k] == a) ra = k;
-        if (rank[k] == b) rb = k;
+    if (!job->ntodo)
+        return 0;
+    adh_run_spec ds;
+    adh_sweep_drive_spec(job->cfg, job->todo[0], &ds);
+    if (ds.mode == ADH_MODE_RIGID)
+        return 0;
+    const adh_grid *g;
+    const adh_kernel *k;
+    int st = cli_kcache_get(job->kc, &ds, &g, &k);
+    if (st == ADH_SUCCESS) {
+        cli_kcache_put(job->kc, k);
+        return 0;
     }
-    return ra >= rb ? a : b;
+    if (st == ADH_EINTR)
+        fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no "
+                "table written\n", cli_interrupt_signal(), adh_config_nodes(&ds));
+    else
+        fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", adh_config_nodes(&ds));
+    return st == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
 }
 
-/* run-1 ... run-n in od, each opened once (no link followed) before any
- * run starts: subs[i], or -1 with why (those made are closed). */
-static int open_runs(adh_outdir *od, size_t n, adh_outdir **subs, char *why, size_t whylen)
+/* The threads: a run per core. */
+static void step_all(study_job *job, int jobs)
 {
-    for (size_t i = 0; i < n; i++) {
-        char name[32];
-        snprintf(name, sizeof name, "run-%zu", i + 1);
-        if (!(subs[i] = adh_outdir_sub(od, name, why, whylen))) {
-            while (i-- > 0)
-                adh_outdir_close(subs[i]);
-            return -1;
-        }
+    pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
+    /* each drive's expected cost, for the time left: its iterations in
+     * relaxation (adh_plan_iterations), else a step each; O(drives) a
+     * progress line, so for a few thousand drives at most */
+    job->jobs = jobs;
+    job->eta = job->ntodo <= ETA_MAX_DRIVES ? calloc(job->ntodo ? job->ntodo : 1, sizeof *job->eta) : NULL;
+    for (size_t a = 0; job->eta && a < job->ntodo; a++) {
+        adh_run_spec ds;
+        adh_sweep_drive_spec(job->cfg, job->todo[a], &ds);
+        job->eta[a].cost = ds.mode == ADH_MODE_RELAX ? adh_plan_iterations(&ds) : 1.0;
+    }
+    int started = 0;
+    if (jobs > 1 && openblas_set_num_threads)
+        openblas_set_num_threads(1);
+    job->t0 = adh_clock_seconds();
+    for (int t = 0; threads && t < jobs; t++) {
+        if (pthread_create(&threads[t], NULL, worker, job) != 0)
+            break;
+        started++;
+    }
+    if (!started)   /* no thread at all: one after another, here */
+        worker(job);
+    for (int t = 0; t < started; t++)
+        pthread_join(threads[t], NULL);
+    free(threads);
+    free(job->eta);
+    job->eta = NULL;
+}
+
+/* Rows, the drives to step, runs.tsv: the study ready to step. 0, or an exit status. */
+static int prepare(study_job *job, size_t *todo, adh_run_spec *grids, size_t *ngrids, char *why, size_t whylen)
+{
+    const cli_study *st = job->st;
+    if (job->od) {
+        if (resume(st, job->od, job->rows, why, whylen) < 0)
+            return CLI_EXIT_USAGE;
+        for (size_t i = 0; i < st->nruns; i++)
+            job->rows[i].done = job->rows[i].done && done_before(job, i);
+        if (cli_study_write(st, job->od, why, whylen) != 0 || open_rows(job, why, whylen) != 0)
+            return CLI_EXIT_USAGE;
+        for (size_t i = 0; i < st->nruns; i++)
+            if (job->rows[i].done)
+                job->exit_status = cli_runout_worse(job->exit_status, row_exit(job->cfg, &job->rows[i]));
+    }
+    job->ntodo = drives_to_step(job, todo, grids, ADH_PLAN_MAX_KERNELS, ngrids);
+    size_t members[ADH_MAX_TURNS];
+    for (size_t a = 0; a < job->ntodo; a++) {
+        size_t m = adh_sweep_drive_runs(job->cfg, todo[a], members);
+        for (size_t j = 0; j < m; j++)
+            job->total += !job->rows[members[j]].done;
     }
     return 0;
 }
 
-int cli_sweep_main(const cli_options *cli, adh_outdir *od)
+int cli_sweep_main(cli_options *cli, adh_outdir *od)
 {
     const adh_config *cfg = &cli->cfg;
-    const char *out = od ? adh_outdir_path(od) : NULL;
     double t_start = adh_clock_seconds();
     char why[1024];
-    size_t n = cfg->sweep.n;
-    if (cfg->spec.mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_EPS) {
+    if (cfg->spec.mode == ADH_MODE_STATIC && adh_sweep_axis_of(&cfg->sweep, "solver.eps")) {
         /* every run would be the same equilibrium curve */
         fprintf(stderr, "adhere: a sweep of eps in mode = static would compute the same curve %zu times: "
-                "eps is the relaxation's convergence parameter; sweep E or sigma, or use mode = relax\n", n);
+                "eps is the relaxation's convergence parameter; sweep E or sigma, or use mode = relax\n",
+                adh_config_nruns(cfg));
         return CLI_EXIT_USAGE;
     }
-
-    /* Every swept parameter (E, sigma, eps) leaves the grid alone, so one
-     * kernel serves every run; rigid runs need none. */
-    adh_grid *g = NULL;
-    adh_kernel *k = NULL;
-    if (cfg->spec.mode != ADH_MODE_RIGID) {
-        /* --force on a grid some runs do not resolve: said even with -q */
-        for (size_t i = 0; i < n; i++) {
-            adh_run_spec rc;
-            adh_config_sweep_run(cfg, i, &rc);
-            adh_grid_report gr;
-            adh_grid_check(&rc.mat, adh_config_grid_use(&rc), rc.grid.use.nodes, adh_config_spacing(&rc), &gr);
-            if (!gr.resolved) {
-                char msg[512];
-                adh_grid_unresolved_sentence(&gr, msg, sizeof msg);
-                fprintf(stderr, "adhere: warning: run %zu: %s (--force; its summary.tsv: resolved 0)\n", i + 1, msg);
-            }
-        }
-        /* caught from here: a large ring kernel takes seconds to build */
-        cli_interrupt_catch();
-        int kst = ADH_ENOMEM;
-        g = adh_config_grid_alloc(&cfg->spec);
-        adh_ready_phase("kernel");
-        k = g ? adh_config_kernel_alloc(&cfg->spec, g, &kst) : NULL;
-        if (!k) {
-            if (kst == ADH_EINTR)
-                fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
-                        cli_interrupt_signal(), g ? g->n : cfg->spec.grid.use.nodes);
-            else
-                fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : cfg->spec.grid.use.nodes);
-            cli_interrupt_release();
-            adh_grid_free(g);
-            return kst == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
-        }
+    /* a study that would not fit the disk or the limits runs not at all */
+    static adh_plan plan;
+    adh_plan_make(cfg, &plan);
+    if (cli_studycost_fits(cfg, &plan, NULL, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: refused: %s\n", why);
+        return CLI_EXIT_USAGE;
     }
-    adh_run *runs = calloc(n, sizeof *runs);
-    adh_static_result *sres = calloc(n, sizeof *sres);
-    cli_time_out *tout = calloc(n, sizeof *tout);
-    int *status = calloc(n, sizeof *status);
-    int *tables = calloc(n, sizeof *tables);
-    cli_sweep_said *said = calloc(n, sizeof *said);
-    adh_outdir **subs = calloc(n, sizeof *subs);
-    /* a spring swept over one static curve: the curve once, its snap
-     * points for each k */
-    int share = cfg->spec.mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_SPRING;
-    int jobs = share ? 1 : adh_plan_jobs(cfg);
-    pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
-    /* each run's expected cost, for the time left */
-    static adh_plan_progress eta[ADH_MAX_SWEEP];
-    for (size_t i = 0; i < n && i < ADH_MAX_SWEEP; i++) {
-        adh_run_spec rs;
-        adh_config_sweep_run(cfg, i, &rs);
-        eta[i] = (adh_plan_progress){ .cost = rs.mode == ADH_MODE_RELAX ? adh_plan_iterations(&rs) : 1.0 };
+    cli_study st;
+    cli_study_from_cli(&st, cli);
+    study_job job = { .cfg = cfg, .st = &st, .od = od, .rows_fd = -1, .exit_status = CLI_EXIT_OK,
+                      .run_dirs = od && adh_sweep_run_dirs(&cfg->sweep), .shared = st.ndrives < st.nruns };
+    job.rows = calloc(st.nruns, sizeof *job.rows);
+    job.whole = calloc(st.nruns, sizeof *job.whole);
+    job.todo = calloc(st.ndrives, sizeof *job.todo);
+    adh_run_spec *grids = malloc(ADH_PLAN_MAX_KERNELS * sizeof *grids);
+    size_t ngrids = 0;
+    int rc = !job.rows || !job.whole || !job.todo || !grids ? CLI_EXIT_SOLVER : 0;
+    if (rc)
+        snprintf(why, sizeof why, "out of memory for %zu runs", st.nruns);
+    else
+        rc = prepare(&job, job.todo, grids, &ngrids, why, sizeof why);
+    int jobs = adh_plan_jobs(cfg);
+    if ((size_t)jobs > job.ntodo)
+        jobs = job.ntodo ? (int)job.ntodo : 1;
+    /* one idle kernel kept: the drives of one grid come in a row */
+    if (!rc && kernels_fit(cfg, grids, ngrids, jobs, 1, why, sizeof why) != 0)
+        rc = CLI_EXIT_USAGE;
+    if (!rc && !(job.kc = cli_kcache_new(1))) {
+        snprintf(why, sizeof why, "out of memory");
+        rc = CLI_EXIT_SOLVER;
     }
-    int failed = !runs || !sres || !tout || !status || !tables || !said || !subs || !threads ? CLI_EXIT_SOLVER : 0;
-    if (failed)
-        snprintf(why, sizeof why, "out of memory for %zu runs", n);
-    else if (od && open_runs(od, n, subs, why, sizeof why) != 0)
-        failed = CLI_EXIT_USAGE;
-    if (failed) {
-        cli_interrupt_release();
+    free(grids);
+    if (rc) {
         fprintf(stderr, "adhere: %s\n", why);
-        free(runs), free(sres), free(tout), free(status), free(tables), free(subs), free(threads), free(said);
-        adh_kernel_free(k), adh_grid_free(g);
-        return failed;
+        if (job.rows_fd >= 0)
+            adh_outdir_log_close(od, "runs.tsv", job.rows_fd);
+        free(job.rows), free(job.whole), free(job.todo);
+        return rc;
     }
-    for (size_t i = 0; i < n; i++) {
-        adh_run_init(&runs[i]);
-        status[i] = ADH_SUCCESS;
-        tables[i] = -1;
-    }
-    if (jobs > 1 && openblas_set_num_threads)
-        openblas_set_num_threads(1);
-
+    warn_unresolved(&job);
     cli_interrupt_catch();
-    adh_ready_phase("sweep");
-
-    sweep_job job = { .cfg = cfg, .grid = g, .kernel = k, .runs = runs, .sres = sres, .tout = tout, .share = share, .status = status,
-                      .out = od ? subs : NULL, .tables = tables, .said = said, .jobs = jobs, .eta = eta };
+    if ((rc = first_kernel(&job)) != 0) {
+        cli_interrupt_release();
+        adh_outdir_log_close(od, "runs.tsv", job.rows_fd);
+        cli_kcache_free(job.kc);
+        free(job.rows), free(job.whole), free(job.todo);
+        return rc;
+    }
     pthread_mutex_init(&job.lock, NULL);
-    job.t0 = adh_clock_seconds();
-    int started = 0;
-    for (int t = 0; t < jobs; t++)
-        if (pthread_create(&threads[t], NULL, worker, &job) == 0)
-            started++;
-        else
-            break;
-    if (!started) /* no thread at all: run them here, one after another */
-        worker(&job);
-    for (int t = 0; t < started; t++)
-        pthread_join(threads[t], NULL);
-    pthread_mutex_destroy(&job.lock);
-    int static_resolved;
-    double static_hyst = sweep_static_hysteresis(cfg, g, k, &static_resolved);
-
-    int exit_status = CLI_EXIT_OK;
-    for (size_t i = 0; i < n; i++) {
-        /* a run never started (interrupted before its turn) counts as interrupted */
-        if (cli_interrupt_signal() && runs[i].nrows == 0)
-            runs[i].interrupted = 1;
-        if (runs[i].interrupted)
-            exit_status = worse(exit_status, CLI_EXIT_INTERRUPTED);
-        else if (status[i] != ADH_SUCCESS)
-            exit_status = worse(exit_status, CLI_EXIT_SOLVER);
-        else if (runs[i].unconverged && !cfg->output.allow_unconverged)
-            exit_status = worse(exit_status, CLI_EXIT_SOLVER);   /* sweep.tsv says unconverged */
-    }
-    sweep_tables st = { cfg, runs, sres, tout, status, static_hyst, static_resolved, said };
-    if (!out) {
-        cli_sweep_table(stdout, cfg, runs, sres, tout, status, static_hyst, static_resolved, NULL);
-    } else {
-        for (size_t i = 0; i < n; i++) {
-            if (tables[i] < 0) /* never started: its tables say interrupted */
-                tables[i] = write_tables(cfg, i, &runs[i], &sres[i], &tout[i], status[i], subs[i], &said[i]);
-            exit_status = worse(exit_status, tables[i]);
-            int plot = tables[i] == CLI_EXIT_OK ||
-                       (tables[i] == CLI_EXIT_SOLVER && runs[i].unconverged && status[i] == ADH_SUCCESS);
-            if (plot && cli_interrupt_signal())
-                exit_status = worse(exit_status, plots_skipped(cfg, i, &runs[i], &sres[i], &tout[i], status[i], subs[i], &said[i]));
-            else if (plot)
-                exit_status = worse(exit_status, write_plots(cfg, g, i, &runs[i], &sres[i], &tout[i], status[i], subs[i], &said[i]));
-        }
-        if (cli_interrupt_signal())   /* while the tables or plots were written */
-            exit_status = worse(exit_status, cli_interrupt_exit());
-        if (adh_outdir_write(od, "sweep.tsv", write_sweep, &st, why, sizeof why) != 0) {
-            fprintf(stderr, "adhere: %s\n", why);
-            exit_status = worse(exit_status, CLI_EXIT_USAGE);
-        } else if (cfg->output.plot && exit_status == CLI_EXIT_OK && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE) {
-            char msg[1024] = "";
-            int frc = cfg->sweep.plot == ADH_SWEEP_PLOT_SPEED || cfg->sweep.plot == ADH_SWEEP_PLOT_SNAP
-                    ? cli_time_sweep_figure(cfg, g, k, runs, tout, n, od, msg, sizeof msg)
-                    : cli_figures_sweep(cfg, runs, n, static_hyst, od, msg, sizeof msg);
-            if (frc != 0) {
-                fprintf(stderr, "adhere: sweep plot not written: %s\n", msg);
-                exit_status = worse(exit_status, CLI_EXIT_PLOT);
-            }
-        }
-    }
-    cli_interrupt_release();
+    pthread_mutex_init(&job.dirs, NULL);
+    adh_ready_phase("sweep");
+    step_all(&job, jobs);
+    size_t missing = cli_interrupt_signal() ? mark_interrupted(&job) : 0;
+    if (job.rows_fd >= 0)
+        adh_outdir_log_close(od, "runs.tsv", job.rows_fd);
+    if (st.shard_n == 1)
+        study_outputs(&job, missing);
     if (cli_interrupt_signal())
-        fprintf(stderr, "adhere: interrupted by signal %d: %zu of %zu runs finished; sweep.tsv%s says which (# PARTIAL)\n",
-                cli_interrupt_signal(), finished(cfg, runs), n, out ? " and each run's summary.tsv" : "");
-    if (exit_status == CLI_EXIT_OK && !cfg->output.quiet) {
-        char t[32];
-        cli_progress_duration(adh_clock_seconds() - t_start, t, sizeof t);
-        if (out)
-            fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv%s in %s/, each run's tables%s in "
-                    "%s/run-1 ... run-%zu\n", t, n, cfg->output.plot && cfg->sweep.plot != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",
-                    out, cfg->output.plot && cfg->output.plots ? " and plots" : "", out, n);
-        else
-            fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv went to standard output\n", t, n);
-    }
-    for (size_t i = 0; i < n; i++) {
-        adh_run_free(&runs[i]);
-        cli_time_out_free(&tout[i]);
-        adh_outdir_close(subs[i]);
-    }
-    free(runs), free(sres), free(tout), free(status), free(tables), free(subs), free(threads), free(said);
-    adh_kernel_free(k);
-    adh_grid_free(g);
-    return exit_status;
+        job.exit_status = cli_runout_worse(job.exit_status, cli_interrupt_exit());
+    cli_interrupt_release();
+    closing(&job, t_start, missing);
+    pthread_mutex_destroy(&job.lock);
+    pthread_mutex_destroy(&job.dirs);
+    cli_kcache_free(job.kc);
+    free(job.rows), free(job.whole), free(job.todo);
+    return job.exit_status;
 }

@@ -1,39 +1,29 @@
-/* A sweep ([sweep] in a scene): several independent runs, one per swept
- * value, run in parallel on the cores, each written to DIR/run-K/ (its own
- * force.tsv, summary.tsv, turns.tsv and plots), with DIR/sweep.tsv holding
- * one row per run and the sweep's combined figure. */
+/* A sweep ([sweep] in a scene, or --sweep): a study of runs, each the
+ * configuration with its swept keys set, stepped on the cores (a run per
+ * core, kernels shared read-only), the runs that differ only in their turn
+ * on one drive. A shard (--shard K/N) steps its drives alone; every run's
+ * row goes into DIR/runs.tsv as it ends, so a rerun steps only the runs
+ * left, and DIR/study.tsv says which study it is. The whole study writes
+ * DIR/sweep.tsv (a row per run) and its figure; a shard leaves them to
+ * adhere merge. run-K/ holds a run's own tables and plots where asked. */
 #ifndef ADH_CLI_SWEEP_H
 #define ADH_CLI_SWEEP_H
 
-#include <stdio.h>
-
-#include "adhere/static.h"
-#include "adhere/protocol.h"
+#include "cli/kcache.h"
 #include "cli/options.h"
-#include "cli/timerun.h"
 #include "plot/outdir.h"
 
-/* Runs cli->cfg's sweep into out (opened by the caller: run-K/ are made
- * in it); returns the process exit status (batch.h). Without out (NULL),
- * only sweep.tsv is written, to standard output. */
-int cli_sweep_main(const cli_options *cli, adh_outdir *out);
+/* Runs cli's study (or its shard) into out (opened by the caller with
+ * ADH_OUTDIR_KEEP: an earlier run of the same study is resumed, another's
+ * files are cleared); without out (NULL) only sweep.tsv is written, to
+ * standard output. The process exit status (exit.h). */
+int cli_sweep_main(cli_options *cli, adh_outdir *out);
 
-/* What a run's summary.tsv said: the files not written (comma-separated,
- * its not_written) and its status word ("" before it was written). */
-typedef struct cli_sweep_said {
-    char lost[256];
-    char word[32];
-} cli_sweep_said;
-
-/* sweep.tsv: one row per run. runs[i] is run i of cfg's sweep; in mode =
- * static sres[i] is its curve's summary (pulloff_F_disp and folds columns);
- * in mode = time tout[i] its summary (cli/timerun.h's table).
- * static_hysteresis, unless NAN, is the static curve's loop area (an eps
- * sweep's Figure 7), said in a comment line (and whether its grid
- * resolved it). said[i] (said may be NULL: no run directories) is what its
- * summary.tsv said, whose status word sweep.tsv repeats. */
-int cli_sweep_table(FILE *f, const adh_config *cfg, const adh_run *runs, const adh_static_result *sres,
-                    const cli_time_out *tout, const int *status, double static_hysteresis, int static_resolved,
-                    const cli_sweep_said *said);
+/* An eps sweep drawn as Figure 7 (adh_sweep_fig7_panel, plots on): its
+ * runs' hysteresis against eps needs the value eps -> 0 leaves, the static
+ * curve's loop (one curve: eps does not enter it), on a kernel from kc.
+ * NAN when not asked, after a signal or when the curve failed; *resolved
+ * whether its grid resolves it. */
+double cli_sweep_static_hysteresis(const adh_config *cfg, cli_kcache *kc, int *resolved);
 
 #endif

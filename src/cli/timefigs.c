@@ -2,7 +2,7 @@
  * speed.png (pull-off and hysteresis against the speed, the static
  * pull-offs at E0 and Einf as lines) and snap.png (snap-in and snap-out
  * against the spring's stiffness). */
-#include "cli/timerun.h"
+#include "cli/figures.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -10,7 +10,9 @@
 #include <string.h>
 
 #include "adhere/status.h"
+#include "cli/interrupt.h"
 #include "cli/static.h"
+#include "cli/studyrow.h"
 #include "plot/labels.h"
 #include "plot/session.h"
 
@@ -30,19 +32,31 @@ static int data_close(tfig *fg, FILE *f, const char *path)
     return 0;
 }
 
-/* The static pull-off of spec's material at modulus E (NAN if the curve
- * fails). */
-static double static_pulloff(const adh_run_spec *spec, double E, const adh_grid *g, const adh_kernel *k)
+/* The static pull-off of spec's material at modulus E on spec's grid
+ * (NAN if the curve fails). */
+static double static_pulloff(const adh_run_spec *spec, double E)
 {
     adh_run_spec s = *spec;
     s.mat.E = E;
     s.mode = ADH_MODE_STATIC;
+    adh_grid *g = adh_config_grid_alloc(&s);
+    int st = ADH_ENOMEM;
+    adh_kernel *k = g ? adh_config_kernel_alloc(&s, g, &st) : NULL;
     adh_run run;
     adh_run_init(&run);
     adh_static_result res;
-    int rc = cli_static_run(&s, g, k, NULL, NULL, &run, &res);
+    int rc = k ? cli_static_run(&s, g, k, cli_interrupt_step, NULL, &run, &res) : st;
     adh_run_free(&run);
+    adh_kernel_free(k);
+    adh_grid_free(g);
     return rc == ADH_SUCCESS ? res.pulloff_F : NAN;
+}
+
+/* Row i's swept value (the study's one key). */
+static double swept(const adh_config *cfg, const cli_studyrow *row)
+{
+    char text[64];
+    return adh_sweep_value(&cfg->sweep.axis[0], row->run, text, sizeof text);
 }
 
 /* An energy's unit: fJ or aJ, whichever keeps the numbers above 1. */
@@ -52,8 +66,7 @@ static void energy_unit(double emax, double *scale, const char **name)
     *name = emax >= 1e-15 ? "fJ" : "aJ";
 }
 
-static int speed_figure(tfig *fg, const adh_config *cfg, const adh_grid *g, const adh_kernel *k,
-                        const cli_time_out *tout, size_t n)
+static int speed_figure(tfig *fg, const adh_config *cfg, const cli_studyrow *rows, size_t n)
 {
     char dat[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = adh_session_data(&fg->ses, "speed.dat", dat, sizeof dat, fg->msg, fg->msglen);
@@ -61,18 +74,18 @@ static int speed_figure(tfig *fg, const adh_config *cfg, const adh_grid *g, cons
         return -1;
     double fbig = 0, ebig = 0;
     for (size_t i = 0; i < n; i++) {
-        const adh_visco_result *r = &tout[i].res;
-        fprintf(f, "%.17g\t%.17g\t%.17g\n", cfg->sweep.values[i], -r->pulloff_F, r->hysteresis);
-        if (isfinite(r->pulloff_F))
-            fbig = fmax(fbig, fabs(r->pulloff_F));
-        if (isfinite(r->hysteresis))
-            ebig = fmax(ebig, fabs(r->hysteresis));
+        double pull = rows[i].v[CLI_ROW_PULLOFF], hyst = rows[i].v[CLI_ROW_HYSTERESIS];
+        fprintf(f, "%.17g\t%.17g\t%.17g\n", swept(cfg, &rows[i]), -pull, hyst);
+        if (isfinite(pull))
+            fbig = fmax(fbig, fabs(pull));
+        if (isfinite(hyst))
+            ebig = fmax(ebig, fabs(hyst));
     }
     if (data_close(fg, f, dat) < 0)
         return -1;
     adh_run_spec s;
     adh_config_sweep_run(cfg, 0, &s);
-    double p0 = static_pulloff(&s, s.mat.E, g, k), pinf = static_pulloff(&s, adh_config_einf(&s), g, k);
+    double p0 = static_pulloff(&s, s.mat.E), pinf = static_pulloff(&s, adh_config_einf(&s));
     double ratio = adh_config_einf(&s) / s.mat.E;   /* crack theory's bound on the enhancement */
     fbig = fmax(fbig, fmax(isfinite(p0) ? ratio * fabs(p0) : 0, isfinite(pinf) ? fabs(pinf) : 0));
     double fs, es;
@@ -83,14 +96,14 @@ static int speed_figure(tfig *fg, const adh_config *cfg, const adh_grid *g, cons
     adh_format_modulus(s.mat.E, e0, sizeof e0);
     adh_format_modulus(adh_config_einf(&s), ei, sizeof ei);
     adh_format_quantity(s.time.tau, ADH_Q_TIME, 3, tau, sizeof tau);
+    int out = !strcmp(cfg->sweep.axis[0].key, "protocol.speed_out");
     adh_session_begin(&fg->ses, "speed", "speed.png");
     adh_gnuplot *gp = fg->ses.gp;
     adh_gnuplot_cmd(gp, "set title \"Pull-off and hysteresis against the %s speed (E0 = %s, E∞ = %s, τ = %s)\"",
-                    cfg->sweep.kind == ADH_SWEEP_SPEED_OUT ? "retraction" : "drive", e0, ei, tau);
+                    out ? "retraction" : "drive", e0, ei, tau);
     adh_gnuplot_cmd(gp, "set logscale x");
     adh_gnuplot_cmd(gp, "set format x \"10^{%%L}\"");
-    adh_gnuplot_cmd(gp, "set xlabel \"%s speed (m/s)\"", cfg->sweep.kind == ADH_SWEEP_SPEED_OUT
-                    ? "retraction (base)" : "base");
+    adh_gnuplot_cmd(gp, "set xlabel \"%s speed (m/s)\"", out ? "retraction (base)" : "base");
     adh_gnuplot_cmd(gp, "set ylabel \"adhesion -F_{pull-off} (%s)\"", fu);
     adh_gnuplot_cmd(gp, "set y2label \"hysteresis (%s)\"", eu);
     adh_gnuplot_cmd(gp, "set ytics nomirror");
@@ -118,55 +131,19 @@ static int speed_figure(tfig *fg, const adh_config *cfg, const adh_grid *g, cons
     return 0;
 }
 
-/* Run i's snap points: from its events (physical time) or its static
- * curve's base turns; rigid spheres' from eq 22 on the same positions. */
-static void snap_points(const adh_config *cfg, size_t i, const adh_run *r, const cli_time_out *o, double *v)
-{
-    double kk = cfg->sweep.values[i];
-    for (int j = 0; j < 5; j++)
-        v[j] = NAN;
-    if (cfg->spec.mode == ADH_MODE_TIME) {
-        for (size_t e = 0; e < o->nev; e++) {
-            const adh_visco_event *ev = &o->ev[e];
-            if (ev->kind != ADH_VISCO_JUMP)
-                continue;
-            if (ev->path == 0 && isnan(v[0]))
-                v[0] = ev->h0, v[1] = ev->base;
-            if (ev->path > 0)
-                v[2] = ev->h0, v[3] = ev->base;
-        }
-    } else {
-        double store[CLI_TIME_SNAP_KEYS];
-        cli_tables_extra x[CLI_TIME_SNAP_KEYS];
-        cli_time_snap_keys(r, kk, store, x);
-        v[0] = store[1], v[1] = store[2], v[2] = store[3], v[3] = store[4];
-    }
-    /* rigid spheres: the same rows with eq 22's force */
-    adh_run rigid;
-    adh_run_init(&rigid);
-    for (size_t j = 0; j < r->nrows; j++) {
-        adh_obs row = r->rows[j];
-        row.F = row.F_rigid;
-        row.path = 0;
-        if (adh_run_push_row(&rigid, &row) != ADH_SUCCESS)
-            break;
-    }
-    double at, base;
-    if (adh_visco_spring_folds(&rigid, kk, &at, &base, 1) >= 1)
-        v[4] = base;
-    adh_run_free(&rigid);
-}
-
-static int snap_figure(tfig *fg, const adh_config *cfg, const adh_run *runs, const cli_time_out *tout, size_t n)
+static int snap_figure(tfig *fg, const adh_config *cfg, const cli_studyrow *rows, size_t n)
 {
     char dat[PATH_MAX + 16], q[ADH_GP_PATH_SIZE];
     FILE *f = adh_session_data(&fg->ses, "snap.dat", dat, sizeof dat, fg->msg, fg->msglen);
     if (!f)
         return -1;
+    double kmin = INFINITY, kmax = 0;
     for (size_t i = 0; i < n; i++) {
-        double v[5];
-        snap_points(cfg, i, &runs[i], &tout[i], v);
-        fprintf(f, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", cfg->sweep.values[i], v[0], v[1], v[2], v[3], v[4]);
+        const double *v = rows[i].v;
+        double k = swept(cfg, &rows[i]);
+        kmin = fmin(kmin, k), kmax = fmax(kmax, k);
+        fprintf(f, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", k, v[CLI_ROW_SNAP_IN_H0], v[CLI_ROW_SNAP_IN_BASE],
+                v[CLI_ROW_SNAP_OUT_H0], v[CLI_ROW_SNAP_OUT_BASE], v[CLI_ROW_SNAP_IN_RIGID]);
     }
     if (data_close(fg, f, dat) < 0)
         return -1;
@@ -174,9 +151,6 @@ static int snap_figure(tfig *fg, const adh_config *cfg, const adh_run *runs, con
     adh_gnuplot *gp = fg->ses.gp;
     char e[32];
     adh_format_modulus(cfg->spec.mat.E, e, sizeof e);
-    double kmin = INFINITY, kmax = 0;
-    for (size_t i = 0; i < n; i++)
-        kmin = fmin(kmin, cfg->sweep.values[i]), kmax = fmax(kmax, cfg->sweep.values[i]);
     adh_gnuplot_cmd(gp, "set title \"Snap-in against the spring (E = %s, R = %.3g µm)%s\"", e, cfg->spec.mat.R * 1e6,
                     cfg->spec.mode == ADH_MODE_TIME ? ", in physical time" : "");
     adh_gnuplot_cmd(gp, "set logscale xy");
@@ -197,15 +171,15 @@ static int snap_figure(tfig *fg, const adh_config *cfg, const adh_run *runs, con
     return 0;
 }
 
-int cli_time_sweep_figure(const adh_config *cfg, const adh_grid *g, const adh_kernel *k, const adh_run *runs,
-                          const cli_time_out *tout, size_t n, adh_outdir *out, char *msg, size_t msglen)
+int cli_time_sweep_figure(const adh_config *cfg, const cli_studyrow *rows, size_t n, adh_outdir *out, char *msg,
+                          size_t msglen)
 {
     tfig fg = { .msg = msg, .msglen = msglen };
     if (adh_session_open(&fg.ses, out, "gnuplot-figures.log", cfg->output.gnuplot_style, cfg->spec.relax.cancel,
                          msg, msglen) != 0)
         return -1;
-    int rc = cfg->sweep.plot == ADH_SWEEP_PLOT_SPEED ? speed_figure(&fg, cfg, g, k, tout, n)
-                                                     : snap_figure(&fg, cfg, runs, tout, n);
+    int rc = adh_sweep_plot_kind(&cfg->sweep) == ADH_SWEEP_PLOT_SPEED ? speed_figure(&fg, cfg, rows, n)
+                                                                      : snap_figure(&fg, cfg, rows, n);
     adh_session_close(&fg.ses);
     return rc;
 }

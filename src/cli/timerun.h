@@ -41,28 +41,4 @@ size_t cli_time_snap_keys(const adh_run *curve, double k, double *store, cli_tab
 /* events.tsv: one row per event of the run (tables: a cli_time_out). */
 int cli_time_events(FILE *f, const void *out);
 
-/* Run 0's curve as another run's, when a spring is swept over one static
- * curve: to gets from's rows and turns (not its profiles), sto sfrom's
- * summary. Returns status. */
-int cli_time_share(adh_run *to, const adh_run *from, adh_static_result *sto, const adh_static_result *sfrom,
-                   int status);
-
-/* sweep.tsv of a sweep in physical time (one row per run: the solid, the
- * drive, jumps, pull-off, hysteresis, dissipated, time) or of a spring
- * swept over a static curve (the snap points), in two parts around
- * cli_sweep_table's own lines (the version, the scene, PARTIAL) and its
- * status words: cli_time_sweep_head writes the comments and the column
- * names, 1 when this sweep is one of those, 0 (nothing written) for
- * another; cli_time_sweep_row run i's cells up to its status word. */
-int cli_time_sweep_head(FILE *f, const adh_config *cfg);
-void cli_time_sweep_row(FILE *f, const adh_config *cfg, size_t i, const adh_run *runs, const cli_time_out *tout);
-
-/* The sweep's figure (timefigs.c): speed.png (pull-off and hysteresis
- * against the swept speed, log axis, with the static pull-offs at E0 and
- * Einf from two static curves on grid g and kernel k) or snap.png (snap-in
- * and snap-out against k, log axis, with rigid spheres' eq 22). 0, or -1
- * with msg. */
-int cli_time_sweep_figure(const adh_config *cfg, const adh_grid *g, const adh_kernel *k, const adh_run *runs,
-                          const cli_time_out *tout, size_t n, adh_outdir *out, char *msg, size_t msglen);
-
 #endif

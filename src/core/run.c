@@ -129,3 +129,62 @@ long adh_run_prev_on_path(const adh_run *run, size_t i)
             return (long)j;
     return -1;
 }
+
+/* The copy of profile p in out, as path (the state's n values each). */
+static int copy_profile(adh_run *out, const adh_profile *p, size_t n, int path)
+{
+    adh_profile *profiles = grow(out->profiles, &out->profiles_cap, out->nprofiles, sizeof *profiles, 16);
+    if (!profiles)
+        return ADH_ENOMEM;
+    out->profiles = profiles;
+    adh_profile *q = &out->profiles[out->nprofiles];
+    *q = *p;
+    q->path = path;
+    if (!(q->u = malloc(3 * n * sizeof(double))))
+        return ADH_ENOMEM;
+    memcpy(q->u, p->u, 3 * n * sizeof(double));
+    q->h = q->u + n;
+    q->p = q->u + 2 * n;
+    out->nprofiles++;
+    return ADH_SUCCESS;
+}
+
+int adh_run_turn(const adh_run *src, size_t t, size_t n, adh_run *out)
+{
+    adh_run_init(out);
+    const adh_turn_result *tr = &src->turns[t];
+    int rc = ADH_SUCCESS;
+    out->start = src->start;
+    /* the loading branch down to the turn's row, then the turn's unloading branch as path 1 */
+    int reached = 0;
+    for (size_t i = 0; i < src->nrows && rc == ADH_SUCCESS && !reached; i++)
+        if (src->rows[i].path == 0) {
+            rc = adh_run_push_row(out, &src->rows[i]);
+            reached = src->rows[i].h0 == tr->h0;
+        }
+    for (size_t i = 0; i < src->nrows && rc == ADH_SUCCESS && tr->path > 0; i++)
+        if (src->rows[i].path == tr->path) {
+            adh_obs o = src->rows[i];
+            o.path = 1;
+            rc = adh_run_push_row(out, &o);
+        }
+    for (size_t i = 0; i < src->nprofiles && rc == ADH_SUCCESS; i++) {
+        const adh_profile *p = &src->profiles[i];
+        if ((p->path == 0 && p->h0 >= tr->h0) || (tr->path > 0 && p->path == tr->path))
+            rc = copy_profile(out, p, n, p->path ? 1 : 0);
+    }
+    if (rc != ADH_SUCCESS) {
+        adh_run_free(out);
+        return rc;
+    }
+    out->turns[0] = *tr;
+    out->turns[0].path = tr->path > 0 ? 1 : 0;
+    out->nturns = 1;
+    out->jump_in_h0 = src->jump_in_h0 >= tr->h0 ? src->jump_in_h0 : NAN;
+    for (size_t i = 0; i < out->nrows; i++) {
+        out->iterations += out->rows[i].iters;
+        out->seconds += out->rows[i].seconds;
+        out->unconverged += !out->rows[i].converged;
+    }
+    return ADH_SUCCESS;
+}

@@ -47,8 +47,9 @@ struct adh_outdir {
  * adhere(1) lists the same under FILES. */
 static const char *const owned[] = {
     "force.tsv", "summary.tsv", "turns.tsv", "static.tsv", "profiles.tsv", "contact.tsv", "models.tsv",
-    "sweep.tsv", "cost.tsv", "fit.tsv", "fit-points.tsv", "best.scene", "fit.png",
+    "sweep.tsv", "cost.tsv", "fit.tsv", "fit-points.tsv", "best.scene", "fit.png", "study.tsv", "runs.tsv",
     "force.png", "profile.png", "contact.png", "precontact.png", "bulge.png", "jump.png", "cost.png",
+    "map.png", "curves.png",
     "gnuplot.log", "gnuplot-figures.log", ADH_OUTDIR_MANIFEST,
 };
 
@@ -265,6 +266,40 @@ static int save(adh_outdir *d)
         return -1;
     }
     return 0;
+}
+
+/* The last entry added, appended to the manifest (a study adds a run-K
+ * directory at a time: rewriting a manifest of thousands for each would
+ * cost their square); the whole manifest rewritten when that fails. */
+static int save_added(adh_outdir *d)
+{
+    int fd = openat(d->fd, ADH_OUTDIR_MANIFEST, O_WRONLY | O_APPEND | O_NOFOLLOW | O_CLOEXEC);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != geteuid()) {
+        if (fd >= 0)
+            close(fd);
+        return save(d);
+    }
+    adh_outdir one = *d;
+    one.e = &d->e[d->n - 1];
+    one.n = 1;
+    char *text = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&text, &len);
+    int rc = m ? 0 : -1;
+    if (m) {
+        manifest_table(m, &one);
+        fclose(m);
+        /* the entry's line alone, after the comment lines */
+        const char *line = text;
+        while (*line == '#' && strchr(line, '\n'))
+            line = strchr(line, '\n') + 1;
+        size_t n = strlen(line);
+        rc = write(fd, line, n) == (ssize_t)n ? 0 : -1;
+    }
+    free(text);
+    close(fd);
+    return rc == 0 ? 0 : save(d);
 }
 
 /* "SEC.NSEC" into t: 1, or 0. */
@@ -544,8 +579,8 @@ static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
         return -1;
     }
     load(d);
-    /* refused before anything is removed */
-    if (foreign(d, depth, why, whylen) != 0 || clear(d, depth, why, whylen) != 0)
+    /* refused before anything is removed; KEEP: an earlier study's files stay */
+    if (foreign(d, depth, why, whylen) != 0 || (!(d->flags & ADH_OUTDIR_KEEP) && clear(d, depth, why, whylen) != 0))
         return -1;
     d->foreign_manifest = 0;
     if (save(d) != 0) {
@@ -632,17 +667,57 @@ adh_outdir *adh_outdir_sub(adh_outdir *d, const char *name, char *why, size_t wh
     if (fstatat(d->fd, name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISDIR(st.st_mode) && find(d, name, &st) < 0) {
         char dir[40];
         snprintf(dir, sizeof dir, "%s/", name);
-        if (add_entry(d, dir, &st, 0) != 0 || save(d) != 0) {
+        if (add_entry(d, dir, &st, 0) != 0 || save_added(d) != 0) {
             snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno ? errno : ENOMEM));
             return NULL;
         }
     }
-    adh_outdir *s = open_at(d->fd, name, path, d->flags, why, whylen);
+    adh_outdir *s = open_at(d->fd, name, path, d->flags & ~(unsigned)ADH_OUTDIR_KEEP, why, whylen);
     if (s && prepare(s, 1, why, whylen) != 0) {
         adh_outdir_close(s);
         return NULL;
     }
     return s;
+}
+
+int adh_outdir_clear(adh_outdir *d, char *why, size_t whylen)
+{
+    if (clear(d, 0, why, whylen) != 0)
+        return -1;
+    if (save(d) != 0) {
+        snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+int adh_outdir_fd(const adh_outdir *d)
+{
+    return d->fd;
+}
+
+FILE *adh_outdir_read(int dirfd, const char *name)
+{
+    int fd = openat(dirfd, name, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    struct stat st;
+    if (fd >= 0 && (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))) {
+        close(fd);
+        errno = EINVAL;   /* a pipe or device under the name: not adhere's */
+        return NULL;
+    }
+    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
+    if (!f && fd >= 0) {
+        int e = errno;
+        close(fd);
+        errno = e;
+    }
+    return f;
+}
+
+int adh_outdir_has(const adh_outdir *d, const char *name)
+{
+    struct stat st;
+    return fstatat(d->fd, name, &st, AT_SYMLINK_NOFOLLOW) == 0 && find(d, name, &st) >= 0;
 }
 
 void adh_outdir_close(adh_outdir *d)
@@ -754,6 +829,31 @@ int adh_outdir_log_open(adh_outdir *d, const char *name, char *why, size_t whyle
         snprintf(why, whylen, "cannot open gnuplot's log %.3000s/%s: %s", d->path, name, strerror(errno));
         if (fd >= 0)
             close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+int adh_outdir_append(adh_outdir *d, const char *name, char *why, size_t whylen)
+{
+    if (!may_replace(d, name)) {
+        not_replaced(d, name, why, whylen);
+        return -1;
+    }
+    int fd = openat(d->fd, name, O_WRONLY | O_CREAT | O_APPEND | O_NOFOLLOW | O_CLOEXEC, 0666);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(why, whylen, "cannot open %.3000s/%s: %s", d->path, name, fd < 0 ? strerror(errno) : "not a regular file");
+        if (fd >= 0)
+            close(fd);
+        return -1;
+    }
+    for (size_t i = d->n; i-- > 0;)
+        if (!strcmp(d->e[i].name, name))
+            drop_entry(d, i);
+    if (add_entry(d, name, &st, 1) != 0 || save(d) != 0) {
+        snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno ? errno : ENOMEM));
+        close(fd);
         return -1;
     }
     return fd;

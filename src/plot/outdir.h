@@ -22,7 +22,9 @@ typedef struct adh_outdir adh_outdir;
 /* adh_outdir_open's flags. OVERWRITE (--overwrite): files under the names
  * adhere writes that it cannot prove are its own (a directory written by an
  * older adhere, or the user's) are removed or replaced as if they were. */
-enum { ADH_OUTDIR_OVERWRITE = 1 };
+enum { ADH_OUTDIR_OVERWRITE = 1,
+       ADH_OUTDIR_KEEP = 2 };   /* the files an earlier run wrote stay (a study resumed): adh_outdir_clear
+                                   removes them when they turn out to be another's */
 
 /* mkdir -p path and open it: locked against a second adhere, cleared of
  * the files an earlier run wrote (per its manifest), and checked for files
@@ -35,6 +37,23 @@ adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t 
  * without following a link, recorded in d's manifest, and opened as
  * adh_outdir_open does. NULL with why. */
 adh_outdir *adh_outdir_sub(adh_outdir *d, const char *name, char *why, size_t whylen);
+
+/* The files an earlier run wrote removed, as adh_outdir_open does without
+ * KEEP. 0, or -1 with why. */
+int adh_outdir_clear(adh_outdir *d, char *why, size_t whylen);
+
+/* The directory's descriptor, for reading what adhere wrote in it
+ * (openat with O_NOFOLLOW); writes go through adh_outdir_write. */
+int adh_outdir_fd(const adh_outdir *d);
+
+/* name in the directory dirfd (a path below it: "run-3/force.tsv"), a
+ * regular file opened for reading without following a link at its last
+ * component; NULL with errno (ENOENT: none there). */
+FILE *adh_outdir_read(int dirfd, const char *name);
+
+/* Whether name in d is a file or directory the manifest proves adhere
+ * wrote (and is still as it wrote it). */
+int adh_outdir_has(const adh_outdir *d, const char *name);
 
 /* Unlocks and frees d (NULL is fine). */
 void adh_outdir_close(adh_outdir *d);
@@ -60,6 +79,12 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
  * empty. */
 int adh_outdir_log_open(adh_outdir *d, const char *name, char *why, size_t whylen);
 void adh_outdir_log_close(adh_outdir *d, const char *name, int fd);
+
+/* A table that grows by whole rows (a study's runs.tsv): name, adhere's
+ * own or new, opened for appending (O_APPEND: each row one write),
+ * recorded in the manifest as a file that grows; its descriptor, or -1
+ * with why. adh_outdir_log_close records it as it ends. */
+int adh_outdir_append(adh_outdir *d, const char *name, char *why, size_t whylen);
 
 /* Whether name (a bare file name) is one adhere writes in an output
  * directory: a table, a figure, a gnuplot log, the manifest. */

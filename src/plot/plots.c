@@ -756,7 +756,9 @@ static int plot_force(plotter *pl)
                *pl->notes ? "; " : "");
         return 0;
     }
-    static force_fig ff;   /* large (two paths, the turn order) */
+    /* large (two paths, the turn order): not on the stack; one per thread,
+     * as a study's threads draw their runs' figures at once */
+    static _Thread_local force_fig ff;
     memset(&ff, 0, sizeof ff);
     ff.np = max_path(run);
     ff.set = malloc(2 * ((size_t)ff.np + 1) * sizeof *ff.set);

@@ -25,6 +25,8 @@ void adh_config_default(adh_config *c)
     c->output.plot = 1;
     c->output.plots = ADH_PLOT_ALL;
     c->output.drive_speed = 1e-6;
+    c->sweep.plot = ADH_SWEEP_PLOT_AUTO;
+    c->sweep.run_dirs = -1;
     c->tui.cols = 100;
     c->tui.rows = 32;
 }
@@ -120,17 +122,6 @@ int adh_config_grid_auto(const adh_run_spec *s)
     return !s->grid.nodes_given && isnan(s->grid.asked.spacing) && s->mode != ADH_MODE_RIGID;
 }
 
-/* The material of run i of sweep (the swept E or sigma set; eps leaves it). */
-static adh_material sweep_material(const adh_material *m, const adh_sweep *sweep, size_t i)
-{
-    adh_material r = *m;
-    if (sweep && i < sweep->n && sweep->kind == ADH_SWEEP_E)
-        r.E = sweep->values[i];
-    else if (sweep && i < sweep->n && sweep->kind == ADH_SWEEP_SIGMA)
-        r.E = adh_material_modulus_at_sigma(m, sweep->values[i]);
-    return r;
-}
-
 adh_kernel_storage adh_config_storage_for(const adh_run_spec *s, adh_mode mode)
 {
     const adh_grid_settings *gs = &s->grid;
@@ -149,36 +140,54 @@ static void grid_operator(adh_run_spec *s)
         s->grid.use.storage = adh_config_storage_for(s, s->mode);
 }
 
-/* The choice for the run of sweep with the narrowest edge zone. */
-static int grid_choose(adh_run_spec *s, const adh_sweep *sweep, char *why, size_t whylen, unsigned *fix)
+/* The material with the narrowest edge zone so far (a bad one is the
+ * validation's to report, with its own words). */
+typedef struct softest {
+    adh_material m;
+    double edge;
+    int bad;
+} softest;
+
+static void note_material(const adh_material *m, void *ctx)
+{
+    softest *s = ctx;
+    if (adh_material_validate(m, NULL, 0) != ADH_SUCCESS) {
+        s->bad = 1;
+        return;
+    }
+    double l = adh_edge_zone(m);
+    if (l < s->edge) {
+        s->edge = l;
+        s->m = *m;
+    }
+}
+
+/* The choice for the run of study's sweep with the narrowest edge zone. */
+static int grid_choose(adh_run_spec *s, const adh_config *study, char *why, size_t whylen, unsigned *fix)
 {
     adh_grid_settings *gs = &s->grid;
-    adh_material soft = s->mat;
-    double narrowest = INFINITY;
-    size_t nruns = sweep && sweep->kind != ADH_SWEEP_NONE ? sweep->n : 1;
-    for (size_t i = 0; i < nruns; i++) {
-        adh_material m = sweep_material(&s->mat, sweep, i);
-        /* a bad material is the validation's to report, with its own words */
-        if (adh_material_validate(&m, NULL, 0) != ADH_SUCCESS)
-            return 0;
-        double l = adh_edge_zone(&m);
-        if (l < narrowest) {
-            narrowest = l;
-            soft = m;
-        }
-    }
+    softest soft = { .m = s->mat, .edge = INFINITY };
+    if (study)
+        adh_sweep_materials(&study->sweep, s, note_material, &soft);
+    else
+        note_material(&s->mat, &soft);
+    if (soft.bad)
+        return 0;
     double deepest = fmin(0.0, adh_protocol_deepest_turn(&s->proto));
+    const adh_sweep_axis *turns = study ? adh_sweep_axis_of(&study->sweep, "protocol.turns") : NULL;
+    for (size_t j = 0; turns && j < turns->n; j++)   /* a run of each turn */
+        deepest = fmin(deepest, adh_sweep_value(turns, j, NULL, 0));
     adh_rings_choice gc;
     /* graded rings need the ring kernel: not when the paper's was asked for */
     int graded_ok = !(gs->kernel_given && gs->asked.kernel == ADH_KERNEL_PAPER);
-    if (adh_rings_choose(&soft, adh_config_grid_use(s), deepest, graded_ok, &gc, why, whylen, fix) != ADH_SUCCESS)
+    if (adh_rings_choose(&soft.m, adh_config_grid_use(s), deepest, graded_ok, &gc, why, whylen, fix) != ADH_SUCCESS)
         return -1;
     grid_take(gs, &gc);
     gs->chosen = 1;
     return 0;
 }
 
-int adh_config_choose_grid(adh_run_spec *s, const adh_sweep *sweep, char *why, size_t whylen, unsigned *fix)
+int adh_config_choose_grid(adh_run_spec *s, const adh_config *study, char *why, size_t whylen, unsigned *fix)
 {
     adh_grid_settings *gs = &s->grid;
     if (fix)
@@ -186,7 +195,7 @@ int adh_config_choose_grid(adh_run_spec *s, const adh_sweep *sweep, char *why, s
     gs->use = gs->asked;
     gs->chosen = 0;
     gs->chosen_h2 = 0;
-    int rc = adh_config_grid_auto(s) ? grid_choose(s, sweep, why, whylen, fix) : 0;
+    int rc = adh_config_grid_auto(s) ? grid_choose(s, study, why, whylen, fix) : 0;
     if (rc != 0)
         gs->use = gs->asked;
     grid_operator(s);
@@ -195,7 +204,7 @@ int adh_config_choose_grid(adh_run_spec *s, const adh_sweep *sweep, char *why, s
 
 int adh_config_grid(adh_config *c, char *why, size_t whylen, unsigned *fix)
 {
-    return adh_config_choose_grid(&c->spec, &c->sweep, why, whylen, fix);
+    return adh_config_choose_grid(&c->spec, c, why, whylen, fix);
 }
 
 size_t adh_config_nodes(const adh_run_spec *s)
@@ -264,63 +273,17 @@ adh_kernel *adh_config_kernel_alloc(const adh_run_spec *s, const adh_grid *g, in
     return adh_kernel_alloc(g, &ks, status);
 }
 
-adh_quantity adh_sweep_quantity(adh_sweep_kind kind)
+int adh_config_same_grid(const adh_run_spec *a, const adh_run_spec *b)
 {
-    return kind == ADH_SWEEP_E ? ADH_Q_PRESSURE : kind == ADH_SWEEP_EPS ? ADH_Q_LENGTH
-         : kind == ADH_SWEEP_SPEED || kind == ADH_SWEEP_SPEED_OUT ? ADH_Q_SPEED
-         : kind == ADH_SWEEP_SPRING ? ADH_Q_STIFFNESS : ADH_Q_NONE;
-}
-
-adh_qtext_buf adh_sweep_value_text(adh_sweep_kind kind, double value)
-{
-    adh_qtext_buf t;
-    if (kind == ADH_SWEEP_SIGMA || kind == ADH_SWEEP_NONE)
-        snprintf(t.s, sizeof t.s, "%.4g", value);
-    else
-        t = adh_qtext(value, adh_sweep_quantity(kind));
-    return t;
-}
-
-const char *adh_sweep_name(adh_sweep_kind kind)
-{
-    switch (kind) {
-    case ADH_SWEEP_E: return "E";
-    case ADH_SWEEP_SIGMA: return "sigma";
-    case ADH_SWEEP_EPS: return "eps";
-    case ADH_SWEEP_SPEED: return "speed";
-    case ADH_SWEEP_SPEED_OUT: return "speed_out";
-    case ADH_SWEEP_SPRING: return "spring";
-    case ADH_SWEEP_NONE: break;
-    }
-    return "";
-}
-
-size_t adh_config_nruns(const adh_config *c)
-{
-    return c->sweep.kind == ADH_SWEEP_NONE ? 1 : c->sweep.n;
-}
-
-void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run)
-{
-    *run = c->spec;
-    run->proto = adh_config_protocol(c);
-    if (c->sweep.kind == ADH_SWEEP_NONE || i >= c->sweep.n)
-        return;
-    run->mat = sweep_material(&c->spec.mat, &c->sweep, i);
-    double v = c->sweep.values[i];
-    if (c->sweep.kind == ADH_SWEEP_EPS)
-        run->relax.eps = v;
-    else if (c->sweep.kind == ADH_SWEEP_SPEED)
-        run->time.speed_in = run->time.speed_out = v;
-    else if (c->sweep.kind == ADH_SWEEP_SPEED_OUT)
-        run->time.speed_out = v;
-    else if (c->sweep.kind == ADH_SWEEP_SPRING)
-        run->time.spring = v;
-    if (c->sweep.kind == ADH_SWEEP_SPRING && run->mode == ADH_MODE_STATIC && isnan(run->proto.start)) {
-        /* one curve serves every k: it starts outside the softest one's snap-in */
-        double soft = INFINITY;
-        for (size_t j = 0; j < c->sweep.n; j++)
-            soft = fmin(soft, c->sweep.values[j]);
-        run->proto.start = adh_visco_auto_start(&run->mat, soft, run->proto.step);
-    }
+    const adh_grid_spec *x = &a->grid.use, *y = &b->grid.use;
+    if ((a->mode == ADH_MODE_RIGID) != (b->mode == ADH_MODE_RIGID))
+        return 0;
+    if (a->mode == ADH_MODE_RIGID)
+        return 1;   /* no grid at all */
+    if (x->graded != y->graded || x->kernel != y->kernel || x->storage != y->storage)
+        return 0;
+    if (!x->graded)
+        return x->nodes == y->nodes && adh_config_spacing(a) == adh_config_spacing(b);
+    adh_rings_spec r = adh_config_rings(a), s = adh_config_rings(b);
+    return r.dr == s.dr && r.ratio == s.ratio && r.fine == s.fine && r.rmax == s.rmax;
 }

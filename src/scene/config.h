@@ -29,37 +29,50 @@
  * elastic sphere driven at a speed through the instrument's spring. */
 typedef enum adh_mode { ADH_MODE_RELAX = 0, ADH_MODE_STATIC = 1, ADH_MODE_RIGID = 2, ADH_MODE_TIME = 3 } adh_mode;
 
-/* A sweep: one parameter takes a list of values, each an independent run
- * (Figure 3's sigma, Figure 7's eps). Every other value is the scene's. */
-typedef enum adh_sweep_kind {
-    ADH_SWEEP_NONE = 0,
-    ADH_SWEEP_E,       /* combined modulus, Pa */
-    ADH_SWEEP_SIGMA,   /* sets E = gamma sqrt(R/z0^3) / sigma (eq 17) */
-    ADH_SWEEP_EPS,     /* convergence parameter, m */
-    ADH_SWEEP_SPEED,   /* the drive's speed both ways, m/s (mode time) */
-    ADH_SWEEP_SPEED_OUT, /* the retraction's speed, m/s (mode time) */
-    ADH_SWEEP_SPRING   /* the instrument's stiffness, N/m (mode time; mode static:
-                          the snap points of one curve) */
-} adh_sweep_kind;
-
 /* Combined figures of a sweep, drawn from every run at once. */
 typedef enum adh_sweep_plot {
+    ADH_SWEEP_PLOT_AUTO = -1,  /* a map of a study of two or more parameters, none for one */
     ADH_SWEEP_PLOT_NONE = 0,
-    ADH_SWEEP_PLOT_JUMP,   /* Figure 3: jump separation vs sigma against eq 24 (jump.png) */
-    ADH_SWEEP_PLOT_FORCE,  /* Figure 7: every run's force curve and the JKR curve (force.png) */
-    ADH_SWEEP_PLOT_SPEED,  /* physical time: pull-off and hysteresis against the swept speed,
-                              the static pull-offs at E0 and Einf as lines (speed.png) */
-    ADH_SWEEP_PLOT_SNAP    /* the spring: snap-in and snap-out against k (snap.png) */
+    ADH_SWEEP_PLOT_JUMP,       /* Figure 3: jump separation vs sigma against eq 24 (jump.png) */
+    ADH_SWEEP_PLOT_FORCE,      /* Figure 7: every run's force curve and the JKR curve (force.png) */
+    ADH_SWEEP_PLOT_MAP,        /* a heat map of one column over the first two parameters (map.png) */
+    ADH_SWEEP_PLOT_CURVES,     /* one column against the last parameter, a curve per value of the others (curves.png) */
+    ADH_SWEEP_PLOT_SPEED,      /* physical time: pull-off and hysteresis against the swept speed,
+                                  the static pull-offs at E0 and Einf as lines (speed.png) */
+    ADH_SWEEP_PLOT_SNAP        /* the spring: snap-in against k (snap.png) */
 } adh_sweep_plot;
 
-#define ADH_MAX_SWEEP 32
+/* A study: each swept key takes a list of values or a range, and the runs
+ * are their Cartesian product (the first key varies slowest), each an
+ * independent run of the configuration with those keys set. Every key of
+ * the run (ADH_KEY_RUN) can be swept, and sigma, which sets E by eq 17
+ * from the run's A, z0 and R (set after the others). */
+#define ADH_SWEEP_MAX_AXES 6
+#define ADH_SWEEP_MAX_LIST 64        /* values listed one by one; a range has up to ADH_SWEEP_MAX_RUNS */
+#define ADH_SWEEP_MAX_RUNS 100000
+#define ADH_SWEEP_VALUE_LEN 32
+
+typedef enum adh_sweep_spacing { ADH_SWEEP_LIST = 0, ADH_SWEEP_LIN, ADH_SWEEP_LOG } adh_sweep_spacing;
+
+typedef struct adh_sweep_axis {
+    char name[32];                 /* the key's name in [sweep]: "E", "turns", "sigma" */
+    char key[48];                  /* the configuration's key: "material.E"; "sigma" for sigma */
+    int quantity;                  /* adh_quantity of its values (ADH_Q_NONE: numbers or words) */
+    int count;                     /* whole numbers (a range's values are rounded) */
+    adh_sweep_spacing spacing;
+    size_t n;
+    double lo, hi;                 /* a range's ends */
+    char text[ADH_SWEEP_MAX_LIST][ADH_SWEEP_VALUE_LEN];   /* a list's values as written */
+    double num[ADH_SWEEP_MAX_LIST];                      /* and as numbers (NAN: a word) */
+} adh_sweep_axis;
 
 typedef struct adh_sweep {
-    adh_sweep_kind kind;
-    size_t n;
-    double values[ADH_MAX_SWEEP];
+    size_t naxes;                  /* 0: a single run */
+    adh_sweep_axis axis[ADH_SWEEP_MAX_AXES];
     int jobs;                      /* runs at once; 0 = one per core */
     adh_sweep_plot plot;
+    int run_dirs;                  /* run-K directories: 1 yes, 0 no, -1 auto (up to 32 runs, or plot = force) */
+    char map[32];                  /* the sweep.tsv column a map or curves show ("" = pulloff_F) */
 } adh_sweep;
 
 /* A radial grid and the kernel on it. Graded (adhere/rings.h): fine rings
@@ -104,7 +117,7 @@ typedef struct adh_time_settings {
 } adh_time_settings;
 
 enum { ADH_TIME_E0 = 1, ADH_TIME_EINF = 2, ADH_TIME_TAU = 4, ADH_TIME_SPEED = 8, ADH_TIME_DWELL = 16,
-       ADH_TIME_SPRING = 32 };
+       ADH_TIME_SPRING = 32, ADH_TIME_MODE = 64 /* scene.mode was set: material = sls does not choose it */ };
 
 /* What the core is asked to compute: one run. */
 typedef struct adh_run_spec {
@@ -151,7 +164,6 @@ typedef struct adh_given {
 
 typedef struct adh_config {
     adh_run_spec spec;
-    int mode_given;                /* scene.mode was set: material = sls does not choose it */
     adh_sweep sweep;               /* kind ADH_SWEEP_NONE: a single run */
     adh_output_options output;
     adh_tui_options tui;
@@ -172,7 +184,9 @@ void adh_config_default(adh_config *c);
 
 /* Where a key may be given besides flags and adh_config_set. */
 enum { ADH_KEY_SCENE = 1,   /* a scene file (adhere-scene(5)) */
-       ADH_KEY_RUN = 2 };   /* part of the run specification (a TUI edit, a study) */
+       ADH_KEY_RUN = 2,     /* part of the run specification (a TUI edit, a study); it sets
+                               nothing outside adh_config's spec */
+       ADH_KEY_COUNT = 4 }; /* a whole number (a swept range's values are rounded) */
 
 typedef struct adh_config_key {
     const char *key;               /* "section.name" */
@@ -260,6 +274,9 @@ int adh_config_grid_check(const adh_run_spec *s, char *why, size_t whylen);
 /* Whether the kernel can be used on the grid: the paper's assumes equal
  * cells, so not on a graded one. */
 int adh_config_kernel_fits(adh_kernel_type kernel, int graded);
+/* Whether runs a and b build the same grid and kernel (one can serve
+ * both): rigid runs build none. */
+int adh_config_same_grid(const adh_run_spec *a, const adh_run_spec *b);
 /* The nodes (uniform) or rings (graded) of the grid the run s builds. */
 size_t adh_config_nodes(const adh_run_spec *s);
 /* The grid spacing in use: the explicit one, or the paper's grid radius
@@ -273,14 +290,14 @@ adh_grid_use adh_config_grid_use(const adh_run_spec *s);
 int adh_config_grid_auto(const adh_run_spec *s);
 /* The grid a run of s builds (s->grid.use): the one asked for, or, while
  * it follows the material, the one adh_rings_choose picks for the run of
- * sweep (NULL: none) with the narrowest edge zone (a sweep shares one
- * kernel), for the material, protocol and mode s holds now. Either way the
- * operator is adh_config_storage_for's for the mode unless it was given.
- * 0, or -1 with
+ * study's sweep (NULL: s alone) with the narrowest edge zone (a sweep
+ * shares one kernel), for the material, protocol and mode s holds now.
+ * Either way the operator is adh_config_storage_for's for the mode unless
+ * it was given. 0, or -1 with
  * why (and in *fix, may be NULL, the ADH_FIX_* bits of what to change,
  * for the driver's words) when the choice is beyond the budget (use is
  * then the grid asked for). */
-int adh_config_choose_grid(adh_run_spec *s, const adh_sweep *sweep, char *why, size_t whylen, unsigned *fix);
+int adh_config_choose_grid(adh_run_spec *s, const adh_config *study, char *why, size_t whylen, unsigned *fix);
 /* The same for c's run and sweep. */
 int adh_config_grid(adh_config *c, char *why, size_t whylen, unsigned *fix);
 
@@ -318,23 +335,73 @@ void adh_config_visco(const adh_run_spec *s, struct adh_visco_rule_settings *out
  * and mode do not fit: a solid outside mode time, a solid's key or the
  * drive's for an elastic material or a mode without physical time, the
  * spring in relaxation or for rigid spheres, an iteration dwell in
- * physical time, Einf below E0, a sweep the mode cannot run. */
+ * physical time, Einf below E0. */
 int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why, size_t whylen);
+/* 0, or -1 with a sentence, when c's study does not fit physical time: plot
+ * = speed without one speed swept in time, plot = snap without one spring
+ * swept, eps swept in time. */
+int adh_config_time_sweep_check(const adh_config *c, char *why, size_t whylen);
 
-/* ---- sweeps ------------------------------------------------------------- */
+/* ---- sweeps (sweep.c) ----------------------------------------------------- */
 
-/* Name of a sweep parameter as scenes and tables spell it ("E", "sigma",
- * "eps"), "" for none. */
-const char *adh_sweep_name(adh_sweep_kind kind);
-/* The quantity of a sweep parameter (E a pressure, eps a length, sigma a
- * plain number), and a swept value as a sentence writes it ("0.5 pm"). */
-adh_quantity adh_sweep_quantity(adh_sweep_kind kind);
-adh_qtext_buf adh_sweep_value_text(adh_sweep_kind kind, double value);
-/* The run specification of run i of c's sweep: c's, with the protocol
- * every run steps (adh_config_protocol) and the swept value set. A config
+/* Sets the swept key `name` ("E", "material.E", "sigma", "turns") from
+ * text: a list "V1, V2, ..." (at most ADH_SWEEP_MAX_LIST values, each one
+ * the key takes), or a range "LO .. HI, N" / "LO .. HI, lin|log, N" (N
+ * values spaced evenly or by equal ratios, the ends exact; whole numbers
+ * for a count); "none" drops it. A key swept again is replaced in place;
+ * a new one comes last. 0, or -1 with why naming the value and what is
+ * allowed (nothing changed), also when the runs would pass
+ * ADH_SWEEP_MAX_RUNS. */
+int adh_sweep_set(adh_config *c, const char *name, const char *text, char *why, size_t whylen);
+/* The swept key `name`'s values as text adh_sweep_set reads back ("none"
+ * when not swept). */
+void adh_sweep_get(const adh_config *c, const char *name, char *buf, size_t len);
+/* The axis sweeping `name` (its name or key), or NULL. */
+const adh_sweep_axis *adh_sweep_axis_of(const adh_sweep *s, const char *name);
+/* Value j of axis a: its number (NAN for a word) and, in text, what the
+ * key is set to (a range's value exactly, %.17g). */
+double adh_sweep_value(const adh_sweep_axis *a, size_t j, char *text, size_t len);
+/* Number of runs: the product of the axes' lengths (1 without any). */
+size_t adh_sweep_runs(const adh_sweep *s);
+/* Run i's index along each axis (idx[naxes]): the first axis slowest. */
+void adh_sweep_index(const adh_sweep *s, size_t i, size_t *idx);
+/* "E = 1e+09, turns = -2e-09": run i's swept values (SI, %g), for messages. */
+void adh_sweep_describe(const adh_sweep *s, size_t i, char *buf, size_t len);
+/* Whether an axis sets a key starting with prefix ("grid.", "material."). */
+int adh_sweep_touches(const adh_sweep *s, const char *prefix);
+/* cb on the material of every run of s with base's specification, each
+ * once: the product of the axes that set a material key or sigma. */
+typedef void (*adh_sweep_material_cb)(const adh_material *m, void *ctx);
+void adh_sweep_materials(const adh_sweep *s, const adh_run_spec *base, adh_sweep_material_cb cb, void *ctx);
+/* The sweep's figure: plot, or for auto a map with two or more swept
+ * keys and none with one (and none without a sweep). */
+adh_sweep_plot adh_sweep_plot_kind(const adh_sweep *s);
+/* Whether the study's figure is Figure 7 with its panel of hysteresis
+ * against eps: eps alone swept, in relaxation, plot = force (the static
+ * curve's loop, eps -> 0, is then its line). */
+int adh_sweep_fig7_panel(const adh_config *c);
+/* Whether run-K directories are written (run_dirs, or auto). */
+int adh_sweep_run_dirs(const adh_sweep *s);
+
+/* The run specification of run i of c's sweep: c's, with the swept keys
+ * set as adh_config_set sets them (sigma last, as E from eq 17), the grid
+ * chosen again for the run alone when a grid key or the mode is swept,
+ * and the protocol every run steps (adh_config_protocol). A config
  * without a sweep is its own run 0. */
 void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run);
-/* Number of runs: the sweep's length, or 1. */
+/* Number of runs: the sweep's, or 1. */
 size_t adh_config_nruns(const adh_config *c);
+
+/* Drives: what is stepped. Runs that differ only in their turn (a swept
+ * turns key, in relaxation) share one drive, as Figure 5's turns do: one
+ * loading branch to the deepest, an unloading branch from each turn (up to
+ * ADH_MAX_TURNS a drive); every other run is a drive of its own. The
+ * number of drives; drive u's runs (ascending, at most ADH_MAX_TURNS) and
+ * their number. */
+size_t adh_sweep_drives(const adh_config *c);
+size_t adh_sweep_drive_runs(const adh_config *c, size_t u, size_t *runs);
+/* The specification drive u steps: its runs' with every one of their
+ * turns. */
+void adh_sweep_drive_spec(const adh_config *c, size_t u, adh_run_spec *run);
 
 #endif

@@ -149,7 +149,7 @@ static int parse_list(const char *text, adh_quantity q, int allow_none, double *
             break;
         seg = comma + 1;
     }
-    double vals[ADH_MAX_TURNS > ADH_MAX_SWEEP ? ADH_MAX_TURNS : ADH_MAX_SWEEP];
+    double vals[ADH_MAX_TURNS > ADH_MAX_PROFILES ? ADH_MAX_TURNS : ADH_MAX_PROFILES];
     snprintf(buf, sizeof buf, "%s", text);
     char *save = NULL;
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
@@ -188,8 +188,10 @@ static const word modes[] = { { "relax", ADH_MODE_RELAX }, { "static", ADH_MODE_
 static const word materials[] = { { "elastic", 0 }, { "sls", 1 }, { NULL, 0 } };
 static const word grids[] = { { "uniform", 0 }, { "graded", 1 }, { NULL, 0 } };
 static const word sweep_plots[] = { { "jump", ADH_SWEEP_PLOT_JUMP }, { "force", ADH_SWEEP_PLOT_FORCE },
+                                    { "map", ADH_SWEEP_PLOT_MAP }, { "curves", ADH_SWEEP_PLOT_CURVES },
                                     { "speed", ADH_SWEEP_PLOT_SPEED }, { "snap", ADH_SWEEP_PLOT_SNAP },
-                                    { "none", ADH_SWEEP_PLOT_NONE }, { NULL, 0 } };
+                                    { "none", ADH_SWEEP_PLOT_NONE }, { "auto", ADH_SWEEP_PLOT_AUTO }, { NULL, 0 } };
+static const word run_dirs[] = { { "yes", 1 }, { "no", 0 }, { "auto", -1 }, { NULL, 0 } };
 
 /* The value text names in list, or -1 with "'text' is not a WHAT: use A, B
  * or C". */
@@ -244,7 +246,7 @@ static int set_mode(adh_config *c, const key_def *k, const char *text, char *why
     if (parse_word(modes, "mode", text, &v, why, whylen) != 0)
         return -1;
     c->spec.mode = (adh_mode)v;
-    c->mode_given = 1;   /* kept whatever the material: adh_config_time_check refuses a mismatch */
+    c->spec.time.given |= ADH_TIME_MODE;   /* kept whatever the material: adh_config_time_check refuses a mismatch */
     return 0;
 }
 
@@ -406,38 +408,28 @@ static int set_plots(adh_config *c, const key_def *k, const char *text, char *wh
     return 0;
 }
 
-/* [sweep] E, sigma, eps: one parameter, a list of values above 0. */
+/* [sweep] KEY: a swept key (sweep.c), sweep.E, sweep.sigma and
+ * sweep.eps as much as any other. */
 static int set_sweep(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
-    adh_sweep *sw = &c->sweep;
-    const char *name = name_of(k);
-    adh_sweep_kind kind = ADH_SWEEP_NONE;
-    for (int i = ADH_SWEEP_E; i <= ADH_SWEEP_SPRING; i++)
-        if (!strcmp(name, adh_sweep_name((adh_sweep_kind)i)))
-            kind = (adh_sweep_kind)i;
-    if (strcasecmp(text, "none") == 0) {   /* not swept: the sweep of this parameter goes */
-        if (sw->kind == kind) {
-            sw->kind = ADH_SWEEP_NONE;
-            sw->n = 0;
-        }
-        return 0;
-    }
-    if (sw->kind != ADH_SWEEP_NONE && sw->kind != kind) {
-        snprintf(why, whylen, "'%s' and '%s' both given: a sweep varies one parameter", adh_sweep_name(sw->kind), name);
+    return adh_sweep_set(c, name_of(k), text, why, whylen);
+}
+
+static int set_run_dirs(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    return parse_word(run_dirs, "run_dirs value", text, &c->sweep.run_dirs, why, whylen);
+}
+
+/* The column a map shows: any name of a sweep.tsv column (checked when
+ * the table is drawn, where the columns are known). */
+static int set_map(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    size_t n = strlen(text);
+    if (n == 0 || n >= sizeof c->sweep.map || strspn(text, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.") != n) {
+        snprintf(why, whylen, "'%.60s' is not a column name: use one of sweep.tsv's (pulloff_F, hysteresis, ...)", text);
         return -1;
     }
-    double v[ADH_MAX_SWEEP];
-    size_t n;
-    if (parse_list(text, k->pub.q, 0, v, ADH_MAX_SWEEP, &n, why, whylen) != 0)
-        return -1;
-    for (size_t i = 0; i < n; i++)
-        if (!(v[i] > 0)) {
-            snprintf(why, whylen, "the swept value %s is not allowed: every value must be above 0", adh_qtext(v[i], k->pub.q).s);
-            return -1;
-        }
-    memcpy(sw->values, v, n * sizeof *v);
-    sw->n = n;
-    sw->kind = kind;
+    snprintf(c->sweep.map, sizeof c->sweep.map, "%s", text);
     return 0;
 }
 
@@ -478,7 +470,7 @@ static int set_material_kind(adh_config *c, const key_def *k, const char *text, 
     /* elastic leaves physical time unless its drive was given (a speed,
      * a dwell in seconds, a spring): then it is an elastic sphere in time */
     unsigned drive = c->spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);
-    if (!c->mode_given)
+    if (!(c->spec.time.given & ADH_TIME_MODE))
         c->spec.mode = v || (drive && c->spec.mode == ADH_MODE_TIME) ? ADH_MODE_TIME
                      : c->spec.mode == ADH_MODE_TIME ? ADH_MODE_RELAX : c->spec.mode;
     return 0;
@@ -676,8 +668,17 @@ static void get_plots(const adh_config *c, const key_def *k, char *buf, size_t l
 
 static void get_sweep(const adh_config *c, const key_def *k, char *buf, size_t len)
 {
-    int same = strcmp(adh_sweep_name(c->sweep.kind), name_of(k)) == 0;
-    get_list(c->sweep.values, same ? c->sweep.n : 0, buf, len);
+    adh_sweep_get(c, name_of(k), buf, len);
+}
+
+static void get_run_dirs(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", word_name(run_dirs, c->sweep.run_dirs));
+}
+
+static void get_map(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", c->sweep.map[0] ? c->sweep.map : "pulloff_F");
 }
 
 static void get_sweep_plot(const adh_config *c, const key_def *k, char *buf, size_t len)
@@ -714,7 +715,7 @@ static void get_speed(const adh_config *c, const key_def *k, char *buf, size_t l
 
 /* ---- the table ------------------------------------------------------------ */
 
-enum { S = ADH_KEY_SCENE, R = ADH_KEY_RUN };
+enum { S = ADH_KEY_SCENE, R = ADH_KEY_RUN, C = ADH_KEY_COUNT };
 
 /* Every key; adhere-scene(5) documents those a scene may hold (where S),
  * adhere(1) the flags that set the others. */
@@ -729,7 +730,7 @@ static const key_def keys[] = {
     { { "material.E0", S | R, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_time_quantity, F(spec.mat.E), get_quantity },
     { { "material.Einf", S | R, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_time_quantity, F(spec.time.Einf), get_quantity },
     { { "material.tau", S | R, ADH_Q_TIME, NULL }, set_time_quantity, F(spec.time.tau), get_quantity },
-    { { "grid.nodes", S | R, ADH_Q_NONE, NULL }, set_nodes, 0, get_nodes },
+        { { "grid.nodes", S | R | C, ADH_Q_NONE, NULL }, set_nodes, 0, get_nodes },
     { { "grid.spacing", S | R, ADH_Q_LENGTH, "nm" }, set_quantity_auto, F(spec.grid.asked.spacing), get_quantity },
     { { "grid.kernel", S | R, ADH_Q_NONE, NULL }, set_kernel, 0, get_kernel },
     { { "grid.grid", S | R, ADH_Q_NONE, NULL }, set_grid_kind, 0, get_grid_kind },
@@ -739,15 +740,16 @@ static const key_def keys[] = {
     { { "grid.operator", S | R, ADH_Q_NONE, NULL }, set_operator, 0, get_operator },
     { { "grid.force", R, ADH_Q_NONE, NULL }, set_bool, F(spec.grid.force), get_bool },
     { { "solver.eps", S | R, ADH_Q_LENGTH, "pm" }, set_quantity, F(spec.relax.eps), get_quantity },
-    { { "solver.max_iter", S | R, ADH_Q_NONE, NULL }, set_max_iter, 0, get_max_iter },
+    { { "solver.max_iter", S | R | C, ADH_Q_NONE, NULL }, set_max_iter, 0, get_max_iter },
     { { "solver.mixing", S | R, ADH_Q_NONE, NULL }, set_mixing, 0, get_mixing },
     { { "solver.momentum", S | R, ADH_Q_NONE, NULL }, set_momentum, 0, get_momentum },
     { { "protocol.start", S | R, ADH_Q_LENGTH, "nm" }, set_quantity_auto, F(spec.proto.start), get_quantity },
     { { "protocol.step", S | R, ADH_Q_LENGTH, "nm" }, set_quantity, F(spec.proto.step), get_quantity },
     { { "protocol.turns", S | R, ADH_Q_LENGTH, "nm" }, set_turns, 0, get_turns },
-    { { "protocol.dwell", S | R, ADH_Q_NONE, NULL }, set_dwell, 0, get_dwell },
+    { { "protocol.dwell", S | R | C, ADH_Q_NONE, NULL }, set_dwell, 0, get_dwell },
     { { "protocol.unload", S | R, ADH_Q_NONE, NULL }, set_bool, F(spec.proto.unload), get_bool },
     { { "protocol.speed", S | R, ADH_Q_SPEED, NULL }, set_speed, 0, get_speed },
+    { { "protocol.speed_out", S | R, ADH_Q_SPEED, NULL }, set_time_quantity, F(spec.time.speed_out), get_quantity },
     { { "protocol.dwell_time", S | R, ADH_Q_TIME, NULL }, set_time_quantity, F(spec.time.dwell), get_quantity },
     { { "protocol.spring", S | R, ADH_Q_STIFFNESS, NULL }, set_time_quantity, F(spec.time.spring), get_time_quantity },
     { { "output.plots", S, ADH_Q_NONE, NULL }, set_plots, 0, get_plots },
@@ -763,11 +765,10 @@ static const key_def keys[] = {
     { { "sweep.E", S, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_sweep, 0, get_sweep },
     { { "sweep.sigma", S, ADH_Q_NONE, NULL }, set_sweep, 0, get_sweep },
     { { "sweep.eps", S, ADH_Q_LENGTH, "pm" }, set_sweep, 0, get_sweep },
-    { { "sweep.speed", S, ADH_Q_SPEED, NULL }, set_sweep, 0, get_sweep },
-    { { "sweep.speed_out", S, ADH_Q_SPEED, NULL }, set_sweep, 0, get_sweep },
-    { { "sweep.spring", S, ADH_Q_STIFFNESS, NULL }, set_sweep, 0, get_sweep },
-    { { "sweep.jobs", S, ADH_Q_NONE, NULL }, set_jobs, 0, get_jobs },
+    { { "sweep.jobs", S | C, ADH_Q_NONE, NULL }, set_jobs, 0, get_jobs },
     { { "sweep.plot", S, ADH_Q_NONE, NULL }, set_sweep_plot, 0, get_sweep_plot },
+    { { "sweep.run_dirs", S, ADH_Q_NONE, NULL }, set_run_dirs, 0, get_run_dirs },
+    { { "sweep.map", S, ADH_Q_NONE, NULL }, set_map, 0, get_map },
     { { "tui.replay", 0, ADH_Q_NONE, NULL }, set_path, F(tui.replay), get_path },
     { { "tui.screen", 0, ADH_Q_NONE, NULL }, set_path, F(tui.screen), get_path },
     { { "tui.size", 0, ADH_Q_NONE, NULL }, set_size, 0, get_size },
@@ -775,12 +776,16 @@ static const key_def keys[] = {
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
+/* Any other key in [sweep] sweeps the key it names (sweep.c): one entry
+ * stands for them all. */
+static const key_def any_swept = { { "sweep.KEY", S, ADH_Q_NONE, NULL }, NULL, 0, NULL };
+
 static const key_def *find(const char *key)
 {
     for (size_t i = 0; i < NKEYS; i++)
         if (strcmp(keys[i].pub.key, key) == 0)
             return &keys[i];
-    return NULL;
+    return strncmp(key, "sweep.", 6) == 0 && key[6] ? &any_swept : NULL;
 }
 
 const adh_config_key *adh_config_key_find(const char *key)
@@ -828,7 +833,10 @@ int adh_config_get(const adh_config *c, const char *key, char *buf, size_t len)
     const key_def *k = find(key);
     if (!k || len == 0)
         return -1;
-    k->get(c, k, buf, len);
+    if (k == &any_swept)
+        adh_sweep_get(c, key + 6, buf, len);
+    else
+        k->get(c, k, buf, len);
     return 0;
 }
 
@@ -839,6 +847,8 @@ int adh_config_set(adh_config *c, const char *key, const char *text, char *why, 
         snprintf(why, whylen, "'%s' is not a key of the configuration", key);
         return -1;
     }
+    if (k == &any_swept)
+        return adh_sweep_set(c, key + 6, text, why, whylen);
     /* every setter changes nothing when it refuses: it writes last */
     if (k->set(c, k, text, why, whylen) != 0)
         return -1;

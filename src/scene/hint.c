@@ -146,7 +146,7 @@ static int rescues(const adh_config *c, const adh_given *g, const adh_config_key
     out[0] = '\0';
     for (const char *u = k->units; *u;) {
         char unit[16], text[256], why[512];
-        double si[ADH_MAX_TURNS > ADH_MAX_SWEEP ? ADH_MAX_TURNS : ADH_MAX_SWEEP];
+        double si[ADH_MAX_TURNS > ADH_SWEEP_MAX_LIST ? ADH_MAX_TURNS : ADH_SWEEP_MAX_LIST];
         size_t n, ul = strcspn(u, " ");
         snprintf(unit, sizeof unit, "%.*s", (int)(ul < sizeof unit ? ul : sizeof unit - 1), u);
         u += ul;
@@ -177,7 +177,7 @@ int adh_config_unit_hint(const adh_config *c, int (*accept)(adh_config *copy, vo
         const adh_given *g = &c->given[i];
         const adh_config_key *k = adh_config_key_find(g->key);
         char text[256], was[256], alt[600];
-        double si[ADH_MAX_TURNS > ADH_MAX_SWEEP ? ADH_MAX_TURNS : ADH_MAX_SWEEP];
+        double si[ADH_MAX_TURNS > ADH_SWEEP_MAX_LIST ? ADH_MAX_TURNS : ADH_SWEEP_MAX_LIST];
         size_t n;
         if (!k || !k->units || with_unit(g->text, "", text, sizeof text, si, sizeof si / sizeof si[0], &n) != 0)
             continue;

@@ -135,6 +135,13 @@ static void plan_run(const adh_run_spec *rc, const adh_plan *p, adh_plan_run *r)
     r->iterations = p->static_mode ? (double)(r->loading_steps + r->unloading_steps) : adh_plan_iterations(rc);
 }
 
+size_t adh_plan_steps(const adh_plan *p, const adh_run_spec *rc)
+{
+    adh_plan_run r;
+    plan_run(rc, p, &r);
+    return r.loading_steps + r.unloading_steps;
+}
+
 static void fmt_len(double v, char *buf, size_t len)
 {
     adh_format_quantity(v, ADH_Q_LENGTH, 4, buf, len);
@@ -178,6 +185,58 @@ static void plan_profiles(const adh_run_spec *run, adh_plan *p)
     }
 }
 
+/* A study's own files: the table, its figure, the shard's records. */
+static void plan_study_files(const adh_config *cfg, adh_plan *p)
+{
+    if (p->time_mode)
+        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the swept values, every summary number (the solid "
+             "and the drive, jumps, pull-off and their times and bases, hysteresis, dissipated, time, ...) and its status");
+    else
+        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the swept values, every summary number (E, sigma, eps, "
+             "jump_in_h0, h_before, h_star, max_load, pulloff_F, jump_out_h0, iterations, seconds, jumped, hysteresis, ...%s) "
+             "and its status", p->static_mode && adh_sweep_axis_of(&cfg->sweep, "protocol.spring") ? ", the snap points" : "");
+    note(p->stored, &p->nstored, "study.tsv, runs.tsv", "the study's fingerprint and each run's row as it ends: a rerun "
+         "skips the runs done, adhere merge joins shards");
+    int plot = cfg->output.plot ? adh_sweep_plot_kind(&cfg->sweep) : ADH_SWEEP_PLOT_NONE;
+    if (plot == ADH_SWEEP_PLOT_JUMP)
+        note(p->stored, &p->nstored, "jump.png", "jump separation vs sigma against eq 24 (Figure 3)");
+    if (plot == ADH_SWEEP_PLOT_FORCE)
+        note(p->stored, &p->nstored, "force.png", adh_sweep_fig7_panel(cfg)
+             ? "every run's force curve with the JKR prediction, and the hysteresis against eps with the static "
+               "curve's (its own resolved grid) as its line (Figure 7)"
+             : "every run's force curve with the JKR prediction (Figure 7)");
+    if (plot == ADH_SWEEP_PLOT_MAP)
+        note(p->stored, &p->nstored, "map.png", "a heat map of %s over %s and %s", cfg->sweep.map[0] ? cfg->sweep.map : "pulloff_F",
+             cfg->sweep.axis[0].name, cfg->sweep.axis[1].name);
+    if (plot == ADH_SWEEP_PLOT_CURVES)
+        note(p->stored, &p->nstored, "curves.png", "%s against %s, a curve for each value of the other keys",
+             cfg->sweep.map[0] ? cfg->sweep.map : "pulloff_F", cfg->sweep.axis[cfg->sweep.naxes - 1].name);
+    if (plot == ADH_SWEEP_PLOT_SPEED)
+        note(p->stored, &p->nstored, "speed.png", "pull-off and hysteresis against the speed, log axis; the static "
+             "pull-offs at E0 and Einf as lines (two static curves more)");
+    if (plot == ADH_SWEEP_PLOT_SNAP)
+        note(p->stored, &p->nstored, "snap.png", "the snap-in distance (base and sphere) against the spring, log "
+             "axes, with rigid spheres' (eq 22)");
+}
+
+/* About how much the study writes: each run's row twice (runs.tsv and
+ * sweep.tsv: ~50 numbers, 550 bytes measured, counted 800), and with run-K directories their tables (a
+ * force row per step) and figures. */
+static void plan_bytes(const adh_config *cfg, adh_plan *p)
+{
+    p->run_dirs = cfg->sweep.naxes ? adh_sweep_run_dirs(&cfg->sweep) : 1;
+    double steps = (double)(p->loading_steps + p->unloading_steps);
+    double runs = (double)p->nruns;
+    p->bytes = cfg->sweep.naxes ? 2 * ADH_PLAN_ROW_BYTES * runs + 4096 : 0;
+    if (p->run_dirs) {
+        int figs = 0;
+        for (unsigned b = 1; b <= ADH_PLOT_BULGE; b <<= 1)
+            figs += cfg->output.plot && (cfg->output.plots & b) ? 1 : 0;
+        /* a row of force.tsv is 13 numbers; summary.tsv ~3 kB; a figure ~60 kB */
+        p->bytes += steps * (double)p->nruns / (double)(p->drives ? p->drives : 1) * 260.0 + runs * (3072.0 + 60e3 * figs);
+    }
+}
+
 void adh_plan_make(const adh_config *cfg, adh_plan *p)
 {
     memset(p, 0, sizeof *p);
@@ -194,19 +253,39 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     p->stop_at_contact = p->elastic && s0->proto.nturns == 0;
     p->snapshots = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
     p->unloading_branches = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
-    /* every swept parameter leaves the grid alone: one kernel serves all */
     p->shared_kernel = p->elastic;
-    p->kernels = p->elastic ? 1 : 0;
     p->contact_speeds = cfg->output.plot && (cfg->output.plots & ADH_PLOT_CONTACT);
 
-    for (size_t i = 0; i < p->nruns; i++) {
+    /* the first runs one by one; the totals over every drive (runs that
+     * differ only in their turn share one loading branch) */
+    for (size_t i = 0; i < p->nruns && i < ADH_PLAN_MAX_RUNS; i++) {
         adh_run_spec rc;
         adh_config_sweep_run(cfg, i, &rc);
         plan_run(&rc, p, &p->runs[i]);
-        p->runs[i].value = cfg->sweep.kind ? cfg->sweep.values[i] : NAN;
-        p->loading_steps += p->runs[i].loading_steps;
-        p->unloading_steps += p->runs[i].unloading_steps;
     }
+    p->drives = adh_sweep_drives(cfg);
+    /* the distinct grids, each a kernel (one serves the runs that share it) */
+    adh_run_spec *grids = malloc(ADH_PLAN_MAX_KERNELS * sizeof *grids);
+    p->kernels = 0;
+    for (size_t u = 0; u < p->drives; u++) {
+        adh_run_spec rc;
+        adh_plan_run r;
+        adh_sweep_drive_spec(cfg, u, &rc);
+        size_t g = 0, known = !grids ? 0 : p->kernels < ADH_PLAN_MAX_KERNELS ? p->kernels : ADH_PLAN_MAX_KERNELS;
+        while (g < known && !adh_config_same_grid(&grids[g], &rc))
+            g++;
+        if (p->elastic && g == known) {
+            if (grids && g < ADH_PLAN_MAX_KERNELS)
+                grids[g] = rc;
+            p->kernels++;
+        }
+        plan_run(&rc, p, &r);
+        p->loading_steps += r.loading_steps;
+        p->unloading_steps += r.unloading_steps;
+    }
+    free(grids);
+    p->shared_kernel = p->elastic && p->kernels == 1;
+    plan_bytes(cfg, p);
 
     /* what is skipped, and why */
     if (!p->elastic)
@@ -228,8 +307,14 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         note(p->skipped, &p->nskipped, "plots", "--no-plot: no PNG is drawn");
     else if (!(cfg->output.plots & (ADH_PLOT_ALL | ADH_PLOT_PRECONTACT | ADH_PLOT_BULGE)))
         note(p->skipped, &p->nskipped, "plots of each run", "plots = none");
-    if (cfg->sweep.plot && !cfg->sweep.kind)
+    if (cfg->sweep.plot > 0 && !cfg->sweep.naxes)
         note(p->skipped, &p->nskipped, "sweep plot", "no swept parameter in [sweep]");
+    if (p->drives < p->nruns)
+        note(p->skipped, &p->nskipped, "loading per turn", "the %zu runs that differ only in their turn share %zu loading branches: "
+             "each drive unloads from every turn of its runs (up to %d)", p->nruns, p->drives, ADH_MAX_TURNS);
+    if (cfg->sweep.naxes && !p->run_dirs)
+        note(p->skipped, &p->nskipped, "run-K directories", "%zu runs: each run's row is in sweep.tsv, its own tables and plots "
+             "are not written (run_dirs = yes, --run-dirs=yes writes them)", p->nruns);
     if (p->static_mode)
         note(p->skipped, &p->nskipped, "relaxation", "mode = static: the equilibrium curve is followed by continuation, no eps steps");
     if (p->time_mode)
@@ -237,7 +322,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
              "rows fall where the integrator's tolerance puts them, not on the drive step d");
 
     /* what is stored */
-    const char *prefix = cfg->sweep.kind ? "run-K/" : "";
+    const char *prefix = cfg->sweep.naxes ? "run-K/" : "";
     char what[64];
     snprintf(what, sizeof what, "%sforce.tsv", prefix);
     if (p->time_mode)
@@ -280,32 +365,8 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
                     note(p->stored, &p->nstored, what, "%s", figs[i].what);
             }
     }
-    int snaps = p->static_mode && cfg->sweep.kind == ADH_SWEEP_SPRING;
-    if (p->nruns > 1 || cfg->sweep.kind) {
-        if (p->time_mode || snaps)
-            note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, %s", adh_sweep_name(cfg->sweep.kind),
-                 snaps ? "the snap-in's and snap-out's h0 and base" : "the solid and drive, jumps, pull-off, their "
-                 "bases, hysteresis, dissipated, time");
-        else
-            note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the %s value, E, sigma, eps, jump_in_h0, h_before, h_star, max_load, pulloff_F, jump_out_h0, iterations, seconds, jumped, hysteresis",
-                 adh_sweep_name(cfg->sweep.kind));
-        if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_JUMP)
-            note(p->stored, &p->nstored, "jump.png", "jump separation vs sigma against eq 24 (Figure 3)");
-        if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_FORCE)
-            note(p->stored, &p->nstored, "force.png", cfg->sweep.kind == ADH_SWEEP_EPS && !p->static_mode
-                 ? "every run's force curve with the JKR prediction, and the hysteresis against eps with the static "
-                   "curve's (its own resolved grid) as its line (Figure 7)"
-                 : "every run's force curve with the JKR prediction (Figure 7)");
-        if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_SPEED)
-            note(p->stored, &p->nstored, "speed.png", "pull-off and hysteresis against the speed, log axis; the static "
-                 "pull-offs at E0 and Einf as lines (two static curves more)");
-        if (cfg->output.plot && cfg->sweep.plot == ADH_SWEEP_PLOT_SNAP)
-            note(p->stored, &p->nstored, "snap.png", "the snap-in distance (base and sphere) against the spring, log "
-                 "axes, with rigid spheres' (eq 22)");
-        if (p->static_mode && cfg->sweep.kind == ADH_SWEEP_SPRING)
-            note(p->skipped, &p->nskipped, "a curve per k", "the spring does not change the static curve: it is "
-                 "computed once, and each k's snap points are read off it (where dF/dh0 = k)");
-    }
+    if (cfg->sweep.naxes)
+        plan_study_files(cfg, p);
 }
 
 static void list_lengths(FILE *f, const double *v, size_t n)
@@ -315,26 +376,54 @@ static void list_lengths(FILE *f, const double *v, size_t n)
     fputs(" nm", f);
 }
 
+/* "sweep: E = 1 GPa, 2 GPa (each an independent run)", or a range's ends
+ * and spacing. */
+static void print_axis(FILE *f, const adh_sweep_axis *x, int alone)
+{
+    char a[64], b[64];
+    fprintf(f, "sweep: %s =", x->name);
+    if (x->spacing != ADH_SWEEP_LIST) {
+        adh_format_quantity(x->lo, (adh_quantity)x->quantity, 4, a, sizeof a);
+        adh_format_quantity(x->hi, (adh_quantity)x->quantity, 4, b, sizeof b);
+        fprintf(f, " %s .. %s, %zu values, %s spacing", a, b, x->n, x->spacing == ADH_SWEEP_LOG ? "logarithmic" : "linear");
+    }
+    for (size_t j = 0; x->spacing == ADH_SWEEP_LIST && j < x->n; j++) {
+        if (isnan(x->num[j]) || x->quantity == ADH_Q_NONE)
+            snprintf(a, sizeof a, "%s", x->text[j]);
+        else
+            adh_format_quantity(x->num[j], (adh_quantity)x->quantity, 4, a, sizeof a);
+        fprintf(f, "%s %s", j ? "," : "", a);
+    }
+    fprintf(f, "%s\n", alone ? " (each an independent run)" : "");
+}
+
+static void print_study(FILE *f, const adh_config *cfg, const adh_plan *p)
+{
+    const adh_sweep *s = &cfg->sweep;
+    for (size_t k = 0; k < s->naxes; k++)
+        print_axis(f, &s->axis[k], s->naxes == 1);
+    if (s->naxes > 1) {
+        fprintf(f, "study: %zu runs, every combination of the %zu keys (", p->nruns, s->naxes);
+        for (size_t k = 0; k < s->naxes; k++)
+            fprintf(f, "%s%zu", k ? " x " : "", s->axis[k].n);
+        fprintf(f, "; %s varies slowest), each an independent run\n", s->axis[0].name);
+    }
+    if (p->drives < p->nruns)
+        fprintf(f, "drives: %zu (runs that differ only in their turn share a loading branch)\n", p->drives);
+    fprintf(f, "parallel: %d run%s at once%s\n", p->jobs, p->jobs == 1 ? "" : "s",
+            p->jobs > 1 ? " (one thread each; BLAS single-threaded)" : "");
+    fprintf(f, "run directories: %s\n", p->run_dirs ? "run-1 ... run-N, each run's tables and plots"
+            : "none (each run is a row of sweep.tsv)");
+}
+
 void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
 {
     char a[64], b[64];
     fprintf(f, "plan: %s\n", cfg->output.title[0] ? cfg->output.title : "(untitled)");
     fprintf(f, "scene: %s\n", cfg->scene[0] ? cfg->scene : "(built-in default)");
     fprintf(f, "runs: %zu\n", p->nruns);
-    if (cfg->sweep.kind) {
-        fprintf(f, "sweep: %s =", adh_sweep_name(cfg->sweep.kind));
-        for (size_t i = 0; i < cfg->sweep.n; i++) {
-            if (cfg->sweep.kind == ADH_SWEEP_SIGMA)
-                snprintf(a, sizeof a, "%g", cfg->sweep.values[i]);
-            else
-                adh_format_quantity(cfg->sweep.values[i], adh_sweep_quantity(cfg->sweep.kind), 4, a, sizeof a);
-            fprintf(f, "%s %s", i ? "," : "", a);
-        }
-        fprintf(f, "%s\n", cfg->spec.mode == ADH_MODE_STATIC && cfg->sweep.kind == ADH_SWEEP_SPRING
-                ? " (one static curve serves every k)" : " (each an independent run)");
-        fprintf(f, "parallel: %d run%s at once%s\n", p->jobs, p->jobs == 1 ? "" : "s",
-                p->jobs > 1 ? " (one thread each; BLAS single-threaded)" : "");
-    }
+    if (cfg->sweep.naxes)
+        print_study(f, cfg, p);
     if (!p->elastic)
         fprintf(f, "mode: rigid (eq 22 only)\n");
     else if (p->static_mode)
@@ -344,7 +433,7 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     else {
         adh_format_quantity(cfg->spec.relax.eps, ADH_Q_LENGTH, 3, a, sizeof a);
         fprintf(f, "mode: relax (the paper's relaxation, eps = %s%s)\n", a,
-                cfg->sweep.kind == ADH_SWEEP_EPS ? " unless swept" : "");
+                adh_sweep_axis_of(&cfg->sweep, "solver.eps") ? " unless swept" : "");
         adh_mix_rule_describe(&cfg->spec.relax, a, sizeof a);
         if (cfg->spec.relax.rule == ADH_MIX_MOMENTUM)
             fprintf(f, "mixing: %s (heavy ball, ratio from the measured stiffness)\n", a);
@@ -406,7 +495,7 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         adh_format_quantity(cfg->output.drive_speed, ADH_Q_SPEED, 3, a, sizeof a);
         fprintf(f, "drive speed: %s (turns d a / d h0 into contact-line speeds)\n", a);
     }
-    for (size_t i = 0; p->nruns > 1 && i < p->nruns; i++) {
+    for (size_t i = 0; p->nruns > 1 && i < p->nruns && i < ADH_PLAN_MAX_RUNS; i++) {
         const adh_plan_run *r = &p->runs[i];
         fmt_len(r->start, a, sizeof a);
         fmt_len(r->end, b, sizeof b);
@@ -414,6 +503,8 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
                 i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
                 p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
     }
+    if (p->nruns > ADH_PLAN_MAX_RUNS)
+        fprintf(f, "runs %d ... %zu: as the sweep lines say (their steps are in the total)\n", ADH_PLAN_MAX_RUNS + 1, p->nruns);
     if (p->time_mode)
         fprintf(f, "steps: as many as the integrator's tolerance needs (short ones at every fold, jump and turn)\n");
     else

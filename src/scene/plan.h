@@ -10,6 +10,9 @@
 #include "scene/config.h"
 
 #define ADH_PLAN_MAX_NOTES 32
+#define ADH_PLAN_MAX_RUNS 32      /* runs listed one by one; the totals count them all */
+#define ADH_PLAN_MAX_KERNELS 64   /* distinct grids told apart (more are counted as new) */
+#define ADH_PLAN_ROW_BYTES 800.0  /* a run's row of sweep.tsv, at most (about 550 measured) */
 
 typedef struct adh_plan_note {
     char what[64];
@@ -18,7 +21,6 @@ typedef struct adh_plan_note {
 
 /* One independent run (a sweep has several). */
 typedef struct adh_plan_run {
-    double value;             /* the swept value (NAN without a sweep) */
     double E, sigma;          /* the run's modulus and eq 17 */
     double start;             /* first drive position, m */
     double end;               /* last loading position, m: the deepest turn, or
@@ -34,13 +36,14 @@ typedef struct adh_plan_run {
 
 typedef struct adh_plan {
     size_t nruns;
-    adh_plan_run runs[ADH_MAX_SWEEP];
+    adh_plan_run runs[ADH_PLAN_MAX_RUNS];   /* the first runs */
+    size_t drives;            /* drives stepped: runs that differ only in their turn share one */
     int jobs;                 /* runs at once */
     int elastic;              /* 0: rigid spheres only (eq 22), no kernel at all */
     int static_mode;          /* the equilibrium continuation instead of relaxation */
     int time_mode;            /* physical time (mode time): the integrator's own steps */
     int shared_kernel;        /* one kernel serves every run (same grid) */
-    size_t kernels;           /* kernels built in all */
+    size_t kernels;           /* kernels built in all: one for each distinct grid */
     size_t loading_branches;  /* per run */
     size_t unloading_branches;/* per run */
     size_t snapshots;         /* states kept at the turns, per run */
@@ -50,7 +53,9 @@ typedef struct adh_plan {
     size_t profiles_stored;   /* profiles kept per run, an upper bound (a
                                  position may be passed on several branches) */
     int contact_speeds;       /* contact-line speeds (contact.png) asked */
-    size_t loading_steps, unloading_steps;   /* totals over the runs */
+    size_t loading_steps, unloading_steps;   /* totals over the runs (shared loading counted once) */
+    int run_dirs;             /* run-K directories written */
+    double bytes;             /* about how much the study writes, bytes */
     size_t nstored, nskipped;
     adh_plan_note stored[ADH_PLAN_MAX_NOTES];
     adh_plan_note skipped[ADH_PLAN_MAX_NOTES];
@@ -58,6 +63,10 @@ typedef struct adh_plan {
 
 /* Works out the plan of cfg (assumed valid: cli_options_validate passed). */
 void adh_plan_make(const adh_config *cfg, adh_plan *plan);
+
+/* The steps plan p expects of a drive of rc (loading, and unloading to
+ * the start at most). */
+size_t adh_plan_steps(const adh_plan *p, const adh_run_spec *rc);
 
 /* Prints it as "key: value" lines, one note per "stored:" / "skip:" line. */
 void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *plan);

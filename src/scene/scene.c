@@ -247,10 +247,10 @@ int adh_scene_find(const char *arg, char *path, size_t pathlen, char *why, size_
     return -1;
 }
 
-int adh_scene_load(const char *arg, adh_config *cfg, char *why, size_t whylen)
+int adh_scene_read(const char *arg, char *path, size_t pathlen, char **text_out, char *why, size_t whylen)
 {
-    char path[PATH_MAX];
-    if (adh_scene_find(arg, path, sizeof path, why, whylen) != 0)
+    *text_out = NULL;
+    if (adh_scene_find(arg, path, pathlen, why, whylen) != 0)
         return -1;
     /* read whole, so the same checks as for text in memory apply */
     FILE *f = fopen(path, "r");
@@ -292,6 +292,15 @@ int adh_scene_load(const char *arg, adh_config *cfg, char *why, size_t whylen)
         free(text);
         return -1;
     }
+    *text_out = text;
+    return 0;
+}
+
+int adh_scene_load(const char *arg, adh_config *cfg, char *why, size_t whylen)
+{
+    char path[PATH_MAX], *text;
+    if (adh_scene_read(arg, path, sizeof path, &text, why, whylen) != 0)
+        return -1;
     int rc = adh_scene_parse_string(text, path, cfg, why, whylen);
     free(text);
     if (rc != 0)

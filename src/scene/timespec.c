@@ -53,24 +53,25 @@ static const char *key_of(unsigned bits)
         return -1;                                \
     } while (0)
 
-static int sweep_fits(const adh_config *c, adh_mode mode, char *why, size_t whylen)
+/* What a study of physical time's keys needs beyond each run's own check:
+ * its figures' keys, and no eps (physical time has none). */
+int adh_config_time_sweep_check(const adh_config *c, char *why, size_t whylen)
 {
-    adh_sweep_kind k = c->sweep.kind;
-    const char *name = adh_sweep_name(k);
-    int timed = k == ADH_SWEEP_SPEED || k == ADH_SWEEP_SPEED_OUT;
-    if (timed && mode != ADH_MODE_TIME)
-        BAD("sweep.%s varies the drive's speed in m/s: scene.mode = %s has no physical time (material.material = sls, "
-            "or scene.mode = time)", name, mode_word(mode));
-    if (k == ADH_SWEEP_SPRING && mode != ADH_MODE_TIME && mode != ADH_MODE_STATIC)
-        BAD("sweep.spring varies the instrument's spring: scene.mode = %s cannot take one (scene.mode = static for "
-            "the snap points of the static curve, or physical time)", mode_word(mode));
-    adh_sweep_plot plot = c->sweep.plot;
-    if (plot == ADH_SWEEP_PLOT_SPEED && !timed)
-        BAD("sweep.plot = speed draws the pull-off against the swept speed: sweep.speed or sweep.speed_out is "
-            "needed");
-    if (plot == ADH_SWEEP_PLOT_SNAP && k != ADH_SWEEP_SPRING)
-        BAD("sweep.plot = snap draws the snap points against the spring: sweep.spring is needed");
-    if (k == ADH_SWEEP_EPS && mode == ADH_MODE_TIME)
+    adh_mode mode = c->spec.mode;
+    const adh_sweep *sw = &c->sweep;
+    int timed = adh_sweep_axis_of(sw, "protocol.speed") || adh_sweep_axis_of(sw, "protocol.speed_out");
+    adh_sweep_plot plot = sw->plot;
+    if (plot == ADH_SWEEP_PLOT_SPEED && (!timed || mode != ADH_MODE_TIME))
+        BAD("sweep.plot = speed draws the pull-off against the swept speed: a sweep of speed or speed_out in "
+            "physical time is needed (scene.mode = time)");
+    if (plot == ADH_SWEEP_PLOT_SNAP && (!adh_sweep_axis_of(sw, "protocol.spring") ||
+                                        (mode != ADH_MODE_TIME && mode != ADH_MODE_STATIC)))
+        BAD("sweep.plot = snap draws the snap points against the spring: a sweep of spring in scene.mode = static "
+            "or time is needed");
+    if ((plot == ADH_SWEEP_PLOT_SPEED || plot == ADH_SWEEP_PLOT_SNAP) && sw->naxes != 1)
+        BAD("sweep.plot = %s draws one swept key: the study varies %zu (plot = curves or map for more)",
+            plot == ADH_SWEEP_PLOT_SPEED ? "speed" : "snap", sw->naxes);
+    if (adh_sweep_axis_of(sw, "solver.eps") && mode == ADH_MODE_TIME)
         BAD("sweep.eps varies the relaxation's convergence parameter: physical time has none (its steps follow a "
             "tolerance on the solution)");
     return 0;
@@ -110,5 +111,5 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
             adh_visco_drive_validate(&v.drive, msg, sizeof msg) != ADH_SUCCESS)
             BAD("%s", msg);
     }
-    return sweep_fits(c, mode, why, whylen);
+    return 0;
 }

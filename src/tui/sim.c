@@ -190,7 +190,7 @@ static adh_run_spec mode_spec(const tui_sim *s, const adh_run_spec *r, adh_mode 
     m.mode = mode;
     if (mode != r->mode) {
         char why[512];   /* a refusal keeps the grid asked for (solves say why) */
-        adh_config_choose_grid(&m, &s->cfg.sweep, why, sizeof why, NULL);
+        adh_config_choose_grid(&m, &s->cfg, why, sizeof why, NULL);
     }
     return m;
 }
@@ -215,7 +215,7 @@ static int grid_changed(const tui_sim *s)
 static void regrid(tui_sim *s, char *why, size_t whylen)
 {
     unsigned fix;
-    if (adh_config_choose_grid(&s->cfg.spec, &s->cfg.sweep, why, whylen, &fix) == 0)
+    if (adh_config_choose_grid(&s->cfg.spec, &s->cfg, why, whylen, &fix) == 0)
         why[0] = '\0';
     else
         advice(why, whylen, fix);

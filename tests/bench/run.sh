@@ -38,6 +38,9 @@ echo
 # curve's cost against sigma (BENCH_FIGURES, BENCH_SIGMAS, BENCH_ROUNDS)
 ADHERE=./adhere tests/bench/fast.sh
 echo
+# a 4 x 4 map whole against 2 shards under GNU parallel
+ADHERE=./adhere tests/bench/studies.sh
+echo
 # shellcheck disable=SC2086 # the sizes are words
 "$BUILD/tests/bench-operator" "${BENCH_DENSE_MAX:-10000}" "${BENCH_HMAT_MAX:-100000}" ${BENCH_OPERATOR_N:-1000 3000 10000 30000 100000}
 echo

@@ -57,5 +57,12 @@ else
     no "fast.sh runs"
     sed 's/^/#   /' "$out"
 fi
+# the 4 x 4 map whole and in 2 shards under GNU parallel, on a coarse grid
+if STUDIES_SMOKE=1 ADHERE="${ADHERE_BIN:-./adhere}" tests/bench/studies.sh >"$out" 2>&1; then
+    ok "studies.sh runs ($(wc -l <"$out") lines)"
+else
+    no "studies.sh runs"
+    sed 's/^/#   /' "$out"
+fi
 echo "1..$n"
 [ "$failed" -eq 0 ]

@@ -190,7 +190,16 @@ check "SIGINT while gnuplot draws a sweep's figures: exit 130 within 1 s (gnuplo
     sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ] && awk -v t=$took 'BEGIN {exit !(t < 1)}'"
 check "... each run's summary.tsv and sweep.tsv say interrupted (sweep.tsv: $(sweep_word 1), $(sweep_word 2))" \
     sh -c "grep -qx 'status	interrupted' '$TMP/gpsweep/run-1/summary.tsv' && grep -qx 'status	interrupted' '$TMP/gpsweep/run-2/summary.tsv' && [ '$(sweep_word 1)' = interrupted ] && [ '$(sweep_word 2)' = interrupted ]"
-check "... and sweep.tsv has its # PARTIAL line" grep -q '^# PARTIAL: interrupted by signal 2 while the figures' "$TMP/gpsweep/sweep.tsv"
+# a study draws a run's figures as it ends: the other run may still be
+# stepping when the signal comes (then it is the one not finished)
+check "... and sweep.tsv has its # PARTIAL line ($(grep '^# PARTIAL' "$TMP/gpsweep/sweep.tsv"))" \
+    grep -Eq '^# PARTIAL: interrupted by signal 2( while the figures were drawn|: 1 of 2 runs finished)' "$TMP/gpsweep/sweep.tsv"
+# one run: it ends, then its figures are stopped; its row keeps its numbers
+printf '[sweep]\neps = 10pm\n' >"$TMP/gpone.scene"
+TMPDIR="$TMP/gptmp" gnuplot_wait gpone INT --batch -q -R 1um -d 0.5nm --turn=-1nm --plots=force "$TMP/gpone.scene" \
+    -o "$TMP/gpone"
+check "a one-run sweep's figures stopped: sweep.tsv says every run finished, the row keeps its pull-off" \
+    sh -c "grep -q '^# PARTIAL: interrupted by signal 2 while the figures were drawn' '$TMP/gpone/sweep.tsv' && awk -F'\t' '\$1 == 1 && \$11 + 0 < 0 && \$NF == \"interrupted\" {k++} END {exit !k}' '$TMP/gpone/sweep.tsv'"
 printf ':set N 100\n:set spacing 10nm\n:set eps 10pm\n3f\np\n' >"$TMP/gpwait.keys"
 (cd "$TMP" && gnuplot_wait tuiwait TERM --replay=gpwait.keys --screen=gpwait.screen --no-clock -o "$TMP/tuiwait" </dev/null)
 check "SIGTERM during the TUI's p while gnuplot draws: exit 130 within 1 s (gnuplot started $came, exit $rc after ${took} s)" \

@@ -39,11 +39,13 @@ bad "--spring is not allowed with --mode=relax" --spring=1N/m
 bad "--spring is not allowed with --mode=rigid" --mode=rigid --spring=1N/m
 bad "--dwell=5 counts relaxation iterations: in physical time the hold at a turn is --dwell-time" --material=sls --dwell=5
 printf '[scene]\nmode = relax\n[sweep]\nspeed = 1um/s, 2um/s\n' >"$TMP/sw.scene"
-bad "sweep.speed varies the drive's speed in m/s: --mode=relax has no physical time" "$TMP/sw.scene"
+bad "sweep run 1 (speed = 1e-06): --speed is physical time's: --mode=relax steps the drive in eps-time" "$TMP/sw.scene"
 printf '[material]\nmaterial = sls\n[sweep]\neps = 1pm, 2pm\n' >"$TMP/eps.scene"
 bad "physical time has none" "$TMP/eps.scene"
 printf '[material]\nmaterial = sls\n[sweep]\nE = 1GPa, 2GPa\nplot = snap\n' >"$TMP/snap.scene"
-bad "sweep.plot = snap draws the snap points against the spring: sweep.spring is needed" "$TMP/snap.scene"
+bad "sweep.plot = snap draws the snap points against the spring: a sweep of spring" "$TMP/snap.scene"
+printf '[material]\nmaterial = sls\n[sweep]\nspeed = 1um/s, 2um/s\ntau = 1ms, 2ms\nplot = speed\n' >"$TMP/speed2.scene"
+bad "sweep.plot = speed draws one swept key: the study varies 2" "$TMP/speed2.scene"
 
 # the plan says what runs
 "$ADHERE" --plan visco >"$TMP/plan" 2>&1
@@ -53,9 +55,9 @@ check "--plan visco: the drive and the time it spans" sh -c "grep -qF 'drive: th
 check "--plan visco stores events.tsv" grep -q '^stored: events.tsv' "$TMP/plan"
 check "--plan visco: summary.tsv with the solid, the drive, hysteresis and dissipated" grep -q "^stored: summary.tsv: .*the solid and the drive, hysteresis, dissipated" "$TMP/plan"
 "$ADHERE" --plan visco-speed >"$TMP/plans" 2>&1
-check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans'"
+check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans' && grep -q '^stored: sweep.tsv: .*hysteresis, dissipated, time' '$TMP/plans'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
-check "--plan afm: one static curve serves every k, snap.png" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^skip: a curve per k: ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
+check "--plan afm: a static curve per k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
 check "--plan fig4 (elastic) does not run in time" sh -c "grep -q '^mode: relax' '$TMP/plan4' && ! grep -q 'events.tsv\|^material:' '$TMP/plan4'"
 
@@ -93,14 +95,22 @@ check "its summary: snap-in outside the jump-in fold, the base further out than 
 check "and the snap-out's base lies F/k out, past the pull-off's h0" awk -F'\t' \
     '$1 == "snap_out_base" {b = $2} $1 == "pulloff_h0" {p = $2} END {exit !(b > p)}' "$d/summary.tsv"
 
-# a spring swept over one static curve: the softer, the further out
+# tsvcol FILE NAME: column NAME of sweep.tsv FILE, one value a row (run order)
+cat >"$TMP/tsvcol" <<'EOF'
+grep -v '^#' "$1" | awk -F'\t' -v n="$2" 'NR == 1 {for (i = 1; i <= NF; i++) if ($i == n) c = i; next} c {print $c}'
+EOF
+
+# a spring swept: a static curve per k, the softer, the further out
 d="$TMP/afm"
 "$ADHERE" --batch -q afm -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
 check "afm -N 150 --force exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
 check "afm wrote snap.png and sweep.tsv" [ -s "$d/snap.png" -a -s "$d/sweep.tsv" ]
 check "snap-in's base moves out monotonically as k softens from 40 to 0.1 N/m" sh -c \
-    "grep -v '^#' '$d/sweep.tsv' | tail -n +2 | awk -F'\t' 'NR > 1 && \$6 >= b {bad = 1} {b = \$6} END {exit bad || NR != 9}'"
-check "every run of the afm sweep shares the one curve" sh -c "[ \$(cat '$d'/run-*/force.tsv | grep -v '^#' | sort -u | wc -l) -eq \$(grep -v '^#' '$d/run-1/force.tsv' | wc -l) ]"
+    "[ \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base | awk 'NR > 1 && \$1 >= b {bad = 1} {b = \$1} END {print (bad || NR != 9) ? \"no\" : \"yes\"}') = yes ]"
+check "rigid spheres' snap-in base (eq 22) within 10 % of the sphere's at 0.1 N/m, where the spring is soft" sh -c \
+    "paste \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base >'$TMP/sb'; echo '$TMP/sb') \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base_rigid >'$TMP/sr'; echo '$TMP/sr') | head -1 | awk '{exit !(\$2 > 0.9 * \$1 && \$2 < 1.1 * \$1)}'"
+check "each row's snap points are its run's summary.tsv's" sh -c \
+    "sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base >'$TMP/rows'; for k in 1 2 3 4 5 6 7 8 9; do awk -F'\t' '\$1 == \"snap_in_base\" {print \$2}' '$d'/run-\$k/summary.tsv; done | cmp -s - '$TMP/rows'"
 
 # the speed sweep, two speeds: the faster retraction pulls off harder
 printf '[material]\nmaterial = sls\n[protocol]\nturns = -5nm\nspeed = 10nm/s\n[sweep]\nspeed_out = 10nm/s, 1mm/s\nplot = speed\n[output]\nplots = none\n' >"$TMP/speed.scene"
@@ -108,9 +118,33 @@ d="$TMP/sp"
 "$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
 check "a speed sweep exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
 check "it wrote speed.png" [ -s "$d/speed.png" ]
+check "sweep.tsv: mode time, the retraction speeds swept, the approach the scene's" sh -c \
+    "[ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' mode | sort -u)\" = time ] && [ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' speed_out | tr '\n' ' ')\" = '1e-08 0.001 ' ] && [ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' speed_in | sort -u)\" = 1e-08 ]"
 check "the faster retraction's pull-off is larger and below Einf/E0 times the slow one" sh -c \
-    "grep -v '^#' '$d/sweep.tsv' | tail -n +2 | awk -F'\t' '{p[NR] = -\$13} END {exit !(p[2] > 1.5 * p[1] && p[2] < 10 * p[1])}'"
-check "each row's status is its run's summary.tsv's ($(grep -v '^#' "$d/sweep.tsv" | tail -n +2 | cut -f23 | tr '\n' ' '))" sh -c \
+    "sh '$TMP/tsvcol' '$d/sweep.tsv' pulloff_F | awk '{p[NR] = -\$1} END {exit !(NR == 2 && p[2] > 1.5 * p[1] && p[2] < 10 * p[1])}'"
+for k in hysteresis dissipated jump_in_base pulloff_t time; do
+    check "row 2's $k is its run's summary.tsv's" sh -c \
+        "[ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' $k | sed -n 2p)\" = \"\$(awk -F'\t' '\$1 == \"$k\" {print \$2}' '$d/run-2/summary.tsv')\" ] && [ -n \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' $k | sed -n 2p)\" ]"
+done
+check "each row's status is its run's summary.tsv's ($(sh "$TMP/tsvcol" "$d/sweep.tsv" status | tr '\n' ' '))" sh -c \
     "for k in 1 2; do w=\$(awk -F'\t' '\$1 == \"status\" {print \$2}' '$d'/run-\$k/summary.tsv); \
      grep -v '^#' '$d/sweep.tsv' | awk -F'\t' -v k=\$k -v w=\"\$w\" '\$1 == k {f = 1; if (\$NF != w || w == \"\") exit 1} END {exit !f}' || exit 1; done"
+# the same study in 2 shards, joined by adhere merge: the whole study's table and speed.png
+for k in 1 2; do
+    "$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force --shard $k/2 -o "$TMP/spshard$k" >"$TMP/stdout" 2>"$TMP/stderr"
+done
+"$ADHERE" merge -o "$TMP/spmerged" "$TMP/spshard2" "$TMP/spshard1" 2>"$TMP/merge.err"
+check "merge joins the 2 shards of the speed study (exit $?: $(head -c 200 "$TMP/merge.err"))" [ -s "$TMP/spmerged/sweep.tsv" ]
+sc=$(grep -v '^#' "$d/sweep.tsv" | head -1 | tr '\t' '\n' | grep -nx seconds | cut -d: -f1)
+check "the merged sweep.tsv is the whole study's but for its timing column ($sc) and speed.png is drawn" sh -c \
+    "untimed() { grep -v '^# scene:' \"\$1\" | cut -f1-$((sc - 1)),$((sc + 1))-; }; untimed '$d/sweep.tsv' >'$TMP/a'; untimed '$TMP/spmerged/sweep.tsv' >'$TMP/b'; cmp -s '$TMP/a' '$TMP/b' && [ -s '$TMP/spmerged/speed.png' ]"
+# a study of any key runs in time: tau and the speed, their product
+printf '[material]\nmaterial = sls\n[protocol]\nturns = -3nm\n[sweep]\ntau = 1ms, 1us\nspeed = 1um/s, 10um/s\n[output]\nplots = none\n' >"$TMP/prod.scene"
+d="$TMP/prod"
+"$ADHERE" --batch -q "$TMP/prod.scene" -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "a product of tau and speed in time exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
+check "its rows: tau slowest, speed both ways, events.tsv in every run" sh -c \
+    "[ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' tau | tr '\n' ' ')\" = '0.001 0.001 9.9999999999999995e-07 9.9999999999999995e-07 ' ] && [ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' speed_out | tr '\n' ' ')\" = '9.9999999999999995e-07 9.9999999999999991e-06 9.9999999999999995e-07 9.9999999999999991e-06 ' ] && [ -s '$d/run-4/events.tsv' ]"
+check "tau = 1 ms: 10 um/s pulls off harder than 1 um/s; tau = 1 us: within 1 % (speed x tau far below z0, the relaxed limit)" sh -c \
+    "sh '$TMP/tsvcol' '$d/sweep.tsv' pulloff_F | awk '{p[NR] = -\$1} END {exit !(NR == 4 && p[2] > 1.05 * p[1] && p[4] < 1.01 * p[3] && p[3] < 1.01 * p[4])}'"
 done_testing

@@ -54,10 +54,10 @@ E = 1GPa
 A = 1e-19J
 E = 2GPa
 S
-bad 3 "a sweep varies one parameter" <<'S'
+bad 3 "sigma and E both set the modulus" <<'S'
 [sweep]
 sigma = 1, 2
-eps = 1pm
+E = 1GPa
 S
 bad 2 "the swept value -1 is not allowed" <<'S'
 [sweep]

@@ -88,7 +88,7 @@ static void refusals(void)
     ok(adh_config_set(&c, "material.sigma", "3", why, sizeof why) != 0 && strstr(why, "material.sigma"),
        "no key material.sigma: %s", why);
     ok(set(&c, "sweep.E", "1GPa,2GPa") == 0 && adh_config_set(&c, "sweep.sigma", "1", why, sizeof why) != 0 &&
-       strstr(why, "one parameter"), "a sweep varies one parameter: %s", why);
+       strstr(why, "both set the modulus"), "sigma and E do not go together (sigma sets E): %s", why);
 }
 
 /* Turns imply unloading; the grid asked for is kept beside the one chosen. */
@@ -147,6 +147,110 @@ static void protocol(void)
     adh_material_derive(&run.mat, &d);
     ok(fabs(d.sigma - 10) < 1e-9 && run.proto.nprofiles == adh_config_protocol(&c).nprofiles,
        "sweep run 2: sigma %g, the base's profile positions", d.sigma);
+}
+
+/* A study: keys swept as lists and ranges, their product in order, each
+ * run the configuration with its values set, runs that differ only in
+ * their turn on one drive. */
+static void studies(void)
+{
+    static adh_config c, before;
+    char why[512];
+    /* a run key sets nothing outside the run's specification: a run of a
+     * study is the spec with its keys set (sweep.c copies the spec alone) */
+    adh_config_default(&c);
+    const adh_config_key *k;
+    int alone = 1;
+    for (size_t i = 0; (k = adh_config_key_at(i)); i++) {
+        if (!(k->where & ADH_KEY_RUN))
+            continue;
+        char text[4096];
+        before = c;
+        adh_config_get(&c, k->key, text, sizeof text);
+        adh_config_set(&c, k->key, text, why, sizeof why);
+        before.spec = c.spec;
+        if (memcmp(&before, &c, sizeof c) != 0) {
+            printf("#   %s changed more than the spec\n", k->key);
+            alone = 0;
+        }
+    }
+    ok(alone, "every run key sets the run's specification and nothing else");
+
+    adh_config_default(&c);
+    ok(set(&c, "sweep.E", "10MPa .. 10GPa, log, 13") == 0 && c.sweep.naxes == 1 && adh_config_nruns(&c) == 13,
+       "E = 10MPa .. 10GPa, log, 13: 13 runs");
+    const adh_sweep_axis *a = &c.sweep.axis[0];
+    double mid = adh_sweep_value(a, 6, NULL, 0);
+    ok(adh_sweep_value(a, 0, NULL, 0) == 1e7 && adh_sweep_value(a, 12, NULL, 0) == 1e10 &&
+       fabs(mid / 316227766.01683795 - 1) < 1e-15, "its ends exact, its middle 10^8.5 Pa (%.17g)", mid);
+    adh_run_spec run;
+    adh_config_sweep_run(&c, 6, &run);
+    ok(run.mat.E == mid, "run 7's E is that value, to the last bit");
+    ok(set(&c, "sweep.turns", "-1nm .. -2nm, 3") == 0 && adh_config_nruns(&c) == 39 &&
+       fabs(adh_sweep_value(&c.sweep.axis[1], 1, NULL, 0) + 1.5e-9) < 1e-24, "turns = -1nm .. -2nm, 3 (linear): the product has 39 runs");
+    size_t idx[ADH_SWEEP_MAX_AXES];
+    adh_sweep_index(&c.sweep, 7, idx);
+    adh_config_sweep_run(&c, 7, &run);
+    ok(idx[0] == 2 && idx[1] == 1 && run.proto.nturns == 1 && run.proto.turns[0] == adh_sweep_value(&c.sweep.axis[1], 1, NULL, 0) && run.proto.unload &&
+       run.mat.E == adh_sweep_value(a, 2, NULL, 0), "run 8 is E's third value and the second turn: the first key varies slowest");
+    char text[256];
+    adh_sweep_describe(&c.sweep, 7, text, sizeof text);
+    ok(!strcmp(text, "E = 3.16228e+07, turns = -1.5e-09"), "described as %s", text);
+    ok(adh_sweep_drives(&c) == 13, "the runs of one E share a drive: 13 drives");
+    size_t runs[ADH_MAX_TURNS];
+    size_t n = adh_sweep_drive_runs(&c, 2, runs);
+    adh_config_sweep_run(&c, 6, &run);
+    adh_run_spec drive;
+    adh_sweep_drive_spec(&c, 2, &drive);
+    ok(n == 3 && runs[0] == 6 && runs[1] == 7 && runs[2] == 8 && drive.proto.nturns == 3 && drive.mat.E == run.mat.E,
+       "drive 3 steps runs 7, 8, 9: their three turns, their E");
+    adh_sweep_get(&c, "turns", text, sizeof text);
+    before = c;
+    ok(set(&before, "sweep.turns", text) == 0 && !memcmp(&before.sweep, &c.sweep, sizeof c.sweep),
+       "a range reads back from its text (%s)", text);
+    ok(set(&c, "sweep.turns", "none") == 0 && c.sweep.naxes == 1 && adh_config_nruns(&c) == 13, "turns = none drops the key");
+
+    /* physical time's sweeps are studies of its keys: the speed both ways,
+     * the retraction's alone, the spring */
+    adh_config_default(&c);
+    ok(set(&c, "material.material", "sls") == 0 && set(&c, "protocol.speed", "1nm/s") == 0 &&
+       set(&c, "sweep.speed_out", "1nm/s, 1mm/s") == 0 && !strcmp(c.sweep.axis[0].key, "protocol.speed_out"),
+       "[sweep] speed_out sweeps protocol.speed_out");
+    adh_config_sweep_run(&c, 1, &run);
+    ok(run.mode == ADH_MODE_TIME && run.time.speed_out == 1e-3 && run.time.speed_in == 1e-9,
+       "run 2 retracts at 1 mm/s, approaching at the scene's 1 nm/s");
+    ok(set(&c, "sweep.speed_out", "none") == 0 && set(&c, "sweep.speed", "1um/s, 2um/s") == 0 &&
+       !strcmp(c.sweep.axis[0].key, "protocol.speed"), "[sweep] speed sweeps protocol.speed");
+    adh_config_sweep_run(&c, 1, &run);
+    ok(run.time.speed_in == 2e-6 && run.time.speed_out == 2e-6, "run 2 moves at 2 um/s both ways");
+    adh_config_default(&c);
+    ok(set(&c, "scene.mode", "static") == 0 && set(&c, "sweep.spring", "0.1, 40") == 0 &&
+       !strcmp(c.sweep.axis[0].key, "protocol.spring"), "[sweep] spring sweeps protocol.spring");
+    adh_config_sweep_run(&c, 1, &run);
+    ok(run.mode == ADH_MODE_STATIC && run.time.spring == 40 && (run.time.given & ADH_TIME_MODE),
+       "run 2: k = 40 N/m on the static curve, the mode as given");
+    ok(set(&c, "sweep.spring", "0, 1") != 0, "a spring of 0 N/m is refused as a swept value");
+
+    adh_config_default(&c);
+    ok(set(&c, "sweep.nodes", "100 .. 1000, log, 4") == 0 && adh_sweep_value(&c.sweep.axis[0], 1, NULL, 0) == 215,
+       "a count's range is rounded: 100, 215, 464, 1000");
+    ok(adh_config_set(&c, "sweep.nodes", "100 .. 103, 10", why, sizeof why) != 0 && strstr(why, "repeat"),
+       "whole numbers that repeat are refused: %s", why);
+    ok(set(&c, "sweep.material.A", "1e-20J, 2e-20J") == 0 && set(&c, "sweep.sigma", "3, 30") == 0 &&
+       !strcmp(c.sweep.axis[1].name, "A"), "A by its key, sigma beside it");
+    adh_config_sweep_run(&c, 3, &run);   /* run 4: the second A, the second sigma (nodes' first) */
+    adh_derived d;
+    adh_material_derive(&run.mat, &d);
+    ok(run.mat.A == 2e-20 && fabs(d.sigma - 30) < 1e-12, "sigma sets E from the run's own A (sigma %.15g)", d.sigma);
+    ok(adh_config_set(&c, "sweep.E", "1GPa,2GPa", why, sizeof why) != 0 && strstr(why, "both set the modulus"),
+       "E beside sigma: %s", why);
+    ok(adh_config_set(&c, "sweep.A", "1e-20J, 3, x", why, sizeof why) != 0 && c.sweep.axis[1].n == 2,
+       "a value the key does not take refuses the list, the study unchanged: %s", why);
+    ok(adh_config_set(&c, "sweep.dir", "a, b", why, sizeof why) != 0 && strstr(why, "no key of a run"),
+       "an output key is not swept: %s", why);
+    ok(adh_config_set(&c, "sweep.step", "1pm .. 1nm, 1000", why, sizeof why) == 0 &&
+       adh_config_set(&c, "sweep.R", "1um .. 1mm, log, 100", why, sizeof why) != 0 && strstr(why, "100000"),
+       "past 100000 runs: refused (%s)", why);
 }
 
 static void say_flag(const char *key, const char *value, char *buf, size_t len, void *ctx)
@@ -234,6 +338,7 @@ int main(void)
     refusals();
     parts();
     protocol();
+    studies();
     reword();
     units_and_hints();
     return tap_done();

@@ -76,7 +76,7 @@ static void default_scene_is_builtin_default(void)
     ok(isnan(c.spec.proto.start) && same(c.spec.proto.step, d.spec.proto.step) && c.spec.proto.nturns == 1 &&
        same(c.spec.proto.turns[0], d.spec.proto.turns[0]) && c.spec.proto.unload == 1 && c.spec.proto.dwell == 0 && c.spec.proto.nprofiles == 0,
        "default.scene's protocol is the built-in default's (turn %g m)", c.spec.proto.turns[0]);
-    ok(c.output.plots == d.output.plots && c.output.plot == 1 && same(c.output.drive_speed, d.output.drive_speed) && c.sweep.kind == ADH_SWEEP_NONE,
+    ok(c.output.plots == d.output.plots && c.output.plot == 1 && same(c.output.drive_speed, d.output.drive_speed) && c.sweep.naxes == 0,
        "default.scene's outputs are the built-in default's");
     ok_rel(sigma_of(&c.spec.mat), 7.50, 2e-3, "default sigma (Figure 4)");
 }
@@ -101,23 +101,24 @@ static void figure_parameters(void)
     }
     if (!load("fig3", &c)) {
         adh_plan_make(&c, &p);
-        ok(c.sweep.kind == ADH_SWEEP_SIGMA && c.sweep.n >= 7 && c.sweep.values[0] <= 0.03 &&
-           c.sweep.values[c.sweep.n - 1] >= 30, "fig3 sweeps sigma over three decades (%zu values)", c.sweep.n);
-        ok(p.nruns == c.sweep.n && p.stop_at_contact && p.unloading_branches == 0, "fig3: %zu approach-only runs", p.nruns);
+        const adh_sweep_axis *a = &c.sweep.axis[0];
+        size_t n = c.sweep.naxes == 1 ? a->n : 0;
+        ok(n >= 7 && !strcmp(a->name, "sigma") && a->num[0] <= 0.03 && a->num[n - 1] >= 30,
+           "fig3 sweeps sigma over three decades (%zu values)", n);
+        ok(p.nruns == n && p.stop_at_contact && p.unloading_branches == 0, "fig3: %zu approach-only runs", p.nruns);
         ok(p.kernels == 1 && p.shared_kernel, "fig3: one kernel shared by every run");
         ok(p.jobs >= 1 && c.sweep.plot == ADH_SWEEP_PLOT_JUMP && has_stored(&p, "jump.png") && has_stored(&p, "sweep.tsv"),
            "fig3 writes sweep.tsv and jump.png (%d jobs)", p.jobs);
         adh_run_spec r;
-        size_t wrong = c.sweep.n;   /* the first run whose sigma is off, if any */
-        for (size_t i = 0; i < c.sweep.n && wrong == c.sweep.n; i++) {
+        size_t wrong = n;   /* the first run whose sigma is off, if any */
+        for (size_t i = 0; i < n && wrong == n; i++) {
             adh_config_sweep_run(&c, i, &r);
-            if (fabs(sigma_of(&r.mat) - c.sweep.values[i]) > 1e-9 * c.sweep.values[i])
+            if (fabs(sigma_of(&r.mat) - a->num[i]) > 1e-9 * a->num[i])
                 wrong = i;
         }
-        ok(c.sweep.n > 0 && wrong == c.sweep.n, "every fig3 run has the sigma it names (E from eq 17)%s",
-           wrong < c.sweep.n ? ": one is off" : "");
-        if (wrong < c.sweep.n)
-            printf("#   run %zu: sigma %g, named %g\n", wrong, sigma_of(&r.mat), c.sweep.values[wrong]);
+        ok(n > 0 && wrong == n, "every fig3 run has the sigma it names (E from eq 17)%s", wrong < n ? ": one is off" : "");
+        if (wrong < n)
+            printf("#   run %zu: sigma %g, named %g\n", wrong, sigma_of(&r.mat), a->num[wrong]);
         ok(same(c.spec.mat.z0, 0.5e-9), "fig3: z0 = 0.5 nm");
     }
     if (!load("fig4", &c)) {
@@ -145,8 +146,9 @@ static void figure_parameters(void)
         ok(c.spec.proto.nturns == 9 && p.loading_branches == 1 && p.unloading_branches == 9, "fig6: 9 turns on one loading branch");
     }
     if (!load("fig7", &c)) {
-        ok(c.sweep.kind == ADH_SWEEP_EPS && c.sweep.n == 3 && same(c.sweep.values[0], 1e-12) &&
-           same(c.sweep.values[1], 0.5e-12) && same(c.sweep.values[2], 1e-13), "fig7 sweeps eps = 1, 0.5, 0.1 pm");
+        const adh_sweep_axis *a = &c.sweep.axis[0];
+        ok(c.sweep.naxes == 1 && !strcmp(a->key, "solver.eps") && a->n == 3 && same(a->num[0], 1e-12) &&
+           same(a->num[1], 0.5e-12) && same(a->num[2], 1e-13), "fig7 sweeps eps = 1, 0.5, 0.1 pm");
         adh_plan_make(&c, &p);
         ok(p.nruns == 3 && p.unloading_branches == 1 && c.sweep.plot == ADH_SWEEP_PLOT_FORCE, "fig7: 3 loops, combined force figure");
         ok_rel(sigma_of(&c.spec.mat), 7.50, 2e-3, "fig7 sigma (Figure 4's material)");
@@ -213,7 +215,15 @@ static void bad_scenes(void)
     bad("[scene]\nmode = fast\n", 2, "not a mode");
     bad("[output]\nplots = force, pie\n", 2, "'pie' is not a plot");
     bad("[output]\nplots = none, force\n", 2, "cannot be combined");
-    bad("[sweep]\nsigma = 1, 2\nE = 1GPa\n", 3, "a sweep varies one parameter");
+    bad("[sweep]\nsigma = 1, 2\nE = 1GPa\n", 3, "sigma and E both set the modulus");
+    bad("[sweep]\nE = 1GPa, 2GPa, 1GPa\n", 2, "given twice");
+    bad("[sweep]\nnodes = 100 .. 1000\n", 2, "not a range");
+    bad("[sweep]\nE = 1GPa .. 2GPa, cubic, 3\n", 2, "not a spacing");
+    bad("[sweep]\nturns = -1nm .. 1nm, log, 3\n", 2, "one sign");
+    bad("[sweep]\nmode = relax .. static, 2\n", 2, "not a number");
+    bad("[sweep]\nE = 1GPa .. 2GPa, 400\nA = 1e-20J .. 1e-19J, 400\n", 3, "more than 100000 runs");
+    bad("[sweep]\nYoung = 1, 2\n", 2, "no key of a run");
+    bad("[sweep]\ndir = a, b\n", 2, "no key of a run");
     bad("[sweep]\nsigma = 1, -2\n", 2, "above 0");
     bad("[sweep]\neps = 1GPa\n", 2, "a length");
     bad("[sweep]\nplot = pie\n", 2, "not a sweep plot");

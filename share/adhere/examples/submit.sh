@@ -1,0 +1,28 @@
+#!/bin/sh
+# Submits a study to Slurm as N shards (a job array of study.sbatch) and
+# its merge (merge.sbatch), which waits for the array:
+#
+#   submit.sh SCENE OUT N [adhere flags...]
+#
+# e.g. submit.sh map.scene "$PWD/study" 8 --eps=0.5pm. Prints the two job
+# ids. The results: OUT/merged/sweep.tsv and its figure; each shard's rows
+# in OUT/shard-K/runs.tsv. `adhere --plan SCENE --shard 1/N` first says
+# what a shard holds and about how long it takes.
+set -eu
+if [ $# -lt 3 ]; then
+    echo "usage: $0 SCENE OUT N [adhere flags...]" >&2
+    exit 2
+fi
+here=$(cd "$(dirname "$0")" && pwd)
+scene=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+out=$2 n=$3
+shift 3
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+array=$(ADHERE_SCENE="$scene" ADHERE_OUT="$out" ADHERE_ARGS="$*" \
+    sbatch --parsable --export=ALL --chdir="$out" --array="1-$n" "$here/study.sbatch")
+array=${array%%;*}
+merge=$(ADHERE_OUT="$out" sbatch --parsable --export=ALL --chdir="$out" --dependency="afterany:$array" \
+    "$here/merge.sbatch")
+merge=${merge%%;*}
+echo "shards: job $array (array 1-$n), merge: job $merge"

@@ -1,0 +1,360 @@
+#ifndef _DEFAULT_SOURCE
+#define _DEFAULT_SOURCE   /* flock(2) */
+#endif
+#include "cli/merge.h"
+
+#include <errno.h>
+#include <math.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli/exit.h"
+#include "cli/figures.h"
+#include "cli/interrupt.h"
+#include "cli/sweep.h"
+#include "cli/study.h"
+#include "cli/studyrow.h"
+#include "plot/outdir.h"
+
+typedef struct shard {
+    const char *path;
+    int fd;
+    cli_study st;
+    adh_config *cfg;
+} shard;
+
+typedef struct merge {
+    cli_options *cli;
+    shard *sh;
+    size_t n;
+    cli_studyrow *rows;            /* the study's rows, those found done */
+    int *from;                     /* the shard each run's row came from, -1 none */
+    adh_outdir *out;
+    struct stat out_st;
+} merge;
+
+/* "5, 8, 11-14, 20 and 3 more": runs (from 1) in a short list. */
+static void run_list(const size_t *runs, size_t n, char *buf, size_t len)
+{
+    size_t shown = 0;
+    buf[0] = '\0';
+    for (size_t a = 0; a < n; shown++) {
+        size_t b = a;
+        while (b + 1 < n && runs[b + 1] == runs[b] + 1)
+            b++;
+        char piece[64];
+        if (shown == 12) {
+            snprintf(piece, sizeof piece, " and more (%zu in all)", n);
+            b = n - 1;
+        } else if (b > a) {
+            snprintf(piece, sizeof piece, "%s%zu-%zu", shown ? ", " : "", runs[a] + 1, runs[b] + 1);
+        } else {
+            snprintf(piece, sizeof piece, "%s%zu", shown ? ", " : "", runs[a] + 1);
+        }
+        size_t o = strlen(buf), k = strlen(piece);
+        if (o + k >= len)
+            return;
+        memcpy(buf + o, piece, k + 1);
+        a = b + 1;
+    }
+}
+
+/* What two studies' recipes differ in, for the refusal. */
+static void difference(const cli_study *a, const cli_study *b, char *buf, size_t len)
+{
+    if ((a->scene_text == NULL) != (b->scene_text == NULL) ||
+        (a->scene_text && strcmp(a->scene_text, b->scene_text) != 0)) {
+        snprintf(buf, len, "their scenes differ");
+        return;
+    }
+    for (size_t i = 0; i < a->nset || i < b->nset; i++)
+        if (i >= a->nset || i >= b->nset || strcmp(a->set[i].key, b->set[i].key) ||
+            strcmp(a->set[i].value, b->set[i].value)) {
+            snprintf(buf, len, "their options differ (%s%s%s against %s%s%s)", i < a->nset ? a->set[i].key : "none",
+                     i < a->nset ? " = " : "", i < a->nset ? a->set[i].value : "", i < b->nset ? b->set[i].key : "none",
+                     i < b->nset ? " = " : "", i < b->nset ? b->set[i].value : "");
+            return;
+        }
+    snprintf(buf, len, "their options differ in keys that do not change the runs");
+}
+
+/* Shard k's directory: opened, not in use by a running shard (a shared
+ * lock beside its exclusive one), its study read. 0, or 2 with why. */
+static int open_shard(merge *m, size_t k, char *why, size_t whylen)
+{
+    shard *s = &m->sh[k];
+    s->path = m->cli->merge[k];
+    s->fd = open(s->path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (s->fd < 0) {
+        snprintf(why, whylen, "cannot open %.1000s: %s", s->path, strerror(errno));
+        return 2;
+    }
+    struct stat st;
+    int own = m->out && fstat(s->fd, &st) == 0 && st.st_dev == m->out_st.st_dev && st.st_ino == m->out_st.st_ino;
+    if (!own && flock(s->fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+        snprintf(why, whylen, "%.1000s is in use: its shard is still writing into it; merge when it has finished",
+                 s->path);
+        return 2;
+    }
+    if (!(s->cfg = malloc(sizeof *s->cfg))) {
+        snprintf(why, whylen, "out of memory");
+        return 2;
+    }
+    int r = cli_study_read(&s->st, s->cfg, s->fd, s->path, why, whylen);
+    if (r == 0)
+        snprintf(why, whylen, "%.1000s holds no study.tsv: not the directory of a shard (adhere --shard=K/N -o DIR)",
+                 s->path);
+    return r == 1 ? 0 : 2;
+}
+
+/* Every shard of one study, one split, each shard once. 0, or 2 with why. */
+static int same_study(const merge *m, char *why, size_t whylen)
+{
+    const cli_study *a = &m->sh[0].st;
+    for (size_t k = 1; k < m->n; k++) {
+        const cli_study *b = &m->sh[k].st;
+        char diff[600];
+        if (strcmp(a->fingerprint, b->fingerprint) != 0) {
+            difference(a, b, diff, sizeof diff);
+            snprintf(why, whylen, "%.900s (study %s) and %.900s (study %s) are shards of different studies: %.600s",
+                     m->sh[0].path, a->fingerprint, m->sh[k].path, b->fingerprint, diff);
+            return 2;
+        }
+        if (a->shard_n != b->shard_n) {
+            snprintf(why, whylen, "%.900s is shard %u/%u, %.900s shard %u/%u: shards of one split are joined "
+                     "(every K of one N)", m->sh[0].path, a->shard_k, a->shard_n, m->sh[k].path, b->shard_k,
+                     b->shard_n);
+            return 2;
+        }
+    }
+    return 0;
+}
+
+/* Each shard's rows into the study's; a run from two shards refuses
+ * them (listed). 0, or 2 with why. */
+static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
+{
+    const cli_study *st = &m->sh[0].st;
+    size_t *dup = malloc(st->nruns * sizeof *dup), ndup = 0;
+    const char *dup_a = NULL, *dup_b = NULL;
+    if (!dup) {
+        snprintf(why, whylen, "out of memory");
+        return 2;
+    }
+    for (size_t k = 0; k < m->n; k++) {
+        size_t cut;
+        memset(scratch, 0, st->nruns * sizeof *scratch);
+        if (cli_study_read_rows(&m->sh[k].st, m->sh[k].fd, m->sh[k].path, scratch, &cut, why, whylen) < 0) {
+            free(dup);
+            return 2;
+        }
+        for (size_t i = 0; i < st->nruns; i++) {
+            if (!cli_studyrow_complete(&scratch[i]))
+                continue;
+            if (m->from[i] >= 0) {
+                if (!ndup)
+                    dup_a = m->sh[m->from[i]].path, dup_b = m->sh[k].path;
+                dup[ndup++] = i;
+                continue;
+            }
+            m->rows[i] = scratch[i];
+            m->from[i] = (int)k;
+        }
+    }
+    if (ndup) {
+        char list[400];
+        run_list(dup, ndup, list, sizeof list);
+        snprintf(why, whylen, "runs %s are in %.900s and in %.900s: each run once (is a shard given twice?)", list,
+                 dup_a, dup_b);
+    }
+    free(dup);
+    return ndup ? 2 : 0;
+}
+
+/* Runs without a result: refused (listed) unless --allow-partial, which
+ * gives them rows saying not run and a # PARTIAL line. 0, or 2 with why. */
+static int missing(merge *m, char *partial, size_t plen, char *why, size_t whylen)
+{
+    const cli_study *st = &m->sh[0].st;
+    size_t *miss = malloc(st->nruns * sizeof *miss), nmiss = 0;
+    if (!miss) {
+        snprintf(why, whylen, "out of memory");
+        return 2;
+    }
+    for (size_t i = 0; i < st->nruns; i++)
+        if (m->from[i] < 0)
+            miss[nmiss++] = i;
+    int rc = 0;
+    if (nmiss) {
+        char list[400], shards[200] = "";
+        run_list(miss, nmiss, list, sizeof list);
+        /* which shards were not given at all */
+        size_t o = 0;
+        for (unsigned k = 1; k <= st->shard_n && o + 24 < sizeof shards; k++) {
+            size_t j = 0;
+            while (j < m->n && m->sh[j].st.shard_k != k)
+                j++;
+            char piece[32];
+            if (j < m->n)
+                continue;
+            snprintf(piece, sizeof piece, "%s%u/%u", o ? ", " : "", k % 1000000u, st->shard_n % 1000000u);
+            memcpy(shards + o, piece, strlen(piece) + 1);
+            o += strlen(piece);
+        }
+        if (!m->cli->allow_partial) {
+            snprintf(why, whylen, "%zu of the study's %zu runs have no result: runs %s (%s%s); rerun their shards "
+                     "to finish them, or --allow-partial to join what there is", nmiss, st->nruns, list,
+                     o ? "shards not given: " : "cut short: a shard was stopped before its end", shards);
+            rc = 2;
+        } else {
+            snprintf(partial, plen, "%zu of %zu runs have results (--allow-partial); no result: runs %s",
+                     st->nruns - nmiss, st->nruns, list);
+            for (size_t j = 0; j < nmiss; j++)
+                cli_studyrow_empty(&m->rows[miss[j]], m->sh[0].cfg, miss[j], "not run");
+        }
+    }
+    free(miss);
+    return rc;
+}
+
+/* -o DIR: a directory of the merge's own (an earlier merge's files
+ * replaced), or one of the shards' (an unsharded study's, whose table is
+ * written again): its records stay. 0, or 2 with why. */
+static int open_out(merge *m, char *why, size_t whylen)
+{
+    const adh_output_options *o = &m->cli->cfg.output;
+    if (!o->dir[0])
+        return 0;
+    unsigned flags = ADH_OUTDIR_KEEP | (o->overwrite ? ADH_OUTDIR_OVERWRITE : 0);
+    if (!(m->out = adh_outdir_open(o->dir, flags, why, whylen)))
+        return 2;
+    fstat(adh_outdir_fd(m->out), &m->out_st);
+    if (adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv"))
+        return 0;   /* a shard's: named among them, or refused when the shards are read */
+    return adh_outdir_clear(m->out, why, whylen) == 0 ? 0 : 2;
+}
+
+/* The output directory, when it holds a shard, is one of those named. */
+static int out_is_named(const merge *m, char *why, size_t whylen)
+{
+    if (!m->out || !(adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv")))
+        return 0;
+    for (size_t k = 0; k < m->n; k++) {
+        struct stat st;
+        if (fstat(m->sh[k].fd, &st) == 0 && st.st_dev == m->out_st.st_dev && st.st_ino == m->out_st.st_ino)
+            return 0;
+    }
+    snprintf(why, whylen, "-o %.1000s holds a shard of a study: merge into a directory of its own, or name it among "
+             "the shards", adh_outdir_path(m->out));
+    return 2;
+}
+
+/* sweep.tsv (standard output without -o) and the study's figure. An exit status. */
+static int write_out(merge *m, const char *partial)
+{
+    adh_config *cfg = m->sh[0].cfg;
+    const adh_output_options *mine = &m->cli->cfg.output;
+    /* the merge's own outputs, the study's everything else */
+    cfg->output.plot = mine->plot;
+    cfg->output.quiet = mine->quiet;
+    snprintf(cfg->output.gnuplot_style, sizeof cfg->output.gnuplot_style, "%s", mine->gnuplot_style);
+    const cli_study *st = &m->sh[0].st;
+    /* an eps study's Figure 7 line, as the whole study has it (its own curve) */
+    int resolved = 0;
+    double hyst = NAN;
+    cli_kcache *kc = adh_sweep_fig7_panel(cfg) && cfg->output.plot && !*partial ? cli_kcache_new(0) : NULL;
+    if (kc) {
+        cli_interrupt_catch();
+        hyst = cli_sweep_static_hysteresis(cfg, kc, &resolved);
+        cli_interrupt_release();
+        cli_kcache_free(kc);
+        if (cli_interrupt_signal()) {   /* a table without its line would pass for the whole study's */
+            fprintf(stderr, "adhere: interrupted by signal %d during the static curve for Figure 7's line: nothing "
+                    "written\n", cli_interrupt_signal());
+            return cli_interrupt_exit();
+        }
+    }
+    cli_studyrow_sweep t = { cfg, m->rows, partial, adh_sweep_run_dirs(&cfg->sweep), hyst, resolved };
+    char why[1024];
+    if (!m->out) {
+        cli_studyrow_table(stdout, &t);
+        return fflush(stdout) == 0 && !ferror(stdout) ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+    }
+    if (adh_outdir_write(m->out, "sweep.tsv", cli_studyrow_table, &t, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return CLI_EXIT_USAGE;
+    }
+    if (!cfg->output.plot || adh_sweep_plot_kind(&cfg->sweep) == ADH_SWEEP_PLOT_NONE || *partial)
+        return CLI_EXIT_OK;
+    int *fd = malloc(st->nruns * sizeof *fd);
+    if (!fd)
+        return CLI_EXIT_SOLVER;
+    for (size_t i = 0; i < st->nruns; i++)
+        fd[i] = m->from[i] >= 0 ? m->sh[m->from[i]].fd : -1;
+    cli_figures_curves curves = { fd, st->nruns };
+    int rc = cli_figures_sweep(cfg, m->rows, st->nruns, &curves, hyst, m->out, why, sizeof why);
+    free(fd);
+    if (rc != 0) {
+        fprintf(stderr, "adhere: sweep plot not written: %s\n", why);
+        return CLI_EXIT_PLOT;
+    }
+    return CLI_EXIT_OK;
+}
+
+static void merge_free(merge *m)
+{
+    for (size_t k = 0; k < m->n; k++) {
+        cli_study_free(&m->sh[k].st);
+        free(m->sh[k].cfg);
+        if (m->sh[k].fd >= 0)
+            close(m->sh[k].fd);
+    }
+    free(m->sh), free(m->rows), free(m->from);
+    adh_outdir_close(m->out);
+}
+
+int cli_merge_main(cli_options *cli)
+{
+    merge m = { .cli = cli, .n = cli->nmerge };
+    char why[8192], partial[600] = "";
+    int rc = !(m.sh = calloc(m.n, sizeof *m.sh)) ? CLI_EXIT_SOLVER : open_out(&m, why, sizeof why);
+    for (size_t k = 0; m.sh && k < m.n; k++)
+        m.sh[k].fd = -1;
+    for (size_t k = 0; rc == 0 && k < m.n; k++)
+        rc = open_shard(&m, k, why, sizeof why);
+    if (rc == 0)
+        rc = same_study(&m, why, sizeof why);
+    if (rc == 0)
+        rc = out_is_named(&m, why, sizeof why);
+    size_t nruns = rc == 0 ? m.sh[0].st.nruns : 0;
+    cli_studyrow *scratch = NULL;
+    if (rc == 0 && (!(m.rows = calloc(nruns, sizeof *m.rows)) || !(m.from = malloc(nruns * sizeof *m.from)) ||
+                    !(scratch = malloc(nruns * sizeof *scratch)))) {
+        snprintf(why, sizeof why, "out of memory for %zu runs", nruns);
+        rc = CLI_EXIT_SOLVER;
+    }
+    for (size_t i = 0; rc == 0 && i < nruns; i++)
+        m.from[i] = -1;
+    if (rc == 0)
+        rc = gather(&m, scratch, why, sizeof why);
+    free(scratch);
+    if (rc == 0)
+        rc = missing(&m, partial, sizeof partial, why, sizeof why);
+    if (rc != 0) {
+        fprintf(stderr, "adhere merge: %s\n", why);
+        merge_free(&m);
+        return rc;
+    }
+    rc = write_out(&m, partial);
+    if (rc == CLI_EXIT_OK && !cli->cfg.output.quiet)
+        fprintf(stderr, "adhere merge: %zu shard%s of study %s (%zu runs) joined%s%s%s\n", m.n, m.n == 1 ? "" : "s",
+                m.sh[0].st.fingerprint, nruns, m.out ? " into " : "; sweep.tsv went to standard output",
+                m.out ? adh_outdir_path(m.out) : "", *partial ? " (# PARTIAL)" : "");
+    merge_free(&m);
+    return rc;
+}

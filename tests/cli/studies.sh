@@ -1,0 +1,183 @@
+#!/bin/sh
+# Studies: a 2-D map of 16 runs (sigma x turn, tiny settings) split into 3
+# shards run under GNU parallel and joined by adhere merge equals the study
+# run whole (its table but for the timing column, and its map.png); a
+# rerun redoes only the run whose result was removed; merge refuses shards
+# of different studies or splits, a shard given twice, runs missing, a
+# shard still running or cut short (unless --allow-partial, which marks
+# the table # PARTIAL); two shards are never written into one directory;
+# runs that share a loading branch match the runs stepped alone; ranges
+# and the plan's count, time and refusals; an eps study merged has Figure
+# 7's static line (# static_hysteresis) as the whole study does.
+. "$(dirname "$0")/lib.sh"
+
+cp "$(dirname "$0")/map.scene" "$TMP/map.scene"
+TINY="--batch -N 100 --force --eps=10pm"
+# the table without its timing column (seconds, the 15th) and without the
+# scene's path (the same file here)
+untimed() { grep -v '^# scene:' "$1" | cut -f1-14,16-; }
+rows() { grep -v '^#' "$1" | tail -n +2; }
+
+# --- the study whole, then in 3 shards under GNU parallel, then merged ---
+"$ADHERE" $TINY -q "$TMP/map.scene" -o "$TMP/whole" 2>"$TMP/whole.err"
+rc=$?
+check "the 16-run map runs whole (exit $rc: $(head -c 300 "$TMP/whole.err"))" [ "$rc" -eq 0 ]
+check "its sweep.tsv has 16 rows" [ "$(rows "$TMP/whole/sweep.tsv" | wc -l)" -eq 16 ]
+check "and a map.png (2 swept keys: the heat map)" [ -s "$TMP/whole/map.png" ]
+if command -v parallel >/dev/null 2>&1; then
+    parallel --will-cite "$ADHERE" $TINY -q "$TMP/map.scene" --shard {}/3 -o "$TMP/shard{}" ::: 1 2 3 2>"$TMP/par.err"
+    rc=$?
+    check "3 shards under GNU parallel (exit $rc: $(head -c 300 "$TMP/par.err"))" [ "$rc" -eq 0 ]
+    n1=$(rows "$TMP/shard1/runs.tsv" | wc -l) n2=$(rows "$TMP/shard2/runs.tsv" | wc -l) n3=$(rows "$TMP/shard3/runs.tsv" | wc -l)
+    check "each shard stepped its drives: 8 + 4 + 4 runs ($n1 + $n2 + $n3; a drive is a sigma's four turns)" \
+        [ "$n1 $n2 $n3" = "8 4 4" ]
+    check "a shard writes no sweep.tsv of its own (adhere merge does)" [ ! -e "$TMP/shard1/sweep.tsv" ]
+    "$ADHERE" merge -o "$TMP/merged" "$TMP/shard3" "$TMP/shard1" "$TMP/shard2" 2>"$TMP/merge.err"
+    rc=$?
+    check "adhere merge joins them (exit $rc: $(head -c 300 "$TMP/merge.err"))" [ "$rc" -eq 0 ]
+    check "the merged sweep.tsv is the whole study's but for its timing column" \
+        sh -c "untimed() { grep -v '^# scene:' \"\$1\" | cut -f1-14,16-; }; untimed '$TMP/whole/sweep.tsv' >'$TMP/a'; untimed '$TMP/merged/sweep.tsv' >'$TMP/b'; cmp -s '$TMP/a' '$TMP/b'"
+    check "the merged map.png is the whole study's, byte for byte" cmp -s "$TMP/whole/map.png" "$TMP/merged/map.png"
+    check "and the timing column is really there to differ (16 times, each > 0)" \
+        awk -F'\t' '!/^#/ && $1 != "run" {n++; if (!($15 > 0)) bad = 1} END {exit bad || n != 16}' "$TMP/merged/sweep.tsv"
+else
+    not_ok "GNU parallel is not installed (make deps installs it)"
+fi
+
+# every run's status is carried: the merged row says what its run-K/summary.tsv says
+bad=0
+for k in $(seq 1 16); do
+    s=$(awk -F'\t' '$1 == "status" {print $2}' "$TMP/whole/run-$k/summary.tsv")
+    m=$(awk -F'\t' -v k="$k" '!/^#/ && $1 == k {print $NF}' "$TMP/merged/sweep.tsv")
+    [ -n "$s" ] && [ "$s" = "$m" ] || bad=1
+done
+check "each run's status in the merged table is its summary.tsv's (here: unresolved, --force)" [ "$bad" -eq 0 ]
+
+# --- an eps study's Figure 7: the merge draws the static curve's line too ---
+printf '[sweep]\neps = 10pm, 40pm\nplot = force\n' >"$TMP/eps.scene"
+EPS="--batch -q -R 1um -d 0.5nm --turn=-1nm"
+"$ADHERE" $EPS "$TMP/eps.scene" -o "$TMP/epsw" 2>"$TMP/err" &&
+    "$ADHERE" $EPS "$TMP/eps.scene" --shard=1/2 -o "$TMP/eps1" 2>>"$TMP/err" &&
+    "$ADHERE" $EPS "$TMP/eps.scene" --shard=2/2 -o "$TMP/eps2" 2>>"$TMP/err" &&
+    "$ADHERE" merge -q -o "$TMP/epsm" "$TMP/eps1" "$TMP/eps2" 2>>"$TMP/err"
+rc=$?
+check "an eps study whole and in 2 shards, merged (exit $rc: $(head -c 300 "$TMP/err"))" [ "$rc" -eq 0 ]
+check "... both tables give the static curve's loop (# static_hysteresis) and are the same but for timing" \
+    sh -c "grep -q '^# static_hysteresis: [0-9]' '$TMP/epsm/sweep.tsv' && untimed() { grep -v '^# scene:' \"\$1\" | cut -f1-14,16-; }; untimed '$TMP/epsw/sweep.tsv' >'$TMP/ea'; untimed '$TMP/epsm/sweep.tsv' >'$TMP/eb'; cmp -s '$TMP/ea' '$TMP/eb'"
+check "... and Figure 7 with its hysteresis panel in each" sh -c "[ -s '$TMP/epsw/force.png' ] && [ -s '$TMP/epsm/force.png' ]"
+
+# --- resumed: one run's result removed, the rerun steps that one alone ---
+# (in place: a copy of the directory is not adhere's, its manifest says)
+rm -r "$TMP/whole/run-7"
+"$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/whole" 2>"$TMP/resume.err"
+rc=$?
+check "the rerun exits 0 ($rc)" [ "$rc" -eq 0 ]
+ran=$(grep -o '^adhere: run [0-9]* of 16' "$TMP/resume.err" | awk '{print $3}' | tr '\n' ' ')
+check "it stepped run 7 and no other (ran: $ran)" [ "$ran" = "7 " ]
+check "and says 15 were done before" grep -q '(15 done before, kept)' "$TMP/resume.err"
+check "run-7 is back, its table the same but for timing" \
+    sh -c "[ -s '$TMP/whole/run-7/summary.tsv' ] && grep -v '^# scene:' '$TMP/whole/sweep.tsv' | cut -f1-14,16- | cmp -s - '$TMP/a'"
+
+# --- runs sharing a loading branch against the same runs stepped alone ---
+# run 6: sigma = 3, turn -1 nm; its own run loads to -1 nm and unloads
+E6=$(awk -F'\t' '!/^#/ && $1 == 6 {print $4}' "$TMP/whole/sweep.tsv")
+"$ADHERE" $TINY -q --plots=none -E "$E6" --turn=-1nm -o "$TMP/alone" 2>/dev/null
+for key in pulloff_F max_load jump_out_h0 steps iterations; do
+    a=$(awk -F'\t' -v k=$key '$1 == k {print $2}' "$TMP/alone/summary.tsv")
+    col=$(grep -v '^#' "$TMP/whole/sweep.tsv" | head -1 | tr '\t' '\n' | grep -nx "$key" | cut -d: -f1)
+    b=$(awk -F'\t' -v c="$col" '!/^#/ && $1 == 6 {print $c}' "$TMP/whole/sweep.tsv")
+    check "run 6 on the shared branch: $key $b, alone $a (within 1e-9)" \
+        awk -v a="$a" -v b="$b" 'BEGIN {d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a; exit !(d <= 1e-9 * s)}'
+done
+
+# --- merge's refusals ---
+M="$ADHERE merge"
+$M -o "$TMP/m1" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" "$TMP/shard2" 2>"$TMP/err"
+check "a shard given twice: exit 2, its runs listed ($(cat "$TMP/err"))" \
+    sh -c "[ $? -eq 2 ] && grep -q 'runs 5-8 are in' '$TMP/err'"
+$M -o "$TMP/m2" "$TMP/shard1" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "a shard missing: exit 2, its runs listed ($(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'runs 5-8 (shards not given: 2/3)' '$TMP/err' && [ ! -e '$TMP/m2/sweep.tsv' ]"
+$M --allow-partial -o "$TMP/m3" "$TMP/shard1" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "--allow-partial joins what there is (exit $rc)" [ "$rc" -eq 0 ]
+check "... and marks the table # PARTIAL, naming the runs" grep -q '^# PARTIAL: 12 of 16 runs have results.*runs 5-8' "$TMP/m3/sweep.tsv"
+check "... the runs without a result say not run" \
+    awk -F'\t' '!/^#/ && $1 >= 5 && $1 <= 8 && $NF != "not run" {bad = 1} END {exit bad}' "$TMP/m3/sweep.tsv"
+"$ADHERE" $TINY -q "$TMP/map.scene" --dwell=5 --shard 2/3 -o "$TMP/other" 2>/dev/null
+$M -o "$TMP/m4" "$TMP/shard1" "$TMP/other" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "shards of different studies: exit 2, what differs named ($(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'different studies.*protocol.dwell = 5' '$TMP/err'"
+"$ADHERE" $TINY -q "$TMP/map.scene" --shard 2/4 -o "$TMP/split4" 2>/dev/null
+$M -o "$TMP/m5" "$TMP/shard1" "$TMP/split4" 2>"$TMP/err"
+check "shards of another split: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'shard 1/3.*shard 2/4' '$TMP/err'"
+$M -o "$TMP/m6" "$TMP/whole/run-1" 2>"$TMP/err"
+check "a directory that holds no shard: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'no study.tsv' '$TMP/err'"
+$M -o "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>"$TMP/err"
+check "merging into another shard's directory: exit 2 ($(cat "$TMP/err"))" \
+    sh -c "[ $? -eq 2 ] && grep -q 'holds a shard' '$TMP/err' && [ ! -e '$TMP/shard1/sweep.tsv' ]"
+
+# --- one directory, one shard ---
+"$ADHERE" $TINY -q "$TMP/map.scene" --shard 3/3 -o "$TMP/shard1" 2>"$TMP/err"
+check "another shard into a shard's directory: exit 2 ($(cat "$TMP/err"))" \
+    sh -c "[ $? -eq 2 ] && grep -q 'holds shard 1/3 of this study, not 3/3' '$TMP/err'"
+check "... shard 1's runs untouched" [ "$(rows "$TMP/shard1/runs.tsv" | wc -l)" -eq 8 ]
+# a shard that does not end (eps beyond reach) is still running: another
+# into its directory is refused by the lock, merge refuses it, and once
+# stopped it is a partial shard
+cat >"$TMP/slow.scene" <<'S'
+[sweep]
+sigma = 1.5, 3
+eps = 10pm, 1e-22
+S
+SLOW="--batch -q --no-plot -N 100 --force --max-iter=100000000 --jobs=1 $TMP/slow.scene"
+"$ADHERE" $SLOW --shard 1/2 -o "$TMP/fast" 2>/dev/null
+rm -f "$TMP/ready"
+ADHERE_READY_FILE="$TMP/ready" "$ADHERE" $SLOW --shard 2/2 -o "$TMP/slow" 2>/dev/null &
+pid=$!
+came=0
+wait_phase "$TMP/ready" step "$pid" && came=1
+"$ADHERE" $SLOW --shard 2/2 -o "$TMP/slow" 2>"$TMP/err"
+rc=$?
+check "a second shard into a directory in use: exit 2 (phase came $came; $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'in use' '$TMP/err'"
+$M -o "$TMP/m7" "$TMP/fast" "$TMP/slow" 2>"$TMP/err"
+check "merge while a shard still runs: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'still writing' '$TMP/err'"
+kill -INT "$pid"
+wait "$pid"
+rc=$?
+check "the slow shard stops on SIGINT (exit $rc)" [ "$rc" -eq 130 ]
+$M -o "$TMP/m8" "$TMP/fast" "$TMP/slow" 2>"$TMP/err"
+check "a shard cut short: exit 2, its runs listed ($(cat "$TMP/err"))" \
+    sh -c "[ $? -eq 2 ] && grep -q 'runs 2, 4 (cut short' '$TMP/err'"
+$M --allow-partial -o "$TMP/m8" "$TMP/fast" "$TMP/slow" 2>/dev/null
+check "... joined with --allow-partial: # PARTIAL, runs 1 and 3 with results" \
+    sh -c "grep -q '^# PARTIAL: 2 of 4 runs' '$TMP/m8/sweep.tsv' && awk -F'\t' '!/^#/ && (\$1 == 1 || \$1 == 3) && \$NF != \"not run\" {n++} END {exit n != 2}' '$TMP/m8/sweep.tsv'"
+
+# --- values, ranges, the plan ---
+"$ADHERE" --batch -q --mode=rigid --sweep='E=10MPa..10GPa,log,13' --run-dirs=no -o "$TMP/log" 2>"$TMP/err"
+check "a log range of 13 values runs (rigid spheres: $(head -c 200 "$TMP/err"))" [ "$(rows "$TMP/log/sweep.tsv" | wc -l)" -eq 13 ]
+check "... its ends exact and its middle the geometric mean, 10^8.5 Pa" \
+    awk -F'\t' '!/^#/ && $1 == 1 && $4 != 10000000 {bad = 1} !/^#/ && $1 == 13 && $4 != 10000000000 {bad = 1}
+                !/^#/ && $1 == 7 {r = $4 / 316227766.01683795; if (r < 1 - 1e-15 || r > 1 + 1e-15) bad = 1} END {exit bad}' "$TMP/log/sweep.tsv"
+check "... with no run-K directory (--run-dirs=no)" sh -c "! ls -d '$TMP'/log/run-* >/dev/null 2>&1"
+"$ADHERE" --batch -q --mode=rigid --sweep='E=1GPa..4GPa,4' --sweep='z0=0.3nm,0.5nm' --sweep=plot=curves -o "$TMP/curves" 2>"$TMP/err"
+rc=$?
+check "plot = curves draws curves.png (rigid spheres: jump_in_h0 against z0, a curve per E; exit $rc $(head -c 200 "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && [ -s '$TMP/curves/curves.png' ] && [ ! -e '$TMP/curves/map.png' ]"
+"$ADHERE" --plan -N 100 --force --eps=10pm "$TMP/map.scene" --shard 2/3 -o "$TMP/p" >"$TMP/plan" 2>&1
+check "the plan counts the runs" grep -qx 'runs: 16' "$TMP/plan"
+check "... the study's product" grep -q '^study: 16 runs, every combination of the 2 keys (4 x 4' "$TMP/plan"
+check "... the drives sharing a loading branch" grep -q '^drives: 4 ' "$TMP/plan"
+check "... the shard's part" grep -q '^shard: 2 of 3: .*(4 of the 16 runs)' "$TMP/plan"
+check "... an expected time" grep -q '^expected time: about .* on [0-9]* core' "$TMP/plan"
+check "... and the disk" grep -q '^disk: about .* MB written' "$TMP/plan"
+( ulimit -f 1; "$ADHERE" --plan -N 100 --force --eps=10pm "$TMP/map.scene" -o "$TMP/p" >/dev/null 2>"$TMP/err"; echo $? >"$TMP/rc" )
+check "a study past the file size limit is refused (exit $(cat "$TMP/rc"): $(cat "$TMP/err"))" \
+    sh -c "[ $(cat "$TMP/rc") -eq 2 ] && grep -q 'file size limit' '$TMP/err'"
+"$ADHERE" --plan --mode=rigid --sweep=E=1GPa..2GPa,1000 --sweep=A=1e-20J..1e-19J,101 >/dev/null 2>"$TMP/err"
+check "more than 100000 runs are refused ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'more than 100000 runs' '$TMP/err'"
+
+done_testing
