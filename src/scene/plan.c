@@ -499,9 +499,13 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         const adh_plan_run *r = &p->runs[i];
         fmt_len(r->start, a, sizeof a);
         fmt_len(r->end, b, sizeof b);
-        fprintf(f, "run %zu: E = %s, sigma = %.4g, eps = %s: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
-                i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
-                p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
+        if (p->time_mode)   /* no eps, no drive steps: the integrator's */
+            fprintf(f, "run %zu: E = %s, sigma = %.4g: the base from %s to %s%s\n", i + 1,
+                    adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, a, p->stop_at_contact ? "about " : "", b);
+        else
+            fprintf(f, "run %zu: E = %s, sigma = %.4g, eps = %s: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
+                    i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
+                    p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
     }
     if (p->nruns > ADH_PLAN_MAX_RUNS)
         fprintf(f, "runs %d ... %zu: as the sweep lines say (their steps are in the total)\n", ADH_PLAN_MAX_RUNS + 1, p->nruns);

@@ -56,6 +56,7 @@ check "--plan visco stores events.tsv" grep -q '^stored: events.tsv' "$TMP/plan"
 check "--plan visco: summary.tsv with the solid, the drive, hysteresis and dissipated" grep -q "^stored: summary.tsv: .*the solid and the drive, hysteresis, dissipated" "$TMP/plan"
 "$ADHERE" --plan visco-speed >"$TMP/plans" 2>&1
 check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans' && grep -q '^stored: sweep.tsv: .*hysteresis, dissipated, time' '$TMP/plans'"
+check "--plan visco-speed: no eps-time estimate, no eps in its run lines" sh -c "grep -q '^time: not estimated in CPU seconds: in physical time' '$TMP/plans' && grep -q '^expected time: not estimated in physical time' '$TMP/plans' && ! grep -q '^run [0-9]*: .*eps =' '$TMP/plans' && ! grep -q 'iterations, each about one kernel product' '$TMP/plans'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
 check "--plan afm: a static curve per k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
