@@ -61,6 +61,8 @@ typedef struct cost_job {
     pthread_mutex_t lock;
     double static_hysteresis; /* J; NAN when the static curve failed */
     double static_a_turn;     /* m; NAN when the static curve failed */
+    int static_resolved;      /* 0: the static curve's grid is coarser than its resolved limit */
+    char static_why[512];     /* and why */
     char partial[160];        /* why the report is incomplete; "" when it is not */
 } cost_job;
 
@@ -204,6 +206,8 @@ static int write_cost(FILE *f, const void *ctx)
         fprintf(f, "# PARTIAL: %s\n", job->partial);
     fprintf(f, "# static curve's hysteresis (eps -> 0, displacement control): %.17g J\n", job->static_hysteresis);
     fprintf(f, "# static curve's contact radius at the turn: %.17g m\n", job->static_a_turn);
+    if (!job->static_resolved)
+        fprintf(f, "# static curve NOT resolved (%s): static_err_* are no verdict\n", job->static_why);
     fputs("kernel\tnodes\teps\tseconds\tkernel_seconds\titerations\tsteps\tunconverged\tpulloff_F\tjump_in_h0\thysteresis\ta_turn\t"
           "err_pulloff\terr_jump_in\terr_hysteresis\terr_a_turn\tstatic_err_pulloff\tstatic_err_jump_in\tstatic_err_hysteresis\tstatic_err_a_turn\tstatus\n", f);
     for (size_t i = 0; i < job->n; i++) {
@@ -319,7 +323,141 @@ static int by_cost(const void *a, const void *b)
     return (cx < cy) - (cx > cy);
 }
 
-int cli_cost_main(const cli_options *cli)
+/* The static curve every eps should approach, solved on this thread while
+ * the workers run: the finest grid with the exact kernel, marked where that
+ * grid does not resolve it (its errors are then no verdict). */
+typedef struct cost_ref {
+    adh_run_spec spec;
+    adh_static_result res;
+    int status;
+    int resolved;
+    char why[512];       /* why the grid does not resolve it; "" when it does */
+    double hysteresis;   /* J; NAN when the curve failed */
+    double a_turn;       /* m; NAN when the curve failed */
+} cost_ref;
+
+static void cost_static_reference(const adh_config *cfg, size_t finest, cost_ref *ref)
+{
+    memset(ref, 0, sizeof *ref);
+    ref->spec = cost_spec(cfg, finest, ADH_MODE_STATIC);
+    ref->spec.grid.use.kernel = ADH_KERNEL_RING;
+    adh_grid_report gr;
+    adh_grid_check(&ref->spec.mat, ADH_GRID_STATIC, finest, adh_config_spacing(&ref->spec), &gr);
+    ref->resolved = gr.resolved;
+    if (!gr.resolved)
+        adh_grid_unresolved_sentence(&gr, ref->why, sizeof ref->why);
+    adh_grid *g = adh_grid_alloc(finest, adh_config_spacing(&ref->spec));
+    int kst = ADH_ENOMEM;
+    adh_kernel *k = g ? adh_config_kernel_alloc(&ref->spec, g, &kst) : NULL;
+    adh_run srun;
+    adh_run_init(&srun);
+    if (kst == ADH_EINTR)
+        srun.interrupted = 1;
+    ref->status = k ? cli_static_run(&ref->spec, g, k, cli_interrupt_step, NULL, &srun, &ref->res) : ADH_ENOMEM;
+    if (srun.interrupted)
+        ref->status = ADH_EINTR;   /* part of a curve is no reference */
+    int ok = ref->status == ADH_SUCCESS;
+    /* a fine h0 grid: lattice-trapping legs are far shorter than d */
+    ref->hysteresis = ok ? cli_tables_static_hysteresis(&srun, &ref->spec.mat) : NAN;
+    /* the curve ends at the (deepest) turn: its contact radius there */
+    ref->a_turn = ok && srun.nrows ? srun.rows[srun.nrows - 1].a : NAN;
+    adh_run_free(&srun);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+}
+
+/* The most accurate run: the finest grid, the exact kernel, the smallest
+ * eps, among runs that finished (an interrupted one is no reference). */
+static const cost_run *cost_best(const cost_run *runs, size_t n)
+{
+    static const cost_run none = { .pulloff = NAN, .jump_in = NAN, .hysteresis = NAN, .a_turn = NAN, .eps = NAN };
+    const cost_run *best = NULL;
+    for (size_t i = 0; i < n; i++) {
+        const cost_run *r = &runs[i];
+        if (!r->ran || r->status != ADH_SUCCESS)
+            continue;
+        if (!best || r->nodes > best->nodes || (r->nodes == best->nodes && r->kernel > best->kernel) ||
+            (r->nodes == best->nodes && r->kernel == best->kernel && r->eps < best->eps))
+            best = r;
+    }
+    return best ? best : &none;
+}
+
+/* Every run's errors against the best run and the static curve; what was
+ * cut short goes into job->partial. */
+static void cost_errors(cost_job *job, const cost_run *best, const cost_ref *ref)
+{
+    int ok = ref->status == ADH_SUCCESS;
+    size_t not_run = 0, cut = 0;
+    for (size_t i = 0; i < job->n; i++) {
+        cost_run *r = &job->runs[i];
+        not_run += !r->ran;
+        cut += r->ran && r->status == ADH_CONTINUE;
+        if (!r->ran || r->status == ADH_CONTINUE) {
+            /* nothing measured: no time, no errors */
+            r->seconds = r->kernel_seconds = NAN;
+            r->pulloff = r->jump_in = r->hysteresis = r->a_turn = NAN;
+        }
+        r->err[0] = rel(r->pulloff, best->pulloff);
+        r->err[1] = rel(r->jump_in, best->jump_in);
+        r->err[2] = rel(r->hysteresis, best->hysteresis);
+        r->err[3] = rel(r->a_turn, best->a_turn);
+        r->err_static[0] = ok ? rel(r->pulloff, ref->res.pulloff_F) : NAN;
+        r->err_static[1] = ok ? rel(r->jump_in, ref->res.jump_in_h0) : NAN;
+        r->err_static[2] = ok ? rel(r->hysteresis, ref->hysteresis) : NAN;
+        r->err_static[3] = ok ? rel(r->a_turn, ref->a_turn) : NAN;
+    }
+    if (cli_interrupt_signal())
+        snprintf(job->partial, sizeof job->partial, "interrupted by signal %d: %zu of %zu runs cut short, %zu never started%s",
+                 cli_interrupt_signal(), cut, job->n, not_run, ok ? "" : ", static curve not finished");
+    job->static_hysteresis = ref->hysteresis;
+    job->static_a_turn = ref->a_turn;
+    job->static_resolved = ref->resolved;
+    snprintf(job->static_why, sizeof job->static_why, "%s", ref->why);
+}
+
+static const char *cost_note(const cost_run *r)
+{
+    if (!r->ran)
+        return "  (not run)";
+    if (r->status == ADH_SUCCESS)
+        return r->unconverged ? "  (some steps at the cap)" : "";
+    return r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)";
+}
+
+/* The report on standard output. */
+static void cost_print(const cost_job *job, const cost_run *best, const cost_ref *ref, int started)
+{
+    char rule[64];
+    adh_mix_rule_describe(&job->cfg->spec.relax, rule, sizeof rule);
+    if (job->partial[0]) {
+        printf("# PARTIAL: %s\n", job->partial);
+        fprintf(stderr, "adhere: %s\n", job->partial);
+    }
+    printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
+           job->n, started ? started : 1, sysconf(_SC_NPROCESSORS_ONLN), rule);
+    printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "
+           "hysteresis %.4g fJ, a at the turn %.4g um%s\n",
+           blas_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, ref->spec.grid.use.nodes,
+           ref->res.pulloff_F, ref->res.jump_in_h0 * 1e9, ref->hysteresis * 1e15, ref->a_turn * 1e6,
+           ref->status == ADH_SUCCESS ? "" : " (failed)");
+    if (!ref->resolved)
+        printf("the static curve is NOT resolved on that grid (%s): its st.* errors are no verdict\n", ref->why);
+    printf("\n%-6s %6s %7s %9s %11s %12s %10s %11s %9s | %8s %8s %8s %8s | %8s %8s %8s %8s\n", "kernel", "N", "eps/pm",
+           "seconds", "iterations", "pulloff/uN", "jump-in/nm", "hyst/fJ", "a_turn/um", "pulloff", "jump-in", "hyst",
+           "a_turn", "st.pull", "st.jump", "st.hyst", "st.a");
+    for (size_t i = 0; i < job->n; i++) {
+        const cost_run *r = &job->runs[i];
+        printf("%-6s %6zu %7.3g %9.3f %11zu %12.5g %10.4g %11.5g %9.4g | %8.2e %8.2e %8.2e %8.2e | %8.2e %8.2e %8.2e %8.2e%s\n",
+               adh_kernel_name(r->kernel), r->nodes, r->eps * 1e12, r->seconds, r->iterations, r->pulloff * 1e6,
+               r->jump_in * 1e9, r->hysteresis * 1e15, r->a_turn * 1e6, r->err[0], r->err[1], r->err[2], r->err[3],
+               r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3], cost_note(r));
+    }
+}
+
+/* The runs the lists ask for, each checked as a run would be, and the
+ * memory they take at once: 0, or the exit status with its message said. */
+static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, size_t *finest)
 {
     const adh_config *cfg = &cli->cfg;
     char why[1024];
@@ -333,34 +471,80 @@ int cli_cost_main(const cli_options *cli)
         fprintf(stderr, "adhere: --cost measures the relaxation's load/unload cycle: it needs mode relax and a turning point\n");
         return CLI_EXIT_USAGE;
     }
-    size_t n = neps * nnodes * 2;
+    for (size_t a = 0; a < nnodes; a++)
+        for (size_t e = 0; e < neps; e++) {
+            static adh_config c;   /* large: not on the stack */
+            c = *cfg;
+            c.spec.grid.use.nodes = nodes[a];
+            c.spec.relax.eps = eps[e];
+            c.spec.grid.force = 1; /* coarse grids are what the report measures */
+            if (cli_options_validate(&c, why, sizeof why) != 0) {
+                fprintf(stderr, "adhere: --cost: N = %zu, eps = %s: %s\n", nodes[a], adh_qtext(eps[e], ADH_Q_LENGTH).s, why);
+                return CLI_EXIT_USAGE;
+            }
+        }
+    if (cost_budget(cfg, nodes, nnodes, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        return CLI_EXIT_USAGE;
+    }
+    size_t n = neps * nnodes * 2, m = 0;
     cost_run *runs = calloc(n, sizeof *runs);
     if (!runs) {
         fprintf(stderr, "adhere: out of memory\n");
         return CLI_EXIT_SOLVER;
     }
-    size_t m = 0;
-    for (size_t a = 0; a < nnodes; a++)
+    *finest = 0;
+    for (size_t a = 0; a < nnodes; a++) {
+        *finest = nodes[a] > *finest ? nodes[a] : *finest;
         for (int k = 0; k < 2; k++)
-            for (size_t e = 0; e < neps; e++) {
-                runs[m] = (cost_run){ .eps = eps[e], .nodes = nodes[a], .kernel = (adh_kernel_type)k };
-                static adh_config c;   /* large: not on the stack */
-                c = *cfg;
-                c.spec.grid.use.nodes = nodes[a];
-                c.spec.relax.eps = eps[e];
-                c.spec.grid.force = 1; /* coarse grids are what the report measures */
-                if (cli_options_validate(&c, why, sizeof why) != 0) {
-                    fprintf(stderr, "adhere: --cost: N = %zu, eps = %s: %s\n", nodes[a], adh_qtext(eps[e], ADH_Q_LENGTH).s, why);
-                    free(runs);
-                    return CLI_EXIT_USAGE;
-                }
-                m++;
-            }
-    if (cost_budget(cfg, nodes, nnodes, why, sizeof why) != 0) {
+            for (size_t e = 0; e < neps; e++)
+                runs[m++] = (cost_run){ .eps = eps[e], .nodes = nodes[a], .kernel = (adh_kernel_type)k };
+    }
+    qsort(runs, n, sizeof *runs, by_cost);
+    *out = runs;
+    *nout = n;
+    return 0;
+}
+
+/* cost.tsv and cost.png into od: the exit status. */
+static int cost_write(const cost_job *job, adh_outdir *od)
+{
+    char why[1024];
+    /* still caught: a signal while gnuplot draws ends the wait, and the
+     * exit says interrupted */
+    if (adh_outdir_write(od, "cost.tsv", write_cost, job, why, sizeof why) != 0) {
         fprintf(stderr, "adhere: %s\n", why);
-        free(runs);
         return CLI_EXIT_USAGE;
     }
+    if (!job->cfg->output.plot || cli_interrupt_signal())
+        return CLI_EXIT_OK;
+    int prc = plot_cost(job, od, why, sizeof why);
+    if (!prc)
+        return CLI_EXIT_OK;
+    fprintf(stderr, "adhere: cost.png not written: %s\n", why);
+    return cli_interrupt_signal() ? cli_interrupt_exit() : prc;
+}
+
+static void cost_done(const cost_job *job, const char *out)
+{
+    char t[32];
+    cli_progress_duration(adh_clock_seconds() - job->t0, t, sizeof t);
+    if (out)
+        fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output, cost.tsv%s in %s/\n", t, job->n,
+                job->cfg->output.plot ? " and cost.png" : "", out);
+    else
+        fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output\n", t, job->n);
+}
+
+int cli_cost_main(const cli_options *cli)
+{
+    const adh_config *cfg = &cli->cfg;
+    cost_run *runs;
+    size_t n, finest;
+    int status = cost_make_runs(cli, &runs, &n, &finest);
+    if (status)
+        return status;
+    char why[1024];
     const char *out = cfg->output.dir[0] ? cfg->output.dir : NULL;
     adh_outdir *od = out ? adh_outdir_open(out, cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why) : NULL;
     if (out && !od) {
@@ -368,143 +552,36 @@ int cli_cost_main(const cli_options *cli)
         free(runs);
         return CLI_EXIT_USAGE;
     }
-    qsort(runs, n, sizeof *runs, by_cost);
-
     cli_interrupt_catch();
     adh_ready_phase("cost");
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    int jobs = cost_jobs();
     cost_job job = { .cfg = cfg, .runs = runs, .n = n };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();
     pthread_t threads[8];
-    int started = 0;
+    int started = 0, jobs = cost_jobs();
     for (int t = 0; t < jobs; t++)
         if (pthread_create(&threads[t], NULL, worker, &job) == 0)
             started++;
     if (!started)
         worker(&job);
-
-    /* Meanwhile, on this thread: the static curve at the finest grid with
-     * the exact kernel, the limit every eps should approach. */
-    size_t finest = nodes[0];
-    for (size_t a = 1; a < nnodes; a++)
-        finest = nodes[a] > finest ? nodes[a] : finest;
-    adh_run_spec sc = cost_spec(cfg, finest, ADH_MODE_STATIC);
-    sc.grid.use.kernel = ADH_KERNEL_RING;
-    adh_grid *g = adh_grid_alloc(sc.grid.use.nodes, adh_config_spacing(&sc));
-    int kst = ADH_ENOMEM;
-    adh_kernel *k = g ? adh_config_kernel_alloc(&sc, g, &kst) : NULL;
-    adh_run srun;
-    adh_run_init(&srun);
-    if (kst == ADH_EINTR)
-        srun.interrupted = 1;
-    adh_static_result sres;
-    memset(&sres, 0, sizeof sres);
-    int src = k ? cli_static_run(&sc, g, k, cli_interrupt_step, NULL, &srun, &sres) : ADH_ENOMEM;
-    if (srun.interrupted)
-        src = ADH_EINTR;   /* part of a curve is no reference */
-    /* a fine h0 grid: lattice-trapping legs are far shorter than d */
-    double static_hyst = src == ADH_SUCCESS ? cli_tables_static_hysteresis(&srun, &sc.mat) : NAN;
-    /* the curve ends at the (deepest) turn: its contact radius there */
-    double static_a = src == ADH_SUCCESS && srun.nrows ? srun.rows[srun.nrows - 1].a : NAN;
-    adh_run_free(&srun);
-    adh_kernel_free(k);
-    adh_grid_free(g);
+    static cost_ref ref;   /* holds a run spec: not on the stack */
+    cost_static_reference(cfg, finest, &ref);
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
 
-    /* The most accurate run: the finest grid, the exact kernel, the smallest eps. */
-    /* (only among runs that finished: an interrupted one is no reference) */
-    const cost_run *best = NULL;
-    for (size_t i = 0; i < n; i++) {
-        const cost_run *r = &runs[i];
-        if (!r->ran || r->status != ADH_SUCCESS)
-            continue;
-        if (!best || r->nodes > best->nodes || (r->nodes == best->nodes && r->kernel > best->kernel) ||
-            (r->nodes == best->nodes && r->kernel == best->kernel && r->eps < best->eps))
-            best = r;
-    }
-    static const cost_run none = { .pulloff = NAN, .jump_in = NAN, .hysteresis = NAN, .a_turn = NAN, .eps = NAN };
-    if (!best)
-        best = &none;
-    size_t not_run = 0, cut = 0;
-    for (size_t i = 0; i < n; i++) {
-        cost_run *r = &runs[i];
-        not_run += !r->ran;
-        cut += r->ran && r->status == ADH_CONTINUE;
-        if (!r->ran || r->status == ADH_CONTINUE) {
-            /* nothing measured: no time, no errors */
-            r->seconds = r->kernel_seconds = NAN;
-            r->pulloff = r->jump_in = r->hysteresis = r->a_turn = NAN;
-        }
-        r->err[0] = rel(r->pulloff, best->pulloff);
-        r->err[1] = rel(r->jump_in, best->jump_in);
-        r->err[2] = rel(r->hysteresis, best->hysteresis);
-        r->err[3] = rel(r->a_turn, best->a_turn);
-        r->err_static[0] = src == ADH_SUCCESS ? rel(r->pulloff, sres.pulloff_F) : NAN;
-        r->err_static[1] = src == ADH_SUCCESS ? rel(r->jump_in, sres.jump_in_h0) : NAN;
-        r->err_static[2] = src == ADH_SUCCESS ? rel(r->hysteresis, static_hyst) : NAN;
-        r->err_static[3] = src == ADH_SUCCESS ? rel(r->a_turn, static_a) : NAN;
-    }
-    if (cli_interrupt_signal())
-        snprintf(job.partial, sizeof job.partial, "interrupted by signal %d: %zu of %zu runs cut short, %zu never started%s",
-                 cli_interrupt_signal(), cut, n, not_run, src == ADH_SUCCESS ? "" : ", static curve not finished");
-    job.static_hysteresis = static_hyst;
-    job.static_a_turn = static_a;
-
-    char rule[64];
-    adh_mix_rule_describe(&cfg->spec.relax, rule, sizeof rule);
-    if (job.partial[0]) {
-        printf("# PARTIAL: %s\n", job.partial);
-        fprintf(stderr, "adhere: %s\n", job.partial);
-    }
-    printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
-           n, started ? started : 1, cores, rule);
-    printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "
-           "hysteresis %.4g fJ, a at the turn %.4g um%s\n\n",
-           blas_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, sc.grid.use.nodes, sres.pulloff_F,
-           sres.jump_in_h0 * 1e9, static_hyst * 1e15, static_a * 1e6, src == ADH_SUCCESS ? "" : " (failed)");
-    printf("%-6s %6s %7s %9s %11s %12s %10s %11s %9s | %8s %8s %8s %8s | %8s %8s %8s %8s\n", "kernel", "N", "eps/pm", "seconds",
-           "iterations", "pulloff/uN", "jump-in/nm", "hyst/fJ", "a_turn/um", "pulloff", "jump-in", "hyst", "a_turn",
-           "st.pull", "st.jump", "st.hyst", "st.a");
-    for (size_t i = 0; i < n; i++) {
-        const cost_run *r = &runs[i];
-        printf("%-6s %6zu %7.3g %9.3f %11zu %12.5g %10.4g %11.5g %9.4g | %8.2e %8.2e %8.2e %8.2e | %8.2e %8.2e %8.2e %8.2e%s\n",
-               adh_kernel_name(r->kernel), r->nodes, r->eps * 1e12, r->seconds, r->iterations, r->pulloff * 1e6,
-               r->jump_in * 1e9, r->hysteresis * 1e15, r->a_turn * 1e6, r->err[0], r->err[1], r->err[2], r->err[3],
-               r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3],
-               !r->ran ? "  (not run)"
-               : r->status == ADH_SUCCESS ? (r->unconverged ? "  (some steps at the cap)" : "")
-                                          : r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)");
-    }
-    int status = cli_interrupt_signal() ? cli_interrupt_exit() : CLI_EXIT_OK;
+    const cost_run *best = cost_best(runs, n);
+    cost_errors(&job, best, &ref);
+    cost_print(&job, best, &ref, started);
+    status = cli_interrupt_signal() ? cli_interrupt_exit() : CLI_EXIT_OK;
     if (od) {
-        /* still caught: a signal while gnuplot draws ends the wait, and the
-         * exit says interrupted */
-        if (adh_outdir_write(od, "cost.tsv", write_cost, &job, why, sizeof why) != 0) {
-            fprintf(stderr, "adhere: %s\n", why);
-            status = CLI_EXIT_USAGE;
-        } else if (cfg->output.plot && !cli_interrupt_signal()) {
-            int prc = plot_cost(&job, od, why, sizeof why);
-            if (prc) {
-                fprintf(stderr, "adhere: cost.png not written: %s\n", why);
-                status = cli_interrupt_signal() ? cli_interrupt_exit() : prc;
-            }
-        }
+        int wst = cost_write(&job, od);
+        status = wst ? wst : status;
     }
     cli_interrupt_release();
     adh_outdir_close(od);
-    if (status == CLI_EXIT_OK && !cfg->output.quiet) {
-        char t[32];
-        cli_progress_duration(adh_clock_seconds() - job.t0, t, sizeof t);
-        if (out)
-            fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output, cost.tsv%s in %s/\n", t, n,
-                    cfg->output.plot ? " and cost.png" : "", out);
-        else
-            fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output\n", t, n);
-    }
+    if (status == CLI_EXIT_OK && !cfg->output.quiet)
+        cost_done(&job, out);
     free(runs);
     return status;
 }
