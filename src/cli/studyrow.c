@@ -439,8 +439,9 @@ int cli_studyrow_table(FILE *f, const void *ctx)
     double static_hysteresis = t->static_hysteresis;
     int run_dirs = t->run_dirs, static_resolved = t->static_resolved;
     const adh_sweep *s = &cfg->sweep;
-    fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (%s), SI units (m, N, Pa, s)\n",
-            run_dirs ? "run-K/ holds its tables" : "run_dirs = no: no run-K/");
+    fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (%s), SI units (m, N, Pa, s%s)\n",
+            run_dirs ? "run-K/ holds its tables" : "run_dirs = no: no run-K/",
+            time_columns(cfg) || snap_columns(cfg) ? ", J, N/m" : "");
     if (cfg->scene[0])
         cli_tables_comment(f, "scene", cfg->scene);
     if (partial && *partial)
@@ -457,6 +458,9 @@ int cli_studyrow_table(FILE *f, const void *ctx)
                    "# max_load the force at the curve's end (the turn); pulloff_F the load-controlled pull-off (minimum force), pulloff_F_disp the force at the jump-out fold;\n"
                    "# jumped: 1 the curve has a fold, 0 contact came without one, -1 no contact; steps the curve's points, iterations its Newton iterations;\n"
                    "# hysteresis: the equilibrium loop's area (displacement control: the highest and lowest stable force at each h0), J\n");
+    else if (cfg->spec.mode == ADH_MODE_TIME)   /* its pull-off and hysteresis: the comment above */
+        fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24; "
+                   "jump_out_h0: where the contact was lost on the deepest turn's unloading\n");
     else
         fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n"
                    "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n"
