@@ -85,6 +85,8 @@ check "the time spans the protocol: start to -5 nm and back at 1 um/s ($(sv time
     "BEGIN {T = 2 * ($(sv start) + 5e-9) / 1e-6; exit !($(sv time) >= T * (1 - 1e-9) && $(sv time) < 1.1 * T)}"
 check "events.tsv: a jump in on loading and out on unloading" sh -c "grep -c '^jump	0	' '$d/events.tsv' | grep -qx 1 && grep -q '^jump	1	' '$d/events.tsv'"
 check "the jump out's time is the summary's" sh -c "grep '^jump	1	' '$d/events.tsv' | cut -f3 | grep -qxF '$(sv jump_out_t)'"
+"$ADHERE" --batch -q visco -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "visco again into the same directory: events.tsv is adhere's to replace ($(head -c 300 "$TMP/stderr"))" [ $? -eq 0 ]
 check "contact.tsv: speeds from the time (physical time's header)" grep -q '^# physical time: da_dt the central difference in t' "$d/contact.tsv"
 
 # the static curve through a spring: the snap points
@@ -130,6 +132,10 @@ done
 check "each row's status is its run's summary.tsv's ($(sh "$TMP/tsvcol" "$d/sweep.tsv" status | tr '\n' ' '))" sh -c \
     "for k in 1 2; do w=\$(awk -F'\t' '\$1 == \"status\" {print \$2}' '$d'/run-\$k/summary.tsv); \
      grep -v '^#' '$d/sweep.tsv' | awk -F'\t' -v k=\$k -v w=\"\$w\" '\$1 == k {f = 1; if (\$NF != w || w == \"\") exit 1} END {exit !f}' || exit 1; done"
+cp "$d/sweep.tsv" "$TMP/sp1.tsv"
+"$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "the speed study again: resumed, the same rows, speed.png drawn again ($(head -c 300 "$TMP/stderr"))" sh -c \
+    "[ $? -eq 0 ] && cmp -s '$TMP/sp1.tsv' '$d/sweep.tsv' && [ -s '$d/speed.png' ]"
 # the same study in 2 shards, joined by adhere merge: the whole study's table and speed.png
 for k in 1 2; do
     "$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force --shard $k/2 -o "$TMP/spshard$k" >"$TMP/stdout" 2>"$TMP/stderr"
