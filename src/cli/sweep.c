@@ -45,7 +45,7 @@ typedef struct study_job {
     adh_outdir *od;                /* NULL: sweep.tsv on standard output alone */
     int run_dirs;
     int rows_fd;                   /* runs.tsv, appended a row at a time; -1 none */
-    int shared;                    /* runs that differ only in their turn share drives */
+    int shared;                    /* runs that differ only in their turn (or spring, static) share drives */
     size_t done, total;            /* runs finished now, runs to step now */
     int exit_status;
     double t0;
@@ -240,6 +240,22 @@ static void share_out(study_job *job, const adh_run_spec *ds, const adh_run *run
     }
 }
 
+/* The runs of a static curve shared by their springs: the curve does not
+ * depend on k, each run is the curve with its own k (its snap points). */
+static void share_springs(study_job *job, const adh_run_spec *ds, const adh_run *run,
+                          const adh_static_result *sres, int status, size_t n, const size_t *members)
+{
+    for (size_t j = 0; j < n; j++) {
+        if (job->rows[members[j]].done)
+            continue;   /* done before (a resumed drive): its row and run-K stay */
+        adh_run_spec own, ms = *ds;
+        adh_config_sweep_run(job->cfg, members[j], &own);
+        ms.time.spring = own.time.spring;
+        ms.proto.start = adh_config_start(ds);   /* the curve's, not this k's own automatic one */
+        finished(job, members[j], &ms, run, sres, NULL, status);
+    }
+}
+
 /* The drive todo[a]. */
 static void step_drive(study_job *job, size_t a)
 {
@@ -268,6 +284,8 @@ static void step_drive(study_job *job, size_t a)
     }
     if (!job->shared)
         finished(job, members[0], &ds, &run, &sres, &tout, st);
+    else if (ds.mode == ADH_MODE_STATIC)
+        share_springs(job, &ds, &run, &sres, st, n, members);
     else
         share_out(job, &ds, &run, st, n, members, nodes);
     cli_time_out_free(&tout);

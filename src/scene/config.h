@@ -395,7 +395,9 @@ size_t adh_config_nruns(const adh_config *c);
 /* Drives: what is stepped. Runs that differ only in their turn (a swept
  * turns key, in relaxation) share one drive, as Figure 5's turns do: one
  * loading branch to the deepest, an unloading branch from each turn (up to
- * ADH_MAX_TURNS a drive); every other run is a drive of its own. The
+ * ADH_MAX_TURNS a drive); runs that differ only in their spring (mode
+ * static) share one static curve, from the softest spring's start; every
+ * other run is a drive of its own. The
  * number of drives; drive u's runs (ascending, at most ADH_MAX_TURNS) and
  * their number. */
 size_t adh_sweep_drives(const adh_config *c);

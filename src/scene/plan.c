@@ -309,7 +309,11 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         note(p->skipped, &p->nskipped, "plots of each run", "plots = none");
     if (cfg->sweep.plot > 0 && !cfg->sweep.naxes)
         note(p->skipped, &p->nskipped, "sweep plot", "no swept parameter in [sweep]");
-    if (p->drives < p->nruns)
+    if (p->drives < p->nruns && p->static_mode)
+        note(p->skipped, &p->nskipped, "a curve per k", "the %zu runs that differ only in their spring share %zu static "
+             "curve%s (the spring does not change the curve), from the softest spring's start; each k's snap points are "
+             "read off it", p->nruns, p->drives, p->drives == 1 ? "" : "s");
+    else if (p->drives < p->nruns)
         note(p->skipped, &p->nskipped, "loading per turn", "the %zu runs that differ only in their turn share %zu loading branches: "
              "each drive unloads from every turn of its runs (up to %d)", p->nruns, p->drives, ADH_MAX_TURNS);
     if (cfg->sweep.naxes && !p->run_dirs)

@@ -58,7 +58,7 @@ check "--plan visco: summary.tsv with the solid, the drive, hysteresis and dissi
 check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans' && grep -q '^stored: sweep.tsv: .*hysteresis, dissipated, time' '$TMP/plans'"
 check "--plan visco-speed: no eps-time estimate, no eps in its run lines" sh -c "grep -q '^time: not estimated in CPU seconds: in physical time' '$TMP/plans' && grep -q '^expected time: not estimated in physical time' '$TMP/plans' && ! grep -q '^run [0-9]*: .*eps =' '$TMP/plans' && ! grep -q 'iterations, each about one kernel product' '$TMP/plans'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
-check "--plan afm: a static curve per k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
+check "--plan afm: one static curve serves every k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^skip: a curve per k: the 9 runs .* share 1 static curve ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
 check "--plan fig4 (elastic) does not run in time" sh -c "grep -q '^mode: relax' '$TMP/plan4' && ! grep -q 'events.tsv\|^material:' '$TMP/plan4'"
 
@@ -103,7 +103,7 @@ cat >"$TMP/tsvcol" <<'EOF'
 grep -v '^#' "$1" | awk -F'\t' -v n="$2" 'NR == 1 {for (i = 1; i <= NF; i++) if ($i == n) c = i; next} c {print $c}'
 EOF
 
-# a spring swept: a static curve per k, the softer, the further out
+# a spring swept over one static curve: the softer, the further out
 d="$TMP/afm"
 "$ADHERE" --batch -q afm -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
 check "afm -N 150 --force exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
@@ -112,6 +112,10 @@ check "snap-in's base moves out monotonically as k softens from 40 to 0.1 N/m" s
     "[ \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base | awk 'NR > 1 && \$1 >= b {bad = 1} {b = \$1} END {print (bad || NR != 9) ? \"no\" : \"yes\"}') = yes ]"
 check "rigid spheres' snap-in base (eq 22) within 10 % of the sphere's at 0.1 N/m, where the spring is soft" sh -c \
     "paste \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base >'$TMP/sb'; echo '$TMP/sb') \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base_rigid >'$TMP/sr'; echo '$TMP/sr') | head -1 | awk '{exit !(\$2 > 0.9 * \$1 && \$2 < 1.1 * \$1)}'"
+check "every run of the afm study shares the one curve" sh -c "[ \$(cat '$d'/run-*/force.tsv | grep -v '^#' | sort -u | wc -l) -eq \$(grep -v '^#' '$d/run-1/force.tsv' | wc -l) ]"
+"$ADHERE" --batch -q afm -N 150 --force --sweep=spring=40 -o "$TMP/afm40" >"$TMP/stdout" 2>"$TMP/stderr"
+check "40 N/m's curve alone (its own start) has the shared curve's snap-in base within 1e-5" sh -c \
+    "a=\$(sh '$TMP/tsvcol' '$TMP/afm40/sweep.tsv' snap_in_base); b=\$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base | tail -1); awk -v a=\$a -v b=\$b 'BEGIN {exit !(a > 0 && b > 0 && (a - b) / a < 1e-5 && (b - a) / a < 1e-5)}'"
 check "each row's snap points are its run's summary.tsv's" sh -c \
     "sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base >'$TMP/rows'; for k in 1 2 3 4 5 6 7 8 9; do awk -F'\t' '\$1 == \"snap_in_base\" {print \$2}' '$d'/run-\$k/summary.tsv; done | cmp -s - '$TMP/rows'"
 

@@ -229,6 +229,19 @@ static void studies(void)
     adh_config_sweep_run(&c, 1, &run);
     ok(run.mode == ADH_MODE_STATIC && run.time.spring == 40 && (run.time.given & ADH_TIME_MODE),
        "run 2: k = 40 N/m on the static curve, the mode as given");
+    ok(set(&c, "sweep.spring", "40, 0.1, 1") == 0 && adh_sweep_drives(&c) == 1,
+       "springs swept on the static curve share one drive (the curve does not depend on k)");
+    adh_sweep_drive_spec(&c, 0, &run);
+    adh_run_spec soft;
+    adh_config_sweep_run(&c, 1, &soft);
+    adh_run_spec stiff;
+    adh_config_sweep_run(&c, 0, &stiff);
+    ok(run.time.spring == 0.1 && adh_config_start(&run) == adh_config_start(&soft) &&
+       adh_config_start(&soft) > adh_config_start(&stiff),
+       "the drive is the softest spring's, from its start outside every snap-in (%g m)", adh_config_start(&run));
+    adh_config_default(&c);
+    set(&c, "material.material", "sls");
+    ok(set(&c, "sweep.spring", "40, 0.1") == 0 && adh_sweep_drives(&c) == 2, "in physical time each spring is a run of its own");
     ok(set(&c, "sweep.spring", "0, 1") != 0, "a spring of 0 N/m is refused as a swept value");
 
     adh_config_default(&c);
