@@ -14,7 +14,7 @@ WARN     = -Wall -Wextra -Wshadow -Wno-unused-parameter -Wformat-truncation=2
 PKGS     = gsl ncursesw inih openblas
 DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox mandoc pkg-config tmux \
            liblapack-dev libblas-dev liblapacke-dev \
-           clang libclang-rt-14-dev libhmat-oss-dev locales parallel
+           clang libclang-rt-14-dev libhmat-oss-dev locales libsundials-dev parallel
 
 # GSL through OpenBLAS's CBLAS and LAPACK (dgetrf), not the reference
 # gslcblas: several times faster on the dense kernel products and LU that
@@ -25,7 +25,7 @@ DEBS     = libgsl-dev libncurses-dev libopenblas-dev libinih-dev gnuplot-nox man
 # `deps` has installed it.
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 BLAS_LIBS  = $(shell pkg-config --libs openblas 2>/dev/null)
-PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl -lhmat -llapacke $(BLAS_LIBS) \
+PKG_LIBS   = $(shell pkg-config --libs-only-L gsl 2>/dev/null) -lgsl -lhmat -llapacke -lsundials_idas $(BLAS_LIBS) \
              $(shell pkg-config --libs ncursesw inih 2>/dev/null) -lpthread -lm
 ADH_VERSION = 0.1.0
 CPPFLAGS += -Iinclude -Isrc -DADH_VERSION='"$(ADH_VERSION)"' -D_POSIX_C_SOURCE=200809L -DADH_DATADIR='"$(DATADIR)"'
@@ -119,7 +119,7 @@ $(BUILD)/%.o: %.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
 
-$(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(LIBS) | deps
+$(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(wildcard tests/unit/*.h) $(LIBS) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) -o $@ $< $(LIBS) $(PKG_LIBS)
 

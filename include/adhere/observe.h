@@ -24,9 +24,12 @@ typedef struct adh_obs {
     int path;        /* 0 loading, k for the k-th unloading branch */
     int converged;   /* 1 when the step met eps */
     int stable;      /* 1 stable under displacement control (static mode); 1 in relaxation */
+    double t;        /* physical time, s (a viscoelastic run, adhere/visco.h); NAN otherwise */
+    double base;     /* the instrument's base, m: h0 - F/k under a spring; h0 otherwise */
 } adh_obs;
 
-/* Fills the fields computed from the state (F, delta, hc, a, angle, F_rigid, h0). */
+/* Fills the fields computed from the state (F, delta, hc, a, angle, F_rigid,
+ * h0; t NAN and base = h0: no clock, no spring). */
 void adh_observe(const adh_grid *g, const adh_material *m, const adh_state *s, adh_obs *o);
 
 /* eq 13 over the grid plus the tail beyond Rmax (adh_force_tail). */

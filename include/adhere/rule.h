@@ -19,6 +19,9 @@
  *   rigid   rigid spheres, eq 22 alone (rule_rigid.c): the force at start -
  *           k d down to the deepest turn but not below 0.7 z0, loading
  *           only, no grid or kernel; settings: none (NULL).
+ *   visco   a standard linear solid in physical time (rule_visco.c): the
+ *           integrator walks the whole cycle at the drive's speeds, through
+ *           its spring; settings: adh_visco_rule_settings.
  *
  * Two kinds of rule, told apart by which functions they fill:
  *   stepped (move, iterate and the snapshots; next NULL): the drive's
@@ -109,7 +112,7 @@ typedef struct adh_rule_type {
 
 /* The registration: one X(NAME) per rule, each defined as adh_rule_NAME in
  * src/core/rule_NAME.c (a test steps every rule listed here). */
-#define ADH_RULES(X) X(relax) X(static) X(rigid)
+#define ADH_RULES(X) X(relax) X(static) X(rigid) X(visco)
 
 #define ADH_RULE_DECLARE(name) extern const adh_rule_type adh_rule_##name;
 ADH_RULES(ADH_RULE_DECLARE)

@@ -10,8 +10,11 @@ typedef enum adh_quantity {
     ADH_Q_PRESSURE,      /* Pa */
     ADH_Q_ENERGY,        /* J */
     ADH_Q_SPEED,         /* m/s */
-    ADH_Q_FORCE          /* N */
+    ADH_Q_FORCE,         /* N */
+    ADH_Q_TIME,          /* s */
+    ADH_Q_STIFFNESS      /* N/m */
 } adh_quantity;
+#define ADH_Q_LAST ADH_Q_STIFFNESS
 
 /* Parses text as a finite number in quantity q's SI unit, with an optional
  * metric prefix and unit ("nm", "um", "GPa", "zJ"...). Returns ADH_SUCCESS,

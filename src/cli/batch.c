@@ -27,6 +27,7 @@
 #include "cli/static.h"
 #include "cli/sweep.h"
 #include "cli/tables.h"
+#include "cli/timerun.h"
 #include "plot/rows.h"
 #include "plot/outdir.h"
 #include "adhere/units.h"
@@ -49,7 +50,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
 {
     batch_ctx *ctx = vctx;
     if (ctx->stream) {
-        adh_rows_write(ctx->stream, o);
+        (ctx->spec->mode == ADH_MODE_TIME ? adh_rows_write_timed : adh_rows_write)(ctx->stream, o);
         fflush(ctx->stream);
     }
     if (ctx->progress) {
@@ -65,6 +66,9 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
             else if (ctx->total)
                 fprintf(stderr, "\r  %s step %zu of <=%zu  %-26s h0 %+8.3f nm  F %+10.4g uN ",
                         o->branch > 0 ? "loading  " : "unloading", run->nrows, ctx->total, pr, o->h0 * 1e9, o->F * 1e6);
+            else if (isfinite(o->t))   /* physical time */
+                fprintf(stderr, "\r  %s step %zu  t %-10.4g s  h0 %+8.3f nm  F %+10.4g uN ", o->branch > 0 ? "loading  "
+                        : "unloading", run->nrows, o->t, o->h0 * 1e9, o->F * 1e6);
             else
                 fprintf(stderr, "\r  point %zu  h0 %+8.3f nm  F %+10.4g uN ", run->nrows, o->h0 * 1e9, o->F * 1e6);
         }
@@ -164,17 +168,20 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     adh_plan plan;
     adh_plan_make(cfg, &plan);
     batch_ctx ctx = { spec, out ? NULL : stdout, !cfg->output.quiet && isatty(2),
-                      plan.static_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
+                      plan.static_mode || plan.time_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
+    int timed = spec->mode == ADH_MODE_TIME;
     if (ctx.stream) {
         fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
-        adh_rows_header(ctx.stream);
+        (timed ? adh_rows_header_timed : adh_rows_header)(ctx.stream);
     }
     adh_run run;
     adh_run_init(&run);
     adh_static_result sres;
-    adh_ready_phase(rigid ? "rigid" : spec->mode == ADH_MODE_STATIC ? "static" : "relax");
+    cli_time_out tout = { 0 };
+    adh_ready_phase(rigid ? "rigid" : spec->mode == ADH_MODE_STATIC ? "static" : timed ? "time" : "relax");
     int rc = rigid ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &spec->mat, NULL, &spec->proto, on_step, &ctx, &run)
            : spec->mode == ADH_MODE_STATIC ? cli_static_run(spec, g, k, on_step, &ctx, &run, &sres)
+           : timed ? cli_time_run(spec, g, k, on_step, &ctx, &run, &tout)
            : adh_runner_rule(&adh_rule_relax, g, k, &spec->mat, &spec->relax, &spec->proto, on_step, &ctx, &run);
     /* --reference=static: the equilibrium curve beside the relaxation run. */
     adh_run ref;
@@ -237,10 +244,15 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
 
     double ref_hyst = want_ref ? cli_tables_static_hysteresis(&ref, &spec->mat) : NAN;
     char keynames[2 * CLI_TABLES_STATIC_KEYS][32];
-    cli_tables_extra extra[2 * CLI_TABLES_STATIC_KEYS + 1];
+    cli_tables_extra extra[2 * CLI_TABLES_STATIC_KEYS + 1 + CLI_TIME_KEYS];
+    double snap[CLI_TIME_SNAP_KEYS];
     size_t nextra = 0;
     if (spec->mode == ADH_MODE_STATIC)
         nextra += cli_tables_static_keys(&sres, cli_tables_static_hysteresis(&run, &spec->mat), "", keynames, extra);
+    if (spec->mode == ADH_MODE_STATIC && isfinite(spec->time.spring))   /* the instrument's snap points */
+        nextra += cli_time_snap_keys(&run, spec->time.spring, snap, extra + nextra);
+    if (timed)
+        nextra += cli_time_keys(&tout, extra + nextra);
     if (want_ref)
         nextra += cli_tables_static_keys(&rres, ref_hyst, "static_", keynames + nextra, extra + nextra);
     if (want_ref)
@@ -260,10 +272,11 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
          * summary.tsv comes last, naming what was not written: a summary
          * that says success speaks for the whole directory. */
         char unwritten[512] = "";
-        struct { const char *name; int want; adh_outdir_writer w; const cli_tables *t; } tab[] = {
+        struct { const char *name; int want; adh_outdir_writer w; const void *t; } tab[] = {
             { "force.tsv", 1, cli_tables_force, &tables },
             { "turns.tsv", run.nturns > 0, cli_tables_turns, &tables },
             { "static.tsv", want_ref, cli_tables_force, &ref_tables },
+            { "events.tsv", timed, cli_time_events, &tout },
         };
         for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
             if (!tab[i].want)
@@ -298,8 +311,8 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
             }
             if (status == CLI_EXIT_OK && !cfg->output.quiet) {
                 char tables_[128];
-                snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s", run.nturns ? ", turns.tsv" : "",
-                         want_ref ? ", static.tsv" : "");
+                snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s%s", run.nturns ? ", turns.tsv" : "",
+                         want_ref ? ", static.tsv" : "", timed ? ", events.tsv" : "");
                 /* "wrote A, B in DIR; notes" from the plots, the scene figures' names after A, B */
                 const char *in = strstr(msg, " in ");
                 if (strncmp(msg, "wrote ", 6) == 0 && in && !strstr(msg, "no plot tables"))
@@ -325,6 +338,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
         fprintf(stderr, "adhere: interrupted by signal %d while plotting; the tables are complete\n", cli_interrupt_signal());
         status = cli_interrupt_exit();
     }
+    cli_time_out_free(&tout);
     adh_run_free(&run);
     adh_run_free(&ref);
     adh_kernel_free(k);

@@ -40,6 +40,11 @@ void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
         fprintf(f, "time: under a second (eq 22 at each position, no elastic solve)\n");
         return;
     }
+    if (plan->time_mode) {
+        fprintf(f, "time: not estimated in CPU seconds: in physical time the integrator's tolerance sets the steps "
+                   "(the visco scene: 1.1 CPU s at its N = 648, docs/viscoelastic.md)\n");
+        return;
+    }
     if (plan->static_mode) {
         fprintf(f, "time: not estimated: the static curve's Newton steps cost as its folds and grid make them "
                    "(seconds on the paper's grid, up to some 20 s at sigma = 100)\n");

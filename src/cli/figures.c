@@ -539,6 +539,8 @@ int cli_figures_sweep(const adh_config *cfg, const cli_studyrow *rows, size_t n,
     adh_sweep_plot plot = adh_sweep_plot_kind(&cfg->sweep);
     if (!cfg->output.plot || plot == ADH_SWEEP_PLOT_NONE || n == 0)
         return 0;
+    if (plot == ADH_SWEEP_PLOT_SPEED || plot == ADH_SWEEP_PLOT_SNAP)
+        return cli_time_sweep_figure(cfg, rows, n, out, msg, msglen);
     figure fg;
     if (fig_open(&fg, cfg, out, msg, msglen) != 0)
         return -1;

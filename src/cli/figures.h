@@ -40,4 +40,12 @@ int cli_figures_sweep(const adh_config *cfg, const cli_studyrow *rows, size_t n,
  * here; the caller frees it). 0, or -1 with why. */
 int cli_figures_curve(int dirfd, size_t i, adh_run *run, char *why, size_t whylen);
 
+/* A study in physical time's figure (timefigs.c), from its rows: plot =
+ * speed, speed.png (pull-off and hysteresis against the one swept speed,
+ * log axis, with the static pull-offs at E0 and Einf from two static
+ * curves on run 1's grid); plot = snap, snap.png (the snap-in against the
+ * swept spring, log axes, with rigid spheres' eq 22). 0, or -1 with msg. */
+int cli_time_sweep_figure(const adh_config *cfg, const cli_studyrow *rows, size_t n, adh_outdir *out, char *msg,
+                          size_t msglen);
+
 #endif

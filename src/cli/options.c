@@ -26,7 +26,8 @@ enum {
     OPT_GNUPLOT_STYLE, OPT_PLAN, OPT_DWELL, OPT_MODE, OPT_REFERENCE, OPT_COST, OPT_COST_EPS,
     OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE, OPT_DATA,
     OPT_GRID, OPT_FINE_BAND, OPT_GROWTH, OPT_GRID_RADIUS, OPT_OPERATOR, OPT_OVERWRITE, OPT_COLUMNS, OPT_FREE,
-    OPT_MODEL, OPT_OFFSET, OPT_BASELINE,
+    OPT_MODEL, OPT_OFFSET, OPT_BASELINE, OPT_MATERIAL, OPT_E0, OPT_EINF, OPT_TAU, OPT_SPEED, OPT_DWELL_TIME,
+    OPT_SPRING,
     OPT_SWEEP, OPT_RUN_DIRS, OPT_SHARD, OPT_ALLOW_PARTIAL
 };
 
@@ -47,6 +48,10 @@ static const option_doc options[] = {
     { { "hamaker", required_argument, 0, 'A' }, "J", "Hamaker constant A (default 1e-19J)", "material.A", NULL },
     { { "z0", required_argument, 0, 'z' }, "M", "Lennard-Jones equilibrium separation z0 (default 0.5nm)", "material.z0", NULL },
     { { "radius", required_argument, 0, 'R' }, "M", "effective radius R (default 10um)", "material.R", NULL },
+    { { "material", required_argument, 0, OPT_MATERIAL }, "elastic|sls", "elastic spheres, or a standard linear solid run in physical time (default elastic)", "material.material", NULL },
+    { { "E0", required_argument, 0, OPT_E0 }, "PA", "sls: relaxed modulus E0, the material's E under its solid's name", "material.E0", NULL },
+    { { "Einf", required_argument, 0, OPT_EINF }, "PA|auto", "sls: instantaneous modulus, at least E0 (default auto: 10 E0)", "material.Einf", NULL },
+    { { "tau", required_argument, 0, OPT_TAU }, "S", "sls: relaxation time of the creep compliance (default 1ms)", "material.tau", NULL },
     { { "nodes", required_argument, 0, 'N' }, "N|auto", "grid nodes N, 10 to 20000 (default 1000, more where the contact edge needs it)", "grid.nodes", NULL },
     { { "spacing", required_argument, 0, OPT_SPACING }, "M|auto", "grid spacing (default: the paper's 0.0212 sqrt(R z0), or finer where the contact edge needs it)", "grid.spacing", NULL },
     { { "force", no_argument, 0, OPT_FORCE }, NULL, "run a grid coarser than the resolved limit (0.45 edge-zone widths, static 0.3); marked resolved 0", "grid.force", "yes" },
@@ -66,7 +71,10 @@ static const option_doc options[] = {
     { { "turn", required_argument, 0, OPT_TURN }, "M[,M...]", "turning points (default -5nm); 'none' loads to contact only", "protocol.turns", NULL },
     { { "turns", required_argument, 0, OPT_TURN }, "M[,M...]", "the same as --turn, by the scene key's name", "protocol.turns", NULL },
     { { "dwell", required_argument, 0, OPT_DWELL }, "N", "iterations held at each turning point before unloading (default 0)", "protocol.dwell", NULL },
-    { { "mode", required_argument, 0, OPT_MODE }, "relax|static|rigid", "paper's relaxation, the static equilibrium curve, or rigid spheres only (eq 22, no elastic solve) (default relax)", "scene.mode", NULL },
+    { { "speed", required_argument, 0, OPT_SPEED }, "M/S[,M/S]", "physical time: the base's speed, or approach and retraction speeds (default 1um/s)", "protocol.speed", NULL },
+    { { "dwell-time", required_argument, 0, OPT_DWELL_TIME }, "S", "physical time: held at each turn before retracting (default 0)", "protocol.dwell_time", NULL },
+    { { "spring", required_argument, 0, OPT_SPRING }, "N/M|none", "instrument spring k between the base and the sphere: physical time, or the static curve's snap points (default none)", "protocol.spring", NULL },
+    { { "mode", required_argument, 0, OPT_MODE }, "relax|static|rigid|time", "paper's relaxation, the static equilibrium curve, rigid spheres only (eq 22, no elastic solve), or physical time (default relax; time with --material=sls)", "scene.mode", NULL },
     { { "reference", required_argument, 0, OPT_REFERENCE }, "static", "also compute the static curve as a reference in relaxation mode", NULL, NULL },
     { { "batch", no_argument, 0, 'b' }, NULL, "run the protocol without the TUI and write tables", NULL, NULL },
     { { "out", required_argument, 0, 'o' }, "DIR", "write force.tsv, summary.tsv, turns.tsv and plots into DIR (created)", "output.dir", NULL },
@@ -121,7 +129,8 @@ void cli_options_usage(FILE *out)
         snprintf(lhs + n, sizeof lhs - (size_t)n, "--%s%s%s", o->opt.name, o->arg ? "=" : "", o->arg ? o->arg : "");
         fprintf(out, "  %-28s %s\n", lhs, o->help);
     }
-    fprintf(out, "\nSCENE is a scene file or the name of a shipped one (default, fig1 ... fig8).\n"
+    fprintf(out, "\nSCENE is a scene file or the name of a shipped one (default, fig1 ... fig8, visco,\n"
+                 "visco-speed, afm).\n"
                  "See adhere(1) and adhere-scene(5).\n");
 }
 
@@ -389,7 +398,7 @@ static int split_unit_hint(int argc, char **orig, const char *arg, char *why, si
     char probe[80];
     snprintf(probe, sizeof probe, "1%s", arg);
     int unit = 0;
-    for (int q = ADH_Q_LENGTH; q <= ADH_Q_FORCE && !unit; q++)
+    for (int q = ADH_Q_LENGTH; q <= ADH_Q_LAST && !unit; q++)
         unit = strlen(arg) < 16 && adh_parse_quantity(probe, (adh_quantity)q, &v, NULL, 0) == 0;
     if (!unit)
         return 0;
@@ -629,6 +638,11 @@ static int sweep_plot_fits(const adh_config *cfg, char *why, size_t whylen)
                  "jump_in_h0, jump_out_h0, h_before, iterations, ...)", s->map);
         return 2;
     }
+    char msg[1024];
+    if (adh_config_time_sweep_check(cfg, msg, sizeof msg) != 0) {
+        cli_options_words(msg, why, whylen);
+        return 2;
+    }
     if (s->run_dirs == 0 && plot == ADH_SWEEP_PLOT_FORCE) {
         snprintf(why, whylen, "[sweep] plot = force draws every run's force curve from its run-K/force.tsv: "
                  "run_dirs = no leaves them out (use run_dirs = yes or auto)");
@@ -732,6 +746,11 @@ static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *wh
     if (adh_material_validate(&run->mat, why, whylen) != ADH_SUCCESS ||
         adh_relax_settings_validate(&run->relax, why, whylen) != ADH_SUCCESS)
         return 2;
+    char msg[1024];
+    if (adh_config_time_check(cfg, run, msg, sizeof msg) != 0) {   /* the material, drive and mode fit */
+        cli_options_words(msg, why, whylen);
+        return 2;
+    }
     const adh_output_options *o = &cfg->output;
     if (o->gnuplot_style[0]) {
         /* a directory holds style.gp (adh_plot_style_file reads it there) */

@@ -1,5 +1,6 @@
 #include "cli/runout.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -16,7 +17,7 @@
  * failed here, and the list in unwritten); word, when not NULL, is its
  * status. Returns an exit status. */
 static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec, const adh_run *run,
-                      const adh_static_result *sres, int rc, adh_outdir *dir, int data, const char *unwritten,
+                      const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir, int data, const char *unwritten,
                       const char *word, cli_runout_said *said)
 {
     char *lost = said->lost;
@@ -30,16 +31,25 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(rc));
     /* a static run's summary.tsv has the batch's static keys */
     char keynames[CLI_TABLES_STATIC_KEYS][32];
-    cli_tables_extra extra[CLI_TABLES_STATIC_KEYS];
+    cli_tables_extra extra[CLI_TABLES_STATIC_KEYS + CLI_TIME_SNAP_KEYS + CLI_TIME_KEYS];
     size_t nextra = rs->mode == ADH_MODE_STATIC && sres && run->nrows
                   ? cli_tables_static_keys(sres, cli_tables_static_hysteresis(run, &rs->mat), "", keynames, extra) : 0;
+    /* physical time's keys: a static curve's snap points under a spring,
+     * a run in time its summary */
+    double snap[CLI_TIME_SNAP_KEYS];
+    int timed = rs->mode == ADH_MODE_TIME && tout;
+    if (rs->mode == ADH_MODE_STATIC && run->nrows && isfinite(rs->time.spring))
+        nextra += cli_time_snap_keys(run, rs->time.spring, snap, extra + nextra);
+    if (timed)
+        nextra += cli_time_keys(tout, extra + nextra);
     cli_tables t = { cfg, rs, run, extra, nextra, partial, note, lost, word };
     int status = CLI_EXIT_OK;
     if (data) {
-        const char *names[2] = { "force.tsv", run->nturns ? "turns.tsv" : NULL };
-        adh_outdir_writer writers[2] = { cli_tables_force, cli_tables_turns };
-        for (int k = 0; k < 2; k++)
-            if (names[k] && adh_outdir_write(dir, names[k], writers[k], &t, why, sizeof why) != 0) {
+        const char *names[3] = { "force.tsv", run->nturns ? "turns.tsv" : NULL, timed ? "events.tsv" : NULL };
+        adh_outdir_writer writers[3] = { cli_tables_force, cli_tables_turns, cli_time_events };
+        const void *ctx[3] = { &t, &t, tout };
+        for (int k = 0; k < 3; k++)
+            if (names[k] && adh_outdir_write(dir, names[k], writers[k], ctx[k], why, sizeof why) != 0) {
                 fprintf(stderr, "adhere: %s\n", why);
                 status = CLI_EXIT_USAGE;
                 cli_tables_names_add(lost, sizeof said->lost, names[k]);
@@ -68,7 +78,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
  * written, the run's summary.tsv is written again to say so. An exit
  * status. */
 static int write_plots(const adh_config *cfg, size_t i, const adh_run_spec *rspec, const adh_run *run,
-                       const adh_static_result *sres, int rc, adh_outdir *dir, cli_runout_said *said)
+                       const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir, cli_runout_said *said)
 {
     char msg[1024] = "", missing[256] = "";
     if (!cfg->output.plot)
@@ -93,7 +103,7 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run_spec *rspe
         status = status ? status : CLI_EXIT_PLOT;
     }
     if (*missing) {
-        int trc = run_tables(cfg, i, rspec, run, sres, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL,
+        int trc = run_tables(cfg, i, rspec, run, sres, tout, rc, dir, 0, missing, cli_interrupt_signal() ? "interrupted" : NULL,
                              said);
         if (trc == CLI_EXIT_USAGE)
             status = trc;
@@ -104,7 +114,7 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run_spec *rspe
 /* Run i's figures not drawn (a signal came first): its summary.tsv names
  * those asked for and says interrupted. An exit status. */
 static int plots_skipped(const adh_config *cfg, size_t i, const adh_run_spec *spec, const adh_run *run,
-                         const adh_static_result *sres, int rc, adh_outdir *dir, cli_runout_said *said)
+                         const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir, cli_runout_said *said)
 {
     static const struct { unsigned bit; const char *name; } figs[] = {
         { ADH_PLOT_FORCE, "force.png" }, { ADH_PLOT_PROFILE, "profile.png" }, { ADH_PLOT_CONTACT, "contact.png" },
@@ -116,7 +126,7 @@ static int plots_skipped(const adh_config *cfg, size_t i, const adh_run_spec *sp
             cli_tables_names_add(missing, sizeof missing, figs[k].name);
     if (!*missing)
         return CLI_EXIT_OK;
-    int trc = run_tables(cfg, i, spec, run, sres, rc, dir, 0, missing, "interrupted", said);
+    int trc = run_tables(cfg, i, spec, run, sres, tout, rc, dir, 0, missing, "interrupted", said);
     return trc == CLI_EXIT_USAGE ? trc : cli_interrupt_exit();
 }
 
@@ -133,21 +143,21 @@ int cli_runout_worse(int a, int b)
 }
 
 int cli_runout_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec, const adh_run *run,
-                      const adh_static_result *sres, int rc, adh_outdir *dir, cli_runout_said *said)
+                      const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir, cli_runout_said *said)
 {
     memset(said, 0, sizeof *said);
-    return run_tables(cfg, i, spec, run, sres, rc, dir, 1, NULL, NULL, said);
+    return run_tables(cfg, i, spec, run, sres, tout, rc, dir, 1, NULL, NULL, said);
 }
 
 int cli_runout_write(const adh_config *cfg, size_t i, const adh_run_spec *spec, const adh_run *run,
-                     const adh_static_result *sres, int rc, adh_outdir *dir, cli_runout_said *said)
+                     const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir, cli_runout_said *said)
 {
-    int t = cli_runout_tables(cfg, i, spec, run, sres, rc, dir, said);
+    int t = cli_runout_tables(cfg, i, spec, run, sres, tout, rc, dir, said);
     /* figures of a run that finished (one with steps at the cap too) */
     int plot = t == CLI_EXIT_OK || (t == CLI_EXIT_SOLVER && run->unconverged && rc == ADH_SUCCESS && !run->interrupted);
     if (!plot)
         return t;
-    int p = cli_interrupt_signal() ? plots_skipped(cfg, i, spec, run, sres, rc, dir, said)
-                                   : write_plots(cfg, i, spec, run, sres, rc, dir, said);
+    int p = cli_interrupt_signal() ? plots_skipped(cfg, i, spec, run, sres, tout, rc, dir, said)
+                                   : write_plots(cfg, i, spec, run, sres, tout, rc, dir, said);
     return cli_runout_worse(t, p);
 }

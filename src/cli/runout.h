@@ -6,6 +6,7 @@
 
 #include "adhere/run.h"
 #include "adhere/static.h"
+#include "cli/timerun.h"
 #include "plot/outdir.h"
 #include "scene/config.h"
 
@@ -22,15 +23,15 @@ typedef struct cli_runout_said {
 int cli_runout_worse(int a, int b);
 
 /* Run i of cfg's study (specification spec, adh status rc; sres a static
- * curve's summary or NULL) into dir: its tables, then, unless a signal
+ * curve's summary or NULL; tout a run in physical time's or NULL) into dir: its tables, then, unless a signal
  * came (then its summary says which figures were not drawn), its
  * figures; said: what its summary.tsv said last. The exit status its
  * outputs call for. */
 int cli_runout_write(const adh_config *cfg, size_t i, const adh_run_spec *spec, const adh_run *run,
-                     const adh_static_result *sres, int rc, adh_outdir *dir, cli_runout_said *said);
+                     const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir, cli_runout_said *said);
 
 /* The tables alone (a run that never started: they say interrupted). */
 int cli_runout_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec, const adh_run *run,
-                      const adh_static_result *sres, int rc, adh_outdir *dir, cli_runout_said *said);
+                      const adh_static_result *sres, const cli_time_out *tout, int rc, adh_outdir *dir, cli_runout_said *said);
 
 #endif

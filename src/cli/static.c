@@ -13,6 +13,11 @@ int cli_static_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel
 {
     adh_static_settings s = adh_static_settings_default();
     s.cancel = spec->relax.cancel;   /* the one cancel flag of the run */
+    if (isfinite(spec->time.spring)) {
+        /* the snap points are read off between the curve's points: close
+         * ones (the base there moves < 1e-5 from 1 z0 to 0.1 z0 apart) */
+        s.ds_max = fmin(s.ds_max, 0.25);
+    }
     /* The same start as the relaxation run, so the two curves share an
      * axis; the drive ends the curve at the protocol's deepest turn. */
     adh_protocol_settings ps = spec->proto;

@@ -17,6 +17,7 @@ typedef struct cli_studycost {
     double t_iter;           /* seconds an iteration takes on the real grid */
     size_t pilot_nodes;      /* the pilot's grid */
     int pilot_cut;           /* the pilot was stopped before its end (it took too long) */
+    int timed;               /* physical time: no pilot (its steps follow the integrator's tolerance) */
     int jobs;
 } cli_studycost;
 

@@ -12,7 +12,7 @@
 #include "cli/tables.h"
 
 enum { NUM, SECS, WORD };
-enum { ALWAYS, STATIC_ONLY };
+enum { ALWAYS, STATIC_ONLY, TIME_ONLY, STATIC_OR_TIME, SNAP };
 enum { W_GRID, W_KERNEL, W_OPERATOR, W_MODE };
 
 typedef struct column {
@@ -45,7 +45,21 @@ static const column columns[] = {
     { "edge_nodes", NUM, CLI_ROW_EDGE_NODES, ALWAYS }, { "rmax_force_fraction", NUM, CLI_ROW_TAIL, ALWAYS },
     { "resolved", NUM, CLI_ROW_RESOLVED, ALWAYS }, { "converged", NUM, CLI_ROW_CONVERGED, ALWAYS },
     { "complete", NUM, CLI_ROW_COMPLETE, ALWAYS },
-    { "points", NUM, CLI_ROW_POINTS, STATIC_ONLY }, { "newton_iterations", NUM, CLI_ROW_NEWTON, STATIC_ONLY },
+    { "points", NUM, CLI_ROW_POINTS, STATIC_ONLY }, { "newton_iterations", NUM, CLI_ROW_NEWTON, STATIC_OR_TIME },
+    { "E0", NUM, CLI_ROW_E0, TIME_ONLY }, { "Einf", NUM, CLI_ROW_EINF, TIME_ONLY }, { "tau", NUM, CLI_ROW_TAU, TIME_ONLY },
+    { "speed_in", NUM, CLI_ROW_SPEED_IN, TIME_ONLY }, { "speed_out", NUM, CLI_ROW_SPEED_OUT, TIME_ONLY },
+    { "dwell_time", NUM, CLI_ROW_DWELL_TIME, TIME_ONLY }, { "spring", NUM, CLI_ROW_SPRING, TIME_ONLY },
+    { "jump_in_t", NUM, CLI_ROW_JUMP_IN_T, TIME_ONLY }, { "jump_in_base", NUM, CLI_ROW_JUMP_IN_BASE, TIME_ONLY },
+    { "pulloff_t", NUM, CLI_ROW_PULLOFF_T, TIME_ONLY }, { "pulloff_base", NUM, CLI_ROW_PULLOFF_BASE, TIME_ONLY },
+    { "jump_out_t", NUM, CLI_ROW_JUMP_OUT_T, TIME_ONLY }, { "jump_out_base", NUM, CLI_ROW_JUMP_OUT_BASE, TIME_ONLY },
+    { "dissipated", NUM, CLI_ROW_DISSIPATED, TIME_ONLY }, { "jump_loss", NUM, CLI_ROW_JUMP_LOSS, TIME_ONLY },
+    { "stored_change", NUM, CLI_ROW_STORED_CHANGE, TIME_ONLY }, { "time", NUM, CLI_ROW_TIME, TIME_ONLY },
+    { "time_steps", NUM, CLI_ROW_TIME_STEPS, TIME_ONLY }, { "jumps", NUM, CLI_ROW_JUMPS, TIME_ONLY },
+    { "jumps_relaxed", NUM, CLI_ROW_JUMPS_RELAXED, TIME_ONLY }, { "folds_resumed", NUM, CLI_ROW_FOLDS_RESUMED, TIME_ONLY },
+    { "krylov_iterations", NUM, CLI_ROW_KRYLOV, TIME_ONLY }, { "tolerance", NUM, CLI_ROW_TOLERANCE, TIME_ONLY },
+    { "snap_in_h0", NUM, CLI_ROW_SNAP_IN_H0, SNAP }, { "snap_in_base", NUM, CLI_ROW_SNAP_IN_BASE, SNAP },
+    { "snap_out_h0", NUM, CLI_ROW_SNAP_OUT_H0, SNAP }, { "snap_out_base", NUM, CLI_ROW_SNAP_OUT_BASE, SNAP },
+    { "snap_in_base_rigid", NUM, CLI_ROW_SNAP_IN_RIGID, SNAP },
 };
 #define NCOLUMNS (sizeof columns / sizeof columns[0])
 
@@ -55,9 +69,30 @@ static int static_columns(const adh_config *cfg)
     return cfg->spec.mode == ADH_MODE_STATIC || adh_sweep_touches(&cfg->sweep, "scene.mode");
 }
 
+/* Physical time's columns: a study in mode time (a mode swept with it
+ * takes them too). */
+static int time_columns(const adh_config *cfg)
+{
+    return cfg->spec.mode == ADH_MODE_TIME || (adh_sweep_touches(&cfg->sweep, "scene.mode") &&
+                                               cfg->spec.time.sls);
+}
+
+/* The spring's snap points: a spring given or swept, in mode static or time. */
+static int snap_columns(const adh_config *cfg)
+{
+    return (cfg->spec.mode == ADH_MODE_STATIC || cfg->spec.mode == ADH_MODE_TIME) &&
+           (isfinite(cfg->spec.time.spring) || adh_sweep_axis_of(&cfg->sweep, "protocol.spring"));
+}
+
 static int present(const adh_config *cfg, const column *c)
 {
-    return c->when == ALWAYS || static_columns(cfg);
+    switch (c->when) {
+    case STATIC_ONLY: return static_columns(cfg);
+    case TIME_ONLY: return time_columns(cfg);
+    case STATIC_OR_TIME: return static_columns(cfg) || time_columns(cfg);
+    case SNAP: return snap_columns(cfg);
+    }
+    return 1;
 }
 
 static char *word_of(cli_studyrow *row, int w)
@@ -102,11 +137,89 @@ static void fill_spec(cli_studyrow *row, const adh_run_spec *rc)
     snprintf(row->grid, sizeof row->grid, "%s", rc->grid.use.graded ? "graded" : "uniform");
     snprintf(row->kernel, sizeof row->kernel, "%s", adh_kernel_name(rc->grid.use.kernel));
     snprintf(row->op, sizeof row->op, "%s", adh_kernel_storage_name(rc->grid.use.storage));
-    snprintf(row->mode, sizeof row->mode, "%s", rc->mode == ADH_MODE_STATIC ? "static" : rigid ? "rigid" : "relax");
+    snprintf(row->mode, sizeof row->mode, "%s", rc->mode == ADH_MODE_STATIC ? "static" : rigid ? "rigid"
+             : rc->mode == ADH_MODE_TIME ? "time" : "relax");
+}
+
+/* Rigid spheres' snap-in base on r's rows (eq 22's force at the same
+ * positions), under spring k; NAN without one. */
+static double rigid_snap_in(const adh_run *r, double k)
+{
+    adh_run rigid;
+    adh_run_init(&rigid);
+    for (size_t j = 0; j < r->nrows; j++) {
+        adh_obs o = r->rows[j];
+        o.F = o.F_rigid;
+        o.path = 0;
+        if (adh_run_push_row(&rigid, &o) != ADH_SUCCESS)
+            break;
+    }
+    double at, base = NAN;
+    if (adh_visco_spring_folds(&rigid, k, &at, &base, 1) < 1)
+        base = NAN;
+    adh_run_free(&rigid);
+    return base;
+}
+
+/* The spring's snap points of run r: a static curve's where its base
+ * turns, a run in time's first jump in and last jump out (its events). */
+static void fill_snap(double *v, const adh_run_spec *rc, const adh_run *r, const cli_time_out *tout)
+{
+    double k = rc->time.spring;
+    if (!isfinite(k) || !r->nrows)
+        return;
+    if (rc->mode == ADH_MODE_STATIC) {
+        double store[CLI_TIME_SNAP_KEYS];
+        cli_tables_extra x[CLI_TIME_SNAP_KEYS];
+        cli_time_snap_keys(r, k, store, x);
+        v[CLI_ROW_SNAP_IN_H0] = store[1], v[CLI_ROW_SNAP_IN_BASE] = store[2];
+        v[CLI_ROW_SNAP_OUT_H0] = store[3], v[CLI_ROW_SNAP_OUT_BASE] = store[4];
+    } else if (tout) {
+        for (size_t e = 0; e < tout->nev; e++) {
+            const adh_visco_event *ev = &tout->ev[e];
+            if (ev->kind != ADH_VISCO_JUMP)
+                continue;
+            if (ev->path == 0 && isnan(v[CLI_ROW_SNAP_IN_H0]))
+                v[CLI_ROW_SNAP_IN_H0] = ev->h0, v[CLI_ROW_SNAP_IN_BASE] = ev->base;
+            if (ev->path > 0)
+                v[CLI_ROW_SNAP_OUT_H0] = ev->h0, v[CLI_ROW_SNAP_OUT_BASE] = ev->base;
+        }
+    }
+    v[CLI_ROW_SNAP_IN_RIGID] = rigid_snap_in(r, k);
+}
+
+/* A run in physical time's numbers: its summary's (cli_time_keys) by name,
+ * and its pull-off, jumps and hysteresis in the columns every mode has. */
+static void fill_time(double *v, const adh_run *r, const cli_time_out *o)
+{
+    static const struct { const char *key; int col; } map[] = {
+        { "E0", CLI_ROW_E0 }, { "Einf", CLI_ROW_EINF }, { "tau", CLI_ROW_TAU }, { "speed_in", CLI_ROW_SPEED_IN },
+        { "speed_out", CLI_ROW_SPEED_OUT }, { "dwell_time", CLI_ROW_DWELL_TIME }, { "spring", CLI_ROW_SPRING },
+        { "jump_in_t", CLI_ROW_JUMP_IN_T }, { "jump_in_base", CLI_ROW_JUMP_IN_BASE }, { "pulloff_t", CLI_ROW_PULLOFF_T },
+        { "pulloff_base", CLI_ROW_PULLOFF_BASE }, { "jump_out_t", CLI_ROW_JUMP_OUT_T },
+        { "jump_out_base", CLI_ROW_JUMP_OUT_BASE }, { "hysteresis", CLI_ROW_HYSTERESIS },
+        { "dissipated", CLI_ROW_DISSIPATED }, { "jump_loss", CLI_ROW_JUMP_LOSS },
+        { "stored_change", CLI_ROW_STORED_CHANGE }, { "time", CLI_ROW_TIME }, { "time_steps", CLI_ROW_TIME_STEPS },
+        { "jumps", CLI_ROW_JUMPS }, { "jumps_relaxed", CLI_ROW_JUMPS_RELAXED },
+        { "folds_resumed", CLI_ROW_FOLDS_RESUMED }, { "newton_iterations", CLI_ROW_NEWTON },
+        { "krylov_iterations", CLI_ROW_KRYLOV }, { "tolerance", CLI_ROW_TOLERANCE },
+    };
+    cli_tables_extra x[CLI_TIME_KEYS];
+    size_t n = cli_time_keys(o, x);
+    for (size_t k = 0; k < n; k++)
+        for (size_t m = 0; m < sizeof map / sizeof map[0]; m++)
+            if (!strcmp(x[k].key, map[m].key))
+                v[map[m].col] = r->nrows ? x[k].value : NAN;
+    const adh_visco_result *res = &o->res;
+    int ran = r->nrows > 0;
+    v[CLI_ROW_JUMP_IN] = ran ? res->jump_in_h0 : NAN;
+    v[CLI_ROW_PULLOFF] = ran ? res->pulloff_F : NAN;
+    v[CLI_ROW_PULLOFF_H0] = ran ? res->pulloff_h0 : NAN;
+    v[CLI_ROW_JUMP_OUT] = ran ? res->jump_out_h0 : NAN;
 }
 
 void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, const adh_run *r,
-                       const adh_static_result *sres, int status)
+                       const adh_static_result *sres, const cli_time_out *tout, int status)
 {
     double *v = row->v;
     for (size_t k = 0; k < CLI_ROW_NUMBERS; k++)
@@ -149,6 +262,9 @@ void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, cons
     snprintf(row->status, sizeof row->status, "%s", word);
     int partial = r->interrupted || status != ADH_SUCCESS;
     v[CLI_ROW_COMPLETE] = !partial && strcmp(word, "no contact") && strcmp(word, "not separated") ? 1 : 0;
+    if (rc->mode == ADH_MODE_TIME && tout)
+        fill_time(v, r, tout);
+    fill_snap(v, rc, r, tout);
 }
 
 void cli_studyrow_empty(cli_studyrow *row, const adh_config *cfg, size_t i, const char *status)
@@ -159,7 +275,7 @@ void cli_studyrow_empty(cli_studyrow *row, const adh_config *cfg, size_t i, cons
     adh_config_sweep_run(cfg, i, &rc);
     adh_static_result sres;
     memset(&sres, 0, sizeof sres);
-    cli_studyrow_fill(row, i, &rc, &none, rc.mode == ADH_MODE_STATIC ? &sres : NULL, ADH_SUCCESS);
+    cli_studyrow_fill(row, i, &rc, &none, rc.mode == ADH_MODE_STATIC ? &sres : NULL, NULL, ADH_SUCCESS);
     snprintf(row->status, sizeof row->status, "%s", status);
     row->v[CLI_ROW_COMPLETE] = 0;
 }
@@ -323,17 +439,28 @@ int cli_studyrow_table(FILE *f, const void *ctx)
     double static_hysteresis = t->static_hysteresis;
     int run_dirs = t->run_dirs, static_resolved = t->static_resolved;
     const adh_sweep *s = &cfg->sweep;
-    fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (%s), SI units (m, N, Pa, s)\n",
-            run_dirs ? "run-K/ holds its tables" : "run_dirs = no: no run-K/");
+    fprintf(f, "# adhere " ADH_VERSION "\n# sweep: one row per run (%s), SI units (m, N, Pa, s%s)\n",
+            run_dirs ? "run-K/ holds its tables" : "run_dirs = no: no run-K/",
+            time_columns(cfg) || snap_columns(cfg) ? ", J, N/m" : "");
     if (cfg->scene[0])
         cli_tables_comment(f, "scene", cfg->scene);
     if (partial && *partial)
         fprintf(f, "# PARTIAL: %s\n", partial);
+    if (time_columns(cfg))
+        fprintf(f, "# physical time: pulloff_F the lowest force on the deepest turn's unloading, hysteresis the base's work over "
+                   "its cycle, dissipated its viscous part; *_t and *_base the time and the instrument's base there; time the "
+                   "run's physical time, time_steps its integrator steps\n");
+    if (snap_columns(cfg))
+        fprintf(f, "# the spring: snap_in where the base h0 - F/k first turns on approach (dF/dh0 = k; in time the first jump "
+                   "in), snap_out where it turns last, on retraction; snap_in_base_rigid rigid spheres' (eq 22), N/m for k\n");
     if (cfg->spec.mode == ADH_MODE_STATIC)
         fprintf(f, "# mode static: each run is the equilibrium curve; jump_in_h0 its first fold, h_before the central gap at the last stable point before it;\n"
                    "# max_load the force at the curve's end (the turn); pulloff_F the load-controlled pull-off (minimum force), pulloff_F_disp the force at the jump-out fold;\n"
                    "# jumped: 1 the curve has a fold, 0 contact came without one, -1 no contact; steps the curve's points, iterations its Newton iterations;\n"
                    "# hysteresis: the equilibrium loop's area (displacement control: the highest and lowest stable force at each h0), J\n");
+    else if (cfg->spec.mode == ADH_MODE_TIME)   /* its pull-off and hysteresis: the comment above */
+        fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24; "
+                   "jump_out_h0: where the contact was lost on the deepest turn's unloading\n");
     else
         fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n"
                    "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n"

@@ -10,6 +10,7 @@
 
 #include "adhere/run.h"
 #include "adhere/static.h"
+#include "cli/timerun.h"
 #include "scene/config.h"
 
 /* The numbers of a row, by column. */
@@ -21,6 +22,15 @@ enum {
     CLI_ROW_RMAX, CLI_ROW_STEP, CLI_ROW_START, CLI_ROW_DWELL, CLI_ROW_F_JKR, CLI_ROW_F_DMT, CLI_ROW_TURN_H0,
     CLI_ROW_A_TURN, CLI_ROW_PULLOFF_H0, CLI_ROW_UNCONVERGED, CLI_ROW_EDGE_NODES, CLI_ROW_TAIL, CLI_ROW_RESOLVED,
     CLI_ROW_CONVERGED, CLI_ROW_COMPLETE, CLI_ROW_POINTS, CLI_ROW_NEWTON,
+    /* physical time (mode time) */
+    CLI_ROW_E0, CLI_ROW_EINF, CLI_ROW_TAU, CLI_ROW_SPEED_IN, CLI_ROW_SPEED_OUT, CLI_ROW_DWELL_TIME, CLI_ROW_SPRING,
+    CLI_ROW_JUMP_IN_T, CLI_ROW_JUMP_IN_BASE, CLI_ROW_PULLOFF_T, CLI_ROW_PULLOFF_BASE, CLI_ROW_JUMP_OUT_T,
+    CLI_ROW_JUMP_OUT_BASE, CLI_ROW_DISSIPATED, CLI_ROW_JUMP_LOSS, CLI_ROW_STORED_CHANGE, CLI_ROW_TIME,
+    CLI_ROW_TIME_STEPS, CLI_ROW_JUMPS, CLI_ROW_JUMPS_RELAXED, CLI_ROW_FOLDS_RESUMED, CLI_ROW_KRYLOV,
+    CLI_ROW_TOLERANCE,
+    /* the instrument's spring (mode static or time with one): where the
+     * base turns, and rigid spheres' snap-in (eq 22) on the same rows */
+    CLI_ROW_SNAP_IN_H0, CLI_ROW_SNAP_IN_BASE, CLI_ROW_SNAP_OUT_H0, CLI_ROW_SNAP_OUT_BASE, CLI_ROW_SNAP_IN_RIGID,
     CLI_ROW_NUMBERS
 };
 
@@ -33,9 +43,10 @@ typedef struct cli_studyrow {
 } cli_studyrow;
 
 /* Row i of cfg's study from its run r of specification rc (status: the
- * run's adh status; sres: a static curve's summary, or NULL). */
+ * run's adh status; sres: a static curve's summary, or NULL; tout: a run
+ * in physical time's summary and events, or NULL). */
 void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, const adh_run *r,
-                       const adh_static_result *sres, int status);
+                       const adh_static_result *sres, const cli_time_out *tout, int status);
 /* Row i of a run that did not run: every number NAN, status word. */
 void cli_studyrow_empty(cli_studyrow *row, const adh_config *cfg, size_t i, const char *status);
 

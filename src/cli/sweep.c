@@ -22,6 +22,7 @@
 #include "cli/progress.h"
 #include "cli/runout.h"
 #include "cli/static.h"
+#include "cli/timerun.h"
 #include "cli/study.h"
 #include "cli/studyrow.h"
 #include "cli/tables.h"
@@ -44,7 +45,7 @@ typedef struct study_job {
     adh_outdir *od;                /* NULL: sweep.tsv on standard output alone */
     int run_dirs;
     int rows_fd;                   /* runs.tsv, appended a row at a time; -1 none */
-    int shared;                    /* runs that differ only in their turn share drives */
+    int shared;                    /* runs that differ only in their turn (or spring, static) share drives */
     size_t done, total;            /* runs finished now, runs to step now */
     int exit_status;
     double t0;
@@ -105,11 +106,11 @@ static void progress_text(const study_job *job, char *buf, size_t len)
 
 /* Run i (specification spec) ended: its run-K, its row, a line on stderr. */
 static void finished(study_job *job, size_t i, const adh_run_spec *spec, const adh_run *run,
-                     const adh_static_result *sres, int status)
+                     const adh_static_result *sres, const cli_time_out *tout, int status)
 {
     const adh_config *cfg = job->cfg;
     cli_studyrow row;
-    cli_studyrow_fill(&row, i, spec, run, sres, status);
+    cli_studyrow_fill(&row, i, spec, run, sres, tout, status);
     int out = run_exit(cfg, run, status);
     if (job->od && job->run_dirs) {
         char name[32], why[1024];
@@ -122,7 +123,7 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
             out = CLI_EXIT_USAGE;
         } else {
             cli_runout_said said;
-            int w = cli_runout_write(cfg, i, spec, run, sres, status, dir, &said);
+            int w = cli_runout_write(cfg, i, spec, run, sres, tout, status, dir, &said);
             /* the row repeats the word its summary.tsv said last (a file not
              * written, figures a signal stopped: no success there) */
             if (said.word[0])
@@ -158,12 +159,15 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
 
 /* ---- stepping a drive ------------------------------------------------------ */
 
-/* The drive of spec on grid g with kernel k (NULL for rigid spheres). */
+/* The drive of spec on grid g with kernel k (NULL for rigid spheres); a
+ * run in physical time leaves its summary and events in tout. */
 static int step(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k, adh_run *run,
-                adh_static_result *sres)
+                adh_static_result *sres, cli_time_out *tout)
 {
     return spec->mode == ADH_MODE_RIGID
                ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &spec->mat, NULL, &spec->proto, cli_interrupt_step, NULL, run)
+           : spec->mode == ADH_MODE_TIME
+               ? cli_time_run(spec, g, k, cli_interrupt_step, NULL, run, tout)
            : spec->mode == ADH_MODE_STATIC
                ? cli_static_run(spec, g, k, cli_interrupt_step, NULL, run, sres)
                : adh_runner_rule(&adh_rule_relax, g, k, &spec->mat, &spec->relax, &spec->proto, cli_interrupt_step,
@@ -171,7 +175,8 @@ static int step(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k
 }
 
 /* Steps spec with its kernel from the cache: the adh status. */
-static int step_cached(study_job *job, const adh_run_spec *spec, adh_run *run, adh_static_result *sres, size_t *n)
+static int step_cached(study_job *job, const adh_run_spec *spec, adh_run *run, adh_static_result *sres,
+                       cli_time_out *tout, size_t *n)
 {
     const adh_grid *g = NULL;
     const adh_kernel *k = NULL;
@@ -179,7 +184,7 @@ static int step_cached(study_job *job, const adh_run_spec *spec, adh_run *run, a
     if (st == ADH_EINTR)
         run->interrupted = 1;
     if (st == ADH_SUCCESS)
-        st = step(spec, g, k, run, sres);
+        st = step(spec, g, k, run, sres, tout);
     *n = g ? g->n : 0;
     cli_kcache_put(job->kc, k);
     return st;
@@ -190,11 +195,14 @@ static void step_alone(study_job *job, size_t i, const adh_run_spec *spec)
 {
     adh_run run;
     adh_static_result sres;
+    cli_time_out tout;
     size_t n;
     adh_run_init(&run);
     memset(&sres, 0, sizeof sres);
-    int st = step_cached(job, spec, &run, &sres, &n);
-    finished(job, i, spec, &run, &sres, st);
+    memset(&tout, 0, sizeof tout);
+    int st = step_cached(job, spec, &run, &sres, &tout, &n);
+    finished(job, i, spec, &run, &sres, &tout, st);
+    cli_time_out_free(&tout);
     adh_run_free(&run);
 }
 
@@ -220,15 +228,31 @@ static void share_out(study_job *job, const adh_run_spec *ds, const adh_run *run
         int done = t < run->nturns && (ended || (run->turns[t].path > 0 && run->turns[t].path < last_path));
         adh_run mr;
         if (done && adh_run_turn(run, t, nodes, &mr) == ADH_SUCCESS) {
-            finished(job, members[j], &ms, &mr, NULL, ADH_SUCCESS);
+            finished(job, members[j], &ms, &mr, NULL, NULL, ADH_SUCCESS);
             adh_run_free(&mr);
         } else if (run->interrupted || cli_interrupt_signal()) {
             adh_run_init(&mr);
             mr.interrupted = 1;
-            finished(job, members[j], &ms, &mr, NULL, ADH_SUCCESS);
+            finished(job, members[j], &ms, &mr, NULL, NULL, ADH_SUCCESS);
         } else {
             step_alone(job, members[j], &ms);
         }
+    }
+}
+
+/* The runs of a static curve shared by their springs: the curve does not
+ * depend on k, each run is the curve with its own k (its snap points). */
+static void share_springs(study_job *job, const adh_run_spec *ds, const adh_run *run,
+                          const adh_static_result *sres, int status, size_t n, const size_t *members)
+{
+    for (size_t j = 0; j < n; j++) {
+        if (job->rows[members[j]].done)
+            continue;   /* done before (a resumed drive): its row and run-K stay */
+        adh_run_spec own, ms = *ds;
+        adh_config_sweep_run(job->cfg, members[j], &own);
+        ms.time.spring = own.time.spring;
+        ms.proto.start = adh_config_start(ds);   /* the curve's, not this k's own automatic one */
+        finished(job, members[j], &ms, run, sres, NULL, status);
     }
 }
 
@@ -241,15 +265,17 @@ static void step_drive(study_job *job, size_t a)
     adh_sweep_drive_spec(job->cfg, u, &ds);
     adh_run run;
     adh_static_result sres;
+    cli_time_out tout;
     adh_run_init(&run);
     memset(&sres, 0, sizeof sres);
+    memset(&tout, 0, sizeof tout);
     if (job->eta) {
         pthread_mutex_lock(&job->lock);
         job->eta[a].state = 1;
         job->eta[a].started = adh_clock_seconds();
         pthread_mutex_unlock(&job->lock);
     }
-    int st = step_cached(job, &ds, &run, &sres, &nodes);
+    int st = step_cached(job, &ds, &run, &sres, &tout, &nodes);
     if (job->eta) {
         pthread_mutex_lock(&job->lock);
         job->eta[a].state = 2;
@@ -257,9 +283,12 @@ static void step_drive(study_job *job, size_t a)
         pthread_mutex_unlock(&job->lock);
     }
     if (!job->shared)
-        finished(job, members[0], &ds, &run, &sres, st);
+        finished(job, members[0], &ds, &run, &sres, &tout, st);
+    else if (ds.mode == ADH_MODE_STATIC)
+        share_springs(job, &ds, &run, &sres, st, n, members);
     else
         share_out(job, &ds, &run, st, n, members, nodes);
+    cli_time_out_free(&tout);
     adh_run_free(&run);
 }
 
@@ -453,7 +482,7 @@ static size_t mark_interrupted(study_job *job)
             snprintf(name, sizeof name, "run-%zu", i + 1);
             adh_outdir *dir = adh_outdir_sub(job->od, name, why, sizeof why);
             cli_runout_said said;
-            int t = dir ? cli_runout_tables(job->cfg, i, &spec, &none, NULL, ADH_SUCCESS, dir, &said) : CLI_EXIT_USAGE;
+            int t = dir ? cli_runout_tables(job->cfg, i, &spec, &none, NULL, NULL, ADH_SUCCESS, dir, &said) : CLI_EXIT_USAGE;
             if (!dir)
                 fprintf(stderr, "adhere: %s\n", why);
             job->exit_status = cli_runout_worse(job->exit_status, t);

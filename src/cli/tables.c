@@ -48,10 +48,14 @@ static void comment_head(FILE *f, const cli_tables *t, const char *what)
 int cli_tables_force(FILE *f, const void *ctx)
 {
     const cli_tables *t = ctx;
-    comment_head(f, t, "force table: one row per drive step; branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading branch");
-    adh_rows_header(f);
+    int timed = t->spec->mode == ADH_MODE_TIME;
+    comment_head(f, t, timed ? "force table in physical time: one row per integrator step; t the time, base the "
+                 "instrument's base (h0 = base + F/k), h0 the sphere's position; branch +1 loading, -1 unloading; "
+                 "path 0 loading, k the k-th unloading branch; iters Newton iterations"
+                 : "force table: one row per drive step; branch +1 loading, -1 unloading; path 0 loading, k the k-th unloading branch");
+    (timed ? adh_rows_header_timed : adh_rows_header)(f);
     for (size_t i = 0; i < t->run->nrows; i++)
-        adh_rows_write(f, &t->run->rows[i]);
+        (timed ? adh_rows_write_timed : adh_rows_write)(f, &t->run->rows[i]);
     return 0;
 }
 
@@ -150,7 +154,9 @@ int cli_tables_summary(FILE *f, const void *ctx)
     }
     fprintf(f, "kernel\t%s\n", adh_kernel_name(c->grid.use.kernel));
     fprintf(f, "operator\t%s\n", adh_kernel_storage_name(c->grid.use.storage));
-    fprintf(f, "mode\t%s\n", c->mode == ADH_MODE_STATIC ? "static" : "relax");
+    fprintf(f, "mode\t%s\n", c->mode == ADH_MODE_STATIC ? "static" : c->mode == ADH_MODE_TIME ? "time" : "relax");
+    if (c->mode == ADH_MODE_TIME)
+        fprintf(f, "material\t%s\n", c->time.sls ? "sls" : "elastic");
     kv(f, "eps", c->relax.eps);
     kv(f, "step", c->proto.step);
     kv(f, "start", r->start);
@@ -169,7 +175,8 @@ int cli_tables_summary(FILE *f, const void *ctx)
         kv(f, "pulloff_F", mt ? mt->pulloff_F : NAN);
         kv(f, "pulloff_h0", mt ? mt->pulloff_h0 : NAN);
         kv(f, "jump_out_h0", mt ? mt->jump_out_h0 : NAN);
-        kv(f, "hysteresis", mt ? adh_cycle_hysteresis(r->rows, r->nrows, mt->path) : NAN);
+        if (c->mode != ADH_MODE_TIME)   /* physical time's is the base's work, integrated (an extra key) */
+            kv(f, "hysteresis", mt ? adh_cycle_hysteresis(r->rows, r->nrows, mt->path) : NAN);
     }
     for (size_t i = 0; i < t->nextra; i++)
         kv(f, t->extra[i].key, t->extra[i].value);

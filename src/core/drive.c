@@ -653,6 +653,7 @@ static int curve_step(adh_drive *d, int *row)
         return finish(d, rc);
     adh_obs o;
     memset(&o, 0, sizeof o);
+    o.t = NAN;   /* no physical time unless the rule has one */
     d->type->observe(d->r, &o);
     run->iterations += o.iters;
     run->seconds += o.seconds;

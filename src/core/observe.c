@@ -100,4 +100,6 @@ void adh_observe(const adh_grid *g, const adh_material *m, const adh_state *s, a
     o->a = adh_contact_radius(g, s->h, m->z0);
     o->angle = adh_contact_angle(g, s->h, o->a);
     o->F_rigid = adh_rigid_force(m, s->h0);
+    o->t = NAN;
+    o->base = s->h0;
 }

@@ -18,12 +18,14 @@ static const struct { const char *sym; double factor; } prefixes[] = {
 static const char *const unit_sym[] = {
     [ADH_Q_NONE] = "", [ADH_Q_LENGTH] = "m", [ADH_Q_PRESSURE] = "Pa",
     [ADH_Q_ENERGY] = "J", [ADH_Q_SPEED] = "m/s", [ADH_Q_FORCE] = "N",
+    [ADH_Q_TIME] = "s", [ADH_Q_STIFFNESS] = "N/m",
 };
 
 static const char *const quantity_name[] = {
     [ADH_Q_NONE] = "a plain number", [ADH_Q_LENGTH] = "a length (m, nm, um, ...)",
     [ADH_Q_PRESSURE] = "a pressure (Pa, MPa, GPa, ...)", [ADH_Q_ENERGY] = "an energy (J, zJ, ...)",
     [ADH_Q_SPEED] = "a speed (m/s, um/s, ...)", [ADH_Q_FORCE] = "a force (N, uN, nN, ...)",
+    [ADH_Q_TIME] = "a time (s, ms, us, ...)", [ADH_Q_STIFFNESS] = "a stiffness (N/m, mN/m, ...)",
 };
 
 const char *adh_quantity_unit(adh_quantity q)
@@ -35,7 +37,7 @@ const char *adh_quantity_unit(adh_quantity q)
  * reported as "a length where a pressure is wanted" rather than as garbage. */
 static int unit_of(const char *suffix, adh_quantity *q, double *factor)
 {
-    for (int k = ADH_Q_LENGTH; k <= ADH_Q_FORCE; k++) {
+    for (int k = ADH_Q_LENGTH; k <= ADH_Q_LAST; k++) {
         size_t ul = strlen(unit_sym[k]), sl = strlen(suffix);
         if (sl < ul || strcmp(suffix + sl - ul, unit_sym[k]) != 0)
             continue;
@@ -180,7 +182,7 @@ void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, si
     /* zero in the prefix its quantity is read in: "0 nm" beside "2.85 nm" */
     static const char *const zero_prefix[] = {
         [ADH_Q_NONE] = "", [ADH_Q_LENGTH] = "n", [ADH_Q_PRESSURE] = "", [ADH_Q_ENERGY] = "",
-        [ADH_Q_SPEED] = "u", [ADH_Q_FORCE] = "n",
+        [ADH_Q_SPEED] = "u", [ADH_Q_FORCE] = "n", [ADH_Q_TIME] = "", [ADH_Q_STIFFNESS] = "",
     };
     if (value == 0) {
         snprintf(buf, len, "0%s%s%s", q == ADH_Q_NONE ? "" : " ", zero_prefix[q], unit_sym[q]);

@@ -24,6 +24,7 @@
 #include "plot/png.h"
 #include "plot/session.h"
 #include "plot/speed.h"
+#include "adhere/units.h"
 #include "plot/tsv.h"
 #include "scene/measured.h"
 
@@ -122,8 +123,16 @@ static void title_string(const plotter *pl, const char *what, char *buf, size_t 
         snprintf(scene, sizeof scene, "%s", title);
     else
         snprintf(scene, sizeof scene, "%.*s scene", (int)(colon - title), title);
-    snprintf(text, sizeof text, "%s%s%s: σ = %.3g, γ = %.3g mJ/m², R = %s, E = %s",
-             scene, scene[0] ? "\n" : "", what, pl->d.sigma, pl->d.gamma * 1e3, r, e);
+    if (isfinite(pl->s->Einf)) {   /* a standard linear solid: sigma is E0's */
+        char ei[32], tau[32];
+        adh_format_modulus(pl->s->Einf, ei, sizeof ei);
+        adh_format_quantity(pl->s->tau, ADH_Q_TIME, 3, tau, sizeof tau);
+        snprintf(text, sizeof text, "%s%s%s: σ0 = %.3g, R = %s, E0 = %s, E∞ = %s, τ = %s",
+                 scene, scene[0] ? "\n" : "", what, pl->d.sigma, r, e, ei, tau);
+    } else {
+        snprintf(text, sizeof text, "%s%s%s: σ = %.3g, γ = %.3g mJ/m², R = %s, E = %s",
+                 scene, scene[0] ? "\n" : "", what, pl->d.sigma, pl->d.gamma * 1e3, r, e);
+    }
     adh_gp_quote(text, buf, len);
 }
 
@@ -760,7 +769,10 @@ static int plot_force(plotter *pl)
     ff.panel = ff.nadh >= 2;
     force_frame(pl, &ff);
     char heading[HEADING_SIZE];
-    title_string(pl, "Force vs position", heading, sizeof heading);
+    char what[64];
+    snprintf(what, sizeof what, pl->s->timed ? "Force vs position at %.3g µm/s" : "Force vs position",
+             pl->s->drive_speed * 1e6);
+    title_string(pl, what, heading, sizeof heading);
 
     begin_figure(pl, "force", "force.png");
     adh_gnuplot_cmd(pl->gp, "Fu = %.17g", ff.fscale);
@@ -1047,6 +1059,32 @@ static int contact_unloads(const int *set, int np)
     return n;
 }
 
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The 5th and 95th percentiles of v's finite values (0, and 0 between
+ * them), in lo and hi; -1 when there are fewer than 20 or no memory. */
+static int speed_bulk(const double *v, size_t n, double *lo, double *hi)
+{
+    double *s = n ? malloc(n * sizeof *s) : NULL;
+    size_t m = 0;
+    for (size_t i = 0; s && i < n; i++)
+        if (isfinite(v[i]))
+            s[m++] = v[i];
+    if (m < 20) {
+        free(s);
+        return -1;
+    }
+    qsort(s, m, sizeof *s, cmp_double);
+    *lo = fmin(0, s[m / 20]);
+    *hi = fmax(0, s[m - 1 - m / 20]);
+    free(s);
+    return 0;
+}
+
 /* One panel's plot command: each path's curves, loading first. -1 out of
  * memory. */
 static int contact_panel(plotter *pl, int panel, const int *set, int np, const char *qdat)
@@ -1184,14 +1222,18 @@ static int plot_contact(plotter *pl)
         goto out;
 
     /* µm/s as in Figure 8, mm/s when a large sphere makes that unwieldy */
-    double vmax = 0;
+    double vmax = 0, vlo = 0, vhi = 0;
     for (size_t i = 0; i < n; i++)
         if (isfinite(smooth[i]))
             vmax = fmax(vmax, fabs(smooth[i]));
+    /* in physical time the speed diverges at each jump (as the drive's
+     * times da/dh0): the scale is the bulk's, the 5th to 95th percentile */
+    if (pl->s->timed && speed_bulk(smooth, n, &vlo, &vhi) == 0)
+        vmax = fmax(fabs(vlo), fabs(vhi));
     int in_mm = vmax >= 2e-3;
     char heading[HEADING_SIZE], what[96];
-    snprintf(what, sizeof what, "Contact line at drive speed %.3g µm/s",
-             pl->s->drive_speed * 1e6);
+    snprintf(what, sizeof what, pl->s->timed ? "Contact line in time, base at %.3g µm/s"
+             : "Contact line at drive speed %.3g µm/s", pl->s->drive_speed * 1e6);
     title_string(pl, what, heading, sizeof heading);
     /* a two-line heading (scene title) needs more room above the panels */
     double top = has_title(pl) ? 0.90 : 0.94;
@@ -1206,6 +1248,15 @@ static int plot_contact(plotter *pl)
         amax = fmax(amax, run->rows[i].a);
     for (int panel = 0; panel < 2; panel++) {
         contact_frame(pl, panel, top, in_mm, keyrows, amax);
+        /* adaptive time steps: a node hop within a short step is a spike
+         * of the step-by-step speed; the scale is the smoothed bulk's, and
+         * the label says what goes off it */
+        if (panel == 0 && pl->s->timed && vhi > vlo) {
+            adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", (vlo - 0.3 * (vhi - vlo)) * (in_mm ? 1e3 : 1e6),
+                            (vhi + 0.3 * (vhi - vlo)) * (in_mm ? 1e3 : 1e6));
+            adh_gnuplot_cmd(pl->gp, "set ylabel \"contact-line speed da/dt (%s)\\n(off the scale at the jumps)\"",
+                            in_mm ? "mm/s" : "µm/s");
+        }
         if (contact_panel(pl, panel, set, np, adh_gp_path(dat, q, sizeof q)) != 0)
             goto out;
     }

@@ -13,5 +13,9 @@
 void adh_rows_header(FILE *f);
 /* One row, every number to round-trip precision (seconds to 6 digits). */
 void adh_rows_write(FILE *f, const adh_obs *o);
+/* The same in physical time (mode time): two columns first, the time t
+ * and the instrument's base position, then the others. */
+void adh_rows_header_timed(FILE *f);
+void adh_rows_write_timed(FILE *f, const adh_obs *o);
 
 #endif

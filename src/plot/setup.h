@@ -22,7 +22,10 @@ typedef struct adh_plot_setup {
     const char *title;             /* the scene's title, "" for none */
     int rigid;                     /* rigid spheres: no JKR, DMT, MD curves (E means nothing) */
     int equilibrium;               /* path 0 is the static equilibrium curve (--mode=static) */
-    double drive_speed;            /* |dh0/dt|, m/s: contact-line speeds */
+    double drive_speed;            /* |dh0/dt|, m/s: contact-line speeds (in physical
+                                      time: the base's retraction speed, for the heading) */
+    int timed;                     /* the rows are in physical time (mode time) */
+    double Einf, tau;              /* a standard linear solid's (mat.E is E0); Einf NAN: elastic */
     double step;                   /* drive step d, m */
     size_t nodes;                  /* the run's grid: N nodes (each profile's length), */
     double dr;                     /* its (finest) spacing, m, */

@@ -14,29 +14,51 @@ static double slope(const adh_obs *x, const adh_obs *y)
     return (y->a - x->a) / dh;
 }
 
+/* Rows in physical time (mode time) carry their time, which a run in time
+ * advances: the speed is then da/dt itself, dwells included. (Rows made
+ * without it, zeroed, have t = 0 throughout.) */
+static int timed(const adh_run *run)
+{
+    return run->nrows > 1 && isfinite(run->rows[0].t) && run->rows[run->nrows - 1].t > run->rows[0].t;
+}
+
+/* da/dt between two rows of a timed run, NAN out of contact. */
+static double rate(const adh_obs *x, const adh_obs *y)
+{
+    double dt = y->t - x->t;
+    if (!(x->a > 0) || !(y->a > 0) || !(fabs(dt) > 0))
+        return NAN;
+    return (y->a - x->a) / dt;
+}
+
+/* The central difference at row i over its neighbours on the path, one-sided
+ * at the ends of a contact. */
+static double difference(const adh_run *run, size_t i, double (*d)(const adh_obs *, const adh_obs *))
+{
+    const adh_obs *o = &run->rows[i];
+    long p = adh_run_prev_on_path(run, i), n = adh_run_next_on_path(run, i);
+    if (!(o->a > 0))
+        return NAN;
+    double back = p >= 0 ? d(&run->rows[p], o) : NAN;
+    double fwd = n >= 0 ? d(o, &run->rows[n]) : NAN;
+    if (!isnan(back) && !isnan(fwd)) {
+        /* the central difference over both neighbours, second order
+         * on a uniform drive and still exact on a non-uniform one */
+        double c = d(&run->rows[p], &run->rows[n]);
+        return isnan(c) ? 0.5 * (back + fwd) : c;
+    }
+    return !isnan(fwd) ? fwd : back;
+}
+
 void adh_speed_stepwise(const adh_run *run, double drive_speed, double *dadh0, double *dadt)
 {
+    int t = timed(run);
     for (size_t i = 0; i < run->nrows; i++) {
         const adh_obs *o = &run->rows[i];
-        long p = adh_run_prev_on_path(run, i), n = adh_run_next_on_path(run, i);
-        double d = NAN;
-        if (o->a > 0) {
-            double back = p >= 0 ? slope(&run->rows[p], o) : NAN;
-            double fwd = n >= 0 ? slope(o, &run->rows[n]) : NAN;
-            if (!isnan(back) && !isnan(fwd) && p >= 0 && n >= 0) {
-                /* the central difference over both neighbours, second order
-                 * on a uniform drive and still exact on a non-uniform one */
-                d = slope(&run->rows[p], &run->rows[n]);
-                if (isnan(d))
-                    d = 0.5 * (back + fwd);
-            } else {
-                d = !isnan(fwd) ? fwd : back;
-            }
-        }
-        dadh0[i] = d;
+        dadh0[i] = difference(run, i, slope);
         /* loading drives h0 down (dh0/dt = -v), unloading up (+v) */
         double dh0dt = (o->branch > 0 ? -1.0 : 1.0) * drive_speed;
-        dadt[i] = d * dh0dt;
+        dadt[i] = t ? difference(run, i, rate) : dadh0[i] * dh0dt;
     }
 }
 
@@ -48,13 +70,17 @@ void adh_speed_smoothed(const adh_run *run, double drive_speed, double dr, doubl
         if (!(o->a > 0))
             continue;
         long lo = (long)i, hi = (long)i;
+        int t = timed(run);
         for (int k = 0; k < 50; k++) {
             long p = adh_run_prev_on_path(run, (size_t)lo);
             long n = adh_run_next_on_path(run, (size_t)hi);
-            if (p < 0 || n < 0 || !(run->rows[p].a > 0) || !(run->rows[n].a > 0))
+            int pin = p >= 0 && run->rows[p].a > 0, nin = n >= 0 && run->rows[n].a > 0;
+            /* in physical time the steps shrink to nothing at events: a
+             * window at the end of a contact grows on its one side */
+            if (!(pin && nin) && !(t && (pin || nin)))
                 break;
-            lo = p;
-            hi = n;
+            lo = pin ? p : lo;
+            hi = nin ? n : hi;
             if (fabs(run->rows[hi].a - run->rows[lo].a) >= cells * dr)
                 break;
         }
@@ -72,7 +98,7 @@ void adh_speed_smoothed(const adh_run *run, double drive_speed, double dr, doubl
          * so their difference alone would overstate the mean */
         double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
         for (long j = lo; j >= 0; j = (j == hi) ? -1 : adh_run_next_on_path(run, (size_t)j)) {
-            double x = run->rows[j].h0 - o->h0, y = run->rows[j].a;
+            double x = t ? run->rows[j].t - o->t : run->rows[j].h0 - o->h0, y = run->rows[j].a;
             sx += x;
             sy += y;
             sxx += x * x;
@@ -82,7 +108,7 @@ void adh_speed_smoothed(const adh_run *run, double drive_speed, double dr, doubl
         double den = m * sxx - sx * sx;
         if (!(fabs(den) > 0))
             continue;
-        double dh0dt = (o->branch > 0 ? -1.0 : 1.0) * drive_speed;
+        double dh0dt = t ? 1.0 : (o->branch > 0 ? -1.0 : 1.0) * drive_speed;
         dadt[i] = (m * sxy - sx * sy) / den * dh0dt;
     }
 }

@@ -15,8 +15,9 @@
  * unloading, so da/dt = -branch * drive_speed * da/dh0 (positive while the
  * contact spreads). Differences are taken along each row's own path, central
  * where both neighbours are in contact, one-sided at the ends of a contact;
- * NAN out of contact and where h0 does not change (a dwell). Arrays of
- * run->nrows. */
+ * NAN out of contact and where h0 does not change (a dwell). Rows in
+ * physical time (a finite t) give da/dt by differences in t, dwells
+ * included. Arrays of run->nrows. */
 void adh_speed_stepwise(const adh_run *run, double drive_speed, double *dadh0, double *dadt);
 
 /* The contact-line speed from the least-squares slope da/dh0 over the
@@ -24,7 +25,8 @@ void adh_speed_stepwise(const adh_run *run, double drive_speed, double *dadh0, d
  * spacings dr (a symmetric window of rows in contact on the row's path, at
  * most 50 each side). The line sticks at a node and slips to the next, so
  * step-by-step speeds oscillate with the grid; this is the speed the paper
- * reads off (its "steady 20 um/s"). NAN where the row is out of contact. */
+ * reads off (its "steady 20 um/s"). NAN where the row is out of contact.
+ * Rows in physical time: the slope of a against t over the window. */
 void adh_speed_smoothed(const adh_run *run, double drive_speed, double dr, double cells, double *dadt);
 
 #endif

@@ -71,9 +71,13 @@ static int contact_table(FILE *f, const void *vctx)
     adh_tsv_preamble(f, s, "contact radius and contact-line speed");
     fprintf(f, "# in contact where the gap is below %.2g z0; a = 0 out of contact\n",
             ADH_CONTACT_FACTOR);
-    fprintf(f, "# drive speed |dh0/dt| = %.17g m/s (h0 falls on loading, rises on "
-               "unloading); da_dt = da/dh0 * dh0/dt, positive while the contact spreads, "
-               "nan out of contact\n", s->drive_speed);
+    if (s->timed)
+        fprintf(f, "# physical time: da_dt the central difference in t, positive while the contact spreads, "
+                   "nan out of contact (the base moves at %.17g m/s when retracting)\n", s->drive_speed);
+    else
+        fprintf(f, "# drive speed |dh0/dt| = %.17g m/s (h0 falls on loading, rises on "
+                   "unloading); da_dt = da/dh0 * dh0/dt, positive while the contact spreads, "
+                   "nan out of contact\n", s->drive_speed);
     fprintf(f, "# da_dt_smooth: least-squares slope over the steps in which the contact line crosses "
                "%g grid spacings (it sticks and slips node by node)\n", ADH_SPEED_CELLS);
     if (s->equilibrium)

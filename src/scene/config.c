@@ -7,6 +7,7 @@
 #include "adhere/grid.h"
 #include "adhere/models.h"
 #include "adhere/status.h"
+#include "adhere/visco.h"
 
 void adh_config_default(adh_config *c)
 {
@@ -20,6 +21,7 @@ void adh_config_default(adh_config *c)
     s->grid.asked = (adh_grid_spec){ .nodes = 1000, .spacing = NAN, .graded = 0, .fine_band = NAN, .growth = 1.05,
                                      .radius = NAN, .kernel = ADH_KERNEL_PAPER, .storage = ADH_STORAGE_DENSE };
     s->grid.use = s->grid.asked;
+    s->time = adh_time_settings_default();
     c->output.plot = 1;
     c->output.plots = ADH_PLOT_ALL;
     c->output.drive_speed = 1e-6;
@@ -31,7 +33,12 @@ void adh_config_default(adh_config *c)
 
 double adh_config_start(const adh_run_spec *s)
 {
-    return isnan(s->proto.start) ? adh_protocol_auto_start(&s->mat, s->proto.step) : s->proto.start;
+    if (!isnan(s->proto.start))
+        return s->proto.start;
+    /* a static curve under a spring starts outside its snap-in */
+    if (s->mode == ADH_MODE_STATIC && isfinite(s->time.spring))
+        return adh_visco_auto_start(&s->mat, s->time.spring, s->proto.step);
+    return adh_protocol_auto_start(&s->mat, s->proto.step);
 }
 
 /* Up to max profile positions spread from the deepest turn (without turns:
@@ -71,7 +78,7 @@ adh_protocol_settings adh_config_protocol_for(const adh_config *c, adh_mode mode
     adh_protocol_settings ps = c->spec.proto;
     /* a profile figure with no positions asked gets a spread of them, so
      * that the plan and the run agree on what is stored */
-    if ((c->output.plots & ADH_PLOT_PROFILE) && ps.nprofiles == 0 && mode == ADH_MODE_RELAX)
+    if ((c->output.plots & ADH_PLOT_PROFILE) && ps.nprofiles == 0 && (mode == ADH_MODE_RELAX || mode == ADH_MODE_TIME))
         ps.nprofiles = adh_config_default_profiles(&c->spec.mat, &ps, ps.profiles, 6);
     return ps;
 }
@@ -83,7 +90,8 @@ adh_protocol_settings adh_config_protocol(const adh_config *c)
 
 adh_grid_use adh_config_grid_use(const adh_run_spec *s)
 {
-    return s->mode == ADH_MODE_STATIC ? ADH_GRID_STATIC : ADH_GRID_RELAX;
+    /* physical time crosses its folds as the static curve does */
+    return s->mode == ADH_MODE_STATIC || s->mode == ADH_MODE_TIME ? ADH_GRID_STATIC : ADH_GRID_RELAX;
 }
 
 /* The choice for the softest run: N and the spacing, and graded rings with

@@ -24,8 +24,10 @@
 #define PATH_MAX 4096
 #endif
 
-/* RIGID: eq 22 at the drive positions, no kernel and no elastic solve. */
-typedef enum adh_mode { ADH_MODE_RELAX = 0, ADH_MODE_STATIC = 1, ADH_MODE_RIGID = 2 } adh_mode;
+/* RIGID: eq 22 at the drive positions, no kernel and no elastic solve.
+ * TIME: physical time (adhere/visco.h), a standard linear solid or an
+ * elastic sphere driven at a speed through the instrument's spring. */
+typedef enum adh_mode { ADH_MODE_RELAX = 0, ADH_MODE_STATIC = 1, ADH_MODE_RIGID = 2, ADH_MODE_TIME = 3 } adh_mode;
 
 /* Combined figures of a sweep, drawn from every run at once. */
 typedef enum adh_sweep_plot {
@@ -34,7 +36,10 @@ typedef enum adh_sweep_plot {
     ADH_SWEEP_PLOT_JUMP,       /* Figure 3: jump separation vs sigma against eq 24 (jump.png) */
     ADH_SWEEP_PLOT_FORCE,      /* Figure 7: every run's force curve and the JKR curve (force.png) */
     ADH_SWEEP_PLOT_MAP,        /* a heat map of one column over the first two parameters (map.png) */
-    ADH_SWEEP_PLOT_CURVES      /* one column against the last parameter, a curve per value of the others (curves.png) */
+    ADH_SWEEP_PLOT_CURVES,     /* one column against the last parameter, a curve per value of the others (curves.png) */
+    ADH_SWEEP_PLOT_SPEED,      /* physical time: pull-off and hysteresis against the swept speed,
+                                  the static pull-offs at E0 and Einf as lines (speed.png) */
+    ADH_SWEEP_PLOT_SNAP        /* the spring: snap-in against k (snap.png) */
 } adh_sweep_plot;
 
 /* A study: each swept key takes a list of values or a range, and the runs
@@ -98,6 +103,22 @@ typedef struct adh_grid_settings {
     int force;                     /* run a grid coarser than the resolved limit (marked resolved 0) */
 } adh_grid_settings;
 
+/* Physical time (mode time) and the instrument: the material beyond
+ * adh_material (whose E is the relaxed modulus E0) and the drive. */
+typedef struct adh_time_settings {
+    int sls;                       /* material = sls: a standard linear solid (else elastic) */
+    double Einf;                   /* instantaneous modulus, Pa; NAN = 10 E0 */
+    double tau;                    /* relaxation time, s */
+    double speed_in, speed_out;    /* the base's speed approaching and retracting, m/s */
+    double dwell;                  /* held at each turn, s */
+    double spring;                 /* instrument stiffness k, N/m; INFINITY = none */
+    unsigned given;                /* ADH_TIME_* bits: keys set, which a mode that
+                                      cannot use them refuses */
+} adh_time_settings;
+
+enum { ADH_TIME_E0 = 1, ADH_TIME_EINF = 2, ADH_TIME_TAU = 4, ADH_TIME_SPEED = 8, ADH_TIME_DWELL = 16,
+       ADH_TIME_SPRING = 32, ADH_TIME_MODE = 64 /* scene.mode was set: material = sls does not choose it */ };
+
 /* What the core is asked to compute: one run. */
 typedef struct adh_run_spec {
     adh_material mat;
@@ -105,6 +126,7 @@ typedef struct adh_run_spec {
     adh_protocol_settings proto;   /* start, step, turns, unload, dwell, profiles */
     adh_mode mode;
     adh_grid_settings grid;
+    adh_time_settings time;        /* mode time's material and drive; the spring also static's */
 } adh_run_spec;
 
 /* What the drivers write, and where. */
@@ -201,7 +223,8 @@ const adh_config_key *adh_config_key_at(size_t i);
 const char *adh_config_key_unit(const adh_config_key *k, double value, double *factor);
 
 /* Edit distance of two names, letters compared without case ("Turn" and
- * "turns": 1): for "did you mean". */
+ * "turns": 1), two neighbours swapped one edit ("trun" and "turn": 1): for
+ * "did you mean". */
 size_t adh_config_name_distance(const char *a, const char *b);
 /* The key a scene's unknown name in section most likely meant: a scene
  * key in that section within a small edit distance, else the same name in
@@ -294,6 +317,31 @@ int adh_config_grid(adh_config *c, char *why, size_t whylen, unsigned *fix);
  * points and folds (docs/performance.md). */
 adh_kernel_storage adh_config_storage_for(const adh_run_spec *s, adh_mode mode);
 
+/* ---- physical time (timespec.c) ----------------------------------------- */
+
+struct adh_visco_rule_settings;
+
+/* Elastic, Einf = 10 E0 when made a solid, tau = 1 ms, 1 um/s both ways,
+ * no dwell, no spring. */
+adh_time_settings adh_time_settings_default(void);
+/* The instantaneous modulus of run s: Einf, or 10 E0 when automatic; E0
+ * (the material's E) for an elastic material. */
+double adh_config_einf(const adh_run_spec *s);
+/* The viscoelastic step rule's settings of run s (adhere/rule_visco.h):
+ * the solid (or the elastic material at E), the drive, the integrator
+ * polling s's cancel flag. */
+void adh_config_visco(const adh_run_spec *s, struct adh_visco_rule_settings *out);
+/* 0, or -1 with a sentence naming the keys, when run s's material, drive
+ * and mode do not fit: a solid outside mode time, a solid's key or the
+ * drive's for an elastic material or a mode without physical time, the
+ * spring in relaxation or for rigid spheres, an iteration dwell in
+ * physical time, Einf below E0. */
+int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why, size_t whylen);
+/* 0, or -1 with a sentence, when c's study does not fit physical time: plot
+ * = speed without one speed swept in time, plot = snap without one spring
+ * swept, eps swept in time. */
+int adh_config_time_sweep_check(const adh_config *c, char *why, size_t whylen);
+
 /* ---- sweeps (sweep.c) ----------------------------------------------------- */
 
 /* Sets the swept key `name` ("E", "material.E", "sigma", "turns") from
@@ -347,7 +395,9 @@ size_t adh_config_nruns(const adh_config *c);
 /* Drives: what is stepped. Runs that differ only in their turn (a swept
  * turns key, in relaxation) share one drive, as Figure 5's turns do: one
  * loading branch to the deepest, an unloading branch from each turn (up to
- * ADH_MAX_TURNS a drive); every other run is a drive of its own. The
+ * ADH_MAX_TURNS a drive); runs that differ only in their spring (mode
+ * static) share one static curve, from the softest spring's start; every
+ * other run is a drive of its own. The
  * number of drives; drive u's runs (ascending, at most ADH_MAX_TURNS) and
  * their number. */
 size_t adh_sweep_drives(const adh_config *c);

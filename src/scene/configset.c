@@ -14,6 +14,7 @@
 #include "adhere/grid.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "adhere/visco.h"
 
 typedef struct key_def key_def;
 typedef int (*key_setter)(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen);
@@ -182,10 +183,13 @@ typedef struct word {
     int value;
 } word;
 
-static const word modes[] = { { "relax", ADH_MODE_RELAX }, { "static", ADH_MODE_STATIC }, { "rigid", ADH_MODE_RIGID }, { NULL, 0 } };
+static const word modes[] = { { "relax", ADH_MODE_RELAX }, { "static", ADH_MODE_STATIC }, { "rigid", ADH_MODE_RIGID },
+                              { "time", ADH_MODE_TIME }, { NULL, 0 } };
+static const word materials[] = { { "elastic", 0 }, { "sls", 1 }, { NULL, 0 } };
 static const word grids[] = { { "uniform", 0 }, { "graded", 1 }, { NULL, 0 } };
 static const word sweep_plots[] = { { "jump", ADH_SWEEP_PLOT_JUMP }, { "force", ADH_SWEEP_PLOT_FORCE },
                                     { "map", ADH_SWEEP_PLOT_MAP }, { "curves", ADH_SWEEP_PLOT_CURVES },
+                                    { "speed", ADH_SWEEP_PLOT_SPEED }, { "snap", ADH_SWEEP_PLOT_SNAP },
                                     { "none", ADH_SWEEP_PLOT_NONE }, { "auto", ADH_SWEEP_PLOT_AUTO }, { NULL, 0 } };
 static const word run_dirs[] = { { "yes", 1 }, { "no", 0 }, { "auto", -1 }, { NULL, 0 } };
 
@@ -242,6 +246,7 @@ static int set_mode(adh_config *c, const key_def *k, const char *text, char *why
     if (parse_word(modes, "mode", text, &v, why, whylen) != 0)
         return -1;
     c->spec.mode = (adh_mode)v;
+    c->spec.time.given |= ADH_TIME_MODE;   /* kept whatever the material: adh_config_time_check refuses a mismatch */
     return 0;
 }
 
@@ -450,6 +455,90 @@ static int set_size(adh_config *c, const key_def *k, const char *text, char *why
     return 0;
 }
 
+/* ---- physical time (mode time) ------------------------------------------ */
+
+/* The material: a standard linear solid runs in physical time, unless the
+ * mode was given (adh_config_time_check then says whether they fit). */
+static int set_material_kind(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    int v;
+    if (parse_word(materials, "material", text, &v, why, whylen) != 0)
+        return -1;
+    c->spec.time.sls = v;
+    if (!v)   /* elastic over a solid (a flag over a scene's): its keys go with it */
+        c->spec.time.given &= ~(unsigned)(ADH_TIME_E0 | ADH_TIME_EINF | ADH_TIME_TAU);
+    /* elastic leaves physical time unless its drive was given (a speed,
+     * a dwell in seconds, a spring): then it is an elastic sphere in time */
+    unsigned drive = c->spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);
+    if (!(c->spec.time.given & ADH_TIME_MODE))
+        c->spec.mode = v || (drive && c->spec.mode == ADH_MODE_TIME) ? ADH_MODE_TIME
+                     : c->spec.mode == ADH_MODE_TIME ? ADH_MODE_RELAX : c->spec.mode;
+    return 0;
+}
+
+/* One value of the solid or the drive, checked by the core's own limits
+ * (adh_sls_validate, adh_visco_drive_validate) with the others at values
+ * they allow; how it fits the others is adh_config_time_check's. */
+static int time_value_ok(const char *name, double v, char *why, size_t whylen)
+{
+    adh_sls m = { 1e9, 1e9, 1 };
+    adh_visco_drive d = adh_visco_drive_default();
+    if (!strcmp(name, "E0"))
+        m.E0 = m.Einf = v;
+    else if (!strcmp(name, "Einf"))
+        m.E0 = m.Einf = v;
+    else if (!strcmp(name, "tau"))
+        m.tau = v;
+    else if (!strcmp(name, "dwell_time"))
+        d.dwell = v;
+    else if (!strcmp(name, "spring"))
+        d.spring = v;
+    else if (!strcmp(name, "speed_out"))
+        d.speed_out = v;
+    else
+        d.speed_in = v;
+    return adh_sls_validate(&m, why, whylen) == ADH_SUCCESS && adh_visco_drive_validate(&d, why, whylen) == ADH_SUCCESS;
+}
+
+static unsigned time_bit(const char *name)
+{
+    return !strcmp(name, "E0") ? ADH_TIME_E0 : !strcmp(name, "Einf") ? ADH_TIME_EINF : !strcmp(name, "tau") ? ADH_TIME_TAU
+         : !strcmp(name, "dwell_time") ? ADH_TIME_DWELL : !strcmp(name, "spring") ? ADH_TIME_SPRING : ADH_TIME_SPEED;
+}
+
+/* E0 (the material's E under its solid's name), Einf (or auto), tau,
+ * dwell_time and spring (or none). */
+static int set_time_quantity(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    const char *name = name_of(k);
+    double v;
+    if (!strcmp(name, "Einf") && strcasecmp(text, "auto") == 0)
+        v = NAN;
+    else if (!strcmp(name, "spring") && strcasecmp(text, "none") == 0)
+        v = INFINITY;
+    else if (adh_parse_quantity(text, k->pub.q, &v, why, whylen) != 0 || !time_value_ok(name, v, why, whylen))
+        return -1;
+    *dbl(c, k) = v;
+    c->spec.time.given |= time_bit(name);
+    return 0;
+}
+
+/* speed = V (both ways) or Vin, Vout. */
+static int set_speed(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    double v[2];
+    size_t n;
+    if (parse_list(text, ADH_Q_SPEED, 0, v, 2, &n, why, whylen) != 0)
+        return -1;
+    for (size_t i = 0; i < n; i++)
+        if (!time_value_ok(i ? "speed_out" : "speed_in", v[i], why, whylen))
+            return -1;
+    c->spec.time.speed_in = v[0];
+    c->spec.time.speed_out = v[n - 1];
+    c->spec.time.given |= ADH_TIME_SPEED;
+    return 0;
+}
+
 
 /* ---- the values as text --------------------------------------------------- */
 
@@ -602,6 +691,28 @@ static void get_size(const adh_config *c, const key_def *k, char *buf, size_t le
     snprintf(buf, len, "%dx%d", c->tui.cols, c->tui.rows);
 }
 
+
+static void get_material_kind(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", word_name(materials, c->spec.time.sls));
+}
+
+static void get_time_quantity(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    double v = *(const double *)field(c, k);
+    if (isinf(v))
+        snprintf(buf, len, "none");
+    else
+        get_quantity(c, k, buf, len);
+}
+
+static void get_speed(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    const adh_time_settings *t = &c->spec.time;
+    double v[2] = { t->speed_in, t->speed_out };
+    get_list(v, t->speed_in == t->speed_out ? 1 : 2, buf, len);
+}
+
 /* ---- the table ------------------------------------------------------------ */
 
 enum { S = ADH_KEY_SCENE, R = ADH_KEY_RUN, C = ADH_KEY_COUNT };
@@ -615,7 +726,11 @@ static const key_def keys[] = {
     { { "material.A", S | R, ADH_Q_ENERGY, NULL }, set_quantity, F(spec.mat.A), get_quantity },
     { { "material.z0", S | R, ADH_Q_LENGTH, "nm" }, set_quantity, F(spec.mat.z0), get_quantity },
     { { "material.R", S | R, ADH_Q_LENGTH, "mm um" }, set_quantity, F(spec.mat.R), get_quantity },
-    { { "grid.nodes", S | R | C, ADH_Q_NONE, NULL }, set_nodes, 0, get_nodes },
+    { { "material.material", S | R, ADH_Q_NONE, NULL }, set_material_kind, 0, get_material_kind },
+    { { "material.E0", S | R, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_time_quantity, F(spec.mat.E), get_quantity },
+    { { "material.Einf", S | R, ADH_Q_PRESSURE, "GPa MPa kPa" }, set_time_quantity, F(spec.time.Einf), get_quantity },
+    { { "material.tau", S | R, ADH_Q_TIME, NULL }, set_time_quantity, F(spec.time.tau), get_quantity },
+        { { "grid.nodes", S | R | C, ADH_Q_NONE, NULL }, set_nodes, 0, get_nodes },
     { { "grid.spacing", S | R, ADH_Q_LENGTH, "nm" }, set_quantity_auto, F(spec.grid.asked.spacing), get_quantity },
     { { "grid.kernel", S | R, ADH_Q_NONE, NULL }, set_kernel, 0, get_kernel },
     { { "grid.grid", S | R, ADH_Q_NONE, NULL }, set_grid_kind, 0, get_grid_kind },
@@ -633,6 +748,10 @@ static const key_def keys[] = {
     { { "protocol.turns", S | R, ADH_Q_LENGTH, "nm" }, set_turns, 0, get_turns },
     { { "protocol.dwell", S | R | C, ADH_Q_NONE, NULL }, set_dwell, 0, get_dwell },
     { { "protocol.unload", S | R, ADH_Q_NONE, NULL }, set_bool, F(spec.proto.unload), get_bool },
+    { { "protocol.speed", S | R, ADH_Q_SPEED, NULL }, set_speed, 0, get_speed },
+    { { "protocol.speed_out", S | R, ADH_Q_SPEED, NULL }, set_time_quantity, F(spec.time.speed_out), get_quantity },
+    { { "protocol.dwell_time", S | R, ADH_Q_TIME, NULL }, set_time_quantity, F(spec.time.dwell), get_quantity },
+    { { "protocol.spring", S | R, ADH_Q_STIFFNESS, NULL }, set_time_quantity, F(spec.time.spring), get_time_quantity },
     { { "output.plots", S, ADH_Q_NONE, NULL }, set_plots, 0, get_plots },
     { { "output.profiles", S | R, ADH_Q_LENGTH, "nm" }, set_profiles, 0, get_profiles },
     { { "output.drive_speed", S, ADH_Q_SPEED, "um/s" }, set_quantity, F(output.drive_speed), get_quantity },
@@ -659,7 +778,7 @@ static const key_def keys[] = {
 
 /* Any other key in [sweep] sweeps the key it names (sweep.c): one entry
  * stands for them all. */
-static const key_def any_swept = { { "sweep.KEY", S, ADH_Q_NONE }, NULL, 0, NULL };
+static const key_def any_swept = { { "sweep.KEY", S, ADH_Q_NONE, NULL }, NULL, 0, NULL };
 
 static const key_def *find(const char *key)
 {

@@ -188,9 +188,13 @@ static void plan_profiles(const adh_run_spec *run, adh_plan *p)
 /* A study's own files: the table, its figure, the shard's records. */
 static void plan_study_files(const adh_config *cfg, adh_plan *p)
 {
-    note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the swept values, every summary number (E, sigma, eps, "
-         "jump_in_h0, h_before, h_star, max_load, pulloff_F, jump_out_h0, iterations, seconds, jumped, hysteresis, ...) "
-         "and its status");
+    if (p->time_mode)
+        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the swept values, every summary number (the solid "
+             "and the drive, jumps, pull-off and their times and bases, hysteresis, dissipated, time, ...) and its status");
+    else
+        note(p->stored, &p->nstored, "sweep.tsv", "one row per run: the swept values, every summary number (E, sigma, eps, "
+             "jump_in_h0, h_before, h_star, max_load, pulloff_F, jump_out_h0, iterations, seconds, jumped, hysteresis, ...%s) "
+             "and its status", p->static_mode && adh_sweep_axis_of(&cfg->sweep, "protocol.spring") ? ", the snap points" : "");
     note(p->stored, &p->nstored, "study.tsv, runs.tsv", "the study's fingerprint and each run's row as it ends: a rerun "
          "skips the runs done, adhere merge joins shards");
     int plot = cfg->output.plot ? adh_sweep_plot_kind(&cfg->sweep) : ADH_SWEEP_PLOT_NONE;
@@ -207,6 +211,12 @@ static void plan_study_files(const adh_config *cfg, adh_plan *p)
     if (plot == ADH_SWEEP_PLOT_CURVES)
         note(p->stored, &p->nstored, "curves.png", "%s against %s, a curve for each value of the other keys",
              cfg->sweep.map[0] ? cfg->sweep.map : "pulloff_F", cfg->sweep.axis[cfg->sweep.naxes - 1].name);
+    if (plot == ADH_SWEEP_PLOT_SPEED)
+        note(p->stored, &p->nstored, "speed.png", "pull-off and hysteresis against the speed, log axis; the static "
+             "pull-offs at E0 and Einf as lines (two static curves more)");
+    if (plot == ADH_SWEEP_PLOT_SNAP)
+        note(p->stored, &p->nstored, "snap.png", "the snap-in distance (base and sphere) against the spring, log "
+             "axes, with rigid spheres' (eq 22)");
 }
 
 /* About how much the study writes: each run's row twice (runs.tsv and
@@ -238,6 +248,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     p->jobs = adh_plan_jobs(cfg);
     p->elastic = s0->mode != ADH_MODE_RIGID;
     p->static_mode = s0->mode == ADH_MODE_STATIC;
+    p->time_mode = s0->mode == ADH_MODE_TIME;
     p->loading_branches = 1;
     p->stop_at_contact = p->elastic && s0->proto.nturns == 0;
     p->snapshots = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
@@ -298,7 +309,11 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
         note(p->skipped, &p->nskipped, "plots of each run", "plots = none");
     if (cfg->sweep.plot > 0 && !cfg->sweep.naxes)
         note(p->skipped, &p->nskipped, "sweep plot", "no swept parameter in [sweep]");
-    if (p->drives < p->nruns)
+    if (p->drives < p->nruns && p->static_mode)
+        note(p->skipped, &p->nskipped, "a curve per k", "the %zu runs that differ only in their spring share %zu static "
+             "curve%s (the spring does not change the curve), from the softest spring's start; each k's snap points are "
+             "read off it", p->nruns, p->drives, p->drives == 1 ? "" : "s");
+    else if (p->drives < p->nruns)
         note(p->skipped, &p->nskipped, "loading per turn", "the %zu runs that differ only in their turn share %zu loading branches: "
              "each drive unloads from every turn of its runs (up to %d)", p->nruns, p->drives, ADH_MAX_TURNS);
     if (cfg->sweep.naxes && !p->run_dirs)
@@ -306,14 +321,27 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
              "are not written (run_dirs = yes, --run-dirs=yes writes them)", p->nruns);
     if (p->static_mode)
         note(p->skipped, &p->nskipped, "relaxation", "mode = static: the equilibrium curve is followed by continuation, no eps steps");
+    if (p->time_mode)
+        note(p->skipped, &p->nskipped, "relaxation", "mode = time: the path is integrated in physical time, no eps steps; "
+             "rows fall where the integrator's tolerance puts them, not on the drive step d");
 
     /* what is stored */
     const char *prefix = cfg->sweep.naxes ? "run-K/" : "";
     char what[64];
     snprintf(what, sizeof what, "%sforce.tsv", prefix);
-    note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
+    if (p->time_mode)
+        note(p->stored, &p->nstored, what, "one row per integrator step: t, base, h0, F, delta, hc, a, angle, Newton iterations, F_rigid (eq 22)");
+    else
+        note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
+    if (p->time_mode) {
+        snprintf(what, sizeof what, "%sevents.tsv", prefix);
+        note(p->stored, &p->nstored, what, "jumps, contact, pull-off, turns located in time: t, base, h0, F, a before and after");
+    }
     snprintf(what, sizeof what, "%ssummary.tsv", prefix);
-    note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, hysteresis, total iterations and seconds");
+    if (p->time_mode)   /* cli/timerun.c's keys besides the run's */
+        note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, the solid and the drive, hysteresis, dissipated, jump_loss, stored_change, the times and bases of the jumps and the pull-off, time, the integrator's steps and iterations");
+    else
+        note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, hysteresis, total iterations and seconds");
     if (p->unloading_branches || (p->elastic && s0->proto.nturns)) {
         snprintf(what, sizeof what, "%sturns.tsv", prefix);
         note(p->stored, &p->nstored, what, "one row per turning point: maximum load, contact radius, pull-off, jump-out, hysteresis (adhesion vs load)");
@@ -404,6 +432,8 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         fprintf(f, "mode: rigid (eq 22 only)\n");
     else if (p->static_mode)
         fprintf(f, "mode: static (equilibrium continuation)\n");
+    else if (p->time_mode)
+        adh_plan_time_print(f, cfg);
     else {
         adh_format_quantity(cfg->spec.relax.eps, ADH_Q_LENGTH, 3, a, sizeof a);
         fprintf(f, "mode: relax (the paper's relaxation, eps = %s%s)\n", a,
@@ -442,9 +472,13 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     const adh_plan_run *r0 = &p->runs[0];
     fmt_len(r0->start, a, sizeof a);
     fmt_len(r0->end, b, sizeof b);
-    fprintf(f, "loading branches: %zu%s (from %s to %s%s, %s%zu steps)\n", p->loading_branches,
-            p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "about " : "", b,
-            p->stop_at_contact ? "ends at the jump into contact, about " : "", r0->loading_steps);
+    if (p->time_mode)   /* the integrator's steps, not the drive's */
+        fprintf(f, "loading branches: %zu%s (the base from %s to %s%s)\n", p->loading_branches,
+                p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "the jump into contact, about " : "", b);
+    else
+        fprintf(f, "loading branches: %zu%s (from %s to %s%s, %s%zu steps)\n", p->loading_branches,
+                p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "about " : "", b,
+                p->stop_at_contact ? "ends at the jump into contact, about " : "", r0->loading_steps);
     if (p->elastic && cfg->spec.proto.nturns) {
         fprintf(f, "turning points: %zu (", cfg->spec.proto.nturns);
         list_lengths(f, cfg->spec.proto.turns, cfg->spec.proto.nturns);
@@ -454,12 +488,14 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     }
     fprintf(f, "snapshots: %zu%s\n", p->snapshots, p->snapshots ? " (the state at each turn, where its unloading starts)" : "");
     fprintf(f, "unloading branches: %zu%s", p->unloading_branches, p->nruns > 1 && p->unloading_branches ? " per run" : "");
-    if (p->unloading_branches)
+    if (p->unloading_branches && p->time_mode)
+        fprintf(f, " (each from its turn, after the dwell, until the base is back at the start and the surfaces are apart, up to the model's reach 0.02 R)");
+    else if (p->unloading_branches)
         fprintf(f, " (each from its turn until the surfaces jump apart: %zu steps in all back to the start, more if they still touch there, up to the model's reach 0.02 R)", r0->unloading_steps);
     fputc('\n', f);
-    if (p->unloading_branches)
+    if (p->unloading_branches && !p->time_mode)
         fprintf(f, "dwell: %zu iterations at each turn before unloading\n", cfg->spec.proto.dwell);
-    if (p->elastic) {
+    if (p->elastic && !p->time_mode) {
         adh_format_quantity(cfg->output.drive_speed, ADH_Q_SPEED, 3, a, sizeof a);
         fprintf(f, "drive speed: %s (turns d a / d h0 into contact-line speeds)\n", a);
     }
@@ -467,16 +503,23 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         const adh_plan_run *r = &p->runs[i];
         fmt_len(r->start, a, sizeof a);
         fmt_len(r->end, b, sizeof b);
-        fprintf(f, "run %zu: E = %s, sigma = %.4g, eps = %s: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
-                i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
-                p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
+        if (p->time_mode)   /* no eps, no drive steps: the integrator's */
+            fprintf(f, "run %zu: E = %s, sigma = %.4g: the base from %s to %s%s\n", i + 1,
+                    adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, a, p->stop_at_contact ? "about " : "", b);
+        else
+            fprintf(f, "run %zu: E = %s, sigma = %.4g, eps = %s: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
+                    i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
+                    p->stop_at_contact ? "about " : "", b, r->loading_steps, r->unloading_steps);
     }
     if (p->nruns > ADH_PLAN_MAX_RUNS)
         fprintf(f, "runs %d ... %zu: as the sweep lines say (their steps are in the total)\n", ADH_PLAN_MAX_RUNS + 1, p->nruns);
-    fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",
-            p->loading_steps, p->unloading_steps,
-            p->unloading_branches ? " (more if the surfaces still touch there)" : "");
-    if (p->elastic && !p->static_mode) {
+    if (p->time_mode)
+        fprintf(f, "steps: as many as the integrator's tolerance needs (short ones at every fold, jump and turn)\n");
+    else
+        fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",
+                p->loading_steps, p->unloading_steps,
+                p->unloading_branches ? " (more if the surfaces still touch there)" : "");
+    if (p->elastic && !p->static_mode && !p->time_mode) {
         double it = 0;
         for (size_t i = 0; i < p->nruns; i++)
             it += p->runs[i].iterations;

@@ -41,6 +41,7 @@ typedef struct adh_plan {
     int jobs;                 /* runs at once */
     int elastic;              /* 0: rigid spheres only (eq 22), no kernel at all */
     int static_mode;          /* the equilibrium continuation instead of relaxation */
+    int time_mode;            /* physical time (mode time): the integrator's own steps */
     int shared_kernel;        /* one kernel serves every run (same grid) */
     size_t kernels;           /* kernels built in all: one for each distinct grid */
     size_t loading_branches;  /* per run */
@@ -69,6 +70,10 @@ size_t adh_plan_steps(const adh_plan *p, const adh_run_spec *rc);
 
 /* Prints it as "key: value" lines, one note per "stored:" / "skip:" line. */
 void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
+
+/* The physical-time lines of the plan (plantime.c): the material, the
+ * drive, the spring and the time the protocol spans. */
+void adh_plan_time_print(FILE *f, const adh_config *cfg);
 
 /* Runs at once for a sweep: [sweep] jobs, else one per online core, never
  * more than the runs. */

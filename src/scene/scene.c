@@ -241,7 +241,7 @@ int adh_scene_find(const char *arg, char *path, size_t pathlen, char *why, size_
             return 0;
     }
     snprintf(why, whylen, "no scene named '%.100s' (looked in %.300s%s%.300s%s%.300s/scenes; $ADHERE_DATADIR "
-             "sets where); shipped scenes are default and fig1 ... fig8", arg,
+             "sets where); shipped scenes are default, fig1 ... fig8, visco, visco-speed and afm", arg,
              tried[0] ? root[0] : "", tried[0] ? "/scenes, " : "", tried[1] ? root[1] : "",
              tried[1] ? "/scenes, " : "", root[2]);
     return -1;

@@ -443,15 +443,19 @@ void adh_sweep_materials(const adh_sweep *s, const adh_run_spec *base, adh_sweep
 
 /* ---- drives: runs that differ only in their turn share one ------------- */
 
-/* The turns axis when its runs share drives (relaxation, the mode not
- * swept), else NULL; *at its position. */
+/* The axis whose runs share drives, else NULL; *at its position: the
+ * turns in relaxation (one loading branch, an unloading branch from each
+ * turn), the spring on the static curve (the curve does not depend on k:
+ * each k's snap points are read off one curve), the mode not swept. */
 static const adh_sweep_axis *shared_turns(const adh_config *c, size_t *at)
 {
     const adh_sweep *s = &c->sweep;
-    if (c->spec.mode != ADH_MODE_RELAX || adh_sweep_touches(s, "scene.mode"))
+    const char *key = c->spec.mode == ADH_MODE_RELAX ? "protocol.turns"
+                    : c->spec.mode == ADH_MODE_STATIC ? "protocol.spring" : NULL;
+    if (!key || adh_sweep_touches(s, "scene.mode"))
         return NULL;
     for (size_t k = 0; k < s->naxes; k++)
-        if (!strcmp(s->axis[k].key, "protocol.turns")) {
+        if (!strcmp(s->axis[k].key, key)) {
             *at = k;
             return &s->axis[k];
         }
@@ -510,7 +514,9 @@ void adh_sweep_drive_spec(const adh_config *c, size_t u, adh_run_spec *run)
         return;
     }
     /* the member with the deepest turn, then every member's turn: the
-     * grid and the profiles spread over the path are the deepest's */
+     * grid and the profiles spread over the path are the deepest's; of
+     * springs the softest, whose automatic start lies outside every
+     * member's snap-in */
     size_t deepest = 0, idx[ADH_SWEEP_MAX_AXES];
     double turns[ADH_MAX_TURNS];
     for (size_t j = 0; j < n; j++) {
@@ -523,8 +529,10 @@ void adh_sweep_drive_spec(const adh_config *c, size_t u, adh_run_spec *run)
     tc.spec = c->spec;
     tc.output.plots = c->output.plots;
     apply(&c->sweep, c->spec.proto.nturns, runs[deepest], &tc);
-    memcpy(tc.spec.proto.turns, turns, n * sizeof *turns);
-    tc.spec.proto.nturns = n;
+    if (!strcmp(t->key, "protocol.turns")) {
+        memcpy(tc.spec.proto.turns, turns, n * sizeof *turns);
+        tc.spec.proto.nturns = n;
+    }
     if (adh_sweep_touches(&c->sweep, "grid.")) {
         char why[512];
         adh_config_choose_grid(&tc.spec, NULL, why, sizeof why, NULL);

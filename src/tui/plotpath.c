@@ -87,7 +87,7 @@ static size_t path_profiles(const tui_sim *s, const adh_obs *rows, size_t n, con
 int tui_plot_path(const tui_sim *s, const char *dir, const volatile sig_atomic_t *cancel, char *msg, size_t msglen)
 {
     size_t n;
-    int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
+    int stat = tui_sim_curve_mode(s);   /* static mode's curve, or physical time's path */
     const adh_obs *rows = stat ? tui_sim_curve(s, &n) : tui_sim_rows(s, &n);
     if (n == 0) {
         snprintf(msg, msglen, "nothing to plot yet");

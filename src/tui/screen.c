@@ -145,7 +145,9 @@ static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w
 {
     put(y, x, w, A_BOLD, " Parameters  (%s select, Enter edit, +/- x2)",
         gk(v, "\xe2\x86\x91\xe2\x86\x93", "Up/Down"));
-    for (int p = 0; p < P_COUNT; p++) {
+    for (int p = 0, row = 1; p < P_COUNT; p++) {
+        if (!tui_sim_param_shown(s, (tui_param)p))
+            continue;   /* physical time's fields only in it */
         char val[64];
         tui_sim_param_text(s, (tui_param)p, v->utf8, val, sizeof val);
         const tui_param_info *pi = &tui_params[p];
@@ -162,13 +164,27 @@ static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w
         char pv[96], what[64];
         size_t nturns;
         tui_sim_turns(s, &nturns);
+        const char *label = v->utf8 ? pi->label : pi->ascii;
         if (p == P_TURN && nturns > 1)   /* the field shows the list's ends */
             snprintf(what, sizeof what, "%zu turning points", nturns);
         else
             snprintf(what, sizeof what, "%s", pi->what);
-        put(y + 1 + p, x, w, sel ? A_REVERSE : A_NORMAL, "%s%s %s %s%s", sel ? " >" : "  ",
-            pad(v->utf8 ? pi->label : pi->ascii, 5, lab, sizeof lab), pad(val, 12, pv, sizeof pv), what, how);
+        if (p == P_E && tui_sim_param_shown(s, P_EINF)) {   /* a solid's E is its relaxed modulus */
+            label = "E0";
+            snprintf(what, sizeof what, "relaxed modulus");
+        }
+        put(y + row++, x, w, sel ? A_REVERSE : A_NORMAL, "%s%s %s %s%s", sel ? " >" : "  ",
+            pad(label, 5, lab, sizeof lab), pad(val, 12, pv, sizeof pv), what, how);
     }
+}
+
+/* The lines the panel's fields take. */
+static int params_shown(const tui_sim *s)
+{
+    int n = 0;
+    for (int p = 0; p < P_COUNT; p++)
+        n += tui_sim_param_shown(s, (tui_param)p);
+    return n;
 }
 
 /* The parameters in as few lines as the width allows ("E 300 MPa  A
@@ -180,6 +196,8 @@ static int draw_params_compact(const tui_sim *s, const tui_view *v, int y, int x
     int line = 0, col = 0;
     for (int p = 0; p < P_COUNT; p++) {
         char val[64], item[96];
+        if (!tui_sim_param_shown(s, (tui_param)p))
+            continue;
         size_t nturns;
         tui_sim_turns(s, &nturns);
         tui_sim_param_text(s, (tui_param)p, v->utf8, val, sizeof val);
@@ -360,8 +378,72 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
     }
 }
 
+/* Physical time: the point shown, its time, the base and its speed, and
+ * what the cycle so far measured (jumps, pull-off, hysteresis). */
+static void draw_time_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
+{
+    const adh_obs *o = tui_sim_row(s);
+    const adh_visco_result *r = &s->vres;
+    const adh_time_settings *ts = &s->cfg.spec.time;
+    char a[64], b[64], c[64];
+    put(y, x, w, A_BOLD, " State  (physical time)");
+    if (!o) {
+        q(ts->speed_in, ADH_Q_SPEED, a, sizeof a);
+        q(tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
+        put(y + 1, x, w, A_NORMAL, "  t      0 s, the base at rest, the material relaxed");
+        put(y + 2, x, w, A_NORMAL, "  Press f for the first step in time, r to run the");
+        put(y + 3, x, w, A_NORMAL, "  cycle: in at %s, out, back to h0 = %s.", a, b);
+        put(y + 9, x, w, A_NORMAL, "  mode   physical time, %s", v->activity);
+        return;
+    }
+    q(o->t, ADH_Q_TIME, a, sizeof a);
+    q(s->cfg.spec.time.tau, ADH_Q_TIME, b, sizeof b);
+    put(y + 1, x, w, A_NORMAL, "  t      %-12s step %zu of %zu, %s %s", a, s->ccur + 1, s->curve.nrows,
+        gk(v, "\xcf\x84", "tau"), b);
+    q(o->base, ADH_Q_LENGTH, a, sizeof a);
+    q(o->branch > 0 ? ts->speed_in : ts->speed_out, ADH_Q_SPEED, b, sizeof b);
+    put(y + 2, x, w, A_NORMAL, "  base   %-12s %s at %s", a, o->branch > 0 ? "approaching" : "retracting", b);
+    q(o->h0, ADH_Q_LENGTH, a, sizeof a);
+    q(o->F, ADH_Q_FORCE, b, sizeof b);
+    put(y + 3, x, w, A_NORMAL, "  h0     %-12s F %s", a, b);
+    q(o->a, ADH_Q_LENGTH, a, sizeof a);
+    q(o->delta, ADH_Q_LENGTH, b, sizeof b);
+    put(y + 4, x, w, A_NORMAL, "  a      %-12s %s %s", o->a > 0 ? a : "0 (apart)", gk(v, "\xce\xb4", "delta"), b);
+    q(r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
+    q(r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
+    put(y + 5, x, w, A_NORMAL, "  jumps  %zu; in %s, out %s", r->jumps, isnan(r->jump_in_h0) ? "not yet" : a,
+        isnan(r->jump_out_h0) ? "not yet" : b);
+    q(r->pulloff_F, ADH_Q_FORCE, a, sizeof a);
+    q(r->pulloff_t, ADH_Q_TIME, b, sizeof b);
+    if (isnan(r->pulloff_F))
+        put(y + 6, x, w, A_NORMAL, "  pull   not unloaded yet");
+    else
+        put(y + 6, x, w, A_NORMAL, "  pull   %s at t = %s", a, b);
+    /* fJ, as the relaxation's cycle says its hysteresis */
+    snprintf(c, sizeof c, "%.4g fJ", r->hysteresis * 1e15);
+    put(y + 7, x, w, A_NORMAL, "  energy %.4g fJ dissipated, hysteresis %s", r->cycle.dissipated * 1e15,
+        r->hysteresis > 0 ? c : "not yet");
+    put(y + 8, x, w, A_NORMAL, "  steps  %zu Newton iterations on this one", o->iters);
+    put(y + 9, x, w, A_NORMAL, "  mode   physical time, %s", v->activity);
+    if (s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS) {
+        char msg[300];
+        snprintf(msg, sizeof msg, "! the run stopped: %s (x starts it again)", adh_strerror(s->cstatus));
+        put_wrapped(y + 10, x + 2, w - 2, 2, A_BOLD, msg);
+    } else if (s->gridwarn[0]) {
+        char msg[600];
+        snprintf(msg, sizeof msg, "! %s", s->gridwarn);
+        put_wrapped(y + 10, x + 2, w - 2, 4, A_BOLD, msg);
+    } else if (s->cstatus == ADH_SUCCESS && !tui_sim_redoable(s)) {
+        put(y + 10, x, w, A_NORMAL, "  cycle  complete");
+    }
+}
+
 static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
 {
+    if (tui_sim_mode(s) == ADH_MODE_TIME) {
+        draw_time_state(s, v, y, x, w);
+        return;
+    }
     if (tui_sim_mode(s) == ADH_MODE_STATIC) {
         draw_curve_state(s, v, y, x, w);
         return;
@@ -548,26 +630,29 @@ void tui_draw(const tui_sim *s, const tui_view *v)
     int W = COLS, H = LINES;
     put(0, 0, W, A_REVERSE, "%-*s", W, " adhere: two elastic spheres held by a Lennard-Jones surface force");
     put(0, W - 17 > 0 ? W - 17 : 0, 17, A_REVERSE, "  ? help  q quit ");
-    int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
+    int stat = tui_sim_curve_mode(s);
+    /* below the fields: nine of them (physical time's can take one more) */
+    int dy = params_shown(s) > 9 ? params_shown(s) - 9 : 0;
     if (W >= 80) {
         int lw = W / 2 - 2 < 44 ? W / 2 - 2 : 44;
         draw_params(s, v, 1, 0, lw);
-        draw_derived(s, v, 11, 0, lw);
+        draw_derived(s, v, 11 + dy, 0, lw);
         draw_state(s, v, 1, lw + 1, W - lw - 1);
         if (!stat)
             draw_cycle(s, v, 13, lw + 1, W - lw - 1);
-        /* the preview in the rows left: whole from 25 lines, its plot
-         * alone at 23 and 24, else a word on how to see it */
-        if (H - 2 - 18 >= 3)
-            draw_preview(s, v, 18, 0, H - 2 - 18, W);
-        else if (H - 2 - 18 >= 1)
-            put(18, 0, W, A_NORMAL, " (the force preview needs 23 lines: a taller window shows it)");
+        /* the preview in the rows left: whole from 25 lines (more with
+         * physical time's fields), its plot alone at 23 and 24, else a
+         * word on how to see it */
+        if (H - 2 - 18 - dy >= 3)
+            draw_preview(s, v, 18 + dy, 0, H - 2 - 18 - dy, W);
+        else if (H - 2 - 18 - dy >= 1)
+            put(18 + dy, 0, W, A_NORMAL, " (the force preview needs %d lines: a taller window shows it)", 23 + dy);
     } else if (v->params_first && H < 40) {
         /* Narrow and short, a parameter being worked on: the parameters
          * and what they give come first. */
         draw_params(s, v, 1, 0, W);
-        draw_derived(s, v, 11, 0, W);
-        draw_state(s, v, 17, 0, W);
+        draw_derived(s, v, 11 + dy, 0, W);
+        draw_state(s, v, 17 + dy, 0, W);
     } else {
         /* Narrow: one column, the state first, then the cycle and the
          * models while there is room; the parameters stay in view in
@@ -605,6 +690,9 @@ void tui_draw(const tui_sim *s, const tui_view *v)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W, v->prompt);
     else if (v->count)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W, "");
+    else if (tui_sim_mode(s) == ADH_MODE_TIME)
+        put(H - 1, 0, W, A_REVERSE, "%-*s", W,
+            " f next  b back  r run  u/U back/fwd  x reset  p plots  : cmd  ? help  q quit");
     else if (tui_sim_mode(s) == ADH_MODE_STATIC)
         put(H - 1, 0, W, A_REVERSE, "%-*s", W,
             " f next  b back  r run  u/U back/fwd  x reset  m relax  p plots  : cmd  ? help  q quit");

@@ -16,6 +16,7 @@
 #include "adhere/protocol.h"
 #include "adhere/rings.h"
 #include "adhere/rule_static.h"
+#include "adhere/rule_visco.h"
 #include "adhere/status.h"
 #include "scene/budget.h"
 
@@ -40,6 +41,9 @@ const tui_param_info tui_params[P_COUNT] = {
     [P_N] = { "N", "grid.nodes", "N", "N", "grid nodes", ADH_Q_NONE },
     [P_SPACING] = { "spacing", "grid.spacing", "\xce\x94", "dr", "grid spacing", ADH_Q_LENGTH },
     [P_TURN] = { "turn", "protocol.turns", "turn", "turn", "turning point", ADH_Q_LENGTH },
+    [P_EINF] = { "Einf", "material.Einf", "E\xe2\x88\x9e", "Einf", "instantaneous modulus", ADH_Q_PRESSURE },
+    [P_TAU] = { "tau", "material.tau", "\xcf\x84", "tau", "relaxation time", ADH_Q_TIME },
+    [P_SPEED] = { "speed", "protocol.speed", "v", "v", "base speed", ADH_Q_SPEED },
 };
 
 static const adh_run_spec *spec(const tui_sim *s)
@@ -60,6 +64,34 @@ const adh_grid_spec *tui_sim_grid(const tui_sim *s)
 adh_mode tui_sim_mode(const tui_sim *s)
 {
     return spec(s)->mode;
+}
+
+int tui_sim_curve_mode(const tui_sim *s)
+{
+    return spec(s)->mode == ADH_MODE_STATIC || spec(s)->mode == ADH_MODE_TIME;
+}
+
+int tui_sim_param_shown(const tui_sim *s, tui_param p)
+{
+    int timed = spec(s)->mode == ADH_MODE_TIME;
+    switch (p) {
+    case P_EPS: case P_D: return !timed;   /* the relaxation's and its drive's */
+    case P_EINF: case P_TAU: return timed && spec(s)->time.sls;
+    case P_SPEED: return timed;
+    default: return p < P_COUNT;
+    }
+}
+
+/* The mode of the curve on screen (static when the screen relaxes). */
+static adh_mode curve_mode_of(const tui_sim *s)
+{
+    return spec(s)->mode == ADH_MODE_TIME ? ADH_MODE_TIME : ADH_MODE_STATIC;
+}
+
+/* The rule of the curve on screen. */
+static const adh_rule_type *curve_rule(const tui_sim *s)
+{
+    return spec(s)->mode == ADH_MODE_TIME ? &adh_rule_visco : &adh_rule_static;
 }
 
 const double *tui_sim_turns(const tui_sim *s, size_t *n)
@@ -203,12 +235,16 @@ static void curve_drop(tui_sim *s)
     memset(&s->sres, 0, sizeof s->sres);
     s->sres.jump_in_h0 = s->sres.jump_out_h0 = s->sres.pulloff_F_disp = NAN;
     s->sres.pulloff_F = s->sres.pulloff_h0 = NAN;
+    memset(&s->vres, 0, sizeof s->vres);
+    s->vres.jump_in_h0 = s->vres.jump_out_h0 = s->vres.pulloff_F = s->vres.pulloff_h0 = NAN;
     s->cprof_at[PROF_CONTACT] = s->cprof_at[PROF_PULLOFF] = NO_POINT;
 }
 
 double tui_sim_curve_end(const tui_sim *s)
 {
-    adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, ADH_MODE_STATIC);
+    adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, spec(s)->mode);
+    if (spec(s)->mode == ADH_MODE_TIME)   /* back where the base started */
+        return ps.nturns && ps.unload ? s->start : adh_protocol_deepest_turn(&ps);
     return adh_rule_static_end(&ps);
 }
 
@@ -225,9 +261,14 @@ static void curve_check(tui_sim *s)
     if (!curve_started(s))
         return;
     const adh_material *a = &s->ckey.mat, *b = &spec(s)->mat;
-    adh_grid_spec g = mode_grid(s, spec(s), ADH_MODE_STATIC);
+    adh_grid_spec g = mode_grid(s, spec(s), curve_mode_of(s));
+    const adh_time_settings *ta = &s->ckey.time, *tb = &spec(s)->time;
+    int time_same = ta->sls == tb->sls && (ta->Einf == tb->Einf || (isnan(ta->Einf) && isnan(tb->Einf))) &&
+                    ta->tau == tb->tau && ta->speed_in == tb->speed_in && ta->speed_out == tb->speed_out &&
+                    ta->dwell == tb->dwell && ta->spring == tb->spring;
     if (a->E != b->E || a->A != b->A || a->z0 != b->z0 || a->R != b->R || !same_grid(&s->ckey.grid, &g) ||
-        s->ckey.start != s->start || s->ckey.end != tui_sim_curve_end(s))
+        s->ckey.start != s->start || s->ckey.end != tui_sim_curve_end(s) || s->ckey.rule != curve_rule(s) ||
+        (s->ckey.rule == &adh_rule_visco && !time_same))
         curve_drop(s);
 }
 
@@ -300,6 +341,8 @@ static int params_check(const tui_sim *s, char *why, size_t whylen)
     char msg[512];
     unsigned fix = 0;
     int rc = check_words(s, msg, sizeof msg, &fix);
+    if (rc == ADH_SUCCESS && adh_config_time_check(&s->cfg, spec(s), msg, sizeof msg) != 0)
+        rc = ADH_EINVAL;   /* the material, drive and mode do not fit */
     if (rc != ADH_SUCCESS) {
         tui_sim_words(msg, why, whylen);   /* a sentence of the configuration's names keys */
         advice(why, whylen, fix);
@@ -392,7 +435,7 @@ int tui_sim_init(tui_sim *s, const adh_config *cfg, char *why, size_t whylen)
     adh_run_init(&s->path.run);
     s->cfg = *cfg;
     /* the screen relaxes or follows the static curve: rigid spheres are --batch's */
-    s->cfg.spec.mode = cfg->spec.mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
+    s->cfg.spec.mode = cfg->spec.mode == ADH_MODE_RIGID ? ADH_MODE_RELAX : cfg->spec.mode;
     sort_turns(s);
     s->tcur = 0;
     s->turn = spec(s)->proto.nturns ? spec(s)->proto.turns[0] : NAN;
@@ -493,9 +536,9 @@ static int ensure_solver(tui_sim *s, char *why, size_t whylen)
  * changed. */
 static int ensure_static(tui_sim *s, char *why, size_t whylen)
 {
-    adh_run_spec m = mode_spec(s, spec(s), ADH_MODE_STATIC);
+    adh_run_spec m = mode_spec(s, spec(s), curve_mode_of(s));
     adh_grid_spec now = grid_of(&m);
-    if (s->sdrv && same_grid(&s->sbuilt, &now))
+    if (s->sdrv && same_grid(&s->sbuilt, &now) && s->srule == curve_rule(s))
         return 0;
     free_static(s);
     if (budget(&m, 1, why, whylen) != 0)
@@ -503,7 +546,8 @@ static int ensure_static(tui_sim *s, char *why, size_t whylen)
     int st;
     s->sg = adh_config_grid_alloc(&m);
     s->sk = s->sg ? adh_config_kernel_alloc(&m, s->sg, &st) : NULL;
-    s->sdrv = s->sk ? adh_drive_alloc(&adh_rule_static, s->sg, s->sk) : NULL;
+    s->srule = curve_rule(s);
+    s->sdrv = s->sk ? adh_drive_alloc(s->srule, s->sg, s->sk) : NULL;
     s->sbuilt = now;
     if (!s->sdrv) {
         free_static(s);
@@ -669,7 +713,8 @@ int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, si
     char msg[512];
     if (!k || !(k->where & ADH_KEY_RUN) || strcmp(key, "scene.mode") == 0) {
         snprintf(why, whylen, "%s is not set here: %s", key, k && !strcmp(key, "scene.mode")
-                 ? "m switches between relaxation and the static curve" : "the screen sets the keys of the run "
+                 ? "m switches between relaxation and the static curve (a scene in physical time stays in it)"
+                 : "the screen sets the keys of the run "
                  "(material, grid, solver, protocol, profiles)");
         return -1;
     }
@@ -701,6 +746,9 @@ static double param_value(const tui_sim *s, tui_param p)
     case P_N: return (double)r->grid.use.nodes;
     case P_SPACING: return tui_sim_spacing(s);
     case P_TURN: return s->turn;
+    case P_EINF: return adh_config_einf(r);
+    case P_TAU: return r->time.tau;
+    case P_SPEED: return r->time.speed_in;
     default: return NAN;
     }
 }
@@ -713,7 +761,7 @@ const char *tui_sim_param_unit(const tui_sim *s, tui_param p, int utf8, double *
     switch (p) {
     /* moduli in the units of the literature: GPa for glasses and metals,
      * MPa for polymers and gels, kPa below */
-    case P_E:
+    case P_E: case P_EINF:
         if (v >= 0.9995e9) { *factor = 1e9; return "GPa"; }
         if (v >= 0.9995e6) { *factor = 1e6; return "MPa"; }
         *factor = 1e3;
@@ -726,6 +774,17 @@ const char *tui_sim_param_unit(const tui_sim *s, tui_param p, int utf8, double *
         *factor = 1e-6;
         return um;
     case P_EPS: *factor = 1e-12; return "pm";
+    /* times and speeds in the units an experiment states them in */
+    case P_TAU:
+        if (v >= 0.9995) return "s";
+        if (v >= 0.9995e-3) { *factor = 1e-3; return "ms"; }
+        *factor = 1e-6;
+        return utf8 ? "\xc2\xb5s" : "us";
+    case P_SPEED:
+        if (v >= 0.9995e-3) { *factor = 1e-3; return "mm/s"; }
+        if (v >= 0.9995e-6) { *factor = 1e-6; return utf8 ? "\xc2\xb5m/s" : "um/s"; }
+        *factor = 1e-9;
+        return "nm/s";
     default: return "";
     }
 }
@@ -743,6 +802,8 @@ void tui_sim_param_text(const tui_sim *s, tui_param p, int utf8, char *buf, size
                  spec(s)->proto.turns[spec(s)->proto.nturns - 1] / f, unit);
     else if (p == P_A)
         snprintf(buf, len, "%.4g J", v);
+    else if (p == P_SPEED && spec(s)->time.speed_out != v)   /* approach, retraction */
+        snprintf(buf, len, "%.4g,%.4g %s", v / f, spec(s)->time.speed_out / f, unit);
     else
         snprintf(buf, len, "%.4g %s", v / f, unit);
 }
@@ -798,18 +859,18 @@ static void field_value(const tui_sim *s, tui_param p, const char *text, char *o
  * turns value by value). -1 with why when it does not fit. */
 static int field_text(const tui_sim *s, tui_param p, const char *text, char *out, size_t len, char *why, size_t whylen)
 {
-    if (p != P_TURN || !strchr(text, ',')) {
+    if ((p != P_TURN && p != P_SPEED) || !strchr(text, ',')) {
         field_value(s, p, text, out, len);
         return 0;
     }
-    /* a list of turning points, as a scene's turns = ... */
+    /* a list of turning points, as a scene's turns = ... (or the two speeds) */
     size_t o = 0;
     for (const char *seg = text;;) {
         const char *comma = strchr(seg, ',');
         char one[128], si[64];
         size_t n = comma ? (size_t)(comma - seg) : strlen(seg);
         if (n >= sizeof one) {
-            snprintf(why, whylen, "turn: '%.100s...' is too long a value", seg);
+            snprintf(why, whylen, "%s: '%.100s...' is too long a value", tui_params[p].name, seg);
             return -1;
         }
         memcpy(one, seg, n);
@@ -821,7 +882,7 @@ static int field_text(const tui_sim *s, tui_param p, const char *text, char *out
         seg = comma + 1;
     }
     if (o >= len) {
-        snprintf(why, whylen, "turn: '%.100s' is too long a list", text);
+        snprintf(why, whylen, "%s: '%.100s' is too long a list", tui_params[p].name, text);
         return -1;
     }
     return 0;
@@ -867,6 +928,8 @@ int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whyl
             o += (size_t)snprintf(text + o, sizeof text - o, "%s%.17gm", i ? "," : "", ps->turns[i] * factor);
     } else if (p == P_N) {
         snprintf(text, sizeof text, "%.0f", round(v * factor));
+    } else if (p == P_SPEED) {   /* both ways, each by the factor */
+        snprintf(text, sizeof text, "%.17gm/s,%.17gm/s", v * factor, spec(s)->time.speed_out * factor);
     } else {
         snprintf(text, sizeof text, "%.17g%s", v * factor, adh_quantity_unit(tui_params[p].q));
     }
@@ -1016,15 +1079,20 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     if (s->curve.nrows == 0) {
         /* the relaxation's start and deepest turn: the two share an axis,
          * as in --batch */
-        adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, ADH_MODE_STATIC);
+        adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, curve_mode_of(s));
         adh_static_settings ss = adh_static_settings_default();
+        adh_visco_rule_settings vs;
+        adh_config_visco(spec(s), &vs);
         s->ckey.mat = spec(s)->mat;
         s->ckey.grid = s->sbuilt;
         s->ckey.start = s->start;
         s->ckey.end = tui_sim_curve_end(s);
+        s->ckey.rule = s->srule;
+        s->ckey.time = spec(s)->time;
         adh_run_free(&s->curve);
         adh_run_init(&s->curve);
-        int rc = adh_drive_set(s->sdrv, &spec(s)->mat, &ss, &ps, &s->curve);
+        int rc = adh_drive_set(s->sdrv, &spec(s)->mat, s->srule == &adh_rule_visco ? (const void *)&vs
+                               : (const void *)&ss, &ps, &s->curve);
         if (rc != ADH_SUCCESS) {
             s->cstatus = rc;
             snprintf(why, whylen, "the curve cannot start: %s", adh_strerror(rc));
@@ -1035,9 +1103,13 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     adh_format_quantity(s->curve.nrows ? s->curve.rows[s->curve.nrows - 1].h0 : s->start, ADH_Q_LENGTH, 4, h0, sizeof h0);
     int row, rc = adh_drive_iterate(s->sdrv, 0, &row);
     const adh_static *sw = adh_rule_static_solver(s->sdrv);
-    adh_static_summary(sw, &s->sres);
+    const adh_visco *vw = adh_rule_visco_solver(s->sdrv);
+    if (sw)
+        adh_static_summary(sw, &s->sres);
+    if (vw)
+        adh_visco_summary(vw, &s->vres);
     if (row) {
-        curve_pushed(s, adh_static_state(sw));
+        curve_pushed(s, sw ? adh_static_state(sw) : adh_visco_state(vw));
         if (rc == ADH_CONTINUE && (adh_drive_events(s->sdrv) & ADH_DRIVE_END))
             rc = ADH_SUCCESS;   /* the curve came down to its end */
     }
@@ -1061,7 +1133,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
 void tui_sim_set_mode(tui_sim *s, adh_mode mode)
 {
     tui_sim_cancel(s);
-    s->cfg.spec.mode = mode == ADH_MODE_STATIC ? ADH_MODE_STATIC : ADH_MODE_RELAX;
+    s->cfg.spec.mode = mode == ADH_MODE_RIGID ? ADH_MODE_RELAX : mode;
     /* the static curve has its own resolution limit: an automatic grid is
      * this mode's (each mode keeps its solver, path or curve, on its own) */
     regrid(s, s->gridchoice, sizeof s->gridchoice);
@@ -1081,11 +1153,13 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
 {
     if (which == 2) {
         /* the solver holds the last point, unless a failed step left it elsewhere */
-        if (!s->sdrv || !adh_rule_static_solver(s->sdrv) || !s->curve.nrows ||
+        if (!s->sdrv || !s->curve.nrows ||
             !(s->cstatus == ADH_CONTINUE || s->cstatus == ADH_SUCCESS || s->cstatus == ADH_EGRID))
             return NULL;
         *at = s->curve.nrows - 1;
-        return adh_static_state(adh_rule_static_solver(s->sdrv));
+        const adh_static *sw = adh_rule_static_solver(s->sdrv);
+        const adh_visco *vw = adh_rule_visco_solver(s->sdrv);
+        return sw ? adh_static_state(sw) : vw ? adh_visco_state(vw) : NULL;
     }
     if (which < 0 || which > 1 || s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->curve.nrows)
         return NULL;
@@ -1109,7 +1183,7 @@ int tui_sim_begin(tui_sim *s, int dir, char *why, size_t whylen)
         snprintf(why, whylen, "a step is already being solved");
         return -1;
     }
-    if (spec(s)->mode == ADH_MODE_STATIC)
+    if (tui_sim_curve_mode(s))
         return curve_begin(s, dir, why, whylen);
     if (grid_refuses(s, why, whylen) || path_budget(s, why, whylen) != 0 || ensure_solver(s, why, whylen) != 0)
         return -1;
@@ -1144,7 +1218,7 @@ void tui_sim_cancel(tui_sim *s)
     if (!s->busy)
         return;
     s->busy = 0;
-    if (spec(s)->mode == ADH_MODE_STATIC) {
+    if (tui_sim_curve_mode(s)) {
         s->walk = 0;   /* a point is solved within one tui_sim_work: nothing half done */
         return;
     }
@@ -1167,7 +1241,7 @@ tui_work tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
 {
     if (!s->busy)
         return TUI_WORK_STEPPED;
-    if (spec(s)->mode == ADH_MODE_STATIC)
+    if (tui_sim_curve_mode(s))
         return curve_work(s, why, whylen) == ADH_SUCCESS ? TUI_WORK_STEPPED : TUI_WORK_FAILED;
     int row, rc = adh_drive_iterate(s->drv, batch, &row);
     if (rc == ADH_CONTINUE && !row)
@@ -1271,7 +1345,7 @@ int tui_sim_undo(tui_sim *s)
 {
     tui_sim_cancel(s);
     s->edit_moved = NULL;
-    if (spec(s)->mode == ADH_MODE_STATIC) {
+    if (tui_sim_curve_mode(s)) {
         if (s->curve.nrows == 0 || s->ccur == 0)
             return edit_undo(s, 0);
         s->ccur--;
@@ -1288,7 +1362,7 @@ int tui_sim_redo(tui_sim *s)
 {
     tui_sim_cancel(s);
     s->edit_moved = NULL;
-    if (spec(s)->mode == ADH_MODE_STATIC) {
+    if (tui_sim_curve_mode(s)) {
         if (s->curve.nrows == 0 || s->ccur + 1 >= s->curve.nrows)
             return edit_undo(s, 1);
         s->ccur++;
@@ -1303,7 +1377,7 @@ int tui_sim_redo(tui_sim *s)
 
 void tui_sim_reset(tui_sim *s)
 {
-    if (spec(s)->mode == ADH_MODE_STATIC) {
+    if (tui_sim_curve_mode(s)) {
         tui_sim_cancel(s);
         curve_drop(s);   /* the relaxation path is the other mode's: kept */
         return;
@@ -1314,14 +1388,14 @@ void tui_sim_reset(tui_sim *s)
 
 const adh_obs *tui_sim_row(const tui_sim *s)
 {
-    if (spec(s)->mode == ADH_MODE_STATIC)
+    if (tui_sim_curve_mode(s))
         return s->curve.nrows ? &s->curve.rows[s->ccur] : NULL;
     return s->path.run.nrows ? &s->path.run.rows[s->path.run.nrows - 1] : NULL;
 }
 
 const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
 {
-    if (spec(s)->mode == ADH_MODE_STATIC) {
+    if (tui_sim_curve_mode(s)) {
         *n = s->curve.nrows ? s->ccur + 1 : 0;
         return s->curve.nrows ? s->curve.rows : NULL;
     }
@@ -1331,7 +1405,7 @@ const adh_obs *tui_sim_rows(const tui_sim *s, size_t *n)
 
 size_t tui_sim_redoable(const tui_sim *s)
 {
-    if (spec(s)->mode == ADH_MODE_STATIC)
+    if (tui_sim_curve_mode(s))
         return s->curve.nrows ? s->curve.nrows - 1 - s->ccur : 0;
     return s->path.hist ? adh_history_redoable(s->path.hist) : 0;
 }
@@ -1343,14 +1417,14 @@ void tui_sim_cycle(const tui_sim *s, adh_cycle *c)
 
 double tui_sim_target(const tui_sim *s)
 {
-    if (spec(s)->mode == ADH_MODE_STATIC || !s->drv)
+    if (tui_sim_curve_mode(s) || !s->drv)
         return s->target;
     return adh_drive_step_position(s->drv);
 }
 
 size_t tui_sim_progress(const tui_sim *s, double *change)
 {
-    if (spec(s)->mode == ADH_MODE_STATIC) {
+    if (tui_sim_curve_mode(s)) {
         *change = 0;
         return s->curve.nrows;
     }
@@ -1360,9 +1434,9 @@ size_t tui_sim_progress(const tui_sim *s, double *change)
 
 int tui_sim_will_build(const tui_sim *s)
 {
-    if (spec(s)->mode == ADH_MODE_STATIC) {
-        adh_grid_spec g = mode_grid(s, spec(s), ADH_MODE_STATIC);
-        return !s->sdrv || !same_grid(&s->sbuilt, &g);
+    if (tui_sim_curve_mode(s)) {
+        adh_grid_spec g = mode_grid(s, spec(s), curve_mode_of(s));
+        return !s->sdrv || !same_grid(&s->sbuilt, &g) || s->srule != curve_rule(s);
     }
     return !s->g || s->grid_stale;
 }

@@ -22,7 +22,13 @@
  * past the last point asks the solver for more. Each mode keeps its own
  * path or curve across a toggle; a change of what a curve depends on (E, A,
  * z0, R, N, spacing, start, turn) drops the curve, and the next step starts
- * it again from the start. */
+ * it again from the start.
+ *
+ * Physical time (a scene with material = sls, or mode = time) is a curve
+ * mode as the static one is: the viscoelastic step rule's drive, one
+ * integrator step a point, the same keys walking back and forth over the
+ * points computed; the panel shows E0, Einf, tau and the speed, the state
+ * the time, the base and the speed. */
 #ifndef ADH_TUI_SIM_H
 #define ADH_TUI_SIM_H
 
@@ -39,12 +45,15 @@
 #include "adhere/relax.h"
 #include "adhere/run.h"
 #include "adhere/units.h"
+#include "adhere/visco.h"
 #include "scene/config.h"
 
 /* The panel's fields, in panel order: each edits one key of the
  * configuration (adh_config_set). */
 typedef enum tui_param {
-    P_E = 0, P_A, P_Z0, P_R, P_EPS, P_D, P_N, P_SPACING, P_TURN, P_COUNT
+    P_E = 0, P_A, P_Z0, P_R, P_EPS, P_D, P_N, P_SPACING, P_TURN,
+    P_EINF, P_TAU, P_SPEED,   /* physical time's: on screen only when the scene runs in time */
+    P_COUNT
 } tui_param;
 
 typedef struct tui_param_info {
@@ -139,10 +148,14 @@ typedef struct tui_sim {
                                   once it came down to its end, else the error that
                                   stopped it (shown, never hidden) */
     adh_static_result sres;    /* summary of the points computed so far */
+    adh_visco_result vres;     /* in physical time: the integrator's summary so far */
+    const adh_rule_type *srule; /* the curve's rule: static, or visco in physical time */
     struct {                   /* what the curve was computed for */
         adh_material mat;
         adh_grid_spec grid;
         double start, end;
+        const adh_rule_type *rule;
+        adh_time_settings time;
     } ckey;
     adh_state *cprof[2];       /* profiles kept: first point in contact, pull-off */
     size_t cprof_at[2];        /* their points */
@@ -183,8 +196,14 @@ int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, si
 void tui_sim_words(const char *sentence, char *out, size_t len);
 /* The turning points (the config's, shallowest first), and how many. */
 const double *tui_sim_turns(const tui_sim *s, size_t *n);
-/* The mode on screen: ADH_MODE_RELAX or ADH_MODE_STATIC. */
+/* The mode on screen: ADH_MODE_RELAX, ADH_MODE_STATIC or ADH_MODE_TIME. */
 adh_mode tui_sim_mode(const tui_sim *s);
+/* Whether the screen steps a curve (static mode, physical time): points
+ * computed once, walked back and forth. */
+int tui_sim_curve_mode(const tui_sim *s);
+/* Whether field p is on the panel: physical time's only in physical time
+ * (Einf and tau for a solid), eps and d only outside it. */
+int tui_sim_param_shown(const tui_sim *s, tui_param p);
 
 /* Switches between relaxation and static mode. Nothing is computed: each
  * mode finds its path or curve as it left it (unless the parameters it

@@ -101,9 +101,16 @@ static void fmtq(double v, adh_quantity q, char *buf, size_t len)
     adh_format_quantity(v, q, 4, buf, len);
 }
 
-static int is_static(const tui *t)
+/* The screen steps a curve: the static one, or physical time's path
+ * (points computed once, walked back and forth). */
+static int is_curve(const tui *t)
 {
-    return tui_sim_mode(&t->sim) == ADH_MODE_STATIC;
+    return tui_sim_curve_mode(&t->sim);
+}
+
+static int is_timed(const tui *t)
+{
+    return tui_sim_mode(&t->sim) == ADH_MODE_TIME;
 }
 
 static const adh_config *config(const tui *t)
@@ -121,9 +128,9 @@ static size_t nturns(const tui *t)
 
 static const char *activity(const tui *t)
 {
-    if (is_static(t)) {
+    if (is_curve(t)) {
         if (t->run_dir)
-            return "following the curve";
+            return is_timed(t) ? "running in time" : "following the curve";
         if (t->sim.busy)
             return t->sim.walk ? "walking the curve" : t->pending ? "stepping" : "solving a point";
         return "idle";
@@ -144,9 +151,13 @@ static const char *activity(const tui *t)
     return "idle";
 }
 
+static void select_move(tui *t, long n);
+
 static void draw(tui *t)
 {
     tui_view *v = &t->view;
+    if (!tui_sim_param_shown(&t->sim, (tui_param)v->sel))
+        select_move(t, 1);   /* a field the mode does not show (an edit changed the mode) */
     v->status = t->status;
     v->status_error = t->status_error;
     v->count = t->count;
@@ -200,9 +211,35 @@ static void start_step(tui *t, int dir)
     }
 }
 
+/* Physical time: the point just reached, its time, base and speed,
+ * naming a jump when the last step crossed one. */
+static void describe_time(tui *t)
+{
+    const tui_sim *s = &t->sim;
+    const adh_obs *o = tui_sim_row(s);
+    char h0[64], F[64], a[64], tt[64], v[64];
+    fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
+    fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
+    fmtq(o->a, ADH_Q_LENGTH, a, sizeof a);
+    fmtq(o->t, ADH_Q_TIME, tt, sizeof tt);
+    const adh_time_settings *ts = &config(t)->spec.time;
+    fmtq(o->branch > 0 ? ts->speed_in : ts->speed_out, ADH_Q_SPEED, v, sizeof v);
+    const adh_obs *prev = s->ccur > 0 ? &tui_sim_curve(s, &(size_t){ 0 })[s->ccur - 1] : NULL;
+    if (!s->walked && prev && (prev->a > 0) != (o->a > 0))
+        say(t, 0, "t = %s: jumped %s at h0 = %s (base at %s): F %s%s%s", tt, o->a > 0 ? "into contact" : "out of contact",
+            h0, v, F, o->a > 0 ? ", contact radius " : "", o->a > 0 ? a : "");
+    else
+        say(t, 0, "t = %s%s: h0 %s, F %s, %s%s (base %s at %s)", tt, s->walked ? " (kept, not solved again)" : "",
+            h0, F, o->a > 0 ? "a " : "not in contact", o->a > 0 ? a : "", o->branch > 0 ? "approaching" : "retracting", v);
+}
+
 /* Static mode: the point just reached, naming a fold when one was passed. */
 static void describe_point(tui *t)
 {
+    if (is_timed(t)) {
+        describe_time(t);
+        return;
+    }
     const tui_sim *s = &t->sim;
     const adh_obs *o = tui_sim_row(s);
     char h0[64], F[64], a[64];
@@ -250,7 +287,7 @@ static text96 pulloff_text(const tui *t, int where)
 /* Plain words about the step just done, naming jumps in and out. */
 static void describe_step(tui *t)
 {
-    if (is_static(t)) {
+    if (is_curve(t)) {
         describe_point(t);
         return;
     }
@@ -277,7 +314,18 @@ static int run_done(tui *t)
 {
     const adh_obs *o = tui_sim_row(&t->sim);
     char h0[64], F[64];
-    if (is_static(t)) {
+    if (is_curve(t) && is_timed(t)) {
+        const adh_visco_result *r = &t->sim.vres;
+        if (t->sim.cstatus != ADH_SUCCESS || tui_sim_redoable(&t->sim))
+            return 0;
+        char pl[64], tt[64];
+        fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
+        fmtq(r->time, ADH_Q_TIME, tt, sizeof tt);
+        say(t, 0, "cycle complete after %s (%zu steps, %zu jumps): pull-off %s, hysteresis %.4g fJ", tt,
+            t->sim.curve.nrows, r->jumps, pl, r->hysteresis * 1e15);
+        return 1;
+    }
+    if (is_curve(t)) {
         const adh_static_result *r = &t->sim.sres;
         if (t->sim.cstatus != ADH_SUCCESS || tui_sim_redoable(&t->sim))
             return 0;
@@ -400,10 +448,11 @@ static void write_plots(tui *t)
         say(t, 1, "nothing to plot yet: step first (f, or r to run)");
         return;
     }
-    /* the static curve's plots beside the relaxation's, not over them */
+    /* the static curve's plots (and physical time's) beside the
+     * relaxation's, not over them */
     char dir[PATH_MAX + 16];
     snprintf(dir, sizeof dir, "%s%s", config(t)->output.dir[0] ? config(t)->output.dir : "adhere-plots",
-             is_static(t) ? "/static" : "");
+             is_timed(t) ? "/time" : is_curve(t) ? "/static" : "");
     if (!t->headless) {
         say(t, 0, "writing plots to %s/ through gnuplot...", dir);
         draw(t);
@@ -446,17 +495,17 @@ static void key_changed(tui *t, const char *key)
     int u = t->view.utf8, turn = !strcmp(key, "protocol.turns"), eps = !strcmp(key, "solver.eps");
     size_t ncurve;
     tui_sim_curve(&t->sim, &ncurve);
-    if (is_static(t) && turn)
+    if (is_curve(t) && turn)
         say(t, 0, "turn = %s: the curve now ends there%s", val, ncurve ? "" : "; f or r follows it from the start");
     else if (turn && t->sim.edit_kept_path)
         say(t, 0, "turn = %s: r now loads to there (the path is kept)", val);
     else if (turn)
         say(t, 0, "turn = %s: the grid follows it (N = %zu, as --batch would choose); a new path starts from the "
             "start", val, tui_sim_grid(&t->sim)->nodes);
-    else if (is_static(t) && (ncurve || eps))
+    else if (is_curve(t) && (ncurve || eps))
         say(t, 0, "%s = %s: the equilibrium curve does not depend on it%s (the relaxation path restarts)",
             name, val, ncurve ? " and is kept" : "");
-    else if (is_static(t))
+    else if (is_curve(t))
         say(t, 0, "%s = %s: %s = %.4g, %s = %.4g mJ/m%s; the curve starts again from the start (f, or r to "
             "its end)", name, val, u ? "\xcf\x83" : "sigma", t->sim.der.sigma,
             u ? "\xce\xb3" : "gamma", t->sim.der.gamma * 1e3, u ? "\xc2\xb2" : "^2");
@@ -469,14 +518,15 @@ static void key_changed(tui *t, const char *key)
 typedef struct rows_out {
     const adh_obs *rows;
     size_t n;
+    int timed;   /* physical time: t and base first, as --batch's */
 } rows_out;
 
 static int rows_table(FILE *f, const void *ctx)
 {
     const rows_out *r = ctx;
-    adh_rows_header(f);
+    (r->timed ? adh_rows_header_timed : adh_rows_header)(f);
     for (size_t i = 0; i < r->n; i++)
-        adh_rows_write(f, &r->rows[i]);
+        (r->timed ? adh_rows_write_timed : adh_rows_write)(f, &r->rows[i]);
     return 0;
 }
 
@@ -487,7 +537,8 @@ static int rows_table(FILE *f, const void *ctx)
 static int write_rows(tui *t, const char *path, char *why, size_t whylen)
 {
     rows_out r;
-    r.rows = is_static(t) ? tui_sim_curve(&t->sim, &r.n) : tui_sim_rows(&t->sim, &r.n);
+    r.rows = is_curve(t) ? tui_sim_curve(&t->sim, &r.n) : tui_sim_rows(&t->sim, &r.n);
+    r.timed = is_timed(t);
     int e = adh_outfile_write(path, rows_table, &r);
     if (e)
         snprintf(why, whylen, "cannot write the rows to %s: %s", path, strerror(e));
@@ -615,7 +666,7 @@ static void move_history(tui *t, int redo, long n)
         size_t np;
         tui_sim_rows(&t->sim, &np);
         const char *name = key_value(t, edit, val, sizeof val);
-        if (is_static(t))
+        if (is_curve(t))
             say(t, 0, "%s the edit: %s = %s again (the relaxation path came back with it; f solves the curve)",
                 redo ? "redid" : "undid", name, val);
         else
@@ -624,7 +675,7 @@ static void move_history(tui *t, int redo, long n)
         return;
     }
     if (!done) {
-        if (is_static(t))
+        if (is_curve(t))
             say(t, 1, "nothing to %s", redo ? "redo: this is the last point computed (f computes more)"
                                          : o ? "undo: this is the first point of the curve" : "undo: no point yet");
         else
@@ -633,7 +684,7 @@ static void move_history(tui *t, int redo, long n)
         return;
     }
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
-    if (is_static(t))
+    if (is_curve(t))
         say(t, 0, "%s %ld point%s: at point %zu of %zu of the curve, h0 = %s (nothing solved again)",
             redo ? "forward" : "back", done, done == 1 ? "" : "s", t->sim.ccur + 1, t->sim.curve.nrows, h0);
     else
@@ -645,8 +696,12 @@ static void move_history(tui *t, int redo, long n)
  * it had, and the first step in static mode builds its solver. */
 static void toggle_mode(tui *t)
 {
+    if (is_timed(t)) {
+        say(t, 1, "m does nothing in physical time: :set material.material elastic leaves it");
+        return;
+    }
     stop_all(t);
-    tui_sim_set_mode(&t->sim, is_static(t) ? ADH_MODE_RELAX : ADH_MODE_STATIC);
+    tui_sim_set_mode(&t->sim, is_curve(t) ? ADH_MODE_RELAX : ADH_MODE_STATIC);
     size_t n;
     tui_sim_rows(&t->sim, &n);
     t->folds_seen = t->sim.sres.folds;
@@ -654,16 +709,26 @@ static void toggle_mode(tui *t)
     char h0[64] = "";
     if (o)
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
-    if (is_static(t) && o)
+    if (is_curve(t) && o)
         say(t, 0, "static equilibrium: back at point %zu of %zu of the curve, h0 = %s (nothing solved again)",
             t->sim.ccur + 1, t->sim.curve.nrows, h0);
-    else if (is_static(t))
+    else if (is_curve(t))
         say(t, 0, "static equilibrium: f solves the next point, r follows the curve through its folds, b walks back");
     else if (o)
         say(t, 0, "relaxation: back on the path at h0 = %s (%zu state%s, kept); m returns to the curve",
             h0, n, n == 1 ? "" : "s");
     else
         say(t, 0, "relaxation: f steps the spheres together and relaxes, r runs to the turn; m: static");
+}
+
+/* Up/Down n fields, over those on the panel (physical time's only in it). */
+static void select_move(tui *t, long n)
+{
+    int step = n < 0 ? P_COUNT - 1 : 1;
+    for (long k = labs(n); k > 0; k--)
+        do
+            t->view.sel = (t->view.sel + step) % P_COUNT;
+        while (!tui_sim_param_shown(&t->sim, (tui_param)t->view.sel));
 }
 
 /* A key on the help screen: PgUp/PgDn scroll, any other returns. */
@@ -689,11 +754,14 @@ static int run_key(tui *t)
 {
     char why[512];
     t->pending = 0;
-    if (is_static(t)) {
+    if (is_curve(t)) {
         char end[64];
         fmtq(tui_sim_curve_end(&t->sim), ADH_Q_LENGTH, end, sizeof end);
         t->run_dir = 1;
-        say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
+        if (is_timed(t))
+            say(t, 0, "running the cycle in physical time, the base back to h0 = %s; any key pauses", end);
+        else
+            say(t, 0, "following the equilibrium curve through its folds to h0 = %s; any key pauses", end);
         return TODO_RESOLVE;
     }
     size_t k;
@@ -771,15 +839,15 @@ static int handle_key(tui *t, int key)
         stop_all(t);
         tui_sim_reset(&t->sim);
         fmtq(t->sim.start, ADH_Q_LENGTH, st, sizeof st);
-        if (is_static(t))
+        if (is_curve(t))
             say(t, 0, "reset: the curve is forgotten (the relaxation path is kept); f solves it again from h0 = %s", st);
         else
             say(t, 0, "reset: the path is forgotten; the next step starts at h0 = %s", st);
         break;
     }
     case ACT_MODE: toggle_mode(t); break;
-    case ACT_SELECT_UP: t->view.sel = (int)((t->view.sel + P_COUNT - n % P_COUNT) % P_COUNT); break;
-    case ACT_SELECT_DOWN: t->view.sel = (int)((t->view.sel + n) % P_COUNT); break;
+    case ACT_SELECT_UP: select_move(t, -n); break;
+    case ACT_SELECT_DOWN: select_move(t, n); break;
     case ACT_EDIT:
     case ACT_COMMAND:
         t->editing = a == ACT_EDIT ? EDIT_PARAM : EDIT_COMMAND;
@@ -811,7 +879,7 @@ static void redo_todo(tui *t, int todo)
     if (todo & TODO_REPAINT)
         clearok(curscr, TRUE);
     if (todo & TODO_RESOLVE)
-        start_step(t, t->run_dir ? (is_static(t) ? +1 : 0) : t->pending_dir);
+        start_step(t, t->run_dir ? (is_curve(t) ? +1 : 0) : t->pending_dir);
     if (todo & TODO_REPLOT)
         write_plots(t);
     if (todo & (TODO_REDRAW | TODO_REPAINT))
@@ -902,15 +970,16 @@ static void run_next(tui *t)
                 return;
         }
     }
-    start_step(t, is_static(t) ? +1 : 0);
+    start_step(t, is_curve(t) ? +1 : 0);
 }
 
 static void progress(tui *t)
 {
-    if (is_static(t)) {
+    if (is_curve(t)) {
         char h0[64];
         fmtq(tui_sim_target(&t->sim), ADH_Q_LENGTH, h0, sizeof h0);
-        say(t, 0, "solving the equilibrium curve past h0 = %s (point %zu); any key stops", h0, t->sim.curve.nrows + 1);
+        say(t, 0, "solving the %s past h0 = %s (point %zu); any key stops", is_timed(t) ? "path in time"
+            : "equilibrium curve", h0, t->sim.curve.nrows + 1);
         draw(t);
         return;
     }
@@ -955,7 +1024,7 @@ static void loop(tui *t)
         if (t->run_dir) {
             /* a static point can take well under a millisecond: drawing
              * each would cost more than solving it */
-            if (!t->headless && (!is_static(t) || adh_clock_seconds() - t->last_draw > 0.05))
+            if (!t->headless && (!is_curve(t) || adh_clock_seconds() - t->last_draw > 0.05))
                 draw(t);
             run_next(t);
             continue;
@@ -1100,6 +1169,8 @@ int tui_main(const adh_config *cfg)
         say(&t, 0, "The screen relaxes step by step as the paper does; --mode=rigid is for --batch. ? lists every key.");
     else if (cfg->spec.mode == ADH_MODE_STATIC)
         say(&t, 0, "Static equilibrium: f solves the curve point by point, r follows it to the end, ? lists every key.");
+    else if (cfg->spec.mode == ADH_MODE_TIME)
+        say(&t, 0, "Physical time: f takes the next step in time, r runs the cycle, b walks back, ? lists every key.");
     else if (cfg->output.title[0])
         say(&t, 0, "%s. f steps in, r runs, ? lists every key.", cfg->output.title);
     else

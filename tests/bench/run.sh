@@ -20,6 +20,11 @@ echo
 # the static curve on the automatic resolved grid at sigma = 15, 22.5 and 75
 "$BUILD/tests/bench-static_soft"
 echo
+# the viscoelastic cycle against the relaxation's Figure 4 cycle (N = 1000,
+# dense and H^2) and against the static curve at sigma = 75 (issue 29's
+# goals: ratios of at most 1 and 6); BENCH_VISCO_SIGMA sets sigma
+"$BUILD/tests/bench-visco" "${BENCH_CYCLE_N:-1000}" "${BENCH_VISCO_SIGMA:-75}"
+echo
 # the relaxation goals of soft contacts through the CLI (BENCH_FIG6=1 adds
 # Figure 6: ~12 minutes)
 ADHERE=./adhere tests/bench/soft.sh

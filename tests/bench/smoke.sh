@@ -28,6 +28,9 @@ BENCH_N=100 bench relax 1 100
 bench static_soft 2.25
 # the whole static curve at N = 300 (shorter grids do not hold the contact)
 bench static 300
+# the viscoelastic cycle against the relaxation's (N = 100) and the static
+# curve's (sigma = 2.25)
+bench visco 100 2.25
 # the kernel storages at N = 200 and 400 (dense and hmat-oss at 200 only)
 bench operator 200 200 200 400
 # adhere fit on the shipped curve, one start, on a coarse grid

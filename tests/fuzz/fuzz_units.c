@@ -15,7 +15,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memcpy(text, data, size);
     text[size] = '\0';
     char why[256];
-    for (int q = ADH_Q_NONE; q <= ADH_Q_FORCE; q++) {
+    for (int q = ADH_Q_NONE; q <= ADH_Q_LAST; q++) {
         double v;
         if (adh_parse_quantity(text, (adh_quantity)q, &v, why, sizeof why) == 0 && !isfinite(v))
             abort(); /* accepted a non-finite value */

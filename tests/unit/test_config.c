@@ -210,6 +210,40 @@ static void studies(void)
        "a range reads back from its text (%s)", text);
     ok(set(&c, "sweep.turns", "none") == 0 && c.sweep.naxes == 1 && adh_config_nruns(&c) == 13, "turns = none drops the key");
 
+    /* physical time's sweeps are studies of its keys: the speed both ways,
+     * the retraction's alone, the spring */
+    adh_config_default(&c);
+    ok(set(&c, "material.material", "sls") == 0 && set(&c, "protocol.speed", "1nm/s") == 0 &&
+       set(&c, "sweep.speed_out", "1nm/s, 1mm/s") == 0 && !strcmp(c.sweep.axis[0].key, "protocol.speed_out"),
+       "[sweep] speed_out sweeps protocol.speed_out");
+    adh_config_sweep_run(&c, 1, &run);
+    ok(run.mode == ADH_MODE_TIME && run.time.speed_out == 1e-3 && run.time.speed_in == 1e-9,
+       "run 2 retracts at 1 mm/s, approaching at the scene's 1 nm/s");
+    ok(set(&c, "sweep.speed_out", "none") == 0 && set(&c, "sweep.speed", "1um/s, 2um/s") == 0 &&
+       !strcmp(c.sweep.axis[0].key, "protocol.speed"), "[sweep] speed sweeps protocol.speed");
+    adh_config_sweep_run(&c, 1, &run);
+    ok(run.time.speed_in == 2e-6 && run.time.speed_out == 2e-6, "run 2 moves at 2 um/s both ways");
+    adh_config_default(&c);
+    ok(set(&c, "scene.mode", "static") == 0 && set(&c, "sweep.spring", "0.1, 40") == 0 &&
+       !strcmp(c.sweep.axis[0].key, "protocol.spring"), "[sweep] spring sweeps protocol.spring");
+    adh_config_sweep_run(&c, 1, &run);
+    ok(run.mode == ADH_MODE_STATIC && run.time.spring == 40 && (run.time.given & ADH_TIME_MODE),
+       "run 2: k = 40 N/m on the static curve, the mode as given");
+    ok(set(&c, "sweep.spring", "40, 0.1, 1") == 0 && adh_sweep_drives(&c) == 1,
+       "springs swept on the static curve share one drive (the curve does not depend on k)");
+    adh_sweep_drive_spec(&c, 0, &run);
+    adh_run_spec soft;
+    adh_config_sweep_run(&c, 1, &soft);
+    adh_run_spec stiff;
+    adh_config_sweep_run(&c, 0, &stiff);
+    ok(run.time.spring == 0.1 && adh_config_start(&run) == adh_config_start(&soft) &&
+       adh_config_start(&soft) > adh_config_start(&stiff),
+       "the drive is the softest spring's, from its start outside every snap-in (%g m)", adh_config_start(&run));
+    adh_config_default(&c);
+    set(&c, "material.material", "sls");
+    ok(set(&c, "sweep.spring", "40, 0.1") == 0 && adh_sweep_drives(&c) == 2, "in physical time each spring is a run of its own");
+    ok(set(&c, "sweep.spring", "0, 1") != 0, "a spring of 0 N/m is refused as a swept value");
+
     adh_config_default(&c);
     ok(set(&c, "sweep.nodes", "100 .. 1000, log, 4") == 0 && adh_sweep_value(&c.sweep.axis[0], 1, NULL, 0) == 215,
        "a count's range is rounded: 100, 215, 464, 1000");

@@ -1,0 +1,132 @@
+/* Physical time for the CLI: a run of the viscoelastic step rule, and what
+ * the tables say of it. */
+#include "cli/timerun.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/drive.h"
+#include "adhere/rule_visco.h"
+#include "adhere/status.h"
+
+int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k, adh_step_cb cb, void *ctx,
+                 adh_run *run, cli_time_out *out)
+{
+    memset(out, 0, sizeof *out);
+    adh_config_visco(spec, &out->vs);
+    adh_drive *d = adh_drive_alloc(&adh_rule_visco, g, k);
+    if (!d) {
+        run->status = ADH_ENOMEM;
+        return run->status;
+    }
+    int rc = adh_drive_set(d, &spec->mat, &out->vs, &spec->proto, run);
+    if (rc == ADH_SUCCESS)
+        rc = adh_runner_drive(d, cb, ctx);
+    const adh_visco *w = adh_rule_visco_solver(d);
+    if (w) {
+        adh_visco_summary(w, &out->res);
+        const adh_visco_event *ev;
+        size_t n = adh_visco_events(w, &ev);
+        out->ev = n ? malloc(n * sizeof *ev) : NULL;
+        if (out->ev) {
+            memcpy(out->ev, ev, n * sizeof *ev);
+            out->nev = n;
+        }
+    }
+    adh_rule_visco_take(d, run);
+    adh_drive_free(d);
+    run->status = rc;
+    return rc;
+}
+
+void cli_time_out_free(cli_time_out *out)
+{
+    free(out->ev);
+    out->ev = NULL;
+    out->nev = 0;
+}
+
+size_t cli_time_keys(const cli_time_out *o, cli_tables_extra *x)
+{
+    const adh_visco_result *r = &o->res;
+    const adh_visco_energy *c = &r->cycle;
+    const cli_tables_extra v[] = {
+        { "E0", o->vs.sls.E0 },
+        { "Einf", o->vs.sls.Einf },
+        { "tau", o->vs.sls.tau },
+        { "speed_in", o->vs.drive.speed_in },
+        { "speed_out", o->vs.drive.speed_out },
+        { "dwell_time", o->vs.drive.dwell },
+        { "spring", o->vs.drive.spring },
+        { "jump_in_t", r->jump_in_t },
+        { "jump_in_base", r->jump_in_base },
+        { "pulloff_t", r->pulloff_t },
+        { "pulloff_base", r->pulloff_base },
+        { "jump_out_t", r->jump_out_t },
+        { "jump_out_base", r->jump_out_base },
+        { "hysteresis", r->hysteresis },
+        { "dissipated", c->dissipated },
+        { "jump_loss", c->jumps },
+        { "stored_change", c->stored - c->stored0 },
+        { "time", r->time },
+        { "time_steps", (double)r->steps },
+        { "jumps", (double)r->jumps },
+        { "jumps_relaxed", (double)r->jumps_relaxed },
+        { "folds_resumed", (double)r->folds_resumed },
+        { "newton_iterations", (double)r->newton },
+        { "krylov_iterations", (double)r->krylov },
+        { "tolerance", o->vs.s.tol },
+    };
+    size_t n = sizeof v / sizeof v[0];
+    memcpy(x, v, n * sizeof *v);
+    return n;
+}
+
+size_t cli_time_snap_keys(const adh_run *curve, double k, double *store, cli_tables_extra *x)
+{
+    double at[64], base[64];
+    size_t nf = adh_visco_spring_folds(curve, k, at, base, 64);
+    if (nf > 64)
+        nf = 64;
+    store[0] = k;
+    store[1] = nf ? at[0] : NAN;
+    store[2] = nf ? base[0] : NAN;
+    store[3] = nf >= 2 ? at[nf - 1] : NAN;
+    store[4] = nf >= 2 ? base[nf - 1] : NAN;
+    static const char *const names[CLI_TIME_SNAP_KEYS] = { "spring", "snap_in_h0", "snap_in_base", "snap_out_h0",
+                                                           "snap_out_base" };
+    for (size_t i = 0; i < CLI_TIME_SNAP_KEYS; i++) {
+        x[i].key = names[i];
+        x[i].value = store[i];
+    }
+    return CLI_TIME_SNAP_KEYS;
+}
+
+static const char *event_word(int kind)
+{
+    switch (kind) {
+    case ADH_VISCO_JUMP: return "jump";
+    case ADH_VISCO_CONTACT: return "contact";
+    case ADH_VISCO_PULLOFF: return "pulloff";
+    case ADH_VISCO_TURN: return "turn";
+    case ADH_VISCO_UNLOAD: return "unload";
+    case ADH_VISCO_END: return "end";
+    }
+    return "?";
+}
+
+int cli_time_events(FILE *f, const void *vo)
+{
+    const cli_time_out *o = vo;
+    fputs("# adhere " ADH_VERSION "\n# events in physical time, SI units (s, m, N, J): jump (a fold of the "
+          "instantaneous problem or the spring's instability, before and after), contact formed or lost without "
+          "a jump, pulloff (a force minimum on unloading), turn, unload (retraction begins), end\n", f);
+    fputs("event\tpath\tt\tbase\th0\tF\ta\th0_after\tF_after\ta_after\tloss\n", f);
+    for (size_t i = 0; i < o->nev; i++) {
+        const adh_visco_event *e = &o->ev[i];
+        fprintf(f, "%s\t%d\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", event_word(e->kind),
+                e->path, e->t, e->base, e->h0, e->F, e->a, e->h0_after, e->F_after, e->a_after, e->loss);
+    }
+    return 0;
+}

@@ -1,0 +1,128 @@
+/* The standard linear solid as a step rule (adhere/rule_visco.h): a curve
+ * rule over the viscoelastic solver (adhere/visco.h), whose own record
+ * keeps the turns and profiles; each step hands the drive its row. */
+#include "adhere/rule_visco.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/status.h"
+
+typedef struct visco_rule {
+    adh_visco *w;
+    adh_run run;       /* the solver's record */
+    int first;         /* the status the first step reports */
+    int started;
+} visco_rule;
+
+static void *visco_alloc(const adh_grid *g, const adh_kernel *k)
+{
+    visco_rule *r = calloc(1, sizeof *r);
+    if (!r || !(r->w = adh_visco_alloc(g, k))) {
+        free(r);
+        return NULL;
+    }
+    adh_run_init(&r->run);
+    return r;
+}
+
+static void visco_free(void *vr)
+{
+    visco_rule *r = vr;
+    if (!r)
+        return;
+    adh_visco_free(r->w);
+    adh_run_free(&r->run);
+    free(r);
+}
+
+static int visco_set(void *vr, const adh_material *m, const void *settings, const adh_protocol_settings *ps,
+                     double start)
+{
+    visco_rule *r = vr;
+    adh_visco_rule_settings vs = settings ? *(const adh_visco_rule_settings *)settings
+                                          : adh_visco_rule_settings_default(m->E);
+    adh_protocol_settings p = *ps;
+    /* the drive's automatic start is the elastic one; under a spring the
+     * solver's own lies outside the snap-in */
+    p.start = isnan(ps->start) && isfinite(vs.drive.spring) ? NAN : start;
+    adh_run_free(&r->run);
+    adh_run_init(&r->run);
+    r->started = 0;
+    int rc = adh_visco_set(r->w, m, &vs.sls, &vs.drive, &vs.s, &p, &r->run, NULL, 0);
+    r->first = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;
+    return rc == ADH_EINVAL ? ADH_EINVAL : ADH_SUCCESS;
+}
+
+static int visco_next(void *vr)
+{
+    visco_rule *r = vr;
+    if (!r->started) {
+        r->started = 1;
+        if (r->first != ADH_CONTINUE)
+            return r->first;
+    }
+    int rc = adh_visco_iterate(r->w);
+    return rc == ADH_CONTINUE && adh_visco_last(r->w) ? ADH_SUCCESS : rc;
+}
+
+static double visco_jump_in(const void *vr)
+{
+    const visco_rule *r = vr;
+    adh_visco_result res;
+    adh_visco_summary(r->w, &res);
+    return res.jump_in_h0;
+}
+
+static void visco_observe(const void *vr, adh_obs *o)
+{
+    const visco_rule *r = vr;
+    *o = r->run.rows[r->run.nrows - 1];
+}
+
+static const adh_state *visco_state(const void *vr)
+{
+    const visco_rule *r = vr;
+    return adh_visco_state(r->w);
+}
+
+const adh_rule_type adh_rule_visco = {
+    .name = "visco",
+    .alloc = visco_alloc,
+    .free = visco_free,
+    .set = visco_set,
+    .next = visco_next,
+    .jump_in = visco_jump_in,
+    .observe = visco_observe,
+    .state = visco_state,
+};
+
+const adh_visco *adh_rule_visco_solver(const adh_drive *d)
+{
+    const visco_rule *r = adh_drive_workspace(d, &adh_rule_visco);
+    return r ? r->w : NULL;
+}
+
+const adh_run *adh_rule_visco_record(const adh_drive *d)
+{
+    const visco_rule *r = adh_drive_workspace(d, &adh_rule_visco);
+    return r ? &r->run : NULL;
+}
+
+void adh_rule_visco_take(adh_drive *d, adh_run *run)
+{
+    visco_rule *r = adh_drive_workspace(d, &adh_rule_visco);
+    if (!r)
+        return;
+    memcpy(run->turns, r->run.turns, sizeof run->turns);
+    run->nturns = r->run.nturns;
+    for (size_t i = 0; i < run->nprofiles; i++)
+        free(run->profiles[i].u);   /* h and p share its block (adh_run_push_profile) */
+    free(run->profiles);
+    run->profiles = r->run.profiles;
+    run->nprofiles = r->run.nprofiles;
+    run->profiles_cap = r->run.profiles_cap;
+    r->run.profiles = NULL;
+    r->run.nprofiles = r->run.profiles_cap = 0;
+}

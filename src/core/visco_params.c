@@ -1,0 +1,81 @@
+/* The viscoelastic solver's inputs (adhere/visco.h): defaults and the one
+ * check of each, for every driver. */
+#include "adhere/visco.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "adhere/status.h"
+
+#define BAD(...)                                   \
+    do {                                           \
+        if (why)                                   \
+            snprintf(why, whylen, __VA_ARGS__);    \
+        return ADH_EINVAL;                         \
+    } while (0)
+
+int adh_sls_validate(const adh_sls *v, char *why, size_t whylen)
+{
+    if (!(v->E0 >= 1e3 && v->E0 <= 1e12))
+        BAD("E0 = %g Pa is not allowed: the relaxed modulus must be from 1 kPa to 1 TPa", v->E0);
+    if (!(v->Einf >= 1e3 && v->Einf <= 1e12))
+        BAD("Einf = %g Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa", v->Einf);
+    if (!(v->Einf >= v->E0))
+        BAD("Einf = %g Pa is below E0 = %g Pa: a standard linear solid is stiffest at first (Einf >= E0)",
+            v->Einf, v->E0);
+    if (!(v->tau > 0 && v->tau <= 1e6))
+        BAD("tau = %g s is not allowed: the relaxation time must be above 0 and at most 1e6 s", v->tau);
+    return ADH_SUCCESS;
+}
+
+adh_visco_drive adh_visco_drive_default(void)
+{
+    adh_visco_drive d = { .speed_in = 1e-6, .speed_out = 1e-6, .dwell = 0, .spring = INFINITY };
+    return d;
+}
+
+int adh_visco_drive_validate(const adh_visco_drive *d, char *why, size_t whylen)
+{
+    if (!(d->speed_in > 0 && d->speed_in <= 1))
+        BAD("approach speed %g m/s is not allowed: it must be above 0 and at most 1 m/s", d->speed_in);
+    if (!(d->speed_out > 0 && d->speed_out <= 1))
+        BAD("retraction speed %g m/s is not allowed: it must be above 0 and at most 1 m/s", d->speed_out);
+    if (!(d->dwell >= 0 && d->dwell <= 1e6))
+        BAD("dwell = %g s is not allowed: it must be from 0 to 1e6 s", d->dwell);
+    if (!(d->spring > 0))
+        BAD("spring k = %g N/m is not allowed: it must be above 0 (inf: displacement control)", d->spring);
+    return ADH_SUCCESS;
+}
+
+adh_visco_settings adh_visco_settings_default(void)
+{
+    adh_visco_settings s = {
+        .tol = 1e-4,
+        .active_tol = 0.1,
+        .max_steps = 200000,
+        .max_jump_steps = 20000,
+        .cancel = NULL,
+    };
+    return s;
+}
+
+int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t whylen)
+{
+    if (!(s->tol >= 1e-10 && s->tol <= 1e-2))
+        BAD("time tolerance %g is not allowed: it must be from 1e-10 to 1e-2", s->tol);
+    if (!(s->active_tol >= 0 && s->active_tol <= 1))
+        BAD("active_tol %g is not allowed: it must be from 0 to 1", s->active_tol);
+    if (s->max_steps < 10 || s->max_jump_steps < 10)
+        BAD("max_steps (%zu) and max_jump_steps (%zu) must be at least 10", s->max_steps, s->max_jump_steps);
+    return ADH_SUCCESS;
+}
+
+adh_visco_rule_settings adh_visco_rule_settings_default(double E)
+{
+    adh_visco_rule_settings r = {
+        .sls = { .E0 = E, .Einf = E, .tau = 1e-3 },
+        .drive = adh_visco_drive_default(),
+        .s = adh_visco_settings_default(),
+    };
+    return r;
+}

@@ -1,0 +1,161 @@
+#!/bin/sh
+# Physical time from the command line (mode time, issue 29): what a mode
+# cannot use is refused with the reason (exit 2, nothing written); a
+# viscoelastic cycle writes its tables in seconds (force.tsv with t and
+# base, events.tsv, summary's hysteresis and dissipated, which close the
+# energy balance), its figures and a plan that says it runs in time; a
+# spring on the static curve gives snap points where dF/dh0 = k; sweeps of
+# the speed and the spring.
+. "$(dirname "$0")/lib.sh"
+
+bad() { # bad "expected text" args...
+    want=$1; shift
+    out="$TMP/out$T"
+    "$ADHERE" --batch -q -o "$out" "$@" >"$TMP/stdout" 2>"$TMP/stderr"
+    rc=$?
+    msg=$(cat "$TMP/stderr")
+    if [ "$rc" -eq 2 ] && grep -q -- "$want" "$TMP/stderr" && [ ! -e "$out" ] && [ "$(wc -l <"$TMP/stderr")" -eq 1 ]; then
+        ok "$* -> exit 2: $msg"
+    else
+        not_ok "$* -> exit $rc (want 2 and '$want', nothing written): $msg"
+    fi
+}
+bad "is below --E0=3e+08 Pa: a standard linear solid is stiffest at first" --material=sls --Einf=0.1GPa
+bad "tau = 0 s is not allowed" --material=sls --tau=0
+bad "tau = -1e-06 s is not allowed" --material=sls --tau=-1us
+bad "approach speed 0 m/s is not allowed" --material=sls --speed=0
+bad "retraction speed -1e-06 m/s is not allowed" --material=sls --speed=1um/s,-1um/s
+bad "spring k = 0 N/m is not allowed" --mode=static --spring=0
+bad "spring k = -1 N/m is not allowed" --mode=static --spring=-1N/m
+bad "'2GPa' is a pressure" --material=sls --tau=2GPa
+bad "'sticky' is not a material: use elastic or sls" --material=sticky
+bad "--Einf is a standard linear solid's: --material=elastic cannot use it" --Einf=3GPa
+bad "--tau is a standard linear solid's" --mode=time --tau=1ms
+bad "--material=sls runs in physical time: --mode=static cannot use it" --material=sls --mode=static
+bad "--material=sls runs in physical time: --mode=rigid cannot use it" --mode=rigid --material=sls
+bad "--speed is physical time's: --mode=relax steps the drive in eps-time" --speed=1um/s
+bad "--dwell-time is physical time's" --mode=static --dwell-time=1ms
+bad "--spring is not allowed with --mode=relax" --spring=1N/m
+bad "--spring is not allowed with --mode=rigid" --mode=rigid --spring=1N/m
+bad "--dwell=5 counts relaxation iterations: in physical time the hold at a turn is --dwell-time" --material=sls --dwell=5
+printf '[scene]\nmode = relax\n[sweep]\nspeed = 1um/s, 2um/s\n' >"$TMP/sw.scene"
+bad "sweep run 1 (speed = 1e-06): --speed is physical time's: --mode=relax steps the drive in eps-time" "$TMP/sw.scene"
+printf '[material]\nmaterial = sls\n[sweep]\neps = 1pm, 2pm\n' >"$TMP/eps.scene"
+bad "physical time has none" "$TMP/eps.scene"
+printf '[material]\nmaterial = sls\n[sweep]\nE = 1GPa, 2GPa\nplot = snap\n' >"$TMP/snap.scene"
+bad "sweep.plot = snap draws the snap points against the spring: a sweep of spring" "$TMP/snap.scene"
+printf '[material]\nmaterial = sls\n[sweep]\nspeed = 1um/s, 2um/s\ntau = 1ms, 2ms\nplot = speed\n' >"$TMP/speed2.scene"
+bad "sweep.plot = speed draws one swept key: the study varies 2" "$TMP/speed2.scene"
+
+# the plan says what runs
+"$ADHERE" --plan visco >"$TMP/plan" 2>&1
+check "--plan visco: mode time" grep -q '^mode: time (physical time' "$TMP/plan"
+check "--plan visco: the solid" grep -qF 'material: standard linear solid: E0 = 300 MPa (relaxed, sigma 7.503), Einf = 3 GPa (instantaneous, sigma 0.7503), tau = 1 ms' "$TMP/plan"
+check "--plan visco: the drive and the time it spans" sh -c "grep -qF 'drive: the base at 1 um/s approaching, 1 um/s retracting' '$TMP/plan' && grep -q '^time: about 43.9 ms' '$TMP/plan'"
+check "--plan visco stores events.tsv" grep -q '^stored: events.tsv' "$TMP/plan"
+check "--plan visco: summary.tsv with the solid, the drive, hysteresis and dissipated" grep -q "^stored: summary.tsv: .*the solid and the drive, hysteresis, dissipated" "$TMP/plan"
+"$ADHERE" --plan visco-speed >"$TMP/plans" 2>&1
+check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans' && grep -q '^stored: sweep.tsv: .*hysteresis, dissipated, time' '$TMP/plans'"
+check "--plan visco-speed: no eps-time estimate, no eps in its run lines" sh -c "grep -q '^time: not estimated in CPU seconds: in physical time' '$TMP/plans' && grep -q '^expected time: not estimated in physical time' '$TMP/plans' && ! grep -q '^run [0-9]*: .*eps =' '$TMP/plans' && ! grep -q 'iterations, each about one kernel product' '$TMP/plans'"
+"$ADHERE" --plan afm >"$TMP/plana" 2>&1
+check "--plan afm: one static curve serves every k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^skip: a curve per k: the 9 runs .* share 1 static curve ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
+"$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
+check "--plan fig4 (elastic) does not run in time" sh -c "grep -q '^mode: relax' '$TMP/plan4' && ! grep -q 'events.tsv\|^material:' '$TMP/plan4'"
+
+# a viscoelastic cycle, coarse
+d="$TMP/v"
+"$ADHERE" --batch -q visco -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+rc=$?
+check "adhere --batch visco -N 150 --force exits 0 ($rc: $(head -c 300 "$TMP/stderr"))" [ "$rc" -eq 0 ]
+for f in force.tsv summary.tsv turns.tsv events.tsv profiles.tsv force.png profile.png contact.png contact.tsv; do
+    check "visco wrote $f" [ -s "$d/$f" ]
+done
+hdr=$(grep -v '^#' "$d/force.tsv" | head -1 | cut -f1-4)
+check "force.tsv begins with t, base, h0, F ($hdr)" [ "$hdr" = "$(printf 't\tbase\th0\tF')" ]
+check "the time never goes back over the rows" sh -c "grep -v '^#' '$d/force.tsv' | tail -n +2 | awk -F'\t' 'NR > 1 && \$1 < t - 1e-15 {bad = 1} {t = \$1} END {exit bad}'"
+check "without a spring the base is h0 on every row" sh -c "grep -v '^#' '$d/force.tsv' | tail -n +2 | awk -F'\t' '\$2 != \$3 {bad = 1} END {exit bad}'"
+sv() { awk -F'\t' -v k="$1" '$1 == k {print $2}' "$d/summary.tsv"; }
+check "summary: mode time, material sls" sh -c "[ '$(sv mode)' = time ] && [ '$(sv material)' = sls ]"
+for k in E0 Einf tau speed_in speed_out hysteresis dissipated jump_loss time pulloff_F pulloff_t jump_in_t jump_out_t time_steps; do
+    check "summary has $k ($(sv $k))" sh -c "[ -n '$(sv $k)' ] && [ '$(sv $k)' != nan ]"
+done
+check "the cycle's energy closes: hysteresis = dissipated + jump losses + stored change within 1 %" awk \
+    "BEGIN {h = $(sv hysteresis); s = $(sv dissipated) + $(sv jump_loss) + $(sv stored_change); exit !(h > 0 && (h - s) / h < 0.01 && (s - h) / h < 0.01)}"
+check "the time spans the protocol: start to -5 nm and back at 1 um/s ($(sv time) s)" awk \
+    "BEGIN {T = 2 * ($(sv start) + 5e-9) / 1e-6; exit !($(sv time) >= T * (1 - 1e-9) && $(sv time) < 1.1 * T)}"
+check "events.tsv: a jump in on loading and out on unloading" sh -c "grep -c '^jump	0	' '$d/events.tsv' | grep -qx 1 && grep -q '^jump	1	' '$d/events.tsv'"
+check "the jump out's time is the summary's" sh -c "grep '^jump	1	' '$d/events.tsv' | cut -f3 | grep -qxF '$(sv jump_out_t)'"
+"$ADHERE" --batch -q visco -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "visco again into the same directory: events.tsv is adhere's to replace ($(head -c 300 "$TMP/stderr"))" [ $? -eq 0 ]
+check "contact.tsv: speeds from the time (physical time's header)" grep -q '^# physical time: da_dt the central difference in t' "$d/contact.tsv"
+
+# the static curve through a spring: the snap points
+d="$TMP/s"
+"$ADHERE" --batch -q --mode=static --spring=5N/m -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "--mode=static --spring=5N/m exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
+check "its summary: snap-in outside the jump-in fold, the base further out than the sphere" awk -F'\t' \
+    '$1 == "snap_in_h0" {h = $2} $1 == "snap_in_base" {b = $2} $1 == "jump_in_h0" {j = $2} END {exit !(h > j && b > h)}' "$d/summary.tsv"
+check "and the snap-out's base lies F/k out, past the pull-off's h0" awk -F'\t' \
+    '$1 == "snap_out_base" {b = $2} $1 == "pulloff_h0" {p = $2} END {exit !(b > p)}' "$d/summary.tsv"
+
+# tsvcol FILE NAME: column NAME of sweep.tsv FILE, one value a row (run order)
+cat >"$TMP/tsvcol" <<'EOF'
+grep -v '^#' "$1" | awk -F'\t' -v n="$2" 'NR == 1 {for (i = 1; i <= NF; i++) if ($i == n) c = i; next} c {print $c}'
+EOF
+
+# a spring swept over one static curve: the softer, the further out
+d="$TMP/afm"
+"$ADHERE" --batch -q afm -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "afm -N 150 --force exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
+check "afm wrote snap.png and sweep.tsv" [ -s "$d/snap.png" -a -s "$d/sweep.tsv" ]
+check "snap-in's base moves out monotonically as k softens from 40 to 0.1 N/m" sh -c \
+    "[ \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base | awk 'NR > 1 && \$1 >= b {bad = 1} {b = \$1} END {print (bad || NR != 9) ? \"no\" : \"yes\"}') = yes ]"
+check "rigid spheres' snap-in base (eq 22) within 10 % of the sphere's at 0.1 N/m, where the spring is soft" sh -c \
+    "paste \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base >'$TMP/sb'; echo '$TMP/sb') \$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base_rigid >'$TMP/sr'; echo '$TMP/sr') | head -1 | awk '{exit !(\$2 > 0.9 * \$1 && \$2 < 1.1 * \$1)}'"
+check "every run of the afm study shares the one curve" sh -c "[ \$(cat '$d'/run-*/force.tsv | grep -v '^#' | sort -u | wc -l) -eq \$(grep -v '^#' '$d/run-1/force.tsv' | wc -l) ]"
+"$ADHERE" --batch -q afm -N 150 --force --sweep=spring=40 -o "$TMP/afm40" >"$TMP/stdout" 2>"$TMP/stderr"
+check "40 N/m's curve alone (its own start) has the shared curve's snap-in base within 1e-5" sh -c \
+    "a=\$(sh '$TMP/tsvcol' '$TMP/afm40/sweep.tsv' snap_in_base); b=\$(sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base | tail -1); awk -v a=\$a -v b=\$b 'BEGIN {exit !(a > 0 && b > 0 && (a - b) / a < 1e-5 && (b - a) / a < 1e-5)}'"
+check "each row's snap points are its run's summary.tsv's" sh -c \
+    "sh '$TMP/tsvcol' '$d/sweep.tsv' snap_in_base >'$TMP/rows'; for k in 1 2 3 4 5 6 7 8 9; do awk -F'\t' '\$1 == \"snap_in_base\" {print \$2}' '$d'/run-\$k/summary.tsv; done | cmp -s - '$TMP/rows'"
+
+# the speed sweep, two speeds: the faster retraction pulls off harder
+printf '[material]\nmaterial = sls\n[protocol]\nturns = -5nm\nspeed = 10nm/s\n[sweep]\nspeed_out = 10nm/s, 1mm/s\nplot = speed\n[output]\nplots = none\n' >"$TMP/speed.scene"
+d="$TMP/sp"
+"$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "a speed sweep exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
+check "it wrote speed.png" [ -s "$d/speed.png" ]
+check "sweep.tsv: mode time, the retraction speeds swept, the approach the scene's" sh -c \
+    "[ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' mode | sort -u)\" = time ] && [ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' speed_out | tr '\n' ' ')\" = '1e-08 0.001 ' ] && [ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' speed_in | sort -u)\" = 1e-08 ]"
+check "the faster retraction's pull-off is larger and below Einf/E0 times the slow one" sh -c \
+    "sh '$TMP/tsvcol' '$d/sweep.tsv' pulloff_F | awk '{p[NR] = -\$1} END {exit !(NR == 2 && p[2] > 1.5 * p[1] && p[2] < 10 * p[1])}'"
+for k in hysteresis dissipated jump_in_base pulloff_t time; do
+    check "row 2's $k is its run's summary.tsv's" sh -c \
+        "[ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' $k | sed -n 2p)\" = \"\$(awk -F'\t' '\$1 == \"$k\" {print \$2}' '$d/run-2/summary.tsv')\" ] && [ -n \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' $k | sed -n 2p)\" ]"
+done
+check "each row's status is its run's summary.tsv's ($(sh "$TMP/tsvcol" "$d/sweep.tsv" status | tr '\n' ' '))" sh -c \
+    "for k in 1 2; do w=\$(awk -F'\t' '\$1 == \"status\" {print \$2}' '$d'/run-\$k/summary.tsv); \
+     grep -v '^#' '$d/sweep.tsv' | awk -F'\t' -v k=\$k -v w=\"\$w\" '\$1 == k {f = 1; if (\$NF != w || w == \"\") exit 1} END {exit !f}' || exit 1; done"
+cp "$d/sweep.tsv" "$TMP/sp1.tsv"
+"$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "the speed study again: resumed, the same rows, speed.png drawn again ($(head -c 300 "$TMP/stderr"))" sh -c \
+    "[ $? -eq 0 ] && cmp -s '$TMP/sp1.tsv' '$d/sweep.tsv' && [ -s '$d/speed.png' ]"
+# the same study in 2 shards, joined by adhere merge: the whole study's table and speed.png
+for k in 1 2; do
+    "$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force --shard $k/2 -o "$TMP/spshard$k" >"$TMP/stdout" 2>"$TMP/stderr"
+done
+"$ADHERE" merge -o "$TMP/spmerged" "$TMP/spshard2" "$TMP/spshard1" 2>"$TMP/merge.err"
+check "merge joins the 2 shards of the speed study (exit $?: $(head -c 200 "$TMP/merge.err"))" [ -s "$TMP/spmerged/sweep.tsv" ]
+sc=$(grep -v '^#' "$d/sweep.tsv" | head -1 | tr '\t' '\n' | grep -nx seconds | cut -d: -f1)
+check "the merged sweep.tsv is the whole study's but for its timing column ($sc) and speed.png is drawn" sh -c \
+    "untimed() { grep -v '^# scene:' \"\$1\" | cut -f1-$((sc - 1)),$((sc + 1))-; }; untimed '$d/sweep.tsv' >'$TMP/a'; untimed '$TMP/spmerged/sweep.tsv' >'$TMP/b'; cmp -s '$TMP/a' '$TMP/b' && [ -s '$TMP/spmerged/speed.png' ]"
+# a study of any key runs in time: tau and the speed, their product
+printf '[material]\nmaterial = sls\n[protocol]\nturns = -3nm\n[sweep]\ntau = 1ms, 1us\nspeed = 1um/s, 10um/s\n[output]\nplots = none\n' >"$TMP/prod.scene"
+d="$TMP/prod"
+"$ADHERE" --batch -q "$TMP/prod.scene" -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
+check "a product of tau and speed in time exits 0 ($(head -c 200 "$TMP/stderr"))" [ $? -eq 0 ]
+check "its rows: tau slowest, speed both ways, events.tsv in every run" sh -c \
+    "[ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' tau | tr '\n' ' ')\" = '0.001 0.001 9.9999999999999995e-07 9.9999999999999995e-07 ' ] && [ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' speed_out | tr '\n' ' ')\" = '9.9999999999999995e-07 9.9999999999999991e-06 9.9999999999999995e-07 9.9999999999999991e-06 ' ] && [ -s '$d/run-4/events.tsv' ]"
+check "tau = 1 ms: 10 um/s pulls off harder than 1 um/s; tau = 1 us: within 1 % (speed x tau far below z0, the relaxed limit)" sh -c \
+    "sh '$TMP/tsvcol' '$d/sweep.tsv' pulloff_F | awk '{p[NR] = -\$1} END {exit !(NR == 4 && p[2] > 1.05 * p[1] && p[4] < 1.01 * p[3] && p[3] < 1.01 * p[4])}'"
+done_testing

@@ -1,0 +1,118 @@
+/* Every way the viscoelastic solver refuses or stops, provoked: bad
+ * materials, drives and settings refused with a sentence naming the value,
+ * a start in contact, the cancel flag, a callback that stops, the step
+ * cap, the grid's edge; and after a final status every call returns it. */
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "adhere/rule_visco.h"
+#include "adhere/runner.h"
+#include "tap.h"
+#include "visco_fixture.h"
+
+static void refused(const char *what, int rc, const char *why, const char *needle)
+{
+    ok(rc == ADH_EINVAL && strstr(why, needle) != NULL, "%s refused: \"%s\"", what, why);
+}
+
+static int stop_after(const adh_obs *row, const adh_run *run, void *ctx)
+{
+    return run->nrows >= *(const size_t *)ctx;
+}
+
+int main(void)
+{
+    char why[256];
+    adh_sls good = { 1e9, 1e10, 1e-3 }, v = good;
+    ok(adh_sls_validate(&good, why, sizeof why) == ADH_SUCCESS, "a standard linear solid is accepted");
+    v.Einf = 0.5e9;
+    refused("Einf < E0", adh_sls_validate(&v, why, sizeof why), why, "below E0");
+    v = good, v.tau = 0;
+    refused("tau = 0", adh_sls_validate(&v, why, sizeof why), why, "tau = 0");
+    v = good, v.tau = NAN;
+    refused("tau NaN", adh_sls_validate(&v, why, sizeof why), why, "tau");
+    v = good, v.E0 = -1;
+    refused("E0 < 0", adh_sls_validate(&v, why, sizeof why), why, "E0 = -1");
+
+    adh_visco_drive d = adh_visco_drive_default(), e = d;
+    ok(adh_visco_drive_validate(&d, why, sizeof why) == ADH_SUCCESS && isinf(d.spring),
+       "the default drive (1 um/s, no spring) is accepted");
+    e.speed_in = 0;
+    refused("approach speed 0", adh_visco_drive_validate(&e, why, sizeof why), why, "approach speed 0");
+    e = d, e.speed_out = -1e-6;
+    refused("retraction speed < 0", adh_visco_drive_validate(&e, why, sizeof why), why, "retraction speed");
+    e = d, e.spring = 0;
+    refused("k = 0", adh_visco_drive_validate(&e, why, sizeof why), why, "spring k = 0");
+    e = d, e.dwell = -1;
+    refused("dwell < 0", adh_visco_drive_validate(&e, why, sizeof why), why, "dwell = -1");
+    adh_visco_settings s = adh_visco_settings_default();
+    s.tol = 0;
+    refused("tolerance 0", adh_visco_settings_validate(&s, why, sizeof why), why, "tolerance 0");
+
+    fixture f = fix_open(100, 1.0);
+    adh_visco *w = adh_visco_alloc(f.g, f.k);
+    adh_run run;
+    adh_run_init(&run);
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.turns[0] = FIX_TURN;
+    s = adh_visco_settings_default();
+    v = good, v.Einf = 1e8;
+    refused("a set with Einf < E0", adh_visco_set(w, &f.m, &v, &d, &s, &ps, &run, why, sizeof why), why,
+            "below E0");
+    ok(adh_visco_iterate(w) == ADH_EINVAL, "a solver never set refuses to step");
+    ps.start = 0.6e-9;
+    int rc = adh_visco_set(w, &f.m, &good, &d, &s, &ps, &run, why, sizeof why);
+    ok(rc == ADH_ESTALL && strstr(why, "start") != NULL, "a start in contact: \"%s\"", why);
+
+    /* the cancel flag: stopped on request, the run marked */
+    volatile sig_atomic_t cancel = 1;
+    ps.start = NAN;
+    s.cancel = &cancel;
+    ok(adh_visco_set(w, &f.m, &good, &d, &s, &ps, &run, why, sizeof why) == ADH_SUCCESS, "set again");
+    ok(adh_visco_iterate(w) == ADH_CONTINUE && run.nrows == 1, "the start's row comes first");
+    ok(adh_visco_iterate(w) == ADH_EINTR && run.interrupted, "the cancel flag stops it (interrupted)");
+    ok(adh_visco_iterate(w) == ADH_EINTR, "and every later call says so");
+
+    /* as a step rule through the drive and the runner: a callback that
+     * stops after 20 rows */
+    adh_run_free(&run);
+    s.cancel = NULL;
+    size_t stop_at = 20;
+    adh_visco_rule_settings rs = { good, d, s };
+    fixture f3 = fix_open(FIX_N, 1.0);
+    rc = adh_runner_rule(&adh_rule_visco, f3.g, f3.k, &f3.m, &rs, &ps, stop_after, &stop_at, &run);
+    ok(rc == ADH_SUCCESS && run.interrupted && run.nrows == 20,
+       "the rule, through the runner: a callback stops the run after its row 20 (%zu rows)", run.nrows);
+    adh_run_free(&run);
+    rc = adh_runner_rule(&adh_rule_visco, f3.g, f3.k, &f3.m, &rs, &ps, NULL, NULL, &run);
+    ok(rc == ADH_SUCCESS && !isnan(run.jump_in_h0) && run.rows[run.nrows - 1].path == 1 &&
+           run.rows[run.nrows - 1].h0 >= run.start,
+       "the rule runs the whole cycle: jump-in at %.4g nm, the last row unloading at the start", run.jump_in_h0 * 1e9);
+    adh_run_free(&run);
+    adh_runner_rule(&adh_rule_visco, f3.g, f3.k, &f3.m, NULL, &ps, NULL, NULL, &run);
+    ok(run.status == ADH_SUCCESS && run.nrows > 10, "and with no settings (elastic at E, 1 um/s)");
+    fix_close(&f3);
+
+    /* the step cap */
+    adh_run_free(&run);
+    s.max_steps = 30;
+    adh_visco_set(w, &f.m, &good, &d, &s, &ps, &run, why, sizeof why);
+    rc = adh_visco_run(w);
+    ok(rc == ADH_EMAXITER && run.status == ADH_EMAXITER, "30 steps: ADH_EMAXITER");
+
+    /* the grid's edge: 100 nodes (150 nm) and a turn at -3 nm */
+    adh_run_free(&run);
+    s = adh_visco_settings_default();
+    ps.turns[0] = -3e-9;
+    adh_visco_set(w, &f.m, &good, &d, &s, &ps, &run, why, sizeof why);
+    rc = adh_visco_run(w);
+    ok(rc == ADH_EGRID && run.rows[run.nrows - 1].a >= 0.9 * f.g->rmax,
+       "the contact reaches 0.9 Rmax: ADH_EGRID, its row kept (a = %.3g m)", run.rows[run.nrows - 1].a);
+
+    adh_visco_free(w);
+    adh_run_free(&run);
+    fix_close(&f);
+    return tap_done();
+}
