@@ -126,21 +126,35 @@ static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh
         fprintf(stderr, "the force table went to standard output\n");
 }
 
-/* One run (no sweep) into od (NULL: the force table on standard output). */
-static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
+/* One run's state across its phases: build, step, judge, write. */
+typedef struct batch_job {
+    const cli_options *cli;
+    const adh_config *cfg;
+    adh_run_spec spec;        /* the configuration's one run */
+    adh_outdir *od;           /* NULL: the force table on standard output */
+    const char *out;
+    double t_start;
+    int rigid, timed;
+    adh_grid *g;
+    adh_kernel *k;
+    batch_ctx ctx;
+    adh_run run, ref;         /* the run and its static reference */
+    adh_static_result sres, rres;
+    cli_time_out tout;
+    int rc, want_ref, ref_resolved;
+    int status;               /* the exit status so far */
+    char note[512];           /* why the tables are partial; "" when they are not */
+} batch_job;
+
+/* The grid and kernel (rigid spheres need eq 22 alone: neither): 0, or
+ * the exit status with its message said. */
+static int batch_build(batch_job *j)
 {
-    const adh_config *cfg = &cli->cfg;
-    /* the one run: the configuration's, with the protocol every driver steps */
-    adh_run_spec spec_;
-    adh_config_sweep_run(cfg, 0, &spec_);
-    const adh_run_spec *spec = &spec_;
-    char why[1024];
-    const char *out = od ? adh_outdir_path(od) : NULL;
-    /* Rigid spheres need eq 22 alone: no grid, no kernel. */
-    int rigid = spec->mode == ADH_MODE_RIGID;
-    adh_grid *g = rigid ? NULL : adh_config_grid_alloc(spec);
+    const adh_run_spec *spec = &j->spec;
+    j->g = j->rigid ? NULL : adh_config_grid_alloc(spec);
     /* --force on a grid coarser than the resolved limit: said even with -q */
-    if (!rigid) {
+    if (!j->rigid) {
+        char why[1024];
         adh_grid_report gr;
         adh_grid_check(&spec->mat, adh_config_grid_use(spec), spec->grid.use.nodes, adh_config_spacing(spec), &gr);
         if (!gr.resolved) {
@@ -151,199 +165,249 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     /* caught from here: a large ring kernel takes seconds to build */
     cli_interrupt_catch();
     int kst = ADH_ENOMEM;
-    if (g)
+    if (j->g)
         adh_ready_phase("kernel");
-    adh_kernel *k = g ? adh_config_kernel_alloc(spec, g, &kst) : NULL;
-    if (!rigid && !k) {
-        if (kst == ADH_EINTR)
-            fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
-                    cli_interrupt_signal(), spec->grid.use.nodes);
-        else
-            fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", g ? g->n : spec->grid.use.nodes);
-        cli_interrupt_release();
-        adh_grid_free(g);
-        return kst == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
-    }
+    j->k = j->g ? adh_config_kernel_alloc(spec, j->g, &kst) : NULL;
+    if (j->rigid || j->k)
+        return 0;
+    if (kst == ADH_EINTR)
+        fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
+                cli_interrupt_signal(), spec->grid.use.nodes);
+    else
+        fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", j->g ? j->g->n : spec->grid.use.nodes);
+    cli_interrupt_release();
+    adh_grid_free(j->g);
+    return kst == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
+}
 
+/* The run by its mode's rule, rows streamed when there is no -o, then
+ * --reference=static's equilibrium curve beside a relaxation run. */
+static void batch_step(batch_job *j)
+{
+    const adh_run_spec *spec = &j->spec;
     adh_plan plan;
-    adh_plan_make(cfg, &plan);
-    batch_ctx ctx = { spec, out ? NULL : stdout, !cfg->output.quiet && isatty(2),
-                      plan.static_mode || plan.time_mode ? 0 : plan.loading_steps + plan.unloading_steps, t_start, 0 };
-    int timed = spec->mode == ADH_MODE_TIME;
-    if (ctx.stream) {
-        fprintf(ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
-        (timed ? adh_rows_header_timed : adh_rows_header)(ctx.stream);
+    adh_plan_make(j->cfg, &plan);
+    j->ctx = (batch_ctx){ spec, j->out ? NULL : stdout, !j->cfg->output.quiet && isatty(2),
+                          plan.static_mode || plan.time_mode ? 0 : plan.loading_steps + plan.unloading_steps,
+                          j->t_start, 0 };
+    if (j->ctx.stream) {
+        fprintf(j->ctx.stream, "# adhere %s force table, SI units\n", ADH_VERSION);
+        (j->timed ? adh_rows_header_timed : adh_rows_header)(j->ctx.stream);
     }
-    adh_run run;
-    adh_run_init(&run);
-    adh_static_result sres;
-    cli_time_out tout = { 0 };
-    adh_ready_phase(rigid ? "rigid" : spec->mode == ADH_MODE_STATIC ? "static" : timed ? "time" : "relax");
-    int rc = rigid ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &spec->mat, NULL, &spec->proto, on_step, &ctx, &run)
-           : spec->mode == ADH_MODE_STATIC ? cli_static_run(spec, g, k, on_step, &ctx, &run, &sres)
-           : timed ? cli_time_run(spec, g, k, on_step, &ctx, &run, &tout)
-           : adh_runner_rule(&adh_rule_relax, g, k, &spec->mat, &spec->relax, &spec->proto, on_step, &ctx, &run);
-    /* --reference=static: the equilibrium curve beside the relaxation run. */
-    adh_run ref;
-    adh_run_init(&ref);
-    adh_static_result rres;
-    int ref_resolved = 0;
-    int want_ref = cli->reference[0] && spec->mode == ADH_MODE_RELAX && rc == ADH_SUCCESS && !run.interrupted;
-    if (want_ref) {
+    adh_ready_phase(j->rigid ? "rigid" : spec->mode == ADH_MODE_STATIC ? "static" : j->timed ? "time" : "relax");
+    adh_run *run = &j->run;
+    j->rc = j->rigid ? adh_runner_rule(&adh_rule_rigid, NULL, NULL, &spec->mat, NULL, &spec->proto, on_step, &j->ctx, run)
+          : spec->mode == ADH_MODE_STATIC ? cli_static_run(spec, j->g, j->k, on_step, &j->ctx, run, &j->sres)
+          : j->timed ? cli_time_run(spec, j->g, j->k, on_step, &j->ctx, run, &j->tout)
+          : adh_runner_rule(&adh_rule_relax, j->g, j->k, &spec->mat, &spec->relax, &spec->proto, on_step, &j->ctx, run);
+    j->want_ref = j->cli->reference[0] && spec->mode == ADH_MODE_RELAX && j->rc == ADH_SUCCESS && !run->interrupted;
+    if (j->want_ref) {
         adh_ready_phase("reference");
         char rwhy[1024];
-        int rrc = cli_static_reference(spec, g, k, &ref, &rres, &ref_resolved, rwhy, sizeof rwhy);
-        if (!ref_resolved)
+        int rrc = cli_static_reference(spec, j->g, j->k, &j->ref, &j->rres, &j->ref_resolved, rwhy, sizeof rwhy);
+        if (!j->ref_resolved)
             fprintf(stderr, "adhere: warning: the static reference curve is not resolved: %s (summary.tsv: "
                     "static_resolved 0)\n", rwhy);
-        if (rrc != ADH_SUCCESS && !ref.interrupted) {
-            fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(ref.status));
-            want_ref = 0;
+        if (rrc != ADH_SUCCESS && !j->ref.interrupted) {
+            fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(j->ref.status));
+            j->want_ref = 0;
         }
     }
-    if (ctx.progress)
+    if (j->ctx.progress)
         fprintf(stderr, "\r%*s\r", 100, "");
+}
 
-    int status = CLI_EXIT_OK;
-    char note[512] = "";
-    if (run.interrupted || ref.interrupted) {
-        if (ref.interrupted)
-            snprintf(note, sizeof note, "interrupted by signal %d during the static reference curve (%zu of its points)",
-                     cli_interrupt_signal(), ref.nrows);
+/* What the run's end says: interrupted, stopped at the grid's edge, a
+ * solver failure, no contact or no separation, steps at the cap. */
+static void batch_judge(batch_job *j)
+{
+    const adh_run_spec *spec = &j->spec;
+    const adh_run *run = &j->run;
+    if (run->interrupted || j->ref.interrupted) {
+        if (j->ref.interrupted)
+            snprintf(j->note, sizeof j->note, "interrupted by signal %d during the static reference curve (%zu of its points)",
+                     cli_interrupt_signal(), j->ref.nrows);
         else
-            snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run.nrows);
-        status = cli_interrupt_exit();
-    } else if (rc == ADH_EGRID && run.nrows) {
+            snprintf(j->note, sizeof j->note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run->nrows);
+        j->status = cli_interrupt_exit();
+    } else if (j->rc == ADH_EGRID && run->nrows) {
         char edge[400];
-        adh_rings_edge_sentence(g, run.rows[run.nrows - 1].a, edge, sizeof edge);
-        cli_advice_append(edge, sizeof edge, adh_rings_edge_fix(g, run.rows[run.nrows - 1].a));
-        snprintf(note, sizeof note, "the run stopped after %zu steps at h0 = %s: %s", run.nrows,
-                 adh_qtext(run.rows[run.nrows - 1].h0, ADH_Q_LENGTH).s, edge);
-        status = CLI_EXIT_SOLVER;
-    } else if (rc != ADH_SUCCESS) {
-        snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run.nrows, adh_strerror(rc));
-        status = CLI_EXIT_SOLVER;
+        double a = run->rows[run->nrows - 1].a;
+        adh_rings_edge_sentence(j->g, a, edge, sizeof edge);
+        cli_advice_append(edge, sizeof edge, adh_rings_edge_fix(j->g, a));
+        snprintf(j->note, sizeof j->note, "the run stopped after %zu steps at h0 = %s: %s", run->nrows,
+                 adh_qtext(run->rows[run->nrows - 1].h0, ADH_Q_LENGTH).s, edge);
+        j->status = CLI_EXIT_SOLVER;
+    } else if (j->rc != ADH_SUCCESS) {
+        snprintf(j->note, sizeof j->note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(j->rc));
+        j->status = CLI_EXIT_SOLVER;
     }
-    if (note[0])
-        fprintf(stderr, "adhere: %s\n", note);
+    if (j->note[0])
+        fprintf(stderr, "adhere: %s\n", j->note);
     char sep[512];
     adh_derived der;
     adh_material_derive(&spec->mat, &der);
-    int touched = rigid || adh_run_touched(&run, der.h_star, sep, sizeof sep);
-    if (status == CLI_EXIT_OK && (!touched || !adh_run_separated(&run, sep, sizeof sep)))
+    int touched = j->rigid || adh_run_touched(run, der.h_star, sep, sizeof sep);
+    if (j->status == CLI_EXIT_OK && (!touched || !adh_run_separated(run, sep, sizeof sep)))
         fprintf(stderr, "adhere: incomplete: %s (summary.tsv: complete 0)\n", sep);
     /* Steps at the cap change what the numbers mean: said even under -q, and
      * the run's status, unless --allow-unconverged asked for them. */
-    int unconverged = run.unconverged && status == CLI_EXIT_OK;
-    if (run.unconverged && (!cfg->output.allow_unconverged || !cfg->output.quiet))
+    const adh_output_options *o = &j->cfg->output;
+    int unconverged = run->unconverged && j->status == CLI_EXIT_OK;
+    if (run->unconverged && (!o->allow_unconverged || !o->quiet))
         fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %s; their rows say converged 0%s\n",
-                run.unconverged, run.nrows, spec->relax.max_iter, adh_qtext(spec->relax.eps, ADH_Q_LENGTH).s,
-                cfg->output.allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
-    if (unconverged && !cfg->output.allow_unconverged)
-        status = CLI_EXIT_SOLVER;
+                run->unconverged, run->nrows, spec->relax.max_iter, adh_qtext(spec->relax.eps, ADH_Q_LENGTH).s,
+                o->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
+    if (unconverged && !o->allow_unconverged)
+        j->status = CLI_EXIT_SOLVER;
+}
 
-    double ref_hyst = want_ref ? cli_tables_static_hysteresis(&ref, &spec->mat) : NAN;
+/* The mode's own summary keys: the static curve's, the spring's snap
+ * points, physical time's, the static reference's. How many. */
+static size_t batch_extra(const batch_job *j, double ref_hyst, char (*keynames)[32], cli_tables_extra *extra,
+                          double *snap)
+{
+    const adh_run_spec *spec = &j->spec;
+    size_t n = 0;
+    if (spec->mode == ADH_MODE_STATIC)
+        n += cli_tables_static_keys(&j->sres, cli_tables_static_hysteresis(&j->run, &spec->mat), "", keynames, extra);
+    if (spec->mode == ADH_MODE_STATIC && isfinite(spec->time.spring))   /* the instrument's snap points */
+        n += cli_time_snap_keys(&j->run, spec->time.spring, snap, extra + n);
+    if (j->timed)
+        n += cli_time_keys(&j->tout, extra + n);
+    if (j->want_ref) {
+        n += cli_tables_static_keys(&j->rres, ref_hyst, "static_", keynames + n, extra + n);
+        extra[n++] = (cli_tables_extra){ "static_resolved", j->ref_resolved };
+    }
+    return n;
+}
+
+/* The plots and the scene's figures of a whole run into od, and the
+ * closing line; what was not written is added to unwritten. */
+static void batch_plots(batch_job *j, double ref_hyst, char *unwritten, size_t ulen)
+{
+    /* With --no-plot this writes the plots' tables only. A signal here is
+     * still caught: gnuplot finishes its file, the temporaries go, and the
+     * exit says interrupted. */
+    const adh_run_spec *spec = &j->spec;
+    char msg[1024] = "", missing[256] = "", fig[1024] = "", plots[2100] = "";
+    adh_ready_phase("plot");
+    adh_plot_setup ps;
+    adh_plot_setup_fill(j->cfg, spec, j->g, &ps);
+    int prc = adh_plots_write(&ps, &j->run, j->want_ref ? &j->ref : NULL, j->od, msg, sizeof msg, missing,
+                              sizeof missing);
+    if (prc != 0) {
+        fprintf(stderr, "adhere: plots not written: %s\n", msg);
+        j->status = prc == 2 ? CLI_EXIT_USAGE : j->status == CLI_EXIT_OK ? CLI_EXIT_PLOT : j->status;
+    }
+    cli_tables_names_add(unwritten, ulen, missing);
+    /* the scene figures (Figure 1 inset, Figure 2) when asked */
+    if (!cli_interrupt_signal() && cli_figures_run(j->cfg, spec, &j->run, j->od, fig, sizeof fig, unwritten, ulen) != 0) {
+        fprintf(stderr, "adhere: plots not written: %s\n", fig);
+        if (j->status == CLI_EXIT_OK)
+            j->status = CLI_EXIT_PLOT;
+    }
+    if (j->status != CLI_EXIT_OK || j->cfg->output.quiet)
+        return;
+    char tables_[128];
+    snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s%s", j->run.nturns ? ", turns.tsv" : "",
+             j->want_ref ? ", static.tsv" : "", j->timed ? ", events.tsv" : "");
+    /* "wrote A, B in DIR; notes" from the plots, the scene figures' names after A, B */
+    const char *in = strstr(msg, " in ");
+    if (strncmp(msg, "wrote ", 6) == 0 && in && !strstr(msg, "no plot tables"))
+        snprintf(plots, sizeof plots, "wrote %.*s%s%s%s", (int)(in - msg - 6), msg + 6, fig[0] ? ", " : "", fig, in);
+    else if (fig[0])
+        snprintf(plots, sizeof plots, "wrote %s in %.1000s", fig, j->out);
+    closing_line(spec, &j->run, &j->sres, ref_hyst, adh_clock_seconds() - j->t_start, j->out, tables_, plots);
+}
+
+/* The tables into od: every file is tried even when one fails (a full
+ * disk), and summary.tsv comes last, naming what was not written: a
+ * summary that says success speaks for the whole directory. */
+static void batch_write(batch_job *j, cli_tables *tables, const cli_tables *ref_tables, double ref_hyst)
+{
+    char why[1024], unwritten[512] = "";
+    struct { const char *name; int want; adh_outdir_writer w; const void *t; } tab[] = {
+        { "force.tsv", 1, cli_tables_force, tables },
+        { "turns.tsv", j->run.nturns > 0, cli_tables_turns, tables },
+        { "static.tsv", j->want_ref, cli_tables_force, ref_tables },
+        { "events.tsv", j->timed, cli_time_events, &j->tout },
+    };
+    for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
+        if (!tab[i].want)
+            continue;
+        if (adh_outdir_write(j->od, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
+            fprintf(stderr, "adhere: %s\n", why);
+            j->status = CLI_EXIT_USAGE;
+            cli_tables_names_add(unwritten, sizeof unwritten, tab[i].name);
+        }
+    }
+    if (!tables->partial)
+        batch_plots(j, ref_hyst, unwritten, sizeof unwritten);
+    tables->unwritten = unwritten;
+    if (cli_interrupt_signal() && !tables->partial)
+        tables->status = "interrupted";   /* while plotting: the figures not written are named */
+    if (adh_outdir_write(j->od, "summary.tsv", cli_tables_summary, tables, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere: %s\n", why);
+        j->status = CLI_EXIT_USAGE;
+    }
+    tables->unwritten = NULL;   /* unwritten ends here */
+}
+
+/* One run (no sweep) into od (NULL: the force table on standard output). */
+static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
+{
+    static batch_job job;   /* large: not on the stack */
+    batch_job *j = &job;
+    memset(j, 0, sizeof *j);
+    j->cli = cli;
+    j->cfg = &cli->cfg;
+    /* the one run: the configuration's, with the protocol every driver steps */
+    adh_config_sweep_run(j->cfg, 0, &j->spec);
+    j->od = od;
+    j->out = od ? adh_outdir_path(od) : NULL;
+    j->t_start = t_start;
+    j->rigid = j->spec.mode == ADH_MODE_RIGID;
+    j->timed = j->spec.mode == ADH_MODE_TIME;
+    int st = batch_build(j);
+    if (st)
+        return st;
+    adh_run_init(&j->run);
+    adh_run_init(&j->ref);
+    batch_step(j);
+    j->status = CLI_EXIT_OK;
+    batch_judge(j);
+    double ref_hyst = j->want_ref ? cli_tables_static_hysteresis(&j->ref, &j->spec.mat) : NAN;
     char keynames[2 * CLI_TABLES_STATIC_KEYS][32];
     cli_tables_extra extra[2 * CLI_TABLES_STATIC_KEYS + 1 + CLI_TIME_KEYS];
     double snap[CLI_TIME_SNAP_KEYS];
-    size_t nextra = 0;
-    if (spec->mode == ADH_MODE_STATIC)
-        nextra += cli_tables_static_keys(&sres, cli_tables_static_hysteresis(&run, &spec->mat), "", keynames, extra);
-    if (spec->mode == ADH_MODE_STATIC && isfinite(spec->time.spring))   /* the instrument's snap points */
-        nextra += cli_time_snap_keys(&run, spec->time.spring, snap, extra + nextra);
-    if (timed)
-        nextra += cli_time_keys(&tout, extra + nextra);
-    if (want_ref)
-        nextra += cli_tables_static_keys(&rres, ref_hyst, "static_", keynames + nextra, extra + nextra);
-    if (want_ref)
-        extra[nextra++] = (cli_tables_extra){ "static_resolved", ref_resolved };
+    size_t nextra = batch_extra(j, ref_hyst, keynames, extra, snap);
     /* A force table streamed to a full disk or a closed pipe is lost: say so. */
-    if (ctx.stream && (fflush(ctx.stream) != 0 || ferror(ctx.stream))) {
+    if (j->ctx.stream && (fflush(j->ctx.stream) != 0 || ferror(j->ctx.stream))) {
         fprintf(stderr, "adhere: cannot write the force table to standard output: %s\n", strerror(errno));
-        status = CLI_EXIT_USAGE;
+        j->status = CLI_EXIT_USAGE;
     }
-    int partial = note[0] != '\0';
-    cli_tables tables = { cfg, spec, &run, extra, nextra, partial, note, NULL, ref.interrupted ? "interrupted" : NULL };
-    cli_tables ref_tables = { cfg, spec, &ref, NULL, 0, ref.interrupted, note, NULL, NULL };
-    if (ctx.stream && tables.partial)
-        fprintf(ctx.stream, "# PARTIAL: %s\n", note);
-    if (out) {
-        /* Every file is tried even when one fails (a full disk), and
-         * summary.tsv comes last, naming what was not written: a summary
-         * that says success speaks for the whole directory. */
-        char unwritten[512] = "";
-        struct { const char *name; int want; adh_outdir_writer w; const void *t; } tab[] = {
-            { "force.tsv", 1, cli_tables_force, &tables },
-            { "turns.tsv", run.nturns > 0, cli_tables_turns, &tables },
-            { "static.tsv", want_ref, cli_tables_force, &ref_tables },
-            { "events.tsv", timed, cli_time_events, &tout },
-        };
-        for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
-            if (!tab[i].want)
-                continue;
-            if (adh_outdir_write(od, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
-                fprintf(stderr, "adhere: %s\n", why);
-                status = CLI_EXIT_USAGE;
-                cli_tables_names_add(unwritten, sizeof unwritten, tab[i].name);
-            }
-        }
-        if (!partial) {
-            /* With --no-plot this writes the plots' tables only. A signal
-             * here is still caught: gnuplot finishes its file, the
-             * temporaries go, and the exit says interrupted. */
-            char msg[1024] = "", missing[256] = "", fig[1024] = "", plots[2100] = "";
-            adh_ready_phase("plot");
-            adh_plot_setup ps;
-            adh_plot_setup_fill(cfg, spec, g, &ps);
-            int prc = adh_plots_write(&ps, &run, want_ref ? &ref : NULL, od, msg, sizeof msg, missing,
-                                      sizeof missing);
-            if (prc != 0) {
-                fprintf(stderr, "adhere: plots not written: %s\n", msg);
-                status = prc == 2 ? CLI_EXIT_USAGE : status == CLI_EXIT_OK ? CLI_EXIT_PLOT : status;
-            }
-            cli_tables_names_add(unwritten, sizeof unwritten, missing);
-            /* the scene figures (Figure 1 inset, Figure 2) when asked */
-            if (!cli_interrupt_signal() &&
-                cli_figures_run(cfg, spec, &run, od, fig, sizeof fig, unwritten, sizeof unwritten) != 0) {
-                fprintf(stderr, "adhere: plots not written: %s\n", fig);
-                if (status == CLI_EXIT_OK)
-                    status = CLI_EXIT_PLOT;
-            }
-            if (status == CLI_EXIT_OK && !cfg->output.quiet) {
-                char tables_[128];
-                snprintf(tables_, sizeof tables_, "force.tsv, summary.tsv%s%s%s", run.nturns ? ", turns.tsv" : "",
-                         want_ref ? ", static.tsv" : "", timed ? ", events.tsv" : "");
-                /* "wrote A, B in DIR; notes" from the plots, the scene figures' names after A, B */
-                const char *in = strstr(msg, " in ");
-                if (strncmp(msg, "wrote ", 6) == 0 && in && !strstr(msg, "no plot tables"))
-                    snprintf(plots, sizeof plots, "wrote %.*s%s%s%s", (int)(in - msg - 6), msg + 6, fig[0] ? ", " : "",
-                             fig, in);
-                else if (fig[0])
-                    snprintf(plots, sizeof plots, "wrote %s in %.1000s", fig, out);
-                closing_line(spec, &run, &sres, ref_hyst, adh_clock_seconds() - t_start, out, tables_, plots);
-            }
-        }
-        tables.unwritten = unwritten;
-        if (cli_interrupt_signal() && !partial)
-            tables.status = "interrupted";   /* while plotting: the figures not written are named */
-        if (adh_outdir_write(od, "summary.tsv", cli_tables_summary, &tables, why, sizeof why) != 0) {
-            fprintf(stderr, "adhere: %s\n", why);
-            status = CLI_EXIT_USAGE;
-        }
-    } else if (status == CLI_EXIT_OK && !cfg->output.quiet) {
-        closing_line(spec, &run, &sres, ref_hyst, adh_clock_seconds() - t_start, NULL, "", "");
-    }
+    int partial = j->note[0] != '\0';
+    cli_tables tables = { j->cfg, &j->spec, &j->run, extra, nextra, partial, j->note, NULL,
+                          j->ref.interrupted ? "interrupted" : NULL };
+    cli_tables ref_tables = { j->cfg, &j->spec, &j->ref, NULL, 0, j->ref.interrupted, j->note, NULL, NULL };
+    if (j->ctx.stream && partial)
+        fprintf(j->ctx.stream, "# PARTIAL: %s\n", j->note);
+    if (j->out)
+        batch_write(j, &tables, &ref_tables, ref_hyst);
+    else if (j->status == CLI_EXIT_OK && !j->cfg->output.quiet)
+        closing_line(&j->spec, &j->run, &j->sres, ref_hyst, adh_clock_seconds() - t_start, NULL, "", "");
     cli_interrupt_release();
     if (cli_interrupt_signal() && !partial) {
         fprintf(stderr, "adhere: interrupted by signal %d while plotting; the tables are complete\n", cli_interrupt_signal());
-        status = cli_interrupt_exit();
+        j->status = cli_interrupt_exit();
     }
-    cli_time_out_free(&tout);
-    adh_run_free(&run);
-    adh_run_free(&ref);
-    adh_kernel_free(k);
-    adh_grid_free(g);
-    return status;
+    cli_time_out_free(&j->tout);
+    adh_run_free(&j->run);
+    adh_run_free(&j->ref);
+    adh_kernel_free(j->k);
+    adh_grid_free(j->g);
+    return j->status;
 }
 
 int cli_batch_main(cli_options *cli)
