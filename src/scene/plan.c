@@ -237,27 +237,11 @@ static void plan_bytes(const adh_config *cfg, adh_plan *p)
     }
 }
 
-void adh_plan_make(const adh_config *cfg, adh_plan *p)
+/* The first runs one by one; the totals over every drive (runs that
+ * differ only in their turn share one loading branch) and the distinct
+ * grids, each a kernel. */
+static void plan_totals(const adh_config *cfg, adh_plan *p)
 {
-    memset(p, 0, sizeof *p);
-    /* what every run shares (the protocol, the mode) is run 0's */
-    adh_run_spec run0;
-    adh_config_sweep_run(cfg, 0, &run0);
-    const adh_run_spec *s0 = &run0;
-    p->nruns = adh_config_nruns(cfg);
-    p->jobs = adh_plan_jobs(cfg);
-    p->elastic = s0->mode != ADH_MODE_RIGID;
-    p->static_mode = s0->mode == ADH_MODE_STATIC;
-    p->time_mode = s0->mode == ADH_MODE_TIME;
-    p->loading_branches = 1;
-    p->stop_at_contact = p->elastic && s0->proto.nturns == 0;
-    p->snapshots = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
-    p->unloading_branches = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
-    p->shared_kernel = p->elastic;
-    p->contact_speeds = cfg->output.plot && (cfg->output.plots & ADH_PLOT_CONTACT);
-
-    /* the first runs one by one; the totals over every drive (runs that
-     * differ only in their turn share one loading branch) */
     for (size_t i = 0; i < p->nruns && i < ADH_PLAN_MAX_RUNS; i++) {
         adh_run_spec rc;
         adh_config_sweep_run(cfg, i, &rc);
@@ -286,8 +270,11 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     free(grids);
     p->shared_kernel = p->elastic && p->kernels == 1;
     plan_bytes(cfg, p);
+}
 
-    /* what is skipped, and why */
+/* What the plan skips, and why. */
+static void plan_skipped(const adh_config *cfg, const adh_run_spec *s0, adh_plan *p)
+{
     if (!p->elastic)
         note(p->skipped, &p->nskipped, "elastic solve", "mode = rigid: the force is eq 22 at each drive position; no kernel, no relaxation");
     if (p->stop_at_contact)
@@ -324,8 +311,11 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     if (p->time_mode)
         note(p->skipped, &p->nskipped, "relaxation", "mode = time: the path is integrated in physical time, no eps steps; "
              "rows fall where the integrator's tolerance puts them, not on the drive step d");
+}
 
-    /* what is stored */
+/* What the run stores, file by file. */
+static void plan_stored(const adh_config *cfg, const adh_run_spec *s0, adh_plan *p)
+{
     const char *prefix = cfg->sweep.naxes ? "run-K/" : "";
     char what[64];
     snprintf(what, sizeof what, "%sforce.tsv", prefix);
@@ -369,6 +359,30 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
                     note(p->stored, &p->nstored, what, "%s", figs[i].what);
             }
     }
+}
+
+void adh_plan_make(const adh_config *cfg, adh_plan *p)
+{
+    memset(p, 0, sizeof *p);
+    /* what every run shares (the protocol, the mode) is run 0's */
+    adh_run_spec run0;
+    adh_config_sweep_run(cfg, 0, &run0);
+    const adh_run_spec *s0 = &run0;
+    p->nruns = adh_config_nruns(cfg);
+    p->jobs = adh_plan_jobs(cfg);
+    p->elastic = s0->mode != ADH_MODE_RIGID;
+    p->static_mode = s0->mode == ADH_MODE_STATIC;
+    p->time_mode = s0->mode == ADH_MODE_TIME;
+    p->loading_branches = 1;
+    p->stop_at_contact = p->elastic && s0->proto.nturns == 0;
+    p->snapshots = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
+    p->unloading_branches = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
+    p->shared_kernel = p->elastic;
+    p->contact_speeds = cfg->output.plot && (cfg->output.plots & ADH_PLOT_CONTACT);
+
+    plan_totals(cfg, p);
+    plan_skipped(cfg, s0, p);
+    plan_stored(cfg, s0, p);
     if (cfg->sweep.naxes)
         plan_study_files(cfg, p);
 }
