@@ -223,8 +223,8 @@ static int missing(merge *m, char *partial, size_t plen, char *why, size_t whyle
 }
 
 /* -o DIR: a directory of the merge's own (an earlier merge's files
- * replaced), or one of the shards' (an unsharded study's, whose table is
- * written again): its records stay. 0, or 2 with why. */
+ * replaced, by clear_out), or one of the shards' (an unsharded study's,
+ * whose table is written again): opened and locked. 0, or 2 with why. */
 static int open_out(merge *m, char *why, size_t whylen)
 {
     const adh_output_options *o = &m->cli->cfg.output;
@@ -234,8 +234,16 @@ static int open_out(merge *m, char *why, size_t whylen)
     if (!(m->out = adh_outdir_open(o->dir, flags, why, whylen)))
         return 2;
     fstat(adh_outdir_fd(m->out), &m->out_st);
-    if (adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv"))
-        return 0;   /* a shard's: named among them, or refused when the shards are read */
+    return 0;
+}
+
+/* An earlier merge's files go only once the shards are known to join: a
+ * refused merge leaves the last good one's table. A shard's directory
+ * (named among them) keeps its records. 0, or 2 with why. */
+static int clear_out(merge *m, char *why, size_t whylen)
+{
+    if (!m->out || adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv"))
+        return 0;
     return adh_outdir_clear(m->out, why, whylen) == 0 ? 0 : 2;
 }
 
@@ -345,6 +353,8 @@ int cli_merge_main(cli_options *cli)
     free(scratch);
     if (rc == 0)
         rc = missing(&m, partial, sizeof partial, why, sizeof why);
+    if (rc == 0)
+        rc = clear_out(&m, why, sizeof why);
     if (rc != 0) {
         fprintf(stderr, "adhere merge: %s\n", why);
         merge_free(&m);

@@ -110,6 +110,10 @@ $M -o "$TMP/m4" "$TMP/shard1" "$TMP/other" "$TMP/shard3" 2>"$TMP/err"
 rc=$?
 check "shards of different studies: exit 2, what differs named ($(cat "$TMP/err"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'different studies.*protocol.dwell = 5' '$TMP/err'"
+$M -o "$TMP/m3" "$TMP/shard1" "$TMP/other" 2>/dev/null
+rc=$?
+check "a refused merge into an earlier merge's directory (exit $rc) leaves its table" \
+    sh -c "[ $rc -eq 2 ] && grep -q '^# PARTIAL: 12 of 16' '$TMP/m3/sweep.tsv'"
 "$ADHERE" $TINY -q "$TMP/map.scene" --shard 2/4 -o "$TMP/split4" 2>/dev/null
 $M -o "$TMP/m5" "$TMP/shard1" "$TMP/split4" 2>"$TMP/err"
 check "shards of another split: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'shard 1/3.*shard 2/4' '$TMP/err'"
