@@ -486,7 +486,7 @@ static int time_value_ok(const char *name, double v, char *why, size_t whylen)
     if (!strcmp(name, "E0"))
         m.E0 = m.Einf = v;
     else if (!strcmp(name, "Einf"))
-        m.E0 = m.Einf = v;
+        m.E0 = 1e3, m.Einf = v;   /* E0 at its least: the refusal is Einf's own */
     else if (!strcmp(name, "tau"))
         m.tau = v;
     else if (!strcmp(name, "dwell_time"))

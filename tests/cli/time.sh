@@ -21,6 +21,7 @@ bad() { # bad "expected text" args...
     fi
 }
 bad "is below --E0=3e+08 Pa: a standard linear solid is stiffest at first" --material=sls --Einf=0.1GPa
+bad "Einf = 2e+12 Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa" --material=sls --Einf=2TPa
 bad "tau = 0 s is not allowed" --material=sls --tau=0
 bad "tau = -1e-06 s is not allowed" --material=sls --tau=-1us
 bad "approach speed 0 m/s is not allowed" --material=sls --speed=0
