@@ -117,6 +117,13 @@ check "a refused merge into an earlier merge's directory (exit $rc) leaves its t
 "$ADHERE" $TINY -q "$TMP/map.scene" --shard 2/4 -o "$TMP/split4" 2>/dev/null
 $M -o "$TMP/m5" "$TMP/shard1" "$TMP/split4" 2>"$TMP/err"
 check "shards of another split: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'shard 1/3.*shard 2/4' '$TMP/err'"
+# a line no row of adhere's is (1 GiB, sparse: no disk), refused before it
+# is read into memory
+mkdir "$TMP/long" && cp "$TMP/shard2/study.tsv" "$TMP/shard2/runs.tsv" "$TMP/long/" && truncate -s +1G "$TMP/long/runs.tsv"
+$M -o "$TMP/m7" "$TMP/shard1" "$TMP/long" "$TMP/shard3" 2>"$TMP/err"
+check "a runs.tsv with a line of 1 GiB: exit 2 ($(cat "$TMP/err"))" \
+    sh -c "[ $? -eq 2 ] && grep -q 'long/runs.tsv is not a record of study' '$TMP/err'"
+rm -f "$TMP/long/runs.tsv"
 $M -o "$TMP/m6" "$TMP/whole/run-1" 2>"$TMP/err"
 check "a directory that holds no shard: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'no study.tsv' '$TMP/err'"
 $M -o "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>"$TMP/err"
