@@ -178,6 +178,16 @@ check "... with no run-K directory (--run-dirs=no)" sh -c "! ls -d '$TMP'/log/ru
 rc=$?
 check "plot = curves draws curves.png (rigid spheres: jump_in_h0 against z0, a curve per E; exit $rc $(head -c 200 "$TMP/err"))" \
     sh -c "[ $rc -eq 0 ] && [ -s '$TMP/curves/curves.png' ] && [ ! -e '$TMP/curves/map.png' ]"
+# map.png's tics: labels like 2.73e-20 J, half a dozen across at most (a
+# dozen overlapped), a dozen up the side
+printf '#!/bin/sh\ntee -a "%s" | "%s" "$@"\n' "$TMP/map.gp" "$(command -v gnuplot)" >"$TMP/logging-gnuplot"
+chmod +x "$TMP/logging-gnuplot"
+ADHERE_GNUPLOT=$TMP/logging-gnuplot "$ADHERE" --batch -q --mode=rigid --sweep='E=1GPa..4GPa,30' \
+    --sweep='A=1e-20J..2e-19J,100' --run-dirs=no -o "$TMP/tics" 2>"$TMP/err"
+nx=$(grep '^set xtics (' "$TMP/map.gp" | tail -1 | grep -o "' [0-9]*" | wc -l)
+ny=$(grep '^set ytics (' "$TMP/map.gp" | tail -1 | grep -o "' [0-9]*" | wc -l)
+check "map.png of 30 x 100 runs: $nx labels across (2 to 6), $ny up the side (7 to 12)" \
+    sh -c "[ -s '$TMP/tics/map.png' ] && [ $nx -ge 2 ] && [ $nx -le 6 ] && [ $ny -ge 7 ] && [ $ny -le 12 ]"
 "$ADHERE" --plan -N 100 --force --eps=10pm "$TMP/map.scene" --shard 2/3 -o "$TMP/p" >"$TMP/plan" 2>&1
 check "the plan counts the runs" grep -qx 'runs: 16' "$TMP/plan"
 check "... the study's product" grep -q '^study: 16 runs, every combination of the 2 keys (4 x 4' "$TMP/plan"
