@@ -140,9 +140,13 @@ static int same_study(const merge *m, char *why, size_t whylen)
 static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
 {
     const cli_study *st = &m->sh[0].st;
+    /* a run is listed once however many shards hold it (a directory given
+     * five times): the list has room for each run once */
     size_t *dup = malloc(st->nruns * sizeof *dup), ndup = 0;
+    unsigned char *twice = calloc(st->nruns, 1);
     const char *dup_a = NULL, *dup_b = NULL;
-    if (!dup) {
+    if (!dup || !twice) {
+        free(dup), free(twice);
         snprintf(why, whylen, "out of memory");
         return 2;
     }
@@ -150,22 +154,26 @@ static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
         size_t cut;
         memset(scratch, 0, st->nruns * sizeof *scratch);
         if (cli_study_read_rows(&m->sh[k].st, m->sh[k].fd, m->sh[k].path, scratch, &cut, why, whylen) < 0) {
-            free(dup);
+            free(dup), free(twice);
             return 2;
         }
         for (size_t i = 0; i < st->nruns; i++) {
             if (!cli_studyrow_complete(&scratch[i]))
                 continue;
             if (m->from[i] >= 0) {
-                if (!ndup)
+                if (!dup_a)
                     dup_a = m->sh[m->from[i]].path, dup_b = m->sh[k].path;
-                dup[ndup++] = i;
+                twice[i] = 1;
                 continue;
             }
             m->rows[i] = scratch[i];
             m->from[i] = (int)k;
         }
     }
+    for (size_t i = 0; i < st->nruns; i++)
+        if (twice[i])
+            dup[ndup++] = i;
+    free(twice);
     if (ndup) {
         char list[400];
         run_list(dup, ndup, list, sizeof list);

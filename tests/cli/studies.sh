@@ -95,6 +95,10 @@ M="$ADHERE merge"
 $M -o "$TMP/m1" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" "$TMP/shard2" 2>"$TMP/err"
 check "a shard given twice: exit 2, its runs listed ($(cat "$TMP/err"))" \
     sh -c "[ $? -eq 2 ] && grep -q 'runs 5-8 are in' '$TMP/err'"
+S2=$TMP/shard2
+$M -o "$TMP/m1" "$TMP/shard1" $S2 $S2 $S2 $S2 $S2 $S2 "$TMP/shard3" 2>"$TMP/err"
+check "a shard given 6 times (more runs twice than the study has): exit 2, each run listed once ($(cat "$TMP/err"))" \
+    sh -c "[ $? -eq 2 ] && grep -q 'runs 5-8 are in' '$TMP/err' && ! grep -q 'in all' '$TMP/err'"
 $M -o "$TMP/m2" "$TMP/shard1" "$TMP/shard3" 2>"$TMP/err"
 rc=$?
 check "a shard missing: exit 2, its runs listed ($(cat "$TMP/err"))" \
