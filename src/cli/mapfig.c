@@ -35,15 +35,17 @@ static void unit_of(const char *col, const cli_studyrow *rows, size_t n, int c, 
 }
 
 /* set xtics/ytics with the axis's values at their indices, at most about
- * a dozen labelled. */
+ * a dozen labelled up the side, half that across (labels like 2.73e-20 J
+ * side by side: a dozen overlapped on the 900-pixel figure). */
 static void index_tics(adh_gnuplot *gp, const char *which, const adh_sweep_axis *a)
 {
+    size_t most = which[0] == 'x' ? 6 : 12;
     char *cmd = NULL;
     size_t cap = 0;
     FILE *c = open_memstream(&cmd, &cap);
     if (!c)
         return;
-    size_t every = (a->n + 11) / 12;
+    size_t every = (a->n + most - 1) / most;
     fprintf(c, "set %s (", which);
     for (size_t j = 0; j < a->n; j += every) {
         char text[64], label[64], q[ADH_GP_QUOTED_SIZE(64)];

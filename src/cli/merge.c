@@ -140,9 +140,13 @@ static int same_study(const merge *m, char *why, size_t whylen)
 static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
 {
     const cli_study *st = &m->sh[0].st;
+    /* a run is listed once however many shards hold it (a directory given
+     * five times): the list has room for each run once */
     size_t *dup = malloc(st->nruns * sizeof *dup), ndup = 0;
+    unsigned char *twice = calloc(st->nruns, 1);
     const char *dup_a = NULL, *dup_b = NULL;
-    if (!dup) {
+    if (!dup || !twice) {
+        free(dup), free(twice);
         snprintf(why, whylen, "out of memory");
         return 2;
     }
@@ -150,22 +154,26 @@ static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
         size_t cut;
         memset(scratch, 0, st->nruns * sizeof *scratch);
         if (cli_study_read_rows(&m->sh[k].st, m->sh[k].fd, m->sh[k].path, scratch, &cut, why, whylen) < 0) {
-            free(dup);
+            free(dup), free(twice);
             return 2;
         }
         for (size_t i = 0; i < st->nruns; i++) {
             if (!cli_studyrow_complete(&scratch[i]))
                 continue;
             if (m->from[i] >= 0) {
-                if (!ndup)
+                if (!dup_a)
                     dup_a = m->sh[m->from[i]].path, dup_b = m->sh[k].path;
-                dup[ndup++] = i;
+                twice[i] = 1;
                 continue;
             }
             m->rows[i] = scratch[i];
             m->from[i] = (int)k;
         }
     }
+    for (size_t i = 0; i < st->nruns; i++)
+        if (twice[i])
+            dup[ndup++] = i;
+    free(twice);
     if (ndup) {
         char list[400];
         run_list(dup, ndup, list, sizeof list);
@@ -223,8 +231,8 @@ static int missing(merge *m, char *partial, size_t plen, char *why, size_t whyle
 }
 
 /* -o DIR: a directory of the merge's own (an earlier merge's files
- * replaced), or one of the shards' (an unsharded study's, whose table is
- * written again): its records stay. 0, or 2 with why. */
+ * replaced, by clear_out), or one of the shards' (an unsharded study's,
+ * whose table is written again): opened and locked. 0, or 2 with why. */
 static int open_out(merge *m, char *why, size_t whylen)
 {
     const adh_output_options *o = &m->cli->cfg.output;
@@ -234,8 +242,16 @@ static int open_out(merge *m, char *why, size_t whylen)
     if (!(m->out = adh_outdir_open(o->dir, flags, why, whylen)))
         return 2;
     fstat(adh_outdir_fd(m->out), &m->out_st);
-    if (adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv"))
-        return 0;   /* a shard's: named among them, or refused when the shards are read */
+    return 0;
+}
+
+/* An earlier merge's files go only once the shards are known to join: a
+ * refused merge leaves the last good one's table. A shard's directory
+ * (named among them) keeps its records. 0, or 2 with why. */
+static int clear_out(merge *m, char *why, size_t whylen)
+{
+    if (!m->out || adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv"))
+        return 0;
     return adh_outdir_clear(m->out, why, whylen) == 0 ? 0 : 2;
 }
 
@@ -345,6 +361,8 @@ int cli_merge_main(cli_options *cli)
     free(scratch);
     if (rc == 0)
         rc = missing(&m, partial, sizeof partial, why, sizeof why);
+    if (rc == 0)
+        rc = clear_out(&m, why, sizeof why);
     if (rc != 0) {
         fprintf(stderr, "adhere merge: %s\n", why);
         merge_free(&m);

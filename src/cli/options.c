@@ -501,12 +501,12 @@ static int merge_line(cli_options *cli, int argc, char **argv, const flags_seen 
             return 2;
     }
     if (optind >= argc) {
-        snprintf(why, whylen, "adhere merge: name the shards' directories (adhere merge -o DIR SHARD_DIR...)");
+        snprintf(why, whylen, "merge: name the shards' directories (adhere merge -o DIR SHARD_DIR...)");
         return 2;
     }
     for (int i = optind; i < argc; i++) {
         if (cli->nmerge == CLI_MAX_MERGE) {
-            snprintf(why, whylen, "adhere merge: more than %d directories", CLI_MAX_MERGE);
+            snprintf(why, whylen, "merge: more than %d directories", CLI_MAX_MERGE);
             return 2;
         }
         cli->merge[cli->nmerge++] = argv[i];

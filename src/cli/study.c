@@ -9,6 +9,33 @@
 
 #include "scene/scene.h"
 
+/* The longest line study.tsv or runs.tsv holds: a scene (1 MiB at most,
+ * twice that escaped) or a row; anything longer is not adhere's. */
+#define STUDY_LINE_MAX ((size_t)4 << 20)
+
+/* getline's, bounded: a line past STUDY_LINE_MAX (a file that is not
+ * adhere's, or a tampered one) is -2 before it is held in memory, where
+ * getline would take as much as the line. The length, or -1 at the end. */
+static ssize_t line_read(char **line, size_t *cap, FILE *f)
+{
+    size_t len = 0;
+    int c = 0;
+    while (c != '\n' && (c = getc_unlocked(f)) != EOF) {
+        if (len + 2 > *cap) {
+            size_t n = *cap ? 2 * *cap : 512;
+            char *grown = n <= STUDY_LINE_MAX ? realloc(*line, n) : NULL;
+            if (!grown)
+                return -2;
+            *line = grown, *cap = n;
+        }
+        (*line)[len++] = (char)c;
+    }
+    if (!len)
+        return -1;
+    (*line)[len] = '\0';
+    return (ssize_t)len;
+}
+
 /* Keys that say where and how a study is written, not what it computes:
  * shards that differ in them are shards of one study. */
 static int outside_study(const char *key)
@@ -250,13 +277,15 @@ int cli_study_read(cli_study *st, adh_config *cfg, int dirfd, const char *path, 
     size_t cap = 0, runs = 0, drives = 0, lineno = 0;
     ssize_t got;
     int rc = 0;
-    while (rc == 0 && (got = getline(&line, &cap, f)) >= 0) {
+    while (rc == 0 && (got = line_read(&line, &cap, f)) >= 0) {
         lineno++;
         if (got && line[got - 1] == '\n')
             line[--got] = '\0';
         if (line[0] != '#' && line[0])
             rc = study_line(st, line, fp, &runs, &drives);
     }
+    if (got == -2)
+        rc = -1, lineno++;   /* the line too long for adhere's */
     free(line);
     fclose(f);
     if (rc == -2) {
@@ -312,7 +341,7 @@ long cli_study_read_rows(const cli_study *st, int dirfd, const char *path, cli_s
     long n = 0;
     int header = 0, study = 0, bad = 0;
     snprintf(mark, sizeof mark, "# runs.tsv: study %s,", st->fingerprint);
-    while ((got = getline(&line, &cap, f)) >= 0) {
+    while ((got = line_read(&line, &cap, f)) >= 0) {
         int whole = got && line[got - 1] == '\n';
         if (whole)
             line[--got] = '\0';
@@ -335,6 +364,7 @@ long cli_study_read_rows(const cli_study *st, int dirfd, const char *path, cli_s
         rows[row.run] = row;
         n++;
     }
+    bad |= got == -2;   /* a line too long for a row of adhere's */
     free(line);
     fclose(f);
     if (bad || !header) {

@@ -33,8 +33,8 @@ static int cmp_double(const void *a, const void *b)
 static long find_jump(const adh_measured *m, const adh_measured_segment *s, char *why, size_t whylen)
 {
     if (s->n < 4) {
-        snprintf(why, whylen, "%s:%zu: a %s segment of %zu points: a fit needs the jump and points either side of it",
-                 m->path, m->line[s->first], adh_measured_dir_name(s->dir), s->n);
+        snprintf(why, whylen, "%s:%zu: this %s segment has %zu points, at least 4 needed: a fit needs the jump and "
+                 "points either side of it", m->path, m->line[s->first], adh_measured_dir_name(s->dir), s->n);
         return -1;
     }
     double *a = malloc((s->n - 1) * sizeof *a);

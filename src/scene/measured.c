@@ -332,6 +332,16 @@ static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, co
         snprintf(why, whylen, "%s:%zu: a NUL byte: this is not a text table (a binary file?)", m->path, lineno);
         return -1;
     }
+    /* other control bytes (an escape sequence) would reach the terminal in
+     * the refusals that quote a header word */
+    for (size_t i = 0; i < len; i++) {
+        unsigned char b = (unsigned char)line[i];
+        if ((b < 0x20 && b != '\t' && b != '\r' && b != '\n') || b == 0x7f) {
+            snprintf(why, whylen, "%s:%zu: the control byte 0x%02x: this is not a text table (a binary file?)",
+                     m->path, lineno, b);
+            return -1;
+        }
+    }
     char *hash = strchr(line, '#');
     if (hash)
         *hash = '\0';

@@ -72,6 +72,11 @@ bad "beyond 0.3 R = 60 nm where the paraboloid gap" -R 0.2um -E 10MPa --turn=-1n
 check "... and does not blame the node budget" sh -c "! grep -q 'budget of N' '$TMP/stderr'"
 printf '1 2\n3\0004 5\n' >"$TMP/nul.dat"
 bad "nul.dat:2: a NUL byte" --data="$TMP/nul.dat"
+# an escape sequence in a header word would reach the terminal in the
+# refusal that quotes it
+printf 'h0 (\033[2Jnm)\tF (nN)\n1\t2\n' >"$TMP/esc.dat"
+bad "esc.dat:1: the control byte 0x1b: this is not a text table" --data="$TMP/esc.dat"
+check "... and the refusal holds no escape byte" sh -c "! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
 printf '1 2\n3 1e-320\n' >"$TMP/tiny.dat"
 bad "tiny.dat:2: '1e-320' is too small for a double (it underflows" --data="$TMP/tiny.dat"
 

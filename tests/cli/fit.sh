@@ -67,6 +67,11 @@ check "a NaN in the data: exit 2, 'adhere: FILE:3:' and why, nothing written ($(
 awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
+printf 'h0 (nm)\tF (nN)\n8\t0.1\n7\t-1\n6\t-2\n' >"$TMP/three.tsv"
+"$ADHERE" fit --data="$TMP/three.tsv" -o "$TMP/threeout" fig1 >/dev/null 2>"$TMP/e6"
+rc=$?
+check "an approach of 3 points: exit 2, how many a fit needs, nothing written ($(cat "$TMP/e6"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'three.tsv:2: this approach segment has 3 points, at least 4 needed' '$TMP/e6' && [ ! -e '$TMP/threeout' ]"
 
 # --model=relax: a curve the relaxation made (E = 1 GPa, loaded to -2 nm
 # and unloaded; its force.tsv's h0, F and path, with noise of about 1 % of

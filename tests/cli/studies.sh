@@ -95,6 +95,10 @@ M="$ADHERE merge"
 $M -o "$TMP/m1" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" "$TMP/shard2" 2>"$TMP/err"
 check "a shard given twice: exit 2, its runs listed ($(cat "$TMP/err"))" \
     sh -c "[ $? -eq 2 ] && grep -q 'runs 5-8 are in' '$TMP/err'"
+S2=$TMP/shard2
+$M -o "$TMP/m1" "$TMP/shard1" $S2 $S2 $S2 $S2 $S2 $S2 "$TMP/shard3" 2>"$TMP/err"
+check "a shard given 6 times (more runs twice than the study has): exit 2, each run listed once ($(cat "$TMP/err"))" \
+    sh -c "[ $? -eq 2 ] && grep -q 'runs 5-8 are in' '$TMP/err' && ! grep -q 'in all' '$TMP/err'"
 $M -o "$TMP/m2" "$TMP/shard1" "$TMP/shard3" 2>"$TMP/err"
 rc=$?
 check "a shard missing: exit 2, its runs listed ($(cat "$TMP/err"))" \
@@ -110,9 +114,20 @@ $M -o "$TMP/m4" "$TMP/shard1" "$TMP/other" "$TMP/shard3" 2>"$TMP/err"
 rc=$?
 check "shards of different studies: exit 2, what differs named ($(cat "$TMP/err"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'different studies.*protocol.dwell = 5' '$TMP/err'"
+$M -o "$TMP/m3" "$TMP/shard1" "$TMP/other" 2>/dev/null
+rc=$?
+check "a refused merge into an earlier merge's directory (exit $rc) leaves its table" \
+    sh -c "[ $rc -eq 2 ] && grep -q '^# PARTIAL: 12 of 16' '$TMP/m3/sweep.tsv'"
 "$ADHERE" $TINY -q "$TMP/map.scene" --shard 2/4 -o "$TMP/split4" 2>/dev/null
 $M -o "$TMP/m5" "$TMP/shard1" "$TMP/split4" 2>"$TMP/err"
 check "shards of another split: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'shard 1/3.*shard 2/4' '$TMP/err'"
+# a line no row of adhere's is (1 GiB, sparse: no disk), refused before it
+# is read into memory
+mkdir "$TMP/long" && cp "$TMP/shard2/study.tsv" "$TMP/shard2/runs.tsv" "$TMP/long/" && truncate -s +1G "$TMP/long/runs.tsv"
+$M -o "$TMP/m7" "$TMP/shard1" "$TMP/long" "$TMP/shard3" 2>"$TMP/err"
+check "a runs.tsv with a line of 1 GiB: exit 2 ($(cat "$TMP/err"))" \
+    sh -c "[ $? -eq 2 ] && grep -q 'long/runs.tsv is not a record of study' '$TMP/err'"
+rm -f "$TMP/long/runs.tsv"
 $M -o "$TMP/m6" "$TMP/whole/run-1" 2>"$TMP/err"
 check "a directory that holds no shard: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'no study.tsv' '$TMP/err'"
 $M -o "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>"$TMP/err"
@@ -167,6 +182,16 @@ check "... with no run-K directory (--run-dirs=no)" sh -c "! ls -d '$TMP'/log/ru
 rc=$?
 check "plot = curves draws curves.png (rigid spheres: jump_in_h0 against z0, a curve per E; exit $rc $(head -c 200 "$TMP/err"))" \
     sh -c "[ $rc -eq 0 ] && [ -s '$TMP/curves/curves.png' ] && [ ! -e '$TMP/curves/map.png' ]"
+# map.png's tics: labels like 2.73e-20 J, half a dozen across at most (a
+# dozen overlapped), a dozen up the side
+printf '#!/bin/sh\ntee -a "%s" | "%s" "$@"\n' "$TMP/map.gp" "$(command -v gnuplot)" >"$TMP/logging-gnuplot"
+chmod +x "$TMP/logging-gnuplot"
+ADHERE_GNUPLOT=$TMP/logging-gnuplot "$ADHERE" --batch -q --mode=rigid --sweep='E=1GPa..4GPa,30' \
+    --sweep='A=1e-20J..2e-19J,100' --run-dirs=no -o "$TMP/tics" 2>"$TMP/err"
+nx=$(grep '^set xtics (' "$TMP/map.gp" | tail -1 | grep -o "' [0-9]*" | wc -l)
+ny=$(grep '^set ytics (' "$TMP/map.gp" | tail -1 | grep -o "' [0-9]*" | wc -l)
+check "map.png of 30 x 100 runs: $nx labels across (2 to 6), $ny up the side (7 to 12)" \
+    sh -c "[ -s '$TMP/tics/map.png' ] && [ $nx -ge 2 ] && [ $nx -le 6 ] && [ $ny -ge 7 ] && [ $ny -le 12 ]"
 "$ADHERE" --plan -N 100 --force --eps=10pm "$TMP/map.scene" --shard 2/3 -o "$TMP/p" >"$TMP/plan" 2>&1
 check "the plan counts the runs" grep -qx 'runs: 16' "$TMP/plan"
 check "... the study's product" grep -q '^study: 16 runs, every combination of the 2 keys (4 x 4' "$TMP/plan"

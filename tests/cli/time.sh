@@ -21,12 +21,13 @@ bad() { # bad "expected text" args...
     fi
 }
 bad "is below --E0=3e+08 Pa: a standard linear solid is stiffest at first" --material=sls --Einf=0.1GPa
+bad "Einf = 2e+12 Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa" --material=sls --Einf=2TPa
 bad "tau = 0 s is not allowed" --material=sls --tau=0
 bad "tau = -1e-06 s is not allowed" --material=sls --tau=-1us
 bad "approach speed 0 m/s is not allowed" --material=sls --speed=0
 bad "retraction speed -1e-06 m/s is not allowed" --material=sls --speed=1um/s,-1um/s
 bad "spring k = 0 N/m is not allowed" --mode=static --spring=0
-bad "spring k = -1 N/m is not allowed" --mode=static --spring=-1N/m
+bad "spring k = -1 N/m is not allowed: it must be above 0, or none (displacement control)" --mode=static --spring=-1N/m
 bad "'2GPa' is a pressure" --material=sls --tau=2GPa
 bad "'sticky' is not a material: use elastic or sls" --material=sticky
 bad "--Einf is a standard linear solid's: --material=elastic cannot use it" --Einf=3GPa
