@@ -80,8 +80,13 @@ typedef struct adh_visco_drive {
 
 /* 1 um/s both ways, no dwell, no spring. */
 adh_visco_drive adh_visco_drive_default(void);
+/* The instrument springs a drive may hold, N/m: from the softest AFM
+ * cantilevers to a stiff surface-force apparatus (INFINITY beyond). */
+#define ADH_SPRING_MIN 1e-3
+#define ADH_SPRING_MAX 1e4
 /* ADH_SUCCESS, or ADH_EINVAL with a sentence: speeds above 0 and at most
- * 1 m/s, dwell from 0 to 1e6 s, k above 0 (INFINITY allowed). */
+ * 1 m/s, dwell from 0 to 1e6 s, k from ADH_SPRING_MIN to ADH_SPRING_MAX
+ * (INFINITY allowed). */
 int adh_visco_drive_validate(const adh_visco_drive *d, char *why, size_t whylen);
 
 typedef struct adh_visco_settings {

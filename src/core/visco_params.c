@@ -42,8 +42,14 @@ int adh_visco_drive_validate(const adh_visco_drive *d, char *why, size_t whylen)
         BAD("retraction speed %g m/s is not allowed: it must be above 0 and at most 1 m/s", d->speed_out);
     if (!(d->dwell >= 0 && d->dwell <= 1e6))
         BAD("dwell = %g s is not allowed: it must be from 0 to 1e6 s", d->dwell);
-    if (!(d->spring > 0))
-        BAD("spring k = %g N/m is not allowed: it must be above 0 (inf: displacement control)", d->spring);
+    /* Softer than 1 mN/m the snap-in runs out to where the static curve's
+     * hysteresis quadrature alone took minutes and ignored signals; stiffer
+     * than 10 kN/m the spring holds like the base itself and physical time's
+     * continuation could not step it (measured on the visco scene: 1e-4 and
+     * 1e5 N/m stopped, 1e-3 to 1e4 ran). Infinity is displacement control. */
+    if (!(isinf(d->spring) && d->spring > 0) && !(d->spring >= ADH_SPRING_MIN && d->spring <= ADH_SPRING_MAX))
+        BAD("spring k = %g N/m is not allowed: it must be from %g to %g N/m, or none (displacement control, "
+            "what a stiffer spring approaches)", d->spring, ADH_SPRING_MIN, ADH_SPRING_MAX);
     return ADH_SUCCESS;
 }
 

@@ -491,13 +491,7 @@ static int time_value_ok(const char *name, double v, char *why, size_t whylen)
         m.tau = v;
     else if (!strcmp(name, "dwell_time"))
         d.dwell = v;
-    else if (!strcmp(name, "spring") && !(v > 0)) {
-        /* the core's infinite spring is the user's none, which this parser reads */
-        if (why)
-            snprintf(why, whylen, "spring k = %g N/m is not allowed: it must be above 0, or none (displacement "
-                     "control)", v);
-        return 0;
-    } else if (!strcmp(name, "spring"))
+    else if (!strcmp(name, "spring"))
         d.spring = v;
     else if (!strcmp(name, "speed_out"))
         d.speed_out = v;

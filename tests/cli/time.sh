@@ -27,7 +27,10 @@ bad "tau = -1e-06 s is not allowed" --material=sls --tau=-1us
 bad "approach speed 0 m/s is not allowed" --material=sls --speed=0
 bad "retraction speed -1e-06 m/s is not allowed" --material=sls --speed=1um/s,-1um/s
 bad "spring k = 0 N/m is not allowed" --mode=static --spring=0
-bad "spring k = -1 N/m is not allowed: it must be above 0, or none (displacement control)" --mode=static --spring=-1N/m
+bad "spring k = -1 N/m is not allowed: it must be from 0.001 to 10000 N/m, or none (displacement control, what a stiffer spring approaches)" --mode=static --spring=-1N/m
+# 1e-12 N/m ran the static curve for minutes deaf to signals; 1e5 N/m stopped physical time
+bad "spring k = 1e-12 N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e-12N/m
+bad "spring k = 100000 N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e5N/m
 bad "'2GPa' is a pressure" --material=sls --tau=2GPa
 bad "'sticky' is not a material: use elastic or sls" --material=sticky
 bad "--Einf is a standard linear solid's: --material=elastic cannot use it" --Einf=3GPa
