@@ -110,6 +110,12 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
         if (adh_sls_validate(&v.sls, msg, sizeof msg) != ADH_SUCCESS ||
             adh_visco_drive_validate(&v.drive, msg, sizeof msg) != ADH_SUCCESS)
             BAD("%s", msg);
+        /* below 1e-18 m the integrator stopped (1e-20 m did: tau = 10 fs at
+         * 1 um/s), and the answer is the relaxed limit long before */
+        double travel = v.sls.tau * fmin(v.drive.speed_in, v.drive.speed_out);
+        if (t->sls && travel < 1e-18)
+            BAD("material.tau x speed = %g m is below 1e-18 m: the solid relaxes before the drive moves a billionth "
+                "of z0; material.material = elastic at E = E0 is that limit", travel);
     }
     return 0;
 }
