@@ -53,16 +53,26 @@ typedef struct cost_run {
     double err_static[4]; /* pull-off, jump-in, hysteresis and a at the turn against the static curve */
 } cost_run;
 
+/* The static curve every eps should approach, solved on this thread while
+ * the workers run: the finest grid with the exact kernel, marked where that
+ * grid does not resolve it (its errors are then no verdict). */
+typedef struct cost_ref {
+    adh_run_spec spec;
+    adh_static_result res;
+    int status;
+    int resolved;
+    char why[512];       /* why the grid does not resolve it; "" when it does */
+    double hysteresis;   /* J; NAN when the curve failed */
+    double a_turn;       /* m; NAN when the curve failed */
+} cost_ref;
+
 typedef struct cost_job {
     const adh_config *cfg;
     cost_run *runs;
     size_t n, next, done;
     double t0;                /* when the runs began */
     pthread_mutex_t lock;
-    double static_hysteresis; /* J; NAN when the static curve failed */
-    double static_a_turn;     /* m; NAN when the static curve failed */
-    int static_resolved;      /* 0: the static curve's grid is coarser than its resolved limit */
-    char static_why[512];     /* and why */
+    const cost_ref *ref;      /* the static curve, once solved */
     char partial[160];        /* why the report is incomplete; "" when it is not */
 } cost_job;
 
@@ -204,10 +214,10 @@ static int write_cost(FILE *f, const void *ctx)
             ADH_VERSION, sysconf(_SC_NPROCESSORS_ONLN), blas_config(), rule);
     if (job->partial[0])
         fprintf(f, "# PARTIAL: %s\n", job->partial);
-    fprintf(f, "# static curve's hysteresis (eps -> 0, displacement control): %.17g J\n", job->static_hysteresis);
-    fprintf(f, "# static curve's contact radius at the turn: %.17g m\n", job->static_a_turn);
-    if (!job->static_resolved)
-        fprintf(f, "# static curve NOT resolved (%s): static_err_* are no verdict\n", job->static_why);
+    fprintf(f, "# static curve's hysteresis (eps -> 0, displacement control): %.17g J\n", job->ref->hysteresis);
+    fprintf(f, "# static curve's contact radius at the turn: %.17g m\n", job->ref->a_turn);
+    if (!job->ref->resolved)
+        fprintf(f, "# static curve NOT resolved (%s): static_err_* are no verdict\n", job->ref->why);
     fputs("kernel\tnodes\teps\tseconds\tkernel_seconds\titerations\tsteps\tunconverged\tpulloff_F\tjump_in_h0\thysteresis\ta_turn\t"
           "err_pulloff\terr_jump_in\terr_hysteresis\terr_a_turn\tstatic_err_pulloff\tstatic_err_jump_in\tstatic_err_hysteresis\tstatic_err_a_turn\tstatus\n", f);
     for (size_t i = 0; i < job->n; i++) {
@@ -323,18 +333,6 @@ static int by_cost(const void *a, const void *b)
     return (cx < cy) - (cx > cy);
 }
 
-/* The static curve every eps should approach, solved on this thread while
- * the workers run: the finest grid with the exact kernel, marked where that
- * grid does not resolve it (its errors are then no verdict). */
-typedef struct cost_ref {
-    adh_run_spec spec;
-    adh_static_result res;
-    int status;
-    int resolved;
-    char why[512];       /* why the grid does not resolve it; "" when it does */
-    double hysteresis;   /* J; NAN when the curve failed */
-    double a_turn;       /* m; NAN when the curve failed */
-} cost_ref;
 
 static void cost_static_reference(const adh_config *cfg, size_t finest, cost_ref *ref)
 {
@@ -410,10 +408,7 @@ static void cost_errors(cost_job *job, const cost_run *best, const cost_ref *ref
     if (cli_interrupt_signal())
         snprintf(job->partial, sizeof job->partial, "interrupted by signal %d: %zu of %zu runs cut short, %zu never started%s",
                  cli_interrupt_signal(), cut, job->n, not_run, ok ? "" : ", static curve not finished");
-    job->static_hysteresis = ref->hysteresis;
-    job->static_a_turn = ref->a_turn;
-    job->static_resolved = ref->resolved;
-    snprintf(job->static_why, sizeof job->static_why, "%s", ref->why);
+    job->ref = ref;
 }
 
 static const char *cost_note(const cost_run *r)
