@@ -51,7 +51,11 @@ static int run_config(const adh_run_spec *c, outcome *o)
         adh_grid_free(g);
         return o->rc;
     }
-    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = c->grid.use.kernel }, NULL);
+    /* The operator the program itself would hold this grid in (H² on a
+     * uniform grid of 256 nodes or more): the regimes users run. */
+    adh_kernel *k = adh_kernel_alloc(
+        g, &(adh_kernel_settings){ .type = c->grid.use.kernel, .storage = adh_config_storage_for(c, ADH_MODE_RELAX) },
+        NULL);
     o->rc = adh_runner_rule(&adh_rule_relax, g, k, &c->mat, &c->relax, &c->proto, NULL, NULL, &o->run);
     adh_kernel_free(k);
     adh_grid_free(g);
