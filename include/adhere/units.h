@@ -12,9 +12,13 @@ typedef enum adh_quantity {
     ADH_Q_SPEED,         /* m/s */
     ADH_Q_FORCE,         /* N */
     ADH_Q_TIME,          /* s */
-    ADH_Q_STIFFNESS      /* N/m */
+    ADH_Q_STIFFNESS,     /* N/m */
+    ADH_Q_WORK           /* J, written with a metric prefix (hysteresis,
+                            dissipated energy: 6.579 fJ, 21.8 pJ), where an
+                            ADH_Q_ENERGY (the Hamaker constant) is written
+                            1e-19 J; parsed as an energy */
 } adh_quantity;
-#define ADH_Q_LAST ADH_Q_STIFFNESS
+#define ADH_Q_LAST ADH_Q_WORK
 
 /* Parses text as a finite number in quantity q's SI unit, with an optional
  * metric prefix and unit ("nm", "um", "GPa", "zJ"...). Returns ADH_SUCCESS,

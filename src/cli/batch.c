@@ -89,7 +89,7 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
 static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh_static_result *sres,
                          double static_hyst, double seconds, const char *out, const char *tables, const char *plots)
 {
-    char t[32], F[64] = "", in[64] = "", jo[64] = "", hy[96] = "", why[512];
+    char t[32], F[64] = "", in[64] = "", jo[64] = "", hy[160] = "", why[512];
     double pull = NAN, jin = run->jump_in_h0, jout = NAN, hyst = NAN;
     adh_derived d;
     adh_material_derive(&spec->mat, &d);
@@ -109,9 +109,10 @@ static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh
         }
     }
     if (!isnan(hyst) && !isnan(static_hyst))
-        snprintf(hy, sizeof hy, ", hysteresis %.4g fJ (static %.4g fJ)", hyst * 1e15, static_hyst * 1e15);
+        snprintf(hy, sizeof hy, ", hysteresis %s (static %s)", adh_qtext(hyst, ADH_Q_WORK).s,
+                 adh_qtext(static_hyst, ADH_Q_WORK).s);
     else if (!isnan(hyst))
-        snprintf(hy, sizeof hy, ", hysteresis %.4g fJ", hyst * 1e15);
+        snprintf(hy, sizeof hy, ", hysteresis %s", adh_qtext(hyst, ADH_Q_WORK).s);
     cli_progress_duration(seconds, t, sizeof t);
     adh_format_quantity(pull, ADH_Q_FORCE, 4, F, sizeof F);
     adh_format_quantity(jin, ADH_Q_LENGTH, 4, in, sizeof in);

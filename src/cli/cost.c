@@ -432,9 +432,9 @@ static void cost_print(const cost_job *job, const cost_run *best, const cost_ref
     printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
            job->n, started ? started : 1, sysconf(_SC_NPROCESSORS_ONLN), rule);
     printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "
-           "hysteresis %.4g fJ, a at the turn %.4g um%s\n",
+           "hysteresis %s, a at the turn %.4g um%s\n",
            blas_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, ref->spec.grid.use.nodes,
-           ref->res.pulloff_F, ref->res.jump_in_h0 * 1e9, ref->hysteresis * 1e15, ref->a_turn * 1e6,
+           ref->res.pulloff_F, ref->res.jump_in_h0 * 1e9, adh_qtext(ref->hysteresis, ADH_Q_WORK).s, ref->a_turn * 1e6,
            ref->status == ADH_SUCCESS ? "" : " (failed)");
     if (!ref->resolved)
         printf("the static curve is NOT resolved on that grid (%s): its st.* errors are no verdict\n", ref->why);

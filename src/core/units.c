@@ -18,7 +18,7 @@ static const struct { const char *sym; double factor; } prefixes[] = {
 static const char *const unit_sym[] = {
     [ADH_Q_NONE] = "", [ADH_Q_LENGTH] = "m", [ADH_Q_PRESSURE] = "Pa",
     [ADH_Q_ENERGY] = "J", [ADH_Q_SPEED] = "m/s", [ADH_Q_FORCE] = "N",
-    [ADH_Q_TIME] = "s", [ADH_Q_STIFFNESS] = "N/m",
+    [ADH_Q_TIME] = "s", [ADH_Q_STIFFNESS] = "N/m", [ADH_Q_WORK] = "J",
 };
 
 static const char *const quantity_name[] = {
@@ -26,6 +26,7 @@ static const char *const quantity_name[] = {
     [ADH_Q_PRESSURE] = "a pressure (Pa, MPa, GPa, ...)", [ADH_Q_ENERGY] = "an energy (J, zJ, ...)",
     [ADH_Q_SPEED] = "a speed (m/s, um/s, ...)", [ADH_Q_FORCE] = "a force (N, uN, nN, ...)",
     [ADH_Q_TIME] = "a time (s, ms, us, ...)", [ADH_Q_STIFFNESS] = "a stiffness (N/m, mN/m, ...)",
+    [ADH_Q_WORK] = "an energy (J, fJ, ...)",
 };
 
 const char *adh_quantity_unit(adh_quantity q)
@@ -38,6 +39,8 @@ const char *adh_quantity_unit(adh_quantity q)
 static int unit_of(const char *suffix, adh_quantity *q, double *factor)
 {
     for (int k = ADH_Q_LENGTH; k <= ADH_Q_LAST; k++) {
+        if (k == ADH_Q_WORK) /* an energy's unit: found as ADH_Q_ENERGY */
+            continue;
         size_t ul = strlen(unit_sym[k]), sl = strlen(suffix);
         if (sl < ul || strcmp(suffix + sl - ul, unit_sym[k]) != 0)
             continue;
@@ -92,6 +95,8 @@ static void trim(const char *text, char *buf, size_t len)
 
 int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *why, size_t whylen)
 {
+    if (q == ADH_Q_WORK)
+        q = ADH_Q_ENERGY;
     char buf[128];
     if (!text || strlen(text) >= sizeof buf - 1) {
         if (why)
@@ -177,12 +182,13 @@ void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, si
 {
     static const struct { const char *sym; double f; } pick[] = {
         { "T", 1e12 }, { "G", 1e9 }, { "M", 1e6 }, { "k", 1e3 }, { "", 1 },
-        { "m", 1e-3 }, { "u", 1e-6 }, { "n", 1e-9 }, { "p", 1e-12 }, { "f", 1e-15 },
+        { "m", 1e-3 }, { "u", 1e-6 }, { "n", 1e-9 }, { "p", 1e-12 }, { "f", 1e-15 }, { "a", 1e-18 },
     };
     /* zero in the prefix its quantity is read in: "0 nm" beside "2.85 nm" */
     static const char *const zero_prefix[] = {
         [ADH_Q_NONE] = "", [ADH_Q_LENGTH] = "n", [ADH_Q_PRESSURE] = "", [ADH_Q_ENERGY] = "",
         [ADH_Q_SPEED] = "u", [ADH_Q_FORCE] = "n", [ADH_Q_TIME] = "", [ADH_Q_STIFFNESS] = "",
+        [ADH_Q_WORK] = "f",
     };
     if (value == 0) {
         snprintf(buf, len, "0%s%s%s", q == ADH_Q_NONE ? "" : " ", zero_prefix[q], unit_sym[q]);

@@ -288,7 +288,7 @@ static void draw_cycle(const tui_sim *s, const tui_view *v, int y, int x, int w)
     put(y + 3, x, w, A_NORMAL, "  jump-in %s, jump-out %s", isnan(c.jump_in_h0) ? "not yet" : a,
         isnan(c.jump_out_h0) ? "not yet" : b);
     if (c.unloading)
-        put(y + 4, x, w, A_NORMAL, "  hysteresis %.4g fJ (area between the branches)", c.hysteresis * 1e15);
+        put(y + 4, x, w, A_NORMAL, "  hysteresis %s (area between the branches)", adh_qtext(c.hysteresis, ADH_Q_WORK).s);
 }
 
 /* The rows both modes show for a solved point: position, force, central
@@ -385,7 +385,7 @@ static void draw_time_state(const tui_sim *s, const tui_view *v, int y, int x, i
     const adh_obs *o = tui_sim_row(s);
     const adh_visco_result *r = &s->vres;
     const adh_time_settings *ts = &s->cfg.spec.time;
-    char a[64], b[64], c[64];
+    char a[64], b[64];
     put(y, x, w, A_BOLD, " State  (physical time)");
     if (!o) {
         q(ts->speed_in, ADH_Q_SPEED, a, sizeof a);
@@ -419,10 +419,8 @@ static void draw_time_state(const tui_sim *s, const tui_view *v, int y, int x, i
         put(y + 6, x, w, A_NORMAL, "  pull   not unloaded yet");
     else
         put(y + 6, x, w, A_NORMAL, "  pull   %s at t = %s", a, b);
-    /* fJ, as the relaxation's cycle says its hysteresis */
-    snprintf(c, sizeof c, "%.4g fJ", r->hysteresis * 1e15);
-    put(y + 7, x, w, A_NORMAL, "  energy %.4g fJ dissipated, hysteresis %s", r->cycle.dissipated * 1e15,
-        r->hysteresis > 0 ? c : "not yet");
+    put(y + 7, x, w, A_NORMAL, "  energy %s dissipated, hysteresis %s", adh_qtext(r->cycle.dissipated, ADH_Q_WORK).s,
+        r->hysteresis > 0 ? adh_qtext(r->hysteresis, ADH_Q_WORK).s : "not yet");
     put(y + 8, x, w, A_NORMAL, "  steps  %zu Newton iterations on this one", o->iters);
     put(y + 9, x, w, A_NORMAL, "  mode   physical time, %s", v->activity);
     if (s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS) {

@@ -318,11 +318,12 @@ static int run_done(tui *t)
         const adh_visco_result *r = &t->sim.vres;
         if (t->sim.cstatus != ADH_SUCCESS || tui_sim_redoable(&t->sim))
             return 0;
-        char pl[64], tt[64];
+        char pl[64], tt[64], hy[64];
         fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
         fmtq(r->time, ADH_Q_TIME, tt, sizeof tt);
-        say(t, 0, "cycle complete after %s (%zu steps, %zu jumps): pull-off %s, hysteresis %.4g fJ", tt,
-            t->sim.curve.nrows, r->jumps, pl, r->hysteresis * 1e15);
+        fmtq(r->hysteresis, ADH_Q_WORK, hy, sizeof hy);
+        say(t, 0, "cycle complete after %s (%zu steps, %zu jumps): pull-off %s, hysteresis %s", tt,
+            t->sim.curve.nrows, r->jumps, pl, hy);
         return 1;
     }
     if (is_curve(t)) {

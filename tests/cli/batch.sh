@@ -35,7 +35,7 @@ else
 fi
 "$ADHERE" --batch -N 100 -E 3GPa --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm -o "$TMP/close" >"$TMP/stdout" 2>"$TMP/stderr"
 check "without -q a run ends with one line: seconds, pull-off, jumps, where the files went" \
-    sh -c "[ \$(wc -l <'$TMP/stderr') -eq 1 ] && grep -Eq '^adhere: done in [0-9.]+ s: pull-off -[0-9.]+ nN, jump-in [0-9.]+ nm, jump-out [0-9.]+ nm, hysteresis [0-9.]+ fJ; wrote force.tsv, summary.tsv, turns.tsv, force.png.* in $TMP/close' '$TMP/stderr'"
+    sh -c "[ \$(wc -l <'$TMP/stderr') -eq 1 ] && grep -Eq '^adhere: done in [0-9.]+ s: pull-off -[0-9.]+ nN, jump-in [0-9.]+ nm, jump-out [0-9.]+ nm, hysteresis [0-9.]+ [afpnum]?J; wrote force.tsv, summary.tsv, turns.tsv, force.png.* in $TMP/close' '$TMP/stderr'"
 check "and no progress line when stderr is not a terminal" sh -c "! grep -q 'step [0-9]* of' '$TMP/stderr'"
 "$ADHERE" --batch -q --no-plot -N 100 -E 3GPa --spacing=10nm --eps=10pm --step=0.25nm --turn=-2nm -o "$TMP/close" >"$TMP/stdout" 2>"$TMP/stderr"
 check "-q prints nothing on success" [ ! -s "$TMP/stderr" ]

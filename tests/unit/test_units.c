@@ -77,6 +77,10 @@ int main(void)
         { -2e-7, ADH_Q_LENGTH, "-200 nm" }, { 10, ADH_Q_LENGTH, "10 m" }, { 1e-30, ADH_Q_LENGTH, "1e-30 m" },
         { 1e13, ADH_Q_PRESSURE, "10 TPa" }, { 1e16, ADH_Q_PRESSURE, "1e+16 Pa" }, { 1e-6, ADH_Q_SPEED, "1 um/s" },
         { 0.5, ADH_Q_NONE, "0.5" }, { 1e-19, ADH_Q_ENERGY, "1e-19 J" },
+        /* a work (hysteresis, dissipation) takes its prefix where the
+         * Hamaker constant does not: not "2.18e+04 fJ" */
+        { 2.18e-11, ADH_Q_WORK, "21.8 pJ" }, { 6.579e-15, ADH_Q_WORK, "6.579 fJ" },
+        { 1.329e-16, ADH_Q_WORK, "132.9 aJ" }, { 0, ADH_Q_WORK, "0 fJ" }, { 3e-9, ADH_Q_WORK, "3 nJ" },
     };
     for (size_t i = 0; i < sizeof eng / sizeof eng[0]; i++) {
         const char *got = adh_qtext(eng[i].v, eng[i].q).s;
@@ -86,6 +90,9 @@ int main(void)
     ok(strcmp(adh_qtext_arg(1.58e-9, ADH_Q_LENGTH).s, "1.58nm") == 0, "as typed: 1.58nm (got %s)",
        adh_qtext_arg(1.58e-9, ADH_Q_LENGTH).s);
     double back = 0;
+    ok(adh_parse_quantity("5fJ", ADH_Q_WORK, &back, NULL, 0) == 0 && fabs(back - 5e-15) < 1e-27,
+       "a work parses as an energy: 5fJ (%g)", back);
+    back = 0;
     ok(adh_parse_quantity(adh_qtext_arg(3.3e-8, ADH_Q_LENGTH).s, ADH_Q_LENGTH, &back, NULL, 0) == 0 && fabs(back - 3.3e-8) < 1e-20,
        "a value as typed reads back (%g)", back);
     ok(adh_quantity_is_bare("10") && adh_quantity_is_bare(" -5, -2") && adh_quantity_is_bare("1e-19"),
