@@ -60,7 +60,7 @@ HARD_BIN = $(HARD_SRC:tests/hard/%.c=$(BUILD)/tests/hard-%)
 BENCH_SRC = $(wildcard tests/bench/*.c)
 BENCH_BIN = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/tests/bench-%)
 
-.PHONY: all deps run check check-asan check-fp check-fuzz check-slurm deps-slurm asan-build fuzz-build bench install \
+.PHONY: all deps run check check-asan check-fp check-fuzz check-slurm check-tsan deps-slurm asan-build fuzz-build bench install \
         uninstall clean
 
 all: deps $(BIN)
@@ -169,6 +169,16 @@ asan-build: deps
 
 check-asan: asan-build
 	@ONLY=c tests/run-all.sh build-asan
+
+# The two drivers that run on threads (--cost's grid, a study's runs), built
+# under ThreadSanitizer and run small on 2 threads: a race stops them.
+check-tsan: deps
+	@$(MAKE) --no-print-directory BUILD=build-tsan BIN=build-tsan/adhere CFLAGS="-O1 -g -fsanitize=thread" \
+	  LDFLAGS="-fsanitize=thread" build-tsan/adhere
+	@d=$$(mktemp -d) && export TSAN_OPTIONS=halt_on_error=1 && \
+	  build-tsan/adhere --cost --cost-nodes=100,200 --cost-eps=10pm,5pm --turn=-2nm -E 3GPa --no-plot -q -o $$d/cost 2>$$d/err && \
+	  build-tsan/adhere --batch -N 100 --force --eps=10pm --no-plot -q tests/cli/map.scene -o $$d/map 2>>$$d/err; \
+	  rc=$$?; [ $$rc -eq 0 ] || cat $$d/err; rm -rf $$d; [ $$rc -eq 0 ] && echo "check-tsan: --cost and a 16-run study on 2 threads, no race"; exit $$rc
 
 # libFuzzer targets, built with clang over the parsers' own sources.
 FUZZ_CC    = clang

@@ -16,7 +16,9 @@
  * picking the CPU's (GCC's ifunc). Each node's arithmetic is the same in
  * both (no fused multiply-add: AVX2 has none), so they agree digit for
  * digit. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+/* Not under ThreadSanitizer: the ifunc resolver would run instrumented
+ * before the sanitizer's runtime is up, and every run crashed at load. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && !defined(__SANITIZE_THREAD__)
 #define ADH_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define ADH_SIMD_CLONES

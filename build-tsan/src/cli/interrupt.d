@@ -1,0 +1,21 @@
+build-tsan/src/cli/interrupt.o: src/cli/interrupt.c src/cli/interrupt.h \
+ include/adhere/runner.h include/adhere/drive.h include/adhere/grid.h \
+ include/adhere/params.h include/adhere/kernel.h \
+ include/adhere/protocol.h include/adhere/run.h include/adhere/observe.h \
+ include/adhere/state.h include/adhere/relax.h include/adhere/rule.h \
+ include/adhere/static.h include/adhere/folds.h src/util/ready.h
+src/cli/interrupt.h:
+include/adhere/runner.h:
+include/adhere/drive.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/kernel.h:
+include/adhere/protocol.h:
+include/adhere/run.h:
+include/adhere/observe.h:
+include/adhere/state.h:
+include/adhere/relax.h:
+include/adhere/rule.h:
+include/adhere/static.h:
+include/adhere/folds.h:
+src/util/ready.h:

@@ -1,0 +1,32 @@
+build-tsan/src/cli/timerun.o: src/cli/timerun.c src/cli/timerun.h \
+ include/adhere/runner.h include/adhere/drive.h include/adhere/grid.h \
+ include/adhere/params.h include/adhere/kernel.h \
+ include/adhere/protocol.h include/adhere/run.h include/adhere/observe.h \
+ include/adhere/state.h include/adhere/relax.h include/adhere/rule.h \
+ include/adhere/static.h include/adhere/folds.h include/adhere/visco.h \
+ src/cli/tables.h src/scene/config.h include/adhere/rings.h \
+ include/adhere/units.h src/scene/figures.h src/plot/outdir.h \
+ include/adhere/rule_visco.h include/adhere/status.h
+src/cli/timerun.h:
+include/adhere/runner.h:
+include/adhere/drive.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/kernel.h:
+include/adhere/protocol.h:
+include/adhere/run.h:
+include/adhere/observe.h:
+include/adhere/state.h:
+include/adhere/relax.h:
+include/adhere/rule.h:
+include/adhere/static.h:
+include/adhere/folds.h:
+include/adhere/visco.h:
+src/cli/tables.h:
+src/scene/config.h:
+include/adhere/rings.h:
+include/adhere/units.h:
+src/scene/figures.h:
+src/plot/outdir.h:
+include/adhere/rule_visco.h:
+include/adhere/status.h:

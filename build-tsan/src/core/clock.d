@@ -1,0 +1,2 @@
+build-tsan/src/core/clock.o: src/core/clock.c include/adhere/clock.h
+include/adhere/clock.h:

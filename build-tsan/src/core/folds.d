@@ -1,0 +1,2 @@
+build-tsan/src/core/folds.o: src/core/folds.c include/adhere/folds.h
+include/adhere/folds.h:

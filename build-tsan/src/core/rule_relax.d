@@ -1,0 +1,15 @@
+build-tsan/src/core/rule_relax.o: src/core/rule_relax.c \
+ include/adhere/rule.h include/adhere/grid.h include/adhere/params.h \
+ include/adhere/kernel.h include/adhere/observe.h include/adhere/state.h \
+ include/adhere/protocol.h include/adhere/run.h include/adhere/relax.h \
+ include/adhere/status.h
+include/adhere/rule.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/kernel.h:
+include/adhere/observe.h:
+include/adhere/state.h:
+include/adhere/protocol.h:
+include/adhere/run.h:
+include/adhere/relax.h:
+include/adhere/status.h:

@@ -1,0 +1,20 @@
+build-tsan/src/core/rule_static.o: src/core/rule_static.c \
+ include/adhere/rule_static.h include/adhere/drive.h \
+ include/adhere/grid.h include/adhere/params.h include/adhere/kernel.h \
+ include/adhere/protocol.h include/adhere/run.h include/adhere/observe.h \
+ include/adhere/state.h include/adhere/relax.h include/adhere/rule.h \
+ include/adhere/static.h include/adhere/folds.h include/adhere/status.h
+include/adhere/rule_static.h:
+include/adhere/drive.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/kernel.h:
+include/adhere/protocol.h:
+include/adhere/run.h:
+include/adhere/observe.h:
+include/adhere/state.h:
+include/adhere/relax.h:
+include/adhere/rule.h:
+include/adhere/static.h:
+include/adhere/folds.h:
+include/adhere/status.h:

@@ -1,0 +1,25 @@
+build-tsan/src/core/static.o: src/core/static.c include/adhere/units.h \
+ include/adhere/static.h include/adhere/folds.h include/adhere/grid.h \
+ include/adhere/params.h include/adhere/kernel.h \
+ include/adhere/protocol.h include/adhere/run.h include/adhere/observe.h \
+ include/adhere/state.h include/adhere/clock.h include/adhere/law.h \
+ include/adhere/models.h include/adhere/rings.h include/adhere/status.h \
+ src/core/static.h include/adhere/fgmres.h include/adhere/precond.h
+include/adhere/units.h:
+include/adhere/static.h:
+include/adhere/folds.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/kernel.h:
+include/adhere/protocol.h:
+include/adhere/run.h:
+include/adhere/observe.h:
+include/adhere/state.h:
+include/adhere/clock.h:
+include/adhere/law.h:
+include/adhere/models.h:
+include/adhere/rings.h:
+include/adhere/status.h:
+src/core/static.h:
+include/adhere/fgmres.h:
+include/adhere/precond.h:

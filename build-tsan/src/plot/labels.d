@@ -1,0 +1,2 @@
+build-tsan/src/plot/labels.o: src/plot/labels.c src/plot/labels.h
+src/plot/labels.h:

@@ -1,0 +1,35 @@
+build-tsan/src/plot/plots.o: src/plot/plots.c src/plot/plot.h \
+ include/adhere/run.h include/adhere/observe.h include/adhere/grid.h \
+ include/adhere/params.h include/adhere/state.h src/plot/outdir.h \
+ src/plot/setup.h src/scene/config.h include/adhere/kernel.h \
+ include/adhere/protocol.h include/adhere/relax.h include/adhere/rings.h \
+ include/adhere/units.h src/scene/figures.h src/scene/measured.h \
+ include/adhere/maugis.h include/adhere/models.h src/plot/axes.h \
+ src/plot/gnuplot.h src/plot/labels.h src/plot/models.h src/plot/png.h \
+ src/plot/session.h src/plot/speed.h src/plot/tsv.h
+src/plot/plot.h:
+include/adhere/run.h:
+include/adhere/observe.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/state.h:
+src/plot/outdir.h:
+src/plot/setup.h:
+src/scene/config.h:
+include/adhere/kernel.h:
+include/adhere/protocol.h:
+include/adhere/relax.h:
+include/adhere/rings.h:
+include/adhere/units.h:
+src/scene/figures.h:
+src/scene/measured.h:
+include/adhere/maugis.h:
+include/adhere/models.h:
+src/plot/axes.h:
+src/plot/gnuplot.h:
+src/plot/labels.h:
+src/plot/models.h:
+src/plot/png.h:
+src/plot/session.h:
+src/plot/speed.h:
+src/plot/tsv.h:

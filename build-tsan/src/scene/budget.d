@@ -1,0 +1,18 @@
+build-tsan/src/scene/budget.o: src/scene/budget.c src/scene/budget.h \
+ src/scene/config.h include/adhere/grid.h include/adhere/params.h \
+ include/adhere/kernel.h include/adhere/protocol.h include/adhere/run.h \
+ include/adhere/observe.h include/adhere/state.h include/adhere/relax.h \
+ include/adhere/rings.h include/adhere/units.h src/scene/figures.h
+src/scene/budget.h:
+src/scene/config.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/kernel.h:
+include/adhere/protocol.h:
+include/adhere/run.h:
+include/adhere/observe.h:
+include/adhere/state.h:
+include/adhere/relax.h:
+include/adhere/rings.h:
+include/adhere/units.h:
+src/scene/figures.h:

@@ -1,0 +1,21 @@
+build-tsan/src/scene/config.o: src/scene/config.c src/scene/config.h \
+ include/adhere/grid.h include/adhere/params.h include/adhere/kernel.h \
+ include/adhere/protocol.h include/adhere/run.h include/adhere/observe.h \
+ include/adhere/state.h include/adhere/relax.h include/adhere/rings.h \
+ include/adhere/units.h src/scene/figures.h include/adhere/models.h \
+ include/adhere/status.h include/adhere/visco.h
+src/scene/config.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/kernel.h:
+include/adhere/protocol.h:
+include/adhere/run.h:
+include/adhere/observe.h:
+include/adhere/state.h:
+include/adhere/relax.h:
+include/adhere/rings.h:
+include/adhere/units.h:
+src/scene/figures.h:
+include/adhere/models.h:
+include/adhere/status.h:
+include/adhere/visco.h:

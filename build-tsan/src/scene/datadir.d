@@ -1,0 +1,2 @@
+build-tsan/src/scene/datadir.o: src/scene/datadir.c src/scene/datadir.h
+src/scene/datadir.h:

@@ -1,0 +1,20 @@
+build-tsan/src/scene/scene.o: src/scene/scene.c src/scene/scene.h \
+ src/scene/config.h include/adhere/grid.h include/adhere/params.h \
+ include/adhere/kernel.h include/adhere/protocol.h include/adhere/run.h \
+ include/adhere/observe.h include/adhere/state.h include/adhere/relax.h \
+ include/adhere/rings.h include/adhere/units.h src/scene/figures.h \
+ src/scene/datadir.h
+src/scene/scene.h:
+src/scene/config.h:
+include/adhere/grid.h:
+include/adhere/params.h:
+include/adhere/kernel.h:
+include/adhere/protocol.h:
+include/adhere/run.h:
+include/adhere/observe.h:
+include/adhere/state.h:
+include/adhere/relax.h:
+include/adhere/rings.h:
+include/adhere/units.h:
+src/scene/figures.h:
+src/scene/datadir.h:
