@@ -176,7 +176,7 @@ check-tsan: deps
 	@$(MAKE) --no-print-directory BUILD=build-tsan BIN=build-tsan/adhere CFLAGS="-O1 -g -fsanitize=thread" \
 	  LDFLAGS="-fsanitize=thread" build-tsan/adhere
 	@d=$$(mktemp -d) && export TSAN_OPTIONS=halt_on_error=1 && \
-	  build-tsan/adhere --cost --cost-nodes=100,200 --cost-eps=10pm,5pm --turn=-2nm -E 3GPa --no-plot -q -o $$d/cost 2>$$d/err && \
+	  build-tsan/adhere --cost --cost-nodes=100,200 --cost-eps=10pm,5pm --turn=-2nm -E 3GPa --no-plot -q -o $$d/cost >$$d/out 2>$$d/err && \
 	  build-tsan/adhere --batch -N 100 --force --eps=10pm --no-plot -q tests/cli/map.scene -o $$d/map 2>>$$d/err; \
 	  rc=$$?; [ $$rc -eq 0 ] || cat $$d/err; rm -rf $$d; [ $$rc -eq 0 ] && echo "check-tsan: --cost and a 16-run study on 2 threads, no race"; exit $$rc
 
