@@ -34,12 +34,20 @@ typedef struct entry {
     long ct_nsec;           /* whose mtime was set back all move it */
 } entry;
 
+/* A file written under its temporary name, waiting for adh_outdir_commit. */
+typedef struct staged {
+    char tmp[64], name[32];
+} staged;
+
 struct adh_outdir {
     int fd;
     unsigned flags;
     int foreign_manifest;   /* a manifest there that adhere cannot trust */
     entry *e;
     size_t n, cap;
+    int staging;            /* adh_outdir_stage: new files wait under their temporaries */
+    staged *st;
+    size_t nst, capst;
     char path[PATH_MAX + 64];   /* for messages: DIR, or DIR/run-K */
 };
 
@@ -130,7 +138,14 @@ static void random6(char *out)
 /* A new file .NAME.XXXXXX in dirfd: O_EXCL and O_NOFOLLOW, so nothing
  * planted under that name (a link) is ever opened. Its descriptor, or -1
  * with errno. */
+static int temp_open(int dirfd, const char *name, int mode, char *tmp, size_t len);
 static int temp_create(int dirfd, const char *name, char *tmp, size_t len)
+{
+    return temp_open(dirfd, name, O_WRONLY, tmp, len);
+}
+
+/* temp_create's, opened with mode (O_WRONLY, or O_RDWR | O_APPEND for a log). */
+static int temp_open(int dirfd, const char *name, int mode, char *tmp, size_t len)
 {
     for (int tries = 0; tries < 100; tries++) {
         char r[8];
@@ -139,7 +154,7 @@ static int temp_create(int dirfd, const char *name, char *tmp, size_t len)
             errno = ENAMETOOLONG;
             return -1;
         }
-        int fd = openat(dirfd, tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        int fd = openat(dirfd, tmp, mode | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0 || errno != EEXIST)
             return fd;
     }
@@ -724,7 +739,9 @@ void adh_outdir_close(adh_outdir *d)
 {
     if (!d)
         return;
+    adh_outdir_abandon(d);   /* never committed: nothing half-done stays */
     close(d->fd);
+    free(d->st);
     free(d->e);
     free(d);
 }
@@ -767,6 +784,114 @@ static void keep_newest(adh_outdir *d, const char *name, const char *tmp)
         d->e[d->n++] = keep;   /* room: at least that one was dropped */
 }
 
+/* ------------------------------------------------- staged files */
+
+/* The staged temporary of name, or -1. */
+static long stage_find(const adh_outdir *d, const char *name)
+{
+    for (size_t i = 0; i < d->nst; i++)
+        if (!strcmp(d->st[i].name, name))
+            return (long)i;
+    return -1;
+}
+
+/* The record of the file (a temporary) called name dropped. */
+static void drop_named(adh_outdir *d, const char *name)
+{
+    for (size_t i = d->n; i-- > 0;)
+        if (!strcmp(d->e[i].name, name))
+            drop_entry(d, i);
+}
+
+/* Staged entry i's temporary removed with its record. */
+static void stage_drop(adh_outdir *d, size_t i)
+{
+    unlinkat(d->fd, d->st[i].tmp, 0);
+    drop_named(d, d->st[i].tmp);
+    d->st[i] = d->st[--d->nst];
+}
+
+/* tmp, now whole, waits to become name; an earlier staged name's goes. 0, or -1. */
+static int stage_push(adh_outdir *d, const char *name, const char *tmp)
+{
+    long old = stage_find(d, name);
+    if (old >= 0)
+        stage_drop(d, (size_t)old);
+    if (d->nst == d->capst) {
+        size_t cap = d->capst ? 2 * d->capst : 8;
+        staged *t = realloc(d->st, cap * sizeof *t);
+        if (!t)
+            return -1;
+        d->st = t, d->capst = cap;
+    }
+    snprintf(d->st[d->nst].tmp, sizeof d->st[0].tmp, "%s", tmp);
+    snprintf(d->st[d->nst].name, sizeof d->st[0].name, "%s", name);
+    d->nst++;
+    return 0;
+}
+
+void adh_outdir_stage(adh_outdir *d)
+{
+    d->staging = 1;
+}
+
+void adh_outdir_abandon(adh_outdir *d)
+{
+    if (!d->nst && !d->staging)
+        return;
+    while (d->nst)
+        stage_drop(d, d->nst - 1);
+    d->staging = 0;
+    save(d);
+}
+
+/* The files of d's manifest not staged now, and still as an earlier run
+ * wrote them, removed (run-K directories stay). */
+static void clear_unstaged(adh_outdir *d)
+{
+    for (size_t i = d->n; i-- > 0;) {
+        const entry *e = &d->e[i];
+        size_t len = strlen(e->name);
+        int mine = 0;
+        for (size_t k = 0; k < d->nst && !mine; k++)
+            mine = !strcmp(e->name, d->st[k].name) || !strcmp(e->name, d->st[k].tmp);
+        struct stat st;
+        if (mine || (len && e->name[len - 1] == '/'))
+            continue;
+        if (fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(e, &st))
+            unlinkat(d->fd, e->name, 0);
+        drop_entry(d, i);
+    }
+}
+
+int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen)
+{
+    if (replace)
+        clear_unstaged(d);
+    int e = 0;
+    const char *failed = "";
+    while (d->nst && !e) {
+        staged *s = &d->st[0];
+        struct stat st, now;
+        /* as adh_outdir_write records it: before the rename and after */
+        if (fstatat(d->fd, s->tmp, &st, AT_SYMLINK_NOFOLLOW) != 0 || add_entry(d, s->name, &st, 0) != 0 ||
+            save(d) != 0 || renameat(d->fd, s->tmp, d->fd, s->name) != 0) {
+            e = errno ? errno : ENOMEM;
+            failed = s->name;
+            break;
+        }
+        if (fstatat(d->fd, s->name, &now, AT_SYMLINK_NOFOLLOW) == 0 && now.st_ino == st.st_ino)
+            add_entry(d, s->name, &now, 0);
+        keep_newest(d, s->name, s->tmp);
+        *s = d->st[--d->nst];
+    }
+    if (e)
+        snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, failed, strerror(e));
+    adh_outdir_abandon(d);   /* what a failure left, and the mode */
+    save(d);
+    return e ? -1 : 0;
+}
+
 int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, const void *ctx, char *why,
                      size_t whylen)
 {
@@ -792,6 +917,11 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
      * the two leaves the new file unproven, so a later run refuses it (never
      * takes it for the user's), and the older record keeps the older file
      * proven until it is replaced */
+    if (!e && d->staging) {
+        if (stage_push(d, name, tmp) == 0)
+            return 0;
+        e = ENOMEM;
+    }
     if (!e && (add_entry(d, name, &st, 0) != 0 || save(d) != 0))
         e = errno ? errno : ENOMEM;
     if (!e && renameat(d->fd, tmp, d->fd, name) != 0)
@@ -811,12 +941,33 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
     return 0;
 }
 
+/* A log staged: made under a temporary, renamed by adh_outdir_commit. */
+static int log_stage(adh_outdir *d, const char *name, char *why, size_t whylen)
+{
+    char tmp[64];
+    struct stat st;
+    int fd = temp_open(d->fd, name, O_RDWR | O_APPEND, tmp, sizeof tmp);
+    if (fd < 0 || fstat(fd, &st) != 0 || add_entry(d, tmp, &st, 1) != 0 || save(d) != 0 ||
+        stage_push(d, name, tmp) != 0) {
+        snprintf(why, whylen, "cannot open gnuplot's log %.3000s/%s: %s", d->path, name, strerror(errno));
+        if (fd >= 0) {
+            close(fd);
+            unlinkat(d->fd, tmp, 0);
+            drop_named(d, tmp);
+        }
+        return -1;
+    }
+    return fd;
+}
+
 int adh_outdir_log_open(adh_outdir *d, const char *name, char *why, size_t whylen)
 {
     if (!may_replace(d, name)) {
         not_replaced(d, name, why, whylen);
         return -1;
     }
+    if (d->staging)
+        return log_stage(d, name, why, whylen);
     /* an earlier log of this run's goes (each holds one session's
      * complaints), and with it its record */
     unlinkat(d->fd, name, 0);
@@ -864,7 +1015,14 @@ void adh_outdir_log_close(adh_outdir *d, const char *name, int fd)
     struct stat st, now;
     if (fd < 0)
         return;
-    long i = -1;
+    long i = -1, k = stage_find(d, name);
+    if (k >= 0) {   /* staged: an empty log is not kept, a full one waits */
+        if (fstat(fd, &st) == 0 && st.st_size == 0)
+            stage_drop(d, (size_t)k);
+        save(d);
+        close(fd);
+        return;
+    }
     if (fstat(fd, &st) == 0 && fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 &&
         now.st_dev == st.st_dev && now.st_ino == st.st_ino)
         i = find(d, name, &now);

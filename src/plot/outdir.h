@@ -73,6 +73,19 @@ typedef int (*adh_outdir_writer)(FILE *f, const void *ctx);
 int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, const void *ctx, char *why,
                      size_t whylen);
 
+/* Staging (adhere merge: the earlier merge stays whole until the new one
+ * is): after adh_outdir_stage, adh_outdir_write and adh_outdir_log_open
+ * leave each new file under its temporary (recorded in the manifest, so a
+ * kill leaves nothing the next run cannot remove). adh_outdir_commit
+ * renames them all into place at once and, with replace, removes the
+ * files an earlier run wrote that this one did not write again (run-K
+ * directories stay): 0, or -1 with why (what was not renamed is removed).
+ * adh_outdir_abandon removes them, leaving the earlier files as they were;
+ * adh_outdir_close abandons what was not committed. */
+void adh_outdir_stage(adh_outdir *d);
+int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen);
+void adh_outdir_abandon(adh_outdir *d);
+
 /* A log (gnuplot.log) made new in d for appending, readable too, recorded
  * in the manifest as a file that grows: its descriptor (close-on-exec), or
  * -1 with why. adh_outdir_log_close closes it and removes it when it stayed

@@ -40,6 +40,33 @@ if command -v parallel >/dev/null 2>&1; then
     check "the merged map.png is the whole study's, byte for byte" cmp -s "$TMP/whole/map.png" "$TMP/merged/map.png"
     check "and the timing column is really there to differ (16 times, each > 0)" \
         awk -F'\t' '!/^#/ && $1 != "run" {n++; if (!($15 > 0)) bad = 1} END {exit bad || n != 16}' "$TMP/merged/sweep.tsv"
+    # a signal while the merge draws (a gnuplot that never answers, which
+    # says when it started): the earlier merge's table and figure stay as
+    # they were, no temporary is left, exit 130 (129 for SIGHUP)
+    printf '#!/bin/sh\n: >"$GP_STARTED"\nexec cat 3>&1 >/dev/null\n' >"$TMP/gp-slow"
+    chmod +x "$TMP/gp-slow"
+    cp "$TMP/merged/sweep.tsv" "$TMP/merged.tsv"
+    mkdir -p "$TMP/mtmp"
+    for sig in TERM HUP INT; do
+        rm -f "$TMP/gp.started"
+        GP_STARTED="$TMP/gp.started" ADHERE_GNUPLOT="$TMP/gp-slow" TMPDIR="$TMP/mtmp" \
+            "$ADHERE" merge -o "$TMP/merged" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>"$TMP/merge.err" &
+        pid=$! i=0
+        while [ $i -lt 600 ] && [ ! -e "$TMP/gp.started" ] && kill -0 $pid 2>/dev/null; do sleep 0.1; i=$((i + 1)); done
+        kill -$sig $pid
+        wait $pid
+        rc=$?
+        want=130; [ $sig = HUP ] && want=129
+        check "SIG$sig while merge draws: exit $want ($rc: $(head -c 300 "$TMP/merge.err"))" [ "$rc" -eq $want ]
+        check "... the earlier merge's sweep.tsv and map.png are as they were" \
+            sh -c "cmp -s '$TMP/merged.tsv' '$TMP/merged/sweep.tsv' && cmp -s '$TMP/whole/map.png' '$TMP/merged/map.png'"
+        check "... no temporary left, in the directory or in TMPDIR" \
+            sh -c "! ls -a '$TMP/merged' | grep -v '^\.adhere-manifest\$' | grep -q '^\.[^.]' && [ -z \"\$(ls -A '$TMP/mtmp')\" ]"
+    done
+    "$ADHERE" merge -q --no-plot -o "$TMP/merged" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>"$TMP/merge.err"
+    rc=$?
+    check "a merge without figures into an earlier one's directory (exit $rc): its sweep.tsv, the earlier map.png gone" \
+        sh -c "[ $rc -eq 0 ] && cmp -s '$TMP/merged.tsv' '$TMP/merged/sweep.tsv' && [ ! -e '$TMP/merged/map.png' ]"
 else
     not_ok "GNU parallel is not installed (make deps installs it)"
 fi
