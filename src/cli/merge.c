@@ -112,6 +112,8 @@ static int open_shard(merge *m, size_t k, char *why, size_t whylen)
     return r == 1 ? 0 : 2;
 }
 
+static int one_each(const merge *m, char *why, size_t whylen);
+
 /* Every shard of one study, one split, each shard once. 0, or 2 with why. */
 static int same_study(const merge *m, char *why, size_t whylen)
 {
@@ -132,6 +134,26 @@ static int same_study(const merge *m, char *why, size_t whylen)
             return 2;
         }
     }
+    return one_each(m, why, whylen);
+}
+
+/* Each shard K/N in one directory: two directories that both say they hold
+ * one shard are two runs of it (whose runs may differ), not parts to join.
+ * A directory named twice is gather's to list. 0, or 2 with why. */
+static int one_each(const merge *m, char *why, size_t whylen)
+{
+    for (size_t k = 1; k < m->n; k++)
+        for (size_t j = 0; j < k; j++) {
+            const cli_study *a = &m->sh[j].st, *b = &m->sh[k].st;
+            struct stat sa, sb;
+            if (a->shard_k != b->shard_k || fstat(m->sh[j].fd, &sa) != 0 || fstat(m->sh[k].fd, &sb) != 0 ||
+                (sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino))
+                continue;
+            snprintf(why, whylen, "%.900s and %.900s both hold shard %u/%u of study %s: two runs of one shard, "
+                     "not parts to join; name one of them", m->sh[j].path, m->sh[k].path, b->shard_k, b->shard_n,
+                     b->fingerprint);
+            return 2;
+        }
     return 0;
 }
 

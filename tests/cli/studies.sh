@@ -126,6 +126,18 @@ S2=$TMP/shard2
 $M -o "$TMP/m1" "$TMP/shard1" $S2 $S2 $S2 $S2 $S2 $S2 "$TMP/shard3" 2>"$TMP/err"
 check "a shard given 6 times (more runs twice than the study has): exit 2, each run listed once ($(cat "$TMP/err"))" \
     sh -c "[ $? -eq 2 ] && grep -q 'runs 5-8 are in' '$TMP/err' && ! grep -q 'in all' '$TMP/err'"
+# two directories that both say shard 2/3 (one run of it stopped after runs
+# 5-6, another after 7-8): together they hold every run, yet are not parts
+# to join
+mkdir "$TMP/twoA" "$TMP/twoB"
+for d in twoA twoB; do cp "$TMP/shard2/study.tsv" "$TMP/$d/"; grep '^#' "$TMP/shard2/runs.tsv" >"$TMP/$d/runs.tsv"; done
+grep -v '^#' "$TMP/shard2/runs.tsv" | head -1 | tee -a "$TMP/twoA/runs.tsv" >>"$TMP/twoB/runs.tsv"
+awk -F'\t' '$1 == 5 || $1 == 6' "$TMP/shard2/runs.tsv" >>"$TMP/twoA/runs.tsv"
+awk -F'\t' '$1 == 7 || $1 == 8' "$TMP/shard2/runs.tsv" >>"$TMP/twoB/runs.tsv"
+$M -o "$TMP/m9" "$TMP/shard1" "$TMP/twoA" "$TMP/twoB" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "two directories both holding shard 2/3: exit 2, both and the shard named ($(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'twoA and .*twoB both hold shard 2/3' '$TMP/err' && [ ! -e '$TMP/m9/sweep.tsv' ]"
 $M -o "$TMP/m2" "$TMP/shard1" "$TMP/shard3" 2>"$TMP/err"
 rc=$?
 check "a shard missing: exit 2, its runs listed ($(cat "$TMP/err"))" \
