@@ -38,6 +38,8 @@ bad "is a length (m, nm, um, ...), but a pressure" -E 5nm
 bad "is a pressure (Pa, MPa, GPa, ...), but a length" --eps=1GPa
 bad "must lie below the start" --turn=50nm
 bad "must lie below the start" --start=5nm --turn=-1nm,6nm
+bad "material.E swept twice (--sweep=E=... and --sweep=material.E=...): give its values once" --sweep=E=1GPa,2GPa --sweep=material.E=3GPa
+bad "sigma swept twice (--sweep=sigma=... and --sweep=sigma=...)" --sweep=sigma=1,2 --sweep=sigma=3
 bad "eps = 0 nm is not allowed" --eps=0
 bad "--mixing: 'fast' is not a mixing rule: use paper or momentum" --mixing=fast
 bad "--momentum: '1' is not allowed: a number from 0 to below 1" --momentum=1
