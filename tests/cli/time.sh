@@ -142,6 +142,12 @@ done
 check "each row's status is its run's summary.tsv's ($(sh "$TMP/tsvcol" "$d/sweep.tsv" status | tr '\n' ' '))" sh -c \
     "for k in 1 2; do w=\$(awk -F'\t' '\$1 == \"status\" {print \$2}' '$d'/run-\$k/summary.tsv); \
      grep -v '^#' '$d/sweep.tsv' | awk -F'\t' -v k=\$k -v w=\"\$w\" '\$1 == k {f = 1; if (\$NF != w || w == \"\") exit 1} END {exit !f}' || exit 1; done"
+# one speed: speed.png on a range of its own (gnuplot's autoscale found an
+# empty x range and said so in gnuplot-figures.log)
+sed 's/^speed_out = .*/speed_out = 10nm\/s/' "$TMP/speed.scene" >"$TMP/speed1.scene"
+"$ADHERE" --batch -q "$TMP/speed1.scene" -N 150 --force -o "$TMP/sp1" >/dev/null 2>"$TMP/stderr"
+check "a one-speed sweep draws speed.png and gnuplot has nothing to say ($(cat "$TMP/sp1/gnuplot-figures.log" 2>/dev/null))" \
+    sh -c "[ -s '$TMP/sp1/speed.png' ] && ! grep -qi 'warning\|range' '$TMP/sp1/gnuplot-figures.log' 2>/dev/null"
 cp "$d/sweep.tsv" "$TMP/sp1.tsv"
 "$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
 check "the speed study again: resumed, the same rows, speed.png drawn again ($(head -c 300 "$TMP/stderr"))" sh -c \
