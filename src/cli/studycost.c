@@ -133,24 +133,18 @@ void cli_studycost_time(const adh_config *cfg, const adh_plan *p, cli_studycost 
     e->seconds = steps * per_row / (parallel > 0 ? parallel : 1);
 }
 
-void cli_studycost_print(FILE *f, const cli_studycost *e)
+int cli_studycost_print(FILE *f, const cli_studycost *e)
 {
     char t[32];
-    if (e->timed) {
-        fprintf(f, "expected time: not estimated in physical time: its steps follow the integrator's tolerance, "
-                   "not the drive step (visco-speed: 39 CPU s for its eight runs at N = 648, docs/viscoelastic.md)\n");
-        return;
-    }
-    if (isnan(e->seconds)) {
-        fprintf(f, "expected time: no estimate (the pilot computed nothing)\n");
-        return;
-    }
+    if (e->timed || isnan(e->seconds))   /* the plan's own line says why */
+        return -1;
     cli_progress_duration(e->seconds, t, sizeof t);
-    fprintf(f, "expected time: about %s on %d core%s (a pilot of the first and last drives%s%s", t, e->jobs,
+    fprintf(f, "time: about %s on %d core%s, from a pilot of the study's first and last drives%s%s", t, e->jobs,
             e->jobs == 1 ? "" : "s", e->pilot_nodes ? " on a coarse grid" : "", e->pilot_cut ? ", cut at 3 s each" : "");
     if (e->per_step > 0)
-        fprintf(f, ": %.0f iterations a step, %.3g ms an iteration here", e->per_step, e->t_iter * 1e3);
-    fprintf(f, "; a guide within a factor of about 3)\n");
+        fprintf(f, " (%.0f iterations a step, %.3g ms an iteration here)", e->per_step, e->t_iter * 1e3);
+    fprintf(f, " times the plan's steps of every drive; a guide within a factor of about 3\n");
+    return 0;
 }
 
 /* The file system of dir, or of its nearest parent that exists. */

@@ -236,7 +236,8 @@ check "the plan counts the runs" grep -qx 'runs: 16' "$TMP/plan"
 check "... the study's product" grep -q '^study: 16 runs, every combination of the 2 keys (4 x 4' "$TMP/plan"
 check "... the drives sharing a loading branch" grep -q '^drives: 4 ' "$TMP/plan"
 check "... the shard's part" grep -q '^shard: 2 of 3: .*(4 of the 16 runs)' "$TMP/plan"
-check "... an expected time" grep -q '^expected time: about .* on [0-9]* core' "$TMP/plan"
+check "... one time line, from the pilot ($(grep -c 'time:' "$TMP/plan") lines with time:)" \
+    sh -c "grep -q '^time: about .* on [0-9]* cores*, from a pilot of the study' '$TMP/plan' && [ \$(grep -c 'time:' '$TMP/plan') -eq 1 ]"
 check "... and the disk" grep -q '^disk: about .* MB written' "$TMP/plan"
 ( ulimit -f 1; "$ADHERE" --plan -N 100 --force --eps=10pm "$TMP/map.scene" -o "$TMP/p" >/dev/null 2>"$TMP/err"; echo $? >"$TMP/rc" )
 check "a study past the file size limit is refused (exit $(cat "$TMP/rc"): $(cat "$TMP/err"))" \
