@@ -145,9 +145,17 @@ check "each row's status is its run's summary.tsv's ($(sh "$TMP/tsvcol" "$d/swee
 # one speed: speed.png on a range of its own (gnuplot's autoscale found an
 # empty x range and said so in gnuplot-figures.log)
 sed 's/^speed_out = .*/speed_out = 10nm\/s/' "$TMP/speed.scene" >"$TMP/speed1.scene"
-"$ADHERE" --batch -q "$TMP/speed1.scene" -N 150 --force -o "$TMP/sp1" >/dev/null 2>"$TMP/stderr"
+# (-d 1nm: the drive step, which the integrator's rows do not follow, is
+# larger than the gap's fall at the jump)
+"$ADHERE" --batch -q "$TMP/speed1.scene" -N 150 --force -d 1nm -o "$TMP/sp1" >/dev/null 2>"$TMP/stderr"
 check "a one-speed sweep draws speed.png and gnuplot has nothing to say ($(cat "$TMP/sp1/gnuplot-figures.log" 2>/dev/null))" \
     sh -c "[ -s '$TMP/sp1/speed.png' ] && ! grep -qi 'warning\|range' '$TMP/sp1/gnuplot-figures.log' 2>/dev/null"
+# jumped and h_before from the run's events: its first loading event a jump,
+# h_before the central gap on the last row out of contact at that time
+ev_t=$(awk -F'\t' '$1 == "jump" && $2 == 0 {print $3; exit}' "$TMP/sp1/run-1/events.tsv")
+gap=$(awk -F'\t' -v t="$ev_t" '!/^#/ && $1 != "t" && $11 == 0 && $7 == 0 && $1 + 0 <= t + 0 {g = $6} END {print g}' "$TMP/sp1/run-1/force.tsv")
+check "a time study's jumped and h_before are its events' (jump at t = $ev_t, gap $gap; row: $(sh "$TMP/tsvcol" "$TMP/sp1/sweep.tsv" jumped) $(sh "$TMP/tsvcol" "$TMP/sp1/sweep.tsv" h_before))" \
+    sh -c "[ -n '$ev_t' ] && [ \"\$(sh '$TMP/tsvcol' '$TMP/sp1/sweep.tsv' jumped)\" = 1 ] && [ \"\$(sh '$TMP/tsvcol' '$TMP/sp1/sweep.tsv' h_before)\" = '$gap' ]"
 cp "$d/sweep.tsv" "$TMP/sp1.tsv"
 "$ADHERE" --batch -q "$TMP/speed.scene" -N 150 --force -o "$d" >"$TMP/stdout" 2>"$TMP/stderr"
 check "the speed study again: resumed, the same rows, speed.png drawn again ($(head -c 300 "$TMP/stderr"))" sh -c \
