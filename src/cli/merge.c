@@ -22,7 +22,7 @@
 #include "plot/outdir.h"
 
 typedef struct shard {
-    const char *path;
+    char path[1024];               /* as messages show it (adh_outdir_escape) */
     int fd;
     cli_study st;
     adh_config *cfg;
@@ -88,8 +88,8 @@ static void difference(const cli_study *a, const cli_study *b, char *buf, size_t
 static int open_shard(merge *m, size_t k, char *why, size_t whylen)
 {
     shard *s = &m->sh[k];
-    s->path = m->cli->merge[k];
-    s->fd = open(s->path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    adh_outdir_escape(m->cli->merge[k], s->path, sizeof s->path);
+    s->fd = open(m->cli->merge[k], O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (s->fd < 0) {
         snprintf(why, whylen, "cannot open %.1000s: %s", s->path, strerror(errno));
         return 2;

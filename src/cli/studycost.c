@@ -10,6 +10,7 @@
 #include "adhere/clock.h"
 #include "adhere/runner.h"
 #include "adhere/status.h"
+#include "plot/outdir.h"
 #include "cli/progress.h"
 #include "cli/static.h"
 
@@ -180,6 +181,8 @@ int cli_studycost_fits(const adh_config *cfg, const adh_plan *p, FILE *f, char *
     if (fs_of(cfg->output.dir, &vfs) != 0)
         return 0;   /* the directory's own error comes when it is opened */
     double free_bytes = (double)vfs.f_bavail * (double)vfs.f_frsize;
+    char dir[1024];
+    adh_outdir_escape(cfg->output.dir, dir, sizeof dir);
     double inodes = p->run_dirs ? (double)p->nruns * 8 : 8;
     if (f)
         fprintf(f, "disk: about %.3g MB written (%s), %.3g GB free there\n", bytes / 1e6,
@@ -187,12 +190,12 @@ int cli_studycost_fits(const adh_config *cfg, const adh_plan *p, FILE *f, char *
     if (bytes > free_bytes) {
         snprintf(why, whylen, "the study writes about %.3g GB into %.1000s, whose file system has %.3g GB free: "
                  "free space, choose another -o, or write fewer run-K directories (--run-dirs=no)", bytes / 1e9,
-                 cfg->output.dir, free_bytes / 1e9);
+                 dir, free_bytes / 1e9);
         return -1;
     }
     if (vfs.f_files && inodes > (double)vfs.f_favail) {
         snprintf(why, whylen, "the study makes about %.0f files in %.1000s, whose file system has %.0f left: "
-                 "--run-dirs=no writes a row for each run instead", inodes, cfg->output.dir, (double)vfs.f_favail);
+                 "--run-dirs=no writes a row for each run instead", inodes, dir, (double)vfs.f_favail);
         return -1;
     }
     struct rlimit rl;

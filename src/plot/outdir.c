@@ -22,6 +22,8 @@
 #ifndef PATH_MAX
 #define PATH_MAX 4096
 #endif
+/* A path as messages show it: every byte of PATH_MAX a control byte, \xNN. */
+#define SHOWN_MAX (4 * PATH_MAX + 64)
 
 /* One file or directory adhere wrote, as the manifest records it. */
 typedef struct entry {
@@ -48,7 +50,7 @@ struct adh_outdir {
     int staging;            /* adh_outdir_stage: new files wait under their temporaries */
     staged *st;
     size_t nst, capst;
-    char path[PATH_MAX + 64];   /* for messages: DIR, or DIR/run-K */
+    char path[SHOWN_MAX];   /* for messages: DIR, or DIR/run-K, escaped (adh_outdir_escape) */
 };
 
 /* Every name any mode writes (batch, sweep, cost, the TUI's plot key);
@@ -373,6 +375,24 @@ static void load(adh_outdir *d)
 
 /* ------------------------------------------------- opening, clearing */
 
+void adh_outdir_escape(const char *in, char *out, size_t len)
+{
+    size_t o = 0;
+    for (; *in && o + 1 < len; in++) {
+        unsigned char b = (unsigned char)*in;
+        if (b < 0x20 || b == 0x7f) {
+            if (o + 5 > len)
+                break;
+            snprintf(out + o, len - o, "\\x%02x", b);
+            o += 4;
+        } else {
+            out[o++] = (char)b;
+        }
+    }
+    if (len)
+        out[o < len ? o : len - 1] = '\0';
+}
+
 static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)
 {
     adh_outdir *d = calloc(1, sizeof *d);
@@ -382,7 +402,7 @@ static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)
     }
     d->fd = fd;
     d->flags = flags;
-    snprintf(d->path, sizeof d->path, "%s", path);
+    adh_outdir_escape(path, d->path, sizeof d->path);   /* messages quote it: no escape sequence reaches a terminal */
     return d;
 }
 
@@ -616,7 +636,10 @@ static int make_path(const char *path, char *why, size_t whylen)
         char c = *p;
         *p = '\0';
         if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            snprintf(why, whylen, "cannot create directory %.3000s: %s", buf, strerror(errno));
+            int e = errno;
+            char shown[SHOWN_MAX];
+            adh_outdir_escape(buf, shown, sizeof shown);
+            snprintf(why, whylen, "cannot create directory %.3000s: %s", shown, strerror(e));
             return -1;
         }
         *p = c;
@@ -626,16 +649,19 @@ static int make_path(const char *path, char *why, size_t whylen)
 }
 
 /* Why the directory path did not open (e), in words that say what is there. */
-static void open_failed(const char *path, int e, char *why, size_t whylen)
+static void open_failed(const char *raw, int e, char *why, size_t whylen)
 {
     struct stat st;
-    char target[512];
-    ssize_t n = e == ENOENT ? readlink(path, target, sizeof target - 1) : -1;
+    char target[512], shown_target[4 * sizeof target];
+    char path[SHOWN_MAX];
+    adh_outdir_escape(raw, path, sizeof path);
+    ssize_t n = e == ENOENT ? readlink(raw, target, sizeof target - 1) : -1;
     if (n >= 0) {
         target[n] = '\0';
+        adh_outdir_escape(target, shown_target, sizeof shown_target);
         snprintf(why, whylen, "cannot write into %.3000s: it is a symbolic link to %.400s, which does not exist; "
-                 "make that directory, or choose another -o", path, target);
-    } else if (e == EACCES && stat(path, &st) == 0 && S_ISDIR(st.st_mode) && access(path, W_OK | X_OK) == 0) {
+                 "make that directory, or choose another -o", path, shown_target);
+    } else if (e == EACCES && stat(raw, &st) == 0 && S_ISDIR(st.st_mode) && access(raw, W_OK | X_OK) == 0) {
         snprintf(why, whylen, "cannot read directory %.3000s: %s (adhere reads a directory before it writes "
                  "into it, to remove only its own files)", path, strerror(e));
     } else {
@@ -646,7 +672,9 @@ static void open_failed(const char *path, int e, char *why, size_t whylen)
 adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen)
 {
     if (!path[0] || strlen(path) >= PATH_MAX) {
-        snprintf(why, whylen, "cannot write into %.200s...: %s", path, strerror(path[0] ? ENAMETOOLONG : ENOENT));
+        char shown[1024];
+        adh_outdir_escape(path, shown, sizeof shown);
+        snprintf(why, whylen, "cannot write into %.200s...: %s", shown, strerror(path[0] ? ENAMETOOLONG : ENOENT));
         return NULL;
     }
     if (make_path(path, why, whylen) != 0)

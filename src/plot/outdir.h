@@ -58,7 +58,13 @@ int adh_outdir_has(const adh_outdir *d, const char *name);
 /* Unlocks and frees d (NULL is fine). */
 void adh_outdir_close(adh_outdir *d);
 
-/* The path d was opened as, for messages ("DIR/run-2"). */
+/* in as a message shows it, into out: each control byte (below 0x20, and
+ * 0x7f) as \xNN, so that a name holding an escape sequence cannot clear or
+ * recolour the terminal that reads the message. */
+void adh_outdir_escape(const char *in, char *out, size_t len);
+
+/* The path d was opened as, for messages ("DIR/run-2"), escaped as
+ * adh_outdir_escape does. */
 const char *adh_outdir_path(const adh_outdir *d);
 
 /* Writes d/name atomically: writer fills a new temporary .NAME.XXXXXX in

@@ -79,6 +79,20 @@ bad "nul.dat:2: a NUL byte" --data="$TMP/nul.dat"
 printf 'h0 (\033[2Jnm)\tF (nN)\n1\t2\n' >"$TMP/esc.dat"
 bad "esc.dat:1: the control byte 0x1b: this is not a text table" --data="$TMP/esc.dat"
 check "... and the refusal holds no escape byte" sh -c "! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+# -o DIR with an escape sequence in its name: the messages show it escaped
+# (\x1b), its bytes never reach the terminal
+ESCDIR=$TMP/$(printf 'o\033[2Jdir')
+: >"$ESCDIR"
+"$ADHERE" --batch -q --mode=rigid -o "$ESCDIR/x" >/dev/null 2>"$TMP/stderr"
+check "-o DIR/x under a file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 2 ] && grep -qF 'o\\x1b[2Jdir/x' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+rm -f "$ESCDIR"
+"$ADHERE" --batch --mode=rigid -o "$ESCDIR" >/dev/null 2>"$TMP/stderr"
+check "... a run into it: its closing line names it escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 0 ] && grep -qF 'o\\x1b[2Jdir' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+"$ADHERE" merge "$ESCDIR" >/dev/null 2>"$TMP/stderr"
+check "... merge of it (no shard there): exit 2, escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 2 ] && grep -qF 'o\\x1b[2Jdir holds no study.tsv' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
 printf '1 2\n3 1e-320\n' >"$TMP/tiny.dat"
 bad "tiny.dat:2: '1e-320' is too small for a double (it underflows" --data="$TMP/tiny.dat"
 
