@@ -38,6 +38,12 @@ bad "is a length (m, nm, um, ...), but a pressure" -E 5nm
 bad "is a pressure (Pa, MPa, GPa, ...), but a length" --eps=1GPa
 bad "must lie below the start" --turn=50nm
 bad "must lie below the start" --start=5nm --turn=-1nm,6nm
+# Rmax at its limit, 0.3 R exactly (1000 x 3 nm at R = 10 um, which the
+# units make a few ulps more), is allowed; just beyond it is not
+"$ADHERE" --plan --force -R 10um -N 1000 --spacing=3nm >/dev/null 2>"$TMP/stderr"
+rc=$?
+check "Rmax = 1000 x 3 nm = 0.3 R exactly is allowed (exit $rc: $(cat "$TMP/stderr"))" [ "$rc" -eq 0 ]
+bad "grid radius Rmax = N x spacing = 3.001 um is not << R = 10 um: at most 0.3 R is allowed" -R 10um -N 1000 --spacing=3.001nm
 bad "material.E swept twice (--sweep=E=... and --sweep=material.E=...): give its values once" --sweep=E=1GPa,2GPa --sweep=material.E=3GPa
 bad "sigma swept twice (--sweep=sigma=... and --sweep=sigma=...)" --sweep=sigma=1,2 --sweep=sigma=3
 bad "eps = 0 nm is not allowed" --eps=0
