@@ -22,6 +22,9 @@
 #ifndef PATH_MAX
 #define PATH_MAX 4096
 #endif
+/* The largest manifest read: a study's 10^5 run-K lines (some 45 bytes
+ * each) and its files, with room; a larger one is not adhere's. */
+#define MANIFEST_MAX (16 << 20)
 /* A path as messages show it: every byte of PATH_MAX a control byte, \xNN. */
 #define SHOWN_MAX (4 * PATH_MAX + 64)
 
@@ -41,12 +44,22 @@ typedef struct staged {
     char tmp[64], name[32];
 } staged;
 
+/* The entries by name: open addressing over their indices (+1; 0 empty),
+ * a study's 10^5 run-K directories each found at once instead of among
+ * all the others. Rebuilt when an entry is dropped (entries move). */
+typedef struct name_index {
+    size_t *slot;
+    size_t nslot;       /* a power of 2, at least twice the entries */
+    int stale;
+} name_index;
+
 struct adh_outdir {
     int fd;
     unsigned flags;
     int foreign_manifest;   /* a manifest there that adhere cannot trust */
     entry *e;
     size_t n, cap;
+    name_index *ix;         /* a cache of e's names (find): changed through a const adh_outdir too */
     int staging;            /* adh_outdir_stage: new files wait under their temporaries */
     staged *st;
     size_t nst, capst;
@@ -199,6 +212,65 @@ static int entry_name_ok(const char *name)
     return (adh_outdir_owns(name) || owned_temporary(name)) && strcmp(name, ADH_OUTDIR_MANIFEST) != 0;
 }
 
+/* FNV-1a of name without a trailing '/': "run-3" and "run-3/" in one chain. */
+static size_t name_hash(const char *name)
+{
+    size_t n = strlen(name);
+    if (n && name[n - 1] == '/')
+        n--;
+    uint64_t h = 1469598103934665603ULL;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ (unsigned char)name[i]) * 1099511628211ULL;
+    return (size_t)h;
+}
+
+static void index_put(name_index *ix, const entry *e, size_t i)
+{
+    size_t k = name_hash(e[i].name) & (ix->nslot - 1);
+    while (ix->slot[k])
+        k = (k + 1) & (ix->nslot - 1);
+    ix->slot[k] = i + 1;
+}
+
+/* d's index made anew for its entries: 0, or -1 (no memory: find searches
+ * linearly). */
+static int index_build(const adh_outdir *d)
+{
+    name_index *ix = d->ix;
+    size_t want = 64;
+    while (want < 2 * d->n + 2)
+        want *= 2;
+    if (want != ix->nslot) {
+        size_t *slot = realloc(ix->slot, want * sizeof *slot);
+        if (!slot)
+            return -1;
+        ix->slot = slot, ix->nslot = want;
+    }
+    memset(ix->slot, 0, ix->nslot * sizeof *ix->slot);
+    for (size_t i = 0; i < d->n; i++)
+        index_put(ix, d->e, i);
+    ix->stale = 0;
+    return 0;
+}
+
+/* Entry d->n - 1, just added: indexed when the index is current and has room. */
+static void index_added(adh_outdir *d)
+{
+    name_index *ix = d->ix;
+    if (!ix)
+        return;
+    if (ix->stale || 2 * d->n + 2 > ix->nslot)
+        ix->stale = 1;   /* built again, larger, when next looked in */
+    else
+        index_put(ix, d->e, d->n - 1);
+}
+
+static void index_stale(adh_outdir *d)
+{
+    if (d->ix)
+        d->ix->stale = 1;
+}
+
 static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsigned long long ino,
                    long long size, const struct timespec *mt, const struct timespec *ct)
 {
@@ -213,6 +285,7 @@ static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsi
     d->e[d->n++] = (entry){ .dev = dev, .ino = ino, .size = size, .mt_sec = (long long)mt->tv_sec,
                             .mt_nsec = mt->tv_nsec, .ct_sec = (long long)ct->tv_sec, .ct_nsec = ct->tv_nsec };
     snprintf(d->e[d->n - 1].name, sizeof d->e[0].name, "%s", name);
+    index_added(d);
     return 0;
 }
 
@@ -226,6 +299,7 @@ static int add_entry(adh_outdir *d, const char *name, const struct stat *st, int
 static void drop_entry(adh_outdir *d, size_t i)
 {
     d->e[i] = d->e[--d->n];
+    index_stale(d);
 }
 
 /* Whether st is still the file or directory e recorded. */
@@ -248,9 +322,18 @@ static long find(const adh_outdir *d, const char *name, const struct stat *st)
 {
     char dirname[40];
     snprintf(dirname, sizeof dirname, "%s/", name);
-    for (size_t i = 0; i < d->n; i++)
+    name_index *ix = d->ix;
+    if (!ix || ((ix->stale || !ix->nslot) && index_build(d) != 0)) {
+        for (size_t i = 0; i < d->n; i++)
+            if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(&d->e[i], st))
+                return (long)i;
+        return -1;
+    }
+    for (size_t k = name_hash(name) & (ix->nslot - 1); ix->slot[k]; k = (k + 1) & (ix->nslot - 1)) {
+        size_t i = ix->slot[k] - 1;
         if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(&d->e[i], st))
             return (long)i;
+    }
     return -1;
 }
 
@@ -361,7 +444,7 @@ static void load(adh_outdir *d)
     }
     struct stat st;
     FILE *f = NULL;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != geteuid() || st.st_size > (1 << 20) ||
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != geteuid() || st.st_size > MANIFEST_MAX ||
         !(f = fdopen(fd, "r"))) {
         d->foreign_manifest = 1;
         close(fd);
@@ -402,6 +485,7 @@ static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)
     }
     d->fd = fd;
     d->flags = flags;
+    d->ix = calloc(1, sizeof *d->ix);   /* none (no memory): find searches linearly */
     adh_outdir_escape(path, d->path, sizeof d->path);   /* messages quote it: no escape sequence reaches a terminal */
     return d;
 }
@@ -770,6 +854,9 @@ void adh_outdir_close(adh_outdir *d)
     adh_outdir_abandon(d);   /* never committed: nothing half-done stays */
     close(d->fd);
     free(d->st);
+    if (d->ix)
+        free(d->ix->slot);
+    free(d->ix);
     free(d->e);
     free(d);
 }
@@ -810,6 +897,7 @@ static void keep_newest(adh_outdir *d, const char *name, const char *tmp)
             drop_entry(d, i);
     if (newest >= 0)
         d->e[d->n++] = keep;   /* room: at least that one was dropped */
+    index_stale(d);
 }
 
 /* ------------------------------------------------- staged files */
@@ -958,6 +1046,7 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
         if (fd >= 0)
             unlinkat(d->fd, tmp, 0);
         d->n = before < d->n ? before : d->n;
+        index_stale(d);
         snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, name, strerror(e));
         return -1;
     }
