@@ -574,9 +574,9 @@ int cli_cost_main(const cli_options *cli)
         status = wst ? wst : status;
     }
     cli_interrupt_release();
-    adh_outdir_close(od);
     if (status == CLI_EXIT_OK && !cfg->output.quiet)
-        cost_done(&job, out);
+        cost_done(&job, od ? adh_outdir_path(od) : NULL);
+    adh_outdir_close(od);
     free(runs);
     return status;
 }

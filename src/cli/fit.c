@@ -249,7 +249,7 @@ int cli_fit_main(cli_options *cli)
     if (!cfg->output.quiet && out && rc == CLI_EXIT_OK)
         fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s; wrote fit.tsv, fit-points.tsv, best.scene%s "
                 "in %s (open it: adhere %s/best.scene)\n", word, fr.evals, res.seconds, cfg->output.plot ? ", fit.png" : "",
-                out, out);
+                adh_outdir_path(od), adh_outdir_path(od));
     else if (!cfg->output.quiet)
         fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s\n", word, fr.evals, res.seconds);
     adh_outdir_close(od);

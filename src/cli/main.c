@@ -52,9 +52,17 @@ static int plan(cli_options *cli)
     adh_plan_print(stdout, &cli->cfg, &p);
     if (cli->reference[0])
         cli_static_reference_plan(stdout, &cli->cfg.spec);
-    cli_estimate_print(stdout, &cli->cfg, &p);
-    if (!cli->cfg.sweep.naxes)
+    if (!cli->cfg.sweep.naxes) {
+        cli_estimate_print(stdout, &cli->cfg, &p);
         return stdout_done();
+    }
+    /* a study's one time line: its pilot's, which covers every run and
+     * grid; the plan's own (rigid spheres, physical time) when the pilot
+     * gives none */
+    cli_studycost e;
+    cli_studycost_time(&cli->cfg, &p, &e);
+    if (!p.elastic || cli_studycost_print(stdout, &e) != 0)
+        cli_estimate_print(stdout, &cli->cfg, &p);
     if (cli->shard_n) {
         cli_study st;
         cli_study_from_cli(&st, cli);
@@ -62,9 +70,6 @@ static int plan(cli_options *cli)
                st.shard_k, st.shard_n, st.shard_k, st.shard_k + st.shard_n, cli_study_shard_runs(&st), st.nruns);
         printf("fingerprint: %s\n", st.fingerprint);
     }
-    cli_studycost e;
-    cli_studycost_time(&cli->cfg, &p, &e);
-    cli_studycost_print(stdout, &e);
     int fits = cli_studycost_fits(&cli->cfg, &p, stdout, why, sizeof why);
     int rc = stdout_done();
     if (fits != 0) {

@@ -22,7 +22,7 @@
 #include "plot/outdir.h"
 
 typedef struct shard {
-    const char *path;
+    char path[1024];               /* as messages show it (adh_outdir_escape) */
     int fd;
     cli_study st;
     adh_config *cfg;
@@ -88,8 +88,8 @@ static void difference(const cli_study *a, const cli_study *b, char *buf, size_t
 static int open_shard(merge *m, size_t k, char *why, size_t whylen)
 {
     shard *s = &m->sh[k];
-    s->path = m->cli->merge[k];
-    s->fd = open(s->path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    adh_outdir_escape(m->cli->merge[k], s->path, sizeof s->path);
+    s->fd = open(m->cli->merge[k], O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (s->fd < 0) {
         snprintf(why, whylen, "cannot open %.1000s: %s", s->path, strerror(errno));
         return 2;
@@ -112,6 +112,8 @@ static int open_shard(merge *m, size_t k, char *why, size_t whylen)
     return r == 1 ? 0 : 2;
 }
 
+static int one_each(const merge *m, char *why, size_t whylen);
+
 /* Every shard of one study, one split, each shard once. 0, or 2 with why. */
 static int same_study(const merge *m, char *why, size_t whylen)
 {
@@ -132,6 +134,26 @@ static int same_study(const merge *m, char *why, size_t whylen)
             return 2;
         }
     }
+    return one_each(m, why, whylen);
+}
+
+/* Each shard K/N in one directory: two directories that both say they hold
+ * one shard are two runs of it (whose runs may differ), not parts to join.
+ * A directory named twice is gather's to list. 0, or 2 with why. */
+static int one_each(const merge *m, char *why, size_t whylen)
+{
+    for (size_t k = 1; k < m->n; k++)
+        for (size_t j = 0; j < k; j++) {
+            const cli_study *a = &m->sh[j].st, *b = &m->sh[k].st;
+            struct stat sa, sb;
+            if (a->shard_k != b->shard_k || fstat(m->sh[j].fd, &sa) != 0 || fstat(m->sh[k].fd, &sb) != 0 ||
+                (sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino))
+                continue;
+            snprintf(why, whylen, "%.900s and %.900s both hold shard %u/%u of study %s: two runs of one shard, "
+                     "not parts to join; name one of them", m->sh[j].path, m->sh[k].path, b->shard_k, b->shard_n,
+                     b->fingerprint);
+            return 2;
+        }
     return 0;
 }
 
@@ -245,14 +267,34 @@ static int open_out(merge *m, char *why, size_t whylen)
     return 0;
 }
 
-/* An earlier merge's files go only once the shards are known to join: a
- * refused merge leaves the last good one's table. A shard's directory
- * (named among them) keeps its records. 0, or 2 with why. */
-static int clear_out(merge *m, char *why, size_t whylen)
+/* The new merge's files, written under temporaries, take the earlier
+ * one's names only once every one is whole: a refused, failed or
+ * interrupted merge leaves the last good one as it was. In a directory of
+ * the merge's own the earlier files this merge does not write again go
+ * then; a shard's directory (named among them) keeps its records. An exit
+ * status. */
+static int commit_out(merge *m, int rc)
 {
-    if (!m->out || adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv"))
-        return 0;
-    return adh_outdir_clear(m->out, why, whylen) == 0 ? 0 : 2;
+    char why[1024];
+    if (cli_interrupt_signal()) {
+        if (m->out)
+            adh_outdir_abandon(m->out);
+        fprintf(stderr, "adhere merge: interrupted by signal %d: nothing written%s%s%s\n", cli_interrupt_signal(),
+                m->out ? "; " : "", m->out ? adh_outdir_path(m->out) : "", m->out ? " keeps what it held" : "");
+        return cli_interrupt_exit();
+    }
+    if (!m->out)
+        return rc;
+    if (rc != CLI_EXIT_OK && rc != CLI_EXIT_PLOT) {
+        adh_outdir_abandon(m->out);
+        return rc;
+    }
+    int holds_shard = adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv");
+    if (adh_outdir_commit(m->out, !holds_shard, why, sizeof why) != 0) {
+        fprintf(stderr, "adhere merge: %s\n", why);
+        return CLI_EXIT_USAGE;
+    }
+    return rc;
 }
 
 /* The output directory, when it holds a shard, is one of those named. */
@@ -279,21 +321,17 @@ static int write_out(merge *m, const char *partial)
     cfg->output.plot = mine->plot;
     cfg->output.quiet = mine->quiet;
     snprintf(cfg->output.gnuplot_style, sizeof cfg->output.gnuplot_style, "%s", mine->gnuplot_style);
+    cfg->spec.relax.cancel = cli_interrupt_flag();   /* gnuplot's wait hears a signal */
     const cli_study *st = &m->sh[0].st;
     /* an eps study's Figure 7 line, as the whole study has it (its own curve) */
     int resolved = 0;
     double hyst = NAN;
     cli_kcache *kc = adh_sweep_fig7_panel(cfg) && cfg->output.plot && !*partial ? cli_kcache_new(0) : NULL;
     if (kc) {
-        cli_interrupt_catch();
         hyst = cli_sweep_static_hysteresis(cfg, kc, &resolved);
-        cli_interrupt_release();
         cli_kcache_free(kc);
-        if (cli_interrupt_signal()) {   /* a table without its line would pass for the whole study's */
-            fprintf(stderr, "adhere: interrupted by signal %d during the static curve for Figure 7's line: nothing "
-                    "written\n", cli_interrupt_signal());
+        if (cli_interrupt_signal())   /* a table without its line would pass for the whole study's */
             return cli_interrupt_exit();
-        }
     }
     cli_studyrow_sweep t = { cfg, m->rows, partial, adh_sweep_run_dirs(&cfg->sweep), hyst, resolved };
     char why[1024];
@@ -334,7 +372,20 @@ static void merge_free(merge *m)
     adh_outdir_close(m->out);
 }
 
+static int merge_run(cli_options *cli);
+
+/* SIGINT, SIGTERM and SIGHUP are heard through the whole merge (the
+ * static curve of Figure 7's line, gnuplot's wait): it stops, removes
+ * its temporaries and leaves the earlier merge as it was. */
 int cli_merge_main(cli_options *cli)
+{
+    cli_interrupt_catch();
+    int rc = merge_run(cli);
+    cli_interrupt_release();
+    return rc;
+}
+
+static int merge_run(cli_options *cli)
 {
     merge m = { .cli = cli, .n = cli->nmerge };
     char why[8192], partial[600] = "";
@@ -361,14 +412,14 @@ int cli_merge_main(cli_options *cli)
     free(scratch);
     if (rc == 0)
         rc = missing(&m, partial, sizeof partial, why, sizeof why);
-    if (rc == 0)
-        rc = clear_out(&m, why, sizeof why);
     if (rc != 0) {
         fprintf(stderr, "adhere merge: %s\n", why);
         merge_free(&m);
         return rc;
     }
-    rc = write_out(&m, partial);
+    if (m.out)
+        adh_outdir_stage(m.out);
+    rc = commit_out(&m, write_out(&m, partial));
     if (rc == CLI_EXIT_OK && !cli->cfg.output.quiet)
         fprintf(stderr, "adhere merge: %zu shard%s of study %s (%zu runs) joined%s%s%s\n", m.n, m.n == 1 ? "" : "s",
                 m.sh[0].st.fingerprint, nruns, m.out ? " into " : "; sweep.tsv went to standard output",

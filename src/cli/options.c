@@ -257,6 +257,16 @@ static int sweep_flag(cli_options *cli, const char *arg, char *why, size_t n)
         return 2;
     }
     snprintf(key, sizeof key, "sweep.%.*s", (int)(eq - arg), arg);
+    /* one key, one --sweep: a second (E and material.E too) would silently
+     * replace the first's values */
+    char mine[64], theirs[64];
+    for (size_t i = 0; i < cli->nset && adh_sweep_key_of(key + 6, mine, sizeof mine) == 0; i++)
+        if (!strncmp(cli->set[i].key, "sweep.", 6) && adh_sweep_key_of(cli->set[i].key + 6, theirs, sizeof theirs) == 0 &&
+            !strcmp(mine, theirs)) {
+            snprintf(why, n, "--sweep: %s swept twice (--sweep=%s=... and --sweep=%.*s=...): give its values once",
+                     mine, cli->set[i].key + 6, (int)(eq - arg), arg);
+            return 2;
+        }
     if (adh_config_set(&cli->cfg, key, eq + 1, msg, sizeof msg) != 0) {
         snprintf(why, n, "--sweep: %.*s: %s", (int)(eq - arg), arg, msg);
         return 2;

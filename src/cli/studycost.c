@@ -10,6 +10,7 @@
 #include "adhere/clock.h"
 #include "adhere/runner.h"
 #include "adhere/status.h"
+#include "plot/outdir.h"
 #include "cli/progress.h"
 #include "cli/static.h"
 
@@ -133,24 +134,18 @@ void cli_studycost_time(const adh_config *cfg, const adh_plan *p, cli_studycost 
     e->seconds = steps * per_row / (parallel > 0 ? parallel : 1);
 }
 
-void cli_studycost_print(FILE *f, const cli_studycost *e)
+int cli_studycost_print(FILE *f, const cli_studycost *e)
 {
     char t[32];
-    if (e->timed) {
-        fprintf(f, "expected time: not estimated in physical time: its steps follow the integrator's tolerance, "
-                   "not the drive step (visco-speed: 39 CPU s for its eight runs at N = 648, docs/viscoelastic.md)\n");
-        return;
-    }
-    if (isnan(e->seconds)) {
-        fprintf(f, "expected time: no estimate (the pilot computed nothing)\n");
-        return;
-    }
+    if (e->timed || isnan(e->seconds))   /* the plan's own line says why */
+        return -1;
     cli_progress_duration(e->seconds, t, sizeof t);
-    fprintf(f, "expected time: about %s on %d core%s (a pilot of the first and last drives%s%s", t, e->jobs,
+    fprintf(f, "time: about %s on %d core%s, from a pilot of the study's first and last drives%s%s", t, e->jobs,
             e->jobs == 1 ? "" : "s", e->pilot_nodes ? " on a coarse grid" : "", e->pilot_cut ? ", cut at 3 s each" : "");
     if (e->per_step > 0)
-        fprintf(f, ": %.0f iterations a step, %.3g ms an iteration here", e->per_step, e->t_iter * 1e3);
-    fprintf(f, "; a guide within a factor of about 3)\n");
+        fprintf(f, " (%.0f iterations a step, %.3g ms an iteration here)", e->per_step, e->t_iter * 1e3);
+    fprintf(f, " times the plan's steps of every drive; a guide within a factor of about 3\n");
+    return 0;
 }
 
 /* The file system of dir, or of its nearest parent that exists. */
@@ -186,6 +181,8 @@ int cli_studycost_fits(const adh_config *cfg, const adh_plan *p, FILE *f, char *
     if (fs_of(cfg->output.dir, &vfs) != 0)
         return 0;   /* the directory's own error comes when it is opened */
     double free_bytes = (double)vfs.f_bavail * (double)vfs.f_frsize;
+    char dir[1024];
+    adh_outdir_escape(cfg->output.dir, dir, sizeof dir);
     double inodes = p->run_dirs ? (double)p->nruns * 8 : 8;
     if (f)
         fprintf(f, "disk: about %.3g MB written (%s), %.3g GB free there\n", bytes / 1e6,
@@ -193,12 +190,12 @@ int cli_studycost_fits(const adh_config *cfg, const adh_plan *p, FILE *f, char *
     if (bytes > free_bytes) {
         snprintf(why, whylen, "the study writes about %.3g GB into %.1000s, whose file system has %.3g GB free: "
                  "free space, choose another -o, or write fewer run-K directories (--run-dirs=no)", bytes / 1e9,
-                 cfg->output.dir, free_bytes / 1e9);
+                 dir, free_bytes / 1e9);
         return -1;
     }
     if (vfs.f_files && inodes > (double)vfs.f_favail) {
         snprintf(why, whylen, "the study makes about %.0f files in %.1000s, whose file system has %.0f left: "
-                 "--run-dirs=no writes a row for each run instead", inodes, cfg->output.dir, (double)vfs.f_favail);
+                 "--run-dirs=no writes a row for each run instead", inodes, dir, (double)vfs.f_favail);
         return -1;
     }
     struct rlimit rl;

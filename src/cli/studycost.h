@@ -24,7 +24,10 @@ typedef struct cli_studycost {
 /* The expected time of plan p of cfg (steps over jobs cores), from the
  * pilot: it runs for at most a few seconds. */
 void cli_studycost_time(const adh_config *cfg, const adh_plan *p, cli_studycost *e);
-void cli_studycost_print(FILE *f, const cli_studycost *e);
+/* The study's one "time:" line, saying what it is built from: 0, or -1
+ * with nothing printed when the pilot gives no estimate (physical time;
+ * a pilot that computed nothing): the plan's own line then says why. */
+int cli_studycost_print(FILE *f, const cli_studycost *e);
 
 /* Whether the study fits: at most ADH_SWEEP_MAX_RUNS runs, what it writes
  * on the free space and inodes of its directory's file system, its largest

@@ -188,6 +188,24 @@ static void fill_snap(double *v, const adh_run_spec *rc, const adh_run *r, const
     v[CLI_ROW_SNAP_IN_RIGID] = rigid_snap_in(r, k);
 }
 
+/* The jump into contact of a run in physical time, from its events (a
+ * drive step means nothing on the integrator's rows): jumped 1 when the
+ * first contact on loading came by a jump, 0 when it formed without one,
+ * -1 when there was none; h_before the central gap on the last loading
+ * row out of contact at or before that event (the row at the fold). */
+static void time_jump(double *v, const adh_run *r, const cli_time_out *o)
+{
+    const adh_visco_event *first = NULL;
+    for (size_t e = 0; e < o->nev && !first; e++)
+        if (o->ev[e].path == 0 && (o->ev[e].kind == ADH_VISCO_JUMP || o->ev[e].kind == ADH_VISCO_CONTACT))
+            first = &o->ev[e];
+    v[CLI_ROW_JUMPED] = !first ? -1 : first->kind == ADH_VISCO_JUMP ? 1 : 0;
+    v[CLI_ROW_H_BEFORE] = NAN;
+    for (size_t i = 0; first && i < r->nrows && r->rows[i].path == 0 && r->rows[i].t <= first->t &&
+                       r->rows[i].a == 0; i++)
+        v[CLI_ROW_H_BEFORE] = r->rows[i].hc;
+}
+
 /* A run in physical time's numbers: its summary's (cli_time_keys) by name,
  * and its pull-off, jumps and hysteresis in the columns every mode has. */
 static void fill_time(double *v, const adh_run *r, const cli_time_out *o)
@@ -216,6 +234,7 @@ static void fill_time(double *v, const adh_run *r, const cli_time_out *o)
     v[CLI_ROW_PULLOFF] = ran ? res->pulloff_F : NAN;
     v[CLI_ROW_PULLOFF_H0] = ran ? res->pulloff_h0 : NAN;
     v[CLI_ROW_JUMP_OUT] = ran ? res->jump_out_h0 : NAN;
+    time_jump(v, r, o);
 }
 
 void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, const adh_run *r,
@@ -459,8 +478,9 @@ int cli_studyrow_table(FILE *f, const void *ctx)
                    "# jumped: 1 the curve has a fold, 0 contact came without one, -1 no contact; steps the curve's points, iterations its Newton iterations;\n"
                    "# hysteresis: the equilibrium loop's area (displacement control: the highest and lowest stable force at each h0), J\n");
     else if (cfg->spec.mode == ADH_MODE_TIME)   /* its pull-off and hysteresis: the comment above */
-        fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24; "
-                   "jump_out_h0: where the contact was lost on the deepest turn's unloading\n");
+        fprintf(f, "# h_before: central gap on the last loading row out of contact at the first contact event "
+                   "(events.tsv); jumped: 1 that event is a jump, 0 contact formed without one, -1 no contact; "
+                   "h_star: eq 24; jump_out_h0: where the contact was lost on the deepest turn's unloading\n");
     else
         fprintf(f, "# h_before: central gap on the last loading row before the jump into contact; h_star: eq 24\n"
                    "# jumped: 1 the gap fell by more than 2 steps into contact, 0 contact came gradually (no jump identified), -1 no contact\n"

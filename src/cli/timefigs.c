@@ -72,10 +72,11 @@ static int speed_figure(tfig *fg, const adh_config *cfg, const cli_studyrow *row
     FILE *f = adh_session_data(&fg->ses, "speed.dat", dat, sizeof dat, fg->msg, fg->msglen);
     if (!f)
         return -1;
-    double fbig = 0, ebig = 0;
+    double fbig = 0, ebig = 0, vmin = INFINITY, vmax = 0;
     for (size_t i = 0; i < n; i++) {
-        double pull = rows[i].v[CLI_ROW_PULLOFF], hyst = rows[i].v[CLI_ROW_HYSTERESIS];
-        fprintf(f, "%.17g\t%.17g\t%.17g\n", swept(cfg, &rows[i]), -pull, hyst);
+        double pull = rows[i].v[CLI_ROW_PULLOFF], hyst = rows[i].v[CLI_ROW_HYSTERESIS], v = swept(cfg, &rows[i]);
+        fprintf(f, "%.17g\t%.17g\t%.17g\n", v, -pull, hyst);
+        vmin = fmin(vmin, v), vmax = fmax(vmax, v);
         if (isfinite(pull))
             fbig = fmax(fbig, fabs(pull));
         if (isfinite(hyst))
@@ -102,6 +103,8 @@ static int speed_figure(tfig *fg, const adh_config *cfg, const cli_studyrow *row
     adh_gnuplot_cmd(gp, "set title \"Pull-off and hysteresis against the %s speed (E0 = %s, E∞ = %s, τ = %s)\"",
                     out ? "retraction" : "drive", e0, ei, tau);
     adh_gnuplot_cmd(gp, "set logscale x");
+    if (vmin == vmax)   /* one speed: a decade either side (autoscale found an empty range) */
+        adh_gnuplot_cmd(gp, "set xrange [%.17g:%.17g]", vmin / 10, vmax * 10);
     adh_gnuplot_cmd(gp, "set format x \"10^{%%L}\"");
     adh_gnuplot_cmd(gp, "set xlabel \"%s speed (m/s)\"", out ? "retraction (base)" : "base");
     adh_gnuplot_cmd(gp, "set ylabel \"adhesion -F_{pull-off} (%s)\"", fu);

@@ -127,7 +127,9 @@ static int check_grid(const adh_protocol_settings *ps, const adh_material *m, co
         set_fix(fix, ADH_FIX_NODES);
         return ADH_EGRID;
     }
-    if (g->rmax > 0.3 * m->R) {
+    /* the limit itself is allowed: N x spacing from values with units
+     * (3nm is 3 x 1e-9) lands a few ulps past 0.3 R */
+    if (g->rmax > 0.3 * m->R * (1 + 1e-12)) {
         snprintf(why, whylen, "grid radius Rmax = N x spacing = %s is not << R = %s: at most 0.3 R is allowed", adh_qtext(g->rmax, ADH_Q_LENGTH).s, adh_qtext(m->R, ADH_Q_LENGTH).s);
         return ADH_EGRID;
     }

@@ -22,6 +22,11 @@
 #ifndef PATH_MAX
 #define PATH_MAX 4096
 #endif
+/* The largest manifest read: a study's 10^5 run-K lines (some 45 bytes
+ * each) and its files, with room; a larger one is not adhere's. */
+#define MANIFEST_MAX (16 << 20)
+/* A path as messages show it: every byte of PATH_MAX a control byte, \xNN. */
+#define SHOWN_MAX (4 * PATH_MAX + 64)
 
 /* One file or directory adhere wrote, as the manifest records it. */
 typedef struct entry {
@@ -34,13 +39,31 @@ typedef struct entry {
     long ct_nsec;           /* whose mtime was set back all move it */
 } entry;
 
+/* A file written under its temporary name, waiting for adh_outdir_commit. */
+typedef struct staged {
+    char tmp[64], name[32];
+} staged;
+
+/* The entries by name: open addressing over their indices (+1; 0 empty),
+ * a study's 10^5 run-K directories each found at once instead of among
+ * all the others. Rebuilt when an entry is dropped (entries move). */
+typedef struct name_index {
+    size_t *slot;
+    size_t nslot;       /* a power of 2, at least twice the entries */
+    int stale;
+} name_index;
+
 struct adh_outdir {
     int fd;
     unsigned flags;
     int foreign_manifest;   /* a manifest there that adhere cannot trust */
     entry *e;
     size_t n, cap;
-    char path[PATH_MAX + 64];   /* for messages: DIR, or DIR/run-K */
+    name_index *ix;         /* a cache of e's names (find): changed through a const adh_outdir too */
+    int staging;            /* adh_outdir_stage: new files wait under their temporaries */
+    staged *st;
+    size_t nst, capst;
+    char path[SHOWN_MAX];   /* for messages: DIR, or DIR/run-K, escaped (adh_outdir_escape) */
 };
 
 /* Every name any mode writes (batch, sweep, cost, the TUI's plot key);
@@ -130,7 +153,14 @@ static void random6(char *out)
 /* A new file .NAME.XXXXXX in dirfd: O_EXCL and O_NOFOLLOW, so nothing
  * planted under that name (a link) is ever opened. Its descriptor, or -1
  * with errno. */
+static int temp_open(int dirfd, const char *name, int mode, char *tmp, size_t len);
 static int temp_create(int dirfd, const char *name, char *tmp, size_t len)
+{
+    return temp_open(dirfd, name, O_WRONLY, tmp, len);
+}
+
+/* temp_create's, opened with mode (O_WRONLY, or O_RDWR | O_APPEND for a log). */
+static int temp_open(int dirfd, const char *name, int mode, char *tmp, size_t len)
 {
     for (int tries = 0; tries < 100; tries++) {
         char r[8];
@@ -139,7 +169,7 @@ static int temp_create(int dirfd, const char *name, char *tmp, size_t len)
             errno = ENAMETOOLONG;
             return -1;
         }
-        int fd = openat(dirfd, tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        int fd = openat(dirfd, tmp, mode | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0 || errno != EEXIST)
             return fd;
     }
@@ -182,6 +212,65 @@ static int entry_name_ok(const char *name)
     return (adh_outdir_owns(name) || owned_temporary(name)) && strcmp(name, ADH_OUTDIR_MANIFEST) != 0;
 }
 
+/* FNV-1a of name without a trailing '/': "run-3" and "run-3/" in one chain. */
+static size_t name_hash(const char *name)
+{
+    size_t n = strlen(name);
+    if (n && name[n - 1] == '/')
+        n--;
+    uint64_t h = 1469598103934665603ULL;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ (unsigned char)name[i]) * 1099511628211ULL;
+    return (size_t)h;
+}
+
+static void index_put(name_index *ix, const entry *e, size_t i)
+{
+    size_t k = name_hash(e[i].name) & (ix->nslot - 1);
+    while (ix->slot[k])
+        k = (k + 1) & (ix->nslot - 1);
+    ix->slot[k] = i + 1;
+}
+
+/* d's index made anew for its entries: 0, or -1 (no memory: find searches
+ * linearly). */
+static int index_build(const adh_outdir *d)
+{
+    name_index *ix = d->ix;
+    size_t want = 64;
+    while (want < 2 * d->n + 2)
+        want *= 2;
+    if (want != ix->nslot) {
+        size_t *slot = realloc(ix->slot, want * sizeof *slot);
+        if (!slot)
+            return -1;
+        ix->slot = slot, ix->nslot = want;
+    }
+    memset(ix->slot, 0, ix->nslot * sizeof *ix->slot);
+    for (size_t i = 0; i < d->n; i++)
+        index_put(ix, d->e, i);
+    ix->stale = 0;
+    return 0;
+}
+
+/* Entry d->n - 1, just added: indexed when the index is current and has room. */
+static void index_added(adh_outdir *d)
+{
+    name_index *ix = d->ix;
+    if (!ix)
+        return;
+    if (ix->stale || 2 * d->n + 2 > ix->nslot)
+        ix->stale = 1;   /* built again, larger, when next looked in */
+    else
+        index_put(ix, d->e, d->n - 1);
+}
+
+static void index_stale(adh_outdir *d)
+{
+    if (d->ix)
+        d->ix->stale = 1;
+}
+
 static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsigned long long ino,
                    long long size, const struct timespec *mt, const struct timespec *ct)
 {
@@ -196,6 +285,7 @@ static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsi
     d->e[d->n++] = (entry){ .dev = dev, .ino = ino, .size = size, .mt_sec = (long long)mt->tv_sec,
                             .mt_nsec = mt->tv_nsec, .ct_sec = (long long)ct->tv_sec, .ct_nsec = ct->tv_nsec };
     snprintf(d->e[d->n - 1].name, sizeof d->e[0].name, "%s", name);
+    index_added(d);
     return 0;
 }
 
@@ -209,6 +299,7 @@ static int add_entry(adh_outdir *d, const char *name, const struct stat *st, int
 static void drop_entry(adh_outdir *d, size_t i)
 {
     d->e[i] = d->e[--d->n];
+    index_stale(d);
 }
 
 /* Whether st is still the file or directory e recorded. */
@@ -231,9 +322,18 @@ static long find(const adh_outdir *d, const char *name, const struct stat *st)
 {
     char dirname[40];
     snprintf(dirname, sizeof dirname, "%s/", name);
-    for (size_t i = 0; i < d->n; i++)
+    name_index *ix = d->ix;
+    if (!ix || ((ix->stale || !ix->nslot) && index_build(d) != 0)) {
+        for (size_t i = 0; i < d->n; i++)
+            if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(&d->e[i], st))
+                return (long)i;
+        return -1;
+    }
+    for (size_t k = name_hash(name) & (ix->nslot - 1); ix->slot[k]; k = (k + 1) & (ix->nslot - 1)) {
+        size_t i = ix->slot[k] - 1;
         if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(&d->e[i], st))
             return (long)i;
+    }
     return -1;
 }
 
@@ -344,7 +444,7 @@ static void load(adh_outdir *d)
     }
     struct stat st;
     FILE *f = NULL;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != geteuid() || st.st_size > (1 << 20) ||
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != geteuid() || st.st_size > MANIFEST_MAX ||
         !(f = fdopen(fd, "r"))) {
         d->foreign_manifest = 1;
         close(fd);
@@ -358,6 +458,24 @@ static void load(adh_outdir *d)
 
 /* ------------------------------------------------- opening, clearing */
 
+void adh_outdir_escape(const char *in, char *out, size_t len)
+{
+    size_t o = 0;
+    for (; *in && o + 1 < len; in++) {
+        unsigned char b = (unsigned char)*in;
+        if (b < 0x20 || b == 0x7f) {
+            if (o + 5 > len)
+                break;
+            snprintf(out + o, len - o, "\\x%02x", b);
+            o += 4;
+        } else {
+            out[o++] = (char)b;
+        }
+    }
+    if (len)
+        out[o < len ? o : len - 1] = '\0';
+}
+
 static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)
 {
     adh_outdir *d = calloc(1, sizeof *d);
@@ -367,7 +485,8 @@ static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)
     }
     d->fd = fd;
     d->flags = flags;
-    snprintf(d->path, sizeof d->path, "%s", path);
+    d->ix = calloc(1, sizeof *d->ix);   /* none (no memory): find searches linearly */
+    adh_outdir_escape(path, d->path, sizeof d->path);   /* messages quote it: no escape sequence reaches a terminal */
     return d;
 }
 
@@ -601,7 +720,10 @@ static int make_path(const char *path, char *why, size_t whylen)
         char c = *p;
         *p = '\0';
         if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            snprintf(why, whylen, "cannot create directory %.3000s: %s", buf, strerror(errno));
+            int e = errno;
+            char shown[SHOWN_MAX];
+            adh_outdir_escape(buf, shown, sizeof shown);
+            snprintf(why, whylen, "cannot create directory %.3000s: %s", shown, strerror(e));
             return -1;
         }
         *p = c;
@@ -611,16 +733,19 @@ static int make_path(const char *path, char *why, size_t whylen)
 }
 
 /* Why the directory path did not open (e), in words that say what is there. */
-static void open_failed(const char *path, int e, char *why, size_t whylen)
+static void open_failed(const char *raw, int e, char *why, size_t whylen)
 {
     struct stat st;
-    char target[512];
-    ssize_t n = e == ENOENT ? readlink(path, target, sizeof target - 1) : -1;
+    char target[512], shown_target[4 * sizeof target];
+    char path[SHOWN_MAX];
+    adh_outdir_escape(raw, path, sizeof path);
+    ssize_t n = e == ENOENT ? readlink(raw, target, sizeof target - 1) : -1;
     if (n >= 0) {
         target[n] = '\0';
+        adh_outdir_escape(target, shown_target, sizeof shown_target);
         snprintf(why, whylen, "cannot write into %.3000s: it is a symbolic link to %.400s, which does not exist; "
-                 "make that directory, or choose another -o", path, target);
-    } else if (e == EACCES && stat(path, &st) == 0 && S_ISDIR(st.st_mode) && access(path, W_OK | X_OK) == 0) {
+                 "make that directory, or choose another -o", path, shown_target);
+    } else if (e == EACCES && stat(raw, &st) == 0 && S_ISDIR(st.st_mode) && access(raw, W_OK | X_OK) == 0) {
         snprintf(why, whylen, "cannot read directory %.3000s: %s (adhere reads a directory before it writes "
                  "into it, to remove only its own files)", path, strerror(e));
     } else {
@@ -631,7 +756,9 @@ static void open_failed(const char *path, int e, char *why, size_t whylen)
 adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen)
 {
     if (!path[0] || strlen(path) >= PATH_MAX) {
-        snprintf(why, whylen, "cannot write into %.200s...: %s", path, strerror(path[0] ? ENAMETOOLONG : ENOENT));
+        char shown[1024];
+        adh_outdir_escape(path, shown, sizeof shown);
+        snprintf(why, whylen, "cannot write into %.200s...: %s", shown, strerror(path[0] ? ENAMETOOLONG : ENOENT));
         return NULL;
     }
     if (make_path(path, why, whylen) != 0)
@@ -724,7 +851,12 @@ void adh_outdir_close(adh_outdir *d)
 {
     if (!d)
         return;
+    adh_outdir_abandon(d);   /* never committed: nothing half-done stays */
     close(d->fd);
+    free(d->st);
+    if (d->ix)
+        free(d->ix->slot);
+    free(d->ix);
     free(d->e);
     free(d);
 }
@@ -765,6 +897,115 @@ static void keep_newest(adh_outdir *d, const char *name, const char *tmp)
             drop_entry(d, i);
     if (newest >= 0)
         d->e[d->n++] = keep;   /* room: at least that one was dropped */
+    index_stale(d);
+}
+
+/* ------------------------------------------------- staged files */
+
+/* The staged temporary of name, or -1. */
+static long stage_find(const adh_outdir *d, const char *name)
+{
+    for (size_t i = 0; i < d->nst; i++)
+        if (!strcmp(d->st[i].name, name))
+            return (long)i;
+    return -1;
+}
+
+/* The record of the file (a temporary) called name dropped. */
+static void drop_named(adh_outdir *d, const char *name)
+{
+    for (size_t i = d->n; i-- > 0;)
+        if (!strcmp(d->e[i].name, name))
+            drop_entry(d, i);
+}
+
+/* Staged entry i's temporary removed with its record. */
+static void stage_drop(adh_outdir *d, size_t i)
+{
+    unlinkat(d->fd, d->st[i].tmp, 0);
+    drop_named(d, d->st[i].tmp);
+    d->st[i] = d->st[--d->nst];
+}
+
+/* tmp, now whole, waits to become name; an earlier staged name's goes. 0, or -1. */
+static int stage_push(adh_outdir *d, const char *name, const char *tmp)
+{
+    long old = stage_find(d, name);
+    if (old >= 0)
+        stage_drop(d, (size_t)old);
+    if (d->nst == d->capst) {
+        size_t cap = d->capst ? 2 * d->capst : 8;
+        staged *t = realloc(d->st, cap * sizeof *t);
+        if (!t)
+            return -1;
+        d->st = t, d->capst = cap;
+    }
+    snprintf(d->st[d->nst].tmp, sizeof d->st[0].tmp, "%s", tmp);
+    snprintf(d->st[d->nst].name, sizeof d->st[0].name, "%s", name);
+    d->nst++;
+    return 0;
+}
+
+void adh_outdir_stage(adh_outdir *d)
+{
+    d->staging = 1;
+}
+
+void adh_outdir_abandon(adh_outdir *d)
+{
+    if (!d->nst && !d->staging)
+        return;
+    while (d->nst)
+        stage_drop(d, d->nst - 1);
+    d->staging = 0;
+    save(d);
+}
+
+/* The files of d's manifest not staged now, and still as an earlier run
+ * wrote them, removed (run-K directories stay). */
+static void clear_unstaged(adh_outdir *d)
+{
+    for (size_t i = d->n; i-- > 0;) {
+        const entry *e = &d->e[i];
+        size_t len = strlen(e->name);
+        int mine = 0;
+        for (size_t k = 0; k < d->nst && !mine; k++)
+            mine = !strcmp(e->name, d->st[k].name) || !strcmp(e->name, d->st[k].tmp);
+        struct stat st;
+        if (mine || (len && e->name[len - 1] == '/'))
+            continue;
+        if (fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(e, &st))
+            unlinkat(d->fd, e->name, 0);
+        drop_entry(d, i);
+    }
+}
+
+int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen)
+{
+    if (replace)
+        clear_unstaged(d);
+    int e = 0;
+    const char *failed = "";
+    while (d->nst && !e) {
+        staged *s = &d->st[0];
+        struct stat st, now;
+        /* as adh_outdir_write records it: before the rename and after */
+        if (fstatat(d->fd, s->tmp, &st, AT_SYMLINK_NOFOLLOW) != 0 || add_entry(d, s->name, &st, 0) != 0 ||
+            save(d) != 0 || renameat(d->fd, s->tmp, d->fd, s->name) != 0) {
+            e = errno ? errno : ENOMEM;
+            failed = s->name;
+            break;
+        }
+        if (fstatat(d->fd, s->name, &now, AT_SYMLINK_NOFOLLOW) == 0 && now.st_ino == st.st_ino)
+            add_entry(d, s->name, &now, 0);
+        keep_newest(d, s->name, s->tmp);
+        *s = d->st[--d->nst];
+    }
+    if (e)
+        snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, failed, strerror(e));
+    adh_outdir_abandon(d);   /* what a failure left, and the mode */
+    save(d);
+    return e ? -1 : 0;
 }
 
 int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, const void *ctx, char *why,
@@ -792,6 +1033,11 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
      * the two leaves the new file unproven, so a later run refuses it (never
      * takes it for the user's), and the older record keeps the older file
      * proven until it is replaced */
+    if (!e && d->staging) {
+        if (stage_push(d, name, tmp) == 0)
+            return 0;
+        e = ENOMEM;
+    }
     if (!e && (add_entry(d, name, &st, 0) != 0 || save(d) != 0))
         e = errno ? errno : ENOMEM;
     if (!e && renameat(d->fd, tmp, d->fd, name) != 0)
@@ -800,6 +1046,7 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
         if (fd >= 0)
             unlinkat(d->fd, tmp, 0);
         d->n = before < d->n ? before : d->n;
+        index_stale(d);
         snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, name, strerror(e));
         return -1;
     }
@@ -811,12 +1058,33 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
     return 0;
 }
 
+/* A log staged: made under a temporary, renamed by adh_outdir_commit. */
+static int log_stage(adh_outdir *d, const char *name, char *why, size_t whylen)
+{
+    char tmp[64];
+    struct stat st;
+    int fd = temp_open(d->fd, name, O_RDWR | O_APPEND, tmp, sizeof tmp);
+    if (fd < 0 || fstat(fd, &st) != 0 || add_entry(d, tmp, &st, 1) != 0 || save(d) != 0 ||
+        stage_push(d, name, tmp) != 0) {
+        snprintf(why, whylen, "cannot open gnuplot's log %.3000s/%s: %s", d->path, name, strerror(errno));
+        if (fd >= 0) {
+            close(fd);
+            unlinkat(d->fd, tmp, 0);
+            drop_named(d, tmp);
+        }
+        return -1;
+    }
+    return fd;
+}
+
 int adh_outdir_log_open(adh_outdir *d, const char *name, char *why, size_t whylen)
 {
     if (!may_replace(d, name)) {
         not_replaced(d, name, why, whylen);
         return -1;
     }
+    if (d->staging)
+        return log_stage(d, name, why, whylen);
     /* an earlier log of this run's goes (each holds one session's
      * complaints), and with it its record */
     unlinkat(d->fd, name, 0);
@@ -864,7 +1132,14 @@ void adh_outdir_log_close(adh_outdir *d, const char *name, int fd)
     struct stat st, now;
     if (fd < 0)
         return;
-    long i = -1;
+    long i = -1, k = stage_find(d, name);
+    if (k >= 0) {   /* staged: an empty log is not kept, a full one waits */
+        if (fstat(fd, &st) == 0 && st.st_size == 0)
+            stage_drop(d, (size_t)k);
+        save(d);
+        close(fd);
+        return;
+    }
     if (fstat(fd, &st) == 0 && fstatat(d->fd, name, &now, AT_SYMLINK_NOFOLLOW) == 0 &&
         now.st_dev == st.st_dev && now.st_ino == st.st_ino)
         i = find(d, name, &now);

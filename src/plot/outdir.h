@@ -58,7 +58,13 @@ int adh_outdir_has(const adh_outdir *d, const char *name);
 /* Unlocks and frees d (NULL is fine). */
 void adh_outdir_close(adh_outdir *d);
 
-/* The path d was opened as, for messages ("DIR/run-2"). */
+/* in as a message shows it, into out: each control byte (below 0x20, and
+ * 0x7f) as \xNN, so that a name holding an escape sequence cannot clear or
+ * recolour the terminal that reads the message. */
+void adh_outdir_escape(const char *in, char *out, size_t len);
+
+/* The path d was opened as, for messages ("DIR/run-2"), escaped as
+ * adh_outdir_escape does. */
 const char *adh_outdir_path(const adh_outdir *d);
 
 /* Writes d/name atomically: writer fills a new temporary .NAME.XXXXXX in
@@ -72,6 +78,19 @@ const char *adh_outdir_path(const adh_outdir *d);
 typedef int (*adh_outdir_writer)(FILE *f, const void *ctx);
 int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, const void *ctx, char *why,
                      size_t whylen);
+
+/* Staging (adhere merge: the earlier merge stays whole until the new one
+ * is): after adh_outdir_stage, adh_outdir_write and adh_outdir_log_open
+ * leave each new file under its temporary (recorded in the manifest, so a
+ * kill leaves nothing the next run cannot remove). adh_outdir_commit
+ * renames them all into place at once and, with replace, removes the
+ * files an earlier run wrote that this one did not write again (run-K
+ * directories stay): 0, or -1 with why (what was not renamed is removed).
+ * adh_outdir_abandon removes them, leaving the earlier files as they were;
+ * adh_outdir_close abandons what was not committed. */
+void adh_outdir_stage(adh_outdir *d);
+int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen);
+void adh_outdir_abandon(adh_outdir *d);
 
 /* A log (gnuplot.log) made new in d for appending, readable too, recorded
  * in the manifest as a file that grows: its descriptor (close-on-exec), or

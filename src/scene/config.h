@@ -353,6 +353,10 @@ int adh_config_time_sweep_check(const adh_config *c, char *why, size_t whylen);
  * allowed (nothing changed), also when the runs would pass
  * ADH_SWEEP_MAX_RUNS. */
 int adh_sweep_set(adh_config *c, const char *name, const char *text, char *why, size_t whylen);
+/* The key a swept name sets, whichever its spelling ("E" and "material.E":
+ * material.E), into key: 0, or -1 when name is no key of a run. A source
+ * of keys (a scene's [sweep], the --sweep flags) names each key once. */
+int adh_sweep_key_of(const char *name, char *key, size_t len);
 /* The swept key `name`'s values as text adh_sweep_set reads back ("none"
  * when not swept). */
 void adh_sweep_get(const adh_config *c, const char *name, char *buf, size_t len);

@@ -465,7 +465,12 @@ int adh_measured_load(const char *path, const char *columns, adh_measured *m, ch
                      ADH_MEASURED_MAX_BYTES >> 20, ADH_MEASURED_MAX_POINTS);
             goto bad;
         }
-        if (parse_line(m, line, (size_t)len, lineno, columns, &sep, &ncols, &cx, &cy, &fx, &fy, &cap, why,
+        /* a UTF-8 byte-order mark (an editor's or a spreadsheet's export)
+         * is no part of the first word */
+        char *text = line;
+        if (lineno == 1 && len >= 3 && !memcmp(line, "\xef\xbb\xbf", 3))
+            text += 3, len -= 3;
+        if (parse_line(m, text, (size_t)len, lineno, columns, &sep, &ncols, &cx, &cy, &fx, &fy, &cap, why,
                        whylen) != 0)
             goto bad;
     }

@@ -62,6 +62,26 @@ static void say_key(const char *key, const char *value, char *buf, size_t len, v
     snprintf(buf, len, "%s%s%s", dot ? dot + 1 : key, value ? " = " : "", value ? value : "");
 }
 
+/* [sweep] E after [sweep] material.E (or sigma after material.sigma):
+ * one key under two spellings, the second's values would silently replace
+ * the first's. 0, or the failure reported. */
+static int swept_twice(scene_parse *sp, const char *section, const char *name)
+{
+    char mine[64], theirs[64];
+    if (strcmp(section, "sweep") != 0 || adh_sweep_key_of(name, mine, sizeof mine) != 0)
+        return 0;
+    for (size_t i = 0; i < sp->nseen; i++)
+        if (!strncmp(sp->seen[i], "sweep.", 6) && adh_sweep_key_of(sp->seen[i] + 6, theirs, sizeof theirs) == 0 &&
+            !strcmp(mine, theirs)) {
+            char msg[300];
+            snprintf(msg, sizeof msg, "%s swept twice in [sweep], as '%s' and as '%s': give its values once", mine,
+                     sp->seen[i] + 6, name);
+            fail(sp, "%s%s", msg, "");
+            return -1;
+        }
+    return 0;
+}
+
 /* Each key = value through adh_config_set, as the flags and the TUI set
  * them; the scene adds what is about a file: sections, duplicates, an
  * explicit unload over the one turns imply, kernel and grid given together. */
@@ -92,6 +112,8 @@ static int handler(void *user, const char *section, const char *name, const char
     for (size_t i = 0; i < sp->nseen; i++)
         if (strcmp(sp->seen[i], full) == 0)
             return fail(sp, "key '%s' given twice in [%s]", name, section);
+    if (swept_twice(sp, section, name) != 0)
+        return 0;
     if (sp->nseen < sizeof sp->seen / sizeof sp->seen[0])
         snprintf(sp->seen[sp->nseen++], sizeof sp->seen[0], "%s", full);
 

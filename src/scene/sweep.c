@@ -72,6 +72,16 @@ static int axis_for(const char *name, adh_sweep_axis *a, char *why, size_t whyle
     return 0;
 }
 
+int adh_sweep_key_of(const char *name, char *key, size_t len)
+{
+    adh_sweep_axis a;
+    char why[300];
+    if (axis_for(name, &a, why, sizeof why) != 0)
+        return -1;
+    snprintf(key, len, "%s", a.key);
+    return 0;
+}
+
 /* The three parameters a sweep had before any key could be swept are
  * positive quantities; their values say so where they are written. */
 static int positive_only(const adh_sweep_axis *a)

@@ -38,6 +38,14 @@ bad "is a length (m, nm, um, ...), but a pressure" -E 5nm
 bad "is a pressure (Pa, MPa, GPa, ...), but a length" --eps=1GPa
 bad "must lie below the start" --turn=50nm
 bad "must lie below the start" --start=5nm --turn=-1nm,6nm
+# Rmax at its limit, 0.3 R exactly (1000 x 3 nm at R = 10 um, which the
+# units make a few ulps more), is allowed; just beyond it is not
+"$ADHERE" --plan --force -R 10um -N 1000 --spacing=3nm >/dev/null 2>"$TMP/stderr"
+rc=$?
+check "Rmax = 1000 x 3 nm = 0.3 R exactly is allowed (exit $rc: $(cat "$TMP/stderr"))" [ "$rc" -eq 0 ]
+bad "grid radius Rmax = N x spacing = 3.001 um is not << R = 10 um: at most 0.3 R is allowed" -R 10um -N 1000 --spacing=3.001nm
+bad "material.E swept twice (--sweep=E=... and --sweep=material.E=...): give its values once" --sweep=E=1GPa,2GPa --sweep=material.E=3GPa
+bad "sigma swept twice (--sweep=sigma=... and --sweep=sigma=...)" --sweep=sigma=1,2 --sweep=sigma=3
 bad "eps = 0 nm is not allowed" --eps=0
 bad "--mixing: 'fast' is not a mixing rule: use paper or momentum" --mixing=fast
 bad "--momentum: '1' is not allowed: a number from 0 to below 1" --momentum=1
@@ -77,6 +85,20 @@ bad "nul.dat:2: a NUL byte" --data="$TMP/nul.dat"
 printf 'h0 (\033[2Jnm)\tF (nN)\n1\t2\n' >"$TMP/esc.dat"
 bad "esc.dat:1: the control byte 0x1b: this is not a text table" --data="$TMP/esc.dat"
 check "... and the refusal holds no escape byte" sh -c "! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+# -o DIR with an escape sequence in its name: the messages show it escaped
+# (\x1b), its bytes never reach the terminal
+ESCDIR=$TMP/$(printf 'o\033[2Jdir')
+: >"$ESCDIR"
+"$ADHERE" --batch -q --mode=rigid -o "$ESCDIR/x" >/dev/null 2>"$TMP/stderr"
+check "-o DIR/x under a file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 2 ] && grep -qF 'o\\x1b[2Jdir/x' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+rm -f "$ESCDIR"
+"$ADHERE" --batch --mode=rigid -o "$ESCDIR" >/dev/null 2>"$TMP/stderr"
+check "... a run into it: its closing line names it escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 0 ] && grep -qF 'o\\x1b[2Jdir' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+"$ADHERE" merge "$ESCDIR" >/dev/null 2>"$TMP/stderr"
+check "... merge of it (no shard there): exit 2, escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 2 ] && grep -qF 'o\\x1b[2Jdir holds no study.tsv' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
 printf '1 2\n3 1e-320\n' >"$TMP/tiny.dat"
 bad "tiny.dat:2: '1e-320' is too small for a double (it underflows" --data="$TMP/tiny.dat"
 

@@ -40,6 +40,33 @@ if command -v parallel >/dev/null 2>&1; then
     check "the merged map.png is the whole study's, byte for byte" cmp -s "$TMP/whole/map.png" "$TMP/merged/map.png"
     check "and the timing column is really there to differ (16 times, each > 0)" \
         awk -F'\t' '!/^#/ && $1 != "run" {n++; if (!($15 > 0)) bad = 1} END {exit bad || n != 16}' "$TMP/merged/sweep.tsv"
+    # a signal while the merge draws (a gnuplot that never answers, which
+    # says when it started): the earlier merge's table and figure stay as
+    # they were, no temporary is left, exit 130 (129 for SIGHUP)
+    printf '#!/bin/sh\n: >"$GP_STARTED"\nexec cat 3>&1 >/dev/null\n' >"$TMP/gp-slow"
+    chmod +x "$TMP/gp-slow"
+    cp "$TMP/merged/sweep.tsv" "$TMP/merged.tsv"
+    mkdir -p "$TMP/mtmp"
+    for sig in TERM HUP INT; do
+        rm -f "$TMP/gp.started"
+        GP_STARTED="$TMP/gp.started" ADHERE_GNUPLOT="$TMP/gp-slow" TMPDIR="$TMP/mtmp" \
+            "$ADHERE" merge -o "$TMP/merged" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>"$TMP/merge.err" &
+        pid=$! i=0
+        while [ $i -lt 600 ] && [ ! -e "$TMP/gp.started" ] && kill -0 $pid 2>/dev/null; do sleep 0.1; i=$((i + 1)); done
+        kill -$sig $pid
+        wait $pid
+        rc=$?
+        want=130; [ $sig = HUP ] && want=129
+        check "SIG$sig while merge draws: exit $want ($rc: $(head -c 300 "$TMP/merge.err"))" [ "$rc" -eq $want ]
+        check "... the earlier merge's sweep.tsv and map.png are as they were" \
+            sh -c "cmp -s '$TMP/merged.tsv' '$TMP/merged/sweep.tsv' && cmp -s '$TMP/whole/map.png' '$TMP/merged/map.png'"
+        check "... no temporary left, in the directory or in TMPDIR" \
+            sh -c "! ls -a '$TMP/merged' | grep -v '^\.adhere-manifest\$' | grep -q '^\.[^.]' && [ -z \"\$(ls -A '$TMP/mtmp')\" ]"
+    done
+    "$ADHERE" merge -q --no-plot -o "$TMP/merged" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>"$TMP/merge.err"
+    rc=$?
+    check "a merge without figures into an earlier one's directory (exit $rc): its sweep.tsv, the earlier map.png gone" \
+        sh -c "[ $rc -eq 0 ] && cmp -s '$TMP/merged.tsv' '$TMP/merged/sweep.tsv' && [ ! -e '$TMP/merged/map.png' ]"
 else
     not_ok "GNU parallel is not installed (make deps installs it)"
 fi
@@ -99,6 +126,18 @@ S2=$TMP/shard2
 $M -o "$TMP/m1" "$TMP/shard1" $S2 $S2 $S2 $S2 $S2 $S2 "$TMP/shard3" 2>"$TMP/err"
 check "a shard given 6 times (more runs twice than the study has): exit 2, each run listed once ($(cat "$TMP/err"))" \
     sh -c "[ $? -eq 2 ] && grep -q 'runs 5-8 are in' '$TMP/err' && ! grep -q 'in all' '$TMP/err'"
+# two directories that both say shard 2/3 (one run of it stopped after runs
+# 5-6, another after 7-8): together they hold every run, yet are not parts
+# to join
+mkdir "$TMP/twoA" "$TMP/twoB"
+for d in twoA twoB; do cp "$TMP/shard2/study.tsv" "$TMP/$d/"; grep '^#' "$TMP/shard2/runs.tsv" >"$TMP/$d/runs.tsv"; done
+grep -v '^#' "$TMP/shard2/runs.tsv" | head -1 | tee -a "$TMP/twoA/runs.tsv" >>"$TMP/twoB/runs.tsv"
+awk -F'\t' '$1 == 5 || $1 == 6' "$TMP/shard2/runs.tsv" >>"$TMP/twoA/runs.tsv"
+awk -F'\t' '$1 == 7 || $1 == 8' "$TMP/shard2/runs.tsv" >>"$TMP/twoB/runs.tsv"
+$M -o "$TMP/m9" "$TMP/shard1" "$TMP/twoA" "$TMP/twoB" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "two directories both holding shard 2/3: exit 2, both and the shard named ($(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'twoA and .*twoB both hold shard 2/3' '$TMP/err' && [ ! -e '$TMP/m9/sweep.tsv' ]"
 $M -o "$TMP/m2" "$TMP/shard1" "$TMP/shard3" 2>"$TMP/err"
 rc=$?
 check "a shard missing: exit 2, its runs listed ($(cat "$TMP/err"))" \
@@ -197,7 +236,8 @@ check "the plan counts the runs" grep -qx 'runs: 16' "$TMP/plan"
 check "... the study's product" grep -q '^study: 16 runs, every combination of the 2 keys (4 x 4' "$TMP/plan"
 check "... the drives sharing a loading branch" grep -q '^drives: 4 ' "$TMP/plan"
 check "... the shard's part" grep -q '^shard: 2 of 3: .*(4 of the 16 runs)' "$TMP/plan"
-check "... an expected time" grep -q '^expected time: about .* on [0-9]* core' "$TMP/plan"
+check "... one time line, from the pilot ($(grep -c 'time:' "$TMP/plan") lines with time:)" \
+    sh -c "grep -q '^time: about .* on [0-9]* cores*, from a pilot of the study' '$TMP/plan' && [ \$(grep -c 'time:' '$TMP/plan') -eq 1 ]"
 check "... and the disk" grep -q '^disk: about .* MB written' "$TMP/plan"
 ( ulimit -f 1; "$ADHERE" --plan -N 100 --force --eps=10pm "$TMP/map.scene" -o "$TMP/p" >/dev/null 2>"$TMP/err"; echo $? >"$TMP/rc" )
 check "a study past the file size limit is refused (exit $(cat "$TMP/rc"): $(cat "$TMP/err"))" \

@@ -139,8 +139,13 @@ same_kernel "and --operator=h2 overrides it" "$TMP/soft.scene --operator=h2" "-E
 has_re default '^time: under a second'   # (its plan is --mode=rigid's by now)
 for s in fig1 fig4 fig5 fig6 fig7 fig8; do
     has_re $s '^iterations: about [0-9.e+]+ '
+    [ $s = fig7 ] && continue
     has_re $s '^time: about [0-9]+(\.[0-9])? (s|min [0-9]+ s|h [0-9]+ min) \([0-9.e+]+ iterations, each about one kernel product: [0-9.e+-]+ ms'
 done
+# a study (fig7 sweeps eps) has one time line, its pilot's, which covers
+# every run and grid
+has_re fig7 '^time: about .* on [0-9]+ cores?, from a pilot of the study.s first and last drives'
+check "... and no other time line ($(grep -c 'time:' "$TMP/fig7.plan"))" [ "$(grep -c 'time:' "$TMP/fig7.plan")" -eq 1 ]
 plan default --mode=static
 has_re default '^time: not estimated: the static curve'
 QUICKRUN="-N 200 --force -E 1GPa --turn=-3nm --eps=2pm"

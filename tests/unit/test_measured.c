@@ -52,6 +52,13 @@ int main(void)
     reads("the Greek mu: 'h0 (\xce\xbcm)'", "h0 (\xce\xbcm);F (nN)\n0.003;-1\n0.002;-2\n", NULL, 2, 3e-9, -1e-9, 2e-9,
           -2e-9);
     reads("metres and newtons: 'h0[m] F[N]'", "h0[m] F[N]\n3e-9 -1e-9\n2e-9 -2e-9\n", NULL, 2, 3e-9, -1e-9, 2e-9, -2e-9);
+    /* a UTF-8 byte-order mark (a spreadsheet's export) before the header,
+     * or before the first number: skipped, the file read as without it */
+    reads("a byte-order mark before the header", "\xef\xbb\xbfh0 (um)\tF (pN)\n0.003\t-1000\n0.002\t-2000\n", NULL, 2,
+          3e-9, -1e-9, 2e-9, -2e-9);
+    reads("a byte-order mark before the first number", "\xef\xbb\xbf" "3 -1\n2 -2\n", NULL, 2, 3e-9, -1e-9, 2e-9, -2e-9);
+    reads("a byte-order mark before the header, a column chosen by name", "\xef\xbb\xbf" "Force (nN),Separation (nm)\n-1,3\n-2,2\n",
+          "Separation,Force", 2, 3e-9, -1e-9, 2e-9, -2e-9);
     const char *three = "# exported\nTime (s)\tForce (nN)\tSeparation (nm)\n0\t-1\t3\n0.1\t-2\t2\n0.2\t-3\t1\n";
     reads("three columns: the position and force found by name", three, NULL, 3, 3e-9, -1e-9, 1e-9, -3e-9);
     reads("three columns chosen by number (--columns=3,2)", three, "3,2", 3, 3e-9, -1e-9, 1e-9, -3e-9);

@@ -217,6 +217,9 @@ static void bad_scenes(void)
     bad("[output]\nplots = none, force\n", 2, "cannot be combined");
     bad("[sweep]\nsigma = 1, 2\nE = 1GPa\n", 3, "sigma and E both set the modulus");
     bad("[sweep]\nE = 1GPa, 2GPa, 1GPa\n", 2, "given twice");
+    bad("[sweep]\nE = 1GPa, 2GPa\nmaterial.E = 3GPa\n", 3, "material.E swept twice in [sweep], as 'E' and as 'material.E'");
+    bad("[sweep]\nmaterial.sigma = 1, 2\nsigma = 3\n", 3, "sigma swept twice in [sweep], as 'material.sigma' and as 'sigma'");
+    bad("[sweep]\nprotocol.turns = -1nm, -2nm\nturns = -3nm\n", 3, "protocol.turns swept twice");
     bad("[sweep]\nnodes = 100 .. 1000\n", 2, "not a range");
     bad("[sweep]\nE = 1GPa .. 2GPa, cubic, 3\n", 2, "not a spacing");
     bad("[sweep]\nturns = -1nm .. 1nm, log, 3\n", 2, "one sign");
