@@ -4,5 +4,8 @@
 
 /* Seconds on the monotonic clock, from an arbitrary origin. */
 double adh_clock_seconds(void);
+/* CPU seconds of the calling thread: what a piece of work costs whatever
+ * else the machine is running (a plan's timing on a shared machine). */
+double adh_clock_cpu_seconds(void);
 
 #endif

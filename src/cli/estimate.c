@@ -9,22 +9,24 @@
 
 double cli_estimate_iteration(const adh_config *cfg, double *build)
 {
-    double t0 = adh_clock_seconds();
+    /* CPU seconds, not wall: on a shared machine the wall clock times
+     * the other jobs too, and the estimate is of this run's work */
+    double t0 = adh_clock_cpu_seconds();
     adh_grid *g = adh_config_grid_alloc(&cfg->spec);
     int st = 0;
     adh_kernel *k = g ? adh_config_kernel_alloc(&cfg->spec, g, &st) : NULL;
-    *build = adh_clock_seconds() - t0;
+    *build = adh_clock_cpu_seconds() - t0;
     double *v = k ? malloc(3 * g->n * sizeof *v) : NULL;
     double per = NAN;
     if (v) {
         for (size_t i = 0; i < g->n; i++)
             v[i] = 1.0 / (1.0 + (double)i);   /* a pressure falling off from the axis */
         size_t reps = 0;
-        double t1 = adh_clock_seconds(), t = t1;
+        double t1 = adh_clock_cpu_seconds(), t = t1;
         while (reps < 5 || t - t1 < 0.2) {
             adh_kernel_apply(k, v, v + g->n, v + 2 * g->n);
             reps++;
-            t = adh_clock_seconds();
+            t = adh_clock_cpu_seconds();
         }
         per = (t - t1) / (double)reps;
     }
@@ -69,8 +71,8 @@ void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
     double wall = build + adh_plan_time_left(runs, n, plan->jobs, 0, 1.0 / per);
     char t[32];
     cli_progress_duration(wall, t, sizeof t);
-    fprintf(f, "time: about %s (%.2g iterations, each about one kernel product: %.3g ms on this machine, timed "
-               "now%s; the kernel built in %.2g s)%s\n", t, iterations, per * 1e3,
+    fprintf(f, "time: about %s (%.2g iterations, each about one kernel product: %.3g ms of CPU on this machine, "
+               "timed now%s; the kernel built in %.2g s)%s\n", t, iterations, per * 1e3,
             plan->jobs > 1 ? ", the runs shared out over the jobs" : "", build,
             n < plan->nruns ? "; the first runs alone" : "");
 }
