@@ -120,11 +120,14 @@ static int speed_figure(tfig *fg, const adh_config *cfg, const cli_studyrow *row
                     s.mat.z0 / s.time.tau, s.mat.z0 / s.time.tau);
     adh_gnuplot_cmd(gp, "set label \"V τ = z_0\" at %.17g, graph 0.72 offset 0.5,0 tc rgb \"#666666\"",
                     s.mat.z0 / s.time.tau);
-    adh_gnuplot_cmd(gp, "plot %s using 1:($2*%.17g) with linespoints pt 7 lw 2 lc rgb \"#c0392b\" title \"pull-off\", "
-                        "'' using 1:($3*%.17g) axes x1y2 with linespoints pt 5 lw 2 lc rgb \"#1f3f8f\" title \"hysteresis\", "
-                        "%.17g with lines dt 2 lw 2 lc rgb \"#27ae60\" title \"static pull-off at E0\", "
-                        "%.17g with lines dt 4 lw 2 lc rgb \"#8e44ad\" title \"static pull-off at E∞\", "
-                        "%.17g with lines dt 3 lw 2 lc rgb \"#e67e22\" title \"E∞/E0 × the one at E0 (crack theory's bound)\"",
+    /* the palette's (share/adhere/gnuplot/style.gp): the measured pair in
+     * the run's colours, the static references in the static curve's, the
+     * bound black, as the force plots draw their models */
+    adh_gnuplot_cmd(gp, "plot %s using 1:($2*%.17g) with linespoints pt 7 lw 2 lc rgb adh_loading_color title \"pull-off\", "
+                        "'' using 1:($3*%.17g) axes x1y2 with linespoints pt 5 lw 2 lc rgb word(adh_unload_colors, 1) title \"hysteresis\", "
+                        "%.17g with lines dt 2 lw 2 lc rgb adh_static_color title \"static pull-off at E0\", "
+                        "%.17g with lines dt 4 lw 2 lc rgb adh_static_color title \"static pull-off at E∞\", "
+                        "%.17g with lines dt 3 lw 1.5 lc rgb \"#000000\" title \"E∞/E0 × the one at E0 (crack theory's bound)\"",
                     adh_gp_path(dat, q, sizeof q), fs, es, -p0 * fs, -pinf * fs, -ratio * p0 * fs);
     char why[1024];
     if (adh_session_end(&fg->ses, "speed.png", why, sizeof why) != 0) {
@@ -162,8 +165,8 @@ static int snap_figure(tfig *fg, const adh_config *cfg, const cli_studyrow *rows
     adh_gnuplot_cmd(gp, "set ylabel \"snap-in distance (nm)\"");
     adh_gnuplot_cmd(gp, "set key top right");
     /* the snap-out's base lies F/k out, microns for a soft spring: sweep.tsv has it */
-    adh_gnuplot_cmd(gp, "plot %s using 1:($3*1e9) with linespoints pt 7 lw 2 lc rgb \"#1f3f8f\" title \"base (cantilever's support)\", "
-                        "'' using 1:($2*1e9) with linespoints pt 6 lw 2 lc rgb \"#c0392b\" title \"sphere h_0 (tip)\", "
+    adh_gnuplot_cmd(gp, "plot %s using 1:($3*1e9) with linespoints pt 7 lw 2 lc rgb adh_loading_color title \"base (cantilever's support)\", "
+                        "'' using 1:($2*1e9) with linespoints pt 6 lw 2 lc rgb word(adh_unload_colors, 1) title \"sphere h_0 (tip)\", "
                         "'' using 1:($6*1e9) with lines dt 2 lw 2 lc rgb \"#000000\" title \"base, rigid spheres (eq 22)\"",
                     adh_gp_path(dat, q, sizeof q));
     char why[1024];
