@@ -134,10 +134,12 @@ static int curves(adh_session *ses, const adh_config *cfg, const cli_studyrow *r
     if (!f)
         return -1;
     int words = 0, positive = 1;
+    double lo = INFINITY, hi = 0;
     for (size_t j = 0; j < x->n; j++) {
         double v = adh_sweep_value(x, j, NULL, 0);
         words |= isnan(v);
         positive &= v > 0;
+        lo = fmin(lo, v), hi = fmax(hi, v);
     }
     const char *unit;
     double xs = axis_scale(x, &unit);
@@ -158,7 +160,9 @@ static int curves(adh_session *ses, const adh_config *cfg, const cli_studyrow *r
     adh_gnuplot_cmd(gp, "set ylabel \"%s\" noenhanced", label);
     if (words)
         index_tics(gp, "xtics", x);
-    else if (positive && x->spacing == ADH_SWEEP_LOG)
+    else if (positive && (x->spacing == ADH_SWEEP_LOG || hi >= 100 * lo))
+        /* a log range, or a list over two decades or more (speeds, springs):
+         * on a linear axis all but the largest values crowd at its left */
         adh_gnuplot_cmd(gp, "set logscale x");
     adh_gnuplot_cmd(gp, ncurves > 12 ? "unset key" : "set key outside right");
     char *cmd = NULL;

@@ -231,6 +231,17 @@ nx=$(grep '^set xtics (' "$TMP/map.gp" | tail -1 | grep -o "' [0-9]*" | wc -l)
 ny=$(grep '^set ytics (' "$TMP/map.gp" | tail -1 | grep -o "' [0-9]*" | wc -l)
 check "map.png of 30 x 100 runs: $nx labels across (2 to 6), $ny up the side (7 to 12)" \
     sh -c "[ -s '$TMP/tics/map.png' ] && [ $nx -ge 2 ] && [ $nx -le 6 ] && [ $ny -ge 7 ] && [ $ny -le 12 ]"
+# curves.png against a key listed over decades: a log axis (on a linear
+# one all but the largest values crowd at the left); over less, linear
+: >"$TMP/map.gp"
+ADHERE_GNUPLOT=$TMP/logging-gnuplot "$ADHERE" --batch -q --mode=rigid --sweep='z0=0.3nm,0.5nm' \
+    --sweep='A=1e-21J,1e-20J,1e-19J' --sweep=plot=curves --run-dirs=no -o "$TMP/clog" 2>"$TMP/err"
+check "curves.png against A listed over two decades has a log axis" \
+    sh -c "[ -s '$TMP/clog/curves.png' ] && grep -qx 'set logscale x' '$TMP/map.gp'"
+: >"$TMP/map.gp"
+ADHERE_GNUPLOT=$TMP/logging-gnuplot "$ADHERE" --batch -q --mode=rigid --sweep='z0=0.3nm,0.5nm' \
+    --sweep='A=1e-20J,5e-20J,1e-19J' --sweep=plot=curves --run-dirs=no -o "$TMP/clin" 2>"$TMP/err"
+check "... over one decade a linear one" sh -c "[ -s '$TMP/clin/curves.png' ] && ! grep -q 'set logscale' '$TMP/map.gp'"
 "$ADHERE" --plan -N 100 --force --eps=10pm "$TMP/map.scene" --shard 2/3 -o "$TMP/p" >"$TMP/plan" 2>&1
 check "the plan counts the runs" grep -qx 'runs: 16' "$TMP/plan"
 check "... the study's product" grep -q '^study: 16 runs, every combination of the 2 keys (4 x 4' "$TMP/plan"
