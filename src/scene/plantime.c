@@ -50,7 +50,7 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg)
         double T = (start - deep) / v.drive.speed_in + (double)s.proto.nturns * v.drive.dwell +
                    (start - deep) / v.drive.speed_out;
         adh_format_quantity(T, ADH_Q_TIME, 4, a, sizeof a);
-        fprintf(f, "time: about %s from the start to the deepest turn and back (%.3g tau)%s\n", a, T / v.sls.tau,
+        fprintf(f, "span: about %s of physical time from the start to the deepest turn and back (%.3g tau)%s\n", a, T / v.sls.tau,
                 isfinite(v.drive.spring) ? ", more from a spring's start" : "");
     }
 }

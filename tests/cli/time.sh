@@ -57,7 +57,7 @@ bad "sweep.plot = speed draws one swept key: the study varies 2" "$TMP/speed2.sc
 "$ADHERE" --plan visco >"$TMP/plan" 2>&1
 check "--plan visco: mode time" grep -q '^mode: time (physical time' "$TMP/plan"
 check "--plan visco: the solid" grep -qF 'material: standard linear solid: E0 = 300 MPa (relaxed, sigma 7.503), Einf = 3 GPa (instantaneous, sigma 0.7503), tau = 1 ms' "$TMP/plan"
-check "--plan visco: the drive and the time it spans" sh -c "grep -qF 'drive: the base at 1 um/s approaching, 1 um/s retracting' '$TMP/plan' && grep -q '^time: about 43.9 ms' '$TMP/plan'"
+check "--plan visco: the drive and the time it spans" sh -c "grep -qF 'drive: the base at 1 um/s approaching, 1 um/s retracting' '$TMP/plan' && grep -q '^span: about 43.9 ms of physical time' '$TMP/plan' && [ \$(grep -c '^time:' '$TMP/plan') -eq 1 ]"
 check "--plan visco stores events.tsv" grep -q '^stored: events.tsv' "$TMP/plan"
 check "--plan visco: summary.tsv with the solid, the drive, hysteresis and dissipated" grep -q "^stored: summary.tsv: .*the solid and the drive, hysteresis, dissipated" "$TMP/plan"
 "$ADHERE" --plan visco-speed >"$TMP/plans" 2>&1
