@@ -1172,6 +1172,10 @@ int tui_main(const adh_config *cfg)
         say(&t, 0, "Static equilibrium: f solves the curve point by point, r follows it to the end, ? lists every key.");
     else if (cfg->spec.mode == ADH_MODE_TIME)
         say(&t, 0, "Physical time: f takes the next step in time, r runs the cycle, b walks back, ? lists every key.");
+    else if (adh_sweep_runs(&cfg->sweep) > 1)   /* the screen runs one: say where the rest are */
+        say(&t, 0, "%s%sits sweep of %zu runs is for --batch; here one run, the values at the left. f steps in, "
+            "r runs, ? lists every key.", cfg->output.title, cfg->output.title[0] ? ": " : "This scene: ",
+            adh_sweep_runs(&cfg->sweep));
     else if (cfg->output.title[0])
         say(&t, 0, "%s. f steps in, r runs, ? lists every key.", cfg->output.title);
     else
