@@ -257,7 +257,7 @@ static int jump(figure *fg, const adh_config *cfg, const cli_studyrow *rows, siz
     adh_gnuplot_cmd(fg->gp, "set ytics %s", tics);
     adh_gnuplot_cmd(fg->gp, "set xlabel \"adhesion–elasticity parameter σ (eq 17)\"");
     adh_gnuplot_cmd(fg->gp, "set ylabel \"gap before the jump h (nm)\"");
-    adh_gnuplot_cmd(fg->gp, "set key top left");
+    adh_gnuplot_cmd(fg->gp, "set key top left width -6");
     /* filled: a jump; open: contact came gradually, the last gap before it (as the paper) */
     adh_gnuplot_cmd(fg->gp, "plot %s index 0 using 1:($4 == 1 ? $2*1e9 : NaN) with points pt 7 ps 1.2 lc rgb adh_loading_color title \"jump (computed)\", "
                     "'' index 0 using 1:($4 == 1 ? NaN : $2*1e9) with points pt 6 ps 1.2 lc rgb adh_loading_color title \"last gap before contact, no jump\", "

@@ -1183,7 +1183,7 @@ static int plot_contact_static(plotter *pl)
     adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
     adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
     adh_gnuplot_cmd(pl->gp, "set ylabel \"contact radius a (µm)\"");
-    adh_gnuplot_cmd(pl->gp, "set key outside below center horizontal");
+    adh_gnuplot_cmd(pl->gp, "set key outside below center horizontal width -6");
     const char *qdat = adh_gp_path(dat, q, sizeof q);
     char stable[ADH_GP_PATH_SIZE + 128] = "", unstable[ADH_GP_PATH_SIZE + 160] = "";
     if (set[0] >= 0)
