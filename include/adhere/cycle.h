@@ -47,7 +47,11 @@ double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path);
  * pairs). 0 without unloading. */
 double adh_cycle_run_hysteresis(const adh_run *run);
 /* The same for a static curve (one path, stable flags): the area between the
- * highest and lowest stable force at each h0, sampled every step. */
+ * highest and lowest stable force at each h0, sampled every step, each
+ * stable leg interpolated by parabolas through its rows (rows of one leg
+ * may have up to two unstable rows between them where the steps cross the
+ * lattice's folds, never across the jump-in or jump-out). NAN when memory
+ * runs out. */
 double adh_cycle_static_hysteresis(const adh_run *curve, double step);
 
 #endif

@@ -15,8 +15,11 @@
 #ifndef ADH_FRONT_GROW /* Newton iterations up to which the step grows */
 #define ADH_FRONT_GROW 3
 #endif
-#ifndef ADH_FRONT_MAX /* the longest step, in rings */
-#define ADH_FRONT_MAX 64
+#ifndef ADH_FRONT_MAX /* the longest step, in rings, on a fine band of up */
+#define ADH_FRONT_MAX 64 /* to ADH_FRONT_BAND times this */
+#endif
+#ifndef ADH_FRONT_BAND /* beyond: the longest step is the band's 1/this */
+#define ADH_FRONT_BAND 32
 #endif
 #define ADH_FRONT_GAP 1.5 /* z0: the front node's gap is above this */
 #define ADH_FRONT_MIN 8   /* rings in contact before front mode starts */
@@ -178,7 +181,14 @@ static void front_extremum(adh_static *w, size_t kused, double dq)
  * while Newton converges at once, shrinks when it labours (not while
  * approaching an extremum), and stays under 1/ADH_FRONT_REL of the contact
  * radius (the parabolas through three points must see the extremes
- * coming). q, q0: Q at the new point and the one before. */
+ * coming) and under ADH_FRONT_MAX rings or 1/ADH_FRONT_BAND of the fine
+ * band, whichever is longer. A cap of 64 rings alone made the front steps
+ * as many as the band is long (the band is ~1.25 contact radii at the
+ * turn, 0.3 edge widths a ring: ~1 640 rings at sigma = 20, ~12 800 at
+ * 100): 210 front steps at sigma = 100 against 66 at 20; with the cap a
+ * share of the band 110, where the tenth of the contact radius binds
+ * (docs/static-curve.md). Up to sigma ~ 25 (a band of 2 048 rings) the
+ * cap is 64 as before. q, q0: Q at the new point and the one before. */
 void static_front_accepted(adh_static *w, size_t iters, double q, double q0)
 {
     static_front *fr = &w->fr;
@@ -193,8 +203,9 @@ void static_front_accepted(adh_static *w, size_t iters, double q, double q0)
         fr->fk += fr->fk / 2 > 1 ? fr->fk / 2 : 1;
     else if (iters >= ADH_FRONT_GROW + 3)
         fr->fk = fr->fk * 2 / 3 > 1 ? fr->fk * 2 / 3 : 1;
-    size_t kmax = fr->fe[0] / ADH_FRONT_REL;
-    kmax = kmax < 1 ? 1 : kmax > ADH_FRONT_MAX ? ADH_FRONT_MAX : kmax;
+    size_t kmax = fr->fe[0] / ADH_FRONT_REL, cap = fr->nf / ADH_FRONT_BAND;
+    cap = cap > ADH_FRONT_MAX ? cap : ADH_FRONT_MAX;
+    kmax = kmax < 1 ? 1 : kmax > cap ? cap : kmax;
     if (fr->fk > kmax)
         fr->fk = kmax;
     if (!w->done)

@@ -9,7 +9,10 @@
 #     add most of an hour, Figure 7 dense alone ~10 minutes a round), the
 #     printed numbers compared too (every summary value to 10 digits);
 #   - the static curve at each sigma of BENCH_SIGMAS (default 1 2 5 7.5 10
-#     15 20 50 100; E set for each, defaults otherwise) against sigma = 20.
+#     15 20 50 100; E set for each, defaults otherwise) against sigma = 20,
+#     with its grid, points and time a point (docs/performance.md says why
+#     sigma = 50 and 100 stay above 3x: the rings the grid needs).
+# BENCH_FIGURES=" " (a blank) runs no figure.
 # BENCH_ROUNDS (default 3) rounds. ADHERE: the program (default ./adhere).
 # FAST_SMOKE=1 (make check): Figure 4 a few steps long and two sigmas, one
 # round: the ratios mean nothing, but a broken comparison fails the suite.
@@ -87,10 +90,11 @@ if [ -s "$tmp/static-20.cpu" ]; then
     for s in $sigmas; do
         [ -s "$tmp/static-$s.cpu" ] || continue
         t=$(median "$tmp/static-$s.cpu")
-        printf 'ratio: static curve, sigma = %s / sigma = 20: %.2f (%.2f / %.2f CPU s, median of %d; %s nodes, %s points, %s); %s\n' \
+        pts=$(awk -F'\t' '$1 == "points" {print $2}' "$tmp/static-$s/summary.tsv")
+        printf 'ratio: static curve, sigma = %s / sigma = 20: %.2f (%.2f / %.2f CPU s, median of %d; %s nodes, %s points, %.1f ms a point, %s); %s\n' \
             "$s" "$(echo "$t $t20" | awk '{print $1 / $2}')" "$t" "$t20" "$rounds" \
-            "$(awk -F'\t' '$1 == "nodes" {print $2}' "$tmp/static-$s/summary.tsv")" \
-            "$(awk -F'\t' '$1 == "points" {print $2}' "$tmp/static-$s/summary.tsv")" \
+            "$(awk -F'\t' '$1 == "nodes" {print $2}' "$tmp/static-$s/summary.tsv")" "$pts" \
+            "$(echo "$t $pts" | awk '{print ($2 > 0 ? 1000 * $1 / $2 : 0)}')" \
             "$(awk -F'\t' '$1 == "operator" {print $2}' "$tmp/static-$s/summary.tsv")" "$machine"
     done
 fi
