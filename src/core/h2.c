@@ -23,6 +23,8 @@ typedef struct h2_cluster {
     size_t pi0;          /* with cw, a leaf's first cell in the padded
                             order: each leaf's cells, then zeros to a whole
                             vector */
+    size_t uoff;         /* a leaf's basis rows: U + uoff, n x P */
+    size_t toff;         /* its transfer: T + toff, P x P */
 } h2_cluster;
 
 /* A block of the near field: rows of one leaf against the columns of
@@ -46,11 +48,14 @@ struct adh_h2 {
     size_t ncl;
     h2_cluster *cl;      /* pre-order: a parent before its children */
     double *node;        /* ncl x p Chebyshev nodes (assembly only) */
-    double *U;           /* n x P: L_a(x_i), the basis of cell i's leaf */
+    double *U;           /* n x P: L_a(x_i), the basis of cell i's leaf
+                            (shared by equal leaves: h2_cluster.uoff) */
     double *S;           /* n x P: row i is column i's quadrature of its leaf's
                             L_b; U itself where cw is set */
     double *cw;          /* n column weights (adh_h2_problem.cw), or NULL */
-    double *T;           /* ncl x P x P: T_c[b][b'] = L^parent_b'(node_c[b]) */
+    double *T;           /* ncl x P x P: T_c[b][b'] = L^parent_b'(node_c[b])
+                            (shared by equal clusters: h2_cluster.toff) */
+    size_t nU, nT;       /* the numbers U and T hold */
     size_t nfar;
     size_t (*far)[2];    /* cluster pairs (x before y), both directions */
     double *K;           /* nfar x P x P: k(node_x[a], node_y[b]) */
@@ -335,6 +340,120 @@ static void build_self(h2_build *b, size_t x)
     build_pair(b, c0, c1);
 }
 
+/* Each cluster's Chebyshev nodes, its transfer into its parent and its
+ * leaf's basis rows, on its own interval. */
+static int bases_fill(adh_h2 *h, const adh_h2_problem *pb, double *lp)
+{
+    size_t p = h->p, P = h->P;
+    for (size_t c = 0; c < h->ncl; c++) {
+        cheb_nodes(h->cl[c].lo, h->cl[c].hi, p, h->node + c * p);
+        h->cl[c].toff = c * P * P;
+        h->cl[c].uoff = h->cl[c].i0 * P;
+    }
+    /* The parent's polynomials are exactly those of degree < p on each
+     * child: interpolating them there is exact, so the bases nest. */
+    for (size_t c = 1; c < h->ncl; c++)
+        for (size_t k = 0; k < p; k++)
+            lagrange(h->node + h->cl[c].parent * p, p, h->node[c * p + k], h->T + (c * P + k) * P);
+    for (size_t c = 0; c < h->ncl; c++) {
+        const h2_cluster *X = &h->cl[c];
+        if (X->child[0] != 0)
+            continue;
+        const double *nd = h->node + c * p;
+        for (size_t i = X->i0; i < X->i0 + X->n; i++) {
+            lagrange(nd, p, pb->x[i], h->U + i * P);
+            for (size_t q = 0; q < pb->nq && !pb->cw; q++) {
+                lagrange(nd, p, pb->qt[i * pb->nq + q], lp);
+                for (size_t k = 0; k < p; k++)
+                    h->S[i * P + k] += pb->qw[i * pb->nq + q] * lp[k];
+            }
+        }
+    }
+    h->nU = h->n * P;
+    h->nT = h->ncl * P * P;
+    return 1;
+}
+
+/* Cells all of one width (to 1e-12) */
+static int equal_cells(const adh_h2_problem *pb)
+{
+    double w = pb->edge[1] - pb->edge[0];
+    for (size_t i = 1; i < pb->n; i++)
+        if (fabs(pb->edge[i + 1] - pb->edge[i] - w) > 1e-12 * w)
+            return 0;
+    return 1;
+}
+
+/* The len numbers at m, kept once in pool (*used so far): the offset of an
+ * equal copy among the kept ones (offsets in kept[0 .. *nkept)), else of
+ * m appended. */
+static size_t pool_keep(double *pool, size_t *used, size_t *kept, size_t *nkept, const double *m, size_t len)
+{
+    for (size_t k = 0; k < *nkept; k++)
+        if (kept[2 * k + 1] == len && memcmp(pool + kept[2 * k], m, len * sizeof *m) == 0)
+            return kept[2 * k];
+    memcpy(pool + *used, m, len * sizeof *m);
+    kept[2 * *nkept] = *used;
+    kept[2 * *nkept + 1] = len;
+    ++*nkept;
+    *used += len;
+    return *used - len;
+}
+
+/* bases_fill's matrices for a collocation (cw) on cells of one width,
+ * computed in cell units from each cluster's first edge: clusters of the
+ * same size and place in their parent get the same numbers, kept once (a
+ * uniform grid has a few), so the product reads them from the first level
+ * cache. The nodes in length, for the couplings, follow from the cell
+ * units. A point that sits at its cell's middle to 1e-12 is taken there. */
+static int bases_shared(adh_h2 *h, const adh_h2_problem *pb)
+{
+    size_t p = h->p, P = h->P, n = h->n, maxn = 0, usedT = 0, usedU = 0, nT = 0, nU = 0;
+    double w = (pb->edge[n] - pb->edge[0]) / (double)n;
+    for (size_t c = 0; c < h->ncl; c++)
+        maxn = h->cl[c].n > maxn ? h->cl[c].n : maxn;
+    double *ln = malloc((h->ncl * p + maxn * P) * sizeof *ln), *m = ln + h->ncl * p;
+    size_t *kept = malloc(4 * (h->ncl + 1) * sizeof *kept), *keptU = kept + 2 * (h->ncl + 1);
+    if (!ln || !kept) {
+        free(ln), free(kept);
+        return 0;
+    }
+    for (size_t c = 0; c < h->ncl; c++) {
+        const h2_cluster *X = &h->cl[c];
+        cheb_nodes(0, (double)X->n, p, ln + c * p);
+        for (size_t k = 0; k < p; k++)
+            h->node[c * p + k] = pb->edge[X->i0] + ln[c * p + k] * w;
+    }
+    for (size_t c = 1; c < h->ncl; c++) {
+        h2_cluster *X = &h->cl[c];
+        double off = (double)(X->i0 - h->cl[X->parent].i0);
+        memset(m, 0, P * P * sizeof *m);
+        for (size_t k = 0; k < p; k++)
+            lagrange(ln + X->parent * p, p, off + ln[c * p + k], m + k * P);
+        X->toff = pool_keep(h->T, &usedT, kept, &nT, m, P * P);
+    }
+    for (size_t c = 0; c < h->ncl; c++) {
+        h2_cluster *X = &h->cl[c];
+        if (X->child[0] != 0)
+            continue;
+        memset(m, 0, X->n * P * sizeof *m);
+        for (size_t i = 0; i < X->n; i++) {
+            double e = pb->edge[X->i0 + i], f = (pb->x[X->i0 + i] - e) / (pb->edge[X->i0 + i + 1] - e);
+            lagrange(ln + c * p, p, (double)i + (fabs(f - 0.5) < 1e-12 ? 0.5 : f), m + i * P);
+        }
+        X->uoff = pool_keep(h->U, &usedU, keptU, &nU, m, X->n * P);
+    }
+    free(ln), free(kept);
+    double *U = realloc(h->U, usedU * sizeof *U), *T = realloc(h->T, usedT * sizeof *T);
+    if (U)
+        h->U = h->S = U;
+    if (T)
+        h->T = T;
+    h->nU = usedU;
+    h->nT = usedT;
+    return 1;
+}
+
 static void h2_release(adh_h2 *h)
 {
     if (h->S != h->U)
@@ -381,27 +500,8 @@ adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s)
         goto fail;
     if (pb->cw)
         memcpy(h->cw, pb->cw, n * sizeof *h->cw);
-    for (size_t c = 0; c < ncl; c++)
-        cheb_nodes(h->cl[c].lo, h->cl[c].hi, p, h->node + c * p);
-    /* The parent's polynomials are exactly those of degree < p on each
-     * child: interpolating them there is exact, so the bases nest. */
-    for (size_t c = 1; c < ncl; c++)
-        for (size_t k = 0; k < p; k++)
-            lagrange(h->node + h->cl[c].parent * p, p, h->node[c * p + k], h->T + (c * P + k) * P);
-    for (size_t c = 0; c < ncl; c++) {
-        const h2_cluster *X = &h->cl[c];
-        if (X->child[0] != 0)
-            continue;
-        const double *nd = h->node + c * p;
-        for (size_t i = X->i0; i < X->i0 + X->n; i++) {
-            lagrange(nd, p, pb->x[i], h->U + i * P);
-            for (size_t q = 0; q < pb->nq && !pb->cw; q++) {
-                lagrange(nd, p, pb->qt[i * pb->nq + q], lp);
-                for (size_t k = 0; k < p; k++)
-                    h->S[i * P + k] += pb->qw[i * pb->nq + q] * lp[k];
-            }
-        }
-    }
+    if (!(pb->cw && equal_cells(pb) ? bases_shared(h, pb) : bases_fill(h, pb, lp)))
+        goto fail;
     build_self(&b, 0);
     if (b.fail || near_fill(h, pb) != ADH_SUCCESS)
         goto fail;
@@ -556,7 +656,7 @@ int adh_h2_apply(adh_h2 *h, const double *v, double *y)
 size_t adh_h2_bytes(const adh_h2 *h)
 {
     size_t P = h->P, ncl = h->ncl;
-    size_t numbers = h->nB + h->nfar * P * P + ncl * P * P + (h->S != h->U ? 2 : 1) * h->n * P + (h->cw ? h->n : 0) +
+    size_t numbers = h->nB + h->nfar * P * P + h->nT + h->nU + (h->S != h->U ? h->n * P : 0) + (h->cw ? h->n : 0) +
                      h->nwork;
     return numbers * sizeof(double) + ncl * sizeof *h->cl + h->nfar * sizeof *h->far + h->nnear * sizeof *h->near;
 }

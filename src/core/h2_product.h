@@ -237,11 +237,13 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
         const h2_cluster *X = &h->cl[c];
         if (X->child[0] != 0)
             continue;
-        const double *src = h->cw ? vp + X->pi0 : v + X->i0;
-        H2_NAME(axpyv)(M + c * P, src, h->S + X->i0 * P, X->n, P, P);
+        if (h->cw)
+            H2_NAME(axpyv)(M + c * P, vp + X->pi0, h->U + X->uoff, X->n, P, P);
+        else
+            H2_NAME(axpyv)(M + c * P, v + X->i0, h->S + X->i0 * P, X->n, P, P);
     }
     for (size_t c = ncl - 1; c >= 1; c--) {
-        const double *T = h->T + c * P * P, *m = M + c * P;
+        const double *T = h->T + h->cl[c].toff, *m = M + c * P;
         double *mp = M + h->cl[c].parent * P;
         H2_NAME(axpyv)(mp, m, T, p, P, P);
     }
@@ -256,7 +258,7 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
     }
     /* downward: each parent's expansion into its children */
     for (size_t c = 1; c < ncl; c++) {
-        const double *T = h->T + c * P * P, *lp = L + h->cl[c].parent * P;
+        const double *T = h->T + h->cl[c].toff, *lp = L + h->cl[c].parent * P;
         double *l = L + c * P;
         H2_NAME(vdots)(l, 1, T, lp, p, P);
     }
@@ -265,7 +267,7 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
         if (X->child[0] != 0)
             continue;
         const double *l = L + c * P;
-        H2_NAME(vdots)(y + X->i0, 0, h->U + X->i0 * P, l, X->n, P);
+        H2_NAME(vdots)(y + X->i0, 0, h->U + X->uoff, l, X->n, P);
     }
     if (!h->cw) {
         H2_NAME(near)(h, v, y);
