@@ -341,7 +341,7 @@ static void build_self(h2_build *b, size_t x)
 }
 
 /* Each cluster's Chebyshev nodes, its transfer into its parent and its
- * leaf's basis rows, on its own interval. */
+ * leaf's basis rows (and S), on its own interval: without cw. */
 static int bases_fill(adh_h2 *h, const adh_h2_problem *pb, double *lp)
 {
     size_t p = h->p, P = h->P;
@@ -362,7 +362,7 @@ static int bases_fill(adh_h2 *h, const adh_h2_problem *pb, double *lp)
         const double *nd = h->node + c * p;
         for (size_t i = X->i0; i < X->i0 + X->n; i++) {
             lagrange(nd, p, pb->x[i], h->U + i * P);
-            for (size_t q = 0; q < pb->nq && !pb->cw; q++) {
+            for (size_t q = 0; q < pb->nq; q++) {
                 lagrange(nd, p, pb->qt[i * pb->nq + q], lp);
                 for (size_t k = 0; k < p; k++)
                     h->S[i * P + k] += pb->qw[i * pb->nq + q] * lp[k];
@@ -384,53 +384,75 @@ static int equal_cells(const adh_h2_problem *pb)
     return 1;
 }
 
-/* The len numbers at m, kept once in pool (*used so far): the offset of an
- * equal copy among the kept ones (offsets in kept[0 .. *nkept)), else of
- * m appended. */
-static size_t pool_keep(double *pool, size_t *used, size_t *kept, size_t *nkept, const double *m, size_t len)
+/* With cw the transfers and bases are kept with their transposes (the
+ * product runs both ways as sums of rows: h2_product.h) in pools: the
+ * offset of the len numbers at m appended to pool (*used so far), or with
+ * share of an equal copy among those kept (kept[0 .. *nkept): offset,
+ * length). */
+typedef struct h2_pool {
+    double *a;
+    size_t used, *kept, nkept;
+    int share;
+} h2_pool;
+
+static size_t pool_keep(h2_pool *pl, const double *m, size_t len)
 {
-    for (size_t k = 0; k < *nkept; k++)
-        if (kept[2 * k + 1] == len && memcmp(pool + kept[2 * k], m, len * sizeof *m) == 0)
-            return kept[2 * k];
-    memcpy(pool + *used, m, len * sizeof *m);
-    kept[2 * *nkept] = *used;
-    kept[2 * *nkept + 1] = len;
-    ++*nkept;
-    *used += len;
-    return *used - len;
+    for (size_t k = 0; k < pl->nkept && pl->share; k++)
+        if (pl->kept[2 * k + 1] == len && memcmp(pl->a + pl->kept[2 * k], m, len * sizeof *m) == 0)
+            return pl->kept[2 * k];
+    memcpy(pl->a + pl->used, m, len * sizeof *m);
+    pl->kept[2 * pl->nkept] = pl->used;
+    pl->kept[2 * pl->nkept + 1] = len;
+    pl->nkept++;
+    pl->used += len;
+    return pl->used - len;
 }
 
-/* bases_fill's matrices for a collocation (cw) on cells of one width,
- * computed in cell units from each cluster's first edge: clusters of the
- * same size and place in their parent get the same numbers, kept once (a
- * uniform grid has a few), so the product reads them from the first level
- * cache. The nodes in length, for the couplings, follow from the cell
- * units. A point that sits at its cell's middle to 1e-12 is taken there. */
-static int bases_shared(adh_h2 *h, const adh_h2_problem *pb)
+/* m[P r .. P r + P) for r < rows, then its transpose after it: P rows of
+ * ld (a multiple of 4, zeros past rows). */
+static void transpose_after(double *m, size_t rows, size_t P, size_t ld)
 {
-    size_t p = h->p, P = h->P, n = h->n, maxn = 0, usedT = 0, usedU = 0, nT = 0, nU = 0;
+    double *t = m + rows * P;
+    memset(t, 0, P * ld * sizeof *t);
+    for (size_t r = 0; r < rows; r++)
+        for (size_t k = 0; k < P; k++)
+            t[k * ld + r] = m[r * P + k];
+}
+
+/* The bases with cw: nodes in cell units from each cluster's first edge
+ * where the cells are all of one width (share), else in length. Shared,
+ * clusters of the same size and place in their parent get the same
+ * numbers, kept once (a uniform grid has a few), so the product reads them
+ * from the first level cache; a point at its cell's middle to 1e-12 is
+ * taken there. The nodes in length, for the couplings, follow. */
+static int bases_cw(adh_h2 *h, const adh_h2_problem *pb, int share)
+{
+    size_t p = h->p, P = h->P, n = h->n, maxn = 0;
     double w = (pb->edge[n] - pb->edge[0]) / (double)n;
     for (size_t c = 0; c < h->ncl; c++)
         maxn = h->cl[c].n > maxn ? h->cl[c].n : maxn;
-    double *ln = malloc((h->ncl * p + maxn * P) * sizeof *ln), *m = ln + h->ncl * p;
-    size_t *kept = malloc(4 * (h->ncl + 1) * sizeof *kept), *keptU = kept + 2 * (h->ncl + 1);
+    size_t mlen = (maxn + 3) / 4 * 4 * 2 * P + 2 * P * P;
+    double *ln = malloc((h->ncl * p + mlen) * sizeof *ln), *m = ln + h->ncl * p;
+    size_t *kept = malloc(4 * (h->ncl + 1) * sizeof *kept);
+    h2_pool pT = { h->T, 0, kept, 0, share }, pU = { h->U, 0, kept + 2 * (h->ncl + 1), 0, share };
     if (!ln || !kept) {
         free(ln), free(kept);
         return 0;
     }
     for (size_t c = 0; c < h->ncl; c++) {
         const h2_cluster *X = &h->cl[c];
-        cheb_nodes(0, (double)X->n, p, ln + c * p);
+        cheb_nodes(share ? 0 : X->lo, share ? (double)X->n : X->hi, p, ln + c * p);
         for (size_t k = 0; k < p; k++)
-            h->node[c * p + k] = pb->edge[X->i0] + ln[c * p + k] * w;
+            h->node[c * p + k] = share ? pb->edge[X->i0] + ln[c * p + k] * w : ln[c * p + k];
     }
     for (size_t c = 1; c < h->ncl; c++) {
         h2_cluster *X = &h->cl[c];
-        double off = (double)(X->i0 - h->cl[X->parent].i0);
+        double off = share ? (double)(X->i0 - h->cl[X->parent].i0) : 0;
         memset(m, 0, P * P * sizeof *m);
         for (size_t k = 0; k < p; k++)
             lagrange(ln + X->parent * p, p, off + ln[c * p + k], m + k * P);
-        X->toff = pool_keep(h->T, &usedT, kept, &nT, m, P * P);
+        transpose_after(m, P, P, P);
+        X->toff = pool_keep(&pT, m, 2 * P * P);
     }
     for (size_t c = 0; c < h->ncl; c++) {
         h2_cluster *X = &h->cl[c];
@@ -439,18 +461,20 @@ static int bases_shared(adh_h2 *h, const adh_h2_problem *pb)
         memset(m, 0, X->n * P * sizeof *m);
         for (size_t i = 0; i < X->n; i++) {
             double e = pb->edge[X->i0 + i], f = (pb->x[X->i0 + i] - e) / (pb->edge[X->i0 + i + 1] - e);
-            lagrange(ln + c * p, p, (double)i + (fabs(f - 0.5) < 1e-12 ? 0.5 : f), m + i * P);
+            double t = share ? (double)i + (fabs(f - 0.5) < 1e-12 ? 0.5 : f) : pb->x[X->i0 + i];
+            lagrange(ln + c * p, p, t, m + i * P);
         }
-        X->uoff = pool_keep(h->U, &usedU, keptU, &nU, m, X->n * P);
+        transpose_after(m, X->n, P, (X->n + 3) / 4 * 4);
+        X->uoff = pool_keep(&pU, m, X->n * P + P * ((X->n + 3) / 4 * 4));
     }
     free(ln), free(kept);
-    double *U = realloc(h->U, usedU * sizeof *U), *T = realloc(h->T, usedT * sizeof *T);
+    double *U = realloc(h->U, pU.used * sizeof *U), *T = realloc(h->T, pT.used * sizeof *T);
     if (U)
         h->U = h->S = U;
     if (T)
         h->T = T;
-    h->nU = usedU;
-    h->nT = usedT;
+    h->nU = pU.used;
+    h->nT = pT.used;
     return 1;
 }
 
@@ -492,15 +516,16 @@ adh_h2 *adh_h2_alloc(const adh_h2_problem *pb, const adh_h2_settings *s)
         h->cl = cl;
     size_t ncl = h->ncl;
     h->node = malloc(ncl * p * sizeof *h->node);
-    h->T = calloc(ncl * P * P, sizeof *h->T);
-    h->U = calloc(n * P, sizeof *h->U);
+    /* with cw the transposes too, each leaf's padded to whole vectors */
+    h->T = calloc((pb->cw ? 2 : 1) * ncl * P * P, sizeof *h->T);
+    h->U = calloc(pb->cw ? 2 * n * P + 3 * ncl * P : n * P, sizeof *h->U);
     h->S = pb->cw ? h->U : calloc(n * P, sizeof *h->S);
     h->cw = pb->cw ? malloc(n * sizeof *h->cw) : NULL;
     if (!h->node || !h->T || !h->U || !h->S || (pb->cw && !h->cw))
         goto fail;
     if (pb->cw)
         memcpy(h->cw, pb->cw, n * sizeof *h->cw);
-    if (!(pb->cw && equal_cells(pb) ? bases_shared(h, pb) : bases_fill(h, pb, lp)))
+    if (!(pb->cw ? bases_cw(h, pb, equal_cells(pb)) : bases_fill(h, pb, lp)))
         goto fail;
     build_self(&b, 0);
     if (b.fail || near_fill(h, pb) != ADH_SUCCESS)

@@ -260,23 +260,32 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
     for (size_t c = 1; c < ncl; c++) {
         const double *T = h->T + h->cl[c].toff, *lp = L + h->cl[c].parent * P;
         double *l = L + c * P;
-        H2_NAME(vdots)(l, 1, T, lp, p, P);
-    }
-    for (size_t c = 0; c < ncl; c++) {
-        const h2_cluster *X = &h->cl[c];
-        if (X->child[0] != 0)
-            continue;
-        const double *l = L + c * P;
-        H2_NAME(vdots)(y + X->i0, 0, h->U + X->uoff, l, X->n, P);
+        if (h->cw) /* the transpose's rows */
+            H2_NAME(axpyv)(l, lp, T + P * P, p, P, P);
+        else
+            H2_NAME(vdots)(l, 1, T, lp, p, P);
     }
     if (!h->cw) {
+        for (size_t c = 0; c < ncl; c++) {
+            const h2_cluster *X = &h->cl[c];
+            if (X->child[0] == 0)
+                H2_NAME(vdots)(y + X->i0, 0, h->U + X->uoff, L + c * P, X->n, P);
+        }
         H2_NAME(near)(h, v, y);
         return;
+    }
+    /* with cw, into yt: the leaves' expansions as sums of the bases'
+     * transposed rows, then the near field */
+    for (size_t c = 0; c < ncl; c++) {
+        const h2_cluster *X = &h->cl[c];
+        size_t np = (X->n + 3) / 4 * 4;
+        if (X->child[0] == 0)
+            H2_NAME(axpyv)(yt + X->pi0, L + c * P, h->U + X->uoff + X->n * P, p, np, np);
     }
     H2_NAME(near_sym)(h, vp, yt);
     for (size_t c = 0; c < ncl; c++) {
         const h2_cluster *X = &h->cl[c];
         for (size_t i = 0; i < X->n && X->child[0] == 0; i++)
-            y[X->i0 + i] += yt[X->pi0 + i];
+            y[X->i0 + i] = yt[X->pi0 + i];
     }
 }
