@@ -255,23 +255,49 @@ static void momentum_reset(adh_relax *w)
  * spectral radius from above for any positive x, and the bound tightens as
  * x approaches the Perron vector. The linearised update's eigenvalues lie
  * within 1 +- that radius, so the bound gives the largest safe ratio. */
+ADH_SIMD_CLONES static void stiffness_weights(double *x, const double *h, const double *perron, size_t n, double A,
+                                              double z0)
+{
+#pragma omp simd
+    for (size_t i = 0; i < n; i++)
+        x[i] = fabs(adh_lj_dpressure(h[i], A, z0)) * perron[i];
+}
+
+/* y = scale sx, and the largest y / perron and y (as fmax would find them:
+ * a NaN is passed over), in vectors */
+ADH_SIMD_CLONES static void stiffness_bound(double *y, const double *sx, const double *perron, size_t n, double scale,
+                                            double *bound, double *top)
+{
+    double b = 0, t = 0;
+#pragma omp simd reduction(max : b, t)
+    for (size_t i = 0; i < n; i++) {
+        double v = scale * sx[i], q = v / perron[i];
+        b = q > b ? q : b;
+        t = v > t ? v : t;
+        y[i] = v;
+    }
+    *bound = b;
+    *top = t;
+}
+
+ADH_SIMD_CLONES static void perron_set(double *perron, const double *y, size_t n, double top)
+{
+#pragma omp simd
+    for (size_t i = 0; i < n; i++) {
+        double q = y[i] / top;
+        perron[i] = q > 1e-300 ? q : 1e-300; /* fmax's, a NaN too */
+    }
+}
+
 static void estimate_stiffness(adh_relax *w)
 {
     size_t n = w->g->n;
-    for (size_t i = 0; i < n; i++)
-        w->work[i] = fabs(adh_lj_dpressure(w->st->h[i], w->m.A, w->m.z0)) * w->perron[i];
-    double *sx = w->work + n;
+    stiffness_weights(w->work, w->st->h, w->perron, n, w->m.A, w->m.z0);
+    double *sx = w->work + n, bound, top;
     adh_kernel_apply(w->k, w->work, sx, w->scratch);
-    double scale = 2.0 / w->m.E, bound = 0, top = 0;
-    for (size_t i = 0; i < n; i++) {
-        double y = scale * sx[i];
-        bound = fmax(bound, y / w->perron[i]);
-        top = fmax(top, y);
-        w->work[i] = y;
-    }
+    stiffness_bound(w->work, sx, w->perron, n, 2.0 / w->m.E, &bound, &top);
     if (top > 0 && isfinite(top))
-        for (size_t i = 0; i < n; i++)
-            w->perron[i] = fmax(w->work[i] / top, 1e-300);
+        perron_set(w->perron, w->work, n, top);
     w->stiffness = bound;
     w->since_estimate = 0;
 }
