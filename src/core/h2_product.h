@@ -6,19 +6,21 @@
  * numbers. Every per-cluster row is P long (a multiple of 4), zero past p,
  * so its loops are whole vectors. Private to h2.c. */
 
-/* x[0 .. m) += sum over r of a[r] row_r[0 .. m), row r at rows + r
- * stride, m a multiple of 4, added row by row in every lane. Lanes are
+/* x[0 .. m) += sum over r of a[r] row_r[0 .. m) (= where set: from zero),
+ * row r at rows + r stride, m a multiple of 4, added row by row in every
+ * lane. Lanes are
  * held in registers across the rows (a store and reload per row would
  * chain them): 32 at a time, then 12, then 4, so that enough chains of
  * additions run side by side (two left the adder waiting on their
  * latency). Each lane's sum is the same whichever way it is grouped. */
-H2_TARGET H2_INLINE void H2_NAME(axpyv)(double *x, const double *a, const double *rows, size_t nr, size_t m,
-                                            size_t stride)
+H2_TARGET H2_INLINE void H2_NAME(axpyv)(double *x, int set, const double *a, const double *rows, size_t nr,
+                                        size_t m, size_t stride)
 {
+#define H2_START(k) (set ? V_ZERO : V_LOAD(x + (k)))
     size_t k = 0;
     for (; k + 32 <= m; k += 32) {
-        V s0 = V_LOAD(x + k), s1 = V_LOAD(x + k + 4), s2 = V_LOAD(x + k + 8), s3 = V_LOAD(x + k + 12);
-        V s4 = V_LOAD(x + k + 16), s5 = V_LOAD(x + k + 20), s6 = V_LOAD(x + k + 24), s7 = V_LOAD(x + k + 28);
+        V s0 = H2_START(k), s1 = H2_START(k + 4), s2 = H2_START(k + 8), s3 = H2_START(k + 12);
+        V s4 = H2_START(k + 16), s5 = H2_START(k + 20), s6 = H2_START(k + 24), s7 = H2_START(k + 28);
         for (size_t r = 0; r < nr; r++) {
             const double *row = rows + r * stride + k;
             s0 = V_ADD(s0, V_SCALE(a[r], V_LOAD(row)));
@@ -34,7 +36,7 @@ H2_TARGET H2_INLINE void H2_NAME(axpyv)(double *x, const double *a, const double
         V_STORE(x + k + 16, s4), V_STORE(x + k + 20, s5), V_STORE(x + k + 24, s6), V_STORE(x + k + 28, s7);
     }
     for (; k + 12 <= m; k += 12) {
-        V s0 = V_LOAD(x + k), s1 = V_LOAD(x + k + 4), s2 = V_LOAD(x + k + 8);
+        V s0 = H2_START(k), s1 = H2_START(k + 4), s2 = H2_START(k + 8);
         for (size_t r = 0; r < nr; r++) {
             const double *row = rows + r * stride + k;
             s0 = V_ADD(s0, V_SCALE(a[r], V_LOAD(row)));
@@ -44,11 +46,12 @@ H2_TARGET H2_INLINE void H2_NAME(axpyv)(double *x, const double *a, const double
         V_STORE(x + k, s0), V_STORE(x + k + 4, s1), V_STORE(x + k + 8, s2);
     }
     for (; k < m; k += 4) {
-        V s0 = V_LOAD(x + k);
+        V s0 = H2_START(k);
         for (size_t r = 0; r < nr; r++)
             s0 = V_ADD(s0, V_SCALE(a[r], V_LOAD(rows + r * stride + k)));
         V_STORE(x + k, s0);
     }
+#undef H2_START
 }
 
 H2_TARGET H2_INLINE double H2_NAME(vdot)(const double *a, const double *b, size_t P)
@@ -215,7 +218,7 @@ H2_TARGET static void H2_NAME(near_sym)(const adh_h2 *h, const double *v, double
             V_STORE(t, V_ADD(V_LOAD(t), H2_NAME(dot4v)(B + i * nb->ld, nb->ld, vy, nb->ld)));
         }
         if (nb->own < nb->ld)
-            H2_NAME(axpyv)(yt + nb->pj0 + nb->own, v + nb->pi0, B + nb->own, nb->ni, nb->ld - nb->own, nb->ld);
+            H2_NAME(axpyv)(yt + nb->pj0 + nb->own, 0, v + nb->pi0, B + nb->own, nb->ni, nb->ld - nb->own, nb->ld);
     }
 }
 
@@ -223,13 +226,17 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
 {
     size_t P = h->P, p = h->p, ncl = h->ncl;
     double *M = work, *L = work + ncl * P, *vp = L + ncl * P, *yt = vp + h->npad;
-    memset(work, 0, h->nwork * sizeof *work);
-    /* with column weights, the weighted sources in the padded order: the
-     * matrix left is symmetric */
+    memset(work, 0, 2 * ncl * P * sizeof *work);
+    /* with column weights, the weighted sources in the padded order (the
+     * matrix left is symmetric), zeros in the pads; yt is set by the
+     * leaves' expansions (below) */
     for (size_t c = 0; c < ncl && h->cw; c++) {
         const h2_cluster *X = &h->cl[c];
-        for (size_t i = 0; i < X->n && X->child[0] == 0; i++)
+        size_t i = 0;
+        for (; i < X->n && X->child[0] == 0; i++)
             vp[X->pi0 + i] = h->cw[X->i0 + i] * v[X->i0 + i];
+        for (; i % 4 && X->child[0] == 0; i++)
+            vp[X->pi0 + i] = 0;
     }
     /* upward: the leaves' moments, then each child's into its parent
      * (reverse pre-order: a cluster is complete before it is passed on) */
@@ -238,14 +245,14 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
         if (X->child[0] != 0)
             continue;
         if (h->cw)
-            H2_NAME(axpyv)(M + c * P, vp + X->pi0, h->U + X->uoff, X->n, P, P);
+            H2_NAME(axpyv)(M + c * P, 0, vp + X->pi0, h->U + X->uoff, X->n, P, P);
         else
-            H2_NAME(axpyv)(M + c * P, v + X->i0, h->S + X->i0 * P, X->n, P, P);
+            H2_NAME(axpyv)(M + c * P, 0, v + X->i0, h->S + X->i0 * P, X->n, P, P);
     }
     for (size_t c = ncl - 1; c >= 1; c--) {
         const double *T = h->T + h->cl[c].toff, *m = M + c * P;
         double *mp = M + h->cl[c].parent * P;
-        H2_NAME(axpyv)(mp, m, T, p, P, P);
+        H2_NAME(axpyv)(mp, 0, m, T, p, P, P);
     }
     /* the far couplings, both ways in one pass (the kernel is symmetric) */
     for (size_t f = 0; f < h->nfar; f++) {
@@ -254,14 +261,14 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
         const double *mx = M + x * P, *my = M + yc * P;
         double *lx = L + x * P, *ly = L + yc * P;
         H2_NAME(vdots)(lx, 1, K, my, p, P);
-        H2_NAME(axpyv)(ly, mx, K, p, P, P);
+        H2_NAME(axpyv)(ly, 0, mx, K, p, P, P);
     }
     /* downward: each parent's expansion into its children */
     for (size_t c = 1; c < ncl; c++) {
         const double *T = h->T + h->cl[c].toff, *lp = L + h->cl[c].parent * P;
         double *l = L + c * P;
         if (h->cw) /* the transpose's rows */
-            H2_NAME(axpyv)(l, lp, T + P * P, p, P, P);
+            H2_NAME(axpyv)(l, 0, lp, T + P * P, p, P, P);
         else
             H2_NAME(vdots)(l, 1, T, lp, p, P);
     }
@@ -280,7 +287,7 @@ H2_TARGET static void H2_NAME(product)(const adh_h2 *h, const double *v, double 
         const h2_cluster *X = &h->cl[c];
         size_t np = (X->n + 3) / 4 * 4;
         if (X->child[0] == 0)
-            H2_NAME(axpyv)(yt + X->pi0, L + c * P, h->U + X->uoff + X->n * P, p, np, np);
+            H2_NAME(axpyv)(yt + X->pi0, 1, L + c * P, h->U + X->uoff + X->n * P, p, np, np);
     }
     H2_NAME(near_sym)(h, vp, yt);
     for (size_t c = 0; c < ncl; c++) {
