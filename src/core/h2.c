@@ -254,7 +254,7 @@ static void near_pad(adh_h2 *h, size_t *pad)
 /* The near blocks' exact entries (and with cw their padded places). */
 static int near_fill(adh_h2 *h, const adh_h2_problem *pb)
 {
-    if (h->nnear == 0)
+    if (h->nnear == 0) /* never: every leaf is near itself */
         return ADH_SUCCESS;
     near_merge(h);
     size_t *pad = malloc(h->n * sizeof *pad);
