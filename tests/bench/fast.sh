@@ -35,6 +35,9 @@ failed=0
 # (user + system, threads summed) to $tmp/NAME.cpu
 cpu() {
     name=$1; shift
+    # a fresh directory each round: a sweep's study resumes from a finished
+    # one in place (no work, no time)
+    rm -rf "${tmp:?}/$name"
     # shellcheck disable=SC2086 # $short is words
     if ! /usr/bin/time -f '%U %S' -o "$tmp/$name.t" "$ADHERE" -b --no-plot -q --overwrite -o "$tmp/$name" "$@" $short \
         >"$tmp/$name.err" 2>&1; then
@@ -78,7 +81,7 @@ for f in $figures; do
     printed "$tmp/fig$f-default" >"$tmp/b"
     [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b" || { same=DIFFERENT; failed=1; }
     op=$(awk -F'\t' '$1 == "operator" {print $2}' "$tmp/fig$f-default/summary.tsv" "$tmp/fig$f-default"/run-1/summary.tsv 2>/dev/null | head -1)
-    printf 'ratio: Figure %s%s, dense / default (%s): %.2f (%.1f / %.1f CPU s, median of %d), printed numbers %s; %s\n' \
+    printf 'ratio: Figure %s%s, dense / default (%s): %.2f (%.2f / %.2f CPU s, median of %d), printed numbers %s; %s\n' \
         "$f" "${extra:+ ($extra)}" "$op" "$(echo "$d $n" | awk '{print $1 / $2}')" "$d" "$n" "$rounds" "$same" "$machine"
 done
 
