@@ -566,7 +566,7 @@ void adh_h2_free(adh_h2 *h)
 /* The product, in 4-lane vectors of doubles (GCC's vector extension),
  * built twice: as pairs of SSE2 halves for any x86-64, and whole for AVX2,
  * chosen by the CPU at assembly (h->avx2). Elsewhere, the portable copy
- * alone. */
+ * alone. V_HSUM4 is four V_HSUMs in one vector, each its own additions. */
 typedef double h2_v2 __attribute__((vector_size(2 * sizeof(double)), aligned(sizeof(double)), may_alias));
 typedef double h2_v4 __attribute__((vector_size(4 * sizeof(double)), aligned(sizeof(double)), may_alias));
 typedef struct h2_pair {

@@ -1,18 +1,20 @@
 /* The H^2 product, written once over a 4-lane vector V and included by
  * h2.c once per instruction set (see there): H2_NAME(x) names this copy's
- * functions, H2_TARGET is its target attribute, and V_LOAD, V_STORE,
- * V_ZERO, V_ADD, V_MUL, V_SCALE and V_HSUM its operations. Every copy does
- * the same additions in the same order, lane by lane, so all give the same
- * numbers. Every per-cluster row is P long (a multiple of 4), zero past p,
- * so its loops are whole vectors. Private to h2.c. */
+ * functions, H2_TARGET is its target attribute, H2_INLINE how its helpers
+ * are inlined, and V_LOAD, V_STORE, V_ZERO, V_ADD, V_MUL, V_SCALE, V_HSUM
+ * and V_HSUM4 its operations. Every copy does the same additions in the
+ * same order, lane by lane, so all give the same numbers. Every
+ * per-cluster row is P long (a multiple of 4), zero past p, so its loops
+ * are whole vectors; with column weights (h->cw) the cells and the near
+ * blocks are padded so too. Private to h2.c. */
 
 /* x[0 .. m) += sum over r of a[r] row_r[0 .. m) (= where set: from zero),
  * row r at rows + r stride, m a multiple of 4, added row by row in every
- * lane. Lanes are
- * held in registers across the rows (a store and reload per row would
- * chain them): 32 at a time, then 12, then 4, so that enough chains of
- * additions run side by side (two left the adder waiting on their
- * latency). Each lane's sum is the same whichever way it is grouped. */
+ * lane. Lanes are held in registers across the rows (a store and reload
+ * per row would chain them): 32 at a time, then 12, then 4, so that
+ * enough chains of additions run side by side (two left the adder waiting
+ * on their latency). Each lane's sum is the same however they are
+ * grouped. */
 H2_TARGET H2_INLINE void H2_NAME(axpyv)(double *x, int set, const double *a, const double *rows, size_t nr,
                                         size_t m, size_t stride)
 {
