@@ -80,7 +80,9 @@ for f in $figures; do
     printed "$tmp/fig$f-dense" >"$tmp/a"
     printed "$tmp/fig$f-default" >"$tmp/b"
     [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b" || { same=DIFFERENT; failed=1; }
-    op=$(awk -F'\t' '$1 == "operator" {print $2}' "$tmp/fig$f-default/summary.tsv" "$tmp/fig$f-default"/run-1/summary.tsv 2>/dev/null | head -1)
+    # a sweep's runs keep theirs in run-K/ (awk stops at a missing file)
+    op=$(cat "$tmp/fig$f-default/summary.tsv" "$tmp/fig$f-default"/run-1/summary.tsv 2>/dev/null |
+        awk -F'\t' '$1 == "operator" {print $2}' | head -1)
     printf 'ratio: Figure %s%s, dense / default (%s): %.2f (%.2f / %.2f CPU s, median of %d), printed numbers %s; %s\n' \
         "$f" "${extra:+ ($extra)}" "$op" "$(echo "$d $n" | awk '{print $1 / $2}')" "$d" "$n" "$rounds" "$same" "$machine"
 done
