@@ -626,14 +626,19 @@ static inline h2_pair pair_scale(double s, h2_pair a)
 
 #if H2_AVX2
 typedef long long h2_i4 __attribute__((vector_size(4 * sizeof(long long))));
+#if defined(__clang__)
+#define H2_SHUFFLE(a, b, i, j, k, l) __builtin_shufflevector(a, b, i, j, k, l)
+#else
+#define H2_SHUFFLE(a, b, i, j, k, l) __builtin_shuffle(a, b, (h2_i4){ i, j, k, l })
+#endif
 
 /* V_HSUM of a, b, c and d, one vector, by two transpositions: lane k adds
  * (s0 + s1) + (s2 + s3) of the k-th, as V_HSUM does */
 __attribute__((target("avx2"))) static inline h2_v4 hsum4_avx2(h2_v4 a, h2_v4 b, h2_v4 c, h2_v4 d)
 {
-    h2_v4 ab = __builtin_shuffle(a, b, (h2_i4){ 0, 4, 2, 6 }) + __builtin_shuffle(a, b, (h2_i4){ 1, 5, 3, 7 });
-    h2_v4 cd = __builtin_shuffle(c, d, (h2_i4){ 0, 4, 2, 6 }) + __builtin_shuffle(c, d, (h2_i4){ 1, 5, 3, 7 });
-    return __builtin_shuffle(ab, cd, (h2_i4){ 0, 1, 4, 5 }) + __builtin_shuffle(ab, cd, (h2_i4){ 2, 3, 6, 7 });
+    h2_v4 ab = H2_SHUFFLE(a, b, 0, 4, 2, 6) + H2_SHUFFLE(a, b, 1, 5, 3, 7);
+    h2_v4 cd = H2_SHUFFLE(c, d, 0, 4, 2, 6) + H2_SHUFFLE(c, d, 1, 5, 3, 7);
+    return H2_SHUFFLE(ab, cd, 0, 1, 4, 5) + H2_SHUFFLE(ab, cd, 2, 3, 6, 7);
 }
 
 #define H2_NAME(x) x##_avx2
