@@ -33,6 +33,11 @@ typedef struct adh_h2_problem {
     adh_h2_kernel_fn kernel;
     adh_h2_block_fn block;
     void *ctx;
+    /* NULL, or the matrix is H diag(cw) with H symmetric (a collocation:
+     * column j's source is the point x[j] of weight cw[j]); block then gives
+     * H's entries, which are held once for both directions, and nq, qt, qw
+     * are not read. Half the near field's bytes. */
+    const double *cw;
 } adh_h2_problem;
 
 typedef struct adh_h2_settings {

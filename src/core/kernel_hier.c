@@ -78,11 +78,6 @@ static void h2_block(void *ctx, size_t i0, size_t ni, size_t j0, size_t nj, doub
 {
     const adh_kernel *k = ctx;
     for (size_t i = 0; i < ni; i++) {
-        if (k->type == ADH_KERNEL_PAPER) {
-            for (size_t j = 0; j < nj; j++)
-                out[i * nj + j] = adh_kernel_formula(k, i0 + i, j0 + j);
-            continue;
-        }
         double r = k->r[i0 + i], prev = adh_disk_integral(r, adh_rings_edge(k->g, j0));
         for (size_t j = 0; j < nj; j++) {
             double next = adh_disk_integral(r, adh_rings_edge(k->g, j0 + j + 1));
@@ -97,38 +92,53 @@ static double h2_kernel(void *ctx, double r, double t)
     return adh_kernel_k(r, t);
 }
 
+/* The paper's kernel is held as the dense matrix holds it: the symmetric
+ * dr k(r_n, r_j) (the paper's diagonal on it), r_j applied in the product
+ * (adh_h2_problem.cw), so that its near field is held once for both
+ * directions. */
+static void h2_paper_block(void *ctx, size_t i0, size_t ni, size_t j0, size_t nj, double *out)
+{
+    const adh_kernel *k = ctx;
+    for (size_t i = 0; i < ni; i++)
+        for (size_t j = 0; j < nj; j++)
+            out[i * nj + j] = i0 + i == j0 + j ? adh_kernel_paper_diagonal(k->r[i0 + i], k->dr)
+                                               : k->dr * adh_kernel_k(k->r[i0 + i], k->r[j0 + j]);
+}
+
+static double h2_paper_kernel(void *ctx, double r, double t)
+{
+    const adh_kernel *k = ctx;
+    return k->dr * adh_kernel_k(r, t);
+}
+
 /* The H^2 operator: the far field of column j is the kernel against
  * column j's measure, t dt over ring j (Gauss-Legendre, exact for the
- * interpolating polynomials) or, for the paper's collocation, the point
- * r_j of weight dr r_j. */
+ * interpolating polynomials), or for the paper's collocation the point r_j
+ * of weight r_j (dr in the kernel: h2_paper_kernel). */
 int adh_kernel_h2_build(adh_kernel *k)
 {
     const adh_grid *g = k->g;
     size_t n = g->n;
     adh_h2_settings hs = adh_h2_settings_default();
-    size_t nq = k->type == ADH_KERNEL_PAPER ? 1 : (size_t)hs.order / 2 + 1;
-    double *edge = malloc((n + 1) * sizeof *edge), *qt = malloc(2 * n * nq * sizeof *qt), *qw = qt + n * nq;
-    gsl_integration_glfixed_table *gl = nq > 1 ? gsl_integration_glfixed_table_alloc(nq) : NULL;
+    int paper = k->type == ADH_KERNEL_PAPER;
+    size_t nq = paper ? 0 : (size_t)hs.order / 2 + 1;
+    double *edge = malloc((n + 1) * sizeof *edge), *qt = malloc((2 * n * nq + 1) * sizeof *qt), *qw = qt + n * nq;
+    gsl_integration_glfixed_table *gl = paper ? NULL : gsl_integration_glfixed_table_alloc(nq);
     adh_h2 *h = NULL;
-    if (!edge || !qt || (nq > 1 && !gl))
+    if (!edge || !qt || (!paper && !gl))
         goto done;
     for (size_t j = 0; j <= n; j++)
         edge[j] = adh_rings_edge(g, j);
-    for (size_t j = 0; j < n; j++) {
-        if (nq == 1) {
-            qt[j] = g->r[j];
-            qw[j] = k->dr * g->r[j];
-            continue;
-        }
+    for (size_t j = 0; j < n; j++)
         for (size_t q = 0; q < nq; q++) {
             double t, w;
             gsl_integration_glfixed_point(edge[j], edge[j + 1], q, &t, &w, gl);
             qt[j * nq + q] = t;
             qw[j * nq + q] = w * t;
         }
-    }
     adh_h2_problem pb = { .n = n, .edge = edge, .x = g->r, .nq = nq, .qt = qt, .qw = qw,
-                          .kernel = h2_kernel, .block = h2_block, .ctx = k };
+                          .kernel = paper ? h2_paper_kernel : h2_kernel, .block = paper ? h2_paper_block : h2_block,
+                          .ctx = k, .cw = paper ? g->r : NULL };
     h = adh_h2_alloc(&pb, &hs);
 done:
     if (gl)

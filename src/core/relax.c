@@ -255,23 +255,49 @@ static void momentum_reset(adh_relax *w)
  * spectral radius from above for any positive x, and the bound tightens as
  * x approaches the Perron vector. The linearised update's eigenvalues lie
  * within 1 +- that radius, so the bound gives the largest safe ratio. */
+ADH_SIMD_CLONES static void stiffness_weights(double *x, const double *h, const double *perron, size_t n, double A,
+                                              double z0)
+{
+#pragma omp simd
+    for (size_t i = 0; i < n; i++)
+        x[i] = fabs(adh_lj_dpressure(h[i], A, z0)) * perron[i];
+}
+
+/* y = scale sx, and the largest y / perron and y (as fmax would find them:
+ * a NaN is passed over), in vectors */
+ADH_SIMD_CLONES static void stiffness_bound(double *y, const double *sx, const double *perron, size_t n, double scale,
+                                            double *bound, double *top)
+{
+    double b = 0, t = 0;
+#pragma omp simd reduction(max : b, t)
+    for (size_t i = 0; i < n; i++) {
+        double v = scale * sx[i], q = v / perron[i];
+        b = q > b ? q : b;
+        t = v > t ? v : t;
+        y[i] = v;
+    }
+    *bound = b;
+    *top = t;
+}
+
+ADH_SIMD_CLONES static void perron_set(double *perron, const double *y, size_t n, double top)
+{
+#pragma omp simd
+    for (size_t i = 0; i < n; i++) {
+        double q = y[i] / top;
+        perron[i] = q > 1e-300 ? q : 1e-300; /* fmax's, a NaN too */
+    }
+}
+
 static void estimate_stiffness(adh_relax *w)
 {
     size_t n = w->g->n;
-    for (size_t i = 0; i < n; i++)
-        w->work[i] = fabs(adh_lj_dpressure(w->st->h[i], w->m.A, w->m.z0)) * w->perron[i];
-    double *sx = w->work + n;
+    stiffness_weights(w->work, w->st->h, w->perron, n, w->m.A, w->m.z0);
+    double *sx = w->work + n, bound, top;
     adh_kernel_apply(w->k, w->work, sx, w->scratch);
-    double scale = 2.0 / w->m.E, bound = 0, top = 0;
-    for (size_t i = 0; i < n; i++) {
-        double y = scale * sx[i];
-        bound = fmax(bound, y / w->perron[i]);
-        top = fmax(top, y);
-        w->work[i] = y;
-    }
+    stiffness_bound(w->work, sx, w->perron, n, 2.0 / w->m.E, &bound, &top);
     if (top > 0 && isfinite(top))
-        for (size_t i = 0; i < n; i++)
-            w->perron[i] = fmax(w->work[i] / top, 1e-300);
+        perron_set(w->perron, w->work, n, top);
     w->stiffness = bound;
     w->since_estimate = 0;
 }
@@ -463,6 +489,34 @@ ADH_SIMD_CLONES static double far_change(adh_relax *w, double scale)
     return sum;
 }
 
+typedef double relax_v4 __attribute__((vector_size(4 * sizeof(double)), aligned(sizeof(double)), may_alias));
+
+/* unew = scale unew - u (eq 11's deformation, now the unmixed change du),
+ * and the sums of du^2 and wt du^2, each in four interleaved parts (lane l
+ * adds the nodes l, l + 4, ...; one chain of additions would bound this
+ * pass by its latency) added as (0 + 1) + (2 + 3): in vectors, four lanes
+ * at a time, the same additions in the same order as one at a time. */
+ADH_SIMD_CLONES static void change_sums(double *unew, const double *u, const double *wt, size_t n, double scale,
+                                        double *ssq, double *wssq)
+{
+    relax_v4 s = { 0, 0, 0, 0 }, ws = { 0, 0, 0, 0 };
+    size_t k = 0;
+    for (; k + 4 <= n; k += 4) {
+        relax_v4 du = scale * *(const relax_v4 *)(unew + k) - *(const relax_v4 *)(u + k);
+        *(relax_v4 *)(unew + k) = du;
+        s += du * du;
+        ws += *(const relax_v4 *)(wt + k) * du * du;
+    }
+    for (; k < n; k++) {
+        double du = scale * unew[k] - u[k];
+        unew[k] = du;
+        s[0] += du * du;
+        ws[0] += wt[k] * du * du;
+    }
+    *ssq = (s[0] + s[1]) + (s[2] + s[3]);
+    *wssq = (ws[0] + ws[1]) + (ws[2] + ws[3]);
+}
+
 /* One pass of eq 11 with mixing: v = beta v + alpha (u_new - u), u += v,
  * with beta = 0 under the paper's rule. An update that would close the gap
  * somewhere (h <= 0, where the law has no meaning) is undone: the momentum
@@ -473,25 +527,8 @@ static int relax_once(adh_relax *w)
     size_t n = st->n;
     double scale = -2.0 / w->m.E;
     adh_kernel_apply(w->k, st->p, w->unew, w->scratch);
-    /* the sums in four interleaved parts: one chain of additions would
-     * bound this pass by its latency */
-    double ssq4[4] = { 0 }, wssq4[4] = { 0 };
-    size_t k = 0;
-    for (; k + 4 <= n; k += 4)
-        for (size_t l = 0; l < 4; l++) {
-            double du = scale * w->unew[k + l] - st->u[k + l];
-            w->unew[k + l] = du; /* now the unmixed change */
-            ssq4[l] += du * du;
-            wssq4[l] += w->ring_w[k + l] * du * du;
-        }
-    for (; k < n; k++) {
-        double du = scale * w->unew[k] - st->u[k];
-        w->unew[k] = du;
-        ssq4[0] += du * du;
-        wssq4[0] += w->ring_w[k] * du * du;
-    }
-    double ssq = (ssq4[0] + ssq4[1]) + (ssq4[2] + ssq4[3]);
-    double wssq = (wssq4[0] + wssq4[1]) + (wssq4[2] + wssq4[3]);
+    double ssq, wssq;
+    change_sums(w->unew, st->u, w->ring_w, n, scale, &ssq, &wssq);
     if (w->nfar)
         wssq += far_change(w, scale);
     if (!isfinite(ssq))

@@ -14,6 +14,8 @@
 #     sigma = 50 and 100 stay above 3x: the rings the grid needs).
 # BENCH_FIGURES=" " (a blank) runs no figure.
 # BENCH_ROUNDS (default 3) rounds. ADHERE: the program (default ./adhere).
+# BENCH_ARGS_<figure>: more arguments for that figure's runs, both alike
+# (BENCH_FIGURES=7 BENCH_ARGS_7=--turn=0nm: Figure 7 reduced to one turn).
 # FAST_SMOKE=1 (make check): Figure 4 a few steps long and two sigmas, one
 # round: the ratios mean nothing, but a broken comparison fails the suite.
 set -u
@@ -33,6 +35,9 @@ failed=0
 # (user + system, threads summed) to $tmp/NAME.cpu
 cpu() {
     name=$1; shift
+    # a fresh directory each round: a sweep's study resumes from a finished
+    # one in place (no work, no time)
+    rm -rf "${tmp:?}/$name"
     # shellcheck disable=SC2086 # $short is words
     if ! /usr/bin/time -f '%U %S' -o "$tmp/$name.t" "$ADHERE" -b --no-plot -q --overwrite -o "$tmp/$name" "$@" $short \
         >"$tmp/$name.err" 2>&1; then
@@ -60,9 +65,13 @@ machine="$(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | s
 echo "machine: $machine, load $(cut -d' ' -f1-3 /proc/loadavg)"
 for f in $figures; do
     r=0
+    extra=""
+    eval "extra=\${BENCH_ARGS_$f:-}"
     while [ "$r" -lt "$rounds" ]; do
-        cpu "fig$f-dense" "fig$f" --operator=dense || break
-        cpu "fig$f-default" "fig$f" || break
+        # shellcheck disable=SC2086 # $extra is words
+        cpu "fig$f-dense" "fig$f" --operator=dense $extra || break
+        # shellcheck disable=SC2086
+        cpu "fig$f-default" "fig$f" $extra || break
         r=$((r + 1))
     done
     [ -s "$tmp/fig$f-default.cpu" ] || continue
@@ -71,9 +80,11 @@ for f in $figures; do
     printed "$tmp/fig$f-dense" >"$tmp/a"
     printed "$tmp/fig$f-default" >"$tmp/b"
     [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b" || { same=DIFFERENT; failed=1; }
-    op=$(awk -F'\t' '$1 == "operator" {print $2}' "$tmp/fig$f-default/summary.tsv" "$tmp/fig$f-default"/run-1/summary.tsv 2>/dev/null | head -1)
-    printf 'ratio: Figure %s, dense / default (%s): %.2f (%.1f / %.1f CPU s, median of %d), printed numbers %s; %s\n' \
-        "$f" "$op" "$(echo "$d $n" | awk '{print $1 / $2}')" "$d" "$n" "$rounds" "$same" "$machine"
+    # a sweep's runs keep theirs in run-K/ (awk stops at a missing file)
+    op=$(cat "$tmp/fig$f-default/summary.tsv" "$tmp/fig$f-default"/run-1/summary.tsv 2>/dev/null |
+        awk -F'\t' '$1 == "operator" {print $2}' | head -1)
+    printf 'ratio: Figure %s%s, dense / default (%s): %.2f (%.2f / %.2f CPU s, median of %d), printed numbers %s; %s\n' \
+        "$f" "${extra:+ ($extra)}" "$op" "$(echo "$d $n" | awk '{print $1 / $2}')" "$d" "$n" "$rounds" "$same" "$machine"
 done
 
 # the static curve's cost against sigma: E for each sigma, the rest default
