@@ -144,8 +144,12 @@ static int soft(double sigma)
            tv.cpu / ts.cpu);
     if (rc || rv)
         printf("  FAILED: the static curve %s, the viscoelastic cycle %s\n", adh_strerror(rc), adh_strerror(rv));
-    printf("  (wall %.2f and %.2f s; %zu steps, %zu jumps, %zu factorizations, %zu GMRES iterations)\n", ts.wall,
-           tv.wall, res.steps, res.jumps, res.setups, res.krylov);
+    printf("  (wall %.2f and %.2f s; %zu steps, %zu jumps, %zu lattice jumps, %zu relaxed, %zu folds resumed, %zu "
+           "factorizations, %zu Newton and %zu GMRES iterations)\n",
+           ts.wall, tv.wall, res.steps, res.jumps, res.lattice_jumps, res.jumps_relaxed, res.folds_resumed, res.setups,
+           res.newton, res.krylov);
+    printf("  pull-off %.6g N, jump-in %.6g m, jump-out %.6g m, hysteresis %.6g J, dissipated %.6g J\n", res.pulloff_F,
+           res.jump_in_h0, res.jump_out_h0, res.hysteresis, res.cycle.dissipated);
     adh_kernel_free(k);
     adh_grid_free(g);
     return rc != ADH_SUCCESS || rv != ADH_SUCCESS;
