@@ -841,7 +841,9 @@ static int cross_lost(adh_visco *w)
 }
 
 /* Back to the crossing's last good point, with steps at most a quarter of
- * the one that went backwards, until the crossing lands. */
+ * the one that went backwards, until the crossing lands; where Newton
+ * cannot put that point back on the equilibria (next to a lattice fold),
+ * the crossing is lost and the jump relaxes. */
 static int cross_retry(adh_visco *w)
 {
     double h;
@@ -854,6 +856,8 @@ static int cross_retry(adh_visco *w)
     int rc = restart(w, w->s_now, y, w->ypprev);
     if (rc == ADH_SUCCESS)
         IDASetMaxStep(w->ida, 0.25 * fabs(h));
+    else if (rc != ADH_ENOMEM)
+        rc = start_flow(w);   /* its last good point is not one (Newton): lost, it relaxes */
     return rc;
 }
 
