@@ -107,9 +107,11 @@ int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t w
 
 /* What happened where. */
 enum {
-    ADH_VISCO_JUMP = 1,     /* across a fold: h0, F, a before and after */
+    ADH_VISCO_JUMP = 1,     /* across a fold, forming or breaking the contact:
+                               h0, F, a before and after */
     ADH_VISCO_CONTACT = 2,  /* contact formed (loading) or lost without a jump */
-    ADH_VISCO_PULLOFF = 3,  /* a local minimum of the force on unloading */
+    ADH_VISCO_PULLOFF = 3,  /* the force's lowest local minimum on an unloading
+                               path (one per path, not one per lattice wiggle) */
     ADH_VISCO_TURN = 4,     /* a turn reached (loading) */
     ADH_VISCO_UNLOAD = 5,   /* retraction begins (after the dwell) */
     ADH_VISCO_END = 6       /* the base is back at the start */
@@ -151,10 +153,13 @@ typedef struct adh_visco_result {
     adh_visco_energy cycle; /* that cycle's accounts */
     double time;           /* physical time at the end (or now), s */
     size_t steps;          /* integrator steps (jumps' relaxations included) */
-    size_t jumps;          /* jumps */
-    size_t jumps_relaxed;  /* of which landed by relaxing, where following the
-                              equilibria got lost (lattice folds of a grid that
-                              does not resolve the contact edge) */
+    size_t jumps;          /* jumps that formed or broke the contact (each an event) */
+    size_t lattice_jumps;  /* jumps that did neither: the contact line snapping
+                              across a lattice fold of the grid, a ring (in the
+                              accounts' jump losses, no events) */
+    size_t jumps_relaxed;  /* jumps of either kind that landed by relaxing, where
+                              following the equilibria got lost (lattice folds of
+                              a grid that does not resolve the contact edge) */
     size_t folds_resumed;  /* roots of t' that were no fold (the relaxation
                               came back to them): the path went on, no jump */
     size_t newton;         /* Newton iterations */

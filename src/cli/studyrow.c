@@ -55,7 +55,7 @@ static const column columns[] = {
     { "dissipated", NUM, CLI_ROW_DISSIPATED, TIME_ONLY }, { "jump_loss", NUM, CLI_ROW_JUMP_LOSS, TIME_ONLY },
     { "stored_change", NUM, CLI_ROW_STORED_CHANGE, TIME_ONLY }, { "time", NUM, CLI_ROW_TIME, TIME_ONLY },
     { "time_steps", NUM, CLI_ROW_TIME_STEPS, TIME_ONLY }, { "jumps", NUM, CLI_ROW_JUMPS, TIME_ONLY },
-    { "jumps_relaxed", NUM, CLI_ROW_JUMPS_RELAXED, TIME_ONLY }, { "folds_resumed", NUM, CLI_ROW_FOLDS_RESUMED, TIME_ONLY },
+    { "lattice_jumps", NUM, CLI_ROW_LATTICE_JUMPS, TIME_ONLY }, { "jumps_relaxed", NUM, CLI_ROW_JUMPS_RELAXED, TIME_ONLY }, { "folds_resumed", NUM, CLI_ROW_FOLDS_RESUMED, TIME_ONLY },
     { "krylov_iterations", NUM, CLI_ROW_KRYLOV, TIME_ONLY }, { "tolerance", NUM, CLI_ROW_TOLERANCE, TIME_ONLY },
     { "snap_in_h0", NUM, CLI_ROW_SNAP_IN_H0, SNAP }, { "snap_in_base", NUM, CLI_ROW_SNAP_IN_BASE, SNAP },
     { "snap_out_h0", NUM, CLI_ROW_SNAP_OUT_H0, SNAP }, { "snap_out_base", NUM, CLI_ROW_SNAP_OUT_BASE, SNAP },
@@ -218,7 +218,8 @@ static void fill_time(double *v, const adh_run *r, const cli_time_out *o)
         { "jump_out_base", CLI_ROW_JUMP_OUT_BASE }, { "hysteresis", CLI_ROW_HYSTERESIS },
         { "dissipated", CLI_ROW_DISSIPATED }, { "jump_loss", CLI_ROW_JUMP_LOSS },
         { "stored_change", CLI_ROW_STORED_CHANGE }, { "time", CLI_ROW_TIME }, { "time_steps", CLI_ROW_TIME_STEPS },
-        { "jumps", CLI_ROW_JUMPS }, { "jumps_relaxed", CLI_ROW_JUMPS_RELAXED },
+        { "jumps", CLI_ROW_JUMPS }, { "lattice_jumps", CLI_ROW_LATTICE_JUMPS },
+        { "jumps_relaxed", CLI_ROW_JUMPS_RELAXED },
         { "folds_resumed", CLI_ROW_FOLDS_RESUMED }, { "newton_iterations", CLI_ROW_NEWTON },
         { "krylov_iterations", CLI_ROW_KRYLOV }, { "tolerance", CLI_ROW_TOLERANCE },
     };

@@ -72,6 +72,7 @@ size_t cli_time_keys(const cli_time_out *o, cli_tables_extra *x)
         { "time", r->time },
         { "time_steps", (double)r->steps },
         { "jumps", (double)r->jumps },
+        { "lattice_jumps", (double)r->lattice_jumps },
         { "jumps_relaxed", (double)r->jumps_relaxed },
         { "folds_resumed", (double)r->folds_resumed },
         { "newton_iterations", (double)r->newton },

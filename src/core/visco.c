@@ -25,6 +25,9 @@
 /* A relaxation has landed when nothing moves faster than this many
  * tolerances per unit pseudo-time (its rates are 1 and more). */
 #define VISCO_REST 1e-3
+/* ... and a rest on no equilibrium (the ghost of a vanished fold) makes
+ * it ten times stricter, down to this */
+#define VISCO_REST_MIN 1e-9
 /* A relaxed jump's push off its fold along the path's tangent (per z0):
  * first a thousandth, ten times more each time the relaxation comes back
  * to the fold (the root put the fold on its stable side, further from it
@@ -104,6 +107,18 @@ static double contact_radius(const adh_visco *w)
     return adh_contact_radius(w->g, w->st->h, w->m.z0);
 }
 
+static void fill_event(adh_visco *w, adh_visco_event *e, int kind)
+{
+    memset(e, 0, sizeof *e);
+    e->kind = kind;
+    e->path = w->seg.path;
+    e->t = w->t_now;
+    e->base = w->base_now;
+    e->h0 = e->h0_after = w->st->h0;
+    e->F = e->F_after = w->F_now;
+    e->a = e->a_after = contact_radius(w);
+}
+
 static int add_event(adh_visco *w, int kind)
 {
     if (w->nev == w->evcap) {
@@ -114,16 +129,27 @@ static int add_event(adh_visco *w, int kind)
         w->ev = e;
         w->evcap = cap;
     }
-    adh_visco_event *e = &w->ev[w->nev++];
-    memset(e, 0, sizeof *e);
-    e->kind = kind;
-    e->path = w->seg.path;
-    e->t = w->t_now;
-    e->base = w->base_now;
-    e->h0 = e->h0_after = w->st->h0;
-    e->F = e->F_after = w->F_now;
-    e->a = e->a_after = contact_radius(w);
+    fill_event(w, &w->ev[w->nev++], kind);
     return ADH_SUCCESS;
+}
+
+/* A force minimum on unloading. The force's lattice wiggles (the contact
+ * line snapping ring by ring: on a coarse grid each snap raises the force
+ * by a few per cent) make a minimum at each ring; an unloading path has
+ * one pull-off, its lowest minimum: a lower one replaces the last, which
+ * moves to the end of the events (those between came before it). */
+static int pulloff_event(adh_visco *w)
+{
+    adh_visco_event *last = w->pull_ev ? &w->ev[w->pull_ev - 1] : NULL;
+    if (last && !(w->F_now < last->F))
+        return ADH_SUCCESS;
+    if (last) {
+        memmove(last, last + 1, (w->nev - w->pull_ev) * sizeof *last);
+        w->nev--;
+    }
+    int rc = add_event(w, ADH_VISCO_PULLOFF);
+    w->pull_ev = rc == ADH_SUCCESS ? w->nev : 0;
+    return rc;
 }
 
 /* IDAS's counters so far: steps, Newton and GMRES iterations,
@@ -182,6 +208,10 @@ static int restart(adh_visco *w, double s, double *y, const double *yp_given)
         memcpy(ypv, yp_given, w->len * sizeof *ypv);
     else if (rc == ADH_SUCCESS)
         rc = adh_visco_tangent(w, y, ypv);
+    if (rc != ADH_SUCCESS)
+        snprintf(w->errmsg, sizeof w->errmsg, "at t = %.6g s, h0 = %.6g m, %s could not be %s", w->t_now,
+                 adh_visco_h0_of(w, y), w->mode == MODE_CROSS ? "a jump's crossing" : "the path",
+                 yp_given ? "put back on its equilibria (Newton)" : "restarted (Newton or its tangent)");
     if (rc == ADH_SUCCESS)
         rc = adh_visco_dae_start(w, s, y, ypv);
     w->live = rc == ADH_SUCCESS;
@@ -398,11 +428,11 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     w->reach = 0.02 * m->R + w->stretch;
     for (size_t i = 0; i < n; i++)
         w->shape[i] = w->g->r[i] * w->g->r[i] / (2.0 * m->R);
-    w->nev = 0;
+    w->nev = w->pull_ev = 0;
     memset(&w->acc, 0, sizeof w->acc);
     memset(w->stat0, 0, sizeof w->stat0);
     memset(&w->res, 0, sizeof w->res);
-    w->t_resumed = NAN;
+    w->t_resumed = w->t_stuck = NAN;
     w->res.jump_in_h0 = w->res.jump_out_h0 = w->res.pulloff_F = NAN;
     w->res.jump_in_t = w->res.jump_in_base = w->res.jump_out_t = w->res.jump_out_base = NAN;
     w->res.pulloff_h0 = w->res.pulloff_t = w->res.pulloff_base = NAN;
@@ -468,6 +498,7 @@ static int begin_turn(adh_visco *w, size_t k)
     memcpy(y, sn->y, w->len * sizeof *y);
     w->ui = k;
     w->extended = 0;
+    w->pull_ev = 0;
     /* profiles: the unloading ones are those above the turn */
     w->pi = 0;
     while (w->pi < w->nprof && w->prof[w->pi] > sn->base)
@@ -660,9 +691,42 @@ static int resume(adh_visco *w, double t0)
     return finish_row(w, push_row(w, t0));
 }
 
+static int start_flow(adh_visco *w);
+static int fold(adh_visco *w, double t0);
+
+/* The integrator could not follow the path on from y (a pair of lattice
+ * folds tighter than its corrector can turn in, which its root finding
+ * did not see): the sphere jumps from there, relaxing (visco_flow.c). A
+ * second time at the same instant it is stuck. */
+static int path_stuck(adh_visco *w, double t0)
+{
+    w->t_stuck = w->t_now;
+    load_state(w, N_VGetArrayPointer(w->y));
+    int rc = fold(w, t0);
+    if (w->done)
+        return rc;
+    int brc = start_flow(w);
+    return brc == ADH_SUCCESS ? rc : stop(w, brc);
+}
+
+/* Whether y is an equilibrium (at its q, time and base): Newton polishes
+ * a copy of it onto one. Where a fold has just vanished (a lattice
+ * fold's, say) a relaxation crawls past its ghost, slower than its rest
+ * test, with no equilibrium there; and a crossing whose S is all but
+ * gone (a lattice fold pair) can land next to the fold, where Newton
+ * cycles. */
+static int on_equilibrium(adh_visco *w)
+{
+    memcpy(w->ywork, N_VGetArrayPointer(w->y), w->len * sizeof *w->ywork);
+    int rc = adh_visco_polish(w, w->ywork, 1);
+    w->p_mode = -1; /* the polish factorized the preconditioner for itself */
+    return rc == ADH_SUCCESS;
+}
+
 /* The crossing is back at the fold's base on the other branch: the
  * path goes on from there (time and q as at the fold). With crossed 0 it
- * relaxed there instead. */
+ * relaxed there instead. A crossing that landed on no equilibrium
+ * relaxes from the fold (the mode is then MODE_FLOW, no row). */
 static int land(adh_visco *w, double t0, int crossed)
 {
     double *y = N_VGetArrayPointer(w->y), moved = 0;
@@ -675,15 +739,26 @@ static int land(adh_visco *w, double t0, int crossed)
         moved = fmax(moved, fabs(y[i] - w->yfold[i]));
     if (!crossed && !(moved > w->s.tol * w->m.z0))
         return resume(w, t0);
+    if (crossed && !on_equilibrium(w)) {   /* the jump relaxes instead */
+        int brc = start_flow(w);
+        return brc == ADH_SUCCESS ? ADH_CONTINUE : stop(w, brc);
+    }
     load_state(w, y);
     adh_visco_event e = w->pending;
     double U = adh_visco_energy_of(w, y, NULL, NULL, NULL);
     e.h0_after = w->st->h0, e.F_after = w->F_now, e.a_after = contact_radius(w);
     e.loss = w->U_before - U;
     w->acc.jumps += e.loss;
-    w->res.jumps++;
-    if (add_event(w, ADH_VISCO_JUMP) == ADH_SUCCESS)
-        w->ev[w->nev - 1] = e;
+    /* a jump that neither forms nor breaks the contact is the contact line
+     * snapping across a lattice fold of the grid (a ring): counted and in
+     * the accounts, no event of its own */
+    if ((e.a_after > 0) == (e.a > 0)) {
+        w->res.lattice_jumps++;
+    } else {
+        w->res.jumps++;
+        if (add_event(w, ADH_VISCO_JUMP) == ADH_SUCCESS)
+            w->ev[w->nev - 1] = e;
+    }
     if ((e.a_after > 0) != (e.a > 0))
         contact_changed(w, e.a_after > 0, e.h0, e.t, e.base);
     int rc = restart(w, w->s_now, y, NULL);
@@ -704,8 +779,11 @@ static int start_flow(adh_visco *w)
     IDASetMaxStep(w->ida, 0);
     w->mode = MODE_FLOW;
     w->jump_steps = 0;
+    w->rest = VISCO_REST;
     w->res.jumps_relaxed++;
     int rc = adh_visco_flow_start(w, w->yfold, w->ypfold, w->nudge, y0, w->ypflow);
+    if (rc != ADH_SUCCESS)
+        snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %.6g s could not start relaxing from its fold", w->t_now);
     return rc == ADH_SUCCESS ? restart(w, 0.0, y0, w->ypflow) : rc;
 }
 
@@ -763,7 +841,9 @@ static int cross_lost(adh_visco *w)
 }
 
 /* Back to the crossing's last good point, with steps at most a quarter of
- * the one that went backwards, until the crossing lands. */
+ * the one that went backwards, until the crossing lands; where Newton
+ * cannot put that point back on the equilibria (next to a lattice fold),
+ * the crossing is lost and the jump relaxes. */
 static int cross_retry(adh_visco *w)
 {
     double h;
@@ -776,6 +856,8 @@ static int cross_retry(adh_visco *w)
     int rc = restart(w, w->s_now, y, w->ypprev);
     if (rc == ADH_SUCCESS)
         IDASetMaxStep(w->ida, 0.25 * fabs(h));
+    else if (rc != ADH_ENOMEM)
+        rc = start_flow(w);   /* its last good point is not one (Newton): lost, it relaxes */
     return rc;
 }
 
@@ -808,8 +890,8 @@ static int on_roots(adh_visco *w, const int *rf, double t0)
         contact_changed(w, rf[ROOT_CONTACT] < 0, w->st->h0, w->t_now, w->base_now);
     if (rf[ROOT_CONTACT])
         add_event(w, ADH_VISCO_CONTACT);
-    if (rf[ROOT_PULLOFF])
-        add_event(w, ADH_VISCO_PULLOFF);
+    if (rf[ROOT_PULLOFF] && pulloff_event(w) != ADH_SUCCESS)
+        return stop(w, ADH_ENOMEM);
     if (rf[ROOT_PROFILE]) {
         if (adh_run_push_profile(w->run, w->st, w->seg.branch, w->seg.path) != ADH_SUCCESS)
             return stop(w, ADH_ENOMEM);
@@ -821,6 +903,37 @@ static int on_roots(adh_visco *w, const int *rf, double t0)
     if (rf[ROOT_END])
         return segment_end(w, t0);
     return finish_row(w, push_row(w, t0));
+}
+
+/* After a step of a jump's relaxation: 1 with what iterate returns in
+ * *out (a landing's row, or the error), 0 to go on relaxing. At rest on
+ * the fold it came from, it starts again pushed harder; at rest on no
+ * equilibrium (a ghost), it goes on with a rest test ten times stricter. */
+static int flow_step(adh_visco *w, double t0, int *out)
+{
+    double v = adh_visco_flow_speed(w, N_VGetArrayPointer(w->yp));
+    if (v < w->rest && came_back(w) && w->nudge < VISCO_NUDGE_MAX) {
+        w->nudge *= 10;   /* relaxed back to the fold: pushed harder */
+        w->res.jumps_relaxed--;   /* the same jump, counted again as it starts */
+        int brc = start_flow(w);
+        *out = brc == ADH_SUCCESS ? ADH_CONTINUE : stop(w, brc);
+        return brc != ADH_SUCCESS;
+    }
+    if (v < w->rest && on_equilibrium(w)) {
+        *out = land(w, t0, 0);
+        return 1;
+    }
+    if (v < w->rest && (w->rest *= 0.1) < VISCO_REST_MIN) {
+        snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s came to rest on no equilibrium", w->t_now);
+        *out = stop(w, ADH_ESTALL);
+        return 1;
+    }
+    if (++w->jump_steps > (long)w->s.max_jump_steps) {
+        snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s did not come to rest", w->t_now);
+        *out = stop(w, ADH_ESTALL);
+        return 1;
+    }
+    return 0;
 }
 
 int adh_visco_iterate(adh_visco *w)
@@ -850,6 +963,10 @@ int adh_visco_iterate(adh_visco *w)
                 return stop(w, brc);
             continue;
         }
+        if (flag < 0 && w->mode == MODE_PATH && w->t_now != w->t_stuck) {
+            w->s_now = s;
+            return path_stuck(w, t0);
+        }
         if (flag < 0) {
             char ida[200];
             snprintf(ida, sizeof ida, "%.199s", w->errmsg);
@@ -860,21 +977,9 @@ int adh_visco_iterate(adh_visco *w)
             return stop(w, ADH_ESTALL);
         }
         if (w->mode == MODE_FLOW) {
-            if (adh_visco_flow_speed(w, N_VGetArrayPointer(w->yp)) < VISCO_REST && came_back(w) &&
-                w->nudge < VISCO_NUDGE_MAX) {
-                w->nudge *= 10;   /* relaxed back to the fold: pushed harder */
-                w->res.jumps_relaxed--;   /* the same jump, counted again as it starts */
-                int brc = start_flow(w);
-                if (brc != ADH_SUCCESS)
-                    return stop(w, brc);
-                continue;
-            }
-            if (adh_visco_flow_speed(w, N_VGetArrayPointer(w->yp)) < VISCO_REST)
-                return land(w, t0, 0);
-            if (++w->jump_steps > (long)w->s.max_jump_steps) {
-                snprintf(w->errmsg, sizeof w->errmsg, "a jump at t = %g s did not come to rest", w->t_now);
-                return stop(w, ADH_ESTALL);
-            }
+            int out;
+            if (flow_step(w, t0, &out))
+                return out;
             continue;
         }
         w->s_now = s;

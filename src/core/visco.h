@@ -114,11 +114,16 @@ struct adh_visco {
     double *yfold, *ypfold, *ywork, *yprev, *ypprev, *ypflow;
     long jump_steps;     /* steps of the crossing so far */
     double nudge;        /* a relaxed jump's push off its fold, per z0 */
+    double rest;         /* its rest test: speeds below this (VISCO_REST, less
+                            after a rest on no equilibrium) */
     double t_resumed;    /* when the path last went on through a root of t'
                             that was no fold (resume) */
+    double t_stuck;      /* when the integrator last could not follow the path
+                            on, and the sphere jumped from there */
     int have_prev;       /* a crossing's last good point is kept (yprev) */
     double s_prev;       /* and where it was */
     adh_visco_event pending; /* the jump being crossed: its side before */
+    size_t pull_ev;      /* this path's pull-off event (index + 1 into ev; 0 none) */
     double U_before;
 
     /* the protocol */

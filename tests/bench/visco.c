@@ -9,8 +9,9 @@
  *     the static curve itself: the goal is a ratio of at most 6.
  * Times are CPU seconds of this process (one thread: the run's time, less
  * the machine's other load), wall seconds beside them.
- * Usage: bench-visco [N [sigma]]  (make check's smoke: 100 and 2.25; N = 0
- * leaves the first out). */
+ * Usage: bench-visco [N [sigma [tol]]]  (make check's smoke: 100 and 2.25;
+ * N = 0 leaves the first out; tol: the integrator's tolerance, default
+ * the solver's, 1e-4). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -48,11 +49,15 @@ static clock2 since(clock2 t0)
 }
 
 /* The viscoelastic cycle of material m (E = E0) with Einf = ratio E0. */
+static double bench_tol; /* 0: the solver's default */
+
 static int visco_cycle(const adh_grid *g, const adh_kernel *k, const adh_material *m, double ratio, clock2 *t,
                        adh_visco_result *res)
 {
     adh_visco_rule_settings vs = adh_visco_rule_settings_default(m->E);
     vs.sls.Einf = ratio * m->E;
+    if (bench_tol > 0)
+        vs.s.tol = bench_tol;
     adh_protocol_settings ps = adh_protocol_settings_default();
     adh_run run;
     adh_run_init(&run);
@@ -138,14 +143,19 @@ static int soft(double sigma)
     adh_run_free(&run);
     adh_visco_result res;
     int rv = visco_cycle(g, k, &m, 10.0, &tv, &res);
-    printf("\nsigma = %g (E0 = %.3g Pa, Einf = 10 E0, tau = 1 ms, 1 um/s), %s grid of %zu nodes, %s:\n", sigma, m.E,
-           gc.graded ? "graded" : "uniform", g->n, gc.hierarchical ? "H^2" : "dense");
+    printf("\nsigma = %g (E0 = %.3g Pa, Einf = 10 E0, tau = 1 ms, 1 um/s, tolerance %g), %s grid of %zu nodes, %s:\n",
+           sigma, m.E, bench_tol > 0 ? bench_tol : adh_visco_settings_default().tol, gc.graded ? "graded" : "uniform",
+           g->n, gc.hierarchical ? "H^2" : "dense");
     printf("  static curve %.2f CPU s, viscoelastic cycle %.2f CPU s: ratio %.2f (goal 6)\n", ts.cpu, tv.cpu,
            tv.cpu / ts.cpu);
     if (rc || rv)
         printf("  FAILED: the static curve %s, the viscoelastic cycle %s\n", adh_strerror(rc), adh_strerror(rv));
-    printf("  (wall %.2f and %.2f s; %zu steps, %zu jumps, %zu factorizations, %zu GMRES iterations)\n", ts.wall,
-           tv.wall, res.steps, res.jumps, res.setups, res.krylov);
+    printf("  (wall %.2f and %.2f s; %zu steps, %zu jumps, %zu lattice jumps, %zu relaxed, %zu folds resumed, %zu "
+           "factorizations, %zu Newton and %zu GMRES iterations)\n",
+           ts.wall, tv.wall, res.steps, res.jumps, res.lattice_jumps, res.jumps_relaxed, res.folds_resumed, res.setups,
+           res.newton, res.krylov);
+    printf("  pull-off %.6g N, jump-in %.6g m, jump-out %.6g m, hysteresis %.6g J, dissipated %.6g J\n", res.pulloff_F,
+           res.jump_in_h0, res.jump_out_h0, res.hysteresis, res.cycle.dissipated);
     adh_kernel_free(k);
     adh_grid_free(g);
     return rc != ADH_SUCCESS || rv != ADH_SUCCESS;
@@ -155,6 +165,7 @@ int main(int argc, char **argv)
 {
     size_t n = argc > 1 ? (size_t)atol(argv[1]) : 1000;
     double sigma = argc > 2 ? atof(argv[2]) : 75;
+    bench_tol = argc > 3 ? atof(argv[3]) : 0;
     openblas_set_num_threads(1);
     int bad = n ? figure4(n) : 0;   /* N = 0: sigma's cycle alone */
     bad |= soft(sigma);
