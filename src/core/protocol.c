@@ -130,7 +130,13 @@ static int check_grid(const adh_protocol_settings *ps, const adh_material *m, co
     /* the limit itself is allowed: N x spacing from values with units
      * (3nm is 3 x 1e-9) lands a few ulps past 0.3 R */
     if (g->rmax > 0.3 * m->R * (1 + 1e-12)) {
-        snprintf(why, whylen, "grid radius Rmax = N x spacing = %s is not << R = %s: at most 0.3 R is allowed", adh_qtext(g->rmax, ADH_Q_LENGTH).s, adh_qtext(m->R, ADH_Q_LENGTH).s);
+        /* a graded grid's last ring reaches past the radius it was asked for */
+        snprintf(why, whylen, "grid radius Rmax = %s is not << R = %s: at most 0.3 R = %s is allowed%s",
+                 adh_qtext(g->rmax, ADH_Q_LENGTH).s,
+                 adh_qtext(m->R, ADH_Q_LENGTH).s, adh_qtext(0.3 * m->R, ADH_Q_LENGTH).s,
+                 g->graded ? " (the graded rings' outer edge: the last ring, growing, ends past the radius asked; "
+                             "ask for a radius one ring smaller)"
+                           : " (N x spacing)");
         return ADH_EGRID;
     }
     /* The contact at the deepest position: the undeformed overlap radius,

@@ -43,7 +43,10 @@ bad "must lie below the start" --start=5nm --turn=-1nm,6nm
 "$ADHERE" --plan --force -R 10um -N 1000 --spacing=3nm >/dev/null 2>"$TMP/stderr"
 rc=$?
 check "Rmax = 1000 x 3 nm = 0.3 R exactly is allowed (exit $rc: $(cat "$TMP/stderr"))" [ "$rc" -eq 0 ]
-bad "grid radius Rmax = N x spacing = 3.001 um is not << R = 10 um: at most 0.3 R is allowed" -R 10um -N 1000 --spacing=3.001nm
+bad "grid radius Rmax = 3.001 um is not << R = 10 um: at most 0.3 R = 3 um is allowed (N x spacing)" -R 10um -N 1000 --spacing=3.001nm
+# a graded grid's last ring ends past the radius asked: the refusal says so
+bad "grid radius Rmax = 3.013 um is not << R = 10 um: at most 0.3 R = 3 um is allowed (the graded rings' outer edge" \
+    -R 10um --grid=graded --kernel=ring --grid-radius=3um
 bad "material.E swept twice (--sweep=E=... and --sweep=material.E=...): give its values once" --sweep=E=1GPa,2GPa --sweep=material.E=3GPa
 bad "sigma swept twice (--sweep=sigma=... and --sweep=sigma=...)" --sweep=sigma=1,2 --sweep=sigma=3
 bad "eps = 0 nm is not allowed" --eps=0
