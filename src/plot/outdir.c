@@ -1172,7 +1172,11 @@ int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ct
     const char *base = slash ? slash + 1 : path;
     if (strlen(path) >= PATH_MAX - 16 || !*base || !strcmp(base, ".") || !strcmp(base, ".."))
         return strlen(path) >= PATH_MAX - 16 ? ENAMETOOLONG : EISDIR;
-    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash == path ? 1 : slash - path) : 1, slash ? path : ".");
+    /* the directory part, shorter than path (checked above): copied, not
+     * printed, so that no compiler sees a truncation to warn about */
+    size_t dl = slash ? (slash == path ? 1 : (size_t)(slash - path)) : 1;
+    memcpy(dir, slash ? path : ".", dl);
+    dir[dl] = '\0';
     int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     int e = dfd < 0 ? errno : 0;
     struct stat st;
