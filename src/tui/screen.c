@@ -622,6 +622,23 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     (void)v;
 }
 
+static void status_text(const tui_view *v, char *st, size_t len)
+{
+    snprintf(st, len, "%s%s", v->status_error ? "error: " : "", v->status);
+}
+
+/* The rows the status line takes above the key hints: at least one. */
+static int status_rows(const tui_view *v, int W, int H)
+{
+    if (!v->status || !v->status[0])
+        return 1;
+    char st[1200];
+    status_text(v, st, sizeof st);
+    /* a short screen keeps its rows for the state and the parameters */
+    int n = wrap_text(0, 0, W, H >= 24 ? 3 : 1, 0, st, 0);
+    return n > 1 ? n : 1;
+}
+
 void tui_draw(const tui_sim *s, const tui_view *v)
 {
     erase();
@@ -641,8 +658,11 @@ void tui_draw(const tui_sim *s, const tui_view *v)
         /* the preview in the rows left: whole from 25 lines (more with
          * physical time's fields), its plot alone at 23 and 24, else a
          * word on how to see it */
-        if (H - 2 - 18 - dy >= 3)
-            draw_preview(s, v, 18 + dy, 0, H - 2 - 18 - dy, W);
+        /* above the status line, however many rows it wraps to: a plot
+         * row under it would lose its axis label */
+        int ph = H - 1 - status_rows(v, W, H) - 18 - dy;
+        if (ph >= 3)
+            draw_preview(s, v, 18 + dy, 0, ph, W);
         else if (H - 2 - 18 - dy >= 1)
             put(18 + dy, 0, W, A_NORMAL, " (the force preview needs %d lines: a taller window shows it)", 23 + dy);
     } else if (v->params_first && H < 40) {
@@ -677,9 +697,8 @@ void tui_draw(const tui_sim *s, const tui_view *v)
      * or the key hints */
     if (v->status && v->status[0]) {
         char st[1200];
-        snprintf(st, sizeof st, "%s%s", v->status_error ? "error: " : "", v->status);
-        /* a short screen keeps its rows for the state and the parameters */
-        int n = wrap_text(0, 0, W, H >= 24 ? 3 : 1, 0, st, 0);
+        status_text(v, st, sizeof st);
+        int n = status_rows(v, W, H);
         for (int y = H - 1 - n; y < H - 1; y++)
             put(y, 0, W, A_NORMAL, "%-*s", W, "");
         wrap_text(H - 1 - n, 0, W, n, v->status_error ? A_BOLD : A_NORMAL, st, 1);
