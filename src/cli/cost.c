@@ -18,6 +18,7 @@
 #include "adhere/grid.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "cli/estimate.h"
 #include "cli/exit.h"
 #include "cli/interrupt.h"
 #include "util/ready.h"
@@ -30,6 +31,7 @@
 #include "plot/plot.h"
 #include "plot/session.h"
 #include "scene/budget.h"
+#include "scene/plan.h"
 
 char *openblas_get_config(void) __attribute__((weak));   /* none in the reference BLAS */
 static const char *blas_config(void)
@@ -531,6 +533,37 @@ static void cost_done(const cost_job *job, const char *out)
         fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output\n", t, job->n);
 }
 
+/* What the grid of runs will take, said before it starts (the default grid
+ * takes hours): each run's expected iterations (adh_plan_iterations) times
+ * a kernel product timed now on its N, in CPU seconds as --plan does,
+ * shared out over the workers. Negative when a kernel could not be built. */
+static double cost_estimate(const adh_config *cfg, const cost_run *runs, size_t n, int jobs)
+{
+    static adh_config c;   /* a configuration is large: not on the stack */
+    /* one timing for each N (the runs come sorted by cost, not by N) */
+    size_t *tn = calloc(n ? n : 1, sizeof *tn), nt = 0;
+    double *tp = calloc(n ? n : 1, sizeof *tp), *tb = calloc(n ? n : 1, sizeof *tb), total = 0;
+    for (size_t i = 0; tn && tp && tb && i < n && total >= 0; i++) {
+        c = *cfg;
+        c.spec = cost_spec(cfg, runs[i].nodes, ADH_MODE_RELAX);
+        c.spec.relax.eps = runs[i].eps;
+        c.spec.grid.use.kernel = runs[i].kernel;
+        size_t k = 0;
+        while (k < nt && tn[k] != runs[i].nodes)
+            k++;
+        if (k == nt) {
+            tn[nt] = runs[i].nodes;
+            tp[nt] = cli_estimate_iteration(&c, &tb[nt]);
+            nt++;
+        }
+        total = isfinite(tp[k]) ? total + tb[k] + adh_plan_iterations(&c.spec) * tp[k] : -1;
+    }
+    if (!tn || !tp || !tb)
+        total = -1;
+    free(tn), free(tp), free(tb);
+    return total < 0 ? -1 : total / (jobs > 1 ? jobs : 1);
+}
+
 int cli_cost_main(const cli_options *cli)
 {
     const adh_config *cfg = &cli->cfg;
@@ -546,6 +579,14 @@ int cli_cost_main(const cli_options *cli)
         fprintf(stderr, "adhere: %s\n", why);
         free(runs);
         return CLI_EXIT_USAGE;
+    }
+    if (!cfg->output.quiet) {
+        double est = cost_estimate(cfg, runs, n, cost_jobs());
+        char t[32];
+        cli_progress_duration(est, t, sizeof t);
+        if (est >= 0)
+            fprintf(stderr, "adhere: --cost: %zu runs, expected about %s on %d core%s (the plan's iterations, a kernel "
+                    "product timed now; the static curve beside them)\n", n, t, cost_jobs(), cost_jobs() > 1 ? "s" : "");
     }
     cli_interrupt_catch();
     adh_ready_phase("cost");

@@ -11,6 +11,8 @@ out="$TMP/cost"
 rc=$?
 check "each cost run says how many of the 8 are done, the share and the time left" \
     sh -c "[ \$(grep -c '^adhere: cost run [0-9] of 8 .*; [1-8] of 8 done, *[0-9]* %' '$TMP/stderr') -eq 8 ] && grep -q '8 of 8 done, 100 %' '$TMP/stderr' && grep -q 'of 8 done, .*left' '$TMP/stderr'"
+check "before the runs, the time they are expected to take" \
+    sh -c "head -1 '$TMP/stderr' | grep -qE '^adhere: --cost: 8 runs, expected about [0-9.]+ (s|min [0-9]+ s|h [0-9]+ min) on [0-9]+ cores?'"
 check "and a closing line says where the table and cost.png went" grep -q "^adhere: done in .*: 8 cost runs; .*cost.tsv and cost.png in $out/" "$TMP/stderr"
 check "--cost exits 0 (got $rc: $(head -c 200 "$TMP/stderr"))" [ "$rc" -eq 0 ]
 check "the report names the cores and the BLAS" sh -c "grep -q 'on [0-9]* cores' '$TMP/stdout' && grep -q '^BLAS: ' '$TMP/stdout'"
