@@ -982,27 +982,30 @@ static void clear_unstaged(adh_outdir *d)
 
 int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen)
 {
-    if (replace)
-        clear_unstaged(d);
     int e = 0;
-    const char *failed = "";
-    while (d->nst && !e) {
-        staged *s = &d->st[0];
+    size_t done = 0;
+    for (; done < d->nst; done++) {
+        staged *s = &d->st[done];
         struct stat st, now;
         /* as adh_outdir_write records it: before the rename and after */
         if (fstatat(d->fd, s->tmp, &st, AT_SYMLINK_NOFOLLOW) != 0 || add_entry(d, s->name, &st, 0) != 0 ||
             save(d) != 0 || renameat(d->fd, s->tmp, d->fd, s->name) != 0) {
             e = errno ? errno : ENOMEM;
-            failed = s->name;
+            snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, s->name, strerror(e));
             break;
         }
         if (fstatat(d->fd, s->name, &now, AT_SYMLINK_NOFOLLOW) == 0 && now.st_ino == st.st_ino)
             add_entry(d, s->name, &now, 0);
         keep_newest(d, s->name, s->tmp);
-        *s = d->st[--d->nst];
     }
-    if (e)
-        snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, failed, strerror(e));
+    /* the earlier files go only once every new one is in place: a commit
+     * that fails part way removes none of them */
+    if (!e && replace)
+        clear_unstaged(d);
+    if (done) {   /* the committed leave the staged list */
+        memmove(d->st, d->st + done, (d->nst - done) * sizeof *d->st);
+        d->nst -= done;
+    }
     adh_outdir_abandon(d);   /* what a failure left, and the mode */
     save(d);
     return e ? -1 : 0;

@@ -316,6 +316,41 @@ static void test_killed_writer(void)
     adh_outdir_close(od);
 }
 
+/* Staged files (adhere merge) take their names only all at once: a commit
+ * that fails part way (a name that cannot be renamed over, here a
+ * directory put there while the merge wrote) keeps the earlier run's files
+ * it would have removed, and leaves no temporary. */
+static void test_staged_commit(void)
+{
+    char d[300], p[400], why[1200];
+    snprintf(d, sizeof d, "%s/staged", work);
+    adh_outdir *od = adh_outdir_open(d, ADH_OUTDIR_KEEP, why, sizeof why);
+    if (od) {
+        adh_outdir_stage(od);
+        adh_outdir_write(od, "sweep.tsv", write_text, "one\n", why, sizeof why);
+        adh_outdir_write(od, "map.png", write_text, "one\n", why, sizeof why);
+    }
+    int rc = od ? adh_outdir_commit(od, 1, why, sizeof why) : -1;
+    adh_outdir_close(od);
+    snprintf(p, sizeof p, "%s/map.png", d);
+    ok(rc == 0 && !strcmp(text_of(p), "one\n"), "a staged run committed: its files under their names (%s)",
+       rc ? why : "yes");
+    od = adh_outdir_open(d, ADH_OUTDIR_KEEP, why, sizeof why);
+    if (od) {
+        adh_outdir_stage(od);
+        adh_outdir_write(od, "sweep.tsv", write_text, "two\n", why, sizeof why);
+    }
+    snprintf(p, sizeof p, "%s/sweep.tsv", d);
+    unlink(p);
+    mkdir(p, 0777);   /* nothing is renamed over a directory */
+    rc = od ? adh_outdir_commit(od, 1, why, sizeof why) : 0;
+    adh_outdir_close(od);
+    snprintf(p, sizeof p, "%s/map.png", d);
+    ok(rc != 0 && !strcmp(text_of(p), "one\n") && hidden(d) == 0,
+       "a commit that fails keeps the earlier run's map.png it would have removed, no temporary (%s; %d hidden)",
+       rc ? why : "committed", hidden(d));
+}
+
 /* A file at a path the user names (:rows, :dump): a link there is
  * replaced, never written through. */
 static void test_outfile(void)
@@ -343,6 +378,7 @@ int main(void)
     test_owns();
     test_outdir();
     test_killed_writer();
+    test_staged_commit();
     test_outfile();
     if (!tap_failed) {
         char cmd[400];
