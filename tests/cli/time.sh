@@ -30,6 +30,12 @@ bad "spring k = 0 N/m is not allowed" --mode=static --spring=0
 bad "spring k = -1 N/m is not allowed: it must be from 0.001 to 10000 N/m, or none (displacement control, what a stiffer spring approaches)" --mode=static --spring=-1N/m
 # tau = 10 fs at 1 um/s (1e-20 m of travel) stopped the integrator: refused, the relaxed limit named
 bad "speed = 1e-20 m is below 1e-18 m: the solid relaxes before the drive moves a billionth of z0" visco --tau=1e-14
+bad "tau x speed = 9.9e-19 m is below 1e-18 m" visco --tau=0.99ps
+# at the limit (1 ps x 1 um/s, whose product rounds below 1e-18) is allowed, and runs
+"$ADHERE" --batch -q --no-plot visco -N 150 --force --tau=1ps -o "$TMP/taulim" 2>"$TMP/stderr"
+rc=$?
+check "tau x speed at the limit, 1 ps x 1 um/s: runs (exit $rc: $(grep -v 'warning: grid spacing' "$TMP/stderr" | head -c 300))" \
+    sh -c "[ $rc -eq 0 ] && grep -q '^status	unresolved' '$TMP/taulim/summary.tsv'"
 # 1e-12 N/m ran the static curve for minutes deaf to signals; 1e5 N/m stopped physical time
 bad "spring k = 1e-12 N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e-12N/m
 bad "spring k = 100000 N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e5N/m
