@@ -475,8 +475,15 @@ static void load(adh_outdir *d)
         return;
     }
     char line[256];
-    while (fgets(line, sizeof line, f))
+    while (fgets(line, sizeof line, f)) {
+        if (!strchr(line, '\n') && !feof(f)) {   /* longer than any of adhere's: none of its tail is read */
+            int c;
+            while ((c = getc(f)) != EOF && c != '\n')
+                ;
+            continue;
+        }
         parse_line(d, line);
+    }
     fclose(f);
 }
 
