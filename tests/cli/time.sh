@@ -52,6 +52,10 @@ bad "--spring is not allowed with --mode=rigid" --mode=rigid --spring=1N/m
 bad "--dwell=5 counts relaxation iterations: in physical time the hold at a turn is --dwell-time" --material=sls --dwell=5
 printf '[scene]\nmode = relax\n[sweep]\nspeed = 1um/s, 2um/s\n' >"$TMP/sw.scene"
 bad "sweep run 1 (speed = 1e-06): --speed is physical time's: --mode=relax steps the drive in eps-time" "$TMP/sw.scene"
+# speed sets the retraction speed too: swept after speed_out it undid its values (4 runs, two twice)
+bad "speed and speed_out both set the retraction speed (speed sets both ways): sweep one of them" visco --sweep=speed_out=3um/s,4um/s --sweep=speed=1um/s,2um/s
+printf '[material]\nmaterial = sls\n[sweep]\nspeed = 1um/s, 2um/s\nspeed_out = 3um/s\n' >"$TMP/speeds.scene"
+bad "speed and speed_out both set the retraction speed" "$TMP/speeds.scene"
 printf '[material]\nmaterial = sls\n[sweep]\neps = 1pm, 2pm\n' >"$TMP/eps.scene"
 bad "physical time has none" "$TMP/eps.scene"
 printf '[material]\nmaterial = sls\n[sweep]\nE = 1GPa, 2GPa\nplot = snap\n' >"$TMP/snap.scene"
