@@ -258,13 +258,16 @@ const adh_sweep_axis *adh_sweep_axis_of(const adh_sweep *s, const char *name)
     return NULL;
 }
 
-/* Whether a and b set the same value (sigma sets E; speed the retraction
- * speed too, so that one of two sweeps would be silently undone): why, or
- * NULL. */
+/* Whether a and b set the same value (sigma sets E, E0 is E; speed sets
+ * the retraction speed too), so that one of two sweeps would be silently
+ * undone: why, or NULL. */
 static const char *clash(const char *a, const char *b)
 {
     static const char *const pair[][3] = {
         { SIGMA, "material.E", "sigma and E both set the modulus (sigma by eq 17): sweep one of them" },
+        { SIGMA, "material.E0", "sigma and E0 both set the modulus (sigma by eq 17): sweep one of them" },
+        { "material.E", "material.E0", "E and E0 both set the modulus (E0 is a standard linear solid's E): sweep "
+          "one of them" },
         { "protocol.speed", "protocol.speed_out", "speed and speed_out both set the retraction speed (speed sets "
           "both ways): sweep one of them" },
     };

@@ -54,6 +54,9 @@ printf '[scene]\nmode = relax\n[sweep]\nspeed = 1um/s, 2um/s\n' >"$TMP/sw.scene"
 bad "sweep run 1 (speed = 1e-06): --speed is physical time's: --mode=relax steps the drive in eps-time" "$TMP/sw.scene"
 # speed sets the retraction speed too: swept after speed_out it undid its values (4 runs, two twice)
 bad "speed and speed_out both set the retraction speed (speed sets both ways): sweep one of them" visco --sweep=speed_out=3um/s,4um/s --sweep=speed=1um/s,2um/s
+# E0 is the modulus E and sigma set: swept with either, one undid the other's values
+bad "E and E0 both set the modulus" visco --sweep=E=1GPa,2GPa --sweep=E0=100MPa,200MPa
+bad "sigma and E0 both set the modulus" visco --sweep=E0=100MPa,200MPa --sweep=sigma=5,6
 printf '[material]\nmaterial = sls\n[sweep]\nspeed = 1um/s, 2um/s\nspeed_out = 3um/s\n' >"$TMP/speeds.scene"
 bad "speed and speed_out both set the retraction speed" "$TMP/speeds.scene"
 printf '[material]\nmaterial = sls\n[sweep]\neps = 1pm, 2pm\n' >"$TMP/eps.scene"
