@@ -35,7 +35,8 @@ typedef struct merge {
     cli_studyrow *rows;            /* the study's rows, those found done */
     int *from;                     /* the shard each run's row came from, -1 none */
     adh_outdir *out;
-    struct stat out_st;
+    struct stat out_st;            /* -o DIR, when it is there */
+    int out_known;
 } merge;
 
 /* "5, 8, 11-14, 20 and 3 more": runs (from 1) in a short list. */
@@ -95,7 +96,8 @@ static int open_shard(merge *m, size_t k, char *why, size_t whylen)
         return 2;
     }
     struct stat st;
-    int own = m->out && fstat(s->fd, &st) == 0 && st.st_dev == m->out_st.st_dev && st.st_ino == m->out_st.st_ino;
+    int own = m->out_known && fstat(s->fd, &st) == 0 && st.st_dev == m->out_st.st_dev &&
+              st.st_ino == m->out_st.st_ino;
     if (!own && flock(s->fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
         snprintf(why, whylen, "%.1000s is in use: its shard is still writing into it; merge when it has finished",
                  s->path);
@@ -254,7 +256,9 @@ static int missing(merge *m, char *partial, size_t plen, char *why, size_t whyle
 
 /* -o DIR: a directory of the merge's own (an earlier merge's files
  * replaced, by clear_out), or one of the shards' (an unsharded study's,
- * whose table is written again): opened and locked. 0, or 2 with why. */
+ * whose table is written again): opened and locked. 0, or 2 with why.
+ * Opened once the shards are found whole: --overwrite's removals there
+ * are for a merge that writes, not one refused. */
 static int open_out(merge *m, char *why, size_t whylen)
 {
     const adh_output_options *o = &m->cli->cfg.output;
@@ -297,18 +301,27 @@ static int commit_out(merge *m, int rc)
     return rc;
 }
 
-/* The output directory, when it holds a shard, is one of those named. */
+/* The output directory, when it holds a shard (a study.tsv or runs.tsv,
+ * adhere's or not: looked at before it is opened, so that --overwrite
+ * removes nothing there for a merge refused), is one of those named. */
 static int out_is_named(const merge *m, char *why, size_t whylen)
 {
-    if (!m->out || !(adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv")))
+    const char *dir = m->cli->cfg.output.dir;
+    int fd = m->out_known ? open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC) : -1;
+    struct stat st;
+    int held = fd >= 0 && (fstatat(fd, "study.tsv", &st, AT_SYMLINK_NOFOLLOW) == 0 ||
+                           fstatat(fd, "runs.tsv", &st, AT_SYMLINK_NOFOLLOW) == 0);
+    if (fd >= 0)
+        close(fd);
+    if (!held)
         return 0;
-    for (size_t k = 0; k < m->n; k++) {
-        struct stat st;
+    for (size_t k = 0; k < m->n; k++)
         if (fstat(m->sh[k].fd, &st) == 0 && st.st_dev == m->out_st.st_dev && st.st_ino == m->out_st.st_ino)
             return 0;
-    }
+    char shown[1024];
+    adh_outdir_escape(dir, shown, sizeof shown);
     snprintf(why, whylen, "-o %.1000s holds a shard of a study: merge into a directory of its own, or name it among "
-             "the shards", adh_outdir_path(m->out));
+             "the shards", shown);
     return 2;
 }
 
@@ -389,9 +402,11 @@ static int merge_run(cli_options *cli)
 {
     merge m = { .cli = cli, .n = cli->nmerge };
     char why[8192], partial[600] = "";
-    int rc = !(m.sh = calloc(m.n, sizeof *m.sh)) ? CLI_EXIT_SOLVER : open_out(&m, why, sizeof why);
+    int rc = !(m.sh = calloc(m.n, sizeof *m.sh)) ? CLI_EXIT_SOLVER : 0;
     for (size_t k = 0; m.sh && k < m.n; k++)
         m.sh[k].fd = -1;
+    /* a shard's directory that is -o too takes no shared lock: open_out locks it */
+    m.out_known = cli->cfg.output.dir[0] && stat(cli->cfg.output.dir, &m.out_st) == 0;
     for (size_t k = 0; rc == 0 && k < m.n; k++)
         rc = open_shard(&m, k, why, sizeof why);
     if (rc == 0)
@@ -412,6 +427,8 @@ static int merge_run(cli_options *cli)
     free(scratch);
     if (rc == 0)
         rc = missing(&m, partial, sizeof partial, why, sizeof why);
+    if (rc == 0)
+        rc = open_out(&m, why, sizeof why);
     if (rc != 0) {
         fprintf(stderr, "adhere merge: %s\n", why);
         merge_free(&m);

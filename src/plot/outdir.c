@@ -46,9 +46,11 @@ typedef struct staged {
 
 /* The entries by name: open addressing over their indices (+1; 0 empty),
  * a study's 10^5 run-K directories each found at once instead of among
- * all the others. Rebuilt when an entry is dropped (entries move). */
+ * all the others; the entries of one name (a manifest's repeated lines)
+ * chained from its slot, so that they cost no probes. Rebuilt when an
+ * entry is dropped (entries move). */
 typedef struct name_index {
-    size_t *slot;
+    size_t *slot;       /* nslot slots, then nslot / 2 links: an entry's next of its name (+1; 0 none) */
     size_t nslot;       /* a power of 2, at least twice the entries */
     int stale;
 } name_index;
@@ -224,12 +226,33 @@ static size_t name_hash(const char *name)
     return (size_t)h;
 }
 
+/* Whether a and b are one name but for a trailing '/'. */
+static int same_base(const char *a, const char *b)
+{
+    size_t na = strlen(a), nb = strlen(b);
+    na -= na && a[na - 1] == '/';
+    nb -= nb && b[nb - 1] == '/';
+    return na == nb && !memcmp(a, b, na);
+}
+
+/* The slot whose chain holds name's entries, or an empty one. */
+static size_t index_slot(const name_index *ix, const entry *e, const char *name)
+{
+    size_t k = name_hash(name) & (ix->nslot - 1);
+    while (ix->slot[k] && !same_base(e[ix->slot[k] - 1].name, name))
+        k = (k + 1) & (ix->nslot - 1);
+    return k;
+}
+
 static void index_put(name_index *ix, const entry *e, size_t i)
 {
-    size_t k = name_hash(e[i].name) & (ix->nslot - 1);
-    while (ix->slot[k])
-        k = (k + 1) & (ix->nslot - 1);
-    ix->slot[k] = i + 1;
+    size_t *next = ix->slot + ix->nslot;
+    size_t k = index_slot(ix, e, e[i].name), head = ix->slot[k];
+    next[i] = head ? next[head - 1] : 0;
+    if (head)
+        next[head - 1] = i + 1;
+    else
+        ix->slot[k] = i + 1;
 }
 
 /* d's index made anew for its entries: 0, or -1 (no memory: find searches
@@ -241,7 +264,7 @@ static int index_build(const adh_outdir *d)
     while (want < 2 * d->n + 2)
         want *= 2;
     if (want != ix->nslot) {
-        size_t *slot = realloc(ix->slot, want * sizeof *slot);
+        size_t *slot = realloc(ix->slot, (want + want / 2) * sizeof *slot);
         if (!slot)
             return -1;
         ix->slot = slot, ix->nslot = want;
@@ -329,8 +352,9 @@ static long find(const adh_outdir *d, const char *name, const struct stat *st)
                 return (long)i;
         return -1;
     }
-    for (size_t k = name_hash(name) & (ix->nslot - 1); ix->slot[k]; k = (k + 1) & (ix->nslot - 1)) {
-        size_t i = ix->slot[k] - 1;
+    const size_t *next = ix->slot + ix->nslot;
+    for (size_t c = ix->slot[index_slot(ix, d->e, name)]; c; c = next[c - 1]) {
+        size_t i = c - 1;
         if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(&d->e[i], st))
             return (long)i;
     }
@@ -451,8 +475,15 @@ static void load(adh_outdir *d)
         return;
     }
     char line[256];
-    while (fgets(line, sizeof line, f))
+    while (fgets(line, sizeof line, f)) {
+        if (!strchr(line, '\n') && !feof(f)) {   /* longer than any of adhere's: none of its tail is read */
+            int c;
+            while ((c = getc(f)) != EOF && c != '\n')
+                ;
+            continue;
+        }
         parse_line(d, line);
+    }
     fclose(f);
 }
 
@@ -982,27 +1013,30 @@ static void clear_unstaged(adh_outdir *d)
 
 int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen)
 {
-    if (replace)
-        clear_unstaged(d);
     int e = 0;
-    const char *failed = "";
-    while (d->nst && !e) {
-        staged *s = &d->st[0];
+    size_t done = 0;
+    for (; done < d->nst; done++) {
+        staged *s = &d->st[done];
         struct stat st, now;
         /* as adh_outdir_write records it: before the rename and after */
         if (fstatat(d->fd, s->tmp, &st, AT_SYMLINK_NOFOLLOW) != 0 || add_entry(d, s->name, &st, 0) != 0 ||
             save(d) != 0 || renameat(d->fd, s->tmp, d->fd, s->name) != 0) {
             e = errno ? errno : ENOMEM;
-            failed = s->name;
+            snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, s->name, strerror(e));
             break;
         }
         if (fstatat(d->fd, s->name, &now, AT_SYMLINK_NOFOLLOW) == 0 && now.st_ino == st.st_ino)
             add_entry(d, s->name, &now, 0);
         keep_newest(d, s->name, s->tmp);
-        *s = d->st[--d->nst];
     }
-    if (e)
-        snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, failed, strerror(e));
+    /* the earlier files go only once every new one is in place: a commit
+     * that fails part way removes none of them */
+    if (!e && replace)
+        clear_unstaged(d);
+    if (done) {   /* the committed leave the staged list */
+        memmove(d->st, d->st + done, (d->nst - done) * sizeof *d->st);
+        d->nst -= done;
+    }
     adh_outdir_abandon(d);   /* what a failure left, and the mode */
     save(d);
     return e ? -1 : 0;

@@ -258,10 +258,23 @@ const adh_sweep_axis *adh_sweep_axis_of(const adh_sweep *s, const char *name)
     return NULL;
 }
 
-/* Whether a and b set the same value: sigma sets E. */
-static int clash(const char *a, const char *b)
+/* Whether a and b set the same value (sigma sets E, E0 is E; speed sets
+ * the retraction speed too), so that one of two sweeps would be silently
+ * undone: why, or NULL. */
+static const char *clash(const char *a, const char *b)
 {
-    return (!strcmp(a, SIGMA) && !strcmp(b, "material.E")) || (!strcmp(b, SIGMA) && !strcmp(a, "material.E"));
+    static const char *const pair[][3] = {
+        { SIGMA, "material.E", "sigma and E both set the modulus (sigma by eq 17): sweep one of them" },
+        { SIGMA, "material.E0", "sigma and E0 both set the modulus (sigma by eq 17): sweep one of them" },
+        { "material.E", "material.E0", "E and E0 both set the modulus (E0 is a standard linear solid's E): sweep "
+          "one of them" },
+        { "protocol.speed", "protocol.speed_out", "speed and speed_out both set the retraction speed (speed sets "
+          "both ways): sweep one of them" },
+    };
+    for (size_t i = 0; i < sizeof pair / sizeof pair[0]; i++)
+        if ((!strcmp(a, pair[i][0]) && !strcmp(b, pair[i][1])) || (!strcmp(b, pair[i][0]) && !strcmp(a, pair[i][1])))
+            return pair[i][2];
+    return NULL;
 }
 
 int adh_sweep_set(adh_config *c, const char *name, const char *text, char *why, size_t whylen)
@@ -278,7 +291,7 @@ int adh_sweep_set(adh_config *c, const char *name, const char *text, char *why, 
         if (!strcmp(s->axis[i].key, a->key))
             at = i;
         else if (clash(s->axis[i].key, a->key) && strcasecmp(text, "none") != 0) {
-            snprintf(why, whylen, "sigma and E both set the modulus (sigma by eq 17): sweep one of them");
+            snprintf(why, whylen, "%s", clash(s->axis[i].key, a->key));
             rc = -1;
         }
     }

@@ -3,6 +3,7 @@
  * viscoelastic rule's settings made from them, and what a mode cannot use. */
 #include "scene/config.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -113,7 +114,8 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
         /* below 1e-18 m the integrator stopped (1e-20 m did: tau = 10 fs at
          * 1 um/s), and the answer is the relaxed limit long before */
         double travel = v.sls.tau * fmin(v.drive.speed_in, v.drive.speed_out);
-        if (t->sls && travel < 1e-18)
+        /* at the limit to the product's rounding (1 ps x 1 um/s) is at it, not below */
+        if (t->sls && travel < 1e-18 * (1 - 4 * DBL_EPSILON))
             BAD("material.tau x speed = %g m is below 1e-18 m: the solid relaxes before the drive moves a billionth "
                 "of z0; material.material = elastic at E = E0 is that limit", travel);
     }

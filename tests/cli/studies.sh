@@ -157,6 +157,13 @@ $M -o "$TMP/m3" "$TMP/shard1" "$TMP/other" 2>/dev/null
 rc=$?
 check "a refused merge into an earlier merge's directory (exit $rc) leaves its table" \
     sh -c "[ $rc -eq 2 ] && grep -q '^# PARTIAL: 12 of 16' '$TMP/m3/sweep.tsv'"
+# --overwrite replaces the user's files under adhere's names with the
+# merge's: a merge refused writes nothing, so removes none of them
+mkdir "$TMP/mine" && echo mine >"$TMP/mine/map.png"
+$M --overwrite -o "$TMP/mine" "$TMP/shard1" "$TMP/shard2" 2>"$TMP/err"
+rc=$?
+check "a refused merge with --overwrite (exit $rc) leaves the user's map.png in -o" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'runs 9-12' '$TMP/err' && [ \"\$(cat '$TMP/mine/map.png')\" = mine ]"
 "$ADHERE" $TINY -q "$TMP/map.scene" --shard 2/4 -o "$TMP/split4" 2>/dev/null
 $M -o "$TMP/m5" "$TMP/shard1" "$TMP/split4" 2>"$TMP/err"
 check "shards of another split: exit 2 ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'shard 1/3.*shard 2/4' '$TMP/err'"

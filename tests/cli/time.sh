@@ -30,6 +30,12 @@ bad "spring k = 0 N/m is not allowed" --mode=static --spring=0
 bad "spring k = -1 N/m is not allowed: it must be from 0.001 to 10000 N/m, or none (displacement control, what a stiffer spring approaches)" --mode=static --spring=-1N/m
 # tau = 10 fs at 1 um/s (1e-20 m of travel) stopped the integrator: refused, the relaxed limit named
 bad "speed = 1e-20 m is below 1e-18 m: the solid relaxes before the drive moves a billionth of z0" visco --tau=1e-14
+bad "tau x speed = 9.9e-19 m is below 1e-18 m" visco --tau=0.99ps
+# at the limit (1 ps x 1 um/s, whose product rounds below 1e-18) is allowed, and runs
+"$ADHERE" --batch -q --no-plot visco -N 150 --force --tau=1ps -o "$TMP/taulim" 2>"$TMP/stderr"
+rc=$?
+check "tau x speed at the limit, 1 ps x 1 um/s: runs (exit $rc: $(grep -v 'warning: grid spacing' "$TMP/stderr" | head -c 300))" \
+    sh -c "[ $rc -eq 0 ] && grep -q '^status	unresolved' '$TMP/taulim/summary.tsv'"
 # 1e-12 N/m ran the static curve for minutes deaf to signals; 1e5 N/m stopped physical time
 bad "spring k = 1e-12 N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e-12N/m
 bad "spring k = 100000 N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e5N/m
@@ -46,6 +52,13 @@ bad "--spring is not allowed with --mode=rigid" --mode=rigid --spring=1N/m
 bad "--dwell=5 counts relaxation iterations: in physical time the hold at a turn is --dwell-time" --material=sls --dwell=5
 printf '[scene]\nmode = relax\n[sweep]\nspeed = 1um/s, 2um/s\n' >"$TMP/sw.scene"
 bad "sweep run 1 (speed = 1e-06): --speed is physical time's: --mode=relax steps the drive in eps-time" "$TMP/sw.scene"
+# speed sets the retraction speed too: swept after speed_out it undid its values (4 runs, two twice)
+bad "speed and speed_out both set the retraction speed (speed sets both ways): sweep one of them" visco --sweep=speed_out=3um/s,4um/s --sweep=speed=1um/s,2um/s
+# E0 is the modulus E and sigma set: swept with either, one undid the other's values
+bad "E and E0 both set the modulus" visco --sweep=E=1GPa,2GPa --sweep=E0=100MPa,200MPa
+bad "sigma and E0 both set the modulus" visco --sweep=E0=100MPa,200MPa --sweep=sigma=5,6
+printf '[material]\nmaterial = sls\n[sweep]\nspeed = 1um/s, 2um/s\nspeed_out = 3um/s\n' >"$TMP/speeds.scene"
+bad "speed and speed_out both set the retraction speed" "$TMP/speeds.scene"
 printf '[material]\nmaterial = sls\n[sweep]\neps = 1pm, 2pm\n' >"$TMP/eps.scene"
 bad "physical time has none" "$TMP/eps.scene"
 printf '[material]\nmaterial = sls\n[sweep]\nE = 1GPa, 2GPa\nplot = snap\n' >"$TMP/snap.scene"

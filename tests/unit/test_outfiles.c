@@ -316,6 +316,68 @@ static void test_killed_writer(void)
     adh_outdir_close(od);
 }
 
+/* Staged files (adhere merge) take their names only all at once: a commit
+ * that fails part way (a name that cannot be renamed over, here a
+ * directory put there while the merge wrote) keeps the earlier run's files
+ * it would have removed, and leaves no temporary. */
+static void test_staged_commit(void)
+{
+    char d[300], p[400], why[1200];
+    snprintf(d, sizeof d, "%s/staged", work);
+    adh_outdir *od = adh_outdir_open(d, ADH_OUTDIR_KEEP, why, sizeof why);
+    if (od) {
+        adh_outdir_stage(od);
+        adh_outdir_write(od, "sweep.tsv", write_text, "one\n", why, sizeof why);
+        adh_outdir_write(od, "map.png", write_text, "one\n", why, sizeof why);
+    }
+    int rc = od ? adh_outdir_commit(od, 1, why, sizeof why) : -1;
+    adh_outdir_close(od);
+    snprintf(p, sizeof p, "%s/map.png", d);
+    ok(rc == 0 && !strcmp(text_of(p), "one\n"), "a staged run committed: its files under their names (%s)",
+       rc ? why : "yes");
+    od = adh_outdir_open(d, ADH_OUTDIR_KEEP, why, sizeof why);
+    if (od) {
+        adh_outdir_stage(od);
+        adh_outdir_write(od, "sweep.tsv", write_text, "two\n", why, sizeof why);
+    }
+    snprintf(p, sizeof p, "%s/sweep.tsv", d);
+    unlink(p);
+    mkdir(p, 0777);   /* nothing is renamed over a directory */
+    rc = od ? adh_outdir_commit(od, 1, why, sizeof why) : 0;
+    adh_outdir_close(od);
+    snprintf(p, sizeof p, "%s/map.png", d);
+    ok(rc != 0 && !strcmp(text_of(p), "one\n") && hidden(d) == 0,
+       "a commit that fails keeps the earlier run's map.png it would have removed, no temporary (%s; %d hidden)",
+       rc ? why : "committed", hidden(d));
+}
+
+/* A manifest line longer than any adhere writes is not read, its tail
+ * neither: a user's force.tsv whose record ends a long comment line is not
+ * taken for adhere's (and removed). */
+static void test_long_line(void)
+{
+    char d[300], p[400], why[1200];
+    snprintf(d, sizeof d, "%s/longline", work);
+    mkdir(d, 0777);
+    put_text(d, "force.tsv", "mine\n");
+    snprintf(p, sizeof p, "%s/force.tsv", d);
+    struct stat st;
+    stat(p, &st);
+    char rec[200];
+    snprintf(rec, sizeof rec, "force.tsv\t%llu\t%llu\t%lld\t%lld.%09ld\t%lld.%09ld\n", (unsigned long long)st.st_dev,
+             (unsigned long long)st.st_ino, (long long)st.st_size, (long long)st.st_mtim.tv_sec, st.st_mtim.tv_nsec,
+             (long long)st.st_ctim.tv_sec, st.st_ctim.tv_nsec);
+    char text[1000];   /* the record from byte 255 on: the line's tail as fgets reads 255 bytes at a time */
+    memset(text, '.', 255);
+    text[0] = '#';
+    snprintf(text + 255, sizeof text - 255, "%s", rec);
+    put_text(d, ADH_OUTDIR_MANIFEST, text);
+    adh_outdir *od = adh_outdir_open(d, 0, why, sizeof why);
+    ok(!od && !strcmp(text_of(p), "mine\n"), "a record at the end of a %zu-byte line is not read: the user's force.tsv "
+       "stays (%s)", strlen(text), od ? "opened" : why);
+    adh_outdir_close(od);
+}
+
 /* A file at a path the user names (:rows, :dump): a link there is
  * replaced, never written through. */
 static void test_outfile(void)
@@ -343,6 +405,8 @@ int main(void)
     test_owns();
     test_outdir();
     test_killed_writer();
+    test_staged_commit();
+    test_long_line();
     test_outfile();
     if (!tap_failed) {
         char cmd[400];
