@@ -148,7 +148,7 @@ typedef struct adh_visco_result {
     double pulloff_h0, pulloff_t, pulloff_base;
     double jump_out_h0;    /* where the contact was lost on that unloading; NAN if never */
     double jump_out_t, jump_out_base;
-    double hysteresis;     /* the base's net work over that cycle (loading to the
+    double hysteresis;     /* NAN until that cycle closes; then the base's net work over it (loading to the
                               turn, dwell, unloading back to the start), J */
     adh_visco_energy cycle; /* that cycle's accounts */
     double time;           /* physical time at the end (or now), s */

@@ -51,6 +51,9 @@ size_t cli_time_keys(const cli_time_out *o, cli_tables_extra *x)
 {
     const adh_visco_result *r = &o->res;
     const adh_visco_energy *c = &r->cycle;
+    /* the cycle's accounts exist once it closed: a run stopped before
+     * says nan, not the zeros they start from */
+    int closed = !isnan(r->hysteresis);
     const cli_tables_extra v[] = {
         { "E0", o->vs.sls.E0 },
         { "Einf", o->vs.sls.Einf },
@@ -66,9 +69,9 @@ size_t cli_time_keys(const cli_time_out *o, cli_tables_extra *x)
         { "jump_out_t", r->jump_out_t },
         { "jump_out_base", r->jump_out_base },
         { "hysteresis", r->hysteresis },
-        { "dissipated", c->dissipated },
-        { "jump_loss", c->jumps },
-        { "stored_change", c->stored - c->stored0 },
+        { "dissipated", closed ? c->dissipated : NAN },
+        { "jump_loss", closed ? c->jumps : NAN },
+        { "stored_change", closed ? c->stored - c->stored0 : NAN },
         { "time", r->time },
         { "time_steps", (double)r->steps },
         { "jumps", (double)r->jumps },

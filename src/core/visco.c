@@ -436,6 +436,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     w->res.jump_in_h0 = w->res.jump_out_h0 = w->res.pulloff_F = NAN;
     w->res.jump_in_t = w->res.jump_in_base = w->res.jump_out_t = w->res.jump_out_base = NAN;
     w->res.pulloff_h0 = w->res.pulloff_t = w->res.pulloff_base = NAN;
+    w->res.hysteresis = NAN;   /* until the deepest turn's cycle closes (close_cycle) */
     w->started = w->first_pending = w->finishing = 0;
     w->done = 1;
     w->s_now = 0;

@@ -191,4 +191,10 @@ check "its rows: tau slowest, speed both ways, events.tsv in every run" sh -c \
     "[ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' tau | tr '\n' ' ')\" = '0.001 0.001 9.9999999999999995e-07 9.9999999999999995e-07 ' ] && [ \"\$(sh '$TMP/tsvcol' '$d/sweep.tsv' speed_out | tr '\n' ' ')\" = '9.9999999999999995e-07 9.9999999999999991e-06 9.9999999999999995e-07 9.9999999999999991e-06 ' ] && [ -s '$d/run-4/events.tsv' ]"
 check "tau = 1 ms: 10 um/s pulls off harder than 1 um/s; tau = 1 us: within 1 % (speed x tau far below z0, the relaxed limit)" sh -c \
     "sh '$TMP/tsvcol' '$d/sweep.tsv' pulloff_F | awk '{p[NR] = -\$1} END {exit !(NR == 4 && p[2] > 1.05 * p[1] && p[4] < 1.01 * p[3] && p[3] < 1.01 * p[4])}'"
+# a run with no cycle (approach only) has no cycle's accounts: nan, not the
+# zeros they start from
+printf '[material]\nmaterial = sls\nE0 = 300MPa\nEinf = 3GPa\ntau = 1ms\n[protocol]\nturns = none\n' >"$TMP/nocycle.scene"
+"$ADHERE" -b -q -N 100 --force --no-plot "$TMP/nocycle.scene" -o "$TMP/nocycle" 2>/dev/null
+check "approach only in physical time: hysteresis, dissipated, jump_loss and stored_change are nan" sh -c \
+    "[ \"\$(awk -F'\t' '\$1 ~ /^(hysteresis|dissipated|jump_loss|stored_change)\$/ {print \$2}' '$TMP/nocycle/summary.tsv' | tr '\n' ' ')\" = 'nan nan nan nan ' ]"
 done_testing
