@@ -181,6 +181,9 @@ double adh_visco_force(const adh_visco *w, double h0);
 double adh_visco_tail(const adh_visco *w, double h0, double *slope);
 /* out = W x (the kernel's product) */
 void adh_visco_apply(adh_visco *w, const double *x, double *out);
+/* The preconditioners' q part (cross and flow alike): z_q = r_q / cj, and
+ * w->tmp2 = W z_q (zero when c_del is) */
+void adh_visco_psolve_q(adh_visco *w, const double *r, double *z);
 /* dF/ds at y, y' (h and p' at y computed here, w's buffers untouched) */
 double adh_visco_force_rate(const adh_visco *w, const double *y, const double *d);
 

@@ -106,12 +106,7 @@ void adh_visco_cross_psolve(adh_visco *w, const double *r, double *z)
     size_t n = w->n;
     double cj = w->p_cj, gP, sc, wP, xi[1] = { 0 }, rxi[1];
     size_t P = param(w, &gP, &sc, &wP);
-    for (size_t i = 0; i < n; i++)
-        z[w->IQ + i] = r[w->IQ + i] / cj;
-    if (w->cdel > 0)
-        adh_visco_apply(w, z + w->IQ, w->tmp2);
-    else
-        memset(w->tmp2, 0, n * sizeof *w->tmp2);
+    adh_visco_psolve_q(w, r, z);
     for (size_t i = 0; i < n; i++)
         w->tmp[i] = r[i] - w->cdel * w->tmp2[i];
     if (w->spring)

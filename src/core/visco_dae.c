@@ -73,6 +73,17 @@ void adh_visco_apply(adh_visco *w, const double *x, double *out)
     adh_kernel_apply(w->k, x, out, w->scratch);
 }
 
+void adh_visco_psolve_q(adh_visco *w, const double *r, double *z)
+{
+    size_t n = w->n;
+    for (size_t i = 0; i < n; i++)
+        z[w->IQ + i] = r[w->IQ + i] / w->p_cj;
+    if (w->cdel > 0)
+        adh_visco_apply(w, z + w->IQ, w->tmp2);
+    else
+        memset(w->tmp2, 0, n * sizeof *w->tmp2);
+}
+
 static int res(realtype s, N_Vector yy, N_Vector yp, N_Vector rr, void *data)
 {
     adh_visco *w = data;

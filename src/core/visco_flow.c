@@ -93,12 +93,7 @@ void adh_visco_flow_psolve(adh_visco *w, const double *r, double *z)
 {
     size_t n = w->n;
     double cj = w->p_cj, dt = r[w->IT] / cj, bdot = w->seg.bdot, xi[1] = { 0 }, rxi[1] = { 0 };
-    for (size_t i = 0; i < n; i++)
-        z[w->IQ + i] = r[w->IQ + i] / cj;
-    if (w->cdel > 0)
-        adh_visco_apply(w, z + w->IQ, w->tmp2);
-    else
-        memset(w->tmp2, 0, n * sizeof *w->tmp2);
+    adh_visco_psolve_q(w, r, z);
     for (size_t i = 0; i < n; i++)
         w->tmp[i] = (r[i] - w->cdel * w->tmp2[i] - (w->spring ? 0 : w->cinf * bdot * dt * w->WD[i])) / (1.0 + cj);
     if (w->spring)

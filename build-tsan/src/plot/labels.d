@@ -1,2 +1,0 @@
-build-tsan/src/plot/labels.o: src/plot/labels.c src/plot/labels.h
-src/plot/labels.h:

@@ -1,2 +1,0 @@
-build-tsan/src/scene/datadir.o: src/scene/datadir.c src/scene/datadir.h
-src/scene/datadir.h:

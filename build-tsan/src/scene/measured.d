@@ -1,4 +1,0 @@
-build-tsan/src/scene/measured.o: src/scene/measured.c \
- include/adhere/units.h src/scene/measured.h
-include/adhere/units.h:
-src/scene/measured.h:

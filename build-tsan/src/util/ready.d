@@ -1,2 +1,0 @@
-build-tsan/src/util/ready.o: src/util/ready.c src/util/ready.h
-src/util/ready.h:
