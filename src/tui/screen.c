@@ -315,6 +315,22 @@ static void draw_point_rows(const adh_obs *o, int rigid_ref, const tui_view *v, 
 
 /* Static mode: the point shown, its stability, and what the curve computed
  * so far says (folds, jumps, pull-offs). */
+
+/* A stopped solve ("the WHAT stopped: why") or the grid's warning, wrapped
+ * in bold at y: 1 when one was shown. */
+static int put_stopped(const tui_sim *s, int y, int x, int w, const char *what)
+{
+    char msg[600];
+    int stopped = s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS;
+    if (stopped)
+        snprintf(msg, sizeof msg, "! the %s stopped: %s (x starts it again)", what, adh_strerror(s->cstatus));
+    else if (s->gridwarn[0])
+        snprintf(msg, sizeof msg, "! %s", s->gridwarn);
+    else
+        return 0;
+    put_wrapped(y, x, w, stopped ? 2 : 4, A_BOLD, msg);
+    return 1;
+}
 static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
 {
     const adh_obs *o = tui_sim_row(s);
@@ -364,15 +380,7 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
             put(y + 8, x, w, A_NORMAL, "  pull-off %s; F at the jump-out %s", a, b);
     }
     put(y + 9, x, w, A_NORMAL, "  mode   static (m: relaxation), %s", v->activity);
-    if (s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS) {
-        char msg[300];
-        snprintf(msg, sizeof msg, "! the curve stopped: %s (x starts it again)", adh_strerror(s->cstatus));
-        put_wrapped(y + 10, x + 2, w - 2, 2, A_BOLD, msg);
-    } else if (s->gridwarn[0]) {
-        char msg[600];
-        snprintf(msg, sizeof msg, "! %s", s->gridwarn);
-        put_wrapped(y + 10, x + 2, w - 2, 4, A_BOLD, msg);
-    } else if (o) {
+    if (!put_stopped(s, y + 10, x + 2, w - 2, "curve") && o) {
         q(tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
         put(y + 10, x, w, A_NORMAL, "  curve  %s at h0 = %s", s->cstatus == ADH_SUCCESS ? "complete, ends" : "goes on to its end", b);
     }
@@ -423,17 +431,8 @@ static void draw_time_state(const tui_sim *s, const tui_view *v, int y, int x, i
         r->hysteresis > 0 ? adh_qtext(r->hysteresis, ADH_Q_WORK).s : "not yet");
     put(y + 8, x, w, A_NORMAL, "  steps  %zu Newton iterations on this one", o->iters);
     put(y + 9, x, w, A_NORMAL, "  mode   physical time, %s", v->activity);
-    if (s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS) {
-        char msg[300];
-        snprintf(msg, sizeof msg, "! the run stopped: %s (x starts it again)", adh_strerror(s->cstatus));
-        put_wrapped(y + 10, x + 2, w - 2, 2, A_BOLD, msg);
-    } else if (s->gridwarn[0]) {
-        char msg[600];
-        snprintf(msg, sizeof msg, "! %s", s->gridwarn);
-        put_wrapped(y + 10, x + 2, w - 2, 4, A_BOLD, msg);
-    } else if (s->cstatus == ADH_SUCCESS && !tui_sim_redoable(s)) {
+    if (!put_stopped(s, y + 10, x + 2, w - 2, "run") && s->cstatus == ADH_SUCCESS && !tui_sim_redoable(s))
         put(y + 10, x, w, A_NORMAL, "  cycle  complete");
-    }
 }
 
 static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
