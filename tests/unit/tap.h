@@ -87,6 +87,18 @@ static inline double tap_maxrel(const double *a, const double *b, size_t n)
     return e / s;
 }
 
+/* The test's scratch directory removed when every check passed (kept for
+ * a look when one failed). */
+static inline void tap_remove_dir(const char *dir)
+{
+    if (tap_failed)
+        return;
+    char cmd[400];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    if (system(cmd) != 0)
+        printf("# could not remove %s\n", dir);
+}
+
 static inline int tap_done(void)
 {
     printf("1..%d\n", tap_n);

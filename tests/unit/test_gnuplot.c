@@ -675,9 +675,6 @@ int main(void)
     test_process();
     test_death_and_hang();
     test_plots();
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);
-    if (!tap_failed && system(cmd) != 0)
-        printf("# could not remove %s\n", work);
+    tap_remove_dir(work);
     return tap_done();
 }

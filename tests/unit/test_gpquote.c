@@ -208,11 +208,7 @@ int main(void)
     test_paths(gp);
     adh_gnuplot_close(gp);
     close(log);
-    if (chdir("/") == 0 && !tap_failed) {
-        char cmd[400];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);
-        if (system(cmd) != 0)
-            printf("# could not remove %s\n", work);
-    }
+    if (chdir("/") == 0)
+        tap_remove_dir(work);
     return tap_done();
 }

@@ -134,11 +134,6 @@ int main(void)
     ok(t_dup_open < 4 * t_big_open, "it opens in %.2f times the time of %d names once each (%.3f s, %.3f s)",
        t_dup_open / t_big_open, LISTED, t_dup_open, t_big_open);
     adh_outdir_close(d);
-    if (!tap_failed) {
-        char cmd[400];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);
-        if (system(cmd) != 0)
-            printf("# could not remove %s\n", work);
-    }
+    tap_remove_dir(work);
     return tap_done();
 }

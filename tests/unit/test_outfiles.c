@@ -408,11 +408,6 @@ int main(void)
     test_staged_commit();
     test_long_line();
     test_outfile();
-    if (!tap_failed) {
-        char cmd[400];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);
-        if (system(cmd) != 0)
-            printf("# could not remove %s\n", work);
-    }
+    tap_remove_dir(work);
     return tap_done();
 }
