@@ -157,7 +157,7 @@ static int batch_build(batch_job *j)
     if (!j->rigid) {
         char why[1024];
         adh_grid_report gr;
-        adh_grid_check(&spec->mat, adh_config_grid_use(spec), spec->grid.use.nodes, adh_config_spacing(spec), &gr);
+        adh_config_grid_report(spec, &gr);
         if (!gr.resolved) {
             adh_grid_unresolved_sentence(&gr, why, sizeof why);
             fprintf(stderr, "adhere: warning: %s (--force; summary.tsv: resolved 0)\n", why);

@@ -131,7 +131,7 @@ static void fill_spec(cli_studyrow *row, const adh_run_spec *rc)
     v[CLI_ROW_SPACING] = dr;
     v[CLI_ROW_RMAX] = rc->grid.use.graded ? adh_config_rings(rc).rmax : (double)rc->grid.use.nodes * dr;
     adh_grid_report gr;
-    adh_grid_check(&rc->mat, adh_config_grid_use(rc), rc->grid.use.nodes, dr, &gr);
+    adh_config_grid_report(rc, &gr);
     v[CLI_ROW_EDGE_NODES] = rigid ? NAN : gr.edge_nodes;
     v[CLI_ROW_RESOLVED] = rigid || gr.resolved ? 1 : 0;
     snprintf(row->grid, sizeof row->grid, "%s", rc->grid.use.graded ? "graded" : "uniform");

@@ -619,7 +619,7 @@ static void warn_unresolved(const study_job *job)
             if (rc.mode == ADH_MODE_RIGID || job->rows[members[j]].done)
                 continue;
             adh_grid_report gr;
-            adh_grid_check(&rc.mat, adh_config_grid_use(&rc), rc.grid.use.nodes, adh_config_spacing(&rc), &gr);
+            adh_config_grid_report(&rc, &gr);
             if (gr.resolved)
                 continue;
             if (said++ >= 10) {

@@ -94,7 +94,7 @@ static int contact_fault(const adh_run_spec *c, const adh_run *r, char *why, siz
 static int grid_resolved(const adh_run_spec *c)
 {
     adh_grid_report gr;
-    adh_grid_check(&c->mat, adh_config_grid_use(c), c->grid.use.nodes, adh_config_spacing(c), &gr);
+    adh_config_grid_report(c, &gr);
     return c->mode == ADH_MODE_RIGID || gr.resolved;
 }
 
@@ -188,7 +188,7 @@ int cli_tables_summary(FILE *f, const void *ctx)
      * share of the starting force from beyond Rmax (the analytic tail) */
     int rigid = c->mode == ADH_MODE_RIGID;
     adh_grid_report gr;
-    adh_grid_check(&c->mat, adh_config_grid_use(c), c->grid.use.nodes, adh_config_spacing(c), &gr);
+    adh_config_grid_report(c, &gr);
     kv(f, "edge_nodes", rigid ? NAN : gr.edge_nodes);
     kv(f, "rmax_force_fraction", rigid || r->nrows == 0 ? NAN : r->rows[0].F_tail / r->rows[0].F);
     kv(f, "resolved", rigid || gr.resolved ? 1 : 0);

@@ -94,6 +94,11 @@ adh_grid_use adh_config_grid_use(const adh_run_spec *s)
     return s->mode == ADH_MODE_STATIC || s->mode == ADH_MODE_TIME ? ADH_GRID_STATIC : ADH_GRID_RELAX;
 }
 
+void adh_config_grid_report(const adh_run_spec *s, adh_grid_report *r)
+{
+    adh_grid_check(&s->mat, adh_config_grid_use(s), s->grid.use.nodes, adh_config_spacing(s), r);
+}
+
 /* The choice for the softest run: N and the spacing, and graded rings with
  * their band, growth, radius and operator where a uniform grid would need
  * too many nodes. What was asked for a graded grid is kept. */

@@ -284,6 +284,10 @@ size_t adh_config_nodes(const adh_run_spec *s);
 double adh_config_spacing(const adh_run_spec *s);
 /* The resolution limit that applies: the static curve's in mode = static. */
 adh_grid_use adh_config_grid_use(const adh_run_spec *s);
+/* How the grid in use (s->grid.use) resolves the contact edge under the
+ * limit that applies (adh_grid_check): one question asked by every driver
+ * and table. */
+void adh_config_grid_report(const adh_run_spec *s, adh_grid_report *r);
 
 /* Whether the grid follows the material: neither N nor the spacing was
  * given (and the spheres deform). */
