@@ -116,6 +116,26 @@ static int open_shard(merge *m, size_t k, char *why, size_t whylen)
 
 static int one_each(const merge *m, char *why, size_t whylen);
 
+/* Every shard computed by one build (one numerics id): rows of different
+ * numerics are never joined, and a shard that records no id (a study.tsv
+ * from before adhere recorded one) is joined with no other, as nothing
+ * says which build computed it. 0, or 2 with why. */
+static int same_numerics(const merge *m, char *why, size_t whylen)
+{
+    for (size_t k = 1; k < m->n; k++) {
+        const cli_study *a = &m->sh[0].st, *b = &m->sh[k].st;
+        if (a->numerics[0] && !strcmp(a->numerics, b->numerics))
+            continue;
+        snprintf(why, whylen, "%.900s (numerics %s) and %.900s (numerics %s) were not computed by one build of "
+                 "adhere: rows of different numerics are not joined; rerun %s with one adhere (this one's numerics "
+                 "are %s)", m->sh[0].path, cli_study_numerics_shown(a->numerics), m->sh[k].path,
+                 cli_study_numerics_shown(b->numerics), m->n > 2 ? "the shards" : "both shards",
+                 cli_study_numerics());
+        return 2;
+    }
+    return 0;
+}
+
 /* Every shard of one study, one split, each shard once. 0, or 2 with why. */
 static int same_study(const merge *m, char *why, size_t whylen)
 {
@@ -136,7 +156,7 @@ static int same_study(const merge *m, char *why, size_t whylen)
             return 2;
         }
     }
-    return one_each(m, why, whylen);
+    return same_numerics(m, why, whylen) ? 2 : one_each(m, why, whylen);
 }
 
 /* Each shard K/N in one directory: two directories that both say they hold
@@ -206,6 +226,22 @@ static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
     }
     free(dup);
     return ndup ? 2 : 0;
+}
+
+/* An eps study's Figure 7 line (the static curve's loop, and sweep.tsv's
+ * # static_hysteresis) is computed by the merge itself: by this build,
+ * then, only for shards of its own numerics, or its number would sit
+ * among another build's. 0, or 2 with why. */
+static int own_numerics(const merge *m, const char *partial, char *why, size_t whylen)
+{
+    const cli_study *st = &m->sh[0].st;
+    if (!adh_sweep_fig7_panel(m->sh[0].cfg) || !m->cli->cfg.output.plot || *partial ||
+        !strcmp(st->numerics, cli_study_numerics()))
+        return 0;
+    snprintf(why, whylen, "the shards' eps study draws Figure 7's static line, which the merge computes: this adhere's "
+             "numerics (%s) are not the shards' (%s); merge with the adhere that ran them, or --no-plot for the "
+             "table alone", cli_study_numerics(), cli_study_numerics_shown(st->numerics));
+    return 2;
 }
 
 /* Runs without a result: refused (listed) unless --allow-partial, which
@@ -427,6 +463,8 @@ static int merge_run(cli_options *cli)
     free(scratch);
     if (rc == 0)
         rc = missing(&m, partial, sizeof partial, why, sizeof why);
+    if (rc == 0)
+        rc = own_numerics(&m, partial, why, sizeof why);
     if (rc == 0)
         rc = open_out(&m, why, sizeof why);
     if (rc != 0) {

@@ -17,6 +17,16 @@ TINY="--batch -N 100 --force --eps=10pm"
 # scene's path (the same file here)
 untimed() { grep -v '^# scene:' "$1" | cut -f1-14,16-; }
 rows() { grep -v '^#' "$1" | tail -n +2; }
+# reprove DIR NAME: the manifest's record of DIR/NAME made that of the
+# file there now, as the adhere that wrote it would have left it: the test
+# plays another build (or a killed run) that wrote it
+reprove() {
+    rec=$(stat --printf '%d\t%i\t%s\t%.9Y\t%.9Z' "$1/$2") &&
+        grep -v "^$2	" "$1/.adhere-manifest" >"$TMP/manifest.new" &&
+        printf '%s\t%s\n' "$2" "$rec" >>"$TMP/manifest.new" && cat "$TMP/manifest.new" >"$1/.adhere-manifest"
+}
+# this build's numerics id, as --version prints it
+NUMERICS=$("$ADHERE" --version | awk '$1 == "numerics" {print $2}')
 
 # --- the study whole, then in 3 shards under GNU parallel, then merged ---
 "$ADHERE" $TINY -q "$TMP/map.scene" -o "$TMP/whole" 2>"$TMP/whole.err"
@@ -92,9 +102,23 @@ check "an eps study whole and in 2 shards, merged (exit $rc: $(head -c 300 "$TMP
 check "... both tables give the static curve's loop (# static_hysteresis) and are the same but for timing" \
     sh -c "grep -q '^# static_hysteresis: [0-9]' '$TMP/epsm/sweep.tsv' && untimed() { grep -v '^# scene:' \"\$1\" | cut -f1-14,16-; }; untimed '$TMP/epsw/sweep.tsv' >'$TMP/ea'; untimed '$TMP/epsm/sweep.tsv' >'$TMP/eb'; cmp -s '$TMP/ea' '$TMP/eb'"
 check "... and Figure 7 with its hysteresis panel in each" sh -c "[ -s '$TMP/epsw/force.png' ] && [ -s '$TMP/epsm/force.png' ]"
+# the static line is the merge's own arithmetic: shards of another build
+# are merged for the table alone
+cp -r "$TMP/eps1" "$TMP/eps1b" && cp -r "$TMP/eps2" "$TMP/eps2b"
+sed -i 's/^numerics\t.*/numerics\t0123456789abcdef/' "$TMP/eps1b/study.tsv" "$TMP/eps2b/study.tsv"
+"$ADHERE" merge -q -o "$TMP/epsb" "$TMP/eps1b" "$TMP/eps2b" 2>"$TMP/err"
+rc=$?
+check "eps shards of another build: Figure 7's static line refused, exit 2, both ids named ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'numerics ($NUMERICS) are not the shards. (0123456789abcdef)' '$TMP/err' && [ ! -e '$TMP/epsb/sweep.tsv' ]"
+"$ADHERE" merge -q --no-plot -o "$TMP/epsb" "$TMP/eps1b" "$TMP/eps2b" 2>"$TMP/err"
+rc=$?
+check "... merged with --no-plot: the table alone, no # static_hysteresis ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && [ -s '$TMP/epsb/sweep.tsv' ] && ! grep -q static_hysteresis '$TMP/epsb/sweep.tsv'"
 
 # --- resumed: one run's result removed, the rerun steps that one alone ---
 # (in place: a copy of the directory is not adhere's, its manifest says)
+check "study.tsv records the build's numerics id, the one --version prints ($NUMERICS)" \
+    sh -c "echo '$NUMERICS' | grep -qx '[0-9a-f]\{16\}' && grep -qx 'numerics	$NUMERICS' '$TMP/whole/study.tsv'"
 rm -r "$TMP/whole/run-7"
 "$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/whole" 2>"$TMP/resume.err"
 rc=$?
@@ -104,6 +128,39 @@ check "it stepped run 7 and no other (ran: $ran)" [ "$ran" = "7 " ]
 check "and says 15 were done before" grep -q '(15 done before, kept)' "$TMP/resume.err"
 check "run-7 is back, its table the same but for timing" \
     sh -c "[ -s '$TMP/whole/run-7/summary.tsv' ] && grep -v '^# scene:' '$TMP/whole/sweep.tsv' | cut -f1-14,16- | cmp -s - '$TMP/a'"
+# --- a study of another build: never resumed, its rows never mixed ---
+# (the numerics id is the Makefile's hash of the sources that decide the
+# numbers: another build is played by study.tsv's id line, edited, and the
+# manifest's record of it, as that build's adhere would have left them)
+"$ADHERE" $TINY -q "$TMP/map.scene" -o "$TMP/build" 2>/dev/null
+echo mine >"$TMP/build/notes.txt" && echo mine >"$TMP/build/run-3/notes.txt"
+sed -i 's/^numerics\t.*/numerics\t0123456789abcdef/' "$TMP/build/study.tsv" && reprove "$TMP/build" study.tsv
+cp "$TMP/build/runs.tsv" "$TMP/build.runs"
+"$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+rc=$?
+check "a rerun on a study of another numerics id: exit 2, both ids named ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'another build of adhere (numerics there: 0123456789abcdef; this adhere.s: $NUMERICS)' '$TMP/err'"
+check "... what to do said: a new -o, or --overwrite to run it again from scratch" \
+    sh -c "grep -q 'give a new -o' '$TMP/err' && grep -q -- '--overwrite to run the study again from scratch' '$TMP/err'"
+check "... nothing run, nothing changed (runs.tsv, study.tsv's id)" \
+    sh -c "! grep -q '^adhere: run ' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv' && grep -qx 'numerics	0123456789abcdef' '$TMP/build/study.tsv'"
+# a study.tsv from before adhere recorded the id: an unknown build
+sed -i '/^numerics\t/d' "$TMP/build/study.tsv" && reprove "$TMP/build" study.tsv
+"$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+rc=$?
+check "a study.tsv with no numerics id (before ids): exit 2, said so, the same advice ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'numerics there: none, its study.tsv predates numerics ids' '$TMP/err' && grep -q -- '--overwrite' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv'"
+"$ADHERE" $TINY "$TMP/map.scene" --overwrite -o "$TMP/build" 2>"$TMP/err"
+rc=$?
+ran=$(grep -c '^adhere: run [0-9]* of 16' "$TMP/err")
+check "--overwrite: exit $rc, the whole study run again from scratch ($ran runs stepped, none kept)" \
+    sh -c "[ $rc -eq 0 ] && [ $ran -eq 16 ] && ! grep -q 'done before' '$TMP/err' && grep -q 'runs again from scratch' '$TMP/err'"
+check "... study.tsv now this build's id, sweep.tsv the study's but for timing" \
+    sh -c "grep -qx 'numerics	$NUMERICS' '$TMP/build/study.tsv' && grep -v '^# scene:' '$TMP/build/sweep.tsv' | cut -f1-14,16- | cmp -s - '$TMP/a'"
+check "... the user's files stay (notes.txt, run-3/notes.txt)" \
+    sh -c "[ \"\$(cat '$TMP/build/notes.txt')\" = mine ] && [ \"\$(cat '$TMP/build/run-3/notes.txt')\" = mine ]"
+"$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+check "... and a rerun of this build resumes it (16 done before, kept)" grep -q '(16 done before, kept)' "$TMP/err"
 
 # --- runs sharing a loading branch against the same runs stepped alone ---
 # run 6: sigma = 3, turn -1 nm; its own run loads to -1 nm and unloads
@@ -148,6 +205,19 @@ check "--allow-partial joins what there is (exit $rc)" [ "$rc" -eq 0 ]
 check "... and marks the table # PARTIAL, naming the runs" grep -q '^# PARTIAL: 12 of 16 runs have results.*runs 5-8' "$TMP/m3/sweep.tsv"
 check "... the runs without a result say not run" \
     awk -F'\t' '!/^#/ && $1 >= 5 && $1 <= 8 && $NF != "not run" {bad = 1} END {exit bad}' "$TMP/m3/sweep.tsv"
+# shards of another build: study.tsv's id edited in a copy (merge reads the
+# shards' records, not their manifests)
+cp -r "$TMP/shard2" "$TMP/built2"
+sed -i 's/^numerics\t.*/numerics\t0123456789abcdef/' "$TMP/built2/study.tsv"
+$M -o "$TMP/mb" "$TMP/shard1" "$TMP/built2" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "shards of different numerics ids: exit 2, the shards and ids named, nothing written ($(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'shard1 (numerics $NUMERICS) and .*built2 (numerics 0123456789abcdef) were not computed by one build' '$TMP/err' && [ ! -e '$TMP/mb/sweep.tsv' ]"
+sed -i '/^numerics\t/d' "$TMP/built2/study.tsv"
+$M -o "$TMP/mb" "$TMP/shard1" "$TMP/built2" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "a shard with no numerics id (before ids): exit 2, said so, nothing written ($(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'built2 (numerics none, its study.tsv predates numerics ids: an unknown build)' '$TMP/err' && [ ! -e '$TMP/mb/sweep.tsv' ]"
 "$ADHERE" $TINY -q "$TMP/map.scene" --dwell=5 --shard 2/3 -o "$TMP/other" 2>/dev/null
 $M -o "$TMP/m4" "$TMP/shard1" "$TMP/other" "$TMP/shard3" 2>"$TMP/err"
 rc=$?
