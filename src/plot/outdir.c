@@ -718,8 +718,30 @@ static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
     return rc;
 }
 
-/* Locked, the earlier run's files cleared, foreign files refused, the
- * manifest written: d is ready for this run's files. */
+/* KEEP: the earlier run's files stay, their records with them; a record
+ * whose file is gone or no longer the one adhere wrote (a run-K the user
+ * removed) goes, or it would stay for good, and a temporary a killed run
+ * left (never a result) goes with its record. Only the manifest's own
+ * records are looked at: nothing else in d is touched. */
+static void prune(adh_outdir *d)
+{
+    for (size_t i = d->n; i-- > 0;) {
+        const entry *e = &d->e[i];
+        size_t len = strlen(e->name);
+        char base[32];
+        snprintf(base, sizeof base, "%.*s", (int)(e->name[len - 1] == '/' ? len - 1 : len), e->name);
+        struct stat st;
+        int here = fstatat(d->fd, base, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(e, &st);
+        if (here && owned_temporary(base) && unlinkat(d->fd, base, 0) == 0)
+            here = 0;
+        if (!here)
+            drop_entry(d, i);
+    }
+}
+
+/* Locked, the earlier run's files cleared (KEEP: their stale records),
+ * foreign files refused, the manifest written: d is ready for this run's
+ * files. */
 static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
 {
     if (lock(d, why, whylen) != 0)
@@ -732,6 +754,8 @@ static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
     /* refused before anything is removed; KEEP: an earlier study's files stay */
     if (foreign(d, depth, why, whylen) != 0 || (!(d->flags & ADH_OUTDIR_KEEP) && clear(d, depth, why, whylen) != 0))
         return -1;
+    if (d->flags & ADH_OUTDIR_KEEP)
+        prune(d);
     d->foreign_manifest = 0;
     if (save(d) != 0) {
         snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));

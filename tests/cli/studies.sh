@@ -120,6 +120,11 @@ check "... merged with --no-plot: the table alone, no # static_hysteresis ($rc: 
 check "study.tsv records the build's numerics id, the one --version prints ($NUMERICS)" \
     sh -c "echo '$NUMERICS' | grep -qx '[0-9a-f]\{16\}' && grep -qx 'numerics	$NUMERICS' '$TMP/whole/study.tsv'"
 rm -r "$TMP/whole/run-7"
+# beside it: a file of the user's, a temporary a killed run left (in the
+# manifest) and a file of the user's under a temporary's name (not in it)
+echo mine >"$TMP/whole/notes.txt"
+echo cut >"$TMP/whole/.runs.tsv.Kil1ed" && reprove "$TMP/whole" .runs.tsv.Kil1ed
+echo mine >"$TMP/whole/.sweep.tsv.Mine12"
 "$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/whole" 2>"$TMP/resume.err"
 rc=$?
 check "the rerun exits 0 ($rc)" [ "$rc" -eq 0 ]
@@ -128,6 +133,21 @@ check "it stepped run 7 and no other (ran: $ran)" [ "$ran" = "7 " ]
 check "and says 15 were done before" grep -q '(15 done before, kept)' "$TMP/resume.err"
 check "run-7 is back, its table the same but for timing" \
     sh -c "[ -s '$TMP/whole/run-7/summary.tsv' ] && grep -v '^# scene:' '$TMP/whole/sweep.tsv' | cut -f1-14,16- | cmp -s - '$TMP/a'"
+# the record of the run-7 removed goes with it (it stayed for good before):
+# one record of each run-K, each the directory there now
+n7=$(grep -c '^run-7/' "$TMP/whole/.adhere-manifest")
+stale=0
+for k in $(seq 1 16); do
+    [ "$(awk -F'\t' -v n="run-$k/" '$1 == n {print $3}' "$TMP/whole/.adhere-manifest")" = "$(stat -c %i "$TMP/whole/run-$k")" ] ||
+        stale=$((stale + 1))
+done
+check "the manifest keeps one record of run-7 ($n7), each run-K's the directory there ($stale not)" \
+    [ "$n7/$stale/$(grep -c '^run-' "$TMP/whole/.adhere-manifest")" = "1/0/16" ]
+check "... the killed run's temporary is gone with its record" \
+    sh -c "[ ! -e '$TMP/whole/.runs.tsv.Kil1ed' ] && ! grep -q Kil1ed '$TMP/whole/.adhere-manifest'"
+check "... the user's files stay (notes.txt, .sweep.tsv.Mine12)" \
+    sh -c "[ \"\$(cat '$TMP/whole/notes.txt')\" = mine ] && [ \"\$(cat '$TMP/whole/.sweep.tsv.Mine12')\" = mine ]"
+
 # --- a study of another build: never resumed, its rows never mixed ---
 # (the numerics id is the Makefile's hash of the sources that decide the
 # numbers: another build is played by study.tsv's id line, edited, and the
