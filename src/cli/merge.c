@@ -37,6 +37,8 @@ typedef struct merge {
     adh_outdir *out;
     struct stat out_st;            /* -o DIR, when it is there */
     int out_known;
+    int figure_failed;             /* the figure was not written: the earlier one is looked at */
+    int earlier_same;              /* -o's earlier sweep.tsv has this one's rows: its figure is this table's */
 } merge;
 
 /* "5, 8, 11-14, 20 and 3 more": runs (from 1) in a short list. */
@@ -307,6 +309,100 @@ static int open_out(merge *m, char *why, size_t whylen)
     return 0;
 }
 
+/* The index (from 0) of the field name on the line p..end, or -1. */
+static long field_index(const char *p, const char *end, const char *name)
+{
+    size_t len = strlen(name);
+    for (long f = 0;; f++) {
+        const char *t = memchr(p, '\t', (size_t)(end - p)), *fe = t ? t : end;
+        if ((size_t)(fe - p) == len && !memcmp(p, name, len))
+            return f;
+        if (!t)
+            return -1;
+        p = t + 1;
+    }
+}
+
+/* A copy of a table's text without its seconds column (the header's
+ * column of that name, cut from every line that is not a comment): a
+ * run's timing, the one column two merges of one study's shards may
+ * differ in. NULL without memory. */
+static char *without_seconds(const char *text)
+{
+    char *out = malloc(strlen(text) + 1), *o = out;
+    long col = -2;   /* -2: the header not read yet */
+    for (const char *p = text; out && *p;) {
+        const char *end = p + strcspn(p, "\n");
+        int row = *p != '#' && p != end;
+        if (row && col == -2)
+            col = field_index(p, end, "seconds");
+        for (long f = 0; row; f++) {   /* a row: its fields but that one */
+            const char *t = memchr(p, '\t', (size_t)(end - p)), *fe = t ? t : end;
+            if (f != col) {
+                if (f && !(f == 1 && col == 0))
+                    *o++ = '\t';
+                memcpy(o, p, (size_t)(fe - p));
+                o += fe - p;
+            }
+            if (!t)
+                break;
+            p = t + 1;
+        }
+        if (!row) {   /* a comment, as it is */
+            memcpy(o, p, (size_t)(end - p));
+            o += end - p;
+        }
+        p = end + (*end == '\n');
+        if (*end == '\n')
+            *o++ = '\n';
+    }
+    if (out)
+        *o = '\0';
+    return out;
+}
+
+/* The largest earlier sweep.tsv compared: 10^5 rows of some 1 kB, with room. */
+#define EARLIER_MAX ((long)256 << 20)
+
+/* Whether -o's sweep.tsv (an earlier merge's, adhere's own) holds the
+ * table t writes but for its seconds column: then the earlier figure is
+ * this table's. */
+static int earlier_same(const merge *m, const cli_studyrow_sweep *t)
+{
+    char *now = NULL, *was = NULL;
+    size_t nlen = 0;
+    FILE *f = adh_outdir_has(m->out, "sweep.tsv") ? open_memstream(&now, &nlen) : NULL;
+    if (!f)
+        return 0;
+    cli_studyrow_table(f, t);
+    fclose(f);
+    FILE *e = adh_outdir_read(adh_outdir_fd(m->out), "sweep.tsv");
+    struct stat st;
+    if (e && fstat(fileno(e), &st) == 0 && st.st_size < EARLIER_MAX && (was = calloc((size_t)st.st_size + 1, 1)))
+        was[fread(was, 1, (size_t)st.st_size, e)] = '\0';
+    if (e)
+        fclose(e);
+    char *a = now ? without_seconds(now) : NULL, *b = was ? without_seconds(was) : NULL;
+    int same = a && b && !strcmp(a, b);
+    free(now), free(was), free(a), free(b);
+    return same;
+}
+
+/* A figure not written: what became of the earlier merge's figures
+ * (names, listed before the commit), kept when they are this table's,
+ * else removed with the rest of it. */
+static void earlier_figures(const merge *m, const char *names, int replace)
+{
+    if (!*names)
+        return;
+    if (replace)
+        fprintf(stderr, "adhere merge: the earlier merge's %s removed: drawn from another table\n", names);
+    else
+        fprintf(stderr, "adhere merge: the earlier %s left in place: drawn from this table's rows (%s)\n", names,
+                m->earlier_same ? "the earlier sweep.tsv differed in its seconds column at most"
+                                : "the study's own, in its directory");
+}
+
 /* The new merge's files, written under temporaries, take the earlier
  * one's names only once every one is whole: a refused, failed or
  * interrupted merge leaves the last good one as it was. In a directory of
@@ -330,10 +426,16 @@ static int commit_out(merge *m, int rc)
         return rc;
     }
     int holds_shard = adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv");
-    if (adh_outdir_commit(m->out, !holds_shard, why, sizeof why) != 0) {
+    /* a figure not written: the earlier one stays when it is this table's */
+    int replace = !holds_shard && !(m->figure_failed && m->earlier_same);
+    char names[400] = "";
+    if (m->figure_failed)
+        adh_outdir_earlier(m->out, ".png", names, sizeof names);
+    if (adh_outdir_commit(m->out, replace, why, sizeof why) != 0) {
         fprintf(stderr, "adhere merge: %s\n", why);
         return CLI_EXIT_USAGE;
     }
+    earlier_figures(m, names, replace);
     return rc;
 }
 
@@ -404,6 +506,8 @@ static int write_out(merge *m, const char *partial)
     free(fd);
     if (rc != 0) {
         fprintf(stderr, "adhere: sweep plot not written: %s\n", why);
+        m->figure_failed = 1;
+        m->earlier_same = earlier_same(m, &t);
         return CLI_EXIT_PLOT;
     }
     return CLI_EXIT_OK;

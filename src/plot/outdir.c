@@ -1016,6 +1016,15 @@ void adh_outdir_abandon(adh_outdir *d)
     save(d);
 }
 
+/* Whether name is staged now: a name a staged file will take, or its temporary. */
+static int staged_now(const adh_outdir *d, const char *name)
+{
+    for (size_t k = 0; k < d->nst; k++)
+        if (!strcmp(name, d->st[k].name) || !strcmp(name, d->st[k].tmp))
+            return 1;
+    return 0;
+}
+
 /* The files of d's manifest not staged now, and still as an earlier run
  * wrote them, removed (run-K directories stay). */
 static void clear_unstaged(adh_outdir *d)
@@ -1023,16 +1032,38 @@ static void clear_unstaged(adh_outdir *d)
     for (size_t i = d->n; i-- > 0;) {
         const entry *e = &d->e[i];
         size_t len = strlen(e->name);
-        int mine = 0;
-        for (size_t k = 0; k < d->nst && !mine; k++)
-            mine = !strcmp(e->name, d->st[k].name) || !strcmp(e->name, d->st[k].tmp);
         struct stat st;
-        if (mine || (len && e->name[len - 1] == '/'))
+        if (staged_now(d, e->name) || (len && e->name[len - 1] == '/'))
             continue;
         if (fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(e, &st))
             unlinkat(d->fd, e->name, 0);
         drop_entry(d, i);
     }
+}
+
+size_t adh_outdir_earlier(const adh_outdir *d, const char *suffix, char *buf, size_t len)
+{
+    size_t count = 0, o = 0;
+    if (len)
+        buf[0] = '\0';
+    size_t ns = suffix ? strlen(suffix) : 0;
+    for (size_t i = 0; i < d->n; i++) {
+        const entry *e = &d->e[i];
+        size_t n = strlen(e->name);
+        struct stat st;
+        if (staged_now(d, e->name) || e->name[n - 1] == '/' || owned_temporary(e->name) || n < ns ||
+            (suffix && strcmp(e->name + n - ns, suffix)) || fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) != 0 ||
+            !same(e, &st))
+            continue;
+        if (o + n + 3 <= len) {   /* room for ", " and the name: else cut there */
+            if (count)
+                memcpy(buf + o, ", ", 2), o += 2;
+            memcpy(buf + o, e->name, n + 1);
+            o += n;
+        }
+        count++;
+    }
+    return count;
 }
 
 int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen)

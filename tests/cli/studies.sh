@@ -8,7 +8,11 @@
 # the table # PARTIAL); two shards are never written into one directory;
 # runs that share a loading branch match the runs stepped alone; ranges
 # and the plan's count, time and refusals; an eps study merged has Figure
-# 7's static line (# static_hysteresis) as the whole study does.
+# 7's static line (# static_hysteresis) as the whole study does; a study
+# of another build (its numerics id) is never resumed (--overwrite runs it
+# again) nor merged with another build's shards; a resumed study's manifest
+# keeps no stale record; a merge whose figure cannot be written commits its
+# table and keeps the earlier figure only when it is this table's.
 . "$(dirname "$0")/lib.sh"
 
 cp "$(dirname "$0")/map.scene" "$TMP/map.scene"
@@ -114,6 +118,30 @@ check "eps shards of another build: Figure 7's static line refused, exit 2, both
 rc=$?
 check "... merged with --no-plot: the table alone, no # static_hysteresis ($rc: $(cat "$TMP/err"))" \
     sh -c "[ $rc -eq 0 ] && [ -s '$TMP/epsb/sweep.tsv' ] && ! grep -q static_hysteresis '$TMP/epsb/sweep.tsv'"
+
+# --- a merge whose figure cannot be written (a file size limit between the
+# table's size and the figure's): the new table is committed, exit 3; the
+# earlier merge's figure stays when it is this table's, said so, and goes
+# when it is another table's (an eps study's force.png), said so too ---
+"$ADHERE" merge -q -o "$TMP/mfig" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>/dev/null
+tsv=$(wc -c <"$TMP/mfig/sweep.tsv") png=$(wc -c <"$TMP/mfig/map.png")
+lim=$(( (tsv + png) / 1024 ))   # ulimit -f counts 512-byte blocks here (dash, POSIX)
+check "a limit between sweep.tsv ($tsv bytes) and map.png ($png): $lim blocks of 512 bytes" \
+    sh -c "[ $tsv -lt $((lim * 512)) ] && [ $((lim * 512)) -lt $png ]"
+cp "$TMP/mfig/map.png" "$TMP/mfig.png"
+ino=$(stat -c %i "$TMP/mfig/sweep.tsv")
+(trap '' XFSZ; ulimit -f "$lim" && exec "$ADHERE" merge -o "$TMP/mfig" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3") 2>"$TMP/err"
+rc=$?
+check "a merge whose map.png passes ulimit -f: exit 3 ($rc: $(head -c 400 "$TMP/err"))" [ "$rc" -eq 3 ]
+check "... its sweep.tsv committed (a new file, 16 rows)" \
+    sh -c "[ \$(stat -c %i '$TMP/mfig/sweep.tsv') != $ino ] && [ \$(grep -v '^#' '$TMP/mfig/sweep.tsv' | tail -n +2 | wc -l) -eq 16 ]"
+check "... the earlier merge's map.png, this table's, left in place as it was, and said so" \
+    sh -c "cmp -s '$TMP/mfig.png' '$TMP/mfig/map.png' && grep -q 'the earlier map.png left in place: drawn from this table' '$TMP/err'"
+check "... no temporary left" sh -c "! ls -a '$TMP/mfig' | grep -v '^\.adhere-manifest\$' | grep -q '^\.[^.]'"
+(trap '' XFSZ; ulimit -f "$lim" && exec "$ADHERE" merge -o "$TMP/epsm" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3") 2>"$TMP/err"
+rc=$?
+check "the same into an eps study's merge: exit 3, its force.png (another table's) removed, said so ($rc: $(head -c 400 "$TMP/err"))" \
+    sh -c "[ $rc -eq 3 ] && [ ! -e '$TMP/epsm/force.png' ] && grep -q \"the earlier merge's force.png removed: drawn from another table\" '$TMP/err' && [ \$(grep -v '^#' '$TMP/epsm/sweep.tsv' | tail -n +2 | wc -l) -eq 16 ]"
 
 # --- resumed: one run's result removed, the rerun steps that one alone ---
 # (in place: a copy of the directory is not adhere's, its manifest says)
