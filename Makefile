@@ -115,6 +115,22 @@ $(BUILD)/gen/style.inc: share/adhere/gnuplot/style.gp
 $(BUILD)/src/plot/png.o: $(BUILD)/gen/style.inc
 $(BUILD)/src/plot/png.o: CPPFLAGS += -I$(BUILD)/gen
 
+# The numerics id (study.tsv's numerics line): a hash of every source that
+# decides a study's numbers -- the core, the configuration that sets a
+# run's grid and the study's runs, the CLI files that step a study's
+# drives and fill its rows -- so that a study resumes, and adhere merge
+# joins shards, only with rows of the same numerics; a build that changes
+# the plots, the TUI or the other messages keeps it. sha256sum over the
+# files (not git: a tarball builds it alike), written only when it changes.
+NUMERICS_SRC = $(sort $(wildcard src/core/*.[ch] include/adhere/*.h src/scene/*.[ch] \
+               $(addprefix src/cli/,studyrow.[ch] jumps.[ch] tables.[ch] timerun.[ch] static.[ch] sweep.c kcache.[ch])))
+$(BUILD)/gen/numerics.h: FORCE
+	@mkdir -p $(dir $@)
+	@line="#define ADH_NUMERICS \"$$(sha256sum $(NUMERICS_SRC) | sha256sum | cut -c1-16)\""; \
+	  echo "$$line" | cmp -s - $@ || echo "$$line" >$@
+$(BUILD)/src/cli/study.o: $(BUILD)/gen/numerics.h
+$(BUILD)/src/cli/study.o: CPPFLAGS += -I$(BUILD)/gen
+
 $(BUILD)/%.o: %.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<

@@ -160,7 +160,7 @@ static int run(int argc, char **argv)
         cli_options_usage(stdout);
         return stdout_done();
     case CLI_ACT_VERSION:
-        printf("adhere %s\n", ADH_VERSION);
+        printf("adhere %s\nnumerics %s\n", ADH_VERSION, cli_study_numerics());
         return stdout_done();
     case CLI_ACT_LIST_KEYS:
         tui_print_keys(stdout);

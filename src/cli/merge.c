@@ -37,6 +37,8 @@ typedef struct merge {
     adh_outdir *out;
     struct stat out_st;            /* -o DIR, when it is there */
     int out_known;
+    int figure_failed;             /* the figure was not written: the earlier one is looked at */
+    int earlier_same;              /* -o's earlier sweep.tsv has this one's rows: its figure is this table's */
 } merge;
 
 /* "5, 8, 11-14, 20 and 3 more": runs (from 1) in a short list. */
@@ -116,6 +118,26 @@ static int open_shard(merge *m, size_t k, char *why, size_t whylen)
 
 static int one_each(const merge *m, char *why, size_t whylen);
 
+/* Every shard computed by one build (one numerics id): rows of different
+ * numerics are never joined, and a shard that records no id (a study.tsv
+ * from before adhere recorded one) is joined with no other, as nothing
+ * says which build computed it. 0, or 2 with why. */
+static int same_numerics(const merge *m, char *why, size_t whylen)
+{
+    for (size_t k = 1; k < m->n; k++) {
+        const cli_study *a = &m->sh[0].st, *b = &m->sh[k].st;
+        if (a->numerics[0] && !strcmp(a->numerics, b->numerics))
+            continue;
+        snprintf(why, whylen, "%.900s (numerics %s) and %.900s (numerics %s) were not computed by one build of "
+                 "adhere: rows of different numerics are not joined; rerun %s with one adhere (this one's numerics "
+                 "are %s)", m->sh[0].path, cli_study_numerics_shown(a->numerics), m->sh[k].path,
+                 cli_study_numerics_shown(b->numerics), m->n > 2 ? "the shards" : "both shards",
+                 cli_study_numerics());
+        return 2;
+    }
+    return 0;
+}
+
 /* Every shard of one study, one split, each shard once. 0, or 2 with why. */
 static int same_study(const merge *m, char *why, size_t whylen)
 {
@@ -136,7 +158,7 @@ static int same_study(const merge *m, char *why, size_t whylen)
             return 2;
         }
     }
-    return one_each(m, why, whylen);
+    return same_numerics(m, why, whylen) ? 2 : one_each(m, why, whylen);
 }
 
 /* Each shard K/N in one directory: two directories that both say they hold
@@ -208,6 +230,22 @@ static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
     return ndup ? 2 : 0;
 }
 
+/* An eps study's Figure 7 line (the static curve's loop, and sweep.tsv's
+ * # static_hysteresis) is computed by the merge itself: by this build,
+ * then, only for shards of its own numerics, or its number would sit
+ * among another build's. 0, or 2 with why. */
+static int own_numerics(const merge *m, const char *partial, char *why, size_t whylen)
+{
+    const cli_study *st = &m->sh[0].st;
+    if (!adh_sweep_fig7_panel(m->sh[0].cfg) || !m->cli->cfg.output.plot || *partial ||
+        !strcmp(st->numerics, cli_study_numerics()))
+        return 0;
+    snprintf(why, whylen, "the shards' eps study draws Figure 7's static line, which the merge computes: this adhere's "
+             "numerics (%s) are not the shards' (%s); merge with the adhere that ran them, or --no-plot for the "
+             "table alone", cli_study_numerics(), cli_study_numerics_shown(st->numerics));
+    return 2;
+}
+
 /* Runs without a result: refused (listed) unless --allow-partial, which
  * gives them rows saying not run and a # PARTIAL line. 0, or 2 with why. */
 static int missing(merge *m, char *partial, size_t plen, char *why, size_t whylen)
@@ -271,6 +309,100 @@ static int open_out(merge *m, char *why, size_t whylen)
     return 0;
 }
 
+/* The index (from 0) of the field name on the line p..end, or -1. */
+static long field_index(const char *p, const char *end, const char *name)
+{
+    size_t len = strlen(name);
+    for (long f = 0;; f++) {
+        const char *t = memchr(p, '\t', (size_t)(end - p)), *fe = t ? t : end;
+        if ((size_t)(fe - p) == len && !memcmp(p, name, len))
+            return f;
+        if (!t)
+            return -1;
+        p = t + 1;
+    }
+}
+
+/* A copy of a table's text without its seconds column (the header's
+ * column of that name, cut from every line that is not a comment): a
+ * run's timing, the one column two merges of one study's shards may
+ * differ in. NULL without memory. */
+static char *without_seconds(const char *text)
+{
+    char *out = malloc(strlen(text) + 1), *o = out;
+    long col = -2;   /* -2: the header not read yet */
+    for (const char *p = text; out && *p;) {
+        const char *end = p + strcspn(p, "\n");
+        int row = *p != '#' && p != end;
+        if (row && col == -2)
+            col = field_index(p, end, "seconds");
+        for (long f = 0; row; f++) {   /* a row: its fields but that one */
+            const char *t = memchr(p, '\t', (size_t)(end - p)), *fe = t ? t : end;
+            if (f != col) {
+                if (f && !(f == 1 && col == 0))
+                    *o++ = '\t';
+                memcpy(o, p, (size_t)(fe - p));
+                o += fe - p;
+            }
+            if (!t)
+                break;
+            p = t + 1;
+        }
+        if (!row) {   /* a comment, as it is */
+            memcpy(o, p, (size_t)(end - p));
+            o += end - p;
+        }
+        p = end + (*end == '\n');
+        if (*end == '\n')
+            *o++ = '\n';
+    }
+    if (out)
+        *o = '\0';
+    return out;
+}
+
+/* The largest earlier sweep.tsv compared: 10^5 rows of some 1 kB, with room. */
+#define EARLIER_MAX ((long)256 << 20)
+
+/* Whether -o's sweep.tsv (an earlier merge's, adhere's own) holds the
+ * table t writes but for its seconds column: then the earlier figure is
+ * this table's. */
+static int earlier_same(const merge *m, const cli_studyrow_sweep *t)
+{
+    char *now = NULL, *was = NULL;
+    size_t nlen = 0;
+    FILE *f = adh_outdir_has(m->out, "sweep.tsv") ? open_memstream(&now, &nlen) : NULL;
+    if (!f)
+        return 0;
+    cli_studyrow_table(f, t);
+    fclose(f);
+    FILE *e = adh_outdir_read(adh_outdir_fd(m->out), "sweep.tsv");
+    struct stat st;
+    if (e && fstat(fileno(e), &st) == 0 && st.st_size < EARLIER_MAX && (was = calloc((size_t)st.st_size + 1, 1)))
+        was[fread(was, 1, (size_t)st.st_size, e)] = '\0';
+    if (e)
+        fclose(e);
+    char *a = now ? without_seconds(now) : NULL, *b = was ? without_seconds(was) : NULL;
+    int same = a && b && !strcmp(a, b);
+    free(now), free(was), free(a), free(b);
+    return same;
+}
+
+/* A figure not written: what became of the earlier merge's figures
+ * (names, listed before the commit), kept when they are this table's,
+ * else removed with the rest of it. */
+static void earlier_figures(const merge *m, const char *names, int replace)
+{
+    if (!*names)
+        return;
+    if (replace)
+        fprintf(stderr, "adhere merge: the earlier merge's %s removed: drawn from another table\n", names);
+    else
+        fprintf(stderr, "adhere merge: the earlier %s left in place: drawn from this table's rows (%s)\n", names,
+                m->earlier_same ? "the earlier sweep.tsv differed in its seconds column at most"
+                                : "the study's own, in its directory");
+}
+
 /* The new merge's files, written under temporaries, take the earlier
  * one's names only once every one is whole: a refused, failed or
  * interrupted merge leaves the last good one as it was. In a directory of
@@ -294,10 +426,16 @@ static int commit_out(merge *m, int rc)
         return rc;
     }
     int holds_shard = adh_outdir_has(m->out, "study.tsv") || adh_outdir_has(m->out, "runs.tsv");
-    if (adh_outdir_commit(m->out, !holds_shard, why, sizeof why) != 0) {
+    /* a figure not written: the earlier one stays when it is this table's */
+    int replace = !holds_shard && !(m->figure_failed && m->earlier_same);
+    char names[400] = "";
+    if (m->figure_failed)
+        adh_outdir_earlier(m->out, ".png", names, sizeof names);
+    if (adh_outdir_commit(m->out, replace, why, sizeof why) != 0) {
         fprintf(stderr, "adhere merge: %s\n", why);
         return CLI_EXIT_USAGE;
     }
+    earlier_figures(m, names, replace);
     return rc;
 }
 
@@ -368,6 +506,8 @@ static int write_out(merge *m, const char *partial)
     free(fd);
     if (rc != 0) {
         fprintf(stderr, "adhere: sweep plot not written: %s\n", why);
+        m->figure_failed = 1;
+        m->earlier_same = earlier_same(m, &t);
         return CLI_EXIT_PLOT;
     }
     return CLI_EXIT_OK;
@@ -427,6 +567,8 @@ static int merge_run(cli_options *cli)
     free(scratch);
     if (rc == 0)
         rc = missing(&m, partial, sizeof partial, why, sizeof why);
+    if (rc == 0)
+        rc = own_numerics(&m, partial, why, sizeof why);
     if (rc == 0)
         rc = open_out(&m, why, sizeof why);
     if (rc != 0) {

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "numerics.h"   /* ADH_NUMERICS: made by the Makefile */
 #include "scene/scene.h"
 
 /* The longest line study.tsv or runs.tsv holds: a scene (1 MiB at most,
@@ -127,6 +128,16 @@ static void fingerprint(cli_study *st)
     snprintf(st->fingerprint, sizeof st->fingerprint, "%016llx", (unsigned long long)h);
 }
 
+const char *cli_study_numerics(void)
+{
+    return ADH_NUMERICS;
+}
+
+const char *cli_study_numerics_shown(const char *id)
+{
+    return id && *id ? id : "none, its study.tsv predates numerics ids: an unknown build";
+}
+
 static void counts(cli_study *st)
 {
     st->nruns = adh_config_nruns(st->cfg);
@@ -143,6 +154,7 @@ void cli_study_from_cli(cli_study *st, cli_options *cli)
     st->nset = cli->nset;
     st->shard_k = cli->shard_n ? cli->shard_k : 1;
     st->shard_n = cli->shard_n ? cli->shard_n : 1;
+    snprintf(st->numerics, sizeof st->numerics, "%s", ADH_NUMERICS);
     fingerprint(st);
     counts(st);
 }
@@ -175,9 +187,10 @@ static int study_table(FILE *f, const void *ctx)
 {
     const cli_study *st = ctx;
     fprintf(f, "# adhere " ADH_VERSION "\n# study.tsv: the study this directory holds shard %u of %u of "
-            "(adhere merge joins the shards of one fingerprint; a rerun resumes it)\n", st->shard_k, st->shard_n);
-    fprintf(f, "fingerprint\t%s\nruns\t%zu\ndrives\t%zu\nshard\t%u/%u\nscene_path\t", st->fingerprint, st->nruns,
-            st->ndrives, st->shard_k, st->shard_n);
+            "(adhere merge joins the shards of one fingerprint and numerics; a rerun of the same numerics "
+            "resumes it)\n", st->shard_k, st->shard_n);
+    fprintf(f, "fingerprint\t%s\nnumerics\t%s\nruns\t%zu\ndrives\t%zu\nshard\t%u/%u\nscene_path\t",
+            st->fingerprint, st->numerics, st->nruns, st->ndrives, st->shard_k, st->shard_n);
     escaped(f, st->scene_path);
     fputc('\n', f);
     recipe(f, st);
@@ -202,6 +215,12 @@ static int study_line(cli_study *st, char *line, char *fp, size_t *runs, size_t 
         return strcmp(v, ADH_VERSION) ? -2 : 0;
     if (!strcmp(line, "fingerprint"))
         return snprintf(fp, 17, "%s", v) == 16 ? 0 : -1;
+    if (!strcmp(line, "numerics")) {   /* the build's: not in the fingerprint, which is what the study is */
+        if (strlen(v) != 16 || strspn(v, "0123456789abcdef") != 16)
+            return -1;
+        memcpy(st->numerics, v, sizeof st->numerics);
+        return 0;
+    }
     if (!strcmp(line, "runs") || !strcmp(line, "drives")) {
         char *end;
         unsigned long long n = strtoull(v, &end, 10);

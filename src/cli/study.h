@@ -21,9 +21,19 @@ typedef struct cli_study {
     size_t nset;
     unsigned shard_k, shard_n;     /* this shard; 1/1 for the whole study */
     char fingerprint[17];          /* 16 hex digits */
+    char numerics[17];             /* the build that computes its rows (the Makefile's hash of the
+                                      sources that decide the numbers); "" a study.tsv from before
+                                      adhere recorded one */
     size_t nruns, ndrives;
     int owned;                     /* merge read it: scene_text, set and their values are its own */
 } cli_study;
+
+/* This build's numerics id: 16 hex digits, the Makefile's hash of the
+ * sources that decide a study's numbers. A study resumes, and merge joins
+ * shards, only of one id. */
+const char *cli_study_numerics(void);
+/* An id as messages show it: the id, or what a study.tsv without one is. */
+const char *cli_study_numerics_shown(const char *id);
 
 /* The study cli runs (its shard, or 1/1). */
 void cli_study_from_cli(cli_study *st, cli_options *cli);
@@ -40,7 +50,7 @@ int cli_study_write(const cli_study *st, adh_outdir *d, char *why, size_t whylen
 /* study.tsv read from the directory descriptor dirfd (path names it in
  * messages): the study it records, its configuration rebuilt into cfg
  * (defaults, the scene's text, the flags) and its grid chosen, its
- * fingerprint checked. 1 read, 0 no study.tsv there, -1 with why. */
+ * fingerprint checked, its numerics id in st->numerics ("" none). 1 read, 0 no study.tsv there, -1 with why. */
 int cli_study_read(cli_study *st, adh_config *cfg, int dirfd, const char *path, char *why, size_t whylen);
 
 /* The rows of runs.tsv in dirfd of study st: each row of st's that reads

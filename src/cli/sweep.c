@@ -308,8 +308,31 @@ static void *worker(void *arg)
 
 /* ---- the study's directory ------------------------------------------------- */
 
+/* This study's shard in od, computed by another build (prev's numerics id
+ * not st's, or none recorded): refused (-1 with why), its rows never mixed
+ * with this build's; with --overwrite its files go and the study runs
+ * again from scratch (0). */
+static int other_build(const cli_study *st, const cli_study *prev, adh_outdir *od, char *why, size_t whylen)
+{
+    const char *path = adh_outdir_path(od);
+    char ids[200];
+    snprintf(ids, sizeof ids, "numerics there: %s; this adhere's: %s", cli_study_numerics_shown(prev->numerics),
+             st->numerics);
+    if (!st->cfg->output.overwrite) {
+        snprintf(why, whylen, "%.500s holds this study computed by another build of adhere (%s): its rows are not "
+                 "mixed with this build's; give a new -o to keep them, or --overwrite to run the study again from "
+                 "scratch there (the files adhere wrote in it are removed)", path, ids);
+        return -1;
+    }
+    if (!st->cfg->output.quiet)
+        fprintf(stderr, "adhere: note: %s holds this study computed by another build of adhere (%s): --overwrite: "
+                "the files adhere wrote there are removed, the study runs again from scratch\n", path, ids);
+    return adh_outdir_clear(od, why, whylen) == 0 ? 0 : -1;
+}
+
 /* An earlier run of this study's shard in od: its rows into rows (1), or
- * nothing (0: od is cleared of another study's files); -1 with why. */
+ * nothing (0: od is cleared of another study's files, or of another
+ * build's with --overwrite); -1 with why. */
 static int resume(const cli_study *st, adh_outdir *od, cli_studyrow *rows, char *why, size_t whylen)
 {
     adh_config *old = malloc(sizeof *old);
@@ -326,10 +349,12 @@ static int resume(const cli_study *st, adh_outdir *od, cli_studyrow *rows, char 
     if (other_shard)
         snprintf(why, whylen, "%.800s holds shard %u/%u of this study, not %u/%u: give each shard its own -o "
                  "directory (adhere merge joins them)", path, prev.shard_k, prev.shard_n, st->shard_k, st->shard_n);
+    int rebuilt = same && !other_shard && strcmp(prev.numerics, st->numerics) != 0;
+    int rc = other_shard ? -1 : rebuilt ? other_build(st, &prev, od, why, whylen) : 1;
     cli_study_free(&prev);
     free(old);
-    if (other_shard)
-        return -1;
+    if (rc <= 0)
+        return rc;
     if (same) {
         size_t cut;
         long n = cli_study_read_rows(st, adh_outdir_fd(od), path, rows, &cut, why, whylen);

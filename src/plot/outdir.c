@@ -718,8 +718,30 @@ static int foreign(adh_outdir *d, int depth, char *why, size_t whylen)
     return rc;
 }
 
-/* Locked, the earlier run's files cleared, foreign files refused, the
- * manifest written: d is ready for this run's files. */
+/* KEEP: the earlier run's files stay, their records with them; a record
+ * whose file is gone or no longer the one adhere wrote (a run-K the user
+ * removed) goes, or it would stay for good, and a temporary a killed run
+ * left (never a result) goes with its record. Only the manifest's own
+ * records are looked at: nothing else in d is touched. */
+static void prune(adh_outdir *d)
+{
+    for (size_t i = d->n; i-- > 0;) {
+        const entry *e = &d->e[i];
+        size_t len = strlen(e->name);
+        char base[32];
+        snprintf(base, sizeof base, "%.*s", (int)(e->name[len - 1] == '/' ? len - 1 : len), e->name);
+        struct stat st;
+        int here = fstatat(d->fd, base, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(e, &st);
+        if (here && owned_temporary(base) && unlinkat(d->fd, base, 0) == 0)
+            here = 0;
+        if (!here)
+            drop_entry(d, i);
+    }
+}
+
+/* Locked, the earlier run's files cleared (KEEP: their stale records),
+ * foreign files refused, the manifest written: d is ready for this run's
+ * files. */
 static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
 {
     if (lock(d, why, whylen) != 0)
@@ -732,6 +754,8 @@ static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
     /* refused before anything is removed; KEEP: an earlier study's files stay */
     if (foreign(d, depth, why, whylen) != 0 || (!(d->flags & ADH_OUTDIR_KEEP) && clear(d, depth, why, whylen) != 0))
         return -1;
+    if (d->flags & ADH_OUTDIR_KEEP)
+        prune(d);
     d->foreign_manifest = 0;
     if (save(d) != 0) {
         snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));
@@ -992,6 +1016,15 @@ void adh_outdir_abandon(adh_outdir *d)
     save(d);
 }
 
+/* Whether name is staged now: a name a staged file will take, or its temporary. */
+static int staged_now(const adh_outdir *d, const char *name)
+{
+    for (size_t k = 0; k < d->nst; k++)
+        if (!strcmp(name, d->st[k].name) || !strcmp(name, d->st[k].tmp))
+            return 1;
+    return 0;
+}
+
 /* The files of d's manifest not staged now, and still as an earlier run
  * wrote them, removed (run-K directories stay). */
 static void clear_unstaged(adh_outdir *d)
@@ -999,16 +1032,38 @@ static void clear_unstaged(adh_outdir *d)
     for (size_t i = d->n; i-- > 0;) {
         const entry *e = &d->e[i];
         size_t len = strlen(e->name);
-        int mine = 0;
-        for (size_t k = 0; k < d->nst && !mine; k++)
-            mine = !strcmp(e->name, d->st[k].name) || !strcmp(e->name, d->st[k].tmp);
         struct stat st;
-        if (mine || (len && e->name[len - 1] == '/'))
+        if (staged_now(d, e->name) || (len && e->name[len - 1] == '/'))
             continue;
         if (fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(e, &st))
             unlinkat(d->fd, e->name, 0);
         drop_entry(d, i);
     }
+}
+
+size_t adh_outdir_earlier(const adh_outdir *d, const char *suffix, char *buf, size_t len)
+{
+    size_t count = 0, o = 0;
+    if (len)
+        buf[0] = '\0';
+    size_t ns = suffix ? strlen(suffix) : 0;
+    for (size_t i = 0; i < d->n; i++) {
+        const entry *e = &d->e[i];
+        size_t n = strlen(e->name);
+        struct stat st;
+        if (staged_now(d, e->name) || e->name[n - 1] == '/' || owned_temporary(e->name) || n < ns ||
+            (suffix && strcmp(e->name + n - ns, suffix)) || fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) != 0 ||
+            !same(e, &st))
+            continue;
+        if (o + n + 3 <= len) {   /* room for ", " and the name: else cut there */
+            if (count)
+                memcpy(buf + o, ", ", 2), o += 2;
+            memcpy(buf + o, e->name, n + 1);
+            o += n;
+        }
+        count++;
+    }
+    return count;
 }
 
 int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen)

@@ -89,6 +89,12 @@ int adh_outdir_write(adh_outdir *d, const char *name, adh_outdir_writer writer, 
  * adh_outdir_abandon removes them, leaving the earlier files as they were;
  * adh_outdir_close abandons what was not committed. */
 void adh_outdir_stage(adh_outdir *d);
+/* The files an earlier run wrote that this one has not staged again (of
+ * the manifest, still as written; not run-K directories, not
+ * temporaries), those commit with replace would remove, whose names end
+ * in suffix (NULL: any): their names by commas into buf (cut at len); how
+ * many. */
+size_t adh_outdir_earlier(const adh_outdir *d, const char *suffix, char *buf, size_t len);
 int adh_outdir_commit(adh_outdir *d, int replace, char *why, size_t whylen);
 void adh_outdir_abandon(adh_outdir *d);
 

@@ -8,7 +8,11 @@
 # the table # PARTIAL); two shards are never written into one directory;
 # runs that share a loading branch match the runs stepped alone; ranges
 # and the plan's count, time and refusals; an eps study merged has Figure
-# 7's static line (# static_hysteresis) as the whole study does.
+# 7's static line (# static_hysteresis) as the whole study does; a study
+# of another build (its numerics id) is never resumed (--overwrite runs it
+# again) nor merged with another build's shards; a resumed study's manifest
+# keeps no stale record; a merge whose figure cannot be written commits its
+# table and keeps the earlier figure only when it is this table's.
 . "$(dirname "$0")/lib.sh"
 
 cp "$(dirname "$0")/map.scene" "$TMP/map.scene"
@@ -17,6 +21,16 @@ TINY="--batch -N 100 --force --eps=10pm"
 # scene's path (the same file here)
 untimed() { grep -v '^# scene:' "$1" | cut -f1-14,16-; }
 rows() { grep -v '^#' "$1" | tail -n +2; }
+# reprove DIR NAME: the manifest's record of DIR/NAME made that of the
+# file there now, as the adhere that wrote it would have left it: the test
+# plays another build (or a killed run) that wrote it
+reprove() {
+    rec=$(stat --printf '%d\t%i\t%s\t%.9Y\t%.9Z' "$1/$2") &&
+        grep -v "^$2	" "$1/.adhere-manifest" >"$TMP/manifest.new" &&
+        printf '%s\t%s\n' "$2" "$rec" >>"$TMP/manifest.new" && cat "$TMP/manifest.new" >"$1/.adhere-manifest"
+}
+# this build's numerics id, as --version prints it
+NUMERICS=$("$ADHERE" --version | awk '$1 == "numerics" {print $2}')
 
 # --- the study whole, then in 3 shards under GNU parallel, then merged ---
 "$ADHERE" $TINY -q "$TMP/map.scene" -o "$TMP/whole" 2>"$TMP/whole.err"
@@ -92,10 +106,53 @@ check "an eps study whole and in 2 shards, merged (exit $rc: $(head -c 300 "$TMP
 check "... both tables give the static curve's loop (# static_hysteresis) and are the same but for timing" \
     sh -c "grep -q '^# static_hysteresis: [0-9]' '$TMP/epsm/sweep.tsv' && untimed() { grep -v '^# scene:' \"\$1\" | cut -f1-14,16-; }; untimed '$TMP/epsw/sweep.tsv' >'$TMP/ea'; untimed '$TMP/epsm/sweep.tsv' >'$TMP/eb'; cmp -s '$TMP/ea' '$TMP/eb'"
 check "... and Figure 7 with its hysteresis panel in each" sh -c "[ -s '$TMP/epsw/force.png' ] && [ -s '$TMP/epsm/force.png' ]"
+# the static line is the merge's own arithmetic: shards of another build
+# are merged for the table alone
+cp -r "$TMP/eps1" "$TMP/eps1b" && cp -r "$TMP/eps2" "$TMP/eps2b"
+sed -i 's/^numerics\t.*/numerics\t0123456789abcdef/' "$TMP/eps1b/study.tsv" "$TMP/eps2b/study.tsv"
+"$ADHERE" merge -q -o "$TMP/epsb" "$TMP/eps1b" "$TMP/eps2b" 2>"$TMP/err"
+rc=$?
+check "eps shards of another build: Figure 7's static line refused, exit 2, both ids named ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'numerics ($NUMERICS) are not the shards. (0123456789abcdef)' '$TMP/err' && [ ! -e '$TMP/epsb/sweep.tsv' ]"
+"$ADHERE" merge -q --no-plot -o "$TMP/epsb" "$TMP/eps1b" "$TMP/eps2b" 2>"$TMP/err"
+rc=$?
+check "... merged with --no-plot: the table alone, no # static_hysteresis ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && [ -s '$TMP/epsb/sweep.tsv' ] && ! grep -q static_hysteresis '$TMP/epsb/sweep.tsv'"
+
+# --- a merge whose figure cannot be written (a file size limit between the
+# table's size and the figure's): the new table is committed, exit 3; the
+# earlier merge's figure stays when it is this table's, said so, and goes
+# when it is another table's (an eps study's force.png), said so too ---
+"$ADHERE" merge -q -o "$TMP/mfig" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" 2>/dev/null
+tsv=$(wc -c <"$TMP/mfig/sweep.tsv") png=$(wc -c <"$TMP/mfig/map.png")
+lim=$(( (tsv + png) / 1024 ))   # ulimit -f counts 512-byte blocks here (dash, POSIX)
+check "a limit between sweep.tsv ($tsv bytes) and map.png ($png): $lim blocks of 512 bytes" \
+    sh -c "[ $tsv -lt $((lim * 512)) ] && [ $((lim * 512)) -lt $png ]"
+cp "$TMP/mfig/map.png" "$TMP/mfig.png"
+ino=$(stat -c %i "$TMP/mfig/sweep.tsv")
+(trap '' XFSZ; ulimit -f "$lim" && exec "$ADHERE" merge -o "$TMP/mfig" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3") 2>"$TMP/err"
+rc=$?
+check "a merge whose map.png passes ulimit -f: exit 3 ($rc: $(head -c 400 "$TMP/err"))" [ "$rc" -eq 3 ]
+check "... its sweep.tsv committed (a new file, 16 rows)" \
+    sh -c "[ \$(stat -c %i '$TMP/mfig/sweep.tsv') != $ino ] && [ \$(grep -v '^#' '$TMP/mfig/sweep.tsv' | tail -n +2 | wc -l) -eq 16 ]"
+check "... the earlier merge's map.png, this table's, left in place as it was, and said so" \
+    sh -c "cmp -s '$TMP/mfig.png' '$TMP/mfig/map.png' && grep -q 'the earlier map.png left in place: drawn from this table' '$TMP/err'"
+check "... no temporary left" sh -c "! ls -a '$TMP/mfig' | grep -v '^\.adhere-manifest\$' | grep -q '^\.[^.]'"
+(trap '' XFSZ; ulimit -f "$lim" && exec "$ADHERE" merge -o "$TMP/epsm" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3") 2>"$TMP/err"
+rc=$?
+check "the same into an eps study's merge: exit 3, its force.png (another table's) removed, said so ($rc: $(head -c 400 "$TMP/err"))" \
+    sh -c "[ $rc -eq 3 ] && [ ! -e '$TMP/epsm/force.png' ] && grep -q \"the earlier merge's force.png removed: drawn from another table\" '$TMP/err' && [ \$(grep -v '^#' '$TMP/epsm/sweep.tsv' | tail -n +2 | wc -l) -eq 16 ]"
 
 # --- resumed: one run's result removed, the rerun steps that one alone ---
 # (in place: a copy of the directory is not adhere's, its manifest says)
+check "study.tsv records the build's numerics id, the one --version prints ($NUMERICS)" \
+    sh -c "echo '$NUMERICS' | grep -qx '[0-9a-f]\{16\}' && grep -qx 'numerics	$NUMERICS' '$TMP/whole/study.tsv'"
 rm -r "$TMP/whole/run-7"
+# beside it: a file of the user's, a temporary a killed run left (in the
+# manifest) and a file of the user's under a temporary's name (not in it)
+echo mine >"$TMP/whole/notes.txt"
+echo cut >"$TMP/whole/.runs.tsv.Kil1ed" && reprove "$TMP/whole" .runs.tsv.Kil1ed
+echo mine >"$TMP/whole/.sweep.tsv.Mine12"
 "$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/whole" 2>"$TMP/resume.err"
 rc=$?
 check "the rerun exits 0 ($rc)" [ "$rc" -eq 0 ]
@@ -104,6 +161,54 @@ check "it stepped run 7 and no other (ran: $ran)" [ "$ran" = "7 " ]
 check "and says 15 were done before" grep -q '(15 done before, kept)' "$TMP/resume.err"
 check "run-7 is back, its table the same but for timing" \
     sh -c "[ -s '$TMP/whole/run-7/summary.tsv' ] && grep -v '^# scene:' '$TMP/whole/sweep.tsv' | cut -f1-14,16- | cmp -s - '$TMP/a'"
+# the record of the run-7 removed goes with it (it stayed for good before):
+# one record of each run-K, each the directory there now
+n7=$(grep -c '^run-7/' "$TMP/whole/.adhere-manifest")
+stale=0
+for k in $(seq 1 16); do
+    [ "$(awk -F'\t' -v n="run-$k/" '$1 == n {print $3}' "$TMP/whole/.adhere-manifest")" = "$(stat -c %i "$TMP/whole/run-$k")" ] ||
+        stale=$((stale + 1))
+done
+check "the manifest keeps one record of run-7 ($n7), each run-K's the directory there ($stale not)" \
+    [ "$n7/$stale/$(grep -c '^run-' "$TMP/whole/.adhere-manifest")" = "1/0/16" ]
+check "... the killed run's temporary is gone with its record" \
+    sh -c "[ ! -e '$TMP/whole/.runs.tsv.Kil1ed' ] && ! grep -q Kil1ed '$TMP/whole/.adhere-manifest'"
+check "... the user's files stay (notes.txt, .sweep.tsv.Mine12)" \
+    sh -c "[ \"\$(cat '$TMP/whole/notes.txt')\" = mine ] && [ \"\$(cat '$TMP/whole/.sweep.tsv.Mine12')\" = mine ]"
+
+# --- a study of another build: never resumed, its rows never mixed ---
+# (the numerics id is the Makefile's hash of the sources that decide the
+# numbers: another build is played by study.tsv's id line, edited, and the
+# manifest's record of it, as that build's adhere would have left them)
+"$ADHERE" $TINY -q "$TMP/map.scene" -o "$TMP/build" 2>/dev/null
+echo mine >"$TMP/build/notes.txt" && echo mine >"$TMP/build/run-3/notes.txt"
+sed -i 's/^numerics\t.*/numerics\t0123456789abcdef/' "$TMP/build/study.tsv" && reprove "$TMP/build" study.tsv
+cp "$TMP/build/runs.tsv" "$TMP/build.runs"
+"$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+rc=$?
+check "a rerun on a study of another numerics id: exit 2, both ids named ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'another build of adhere (numerics there: 0123456789abcdef; this adhere.s: $NUMERICS)' '$TMP/err'"
+check "... what to do said: a new -o, or --overwrite to run it again from scratch" \
+    sh -c "grep -q 'give a new -o' '$TMP/err' && grep -q -- '--overwrite to run the study again from scratch' '$TMP/err'"
+check "... nothing run, nothing changed (runs.tsv, study.tsv's id)" \
+    sh -c "! grep -q '^adhere: run ' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv' && grep -qx 'numerics	0123456789abcdef' '$TMP/build/study.tsv'"
+# a study.tsv from before adhere recorded the id: an unknown build
+sed -i '/^numerics\t/d' "$TMP/build/study.tsv" && reprove "$TMP/build" study.tsv
+"$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+rc=$?
+check "a study.tsv with no numerics id (before ids): exit 2, said so, the same advice ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'numerics there: none, its study.tsv predates numerics ids' '$TMP/err' && grep -q -- '--overwrite' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv'"
+"$ADHERE" $TINY "$TMP/map.scene" --overwrite -o "$TMP/build" 2>"$TMP/err"
+rc=$?
+ran=$(grep -c '^adhere: run [0-9]* of 16' "$TMP/err")
+check "--overwrite: exit $rc, the whole study run again from scratch ($ran runs stepped, none kept)" \
+    sh -c "[ $rc -eq 0 ] && [ $ran -eq 16 ] && ! grep -q 'done before' '$TMP/err' && grep -q 'runs again from scratch' '$TMP/err'"
+check "... study.tsv now this build's id, sweep.tsv the study's but for timing" \
+    sh -c "grep -qx 'numerics	$NUMERICS' '$TMP/build/study.tsv' && grep -v '^# scene:' '$TMP/build/sweep.tsv' | cut -f1-14,16- | cmp -s - '$TMP/a'"
+check "... the user's files stay (notes.txt, run-3/notes.txt)" \
+    sh -c "[ \"\$(cat '$TMP/build/notes.txt')\" = mine ] && [ \"\$(cat '$TMP/build/run-3/notes.txt')\" = mine ]"
+"$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+check "... and a rerun of this build resumes it (16 done before, kept)" grep -q '(16 done before, kept)' "$TMP/err"
 
 # --- runs sharing a loading branch against the same runs stepped alone ---
 # run 6: sigma = 3, turn -1 nm; its own run loads to -1 nm and unloads
@@ -148,6 +253,19 @@ check "--allow-partial joins what there is (exit $rc)" [ "$rc" -eq 0 ]
 check "... and marks the table # PARTIAL, naming the runs" grep -q '^# PARTIAL: 12 of 16 runs have results.*runs 5-8' "$TMP/m3/sweep.tsv"
 check "... the runs without a result say not run" \
     awk -F'\t' '!/^#/ && $1 >= 5 && $1 <= 8 && $NF != "not run" {bad = 1} END {exit bad}' "$TMP/m3/sweep.tsv"
+# shards of another build: study.tsv's id edited in a copy (merge reads the
+# shards' records, not their manifests)
+cp -r "$TMP/shard2" "$TMP/built2"
+sed -i 's/^numerics\t.*/numerics\t0123456789abcdef/' "$TMP/built2/study.tsv"
+$M -o "$TMP/mb" "$TMP/shard1" "$TMP/built2" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "shards of different numerics ids: exit 2, the shards and ids named, nothing written ($(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'shard1 (numerics $NUMERICS) and .*built2 (numerics 0123456789abcdef) were not computed by one build' '$TMP/err' && [ ! -e '$TMP/mb/sweep.tsv' ]"
+sed -i '/^numerics\t/d' "$TMP/built2/study.tsv"
+$M -o "$TMP/mb" "$TMP/shard1" "$TMP/built2" "$TMP/shard3" 2>"$TMP/err"
+rc=$?
+check "a shard with no numerics id (before ids): exit 2, said so, nothing written ($(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'built2 (numerics none, its study.tsv predates numerics ids: an unknown build)' '$TMP/err' && [ ! -e '$TMP/mb/sweep.tsv' ]"
 "$ADHERE" $TINY -q "$TMP/map.scene" --dwell=5 --shard 2/3 -o "$TMP/other" 2>/dev/null
 $M -o "$TMP/m4" "$TMP/shard1" "$TMP/other" "$TMP/shard3" 2>"$TMP/err"
 rc=$?
