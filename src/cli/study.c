@@ -211,8 +211,10 @@ static int study_line(cli_study *st, char *line, char *fp, size_t *runs, size_t 
         return -1;
     *tab = '\0';
     char *v = tab + 1;
+    /* another version's study is judged as any build's, by its numerics
+     * id (resume's refusal, merge's): a version alone changes no number */
     if (!strcmp(line, "version"))
-        return strcmp(v, ADH_VERSION) ? -2 : 0;
+        return 0;
     if (!strcmp(line, "fingerprint"))
         return snprintf(fp, 17, "%s", v) == 16 ? 0 : -1;
     if (!strcmp(line, "numerics")) {   /* the build's: not in the fingerprint, which is what the study is */
@@ -307,11 +309,6 @@ int cli_study_read(cli_study *st, adh_config *cfg, int dirfd, const char *path, 
         rc = -1, lineno++;   /* the line too long for adhere's */
     free(line);
     fclose(f);
-    if (rc == -2) {
-        snprintf(why, whylen, "%.3000s/study.tsv was written by another version of adhere (this is " ADH_VERSION
-                 "): rerun its shard with this one", path);
-        return -1;
-    }
     if (rc != 0 || !fp[0] || !st->shard_n) {
         snprintf(why, whylen, "%.3000s/study.tsv: line %zu is not adhere's", path, lineno);
         return -1;

@@ -182,6 +182,13 @@ check "... the user's files stay (notes.txt, .sweep.tsv.Mine12)" \
 # manifest's record of it, as that build's adhere would have left them)
 "$ADHERE" $TINY -q "$TMP/map.scene" -o "$TMP/build" 2>/dev/null
 echo mine >"$TMP/build/notes.txt" && echo mine >"$TMP/build/run-3/notes.txt"
+# another version of one numerics: the same numbers, so it resumes (before,
+# a version alone cleared the study and ran it again)
+sed -i 's/^version\t.*/version\t0.0.1/' "$TMP/build/study.tsv" && reprove "$TMP/build" study.tsv
+"$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+rc=$?
+check "a study of another version with this numerics id resumes: exit 0, every run kept ($rc: $(head -c 300 "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && ! grep -q '^adhere: run ' '$TMP/err' && grep -q '16 done before, kept' '$TMP/err'"
 sed -i 's/^numerics\t.*/numerics\t0123456789abcdef/' "$TMP/build/study.tsv" && reprove "$TMP/build" study.tsv
 cp "$TMP/build/runs.tsv" "$TMP/build.runs"
 "$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
