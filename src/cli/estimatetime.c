@@ -6,27 +6,31 @@
 #include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "adhere/clock.h"
 #include "adhere/kernel.h"
 #include "adhere/law.h"
+#include "adhere/units.h"
 #include "cli/progress.h"
 
-/* What a step costs, in the operations timed below, measured (profiled
- * on the visco sphere, N = 648: LU and its solves 35 %, products 22 %,
- * the rest IDAS's vector operations and the law at every node; fitted on
- * N = 150 ... 1000 dense and the sigma = 22.5 cycle's 1952 rings, H^2,
- * docs/viscoelastic.md): about 10 kernel products a step (Newton's
- * residuals, GMRES, the q elimination and the energies), 1.4 dense LUs of
- * the active nodes' matrix (a factorization nearly every step, and its
- * solves) at 0.63 of the deepest contact's nodes (an LU's n^3 averaged
- * over a contact growing from nothing), and about 90 passes over the nodes
- * the size of the law's; under a hierarchical kernel, HODLR solves and
- * updates in place of the LU, about 40 products' worth. */
-#define STEP_PRODUCTS 10.0
-#define STEP_LUS 1.4
-#define STEP_LU_SHARE 0.63
-#define STEP_PASSES 90.0
+/* What a step costs, in the operations timed below: fitted (least
+ * squares in the log of the ratio) to 15 runs on dense kernels, N = 150
+ * ... 1000, sigma 2.25 and 7.5, 1 nm/s ... 10 mm/s, each within 12 % of
+ * its CPU seconds a step (docs/viscoelastic.md): 14 kernel products
+ * (Newton's residuals, GMRES, the q elimination, the energies), one dense
+ * LU of the preconditioner's active nodes (a factorization nearly every
+ * step; the active nodes, where p' matters, reach 1.2 to 1.35 times the
+ * deepest contact's and average, as an LU's m^3, 0.9 of them), and 70
+ * passes over the nodes the size of the law's (IDAS's vector operations,
+ * the law at every node). Under a hierarchical kernel HODLR solves and
+ * updates replace the LU: 40 products' worth (sigma = 22.5, 1952 rings,
+ * H^2). Profiled on the visco sphere (N = 648): LU and its solves 35 %,
+ * products 22 %, the rest IDAS and the law. */
+#define STEP_PRODUCTS 14.0
+#define STEP_LUS 1.0
+#define STEP_LU_SHARE 0.9
+#define STEP_PASSES 70.0
 #define STEP_HODLR_PRODUCTS 40.0
 
 /* CPU seconds a call of fn takes: at least 3 calls and 0.05 s. */
@@ -153,83 +157,105 @@ static size_t nodes_inside(const adh_run_spec *s, double a)
     return m;
 }
 
-/* One run's CPU seconds, its steps in *c and a step's seconds in *step. */
-static double run_seconds(const adh_run_spec *s, grid_cost *gc, adh_plan_time_cost *c, double *step,
-                          size_t *lu_nodes, double *lu)
+/* One run's estimate and what it rests on. */
+typedef struct run_est {
+    adh_plan_time_cost c;
+    grid_cost grid;       /* its grid's timings */
+    double build;         /* the kernel's build, when its grid was new */
+    double step;          /* a step's CPU seconds */
+    size_t lu_nodes;      /* a dense LU's size (0: none) */
+    double lu;            /* its CPU seconds */
+    double cpu;           /* the run's: build + steps x step */
+} run_est;
+
+/* Run s's estimate in *e, timing its grid unless gc holds it already. */
+static int run_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
 {
-    adh_plan_time_steps(s, c);
-    double build = 0;
+    adh_plan_time_steps(s, &e->c);
+    e->build = 0;
     if (!gc->n || !adh_config_same_grid(&gc->spec, s)) {
         if (time_grid(s, gc) != 0)
-            return NAN;
-        build = gc->build;   /* once a grid */
+            return -1;
+        e->build = gc->build;   /* once a grid */
     }
-    *step = STEP_PRODUCTS * gc->product + STEP_PASSES * gc->pass;
-    *lu_nodes = 0;
-    *lu = 0;
+    e->grid = *gc;
+    e->step = STEP_PRODUCTS * gc->product + STEP_PASSES * gc->pass;
+    e->lu_nodes = 0;
+    e->lu = 0;
     if (gc->hierarchical) {
-        *step += STEP_HODLR_PRODUCTS * gc->product;
+        e->step += STEP_HODLR_PRODUCTS * gc->product;
     } else {
-        *lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(s, c->a_turn));
-        *lu = lu_seconds(*lu_nodes);
-        *step += STEP_LUS * *lu;
+        e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(s, e->c.a_turn));
+        e->lu = lu_seconds(e->lu_nodes);
+        e->step += STEP_LUS * e->lu;
     }
-    return build + c->steps * *step;
+    e->cpu = e->build + e->c.steps * e->step;
+    return isfinite(e->cpu) ? 0 : -1;
+}
+
+/* x to two significant digits (the plan's steps are no better). */
+static double two_digits(double x)
+{
+    if (!(x > 0))
+        return x;
+    double p = pow(10.0, floor(log10(x)) - 1);
+    return nearbyint(x / p) * p;
+}
+
+/* "time: [run 1 ]about 1.3 s of CPU (1.33 s: ...)": one run's line. */
+static void print_run(FILE *f, const char *label, const run_est *e)
+{
+    char t[32], a[32], si[32], so[32], ei[32], eo[32];
+    cli_progress_duration(e->cpu, t, sizeof t);
+    adh_format_quantity(e->c.a_turn, ADH_Q_LENGTH, 3, a, sizeof a);
+    adh_format_quantity(e->c.step_in, ADH_Q_LENGTH, 3, si, sizeof si);
+    adh_format_quantity(e->c.step_out, ADH_Q_LENGTH, 3, so, sizeof so);
+    adh_format_quantity(e->c.E_in, ADH_Q_PRESSURE, 3, ei, sizeof ei);
+    adh_format_quantity(e->c.E_out, ADH_Q_PRESSURE, 3, eo, sizeof eo);
+    int one = strcmp(ei, eo) == 0;   /* the same both ways: say it once */
+    fprintf(f, "time: %sabout %s of CPU (%.3g s: about %.0f integrator steps, %.0f out of contact and %.0f as the "
+               "contact line moves out to %s and back, %s a step in and %s out: 0.068 edge zones at the effective "
+               "modul%s %s%s%s, measured; 15 %% more for jumps and rejected steps; a step about %.3g ms: 14 kernel "
+               "products of %.3g ms, ", label, t, e->cpu, two_digits(e->c.steps), two_digits(e->c.free_steps),
+            two_digits(e->c.contact_steps), a, si, so, one ? "us" : "i", ei, one ? "" : " and ", one ? "" : eo, e->step * 1e3, e->grid.product * 1e3);
+    if (e->lu_nodes)
+        fprintf(f, "a dense LU of %zu nodes (%.3g ms), ", e->lu_nodes, e->lu * 1e3);
+    else if (e->grid.hierarchical)
+        fprintf(f, "HODLR solves and updates about 40 products' worth, ");
+    fprintf(f, "70 passes of the law over %zu nodes (%.3g us each), timed now; the kernel built in %.2g s); within "
+               "a factor of about 3 where the grid resolves the contact's edge zone, slower where it does not\n",
+            e->grid.n, e->grid.pass * 1e6, e->build);
 }
 
 void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
 {
     static adh_plan_progress runs[ADH_PLAN_MAX_RUNS];
     size_t n = plan->nruns < ADH_PLAN_MAX_RUNS ? plan->nruns : ADH_PLAN_MAX_RUNS;
-    grid_cost gc = { .n = 0 }, gc0 = { .n = 0 };
-    adh_plan_time_cost c, c0 = { 0 };
-    double cpu = 0, steps = 0, step = NAN, step0 = NAN, lu0 = 0, build = 0, smin = INFINITY, smax = 0;
-    size_t lu_nodes0 = 0;
+    grid_cost gc = { .n = 0 };
+    run_est e = { .cpu = 0 }, first = e;
+    double cpu = 0, steps = 0, smin = INFINITY, smax = 0;
     for (size_t i = 0; i < n; i++) {
         adh_run_spec s;
         adh_config_sweep_run(cfg, i, &s);
-        size_t lu_nodes;
-        double lu, t = run_seconds(&s, &gc, &c, &step, &lu_nodes, &lu);
-        if (!isfinite(t)) {
+        if (run_estimate(&s, &gc, &e) != 0) {
             fprintf(f, "time: not estimated (the kernel could not be built here)\n");
             return;
         }
-        if (i == 0) {
-            c0 = c;
-            step0 = step;
-            lu0 = lu;
-            lu_nodes0 = lu_nodes;
-            build = gc.build;
-            gc0 = gc;
-        }
-        runs[i] = (adh_plan_progress){ .cost = t };
-        cpu += t;
-        steps += c.steps;
-        smin = fmin(smin, c.steps);
-        smax = fmax(smax, c.steps);
+        if (i == 0)
+            first = e;
+        runs[i] = (adh_plan_progress){ .cost = e.cpu };
+        cpu += e.cpu;
+        steps += e.c.steps;
+        smin = fmin(smin, e.c.steps);
+        smax = fmax(smax, e.c.steps);
     }
-    char t[32], w[32];
-    cli_progress_duration(cpu, t, sizeof t);
     if (n > 1) {
+        char t[32], w[32];
+        cli_progress_duration(cpu, t, sizeof t);
         cli_progress_duration(adh_plan_time_left(runs, n, plan->jobs, 0, 1.0), w, sizeof w);
-        fprintf(f, "time: about %s of CPU in all, %s on %d core%s (%.3g s of CPU: %.2g integrator steps, %.2g to %.2g "
-                   "a run%s; run 1's as below)\n", t, w, plan->jobs, plan->jobs == 1 ? "" : "s", cpu, steps, smin, smax,
-                n < plan->nruns ? "; the first runs alone" : "");
+        fprintf(f, "time: about %s of CPU in all, %s on %d core%s (%.3g s: about %.0f integrator steps, %.0f to %.0f "
+                   "a run, each run's as run 1's below%s)\n", t, w, plan->jobs, plan->jobs == 1 ? "" : "s", cpu,
+                two_digits(steps), two_digits(smin), two_digits(smax), n < plan->nruns ? "; the first runs alone" : "");
     }
-    double cpu0 = build + c0.steps * step0;
-    cli_progress_duration(cpu0, t, sizeof t);
-    fprintf(f, "time: %sabout %s (%.3g s of CPU: about %.2g integrator steps, %.0f out of contact and %.0f as the "
-               "contact line moves %.3g um in and out, %.3g nm a step approaching and %.3g nm retracting (0.068 edge "
-               "zones at the effective moduli %.2g and %.2g GPa, measured), 15 %% more for jumps and rejected steps; "
-               "each step about %.3g ms of CPU here: 10 kernel products of %.3g ms, ",
-            n > 1 ? "run 1 " : "", t, cpu0, c0.steps, c0.free_steps, c0.contact_steps,
-            c0.a_turn * 1e6, c0.step_in * 1e9, c0.step_out * 1e9, c0.E_in / 1e9, c0.E_out / 1e9, step0 * 1e3,
-            gc0.product * 1e3);
-    if (lu_nodes0)
-        fprintf(f, "a dense LU of %zu nodes (%.3g ms) 1.4 times, ", lu_nodes0, lu0 * 1e3);
-    else if (gc0.hierarchical)
-        fprintf(f, "HODLR solves and updates about 40 products' worth, ");
-    fprintf(f, "90 passes of the law over the %zu nodes, timed now; the kernel built in %.2g s); "
-               "a guide within a factor of about 3 where the grid resolves the contact's edge zone, "
-               "slower where it does not\n", gc0.n, build);
+    print_run(f, n > 1 ? "run 1 " : "", &first);
 }

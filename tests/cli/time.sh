@@ -223,8 +223,8 @@ for args in "$S225" "$S225 --speed=10nm/s" "$S75"; do
     i=$((i + 1))
     # shellcheck disable=SC2086
     "$ADHERE" --plan $args >"$TMP/tp$i" 2>&1
-    pcpu=$(sed -n 's/^time: about .* (\([0-9.e+-]*\) s of CPU: about .*/\1/p' "$TMP/tp$i")
-    psteps=$(sed -n 's/^time: .* of CPU: about \([0-9.e+]*\) integrator steps.*/\1/p' "$TMP/tp$i")
+    pcpu=$(sed -n 's/^time: about [^(]* of CPU (\([0-9.e+-]*\) s: about .*/\1/p' "$TMP/tp$i")
+    psteps=$(sed -n 's/^time: about [^(]* ([0-9.e+-]* s: about \([0-9]*\) integrator steps.*/\1/p' "$TMP/tp$i")
     # shellcheck disable=SC2086
     rcpu=$(cpu_of "$TMP/tr$i" $args)
     rsteps=$(awk -F'\t' '$1 == "time_steps" {print $2}' "$TMP/tr$i/summary.tsv")
@@ -233,7 +233,7 @@ for args in "$S225" "$S225 --speed=10nm/s" "$S75"; do
 done
 # shellcheck disable=SC2086
 "$ADHERE" --plan $S225 --sweep=speed=1um/s,100nm/s >"$TMP/tps" 2>&1
-pcpu=$(sed -n 's/^time: about .* of CPU in all, .* (\([0-9.e+-]*\) s of CPU: .*/\1/p' "$TMP/tps")
+pcpu=$(sed -n 's/^time: about [^(]* of CPU in all, [^(]* (\([0-9.e+-]*\) s: .*/\1/p' "$TMP/tps")
 # shellcheck disable=SC2086
 rcpu=$(cpu_of "$TMP/trs" $S225 --sweep=speed=1um/s,100nm/s)
 within "a study of two speeds" "$pcpu" "$rcpu" 3
