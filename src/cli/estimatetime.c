@@ -61,12 +61,18 @@ static void lu_once(void *ctx)
     LAPACKE_dgetrf(LAPACK_ROW_MAJOR, j->m, j->m, j->work, j->m, j->piv);
 }
 
+/* Above this many unknowns an LU is timed at it and scaled as m^3: the
+ * plan's own time and memory stay bounded (16 MB, well under a second). */
+#define LU_TIMED_MAX 1000
+
 /* CPU seconds of a dense LU of m unknowns (a diagonally dominant matrix, as
  * I - c W diag(p') is near its fold), NAN when out of memory. */
 static double lu_seconds(size_t m)
 {
     if (m < 2)
         return 0.0;
+    if (m > LU_TIMED_MAX)
+        return lu_seconds(LU_TIMED_MAX) * pow((double)m / LU_TIMED_MAX, 3.0);
     lu_job j = { .m = (int)m };
     j.a = malloc(2 * m * m * sizeof *j.a);
     j.piv = malloc(m * sizeof *j.piv);
