@@ -43,9 +43,7 @@ void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
         return;
     }
     if (plan->time_mode) {
-        fprintf(f, "time: not estimated in CPU seconds: in physical time the integrator's tolerance sets the steps "
-                   "(the visco scene: 1.1 CPU s at its N = 648, visco-speed's eight runs 39 CPU s, "
-                   "docs/viscoelastic.md)\n");
+        cli_estimate_time_print(f, cfg, plan);
         return;
     }
     if (plan->static_mode) {

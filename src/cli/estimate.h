@@ -17,4 +17,10 @@ double cli_estimate_iteration(const adh_config *cfg, double *build);
  * relaxation; what is not estimated, and why, otherwise. */
 void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
 
+/* The time line of a run (or study) in physical time (estimatetime.c):
+ * the integrator's steps the plan expects (adh_plan_time_steps), each
+ * priced by the kernel product, dense LU and law pass it takes, timed now
+ * on the run's grid, in CPU seconds. */
+void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
+
 #endif

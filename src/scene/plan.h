@@ -75,6 +75,31 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *plan);
  * drive, the spring and the time the protocol spans. */
 void adh_plan_time_print(FILE *f, const adh_config *cfg);
 
+/* What a run in physical time is expected to take (plantime.c): about
+ * one integrator step per TIME_EDGE_PER_STEP (0.068) edge zones the
+ * contact line moves, the edge zone (adh_edge_zone) of an effective modulus
+ * between E0 (slow: y = sqrt(10 v tau / l(E0)) small) and Einf (fast),
+ * E0^(1-f) Einf^f with f = y/(1+y); the contact line's travel JKR's
+ * radius at each turn at that modulus (in on loading, out on each
+ * unloading); about 60 steps out of contact a branch, 40 a dwell; 15 %
+ * more for rejected steps and jumps; near the elastic limit, where the
+ * instantaneous problem has a lattice fold at every ring, up to 3.5 times
+ * the steps in contact (lattice, 1 + 2.5 / (1 + (Einf/E0 - 1)/0.15)).
+ * Measured on resolved grids
+ * (docs/viscoelastic.md): a grid that does not resolve the edge zone takes
+ * more (2.3 times at 0.35 nodes across it). */
+typedef struct adh_plan_time_cost {
+    double steps;          /* integrator steps expected */
+    double free_steps;     /* of them out of contact, before the 15 % */
+    double contact_steps;  /* in contact, before the 15 % (lattice included) */
+    double lattice;        /* the elastic limit's factor on them: 1 ... 3.5 */
+    double E_ratio;        /* Einf / E0 */
+    double a_turn;         /* contact radius at the deepest turn, m */
+    double E_in, E_out;    /* effective moduli approaching, retracting, Pa */
+    double step_in, step_out;  /* the contact line's travel a step, m */
+} adh_plan_time_cost;
+void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c);
+
 /* Runs at once for a sweep: [sweep] jobs, else one per online core, never
  * more than the runs. */
 int adh_plan_jobs(const adh_config *cfg);

@@ -75,7 +75,7 @@ check "--plan visco stores events.tsv" grep -q '^stored: events.tsv' "$TMP/plan"
 check "--plan visco: summary.tsv with the solid, the drive, hysteresis and dissipated" grep -q "^stored: summary.tsv: .*the solid and the drive, hysteresis, dissipated" "$TMP/plan"
 "$ADHERE" --plan visco-speed >"$TMP/plans" 2>&1
 check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans' && grep -q '^stored: sweep.tsv: .*hysteresis, dissipated, time' '$TMP/plans'"
-check "--plan visco-speed: no eps-time estimate, no eps in its run lines" sh -c "grep -q '^time: not estimated in CPU seconds: in physical time' '$TMP/plans' && ! grep -q 'expected time' '$TMP/plans' && ! grep -q '^run [0-9]*: .*eps =' '$TMP/plans' && ! grep -q 'iterations, each about one kernel product' '$TMP/plans'"
+check "--plan visco-speed: a CPU time for the study and its first run, no eps-time estimate, no eps in its run lines" sh -c "grep -q '^time: about .* of CPU in all, .* on [0-9]* cores\\? (' '$TMP/plans' && grep -q '^time: run 1 about .* integrator steps' '$TMP/plans' && ! grep -q 'expected time' '$TMP/plans' && ! grep -q '^run [0-9]*: .*eps =' '$TMP/plans' && ! grep -q 'iterations, each about one kernel product' '$TMP/plans'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
 check "--plan afm: one static curve serves every k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^skip: a curve per k: the 9 runs .* share 1 static curve ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
@@ -197,4 +197,47 @@ printf '[material]\nmaterial = sls\nE0 = 300MPa\nEinf = 3GPa\ntau = 1ms\n[protoc
 "$ADHERE" -b -q -N 100 --force --no-plot "$TMP/nocycle.scene" -o "$TMP/nocycle" 2>/dev/null
 check "approach only in physical time: hysteresis, dissipated, jump_loss and stored_change are nan" sh -c \
     "[ \"\$(awk -F'\t' '\$1 ~ /^(hysteresis|dissipated|jump_loss|stored_change)\$/ {print \$2}' '$TMP/nocycle/summary.tsv' | tr '\n' ' ')\" = 'nan nan nan nan ' ]"
+# --plan's CPU time in physical time: the integrator's steps the plan
+# expects (the contact line's travel over a measured step) times a step's
+# cost timed on the run's grid, against the same run's CPU seconds (sh's
+# times: the children's user and system, as the plan times its operations
+# in CPU seconds, so other jobs on the machine do not count), for three
+# runs of different cost: sigma = 2.25 at 1 um/s and at 10 nm/s (nearer
+# relaxed: a shorter step, three times the steps), the Figure 4 sphere's
+# sigma = 7.5 on 648 nodes, and an elastic sphere in time at sigma = 2.25
+# (its lattice folds: seven times the first run's steps); each within a
+# factor 3, and the steps within a factor 2 of the run's own count. Then
+# a study of two speeds.
+cpu_of() { # cpu_of DIR ARGS...: the CPU seconds of adhere --batch ARGS -o DIR
+    d=$1; shift
+    # shellcheck disable=SC2086
+    ( "$ADHERE" --batch -q --no-plot "$@" -o "$d" >/dev/null 2>&1; times ) |
+        awk 'NR == 2 {split($1, u, /[ms]/); split($2, s, /[ms]/); print u[1] * 60 + u[2] + s[1] * 60 + s[2]}'
+}
+within() { # within WHAT ESTIMATE ACTUAL FACTOR
+    check "$1: the plan's $2 within a factor $4 of the run's $3" \
+        awk -v p="$2" -v r="$3" -v k="$4" 'BEGIN {exit !(p > 0 && r > 0 && p / r < k && r / p < k)}'
+}
+S225="--material=sls --E0=1GPa --turn=-3nm -N 300 --force --spacing=4nm"
+S75="--material=sls --E0=0.3GPa --Einf=3GPa --tau=1ms --turn=-5nm -N 648 --force"
+i=0
+for args in "$S225" "$S225 --speed=10nm/s" "$S75" "--mode=time -E 1GPa -N 300 --force --spacing=4nm --turn=-3nm"; do
+    i=$((i + 1))
+    # shellcheck disable=SC2086
+    "$ADHERE" --plan $args >"$TMP/tp$i" 2>&1
+    pcpu=$(sed -n 's/^time: about [^(]* of CPU (\([0-9.e+-]*\) s: about .*/\1/p' "$TMP/tp$i")
+    psteps=$(sed -n 's/^time: about [^(]* ([0-9.e+-]* s: about \([0-9]*\) integrator steps.*/\1/p' "$TMP/tp$i")
+    # shellcheck disable=SC2086
+    rcpu=$(cpu_of "$TMP/tr$i" $args)
+    rsteps=$(awk -F'\t' '$1 == "time_steps" {print $2}' "$TMP/tr$i/summary.tsv")
+    within "time run $i ($args)" "$pcpu" "$rcpu" 3
+    within "time run $i" "$psteps" "$rsteps" 2
+done
+# shellcheck disable=SC2086
+"$ADHERE" --plan $S225 --sweep=speed=1um/s,100nm/s >"$TMP/tps" 2>&1
+pcpu=$(sed -n 's/^time: about [^(]* of CPU in all, [^(]* (\([0-9.e+-]*\) s: .*/\1/p' "$TMP/tps")
+# shellcheck disable=SC2086
+rcpu=$(cpu_of "$TMP/trs" $S225 --sweep=speed=1um/s,100nm/s)
+within "a study of two speeds" "$pcpu" "$rcpu" 3
+
 done_testing

@@ -5,6 +5,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "adhere/models.h"
+#include "adhere/protocol.h"
 #include "scene/config.h"
 #include "scene/plan.h"
 #include "tap.h"
@@ -12,6 +14,48 @@
 static int near(double a, double b)
 {
     return fabs(a - b) <= 1e-9 * fmax(1.0, fabs(b));
+}
+
+/* Physical time's steps (adh_plan_time_steps): the contact line's travel
+ * is JKR's radius at the turn (its overlap there is z0 - turn), a step's
+ * travel 0.068 edge zones of E0 when slow and of Einf when fast, and an
+ * elastic sphere (Einf = E0) does not depend on the speed and takes 3.5
+ * times the steps in contact (a lattice fold at every ring). */
+static void time_steps(adh_config *c)
+{
+    adh_config_default(c);
+    adh_run_spec *s = &c->spec;
+    s->mode = ADH_MODE_TIME;
+    s->time.sls = 1;
+    s->time.Einf = 10 * s->mat.E;
+    s->time.tau = 1e-3;
+    s->time.speed_in = s->time.speed_out = 1e-15;
+    s->time.dwell = 0;
+    adh_plan_time_cost slow, fast, slow_el, fast_el;
+    adh_plan_time_steps(s, &slow);
+    double ov;
+    adh_material m = s->mat;
+    m.E = slow.E_in;
+    adh_jkr(&m, slow.a_turn, NULL, &ov);
+    double turn = adh_protocol_deepest_turn(&s->proto);
+    ok(fabs(ov - (m.z0 - turn)) < 1e-9 * m.z0, "the contact radius %.4g nm is JKR's at the deepest turn (overlap "
+       "%.6g nm, z0 - turn %.6g nm)", slow.a_turn * 1e9, ov * 1e9, (m.z0 - turn) * 1e9);
+    m.E = s->mat.E;
+    ok(fabs(slow.E_in / s->mat.E - 1) < 1e-3 && fabs(slow.step_in / (0.068 * adh_edge_zone(&m)) - 1) < 1e-3,
+       "slow (1 fm/s): the relaxed modulus (%.4g of E0), 0.068 of its edge zone a step", slow.E_in / s->mat.E);
+    s->time.speed_in = s->time.speed_out = 1.0;
+    adh_plan_time_steps(s, &fast);
+    ok(fabs(fast.E_in / s->time.Einf - 1) < 0.01 && fast.steps < slow.steps,
+       "fast (1 m/s): Einf's (%.4g of it), fewer steps (%.0f against %.0f)", fast.E_in / s->time.Einf,
+       fast.steps, slow.steps);
+    s->time.sls = 0;
+    adh_plan_time_steps(s, &fast_el);
+    s->time.speed_in = s->time.speed_out = 1e-15;
+    adh_plan_time_steps(s, &slow_el);
+    ok(near(fast_el.steps, slow_el.steps) && near(slow_el.lattice, 3.5) &&
+           fabs(slow_el.contact_steps / slow_el.lattice / (slow.contact_steps / slow.lattice) - 1) < 1e-3,
+       "an elastic sphere: the same steps at every speed (%.0f), in contact the relaxed solid's times 3.5 for "
+       "its lattice folds", slow_el.steps);
 }
 
 int main(void)
@@ -49,5 +93,6 @@ int main(void)
     double i01 = adh_plan_iterations(&c.spec);
     ok(i01 / i1 > 4 && i01 / i1 < pow(10, 0.72) * 1.0001, "eps 10 times smaller: %.2f times the iterations "
        "(the steps out of contact do not grow)", i01 / i1);
+    time_steps(&c);
     return tap_done();
 }

@@ -1,0 +1,270 @@
+/* --plan's CPU time for physical time: the integrator's steps the plan
+ * expects (adh_plan_time_steps: the contact line's travel over a measured
+ * step), each priced by what a step does, timed here on the run's grid. */
+#include "cli/estimate.h"
+
+#include <lapacke.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/clock.h"
+#include "adhere/kernel.h"
+#include "adhere/law.h"
+#include "adhere/units.h"
+#include "cli/progress.h"
+
+/* What a step costs, in the operations timed below: fitted (least
+ * squares in the log of the ratio) to 15 runs on dense kernels, N = 150
+ * ... 1000, sigma 2.25 and 7.5, 1 nm/s ... 10 mm/s, each within 12 % of
+ * its CPU seconds a step (docs/viscoelastic.md): 14 kernel products
+ * (Newton's residuals, GMRES, the q elimination, the energies), one dense
+ * LU of the preconditioner's active nodes (a factorization nearly every
+ * step; the active nodes, where p' matters, reach 1.2 to 1.35 times the
+ * deepest contact's and average, as an LU's m^3, 0.9 of them), and 70
+ * passes over the nodes the size of the law's (IDAS's vector operations,
+ * the law at every node). Under a hierarchical kernel HODLR solves and
+ * updates replace the LU: 40 products' worth (sigma = 22.5, 1952 rings,
+ * H^2). Profiled on the visco sphere (N = 648): LU and its solves 35 %,
+ * products 22 %, the rest IDAS and the law. */
+#define STEP_PRODUCTS 14.0
+#define STEP_LUS 1.0
+#define STEP_LU_SHARE 0.9
+#define STEP_PASSES 70.0
+#define STEP_HODLR_PRODUCTS 40.0
+
+/* CPU seconds a call of fn takes: at least 3 calls and 0.05 s. */
+typedef void (*timed_fn)(void *ctx);
+static double cpu_per_call(timed_fn fn, void *ctx)
+{
+    size_t reps = 0;
+    double t0 = adh_clock_cpu_seconds(), t = t0;
+    while (reps < 3 || t - t0 < 0.05) {
+        fn(ctx);
+        reps++;
+        t = adh_clock_cpu_seconds();
+    }
+    return (t - t0) / (double)reps;
+}
+
+typedef struct lu_job {
+    int m;
+    double *a, *work;
+    int *piv;
+} lu_job;
+
+static void lu_once(void *ctx)
+{
+    lu_job *j = ctx;
+    for (int i = 0; i < j->m * j->m; i++)
+        j->work[i] = j->a[i];
+    LAPACKE_dgetrf(LAPACK_ROW_MAJOR, j->m, j->m, j->work, j->m, j->piv);
+}
+
+/* Above this many unknowns an LU is timed at it and scaled as m^3: the
+ * plan's own time and memory stay bounded (16 MB, well under a second). */
+#define LU_TIMED_MAX 1000
+
+/* CPU seconds of a dense LU of m unknowns (a diagonally dominant matrix, as
+ * I - c W diag(p') is near its fold), NAN when out of memory. */
+static double lu_seconds(size_t m)
+{
+    if (m < 2)
+        return 0.0;
+    if (m > LU_TIMED_MAX)
+        return lu_seconds(LU_TIMED_MAX) * pow((double)m / LU_TIMED_MAX, 3.0);
+    lu_job j = { .m = (int)m };
+    j.a = malloc(2 * m * m * sizeof *j.a);
+    j.piv = malloc(m * sizeof *j.piv);
+    double t = NAN;
+    if (j.a && j.piv) {
+        j.work = j.a + m * m;
+        for (size_t r = 0; r < m; r++)
+            for (size_t c = 0; c < m; c++)
+                j.a[r * m + c] = (r == c ? (double)m : 0.0) + 1.0 / (1.0 + fabs((double)r - (double)c));
+        t = cpu_per_call(lu_once, &j);
+    }
+    free(j.a);
+    free(j.piv);
+    return t;
+}
+
+typedef struct law_job {
+    const adh_grid *g;
+    const adh_material *m;
+    double *out;
+} law_job;
+
+/* The law's pressure and slope at every node of the sphere's gap. */
+static void law_once(void *ctx)
+{
+    law_job *j = ctx;
+    for (size_t i = 0; i < j->g->n; i++) {
+        double r = j->g->r[i], h = j->m->z0 + r * r / (2.0 * j->m->R);
+        j->out[i] = adh_lj_pressure(h, j->m->A, j->m->z0) + adh_lj_dpressure(h, j->m->A, j->m->z0);
+    }
+}
+
+typedef struct product_job {
+    const adh_kernel *k;
+    size_t n;
+    double *v;
+} product_job;
+
+static void product_once(void *ctx)
+{
+    product_job *j = ctx;
+    adh_kernel_apply(j->k, j->v, j->v + j->n, j->v + 2 * j->n);
+}
+
+/* The grid's timings: one product, one pass of the law. */
+typedef struct grid_cost {
+    adh_run_spec spec;    /* whose grid */
+    size_t n;
+    int hierarchical;
+    double product, pass, build;
+} grid_cost;
+
+static int time_grid(const adh_run_spec *s, grid_cost *gc)
+{
+    double t0 = adh_clock_cpu_seconds();
+    adh_grid *g = adh_config_grid_alloc(s);
+    int st = 0;
+    adh_kernel *k = g ? adh_config_kernel_alloc(s, g, &st) : NULL;
+    gc->build = adh_clock_cpu_seconds() - t0;
+    double *v = k ? malloc(3 * g->n * sizeof *v) : NULL;
+    int rc = -1;
+    if (v) {
+        for (size_t i = 0; i < g->n; i++)
+            v[i] = 1.0 / (1.0 + (double)i);   /* a pressure falling off from the axis */
+        product_job pj = { k, g->n, v };
+        law_job lj = { g, &s->mat, v + g->n };
+        gc->spec = *s;
+        gc->n = g->n;
+        gc->hierarchical = adh_kernel_storage_of(k) != ADH_STORAGE_DENSE;
+        gc->product = cpu_per_call(product_once, &pj);
+        gc->pass = cpu_per_call(law_once, &lj);
+        rc = 0;
+    }
+    free(v);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+    return rc;
+}
+
+/* Nodes of spec's grid inside radius a. */
+static size_t nodes_inside(const adh_run_spec *s, double a)
+{
+    adh_grid *g = adh_config_grid_alloc(s);
+    size_t m = 0;
+    while (g && m < g->n && g->r[m] < a)
+        m++;
+    adh_grid_free(g);
+    return m;
+}
+
+/* One run's estimate and what it rests on. */
+typedef struct run_est {
+    adh_plan_time_cost c;
+    grid_cost grid;       /* its grid's timings */
+    double build;         /* the kernel's build, when its grid was new */
+    double step;          /* a step's CPU seconds */
+    size_t lu_nodes;      /* a dense LU's size (0: none) */
+    double lu;            /* its CPU seconds */
+    double cpu;           /* the run's: build + steps x step */
+} run_est;
+
+/* Run s's estimate in *e, timing its grid unless gc holds it already. */
+static int run_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
+{
+    adh_plan_time_steps(s, &e->c);
+    e->build = 0;
+    if (!gc->n || !adh_config_same_grid(&gc->spec, s)) {
+        if (time_grid(s, gc) != 0)
+            return -1;
+        e->build = gc->build;   /* once a grid */
+    }
+    e->grid = *gc;
+    e->step = STEP_PRODUCTS * gc->product + STEP_PASSES * gc->pass;
+    e->lu_nodes = 0;
+    e->lu = 0;
+    if (gc->hierarchical) {
+        e->step += STEP_HODLR_PRODUCTS * gc->product;
+    } else {
+        e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(s, e->c.a_turn));
+        e->lu = lu_seconds(e->lu_nodes);
+        e->step += STEP_LUS * e->lu;
+    }
+    e->cpu = e->build + e->c.steps * e->step;
+    return isfinite(e->cpu) ? 0 : -1;
+}
+
+/* x to two significant digits (the plan's steps are no better). */
+static double two_digits(double x)
+{
+    if (!(x > 0))
+        return x;
+    double p = pow(10.0, floor(log10(x)) - 1);
+    return nearbyint(x / p) * p;
+}
+
+/* "time: [run 1 ]about 1.3 s of CPU (1.33 s: ...)": one run's line. */
+static void print_run(FILE *f, const char *label, const run_est *e)
+{
+    char t[32], a[32], si[32], so[32], ei[32], eo[32];
+    cli_progress_duration(e->cpu, t, sizeof t);
+    adh_format_quantity(e->c.a_turn, ADH_Q_LENGTH, 3, a, sizeof a);
+    adh_format_quantity(e->c.step_in, ADH_Q_LENGTH, 3, si, sizeof si);
+    adh_format_quantity(e->c.step_out, ADH_Q_LENGTH, 3, so, sizeof so);
+    adh_format_quantity(e->c.E_in, ADH_Q_PRESSURE, 3, ei, sizeof ei);
+    adh_format_quantity(e->c.E_out, ADH_Q_PRESSURE, 3, eo, sizeof eo);
+    int one = strcmp(ei, eo) == 0;   /* the same both ways: say it once */
+    fprintf(f, "time: %sabout %s of CPU (%.3g s: about %.0f integrator steps, %.0f out of contact and %.0f as the "
+               "contact line moves out to %s and back, %s a step in and %s out: 0.068 edge zones at the effective "
+               "modul%s %s%s%s, measured; ", label, t, e->cpu, two_digits(e->c.steps), two_digits(e->c.free_steps),
+            two_digits(e->c.contact_steps), a, si, so, one ? "us" : "i", ei, one ? "" : " and ", one ? "" : eo);
+    if (e->c.lattice > 1.05)
+        fprintf(f, "%.2g times that for the lattice folds of a solid near elastic (Einf/E0 = %.3g); ", e->c.lattice,
+                e->c.E_ratio);
+    fprintf(f, "15 %% more for jumps and rejected steps; a step about %.3g ms: 14 kernel products of %.3g ms, ", e->step * 1e3, e->grid.product * 1e3);
+    if (e->lu_nodes)
+        fprintf(f, "a dense LU of %zu nodes (%.3g ms), ", e->lu_nodes, e->lu * 1e3);
+    else if (e->grid.hierarchical)
+        fprintf(f, "HODLR solves and updates about 40 products' worth, ");
+    fprintf(f, "70 passes of the law over %zu nodes (%.3g us each), timed now; the kernel built in %.2g s); within "
+               "a factor of about 3 where the grid resolves the contact's edge zone, slower where it does not\n",
+            e->grid.n, e->grid.pass * 1e6, e->build);
+}
+
+void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
+{
+    static adh_plan_progress runs[ADH_PLAN_MAX_RUNS];
+    size_t n = plan->nruns < ADH_PLAN_MAX_RUNS ? plan->nruns : ADH_PLAN_MAX_RUNS;
+    grid_cost gc = { .n = 0 };
+    run_est e = { .cpu = 0 }, first = e;
+    double cpu = 0, steps = 0, smin = INFINITY, smax = 0;
+    for (size_t i = 0; i < n; i++) {
+        adh_run_spec s;
+        adh_config_sweep_run(cfg, i, &s);
+        if (run_estimate(&s, &gc, &e) != 0) {
+            fprintf(f, "time: not estimated (the kernel could not be built here)\n");
+            return;
+        }
+        if (i == 0)
+            first = e;
+        runs[i] = (adh_plan_progress){ .cost = e.cpu };
+        cpu += e.cpu;
+        steps += e.c.steps;
+        smin = fmin(smin, e.c.steps);
+        smax = fmax(smax, e.c.steps);
+    }
+    if (n > 1) {
+        char t[32], w[32];
+        cli_progress_duration(cpu, t, sizeof t);
+        cli_progress_duration(adh_plan_time_left(runs, n, plan->jobs, 0, 1.0), w, sizeof w);
+        fprintf(f, "time: about %s of CPU in all, %s on %d core%s (%.3g s: about %.0f integrator steps, %.0f to %.0f "
+                   "a run, each run's as run 1's below%s)\n", t, w, plan->jobs, plan->jobs == 1 ? "" : "s", cpu,
+                two_digits(steps), two_digits(smin), two_digits(smax), n < plan->nruns ? "; the first runs alone" : "");
+    }
+    print_run(f, n > 1 ? "run 1 " : "", &first);
+}
