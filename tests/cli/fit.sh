@@ -102,16 +102,22 @@ make --no-print-directory -s -C "$SRC" install DESTDIR="$TMP/inst" >"$TMP/inst.l
 check "make install installs share/adhere/data/fig1-synthetic.tsv ($(tail -1 "$TMP/inst.log"))" \
     cmp -s "$DATA" "$TMP/inst/usr/local/share/adhere/data/fig1-synthetic.tsv"
 
-# SIGINT during the fit: the best point so far, marked PARTIAL, exit 130
-rm -f "$TMP/int.ready"
-ADHERE_READY_FILE="$TMP/int.ready" "$ADHERE" fit --data="$DATA" -E 3GPa -A 0.3e-19J $COARSE -o "$TMP/int" fig1 \
-    >"$TMP/int.out" 2>"$TMP/int.err" &
-pid=$!
-came=0
-wait_phase "$TMP/int.ready" step "$pid" && came=1
-kill -INT "$pid" 2>/dev/null
-wait "$pid"
-rc=$?
-check "SIGINT after the first evaluation: exit 130 (phase came $came, exit $rc)" sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
-check "the report and fit.tsv say PARTIAL" sh -c "grep -q '^# PARTIAL' '$TMP/int.out' && grep -q '^# PARTIAL' '$TMP/int/fit.tsv'"
+# SIGINT or SIGTERM during the fit: the best point so far, marked
+# PARTIAL, exit 128 + the signal's number
+for sig in INT TERM; do
+    case $sig in INT) want=130 ;; *) want=143 ;; esac
+    rm -f "$TMP/$sig.ready"
+    ADHERE_READY_FILE="$TMP/$sig.ready" "$ADHERE" fit --data="$DATA" -E 3GPa -A 0.3e-19J $COARSE -o "$TMP/$sig" fig1 \
+        >"$TMP/$sig.out" 2>"$TMP/$sig.err" &
+    pid=$!
+    came=0
+    wait_phase "$TMP/$sig.ready" step "$pid" && came=1
+    kill -$sig "$pid" 2>/dev/null
+    wait "$pid"
+    rc=$?
+    check "SIG$sig after the first evaluation: exit $want (phase came $came, exit $rc)" \
+        sh -c "[ $came -eq 1 ] && [ $rc -eq $want ]"
+    check "... the report and fit.tsv say PARTIAL" \
+        sh -c "grep -q '^# PARTIAL' '$TMP/$sig.out' && grep -q '^# PARTIAL' '$TMP/$sig/fit.tsv'"
+done
 done_testing
