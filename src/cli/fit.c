@@ -227,7 +227,6 @@ int cli_fit_main(cli_options *cli)
         f = NULL;
         refits++;
     }
-    cli_interrupt_release();
     cli_fit_report r = { .cfg = cfg, .fd = &fr.fd, .res = &res, .fs = &fr.fs, .model = adh_fit_model_forces(f),
                          .resid = adh_fit_residuals(f), .grid_edge_nodes = gr.edge_nodes,
                          .grid_resolved = gr.resolved, .refits = refits, .evals = fr.evals,
@@ -256,7 +255,12 @@ int cli_fit_main(cli_options *cli)
     adh_fit_free(f);
     adh_fitdata_free(&fr.fd);
     release(&fr);
-    if (r.partial)
+    /* the handlers stay through the files and the figure: a signal there
+     * stops gnuplot's wait and leaves no temporary, as in --batch */
+    cli_interrupt_release();
+    if (!r.partial && cli_interrupt_signal())
+        fprintf(stderr, "adhere: interrupted by signal %d after the fit had ended\n", cli_interrupt_signal());
+    if (r.partial || cli_interrupt_signal())
         return cli_interrupt_exit();
     if (rc != CLI_EXIT_OK)
         return rc;

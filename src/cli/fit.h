@@ -8,8 +8,9 @@
 
 /* The whole subcommand, once the data are read (cli->cfg.measured). Exit
  * status: 0 a fit; 1 no fit (poor, a parameter unidentifiable, not
- * converged, the model failing); 2 bad input; 130 interrupted (the best
- * point so far written, marked PARTIAL). */
+ * converged, the model failing); 2 bad input; 128 + the signal's number
+ * interrupted (130 SIGINT, 143 SIGTERM; the best point so far written,
+ * marked PARTIAL). */
 int cli_fit_main(cli_options *cli);
 
 #endif

@@ -1,4 +1,5 @@
 #include "cli/interrupt.h"
+#include "cli/exit.h"
 #include "util/ready.h"
 
 #include <fcntl.h>
@@ -50,9 +51,11 @@ const volatile sig_atomic_t *cli_interrupt_flag(void)
     return &received;
 }
 
+/* 128 + the signal's number, as a shell reports a process the signal
+ * killed: a caller tells SIGTERM (143) from Ctrl-C (130). */
 int cli_interrupt_exit(void)
 {
-    return received == SIGHUP ? 128 + SIGHUP : 130;
+    return received ? 128 + received : CLI_EXIT_INTERRUPTED;
 }
 
 int cli_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx)

@@ -14,7 +14,8 @@ void cli_interrupt_release(void);   /* restore the previous ones */
 int cli_interrupt_signal(void);     /* the signal received, 0 if none */
 /* The flag for the solvers' cancel hooks (nonzero once a signal came). */
 const volatile sig_atomic_t *cli_interrupt_flag(void);
-/* The exit status for the signal received: 129 for SIGHUP, else 130. */
+/* The exit status for the signal received, 128 + its number: 130 for
+ * SIGINT, 143 for SIGTERM, 129 for SIGHUP (130 if none came). */
 int cli_interrupt_exit(void);
 /* An adh_step_cb that asks the solver to stop once a signal came. */
 int cli_interrupt_step(const adh_obs *row, const adh_run *run, void *ctx);

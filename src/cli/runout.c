@@ -64,7 +64,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
         snprintf(said->word, sizeof said->word, "%s", cli_tables_summary_word(&t));
     }
     if (status == CLI_EXIT_OK && partial)
-        return run->interrupted ? CLI_EXIT_INTERRUPTED : CLI_EXIT_SOLVER;
+        return run->interrupted ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
     if (status == CLI_EXIT_OK && run->unconverged && !cfg->output.allow_unconverged) {
         if (data) /* said once, not again when the figures rewrite the summary */
             fprintf(stderr, "adhere: warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)\n",
@@ -132,9 +132,10 @@ static int plots_skipped(const adh_config *cfg, size_t i, const adh_run_spec *sp
 
 int cli_runout_worse(int a, int b)
 {
-    /* usage/output errors first, then interruption, solver failure, plots */
+    /* usage/output errors first, then interruption (128 + any signal's
+     * number), solver failure, plots */
     static const int rank[] = { CLI_EXIT_OK, CLI_EXIT_PLOT, CLI_EXIT_SOLVER, CLI_EXIT_INTERRUPTED, CLI_EXIT_USAGE };
-    int ra = 0, rb = 0;
+    int ra = a > 128 ? 3 : 0, rb = b > 128 ? 3 : 0;
     for (int k = 0; k < 5; k++) {
         if (rank[k] == a) ra = k;
         if (rank[k] == b) rb = k;

@@ -61,7 +61,7 @@ typedef struct study_job {
 static int run_exit(const adh_config *cfg, const adh_run *run, int status)
 {
     if (run->interrupted)
-        return CLI_EXIT_INTERRUPTED;
+        return cli_interrupt_exit();
     if (status != ADH_SUCCESS || (run->unconverged && !cfg->output.allow_unconverged))
         return CLI_EXIT_SOLVER;
     return CLI_EXIT_OK;

@@ -83,17 +83,34 @@ static double memory_room(void)
     return least(m, cgroup_limit("/sys/fs/cgroup/memory/memory.limit_in_bytes"));
 }
 
+/* The process's VmSize and VmData in bytes, from one read of its status
+ * (-1 each when unknown). */
+static void vm_sizes(double *size, double *data)
+{
+    *size = *data = -1;
+    FILE *f = fopen("/proc/self/status", "r");
+    if (!f)
+        return;
+    char line[256];
+    while (fgets(line, sizeof line, f))
+        if (strncmp(line, "VmSize:", 7) == 0)
+            *size = 1024.0 * strtod(line + 7, NULL);
+        else if (strncmp(line, "VmData:", 7) == 0)
+            *data = 1024.0 * strtod(line + 7, NULL);
+    fclose(f);
+}
+
 /* Bytes of address space the limits leave (ulimit -v, and -d, which since
- * Linux 4.7 counts private mappings too), less what is mapped; -1 when
- * neither is set. */
-static double address_room(void)
+ * Linux 4.7 counts private mappings too), less what is mapped (size,
+ * data: vm_sizes); -1 when neither is set. */
+static double address_room(double size, double data)
 {
     double m = -1;
     struct rlimit rl;
     if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
-        m = least(m, fmax(0.0, (double)rl.rlim_cur - fmax(0.0, proc_kb("/proc/self/status", "VmSize"))));
+        m = least(m, fmax(0.0, (double)rl.rlim_cur - fmax(0.0, size)));
     if (getrlimit(RLIMIT_DATA, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
-        m = least(m, fmax(0.0, (double)rl.rlim_cur - fmax(0.0, proc_kb("/proc/self/status", "VmData"))));
+        m = least(m, fmax(0.0, (double)rl.rlim_cur - fmax(0.0, data)));
     return m;
 }
 
@@ -134,18 +151,50 @@ static unsigned buffers_mapped(void)
     return n;
 }
 
+/* What the address-space limits leave and what the BLAS's own threads have
+ * mapped, read as one state. The BLAS's threads map their buffers
+ * concurrently with main: a buffer mapped between the read of VmSize and
+ * that of the maps would be in neither the address space in use nor the
+ * buffers still to come, 128 MiB short, and the run's own buffer then
+ * could not be mapped (OpenBLAS retrying forever: a hang, about one run in
+ * a hundred at ulimit -v 300000). So the counts are taken between two
+ * reads of VmSize and VmData, again until both agree; if they never do,
+ * the later sizes with the earlier counts, which count a buffer twice
+ * rather than not at all. */
+typedef struct {
+    double room;       /* address_room; -1 when no limit is set */
+    unsigned own;      /* the other threads (other_threads) */
+    unsigned mapped;   /* the BLAS buffers mapped (buffers_mapped) */
+} address_state;
+
+static void address_read(address_state *st)
+{
+    double size, data, size2, data2;
+    vm_sizes(&size, &data);
+    for (int tries = 0; tries < 16; tries++) {
+        st->own = other_threads();
+        st->mapped = buffers_mapped();
+        vm_sizes(&size2, &data2);
+        int same = size2 == size && data2 == data;
+        size = size2, data = data2;
+        if (same)
+            break;
+    }
+    st->room = address_room(size, data);
+}
+
 /* Address space that `threads` computing threads map beside what the
  * estimate counts, mostly never touched (so it weighs only against an
  * address-space limit): a BLAS working buffer for each of them and of the
  * BLAS's own threads, less those mapped already, an arena for each such
  * thread still to map one, and, when they are more than one (started
  * threads, main only waiting), a stack and an arena for each. */
-static double threads_reserve(unsigned threads)
+static double threads_reserve(unsigned threads, const address_state *st)
 {
     struct rlimit rl;
     double stack = getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY ? (double)rl.rlim_cur
                                                                                       : 8.0 * 1048576;
-    unsigned t = threads ? threads : 1, own = other_threads(), mapped = buffers_mapped();
+    unsigned t = threads ? threads : 1, own = st->own, mapped = st->mapped;
     unsigned unmapped = t + own > mapped ? t + own - mapped : 0;
     unsigned own_unmapped = own > mapped ? own - mapped : 0;
     return unmapped * BLAS_BUFFER_VM + own_unmapped * ARENA_VM + (t > 1 ? t : 0) * (stack + ARENA_VM);
@@ -153,20 +202,33 @@ static double threads_reserve(unsigned threads)
 
 double adh_budget_machine_bytes(void)
 {
-    double m = least(memory_room(), address_room());
+    double size, data;
+    vm_sizes(&size, &data);
+    double m = least(memory_room(), address_room(size, data));
     return m < 0 ? INFINITY : m;
 }
 
-int adh_budget_fits(double need, unsigned threads, double *have, int *address_bound)
+/* adh_budget_fits, with the reserve it counted in *reserve (0 when no
+ * address-space limit is set). */
+static int fits(double need, unsigned threads, double *have, int *address_bound, double *reserve)
 {
-    double mem = memory_room(), as = address_room();
+    address_state st;
+    address_read(&st);
+    double mem = memory_room(), as = st.room;
+    *reserve = as >= 0 ? threads_reserve(threads, &st) : 0;
     if (as >= 0)
-        as = fmax(0.0, as - threads_reserve(threads));
+        as = fmax(0.0, as - *reserve);
     double m = least(mem, as);
     *have = m < 0 ? INFINITY : m;
     if (address_bound)
         *address_bound = as >= 0 && (mem < 0 || as < mem);
     return need <= *have;
+}
+
+int adh_budget_fits(double need, unsigned threads, double *have, int *address_bound)
+{
+    double reserve;
+    return fits(need, threads, have, address_bound, &reserve);
 }
 
 static double kernel_bytes(adh_kernel_storage storage, double n)
@@ -235,9 +297,9 @@ int adh_budget_check_threads(const adh_run_spec *run, unsigned solvers, unsigned
         return 0;
     size_t n = adh_config_nodes(run);
     adh_kernel_storage storage = run->grid.use.storage;
-    double need = adh_budget_bytes(run, solvers), have;
+    double need = adh_budget_bytes(run, solvers), have, reserve;
     int address;
-    if (adh_budget_fits(need, threads, &have, &address))
+    if (fits(need, threads, &have, &address, &reserve))
         return 0;
     adh_run_spec h2 = *run;
     h2.grid.use.storage = ADH_STORAGE_H2;
@@ -246,7 +308,7 @@ int adh_budget_check_threads(const adh_run_spec *run, unsigned solvers, unsigned
     bytes_text(need, a, sizeof a);
     bytes_text(have, b, sizeof b);
     bytes_text(adh_budget_bytes(&h2, solvers), c, sizeof c);
-    bytes_text(threads_reserve(threads), r, sizeof r);
+    bytes_text(reserve, r, sizeof r);
     char h2use[80] = "", limit[300] = "";
     if (storage != ADH_STORAGE_H2)
         snprintf(h2use, sizeof h2use, "grid.operator = h2 (about %s), ", c);

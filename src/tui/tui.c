@@ -34,7 +34,7 @@
 static volatile sig_atomic_t got_signal;
 
 /* Exit statuses, as the man page's EXIT STATUS gives them for every mode. */
-enum { EXIT_OK = 0, EXIT_BAD_INPUT = 2, EXIT_INTERRUPTED = 130 };
+enum { EXIT_OK = 0, EXIT_BAD_INPUT = 2 };
 
 /* Only a flag here: curses is not async-signal-safe; the loop ends cleanly. */
 static void on_signal(int sig)
@@ -999,8 +999,9 @@ static void loop(tui *t)
     tui_replay_item it;
     while (!t->quit) {
         if (got_signal) {
-            /* SIGINT or SIGTERM: 130, as --batch; SIGHUP (terminal gone): 129 */
-            t->exit_code = got_signal == SIGHUP ? 128 + SIGHUP : EXIT_INTERRUPTED;
+            /* 128 + the signal, as --batch: SIGINT 130, SIGTERM 143, SIGHUP
+             * (terminal gone) 129 */
+            t->exit_code = 128 + got_signal;
             snprintf(t->fatal, sizeof t->fatal, "adhere: stopped by signal %d", (int)got_signal);
             break;
         }

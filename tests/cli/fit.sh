@@ -114,4 +114,26 @@ wait "$pid"
 rc=$?
 check "SIGINT after the first evaluation: exit 130 (phase came $came, exit $rc)" sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
 check "the report and fit.tsv say PARTIAL" sh -c "grep -q '^# PARTIAL' '$TMP/int.out' && grep -q '^# PARTIAL' '$TMP/int/fit.tsv'"
+# SIGTERM once the fit has ended, while gnuplot draws fit.png (a stand-in
+# that never answers says when it started): the handlers hold to the end,
+# so gnuplot's wait hears it; the tables stay whole, no temporary is left
+# (the process used to die there, its plot directory left in TMPDIR), exit
+# 143 = 128 + SIGTERM
+printf '#!/bin/sh\n: >"$GP_STARTED"\nexec cat 3>&1 >/dev/null\n' >"$TMP/gp-slow"
+chmod +x "$TMP/gp-slow"
+mkdir -p "$TMP/gptmp"
+# (started at the curve's own E and A: 11 evaluations, not 40)
+GP_STARTED="$TMP/gp.started" ADHERE_GNUPLOT="$TMP/gp-slow" TMPDIR="$TMP/gptmp" "$ADHERE" fit --data="$DATA" -E 1GPa \
+    -A 1e-19J $COARSE -o "$TMP/term" fig1 >"$TMP/term.out" 2>"$TMP/term.err" &
+pid=$! i=0
+while [ $i -lt 600 ] && [ ! -e "$TMP/gp.started" ] && kill -0 $pid 2>/dev/null; do sleep 0.1; i=$((i + 1)); done
+came=0
+[ -e "$TMP/gp.started" ] && came=1
+kill -TERM "$pid" 2>/dev/null
+wait "$pid"
+rc=$?
+check "SIGTERM while gnuplot draws fit.png: exit 143 (gnuplot started $came, exit $rc: $(tail -n 1 "$TMP/term.err"))" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 143 ]"
+check "... fit.tsv whole (no PARTIAL), no temporary left, in the directory or in TMPDIR" \
+    sh -c "[ -s '$TMP/term/fit.tsv' ] && ! grep -q '^# PARTIAL' '$TMP/term/fit.tsv' && ! ls -a '$TMP/term' | grep -v '^\.adhere-manifest\$' | grep -q '^\.[^.]' && [ -z \"\$(ls -A '$TMP/gptmp')\" ]"
 done_testing

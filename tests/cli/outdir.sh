@@ -59,8 +59,8 @@ before=$(snapshot v)
 kill -TERM "$pid"
 wait "$pid"
 rc=$?
-check "a run with links at .NAME.PID.tmp: interrupted as asked (phase seen $came, exit $rc)" \
-    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
+check "a run with links at .NAME.PID.tmp: interrupted as asked (phase seen $came, SIGTERM: exit $rc)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 143 ]"
 check "... wrote its tables (force.tsv PARTIAL, summary.tsv)" \
     sh -c "grep -q '^# PARTIAL' planted/force.tsv && [ -s planted/summary.tsv ]"
 check "... and not through the links: their targets are untouched" [ "$(snapshot v)" = "$before" ]
@@ -154,7 +154,7 @@ kill -TERM "$pid"
 wait "$pid"
 rc=$?
 check "... the first finishes its own tables (exit $rc, summary says interrupted)" \
-    sh -c "[ $rc -eq 130 ] && grep -qx 'status	interrupted' both/summary.tsv"
+    sh -c "[ $rc -eq 143 ] && grep -qx 'status	interrupted' both/summary.tsv"
 
 # --- a run into an earlier sweep's run-1 while a sweep is started into its parent
 # The run holds run-1's lock while gnuplot draws (a stand-in that never

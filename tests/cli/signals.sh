@@ -5,7 +5,8 @@
 # run is signalled once adhere says (through ADHERE_READY_FILE) that the
 # phase has begun -- no sleep decides when -- and must stop promptly, keep
 # what it has marked PARTIAL with status interrupted, leave no temporary
-# file and exit 130.
+# file and exit 128 + the signal's number (SIGINT 130, SIGTERM 143, SIGHUP
+# 129), as a shell reports a process the signal killed.
 . "$(dirname "$0")/lib.sh"
 
 now() { date +%s.%N; }
@@ -48,8 +49,8 @@ check "the streamed table ends marked PARTIAL" grep -q '^# PARTIAL: interrupted'
 
 # 2. A long dwell at the turn: every dwell iteration polls the flag.
 signal_run dwell dwell TERM --batch -q --no-plot -N 200 --force --eps=10pm -d 0.5nm --turn=-1nm --dwell=100000000 -o "$TMP/dwell"
-check "in a long dwell: SIGTERM heard (phase announced $came, exit $rc after ${took} s)" \
-    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
+check "in a long dwell: SIGTERM heard, exit 143 (phase announced $came, exit $rc after ${took} s)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 143 ]"
 check "in a long dwell: stopped within 5 s (${took} s)" prompt
 check "force.tsv says it is partial" grep -q "^# PARTIAL: interrupted" "$TMP/dwell/force.tsv"
 check "summary.tsv says complete 0 and status interrupted" \
@@ -88,6 +89,9 @@ check "no run is listed as success" sh -c "! awk -F'\t' '\$NF == \"success\"' '$
 nr=$(awk -F'\t' '$NF == "not_run"' "$TMP/cost/cost.tsv" | wc -l)
 check "runs never started say not_run ($nr of 8)" [ "$nr" -ge 1 ]
 check "and have no time (nan, not 0 s)" awk -F'\t' '$NF == "not_run" && $4 != "nan" {bad=1} END {exit bad}' "$TMP/cost/cost.tsv"
+signal_run costhup cost HUP --cost -q --cost-nodes=500,1000 --cost-eps=1pm,0.5pm -o "$TMP/costhup"
+check "in --cost: SIGHUP heard, exit 129 (phase announced $came, exit $rc after ${took} s), cost.tsv PARTIAL" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 129 ] && grep -q '^# PARTIAL: interrupted by signal 1' '$TMP/costhup/cost.tsv'"
 # 6. Ctrl-C while plotting reaches gnuplot too (the whole process group):
 # the tables stay complete, no temporary PNG, data file or directory is
 # left, the exit says interrupted.
@@ -125,6 +129,18 @@ check "sweep.tsv says # PARTIAL: $(grep '^# PARTIAL' "$TMP/sweep/sweep.tsv")" \
     grep -q '^# PARTIAL: interrupted by signal 2: 0 of 4 runs finished' "$TMP/sweep/sweep.tsv"
 check "and the run closes saying interrupted: $(tail -n 1 "$TMP/sweep.stderr")" \
     grep -q '^adhere: interrupted by signal 2: 0 of 4 runs finished' "$TMP/sweep.stderr"
+# SIGTERM (a job scheduler's) and SIGHUP (the terminal closed) stop a
+# study the same way; the exit says which (128 + its number).
+for sig in TERM HUP; do
+    case $sig in TERM) want=143 num=15 ;; *) want=129 num=1 ;; esac
+    signal_run "sweep$sig" sweep $sig --batch -q --no-plot -N 1000 --eps=1e-22 --max-iter=100000000 --start=0.5nm \
+        --turn=-1nm -o "$TMP/sweep$sig" "$TMP/sweep.scene"
+    check "in a sweep: SIG$sig heard, exit $want (phase announced $came, exit $rc after ${took} s)" \
+        sh -c "[ $came -eq 1 ] && [ $rc -eq $want ]"
+    check "... sweep.tsv says # PARTIAL: interrupted by signal $num" \
+        grep -q "^# PARTIAL: interrupted by signal $num: 0 of 4 runs finished" "$TMP/sweep$sig/sweep.tsv"
+    check "... no temporary file is left" no_temporaries "$TMP/sweep$sig"
+done
 
 # 8. A sweep's shared kernel: a large dense ring kernel takes seconds to
 # build, and the build polls the flag (before any run, so nothing is
@@ -201,7 +217,8 @@ TMPDIR="$TMP/gptmp" gnuplot_wait gpone INT --batch -q -R 1um -d 0.5nm --turn=-1n
 check "a one-run sweep's figures stopped: sweep.tsv says every run finished, the row keeps its pull-off" \
     sh -c "grep -q '^# PARTIAL: interrupted by signal 2 while the figures were drawn' '$TMP/gpone/sweep.tsv' && awk -F'\t' '\$1 == 1 && \$11 + 0 < 0 && \$NF == \"interrupted\" {k++} END {exit !k}' '$TMP/gpone/sweep.tsv'"
 printf ':set N 100\n:set spacing 10nm\n:set eps 10pm\n3f\np\n' >"$TMP/gpwait.keys"
-(cd "$TMP" && gnuplot_wait tuiwait TERM --replay=gpwait.keys --screen=gpwait.screen --no-clock -o "$TMP/tuiwait" </dev/null)
-check "SIGTERM during the TUI's p while gnuplot draws: exit 130 within 1 s (gnuplot started $came, exit $rc after ${took} s)" \
-    sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ] && awk -v t=$took 'BEGIN {exit !(t < 1)}'"
+# (not in a subshell: rc, came and took are the caller's)
+gnuplot_wait tuiwait TERM --replay="$TMP/gpwait.keys" --screen="$TMP/gpwait.screen" --no-clock -o "$TMP/tuiwait" </dev/null
+check "SIGTERM during the TUI's p while gnuplot draws: exit 143 within 1 s (gnuplot started $came, exit $rc after ${took} s)" \
+    sh -c "[ $came -eq 1 ] && [ $rc -eq 143 ] && awk -v t=$took 'BEGIN {exit !(t < 1)}'"
 done_testing

@@ -56,7 +56,7 @@ if command -v parallel >/dev/null 2>&1; then
         awk -F'\t' '!/^#/ && $1 != "run" {n++; if (!($15 > 0)) bad = 1} END {exit bad || n != 16}' "$TMP/merged/sweep.tsv"
     # a signal while the merge draws (a gnuplot that never answers, which
     # says when it started): the earlier merge's table and figure stay as
-    # they were, no temporary is left, exit 130 (129 for SIGHUP)
+    # they were, no temporary is left, exit 128 + the signal's number
     printf '#!/bin/sh\n: >"$GP_STARTED"\nexec cat 3>&1 >/dev/null\n' >"$TMP/gp-slow"
     chmod +x "$TMP/gp-slow"
     cp "$TMP/merged/sweep.tsv" "$TMP/merged.tsv"
@@ -70,7 +70,7 @@ if command -v parallel >/dev/null 2>&1; then
         kill -$sig $pid
         wait $pid
         rc=$?
-        want=130; [ $sig = HUP ] && want=129
+        case $sig in TERM) want=143 ;; HUP) want=129 ;; *) want=130 ;; esac
         check "SIG$sig while merge draws: exit $want ($rc: $(head -c 300 "$TMP/merge.err"))" [ "$rc" -eq $want ]
         check "... the earlier merge's sweep.tsv and map.png are as they were" \
             sh -c "cmp -s '$TMP/merged.tsv' '$TMP/merged/sweep.tsv' && cmp -s '$TMP/whole/map.png' '$TMP/merged/map.png'"

@@ -451,7 +451,7 @@ check "a replay's first step creates \$ADHERE_READY_FILE" [ -e "$work/sig/ready"
 kill -TERM "$pid" 2>/dev/null
 wait "$pid"
 rc=$?
-check "SIGTERM during a solve exits 130, as --batch (got $rc)" [ "$rc" = 130 ]
+check "SIGTERM during a solve exits 143 (128 + 15), as --batch (got $rc)" [ "$rc" = 143 ]
 check "and says so" grep -q "stopped by signal 15" "$work/sig/err"
 
 echo "1..$n"

@@ -121,7 +121,7 @@ wait_for "running to the turn" >/dev/null
 pid=$(pgrep -P "$(T display -p -t t '#{pane_pid}')" | head -1)
 check "found the running adhere" [ -n "$pid" ]
 kill -TERM "$pid" 2>/dev/null
-check "SIGTERM during a run ends it with status 130, as --batch" [ "$(exit_status)" = 130 ]
+check "SIGTERM during a run ends it with status 143 (128 + 15), as --batch" [ "$(exit_status)" = 143 ]
 check "and the terminal is restored" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
 
 # SIGHUP (the terminal closed): the screen is restored all the same, and
