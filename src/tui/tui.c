@@ -65,9 +65,10 @@ typedef struct tui {
     char status[768];
     int status_error;
     int editing;
-    char text[128];
+    char text[1024];    /* a path of a deep directory fits */
     size_t textlen;
-    char prompt[200];
+    int text_full;      /* a key was typed past text's end: the line is refused */
+    char prompt[1200];
     long count;
 
     int pending;        /* steps still to start after the current one */
@@ -174,6 +175,8 @@ static void draw(tui *t)
                 snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (Enter sets, Esc cancels)", tui_params[v->sel].name,
                          t->text);
         }
+        else if (t->textlen + 2 > (size_t)COLS && COLS > 8)   /* its end in view, where the typing is */
+            snprintf(t->prompt, sizeof t->prompt, ":...%s_", t->text + t->textlen - (size_t)(COLS - 6));
         else
             snprintf(t->prompt, sizeof t->prompt, ":%s_", t->text);
         v->prompt = t->prompt;
@@ -604,11 +607,22 @@ static int edit_key(tui *t, int key)
         if (key >= ' ' && key < 127 && t->textlen + 1 < sizeof t->text) {
             t->text[t->textlen++] = (char)key;
             t->text[t->textlen] = '\0';
+        } else if (key >= ' ' && key < 127 && !t->text_full) {
+            t->text_full = 1;
+            say(t, 1, "the line holds %zu characters: what is typed past them is not taken, and Enter will refuse "
+                "the line; Esc cancels", sizeof t->text - 1);
         }
         return TODO_REDRAW;
     }
     int mode = t->editing;
     t->editing = EDIT_NONE;
+    /* a line cut short would set another value, or write another file
+     * (a path's prefix, perhaps one of the user's): never run */
+    if (t->text_full) {
+        say(t, 1, "not %s: the line was longer than %zu characters and its end was not taken; nothing changed",
+            mode == EDIT_PARAM ? "set" : "run", sizeof t->text - 1);
+        return TODO_REDRAW;
+    }
     if (mode == EDIT_PARAM) {
         tui_param p = (tui_param)t->view.sel;
         if (p != P_TURN) {
@@ -622,7 +636,7 @@ static int edit_key(tui *t, int key)
         return TODO_REDRAW;
     }
     /* The ':' prompt takes what a script's command line takes. */
-    char line[160];
+    char line[sizeof t->text + 2];
     snprintf(line, sizeof line, ":%s", t->text);
     tui_replay_script sc;
     int errline;
@@ -854,6 +868,7 @@ static int handle_key(tui *t, int key)
         t->editing = a == ACT_EDIT ? EDIT_PARAM : EDIT_COMMAND;
         t->text[0] = '\0';
         t->textlen = 0;
+        t->text_full = 0;
         break;
     case ACT_SCALE_UP:
     case ACT_SCALE_DOWN: scale_key(t, pow(a == ACT_SCALE_UP ? 2.0 : 0.5, (double)n)); break;

@@ -429,6 +429,10 @@ check "a grid too short for the turn is flagged before any solve" \
     sh -c "grep -q '! grid radius Rmax = 150 nm is too short' '$W/grid-warn/grid-warn.screen' && grep -q 'use' '$W/grid-warn/grid-warn.screen' && grep -q 'path   0 states' '$W/grid-warn/grid-warn.screen'"
 check "an unwritable :dump names FILE:LINE and the file" \
     grep -q "^bad-dump.keys:2: cannot write the screen to no-such-dir/screen.txt: No such file" "$W/bad-dump/stderr"
+PL=$W/prompt-long
+check "a 148-character name typed at the ':' prompt is written whole, the header and the path's 4 states in it (not a name cut at 122)" \
+    sh -c "[ \$(grep -vc '^#' '$PL/afm-2026-11-27-sample-B-silica-sphere-R10um-on-PDMS-10-to-1-cured-48h-approach-retract-1um-per-s-dwell-0s-run-017-of-120-calibrated-k0.35N-per-m.tsv') = 5 ] && [ \$(ls '$PL' | grep -c '^afm-') = 1 ]"
+check "a line longer than the prompt holds writes nothing, under no name" sh -c "! ls '$PL' | grep -q '^xxx'"
 
 # Determinism, and independence from the caller's terminal settings.
 run_case steps "$work/again"
