@@ -545,7 +545,7 @@ static int write_rows(tui *t, const char *path, char *why, size_t whylen)
     r.timed = is_timed(t);
     int e = adh_outfile_write(path, rows_table, &r);
     if (e)
-        snprintf(why, whylen, "cannot write the rows to %s: %s", path, strerror(e));
+        snprintf(why, whylen, "cannot write the rows to %s: %s", path, e == ENXIO ? "a pipe no program reads" : strerror(e));
     return e ? -1 : 0;
 }
 
