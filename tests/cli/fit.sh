@@ -64,6 +64,14 @@ printf 'Separation (nm)\tForce (nN)\n5\t-1\n4\tnan\n' >"$TMP/nan.tsv"
 rc=$?
 check "a NaN in the data: exit 2, 'adhere: FILE:3:' and why, nothing written ($(cat "$TMP/e4"))" \
     sh -c "[ $rc -eq 2 ] && grep -q '^adhere: $TMP/nan.tsv:3: .nan. is not a finite number (a gap in the measurement?) (column 2, the force)' '$TMP/e4' && [ ! -e '$TMP/nanout' ]"
+# one curve given twice (the same path, or a link to it): its points would
+# count twice, the standard errors sqrt(2) too small (they were, 0.24 % for
+# E where the curve alone gives 0.35 %)
+ln -s "$(cd "$(dirname "$DATA")" && pwd)/$(basename "$DATA")" "$TMP/again.tsv"
+"$ADHERE" fit --data="$DATA" --data="$TMP/again.tsv" -o "$TMP/twiceout" fig1 >/dev/null 2>"$TMP/e7"
+rc=$?
+check "the same curve given twice: exit 2, both names, nothing written ($(cat "$TMP/e7"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --data: $TMP/again.tsv is $DATA again: give each measured curve once' '$TMP/e7' && [ ! -e '$TMP/twiceout' ]"
 awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
