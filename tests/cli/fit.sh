@@ -52,6 +52,18 @@ printf 'q\n' >"$TMP/q.keys"
 check "and the TUI opens it with the best E and A" sh -c "grep -q '^ >E     1.00[0-9] GPa' '$TMP/best.screen' && grep -Eq '^  A     1(\.00[0-9])?e-19 J' '$TMP/best.screen'"
 check "no temporary file is left (adhere's manifest aside)" sh -c "! ls -a '$D' | grep -v '^\.adhere-manifest$' | grep -q '^\.[^.]'"
 
+# a full disk (a file size limit below fit-points.tsv's 17 kB and fit.png's,
+# above the others': 16 blocks of 512 or 1024 bytes, as the shell counts):
+# every file that fits is written, best.scene above all, and fit.tsv names
+# what is missing. The first failure stopped the rest: no best.scene.
+(ulimit -f 16 && "$ADHERE" fit -q --data="$DATA" $COARSE -o "$TMP/full" fig1 >/dev/null 2>"$TMP/full.err")
+rc=$?
+check "a file size limit: exit 2, naming fit-points.tsv ($rc: $(cat "$TMP/full.err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'cannot write .*fit-points.tsv: File too large' '$TMP/full.err'"
+check "... best.scene and fit.tsv written whole, and fit.tsv names what is not" \
+    sh -c "grep -q '^E = ' '$TMP/full/best.scene' && grep -q '^# not written: fit-points.tsv, fit.png\$' '$TMP/full/fit.tsv' && grep -q '^baseline' '$TMP/full/fit.tsv' && [ ! -e '$TMP/full/fit-points.tsv' ]"
+check "... and no temporary is left" sh -c "! ls -a '$TMP/full' | grep -v '^\.adhere-manifest\$' | grep -q '^\.[^.]'"
+
 # refusals: exit 2, the reason, nothing written
 "$ADHERE" fit fig1 >/dev/null 2>"$TMP/e1"
 check "adhere fit without --data is refused ($(cat "$TMP/e1"))" sh -c "[ $? -eq 2 ] && grep -q 'adhere fit needs the measured curve: --data=FILE' '$TMP/e1'"
