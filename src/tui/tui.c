@@ -175,8 +175,12 @@ static void draw(tui *t)
                 snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (Enter sets, Esc cancels)", tui_params[v->sel].name,
                          t->text);
         }
-        else if (t->textlen + 2 > (size_t)COLS && COLS > 8)   /* its end in view, where the typing is */
-            snprintf(t->prompt, sizeof t->prompt, ":...%s_", t->text + t->textlen - (size_t)(COLS - 6));
+        else if (t->textlen + 2 > (size_t)COLS && COLS > 8) {   /* its end in view, where the typing is */
+            const char *tail = t->text + t->textlen - (size_t)(COLS - 6);
+            while (((unsigned char)*tail & 0xc0) == 0x80)   /* from a character's first byte */
+                tail++;
+            snprintf(t->prompt, sizeof t->prompt, ":...%s_", tail);
+        }
         else
             snprintf(t->prompt, sizeof t->prompt, ":%s_", t->text);
         v->prompt = t->prompt;
@@ -599,15 +603,24 @@ static int edit_key(tui *t, int key)
         return TODO_REDRAW;
     }
     if (key == KEY_BACKSPACE || key == KEY_DC) {
+        /* a whole character: its UTF-8 continuation bytes, then its first */
+        while (t->textlen && ((unsigned char)t->text[t->textlen - 1] & 0xc0) == 0x80)
+            t->textlen--;
         if (t->textlen)
-            t->text[--t->textlen] = '\0';
+            t->textlen--;
+        t->text[t->textlen] = '\0';
         return TODO_REDRAW;
     }
     if (key != '\n') {
-        if (key >= ' ' && key < 127 && t->textlen + 1 < sizeof t->text) {
+        /* printable ASCII, and the bytes of a UTF-8 character as the
+         * terminal sends them: the micro sign the panel shows beside R was
+         * dropped, so 5, micro sign, m set R = 5 m, and a file name lost
+         * its accented letters */
+        int typed = (key >= ' ' && key < 127) || (key >= 0x80 && key <= 0xff);
+        if (typed && t->textlen + 1 < sizeof t->text) {
             t->text[t->textlen++] = (char)key;
             t->text[t->textlen] = '\0';
-        } else if (key >= ' ' && key < 127 && !t->text_full) {
+        } else if (typed && !t->text_full) {
             t->text_full = 1;
             say(t, 1, "the line holds %zu characters: what is typed past them is not taken, and Enter will refuse "
                 "the line; Esc cancels", sizeof t->text - 1);
