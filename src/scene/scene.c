@@ -121,7 +121,10 @@ static int handler(void *user, const char *section, const char *name, const char
     if (adh_config_set(c, full, value, msg, sizeof msg) != 0) {
         char words[400];
         adh_config_reword(msg, say_key, NULL, words, sizeof words);
-        return fail(sp, "%s: %s", name, words);
+        /* '#' comments a line only at its start: "E = 1GPa # stiff" read
+         * 'GPa # stiff' as the unit */
+        const char *hash = strstr(value, " #");
+        return fail(sp, hash ? "%s: %s (a comment after a value starts with ' ;', not '#')" : "%s: %s", name, words);
     }
     adh_config_note_given(c, full, value, sp->file);
     if (!strcmp(full, "protocol.turns") && sp->unload_given)

@@ -236,6 +236,7 @@ static void bad_scenes(void)
     bad("[sweep]\njobs = 0\n", 2, "jobs");
     bad("[solver]\neps 1pm\n", 2, "syntax error");
     bad("[protocol\nstep = 1nm\n", 1, "syntax error");
+    bad("[material]\nE = 1GPa # stiffer\n", 2, "(a comment after a value starts with ' ;', not '#')");
     /* control bytes: an escape sequence in a value or a key was quoted raw
      * in the refusal (a title's alone was refused) */
     bad("[material]\nE = \033]0;owned\007\n", 2, "E: the control character 0x1b is not allowed");
