@@ -394,6 +394,16 @@ static void test_outfile(void)
     ok(adh_outfile_write(link, fail_writer, NULL) != 0 && !strcmp(text_of(link), "rows\n") && hidden(work) == 0,
        "a failed write leaves the old file and no temporary");
     ok(adh_outfile_write("/dev/null", write_text, "x") == 0, "a device is written in place");
+    /* a file its owner made read-only is not replaced, as a shell's > would
+     * not replace it: the new file was renamed over it (the outdir's
+     * manifest already holds such a file the user's) */
+    char ro[300];
+    snprintf(ro, sizeof ro, "%s/kept.tsv", work);
+    put_file(ro, (const unsigned char *)"mine", 4);
+    chmod(ro, 0444);
+    ok(adh_outfile_write(ro, write_text, "rows\n") == EACCES && !strcmp(text_of(ro), "mine") && hidden(work) == 0,
+       "a read-only file at the path is not replaced (EACCES), and no temporary is left");
+    unlink(ro);
     /* a pipe no program reads: opening it to write waits for a reader for
      * ever (the screen froze on :rows FIFO until SIGINT ended the session);
      * refused at once, ENXIO (an alarm fails the test where it would wait) */
