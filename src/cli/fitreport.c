@@ -32,6 +32,12 @@ int cli_fit_verdict(const cli_fit_report *r, const char **word)
           : flags ? "unidentifiable (a parameter is not determined by these data: not a fit)"
           : res->status == ADH_EMAXITER ? "not converged (iteration cap)"
           : res->status != ADH_SUCCESS ? "failed"
+          /* the model's numbers at the optimum are not converged in the
+           * grid: its values can sit several standard errors off (-N 251
+           * --spacing=4nm: E 1.2 % from the resolved fit's, SE 0.19 %) */
+          : !r->grid_resolved && !r->cfg->spec.grid.force
+              ? "not resolved (the grid does not resolve the contact's edge zone at the optimum: give a finer one, "
+                "or --force to take it)"
           : res->chi2_red > CLI_FIT_POOR_CHI2 ? "poor fit (the residuals are well above the data's own scatter)"
           : "fit";
     return strcmp(*word, "fit") != 0;
