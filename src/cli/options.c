@@ -236,6 +236,12 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
                  "[sweep]) would be ignored; leave it out, the scene's own values are the start", cli->cfg.sweep.axis[0].name);
         return 2;
     }
+    adh_mode mode = cli->cfg.spec.mode;
+    if (mode == ADH_MODE_TIME || mode == ADH_MODE_RIGID) {
+        snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax): "
+                 "mode = %s would be ignored; leave it out", mode == ADH_MODE_TIME ? "time" : "rigid");
+        return 2;
+    }
     if (isfinite(cli->cfg.spec.time.spring)) {
         snprintf(why, whylen, "adhere fit's model has no spring: spring = %s would be ignored; give the positions as "
                  "the tip-sample separation h0 = base + F/k (the piezo's position corrected for the cantilever's "

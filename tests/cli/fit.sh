@@ -108,6 +108,10 @@ rc1=$?
 rc2=$?
 check "a sweep with adhere fit (the afm scene's, --sweep): exit 2, naming the swept key ($(cat "$TMP/e9"))" \
     sh -c "[ $rc1 -eq 2 ] && [ $rc2 -eq 2 ] && grep -q 'a sweep (of spring, from --sweep' '$TMP/e9' && grep -q 'a sweep (of E, from --sweep' '$TMP/e10'"
+"$ADHERE" fit --data="$DATA" --mode=time fig1 >/dev/null 2>"$TMP/e11"
+rc=$?
+check "--mode=time with adhere fit: exit 2, naming the fit's models ($(cat "$TMP/e11"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'mode = time would be ignored' '$TMP/e11'"
 awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
