@@ -200,7 +200,7 @@ check-tsan: deps
 FUZZ_CC    = clang
 FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined $(CPPFLAGS) $(PKG_CFLAGS)
 FUZZ_BIN   = $(BUILD)/fuzz/fuzz_units $(BUILD)/fuzz/fuzz_scene $(BUILD)/fuzz/fuzz_replay \
-             $(BUILD)/fuzz/fuzz_gpstring
+             $(BUILD)/fuzz/fuzz_gpstring $(BUILD)/fuzz/fuzz_measured
 CORE_SRC   = $(wildcard src/core/*.c)
 
 # Each source compiled once into its own object, so that make -j spreads the
@@ -215,6 +215,8 @@ fuzz_objs = $(patsubst %.c,$(FUZZ_OBJ)/%.o,$(1))
 $(BUILD)/fuzz/fuzz_units: $(call fuzz_objs,tests/fuzz/fuzz_units.c src/core/units.c)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ -lm
 $(BUILD)/fuzz/fuzz_scene: $(call fuzz_objs,tests/fuzz/fuzz_scene.c $(wildcard src/scene/*.c) $(CORE_SRC))
+	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
+$(BUILD)/fuzz/fuzz_measured: $(call fuzz_objs,tests/fuzz/fuzz_measured.c $(wildcard src/scene/*.c) $(CORE_SRC))
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
 $(BUILD)/fuzz/fuzz_replay: $(call fuzz_objs,tests/fuzz/fuzz_replay.c src/tui/replay.c)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)

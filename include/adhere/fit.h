@@ -119,7 +119,9 @@ const double *adh_fit_model_forces(const adh_fit *f);
 /* The data's own scatter, N: per segment the second differences of the
  * force at neighbouring points (the jump's left out), 1.4826 median |d2| /
  * sqrt(6), a robust standard deviation of independent noise on a curve
- * smooth at the points' spacing. NAN for fewer than 5 points. */
+ * smooth at the points' spacing; at least the rounding's q / sqrt(12), q
+ * the smallest step between neighbouring forces. NAN for fewer than 5
+ * points. */
 double adh_fit_noise(const adh_fit_data *d);
 
 #endif

@@ -1,6 +1,26 @@
 #include "cli/data.h"
 
+#include <stdio.h>
+#include <sys/stat.h>
+
 #include "scene/measured.h"
+
+/* Whether --data k names a file an earlier one does (a link, or the same
+ * path twice): a fit would count its points twice, claiming errors
+ * sqrt(2) smaller than the data give. -1 with why, else 0. */
+static int named_before(const cli_options *cli, size_t k, char *why, size_t whylen)
+{
+    struct stat a, b;
+    if (stat(cli->data[k], &a) != 0 || !S_ISREG(a.st_mode))
+        return 0;   /* the reader says what is wrong with it */
+    for (size_t i = 0; i < k; i++)
+        if (stat(cli->data[i], &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino) {
+            snprintf(why, whylen, "--data: %s is %s again: give each measured curve once (a fit would count its "
+                     "points twice)", cli->data[k], cli->data[i]);
+            return -1;
+        }
+    return 0;
+}
 
 int cli_data_load(cli_options *cli, char *why, size_t whylen)
 {
@@ -10,7 +30,8 @@ int cli_data_load(cli_options *cli, char *why, size_t whylen)
     if (cli->ndata == 0 && cli->cfg.output.data[0])
         cli->data[cli->ndata++] = cli->cfg.output.data;
     for (size_t i = 0; i < cli->ndata; i++) {
-        if (adh_measured_load(cli->data[i], cli->columns, &measured[i], why, whylen) != 0)
+        if (named_before(cli, i, why, whylen) != 0 ||
+            adh_measured_load(cli->data[i], cli->columns, &measured[i], why, whylen) != 0)
             return -1;
         if (i > 0)
             measured[i - 1].next = &measured[i];

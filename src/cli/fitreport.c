@@ -32,6 +32,12 @@ int cli_fit_verdict(const cli_fit_report *r, const char **word)
           : flags ? "unidentifiable (a parameter is not determined by these data: not a fit)"
           : res->status == ADH_EMAXITER ? "not converged (iteration cap)"
           : res->status != ADH_SUCCESS ? "failed"
+          /* the model's numbers at the optimum are not converged in the
+           * grid: its values can sit several standard errors off (-N 251
+           * --spacing=4nm: E 1.2 % from the resolved fit's, SE 0.19 %) */
+          : !r->grid_resolved && !r->cfg->spec.grid.force
+              ? "not resolved (the grid does not resolve the contact's edge zone at the optimum: give a finer one, "
+                "or --force to take it)"
           : res->chi2_red > CLI_FIT_POOR_CHI2 ? "poor fit (the residuals are well above the data's own scatter)"
           : "fit";
     return strcmp(*word, "fit") != 0;
@@ -161,6 +167,8 @@ static int write_fit_tsv(FILE *f, const void *ctx)
     if (r->partial)
         fprintf(f, "# PARTIAL: interrupted, the best point so far\n");
     fprintf(f, "# result: %s\n", word);
+    if (r->missing && r->missing[0])
+        fprintf(f, "# not written: %s\n", r->missing);
     for (const adh_measured *m = r->cfg->output.measured; m; m = m->next)
         fprintf(f, "# data: %s (%zu points)\n", m->name, m->n);
     fprintf(f, "# model: %s; grid N = %zu, spacing %.6g m; %zu model evaluations, %.3f s\n",
@@ -226,28 +234,24 @@ static int write_scene(FILE *f, const void *ctx)
     return 0;
 }
 
-int cli_fit_write(const cli_fit_report *r, adh_outdir *dir, int plot, char *why, size_t whylen)
+/* fit.png: the points, the best model's curve and the residuals. 0, or -1
+ * with why. */
+static int write_png(const cli_fit_report *r, adh_outdir *dir, char *why, size_t whylen)
 {
-    if (adh_outdir_write(dir, "fit.tsv", write_fit_tsv, r, why, whylen) != 0 ||
-        adh_outdir_write(dir, "fit-points.tsv", write_points_tsv, r, why, whylen) != 0 ||
-        adh_outdir_write(dir, "best.scene", write_scene, r, why, whylen) != 0)
-        return 2;
-    if (!plot)
-        return 0;
     size_t n = r->fd->d.n, nc = r->ncurve;
     double *cx = malloc((nc ? nc : 1) * sizeof *cx), *cF = malloc((nc ? nc : 1) * sizeof *cF);
     if (!cx || !cF) {
         free(cx);
         free(cF);
         snprintf(why, whylen, "out of memory for fit.png");
-        return 3;
+        return -1;
     }
     /* the model in the measured coordinates */
     for (size_t i = 0; i < nc; i++) {
         cx[i] = r->ch0[i] + r->res->value[ADH_FIT_OFFSET];
         cF[i] = r->cF[i] + r->res->value[ADH_FIT_BASELINE];
     }
-    char title[512], msg[1024];
+    char title[512], msg[960];   /* with "fit.png: ", within the caller's 1024 */
     snprintf(title, sizeof title, "adhere fit: E = %.4g GPa, A = %.4g J (%s model)", r->res->best.E * 1e-9,
              r->res->best.A, r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relaxation" : "static");
     adh_fitplot p = { .n = n, .x = r->fd->x, .F = r->fd->F, .resid = r->resid, .dir = r->fd->dir, .ncurve = nc,
@@ -255,9 +259,44 @@ int cli_fit_write(const cli_fit_report *r, adh_outdir *dir, int plot, char *why,
     int rc = adh_fitplot_write(&p, dir, r->fs->cancel, msg, sizeof msg);
     free(cx);
     free(cF);
-    if (rc != 0) {
+    if (rc != 0)
         snprintf(why, whylen, "fit.png: %s", msg);
-        return 3;
+    return rc != 0 ? -1 : 0;
+}
+
+/* One file that was not written: its name to missing, the reason to why. */
+static void not_written(const char *name, const char *msg, char *missing, size_t mlen, char *why, size_t whylen)
+{
+    size_t m = strlen(missing), w = strlen(why);
+    snprintf(missing + m, mlen - m, "%s%s", m ? ", " : "", name);
+    snprintf(why + w, whylen - w, "%s%s", w ? "; " : "", msg);
+}
+
+int cli_fit_write(const cli_fit_report *r, adh_outdir *dir, int plot, char *why, size_t whylen)
+{
+    /* every file is tried: a full disk that stops one (fit-points.tsv is
+     * the large one) leaves the others, best.scene above all; fit.tsv,
+     * written last, names what is missing, as a run's summary.tsv does */
+    cli_fit_report last = *r;
+    char missing[128] = "", msg[1024];
+    int rc = 0;
+    why[0] = '\0';
+    if (adh_outdir_write(dir, "fit-points.tsv", write_points_tsv, r, msg, sizeof msg) != 0) {
+        not_written("fit-points.tsv", msg, missing, sizeof missing, why, whylen);
+        rc = 2;
     }
-    return 0;
+    if (adh_outdir_write(dir, "best.scene", write_scene, r, msg, sizeof msg) != 0) {
+        not_written("best.scene", msg, missing, sizeof missing, why, whylen);
+        rc = 2;
+    }
+    if (plot && write_png(r, dir, msg, sizeof msg) != 0) {
+        not_written("fit.png", msg, missing, sizeof missing, why, whylen);
+        rc = rc ? rc : 3;
+    }
+    last.missing = missing;
+    if (adh_outdir_write(dir, "fit.tsv", write_fit_tsv, &last, msg, sizeof msg) != 0) {
+        not_written("fit.tsv", msg, missing, sizeof missing, why, whylen);
+        rc = 2;
+    }
+    return rc;
 }

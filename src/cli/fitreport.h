@@ -30,6 +30,7 @@ typedef struct cli_fit_report {
     size_t evals;                /* over every fit */
     double seconds;
     int partial;                 /* interrupted: the best so far */
+    const char *missing;         /* files not written (fit.tsv names them), or NULL */
 } cli_fit_report;
 
 /* "fit", "poor fit", "unidentifiable", "not converged", "partial",
@@ -38,8 +39,9 @@ int cli_fit_verdict(const cli_fit_report *r, const char **word);
 
 /* The report on out (standard output). */
 void cli_fit_print(FILE *out, const cli_fit_report *r);
-/* fit.tsv, fit-points.tsv, best.scene (and fit.png unless plot is 0) into
- * out. 0, or 2 (a table) / 3 (the figure) with why. */
+/* fit-points.tsv, best.scene, fit.png (unless plot is 0) and fit.tsv into
+ * out, each tried whatever the others did. 0, or 2 (a table) / 3 (only the
+ * figure) with why, naming each file not written. */
 int cli_fit_write(const cli_fit_report *r, adh_outdir *out, int plot, char *why, size_t whylen);
 
 #endif

@@ -230,6 +230,24 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
         snprintf(why, whylen, "adhere fit needs the measured curve: --data=FILE");
         return 2;
     }
+    /* what the fit's model does not hold was silently left out of it */
+    if (cli->cfg.sweep.naxes) {
+        snprintf(why, whylen, "adhere fit fits one model to the curve: a sweep (of %s, from --sweep or the scene's "
+                 "[sweep]) would be ignored; leave it out, the scene's own values are the start", cli->cfg.sweep.axis[0].name);
+        return 2;
+    }
+    adh_mode mode = cli->cfg.spec.mode;
+    if (mode == ADH_MODE_TIME || mode == ADH_MODE_RIGID) {
+        snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax): "
+                 "mode = %s would be ignored; leave it out", mode == ADH_MODE_TIME ? "time" : "rigid");
+        return 2;
+    }
+    if (isfinite(cli->cfg.spec.time.spring)) {
+        snprintf(why, whylen, "adhere fit's model has no spring: spring = %s would be ignored; give the positions as "
+                 "the tip-sample separation h0 = base + F/k (the piezo's position corrected for the cantilever's "
+                 "bending) and leave the spring out", adh_qtext(cli->cfg.spec.time.spring, ADH_Q_STIFFNESS).s);
+        return 2;
+    }
     cli->action = CLI_ACT_FIT;
     return 0;
 }

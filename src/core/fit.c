@@ -311,6 +311,20 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The force's resolution: the smallest nonzero step between neighbours
+ * (the quantum of forces written to a few decimals; on unrounded data a
+ * step far below the noise). 0 when every force is the same. */
+static double resolution(const adh_fit_data *d)
+{
+    double q = INFINITY;
+    for (size_t i = 1; i < d->n; i++) {
+        double step = fabs(d->F[i] - d->F[i - 1]);
+        if (step > 0)
+            q = fmin(q, step);
+    }
+    return isfinite(q) ? q : 0;
+}
+
 double adh_fit_noise(const adh_fit_data *d)
 {
     double *a = malloc((d->n ? d->n : 1) * sizeof *a);
@@ -328,6 +342,10 @@ double adh_fit_noise(const adh_fit_data *d)
         qsort(a, m, sizeof *a, cmp_double);
         double med = m % 2 ? a[m / 2] : 0.5 * (a[m / 2 - 1] + a[m / 2]);
         s = 1.4826 * med / sqrt(6.0);
+        /* forces written more coarsely than their noise (uN with two
+         * decimals) mostly repeat: the median second difference is 0, yet
+         * the rounding is a noise of its own, uniform over the step */
+        s = fmax(s, resolution(d) / sqrt(12.0));
     }
     free(a);
     return s;

@@ -10,7 +10,9 @@
 #include <strings.h>
 
 static const struct { const char *sym; double factor; } prefixes[] = {
-    { "f", 1e-15 }, { "p", 1e-12 }, { "n", 1e-9 }, { "u", 1e-6 }, { "\xc2\xb5", 1e-6 },
+    /* micro as u, the micro sign U+00B5 and the Greek mu U+03BC (the man
+     * pages' \(*m renders as the latter) */
+    { "f", 1e-15 }, { "p", 1e-12 }, { "n", 1e-9 }, { "u", 1e-6 }, { "\xc2\xb5", 1e-6 }, { "\xce\xbc", 1e-6 },
     { "m", 1e-3 }, { "c", 1e-2 }, { "k", 1e3 }, { "M", 1e6 }, { "G", 1e9 }, { "T", 1e12 },
     { "z", 1e-21 }, { "a", 1e-18 }, { "", 1.0 },
 };

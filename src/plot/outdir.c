@@ -1269,11 +1269,21 @@ int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ct
     int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     int e = dfd < 0 ? errno : 0;
     struct stat st;
-    if (!e && fstatat(dfd, base, &st, AT_SYMLINK_NOFOLLOW) == 0 && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode) &&
-        !S_ISDIR(st.st_mode)) {
-        /* a terminal, pipe or /dev/null: written in place, nothing to replace */
-        int fd = openat(dfd, base, O_WRONLY | O_NOFOLLOW | O_NOCTTY | O_CLOEXEC);
+    int there = !e && fstatat(dfd, base, &st, AT_SYMLINK_NOFOLLOW) == 0;
+    if (there && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode) && !S_ISDIR(st.st_mode)) {
+        /* a terminal, pipe or /dev/null: written in place, nothing to
+         * replace. Opened without waiting: a pipe no program reads would
+         * hold the open for ever (the screen frozen), and is ENXIO */
+        int fd = openat(dfd, base, O_WRONLY | O_NOFOLLOW | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+        if (fd >= 0 && fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) != 0) {
+            close(fd);
+            fd = -1;
+        }
         e = fd < 0 ? errno : fill(fd, writer, ctx, NULL);
+    } else if (there && S_ISREG(st.st_mode) && !(st.st_mode & 0222)) {
+        /* made read-only by its owner: kept, as a shell's > keeps it (the
+         * rename below would replace it, root or not) */
+        e = EACCES;
     } else if (!e) {
         int fd = temp_create(dfd, base, tmp, sizeof tmp);
         e = fd < 0 ? errno : fill(fd, writer, ctx, NULL);

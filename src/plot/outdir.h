@@ -123,8 +123,10 @@ int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t w
 
 /* One file at a path the user named (the TUI's :rows and :dump, --screen):
  * a new temporary beside it renamed over it, so a link there is replaced,
- * never written through; a device or pipe there is written in place. 0, or
- * the errno that stopped it (nothing left under a temporary name). */
+ * never written through, a read-only file kept (EACCES, as a shell's >
+ * keeps it); a device or pipe there is written in place (a
+ * pipe no program reads: ENXIO at once, not waited on). 0, or the errno
+ * that stopped it (nothing left under a temporary name). */
 int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx);
 
 #endif

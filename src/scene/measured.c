@@ -12,6 +12,8 @@
 #include <sys/stat.h>
 
 #define MAX_COLS 64
+#define MAC_LINE_ENDS "a carriage return without a line feed (old Mac line ends): save the file with Unix (LF) or " \
+                      "DOS (CRLF) line ends"
 
 typedef struct unit { const char *sym; double f; } unit;
 /* micro as "u", the micro sign U+00B5 and the Greek mu U+03BC */
@@ -336,6 +338,13 @@ static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, co
      * the refusals that quote a header word */
     for (size_t i = 0; i < len; i++) {
         unsigned char b = (unsigned char)line[i];
+        /* a carriage return ends a line only before its line feed (DOS);
+         * alone it is an old Mac line end, or one moving the terminal's
+         * cursor back over a refusal that quotes it */
+        if (b == '\r' && i + 1 < len && line[i + 1] != '\n') {
+            snprintf(why, whylen, "%s:%zu: %s", m->path, lineno, MAC_LINE_ENDS);
+            return -1;
+        }
         if ((b < 0x20 && b != '\t' && b != '\r' && b != '\n') || b == 0x7f) {
             snprintf(why, whylen, "%s:%zu: the control byte 0x%02x: this is not a text table (a binary file?)",
                      m->path, lineno, b);
@@ -455,6 +464,10 @@ int adh_measured_load(const char *path, const char *columns, adh_measured *m, ch
     while ((len = read_line(f, line, sizeof line)) != 0) {
         lineno++;
         bytes += len < 0 ? sizeof line : (size_t)len;
+        if (len < 0 && memchr(line, '\r', sizeof line - 1)) {   /* a whole file of them: one line */
+            snprintf(why, whylen, "%s:%zu: %s", path, lineno, MAC_LINE_ENDS);
+            goto bad;
+        }
         if (len < 0) {
             snprintf(why, whylen, "%s:%zu: line longer than %d bytes", path, lineno, ADH_MEASURED_MAX_LINE);
             goto bad;

@@ -242,10 +242,13 @@ static void plan_bytes(const adh_config *cfg, adh_plan *p)
  * grids, each a kernel. */
 static void plan_totals(const adh_config *cfg, adh_plan *p)
 {
-    for (size_t i = 0; i < p->nruns && i < ADH_PLAN_MAX_RUNS; i++) {
+    p->iterations = 0;
+    for (size_t i = 0; i < p->nruns; i++) {
         adh_run_spec rc;
+        adh_plan_run more;
         adh_config_sweep_run(cfg, i, &rc);
-        plan_run(&rc, p, &p->runs[i]);
+        plan_run(&rc, p, i < ADH_PLAN_MAX_RUNS ? &p->runs[i] : &more);
+        p->iterations += i < ADH_PLAN_MAX_RUNS ? p->runs[i].iterations : more.iterations;
     }
     p->drives = adh_sweep_drives(cfg);
     /* the distinct grids, each a kernel (one serves the runs that share it) */
@@ -533,14 +536,10 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",
                 p->loading_steps, p->unloading_steps,
                 p->unloading_branches ? " (more if the surfaces still touch there)" : "");
-    if (p->elastic && !p->static_mode && !p->time_mode) {
-        double it = 0;
-        for (size_t i = 0; i < p->nruns; i++)
-            it += p->runs[i].iterations;
+    if (p->elastic && !p->static_mode && !p->time_mode)   /* every run's: runs[] holds the first few */
         fprintf(f, "iterations: about %.2g (some 17 a step out of contact; in contact %.0f a step at sigma = %.3g "
-                   "and eps = 1 pm, more as eps^-0.72 for smaller eps)\n", it, contact_iterations(p->runs[0].sigma),
-                p->runs[0].sigma);
-    }
+                   "and eps = 1 pm, more as eps^-0.72 for smaller eps)\n", p->iterations,
+                contact_iterations(p->runs[0].sigma), p->runs[0].sigma);
     for (size_t i = 0; i < p->nstored; i++)
         fprintf(f, "stored: %s: %s\n", p->stored[i].what, p->stored[i].why);
     for (size_t i = 0; i < p->nskipped; i++)

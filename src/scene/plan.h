@@ -37,6 +37,7 @@ typedef struct adh_plan_run {
 typedef struct adh_plan {
     size_t nruns;
     adh_plan_run runs[ADH_PLAN_MAX_RUNS];   /* the first runs */
+    double iterations;        /* adh_plan_run's iterations summed over every run */
     size_t drives;            /* drives stepped: runs that differ only in their turn share one */
     int jobs;                 /* runs at once */
     int elastic;              /* 0: rigid spheres only (eq 22), no kernel at all */

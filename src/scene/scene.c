@@ -121,7 +121,10 @@ static int handler(void *user, const char *section, const char *name, const char
     if (adh_config_set(c, full, value, msg, sizeof msg) != 0) {
         char words[400];
         adh_config_reword(msg, say_key, NULL, words, sizeof words);
-        return fail(sp, "%s: %s", name, words);
+        /* '#' comments a line only at its start: "E = 1GPa # stiff" read
+         * 'GPa # stiff' as the unit */
+        const char *hash = strstr(value, " #");
+        return fail(sp, hash ? "%s: %s (a comment after a value starts with ' ;', not '#')" : "%s: %s", name, words);
     }
     adh_config_note_given(c, full, value, sp->file);
     if (!strcmp(full, "protocol.turns") && sp->unload_given)
@@ -140,6 +143,32 @@ static void finish_error(scene_parse *sp, int rc, char *why, size_t whylen)
     if (rc > 0 && !sp->why[0])
         snprintf(sp->why, sizeof sp->why, "syntax error (expected [section] or key = value)");
     snprintf(why, whylen, "%s:%d: %s", sp->file, rc, sp->why);
+}
+
+/* A control byte other than a tab on a line (an escape sequence): the
+ * refusals quote values and keys, and it would reach the terminal (a
+ * title's was refused alone). Named with the key when it is in the value. */
+static int control_byte(const char *buf, scene_parse *sp)
+{
+    const char *p = buf;
+    while (*p && ((unsigned char)*p >= 0x20 || *p == '\t') && *p != 0x7f)
+        p++;
+    if (!*p)
+        return 0;
+    char key[64] = "", msg[300];
+    const char *eq = strpbrk(buf, "=:"), *k = buf;
+    while (*k == ' ' || *k == '\t')
+        k++;
+    if (eq && eq < p && *k != '[' && *k != '#' && *k != ';') {   /* the key is text: name it */
+        size_t kl = (size_t)(eq - k);
+        while (kl && (k[kl - 1] == ' ' || k[kl - 1] == '\t'))
+            kl--;
+        snprintf(key, sizeof key, "%.*s: ", (int)(kl < 40 ? kl : 40), k);
+    }
+    snprintf(msg, sizeof msg, "%sthe control character 0x%02x is not allowed: a scene is printable text (an escape "
+             "sequence would reach the terminal in a message)", key, (unsigned char)*p);
+    fail(sp, "%s%s", msg, "");
+    return 1;
 }
 
 /* What inih would pass over or misplace, checked line by line first: a
@@ -175,6 +204,8 @@ static int prescan(const char *text, scene_parse *sp)
                                         "x\r" must still move p to its end */
         if (len && buf[len - 1] == '\r')
             buf[--len] = '\0';
+        if (control_byte(buf, sp))
+            return line;
         const char *t = buf;
         if (line == 1 && (unsigned char)t[0] == 0xEF && (unsigned char)t[1] == 0xBB && (unsigned char)t[2] == 0xBF)
             t += 3; /* a UTF-8 byte order mark */

@@ -852,6 +852,6 @@ int tui_dump_screen(const char *path, char *why, size_t whylen)
 {
     int e = adh_outfile_write(path, screen_text, NULL);
     if (e)
-        snprintf(why, whylen, "cannot write the screen to %s: %s", path, strerror(e));
+        snprintf(why, whylen, "cannot write the screen to %s: %s", path, e == ENXIO ? "a pipe no program reads" : strerror(e));
     return e ? -1 : 0;
 }

@@ -65,9 +65,10 @@ typedef struct tui {
     char status[768];
     int status_error;
     int editing;
-    char text[128];
+    char text[1024];    /* a path of a deep directory fits */
     size_t textlen;
-    char prompt[200];
+    int text_full;      /* a key was typed past text's end: the line is refused */
+    char prompt[1200];
     long count;
 
     int pending;        /* steps still to start after the current one */
@@ -173,6 +174,12 @@ static void draw(tui *t)
             else
                 snprintf(t->prompt, sizeof t->prompt, " %s = %s_   (Enter sets, Esc cancels)", tui_params[v->sel].name,
                          t->text);
+        }
+        else if (t->textlen + 2 > (size_t)COLS && COLS > 8) {   /* its end in view, where the typing is */
+            const char *tail = t->text + t->textlen - (size_t)(COLS - 6);
+            while (((unsigned char)*tail & 0xc0) == 0x80)   /* from a character's first byte */
+                tail++;
+            snprintf(t->prompt, sizeof t->prompt, ":...%s_", tail);
         }
         else
             snprintf(t->prompt, sizeof t->prompt, ":%s_", t->text);
@@ -542,7 +549,7 @@ static int write_rows(tui *t, const char *path, char *why, size_t whylen)
     r.timed = is_timed(t);
     int e = adh_outfile_write(path, rows_table, &r);
     if (e)
-        snprintf(why, whylen, "cannot write the rows to %s: %s", path, strerror(e));
+        snprintf(why, whylen, "cannot write the rows to %s: %s", path, e == ENXIO ? "a pipe no program reads" : strerror(e));
     return e ? -1 : 0;
 }
 
@@ -596,19 +603,39 @@ static int edit_key(tui *t, int key)
         return TODO_REDRAW;
     }
     if (key == KEY_BACKSPACE || key == KEY_DC) {
+        /* a whole character: its UTF-8 continuation bytes, then its first */
+        while (t->textlen && ((unsigned char)t->text[t->textlen - 1] & 0xc0) == 0x80)
+            t->textlen--;
         if (t->textlen)
-            t->text[--t->textlen] = '\0';
+            t->textlen--;
+        t->text[t->textlen] = '\0';
         return TODO_REDRAW;
     }
     if (key != '\n') {
-        if (key >= ' ' && key < 127 && t->textlen + 1 < sizeof t->text) {
+        /* printable ASCII, and the bytes of a UTF-8 character as the
+         * terminal sends them: the micro sign the panel shows beside R was
+         * dropped, so 5, micro sign, m set R = 5 m, and a file name lost
+         * its accented letters */
+        int typed = (key >= ' ' && key < 127) || (key >= 0x80 && key <= 0xff);
+        if (typed && t->textlen + 1 < sizeof t->text) {
             t->text[t->textlen++] = (char)key;
             t->text[t->textlen] = '\0';
+        } else if (typed && !t->text_full) {
+            t->text_full = 1;
+            say(t, 1, "the line holds %zu characters: what is typed past them is not taken, and Enter will refuse "
+                "the line; Esc cancels", sizeof t->text - 1);
         }
         return TODO_REDRAW;
     }
     int mode = t->editing;
     t->editing = EDIT_NONE;
+    /* a line cut short would set another value, or write another file
+     * (a path's prefix, perhaps one of the user's): never run */
+    if (t->text_full) {
+        say(t, 1, "not %s: the line was longer than %zu characters and its end was not taken; nothing changed",
+            mode == EDIT_PARAM ? "set" : "run", sizeof t->text - 1);
+        return TODO_REDRAW;
+    }
     if (mode == EDIT_PARAM) {
         tui_param p = (tui_param)t->view.sel;
         if (p != P_TURN) {
@@ -622,7 +649,7 @@ static int edit_key(tui *t, int key)
         return TODO_REDRAW;
     }
     /* The ':' prompt takes what a script's command line takes. */
-    char line[160];
+    char line[sizeof t->text + 2];
     snprintf(line, sizeof line, ":%s", t->text);
     tui_replay_script sc;
     int errline;
@@ -854,6 +881,7 @@ static int handle_key(tui *t, int key)
         t->editing = a == ACT_EDIT ? EDIT_PARAM : EDIT_COMMAND;
         t->text[0] = '\0';
         t->textlen = 0;
+        t->text_full = 0;
         break;
     case ACT_SCALE_UP:
     case ACT_SCALE_DOWN: scale_key(t, pow(a == ACT_SCALE_UP ? 2.0 : 0.5, (double)n)); break;

@@ -1,12 +1,13 @@
 #!/bin/sh
-# A short libFuzzer pass over the three parsers that read user text (the
-# number/unit parser, scene files, replay scripts) and over the quoting that
+# A short libFuzzer pass over the parsers that read user text (the
+# number/unit parser, scene files, replay scripts, measured curves as adhere
+# fit labels them) and over the quoting that
 # carries user text into gnuplot's command stream. Seeds in corpus/; the
 # pass is seconds long (FUZZ_SECONDS, default 5 each) and must find nothing.
 . "$(dirname "$0")/../cli/lib.sh"
 BUILD=${BUILD:-build}
 secs=${FUZZ_SECONDS:-5}
-for t in units scene replay gpstring; do
+for t in units scene replay gpstring measured; do
     bin="$BUILD/fuzz/fuzz_$t"
     if [ ! -x "$bin" ]; then not_ok "fuzz_$t was not built"; continue; fi
     work="$TMP/$t"

@@ -429,6 +429,20 @@ check "a grid too short for the turn is flagged before any solve" \
     sh -c "grep -q '! grid radius Rmax = 150 nm is too short' '$W/grid-warn/grid-warn.screen' && grep -q 'use' '$W/grid-warn/grid-warn.screen' && grep -q 'path   0 states' '$W/grid-warn/grid-warn.screen'"
 check "an unwritable :dump names FILE:LINE and the file" \
     grep -q "^bad-dump.keys:2: cannot write the screen to no-such-dir/screen.txt: No such file" "$W/bad-dump/stderr"
+PL=$W/prompt-long
+check "a 148-character name typed at the ':' prompt is written whole, the header and the path's 4 states in it (not a name cut at 122)" \
+    sh -c "[ \$(grep -vc '^#' '$PL/afm-2026-11-27-sample-B-silica-sphere-R10um-on-PDMS-10-to-1-cured-48h-approach-retract-1um-per-s-dwell-0s-run-017-of-120-calibrated-k0.35N-per-m.tsv') = 5 ] && [ \$(ls '$PL' | grep -c '^afm-') = 1 ]"
+check "a line longer than the prompt holds writes nothing, under no name" sh -c "! ls '$PL' | grep -q '^xxx'"
+
+# :rows into a pipe no program reads is refused at once: opening it waited
+# for a reader for ever, the screen frozen (timeout's 124 if it still does).
+mkdir -p "$work/fifo"
+mkfifo "$work/fifo/rows.fifo"
+printf 'f\n:rows rows.fifo\n' >"$work/fifo/fifo.keys"
+(cd "$work/fifo" && timeout 20 "$bin" --replay=fifo.keys --screen=s.txt </dev/null >/dev/null 2>err)
+rc=$?
+check ":rows into a pipe with no reader: exit 2 at once, saying so (got $rc: $(head -c 200 "$work/fifo/err"))" \
+    sh -c "[ $rc = 2 ] && grep -q '^fifo.keys:2: cannot write the rows to rows.fifo: a pipe no program reads' '$work/fifo/err'"
 
 # Determinism, and independence from the caller's terminal settings.
 run_case steps "$work/again"

@@ -76,6 +76,21 @@ T send-keys -t t -l abc
 T send-keys -t t Enter
 check "a bad typed value is named" wait_for "error: E: 'abc' is not a number"
 check "and changes nothing" sh -c "tmux -L '$sock' capture-pane -p -t t | grep -qF '>E     1 GPa'"
+# A UTF-8 character typed at a prompt (a replay script is ASCII; a person's
+# terminal is not): the micro sign the panel shows beside R, and a file
+# name's accents. They were dropped: 5um with the micro sign set R = 5 m,
+# and resume.tsv with accents was written as rsum.tsv.
+type_cmd "set R 5µm"
+check "the : prompt takes the micro sign the panel shows: R = 5 µm" wait_for "R = 5 µm:"
+T send-keys -t t Down Down Down Enter
+T send-keys -t t -l "7µmµ"
+T send-keys -t t BSpace Enter
+check "and so does an Enter edit, <BS> taking the whole character: R = 7 µm" wait_for "R = 7 µm:"
+type_cmd "rows résumé.tsv"
+check "a file name with accents is written under that name" wait_for "rows written to résumé.tsv"
+check "... résumé.tsv, not rsum.tsv" sh -c "[ -s '$work/résumé.tsv' ] && [ ! -e '$work/rsum.tsv' ]"
+type_cmd "set R 10um"
+T send-keys -t t Up Up Up
 T send-keys -t t '?'
 check "? shows the help" wait_for "adhere keys"
 T send-keys -t t Space

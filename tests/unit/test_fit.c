@@ -192,6 +192,27 @@ int main(void)
        "E, A and R free: reported unidentifiable or correlated above 0.99 (flags E %u A %u R %u, corr A-R %.4f)",
        d4.flags[ADH_FIT_E], d4.flags[ADH_FIT_A], d4.flags[ADH_FIT_R], d4.corr[ADH_FIT_A][ADH_FIT_R]);
 
+    /* forces written more coarsely than their noise (an export in uN with
+     * two decimals: steps of q = 10 nN over noise of 0.5 nN): most second
+     * differences are 0, so their median is, and the scatter read 0, chi2
+     * per degree of freedom inf, a good fit "poor". The rounding is a noise
+     * of its own, uniform over a step: standard deviation q / sqrt(12). */
+    static synth sq;
+    synth_make(&sq, g, k, &truth, 6e-9, -2e-9, 60, 60, 0.5e-9 / fabs(adh_jkr_pulloff(&truth)), 11, 0, 0);
+    const double q = 10e-9;
+    for (size_t i = 0; i < sq.n; i++)
+        sq.F[i] = q * round(sq.F[i] / q);
+    start = truth;
+    start.E *= 1.3;
+    start.A *= 0.8;
+    adh_fit_result qr = fit(&sq.d, EA, start, 0);
+    double qsd = q / sqrt(12.0), qall = sqrt(qsd * qsd + 0.25e-18);
+    ok(qr.noise >= qsd * (1 - 1e-9) && qr.noise < 1.25 * qall,
+       "forces in steps of 10 nN over 0.5 nN of noise: the scatter is at least the rounding's, q/sqrt(12) = %.4g nN "
+       "(%.4g nN)", qsd * 1e9, qr.noise * 1e9);
+    ok(qr.status == ADH_SUCCESS && qr.chi2_red > 0.6 && qr.chi2_red < 1.6 && recovered(&qr, ADH_FIT_E, truth.E, 0.02),
+       "and the fit is a fit: chi2 per degree of freedom %.3g, E within 2 %% and two standard errors", qr.chi2_red);
+
     /* the measured-file path: a header with spaces and units, three
      * columns, tab-separated, read and labelled as adhere fit reads it */
     char path[64];

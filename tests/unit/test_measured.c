@@ -95,6 +95,28 @@ int main(void)
     ok(rc != 0 && strstr(why, "the file has no header: give its number"), "a name without a header: refused (%s)", why);
     rc = load("Separation (nm),Sep2 (nm),F (nN)\n1,2,3\n", "sep,F", &m, why, sizeof why);
     ok(rc != 0 && strstr(why, "names more than one column"), "an ambiguous prefix: refused (%s)", why);
+    /* old Mac line ends (a carriage return alone): the file is one line,
+     * refused as a comment of 0 points or a line over 4096 bytes; and a
+     * carriage return inside a line, quoted, moved the terminal's cursor
+     * back over the message */
+    rc = load("# a comment\rh0 (nm)\tF (nN)\r5\t-1\r4\t-2\r", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":1: a carriage return without a line feed (old Mac line ends)") && !strchr(why, '\r'),
+       "old Mac line ends: refused as such (%s)", why);
+    char big[8192];
+    size_t bl = 0;
+    bl += (size_t)snprintf(big, sizeof big, "h0 (nm)\tF (nN)\r");
+    for (int i = 0; i < 600; i++)
+        bl += (size_t)snprintf(big + bl, sizeof big - bl, "%d\t-1\r", 600 - i);
+    rc = load(big, NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":1: a carriage return without a line feed (old Mac line ends)"),
+       "old Mac line ends past 4096 bytes: refused as such, not as a long line (%s)", why);
+    rc = load("h0 \r(nm)\tF (nN)\r\n5\t-1\r\n4\t-2\r\n", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":1: a carriage return without a line feed") && !strchr(why, '\r'),
+       "a carriage return inside a line: refused, not quoted (%s)", why);
+    rc = load("h0 (nm)\tF (nN)\r\n5\t-1\r\n4\t-2\r", NULL, &m, why, sizeof why);
+    ok(rc == 0 && m.n == 2, "DOS line ends, the last line's without its line feed: read (%s)", rc ? why : "ok");
+    if (rc == 0)
+        adh_measured_free(&m);
     unlink(path);
     return tap_done();
 }

@@ -5,6 +5,8 @@
  * an adhere name, a second run at once and a link, and writes through no
  * link; adh_outfile_write replaces a link at the path. */
 #include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -392,6 +394,35 @@ static void test_outfile(void)
     ok(adh_outfile_write(link, fail_writer, NULL) != 0 && !strcmp(text_of(link), "rows\n") && hidden(work) == 0,
        "a failed write leaves the old file and no temporary");
     ok(adh_outfile_write("/dev/null", write_text, "x") == 0, "a device is written in place");
+    /* a file its owner made read-only is not replaced, as a shell's > would
+     * not replace it: the new file was renamed over it (the outdir's
+     * manifest already holds such a file the user's) */
+    char ro[300];
+    snprintf(ro, sizeof ro, "%s/kept.tsv", work);
+    put_file(ro, (const unsigned char *)"mine", 4);
+    chmod(ro, 0444);
+    ok(adh_outfile_write(ro, write_text, "rows\n") == EACCES && !strcmp(text_of(ro), "mine") && hidden(work) == 0,
+       "a read-only file at the path is not replaced (EACCES), and no temporary is left");
+    unlink(ro);
+    /* a pipe no program reads: opening it to write waits for a reader for
+     * ever (the screen froze on :rows FIFO until SIGINT ended the session);
+     * refused at once, ENXIO (an alarm fails the test where it would wait) */
+    char fifo[300];
+    snprintf(fifo, sizeof fifo, "%s/rows.fifo", work);
+    mkfifo(fifo, 0600);
+    alarm(10);
+    ok(adh_outfile_write(fifo, write_text, "rows\n") == ENXIO, "a pipe with no reader is refused at once (ENXIO), "
+       "not waited on");
+    /* with a reader it is written in place, as a shell's > would */
+    int rd = open(fifo, O_RDONLY | O_NONBLOCK);
+    char got[16] = "";
+    int wr = adh_outfile_write(fifo, write_text, "rows\n");
+    ssize_t n = rd >= 0 ? read(rd, got, sizeof got - 1) : -1;
+    alarm(0);
+    ok(wr == 0 && n == 5 && !strcmp(got, "rows\n"), "a pipe with a reader is written in place (%zd bytes)", n);
+    if (rd >= 0)
+        close(rd);
+    unlink(fifo);
 }
 
 int main(void)

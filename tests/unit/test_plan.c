@@ -9,6 +9,7 @@
 #include "adhere/protocol.h"
 #include "scene/config.h"
 #include "scene/plan.h"
+#include "scene/scene.h"
 #include "tap.h"
 
 static int near(double a, double b)
@@ -94,5 +95,30 @@ int main(void)
     ok(i01 / i1 > 4 && i01 / i1 < pow(10, 0.72) * 1.0001, "eps 10 times smaller: %.2f times the iterations "
        "(the steps out of contact do not grow)", i01 / i1);
     time_steps(&c);
+
+    /* a sweep of more runs than the plan lists one by one (32): the
+     * iterations' total summed runs[i] over every run, reading past the
+     * list (garbage in the total; at 50000 runs --plan crashed) */
+    static adh_config big;
+    static adh_plan plan;
+    char why[512] = "";
+    adh_config_default(&big);
+    int parsed = adh_scene_parse_string("[sweep]\nE = 1GPa .. 2GPa, 50000\n", "big.scene", &big, why, sizeof why);
+    ok(parsed == 0, "a sweep of 50000 runs parses (%s)", why);
+    adh_plan_make(&big, &plan);
+    double sum = 0;
+    for (size_t i = 0; i < adh_config_nruns(&big); i++) {
+        adh_run_spec rc;
+        adh_config_sweep_run(&big, i, &rc);
+        sum += adh_plan_iterations(&rc);
+    }
+    ok(plan.nruns == 50000 && near(plan.iterations, sum), "the plan's iterations are every run's, %.6g (got %.6g)",
+       sum, plan.iterations);
+    char text[1 << 14] = "", want_line[64];
+    FILE *f = fmemopen(text, sizeof text - 1, "w");
+    adh_plan_print(f, &big, &plan);
+    fclose(f);
+    snprintf(want_line, sizeof want_line, "iterations: about %.2g ", sum);
+    ok(strstr(text, want_line) != NULL, "and --plan prints that total: '%s'", want_line);
     return tap_done();
 }

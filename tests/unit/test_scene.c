@@ -38,8 +38,11 @@ static void bad(const char *text, int line, const char *mentions)
     char why[1024] = "", want[64];
     int rc = adh_scene_parse_string(text, "bad.scene", &c, why, sizeof why);
     snprintf(want, sizeof want, "bad.scene:%d: ", line);
-    ok(rc != 0 && strncmp(why, want, strlen(want)) == 0 && strstr(why, mentions),
-       "rejected at line %d, mentions '%s': %s", line, mentions, why);
+    int ctl = 0;   /* an escape sequence quoted in the message would reach the terminal */
+    for (const char *p = why; *p; p++)
+        ctl |= (unsigned char)*p < 0x20 || *p == 0x7f;
+    ok(rc != 0 && strncmp(why, want, strlen(want)) == 0 && strstr(why, mentions) && !ctl,
+       "rejected at line %d, mentions '%s'%s: %s", line, mentions, ctl ? ", but quotes a control byte" : "", why);
 }
 
 static int has_skip(const adh_plan *p, const char *what)
@@ -233,6 +236,14 @@ static void bad_scenes(void)
     bad("[sweep]\njobs = 0\n", 2, "jobs");
     bad("[solver]\neps 1pm\n", 2, "syntax error");
     bad("[protocol\nstep = 1nm\n", 1, "syntax error");
+    bad("[material]\nE = 1GPa # stiffer\n", 2, "(a comment after a value starts with ' ;', not '#')");
+    /* control bytes: an escape sequence in a value or a key was quoted raw
+     * in the refusal (a title's alone was refused) */
+    bad("[material]\nE = \033]0;owned\007\n", 2, "E: the control character 0x1b is not allowed");
+    bad("[material]\n\033[2J = 1\n", 2, "the control character 0x1b is not allowed");
+    bad("[protocol]\nturns = -1nm, \033[31m-2nm\n", 2, "turns: the control character 0x1b");
+    bad("[scene]\ntitle = a\001b\n", 2, "title: the control character 0x01 is not allowed");
+    bad("[grid]\n# a comment \033[2J\n", 2, "the control character 0x1b");
 
     adh_config c;
     char why[1024] = "";

@@ -29,6 +29,11 @@ int main(void)
     accepts("0.5nm", ADH_Q_LENGTH, 0.5e-9);
     accepts("10um", ADH_Q_LENGTH, 10e-6);
     accepts("10\xc2\xb5m", ADH_Q_LENGTH, 10e-6);
+    /* the Greek mu (U+03BC): what the man pages' \(*m renders as ("R in
+     * \xce\xbcm", "Default: 1 \xce\xbcm/s"), copied from them, and what a
+     * measured file's header may carry */
+    accepts("10\xce\xbcm", ADH_Q_LENGTH, 10e-6);
+    accepts("1\xce\xbcm/s", ADH_Q_SPEED, 1e-6);
     accepts("1.5cm", ADH_Q_LENGTH, 1.5e-2);
     accepts("2mm", ADH_Q_LENGTH, 2e-3);
     accepts("3m", ADH_Q_LENGTH, 3);
