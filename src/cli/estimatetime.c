@@ -259,12 +259,17 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
         smax = fmax(smax, e.c.steps);
     }
     if (n > 1) {
-        char t[32], w[32];
-        cli_progress_duration(cpu, t, sizeof t);
-        cli_progress_duration(adh_plan_time_left(runs, n, plan->jobs, 0, 1.0), w, sizeof w);
+        /* a study past the runs the plan lists: the rest taken at the
+         * listed runs' mean, and said so ("in all" summed 32 of 2000) */
+        double all = (double)plan->nruns / (double)n;
+        char t[32], w[32], rest[96] = "";
+        cli_progress_duration(cpu * all, t, sizeof t);
+        cli_progress_duration(adh_plan_time_left(runs, n, plan->jobs, 0, 1.0) * all, w, sizeof w);
+        if (n < plan->nruns)
+            snprintf(rest, sizeof rest, "; runs %zu to %zu taken at the mean of the first %zu", n + 1, plan->nruns, n);
         fprintf(f, "time: about %s of CPU in all, %s on %d core%s (%.3g s: about %.0f integrator steps, %.0f to %.0f "
-                   "a run, each run's as run 1's below%s)\n", t, w, plan->jobs, plan->jobs == 1 ? "" : "s", cpu,
-                two_digits(steps), two_digits(smin), two_digits(smax), n < plan->nruns ? "; the first runs alone" : "");
+                   "a run, each run's as run 1's below%s)\n", t, w, plan->jobs, plan->jobs == 1 ? "" : "s", cpu * all,
+                two_digits(steps * all), two_digits(smin), two_digits(smax), rest);
     }
     print_run(f, n > 1 ? "run 1 " : "", &first);
 }

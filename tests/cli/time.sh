@@ -76,6 +76,12 @@ check "--plan visco: summary.tsv with the solid, the drive, hysteresis and dissi
 "$ADHERE" --plan visco-speed >"$TMP/plans" 2>&1
 check "--plan visco-speed: 8 runs in time, speed.png" sh -c "grep -q '^runs: 8$' '$TMP/plans' && grep -q '^mode: time' '$TMP/plans' && grep -q '^stored: speed.png' '$TMP/plans' && grep -q '^sweep: speed_out = 1 nm/s, ' '$TMP/plans' && grep -q '^stored: sweep.tsv: .*hysteresis, dissipated, time' '$TMP/plans'"
 check "--plan visco-speed: a CPU time for the study and its first run, no eps-time estimate, no eps in its run lines" sh -c "grep -q '^time: about .* of CPU in all, .* on [0-9]* cores\\? (' '$TMP/plans' && grep -q '^time: run 1 about .* integrator steps' '$TMP/plans' && ! grep -q 'expected time' '$TMP/plans' && ! grep -q '^run [0-9]*: .*eps =' '$TMP/plans' && ! grep -q 'iterations, each about one kernel product' '$TMP/plans'"
+# a study past the 32 runs the plan lists: its "in all" counts every run
+# (it summed the first 32); runs of one cost, so 64 are twice 32's steps
+steps_all() { "$ADHERE" --plan visco --sweep=dwell_time=1ns..2ns,"$1" 2>&1 | sed -n 's/^time: about .* of CPU in all, .*about \([0-9]*\) integrator steps.*/\1/p'; }
+s32=$(steps_all 32) s64=$(steps_all 64)
+check "--plan of 64 time runs: twice the steps of 32 in all ($s64 against $s32), the runs past 32 said taken at the first's mean" \
+    sh -c "[ -n '$s32' ] && [ -n '$s64' ] && awk 'BEGIN {r = $s64 / $s32; exit !(r > 1.9 && r < 2.1)}' && \"$ADHERE\" --plan visco --sweep=dwell_time=1ns..2ns,64 2>&1 | grep -q 'runs 33 to 64 taken at the mean of the first 32'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
 check "--plan afm: one static curve serves every k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^skip: a curve per k: the 9 runs .* share 1 static curve ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
