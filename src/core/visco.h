@@ -223,7 +223,8 @@ void adh_visco_flow_jtimes(adh_visco *w, const double *y, const double *v, doubl
 int adh_visco_flow_psetup(adh_visco *w, const double *y, double cj);
 void adh_visco_flow_psolve(adh_visco *w, const double *r, double *z);
 /* The relaxation's start from the fold y nudged along the path's tangent
- * d (nudge times it); y' = -(the residual). */
+ * d (nudge times it; under a spring, where d is mostly time, nudge z0
+ * along its (u, h0) part); y' = -(the residual). */
 int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double nudge, double *y0, double *yp0);
 /* How fast it still moves: max over u (and h0) of |y'| / atol, per unit
  * pseudo-time. */
