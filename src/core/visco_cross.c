@@ -120,8 +120,24 @@ void adh_visco_cross_start(adh_visco *w, const double *d, double *yp0)
 {
     memcpy(yp0, d, w->len * sizeof *d);
     memset(yp0 + w->IQ, 0, w->n * sizeof *yp0);
-    if (w->spring)
-        yp0[w->IT] = 0;
+    if (!w->spring)
+        return;
+    yp0[w->IT] = 0;
+    /* at a fold (t' = 0) the (u, h0) part is z0 long, the crossing's
+     * normalisation; from short of one (the integrator stuck in a soft
+     * spring's turn, nearly all time) it is scaled up to it, h0 moving
+     * the drive's way (through a spring's fold h0 goes on as it went:
+     * the fold is the base's, where dF/dh0 = k) */
+    double uu = 0, z0 = w->m.z0;
+    for (size_t i = 0; i < w->n; i++)
+        uu += d[i] * d[i];
+    double len = sqrt(w->theta * uu + d[w->IH] * d[w->IH]);
+    if (len > 0 && len < 0.5 * z0) {
+        double sc = (d[w->IH] * w->cross_dir < 0 ? -z0 : z0) / len;
+        for (size_t i = 0; i < w->n; i++)
+            yp0[i] *= sc;
+        yp0[w->IH] *= sc;
+    }
 }
 
 double adh_visco_cross_base(const adh_visco *w, const double *y)
