@@ -124,16 +124,19 @@ void adh_visco_cross_start(adh_visco *w, const double *d, double *yp0)
         return;
     yp0[w->IT] = 0;
     /* at a fold (t' = 0) the (u, h0) part is z0 long, the crossing's
-     * normalisation; from short of one (the integrator stuck in a soft
-     * spring's turn, nearly all time) it is scaled up to it, h0 moving
-     * the drive's way (through a spring's fold h0 goes on as it went:
-     * the fold is the base's, where dF/dh0 = k) */
+     * normalisation, and h0 moves the drive's way (through a spring's fold
+     * h0 goes on as it went: the fold is the base's, where dF/dh0 = k);
+     * from short of one (the integrator stopped in a soft spring's turn,
+     * its tangent nearly all time, or past the fold) it is scaled to z0
+     * and turned the drive's way */
     double uu = 0, z0 = w->m.z0;
     for (size_t i = 0; i < w->n; i++)
         uu += d[i] * d[i];
     double len = sqrt(w->theta * uu + d[w->IH] * d[w->IH]);
-    if (len > 0 && len < 0.5 * z0) {
-        double sc = (d[w->IH] * w->cross_dir < 0 ? -z0 : z0) / len;
+    double sc = len > 0 && len < 0.5 * z0 ? z0 / len : 1.0;
+    if (d[w->IH] * w->cross_dir < 0)
+        sc = -sc;
+    if (sc != 1.0) {
         for (size_t i = 0; i < w->n; i++)
             yp0[i] *= sc;
         yp0[w->IH] *= sc;
