@@ -129,10 +129,7 @@ void adh_visco_cross_start(adh_visco *w, const double *d, double *yp0)
      * from short of one (the integrator stopped in a soft spring's turn,
      * its tangent nearly all time, or past the fold) it is scaled to z0
      * and turned the drive's way */
-    double uu = 0, z0 = w->m.z0;
-    for (size_t i = 0; i < w->n; i++)
-        uu += d[i] * d[i];
-    double len = sqrt(w->theta * uu + d[w->IH] * d[w->IH]);
+    double len = adh_visco_uh_length(w, d), z0 = w->m.z0;
     double sc = len > 0 && len < 0.5 * z0 ? z0 / len : 1.0;
     if (d[w->IH] * w->cross_dir < 0)
         sc = -sc;

@@ -107,7 +107,8 @@ void adh_visco_flow_psolve(adh_visco *w, const double *r, double *z)
 /* Under a spring, the push along the tangent d is at least this many z0
  * in its (u, h0) part (the crossing's metric, theta |u'|^2 + h0'^2). At a
  * fold (t' = 0) that part is z0 and nothing changes; where the integrator
- * stopped short of one (path_stuck) d can be nearly all time: a soft
+ * stopped short of one (path_stuck: the crossing from there is tried
+ * first, and this is its fallback) d can be nearly all time: a soft
  * spring's path turns from the base's motion to the sphere's within
  * k / F'' of h0 (a femtometre at 1e-3 N/m, at the force minimum), and a
  * push along it moved the sphere by nothing, the relaxation came back
@@ -122,11 +123,8 @@ static double push_of(const adh_visco *w, const double *d, double nudge)
 {
     if (!w->spring)
         return nudge;
-    double uu = 0, z0 = w->m.z0;
-    for (size_t i = 0; i < w->n; i++)
-        uu += d[i] * d[i];
-    double len = sqrt(w->theta * uu + d[w->IH] * d[w->IH]);
-    return len > 0 ? fmax(nudge, VISCO_PUSH_MIN * z0 / len) : nudge;
+    double len = adh_visco_uh_length(w, d);
+    return len > 0 ? fmax(nudge, VISCO_PUSH_MIN * w->m.z0 / len) : nudge;
 }
 
 int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double nudge, double *y0, double *yp0)
