@@ -249,4 +249,15 @@ adh_visco_rule_settings adh_visco_rule_settings_default(double E);
  * returns how many there are. */
 size_t adh_visco_spring_folds(const adh_run *curve, double k, double *at, double *base, size_t max);
 
+/* The instrument's snap-out on an elastic (static) curve: the base's
+ * position and h0 (returned) where the sphere, retracted from the curve's
+ * end through the spring k, jumps out of contact. It follows the rows
+ * outward while the base rises; at a fold (a turn of the base) it lands
+ * on the first row further out whose base is back at the fold's: a row in
+ * contact is the contact line snapping across a lattice fold of the grid,
+ * and it goes on from there (a soft spring's force wiggles make one fold
+ * per ring near the pull-off); out of contact, or beyond the curve's
+ * start, the fold is the snap-out. NAN (both) when there is none. */
+double adh_visco_spring_snap_out(const adh_run *curve, double k, double *base);
+
 #endif

@@ -96,8 +96,9 @@ size_t cli_time_snap_keys(const adh_run *curve, double k, double *store, cli_tab
     store[0] = k;
     store[1] = nf ? at[0] : NAN;
     store[2] = nf ? base[0] : NAN;
-    store[3] = nf >= 2 ? at[nf - 1] : NAN;
-    store[4] = nf >= 2 ? base[nf - 1] : NAN;
+    store[3] = nf >= 2 ? adh_visco_spring_snap_out(curve, k, &store[4]) : NAN;
+    if (nf < 2)
+        store[4] = NAN;
     static const char *const names[CLI_TIME_SNAP_KEYS] = { "spring", "snap_in_h0", "snap_in_base", "snap_out_h0",
                                                            "snap_out_base" };
     for (size_t i = 0; i < CLI_TIME_SNAP_KEYS; i++) {

@@ -179,6 +179,9 @@ void adh_visco_slopes(adh_visco *w);
 double adh_visco_force(const adh_visco *w, double h0);
 /* The tail's force beyond Rmax, and its slope dF_tail/dh0 */
 double adh_visco_tail(const adh_visco *w, double h0, double *slope);
+/* The (u, h0) part of a tangent d in the crossing's metric,
+ * sqrt(theta |u'|^2 + h0'^2) (h0 under a spring) */
+double adh_visco_uh_length(const adh_visco *w, const double *d);
 /* out = W x (the kernel's product) */
 void adh_visco_apply(adh_visco *w, const double *x, double *out);
 /* The preconditioners' q part (cross and flow alike): z_q = r_q / cj, and
@@ -223,7 +226,8 @@ void adh_visco_flow_jtimes(adh_visco *w, const double *y, const double *v, doubl
 int adh_visco_flow_psetup(adh_visco *w, const double *y, double cj);
 void adh_visco_flow_psolve(adh_visco *w, const double *r, double *z);
 /* The relaxation's start from the fold y nudged along the path's tangent
- * d (nudge times it); y' = -(the residual). */
+ * d (nudge times it; under a spring at least 1e-3 z0 in its (u, h0)
+ * part); y' = -(the residual). */
 int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double nudge, double *y0, double *yp0);
 /* How fast it still moves: max over u (and h0) of |y'| / atol, per unit
  * pseudo-time. */

@@ -120,8 +120,24 @@ void adh_visco_cross_start(adh_visco *w, const double *d, double *yp0)
 {
     memcpy(yp0, d, w->len * sizeof *d);
     memset(yp0 + w->IQ, 0, w->n * sizeof *yp0);
-    if (w->spring)
-        yp0[w->IT] = 0;
+    if (!w->spring)
+        return;
+    yp0[w->IT] = 0;
+    /* at a fold (t' = 0) the (u, h0) part is z0 long, the crossing's
+     * normalisation, and h0 moves the drive's way (through a spring's fold
+     * h0 goes on as it went: the fold is the base's, where dF/dh0 = k);
+     * from short of one (the integrator stopped in a soft spring's turn,
+     * its tangent nearly all time, or past the fold) it is scaled to z0
+     * and turned the drive's way */
+    double len = adh_visco_uh_length(w, d), z0 = w->m.z0;
+    double sc = len > 0 && len < 0.5 * z0 ? z0 / len : 1.0;
+    if (d[w->IH] * w->cross_dir < 0)
+        sc = -sc;
+    if (sc != 1.0) {
+        for (size_t i = 0; i < w->n; i++)
+            yp0[i] *= sc;
+        yp0[w->IH] *= sc;
+    }
 }
 
 double adh_visco_cross_base(const adh_visco *w, const double *y)

@@ -68,6 +68,14 @@ double adh_visco_force(const adh_visco *w, double h0)
     return F + adh_visco_tail(w, h0, NULL);
 }
 
+double adh_visco_uh_length(const adh_visco *w, const double *d)
+{
+    double uu = 0;
+    for (size_t i = 0; i < w->n; i++)
+        uu += d[i] * d[i];
+    return sqrt(w->theta * uu + (w->spring ? d[w->IH] * d[w->IH] : 0));
+}
+
 void adh_visco_apply(adh_visco *w, const double *x, double *out)
 {
     adh_kernel_apply(w->k, x, out, w->scratch);

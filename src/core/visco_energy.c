@@ -99,3 +99,46 @@ size_t adh_visco_spring_folds(const adh_run *curve, double k, double *at, double
     }
     return found;
 }
+
+/* The base h0 - F/k of a row. */
+static double base_of_row(const adh_obs *r, double k)
+{
+    return r->h0 - r->F / k;
+}
+
+double adh_visco_spring_snap_out(const adh_run *curve, double k, double *base)
+{
+    double h0 = NAN, b = NAN;
+    size_t n = curve->nrows;
+    /* the rows of the curve's last path, from the turn outward: i the
+     * sphere's row, the base rising as it follows them */
+    size_t first = n;
+    while (first > 0 && curve->rows[first - 1].path == curve->rows[n - 1].path)
+        first--;
+    size_t i = n >= 2 ? n - 2 : 0;
+    while (i > first && i + 1 < n) {
+        const adh_obs *r = &curve->rows[i - 1];
+        double b0 = base_of_row(&r[0], k), b1 = base_of_row(&r[1], k), b2 = base_of_row(&r[2], k);
+        if (!((b1 - b0) * (b2 - b1) < 0 && b1 > b0)) {
+            i--;
+            continue;
+        }
+        /* a fold: the sphere lands on the first row further out whose
+         * base is back at the fold's; in contact, the contact line
+         * snapped across a lattice fold (a ring) and it goes on from
+         * there; out of contact, or beyond the curve's start, it is the
+         * snap-out */
+        double bf, hf = turn_of_base(r, k, &bf);
+        size_t j = i - 1;
+        while (j > first && base_of_row(&curve->rows[j], k) < bf)
+            j--;
+        if (base_of_row(&curve->rows[j], k) < bf || !(curve->rows[j].a > 0)) {
+            h0 = hf, b = bf;
+            break;
+        }
+        i = j;
+    }
+    if (base)
+        *base = b;
+    return h0;
+}

@@ -104,9 +104,33 @@ void adh_visco_flow_psolve(adh_visco *w, const double *r, double *z)
         z[w->IH] = xi[0];
 }
 
+/* Under a spring, the push along the tangent d is at least this many z0
+ * in its (u, h0) part (the crossing's metric, theta |u'|^2 + h0'^2). At a
+ * fold (t' = 0) that part is z0 and nothing changes; where the integrator
+ * stopped short of one (path_stuck: the crossing from there is tried
+ * first, and this is its fallback) d can be nearly all time: a soft
+ * spring's path turns from the base's motion to the sphere's within
+ * k / F'' of h0 (a femtometre at 1e-3 N/m, at the force minimum), and a
+ * push along it moved the sphere by nothing, the relaxation came back
+ * and the run stopped. A floor, not a rescaling of every push: a push of
+ * a tenth of z0 in h0 throws a soft spring's sphere out of a stable
+ * contact (at frozen u its h0 runs away at F_h0 / k), so the larger
+ * pushes that test whether a root of t' was a fold stay the tangent's.
+ * Without a spring the push is the tangent's, as it was. */
+#define VISCO_PUSH_MIN 1e-3
+
+static double push_of(const adh_visco *w, const double *d, double nudge)
+{
+    if (!w->spring)
+        return nudge;
+    double len = adh_visco_uh_length(w, d);
+    return len > 0 ? fmax(nudge, VISCO_PUSH_MIN * w->m.z0 / len) : nudge;
+}
+
 int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double nudge, double *y0, double *yp0)
 {
     memcpy(y0, y, w->len * sizeof *y);
+    nudge = push_of(w, d, nudge);
     for (size_t i = 0; i < w->n; i++)
         y0[i] += nudge * d[i];
     if (w->spring)

@@ -46,10 +46,15 @@ int adh_visco_drive_validate(const adh_visco_drive *d, char *why, size_t whylen)
      * hysteresis quadrature alone took minutes and ignored signals; stiffer
      * than 10 kN/m the spring holds like the base itself and physical time's
      * continuation could not step it (measured on the visco scene: 1e-4 and
-     * 1e5 N/m stopped, 1e-3 to 1e4 ran). Infinity is displacement control. */
+     * 1e5 N/m stopped, 1e-3 to 1e4 ran). In physical time, too, softer
+     * holds the sphere's position h0 = base + F/k only to the force's
+     * tolerance over k: at 3e-4 and 1e-4 N/m four of six runs of the visco
+     * sphere stopped, while 1e-3 to 1e-2 N/m ran at 1e-6 to 1 m/s.
+     * Infinity is displacement control. */
     if (!(isinf(d->spring) && d->spring > 0) && !(d->spring >= ADH_SPRING_MIN && d->spring <= ADH_SPRING_MAX))
         BAD("spring k = %g N/m is not allowed: it must be from %g to %g N/m, or none (displacement control, "
-            "what a stiffer spring approaches)", d->spring, ADH_SPRING_MIN, ADH_SPRING_MAX);
+            "what a stiffer spring approaches); a softer one would hold the sphere's position only to the "
+            "force's tolerance over k", d->spring, ADH_SPRING_MIN, ADH_SPRING_MAX);
     return ADH_SUCCESS;
 }
 
