@@ -428,7 +428,20 @@ static int force_models(plotter *pl, force_fig *ff, datafile *df)
     return 0;
 }
 
-/* force.dat: every curve of the figure. */
+static double force_active_right(const plotter *pl, const force_fig *ff, double span, double xmax);
+
+/* The force axis before its margins: the curves and the deepest model
+ * pull-off (the rigid spheres' alone: their own). */
+static void force_span(const plotter *pl, const force_fig *ff, double *lo, double *hi)
+{
+    *lo = fmin(ff->flo, pl->s->rigid ? ff->flo : pl->d.F_dmt);
+    *hi = fmax(ff->fhi, 0.0);
+}
+
+/* force.dat: every curve of the figure. The position axis's margin is a
+ * fiftieth of the rows' span, or of the part where the force acts when
+ * that is under a tenth of it: a soft spring's snap-out lands where the
+ * base is, a millimetre out, and its margin alone hid the contact. */
 static int force_data(plotter *pl, force_fig *ff)
 {
     FILE *f = data_file(pl, "force.dat", ff->dat, sizeof ff->dat);
@@ -439,6 +452,11 @@ static int force_data(plotter *pl, force_fig *ff)
     ff->fhi = ff->xmax = -INFINITY;
     force_curves(pl, ff, &df);
     ff->xpad = 0.02 * (ff->xmax - ff->xmin);
+    double lo, hi;
+    force_span(pl, ff, &lo, &hi);
+    double right = force_active_right(pl, ff, hi - lo, ff->xmax + ff->xpad);
+    if (right - ff->xmin < 0.1 * (ff->xmax - ff->xmin))
+        ff->xpad = 0.02 * (right - ff->xmin);
     if (force_models(pl, ff, &df) != 0) {
         fclose(f);
         return -1;
@@ -482,6 +500,19 @@ static double rows_active(const adh_run *run, double span, double active)
     return active;
 }
 
+/* The position axis's right end: past the last h0 where the run's or the
+ * reference's force reaches 1 % of span, or a measured point, by a
+ * margin, and never past xmax. */
+static double force_active_right(const plotter *pl, const force_fig *ff, double span, double xmax)
+{
+    /* the measured points are data too: the frame keeps them whole */
+    double active = rows_active(ff->ref, span, rows_active(pl->run, span, ff->xmin));
+    for (const adh_measured *m = pl->s->measured; m; m = m->next)
+        for (size_t i = 0; i < m->n; i++)
+            active = fmax(active, m->h0[i]);
+    return adh_plot_active_right(active, ff->xmin, xmax);
+}
+
 /* The force axis: its unit and a range round the computed curves and the
  * deepest model pull-off (the key sits below the frame: no room is kept
  * for it); the position axis to where the curves have flattened. The rigid
@@ -495,18 +526,14 @@ static void force_frame(plotter *pl, force_fig *ff)
     ff->nunload = 0;
     for (int p = 1; p <= ff->np; p++)
         ff->nunload += ff->set[2 * p] >= 0 || ff->set[2 * p + 1] >= 0;
-    double lo = fmin(ff->flo, pl->s->rigid ? ff->flo : d->F_dmt), hi = fmax(ff->fhi, 0.0);
+    double lo, hi;
+    force_span(pl, ff, &lo, &hi);
     double span = hi - lo;
     lo -= 0.04 * span;
     hi += 0.04 * span;
     ff->lo = lo;
     ff->hi = hi;
-    /* the measured points are data too: the frame keeps them whole */
-    double active = rows_active(ff->ref, span, rows_active(pl->run, span, ff->xmin));
-    for (const adh_measured *m = pl->s->measured; m; m = m->next)
-        for (size_t i = 0; i < m->n; i++)
-            active = fmax(active, m->h0[i]);
-    ff->xright = adh_plot_active_right(active, ff->xmin, ff->xmax + ff->xpad);
+    ff->xright = force_active_right(pl, ff, span, ff->xmax + ff->xpad);
     /* the key below, in up to three columns: the tics, the label and its rows */
     int nmodel = ff->models ? (ff->jkr.load >= 0 || ff->jkr.disp >= 0) + (ff->md.load >= 0 || ff->md.disp >= 0) +
                               (ff->dmt.load >= 0 || ff->dmt.disp >= 0) + ff->any_disp
@@ -770,8 +797,8 @@ static int plot_force(plotter *pl)
     force_frame(pl, &ff);
     char heading[HEADING_SIZE];
     char what[64];
-    snprintf(what, sizeof what, pl->s->timed ? "Force vs position at %.3g µm/s" : "Force vs position",
-             pl->s->drive_speed * 1e6);
+    snprintf(what, sizeof what, pl->s->timed ? "Force vs position at %s" : "Force vs position",
+             adh_qtext(pl->s->drive_speed, ADH_Q_SPEED).s);
     title_string(pl, what, heading, sizeof heading);
 
     begin_figure(pl, "force", "force.png");
@@ -1232,8 +1259,8 @@ static int plot_contact(plotter *pl)
         vmax = fmax(fabs(vlo), fabs(vhi));
     int in_mm = vmax >= 2e-3;
     char heading[HEADING_SIZE], what[96];
-    snprintf(what, sizeof what, pl->s->timed ? "Contact line in time, base at %.3g µm/s"
-             : "Contact line at drive speed %.3g µm/s", pl->s->drive_speed * 1e6);
+    snprintf(what, sizeof what, pl->s->timed ? "Contact line in time, base at %s" : "Contact line at drive speed %s",
+             adh_qtext(pl->s->drive_speed, ADH_Q_SPEED).s);
     title_string(pl, what, heading, sizeof heading);
     /* a two-line heading (scene title) needs more room above the panels */
     double top = has_title(pl) ? 0.90 : 0.94;

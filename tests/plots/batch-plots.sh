@@ -388,6 +388,22 @@ for t in force.tsv summary.tsv profiles.tsv contact.tsv; do
 done
 check '! ls "$D" | grep -q "png"' "no PNG, not even a partial one"
 
+# --- a soft spring in physical time: its snap-out lands a millimetre out -
+# (F / k: 1.7 uN / 1e-3 N/m); the position axis is the contact's, not the
+# flight's (its margin alone was 35 um and hid the curve), and the heading
+# says the speed in its own unit (it said 1e+06 um/s)
+D=$T/soft
+GPLOG=$T/soft.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" --batch --quiet --nodes=400 --force --material=sls \
+    --spring=1e-3N/m --speed=1m/s -o "$D" 2>"$T/soft.err"
+rc=$?
+sed -n '/Force vs position/,/^unset multiplot/p' "$T/soft.gp" >"$T/softforce.gp"
+xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' "$T/softforce.gp" | head -1)
+far=$(awk -F'\t' '!/^#/ && $1 != "t" && $3 > m {m = $3} END {print m * 1e9}' "$D/force.tsv")
+check 'echo "$xr $far" | awk "{exit !(NF == 3 && \$1 < -5 && \$1 > -7 && \$2 > 7 && \$2 < 100 && \$3 > 1e5)}"' \
+    "a soft spring's force.png spans the contact (-5 nm turn, 7.2 nm jump-out), not its landing at $far nm ($rc; x range $xr)"
+check 'grep -q "Force vs position at 1 m/s" "$T/softforce.gp" && grep -q "Contact line in time, base at 1 m/s" "$T/soft.gp"' \
+    "its headings say 1 m/s"
+
 # --- a gnuplot that dies, shouting on stderr -----------------------------
 printf '#!/bin/sh\necho "fatal: out of ink" >&2\nexit 7\n' >"$T/dying-gnuplot"
 chmod +x "$T/dying-gnuplot"
