@@ -280,6 +280,9 @@ void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, cons
     v[CLI_ROW_CONVERGED] = r->unconverged == 0 && status == ADH_SUCCESS && !r->interrupted ? 1 : 0;
     const char *word = status != ADH_SUCCESS && !r->interrupted ? adh_strerror(status) : cli_tables_verdict(rc, r);
     snprintf(row->status, sizeof row->status, "%s", word);
+    row->reason[0] = '\0';
+    if (status != ADH_SUCCESS && !r->interrupted && r->status == status)
+        cli_tables_stop_reason(r, row->reason, sizeof row->reason);
     int partial = r->interrupted || status != ADH_SUCCESS;
     v[CLI_ROW_COMPLETE] = !partial && strcmp(word, "no contact") && strcmp(word, "not separated") ? 1 : 0;
     if (rc->mode == ADH_MODE_TIME && tout)
@@ -368,7 +371,7 @@ void cli_studyrow_write(FILE *f, const adh_config *cfg, const cli_studyrow *row)
         axis_text(&cfg->sweep.axis[k], idx[k], t, sizeof t);
         fprintf(f, "\t%s", t);
     }
-    fprintf(f, "\t%s\n", row->status);
+    fprintf(f, "\t%s%s%s\n", row->status, *row->reason ? ": " : "", row->reason);
 }
 
 int cli_studyrow_is_header(const adh_config *cfg, const char *line)
@@ -444,8 +447,18 @@ int cli_studyrow_parse(const adh_config *cfg, const char *line, cli_studyrow *ro
         if (field(&p, f, sizeof f) || strcmp(f, t))
             return -1;
     }
-    if (field(&p, row->status, sizeof row->status) || p || !row->status[0])
+    /* "status: reason" for a run that stopped on an error (no status word has ": ") */
+    char text[sizeof row->status + 2 + sizeof row->reason];
+    if (field(&p, text, sizeof text) || p || !text[0])
         return -1;
+    char *colon = strstr(text, ": ");
+    if (colon) {
+        *colon = '\0';
+        snprintf(row->reason, sizeof row->reason, "%s", colon + 2);
+    }
+    if (strlen(text) >= sizeof row->status)
+        return -1;
+    strcpy(row->status, text);
     row->done = 1;
     return 0;
 }

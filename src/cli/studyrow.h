@@ -39,7 +39,10 @@ typedef struct cli_studyrow {
     int done;                      /* 1: filled (by a run or from a table) */
     double v[CLI_ROW_NUMBERS];
     char kernel[8], op[8], mode[8], grid[12];
-    char status[40];               /* summary.tsv's word: success, unresolved, interrupted, ... */
+    char status[64];               /* summary.tsv's word: success, unresolved, interrupted, ... */
+    char reason[600];              /* summary.tsv's stop_reason: what stopped a run that ended on an
+                                      error, with what may get past it; "" otherwise. The status
+                                      column says "status: reason" */
 } cli_studyrow;
 
 /* Row i of cfg's study from its run r of specification rc (status: the

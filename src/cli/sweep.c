@@ -148,6 +148,8 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
         fprintf(stderr, "adhere: run %zu of %zu (%s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
                 i + 1, job->st->nruns, which, run->interrupted ? "interrupted" : row.status, run->nrows,
                 run->iterations, run->seconds, job->done, job->total, pr);
+        if (!run->interrupted && row.reason[0])
+            fprintf(stderr, "adhere: run %zu stopped: %s\n", i + 1, row.reason);
     }
     /* not hidden by -q: it changes what the run's numbers mean */
     if (run->unconverged)
