@@ -210,7 +210,9 @@ static void batch_step(batch_job *j)
             fprintf(stderr, "adhere: warning: the static reference curve is not resolved: %s (summary.tsv: "
                     "static_resolved 0)\n", rwhy);
         if (rrc != ADH_SUCCESS && !j->ref.interrupted) {
-            fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(j->ref.status));
+            char reason[600];
+            fprintf(stderr, "adhere: the static reference curve failed: %s%s%s\n", adh_strerror(j->ref.status),
+                    *cli_tables_stop_reason(&j->ref, reason, sizeof reason) ? ": " : "", reason);
             j->want_ref = 0;
         }
     }
