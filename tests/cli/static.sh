@@ -140,4 +140,9 @@ cp "$TMP/stops/sweep.tsv" "$TMP/stops.before"
 rc=$?
 check "... a rerun reads those rows back: the same sweep.tsv, exit 1 ($rc: $(head -c 300 "$TMP/err"))" \
     sh -c "[ $rc -eq 1 ] && cmp -s '$TMP/stops.before' '$TMP/stops/sweep.tsv'"
+"$ADHERE" merge -q "$TMP/stops" -o "$TMP/stops-merged" 2>"$TMP/err"
+rc=$?
+check "... adhere merge keeps the reasons: the same rows ($rc: $(head -c 300 "$TMP/err"))" \
+    sh -c "[ $rc -le 1 ] && grep -v '^#' '$TMP/stops.before' >'$TMP/m1' && grep -v '^#' '$TMP/stops-merged/sweep.tsv' >'$TMP/m2' &&
+           cmp -s '$TMP/m1' '$TMP/m2'"
 done_testing
