@@ -93,7 +93,7 @@ static const adh_state *visco_state(const void *vr)
 static const char *visco_why(const void *vr, unsigned *fix)
 {
     const visco_rule *r = vr;
-    *fix = r->first != ADH_CONTINUE && r->first == ADH_ESTALL ? ADH_FIX_START : 0;
+    *fix = r->first == ADH_ESTALL ? ADH_FIX_START : 0;   /* the start was no stable point out of contact */
     return r->first != ADH_CONTINUE && r->why[0] ? r->why : adh_visco_why(r->w);
 }
 
