@@ -137,6 +137,9 @@ const adh_state *adh_relax_state(const adh_relax *w);
 void adh_relax_restore(adh_relax *w, const adh_state *s);
 
 size_t adh_relax_step_iterations(const adh_relax *w);   /* since the last move */
+/* Why the last iteration failed (ADH_ENAN: where, after how many
+ * iterations, and what was not finite or closed); "" when none has. */
+const char *adh_relax_why(const adh_relax *w);
 double adh_relax_change(const adh_relax *w);            /* last convergence measure, m */
 double adh_relax_mixing(const adh_relax *w);            /* current mixing ratio */
 double adh_relax_momentum(const adh_relax *w);          /* momentum rule: the beta in use */

@@ -96,6 +96,11 @@ typedef struct adh_rule_type {
     /* The work done on the step under way (or the last) and its latest
      * change, for a driver's progress line; NULL when it has no measure. */
     size_t (*progress)(const void *r, double *change);
+    /* After a step or point that ended the run on an error: the rule's
+     * sentence saying what failed and where ("" or NULL when it has none;
+     * the drive then says where), and in *fix the ADH_FIX_* bits of what
+     * may get past it (adhere/status.h). NULL (the function): no words. */
+    const char *(*why)(const void *r, unsigned *fix);
 
     /* Snapshots of the rule's dynamic state: at every turn a stepped rule
      * unloads from, and in a drive's undo history (adh_drive_snap). The

@@ -38,6 +38,12 @@ typedef struct adh_run {
     double seconds;         /* total wall time of the solves */
     size_t unconverged;     /* steps that hit the iteration cap */
     int status;             /* ADH_SUCCESS or the error that stopped the run */
+    char why[400];          /* when it stopped on an error: the step rule's (or the
+                               drive's) sentence, what failed and where (h0, t, the
+                               step size...); "" otherwise. Names quantities, never a
+                               flag: a driver adds its words for fix */
+    unsigned fix;           /* ADH_FIX_* bits (adhere/status.h) of what may get past
+                               the stop; 0: nothing known to */
     int interrupted;        /* 1 when a callback or the cancel flag asked to stop */
 } adh_run;
 

@@ -196,6 +196,11 @@ int adh_static_iterate(adh_static *w);
 /* The current point (borrowed; u, h, p, h0) and its continuation data. */
 const adh_state *adh_static_state(const adh_static *w);
 adh_static_point adh_static_current(const adh_static *w);
+/* Why the curve stopped on an error (adh_static_set or _iterate): what
+ * failed and where, in quantities; in *fix (may be NULL) the ADH_FIX_*
+ * bits of what may get past it. "" otherwise (the grid's edge is the
+ * caller's to word: adh_rings_edge_sentence). */
+const char *adh_static_why(const adh_static *w, unsigned *fix);
 /* The summary so far (folds, jumps, pull-off, counts). */
 void adh_static_summary(const adh_static *w, adh_static_result *res);
 /* The folds found so far: their number, and a borrowed array. */

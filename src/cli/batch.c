@@ -144,7 +144,7 @@ typedef struct batch_job {
     cli_time_out tout;
     int rc, want_ref, ref_resolved;
     int status;               /* the exit status so far */
-    char note[512];           /* why the tables are partial; "" when they are not */
+    char note[1024];          /* why the tables are partial; "" when they are not */
 } batch_job;
 
 /* The grid and kernel (rigid spheres need eq 22 alone: neither): 0, or
@@ -210,7 +210,9 @@ static void batch_step(batch_job *j)
             fprintf(stderr, "adhere: warning: the static reference curve is not resolved: %s (summary.tsv: "
                     "static_resolved 0)\n", rwhy);
         if (rrc != ADH_SUCCESS && !j->ref.interrupted) {
-            fprintf(stderr, "adhere: the static reference curve failed: %s\n", adh_strerror(j->ref.status));
+            char reason[600];
+            fprintf(stderr, "adhere: the static reference curve failed: %s%s%s\n", adh_strerror(j->ref.status),
+                    *cli_tables_stop_reason(&j->ref, reason, sizeof reason) ? ": " : "", reason);
             j->want_ref = 0;
         }
     }
@@ -240,7 +242,10 @@ static void batch_judge(batch_job *j)
                  adh_qtext(run->rows[run->nrows - 1].h0, ADH_Q_LENGTH).s, edge);
         j->status = CLI_EXIT_SOLVER;
     } else if (j->rc != ADH_SUCCESS) {
-        snprintf(j->note, sizeof j->note, "the solver stopped after %zu steps: %s", run->nrows, adh_strerror(j->rc));
+        char reason[600];
+        cli_tables_stop_reason(run, reason, sizeof reason);
+        snprintf(j->note, sizeof j->note, "the solver stopped after %zu steps: %s%s%s", run->nrows,
+                 adh_strerror(j->rc), *reason ? ": " : "", reason);
         j->status = CLI_EXIT_SOLVER;
     }
     if (j->note[0])

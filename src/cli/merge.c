@@ -33,6 +33,7 @@ typedef struct merge {
     shard *sh;
     size_t n;
     cli_studyrow *rows;            /* the study's rows, those found done */
+    size_t nrows;                  /* how many rows has room for */
     int *from;                     /* the shard each run's row came from, -1 none */
     adh_outdir *out;
     struct stat out_st;            /* -o DIR, when it is there */
@@ -198,6 +199,7 @@ static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
     }
     for (size_t k = 0; k < m->n; k++) {
         size_t cut;
+        cli_studyrow_clear_all(scratch, st->nruns);   /* the rows the last shard's left */
         memset(scratch, 0, st->nruns * sizeof *scratch);
         if (cli_study_read_rows(&m->sh[k].st, m->sh[k].fd, m->sh[k].path, scratch, &cut, why, whylen) < 0) {
             free(dup), free(twice);
@@ -213,6 +215,7 @@ static int gather(merge *m, cli_studyrow *scratch, char *why, size_t whylen)
                 continue;
             }
             m->rows[i] = scratch[i];
+            scratch[i].reason = NULL;   /* m->rows[i] owns it now */
             m->from[i] = (int)k;
         }
     }
@@ -521,6 +524,7 @@ static void merge_free(merge *m)
         if (m->sh[k].fd >= 0)
             close(m->sh[k].fd);
     }
+    cli_studyrow_clear_all(m->rows, m->nrows);
     free(m->sh), free(m->rows), free(m->from);
     adh_outdir_close(m->out);
 }
@@ -556,14 +560,16 @@ static int merge_run(cli_options *cli)
     size_t nruns = rc == 0 ? m.sh[0].st.nruns : 0;
     cli_studyrow *scratch = NULL;
     if (rc == 0 && (!(m.rows = calloc(nruns, sizeof *m.rows)) || !(m.from = malloc(nruns * sizeof *m.from)) ||
-                    !(scratch = malloc(nruns * sizeof *scratch)))) {
+                    !(scratch = calloc(nruns, sizeof *scratch)))) {
         snprintf(why, sizeof why, "out of memory for %zu runs", nruns);
         rc = CLI_EXIT_SOLVER;
     }
     for (size_t i = 0; rc == 0 && i < nruns; i++)
         m.from[i] = -1;
+    m.nrows = m.rows ? nruns : 0;
     if (rc == 0)
         rc = gather(&m, scratch, why, sizeof why);
+    cli_studyrow_clear_all(scratch, scratch ? nruns : 0);
     free(scratch);
     if (rc == 0)
         rc = missing(&m, partial, sizeof partial, why, sizeof why);

@@ -377,6 +377,7 @@ long cli_study_read_rows(const cli_study *st, int dirfd, const char *path, cli_s
             ++*partial_lines;
             continue;
         }
+        cli_studyrow_clear(&rows[row.run]);   /* a later line for the same run replaces it */
         rows[row.run] = row;
         n++;
     }

@@ -280,6 +280,11 @@ void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, cons
     v[CLI_ROW_CONVERGED] = r->unconverged == 0 && status == ADH_SUCCESS && !r->interrupted ? 1 : 0;
     const char *word = status != ADH_SUCCESS && !r->interrupted ? adh_strerror(status) : cli_tables_verdict(rc, r);
     snprintf(row->status, sizeof row->status, "%s", word);
+    row->reason = NULL;
+    char reason[600];
+    if (status != ADH_SUCCESS && !r->interrupted && r->status == status &&
+        *cli_tables_stop_reason(r, reason, sizeof reason))
+        row->reason = strdup(reason);   /* NULL when out of memory: the status word alone */
     int partial = r->interrupted || status != ADH_SUCCESS;
     v[CLI_ROW_COMPLETE] = !partial && strcmp(word, "no contact") && strcmp(word, "not separated") ? 1 : 0;
     if (rc->mode == ADH_MODE_TIME && tout)
@@ -298,6 +303,18 @@ void cli_studyrow_empty(cli_studyrow *row, const adh_config *cfg, size_t i, cons
     cli_studyrow_fill(row, i, &rc, &none, rc.mode == ADH_MODE_STATIC ? &sres : NULL, NULL, ADH_SUCCESS);
     snprintf(row->status, sizeof row->status, "%s", status);
     row->v[CLI_ROW_COMPLETE] = 0;
+}
+
+void cli_studyrow_clear(cli_studyrow *row)
+{
+    free(row->reason);
+    row->reason = NULL;
+}
+
+void cli_studyrow_clear_all(cli_studyrow *rows, size_t n)
+{
+    for (size_t i = 0; rows && i < n; i++)
+        cli_studyrow_clear(&rows[i]);
 }
 
 int cli_studyrow_complete(const cli_studyrow *row)
@@ -368,7 +385,7 @@ void cli_studyrow_write(FILE *f, const adh_config *cfg, const cli_studyrow *row)
         axis_text(&cfg->sweep.axis[k], idx[k], t, sizeof t);
         fprintf(f, "\t%s", t);
     }
-    fprintf(f, "\t%s\n", row->status);
+    fprintf(f, "\t%s%s%s\n", row->status, row->reason ? ": " : "", row->reason ? row->reason : "");
 }
 
 int cli_studyrow_is_header(const adh_config *cfg, const char *line)
@@ -444,8 +461,16 @@ int cli_studyrow_parse(const adh_config *cfg, const char *line, cli_studyrow *ro
         if (field(&p, f, sizeof f) || strcmp(f, t))
             return -1;
     }
-    if (field(&p, row->status, sizeof row->status) || p || !row->status[0])
+    /* "status: reason" for a run that stopped on an error (no status word has ": ") */
+    char text[sizeof row->status + 600];
+    if (field(&p, text, sizeof text) || p || !text[0])
         return -1;
+    char *colon = strstr(text, ": ");
+    if (colon)
+        *colon = '\0';
+    if (strlen(text) >= sizeof row->status || (colon && !(row->reason = strdup(colon + 2))))
+        return -1;
+    strcpy(row->status, text);
     row->done = 1;
     return 0;
 }

@@ -39,8 +39,19 @@ typedef struct cli_studyrow {
     int done;                      /* 1: filled (by a run or from a table) */
     double v[CLI_ROW_NUMBERS];
     char kernel[8], op[8], mode[8], grid[12];
-    char status[40];               /* summary.tsv's word: success, unresolved, interrupted, ... */
+    char status[64];               /* summary.tsv's word: success, unresolved, interrupted, ... */
+    char *reason;                  /* summary.tsv's stop_reason: what stopped a run that ended on an
+                                      error, with what may get past it; NULL otherwise (a study of
+                                      100000 rows holds no room for the runs that finished). The
+                                      status column says "status: reason". Owned by the row: fill
+                                      and parse set it without freeing what was there (give them a
+                                      new or cleared row); cli_studyrow_clear frees it */
 } cli_studyrow;
+
+/* Frees what row owns (its reason) and sets it NULL; the rest is kept. */
+void cli_studyrow_clear(cli_studyrow *row);
+/* The same for n rows. */
+void cli_studyrow_clear_all(cli_studyrow *rows, size_t n);
 
 /* Row i of cfg's study from its run r of specification rc (status: the
  * run's adh status; sres: a static curve's summary, or NULL; tout: a run

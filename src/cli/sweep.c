@@ -137,6 +137,7 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
     char which[256], pr[64];
     adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
     pthread_mutex_lock(&job->lock);
+    cli_studyrow_clear(&job->rows[i]);
     job->rows[i] = row;
     job->whole[i] = !run->interrupted && out != CLI_EXIT_USAGE;
     if (!run->interrupted && job->od)
@@ -148,6 +149,8 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
         fprintf(stderr, "adhere: run %zu of %zu (%s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
                 i + 1, job->st->nruns, which, run->interrupted ? "interrupted" : row.status, run->nrows,
                 run->iterations, run->seconds, job->done, job->total, pr);
+        if (!run->interrupted && row.reason)
+            fprintf(stderr, "adhere: run %zu stopped: %s\n", i + 1, row.reason);
     }
     /* not hidden by -q: it changes what the run's numbers mean */
     if (run->unconverged)
@@ -554,8 +557,10 @@ double cli_sweep_static_hysteresis(const adh_config *cfg, cli_kcache *kc, int *r
                     "resolve: %s\n", why);
     }
     double h = st == ADH_SUCCESS && !ref.interrupted ? cli_tables_static_hysteresis(&ref, &rs.mat) : NAN;
+    char reason[600];
     if (st != ADH_SUCCESS && st != ADH_EINTR && !ref.interrupted)
-        fprintf(stderr, "adhere: the static curve for Figure 7's equilibrium line failed: %s\n", adh_strerror(st));
+        fprintf(stderr, "adhere: the static curve for Figure 7's equilibrium line failed: %s%s%s\n", adh_strerror(st),
+                *cli_tables_stop_reason(&ref, reason, sizeof reason) ? ": " : "", reason);
     adh_run_free(&ref);
     return h;
 }
@@ -791,6 +796,7 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
         fprintf(stderr, "adhere: %s\n", why);
         if (job.rows_fd >= 0)
             adh_outdir_log_close(od, "runs.tsv", job.rows_fd);
+        cli_studyrow_clear_all(job.rows, st.nruns);
         free(job.rows), free(job.whole), free(job.todo);
         return rc;
     }
@@ -800,6 +806,7 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
         cli_interrupt_release();
         adh_outdir_log_close(od, "runs.tsv", job.rows_fd);
         cli_kcache_free(job.kc);
+        cli_studyrow_clear_all(job.rows, st.nruns);
         free(job.rows), free(job.whole), free(job.todo);
         return rc;
     }
@@ -819,6 +826,7 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
     pthread_mutex_destroy(&job.lock);
     pthread_mutex_destroy(&job.dirs);
     cli_kcache_free(job.kc);
+    cli_studyrow_clear_all(job.rows, st.nruns);
     free(job.rows), free(job.whole), free(job.todo);
     return job.exit_status;
 }

@@ -13,6 +13,7 @@
 #include "adhere/grid.h"
 #include "adhere/models.h"
 #include "adhere/status.h"
+#include "cli/advice.h"
 
 #define VERSION_LINE "# adhere " ADH_VERSION "\n"
 
@@ -114,6 +115,19 @@ const char *cli_tables_summary_word(const cli_tables *t)
     return !strcmp(word, "success") && t->unwritten && *t->unwritten ? "output incomplete" : word;
 }
 
+const char *cli_tables_stop_reason(const adh_run *r, char *buf, size_t len)
+{
+    buf[0] = '\0';
+    if (r->interrupted || r->status == ADH_SUCCESS || !r->why[0])
+        return buf;
+    snprintf(buf, len, "%s", r->why);
+    for (char *p = buf; *p; p++)
+        if ((unsigned char)*p < 0x20 || *p == 0x7f)
+            *p = ' ';
+    cli_advice_append(buf, len, r->fix);
+    return buf;
+}
+
 static void kv(FILE *f, const char *k, double v)
 {
     fprintf(f, "%s\t%.17g\n", k, v);
@@ -205,6 +219,10 @@ int cli_tables_summary(FILE *f, const void *ctx)
     /* success only for a finished, converged run on a resolved grid that
      * touched and separated, every file of which was written */
     fprintf(f, "status\t%s\n", cli_tables_summary_word(t));
+    /* what stopped a run that ended on an error, and what may get past it */
+    char reason[600];
+    if (*cli_tables_stop_reason(r, reason, sizeof reason))
+        fprintf(f, "stop_reason\t%s\n", reason);
     return 0;
 }
 

@@ -42,6 +42,11 @@ const char *cli_tables_verdict(const adh_run_spec *c, const adh_run *r);
  * verdict, and "output incomplete" for a success some file of which was
  * not written. */
 const char *cli_tables_summary_word(const cli_tables *t);
+/* Why run r stopped on an error, as summary.tsv's stop_reason and the
+ * stderr line say it: the core's sentence (control bytes as spaces) and
+ * the flags of its ADH_FIX_* bits; "" for a run that finished or was
+ * interrupted. Written to buf, which is returned. */
+const char *cli_tables_stop_reason(const adh_run *r, char *buf, size_t len);
 /* Appends name (or a comma-separated list) to the comma-separated list in
  * buf; what does not fit is left off whole names at a time. */
 void cli_tables_names_add(char *buf, size_t len, const char *name);

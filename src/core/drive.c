@@ -239,8 +239,36 @@ static int wants_profile(const adh_protocol_settings *ps, double h0)
  * or load a turn's snapshot, or dwell there), iterate (in batches), finish
  * (observe, record the row, note jump-in, turns, pull-off and jump-out). */
 
+/* The run's words for a stop on an error: the contact at the grid's edge
+ * (the rings' sentence), else the rule's own, else where the drive was. */
+static void say_why(adh_drive *d, int status)
+{
+    adh_run *run = d->run;
+    const adh_obs *last = d->c.row >= 0 ? &run->rows[d->c.row] : NULL;
+    unsigned fix = 0;
+    const char *rule = d->type->why ? d->type->why(d->r, &fix) : NULL;
+    run->fix = 0;
+    if (status == ADH_EGRID && last && d->g) {
+        adh_rings_edge_sentence(d->g, last->a, run->why, sizeof run->why);
+        run->fix = adh_rings_edge_fix(d->g, last->a);
+    } else if (rule && *rule) {
+        snprintf(run->why, sizeof run->why, "%s", rule);
+        run->fix = fix;
+    } else {
+        /* a stepped rule's step had a target; a curve rule's point follows its last */
+        double h0 = d->type->next ? (last ? last->h0 : d->start) : d->c.h0;
+        snprintf(run->why, sizeof run->why, "%s at %s h0 = %s, after %zu rows",
+                 status == ADH_ENAN ? "the force, deformation or contact radius became non-finite"
+                                    : adh_strerror(status),
+                 d->type->next && last ? "the point after" : "the step to", adh_qtext(h0, ADH_Q_LENGTH).s,
+                 run->nrows);
+    }
+}
+
 static int finish(adh_drive *d, int status)
 {
+    if (status != ADH_SUCCESS && status != ADH_EINTR)
+        say_why(d, status);
     d->c.ph = PH_DONE;
     d->c.status = status;
     d->c.inflight = 0;

@@ -64,6 +64,7 @@ struct adh_relax {
     double dscale;     /* |d| of the last move that changed h0: the scale of
                           the central test where u(0) passes through 0 */
     size_t iters;
+    char why[240];     /* why the last iteration failed ("" when none did) */
 };
 
 adh_relax_settings adh_relax_settings_default(void)
@@ -338,6 +339,7 @@ int adh_relax_set(adh_relax *w, const adh_material *m, const adh_relax_settings 
         w->st->far[k] = 0.0;
     w->prev_central = 0;
     w->change = 0;
+    w->why[0] = '\0';
     w->iters = 0;
     /* all that a previous run left: a workspace set again is a fresh one,
      * so a reused solver (the drive, the TUI) gives a fresh run's rows */
@@ -531,8 +533,11 @@ static int relax_once(adh_relax *w)
     change_sums(w->unew, st->u, w->ring_w, n, scale, &ssq, &wssq);
     if (w->nfar)
         wssq += far_change(w, scale);
-    if (!isfinite(ssq))
+    if (!isfinite(ssq)) {
+        snprintf(w->why, sizeof w->why, "the relaxation at h0 = %s became non-finite after %zu iterations of its step",
+                 adh_qtext(st->h0, ADH_Q_LENGTH).s, w->iters);
         return ADH_ENAN;
+    }
     /* eps as the paper writes it on the paper's grid, [sum (u_new -
      * u_old)^2]^(1/2) / N with u_new the eq 11 deformation before it is
      * mixed in; on any other grid the same norm of the change over the
@@ -582,6 +587,9 @@ static int relax_once(adh_relax *w)
         }
         if (alpha <= w->s.mix_min) {
             st->mix = alpha;
+            snprintf(w->why, sizeof w->why, "the relaxation at h0 = %s closed the gap (h <= 0) even at its smallest "
+                     "mixing ratio, %g, after %zu iterations of its step", adh_qtext(st->h0, ADH_Q_LENGTH).s,
+                     w->s.mix_min, w->iters);
             return ADH_ENAN;
         }
         alpha = fmax(w->s.mix_min, alpha * 0.5);
@@ -610,6 +618,11 @@ int adh_relax_iterate(adh_relax *w, size_t max_batch)
         w->iters++;
     }
     return ADH_CONTINUE;
+}
+
+const char *adh_relax_why(const adh_relax *w)
+{
+    return w->why;
 }
 
 int adh_relax_dwell(adh_relax *w, size_t n)

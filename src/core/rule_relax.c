@@ -108,6 +108,13 @@ static const adh_state *relax_snap_state(const void *snap)
     return snap;
 }
 
+static const char *relax_why(const void *vr, unsigned *fix)
+{
+    const relax_rule *r = vr;
+    *fix = 0;
+    return adh_relax_why(r->w);
+}
+
 const adh_rule_type adh_rule_relax = {
     .name = "relax",
     .alloc = relax_alloc,
@@ -117,6 +124,7 @@ const adh_rule_type adh_rule_relax = {
     .iterate = relax_iterate,
     .observe = relax_observe,
     .state = relax_state,
+    .why = relax_why,
     .progress = relax_progress,
     .snap_alloc = relax_snap_alloc,
     .snap_free = relax_snap_free,

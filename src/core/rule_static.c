@@ -95,6 +95,12 @@ static const adh_state *static_state(const void *vr)
     return adh_static_state(r->sw);
 }
 
+static const char *static_why(const void *vr, unsigned *fix)
+{
+    const static_rule *r = vr;
+    return adh_static_why(r->sw, fix);
+}
+
 const adh_rule_type adh_rule_static = {
     .name = "static",
     .alloc = static_alloc,
@@ -104,6 +110,7 @@ const adh_rule_type adh_rule_static = {
     .jump_in = static_jump_in,
     .observe = static_observe,
     .state = static_state,
+    .why = static_why,
 };
 
 const adh_static *adh_rule_static_solver(const adh_drive *d)

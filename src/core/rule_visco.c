@@ -14,6 +14,7 @@ typedef struct visco_rule {
     adh_run run;       /* the solver's record */
     int first;         /* the status the first step reports */
     int started;
+    char why[320];     /* why the start failed (adh_visco_set) */
 } visco_rule;
 
 static void *visco_alloc(const adh_grid *g, const adh_kernel *k)
@@ -50,7 +51,8 @@ static int visco_set(void *vr, const adh_material *m, const void *settings, cons
     adh_run_free(&r->run);
     adh_run_init(&r->run);
     r->started = 0;
-    int rc = adh_visco_set(r->w, m, &vs.sls, &vs.drive, &vs.s, &p, &r->run, NULL, 0);
+    r->why[0] = '\0';
+    int rc = adh_visco_set(r->w, m, &vs.sls, &vs.drive, &vs.s, &p, &r->run, r->why, sizeof r->why);
     r->first = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;
     return rc == ADH_EINVAL ? ADH_EINVAL : ADH_SUCCESS;
 }
@@ -87,6 +89,14 @@ static const adh_state *visco_state(const void *vr)
     return adh_visco_state(r->w);
 }
 
+/* The start's failure (it names the start to move), else the solver's. */
+static const char *visco_why(const void *vr, unsigned *fix)
+{
+    const visco_rule *r = vr;
+    *fix = r->first == ADH_ESTALL ? ADH_FIX_START : 0;   /* the start was no stable point out of contact */
+    return r->first != ADH_CONTINUE && r->why[0] ? r->why : adh_visco_why(r->w);
+}
+
 const adh_rule_type adh_rule_visco = {
     .name = "visco",
     .alloc = visco_alloc,
@@ -96,6 +106,7 @@ const adh_rule_type adh_rule_visco = {
     .jump_in = visco_jump_in,
     .observe = visco_observe,
     .state = visco_state,
+    .why = visco_why,
 };
 
 const adh_visco *adh_rule_visco_solver(const adh_drive *d)

@@ -208,6 +208,33 @@ int static_landing(const adh_static *w, int front, double *ds)
     return fix;
 }
 
+/* What a rejected step attempt met, for the stop's sentence: the
+ * corrector's status (ADH_SUCCESS: it converged, but off the curve). */
+const char *static_reject(int rc)
+{
+    switch (rc) {
+    case ADH_SUCCESS: return "the corrected point left the curve (it turned past the largest angle or ran back)";
+    case ADH_EMAXITER: return "Newton's corrector did not converge";
+    case ADH_ENAN: return "Newton's corrector met a closed gap or a non-finite value";
+    default: return adh_strerror(rc);
+    }
+}
+
+/* The step fell below ds_min: the stop's sentence (how: the kind of
+ * step), and the relaxation named as what goes on there (it steps the
+ * drive without following the curve). ADH_ESTALL. */
+int static_stalled(adh_static *w, const char *how)
+{
+    snprintf(w->why, sizeof w->why,
+             "the static curve stalled at h0 = %s (F = %s, %zu point%s, %zu attempt%s rejected): the %s fell below "
+             "its floor, %g z0; the last attempt: %s; the relaxation steps the drive without following the curve",
+             adh_qtext(w->st->h0, ADH_Q_LENGTH).s, adh_qtext(w->F, ADH_Q_FORCE).s, w->res.points, w->res.points == 1 ? "" : "s", w->res.rejected,
+             w->res.rejected == 1 ? "" : "s",
+             how, w->s.ds_min, w->last_reject ? w->last_reject : "none");
+    w->fix = ADH_FIX_MODE;
+    return ADH_ESTALL;
+}
+
 /* The start point: undeformed, going down, corrected at h0 = h0_start,
  * its tangent and det J's sign (J = I + small out there: det J > 0, and
  * the start must lie on the outer branch, going in). */
@@ -218,8 +245,12 @@ static int start(adh_static *w)
     w->st->h0 = w->s.h0_start;
     memset(w->tau_u, 0, n * sizeof *w->tau_u);
     w->tau_h = -1.0;
-    if (static_evaluate(w, w->st) < 0)
+    if (static_evaluate(w, w->st) < 0) {
+        snprintf(w->why, sizeof w->why, "the static curve's start h0 = %s: the surface pressure is not finite there "
+                 "(the surfaces overlap): start further out", adh_qtext(w->s.h0_start, ADH_Q_LENGTH).s);
+        w->fix = ADH_FIX_START;
         return ADH_ENAN;
+    }
     static_jacobian(w, w->st, w->nw.Dc, w->nw.gc);
     int rc = static_refactor(w, w->nw.Dc, w->nw.gc, w->tau_u, w->tau_h);
     size_t it = 0;
@@ -240,8 +271,16 @@ static int start(adh_static *w)
     w->det_sign = (w->tau_h_new > 0 ? 1 : -1) * w->det_b_sign;
     if (rc == ADH_SUCCESS && w->det_sign < 0)
         rc = ADH_ESTALL;
-    if (rc != ADH_SUCCESS)
+    if (rc != ADH_SUCCESS) {
+        /* out there the surfaces barely feel each other: the start is solved at once */
+        snprintf(w->why, sizeof w->why, "the static curve's start h0 = %s %s%s: start further out",
+                 adh_qtext(w->s.h0_start, ADH_Q_LENGTH).s,
+                 rc == ADH_ESTALL ? "is not on the outer branch going in (a stable point out of contact)"
+                                  : "could not be solved: ",
+                 rc == ADH_ESTALL ? "" : static_reject(rc));
+        w->fix = ADH_FIX_START;
         return rc;
+    }
     w->newton_point = it;
     w->F = 0;
     w->dFds = 0;
@@ -274,6 +313,9 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     adh_folds_set(w->folds, w->skip ? ADH_FOLDS_PARABOLA : ADH_FOLDS_HERMITE);
     w->q.nhist = 0;
     w->end_next = 0;
+    w->why[0] = '\0';
+    w->fix = 0;
+    w->last_reject = NULL;
     static_front_set(w);
     int rc = start(w);
     w->res.seconds += adh_clock_seconds() - t0;
@@ -299,8 +341,13 @@ int adh_static_iterate(adh_static *w)
     if (w->done)
         return ADH_SUCCESS;
     w->nw.act = w->s.active_tol;
-    if (w->res.points >= w->s.max_points)
+    if (w->res.points >= w->s.max_points) {
+        snprintf(w->why, sizeof w->why, "the static curve reached its cap of %zu points at h0 = %s, before its end "
+                 "h0 = %s", w->s.max_points, adh_qtext(w->st->h0, ADH_Q_LENGTH).s,
+                 adh_qtext(w->s.h0_end, ADH_Q_LENGTH).s);
+        w->fix = 0;
         return ADH_EMAXITER;
+    }
     double t0 = adh_clock_seconds();
     int rc = w->skip ? static_qstep_iterate(w) : static_arclength_iterate(w);
     w->res.seconds += adh_clock_seconds() - t0;
@@ -324,6 +371,13 @@ adh_static_point adh_static_current(const adh_static *w)
         .residual = w->nw.residual,
     };
     return p;
+}
+
+const char *adh_static_why(const adh_static *w, unsigned *fix)
+{
+    if (fix)
+        *fix = w->fix;
+    return w->why;
 }
 
 void adh_static_summary(const adh_static *w, adh_static_result *res)

@@ -127,6 +127,9 @@ struct adh_static {
     adh_folds *folds;
     adh_static_result res;
     double *buf;      /* the vectors above, one allocation */
+    const char *last_reject; /* why the last step attempt was rejected (static_reject) */
+    char why[300];    /* why the curve stopped ("" while it goes on) */
+    unsigned fix;     /* ADH_FIX_* bits beside it */
 };
 
 /* static_newton.c */
@@ -145,6 +148,8 @@ void static_secant(adh_static *w, double *su, double *sh);
 void static_accept(adh_static *w);
 int static_accepted(adh_static *w);
 int static_landing(const adh_static *w, int front, double *ds);
+const char *static_reject(int rc);
+int static_stalled(adh_static *w, const char *how);
 
 /* static_arclength.c */
 int static_arclength_iterate(adh_static *w);

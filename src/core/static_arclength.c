@@ -69,7 +69,7 @@ int static_arclength_iterate(adh_static *w)
     size_t iters = 0;
     for (;;) {
         if (w->ds < w->s.ds_min)
-            return ADH_ESTALL;
+            return static_stalled(w, "arclength step");
         double ds;
         int fix = static_landing(w, 0, &ds);
         w->nw.attempt++;
@@ -93,6 +93,7 @@ int static_arclength_iterate(adh_static *w)
             gr = gap_ratio(w);
             if (gr > 1) {
                 w->res.rejected++;
+                w->last_reject = "the step closed the gap too far at once";
                 w->ds *= fmax(0.1, 0.7 / gr);
                 continue;
             }
@@ -116,6 +117,7 @@ int static_arclength_iterate(adh_static *w)
         }
         /* a failed step is usually a fold just ahead: cut hard */
         w->res.rejected++;
+        w->last_reject = static_reject(rc);
         w->ds *= 0.25;
         w->end_next = 0; /* nearer first: the end from closer by */
     }

@@ -12,10 +12,12 @@
 #include "core/static.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "adhere/rings.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 #ifndef ADH_Q_GROW /* Newton iterations below which the step grows */
 #define ADH_Q_GROW 4
@@ -63,7 +65,12 @@ int static_qstep_start(adh_static *w)
         d += w->s.u_weight * q->rG[i] * w->tau_u[i];
     q->qslope = d * qs * w->m.z0; /* per unit s, which is in z0 */
     q->dq = w->s.ds_init * q->qslope;
-    return q->dq > 0 ? ADH_SUCCESS : ADH_ESTALL;
+    if (q->dq > 0)
+        return ADH_SUCCESS;
+    snprintf(w->why, sizeof w->why, "the static curve's start h0 = %s: the contact measure Q does not grow along "
+             "its tangent (steps in Q cannot begin): start further out", adh_qtext(w->st->h0, ADH_Q_LENGTH).s);
+    w->fix = ADH_FIX_START;
+    return ADH_ESTALL;
 }
 
 /* Q's parabola through the last three points at qtarget: the curve bends
@@ -149,7 +156,7 @@ int static_qstep_iterate(adh_static *w)
     size_t iters = 0;
     for (;;) {
         if (w->ds < w->s.ds_min)
-            return ADH_ESTALL;
+            return static_stalled(w, w->fr.on ? "step (in rings of the contact line)" : "step (in the contact measure Q)");
         w->ds = w->q.dq / w->q.qslope;
         double ds;
         int fix = static_landing(w, w->fr.on, &ds);
@@ -175,6 +182,8 @@ int static_qstep_iterate(adh_static *w)
             return accepted(w, fix, iters);
         /* a failed step is usually a fold just ahead: cut hard */
         w->res.rejected++;
+        w->last_reject = rc == ADH_SUCCESS && w->fr.on ? "the corrected contact was not the front asked for"
+                                                        : static_reject(rc);
         if (static_front_failed(w, fix))
             continue;
         w->ds *= 0.25;

@@ -212,8 +212,12 @@ static int restart(adh_visco *w, double s, double *y, const double *yp_given)
         snprintf(w->errmsg, sizeof w->errmsg, "at t = %.6g s, h0 = %.6g m, %s could not be %s", w->t_now,
                  adh_visco_h0_of(w, y), w->mode == MODE_CROSS ? "a jump's crossing" : "the path",
                  yp_given ? "put back on its equilibria (Newton)" : "restarted (Newton or its tangent)");
-    if (rc == ADH_SUCCESS)
-        rc = adh_visco_dae_start(w, s, y, ypv);
+    if (rc == ADH_SUCCESS && (rc = adh_visco_dae_start(w, s, y, ypv)) != ADH_SUCCESS) {
+        char ida[200];
+        snprintf(ida, sizeof ida, "%.199s", w->errmsg);
+        snprintf(w->errmsg, sizeof w->errmsg, "at t = %.6g s, h0 = %.6g m, the integrator could not be restarted%s%s%s",
+                 w->t_now, adh_visco_h0_of(w, y), *ida ? " (" : "", ida, *ida ? ")" : "");
+    }
     w->live = rc == ADH_SUCCESS;
     free(ypv);
     return rc;
@@ -245,6 +249,12 @@ static int push_row(adh_visco *w, double t0)
 
 static int stop(adh_visco *w, int rc)
 {
+    if (rc == ADH_EMAXITER)
+        snprintf(w->errmsg, sizeof w->errmsg, "the integrator took its cap of %zu steps by t = %.6g s, h0 = %.6g m",
+                 w->s.max_steps, w->t_now, adh_visco_h0_of(w, N_VGetArrayPointer(w->y)));
+    else if (rc != ADH_SUCCESS && rc != ADH_EINTR && !w->errmsg[0])
+        snprintf(w->errmsg, sizeof w->errmsg, "at t = %.6g s, h0 = %.6g m: %s", w->t_now,
+                 adh_visco_h0_of(w, N_VGetArrayPointer(w->y)), adh_strerror(rc));
     w->done = 1;
     w->status = rc;
     w->run->status = rc == ADH_EINTR ? ADH_SUCCESS : rc;
@@ -405,6 +415,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     w->m = *m;
     w->m.E = v->E0;
     w->v = *v, w->dr = *d, w->s = *s, w->ps = *ps, w->run = run;
+    w->errmsg[0] = '\0';
     w->spring = isfinite(d->spring);
     w->IQ = n, w->IT = 2 * n, w->IH = 2 * n + 1;
     w->len = 2 * n + 1 + (size_t)w->spring;

@@ -320,10 +320,11 @@ static void draw_point_rows(const adh_obs *o, int rigid_ref, const tui_view *v, 
  * in bold at y: 1 when one was shown. */
 static int put_stopped(const tui_sim *s, int y, int x, int w, const char *what)
 {
-    char msg[600];
+    char msg[1200], reason[600];
     int stopped = s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS;
     if (stopped)
-        snprintf(msg, sizeof msg, "! the %s stopped: %s (x starts it again)", what, adh_strerror(s->cstatus));
+        snprintf(msg, sizeof msg, "! the %s stopped: %s%s%s (x starts it again)", what, adh_strerror(s->cstatus),
+                 *tui_sim_stop_reason(s, reason, sizeof reason) ? ": " : "", reason);
     else if (s->gridwarn[0])
         snprintf(msg, sizeof msg, "! %s", s->gridwarn);
     else

@@ -150,6 +150,24 @@ static void advice(char *why, size_t whylen, unsigned fix)
         snprintf(why + len, whylen - len, " (%s)", list);
 }
 
+/* Why run stopped on an error: the core's sentence (what failed and where)
+ * with the screen's words for what may get past it; "" when it has none. */
+static void stop_words(const adh_run *run, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", run->why);
+    if (*buf)
+        advice(buf, len, run->fix);
+}
+
+const char *tui_sim_stop_reason(const tui_sim *s, char *buf, size_t len)
+{
+    int stopped = s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS;
+    buf[0] = '\0';
+    if (stopped)
+        stop_words(&s->curve, buf, len);
+    return buf;
+}
+
 void tui_sim_words(const char *sentence, char *out, size_t len)
 {
     adh_config_reword(sentence, say_field, NULL, out, len);
@@ -1022,9 +1040,12 @@ static int curve_begin(tui_sim *s, int dir, char *why, size_t whylen)
             edge_words(s->sg, s->curve.rows[s->curve.nrows - 1].a, edge, sizeof edge);
             snprintf(why, whylen, "the curve stopped after %zu points: %s", s->curve.nrows, edge);
         }
-        else
-            snprintf(why, whylen, "the curve stopped after %zu point%s: %s; x starts it again", s->curve.nrows,
-                     s->curve.nrows == 1 ? "" : "s", adh_strerror(s->cstatus));
+        else {
+            char reason[600];
+            stop_words(&s->curve, reason, sizeof reason);
+            snprintf(why, whylen, "the curve stopped after %zu point%s: %s%s%s; x starts it again", s->curve.nrows,
+                     s->curve.nrows == 1 ? "" : "s", adh_strerror(s->cstatus), *reason ? ": " : "", reason);
+        }
         return -1;
     } else {
         if (grid_refuses(s, why, whylen) || ensure_static(s, why, whylen) != 0)
@@ -1120,13 +1141,11 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
         edge_words(s->sg, s->curve.rows[s->curve.nrows - 1].a, why, whylen);
         return ADH_EGRID;
     }
-    if (rc == ADH_ENAN)
-        snprintf(why, whylen, "the curve stopped after h0 = %s: a non-finite force; its %zu points are kept",
-                 h0, s->curve.nrows);
-    else
-        snprintf(why, whylen, "the curve stopped %s h0 = %s: %s; its %zu point%s kept",
-                 s->curve.nrows ? "after" : "at its start,", h0, adh_strerror(rc), s->curve.nrows,
-                 s->curve.nrows == 1 ? " is" : "s are");
+    char reason[600];
+    stop_words(&s->curve, reason, sizeof reason);
+    snprintf(why, whylen, "the curve stopped %s h0 = %s: %s%s%s; its %zu point%s kept",
+             s->curve.nrows ? "after" : "at its start,", h0, rc == ADH_ENAN ? "a non-finite force" : adh_strerror(rc),
+             *reason ? ": " : "", reason, s->curve.nrows, s->curve.nrows == 1 ? " is" : "s are");
     return rc;
 }
 
@@ -1272,8 +1291,10 @@ tui_work tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
         edge_words(s->g, adh_drive_row(s->drv)->a, why, whylen);
         return TUI_WORK_FAILED;
     }
-    snprintf(why, whylen, "the step failed: %s; back to the previous state (try a smaller d or a larger eps)",
-             adh_strerror(rc));
+    char reason[600];
+    stop_words(adh_drive_record(s->drv), reason, sizeof reason);
+    snprintf(why, whylen, "the step failed: %s%s%s; back to the previous state (try a smaller d or a larger eps)",
+             adh_strerror(rc), *reason ? ": " : "", reason);
     s->busy = 1;
     tui_sim_cancel(s);
     return TUI_WORK_FAILED;
@@ -1298,8 +1319,12 @@ void tui_sim_why_done(const tui_sim *s, char *buf, size_t len)
                  "x starts again");
     else if (st == ADH_SUCCESS || st == ADH_CONTINUE)
         snprintf(buf, len, "the protocol is complete: every turn was unloaded (f and b still step by hand, x starts again)");
-    else
-        snprintf(buf, len, "the protocol stopped: %s (f and b still step by hand, x starts again)", adh_strerror(st));
+    else {
+        char reason[600];
+        stop_words(adh_drive_record(s->drv), reason, sizeof reason);
+        snprintf(buf, len, "the protocol stopped: %s%s%s (f and b still step by hand, x starts again)",
+                 adh_strerror(st), *reason ? ": " : "", reason);
+    }
 }
 
 void tui_sim_turn_name(const tui_sim *s, size_t i, char *buf, size_t len)

@@ -245,6 +245,10 @@ int tui_sim_next(const tui_sim *s, size_t *turn);
 /* Why the protocol has no next step (tui_sim_next 0): a sentence, "the
  * protocol is complete ..." or the status that stopped it. */
 void tui_sim_why_done(const tui_sim *s, char *buf, size_t len);
+/* Why the curve (static mode, physical time) stopped on an error: the
+ * core's sentence with the screen's words for what may get past it,
+ * written to buf and returned; "" when it goes on, finished or has none. */
+const char *tui_sim_stop_reason(const tui_sim *s, char *buf, size_t len);
 /* The run's turn i (0-based, in the order reached) in words: "turn 3 of 8"
  * for a turn of the protocol, "the turn at h0 = 1.5 nm" for one made by
  * hand (b on the loading branch). */

@@ -115,4 +115,34 @@ rc=$?
 last=$(grep -v '^#' "$TMP/land/force.tsv" | tail -1 | cut -f1)
 check "fig1 static at N = 200, 3.4 nm, turn -2.25 nm: exit 0, ends at the turn ($rc, last h0 $last: $(head -c 200 "$TMP/err"))" \
     sh -c "[ $rc -eq 0 ] && awk 'BEGIN {exit !($last > -2.2501e-9 && $last < -2.2499e-9)}' && grep -qx 'status	success' '$TMP/land/summary.tsv'"
+# A curve that stops says why, not only the status words: from inside the
+# snap-in (0.3 nm) the start cannot be solved. stderr and summary.tsv's
+# # PARTIAL line name the start and what to change (--start); summary.tsv
+# keeps its status line and adds stop_reason after it; a study's status
+# column says "status: reason", and a rerun reads its rows back.
+"$ADHERE" --batch -q --no-plot --mode=static --start=0.3nm -o "$TMP/stop" 2>"$TMP/err"
+rc=$?
+why="the static curve's start h0 = 300 pm could not be solved: Newton's corrector did not converge: start further out (--start)"
+check "static from 0.3 nm: exit 1, stderr says why ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 1 ] && grep -qxF \"adhere: the solver stopped after 0 steps: iteration cap reached before convergence: $why\" '$TMP/err'"
+check "... summary.tsv: # PARTIAL says it, status unchanged, then stop_reason, last" \
+    sh -c "grep -qF \"# PARTIAL: the solver stopped after 0 steps: iteration cap reached before convergence: $why\" '$TMP/stop/summary.tsv' &&
+           tail -n 2 '$TMP/stop/summary.tsv' | head -n 1 | grep -qx 'status	iteration cap reached before convergence' &&
+           tail -n 1 '$TMP/stop/summary.tsv' | grep -qxF \"stop_reason	$why\""
+check "a finished run has no stop_reason line" sh -c "! grep -q '^stop_reason' '$out/summary.tsv'"
+"$ADHERE" --batch -q --no-plot --mode=static --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
+rc=$?
+check "a study of such starts: exit 1, each row's status says why ($rc: $(tail -n 1 "$TMP/stops/sweep.tsv" | tr '\t' '\n' | tail -n 1))" \
+    sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stops/sweep.tsv' | tail -n 2 | awk -F'\t' '{print \$NF}' |
+           grep -c \"^iteration cap reached before convergence: the static curve's start h0 = [34]00 pm could not be solved: .*(--start)\$\" | grep -qx 2"
+cp "$TMP/stops/sweep.tsv" "$TMP/stops.before"
+"$ADHERE" --batch -q --no-plot --mode=static --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
+rc=$?
+check "... a rerun reads those rows back: the same sweep.tsv, exit 1 ($rc: $(head -c 300 "$TMP/err"))" \
+    sh -c "[ $rc -eq 1 ] && cmp -s '$TMP/stops.before' '$TMP/stops/sweep.tsv'"
+"$ADHERE" merge -q "$TMP/stops" -o "$TMP/stops-merged" 2>"$TMP/err"
+rc=$?
+check "... adhere merge keeps the reasons: the same rows ($rc: $(head -c 300 "$TMP/err"))" \
+    sh -c "[ $rc -le 1 ] && grep -v '^#' '$TMP/stops.before' >'$TMP/m1' && grep -v '^#' '$TMP/stops-merged/sweep.tsv' >'$TMP/m2' &&
+           cmp -s '$TMP/m1' '$TMP/m2'"
 done_testing

@@ -260,4 +260,15 @@ pcpu=$(sed -n 's/^time: about [^(]* of CPU in all, [^(]* (\([0-9.e+-]*\) s: .*/\
 rcpu=$(cpu_of "$TMP/trs" $S225 --sweep=speed=1um/s,100nm/s)
 within "a study of two speeds" "$pcpu" "$rcpu" 3
 
+# A run in time that stops says why: from inside the snap-in (0.3 nm) the
+# start is no stable point out of contact. stderr and summary.tsv name it
+# and --start, not only "continuation could not make progress".
+"$ADHERE" --batch -q --no-plot --material=sls --tau=1ms --start=0.3nm -o "$TMP/tstop" 2>"$TMP/err"
+rc=$?
+why="the start h0 = 3e-10 m is not a stable point out of contact: start further out (--start)"
+check "sls from 0.3 nm: exit 1, stderr and summary.tsv's stop_reason say why ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 1 ] && grep -qxF \"adhere: the solver stopped after 0 steps: continuation could not make progress: $why\" '$TMP/err' &&
+           grep -qx 'status	continuation could not make progress' '$TMP/tstop/summary.tsv' &&
+           grep -qxF \"stop_reason	$why\" '$TMP/tstop/summary.tsv'"
+
 done_testing
