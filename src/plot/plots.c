@@ -430,6 +430,13 @@ static int force_models(plotter *pl, force_fig *ff, datafile *df)
 
 static double force_active_right(const plotter *pl, const force_fig *ff, double span, double xmax);
 
+/* The position axis's label: through a spring h0 is where the sphere is,
+ * not where the instrument drives (the base, in force.tsv beside it). */
+static void position_label(plotter *pl)
+{
+    adh_gnuplot_cmd(pl->gp, "set xlabel \"%s position h_0 (nm)\"", pl->s->sprung ? "sphere" : "drive");
+}
+
 /* The force axis before its margins: the curves and the deepest model
  * pull-off (the rigid spheres' alone: their own). */
 static void force_span(const plotter *pl, const force_fig *ff, double *lo, double *hi)
@@ -680,7 +687,7 @@ static void force_reference_clauses(plotter *pl, const force_fig *ff, FILE *c, c
  * curves, the references over them. -1 out of memory. */
 static int force_panel(plotter *pl, const force_fig *ff)
 {
-    adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
+    position_label(pl);
     adh_gnuplot_cmd(pl->gp, "set ylabel \"force F (%s)\"", ff->funit);
     adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", (ff->xmin - ff->xpad) * 1e9, ff->xright * 1e9);
     adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", ff->lo * ff->fscale, ff->hi * ff->fscale);
@@ -1063,7 +1070,7 @@ static void contact_frame(plotter *pl, int panel, double top, int in_mm, int key
         adh_gnuplot_cmd(pl->gp, "set origin 0,0");
         adh_gnuplot_cmd(pl->gp, "set size 1,0.44");
         adh_gnuplot_cmd(pl->gp, "set format x \"%% g\"");
-        adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
+        position_label(pl);
         adh_gnuplot_cmd(pl->gp, "set tmargin 1");
         adh_gnuplot_cmd(pl->gp, "set bmargin %.3g", 4.2 + 1.05 * keyrows);
         adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
@@ -1208,7 +1215,7 @@ static int plot_contact_static(plotter *pl)
     adh_gnuplot_cmd(pl->gp, "set title %s noenhanced", heading);
     adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", lo * 1e9, hi * 1e9);
     adh_gnuplot_cmd(pl->gp, "set yrange [0:*]");
-    adh_gnuplot_cmd(pl->gp, "set xlabel \"drive position h_0 (nm)\"");
+    position_label(pl);
     adh_gnuplot_cmd(pl->gp, "set ylabel \"contact radius a (µm)\"");
     adh_gnuplot_cmd(pl->gp, "set key outside below center horizontal width -6");
     const char *qdat = adh_gp_path(dat, q, sizeof q);

@@ -403,6 +403,8 @@ check 'echo "$xr $far" | awk "{exit !(NF == 3 && \$1 < -5 && \$1 > -7 && \$2 > 7
     "a soft spring's force.png spans the contact (-5 nm turn, 7.2 nm jump-out), not its landing at $far nm ($rc; x range $xr)"
 check 'grep -q "Force vs position at 1 m/s" "$T/softforce.gp" && grep -q "Contact line in time, base at 1 m/s" "$T/soft.gp"' \
     "its headings say 1 m/s"
+check 'grep -q "set xlabel \"sphere position h_0 (nm)\"" "$T/softforce.gp" && ! grep -q "drive position" "$T/soft.gp" && grep -q "set xlabel \"drive position h_0 (nm)\"" "$T/two.gp"' \
+    "through a spring the position axis is the sphere's (h0 = base + F/k), without one the drive's"
 
 # --- a gnuplot that dies, shouting on stderr -----------------------------
 printf '#!/bin/sh\necho "fatal: out of ink" >&2\nexit 7\n' >"$T/dying-gnuplot"
