@@ -219,6 +219,22 @@ sed -i '/^numerics\t/d' "$TMP/build/study.tsv" && reprove "$TMP/build" study.tsv
 rc=$?
 check "a study.tsv with no numerics id (before ids): exit 2, said so, the same advice ($rc: $(cat "$TMP/err"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'numerics there: none, its study.tsv predates numerics ids' '$TMP/err' && grep -q -- '--overwrite' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv'"
+# an id line this build cannot read (garbled, or another build's form), or
+# two of them: this study (its fingerprint) of a build unknown, refused
+# alike; it was taken for another study's and cleared, the study run again
+# without --overwrite ("line 4 is not adhere's; starting the study afresh")
+for what in 'an id in capitals' 'two ids, this build'"'"'s second'; do
+    case $what in
+    an*) idline='numerics\t0123456789ABCDEF' ;;
+    *) idline="numerics\t0123456789abcdef\nnumerics\t$NUMERICS" ;;
+    esac
+    sed -i '/^numerics\t/d' "$TMP/build/study.tsv" && sed -i "s/^fingerprint\t.*/&\n$idline/" "$TMP/build/study.tsv" &&
+        reprove "$TMP/build" study.tsv
+    "$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+    rc=$?
+    check "a study.tsv of this study with $what: exit 2, nothing run or changed ($rc: $(head -c 400 "$TMP/err"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q 'numerics there: unreadable' '$TMP/err' && grep -q -- '--overwrite' '$TMP/err' && ! grep -q '^adhere: run ' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv'"
+done
 "$ADHERE" $TINY "$TMP/map.scene" --overwrite -o "$TMP/build" 2>"$TMP/err"
 rc=$?
 ran=$(grep -c '^adhere: run [0-9]* of 16' "$TMP/err")
