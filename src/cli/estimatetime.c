@@ -243,16 +243,20 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
     grid_cost gc = { .n = 0 };
     run_est e = { .cpu = 0 }, first = e;
     double cpu = 0, steps = 0, smin = INFINITY, smax = 0;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t j = 0; j < n; j++) {
+        /* a study past the runs the plan lists: n runs spread over it, the
+         * first and the last among them (its first n were taken for all: a
+         * sweep of 64 speeds down from 1 m/s counted 64 fast runs) */
+        size_t i = n < plan->nruns ? (j * (plan->nruns - 1) + (n - 1) / 2) / (n - 1) : j;
         adh_run_spec s;
         adh_config_sweep_run(cfg, i, &s);
         if (run_estimate(&s, &gc, &e) != 0) {
             fprintf(f, "time: not estimated (the kernel could not be built here)\n");
             return;
         }
-        if (i == 0)
+        if (j == 0)
             first = e;
-        runs[i] = (adh_plan_progress){ .cost = e.cpu };
+        runs[j] = (adh_plan_progress){ .cost = e.cpu };
         cpu += e.cpu;
         steps += e.c.steps;
         smin = fmin(smin, e.c.steps);
@@ -260,13 +264,14 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
     }
     if (n > 1) {
         /* a study past the runs the plan lists: the rest taken at the
-         * listed runs' mean, and said so ("in all" summed 32 of 2000) */
+         * mean of the runs estimated, and said so ("in all" summed 32 of 2000) */
         double all = (double)plan->nruns / (double)n;
-        char t[32], w[32], rest[96] = "";
+        char t[32], w[32], rest[128] = "";
         cli_progress_duration(cpu * all, t, sizeof t);
         cli_progress_duration(adh_plan_time_left(runs, n, plan->jobs, 0, 1.0) * all, w, sizeof w);
         if (n < plan->nruns)
-            snprintf(rest, sizeof rest, "; runs %zu to %zu taken at the mean of the first %zu", n + 1, plan->nruns, n);
+            snprintf(rest, sizeof rest, "; the other %zu runs taken at the mean of %zu spread over runs 1 to %zu",
+                     plan->nruns - n, n, plan->nruns);
         fprintf(f, "time: about %s of CPU in all, %s on %d core%s (%.3g s: about %.0f integrator steps, %.0f to %.0f "
                    "a run, each run's as run 1's below%s)\n", t, w, plan->jobs, plan->jobs == 1 ? "" : "s", cpu * all,
                 two_digits(steps * all), two_digits(smin), two_digits(smax), rest);

@@ -218,8 +218,8 @@ static int study_line(cli_study *st, char *line, char *fp, size_t *runs, size_t 
     if (!strcmp(line, "fingerprint"))
         return snprintf(fp, 17, "%s", v) == 16 ? 0 : -1;
     if (!strcmp(line, "numerics")) {   /* the build's: not in the fingerprint, which is what the study is */
-        if (strlen(v) != 16 || strspn(v, "0123456789abcdef") != 16)
-            return -1;
+        if (strlen(v) != 16 || strspn(v, "0123456789abcdef") != 16 || st->numerics[0])
+            return -1;   /* another form, or a second id: which build is unknown */
         memcpy(st->numerics, v, sizeof st->numerics);
         return 0;
     }
@@ -311,6 +311,7 @@ int cli_study_read(cli_study *st, adh_config *cfg, int dirfd, const char *path, 
     fclose(f);
     if (rc != 0 || !fp[0] || !st->shard_n) {
         snprintf(why, whylen, "%.3000s/study.tsv: line %zu is not adhere's", path, lineno);
+        memcpy(st->fingerprint, fp, sizeof fp);   /* whose study it says it is, if that line read */
         return -1;
     }
     fingerprint(st);

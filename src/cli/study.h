@@ -50,7 +50,8 @@ int cli_study_write(const cli_study *st, adh_outdir *d, char *why, size_t whylen
 /* study.tsv read from the directory descriptor dirfd (path names it in
  * messages): the study it records, its configuration rebuilt into cfg
  * (defaults, the scene's text, the flags) and its grid chosen, its
- * fingerprint checked, its numerics id in st->numerics ("" none). 1 read, 0 no study.tsv there, -1 with why. */
+ * fingerprint checked, its numerics id in st->numerics ("" none). 1 read, 0 no study.tsv there, -1 with why
+ * (a line that does not read: st->fingerprint its fingerprint line's, "" none). */
 int cli_study_read(cli_study *st, adh_config *cfg, int dirfd, const char *path, char *why, size_t whylen);
 
 /* The rows of runs.tsv in dirfd of study st: each row of st's that reads

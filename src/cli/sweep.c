@@ -311,16 +311,15 @@ static void *worker(void *arg)
 
 /* ---- the study's directory ------------------------------------------------- */
 
-/* This study's shard in od, computed by another build (prev's numerics id
- * not st's, or none recorded): refused (-1 with why), its rows never mixed
- * with this build's; with --overwrite its files go and the study runs
- * again from scratch (0). */
-static int other_build(const cli_study *st, const cli_study *prev, adh_outdir *od, char *why, size_t whylen)
+/* This study's shard in od, computed by another build (there: its numerics
+ * id as shown, not st's, or none recorded, or none this build reads):
+ * refused (-1 with why), its rows never mixed with this build's; with
+ * --overwrite its files go and the study runs again from scratch (0). */
+static int other_build(const cli_study *st, const char *there, adh_outdir *od, char *why, size_t whylen)
 {
     const char *path = adh_outdir_path(od);
     char ids[200];
-    snprintf(ids, sizeof ids, "numerics there: %s; this adhere's: %s", cli_study_numerics_shown(prev->numerics),
-             st->numerics);
+    snprintf(ids, sizeof ids, "numerics there: %s; this adhere's: %s", there, st->numerics);
     if (!st->cfg->output.overwrite) {
         snprintf(why, whylen, "%.500s holds this study computed by another build of adhere (%s): its rows are not "
                  "mixed with this build's; give a new -o to keep them, or --overwrite to run the study again from "
@@ -353,7 +352,13 @@ static int resume(const cli_study *st, adh_outdir *od, cli_studyrow *rows, char 
         snprintf(why, whylen, "%.800s holds shard %u/%u of this study, not %u/%u: give each shard its own -o "
                  "directory (adhere merge joins them)", path, prev.shard_k, prev.shard_n, st->shard_k, st->shard_n);
     int rebuilt = same && !other_shard && strcmp(prev.numerics, st->numerics) != 0;
-    int rc = other_shard ? -1 : rebuilt ? other_build(st, &prev, od, why, whylen) : 1;
+    /* this study (its fingerprint line), a line of it unread: a build whose
+     * study.tsv this one cannot read (an id of another form, two ids) is
+     * another build, not another study to clear */
+    int unread = r < 0 && !strcmp(prev.fingerprint, st->fingerprint);
+    const char *there = unread ? "unreadable, a line of its study.tsv not of this build's form"
+                               : cli_study_numerics_shown(prev.numerics);
+    int rc = other_shard ? -1 : rebuilt || unread ? other_build(st, there, od, why, whylen) : 1;
     cli_study_free(&prev);
     free(old);
     if (rc <= 0)

@@ -2,8 +2,10 @@
  * check of each, for every driver. */
 #include "adhere/visco.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "adhere/status.h"
 
@@ -14,17 +16,39 @@
         return ADH_EINVAL;                         \
     } while (0)
 
+/* v, refused for lying outside [lo, hi], as %g shows it, with more digits
+ * where %g's six would round it into the range: 0.00099999999 N/m read
+ * "spring k = 0.001 N/m is not allowed: it must be from 0.001", a message
+ * that named no value outside. */
+typedef struct shown {
+    char s[32];
+} shown;
+
+static shown outside(double v, double lo, double hi)
+{
+    shown t;
+    for (int digits = 6; digits <= 17; digits++) {
+        snprintf(t.s, sizeof t.s, "%.*g", digits, v);
+        double back = strtod(t.s, NULL);
+        if (!(back >= lo && back <= hi))
+            break;
+    }
+    return t;
+}
+
 int adh_sls_validate(const adh_sls *v, char *why, size_t whylen)
 {
     if (!(v->E0 >= 1e3 && v->E0 <= 1e12))
-        BAD("E0 = %g Pa is not allowed: the relaxed modulus must be from 1 kPa to 1 TPa", v->E0);
+        BAD("E0 = %s Pa is not allowed: the relaxed modulus must be from 1 kPa to 1 TPa", outside(v->E0, 1e3, 1e12).s);
     if (!(v->Einf >= 1e3 && v->Einf <= 1e12))
-        BAD("Einf = %g Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa", v->Einf);
+        BAD("Einf = %s Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa",
+            outside(v->Einf, 1e3, 1e12).s);
     if (!(v->Einf >= v->E0))
         BAD("Einf = %g Pa is below E0 = %g Pa: a standard linear solid is stiffest at first (Einf >= E0)",
             v->Einf, v->E0);
     if (!(v->tau > 0 && v->tau <= 1e6))
-        BAD("tau = %g s is not allowed: the relaxation time must be above 0 and at most 1e6 s", v->tau);
+        BAD("tau = %s s is not allowed: the relaxation time must be above 0 and at most 1e6 s",
+            outside(v->tau, DBL_TRUE_MIN, 1e6).s);
     return ADH_SUCCESS;
 }
 
@@ -37,11 +61,13 @@ adh_visco_drive adh_visco_drive_default(void)
 int adh_visco_drive_validate(const adh_visco_drive *d, char *why, size_t whylen)
 {
     if (!(d->speed_in > 0 && d->speed_in <= 1))
-        BAD("approach speed %g m/s is not allowed: it must be above 0 and at most 1 m/s", d->speed_in);
+        BAD("approach speed %s m/s is not allowed: it must be above 0 and at most 1 m/s",
+            outside(d->speed_in, DBL_TRUE_MIN, 1).s);
     if (!(d->speed_out > 0 && d->speed_out <= 1))
-        BAD("retraction speed %g m/s is not allowed: it must be above 0 and at most 1 m/s", d->speed_out);
+        BAD("retraction speed %s m/s is not allowed: it must be above 0 and at most 1 m/s",
+            outside(d->speed_out, DBL_TRUE_MIN, 1).s);
     if (!(d->dwell >= 0 && d->dwell <= 1e6))
-        BAD("dwell = %g s is not allowed: it must be from 0 to 1e6 s", d->dwell);
+        BAD("dwell = %s s is not allowed: it must be from 0 to 1e6 s", outside(d->dwell, 0, 1e6).s);
     /* Softer than 1 mN/m the snap-in runs out to where the static curve's
      * hysteresis quadrature alone took minutes and ignored signals; stiffer
      * than 10 kN/m the spring holds like the base itself and physical time's
@@ -52,9 +78,10 @@ int adh_visco_drive_validate(const adh_visco_drive *d, char *why, size_t whylen)
      * sphere stopped, while 1e-3 to 1e-2 N/m ran at 1e-6 to 1 m/s.
      * Infinity is displacement control. */
     if (!(isinf(d->spring) && d->spring > 0) && !(d->spring >= ADH_SPRING_MIN && d->spring <= ADH_SPRING_MAX))
-        BAD("spring k = %g N/m is not allowed: it must be from %g to %g N/m, or none (displacement control, "
+        BAD("spring k = %s N/m is not allowed: it must be from %g to %g N/m, or none (displacement control, "
             "what a stiffer spring approaches); a softer one would hold the sphere's position only to the "
-            "force's tolerance over k", d->spring, ADH_SPRING_MIN, ADH_SPRING_MAX);
+            "force's tolerance over k", outside(d->spring, ADH_SPRING_MIN, ADH_SPRING_MAX).s, ADH_SPRING_MIN,
+            ADH_SPRING_MAX);
     return ADH_SUCCESS;
 }
 

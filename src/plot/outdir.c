@@ -3,6 +3,11 @@
 #ifndef _DEFAULT_SOURCE
 #define _DEFAULT_SOURCE
 #endif
+/* statx(2)'s birth time: a temporary's record tells it from a file the
+ * user made later under its name on the inode it freed */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE
+#endif
 #include "plot/outdir.h"
 
 #include <dirent.h>
@@ -37,6 +42,9 @@ typedef struct entry {
     long mt_nsec;
     long long ct_sec;       /* the change time: a chmod, a link, an edit */
     long ct_nsec;           /* whose mtime was set back all move it */
+    long long bt_sec;       /* a file recorded by identity (a temporary, a log): */
+    long bt_nsec;           /* its birth time, when bt_known */
+    int bt_known;
 } entry;
 
 /* A file written under its temporary name, waiting for adh_outdir_commit. */
@@ -294,8 +302,20 @@ static void index_stale(adh_outdir *d)
         d->ix->stale = 1;
 }
 
+/* The birth time of name in dirfd (never through a link): 1, or 0 where
+ * the filesystem keeps none. */
+static int birth(int dirfd, const char *name, struct timespec *bt)
+{
+    struct statx sx;
+    if (statx(dirfd, name, AT_SYMLINK_NOFOLLOW, STATX_BTIME, &sx) != 0 || !(sx.stx_mask & STATX_BTIME))
+        return 0;
+    bt->tv_sec = (time_t)sx.stx_btime.tv_sec;
+    bt->tv_nsec = (long)sx.stx_btime.tv_nsec;
+    return 1;
+}
+
 static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsigned long long ino,
-                   long long size, const struct timespec *mt, const struct timespec *ct)
+                   long long size, const struct timespec *mt, const struct timespec *ct, const struct timespec *bt)
 {
     if (d->n == d->cap) {
         size_t cap = d->cap ? 2 * d->cap : 16;
@@ -306,17 +326,23 @@ static int add_raw(adh_outdir *d, const char *name, unsigned long long dev, unsi
         d->cap = cap;
     }
     d->e[d->n++] = (entry){ .dev = dev, .ino = ino, .size = size, .mt_sec = (long long)mt->tv_sec,
-                            .mt_nsec = mt->tv_nsec, .ct_sec = (long long)ct->tv_sec, .ct_nsec = ct->tv_nsec };
+                            .mt_nsec = mt->tv_nsec, .ct_sec = (long long)ct->tv_sec, .ct_nsec = ct->tv_nsec,
+                            .bt_sec = bt ? (long long)bt->tv_sec : 0, .bt_nsec = bt ? bt->tv_nsec : 0,
+                            .bt_known = bt != NULL };
     snprintf(d->e[d->n - 1].name, sizeof d->e[0].name, "%s", name);
     index_added(d);
     return 0;
 }
 
-/* name as st is now; a log that grows, and a directory, by identity alone */
+/* name as st is now; a log that grows, and a directory, by identity alone
+ * (a file's with its birth time, where the filesystem keeps one) */
 static int add_entry(adh_outdir *d, const char *name, const struct stat *st, int grows)
 {
+    struct timespec bt;
+    int by_birth = grows && S_ISREG(st->st_mode) && birth(d->fd, name, &bt);
     return add_raw(d, name, (unsigned long long)st->st_dev, (unsigned long long)st->st_ino,
-                   grows || S_ISDIR(st->st_mode) ? -1 : (long long)st->st_size, &st->st_mtim, &st->st_ctim);
+                   grows || S_ISDIR(st->st_mode) ? -1 : (long long)st->st_size, &st->st_mtim, &st->st_ctim,
+                   by_birth ? &bt : NULL);
 }
 
 static void drop_entry(adh_outdir *d, size_t i)
@@ -325,8 +351,10 @@ static void drop_entry(adh_outdir *d, size_t i)
     index_stale(d);
 }
 
-/* Whether st is still the file or directory e recorded. */
-static int same(const entry *e, const struct stat *st)
+/* Whether st, name in d now, is still the file or directory e recorded.
+ * A file recorded by identity is born when it was: a user's file made
+ * under its name may be given the inode it freed. */
+static int same(const adh_outdir *d, const entry *e, const char *name, const struct stat *st)
 {
     size_t n = strlen(e->name);
     int dir = n && e->name[n - 1] == '/';
@@ -334,6 +362,9 @@ static int same(const entry *e, const struct stat *st)
         return 0;
     if (e->dev != (unsigned long long)st->st_dev || e->ino != (unsigned long long)st->st_ino)
         return 0;
+    struct timespec bt;
+    if (e->size < 0 && e->bt_known)
+        return birth(d->fd, name, &bt) && (long long)bt.tv_sec == e->bt_sec && bt.tv_nsec == e->bt_nsec;
     return e->size < 0 || (e->size == (long long)st->st_size && e->mt_sec == (long long)st->st_mtim.tv_sec &&
                            e->mt_nsec == st->st_mtim.tv_nsec && e->ct_sec == (long long)st->st_ctim.tv_sec &&
                            e->ct_nsec == st->st_ctim.tv_nsec);
@@ -348,14 +379,14 @@ static long find(const adh_outdir *d, const char *name, const struct stat *st)
     name_index *ix = d->ix;
     if (!ix || ((ix->stale || !ix->nslot) && index_build(d) != 0)) {
         for (size_t i = 0; i < d->n; i++)
-            if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(&d->e[i], st))
+            if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(d, &d->e[i], name, st))
                 return (long)i;
         return -1;
     }
     const size_t *next = ix->slot + ix->nslot;
     for (size_t c = ix->slot[index_slot(ix, d->e, name)]; c; c = next[c - 1]) {
         size_t i = c - 1;
-        if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(&d->e[i], st))
+        if ((!strcmp(d->e[i].name, name) || !strcmp(d->e[i].name, dirname)) && same(d, &d->e[i], name, st))
             return (long)i;
     }
     return -1;
@@ -369,7 +400,9 @@ static int manifest_table(FILE *f, const void *ctx)
           "# a link\n", f);
     for (size_t i = 0; i < d->n; i++) {
         const entry *e = &d->e[i];
-        if (e->size < 0)
+        if (e->size < 0 && e->bt_known)   /* the birth time where the change time goes */
+            fprintf(f, "%s\t%llu\t%llu\t-\t-\t%lld.%09ld\n", e->name, e->dev, e->ino, e->bt_sec, e->bt_nsec);
+        else if (e->size < 0)
             fprintf(f, "%s\t%llu\t%llu\t-\t-\t-\n", e->name, e->dev, e->ino);
         else
             fprintf(f, "%s\t%llu\t%llu\t%lld\t%lld.%09ld\t%lld.%09ld\n", e->name, e->dev, e->ino, e->size,
@@ -450,11 +483,14 @@ static void parse_line(adh_outdir *d, const char *line)
     if (got < 5 || !entry_name_ok(name))
         return;
     long long bytes = -1;
-    struct timespec mt = { 0, 0 }, ct = { 0, 0 };
-    if (strcmp(size, "-") != 0 && (got < 6 || sscanf(size, "%lld", &bytes) != 1 || bytes < 0 ||
-                                   !parse_time(mtime, &mt) || !parse_time(ctime, &ct)))
+    struct timespec mt = { 0, 0 }, ct = { 0, 0 }, bt;
+    int identity = strcmp(size, "-") == 0;
+    if (!identity && (got < 6 || sscanf(size, "%lld", &bytes) != 1 || bytes < 0 || !parse_time(mtime, &mt) ||
+                      !parse_time(ctime, &ct)))
         return;
-    add_raw(d, name, dev, ino, bytes, &mt, &ct);
+    /* a record by identity: its birth time in the last column, or '-' (a
+     * directory, a filesystem that keeps none, an adhere before it) */
+    add_raw(d, name, dev, ino, bytes, &mt, &ct, identity && got == 6 && parse_time(ctime, &bt) ? &bt : NULL);
 }
 
 /* d's manifest into its entries. One that is not a regular file of this
@@ -600,7 +636,7 @@ static int clear(adh_outdir *d, int depth, char *why, size_t whylen)
         char base[32];
         snprintf(base, sizeof base, "%.*s", (int)(dir ? len - 1 : len), e->name);
         struct stat st;
-        if (fstatat(d->fd, base, &st, AT_SYMLINK_NOFOLLOW) != 0 || !same(e, &st) || (dir && depth > 0)) {
+        if (fstatat(d->fd, base, &st, AT_SYMLINK_NOFOLLOW) != 0 || !same(d, e, base, &st) || (dir && depth > 0)) {
             drop_entry(d, i);
             continue;
         }
@@ -731,7 +767,7 @@ static void prune(adh_outdir *d)
         char base[32];
         snprintf(base, sizeof base, "%.*s", (int)(e->name[len - 1] == '/' ? len - 1 : len), e->name);
         struct stat st;
-        int here = fstatat(d->fd, base, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(e, &st);
+        int here = fstatat(d->fd, base, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(d, e, base, &st);
         if (here && owned_temporary(base) && unlinkat(d->fd, base, 0) == 0)
             here = 0;
         if (!here)
@@ -1035,7 +1071,7 @@ static void clear_unstaged(adh_outdir *d)
         struct stat st;
         if (staged_now(d, e->name) || (len && e->name[len - 1] == '/'))
             continue;
-        if (fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(e, &st))
+        if (fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) == 0 && same(d, e, e->name, &st))
             unlinkat(d->fd, e->name, 0);
         drop_entry(d, i);
     }
@@ -1053,7 +1089,7 @@ size_t adh_outdir_earlier(const adh_outdir *d, const char *suffix, char *buf, si
         struct stat st;
         if (staged_now(d, e->name) || e->name[n - 1] == '/' || owned_temporary(e->name) || n < ns ||
             (suffix && strcmp(e->name + n - ns, suffix)) || fstatat(d->fd, e->name, &st, AT_SYMLINK_NOFOLLOW) != 0 ||
-            !same(e, &st))
+            !same(d, e, e->name, &st))
             continue;
         if (o + n + 3 <= len) {   /* room for ", " and the name: else cut there */
             if (count)

@@ -153,6 +153,16 @@ rm -r "$TMP/whole/run-7"
 echo mine >"$TMP/whole/notes.txt"
 echo cut >"$TMP/whole/.runs.tsv.Kil1ed" && reprove "$TMP/whole" .runs.tsv.Kil1ed
 echo mine >"$TMP/whole/.sweep.tsv.Mine12"
+# a temporary recorded as adhere records one, before a byte goes into it:
+# by identity and birth time; one a killed run left goes, and one the user
+# removed and made again under its name (the filesystem giving it the freed
+# inode, played by the record's inode: the user's file there now, born a
+# second after the temporary) stays: the identity alone removed it
+idrec() { printf '%s	%s	-	-	%s
+' "$2" "$(stat --printf '%d	%i' "$1/$2")" "$3" >>"$1/.adhere-manifest"; }
+echo cut >"$TMP/whole/.runs.tsv.Kil3ed" && idrec "$TMP/whole" .runs.tsv.Kil3ed "$(stat --printf '%.9W' "$TMP/whole/.runs.tsv.Kil3ed")"
+echo mine >"$TMP/whole/.map.png.Mine34" &&
+    idrec "$TMP/whole" .map.png.Mine34 "$(stat --printf '%.9W' "$TMP/whole/.map.png.Mine34" | awk '{printf "%.9f", $1 - 1}')"
 "$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/whole" 2>"$TMP/resume.err"
 rc=$?
 check "the rerun exits 0 ($rc)" [ "$rc" -eq 0 ]
@@ -175,6 +185,10 @@ check "... the killed run's temporary is gone with its record" \
     sh -c "[ ! -e '$TMP/whole/.runs.tsv.Kil1ed' ] && ! grep -q Kil1ed '$TMP/whole/.adhere-manifest'"
 check "... the user's files stay (notes.txt, .sweep.tsv.Mine12)" \
     sh -c "[ \"\$(cat '$TMP/whole/notes.txt')\" = mine ] && [ \"\$(cat '$TMP/whole/.sweep.tsv.Mine12')\" = mine ]"
+check "... a temporary recorded by identity and birth time is gone with its record (.runs.tsv.Kil3ed)" \
+    sh -c "[ ! -e '$TMP/whole/.runs.tsv.Kil3ed' ] && ! grep -q Kil3ed '$TMP/whole/.adhere-manifest'"
+check "... the user's file made under a temporary's name on its inode, born after it, stays (.map.png.Mine34)" \
+    sh -c "[ \"\$(cat '$TMP/whole/.map.png.Mine34' 2>/dev/null)\" = mine ] && ! grep -q Mine34 '$TMP/whole/.adhere-manifest'"
 
 # --- a study of another build: never resumed, its rows never mixed ---
 # (the numerics id is the Makefile's hash of the sources that decide the
@@ -205,6 +219,22 @@ sed -i '/^numerics\t/d' "$TMP/build/study.tsv" && reprove "$TMP/build" study.tsv
 rc=$?
 check "a study.tsv with no numerics id (before ids): exit 2, said so, the same advice ($rc: $(cat "$TMP/err"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'numerics there: none, its study.tsv predates numerics ids' '$TMP/err' && grep -q -- '--overwrite' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv'"
+# an id line this build cannot read (garbled, or another build's form), or
+# two of them: this study (its fingerprint) of a build unknown, refused
+# alike; it was taken for another study's and cleared, the study run again
+# without --overwrite ("line 4 is not adhere's; starting the study afresh")
+for what in 'an id in capitals' 'two ids, this build'"'"'s second'; do
+    case $what in
+    an*) idline='numerics\t0123456789ABCDEF' ;;
+    *) idline="numerics\t0123456789abcdef\nnumerics\t$NUMERICS" ;;
+    esac
+    sed -i '/^numerics\t/d' "$TMP/build/study.tsv" && sed -i "s/^fingerprint\t.*/&\n$idline/" "$TMP/build/study.tsv" &&
+        reprove "$TMP/build" study.tsv
+    "$ADHERE" $TINY "$TMP/map.scene" -o "$TMP/build" 2>"$TMP/err"
+    rc=$?
+    check "a study.tsv of this study with $what: exit 2, nothing run or changed ($rc: $(head -c 400 "$TMP/err"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q 'numerics there: unreadable' '$TMP/err' && grep -q -- '--overwrite' '$TMP/err' && ! grep -q '^adhere: run ' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv'"
+done
 "$ADHERE" $TINY "$TMP/map.scene" --overwrite -o "$TMP/build" 2>"$TMP/err"
 rc=$?
 ran=$(grep -c '^adhere: run [0-9]* of 16' "$TMP/err")

@@ -47,6 +47,22 @@ int main(void)
     refused("k = 0", adh_visco_drive_validate(&e, why, sizeof why), why, "spring k = 0");
     e = d, e.dwell = -1;
     refused("dwell < 0", adh_visco_drive_validate(&e, why, sizeof why), why, "dwell = -1");
+    /* a value just outside its range is named with the digits that show it
+     * outside: %g's six rounded 0.00099999999 N/m onto the floor, "spring k
+     * = 0.001 N/m is not allowed: it must be from 0.001" */
+    e = d, e.spring = 0.00099999999;
+    refused("k just under the floor", adh_visco_drive_validate(&e, why, sizeof why), why, "spring k = 0.00099999999 N/m");
+    e = d, e.spring = 10000.0001;
+    refused("k just over the ceiling", adh_visco_drive_validate(&e, why, sizeof why), why, "spring k = 10000.0001 N/m");
+    e = d, e.speed_in = 1.0000001;
+    refused("approach speed just over 1 m/s", adh_visco_drive_validate(&e, why, sizeof why), why,
+            "approach speed 1.0000001 m/s");
+    e = d, e.dwell = 1000000.01;
+    refused("dwell just over 1e6 s", adh_visco_drive_validate(&e, why, sizeof why), why, "dwell = 1000000.01 s");
+    v = good, v.tau = 1000000.1;
+    refused("tau just over 1e6 s", adh_sls_validate(&v, why, sizeof why), why, "tau = 1000000.1 s");
+    v = good, v.E0 = 999.9999999;
+    refused("E0 just under 1 kPa", adh_sls_validate(&v, why, sizeof why), why, "E0 = 999.9999999 Pa");
     adh_visco_settings s = adh_visco_settings_default();
     s.tol = 0;
     refused("tolerance 0", adh_visco_settings_validate(&s, why, sizeof why), why, "tolerance 0");
