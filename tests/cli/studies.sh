@@ -211,6 +211,11 @@ check "a rerun on a study of another numerics id: exit 2, both ids named ($rc: $
     sh -c "[ $rc -eq 2 ] && grep -q 'another build of adhere (numerics there: 0123456789abcdef; this adhere.s: $NUMERICS)' '$TMP/err'"
 check "... what to do said: a new -o, or --overwrite to run it again from scratch" \
     sh -c "grep -q 'give a new -o' '$TMP/err' && grep -q -- '--overwrite to run the study again from scratch' '$TMP/err'"
+# --overwrite removes more than adhere recorded (every file under its names,
+# a killed run's temporaries too): the advice says so, as adhere(1) does
+check "... and what --overwrite removes: every file under adhere's names, written by it or not, as adhere(1) says" \
+    sh -c "grep -qF \"it removes every file there under adhere's names, whether adhere wrote it or not\" '$TMP/err' &&
+           grep -qF \"a killed run's temporaries, as --overwrite in adhere(1) says; other files stay\" '$TMP/err'"
 check "... nothing run, nothing changed (runs.tsv, study.tsv's id)" \
     sh -c "! grep -q '^adhere: run ' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv' && grep -qx 'numerics	0123456789abcdef' '$TMP/build/study.tsv'"
 # a study.tsv from before adhere recorded the id: an unknown build
@@ -235,8 +240,12 @@ for what in 'an id in capitals' 'two ids, this build'"'"'s second'; do
     check "a study.tsv of this study with $what: exit 2, nothing run or changed ($rc: $(head -c 400 "$TMP/err"))" \
         sh -c "[ $rc -eq 2 ] && grep -q 'numerics there: unreadable' '$TMP/err' && grep -q -- '--overwrite' '$TMP/err' && ! grep -q '^adhere: run ' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv'"
 done
+echo theirs >"$TMP/build/.runs.tsv.Ab12Cd"   # a temporary's name, in no manifest
 "$ADHERE" $TINY "$TMP/map.scene" --overwrite -o "$TMP/build" 2>"$TMP/err"
 rc=$?
+check "... --overwrite's note says what it removes, and it did: the unrecorded temporary's name went too" \
+    sh -c "grep -qF -- \"--overwrite: it removes every file there under adhere's names, whether adhere wrote it or not\" '$TMP/err' &&
+           [ ! -e '$TMP/build/.runs.tsv.Ab12Cd' ]"
 ran=$(grep -c '^adhere: run [0-9]* of 16' "$TMP/err")
 check "--overwrite: exit $rc, the whole study run again from scratch ($ran runs stepped, none kept)" \
     sh -c "[ $rc -eq 0 ] && [ $ran -eq 16 ] && ! grep -q 'done before' '$TMP/err' && grep -q 'runs again from scratch' '$TMP/err'"
