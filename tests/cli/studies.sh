@@ -138,6 +138,31 @@ check "... its sweep.tsv committed (a new file, 16 rows)" \
 check "... the earlier merge's map.png, this table's, left in place as it was, and said so" \
     sh -c "cmp -s '$TMP/mfig.png' '$TMP/mfig/map.png' && grep -q 'the earlier map.png left in place: drawn from this table' '$TMP/err'"
 check "... no temporary left" sh -c "! ls -a '$TMP/mfig' | grep -v '^\.adhere-manifest\$' | grep -q '^\.[^.]'"
+# The earlier table is compared as it streams by, never held: an earlier
+# sweep.tsv of 104 MB (this table, its seconds column padded with 6.5 MB of
+# zeros a row: the column the comparison leaves out) under ulimit -v 225 MB
+# (adhere itself takes some 80 MB here), where holding it and its cut copy
+# (208 MB and more) cannot fit: the figure is kept; with one other field
+# changed in its last row, removed.
+awk -F'\t' -v OFS='\t' -v same="$TMP/big-same.tsv" -v other="$TMP/big-other.tsv" '
+    BEGIN {z = "0"; while (length(z) < 6500000) z = z z; z = substr(z, 1, 6500000)}
+    /^#/ {print >same; print >other; next}
+    !col {for (i = 1; i <= NF; i++) if ($i == "seconds") col = i; print >same; print >other; next}
+    {$col = $col z; print >same; n++; if (n == 16) $1 = $1 "0"; print >other}' "$TMP/mfig/sweep.tsv"
+big=$(wc -c <"$TMP/big-same.tsv")
+for what in same other; do
+    cp "$TMP/big-$what.tsv" "$TMP/mfig/sweep.tsv" && reprove "$TMP/mfig" sweep.tsv
+    (trap '' XFSZ; ulimit -f "$lim" && ulimit -v 230400 && exec "$ADHERE" merge -o "$TMP/mfig" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3") 2>"$TMP/err"
+    rc=$?
+    if [ $what = same ]; then
+        check "an earlier sweep.tsv of $big bytes, this table but for its seconds, under ulimit -v 225 MB: exit 3, map.png kept ($rc: $(tail -n 1 "$TMP/err"))" \
+            sh -c "[ $rc -eq 3 ] && [ $big -gt 104000000 ] && cmp -s '$TMP/mfig.png' '$TMP/mfig/map.png' && grep -q 'the earlier map.png left in place: drawn from this table' '$TMP/err'"
+    else
+        check "... another table's (its last row's run changed): map.png removed, said so ($rc: $(tail -n 1 "$TMP/err"))" \
+            sh -c "[ $rc -eq 3 ] && [ ! -e '$TMP/mfig/map.png' ] && grep -q \"the earlier merge's map.png removed: drawn from another table\" '$TMP/err'"
+    fi
+done
+rm -f "$TMP/big-same.tsv" "$TMP/big-other.tsv"
 (trap '' XFSZ; ulimit -f "$lim" && exec "$ADHERE" merge -o "$TMP/epsm" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3") 2>"$TMP/err"
 rc=$?
 check "the same into an eps study's merge: exit 3, its force.png (another table's) removed, said so ($rc: $(head -c 400 "$TMP/err"))" \
