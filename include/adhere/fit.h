@@ -89,6 +89,9 @@ typedef struct adh_fit_result {
     double noise;            /* the data's own scatter (adh_fit_noise), N */
     double chi2_red;         /* chi2 / (noise^2 (n - nfree)): about 1 when the model fits */
     size_t evals, failed;    /* model evaluations, and those that failed */
+    int model_status;        /* the last failed evaluation's status (ADH_SUCCESS: none failed) */
+    char model_why[400];     /* and why it failed, as a run's adh_run.why says it; "" */
+    unsigned model_fix;      /* its ADH_FIX_* bits */
     size_t iterations;
     double seconds;
     int gsl_info;            /* why it stopped: 1 small step (xtol), 2 small gradient, 3 no step

@@ -74,6 +74,11 @@ void adh_fit_model_free(adh_fit_model *fm);
 int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, const adh_fit_data *d, double *F,
                        double *slope);
 
+/* Why the last evaluation failed, as a run's adh_run.why says it (what
+ * stopped the curve, where), and in *fix (may be NULL) its ADH_FIX_* bits;
+ * "" when it succeeded or nothing more than its status is known. */
+const char *adh_fit_model_why(const adh_fit_model *fm, unsigned *fix);
+
 /* The branches of the last successful evaluation, ascending in h0: 0 the
  * outer (static) or loading (relaxation) branch, 1 the contact or
  * unloading branch. Their length; *h0 and *F borrowed. */

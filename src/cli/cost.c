@@ -53,6 +53,7 @@ typedef struct cost_run {
     double pulloff, jump_in, hysteresis, a_turn;
     double err[4];        /* against the most accurate run */
     double err_static[4]; /* pull-off, jump-in, hysteresis and a at the turn against the static curve */
+    char reason[600];     /* why a run that stopped on an error stopped (summary.tsv's stop_reason); "" else */
 } cost_run;
 
 /* The static curve every eps should approach, solved on this thread while
@@ -64,6 +65,7 @@ typedef struct cost_ref {
     int status;
     int resolved;
     char why[512];       /* why the grid does not resolve it; "" when it does */
+    char stopped[600];   /* "STATUS: REASON" of a curve that stopped on an error; "" else */
     double hysteresis;   /* J; NAN when the curve failed */
     double a_turn;       /* m; NAN when the curve failed */
 } cost_ref;
@@ -136,6 +138,8 @@ static void *worker(void *arg)
         if (run.interrupted)
             cr->status = ADH_CONTINUE;
         measure(cr, &run);
+        if (cr->status != ADH_CONTINUE && cr->status == run.status)
+            cli_tables_stop_reason(&run, cr->reason, sizeof cr->reason);
         adh_run_free(&run);
         adh_kernel_free(k);
         adh_grid_free(g);
@@ -148,6 +152,10 @@ static void *worker(void *arg)
                     "%zu of %zu done, %s\n", i + 1, job->n, cr->nodes, adh_kernel_name(cr->kernel), cr->eps * 1e12,
                     cr->seconds, cr->iterations, job->done, job->n, pr);
         }
+        /* not hidden by -q, as a study's: the row's numbers end where it stopped */
+        if (cr->reason[0])
+            fprintf(stderr, "adhere: cost run %zu (N = %zu, eps = %g pm) stopped: %s\n", i + 1, cr->nodes, cr->eps * 1e12,
+                    cr->reason);
         /* not hidden by -q: the row's error then measures the cap, not eps */
         if (cr->unconverged)
             fprintf(stderr, "adhere: warning: cost run %zu (N = %zu, eps = %g pm): %zu of %zu steps reached the "
@@ -162,7 +170,7 @@ static int parse_lists(const cli_options *cli, double *eps, size_t *neps, size_t
 {
     const char *el = cli->cost_eps[0] ? cli->cost_eps : "2pm,1pm,0.5pm,0.2pm,0.1pm";
     const char *nl = cli->cost_nodes[0] ? cli->cost_nodes : "500,1000,2000";
-    char buf[256], msg[256], *save = NULL;
+    char buf[256], msg[256] = "", *save = NULL;
     *neps = *nnodes = 0;
     snprintf(buf, sizeof buf, "%s", el);
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
@@ -218,17 +226,19 @@ static int write_cost(FILE *f, const void *ctx)
         fprintf(f, "# PARTIAL: %s\n", job->partial);
     fprintf(f, "# static curve's hysteresis (eps -> 0, displacement control): %.17g J\n", job->ref->hysteresis);
     fprintf(f, "# static curve's contact radius at the turn: %.17g m\n", job->ref->a_turn);
+    if (job->ref->stopped[0])
+        fprintf(f, "# static curve stopped: %s\n", job->ref->stopped);
     if (!job->ref->resolved)
         fprintf(f, "# static curve NOT resolved (%s): static_err_* are no verdict\n", job->ref->why);
     fputs("kernel\tnodes\teps\tseconds\tkernel_seconds\titerations\tsteps\tunconverged\tpulloff_F\tjump_in_h0\thysteresis\ta_turn\t"
           "err_pulloff\terr_jump_in\terr_hysteresis\terr_a_turn\tstatic_err_pulloff\tstatic_err_jump_in\tstatic_err_hysteresis\tstatic_err_a_turn\tstatus\n", f);
     for (size_t i = 0; i < job->n; i++) {
         const cost_run *r = &job->runs[i];
-        fprintf(f, "%s\t%zu\t%.6g\t%.6g\t%.6g\t%zu\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n",
+        fprintf(f, "%s\t%zu\t%.6g\t%.6g\t%.6g\t%zu\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s%s%s\n",
                 adh_kernel_name(r->kernel), r->nodes, r->eps, r->seconds, r->kernel_seconds, r->iterations, r->steps,
                 r->unconverged, r->pulloff, r->jump_in, r->hysteresis, r->a_turn, r->err[0], r->err[1], r->err[2],
                 r->err[3], r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3],
-                cost_status(r));
+                cost_status(r), r->reason[0] ? ": " : "", r->reason);
     }
     return 0;
 }
@@ -357,6 +367,11 @@ static void cost_static_reference(const adh_config *cfg, size_t finest, cost_ref
     if (srun.interrupted)
         ref->status = ADH_EINTR;   /* part of a curve is no reference */
     int ok = ref->status == ADH_SUCCESS;
+    if (!ok && !srun.interrupted) {
+        char reason[560];
+        snprintf(ref->stopped, sizeof ref->stopped, "%s%s%s", adh_strerror(ref->status),
+                 *cli_tables_stop_reason(&srun, reason, sizeof reason) ? ": " : "", reason);
+    }
     /* a fine h0 grid: lattice-trapping legs are far shorter than d */
     ref->hysteresis = ok ? cli_tables_static_hysteresis(&srun, &ref->spec.mat) : NAN;
     /* the curve ends at the (deepest) turn: its contact radius there */
@@ -413,13 +428,16 @@ static void cost_errors(cost_job *job, const cost_run *best, const cost_ref *ref
     job->ref = ref;
 }
 
-static const char *cost_note(const cost_run *r)
+static const char *cost_note(const cost_run *r, char *buf, size_t len)
 {
     if (!r->ran)
         return "  (not run)";
     if (r->status == ADH_SUCCESS)
         return r->unconverged ? "  (some steps at the cap)" : "";
-    return r->status == ADH_CONTINUE ? "  (interrupted)" : "  (failed)";
+    if (r->status == ADH_CONTINUE)
+        return "  (interrupted)";
+    snprintf(buf, len, "  (failed%s%s)", r->reason[0] ? ": " : "", r->reason);
+    return buf;
 }
 
 /* The report on standard output. */
@@ -434,10 +452,11 @@ static void cost_print(const cost_job *job, const cost_run *best, const cost_ref
     printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
            job->n, started ? started : 1, sysconf(_SC_NPROCESSORS_ONLN), rule);
     printf("BLAS: %s\nreference: N = %zu, %s kernel, eps = %g pm; static curve (N = %zu, ring): pull-off %.4g N, jump-in %.4g nm, "
-           "hysteresis %s, a at the turn %.4g um%s\n",
+           "hysteresis %s, a at the turn %.4g um%s%s%s\n",
            blas_config(), best->nodes, adh_kernel_name(best->kernel), best->eps * 1e12, ref->spec.grid.use.nodes,
            ref->res.pulloff_F, ref->res.jump_in_h0 * 1e9, adh_qtext(ref->hysteresis, ADH_Q_WORK).s, ref->a_turn * 1e6,
-           ref->status == ADH_SUCCESS ? "" : " (failed)");
+           ref->status == ADH_SUCCESS ? "" : ref->stopped[0] ? " (failed: " : " (failed)", ref->stopped,
+           ref->stopped[0] ? ")" : "");
     if (!ref->resolved)
         printf("the static curve is NOT resolved on that grid (%s): its st.* errors are no verdict\n", ref->why);
     printf("\n%-6s %6s %7s %9s %11s %12s %10s %11s %9s | %8s %8s %8s %8s | %8s %8s %8s %8s\n", "kernel", "N", "eps/pm",
@@ -445,10 +464,11 @@ static void cost_print(const cost_job *job, const cost_run *best, const cost_ref
            "a_turn", "st.pull", "st.jump", "st.hyst", "st.a");
     for (size_t i = 0; i < job->n; i++) {
         const cost_run *r = &job->runs[i];
+        char note[640];
         printf("%-6s %6zu %7.3g %9.3f %11zu %12.5g %10.4g %11.5g %9.4g | %8.2e %8.2e %8.2e %8.2e | %8.2e %8.2e %8.2e %8.2e%s\n",
                adh_kernel_name(r->kernel), r->nodes, r->eps * 1e12, r->seconds, r->iterations, r->pulloff * 1e6,
                r->jump_in * 1e9, r->hysteresis * 1e15, r->a_turn * 1e6, r->err[0], r->err[1], r->err[2], r->err[3],
-               r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3], cost_note(r));
+               r->err_static[0], r->err_static[1], r->err_static[2], r->err_static[3], cost_note(r, note, sizeof note));
     }
 }
 

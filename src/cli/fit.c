@@ -251,6 +251,9 @@ int cli_fit_main(cli_options *cli)
                 adh_outdir_path(od), adh_outdir_path(od));
     else if (!cfg->output.quiet)
         fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s\n", word, fr.evals, res.seconds);
+    char stop[700];
+    if (!isfinite(res.chi2) && *cli_fit_model_stop(&res, fr.fs.model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))   /* not hidden by -q: no fit */
+        fprintf(stderr, "adhere: the model stopped: %s\n", stop);
     adh_outdir_close(od);
     adh_fit_free(f);
     adh_fitdata_free(&fr.fd);

@@ -37,6 +37,12 @@ typedef struct cli_fit_report {
  * "failed": the verdict, and 0 when it is a fit. */
 int cli_fit_verdict(const cli_fit_report *r, const char **word);
 
+/* Why the fit's last failed model evaluation stopped, as a run's stop is
+ * said: "STATUS: REASON (--flag)" in fit's flags (relax_model: the fit's
+ * model is the relaxation), the status alone where the model gave no
+ * reason, "" when none failed. Written to buf, which is returned. */
+const char *cli_fit_model_stop(const adh_fit_result *res, int relax_model, char *buf, size_t len);
+
 /* The report on out (standard output). */
 void cli_fit_print(FILE *out, const cli_fit_report *r);
 /* fit-points.tsv, best.scene, fit.png (unless plot is 0) and fit.tsv into

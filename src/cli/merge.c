@@ -1,3 +1,4 @@
+#define _GNU_SOURCE   /* fopencookie(3) */
 #ifndef _DEFAULT_SOURCE
 #define _DEFAULT_SOURCE   /* flock(2) */
 #endif
@@ -312,56 +313,118 @@ static int open_out(merge *m, char *why, size_t whylen)
     return 0;
 }
 
-/* The index (from 0) of the field name on the line p..end, or -1. */
-static long field_index(const char *p, const char *end, const char *name)
+/* A table's text without its seconds column (the header's column of that
+ * name, cut from every line that is not a comment: a run's timing, the
+ * one column two merges of one study's shards may differ in), cut as it
+ * streams by, a byte at a time: neither table is held. */
+typedef struct seconds_cut {
+    long col;          /* the seconds column; -2 before the header, -1: none */
+    long f;            /* the field of the current row */
+    int start, pass;   /* at a line's start; the line is a comment or empty */
+    int header;        /* the current row is the header */
+    char name[8];      /* the header's current field, until it is known not to be "seconds" */
+    size_t nlen;       /* its length so far; > 7: not "seconds", passed on as it comes */
+} seconds_cut;
+
+#define SECONDS_CUT_INIT { .col = -2, .start = 1 }
+
+/* The tab that joins field f of a row to the ones before it, kept. */
+static size_t cut_tab(const seconds_cut *c, long f, char *out)
 {
-    size_t len = strlen(name);
-    for (long f = 0;; f++) {
-        const char *t = memchr(p, '\t', (size_t)(end - p)), *fe = t ? t : end;
-        if ((size_t)(fe - p) == len && !memcmp(p, name, len))
-            return f;
-        if (!t)
-            return -1;
-        p = t + 1;
-    }
+    return f && f != c->col && !(f == 1 && c->col == 0) ? (out[0] = '\t', 1) : 0;
 }
 
-/* A copy of a table's text without its seconds column (the header's
- * column of that name, cut from every line that is not a comment): a
- * run's timing, the one column two merges of one study's shards may
- * differ in. NULL without memory. */
-static char *without_seconds(const char *text)
+/* The header's field ended (or outgrew "seconds"): dropped if it is the
+ * first named seconds, else passed on with its tab. */
+static size_t cut_name(seconds_cut *c, char *out)
 {
-    char *out = malloc(strlen(text) + 1), *o = out;
-    long col = -2;   /* -2: the header not read yet */
-    for (const char *p = text; out && *p;) {
-        const char *end = p + strcspn(p, "\n");
-        int row = *p != '#' && p != end;
-        if (row && col == -2)
-            col = field_index(p, end, "seconds");
-        for (long f = 0; row; f++) {   /* a row: its fields but that one */
-            const char *t = memchr(p, '\t', (size_t)(end - p)), *fe = t ? t : end;
-            if (f != col) {
-                if (f && !(f == 1 && col == 0))
-                    *o++ = '\t';
-                memcpy(o, p, (size_t)(fe - p));
-                o += fe - p;
-            }
-            if (!t)
-                break;
-            p = t + 1;
-        }
-        if (!row) {   /* a comment, as it is */
-            memcpy(o, p, (size_t)(end - p));
-            o += end - p;
-        }
-        p = end + (*end == '\n');
-        if (*end == '\n')
-            *o++ = '\n';
+    if (c->col == -2 && c->nlen == 7 && !memcmp(c->name, "seconds", 7)) {
+        c->col = c->f;
+        return 0;
     }
-    if (out)
-        *o = '\0';
-    return out;
+    size_t n = cut_tab(c, c->f, out), k = c->nlen < 8 ? c->nlen : 0;
+    memcpy(out + n, c->name, k);
+    return n + k;
+}
+
+/* One byte of a table (EOF at its end) through c: what stays of it, in
+ * out (16 bytes), and how many. */
+static size_t cut_byte(seconds_cut *c, int ch, char *out)
+{
+    if (ch == EOF && c->start)
+        return 0;
+    if (c->start) {
+        c->start = 0;
+        c->pass = ch == '#' || ch == '\n';
+        c->header = !c->pass && c->col == -2;
+        c->f = 0, c->nlen = 0;
+    }
+    if (c->pass) {
+        c->start = ch == '\n';
+        return ch == EOF ? 0 : (out[0] = (char)ch, 1);
+    }
+    size_t n = 0;
+    if (ch == '\t' || ch == '\n' || ch == EOF) {   /* the field ends */
+        if (c->header && c->nlen < 8)
+            n = cut_name(c, out);
+        if (ch == '\t') {
+            c->f++, c->nlen = 0;
+            if (!c->header && c->f != c->col)
+                n += cut_tab(c, c->f, out + n);
+            return n;
+        }
+        if (c->header && c->col == -2)
+            c->col = -1;
+        c->start = 1;
+        return ch == '\n' ? (out[n] = '\n', n + 1) : n;
+    }
+    if (c->header && c->nlen < 7) {   /* maybe "seconds": held */
+        c->name[c->nlen++] = (char)ch;
+        return 0;
+    }
+    if (c->header && c->nlen == 7) {   /* longer: not it */
+        n = cut_name(c, out);
+        c->nlen = 8;
+    }
+    if (c->f != c->col || c->header)
+        out[n++] = (char)ch;
+    return n;
+}
+
+/* The earlier table, cut, read as the new one is written to compare. */
+typedef struct earlier_cmp {
+    FILE *was;
+    seconds_cut now_cut, was_cut;
+    char q[16];          /* the earlier table's cut bytes not compared yet */
+    size_t qn, qi;
+    int differ;
+} earlier_cmp;
+
+/* The earlier table's next byte once cut, or EOF. */
+static int earlier_next(earlier_cmp *e)
+{
+    while (e->qi == e->qn) {
+        int ch = getc(e->was);
+        e->qi = 0;
+        e->qn = cut_byte(&e->was_cut, ch, e->q);
+        if (ch == EOF && e->qn == 0)
+            return EOF;
+    }
+    return (unsigned char)e->q[e->qi++];
+}
+
+/* The new table's bytes, as cli_studyrow_table writes them (a cookie
+ * stream's write), compared with the earlier table's as they come. */
+static ssize_t earlier_write(void *ctx, const char *buf, size_t size)
+{
+    earlier_cmp *e = ctx;
+    char out[16];
+    for (size_t i = 0; i < size && !e->differ; i++) {
+        size_t n = cut_byte(&e->now_cut, (unsigned char)buf[i], out);
+        for (size_t k = 0; k < n && !e->differ; k++)
+            e->differ = earlier_next(e) != (unsigned char)out[k];
+    }
+    return (ssize_t)size;
 }
 
 /* The largest earlier sweep.tsv compared: 10^5 rows of some 1 kB, with room. */
@@ -369,26 +432,30 @@ static char *without_seconds(const char *text)
 
 /* Whether -o's sweep.tsv (an earlier merge's, adhere's own) holds the
  * table t writes but for its seconds column: then the earlier figure is
- * this table's. */
+ * this table's. Streamed, both tables a byte at a time through their
+ * cuts: a few kB, however long the earlier one (held whole, and cut into
+ * copies, it took some four times its size). */
 static int earlier_same(const merge *m, const cli_studyrow_sweep *t)
 {
-    char *now = NULL, *was = NULL;
-    size_t nlen = 0;
-    FILE *f = adh_outdir_has(m->out, "sweep.tsv") ? open_memstream(&now, &nlen) : NULL;
-    if (!f)
-        return 0;
-    cli_studyrow_table(f, t);
-    fclose(f);
-    FILE *e = adh_outdir_read(adh_outdir_fd(m->out), "sweep.tsv");
+    earlier_cmp e = { .now_cut = SECONDS_CUT_INIT, .was_cut = SECONDS_CUT_INIT };
     struct stat st;
-    if (e && fstat(fileno(e), &st) == 0 && st.st_size < EARLIER_MAX && (was = calloc((size_t)st.st_size + 1, 1)))
-        was[fread(was, 1, (size_t)st.st_size, e)] = '\0';
-    if (e)
-        fclose(e);
-    char *a = now ? without_seconds(now) : NULL, *b = was ? without_seconds(was) : NULL;
-    int same = a && b && !strcmp(a, b);
-    free(now), free(was), free(a), free(b);
-    return same;
+    if (!adh_outdir_has(m->out, "sweep.tsv") || !(e.was = adh_outdir_read(adh_outdir_fd(m->out), "sweep.tsv")))
+        return 0;
+    FILE *f = NULL;
+    if (fstat(fileno(e.was), &st) == 0 && st.st_size < EARLIER_MAX)
+        f = fopencookie(&e, "w", (cookie_io_functions_t){ .write = earlier_write });
+    if (f) {
+        cli_studyrow_table(f, t);
+        int bad = fflush(f) != 0;
+        char out[16];
+        size_t n = cut_byte(&e.now_cut, EOF, out);   /* a last line without its newline */
+        for (size_t k = 0; k < n && !e.differ; k++)
+            e.differ = earlier_next(&e) != (unsigned char)out[k];
+        e.differ |= bad || ferror(e.was) || earlier_next(&e) != EOF;   /* nothing more in the earlier one */
+        fclose(f);
+    }
+    fclose(e.was);
+    return f && !e.differ;
 }
 
 /* A figure not written: what became of the earlier merge's figures

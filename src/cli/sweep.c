@@ -311,24 +311,29 @@ static void *worker(void *arg)
 
 /* ---- the study's directory ------------------------------------------------- */
 
+/* What --overwrite removes (adh_outdir_clear with ADH_OUTDIR_OVERWRITE), in
+ * the man page's words under --overwrite: not only what adhere recorded. */
+#define OVERWRITE_REMOVES "it removes every file there under adhere's names, whether adhere wrote it or not: a " \
+    "user's, an edited table, a link, a killed run's temporaries, as --overwrite in adhere(1) says; other files stay"
+
 /* This study's shard in od, computed by another build (there: its numerics
  * id as shown, not st's, or none recorded, or none this build reads):
  * refused (-1 with why), its rows never mixed with this build's; with
- * --overwrite its files go and the study runs again from scratch (0). */
+ * --overwrite every file under adhere's names goes and the study runs again from scratch (0). */
 static int other_build(const cli_study *st, const char *there, adh_outdir *od, char *why, size_t whylen)
 {
     const char *path = adh_outdir_path(od);
     char ids[200];
     snprintf(ids, sizeof ids, "numerics there: %s; this adhere's: %s", there, st->numerics);
     if (!st->cfg->output.overwrite) {
-        snprintf(why, whylen, "%.500s holds this study computed by another build of adhere (%s): its rows are not "
+        snprintf(why, whylen, "%.300s holds this study computed by another build of adhere (%s): its rows are not "
                  "mixed with this build's; give a new -o to keep them, or --overwrite to run the study again from "
-                 "scratch there (the files adhere wrote in it are removed)", path, ids);
+                 "scratch there (" OVERWRITE_REMOVES ")", path, ids);
         return -1;
     }
     if (!st->cfg->output.quiet)
         fprintf(stderr, "adhere: note: %s holds this study computed by another build of adhere (%s): --overwrite: "
-                "the files adhere wrote there are removed, the study runs again from scratch\n", path, ids);
+                OVERWRITE_REMOVES "; the study runs again from scratch\n", path, ids);
     return adh_outdir_clear(od, why, whylen) == 0 ? 0 : -1;
 }
 

@@ -115,17 +115,23 @@ const char *cli_tables_summary_word(const cli_tables *t)
     return !strcmp(word, "success") && t->unwritten && *t->unwritten ? "output incomplete" : word;
 }
 
+const char *cli_tables_reason(const char *why, unsigned fix, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", why);
+    for (char *p = buf; *p; p++)
+        if ((unsigned char)*p < 0x20 || *p == 0x7f)
+            *p = ' ';
+    if (buf[0])
+        cli_advice_append(buf, len, fix);
+    return buf;
+}
+
 const char *cli_tables_stop_reason(const adh_run *r, char *buf, size_t len)
 {
     buf[0] = '\0';
     if (r->interrupted || r->status == ADH_SUCCESS || !r->why[0])
         return buf;
-    snprintf(buf, len, "%s", r->why);
-    for (char *p = buf; *p; p++)
-        if ((unsigned char)*p < 0x20 || *p == 0x7f)
-            *p = ' ';
-    cli_advice_append(buf, len, r->fix);
-    return buf;
+    return cli_tables_reason(r->why, r->fix, buf, len);
 }
 
 static void kv(FILE *f, const char *k, double v)

@@ -47,6 +47,9 @@ const char *cli_tables_summary_word(const cli_tables *t);
  * the flags of its ADH_FIX_* bits; "" for a run that finished or was
  * interrupted. Written to buf, which is returned. */
 const char *cli_tables_stop_reason(const adh_run *r, char *buf, size_t len);
+/* A core's reason (why, fix: adh_run.why and .fix, or the like) in those
+ * words: control bytes as spaces, the flags for fix added; "" for "". */
+const char *cli_tables_reason(const char *why, unsigned fix, char *buf, size_t len);
 /* Appends name (or a comma-separated list) to the comma-separated list in
  * buf; what does not fit is left off whole names at a time. */
 void cli_tables_names_add(char *buf, size_t len, const char *name);

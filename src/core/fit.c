@@ -65,6 +65,8 @@ struct adh_fit {
     double *best_r, *best_F, best_chi2, best_theta[ADH_FIT_NPARAM];
     size_t evals, failed, iters;
     int stop, model_status;
+    char model_why[400];            /* the last failed evaluation's reason (adh_fit_model_why) */
+    unsigned model_fix;
     double xcur[ADH_FIT_NPARAM], se[ADH_FIT_NPARAM];   /* the accepted point, its standard errors */
     int have_se, converged;
     struct timespec t0;
@@ -127,10 +129,12 @@ static int residuals(adh_fit *f, const double *theta, double *r, double *slope, 
         if (rc != ADH_SUCCESS) {
             f->failed++;
             refused = 1;
-            if (rc == ADH_EINTR)
+            if (rc == ADH_EINTR) {
                 f->stop = 1;
-            else
+            } else {
                 f->model_status = rc;
+                snprintf(f->model_why, sizeof f->model_why, "%s", adh_fit_model_why(f->fm, &f->model_fix));
+            }
         }
     }
     if (!refused) {
@@ -401,6 +405,9 @@ static void fill_result(adh_fit *f, adh_fit_result *res)
     res->chi2_red = f->best_chi2 / (res->noise * res->noise * (double)(f->d->n - f->p));
     res->evals = f->evals;
     res->failed = f->failed;
+    res->model_status = f->model_status;
+    snprintf(res->model_why, sizeof res->model_why, "%s", f->model_why);
+    res->model_fix = f->model_fix;
     res->iterations = f->iters;
     res->seconds = elapsed(&f->t0);
 }
@@ -438,6 +445,8 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
     f->evals = f->failed = f->iters = 0;
     f->stop = f->converged = f->have_se = 0;
     f->model_status = ADH_SUCCESS;
+    f->model_why[0] = '\0';
+    f->model_fix = 0;
     memset(f->best_theta, 0, sizeof f->best_theta);
     gsl_multifit_nlinear_fdf fdf = { .f = gsl_f, .df = gsl_df, .fvv = NULL, .n = n, .p = p, .params = f };
     gsl_multifit_nlinear_parameters par = gsl_multifit_nlinear_default_parameters();

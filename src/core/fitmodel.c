@@ -3,11 +3,13 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_interp.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "adhere/observe.h"
 #include "adhere/protocol.h"
+#include "adhere/rings.h"
 #include "adhere/rule.h"
 #include "adhere/run.h"
 #include "adhere/runner.h"
@@ -32,6 +34,8 @@ struct adh_fit_model {
     double *h0, *F;
     int *stable;
     branch b[2];
+    char why[400];               /* why the last evaluation failed, as a run says it; "" */
+    unsigned fix;                /* its ADH_FIX_* bits */
 };
 
 adh_fit_model_settings adh_fit_model_settings_default(void)
@@ -248,6 +252,14 @@ static int eval_static(adh_fit_model *fm, const adh_material *m, double lo, doub
     }
     if (rc == ADH_SUCCESS && !fm->first_points)
         fm->first_points = fm->n;
+    if (rc == ADH_EGRID) {   /* the rings word the grid's edge, as in a run */
+        const adh_state *st = adh_static_state(fm->w);
+        double a = adh_contact_radius(fm->g, st->h, m->z0);
+        adh_rings_edge_sentence(fm->g, a, fm->why, sizeof fm->why);
+        fm->fix = adh_rings_edge_fix(fm->g, a);
+    } else if (rc != ADH_SUCCESS) {
+        snprintf(fm->why, sizeof fm->why, "%s", adh_static_why(fm->w, &fm->fix));
+    }
     return rc == ADH_SUCCESS ? static_branches(fm) : rc;
 }
 
@@ -261,6 +273,10 @@ static int eval_relax(adh_fit_model *fm, const adh_material *m, double lo)
     int rc = adh_runner_rule(&adh_rule_relax, fm->g, fm->k, m, &fm->s.relax, &ps, NULL, NULL, &run);
     if (rc == ADH_SUCCESS && run.interrupted)
         rc = ADH_EINTR;
+    if (rc != ADH_SUCCESS && rc != ADH_EINTR && !run.interrupted) {
+        snprintf(fm->why, sizeof fm->why, "%s", run.why);
+        fm->fix = run.fix;
+    }
     size_t *idx = malloc((run.nrows ? run.nrows : 1) * sizeof *idx);
     if (!idx && rc == ADH_SUCCESS)
         rc = ADH_ENOMEM;
@@ -285,6 +301,8 @@ int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, 
     data_range(d, offset, &lo, &hi);
     fm->n = 0;
     fm->b[0].n = fm->b[1].n = 0;
+    fm->why[0] = '\0';
+    fm->fix = 0;
     int relax = fm->s.kind == ADH_FIT_MODEL_RELAX;
     int rc = relax ? eval_relax(fm, m, lo) : eval_static(fm, m, lo, hi);
     if (rc != ADH_SUCCESS) {
@@ -301,6 +319,13 @@ int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, 
             return ADH_ENAN;
     }
     return ADH_SUCCESS;
+}
+
+const char *adh_fit_model_why(const adh_fit_model *fm, unsigned *fix)
+{
+    if (fix)
+        *fix = fm->fix;
+    return fm->why;
 }
 
 size_t adh_fit_model_branch(const adh_fit_model *fm, int which, const double **h0, const double **F)

@@ -35,8 +35,21 @@ check "an unresolved static reference is marked in cost.tsv and on standard outp
 "$ADHERE" --cost -q --no-plot -E 1GPa -R 1um --turn=-1nm --spacing=2nm --cost-nodes=140 --cost-eps=4pm -o "$TMP/cost2" >"$TMP/stdout2" 2>&1
 check "a resolved one is not" sh -c "[ -f '$TMP/cost2/cost.tsv' ] && ! grep -q 'NOT resolved' '$TMP/cost2/cost.tsv' '$TMP/stdout2'"
 check "cost.png is a PNG" sh -c "head -c 8 '$out/cost.png' | od -An -c | grep -q 'P   N   G'"
+# A run that stops says why, as a --batch run does: the static reference from
+# inside the snap-in (0.3 nm, as in static.sh) cannot be solved; standard
+# output and cost.tsv say what stopped it and what to change, not only
+# "(failed)", and cost.tsv keeps its columns.
+"$ADHERE" --cost -q --no-plot -E 1GPa --turn=-1nm --start=0.3nm --spacing=15nm --cost-nodes=60 --cost-eps=20pm \
+    -o "$TMP/stop" >"$TMP/stdout3" 2>&1
+stop="iteration cap reached before convergence: the static curve's start h0 = 300 pm could not be solved: Newton's corrector did not converge: start further out (--start)"
+check "a static reference that stops: standard output says why ($(grep '^reference' "$TMP/stdout3" | cut -c 100-))" \
+    grep -qF "(failed: $stop)" "$TMP/stdout3"
+check "... cost.tsv too, on a comment line; its columns unchanged (21 in every row)" \
+    sh -c "grep -qxF \"# static curve stopped: $stop\" '$TMP/stop/cost.tsv' &&
+           grep -v '^#' '$TMP/stop/cost.tsv' | awk -F'\t' 'NF != 21 {bad = 1} END {exit bad || NR != 3}'"
 "$ADHERE" --cost -q --cost-nodes=5 >/dev/null 2>"$TMP/stderr"; rc=$?
 check "--cost-nodes=5 is refused with exit 2 ($(cat "$TMP/stderr"))" sh -c "[ $rc -eq 2 ] && grep -q 'use 10 to 20000 nodes' '$TMP/stderr'"
 "$ADHERE" --cost -q --cost-eps=0 >/dev/null 2>"$TMP/stderr"; rc=$?
-check "--cost-eps=0 is refused with exit 2 ($(cat "$TMP/stderr"))" [ "$rc" -eq 2 ]
+check "--cost-eps=0 is refused with exit 2, saying what is allowed ($(cat "$TMP/stderr"))" \
+    sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --cost-eps: '0' is not allowed: each eps must be above 0 and below 1 um\" '$TMP/stderr'"
 done_testing

@@ -121,6 +121,20 @@ rc=$?
 check "an approach of 3 points: exit 2, how many a fit needs, nothing written ($(cat "$TMP/e6"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'three.tsv:2: this approach segment has 3 points, at least 4 needed' '$TMP/e6' && [ ! -e '$TMP/threeout' ]"
 
+# A model that stops says why, as a run does: from E = 0.3 GPa on a coarse
+# grid (--force) the static curve stalls at the first evaluation, so no
+# evaluation succeeds; the report, and standard error even with -q, give
+# the status, where it stalled and the fit's own remedy (--model=relax, not
+# --mode), not only "failed".
+"$ADHERE" fit -q --data="$DATA" -E 0.3GPa -N 45 --spacing=16nm --force fig1 >"$TMP/stall.out" 2>"$TMP/stall.err"
+rc=$?
+stall="continuation could not make progress: the static curve stalled at h0 = "
+check "a fit whose model stalls: exit 1, the report says why and what to change ($rc: $(grep 'stopped' "$TMP/stall.out"))" \
+    sh -c "[ $rc -eq 1 ] && grep -qx 'result: failed (the model could not be evaluated)' '$TMP/stall.out' &&
+           grep -q \"^the last model evaluation that failed stopped: $stall.*(--model=relax)\$\" '$TMP/stall.out'"
+check "... standard error too, under -q; no --mode named ($(cat "$TMP/stall.err"))" \
+    sh -c "grep -q \"^adhere: the model stopped: $stall.*(--model=relax)\$\" '$TMP/stall.err' && ! grep -qE -- '--mode([^l]|\$)' '$TMP/stall.err' '$TMP/stall.out'"
+
 # --model=relax: a curve the relaxation made (E = 1 GPa, loaded to -2 nm
 # and unloaded; its force.tsv's h0, F and path, with noise of about 1 % of
 # the pull-off from awk's generator, seeded) fitted by the relaxation. eps

@@ -138,6 +138,31 @@ check "... its sweep.tsv committed (a new file, 16 rows)" \
 check "... the earlier merge's map.png, this table's, left in place as it was, and said so" \
     sh -c "cmp -s '$TMP/mfig.png' '$TMP/mfig/map.png' && grep -q 'the earlier map.png left in place: drawn from this table' '$TMP/err'"
 check "... no temporary left" sh -c "! ls -a '$TMP/mfig' | grep -v '^\.adhere-manifest\$' | grep -q '^\.[^.]'"
+# The earlier table is compared as it streams by, never held: an earlier
+# sweep.tsv of 104 MB (this table, its seconds column padded with 6.5 MB of
+# zeros a row: the column the comparison leaves out) under ulimit -v 225 MB
+# (adhere itself takes some 80 MB here), where holding it and its cut copy
+# (208 MB and more) cannot fit: the figure is kept; with one other field
+# changed in its last row, removed.
+awk -F'\t' -v OFS='\t' -v same="$TMP/big-same.tsv" -v other="$TMP/big-other.tsv" '
+    BEGIN {z = "0"; while (length(z) < 6500000) z = z z; z = substr(z, 1, 6500000)}
+    /^#/ {print >same; print >other; next}
+    !col {for (i = 1; i <= NF; i++) if ($i == "seconds") col = i; print >same; print >other; next}
+    {$col = $col z; print >same; n++; if (n == 16) $1 = $1 "0"; print >other}' "$TMP/mfig/sweep.tsv"
+big=$(wc -c <"$TMP/big-same.tsv")
+for what in same other; do
+    cp "$TMP/big-$what.tsv" "$TMP/mfig/sweep.tsv" && reprove "$TMP/mfig" sweep.tsv
+    (trap '' XFSZ; ulimit -f "$lim" && ulimit -v 230400 && exec "$ADHERE" merge -o "$TMP/mfig" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3") 2>"$TMP/err"
+    rc=$?
+    if [ $what = same ]; then
+        check "an earlier sweep.tsv of $big bytes, this table but for its seconds, under ulimit -v 225 MB: exit 3, map.png kept ($rc: $(tail -n 1 "$TMP/err"))" \
+            sh -c "[ $rc -eq 3 ] && [ $big -gt 104000000 ] && cmp -s '$TMP/mfig.png' '$TMP/mfig/map.png' && grep -q 'the earlier map.png left in place: drawn from this table' '$TMP/err'"
+    else
+        check "... another table's (its last row's run changed): map.png removed, said so ($rc: $(tail -n 1 "$TMP/err"))" \
+            sh -c "[ $rc -eq 3 ] && [ ! -e '$TMP/mfig/map.png' ] && grep -q \"the earlier merge's map.png removed: drawn from another table\" '$TMP/err'"
+    fi
+done
+rm -f "$TMP/big-same.tsv" "$TMP/big-other.tsv"
 (trap '' XFSZ; ulimit -f "$lim" && exec "$ADHERE" merge -o "$TMP/epsm" "$TMP/shard1" "$TMP/shard2" "$TMP/shard3") 2>"$TMP/err"
 rc=$?
 check "the same into an eps study's merge: exit 3, its force.png (another table's) removed, said so ($rc: $(head -c 400 "$TMP/err"))" \
@@ -211,6 +236,11 @@ check "a rerun on a study of another numerics id: exit 2, both ids named ($rc: $
     sh -c "[ $rc -eq 2 ] && grep -q 'another build of adhere (numerics there: 0123456789abcdef; this adhere.s: $NUMERICS)' '$TMP/err'"
 check "... what to do said: a new -o, or --overwrite to run it again from scratch" \
     sh -c "grep -q 'give a new -o' '$TMP/err' && grep -q -- '--overwrite to run the study again from scratch' '$TMP/err'"
+# --overwrite removes more than adhere recorded (every file under its names,
+# a killed run's temporaries too): the advice says so, as adhere(1) does
+check "... and what --overwrite removes: every file under adhere's names, written by it or not, as adhere(1) says" \
+    sh -c "grep -qF \"it removes every file there under adhere's names, whether adhere wrote it or not\" '$TMP/err' &&
+           grep -qF \"a killed run's temporaries, as --overwrite in adhere(1) says; other files stay\" '$TMP/err'"
 check "... nothing run, nothing changed (runs.tsv, study.tsv's id)" \
     sh -c "! grep -q '^adhere: run ' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv' && grep -qx 'numerics	0123456789abcdef' '$TMP/build/study.tsv'"
 # a study.tsv from before adhere recorded the id: an unknown build
@@ -235,8 +265,12 @@ for what in 'an id in capitals' 'two ids, this build'"'"'s second'; do
     check "a study.tsv of this study with $what: exit 2, nothing run or changed ($rc: $(head -c 400 "$TMP/err"))" \
         sh -c "[ $rc -eq 2 ] && grep -q 'numerics there: unreadable' '$TMP/err' && grep -q -- '--overwrite' '$TMP/err' && ! grep -q '^adhere: run ' '$TMP/err' && cmp -s '$TMP/build.runs' '$TMP/build/runs.tsv'"
 done
+echo theirs >"$TMP/build/.runs.tsv.Ab12Cd"   # a temporary's name, in no manifest
 "$ADHERE" $TINY "$TMP/map.scene" --overwrite -o "$TMP/build" 2>"$TMP/err"
 rc=$?
+check "... --overwrite's note says what it removes, and it did: the unrecorded temporary's name went too" \
+    sh -c "grep -qF -- \"--overwrite: it removes every file there under adhere's names, whether adhere wrote it or not\" '$TMP/err' &&
+           [ ! -e '$TMP/build/.runs.tsv.Ab12Cd' ]"
 ran=$(grep -c '^adhere: run [0-9]* of 16' "$TMP/err")
 check "--overwrite: exit $rc, the whole study run again from scratch ($ran runs stepped, none kept)" \
     sh -c "[ $rc -eq 0 ] && [ $ran -eq 16 ] && ! grep -q 'done before' '$TMP/err' && grep -q 'runs again from scratch' '$TMP/err'"

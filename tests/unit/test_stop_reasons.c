@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "adhere/drive.h"
+#include "adhere/fit.h"
 #include "adhere/grid.h"
 #include "adhere/kernel.h"
 #include "adhere/rings.h"
@@ -153,6 +154,49 @@ static void relax_edge(const adh_material *m)
     adh_grid_free(g);
 }
 
+/* adhere fit's model on the same grid: its first evaluation stops at the
+ * grid's edge, and the result says why as a run does (the rings' sentence,
+ * what to change), for the relaxation model and the static one; the fit's
+ * status is the model's error at the start. */
+static void fit_stops(const adh_material *m)
+{
+    enum { N = 24 };
+    static double x[N], F[N];
+    static int dir[N], contact[N], seg[N];
+    for (int i = 0; i < N; i++) {   /* 3 nm down to -2.5 nm and back up */
+        int back = i >= N / 2;
+        x[i] = back ? -2.5e-9 + (i - N / 2) * 0.5e-9 : 3e-9 - i * 0.5e-9;
+        dir[i] = back ? -1 : 1, seg[i] = back, contact[i] = x[i] < 0;
+        F[i] = 0;
+    }
+    adh_fit_data d = { N, x, F, dir, contact, seg };
+    adh_grid *g = adh_grid_alloc(20, 10e-9);
+    adh_kernel *k = g ? adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL) : NULL;
+    if (!k) {
+        printf("Bail out! out of memory\n");
+        exit(1);
+    }
+    for (int kind = ADH_FIT_MODEL_STATIC; kind <= ADH_FIT_MODEL_RELAX; kind++) {
+        adh_fit_settings s = adh_fit_settings_default();
+        s.free = 1u << ADH_FIT_E;
+        s.start = *m;
+        s.model.kind = (adh_fit_model_kind)kind;
+        int st;
+        adh_fit *f = adh_fit_alloc(g, k, &d, &s, &st);
+        adh_fit_result res;
+        int rc = f ? adh_fit_run(f, &res) : st;
+        ok(f && rc == ADH_EGRID && res.model_status == ADH_EGRID && res.failed > 0 && !isfinite(res.chi2) &&
+           strstr(res.model_why, "reached the grid's edge (0.9 Rmax = 180 nm): use more nodes or a larger spacing") &&
+           res.model_fix != 0u,
+           "a fit whose %s model stops at the grid's edge: the status, the rings' sentence, what to change (%s: %s; fix %#x)",
+           kind == ADH_FIT_MODEL_RELAX ? "relaxation" : "static", adh_strerror(rc), f ? res.model_why : "",
+           f ? res.model_fix : 0u);
+        adh_fit_free(f);
+    }
+    adh_kernel_free(k);
+    adh_grid_free(g);
+}
+
 int main(void)
 {
     adh_material m = adh_material_default();
@@ -165,6 +209,7 @@ int main(void)
     static_stops(g, k, &m);
     visco_stops(g, k, &m);
     relax_edge(&m);
+    fit_stops(&m);
     adh_kernel_free(k);
     adh_grid_free(g);
     return tap_done();
