@@ -39,6 +39,16 @@ check "src/cli/exit.h's statuses are read ($(echo $codes))" [ "$(echo "$codes" |
 for code in $codes 129 143; do
     check "adhere.1's EXIT STATUS gives $code" sh -c 'printf "%s\n" "$1" | grep -qE "^\.It ([0-9]+ , )*$2( |$)"' _ "$exitsec" "$code"
 done
+# FILES names every file adhere writes in DIR: the names src/plot/outdir.c
+# owns (the ones it removes or refuses to replace), one list for every mode.
+sed -n '/^static const char \*const owned\[\]/,/};/p' src/plot/outdir.c |
+    grep -oE '"[a-z.-]+\.(tsv|png|log|scene)"' | tr -d '"' >"$TMP/owned"
+check "outdir.c's owned names are read ($(wc -l <"$TMP/owned"))" [ "$(wc -l <"$TMP/owned")" -ge 25 ]
+filesec=$(sed -n '/^\.Sh FILES/,/^\.Sh /p' man/adhere.1)
+while read -r f; do
+    check "adhere.1's FILES names $f" sh -c 'printf "%s\n" "$1" | grep -qF -- "$2"' _ "$filesec" "$f"
+done <"$TMP/owned"
+check "adhere.1's FILES names the manifest" sh -c 'printf "%s\n" "$1" | grep -qF "DIR/.adhere-manifest"' _ "$filesec"
 # Every option the parser accepts is in --help: the table is the same one, but
 # check that an option from each family is accepted, so the table is live.
 for o in --no-clock --quiet --no-plot; do
