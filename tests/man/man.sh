@@ -49,6 +49,15 @@ while read -r f; do
     check "adhere.1's FILES names $f" sh -c 'printf "%s\n" "$1" | grep -qF -- "$2"' _ "$filesec" "$f"
 done <"$TMP/owned"
 check "adhere.1's FILES names the manifest" sh -c 'printf "%s\n" "$1" | grep -qF "DIR/.adhere-manifest"' _ "$filesec"
+# ENVIRONMENT gives every variable of the program's own (ADHERE_*) that
+# the sources read, and the TMPDIR its figures are drawn in.
+grep -rhoE 'getenv\("[A-Z_]+"\)' src | sed -E 's/getenv\("([A-Z_]+)"\)/\1/' | sort -u |
+    grep -E '^(ADHERE_|TMPDIR$)' >"$TMP/envs"
+check "the sources' environment variables are read ($(echo $(cat "$TMP/envs")))" [ "$(wc -l <"$TMP/envs")" -ge 3 ]
+envsec=$(sed -n '/^\.Sh ENVIRONMENT/,/^\.Sh /p' man/adhere.1)
+while read -r v; do
+    check "adhere.1's ENVIRONMENT gives $v" sh -c 'printf "%s\n" "$1" | grep -qx "\.It Ev $2"' _ "$envsec" "$v"
+done <"$TMP/envs"
 # Every option the parser accepts is in --help: the table is the same one, but
 # check that an option from each family is accepted, so the table is live.
 for o in --no-clock --quiet --no-plot; do
