@@ -7,7 +7,7 @@ for page in man/*.[0-9]; do
     out=$(mandoc -Tlint -W warning "$page" 2>&1)
     if [ -z "$out" ]; then ok "mandoc -Tlint -W warning $page is clean"; else not_ok "mandoc lint $page: $out"; fi
 done
-opts=$("$ADHERE" --help | grep -oE -- '--[a-z][a-z0-9-]+' | sort -u)
+opts=$("$ADHERE" --help | grep -oE -- '--[a-zA-Z][a-zA-Z0-9-]+' | sort -u)
 check "--help lists at least 30 long options" [ "$(echo "$opts" | wc -l)" -ge 30 ]
 for o in $opts; do
     name=${o#--}
@@ -15,6 +15,49 @@ for o in $opts; do
     esc=$(printf '%s' "$name" | sed 's/-/\\\\-/g')
     if grep -q -- "Fl \\\\-$esc" man/adhere.1 || grep -q -- "Fl -$name" man/adhere.1; then ok "$o is documented in adhere.1"; else not_ok "$o is missing from adhere.1 OPTIONS"; fi
 done
+# ... and the other way: every option adhere.1's OPTIONS documents is one
+# --help lists (an option removed from the program leaves the page too).
+sed -n '/BEGIN OPTIONS/,/END OPTIONS/p' man/adhere.1 | grep '^\.It Fl' |
+    grep -oE 'Fl -[a-zA-Z][a-zA-Z0-9-]*' | sed 's/^Fl -/--/' | sort -u >"$TMP/mopts"
+check "adhere.1's OPTIONS is read ($(wc -l <"$TMP/mopts") long options)" [ "$(wc -l <"$TMP/mopts")" -ge 30 ]
+printf '%s\n' "$opts" >"$TMP/hopts"
+while read -r o; do
+    check "adhere.1 documents $o, which --help lists" grep -qxF -- "$o" "$TMP/hopts"
+done <"$TMP/mopts"
+# A short option goes with the same long one in both: '-E, --modulus'.
+"$ADHERE" --help | sed -nE 's/^ +-([A-Za-z]), --([a-zA-Z0-9-]+).*/\1 \2/p' >"$TMP/short"
+check "--help lists short options ($(wc -l <"$TMP/short"))" [ "$(wc -l <"$TMP/short")" -ge 10 ]
+while read -r c long; do
+    esc=$(printf '%s' "$long" | sed 's/-/\\\\-/g')
+    check "adhere.1 gives -$c with --$long" grep -qE -- "^\.It Fl $c , Fl (-|\\\\-)$esc( |$)" man/adhere.1
+done <"$TMP/short"
+# EXIT STATUS gives every status src/cli/exit.h names, and a signal's
+# 128 + its number for the three the drivers hear (SIGHUP, SIGINT, SIGTERM).
+exitsec=$(sed -n '/^\.Sh EXIT STATUS/,/^\.Sh /p' man/adhere.1)
+codes=$(sed -nE 's/^ *CLI_EXIT_[A-Z]+ = ([0-9]+).*/\1/p' src/cli/exit.h)
+check "src/cli/exit.h's statuses are read ($(echo $codes))" [ "$(echo "$codes" | wc -l)" -ge 4 ]
+for code in $codes 129 143; do
+    check "adhere.1's EXIT STATUS gives $code" sh -c 'printf "%s\n" "$1" | grep -qE "^\.It ([0-9]+ , )*$2( |$)"' _ "$exitsec" "$code"
+done
+# FILES names every file adhere writes in DIR: the names src/plot/outdir.c
+# owns (the ones it removes or refuses to replace), one list for every mode.
+sed -n '/^static const char \*const owned\[\]/,/};/p' src/plot/outdir.c |
+    grep -oE '"[a-z.-]+\.(tsv|png|log|scene)"' | tr -d '"' >"$TMP/owned"
+check "outdir.c's owned names are read ($(wc -l <"$TMP/owned"))" [ "$(wc -l <"$TMP/owned")" -ge 25 ]
+filesec=$(sed -n '/^\.Sh FILES/,/^\.Sh /p' man/adhere.1)
+while read -r f; do
+    check "adhere.1's FILES names $f" sh -c 'printf "%s\n" "$1" | grep -qF -- "$2"' _ "$filesec" "$f"
+done <"$TMP/owned"
+check "adhere.1's FILES names the manifest" sh -c 'printf "%s\n" "$1" | grep -qF "DIR/.adhere-manifest"' _ "$filesec"
+# ENVIRONMENT gives every variable of the program's own (ADHERE_*) that
+# the sources read, and the TMPDIR its figures are drawn in.
+grep -rhoE 'getenv\("[A-Z_]+"\)' src | sed -E 's/getenv\("([A-Z_]+)"\)/\1/' | sort -u |
+    grep -E '^(ADHERE_|TMPDIR$)' >"$TMP/envs"
+check "the sources' environment variables are read ($(echo $(cat "$TMP/envs")))" [ "$(wc -l <"$TMP/envs")" -ge 3 ]
+envsec=$(sed -n '/^\.Sh ENVIRONMENT/,/^\.Sh /p' man/adhere.1)
+while read -r v; do
+    check "adhere.1's ENVIRONMENT gives $v" sh -c 'printf "%s\n" "$1" | grep -qx "\.It Ev $2"' _ "$envsec" "$v"
+done <"$TMP/envs"
 # Every option the parser accepts is in --help: the table is the same one, but
 # check that an option from each family is accepted, so the table is live.
 for o in --no-clock --quiet --no-plot; do
