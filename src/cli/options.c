@@ -75,7 +75,7 @@ static const option_doc options[] = {
     { { "dwell-time", required_argument, 0, OPT_DWELL_TIME }, "S", "physical time: held at each turn before retracting (default 0)", "protocol.dwell_time", NULL },
     { { "spring", required_argument, 0, OPT_SPRING }, "N/M|none", "instrument spring k between the base and the sphere: physical time, or the static curve's snap points (default none)", "protocol.spring", NULL },
     { { "mode", required_argument, 0, OPT_MODE }, "relax|static|rigid|time", "paper's relaxation, the static equilibrium curve, rigid spheres only (eq 22, no elastic solve), or physical time (default relax; time with --material=sls)", "scene.mode", NULL },
-    { { "reference", required_argument, 0, OPT_REFERENCE }, "static", "also compute the static curve as a reference in relaxation mode", NULL, NULL },
+    { { "reference", required_argument, 0, OPT_REFERENCE }, "static|none", "also compute the static curve as a reference in relaxation mode (none: not, the default)", NULL, NULL },
     { { "batch", no_argument, 0, 'b' }, NULL, "run the protocol without the TUI and write tables", NULL, NULL },
     { { "out", required_argument, 0, 'o' }, "DIR", "write force.tsv, summary.tsv, turns.tsv and plots into DIR (created)", "output.dir", NULL },
     { { "overwrite", no_argument, 0, OPT_OVERWRITE }, NULL, "replace files in DIR under adhere's names that it did not write (else refused)", "output.overwrite", "yes" },

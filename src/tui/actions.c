@@ -32,7 +32,7 @@ const tui_key_binding tui_key_table[] = {
     { 'l' & 0x1f, ACT_REDRAW, "redraw the screen" },
     { 27, ACT_CANCEL, "cancel a count or pause a run" },
     { ' ', ACT_CANCEL, "pause a run, as <Esc>" },
-    { 'q', ACT_QUIT, "quit (the terminal is restored; so it is on SIGINT and SIGTERM)" },
+    { 'q', ACT_QUIT, "quit (the terminal is restored; so it is on SIGINT, SIGTERM and SIGHUP)" },
     { 0, ACT_NONE, NULL },
 };
 
