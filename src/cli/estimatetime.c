@@ -120,6 +120,7 @@ static void product_once(void *ctx)
 /* The grid's timings: one product, one pass of the law. */
 typedef struct grid_cost {
     adh_run_spec spec;    /* whose grid */
+    adh_grid *g;          /* the grid, kept for the runs that share it */
     size_t n;
     int hierarchical;
     double product, pass, build;
@@ -127,8 +128,10 @@ typedef struct grid_cost {
 
 static int time_grid(const adh_run_spec *s, grid_cost *gc)
 {
+    adh_grid_free(gc->g);
+    gc->n = 0;
     double t0 = adh_clock_cpu_seconds();
-    adh_grid *g = adh_config_grid_alloc(s);
+    adh_grid *g = gc->g = adh_config_grid_alloc(s);
     int st = 0;
     adh_kernel *k = g ? adh_config_kernel_alloc(s, g, &st) : NULL;
     gc->build = adh_clock_cpu_seconds() - t0;
@@ -148,18 +151,15 @@ static int time_grid(const adh_run_spec *s, grid_cost *gc)
     }
     free(v);
     adh_kernel_free(k);
-    adh_grid_free(g);
     return rc;
 }
 
-/* Nodes of spec's grid inside radius a. */
-static size_t nodes_inside(const adh_run_spec *s, double a)
+/* Nodes of grid g inside radius a. */
+static size_t nodes_inside(const adh_grid *g, double a)
 {
-    adh_grid *g = adh_config_grid_alloc(s);
     size_t m = 0;
-    while (g && m < g->n && g->r[m] < a)
+    while (m < g->n && g->r[m] < a)
         m++;
-    adh_grid_free(g);
     return m;
 }
 
@@ -185,13 +185,14 @@ static int run_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
         e->build = gc->build;   /* once a grid */
     }
     e->grid = *gc;
+    e->grid.g = NULL;   /* gc's, freed with it: the estimate keeps the timings */
     e->step = STEP_PRODUCTS * gc->product + STEP_PASSES * gc->pass;
     e->lu_nodes = 0;
     e->lu = 0;
     if (gc->hierarchical) {
         e->step += STEP_HODLR_PRODUCTS * gc->product;
     } else {
-        e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(s, e->c.a_turn));
+        e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(gc->g, e->c.a_turn));
         e->lu = lu_seconds(e->lu_nodes);
         e->step += STEP_LUS * e->lu;
     }
@@ -240,7 +241,7 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
 {
     static adh_plan_progress runs[ADH_PLAN_MAX_RUNS];
     size_t n = plan->nruns < ADH_PLAN_MAX_RUNS ? plan->nruns : ADH_PLAN_MAX_RUNS;
-    grid_cost gc = { .n = 0 };
+    grid_cost gc = { .g = NULL, .n = 0 };
     run_est e = { .cpu = 0 }, first = e;
     double cpu = 0, steps = 0, smin = INFINITY, smax = 0;
     for (size_t j = 0; j < n; j++) {
@@ -251,6 +252,7 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
         adh_run_spec s;
         adh_config_sweep_run(cfg, i, &s);
         if (run_estimate(&s, &gc, &e) != 0) {
+            adh_grid_free(gc.g);
             fprintf(f, "time: not estimated (the kernel could not be built here)\n");
             return;
         }
@@ -262,6 +264,7 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
         smin = fmin(smin, e.c.steps);
         smax = fmax(smax, e.c.steps);
     }
+    adh_grid_free(gc.g);
     if (n > 1) {
         /* a study past the runs the plan lists: the rest taken at the
          * mean of the runs estimated, and said so ("in all" summed 32 of 2000) */
