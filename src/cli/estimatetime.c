@@ -34,17 +34,9 @@
 #define STEP_HODLR_PRODUCTS 40.0
 
 /* CPU seconds a call of fn takes: at least 3 calls and 0.05 s. */
-typedef void (*timed_fn)(void *ctx);
-static double cpu_per_call(timed_fn fn, void *ctx)
+static double cpu_per_call(cli_estimate_fn fn, void *ctx)
 {
-    size_t reps = 0;
-    double t0 = adh_clock_cpu_seconds(), t = t0;
-    while (reps < 3 || t - t0 < 0.05) {
-        fn(ctx);
-        reps++;
-        t = adh_clock_cpu_seconds();
-    }
-    return (t - t0) / (double)reps;
+    return cli_estimate_cpu_per_call(fn, ctx, 3, 0.05);
 }
 
 typedef struct lu_job {
@@ -105,18 +97,6 @@ static void law_once(void *ctx)
     }
 }
 
-typedef struct product_job {
-    const adh_kernel *k;
-    size_t n;
-    double *v;
-} product_job;
-
-static void product_once(void *ctx)
-{
-    product_job *j = ctx;
-    adh_kernel_apply(j->k, j->v, j->v + j->n, j->v + 2 * j->n);
-}
-
 /* The grid's timings: one product, one pass of the law. */
 typedef struct grid_cost {
     adh_run_spec spec;    /* whose grid */
@@ -140,12 +120,11 @@ static int time_grid(const adh_run_spec *s, grid_cost *gc)
     if (v) {
         for (size_t i = 0; i < g->n; i++)
             v[i] = 1.0 / (1.0 + (double)i);   /* a pressure falling off from the axis */
-        product_job pj = { k, g->n, v };
         law_job lj = { g, &s->mat, v + g->n };
         gc->spec = *s;
         gc->n = g->n;
         gc->hierarchical = adh_kernel_storage_of(k) != ADH_STORAGE_DENSE;
-        gc->product = cpu_per_call(product_once, &pj);
+        gc->product = cli_estimate_product_seconds(k, g->n, v, 3, 0.05);
         gc->pass = cpu_per_call(law_once, &lj);
         rc = 0;
     }
