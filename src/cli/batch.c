@@ -210,9 +210,9 @@ static void batch_step(batch_job *j)
             fprintf(stderr, "adhere: warning: the static reference curve is not resolved: %s (summary.tsv: "
                     "static_resolved 0)\n", rwhy);
         if (rrc != ADH_SUCCESS && !j->ref.interrupted) {
-            char reason[600];
-            fprintf(stderr, "adhere: the static reference curve failed: %s%s%s\n", adh_strerror(j->ref.status),
-                    *cli_tables_stop_reason(&j->ref, reason, sizeof reason) ? ": " : "", reason);
+            char stopped[700];
+            fprintf(stderr, "adhere: the static reference curve failed: %s\n",
+                    cli_tables_stopped(&j->ref, j->ref.status, stopped, sizeof stopped));
             j->want_ref = 0;
         }
     }
@@ -242,10 +242,9 @@ static void batch_judge(batch_job *j)
                  adh_qtext(run->rows[run->nrows - 1].h0, ADH_Q_LENGTH).s, edge);
         j->status = CLI_EXIT_SOLVER;
     } else if (j->rc != ADH_SUCCESS) {
-        char reason[600];
-        cli_tables_stop_reason(run, reason, sizeof reason);
-        snprintf(j->note, sizeof j->note, "the solver stopped after %zu steps: %s%s%s", run->nrows,
-                 adh_strerror(j->rc), *reason ? ": " : "", reason);
+        char stopped[700];
+        snprintf(j->note, sizeof j->note, "the solver stopped after %zu steps: %s", run->nrows,
+                 cli_tables_stopped(run, j->rc, stopped, sizeof stopped));
         j->status = CLI_EXIT_SOLVER;
     }
     if (j->note[0])

@@ -7,6 +7,36 @@
 #include "adhere/kernel.h"
 #include "cli/progress.h"
 
+double cli_estimate_cpu_per_call(cli_estimate_fn fn, void *ctx, size_t min_reps, double min_seconds)
+{
+    size_t reps = 0;
+    double t0 = adh_clock_cpu_seconds(), t = t0;
+    while (reps < min_reps || t - t0 < min_seconds) {
+        fn(ctx);
+        reps++;
+        t = adh_clock_cpu_seconds();
+    }
+    return (t - t0) / (double)reps;
+}
+
+typedef struct product_job {
+    const adh_kernel *k;
+    size_t n;
+    double *v;
+} product_job;
+
+static void product_once(void *ctx)
+{
+    product_job *j = ctx;
+    adh_kernel_apply(j->k, j->v, j->v + j->n, j->v + 2 * j->n);
+}
+
+double cli_estimate_product_seconds(const adh_kernel *k, size_t n, double *v, size_t min_reps, double min_seconds)
+{
+    product_job pj = { k, n, v };
+    return cli_estimate_cpu_per_call(product_once, &pj, min_reps, min_seconds);
+}
+
 double cli_estimate_iteration(const adh_config *cfg, double *build)
 {
     /* CPU seconds, not wall: on a shared machine the wall clock times
@@ -21,14 +51,7 @@ double cli_estimate_iteration(const adh_config *cfg, double *build)
     if (v) {
         for (size_t i = 0; i < g->n; i++)
             v[i] = 1.0 / (1.0 + (double)i);   /* a pressure falling off from the axis */
-        size_t reps = 0;
-        double t1 = adh_clock_cpu_seconds(), t = t1;
-        while (reps < 5 || t - t1 < 0.2) {
-            adh_kernel_apply(k, v, v + g->n, v + 2 * g->n);
-            reps++;
-            t = adh_clock_cpu_seconds();
-        }
-        per = (t - t1) / (double)reps;
+        per = cli_estimate_product_seconds(k, g->n, v, 5, 0.2);
     }
     free(v);
     adh_kernel_free(k);

@@ -34,17 +34,9 @@
 #define STEP_HODLR_PRODUCTS 40.0
 
 /* CPU seconds a call of fn takes: at least 3 calls and 0.05 s. */
-typedef void (*timed_fn)(void *ctx);
-static double cpu_per_call(timed_fn fn, void *ctx)
+static double cpu_per_call(cli_estimate_fn fn, void *ctx)
 {
-    size_t reps = 0;
-    double t0 = adh_clock_cpu_seconds(), t = t0;
-    while (reps < 3 || t - t0 < 0.05) {
-        fn(ctx);
-        reps++;
-        t = adh_clock_cpu_seconds();
-    }
-    return (t - t0) / (double)reps;
+    return cli_estimate_cpu_per_call(fn, ctx, 3, 0.05);
 }
 
 typedef struct lu_job {
@@ -105,21 +97,10 @@ static void law_once(void *ctx)
     }
 }
 
-typedef struct product_job {
-    const adh_kernel *k;
-    size_t n;
-    double *v;
-} product_job;
-
-static void product_once(void *ctx)
-{
-    product_job *j = ctx;
-    adh_kernel_apply(j->k, j->v, j->v + j->n, j->v + 2 * j->n);
-}
-
 /* The grid's timings: one product, one pass of the law. */
 typedef struct grid_cost {
     adh_run_spec spec;    /* whose grid */
+    adh_grid *g;          /* the grid, kept for the runs that share it */
     size_t n;
     int hierarchical;
     double product, pass, build;
@@ -127,8 +108,10 @@ typedef struct grid_cost {
 
 static int time_grid(const adh_run_spec *s, grid_cost *gc)
 {
+    adh_grid_free(gc->g);
+    gc->n = 0;
     double t0 = adh_clock_cpu_seconds();
-    adh_grid *g = adh_config_grid_alloc(s);
+    adh_grid *g = gc->g = adh_config_grid_alloc(s);
     int st = 0;
     adh_kernel *k = g ? adh_config_kernel_alloc(s, g, &st) : NULL;
     gc->build = adh_clock_cpu_seconds() - t0;
@@ -137,29 +120,25 @@ static int time_grid(const adh_run_spec *s, grid_cost *gc)
     if (v) {
         for (size_t i = 0; i < g->n; i++)
             v[i] = 1.0 / (1.0 + (double)i);   /* a pressure falling off from the axis */
-        product_job pj = { k, g->n, v };
         law_job lj = { g, &s->mat, v + g->n };
         gc->spec = *s;
         gc->n = g->n;
         gc->hierarchical = adh_kernel_storage_of(k) != ADH_STORAGE_DENSE;
-        gc->product = cpu_per_call(product_once, &pj);
+        gc->product = cli_estimate_product_seconds(k, g->n, v, 3, 0.05);
         gc->pass = cpu_per_call(law_once, &lj);
         rc = 0;
     }
     free(v);
     adh_kernel_free(k);
-    adh_grid_free(g);
     return rc;
 }
 
-/* Nodes of spec's grid inside radius a. */
-static size_t nodes_inside(const adh_run_spec *s, double a)
+/* Nodes of grid g inside radius a. */
+static size_t nodes_inside(const adh_grid *g, double a)
 {
-    adh_grid *g = adh_config_grid_alloc(s);
     size_t m = 0;
-    while (g && m < g->n && g->r[m] < a)
+    while (m < g->n && g->r[m] < a)
         m++;
-    adh_grid_free(g);
     return m;
 }
 
@@ -185,13 +164,14 @@ static int run_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
         e->build = gc->build;   /* once a grid */
     }
     e->grid = *gc;
+    e->grid.g = NULL;   /* gc's, freed with it: the estimate keeps the timings */
     e->step = STEP_PRODUCTS * gc->product + STEP_PASSES * gc->pass;
     e->lu_nodes = 0;
     e->lu = 0;
     if (gc->hierarchical) {
         e->step += STEP_HODLR_PRODUCTS * gc->product;
     } else {
-        e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(s, e->c.a_turn));
+        e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(gc->g, e->c.a_turn));
         e->lu = lu_seconds(e->lu_nodes);
         e->step += STEP_LUS * e->lu;
     }
@@ -240,7 +220,7 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
 {
     static adh_plan_progress runs[ADH_PLAN_MAX_RUNS];
     size_t n = plan->nruns < ADH_PLAN_MAX_RUNS ? plan->nruns : ADH_PLAN_MAX_RUNS;
-    grid_cost gc = { .n = 0 };
+    grid_cost gc = { .g = NULL, .n = 0 };
     run_est e = { .cpu = 0 }, first = e;
     double cpu = 0, steps = 0, smin = INFINITY, smax = 0;
     for (size_t j = 0; j < n; j++) {
@@ -251,6 +231,7 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
         adh_run_spec s;
         adh_config_sweep_run(cfg, i, &s);
         if (run_estimate(&s, &gc, &e) != 0) {
+            adh_grid_free(gc.g);
             fprintf(f, "time: not estimated (the kernel could not be built here)\n");
             return;
         }
@@ -262,6 +243,7 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
         smin = fmin(smin, e.c.steps);
         smax = fmax(smax, e.c.steps);
     }
+    adh_grid_free(gc.g);
     if (n > 1) {
         /* a study past the runs the plan lists: the rest taken at the
          * mean of the runs estimated, and said so ("in all" summed 32 of 2000) */

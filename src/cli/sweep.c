@@ -567,10 +567,10 @@ double cli_sweep_static_hysteresis(const adh_config *cfg, cli_kcache *kc, int *r
                     "resolve: %s\n", why);
     }
     double h = st == ADH_SUCCESS && !ref.interrupted ? cli_tables_static_hysteresis(&ref, &rs.mat) : NAN;
-    char reason[600];
+    char stopped[700];
     if (st != ADH_SUCCESS && st != ADH_EINTR && !ref.interrupted)
-        fprintf(stderr, "adhere: the static curve for Figure 7's equilibrium line failed: %s%s%s\n", adh_strerror(st),
-                *cli_tables_stop_reason(&ref, reason, sizeof reason) ? ": " : "", reason);
+        fprintf(stderr, "adhere: the static curve for Figure 7's equilibrium line failed: %s\n",
+                cli_tables_stopped(&ref, st, stopped, sizeof stopped));
     adh_run_free(&ref);
     return h;
 }

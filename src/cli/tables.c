@@ -134,6 +134,14 @@ const char *cli_tables_stop_reason(const adh_run *r, char *buf, size_t len)
     return cli_tables_reason(r->why, r->fix, buf, len);
 }
 
+const char *cli_tables_stopped(const adh_run *r, int status, char *buf, size_t len)
+{
+    char reason[600];
+    snprintf(buf, len, "%s%s%s", adh_strerror(status), *cli_tables_stop_reason(r, reason, sizeof reason) ? ": " : "",
+             reason);
+    return buf;
+}
+
 static void kv(FILE *f, const char *k, double v)
 {
     fprintf(f, "%s\t%.17g\n", k, v);

@@ -47,6 +47,10 @@ const char *cli_tables_summary_word(const cli_tables *t);
  * the flags of its ADH_FIX_* bits; "" for a run that finished or was
  * interrupted. Written to buf, which is returned. */
 const char *cli_tables_stop_reason(const adh_run *r, char *buf, size_t len);
+/* "STATUS: REASON" for run r that stopped with status (adh_strerror's
+ * word, then cli_tables_stop_reason's, when it has one), in buf (700 bytes
+ * hold both whole), which is returned. */
+const char *cli_tables_stopped(const adh_run *r, int status, char *buf, size_t len);
 /* A core's reason (why, fix: adh_run.why and .fix, or the like) in those
  * words: control bytes as spaces, the flags for fix added; "" for "". */
 const char *cli_tables_reason(const char *why, unsigned fix, char *buf, size_t len);

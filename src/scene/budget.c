@@ -100,6 +100,15 @@ static void vm_sizes(double *size, double *data)
     fclose(f);
 }
 
+/* Whether ulimit -v or -d is set: else nothing below weighs, and the
+ * process's status, threads and maps are not read. */
+static int address_limited(void)
+{
+    struct rlimit rl;
+    return (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY) ||
+           (getrlimit(RLIMIT_DATA, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY);
+}
+
 /* Bytes of address space the limits leave (ulimit -v, and -d, which since
  * Linux 4.7 counts private mappings too), less what is mapped (size,
  * data: vm_sizes); -1 when neither is set. */
@@ -170,6 +179,10 @@ typedef struct {
 static void address_read(address_state *st)
 {
     double size, data, size2, data2;
+    if (!address_limited()) {   /* no room to take a reserve from */
+        *st = (address_state){ .room = -1 };
+        return;
+    }
     vm_sizes(&size, &data);
     for (int tries = 0; tries < 16; tries++) {
         st->own = other_threads();
@@ -202,8 +215,9 @@ static double threads_reserve(unsigned threads, const address_state *st)
 
 double adh_budget_machine_bytes(void)
 {
-    double size, data;
-    vm_sizes(&size, &data);
+    double size = -1, data = -1;
+    if (address_limited())
+        vm_sizes(&size, &data);
     double m = least(memory_room(), address_room(size, data));
     return m < 0 ? INFINITY : m;
 }
