@@ -115,69 +115,9 @@ H2_TARGET H2_INLINE double H2_NAME(dot)(const double *a, const double *b, size_t
     return t;
 }
 
-/* out[0 .. 4) = the rows a, a + n, a + 2n, a + 3n dotted with b, each
- * summed as H2_NAME(dot) sums it, the same additions in the same order:
- * the four rows' chains of additions run side by side (a row alone waits
- * on each addition's latency) and b is loaded once for the four. Named
- * accumulators, not arrays: an array of vectors is kept in memory. */
-H2_TARGET H2_INLINE void H2_NAME(dot4)(const double *a, const double *b, size_t n, double *out)
-{
-    const double *a1 = a + n, *a2 = a1 + n, *a3 = a2 + n;
-    V p0 = V_ZERO, q0 = V_ZERO, p1 = V_ZERO, q1 = V_ZERO, p2 = V_ZERO, q2 = V_ZERO, p3 = V_ZERO, q3 = V_ZERO;
-    size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-        V b0 = V_LOAD(b + i), b1 = V_LOAD(b + i + 4);
-        p0 = V_ADD(p0, V_MUL(V_LOAD(a + i), b0));
-        q0 = V_ADD(q0, V_MUL(V_LOAD(a + i + 4), b1));
-        p1 = V_ADD(p1, V_MUL(V_LOAD(a1 + i), b0));
-        q1 = V_ADD(q1, V_MUL(V_LOAD(a1 + i + 4), b1));
-        p2 = V_ADD(p2, V_MUL(V_LOAD(a2 + i), b0));
-        q2 = V_ADD(q2, V_MUL(V_LOAD(a2 + i + 4), b1));
-        p3 = V_ADD(p3, V_MUL(V_LOAD(a3 + i), b0));
-        q3 = V_ADD(q3, V_MUL(V_LOAD(a3 + i + 4), b1));
-    }
-    if (i + 4 <= n) {
-        V b0 = V_LOAD(b + i);
-        p0 = V_ADD(p0, V_MUL(V_LOAD(a + i), b0));
-        p1 = V_ADD(p1, V_MUL(V_LOAD(a1 + i), b0));
-        p2 = V_ADD(p2, V_MUL(V_LOAD(a2 + i), b0));
-        p3 = V_ADD(p3, V_MUL(V_LOAD(a3 + i), b0));
-        i += 4;
-    }
-    double t0 = V_HSUM(V_ADD(p0, q0)), t1 = V_HSUM(V_ADD(p1, q1));
-    double t2 = V_HSUM(V_ADD(p2, q2)), t3 = V_HSUM(V_ADD(p3, q3));
-    for (; i < n; i++) {
-        t0 += a[i] * b[i];
-        t1 += a1[i] * b[i];
-        t2 += a2[i] * b[i];
-        t3 += a3[i] * b[i];
-    }
-    out[0] = t0;
-    out[1] = t1;
-    out[2] = t2;
-    out[3] = t3;
-}
-
-/* y += the near field's product, each block's rows dotted with v */
-H2_TARGET static void H2_NAME(near)(const adh_h2 *h, const double *v, double *y)
-{
-    for (size_t b = 0; b < h->nnear; b++) {
-        const h2_near *nb = &h->near[b];
-        const double *B = h->B + nb->off, *vy = v + nb->j0;
-        size_t i = 0;
-        for (; i + 4 <= nb->ni; i += 4) {
-            double d[4];
-            H2_NAME(dot4)(B + i * nb->nj, vy, nb->nj, d);
-            for (size_t r = 0; r < 4; r++)
-                y[nb->i0 + i + r] += d[r];
-        }
-        for (; i < nb->ni; i++)
-            y[nb->i0 + i] += H2_NAME(dot)(B + i * nb->nj, vy, nb->nj);
-    }
-}
-
 /* The rows a, a + ld, a + 2 ld, a + 3 ld dotted with b, n a multiple of
- * 4: H2_NAME(dot4)'s sums, one vector. */
+ * 4: four of H2_NAME(dot)'s sums, one vector. Named accumulators, not
+ * arrays: an array of vectors is kept in memory. */
 H2_TARGET H2_INLINE V H2_NAME(dot4v)(const double *a, size_t ld, const double *b, size_t n)
 {
     const double *a1 = a + ld, *a2 = a1 + ld, *a3 = a2 + ld;
@@ -202,6 +142,40 @@ H2_TARGET H2_INLINE V H2_NAME(dot4v)(const double *a, size_t ld, const double *b
         p3 = V_ADD(p3, V_MUL(V_LOAD(a3 + i), b0));
     }
     return V_HSUM4(V_ADD(p0, q0), V_ADD(p1, q1), V_ADD(p2, q2), V_ADD(p3, q3));
+}
+
+/* out[0 .. 4) = the rows a, a + n, a + 2n, a + 3n dotted with b, each
+ * summed as H2_NAME(dot) sums it, the same additions in the same order:
+ * dot4v's over the whole vectors (its lane k is V_HSUM of the k-th row's
+ * two chains, as dot's), then the last n mod 4 one at a time. */
+H2_TARGET H2_INLINE void H2_NAME(dot4)(const double *a, const double *b, size_t n, double *out)
+{
+    size_t n4 = n / 4 * 4;
+    V_STORE(out, H2_NAME(dot4v)(a, n, b, n4));
+    for (size_t i = n4; i < n; i++) {
+        out[0] += a[i] * b[i];
+        out[1] += a[n + i] * b[i];
+        out[2] += a[2 * n + i] * b[i];
+        out[3] += a[3 * n + i] * b[i];
+    }
+}
+
+/* y += the near field's product, each block's rows dotted with v */
+H2_TARGET static void H2_NAME(near)(const adh_h2 *h, const double *v, double *y)
+{
+    for (size_t b = 0; b < h->nnear; b++) {
+        const h2_near *nb = &h->near[b];
+        const double *B = h->B + nb->off, *vy = v + nb->j0;
+        size_t i = 0;
+        for (; i + 4 <= nb->ni; i += 4) {
+            double d[4];
+            H2_NAME(dot4)(B + i * nb->nj, vy, nb->nj, d);
+            for (size_t r = 0; r < 4; r++)
+                y[nb->i0 + i + r] += d[r];
+        }
+        for (; i < nb->ni; i++)
+            y[nb->i0 + i] += H2_NAME(dot)(B + i * nb->nj, vy, nb->nj);
+    }
 }
 
 /* yt += the near field's product with column weights (h->cw): v (weighted
