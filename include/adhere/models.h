@@ -33,6 +33,10 @@ double adh_jump_separation(const adh_material *m);
 double adh_hertz_force(const adh_material *m, double delta);
 /* JKR: force and approach (overlap, positive = interpenetration) at contact radius a. */
 void adh_jkr(const adh_material *m, double a, double *F, double *overlap);
+/* JKR's contact radius at an overlap on its stable branch (past the fold,
+ * where the overlap rises with a); 0 where the overlap is at or below the
+ * fold's (JKR has no stable contact there). */
+double adh_jkr_radius(const adh_material *m, double overlap);
 /* DMT: force at overlap (positive) delta: Hertz - 2 pi gamma R. */
 double adh_dmt_force(const adh_material *m, double delta);
 double adh_jkr_pulloff(const adh_material *m);

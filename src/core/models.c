@@ -1,5 +1,8 @@
 #include "adhere/models.h"
 
+#include <float.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 #include <math.h>
 
 #include "adhere/status.h"
@@ -57,6 +60,43 @@ void adh_jkr(const adh_material *m, double a, double *F, double *overlap)
         *F = 4.0 * Es * a3 / (3.0 * m->R) - sqrt(8.0 * M_PI * w * Es * a3);
     if (overlap)
         *overlap = a * a / m->R - sqrt(2.0 * M_PI * w * a / Es);
+}
+
+static double jkr_overlap_less(double a, void *ctx)
+{
+    const double *arg = ctx; /* the material's E, R, gamma and the overlap */
+    double Es = arg[0] / 2.0;
+    return a * a / arg[1] - sqrt(2.0 * M_PI * arg[2] * a / Es) - arg[3];
+}
+
+/* JKR's overlap falls with a up to the fold a_f and rises past it: the
+ * stable branch's root is bracketed between a_f and the first doubling of
+ * a_f past it, and Brent's method (GSL) finds it to a few roundings. */
+double adh_jkr_radius(const adh_material *m, double overlap)
+{
+    double arg[4] = { m->E, m->R, adh_material_gamma(m), overlap };
+    double lo = cbrt(M_PI * arg[2] * m->R * m->R / (8.0 * (m->E / 2.0))), hi = lo;
+    if (!(jkr_overlap_less(lo, arg) < 0))
+        return 0.0;
+    for (int i = 0; i < 1100 && jkr_overlap_less(hi, arg) < 0; i++)
+        hi *= 2;
+    if (!(jkr_overlap_less(hi, arg) >= 0))
+        return NAN;
+    gsl_function f = { jkr_overlap_less, arg };
+    gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!rs || gsl_root_fsolver_set(rs, &f, lo, hi) != GSL_SUCCESS) {
+        gsl_root_fsolver_free(rs);
+        return NAN;
+    }
+    int rc = GSL_CONTINUE;
+    for (int i = 0; i < 200 && rc == GSL_CONTINUE; i++) {
+        if (gsl_root_fsolver_iterate(rs) != GSL_SUCCESS)
+            break;
+        rc = gsl_root_test_interval(gsl_root_fsolver_x_lower(rs), gsl_root_fsolver_x_upper(rs), 0, 4 * DBL_EPSILON);
+    }
+    double a = gsl_root_fsolver_root(rs);
+    gsl_root_fsolver_free(rs);
+    return a;
 }
 
 double adh_dmt_force(const adh_material *m, double delta)

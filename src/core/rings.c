@@ -183,28 +183,10 @@ int adh_rings_resolves(const adh_grid *g, double a)
 
 double adh_rings_contact_estimate(const adh_material *m, double h0)
 {
+    /* JKR's radius (adhesion enlarges it beyond Hertz's), or 1.5 Hertz's
+     * where that is larger or JKR has no contact */
     double overlap = m->z0 - h0, est = 1.5 * sqrt(2.0 * m->R * fmax(0.0, overlap));
-    /* JKR's overlap rises with a past its fold a_f: bisect on [a_f, hi]. */
-    double Es = 0.5 * m->E, gamma = adh_material_gamma(m), F, ov;
-    double lo = cbrt(M_PI * gamma * m->R * m->R / (8.0 * Es)), hi = lo;
-    for (int i = 0; i < 200; i++) {
-        adh_jkr(m, hi, &F, &ov);
-        if (!(ov < overlap))
-            break;
-        hi *= 2;
-    }
-    adh_jkr(m, lo, &F, &ov);
-    if (!(ov < overlap)) /* the contact is out past JKR's fold */
-        return est;
-    for (int i = 0; i < 100; i++) {
-        double mid = 0.5 * (lo + hi);
-        adh_jkr(m, mid, &F, &ov);
-        if (ov < overlap)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return fmax(est, hi);
+    return fmax(est, adh_jkr_radius(m, overlap));
 }
 
 static void set_fix(unsigned *fix, unsigned bits)
@@ -255,16 +237,7 @@ void adh_rings_edge_sentence(const adh_grid *g, double a, char *buf, size_t len)
 static double contact_estimate(const adh_material *m, double deepest)
 {
     double depth = fmax(m->z0 - deepest, m->z0);
-    double lo = 0, hi = 10 * sqrt(2 * m->R * depth) + 10 * sqrt(m->R * m->z0);
-    for (int i = 0; i < 200; i++) {
-        double mid = 0.5 * (lo + hi), ov;
-        adh_jkr(m, mid, NULL, &ov);
-        if (ov < depth)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return fmax(hi, 1.5 * sqrt(2.0 * m->R * depth));
+    return fmax(adh_jkr_radius(m, depth), 1.5 * sqrt(2.0 * m->R * depth));
 }
 
 /* MB a kernel holds: dense N^2 doubles, or as H^2 ~1.3 kB a ring

@@ -56,28 +56,6 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg)
     }
 }
 
-/* JKR's contact radius at overlap delta for material m: the stable branch
- * (a above the fold, where the overlap rises with a), by bisection; 0 where
- * the overlap is below the fold's (no contact). */
-static double jkr_radius(const adh_material *m, double delta)
-{
-    double w = adh_material_gamma(m), Es = m->E / 2.0;
-    double lo = pow(m->R * sqrt(2.0 * M_PI * w / Es) / 4.0, 2.0 / 3.0), hi = lo, ov;
-    adh_jkr(m, lo, NULL, &ov);
-    if (delta <= ov)
-        return 0.0;
-    do {
-        hi *= 2;
-        adh_jkr(m, hi, NULL, &ov);
-    } while (ov < delta && hi < m->R);
-    for (int i = 0; i < 60; i++) {
-        double mid = 0.5 * (lo + hi);
-        adh_jkr(m, mid, NULL, &ov);
-        *(ov < delta ? &lo : &hi) = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
 /* Measured on the Figure 4 sphere (sigma0 = 7.5, N = 648, Einf = 10 E0,
  * tau = 1 ms, 1 nm/s ... 10 mm/s, docs/viscoelastic.md): the contact line
  * moves about 0.068 edge zones a step, of the edge zone at an effective
@@ -122,13 +100,13 @@ void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c)
     double step_out = travel_step(&s->mat, &v, v.drive.speed_out, &c->E_out);
     double deep = ps->nturns ? adh_protocol_deepest_turn(ps) : adh_config_start(s);
     m.E = c->E_in;
-    c->a_turn = ps->nturns ? jkr_radius(&m, m.z0 - deep) : 0.0;
+    c->a_turn = ps->nturns ? adh_jkr_radius(&m, m.z0 - deep) : 0.0;
     c->free_steps = TIME_FREE_STEPS;
     c->contact_steps = c->a_turn / step_in;
     m.E = c->E_out;
     for (size_t i = 0; ps->unload && i < ps->nturns; i++) {
         c->free_steps += TIME_FREE_STEPS + (v.drive.dwell > 0 ? TIME_DWELL_STEPS : 0.0);
-        c->contact_steps += jkr_radius(&m, m.z0 - ps->turns[i]) / step_out;
+        c->contact_steps += adh_jkr_radius(&m, m.z0 - ps->turns[i]) / step_out;
     }
     c->lattice = lattice_factor(&v);
     c->E_ratio = v.sls.Einf / v.sls.E0;

@@ -125,5 +125,21 @@ int main(void)
         worst = fmax(worst, fabs(c2.F[i] - adh_dmt_force(&m, m.z0 - c2.h0[i])) / (2.0 * piwR));
     ok(worst < 0.05, "lambda = 1e-4: on DMT's F(h0) within 5 %% of 2 pi gamma R (worst %.3g)", worst);
     ok(adh_md_drive_curve(&m, 0.0, h0_min, &c2) == ADH_EINVAL, "MD: lambda 0 refused");
+    /* ---- JKR's radius at an overlap: the overlap it gives back (closed
+     * form, eq of adh_jkr), on the stable branch past the fold, none below
+     * the fold's overlap */
+    {
+        double a_f = cbrt(M_PI * d.gamma * m.R * m.R / (8.0 * Es)), ov_f;
+        adh_jkr(&m, a_f, NULL, &ov_f);
+        const double want[] = { ov_f * 0.5, 0.0, 1e-9, 5e-9, 1e-6 };
+        for (size_t i = 0; i < sizeof want / sizeof *want; i++) {
+            double a = adh_jkr_radius(&m, want[i]), ov;
+            adh_jkr(&m, a, NULL, &ov);
+            ok(a > a_f && fabs(ov - want[i]) <= 1e-12 * (fabs(want[i]) + a * a / m.R),
+               "JKR radius at overlap %g m: %g m past the fold %g m, overlap back %g", want[i], a, a_f, ov);
+        }
+        ok(adh_jkr_radius(&m, ov_f * 1.5) == 0.0 && adh_jkr_radius(&m, ov_f) == 0.0,
+           "JKR radius: no contact at or below the fold's overlap %g m", ov_f);
+    }
     return tap_done();
 }
