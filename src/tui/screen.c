@@ -90,6 +90,15 @@ static const char *pad(const char *s, int w, char *buf, size_t len)
     return buf;
 }
 
+/* s padded to 12 columns of the terminal, not 12 bytes ("16.43 µm" is
+ * 8 columns in 9 bytes); one line's worth, for the put() at hand */
+static const char *col12(const char *s)
+{
+    static char buf[96];
+    return pad(s, 12, buf, sizeof buf);
+}
+
+
 /* Whether the blank at p[i] stands between a number and its unit. */
 static int unit_follows(const char *p, int i)
 {
@@ -136,9 +145,17 @@ static const char *gk(const tui_view *v, const char *utf8, const char *ascii)
     return v->utf8 ? utf8 : ascii;
 }
 
-static void q(double value, adh_quantity kind, char *buf, size_t len)
+/* value in its unit, micro as the micro sign where the terminal shows
+ * UTF-8 (the parameter panel beside it writes "10 µm"; "1 um/s" under it
+ * read as another unit) */
+static void q(const tui_view *v, double value, adh_quantity kind, char *buf, size_t len)
 {
     adh_format_quantity(value, kind, 4, buf, len);
+    char *u = strstr(buf, " u");
+    if (v->utf8 && u && isalpha((unsigned char)u[2]) && strlen(buf) + 2 < len) {
+        memmove(u + 3, u + 2, strlen(u + 2) + 1);
+        u[1] = '\xc2', u[2] = '\xb5';
+    }
 }
 
 static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w)
@@ -232,13 +249,13 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     double unit = M_PI * d->gamma * s->cfg.spec.mat.R;
     /* gamma is an energy per area: J/m^2, shown in mJ/m^2 where it lives */
     snprintf(g, sizeof g, "%.4g mJ/m%s", d->gamma * 1e3, gk(v, "\xc2\xb2", "^2"));
-    q(d->Estar, ADH_Q_PRESSURE, es, sizeof es);
-    q(d->F_jkr, ADH_Q_FORCE, jkr, sizeof jkr);
-    q(d->F_dmt, ADH_Q_FORCE, dmt, sizeof dmt);
-    q(m->md_pulloff, ADH_Q_FORCE, md, sizeof md);
-    q(m->jump_in, ADH_Q_LENGTH, ji, sizeof ji);
-    q(d->h_star, ADH_Q_LENGTH, hs, sizeof hs);
-    q(m->md_jump_out, ADH_Q_LENGTH, jo, sizeof jo);
+    q(v, d->Estar, ADH_Q_PRESSURE, es, sizeof es);
+    q(v, d->F_jkr, ADH_Q_FORCE, jkr, sizeof jkr);
+    q(v, d->F_dmt, ADH_Q_FORCE, dmt, sizeof dmt);
+    q(v, m->md_pulloff, ADH_Q_FORCE, md, sizeof md);
+    q(v, m->jump_in, ADH_Q_LENGTH, ji, sizeof ji);
+    q(v, d->h_star, ADH_Q_LENGTH, hs, sizeof hs);
+    q(v, m->md_jump_out, ADH_Q_LENGTH, jo, sizeof jo);
     put(y, x, w, A_BOLD, " Derived from the parameters; models");
     put(y + 1, x, w, A_NORMAL, "  %s %.4g   %s %.4g   %s %s", gk(v, "\xcf\x83", "sigma"), d->sigma,
         gk(v, "\xce\xbc", "mu"), d->mu, gk(v, "\xce\xb3", "gamma"), g);
@@ -268,23 +285,23 @@ static void draw_cycle(const tui_sim *s, const tui_view *v, int y, int x, int w)
         put(y + 1, x, w, A_NORMAL, "  load, pull-off, jumps, hysteresis: step first");
         return;
     }
-    q(c.max_load, ADH_Q_FORCE, a, sizeof a);
-    q(c.a_turn, ADH_Q_LENGTH, b, sizeof b);
+    q(v, c.max_load, ADH_Q_FORCE, a, sizeof a);
+    q(v, c.a_turn, ADH_Q_LENGTH, b, sizeof b);
     if (c.unloading)
         put(y + 1, x, w, A_NORMAL, "  load   max %s; a %s at the turn", a, c.a_turn > 0 ? b : "0 nm");
     else
         put(y + 1, x, w, A_NORMAL, "  load   %s deepest so far, a %s", a, c.a_turn > 0 ? b : "0 nm");
     /* pull-off: the force minimum on unloading; jump-out: where the
      * surfaces separate (the tables' pulloff_F and jump_out_h0) */
-    q(c.pulloff_F, ADH_Q_FORCE, a, sizeof a);
-    q(c.pulloff_h0, ADH_Q_LENGTH, b, sizeof b);
+    q(v, c.pulloff_F, ADH_Q_FORCE, a, sizeof a);
+    q(v, c.pulloff_h0, ADH_Q_LENGTH, b, sizeof b);
     if (c.unloading)
         put(y + 2, x, w, A_NORMAL, "  pull-off %s = %.3g %s at %s", a, c.pulloff_F / -unit,
             gk(v, "\xcf\x80\xce\xb3R", "pi gamma R"), b);
     else
         put(y + 2, x, w, A_NORMAL, "  pull-off not unloaded yet");
-    q(c.jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
-    q(c.jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
+    q(v, c.jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
+    q(v, c.jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
     put(y + 3, x, w, A_NORMAL, "  jump-in %s, jump-out %s", isnan(c.jump_in_h0) ? "not yet" : a,
         isnan(c.jump_out_h0) ? "not yet" : b);
     if (c.unloading)
@@ -297,20 +314,20 @@ static void draw_cycle(const tui_sim *s, const tui_view *v, int y, int x, int w)
 static void draw_point_rows(const adh_obs *o, int rigid_ref, const tui_view *v, int y, int x, int w)
 {
     char a[64], b[64], lab[32];
-    q(o->h0, ADH_Q_LENGTH, a, sizeof a);
-    put(y + 1, x, w, A_NORMAL, "  h0     %-12s drive position", a);
-    q(o->F, ADH_Q_FORCE, a, sizeof a);
-    q(o->F_rigid, ADH_Q_FORCE, b, sizeof b);
+    q(v, o->h0, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 1, x, w, A_NORMAL, "  h0     %s drive position", col12(a));
+    q(v, o->F, ADH_Q_FORCE, a, sizeof a);
+    q(v, o->F_rigid, ADH_Q_FORCE, b, sizeof b);
     if (rigid_ref && !(o->a > 0))
-        put(y + 2, x, w, A_NORMAL, "  F      %-12s force (rigid spheres %s)", a, b);
+        put(y + 2, x, w, A_NORMAL, "  F      %s force (rigid spheres %s)", col12(a), b);
     else
-        put(y + 2, x, w, A_NORMAL, "  F      %-12s force (positive repels)", a);
-    q(o->delta, ADH_Q_LENGTH, a, sizeof a);
-    put(y + 3, x, w, A_NORMAL, "  %s %-12s central deformation", pad(gk(v, "\xce\xb4", "delta"), 6, lab, sizeof lab), a);
-    q(o->hc, ADH_Q_LENGTH, a, sizeof a);
-    put(y + 4, x, w, A_NORMAL, "  gap    %-12s central gap h(0)", a);
-    q(o->a, ADH_Q_LENGTH, a, sizeof a);
-    put(y + 5, x, w, A_NORMAL, "  a      %-12s contact radius%s", a, o->a > 0 ? "" : " (not in contact)");
+        put(y + 2, x, w, A_NORMAL, "  F      %s force (positive repels)", col12(a));
+    q(v, o->delta, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 3, x, w, A_NORMAL, "  %s %s central deformation", pad(gk(v, "\xce\xb4", "delta"), 6, lab, sizeof lab), col12(a));
+    q(v, o->hc, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 4, x, w, A_NORMAL, "  gap    %s central gap h(0)", col12(a));
+    q(v, o->a, ADH_Q_LENGTH, a, sizeof a);
+    put(y + 5, x, w, A_NORMAL, "  a      %s contact radius%s", col12(a), o->a > 0 ? "" : " (not in contact)");
 }
 
 /* Static mode: the point shown, its stability, and what the curve computed
@@ -339,9 +356,9 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
     char a[64], b[64];
     put(y, x, w, A_BOLD, " State  (static equilibrium)");
     if (!o) {
-        q(s->start, ADH_Q_LENGTH, a, sizeof a);
-        q(tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
-        put(y + 1, x, w, A_NORMAL, "  h0     %-12s start, not solved yet", a);
+        q(v, s->start, ADH_Q_LENGTH, a, sizeof a);
+        q(v, tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
+        put(y + 1, x, w, A_NORMAL, "  h0     %s start, not solved yet", col12(a));
         char msg[200], *sp = strchr(b, ' ');
         /* number and unit on one line: a no-break space where it can be */
         char end[72];
@@ -359,8 +376,8 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
         if (r->folds) {
             /* the physical folds, where an experiment jumps, apart from
              * those of the grid's lattice (the contact line crossing a node) */
-            q(r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
-            q(r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
+            q(v, r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
+            q(v, r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
             size_t physical = !isnan(r->jump_in_h0) + !isnan(r->jump_out_h0);
             size_t lattice = r->folds > physical ? r->folds - physical : 0;
             char more[48] = "";
@@ -371,8 +388,8 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
         } else {
             put(y + 7, x, w, A_NORMAL, "  folds  none yet");
         }
-        q(r->pulloff_F, ADH_Q_FORCE, a, sizeof a);
-        q(r->pulloff_F_disp, ADH_Q_FORCE, b, sizeof b);
+        q(v, r->pulloff_F, ADH_Q_FORCE, a, sizeof a);
+        q(v, r->pulloff_F_disp, ADH_Q_FORCE, b, sizeof b);
         /* the pull-off is the force minimum; the force where the surfaces
          * leave at fixed h0 is the jump-out's (summary: pulloff_F_disp) */
         if (isnan(r->pulloff_F_disp))
@@ -382,7 +399,7 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
     }
     put(y + 9, x, w, A_NORMAL, "  mode   static (m: relaxation), %s", v->activity);
     if (!put_stopped(s, y + 10, x + 2, w - 2, "curve") && o) {
-        q(tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
+        q(v, tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
         put(y + 10, x, w, A_NORMAL, "  curve  %s at h0 = %s", s->cstatus == ADH_SUCCESS ? "complete, ends" : "goes on to its end", b);
     }
 }
@@ -397,33 +414,33 @@ static void draw_time_state(const tui_sim *s, const tui_view *v, int y, int x, i
     char a[64], b[64];
     put(y, x, w, A_BOLD, " State  (physical time)");
     if (!o) {
-        q(ts->speed_in, ADH_Q_SPEED, a, sizeof a);
-        q(tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
+        q(v, ts->speed_in, ADH_Q_SPEED, a, sizeof a);
+        q(v, tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
         put(y + 1, x, w, A_NORMAL, "  t      0 s, the base at rest, the material relaxed");
         put(y + 2, x, w, A_NORMAL, "  Press f for the first step in time, r to run the");
         put(y + 3, x, w, A_NORMAL, "  cycle: in at %s, out, back to h0 = %s.", a, b);
         put(y + 9, x, w, A_NORMAL, "  mode   physical time, %s", v->activity);
         return;
     }
-    q(o->t, ADH_Q_TIME, a, sizeof a);
-    q(s->cfg.spec.time.tau, ADH_Q_TIME, b, sizeof b);
-    put(y + 1, x, w, A_NORMAL, "  t      %-12s step %zu of %zu, %s %s", a, s->ccur + 1, s->curve.nrows,
+    q(v, o->t, ADH_Q_TIME, a, sizeof a);
+    q(v, s->cfg.spec.time.tau, ADH_Q_TIME, b, sizeof b);
+    put(y + 1, x, w, A_NORMAL, "  t      %s step %zu of %zu, %s %s", col12(a), s->ccur + 1, s->curve.nrows,
         gk(v, "\xcf\x84", "tau"), b);
-    q(o->base, ADH_Q_LENGTH, a, sizeof a);
-    q(o->branch > 0 ? ts->speed_in : ts->speed_out, ADH_Q_SPEED, b, sizeof b);
-    put(y + 2, x, w, A_NORMAL, "  base   %-12s %s at %s", a, o->branch > 0 ? "approaching" : "retracting", b);
-    q(o->h0, ADH_Q_LENGTH, a, sizeof a);
-    q(o->F, ADH_Q_FORCE, b, sizeof b);
-    put(y + 3, x, w, A_NORMAL, "  h0     %-12s F %s", a, b);
-    q(o->a, ADH_Q_LENGTH, a, sizeof a);
-    q(o->delta, ADH_Q_LENGTH, b, sizeof b);
-    put(y + 4, x, w, A_NORMAL, "  a      %-12s %s %s", o->a > 0 ? a : "0 (apart)", gk(v, "\xce\xb4", "delta"), b);
-    q(r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
-    q(r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
+    q(v, o->base, ADH_Q_LENGTH, a, sizeof a);
+    q(v, o->branch > 0 ? ts->speed_in : ts->speed_out, ADH_Q_SPEED, b, sizeof b);
+    put(y + 2, x, w, A_NORMAL, "  base   %s %s at %s", col12(a), o->branch > 0 ? "approaching" : "retracting", b);
+    q(v, o->h0, ADH_Q_LENGTH, a, sizeof a);
+    q(v, o->F, ADH_Q_FORCE, b, sizeof b);
+    put(y + 3, x, w, A_NORMAL, "  h0     %s F %s", col12(a), b);
+    q(v, o->a, ADH_Q_LENGTH, a, sizeof a);
+    q(v, o->delta, ADH_Q_LENGTH, b, sizeof b);
+    put(y + 4, x, w, A_NORMAL, "  a      %s %s %s", col12(o->a > 0 ? a : "0 (apart)"), gk(v, "\xce\xb4", "delta"), b);
+    q(v, r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
+    q(v, r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
     put(y + 5, x, w, A_NORMAL, "  jumps  %zu; in %s, out %s", r->jumps, isnan(r->jump_in_h0) ? "not yet" : a,
         isnan(r->jump_out_h0) ? "not yet" : b);
-    q(r->pulloff_F, ADH_Q_FORCE, a, sizeof a);
-    q(r->pulloff_t, ADH_Q_TIME, b, sizeof b);
+    q(v, r->pulloff_F, ADH_Q_FORCE, a, sizeof a);
+    q(v, r->pulloff_t, ADH_Q_TIME, b, sizeof b);
     if (isnan(r->pulloff_F))
         put(y + 6, x, w, A_NORMAL, "  pull   not unloaded yet");
     else
@@ -452,8 +469,8 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
     const adh_obs *rows = tui_sim_rows(s, &nrows);
     put(y, x, w, A_BOLD, " State");
     if (!o) {
-        q(s->start, ADH_Q_LENGTH, a, sizeof a);
-        put(y + 1, x, w, A_NORMAL, "  h0     %-12s start position, not solved yet", a);
+        q(v, s->start, ADH_Q_LENGTH, a, sizeof a);
+        put(y + 1, x, w, A_NORMAL, "  h0     %s start position, not solved yet", col12(a));
         put_wrapped(y + 2, x + 2, w - 2, 3, A_NORMAL, "Press f to approach by d, r to run to the turning "
                     "point, ? for every key. Edits change the numbers at the left at once; a solve starts only "
                     "when you step.");
@@ -489,7 +506,7 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
     size_t bad = 0;
     for (size_t i = 0; i < nrows; i++)
         bad += !rows[i].converged;
-    q(s->start, ADH_Q_LENGTH, a, sizeof a);
+    q(v, s->start, ADH_Q_LENGTH, a, sizeof a);
     put(y + 9, x, w, A_NORMAL, "  path   %zu state%s, %zu to redo; start %s", nrows, nrows == 1 ? "" : "s",
         tui_sim_redoable(s), a);
     if (s->warn[0])
@@ -586,9 +603,9 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     for (int r = 0; r < ph; r++) {
         lbl[0] = '\0';
         if (r == 0)
-            q(ymax, ADH_Q_FORCE, lbl, sizeof lbl);
+            q(v, ymax, ADH_Q_FORCE, lbl, sizeof lbl);
         else if (r == ph - 1)
-            q(ymin, ADH_Q_FORCE, lbl, sizeof lbl);
+            q(v, ymin, ADH_Q_FORCE, lbl, sizeof lbl);
         else if (r == zero)
             snprintf(lbl, sizeof lbl, "0");
         put(y0 + 1 + r, x0, lab, A_NORMAL, "%*s", lab - 1, lbl);
@@ -597,8 +614,8 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     }
     free(grid);
     char lo[64], hi[64];
-    q(xmin, ADH_Q_LENGTH, lo, sizeof lo);
-    q(xmax, ADH_Q_LENGTH, hi, sizeof hi);
+    q(v, xmin, ADH_Q_LENGTH, lo, sizeof lo);
+    q(v, xmax, ADH_Q_LENGTH, hi, sizeof hi);
     if (compact) {   /* the position axis in words, at the heading's end */
         char range[160];
         snprintf(range, sizeof range, "h0 %s to %s ", lo, hi);
