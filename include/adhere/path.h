@@ -64,14 +64,16 @@ void adh_path_free(adh_path *p);
 int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, const adh_visco_drive *d,
                    const adh_protocol_settings *ps, adh_run *run);
 
-/* The summary (adh_visco_result's fields: the times and bases of the
- * jumps and the pull-off, the cycle's accounts, time; no integrator
- * steps) and the events (borrowed). */
-void adh_path_summary(const adh_path *p, adh_visco_result *res);
-size_t adh_path_events(const adh_path *p, const adh_visco_event **ev);
-/* The row of run at which the path's jump into contact lands (the drive
- * says jump-in from then), or (size_t)-1. */
-size_t adh_path_jump_in_row(const adh_path *p);
+/* The rows the walk appended. */
+size_t adh_path_rows(const adh_path *p);
+/* The summary as the walk's first rows (all of them: adh_path_rows) have
+ * seen it (adh_visco_result's fields: the times and bases of the jumps and
+ * the pull-off, the cycle's accounts once its branch ended, time; no
+ * integrator steps), and the events among those rows (borrowed; a jump's
+ * from its landing's row): a driver that hands the rows out one by one
+ * shows what happened so far. */
+void adh_path_summary(const adh_path *p, size_t rows, adh_visco_result *res);
+size_t adh_path_events(const adh_path *p, size_t rows, const adh_visco_event **ev);
 /* The state at the path's row (counted from the walk's first), its
  * deformation linear between the curve's rows around it (p's own, valid
  * until the next call); NULL without the rows' deformations. The curve

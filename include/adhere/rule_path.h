@@ -32,8 +32,9 @@ adh_static_settings adh_rule_path_static_settings(double k, const volatile sig_a
 const adh_run *adh_rule_path_curve(const adh_drive *d, adh_static_result *res);
 
 /* The path behind drive d (summary, events: none before the first
- * step), NULL when d steps another rule. */
-const adh_path *adh_rule_path_walk(const adh_drive *d);
+ * step) and in *rows (may be NULL) how many of its rows the drive has
+ * had; NULL when d steps another rule. */
+const adh_path *adh_rule_path_walk(const adh_drive *d, size_t *rows);
 /* Moves the turns' summaries and the profiles of the path into run, the
  * drive's own record, at the end of a run (as adh_rule_visco_take). */
 void adh_rule_path_take(adh_drive *d, adh_run *run);

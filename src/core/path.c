@@ -20,7 +20,10 @@ typedef struct path_pt {
 
 struct adh_path {
     adh_visco_event *ev;
+    size_t *ev_row;             /* the row (of the walk's) each event shows from */
     size_t nev, evcap;
+    size_t *lat_row;            /* the landing row of each lattice jump */
+    size_t nlat, latcap;
     adh_visco_result res;
     size_t jump_in_row;
     double *xs;                 /* where on the curve each row of run is (-1: a
@@ -76,25 +79,57 @@ void adh_path_free(adh_path *p)
     if (!p)
         return;
     free(p->ev);
+    free(p->ev_row);
+    free(p->lat_row);
     free(p->xs);
     adh_state_free(p->st);
     free(p);
 }
 
-void adh_path_summary(const adh_path *p, adh_visco_result *res)
+size_t adh_path_events(const adh_path *p, size_t rows, const adh_visco_event **ev)
+{
+    size_t n = 0;
+    while (n < p->nev && p->ev_row[n] < rows)
+        n++;
+    *ev = p->ev;
+    return n;
+}
+
+void adh_path_summary(const adh_path *p, size_t rows, adh_visco_result *res)
 {
     *res = p->res;
+    if (rows >= p->nxs)
+        return;
+    /* what the walk's first rows have seen: the events among them */
+    const adh_visco_event *ev;
+    size_t n = adh_path_events(p, rows, &ev), deepest = p->ps.nturns, ended = 0, out = 0, pull = 0;
+    res->jumps = res->lattice_jumps = 0;
+    for (size_t i = 0; i < n; i++) {
+        res->jumps += ev[i].kind == ADH_VISCO_JUMP;
+        if ((size_t)ev[i].path != deepest || deepest == 0)
+            continue;
+        ended |= ev[i].kind == ADH_VISCO_END;
+        pull |= ev[i].kind == ADH_VISCO_PULLOFF;
+        out |= (ev[i].kind == ADH_VISCO_JUMP || ev[i].kind == ADH_VISCO_CONTACT) && !(ev[i].a_after > 0);
+    }
+    for (size_t i = 0; i < p->nlat; i++)
+        res->lattice_jumps += p->lat_row[i] < rows;
+    if (p->jump_in_row == (size_t)-1 || p->jump_in_row - p->row0 >= rows)
+        res->jump_in_h0 = res->jump_in_t = res->jump_in_base = NAN;
+    if (!pull)
+        res->pulloff_F = res->pulloff_h0 = res->pulloff_t = res->pulloff_base = NAN;
+    if (!out)
+        res->jump_out_h0 = res->jump_out_t = res->jump_out_base = NAN;
+    if (!ended) {
+        res->hysteresis = NAN;
+        memset(&res->cycle, 0, sizeof res->cycle);
+    }
+    res->time = rows ? p->run->rows[p->row0 + rows - 1].t : 0;
 }
 
-size_t adh_path_events(const adh_path *p, const adh_visco_event **ev)
+size_t adh_path_rows(const adh_path *p)
 {
-    *ev = p->ev;
-    return p->nev;
-}
-
-size_t adh_path_jump_in_row(const adh_path *p)
-{
-    return p->jump_in_row == (size_t)-1 ? p->jump_in_row : p->jump_in_row - p->row0;
+    return p->nxs;
 }
 
 static double base_of(const adh_path *p, const adh_obs *o)
@@ -148,18 +183,35 @@ static int state_at(adh_path *p, double x)
     return 0;
 }
 
+/* Room for one more in a growing array (*a of *cap elements of size sz). */
+static int room(adh_path *p, void **a, size_t *cap, size_t n, size_t sz)
+{
+    if (n < *cap)
+        return 0;
+    size_t c = *cap ? 2 * *cap : 32;
+    void *b = realloc(*a, c * sz);
+    if (!b) {
+        p->rc = ADH_ENOMEM;
+        return -1;
+    }
+    *a = b;
+    *cap = c;
+    return 0;
+}
+
+/* The last row emitted, counted from the walk's first. */
+static size_t last_row(const adh_path *p)
+{
+    return p->run->nrows - 1 - p->row0;
+}
+
 static adh_visco_event *add_event(adh_path *p, int kind, const path_pt *q)
 {
-    if (p->nev == p->evcap) {
-        size_t cap = p->evcap ? 2 * p->evcap : 32;
-        adh_visco_event *e = realloc(p->ev, cap * sizeof *e);
-        if (!e) {
-            p->rc = ADH_ENOMEM;
-            return NULL;
-        }
-        p->ev = e;
-        p->evcap = cap;
-    }
+    size_t cap = p->evcap;
+    if (room(p, (void **)&p->ev, &cap, p->nev, sizeof *p->ev) || room(p, (void **)&p->ev_row, &p->evcap, p->nev,
+                                                                       sizeof *p->ev_row))
+        return NULL;
+    p->ev_row[p->nev] = last_row(p);
     adh_visco_event *e = &p->ev[p->nev++];
     memset(e, 0, sizeof *e);
     e->kind = kind;
@@ -375,6 +427,8 @@ static void jump(adh_path *p, path_pt *f, path_pt *l, double loss)
     int before = f->o.a > 0, after = l->o.a > 0;
     if (before == after) {
         p->res.lattice_jumps++;
+        if (room(p, (void **)&p->lat_row, &p->latcap, p->nlat, sizeof *p->lat_row) == 0)
+            p->lat_row[p->nlat++] = last_row(p);
         return;
     }
     adh_visco_event *e = add_event(p, ADH_VISCO_JUMP, f);
@@ -434,7 +488,10 @@ static void load(adh_path *p)
             double x = (double)(i - 1) + (T - a->h0) / (b->h0 - a->h0);
             if (b->h0 < T && a->h0 > T && x > p->last.x) {   /* the turn, between the rows */
                 step_to(p, x);
-                p->last.o.h0 = p->run->rows[p->run->nrows - 1].h0 = T;
+                adh_obs *o = &p->run->rows[p->run->nrows - 1];
+                o->h0 = T;   /* exactly: the protocol's turn */
+                o->base = base_of(p, o);
+                p->last.o = *o;
                 reach_turn(p);
                 continue;
             }
@@ -468,7 +525,9 @@ static void load(adh_path *p)
  * reached it (its rows around it). */
 static void pulloff(adh_path *p, adh_turn_result *tr)
 {
-    if (p->pull_row < 0)
+    /* none where the force only rose from the turn (a turn short of
+     * contact): no minimum */
+    if (p->pull_row < 0 || p->run->rows[p->pull_row - (p->pull_row > 0)].path != p->path)
         return;
     path_pt q = { .o = p->run->rows[p->pull_row] };
     const adh_static_result *sr = p->c->res;
@@ -489,7 +548,9 @@ static void pulloff(adh_path *p, adh_turn_result *tr)
         return;
     adh_visco_event keep = *e;
     memmove(&p->ev[at_ev + 1], &p->ev[at_ev], (p->nev - 1 - at_ev) * sizeof *e);
+    memmove(&p->ev_row[at_ev + 1], &p->ev_row[at_ev], (p->nev - 1 - at_ev) * sizeof *p->ev_row);
     p->ev[at_ev] = keep;
+    p->ev_row[at_ev] = (size_t)p->pull_row - p->row0;
     if ((size_t)p->path == p->ps.nturns)
         p->res.pulloff_F = q.o.F, p->res.pulloff_h0 = q.o.h0, p->res.pulloff_t = q.o.t, p->res.pulloff_base = q.o.base;
 }
@@ -566,6 +627,8 @@ static void unload(adh_path *p, size_t k)
     tr->path = (int)k + 1;
     p->run->nturns = k + 1;
     p->in_contact = q.o.a > 0;
+    if (!p->in_contact)   /* a turn short of contact: out of it from the first row */
+        tr->jump_out_h0 = q.o.h0;
     double bt = base_of(p, &q.o);
     p->t0 = q.o.t, p->b0 = bt, p->speed = p->d.speed_out;
     emit(p, &q, p->t0, 0);
@@ -635,7 +698,7 @@ static int cmp_desc(const void *a, const void *b)
 int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, const adh_visco_drive *d,
                    const adh_protocol_settings *ps, adh_run *run)
 {
-    p->nev = p->nxs = 0;
+    p->nev = p->nxs = p->nlat = 0;
     p->row0 = run->nrows;
     p->c = c, p->m = *m, p->d = *d, p->ps = *ps, p->run = run;
     p->rc = ADH_SUCCESS;

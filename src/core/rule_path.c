@@ -192,11 +192,8 @@ static int path_next(void *vr)
 static double path_jump_in(const void *vr)
 {
     const path_rule *r = vr;
-    size_t at = r->built ? adh_path_jump_in_row(r->path) : (size_t)-1;
-    if (at == (size_t)-1 || r->next <= at)
-        return NAN;
     adh_visco_result res;
-    adh_path_summary(r->path, &res);
+    adh_path_summary(r->path, r->next, &res);
     return res.jump_in_h0;
 }
 
@@ -241,9 +238,11 @@ const adh_run *adh_rule_path_curve(const adh_drive *d, adh_static_result *res)
     return &r->curve;
 }
 
-const adh_path *adh_rule_path_walk(const adh_drive *d)
+const adh_path *adh_rule_path_walk(const adh_drive *d, size_t *rows)
 {
     const path_rule *r = adh_drive_workspace(d, &adh_rule_path);
+    if (r && rows)
+        *rows = r->next;
     return r ? r->path : NULL;
 }
 

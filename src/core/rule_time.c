@@ -18,13 +18,14 @@ int adh_rule_time_summary(const adh_drive *d, adh_visco_result *res)
         adh_visco_summary(w, res);
         return 0;
     }
-    const adh_path *p = adh_rule_path_walk(d);
+    size_t rows;
+    const adh_path *p = adh_rule_path_walk(d, &rows);
     if (!p)
         return -1;
     adh_static_result sr;
     memset(&sr, 0, sizeof sr);
     adh_rule_path_curve(d, &sr);
-    adh_path_summary(p, res);
+    adh_path_summary(p, rows, res);
     /* no integrator: the static curve's work */
     res->newton = sr.newton_iterations;
     res->krylov = sr.krylov_iterations;
@@ -36,9 +37,10 @@ int adh_rule_time_summary(const adh_drive *d, adh_visco_result *res)
 size_t adh_rule_time_events(const adh_drive *d, const adh_visco_event **ev)
 {
     const adh_visco *w = adh_rule_visco_solver(d);
-    const adh_path *p = adh_rule_path_walk(d);
+    size_t rows;
+    const adh_path *p = adh_rule_path_walk(d, &rows);
     *ev = NULL;
-    return w ? adh_visco_events(w, ev) : p ? adh_path_events(p, ev) : 0;
+    return w ? adh_visco_events(w, ev) : p ? adh_path_events(p, rows, ev) : 0;
 }
 
 void adh_rule_time_take(adh_drive *d, adh_run *run)
