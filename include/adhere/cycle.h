@@ -53,5 +53,7 @@ double adh_cycle_run_hysteresis(const adh_run *run);
  * lattice's folds, never across the jump-in or jump-out). NAN when memory
  * runs out. */
 double adh_cycle_static_hysteresis(const adh_run *curve, double step);
+/* The step, in z0, every driver samples a static curve's loop at. */
+#define ADH_CYCLE_HYSTERESIS_STEP 0.002
 
 #endif

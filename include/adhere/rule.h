@@ -22,6 +22,10 @@
  *   visco   a standard linear solid in physical time (rule_visco.c): the
  *           integrator walks the whole cycle at the drive's speeds, through
  *           its spring; settings: adh_visco_rule_settings.
+ *   path    an elastic sphere in physical time (rule_path.c): the static
+ *           curve solved, then the path the base drives along it (its
+ *           jumps at the base's folds, time from the base's travel), no
+ *           integration; settings: adh_visco_rule_settings.
  *
  * Two kinds of rule, told apart by which functions they fill:
  *   stepped (move, iterate and the snapshots; next NULL): the drive's
@@ -117,7 +121,7 @@ typedef struct adh_rule_type {
 
 /* The registration: one X(NAME) per rule, each defined as adh_rule_NAME in
  * src/core/rule_NAME.c (a test steps every rule listed here). */
-#define ADH_RULES(X) X(relax) X(static) X(rigid) X(visco)
+#define ADH_RULES(X) X(relax) X(static) X(rigid) X(visco) X(path)
 
 #define ADH_RULE_DECLARE(name) extern const adh_rule_type adh_rule_##name;
 ADH_RULES(ADH_RULE_DECLARE)

@@ -87,7 +87,8 @@ static int on_step(const adh_obs *o, const adh_run *run, void *vctx)
  * reference's loop, static_hyst, when there is one: the share of the
  * hysteresis no slower drive removes), where it went. */
 static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh_static_result *sres,
-                         double static_hyst, double seconds, const char *out, const char *tables, const char *plots)
+                         const adh_visco_result *tres, double static_hyst, double seconds, const char *out,
+                         const char *tables, const char *plots)
 {
     char t[32], F[64] = "", in[64] = "", jo[64] = "", hy[160] = "", why[512];
     double pull = NAN, jin = run->jump_in_h0, jout = NAN, hyst = NAN;
@@ -105,7 +106,8 @@ static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh
         if (tr) {
             pull = tr->pulloff_F;
             jout = tr->jump_out_h0;
-            hyst = adh_cycle_hysteresis(run->rows, run->nrows, tr->path);
+            /* physical time's: the base's work over the cycle, as summary.tsv says it */
+            hyst = tres ? tres->hysteresis : adh_cycle_hysteresis(run->rows, run->nrows, tr->path);
         }
     }
     if (!isnan(hyst) && !isnan(static_hyst))
@@ -323,7 +325,8 @@ static void batch_plots(batch_job *j, double ref_hyst, char *unwritten, size_t u
         snprintf(plots, sizeof plots, "wrote %.*s%s%s%s", (int)(in - msg - 6), msg + 6, fig[0] ? ", " : "", fig, in);
     else if (fig[0])
         snprintf(plots, sizeof plots, "wrote %s in %.1000s", fig, j->out);
-    closing_line(spec, &j->run, &j->sres, ref_hyst, adh_clock_seconds() - j->t_start, j->out, tables_, plots);
+    closing_line(spec, &j->run, &j->sres, j->timed ? &j->tout.res : NULL, ref_hyst, adh_clock_seconds() - j->t_start,
+                 j->out, tables_, plots);
 }
 
 /* The tables into od: every file is tried even when one fails (a full
@@ -401,7 +404,8 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     if (j->out)
         batch_write(j, &tables, &ref_tables, ref_hyst);
     else if (j->status == CLI_EXIT_OK && !j->cfg->output.quiet)
-        closing_line(&j->spec, &j->run, &j->sres, ref_hyst, adh_clock_seconds() - t_start, NULL, "", "");
+        closing_line(&j->spec, &j->run, &j->sres, j->timed ? &j->tout.res : NULL, ref_hyst,
+                     adh_clock_seconds() - t_start, NULL, "", "");
     cli_interrupt_release();
     if (cli_interrupt_signal() && !partial) {
         fprintf(stderr, "adhere: interrupted by signal %d while plotting; the tables are complete\n", cli_interrupt_signal());

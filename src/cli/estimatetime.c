@@ -11,6 +11,8 @@
 #include "adhere/clock.h"
 #include "adhere/kernel.h"
 #include "adhere/law.h"
+#include "adhere/rings.h"
+#include "adhere/static.h"
 #include "adhere/units.h"
 #include "cli/progress.h"
 
@@ -144,7 +146,8 @@ static size_t nodes_inside(const adh_grid *g, double a)
 
 /* One run's estimate and what it rests on. */
 typedef struct run_est {
-    adh_plan_time_cost c;
+    adh_plan_time_cost c; /* (an elastic path: c.steps the static curve's points) */
+    int exact;            /* an elastic path: the exact curve, not its steps */
     grid_cost grid;       /* its grid's timings */
     double build;         /* the kernel's build, when its grid was new */
     double step;          /* a step's CPU seconds */
@@ -174,6 +177,48 @@ static int run_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
         e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(gc->g, e->c.a_turn));
         e->lu = lu_seconds(e->lu_nodes);
         e->step += STEP_LUS * e->lu;
+    }
+    e->cpu = e->build + e->c.steps * e->step;
+    return isfinite(e->cpu) ? 0 : -1;
+}
+
+/* An elastic sphere in time is no integration but its static curve
+ * (adh_rule_path): its points, adh_static_skips' estimate (the exact
+ * curve's ~1.3 to 3 a fine ring the contact line crosses, or ~150 steps
+ * over the lattice folds), each priced as measured on the static curves
+ * of the default scene (N = 648 dense: 2.8 ms a point), sigma = 2.25 on
+ * 300 nodes of 4 nm (0.46 ms) and sigma = 22.5's graded grid (1952
+ * rings, H^2: 5.6 ms; AMD EPYC, 2026-11-27): 90 kernel products and a
+ * quarter of a dense LU of 0.9 times the contact's nodes (refreshed when
+ * GMRES slows, and at every fold), or 215 products' worth under a
+ * hierarchical kernel (HODLR's factorizations and solves). */
+#define PATH_PRODUCTS 90.0
+#define PATH_LU_SHARE 0.25
+#define PATH_HODLR_PRODUCTS 215.0
+
+static int path_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
+{
+    memset(&e->c, 0, sizeof e->c);
+    e->build = 0;
+    if (!gc->n || !adh_config_same_grid(&gc->spec, s)) {
+        if (time_grid(s, gc) != 0)
+            return -1;
+        e->build = gc->build;
+    }
+    e->grid = *gc;
+    e->grid.g = NULL;
+    double deep = s->proto.nturns ? adh_protocol_deepest_turn(&s->proto) : adh_static_settings_default().h0_end;
+    e->exact = !adh_static_skips(gc->g, &s->mat, deep);
+    e->c.steps = e->exact ? adh_static_exact_points(gc->g, &s->mat, deep) : ADH_STATIC_STEP_POINTS;
+    e->c.a_turn = adh_rings_contact_estimate(&s->mat, fmin(deep, 0.0));
+    e->lu_nodes = 0;
+    e->lu = 0;
+    if (gc->hierarchical) {
+        e->step = PATH_HODLR_PRODUCTS * gc->product;
+    } else {
+        e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(gc->g, e->c.a_turn));
+        e->lu = lu_seconds(e->lu_nodes);
+        e->step = PATH_PRODUCTS * gc->product + PATH_LU_SHARE * e->lu;
     }
     e->cpu = e->build + e->c.steps * e->step;
     return isfinite(e->cpu) ? 0 : -1;
@@ -216,6 +261,22 @@ static void print_run(FILE *f, const char *label, const run_est *e)
             e->grid.n, e->grid.pass * 1e6, e->build);
 }
 
+/* "time: about 0.4 s of CPU (...)": an elastic path's line. */
+static void print_path(FILE *f, const char *label, const run_est *e)
+{
+    char t[32];
+    cli_progress_duration(e->cpu, t, sizeof t);
+    fprintf(f, "time: %sabout %s of CPU (%.3g s: no time integration, an elastic sphere is rate-independent: its "
+               "static curve, about %.0f points (%s), a point about %.3g ms: ", label, t, e->cpu, two_digits(e->c.steps),
+            e->exact ? "the exact curve, every fold" : "steps over the lattice folds", e->step * 1e3);
+    if (e->lu_nodes)
+        fprintf(f, "90 kernel products of %.3g ms and a quarter of a dense LU of %zu nodes (%.3g ms), ",
+                e->grid.product * 1e3, e->lu_nodes, e->lu * 1e3);
+    else
+        fprintf(f, "215 kernel products' worth of %.3g ms (HODLR), ", e->grid.product * 1e3);
+    fprintf(f, "timed now; the kernel built in %.2g s); within a factor of about 3\n", e->build);
+}
+
 void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
 {
     static adh_plan_progress runs[ADH_PLAN_MAX_RUNS];
@@ -230,7 +291,7 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
         size_t i = n < plan->nruns ? (j * (plan->nruns - 1) + (n - 1) / 2) / (n - 1) : j;
         adh_run_spec s;
         adh_config_sweep_run(cfg, i, &s);
-        if (run_estimate(&s, &gc, &e) != 0) {
+        if ((s.time.sls ? run_estimate(&s, &gc, &e) : path_estimate(&s, &gc, &e)) != 0) {
             adh_grid_free(gc.g);
             fprintf(f, "time: not estimated (the kernel could not be built here)\n");
             return;
@@ -254,9 +315,10 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
         if (n < plan->nruns)
             snprintf(rest, sizeof rest, "; the other %zu runs taken at the mean of %zu spread over runs 1 to %zu",
                      plan->nruns - n, n, plan->nruns);
-        fprintf(f, "time: about %s of CPU in all, %s on %d core%s (%.3g s: about %.0f integrator steps, %.0f to %.0f "
+        fprintf(f, "time: about %s of CPU in all, %s on %d core%s (%.3g s: about %.0f %s, %.0f to %.0f "
                    "a run, each run's as run 1's below%s)\n", t, w, plan->jobs, plan->jobs == 1 ? "" : "s", cpu * all,
-                two_digits(steps * all), two_digits(smin), two_digits(smax), rest);
+                two_digits(steps * all), cfg->spec.time.sls ? "integrator steps" : "static curve points",
+                two_digits(smin), two_digits(smax), rest);
     }
-    print_run(f, n > 1 ? "run 1 " : "", &first);
+    (cfg->spec.time.sls ? print_run : print_path)(f, n > 1 ? "run 1 " : "", &first);
 }

@@ -5,19 +5,16 @@
 #include <string.h>
 
 #include "adhere/grid.h"
+#include "adhere/rule_path.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
 
 int cli_static_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k,
                    adh_step_cb cb, void *ctx, adh_run *run, adh_static_result *res)
 {
-    adh_static_settings s = adh_static_settings_default();
-    s.cancel = spec->relax.cancel;   /* the one cancel flag of the run */
-    if (isfinite(spec->time.spring)) {
-        /* the snap points are read off between the curve's points: close
-         * ones (the base there moves < 1e-5 from 1 z0 to 0.1 z0 apart) */
-        s.ds_max = fmin(s.ds_max, 0.25);
-    }
+    /* the one cancel flag of the run; under a spring close points, as
+     * physical time's elastic path takes them (one curve, one setting) */
+    adh_static_settings s = adh_rule_path_static_settings(spec->time.spring, spec->relax.cancel);
     /* The same start as the relaxation run, so the two curves share an
      * axis; the drive ends the curve at the protocol's deepest turn. */
     adh_protocol_settings ps = spec->proto;

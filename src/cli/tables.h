@@ -7,6 +7,7 @@
 
 #include <stdio.h>
 
+#include "adhere/cycle.h"
 #include "adhere/protocol.h"
 #include "adhere/static.h"
 #include "scene/config.h"
@@ -68,7 +69,7 @@ int cli_tables_turns(FILE *f, const void *tables);
 /* The equilibrium loop's area of a static curve (adh_cycle_static_hysteresis
  * sampled every CLI_TABLES_HYSTERESIS_STEP z0): the hysteresis no slower
  * drive removes, the jump instabilities'. NAN for an empty curve. */
-#define CLI_TABLES_HYSTERESIS_STEP 0.002
+#define CLI_TABLES_HYSTERESIS_STEP ADH_CYCLE_HYSTERESIS_STEP
 double cli_tables_static_hysteresis(const adh_run *curve, const adh_material *m);
 
 /* The summary keys of a static result and its loop's area (above),

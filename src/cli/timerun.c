@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "adhere/drive.h"
-#include "adhere/rule_visco.h"
+#include "adhere/rule_time.h"
 #include "adhere/status.h"
 
 int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k, adh_step_cb cb, void *ctx,
@@ -15,7 +15,7 @@ int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *
 {
     memset(out, 0, sizeof *out);
     adh_config_visco(spec, &out->vs);
-    adh_drive *d = adh_drive_alloc(&adh_rule_visco, g, k);
+    adh_drive *d = adh_drive_alloc(adh_config_time_rule(spec), g, k);
     if (!d) {
         run->status = ADH_ENOMEM;
         return run->status;
@@ -23,18 +23,16 @@ int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *
     int rc = adh_drive_set(d, &spec->mat, &out->vs, &spec->proto, run);
     if (rc == ADH_SUCCESS)
         rc = adh_runner_drive(d, cb, ctx);
-    const adh_visco *w = adh_rule_visco_solver(d);
-    if (w) {
-        adh_visco_summary(w, &out->res);
+    if (adh_rule_time_summary(d, &out->res) == 0) {
         const adh_visco_event *ev;
-        size_t n = adh_visco_events(w, &ev);
+        size_t n = adh_rule_time_events(d, &ev);
         out->ev = n ? malloc(n * sizeof *ev) : NULL;
         if (out->ev) {
             memcpy(out->ev, ev, n * sizeof *ev);
             out->nev = n;
         }
     }
-    adh_rule_visco_take(d, run);
+    adh_rule_time_take(d, run);
     adh_drive_free(d);
     run->status = rc;
     return rc;

@@ -124,16 +124,6 @@ const adh_run *adh_rule_visco_record(const adh_drive *d)
 void adh_rule_visco_take(adh_drive *d, adh_run *run)
 {
     visco_rule *r = adh_drive_workspace(d, &adh_rule_visco);
-    if (!r)
-        return;
-    memcpy(run->turns, r->run.turns, sizeof run->turns);
-    run->nturns = r->run.nturns;
-    for (size_t i = 0; i < run->nprofiles; i++)
-        free(run->profiles[i].u);   /* h and p share its block (adh_run_push_profile) */
-    free(run->profiles);
-    run->profiles = r->run.profiles;
-    run->nprofiles = r->run.nprofiles;
-    run->profiles_cap = r->run.profiles_cap;
-    r->run.profiles = NULL;
-    r->run.nprofiles = r->run.profiles_cap = 0;
+    if (r)
+        adh_run_take(run, &r->run);
 }

@@ -188,3 +188,17 @@ int adh_run_turn(const adh_run *src, size_t t, size_t n, adh_run *out)
     }
     return ADH_SUCCESS;
 }
+
+void adh_run_take(adh_run *to, adh_run *from)
+{
+    memcpy(to->turns, from->turns, sizeof to->turns);
+    to->nturns = from->nturns;
+    for (size_t i = 0; i < to->nprofiles; i++)
+        free(to->profiles[i].u);   /* h and p share its block (adh_run_push_profile) */
+    free(to->profiles);
+    to->profiles = from->profiles;
+    to->nprofiles = from->nprofiles;
+    to->profiles_cap = from->profiles_cap;
+    from->profiles = NULL;
+    from->nprofiles = from->profiles_cap = 0;
+}

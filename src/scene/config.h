@@ -324,6 +324,7 @@ adh_kernel_storage adh_config_storage_for(const adh_run_spec *s, adh_mode mode);
 /* ---- physical time (timespec.c) ----------------------------------------- */
 
 struct adh_visco_rule_settings;
+struct adh_rule_type;
 
 /* Elastic, Einf = 10 E0 when made a solid, tau = 1 ms, 1 um/s both ways,
  * no dwell, no spring. */
@@ -335,6 +336,11 @@ double adh_config_einf(const adh_run_spec *s);
  * the solid (or the elastic material at E), the drive, the integrator
  * polling s's cancel flag. */
 void adh_config_visco(const adh_run_spec *s, struct adh_visco_rule_settings *out);
+/* The step rule of run s in physical time, with those settings: the
+ * integrator (adh_rule_visco) for a standard linear solid, the static
+ * curve's path (adh_rule_path: no time integration, an elastic solid is
+ * rate-independent) for an elastic material. */
+const struct adh_rule_type *adh_config_time_rule(const adh_run_spec *s);
 /* 0, or -1 with a sentence naming the keys, when run s's material, drive
  * and mode do not fit: a solid outside mode time, a solid's key or the
  * drive's for an elastic material or a mode without physical time, the

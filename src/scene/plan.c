@@ -311,7 +311,11 @@ static void plan_skipped(const adh_config *cfg, const adh_run_spec *s0, adh_plan
              "are not written (run_dirs = yes, --run-dirs=yes writes them)", p->nruns);
     if (p->static_mode)
         note(p->skipped, &p->nskipped, "relaxation", "mode = static: the equilibrium curve is followed by continuation, no eps steps");
-    if (p->time_mode)
+    if (p->time_path)
+        note(p->skipped, &p->nskipped, "time integration", "an elastic material is rate-independent: the path is the "
+             "static curve's, its jumps where the base turns on it, t from the base's travel; no integrator, no eps "
+             "steps; rows fall on the curve's points, not on the drive step d");
+    else if (p->time_mode)
         note(p->skipped, &p->nskipped, "relaxation", "mode = time: the path is integrated in physical time, no eps steps; "
              "rows fall where the integrator's tolerance puts them, not on the drive step d");
 }
@@ -322,7 +326,10 @@ static void plan_stored(const adh_config *cfg, const adh_run_spec *s0, adh_plan 
     const char *prefix = cfg->sweep.naxes ? "run-K/" : "";
     char what[64];
     snprintf(what, sizeof what, "%sforce.tsv", prefix);
-    if (p->time_mode)
+    if (p->time_path)
+        note(p->stored, &p->nstored, what, "one row per point of the path: the static curve's points the base passes, "
+             "each jump's fold and landing, each turn: t, base, h0, F, delta, hc, a, angle, Newton iterations, F_rigid (eq 22)");
+    else if (p->time_mode)
         note(p->stored, &p->nstored, what, "one row per integrator step: t, base, h0, F, delta, hc, a, angle, Newton iterations, F_rigid (eq 22)");
     else
         note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
@@ -331,7 +338,9 @@ static void plan_stored(const adh_config *cfg, const adh_run_spec *s0, adh_plan 
         note(p->stored, &p->nstored, what, "jumps, contact, pull-off, turns located in time: t, base, h0, F, a before and after");
     }
     snprintf(what, sizeof what, "%ssummary.tsv", prefix);
-    if (p->time_mode)   /* cli/timerun.c's keys besides the run's */
+    if (p->time_path)   /* cli/timerun.c's keys besides the run's */
+        note(p->stored, &p->nstored, what, "jump_in_h0, pull-off, jump_out_h0, the drive, hysteresis (the jumps' losses), dissipated (0), jump_loss, the times and bases of the jumps and the pull-off, time, the static curve's iterations (time_steps 0)");
+    else if (p->time_mode)
         note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, the solid and the drive, hysteresis, dissipated, jump_loss, stored_change, the times and bases of the jumps and the pull-off, time, the integrator's steps and iterations");
     else
         note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, hysteresis, total iterations and seconds");
@@ -376,6 +385,7 @@ void adh_plan_make(const adh_config *cfg, adh_plan *p)
     p->elastic = s0->mode != ADH_MODE_RIGID;
     p->static_mode = s0->mode == ADH_MODE_STATIC;
     p->time_mode = s0->mode == ADH_MODE_TIME;
+    p->time_path = p->time_mode && !s0->time.sls;
     p->loading_branches = 1;
     p->stop_at_contact = p->elastic && s0->proto.nturns == 0;
     p->snapshots = p->elastic && s0->proto.unload ? s0->proto.nturns : 0;
@@ -530,7 +540,9 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     }
     if (p->nruns > ADH_PLAN_MAX_RUNS)
         fprintf(f, "runs %d ... %zu: as the sweep lines say (their steps are in the total)\n", ADH_PLAN_MAX_RUNS + 1, p->nruns);
-    if (p->time_mode)
+    if (p->time_path)
+        fprintf(f, "steps: the static curve's points, no time steps (the path's rows are its points the base passes)\n");
+    else if (p->time_mode)
         fprintf(f, "steps: as many as the integrator's tolerance needs (short ones at every fold, jump and turn)\n");
     else
         fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",

@@ -43,6 +43,8 @@ typedef struct adh_plan {
     int elastic;              /* 0: rigid spheres only (eq 22), no kernel at all */
     int static_mode;          /* the equilibrium continuation instead of relaxation */
     int time_mode;            /* physical time (mode time): the integrator's own steps */
+    int time_path;            /* ... of an elastic material: no integration, the
+                                 static curve's path (adhere/rule_path.h) */
     int shared_kernel;        /* one kernel serves every run (same grid) */
     size_t kernels;           /* kernels built in all: one for each distinct grid */
     size_t loading_branches;  /* per run */

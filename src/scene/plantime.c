@@ -17,8 +17,14 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg)
     adh_visco_rule_settings v;
     adh_config_visco(&s, &v);
     char a[64], b[64], c[64];
-    fprintf(f, "mode: time (physical time: the path integrated with error control, relative tolerance %g; each "
-               "fold or spring instability crossed as a jump)\n", v.s.tol);
+    if (s.time.sls)
+        fprintf(f, "mode: time (physical time: the path integrated with error control, relative tolerance %g; each "
+                   "fold or spring instability crossed as a jump)\n", v.s.tol);
+    else
+        fprintf(f, "mode: time (physical time, no time integration needed: an elastic solid without inertia is "
+                   "rate-independent; the static curve followed by continuation, as mode static does, the path the "
+                   "base drives along it read off it, each jump where the base turns on it, dF/dh0 = k through a "
+                   "spring; time from the base's travel and the dwells)\n");
     adh_format_quantity(v.sls.E0, ADH_Q_PRESSURE, 4, a, sizeof a);
     if (s.time.sls) {
         adh_material inf = s.mat;
@@ -32,7 +38,7 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg)
                    "sigma %.4g), tau = %s\n", a, d0.sigma, b, isnan(s.time.Einf) ? " (auto: 10 E0)" : "",
                 di.sigma, c);
     } else {
-        fprintf(f, "material: elastic, E = %s (time only moves the drive: the curve is the static one)\n", a);
+        fprintf(f, "material: elastic, E = %s (time only labels the base's position: the curve is the static one)\n", a);
     }
     adh_format_quantity(v.drive.speed_in, ADH_Q_SPEED, 4, a, sizeof a);
     adh_format_quantity(v.drive.speed_out, ADH_Q_SPEED, 4, b, sizeof b);

@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "adhere/status.h"
+#include "adhere/rule.h"
 #include "adhere/visco.h"
 
 adh_time_settings adh_time_settings_default(void)
@@ -33,6 +34,11 @@ void adh_config_visco(const adh_run_spec *s, adh_visco_rule_settings *out)
     out->drive = (adh_visco_drive){ .speed_in = s->time.speed_in, .speed_out = s->time.speed_out,
                                     .dwell = s->time.dwell, .spring = s->time.spring };
     out->s.cancel = s->relax.cancel;
+}
+
+const adh_rule_type *adh_config_time_rule(const adh_run_spec *s)
+{
+    return s->time.sls ? &adh_rule_visco : &adh_rule_path;
 }
 
 static const char *mode_word(adh_mode m)

@@ -416,16 +416,21 @@ static void draw_time_state(const tui_sim *s, const tui_view *v, int y, int x, i
     if (!o) {
         q(v, ts->speed_in, ADH_Q_SPEED, a, sizeof a);
         q(v, tui_sim_curve_end(s), ADH_Q_LENGTH, b, sizeof b);
-        put(y + 1, x, w, A_NORMAL, "  t      0 s, the base at rest, the material relaxed");
+        put(y + 1, x, w, A_NORMAL, "  t      0 s, the base at rest, the material %s", ts->sls ? "relaxed" : "elastic");
         put(y + 2, x, w, A_NORMAL, "  Press f for the first step in time, r to run the");
         put(y + 3, x, w, A_NORMAL, "  cycle: in at %s, out, back to h0 = %s.", a, b);
+        if (!ts->sls)
+            put(y + 4, x, w, A_NORMAL, "  Elastic: the static curve, solved at the first f.");
         put(y + 9, x, w, A_NORMAL, "  mode   physical time, %s", v->activity);
         return;
     }
     q(v, o->t, ADH_Q_TIME, a, sizeof a);
     q(v, s->cfg.spec.time.tau, ADH_Q_TIME, b, sizeof b);
-    put(y + 1, x, w, A_NORMAL, "  t      %s step %zu of %zu, %s %s", col12(a), s->ccur + 1, s->curve.nrows,
-        gk(v, "\xcf\x84", "tau"), b);
+    if (ts->sls)
+        put(y + 1, x, w, A_NORMAL, "  t      %s step %zu of %zu, %s %s", col12(a), s->ccur + 1, s->curve.nrows,
+            gk(v, "\xcf\x84", "tau"), b);
+    else
+        put(y + 1, x, w, A_NORMAL, "  t      %s point %zu of %zu, elastic", col12(a), s->ccur + 1, s->curve.nrows);
     q(v, o->base, ADH_Q_LENGTH, a, sizeof a);
     q(v, o->branch > 0 ? ts->speed_in : ts->speed_out, ADH_Q_SPEED, b, sizeof b);
     put(y + 2, x, w, A_NORMAL, "  base   %s %s at %s", col12(a), o->branch > 0 ? "approaching" : "retracting", b);
@@ -445,9 +450,13 @@ static void draw_time_state(const tui_sim *s, const tui_view *v, int y, int x, i
         put(y + 6, x, w, A_NORMAL, "  pull   not unloaded yet");
     else
         put(y + 6, x, w, A_NORMAL, "  pull   %s at t = %s", a, b);
-    put(y + 7, x, w, A_NORMAL, "  energy %s dissipated, hysteresis %s", adh_qtext(r->cycle.dissipated, ADH_Q_WORK).s,
-        r->hysteresis > 0 ? adh_qtext(r->hysteresis, ADH_Q_WORK).s : "not yet");
-    put(y + 8, x, w, A_NORMAL, "  steps  %zu Newton iterations on this one", o->iters);
+    put(y + 7, x, w, A_NORMAL, "  energy %s dissipated, hysteresis %s%s", adh_qtext(r->cycle.dissipated, ADH_Q_WORK).s,
+        r->hysteresis > 0 ? adh_qtext(r->hysteresis, ADH_Q_WORK).s : "not yet",
+        ts->sls || !(r->hysteresis > 0) ? "" : " (the jumps')");
+    if (ts->sls)
+        put(y + 8, x, w, A_NORMAL, "  steps  %zu Newton iterations on this one", o->iters);
+    else
+        put(y + 8, x, w, A_NORMAL, "  steps  none in time: the static curve's path");
     put(y + 9, x, w, A_NORMAL, "  mode   physical time, %s", v->activity);
     if (!put_stopped(s, y + 10, x + 2, w - 2, "run") && s->cstatus == ADH_SUCCESS && !tui_sim_redoable(s))
         put(y + 10, x, w, A_NORMAL, "  cycle  complete");

@@ -16,7 +16,7 @@
 #include "adhere/protocol.h"
 #include "adhere/rings.h"
 #include "adhere/rule_static.h"
-#include "adhere/rule_visco.h"
+#include "adhere/rule_time.h"
 #include "adhere/status.h"
 #include "scene/budget.h"
 
@@ -91,7 +91,7 @@ static adh_mode curve_mode_of(const tui_sim *s)
 /* The rule of the curve on screen. */
 static const adh_rule_type *curve_rule(const tui_sim *s)
 {
-    return spec(s)->mode == ADH_MODE_TIME ? &adh_rule_visco : &adh_rule_static;
+    return spec(s)->mode == ADH_MODE_TIME ? adh_config_time_rule(spec(s)) : &adh_rule_static;
 }
 
 const double *tui_sim_turns(const tui_sim *s, size_t *n)
@@ -286,7 +286,7 @@ static void curve_check(tui_sim *s)
                     ta->dwell == tb->dwell && ta->spring == tb->spring;
     if (a->E != b->E || a->A != b->A || a->z0 != b->z0 || a->R != b->R || !same_grid(&s->ckey.grid, &g) ||
         s->ckey.start != s->start || s->ckey.end != tui_sim_curve_end(s) || s->ckey.rule != curve_rule(s) ||
-        (s->ckey.rule == &adh_rule_visco && !time_same))
+        (s->ckey.rule != &adh_rule_static && !time_same))
         curve_drop(s);
 }
 
@@ -1112,7 +1112,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
         s->ckey.time = spec(s)->time;
         adh_run_free(&s->curve);
         adh_run_init(&s->curve);
-        int rc = adh_drive_set(s->sdrv, &spec(s)->mat, s->srule == &adh_rule_visco ? (const void *)&vs
+        int rc = adh_drive_set(s->sdrv, &spec(s)->mat, s->srule != &adh_rule_static ? (const void *)&vs
                                : (const void *)&ss, &ps, &s->curve);
         if (rc != ADH_SUCCESS) {
             s->cstatus = rc;
@@ -1124,13 +1124,11 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
     adh_format_quantity(s->curve.nrows ? s->curve.rows[s->curve.nrows - 1].h0 : s->start, ADH_Q_LENGTH, 4, h0, sizeof h0);
     int row, rc = adh_drive_iterate(s->sdrv, 0, &row);
     const adh_static *sw = adh_rule_static_solver(s->sdrv);
-    const adh_visco *vw = adh_rule_visco_solver(s->sdrv);
     if (sw)
         adh_static_summary(sw, &s->sres);
-    if (vw)
-        adh_visco_summary(vw, &s->vres);
+    adh_rule_time_summary(s->sdrv, &s->vres);   /* physical time's, either rule */
     if (row) {
-        curve_pushed(s, sw ? adh_static_state(sw) : adh_visco_state(vw));
+        curve_pushed(s, adh_drive_state(s->sdrv));
         if (rc == ADH_CONTINUE && (adh_drive_events(s->sdrv) & ADH_DRIVE_END))
             rc = ADH_SUCCESS;   /* the curve came down to its end */
     }
@@ -1176,9 +1174,7 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
             !(s->cstatus == ADH_CONTINUE || s->cstatus == ADH_SUCCESS || s->cstatus == ADH_EGRID))
             return NULL;
         *at = s->curve.nrows - 1;
-        const adh_static *sw = adh_rule_static_solver(s->sdrv);
-        const adh_visco *vw = adh_rule_visco_solver(s->sdrv);
-        return sw ? adh_static_state(sw) : vw ? adh_visco_state(vw) : NULL;
+        return adh_drive_state(s->sdrv);
     }
     if (which < 0 || which > 1 || s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->curve.nrows)
         return NULL;

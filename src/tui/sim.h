@@ -26,9 +26,11 @@
  *
  * Physical time (a scene with material = sls, or mode = time) is a curve
  * mode as the static one is: the viscoelastic step rule's drive, one
- * integrator step a point, the same keys walking back and forth over the
- * points computed; the panel shows E0, Einf, tau and the speed, the state
- * the time, the base and the speed. */
+ * integrator step a point (an elastic material: the static curve's path,
+ * adh_rule_path, solved at the first step, one row of the batch run's a
+ * point), the same keys walking back and forth over the points computed;
+ * the panel shows E0, Einf, tau and the speed, the state the time, the
+ * base and the speed. */
 #ifndef ADH_TUI_SIM_H
 #define ADH_TUI_SIM_H
 
@@ -148,8 +150,8 @@ typedef struct tui_sim {
                                   once it came down to its end, else the error that
                                   stopped it (shown, never hidden) */
     adh_static_result sres;    /* summary of the points computed so far */
-    adh_visco_result vres;     /* in physical time: the integrator's summary so far */
-    const adh_rule_type *srule; /* the curve's rule: static, or visco in physical time */
+    adh_visco_result vres;     /* in physical time: the run's summary so far */
+    const adh_rule_type *srule; /* the curve's rule: static, or in physical time visco or path */
     struct {                   /* what the curve was computed for */
         adh_material mat;
         adh_grid_spec grid;

@@ -232,11 +232,11 @@ check "approach only in physical time: hysteresis, dissipated, jump_loss and sto
 # times: the children's user and system, as the plan times its operations
 # in CPU seconds, so other jobs on the machine do not count), for three
 # runs of different cost: sigma = 2.25 at 1 um/s and at 10 nm/s (nearer
-# relaxed: a shorter step, three times the steps), the Figure 4 sphere's
-# sigma = 7.5 on 648 nodes, and an elastic sphere in time at sigma = 2.25
-# (its lattice folds: seven times the first run's steps); each within a
-# factor 3, and the steps within a factor 2 of the run's own count. Then
-# a study of two speeds.
+# relaxed: a shorter step, three times the steps) and the Figure 4
+# sphere's sigma = 7.5 on 648 nodes; each within a factor 3, and the steps
+# within a factor 2 of the run's own count. Then a study of two speeds,
+# and an elastic sphere in time (no integration: its static curve's
+# points).
 cpu_of() { # cpu_of DIR ARGS...: the CPU seconds of adhere --batch ARGS -o DIR
     d=$1; shift
     # shellcheck disable=SC2086
@@ -250,7 +250,7 @@ within() { # within WHAT ESTIMATE ACTUAL FACTOR
 S225="--material=sls --E0=1GPa --turn=-3nm -N 300 --force --spacing=4nm"
 S75="--material=sls --E0=0.3GPa --Einf=3GPa --tau=1ms --turn=-5nm -N 648 --force"
 i=0
-for args in "$S225" "$S225 --speed=10nm/s" "$S75" "--mode=time -E 1GPa -N 300 --force --spacing=4nm --turn=-3nm"; do
+for args in "$S225" "$S225 --speed=10nm/s" "$S75"; do
     i=$((i + 1))
     # shellcheck disable=SC2086
     "$ADHERE" --plan $args >"$TMP/tp$i" 2>&1
@@ -268,6 +268,56 @@ pcpu=$(sed -n 's/^time: about [^(]* of CPU in all, [^(]* (\([0-9.e+-]*\) s: .*/\
 # shellcheck disable=SC2086
 rcpu=$(cpu_of "$TMP/trs" $S225 --sweep=speed=1um/s,100nm/s)
 within "a study of two speeds" "$pcpu" "$rcpu" 3
+
+EL="--mode=time -E 1GPa -N 300 --force --spacing=4nm --turn=-3nm"
+# shellcheck disable=SC2086
+"$ADHERE" --plan $EL >"$TMP/tpe" 2>&1
+pcpu=$(sed -n 's/^time: about [^(]* of CPU (\([0-9.e+-]*\) s: no time integration.*/\1/p' "$TMP/tpe")
+# shellcheck disable=SC2086
+rcpu=$(cpu_of "$TMP/tre" $EL)
+check "--plan, an elastic sphere in time: no time integration needed, the static curve's points ($(grep '^time:' "$TMP/tpe" | head -c 160))" \
+    sh -c "grep -q '^mode: time (physical time, no time integration needed' '$TMP/tpe' && grep -q '^skip: time integration: ' '$TMP/tpe'"
+within "an elastic sphere in time ($EL)" "$pcpu" "$rcpu" 3
+
+# An elastic sphere in time is its static curve's path (adh_rule_path): the
+# numbers of mode static on the same grid, to the digit; no integrator
+# steps, nothing dissipated, the hysteresis the jumps' losses
+d="$TMP/el"
+# shellcheck disable=SC2086
+"$ADHERE" --batch -q $EL -o "$d" >/dev/null 2>&1
+# shellcheck disable=SC2086
+"$ADHERE" --batch -q --no-plot $(echo "$EL" | sed 's/--mode=time/--mode=static/') -o "$TMP/els" >/dev/null 2>&1
+ev() { awk -F'\t' -v k="$2" '$1 == k {print $2}' "$1/summary.tsv"; }
+for k in pulloff_F pulloff_h0 jump_in_h0 jump_out_h0 hysteresis; do
+    check "elastic in time: $k is mode static's on the same grid ($(ev "$d" $k))" sh -c "[ -n '$(ev "$d" $k)' ] && [ '$(ev "$d" $k)' = '$(ev "$TMP/els" $k)' ]"
+done
+check "elastic in time: no integrator steps, nothing dissipated, the hysteresis within 1 % of the jumps' losses" awk \
+    "BEGIN {h = $(ev "$d" hysteresis); j = $(ev "$d" jump_loss); exit !($(ev "$d" time_steps) == 0 && $(ev "$d" dissipated) == 0 && (h - j) / h < 0.01 && (j - h) / h < 0.01)}"
+check "elastic in time: events.tsv has the jump in and the jump out, their losses jump_loss but the lattice jumps' ($(ev "$d" lattice_jumps))" sh -c \
+    "awk -F'\t' '\$1 == \"jump\" {n++; s += \$11} END {j = $(ev "$d" jump_loss); exit !(n == 2 && s > 0.5 * j && s <= j * (1 + 1e-12) && ($(ev "$d" lattice_jumps) > 0 || s == j))}' '$d/events.tsv'"
+for f in force.png profile.png contact.png profiles.tsv; do
+    check "elastic in time wrote $f" [ -s "$d/$f" ]
+done
+# t on every row: loading the base's travel over the speed, unloading the
+# turn's time, the dwell and the travel back (two speeds, a dwell)
+# shellcheck disable=SC2086
+"$ADHERE" --batch -q --no-plot $EL --speed=2um/s,500nm/s --dwell-time=3ms -o "$TMP/elt" >/dev/null 2>&1
+check "elastic in time: every row's t = base travel / speed (+ the dwell), in closed form" sh -c \
+    "grep -v '^#' '$TMP/elt/force.tsv' | awk -F'\t' 'NR == 2 {b0 = \$2} NR > 1 {
+        if (\$11 == 0) want = (b0 - \$2) / 2e-6;
+        else { if (!(\$11 in tt)) {tt[\$11] = \$1; tb[\$11] = \$2; want = \$1} else want = tt[\$11] + 3e-3 + (\$2 - tb[\$11]) / 5e-7 }
+        e = (\$1 - want) / (want + 1e-12); if (e > 1e-12 || e < -1e-12) bad = 1; n++}
+        END {exit !(n > 100 && !bad)}'"
+check "and the time is the protocol's: to the turn at 2 um/s, 3 ms, back at 500 nm/s" awk \
+    "BEGIN {s = $(ev "$TMP/elt" start) + 3e-9; T = s / 2e-6 + 3e-3 + s / 5e-7; exit !(($(ev "$TMP/elt" time) - T) ^ 2 < 1e-24 * T * T)}"
+# through a spring the jumps are the static curve's snap points
+# shellcheck disable=SC2086
+"$ADHERE" --batch -q --no-plot $EL --spring=10N/m -o "$TMP/elk" >/dev/null 2>&1
+# shellcheck disable=SC2086
+"$ADHERE" --batch -q --no-plot $(echo "$EL" | sed 's/--mode=time/--mode=static/') --spring=10N/m -o "$TMP/elks" >/dev/null 2>&1
+jb() { awk -F'\t' -v p="$1" -v c="$2" '$1 == "jump" && $2 == p {print $c}' "$TMP/elk/events.tsv"; }
+check "elastic in time through 10 N/m: the snap-in and the snap-out where the static curve puts them ($(jb 0 4), $(jb 1 4))" sh -c \
+    "[ '$(jb 0 4)' = '$(ev "$TMP/elks" snap_in_base)' ] && [ '$(jb 0 5)' = '$(ev "$TMP/elks" snap_in_h0)' ] && [ '$(jb 1 4)' = '$(ev "$TMP/elks" snap_out_base)' ] && [ '$(jb 1 5)' = '$(ev "$TMP/elks" snap_out_h0)' ]"
 
 # A run in time that stops says why: from inside the snap-in (0.3 nm) the
 # start is no stable point out of contact. stderr and summary.tsv name it

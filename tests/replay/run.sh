@@ -452,6 +452,18 @@ cp "$here/cases/start.keys" "$work/env/"
 (cd "$work/env" && TERM=dumb LINES=10 COLUMNS=20 "$bin" --replay=start.keys --screen=start.screen --no-clock </dev/null >/dev/null 2>&1)
 check "TERM, LINES and COLUMNS do not change a replay's screen" same_file "$W/start/start.screen" "$work/env/start.screen"
 
+# An elastic sphere in physical time: the screen steps the path the batch
+# run writes (adh_rule_path, no integration), row for row, every column but
+# the wall time; its state says what the rows so far have seen.
+TE=$W/time-elastic
+# shellcheck disable=SC2046
+"$bin" --batch $(cat "$here/cases/time-elastic.args") --no-plot -o "$work/te-batch" </dev/null >/dev/null 2>"$work/te-batch.err"
+trows() { grep -v '^#' "$1" | cut -f1-14; }
+check "elastic in time: the screen's rows are --batch --mode=time's, every one ($(trows "$work/te-batch/force.tsv" 2>/dev/null | wc -l) lines)" \
+    sh -c "[ -s '$TE/time-elastic-rows.tsv' ] && trows() { grep -v '^#' \"\$1\" | cut -f1-14; }; [ \"\$(trows '$TE/time-elastic-rows.tsv')\" = \"\$(trows '$work/te-batch/force.tsv')\" ]"
+check "elastic in time: no jump and no pull-off after three rows, the batch's two jumps and hysteresis at the end" \
+    sh -c "grep -q 'jumps  0; in not yet' '$TE/time-elastic-3.txt' && grep -q 'jumps  2; in' '$TE/time-elastic-end.txt' && grep -q 'steps  none in time' '$TE/time-elastic-end.txt'"
+
 # A signal ends a replay cleanly with 128 + its number. Sent once the first
 # step is solved (ADHERE_READY_FILE, see adhere(1)), not after a guessed sleep.
 mkdir -p "$work/sig"

@@ -1,0 +1,254 @@
+/* An elastic sphere in physical time as a step rule (adhere/rule_path.h):
+ * the static curve solved whole at the first step, then the path read off
+ * it (adhere/path.h), one row a step. */
+#include "adhere/rule_path.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhere/observe.h"
+#include "adhere/status.h"
+#include "adhere/visco.h"
+
+/* The rows' deformations are kept (as floats: profiles and the state
+ * shown) up to this many bytes; past it the path has no profiles. */
+#define PATH_U_BYTES ((size_t)1 << 28)
+
+typedef struct path_rule {
+    const adh_grid *g;
+    adh_static *sw;
+    adh_path *path;
+    adh_material m;
+    adh_visco_drive drive;
+    adh_protocol_settings ps;
+    adh_run curve;          /* the static curve */
+    adh_static_result sres;
+    float *u;               /* its rows' deformations, ucap rows; NULL: not kept */
+    size_t ucap;
+    int keep_u;
+    adh_path_curve pc;
+    adh_run run;            /* the path's record */
+    size_t next;            /* the next row of run to hand out */
+    int first;              /* the status of the curve's start */
+    int built, status;      /* the path read off; the curve's final status */
+} path_rule;
+
+adh_static_settings adh_rule_path_static_settings(double k, const volatile sig_atomic_t *cancel)
+{
+    adh_static_settings s = adh_static_settings_default();
+    s.cancel = cancel;
+    if (isfinite(k))
+        s.ds_max = fmin(s.ds_max, 0.25);
+    return s;
+}
+
+static void *path_alloc(const adh_grid *g, const adh_kernel *k)
+{
+    path_rule *r = calloc(1, sizeof *r);
+    if (!r || !(r->sw = adh_static_alloc(g, k)) || !(r->path = adh_path_alloc())) {
+        if (r)
+            adh_static_free(r->sw);
+        free(r);
+        return NULL;
+    }
+    r->g = g;
+    adh_run_init(&r->curve);
+    adh_run_init(&r->run);
+    return r;
+}
+
+static void path_free(void *vr)
+{
+    path_rule *r = vr;
+    if (!r)
+        return;
+    adh_static_free(r->sw);
+    adh_path_free(r->path);
+    adh_run_free(&r->curve);
+    adh_run_free(&r->run);
+    free(r->u);
+    free(r);
+}
+
+static int path_set(void *vr, const adh_material *m, const void *settings, const adh_protocol_settings *ps,
+                    double start)
+{
+    path_rule *r = vr;
+    adh_visco_rule_settings vs = settings ? *(const adh_visco_rule_settings *)settings
+                                          : adh_visco_rule_settings_default(m->E);
+    if (adh_visco_drive_validate(&vs.drive, NULL, 0) != ADH_SUCCESS)
+        return ADH_EINVAL;
+    adh_static_settings s = adh_rule_path_static_settings(vs.drive.spring, vs.s.cancel);
+    /* the drive's automatic start is the elastic one; under a spring the
+     * curve starts outside the snap-in, as the static mode's does */
+    s.h0_start = isnan(ps->start) && isfinite(vs.drive.spring)
+               ? adh_visco_auto_start(m, vs.drive.spring, ps->step) : start;
+    if (ps->nturns)
+        s.h0_end = adh_protocol_deepest_turn(ps);
+    r->m = *m;
+    r->drive = vs.drive;
+    r->ps = *ps;
+    adh_run_free(&r->curve);
+    adh_run_init(&r->curve);
+    adh_run_free(&r->run);
+    adh_run_init(&r->run);
+    r->next = 0;
+    r->built = 0;
+    r->keep_u = 1;
+    int rc = adh_static_set(r->sw, m, &s);
+    r->first = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;
+    return rc == ADH_EINVAL ? ADH_EINVAL : ADH_SUCCESS;
+}
+
+/* The static curve's present point as a row of the curve, and its
+ * deformation. */
+static int keep_point(path_rule *r)
+{
+    const adh_state *st = adh_static_state(r->sw);
+    adh_obs o;
+    memset(&o, 0, sizeof o);
+    adh_observe(r->g, &r->m, st, &o);
+    adh_static_point pt = adh_static_current(r->sw);
+    o.t = NAN;
+    o.iters = pt.newton;
+    o.branch = pt.direction;
+    o.converged = 1;
+    o.stable = pt.stable;
+    size_t i = r->curve.nrows, n = r->g->n;
+    if (adh_run_push_row(&r->curve, &o) != ADH_SUCCESS)
+        return ADH_ENOMEM;
+    if (r->keep_u && i >= r->ucap) {
+        size_t cap = r->ucap ? 2 * r->ucap : 256;
+        float *u = cap * n * sizeof *u <= PATH_U_BYTES ? realloc(r->u, cap * n * sizeof *u) : NULL;
+        if (!u) {   /* past the bound (or out of memory): no profiles */
+            free(r->u);
+            r->u = NULL;
+            r->keep_u = 0;
+        } else {
+            r->u = u;
+            r->ucap = cap;
+        }
+    }
+    for (size_t j = 0; r->keep_u && j < n; j++)
+        r->u[i * n + j] = (float)st->u[j];
+    return ADH_SUCCESS;
+}
+
+/* The whole static curve: its status (ADH_SUCCESS at its end). */
+static int solve_curve(path_rule *r)
+{
+    int rc = r->first;
+    if (rc != ADH_CONTINUE)
+        return rc;
+    if ((rc = keep_point(r)) != ADH_SUCCESS)
+        return rc;
+    while ((rc = adh_static_iterate(r->sw)) == ADH_CONTINUE || rc == ADH_SUCCESS || rc == ADH_EGRID) {
+        int krc = keep_point(r);
+        if (krc != ADH_SUCCESS)
+            return krc;
+        if (rc != ADH_CONTINUE)
+            break;
+    }
+    return rc;
+}
+
+/* The path read off the curve (as far as it went). */
+static int build(path_rule *r)
+{
+    r->status = solve_curve(r);
+    if (r->status == ADH_EINTR || r->status == ADH_ENOMEM)
+        return r->status;
+    const adh_fold *f;
+    size_t nf = adh_static_folds(r->sw, &f);
+    adh_static_summary(r->sw, &r->sres);
+    r->pc = (adh_path_curve){ .rows = r->curve.rows, .n = r->curve.nrows, .u = r->keep_u ? r->u : NULL, .g = r->g,
+                              .res = &r->sres, .folds = f, .nfolds = nf, .complete = r->status == ADH_SUCCESS };
+    r->built = 1;
+    int rc = adh_path_build(r->path, &r->pc, &r->m, &r->drive, &r->ps, &r->run);
+    if (rc == ADH_SUCCESS && r->run.nrows)
+        r->run.rows[0].seconds = r->sres.seconds;   /* the curve's, solved before the first row */
+    return rc;
+}
+
+static int path_next(void *vr)
+{
+    path_rule *r = vr;
+    if (!r->built) {
+        int rc = build(r);
+        if (rc != ADH_SUCCESS)
+            return rc;
+    }
+    if (r->next >= r->run.nrows)
+        return r->status == ADH_SUCCESS || r->status == ADH_EGRID ? ADH_ESTALL : r->status;
+    r->next++;
+    if (r->next < r->run.nrows)
+        return ADH_CONTINUE;
+    /* the last row: the path's end, the grid's edge, or the failure next */
+    return r->status == ADH_SUCCESS || r->status == ADH_EGRID ? r->status : ADH_CONTINUE;
+}
+
+static double path_jump_in(const void *vr)
+{
+    const path_rule *r = vr;
+    adh_visco_result res;
+    adh_path_summary(r->path, r->next, &res);
+    return res.jump_in_h0;
+}
+
+static void path_observe(const void *vr, adh_obs *o)
+{
+    const path_rule *r = vr;
+    *o = r->run.rows[r->next - 1];
+}
+
+static const adh_state *path_state(const void *vr)
+{
+    const path_rule *r = vr;
+    const adh_state *s = r->built && r->next ? adh_path_state(r->path, r->next - 1) : NULL;
+    return s ? s : adh_static_state(r->sw);
+}
+
+static const char *path_why(const void *vr, unsigned *fix)
+{
+    const path_rule *r = vr;
+    return adh_static_why(r->sw, fix);
+}
+
+const adh_rule_type adh_rule_path = {
+    .name = "path",
+    .alloc = path_alloc,
+    .free = path_free,
+    .set = path_set,
+    .next = path_next,
+    .jump_in = path_jump_in,
+    .observe = path_observe,
+    .state = path_state,
+    .why = path_why,
+};
+
+const adh_run *adh_rule_path_curve(const adh_drive *d, adh_static_result *res)
+{
+    const path_rule *r = adh_drive_workspace(d, &adh_rule_path);
+    if (!r || !r->built)
+        return NULL;
+    if (res)
+        *res = r->sres;
+    return &r->curve;
+}
+
+const adh_path *adh_rule_path_walk(const adh_drive *d, size_t *rows)
+{
+    const path_rule *r = adh_drive_workspace(d, &adh_rule_path);
+    if (r && rows)
+        *rows = r->next;
+    return r ? r->path : NULL;
+}
+
+void adh_rule_path_take(adh_drive *d, adh_run *run)
+{
+    path_rule *r = adh_drive_workspace(d, &adh_rule_path);
+    if (r)
+        adh_run_take(run, &r->run);
+}

@@ -1,0 +1,234 @@
+/* An elastic sphere in physical time (adh_rule_path, adhere/rule_path.h):
+ * no integration, the static curve's path. Its numbers are the static
+ * curve's on the same grid (the same solver and settings: the jump-in,
+ * the jump-out and the pull-off to the digit, the hysteresis its loop),
+ * and within test_visco_limits' tolerance (0.1 %) of the integrator's
+ * standard linear solid at Einf = E0, which is the same elastic sphere
+ * integrated in time. Its times are the base's travel over the branch's
+ * speed plus the dwell, a closed relation every row must meet; through a
+ * spring its jumps sit where the static curve under that spring has its
+ * snap points (adh_visco_spring_folds, adh_visco_spring_snap_out); a soft
+ * spring's snap-out flies |F|/k and releases F^2/2k. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "adhere/cycle.h"
+#include "adhere/rule_path.h"
+#include "adhere/rule_time.h"
+#include "tap.h"
+#include "visco_fixture.h"
+
+typedef struct prun {
+    int rc;
+    adh_run run;
+    adh_visco_result r;
+    adh_visco_event ev[64];
+    size_t nev;
+} prun;
+
+/* The elastic path of protocol ps under drive d through the drive and the
+ * runner, as every driver steps it. */
+static prun path_run(const fixture *f, const adh_visco_drive *d, const adh_protocol_settings *ps)
+{
+    prun p;
+    adh_run_init(&p.run);
+    adh_visco_rule_settings vs = adh_visco_rule_settings_default(f->m.E);
+    vs.drive = *d;
+    adh_drive *dr = adh_drive_alloc(&adh_rule_path, f->g, f->k);
+    p.rc = adh_drive_set(dr, &f->m, &vs, ps, &p.run);
+    if (p.rc == ADH_SUCCESS)
+        p.rc = adh_runner_drive(dr, NULL, NULL);
+    adh_rule_time_summary(dr, &p.r);
+    const adh_visco_event *ev;
+    p.nev = adh_rule_time_events(dr, &ev);
+    if (p.nev > 64)
+        p.nev = 64;
+    memcpy(p.ev, ev, p.nev * sizeof *ev);
+    adh_rule_time_take(dr, &p.run);
+    adh_drive_free(dr);
+    return p;
+}
+
+/* The static curve of the same protocol as the static mode runs it
+ * (under spring k: from outside its snap-in, close points). */
+static int static_run(const fixture *f, double k, const adh_protocol_settings *ps, adh_run *run,
+                      adh_static_result *res)
+{
+    adh_static_settings s = adh_rule_path_static_settings(k, NULL);
+    adh_protocol_settings p = *ps;
+    if (isfinite(k))
+        p.start = adh_visco_auto_start(&f->m, k, ps->step);
+    adh_run_init(run);
+    return adh_runner_static(f->g, f->k, &f->m, &s, &p, NULL, NULL, run, res);
+}
+
+static adh_protocol_settings protocol(void)
+{
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.nturns = 1;
+    ps.turns[0] = FIX_TURN;
+    ps.unload = 1;
+    return ps;
+}
+
+static size_t count(const prun *p, int kind)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < p->nev; i++)
+        n += p->ev[i].kind == kind;
+    return n;
+}
+
+static void against_static(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    prun p = path_run(f, &d, &ps);
+    adh_run st;
+    adh_static_result sr;
+    int src = static_run(f, INFINITY, &ps, &st, &sr);
+    ok(p.rc == ADH_SUCCESS && src == ADH_SUCCESS && count(&p, ADH_VISCO_JUMP) == 2 && p.r.steps == 0,
+       "elastic in time: the path runs, two jumps (%zu rows from %zu points of the curve)", p.run.nrows, st.nrows);
+    ok(p.r.pulloff_F == sr.pulloff_F && p.r.pulloff_h0 == sr.pulloff_h0,
+       "its pull-off is the static curve's on the same grid, to the digit (%.10g N)", p.r.pulloff_F);
+    ok(p.r.jump_in_h0 == sr.jump_in_h0 && p.r.jump_out_h0 == sr.jump_out_h0,
+       "its jump-in and jump-out are the static curve's folds, to the digit (%.10g, %.10g m)", p.r.jump_in_h0,
+       p.r.jump_out_h0);
+    double loop = adh_cycle_static_hysteresis(&st, ADH_CYCLE_HYSTERESIS_STEP * f->m.z0);
+    ok(p.r.hysteresis == loop, "its hysteresis is the static curve's loop (%.6g J)", p.r.hysteresis);
+    ok_rel(p.r.cycle.jumps, loop, 1e-2, "the jumps' losses (events.tsv, by chords along the curve) add up to it");
+    ok(p.r.cycle.dissipated == 0 && p.r.cycle.stored == p.r.cycle.stored0,
+       "nothing dissipated on the way, nothing left stored back at the start");
+
+    /* the same elastic sphere integrated in time: the standard linear
+     * solid at Einf = E0 (test_visco_limits' tolerance, 0.1 %) */
+    vrun v = fix_visco(f, 1.0, &d, 1e-4);
+    ok(v.rc == ADH_SUCCESS, "Einf = E0 through the integrator at 1 um/s runs (%zu steps)", v.r.steps);
+    ok_rel(p.r.pulloff_F, v.r.pulloff_F, 1e-3, "the path's pull-off is the integrator's");
+    ok_rel(p.r.jump_in_h0, v.r.jump_in_h0, 1e-3, "the path's jump-in is the integrator's");
+    ok_rel(p.r.jump_out_h0, v.r.jump_out_h0, 1e-3, "the path's jump-out is the integrator's");
+    ok_rel(p.r.jump_in_t, v.r.jump_in_t, 1e-3, "and so are their times: the jump-in's");
+    ok_rel(p.r.jump_out_t, v.r.jump_out_t, 1e-3, "the jump-out's");
+    ok_rel(p.r.time, v.r.time, 1e-9, "the cycle's time");
+    ok_rel(p.r.hysteresis, v.r.hysteresis, 1e-2, "the hysteresis within 1 % (test_visco_energy's)");
+    vrun_free(&v);
+    adh_run_free(&st);
+    adh_run_free(&p.run);
+}
+
+/* t on every row: loading (b_start - base) / v_in; unloading from turn k
+ * its time there plus the dwell plus (base - base at the turn) / v_out. */
+static void times(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    ps.nturns = 2;
+    ps.turns[0] = -1e-9;
+    ps.turns[1] = 1e-9;
+    adh_visco_drive d = fix_drive(2e-6, 5e-7);
+    d.dwell = 3e-3;
+    prun p = path_run(f, &d, &ps);
+    const adh_obs *r = p.run.rows;
+    double b0 = r[0].base, worst = 0;
+    double turn_t[3] = { 0 }, turn_b[3] = { 0 };
+    int monotone = 1, dwelt = 0;
+    for (size_t i = 0; i < p.run.nrows; i++) {
+        double want;
+        if (r[i].path == 0) {
+            want = (b0 - r[i].base) / d.speed_in;
+        } else {
+            int k = r[i].path;
+            if (i == 0 || r[i - 1].path != k) {   /* the branch's first row: the turn, on loading */
+                turn_b[k] = r[i].base;
+                turn_t[k] = (b0 - r[i].base) / d.speed_in;
+                want = turn_t[k];
+            } else {
+                want = turn_t[k] + d.dwell + (r[i].base - turn_b[k]) / d.speed_out;
+                dwelt |= r[i].t == turn_t[k] + d.dwell && r[i].base == turn_b[k];
+            }
+        }
+        worst = fmax(worst, fabs(r[i].t - want) / (fabs(want) + 1e-12));
+        if (i && r[i].path == r[i - 1].path && r[i].t < r[i - 1].t)
+            monotone = 0;
+    }
+    ok(p.rc == ADH_SUCCESS && p.run.nturns == 2 && count(&p, ADH_VISCO_UNLOAD) == 2,
+       "two turns, two speeds, a 3 ms dwell: both unloaded, each after its dwell");
+    ok(worst < 1e-12 && monotone && dwelt,
+       "every row's t is the base's travel over the branch's speed, plus the dwell (worst %.2g relative, %zu rows)",
+       worst, p.run.nrows);
+    ok_rel(p.r.time, turn_t[2] + d.dwell + (r[p.run.nrows - 1].base - turn_b[2]) / d.speed_out, 1e-12,
+           "the time is the protocol's: the deepest turn's, its dwell and the retraction back to the start");
+    adh_run_free(&p.run);
+}
+
+/* Through a spring: the jumps where the static curve under it puts its
+ * snap points. */
+static void spring(const fixture *f, double k)
+{
+    adh_protocol_settings ps = protocol();
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    d.spring = k;
+    prun p = path_run(f, &d, &ps);
+    adh_run st;
+    adh_static_result sr;
+    static_run(f, k, &ps, &st, &sr);
+    double at[4], base[4], out_b, out_h0 = adh_visco_spring_snap_out(&st, k, &out_b);
+    size_t nf = adh_visco_spring_folds(&st, k, at, base, 4);
+    const adh_visco_event *in = NULL, *out = NULL;
+    for (size_t i = 0; i < p.nev; i++)
+        if (p.ev[i].kind == ADH_VISCO_JUMP)
+            *(p.ev[i].path == 0 ? &in : &out) = &p.ev[i];
+    ok(p.rc == ADH_SUCCESS && in && out && nf >= 1, "%g N/m: the path runs, a jump in and a jump out", k);
+    ok(in && in->h0 == at[0] && in->base == base[0] && in->F == k * (at[0] - base[0]),
+       "%g N/m: the snap-in at the static curve's first fold of the base (%.6g nm, base %.6g nm)", k,
+       in ? in->h0 * 1e9 : NAN, in ? in->base * 1e9 : NAN);
+    ok(out && out->h0 == out_h0 && out->base == out_b,
+       "%g N/m: the snap-out at the static curve's (%.6g nm, base %.6g nm)", k, out ? out->h0 * 1e9 : NAN,
+       out ? out->base * 1e9 : NAN);
+    ok(p.r.pulloff_F <= (out ? out->F : 0) && fabs(p.r.pulloff_F / sr.pulloff_F - 1) < 1e-3,
+       "%g N/m: the pull-off before it, the static curve's force minimum (%.6g N)", k, p.r.pulloff_F);
+    if (k < 1e-2 && out) {
+        /* a soft spring: the sphere flies |F|/k, out of the surface force's
+         * reach, and the jump releases the spring's energy */
+        ok_rel(out->h0_after - out->h0, -out->F / k, 1e-3, "a soft spring: the snap-out flies |F|/k");
+        ok_rel(out->loss, out->F * out->F / (2 * k), 1e-3, "a soft spring: it releases F^2/2k");
+    }
+    adh_run_free(&st);
+    adh_run_free(&p.run);
+}
+
+/* Stepped by hand (the TUI's f), the summary says only what the rows so
+ * far have seen. */
+static void so_far(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    adh_run run;
+    adh_run_init(&run);
+    adh_drive *dr = adh_drive_alloc(&adh_rule_path, f->g, f->k);
+    adh_drive_set(dr, &f->m, NULL, &ps, &run);
+    adh_visco_result r;
+    int early = 1;
+    while (adh_drive_step(dr) == ADH_CONTINUE && !(adh_drive_row(dr)->a > 0)) {
+        adh_rule_time_summary(dr, &r);
+        early &= isnan(r.jump_in_h0) && isnan(r.pulloff_F) && isnan(r.hysteresis) && r.jumps == 0 &&
+                 r.time == adh_drive_row(dr)->t;
+    }
+    adh_rule_time_summary(dr, &r);
+    ok(early && !isnan(r.jump_in_h0) && r.jumps == 1 && isnan(r.hysteresis),
+       "stepped by hand: no jump, pull-off or hysteresis before the path reaches them; the jump-in with its "
+       "landing");
+    adh_drive_free(dr);
+    adh_run_free(&run);
+}
+
+int main(void)
+{
+    fixture f = fix_open(FIX_N, 1.0);
+    against_static(&f);
+    times(&f);
+    spring(&f, 10);
+    spring(&f, 1e-3);
+    so_far(&f);
+    fix_close(&f);
+    return tap_done();
+}
