@@ -701,19 +701,35 @@ static int first_kernel(study_job *job)
     return st == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
 }
 
+/* A drive's expected cost, in a unit its sweep shares (one mode). */
+static double drive_cost(const adh_run_spec *ds)
+{
+    if (ds->mode == ADH_MODE_RELAX)
+        return adh_plan_iterations(ds);
+    if (ds->mode == ADH_MODE_TIME && ds->time.sls) {
+        adh_plan_time_cost c;
+        adh_plan_time_steps(ds, &c);
+        if (c.steps > 0 && isfinite(c.steps))
+            return c.steps;
+    }
+    return 1.0;
+}
+
 /* The threads: a run per core. */
 static void step_all(study_job *job, int jobs)
 {
     pthread_t *threads = calloc((size_t)jobs, sizeof *threads);
     /* each drive's expected cost, for the time left: its iterations in
-     * relaxation (adh_plan_iterations), else a step each; O(drives) a
+     * relaxation (adh_plan_iterations), its integrator steps in physical
+     * time (adh_plan_time_steps: a sweep of speeds over decades costs
+     * 3-10 times more at its fast end), else one each; O(drives) a
      * progress line, so for a few thousand drives at most */
     job->jobs = jobs;
     job->eta = job->ntodo <= ETA_MAX_DRIVES ? calloc(job->ntodo ? job->ntodo : 1, sizeof *job->eta) : NULL;
     for (size_t a = 0; job->eta && a < job->ntodo; a++) {
         adh_run_spec ds;
         adh_sweep_drive_spec(job->cfg, job->todo[a], &ds);
-        job->eta[a].cost = ds.mode == ADH_MODE_RELAX ? adh_plan_iterations(&ds) : 1.0;
+        job->eta[a].cost = drive_cost(&ds);
     }
     int started = 0;
     if (jobs > 1 && openblas_set_num_threads)

@@ -93,6 +93,14 @@ s64=$(steps_speed 1e-12m/s..1m/s,log,64) slow=$(steps_speed 1e-12m/s..8.03085722
     fast=$(steps_speed 1.2451970847350319e-06m/s..1m/s,log,32)
 check "--plan of 64 speeds, 1 pm/s to 1 m/s: its steps in all ($s64) the sum of its halves' ($slow + $fast) within 10 %" \
     sh -c "[ -n '$s64' ] && [ -n '$slow' ] && [ -n '$fast' ] && awk 'BEGIN {r = $s64 / ($slow + $fast); exit !(r > 0.9 && r < 1.1)}'"
+# A study's progress weighs its runs by their planned steps: of a slow run
+# (10 nm/s) and a fast one (1 mm/s), the slow one done first is most of the
+# work (the plan's steps: 2900 of 3400), not half of it
+"$ADHERE" --batch visco -N 150 --force --no-plot --sweep=speed=10nm/s,1mm/s -j1 -o "$TMP/swpct" >/dev/null 2>"$TMP/swpct.err"
+pct=$(sed -n 's/.*run 1 of 2 .* done, *\([0-9]*\) %.*/\1/p' "$TMP/swpct.err")
+split=$("$ADHERE" --plan visco -N 150 --force --sweep=speed=10nm/s,1mm/s 2>&1 | sed -n 's/^time: about .* of CPU in all, .*about \([0-9]*\) integrator steps, \([0-9]*\) to \([0-9]*\) a run.*/\1 \3/p')
+check "a sweep of 10 nm/s and 1 mm/s: $pct % done after the slow run, its share of the plan's steps ($split) within 5 %" \
+    sh -c "[ -n '$pct' ] && [ -n '$split' ] && echo $split $pct | awk '{exit !(\$3 > 100 * \$2 / \$1 - 5 && \$3 < 100 * \$2 / \$1 + 5)}'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
 check "--plan afm: one static curve serves every k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^skip: a curve per k: the 9 runs .* share 1 static curve ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
