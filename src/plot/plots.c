@@ -100,6 +100,18 @@ static void format_length(double v, char *buf, size_t len)
         snprintf(buf, len, "%.3g nm", v * 1e9);
 }
 
+/* A speed as the headings write it: adh_qtext's with µ, not its ASCII u
+ * ("1 µm/s"). */
+static void speed_text(double v, char *buf, size_t len)
+{
+    adh_qtext_buf q = adh_qtext(v, ADH_Q_SPEED);
+    const char *u = strstr(q.s, "um/s");
+    if (u)
+        snprintf(buf, len, "%.*sµm/s%s", (int)(u - q.s), q.s, u + 4);
+    else
+        snprintf(buf, len, "%s", q.s);
+}
+
 /* A figure title as a gnuplot string expression (adh_gp_quote: the scene
  * title is user text), drawn noenhanced so its _ ^ { } @ & ~ print as
  * themselves: the scene title (if any) on its own line, then what the
@@ -793,9 +805,9 @@ static int plot_force(plotter *pl)
     ff.panel = ff.nadh >= 2;
     force_frame(pl, &ff);
     char heading[HEADING_SIZE];
-    char what[64];
-    snprintf(what, sizeof what, pl->s->timed ? "Force vs position at %s" : "Force vs position",
-             adh_qtext(pl->s->drive_speed, ADH_Q_SPEED).s);
+    char what[96], speed[64];
+    speed_text(pl->s->drive_speed, speed, sizeof speed);
+    snprintf(what, sizeof what, pl->s->timed ? "Force vs position at %s" : "Force vs position", speed);
     title_string(pl, what, heading, sizeof heading);
 
     begin_figure(pl, "force", "force.png");
@@ -830,10 +842,10 @@ static int plot_force_base(plotter *pl)
         pl->base_done = 1;   /* force.png's note says why */
         return 0;
     }
-    char heading[HEADING_SIZE], what[128];
-    snprintf(what, sizeof what, pl->s->timed ? "Force vs base position at %s, spring k = %s"
-                                             : "Force vs base position%s, spring k = %s",
-             pl->s->timed ? adh_qtext(pl->s->drive_speed, ADH_Q_SPEED).s : "",
+    char heading[HEADING_SIZE], what[160], speed[64] = "";
+    if (pl->s->timed)
+        speed_text(pl->s->drive_speed, speed, sizeof speed);
+    snprintf(what, sizeof what, "Force vs base position%s%s, spring k = %s", *speed ? " at " : "", speed,
              adh_qtext(pl->s->spring, ADH_Q_STIFFNESS).s);
     title_string(pl, what, heading, sizeof heading);
     char why[1024];
@@ -1280,9 +1292,10 @@ static int plot_contact(plotter *pl)
     if (pl->s->timed && speed_bulk(smooth, n, &vlo, &vhi) == 0)
         vmax = fmax(fabs(vlo), fabs(vhi));
     int in_mm = vmax >= 2e-3;
-    char heading[HEADING_SIZE], what[96];
+    char heading[HEADING_SIZE], what[128], speed[64];
+    speed_text(pl->s->drive_speed, speed, sizeof speed);
     snprintf(what, sizeof what, pl->s->timed ? "Contact line in time, base at %s" : "Contact line at drive speed %s",
-             adh_qtext(pl->s->drive_speed, ADH_Q_SPEED).s);
+             speed);
     title_string(pl, what, heading, sizeof heading);
     /* a two-line heading (scene title) needs more room above the panels */
     double top = has_title(pl) ? 0.90 : 0.94;
