@@ -376,6 +376,10 @@ check '[ -n "$o" ] && [ "$(pt "$o" "$F" 1 1)" = "$(ev last 4)" ] && [ "$(pt "$o"
 # the static figure's arrow bounds where the sphere lands: F scaled alike in both
 check 'awk -v t="$(ev first 9)" -v f="$(ev first 6)" -v a="$arrow_to" -v b="$arrow_from" "BEGIN {exit !(t / f >= a / b)}"' \
     "physical time's snap-in lands ($(ev first 9) N) at or past the static arrow's end"
+# the same directory run again without a spring: the earlier figure goes
+"$BIN" $RUN -E 1GPa --turn=-2nm --mode=static --plots=force -o "$T/sk" 2>/dev/null
+check '[ -s "$T/sk/force.png" ] && [ ! -e "$T/sk/force-base.png" ]' \
+    "a run without a spring into the same directory removes the earlier force-base.png"
 
 # one spelling of units and no title that repeats the heading's numbers
 check '! grep -h "^set .*title\|^set .*label\|title \"" "$T"/*.gp | grep -q "um/s\|sigma = [0-9]"' \
