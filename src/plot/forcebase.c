@@ -206,7 +206,10 @@ static int static_fig(fb_fig *fg, const adh_run *run, double k)
 
 /* The rows as they are, a curve per path; a jump is two rows of a path at
  * one time (and so one base) with the sphere moved. The first on loading
- * is the snap-in, the last of each unloading path its snap-out. */
+ * is the snap-in, the last of each unloading path its snap-out. An
+ * elastic sphere's path (its static curve) puts a landing past the curve's
+ * end at that end, the base moved with it: drawn as the static figure
+ * draws it, the curve broken and an arrow from the fold. */
 static int timed_fig(fb_fig *fg, const adh_run *run)
 {
     int np = 0;
@@ -223,14 +226,19 @@ static int timed_fig(fb_fig *fg, const adh_run *run)
         fg->line[p].path = p, last[p] = -1;
     for (size_t i = 0; i < run->nrows; i++) {
         const adh_obs *o = &run->rows[i], *prev = i ? o - 1 : NULL;
-        push(fg, &fg->line[o->path], (fb_point){ o->base, o->F, o->h0 });
-        if (!prev || prev->path != o->path || prev->t != o->t || prev->h0 == o->h0)
-            continue;
-        if (o->path == 0 && last[0] < 0)
-            add_jump(fg, (fb_jump){ { prev->base, prev->F, prev->h0 }, { o->base, o->F, o->h0 }, FB_SNAP_IN });
-        else
-            add_jump(fg, (fb_jump){ { prev->base, prev->F, prev->h0 }, { o->base, o->F, o->h0 }, FB_OTHER });
-        last[o->path] = (long)fg->njump - 1;
+        fb_line *l = &fg->line[o->path];
+        if (prev && prev->path == o->path && prev->t == o->t && prev->h0 != o->h0) {
+            fb_jump jp = { { prev->base, prev->F, prev->h0 }, { o->base, o->F, o->h0 }, FB_OTHER };
+            /* moved by more than rounding (base = h0 - F/k from each row) */
+            if (fabs(o->base - prev->base) > 1e-6 * fabs(o->h0 - prev->h0)) {
+                jp.to = (fb_point){ prev->base, NAN, o->h0 };
+                push(fg, l, (fb_point){ NAN, NAN, NAN });   /* a break in the curve */
+            }
+            jp.kind = o->path == 0 && last[0] < 0 ? FB_SNAP_IN : FB_OTHER;
+            add_jump(fg, jp);
+            last[o->path] = (long)fg->njump - 1;
+        }
+        push(fg, l, (fb_point){ o->base, o->F, o->h0 });
     }
     for (int p = 1; p <= np && !fg->bad; p++)
         if (last[p] >= 0)
@@ -272,6 +280,10 @@ static int write_data(const fb_fig *fg, FILE *f, int *idx, fb_frame *fr)
             continue;
         for (size_t j = 0; j < fg->line[i].n; j++) {
             const fb_point *p = &fg->line[i].p[j];
+            if (!isfinite(p->base)) {   /* a break: one blank line */
+                fputs("\n", f);
+                continue;
+            }
             fprintf(f, "%.17g\t%.17g\t%.17g\n", p->base, p->F, p->h0);
             grow(fr, *p);
         }
