@@ -9,6 +9,7 @@
 #include "cli/figures.h"
 #include "cli/interrupt.h"
 #include "cli/tables.h"
+#include "plot/forcebase.h"
 #include "plot/plot.h"
 #include "plot/setup.h"
 
@@ -125,6 +126,10 @@ static int plots_skipped(const adh_config *cfg, size_t i, const adh_run_spec *sp
     for (size_t k = 0; cfg->output.plot && k < sizeof figs / sizeof figs[0]; k++)
         if (cfg->output.plots & figs[k].bit)
             cli_tables_names_add(missing, sizeof missing, figs[k].name);
+    adh_plot_setup ps;
+    adh_plot_setup_fill(cfg, spec, NULL, &ps);
+    if (cfg->output.plot && (cfg->output.plots & ADH_PLOT_FORCE) && adh_forcebase_wanted(&ps))
+        cli_tables_names_add(missing, sizeof missing, "force-base.png");
     if (!*missing)
         return CLI_EXIT_OK;
     int trc = run_tables(cfg, i, spec, run, sres, tout, rc, dir, 0, missing, "interrupted", said);

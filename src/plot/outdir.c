@@ -81,7 +81,7 @@ struct adh_outdir {
 static const char *const owned[] = {
     "force.tsv", "summary.tsv", "turns.tsv", "static.tsv", "profiles.tsv", "contact.tsv", "models.tsv",
     "sweep.tsv", "cost.tsv", "fit.tsv", "fit-points.tsv", "best.scene", "fit.png", "study.tsv", "runs.tsv",
-    "force.png", "profile.png", "contact.png", "precontact.png", "bulge.png", "jump.png", "cost.png",
+    "force.png", "force-base.png", "profile.png", "contact.png", "precontact.png", "bulge.png", "jump.png", "cost.png",
     "map.png", "curves.png", "events.tsv", "speed.png", "snap.png",
     "gnuplot.log", "gnuplot-figures.log", ADH_OUTDIR_MANIFEST,
 };

@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "adhere/run.h"
+#include "plot/gnuplot.h"
 #include "plot/outdir.h"
 #include "plot/setup.h"
 #include "scene/figures.h"
@@ -34,5 +35,9 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
  * 0; 1 when no style is set and none is installed (buf = "", the built-in
  * defaults serve); -1 when style names nothing readable (msg). */
 int adh_plot_style_file(const char *style, char *buf, size_t len, char *msg, size_t msglen);
+
+/* The gnuplot functions adh_ucol(p) and adh_udash(p): unloading path p's
+ * colour and dash from the style's lists (force.png, force-base.png). */
+void adh_plot_branch_styles(adh_gnuplot *gp);
 
 #endif

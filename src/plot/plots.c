@@ -17,6 +17,7 @@
 #include "adhere/models.h"
 #include "adhere/params.h"
 #include "plot/axes.h"
+#include "plot/forcebase.h"
 #include "plot/gnuplot.h"
 #include "plot/labels.h"
 #include "plot/models.h"
@@ -46,6 +47,7 @@ typedef struct plotter {
     char notes[512];          /* figures skipped for lack of data */
     unsigned written;         /* ADH_PLOT_* bits of the figures in place */
     unsigned skipped;         /* ... and of those skipped for lack of data */
+    int base_done;            /* force-base.png in place, or skipped with force.png */
     char error[1024];         /* the first gnuplot failure */
 } plotter;
 
@@ -96,6 +98,18 @@ static void format_length(double v, char *buf, size_t len)
         snprintf(buf, len, "%.3g µm", v * 1e6);
     else
         snprintf(buf, len, "%.3g nm", v * 1e9);
+}
+
+/* A speed as the headings write it: adh_qtext's with µ, not its ASCII u
+ * ("1 µm/s"). */
+static void speed_text(double v, char *buf, size_t len)
+{
+    adh_qtext_buf q = adh_qtext(v, ADH_Q_SPEED);
+    const char *u = strstr(q.s, "um/s");
+    if (u)
+        snprintf(buf, len, "%.*sµm/s%s", (int)(u - q.s), q.s, u + 4);
+    else
+        snprintf(buf, len, "%s", q.s);
 }
 
 /* A figure title as a gnuplot string expression (adh_gp_quote: the scene
@@ -306,18 +320,6 @@ static model_sets write_model_sets(datafile *df, const adh_model_curve *c)
         set_point(df, c->h0[i], c->F[i]);
     ms.disp = df->points > 1 ? set_end(df) : (set_end(df), -1);
     return ms;
-}
-
-/* Unloading branch k (path k) takes the k-th colour of the style and the
- * k-th dash, cycling; when the colours and dashes would start over
- * together, the dashes move on by one, so no two of the first colours x
- * dashes branches look alike. */
-static void branch_styles(plotter *pl)
-{
-    adh_gnuplot_cmd(pl->gp, "adh_nc = words(adh_unload_colors); adh_nd = words(adh_unload_dashes)");
-    adh_gnuplot_cmd(pl->gp, "adh_ucol(p) = word(adh_unload_colors, 1 + (p - 1) %% adh_nc)");
-    adh_gnuplot_cmd(pl->gp, "adh_udash(p) = int(word(adh_unload_dashes, 1 + ((p - 1) + (p - 1) / adh_nc * "
-                    "(adh_nc %% adh_nd == 0)) %% adh_nd))");
 }
 
 static void unload_color(int path, char *buf, size_t len)
@@ -693,7 +695,7 @@ static int force_panel(plotter *pl, const force_fig *ff)
     adh_gnuplot_cmd(pl->gp, "set yrange [%.17g:%.17g]", ff->lo * ff->fscale, ff->hi * ff->fscale);
     adh_gnuplot_cmd(pl->gp, "set key at screen 0.5, screen 0.01 center bottom vertical maxrows %d width -2", ff->keyrows);
     adh_gnuplot_cmd(pl->gp, "set bmargin %.3g", ff->bmargin);
-    branch_styles(pl);
+    adh_plot_branch_styles(pl->gp);
     char *cmd = NULL, q[ADH_GP_PATH_SIZE];
     size_t cmdcap = 0;
     FILE *c = open_memstream(&cmd, &cmdcap);
@@ -803,9 +805,9 @@ static int plot_force(plotter *pl)
     ff.panel = ff.nadh >= 2;
     force_frame(pl, &ff);
     char heading[HEADING_SIZE];
-    char what[64];
-    snprintf(what, sizeof what, pl->s->timed ? "Force vs position at %s" : "Force vs position",
-             adh_qtext(pl->s->drive_speed, ADH_Q_SPEED).s);
+    char what[96], speed[64];
+    speed_text(pl->s->drive_speed, speed, sizeof speed);
+    snprintf(what, sizeof what, pl->s->timed ? "Force vs position at %s" : "Force vs position", speed);
     title_string(pl, what, heading, sizeof heading);
 
     begin_figure(pl, "force", "force.png");
@@ -830,6 +832,31 @@ static int plot_force(plotter *pl)
     if (panel)
         adhesion_panel(pl, &ff, top);
     return finish_figure(pl, "force.png");
+}
+
+/* The force against the instrument's base beside force.png, when a
+ * spring sets the base apart from h0 (plot/forcebase.h). */
+static int plot_force_base(plotter *pl)
+{
+    if (pl->run->nrows < 2) {
+        pl->base_done = 1;   /* force.png's note says why */
+        return 0;
+    }
+    char heading[HEADING_SIZE], what[160], speed[64] = "";
+    if (pl->s->timed)
+        speed_text(pl->s->drive_speed, speed, sizeof speed);
+    snprintf(what, sizeof what, "Force vs base position%s%s, spring k = %s", *speed ? " at " : "", speed,
+             adh_qtext(pl->s->spring, ADH_Q_STIFFNESS).s);
+    title_string(pl, what, heading, sizeof heading);
+    char why[1024];
+    if (adh_forcebase_figure(&pl->ses, pl->s, pl->run, heading, why, sizeof why) != 0) {
+        if (!*pl->error)
+            snprintf(pl->error, sizeof pl->error, "force-base.png: %.960s", why);
+        return -1;
+    }
+    append(pl->done, sizeof pl->done, "%sforce-base.png", *pl->done ? ", " : "");
+    pl->base_done = 1;
+    return 0;
 }
 
 /* -------------------------------------------------------------- profile */
@@ -1265,16 +1292,17 @@ static int plot_contact(plotter *pl)
     if (pl->s->timed && speed_bulk(smooth, n, &vlo, &vhi) == 0)
         vmax = fmax(fabs(vlo), fabs(vhi));
     int in_mm = vmax >= 2e-3;
-    char heading[HEADING_SIZE], what[96];
+    char heading[HEADING_SIZE], what[128], speed[64];
+    speed_text(pl->s->drive_speed, speed, sizeof speed);
     snprintf(what, sizeof what, pl->s->timed ? "Contact line in time, base at %s" : "Contact line at drive speed %s",
-             adh_qtext(pl->s->drive_speed, ADH_Q_SPEED).s);
+             speed);
     title_string(pl, what, heading, sizeof heading);
     /* a two-line heading (scene title) needs more room above the panels */
     double top = has_title(pl) ? 0.90 : 0.94;
     begin_figure(pl, "contact", "contact.png");
     adh_gnuplot_cmd(pl->gp, "set multiplot title %s noenhanced", heading);
     adh_gnuplot_cmd(pl->gp, "set xrange [%.17g:%.17g]", xlo * 1e9, xhi * 1e9);
-    branch_styles(pl);
+    adh_plot_branch_styles(pl->gp);
     int nunload = contact_unloads(set, np);
     int keyrows = (2 + (nunload > MAX_LABELLED_UNLOADS ? 1 : nunload) + 2) / 3;
     double amax = 0;
@@ -1391,6 +1419,8 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
          * while gnuplot lives. */
         if ((want & ADH_PLOT_FORCE) && adh_gnuplot_alive(pl.gp))
             plot_force(&pl);
+        if ((want & ADH_PLOT_FORCE) && adh_forcebase_wanted(s) && adh_gnuplot_alive(pl.gp))
+            plot_force_base(&pl);
         if ((want & ADH_PLOT_PROFILE) && adh_gnuplot_alive(pl.gp))
             plot_profile(&pl);
         if ((want & ADH_PLOT_CONTACT) && adh_gnuplot_alive(pl.gp))
@@ -1400,6 +1430,8 @@ int adh_plots_write(const adh_plot_setup *s, const adh_run *run, const adh_run *
         adh_session_close(&pl.ses);
     }
     add_unwritten_figures(unwritten, ulen, want, pl.written | pl.skipped);
+    if ((want & ADH_PLOT_FORCE) && adh_forcebase_wanted(s) && !pl.base_done)
+        add_name(unwritten, ulen, "force-base.png");
 
     if (*table_error) {
         snprintf(msg, msglen, "%s%s%s", table_error, *pl.error ? "; plotting failed too: " : "", pl.error);

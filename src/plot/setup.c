@@ -20,6 +20,7 @@ void adh_plot_setup_fill(const adh_config *cfg, const adh_run_spec *run, const a
         .drive_speed = run->mode == ADH_MODE_TIME ? run->time.speed_out : o->drive_speed,
         .timed = run->mode == ADH_MODE_TIME,
         .sprung = run->mode != ADH_MODE_RIGID && isfinite(run->time.spring),
+        .spring = run->time.spring,
         .Einf = run->mode == ADH_MODE_TIME && run->time.sls ? adh_config_einf(run) : NAN,
         .tau = run->time.tau,
         .step = run->proto.step,

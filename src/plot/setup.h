@@ -27,6 +27,7 @@ typedef struct adh_plot_setup {
     int timed;                     /* the rows are in physical time (mode time) */
     int sprung;                    /* through an instrument's spring: h0 is the sphere's
                                       position, the base drives it (h0 = base + F/k) */
+    double spring;                 /* that spring's k, N/m; INFINITY: none */
     double Einf, tau;              /* a standard linear solid's (mat.E is E0); Einf NAN: elastic */
     double step;                   /* drive step d, m */
     size_t nodes;                  /* the run's grid: N nodes (each profile's length), */

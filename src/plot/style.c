@@ -1,4 +1,4 @@
-/* Which gnuplot style file a run uses. */
+/* Which gnuplot style file a run uses, and the branches' styles of it. */
 #include "plot/plot.h"
 
 #include <errno.h>
@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "plot/gnuplot.h"
 #include "scene/datadir.h"
 
 static int is_dir(const char *p)
@@ -38,4 +39,16 @@ int adh_plot_style_file(const char *style, char *buf, size_t len, char *msg, siz
     if (len)
         buf[0] = '\0';
     return 1;
+}
+
+/* Unloading branch k (path k) takes the k-th colour of the style and the
+ * k-th dash, cycling; when the colours and dashes would start over
+ * together, the dashes move on by one, so no two of the first colours x
+ * dashes branches look alike. */
+void adh_plot_branch_styles(adh_gnuplot *gp)
+{
+    adh_gnuplot_cmd(gp, "adh_nc = words(adh_unload_colors); adh_nd = words(adh_unload_dashes)");
+    adh_gnuplot_cmd(gp, "adh_ucol(p) = word(adh_unload_colors, 1 + (p - 1) %% adh_nc)");
+    adh_gnuplot_cmd(gp, "adh_udash(p) = int(word(adh_unload_dashes, 1 + ((p - 1) + (p - 1) / adh_nc * "
+                    "(adh_nc %% adh_nd == 0)) %% adh_nd))");
 }

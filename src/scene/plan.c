@@ -370,6 +370,12 @@ static void plan_stored(const adh_config *cfg, const adh_run_spec *s0, adh_plan 
                 else
                     note(p->stored, &p->nstored, what, "%s", figs[i].what);
             }
+        /* the plot module's adh_forcebase_wanted: a base apart from h0 */
+        if ((cfg->output.plots & ADH_PLOT_FORCE) && (p->static_mode || p->time_mode) && isfinite(s0->time.spring)) {
+            snprintf(what, sizeof what, "%sforce-base.png", prefix);
+            note(p->stored, &p->nstored, what, "force vs the base (piezo) position through the spring, the snaps "
+                 "vertical at fixed base");
+        }
     }
 }
 

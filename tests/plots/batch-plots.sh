@@ -301,6 +301,99 @@ awk -F'\t' '!/^#/ && $1 != "h0" && $9 == 0 && $1 > 0 {printf "%.12g %.12g\n", $1
 awk -F'\t' '$1 == "rigid" {printf "%.12g %.12g\n", $3, $4}' "$M" | sort >"$T/rigid.got"
 check '[ "$(wc -l <"$T/rigid.got")" -gt 10 ] && cmp -s "$T/rigid.want" "$T/rigid.got"' \
     "models.tsv: eq 22 at every approach position before contact, as force.tsv's F_rigid ($(wc -l <"$T/rigid.got") rows)"
+# --- force-base.png: the force against the instrument's base ---------------
+# Written exactly when a finite spring sets the base apart from h0 (the
+# static curve, physical time); without one base = h0: no such file.
+check '[ -s "$T/static/force.png" ] && [ -s "$T/ref/force.png" ] && [ ! -e "$T/static/force-base.png" ] && [ ! -e "$T/ref/force-base.png" ] && ! grep -q forcebase "$T/static.gp" "$T/ref.gp"' \
+    "no spring: no force-base.png (the static curve, a relaxation)"
+# n-th point (from 1) of dataset k of a data file, column c
+pt() { dataset "$1" "$2" | awk -v n="$3" -v c="$4" 'NR == n {print $c}'; }
+# |a - b| <= tol * |s|: a relation within the printed digits, not a number
+near() { awk "BEGIN {d = ($1) - ($2); s = $3; t = $4; exit !(d * d <= t * t * s * s)}"; }
+k=10
+D=$T/sk
+GPLOG=$T/sk.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-2nm --mode=static --spring=$k \
+    --plots=force -o "$D" 2>"$T/sk.err"
+rc=$?
+check '[ $rc -eq 0 ] && [ "$(png_size "$D/force-base.png")" = "$size" ] && grep -q "^force-base.png	" "$D/.adhere-manifest"' \
+    "--mode=static --spring: force-base.png made and in the manifest ($rc: $(head -c 200 "$T/sk.err"))"
+check 'grep -q "^set xlabel \"base (piezo) position (nm)\"" "$T/sk.gp" && grep -q "^set key at screen 0.5, screen 0.01 center bottom" "$T/sk.gp"' \
+    "force-base.png: the base (piezo) position in nm, the key below the frame"
+F=$T/sk.gp.forcebase.dat
+i=$(index_of 'title "snap-in' "$T/sk.gp"); o=$(index_of 'title "snap-out' "$T/sk.gp")
+a=$(index_of 'title "approach"' "$T/sk.gp"); r=$(index_of 'title "retraction"' "$T/sk.gp")
+b1=$(pt "$i" "$F" 1 1) f1=$(pt "$i" "$F" 1 2) h1=$(pt "$i" "$F" 1 3) b2=$(pt "$i" "$F" 2 1) f2=$(pt "$i" "$F" 2 2) h2=$(pt "$i" "$F" 2 3)
+sb=$(val snap_in_base "$D/summary.tsv"); sh=$(val snap_in_h0 "$D/summary.tsv")
+check '[ -n "$i" ] && [ "$b1" = "$b2" ] && [ "$b1" = "$(printf %.17g "$sb")" ] && near "$f1" "$k * ($sh - $sb)" "$f1" 1e-9 && near "$h1" "$sh" "$sh" 1e-12' \
+    "the snap-in at one base, summary.tsv's snap_in_base ($b1 = $sb m), from F = k (snap_in_h0 - base)"
+check 'near "$f2 - $f1" "$k * ($h2 - $h1)" "$f2 - $f1" 1e-9 && [ "$(echo "$h2 $h1" | awk "{print (\$1 < \$2)}")" = 1 ]' \
+    "the snap-in's force change ($f1 to $f2 N) is k times the sphere's flight in ($h1 to $h2 m)"
+# where it lands is on the curve of force.tsv: between two rows, linearly
+check 'grep -v "^#" "$D/force.tsv" | awk -F"\t" -v k=$k -v b="$b2" -v f="$f2" "NR > 1 {c = \$1 - \$2 / k; if (NR > 2 && (c - b) * (p - b) <= 0 && c != p) {g = q + (\$2 - q) * (b - p) / (c - p); if ((g - f) ^ 2 < (1e-9 * f) ^ 2) ok = 1} p = c; q = \$2} END {exit !ok}"' \
+    "the snap-in lands on force.tsv's curve at that base"
+ob=$(pt "$o" "$F" 1 1) of1=$(pt "$o" "$F" 1 2) oh1=$(pt "$o" "$F" 1 3) ob2=$(pt "$o" "$F" 2 1) of2=$(pt "$o" "$F" 2 2) oh2=$(pt "$o" "$F" 2 3)
+check '[ -n "$o" ] && [ "$ob" = "$ob2" ] && [ "$ob" = "$(printf %.17g "$(val snap_out_base "$D/summary.tsv")")" ] && near "$of2 - $of1" "$k * ($oh2 - $oh1)" "$of1" 1e-9' \
+    "the snap-out at summary.tsv's snap_out_base ($ob m), its force change k times the sphere's flight"
+# a stiff spring's snap-out lands beyond the curve's start: force.tsv has
+# no base out there, and the free sphere's force is drawn as 0
+check 'grep -v "^#" "$D/force.tsv" | awk -F"\t" -v k=$k -v b="$ob" "NR > 1 && \$1 - \$2 / k >= b {n++} END {exit n > 0}" && [ "$of2" = 0 ] && [ "$oh2" = "$ob" ]' \
+    "past force.tsv's start the snap-out lands at F = 0, h0 = base"
+# the piezo moves one way on each: in the approach's base falls, in the
+# retraction's it rises (a snap: the same base twice); each from force.tsv's end
+first=$(grep -v '^#' "$D/force.tsv" | awk -F'\t' -v k=$k 'NR == 2 {printf "%.9g", $1 - $2 / k}')
+last=$(grep -v '^#' "$D/force.tsv" | awk -F'\t' -v k=$k 'NR > 1 {v = $1 - $2 / k} END {printf "%.9g", v}')
+check '[ -n "$a" ] && dataset "$a" "$F" | awk -v s="$first" "NR == 1 && sprintf(\"%.9g\", \$1) != s {bad++} NR > 1 && \$1 > p {bad++} {p = \$1} END {exit bad || NR < 10}"' \
+    "the approach starts at force.tsv's first row's base ($first m) and its base never rises"
+check '[ -n "$r" ] && dataset "$r" "$F" | awk -v s="$last" "NR == 1 && sprintf(\"%.9g\", \$1) != s {bad++} NR > 1 && \$1 < p {bad++} {p = \$1} END {exit bad || NR < 10}"' \
+    "the retraction starts at the curve's deepest point ($last m) and its base never falls"
+# a soft spring's snap-in lands past the curve's deepest point: an arrow
+# down to k (h0 there - base), where the sphere would sit at that point;
+# physical time's landing (the same grid and spring) is below it
+k=1
+D=$T/sk1
+GPLOG=$T/sk1.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-1.5nm --mode=static --spring=$k \
+    --plots=force -o "$D" 2>/dev/null
+set -- $(sed -n 's/^set arrow from first \([^,]*\), first \([^ ]*\) to first \([^,]*\), first \([^ ]*\) .*/\1 \2 \3 \4/p' "$T/sk1.gp")
+narrow=$# arrow_at=$1 arrow_from=$2 arrow_at2=$3 arrow_to=$4
+hl=$(grep -v '^#' "$D/force.tsv" | awk -F'\t' 'NR > 1 {v = $1} END {print v}')
+sb=$(val snap_in_base "$D/summary.tsv"); sh=$(val snap_in_h0 "$D/summary.tsv")
+check '[ "$narrow" -eq 4 ] && [ "$arrow_at" = "$arrow_at2" ] && near "$arrow_at" "$sb * 1e9" "$arrow_at" 1e-9 && near "$arrow_to / $arrow_from" "($hl - $sb) / ($sh - $sb)" 1 1e-9 && grep -q "keyentry .*past the curve" "$T/sk1.gp"' \
+    "k = 1 N/m: the snap-in's arrow at snap_in_base ($arrow_at nm) ends at k (h0 at the curve's end - base)"
+# physical time through the integrator: a standard linear solid with
+# Einf = E0 (an elastic sphere in time walks its static curve instead)
+D=$T/tk
+GPLOG=$T/tk.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN --material=sls --E0=1GPa --Einf=1GPa --turn=-1.5nm \
+    --mode=time --spring=$k --plots=force -o "$D" 2>/dev/null
+rc=$?
+F=$T/tk.gp.forcebase.dat
+check '[ $rc -eq 0 ] && [ "$(png_size "$D/force-base.png")" = "$size" ] && grep -q "^set xlabel \"base (piezo) position (nm)\"" "$T/tk.gp"' \
+    "--mode=time --spring: force-base.png made ($rc)"
+# its snap points are the rows of events.tsv's jumps, at one base each
+ev() { awk -F'\t' -v w="$1" -v c="$2" '$1 == "jump" {n++; v[n] = $c} END {print v[w == "first" ? 1 : n]}' "$D/events.tsv"; }
+i=$(index_of 'title "snap-in' "$T/tk.gp"); o=$(index_of 'title "snap-out' "$T/tk.gp")
+check '[ -n "$i" ] && [ "$(pt "$i" "$F" 1 1)" = "$(ev first 4)" ] && [ "$(pt "$i" "$F" 2 1)" = "$(ev first 4)" ] && [ "$(pt "$i" "$F" 1 3)" = "$(ev first 5)" ] && [ "$(pt "$i" "$F" 2 3)" = "$(ev first 8)" ] && near "$(pt "$i" "$F" 1 2)" "$(ev first 6)" "$(ev first 6)" 1e-9 && near "$(pt "$i" "$F" 2 2)" "$(ev first 9)" "$(ev first 9)" 1e-9' \
+    "physical time: the snap-in's points are events.tsv's first jump, before and after at its base ($(ev first 4) m)"
+check '[ -n "$o" ] && [ "$(pt "$o" "$F" 1 1)" = "$(ev last 4)" ] && [ "$(pt "$o" "$F" 2 1)" = "$(ev last 4)" ] && near "$(pt "$o" "$F" 2 2) - $(pt "$o" "$F" 1 2)" "$k * ($(pt "$o" "$F" 2 3) - $(pt "$o" "$F" 1 3))" "$(pt "$o" "$F" 1 2)" 1e-9' \
+    "physical time: the snap-out is events.tsv's last jump, its force change k times the sphere's flight"
+# the static figure's arrow bounds where the sphere lands: F scaled alike in both
+check 'awk -v t="$(ev first 9)" -v f="$(ev first 6)" -v a="$arrow_to" -v b="$arrow_from" "BEGIN {exit !(t / f >= a / b)}"' \
+    "physical time's snap-in lands ($(ev first 9) N) at or past the static arrow's end"
+# an elastic sphere in time walks its static curve and puts that landing
+# at the curve's end, its base moved with it: the curve is broken there and
+# the arrow drawn as on the static figure, at the snap-in's base
+D=$T/te
+GPLOG=$T/te.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-1.5nm --mode=time --spring=$k \
+    --plots=force -o "$D" 2>/dev/null
+a=$(index_of 'title "approach"' "$T/te.gp")
+eb=$(awk -F'\t' '$1 == "jump" {print $4; exit}' "$D/events.tsv")
+# (a single blank line breaks a dataset's curve: no segment across it)
+check '[ -n "$a" ] && awk -v k="$a" "!NF {b++; brk = 1; next} {if (b >= 2) i++; b = 0} i == k {if (!brk && n && \$1 > p) bad++; p = \$1; n++; brk = 0} END {exit bad || n < 10}" "$T/te.gp.forcebase.dat" && [ "$(grep -c "^set arrow" "$T/te.gp")" -eq 1 ] && grep -q "^set arrow from first $(awk -v b="$eb" "BEGIN {printf \"%.17g\", b * 1e9}")," "$T/te.gp"' \
+    "elastic physical time: the approach's base never rises, the snap-in past the curve's end an arrow at its base ($eb m)"
+# the same directory run again without a spring: the earlier figure goes
+"$BIN" $RUN -E 1GPa --turn=-2nm --mode=static --plots=force -o "$T/sk" 2>/dev/null
+check '[ -s "$T/sk/force.png" ] && [ ! -e "$T/sk/force-base.png" ]' \
+    "a run without a spring into the same directory removes the earlier force-base.png"
+
 # one spelling of units and no title that repeats the heading's numbers
 check '! grep -h "^set .*title\|^set .*label\|title \"" "$T"/*.gp | grep -q "um/s\|sigma = [0-9]"' \
     "no figure writes um/s or repeats sigma in words (µm/s, σ in the heading)"
