@@ -64,6 +64,10 @@ void adh_path_free(adh_path *p);
 int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, const adh_visco_drive *d,
                    const adh_protocol_settings *ps, adh_run *run);
 
+/* Where the curve must end for the walk (a snap-in through a soft spring
+ * that lands past the curve's deepest point: solve it deeper and walk
+ * again), or NAN when the curve was deep enough. */
+double adh_path_deeper(const adh_path *p);
 /* The rows the walk appended. */
 size_t adh_path_rows(const adh_path *p);
 /* The summary as the walk's first rows (all of them: adh_path_rows) have

@@ -53,6 +53,7 @@ struct adh_path {
     double turn_x[ADH_MAX_TURNS], turn_work[ADH_MAX_TURNS], turn_loss[ADH_MAX_TURNS];
     adh_obs turn_o[ADH_MAX_TURNS];
     size_t reached;
+    double deeper;              /* the curve's end a snap-in's landing needs (NAN: none) */
 };
 
 /* Nothing measured yet: no jump, no pull-off, no cycle. */
@@ -471,6 +472,27 @@ static double landing_in(const adh_path *p, size_t i, double bf)
     return (double)(j - 1) + (bf - row_base(p, j - 1)) / (row_base(p, j) - row_base(p, j - 1));
 }
 
+/* A snap-in from base bf that found no landing on the curve (xl at its
+ * end, the base there still above bf): a soft spring throws the sphere
+ * past the deepest turn. The landing is where F(h0) = k (h0 - bf); past
+ * the end the force rises with depth at least as fast as at the end (a
+ * contact stiffens as it grows), so the line through the end at its slope
+ * meets k (h0 - bf) beyond the landing: a curve to there, and a fifth
+ * more, holds it (adh_path_deeper asks for it). Where the force still
+ * falls with depth at the end, F >= F_end bounds it: bf + F_end / k. */
+static void note_deeper(adh_path *p, double xl, double bf)
+{
+    size_t n = p->c->n;
+    const adh_obs *e = &p->c->rows[n - 1], *d = &p->c->rows[n - 2 + (n < 2)];
+    if (xl < (double)(n - 1) || row_base(p, n - 1) < bf || !isfinite(p->k) || !(e->F < 0))
+        return;
+    double s = d->h0 != e->h0 ? (e->F - d->F) / (e->h0 - d->h0) : 0;   /* dF/dh0 < 0: rising with depth */
+    double gap = e->F - p->k * (e->h0 - bf);                           /* < 0: no landing yet */
+    double need = s < 0 ? e->h0 + 1.2 * gap / (p->k - s) : bf + 1.1 * e->F / p->k;
+    if (need < e->h0 && !(need >= p->deeper))
+        p->deeper = need;
+}
+
 /* Loading, from the curve's start down to the deepest turn (without
  * turns: to the first contact). */
 static void load(adh_path *p)
@@ -510,6 +532,7 @@ static void load(adh_path *p)
             static_fold(p, i - 1, 1, &f);
             xl = landing_in(p, i, base_of(p, &f.o));
         }
+        note_deeper(p, xl, base_of(p, &f.o));
         path_pt l = at(p, xl);
         jump(p, &f, &l, jump_loss(p, &f, i, xl));
         bmin = base_of(p, &f.o);
@@ -709,6 +732,7 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     p->jump_in_row = (size_t)-1;
     p->branch_ev = 0;
     p->pull_row = -1;
+    p->deeper = NAN;
     qsort(p->ps.turns, p->ps.nturns, sizeof *p->ps.turns, cmp_desc);
     qsort(p->ps.profiles, p->ps.nprofiles, sizeof *p->ps.profiles, cmp_desc);
     adh_visco_result *r = &p->res;
@@ -725,6 +749,11 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
         for (size_t k = 0; k < p->reached && p->rc == ADH_SUCCESS; k++)
             unload(p, k);
     return p->rc;
+}
+
+double adh_path_deeper(const adh_path *p)
+{
+    return p->deeper;
 }
 
 const adh_state *adh_path_state(adh_path *p, size_t row)

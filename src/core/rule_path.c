@@ -5,11 +5,13 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "adhere/observe.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 #include "adhere/visco.h"
 
 /* The rows' deformations are kept (as floats: profiles and the state
@@ -23,6 +25,7 @@ typedef struct path_rule {
     adh_material m;
     adh_visco_drive drive;
     adh_protocol_settings ps;
+    adh_static_settings ss; /* the curve's settings (its end moves deeper for a landing) */
     adh_run curve;          /* the static curve */
     adh_static_result sres;
     float *u;               /* its rows' deformations, ucap rows; NULL: not kept */
@@ -33,6 +36,7 @@ typedef struct path_rule {
     size_t next;            /* the next row of run to hand out */
     int first;              /* the status of the curve's start */
     int built, status;      /* the path read off; the curve's final status */
+    char why[256];          /* a stop of the path's own (else the curve's) */
 } path_rule;
 
 adh_static_settings adh_rule_path_static_settings(double k, const volatile sig_atomic_t *cancel)
@@ -72,6 +76,20 @@ static void path_free(void *vr)
     free(r);
 }
 
+/* The curve from its start again, under r->ss: no rows yet. */
+static int restart(path_rule *r)
+{
+    adh_run_free(&r->curve);
+    adh_run_init(&r->curve);
+    adh_run_free(&r->run);
+    adh_run_init(&r->run);
+    r->next = 0;
+    r->built = 0;
+    int rc = adh_static_set(r->sw, &r->m, &r->ss);
+    r->first = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;
+    return rc;
+}
+
 static int path_set(void *vr, const adh_material *m, const void *settings, const adh_protocol_settings *ps,
                     double start)
 {
@@ -90,15 +108,9 @@ static int path_set(void *vr, const adh_material *m, const void *settings, const
     r->m = *m;
     r->drive = vs.drive;
     r->ps = *ps;
-    adh_run_free(&r->curve);
-    adh_run_init(&r->curve);
-    adh_run_free(&r->run);
-    adh_run_init(&r->run);
-    r->next = 0;
-    r->built = 0;
+    r->ss = s;
     r->keep_u = 1;
-    int rc = adh_static_set(r->sw, m, &s);
-    r->first = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;
+    int rc = restart(r);
     return rc == ADH_EINVAL ? ADH_EINVAL : ADH_SUCCESS;
 }
 
@@ -154,8 +166,8 @@ static int solve_curve(path_rule *r)
     return rc;
 }
 
-/* The path read off the curve (as far as it went). */
-static int build(path_rule *r)
+/* The curve solved, and the path read off it. */
+static int walk(path_rule *r)
 {
     r->status = solve_curve(r);
     if (r->status == ADH_EINTR || r->status == ADH_ENOMEM)
@@ -169,6 +181,29 @@ static int build(path_rule *r)
     int rc = adh_path_build(r->path, &r->pc, &r->m, &r->drive, &r->ps, &r->run);
     if (rc == ADH_SUCCESS && r->run.nrows)
         r->run.rows[0].seconds = r->sres.seconds;   /* the curve's, solved before the first row */
+    return rc;
+}
+
+
+/* The path read off the curve (as far as it went); solved deeper, at
+ * most twice, where a snap-in lands past its end. */
+static int build(path_rule *r)
+{
+    int rc = walk(r);
+    for (int again = 0; again < 2 && rc == ADH_SUCCESS && r->status == ADH_SUCCESS; again++) {
+        double need = adh_path_deeper(r->path);
+        if (!isfinite(need))
+            break;
+        r->ss.h0_end = need;
+        if ((rc = restart(r)) == ADH_SUCCESS)
+            rc = walk(r);
+    }
+    r->why[0] = '\0';
+    if (rc == ADH_SUCCESS && r->status == ADH_SUCCESS && isfinite(adh_path_deeper(r->path))) {
+        r->status = ADH_ESTALL;   /* the landing still past the curve: not a finished path */
+        snprintf(r->why, sizeof r->why, "the snap-in through the spring lands deeper than h0 = %s, where the static "
+                 "curve was solved to", adh_qtext(r->ss.h0_end, ADH_Q_LENGTH).s);
+    }
     return rc;
 }
 
@@ -213,6 +248,11 @@ static const adh_state *path_state(const void *vr)
 static const char *path_why(const void *vr, unsigned *fix)
 {
     const path_rule *r = vr;
+    if (r->why[0]) {
+        if (fix)
+            *fix = 0;
+        return r->why;
+    }
     return adh_static_why(r->sw, fix);
 }
 

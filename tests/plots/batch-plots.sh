@@ -378,17 +378,19 @@ check '[ -n "$o" ] && [ "$(pt "$o" "$F" 1 1)" = "$(ev last 4)" ] && [ "$(pt "$o"
 # the static figure's arrow bounds where the sphere lands: F scaled alike in both
 check 'awk -v t="$(ev first 9)" -v f="$(ev first 6)" -v a="$arrow_to" -v b="$arrow_from" "BEGIN {exit !(t / f >= a / b)}"' \
     "physical time's snap-in lands ($(ev first 9) N) at or past the static arrow's end"
-# an elastic sphere in time walks its static curve and puts that landing
-# at the curve's end, its base moved with it: the curve is broken there and
-# the arrow drawn as on the static figure, at the snap-in's base
+# an elastic sphere in time walks its static curve, solved past the turn
+# where the snap-in lands beyond it: the approach unbroken, no arrow, the
+# landing on the spring's line at the snap's base
 D=$T/te
 GPLOG=$T/te.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN -E 1GPa --turn=-1.5nm --mode=time --spring=$k \
     --plots=force -o "$D" 2>/dev/null
 a=$(index_of 'title "approach"' "$T/te.gp")
 eb=$(awk -F'\t' '$1 == "jump" {print $4; exit}' "$D/events.tsv")
-# (a single blank line breaks a dataset's curve: no segment across it)
-check '[ -n "$a" ] && awk -v k="$a" "!NF {b++; brk = 1; next} {if (b >= 2) i++; b = 0} i == k {if (!brk && n && \$1 > p) bad++; p = \$1; n++; brk = 0} END {exit bad || n < 10}" "$T/te.gp.forcebase.dat" && [ "$(grep -c "^set arrow" "$T/te.gp")" -eq 1 ] && grep -q "^set arrow from first $(awk -v b="$eb" "BEGIN {printf \"%.17g\", b * 1e9}")," "$T/te.gp"' \
-    "elastic physical time: the approach's base never rises, the snap-in past the curve's end an arrow at its base ($eb m)"
+land=$(awk -F'\t' -v k="$k" '$1 == "jump" {d = $9 - k * ($8 - $4); print (d < 0 ? -d : d) <= 1e-9 * ($9 < 0 ? -$9 : $9) && $8 < -1.5e-9; exit}' "$D/events.tsv")
+# (a single blank line breaks a dataset's curve: no segment across it; the
+# landing's base is h0 - F/k again, equal to the snap's to rounding)
+check '[ -n "$a" ] && awk -v k="$a" "!NF {b++; brk = 1; next} {if (b >= 2) i++; b = 0} i == k {if (!brk && n && \$1 > p + 1e-12 * (p < 0 ? -p : p)) bad++; p = \$1; n++; brk = 0} END {exit bad || n < 10}" "$T/te.gp.forcebase.dat" && [ "$(grep -c "^set arrow" "$T/te.gp")" -eq 0 ] && [ "$land" = 1 ]' \
+    "elastic physical time: the approach's base never rises, the snap-in from base $eb m lands past the turn on the spring's line, no arrow"
 # the same directory run again without a spring: the earlier figure goes
 "$BIN" $RUN -E 1GPa --turn=-2nm --mode=static --plots=force -o "$T/sk" 2>/dev/null
 check '[ -s "$T/sk/force.png" ] && [ ! -e "$T/sk/force-base.png" ]' \

@@ -197,6 +197,50 @@ static void spring(const fixture *f, double k)
     adh_run_free(&p.run);
 }
 
+/* A soft spring's snap-in thrown past the deepest turn (1 N/m, turn at
+ * -2 nm): the sphere lands where the spring's line meets the curve, deeper
+ * than the turn, and turns there; on the curve solved deeper by the static
+ * mode itself, and k (h0 - base) at its force. (The curve had ended at the
+ * turn and the landing was put at its end, off the spring's line, the base
+ * 225 nm away in the same instant.) */
+static void landing_past_turn(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    ps.turns[0] = -2e-9;
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    d.spring = 1.0;
+    prun p = path_run(f, &d, &ps);
+    const adh_visco_event *in = NULL, *turn = NULL;
+    for (size_t i = 0; i < p.nev; i++)
+        if (p.ev[i].kind == ADH_VISCO_JUMP && p.ev[i].path == 0)
+            in = &p.ev[i];
+        else if (p.ev[i].kind == ADH_VISCO_TURN)
+            turn = &p.ev[i];
+    ok(p.rc == ADH_SUCCESS && in && turn && in->h0_after < ps.turns[0] && turn->h0 == in->h0_after,
+       "1 N/m, turn at -2 nm: the snap-in lands past the turn (%.6g nm) and turns there",
+       in ? in->h0_after * 1e9 : NAN);
+    ok(in && fabs(in->F_after - d.spring * (in->h0_after - in->base)) <= 1e-9 * fabs(in->F_after),
+       "its landing is on the spring's line at the jump's base: F = k (h0 - base)");
+    /* the static curve to 1 nm past the landing: its force there */
+    adh_protocol_settings deep = protocol();
+    deep.turns[0] = (in ? in->h0_after : -6e-9) - 1e-9;
+    adh_run st;
+    adh_static_result sr;
+    static_run(f, d.spring, &deep, &st, &sr);
+    double Fc = NAN;
+    for (size_t i = 1; in && i < st.nrows; i++) {
+        const adh_obs *a = &st.rows[i - 1], *b = &st.rows[i];
+        if (a->a > 0 && b->a > 0 && (a->h0 - in->h0_after) * (b->h0 - in->h0_after) <= 0) {
+            Fc = a->F + (b->F - a->F) * (in->h0_after - a->h0) / (b->h0 - a->h0);
+            break;
+        }
+    }
+    ok(in && fabs(Fc - in->F_after) <= 1e-3 * fabs(in->F_after),
+       "and on the static curve solved past it (%.6g against %.6g nN)", Fc * 1e9, in ? in->F_after * 1e9 : NAN);
+    adh_run_free(&st);
+    adh_run_free(&p.run);
+}
+
 /* Stepped by hand (the TUI's f), the summary says only what the rows so
  * far have seen. */
 static void so_far(const fixture *f)
@@ -228,6 +272,7 @@ int main(void)
     times(&f);
     spring(&f, 10);
     spring(&f, 1e-3);
+    landing_past_turn(&f);
     so_far(&f);
     fix_close(&f);
     return tap_done();
