@@ -89,7 +89,8 @@ static int figure4(size_t n)
     m.E = 0.3e9;
     adh_grid *g = adh_grid_alloc((size_t)lround((double)n * bench_refine), adh_grid_spacing_for(&m, n) / bench_refine);
     int bad = 0;
-    printf("Figure-4-like viscoelastic cycle against the relaxation's Figure 4 cycle, N = %zu:\n", n);
+    printf("Figure-4-like viscoelastic cycle against the relaxation's Figure 4 cycle, N = %zu (spacing %.4g nm):\n", g->n,
+           g->dr * 1e9);
     printf("%-7s %14s %14s %8s %6s %6s %s\n", "kernel", "relax CPU s", "visco CPU s", "ratio", "steps", "jumps",
            "(wall s: relax, visco)");
     adh_kernel_storage st[2] = { ADH_STORAGE_DENSE, ADH_STORAGE_H2 };
