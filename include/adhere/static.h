@@ -186,6 +186,14 @@ void adh_static_free(adh_static *w);
  * ADH_EINVAL on bad settings, ADH_EMAXITER / ADH_ENAN when it fails. */
 int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settings *s);
 
+/* An extra undeformed gap e_n at every node, added to r^2/2R from the
+ * next adh_static_set on (NULL: none; copied, kept until changed): the
+ * curve of a sphere with a known extra deformation -e. A viscoelastic
+ * sphere at one instant is elastic at its instantaneous modulus with its
+ * delayed deformation frozen (adhere/visco.h lands its jumps so).
+ * ADH_ENOMEM when the copy cannot be made. */
+int adh_static_set_gap(adh_static *w, const double *e);
+
 /* Advances by one accepted point. ADH_CONTINUE: more to come; ADH_SUCCESS:
  * this point is the end (h0 = h0_end); otherwise an error (ADH_ESTALL when
  * the step fell below ds_min, ADH_EMAXITER past max_points, ADH_ENAN,

@@ -76,6 +76,7 @@ void adh_static_free(adh_static *w)
     adh_state_free(w->st);
     adh_state_free(w->trial);
     adh_folds_free(w->folds);
+    free(w->extra);
     free(w->buf);
     free(w);
 }
@@ -105,6 +106,19 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
     for (size_t i = 0; i < nb; i++)
         *bufs[i] = w->buf + i * (n + 1);
     return w;
+}
+
+int adh_static_set_gap(adh_static *w, const double *e)
+{
+    if (!e) {
+        free(w->extra);
+        w->extra = NULL;
+        return ADH_SUCCESS;
+    }
+    if (!w->extra && !(w->extra = malloc(w->n * sizeof *w->extra)))
+        return ADH_ENOMEM;
+    memcpy(w->extra, e, w->n * sizeof *e);
+    return ADH_SUCCESS;
 }
 
 double static_metric_dot(const adh_static *w, const double *au, double ah, const double *bu, double bh)
@@ -302,7 +316,7 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
         return ADH_EINVAL;
     w->c2E = 2.0 / m->E;
     for (size_t i = 0; i < n; i++)
-        w->shape[i] = w->grid->r[i] * w->grid->r[i] / (2.0 * m->R);
+        w->shape[i] = w->grid->r[i] * w->grid->r[i] / (2.0 * m->R) + (w->extra ? w->extra[i] : 0.0);
     memset(&w->res, 0, sizeof w->res);
     w->done = 0;
     w->s_arc = 0;

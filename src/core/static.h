@@ -102,7 +102,8 @@ struct adh_static {
     const adh_kernel *k;
     size_t n;
     int skip;         /* lattice_skip in effect (the setting, or auto's choice) */
-    double *shape;    /* r^2 / 2R */
+    double *shape;    /* r^2 / 2R, plus the extra gap if one is set */
+    double *extra;    /* the extra gap (adh_static_set_gap), n; NULL none */
     adh_material m;
     adh_static_settings s;
     double c2E;       /* 2/E */

@@ -113,6 +113,10 @@ struct adh_visco {
      * a relaxation's start y' */
     double *yfold, *ypfold, *ywork, *yprev, *ypprev, *ypflow;
     long jump_steps;     /* steps of the crossing so far */
+    int land_try;        /* a jump-in: try the static solver's landing first
+                            (visco_land.c) */
+    struct adh_static *stat; /* its static solver (allocated at the first) */
+    double *egap;        /* and its extra gap cdel W q, n */
     double nudge;        /* a relaxed jump's push off its fold, per z0 */
     double rest;         /* its rest test: speeds below this (VISCO_REST, less
                             after a rest on no equilibrium) */
@@ -189,6 +193,12 @@ void adh_visco_apply(adh_visco *w, const double *x, double *out);
 void adh_visco_psolve_q(adh_visco *w, const double *r, double *z);
 /* dF/ds at y, y' (h and p' at y computed here, w's buffers untouched) */
 double adh_visco_force_rate(const adh_visco *w, const double *y, const double *d);
+
+/* visco_land.c: a jump-in landed by the static solver at Einf with q
+ * frozen (from w->yfold): y (len) gets the landing, on the equilibria at
+ * the fold's h0, q and time, in contact; ADH_ESTALL (or the static
+ * solver's error) where it did not land, y untouched. */
+int adh_visco_land_static(adh_visco *w, double *y);
 
 /* visco_path.c: the path's residual, Jacobian products, preconditioner,
  * and the tangent that starts each segment */

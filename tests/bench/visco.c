@@ -9,9 +9,12 @@
  *     the static curve itself: the goal is a ratio of at most 6.
  * Times are CPU seconds of this process (one thread: the run's time, less
  * the machine's other load), wall seconds beside them.
- * Usage: bench-visco [N [sigma [tol]]]  (make check's smoke: 100 and 2.25;
- * N = 0 leaves the first out; tol: the integrator's tolerance, default
- * the solver's, 1e-4). */
+ * Usage: bench-visco [N [sigma [tol [refine]]]]  (make check's smoke: 100
+ * and 2.25; N = 0 leaves the first out; tol: the integrator's tolerance,
+ * default the solver's, 1e-4; refine: the grids' spacing divided by this,
+ * over the same radius and band, default 1: the convergence promise's
+ * grid is 1.5; with either, the Figure-4-like rows leave the relaxation
+ * out). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -50,6 +53,7 @@ static clock2 since(clock2 t0)
 
 /* The viscoelastic cycle of material m (E = E0) with Einf = ratio E0. */
 static double bench_tol; /* 0: the solver's default */
+static double bench_refine = 1; /* the grids' spacing over this */
 
 static int visco_cycle(const adh_grid *g, const adh_kernel *k, const adh_material *m, double ratio, clock2 *t,
                        adh_visco_result *res)
@@ -83,9 +87,10 @@ static int figure4(size_t n)
 {
     adh_material m = adh_material_default();
     m.E = 0.3e9;
-    adh_grid *g = adh_grid_alloc(n, adh_grid_spacing_for(&m, n));
+    adh_grid *g = adh_grid_alloc((size_t)lround((double)n * bench_refine), adh_grid_spacing_for(&m, n) / bench_refine);
     int bad = 0;
-    printf("Figure-4-like viscoelastic cycle against the relaxation's Figure 4 cycle, N = %zu:\n", n);
+    printf("Figure-4-like viscoelastic cycle against the relaxation's Figure 4 cycle, N = %zu (spacing %.4g nm):\n", g->n,
+           g->dr * 1e9);
     printf("%-7s %14s %14s %8s %6s %6s %s\n", "kernel", "relax CPU s", "visco CPU s", "ratio", "steps", "jumps",
            "(wall s: relax, visco)");
     adh_kernel_storage st[2] = { ADH_STORAGE_DENSE, ADH_STORAGE_H2 };
@@ -96,14 +101,22 @@ static int figure4(size_t n)
         adh_run run;
         adh_run_init(&run);
         clock2 t0 = now();
-        int rc = adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &run);
+        /* a convergence run (another tolerance or grid) wants the cycle's
+         * numbers alone */
+        int conv = bench_tol > 0 || bench_refine != 1;
+        int rc = conv ? ADH_SUCCESS : adh_runner_rule(&adh_rule_relax, g, k, &m, &rs, &ps, NULL, NULL, &run);
         clock2 tr = since(t0), tv;
         adh_run_free(&run);
         adh_visco_result res;
         int rv = visco_cycle(g, k, &m, 10.0, &tv, &res);
-        printf("%-7s %14.2f %14.2f %8.3f %6zu %6zu (%.2f, %.2f)%s\n", adh_kernel_storage_name(st[i]), tr.cpu, tv.cpu,
-               tv.cpu / tr.cpu, res.steps, res.jumps, tr.wall, tv.wall,
-               rc || rv ? "  FAILED" : "");
+        if (conv)   /* no baseline, no ratio */
+            printf("%-7s %14s %14.2f %8s %6zu %6zu (-, %.2f)%s\n", adh_kernel_storage_name(st[i]), "-", tv.cpu, "-",
+                   res.steps, res.jumps, tv.wall, rv ? "  FAILED" : "");
+        else
+            printf("%-7s %14.2f %14.2f %8.3f %6zu %6zu (%.2f, %.2f)%s\n", adh_kernel_storage_name(st[i]), tr.cpu,
+                   tv.cpu, tv.cpu / tr.cpu, res.steps, res.jumps, tr.wall, tv.wall, rc || rv ? "  FAILED" : "");
+        printf("        pull-off %.6g N, jump-in %.6g m, jump-out %.6g m, hysteresis %.6g J, dissipated %.6g J\n",
+               res.pulloff_F, res.jump_in_h0, res.jump_out_h0, res.hysteresis, res.cycle.dissipated);
         bad |= rc != ADH_SUCCESS || rv != ADH_SUCCESS;
         adh_kernel_free(k);
     }
@@ -124,10 +137,11 @@ static int soft(double sigma)
     }
     adh_grid *g;
     if (gc.graded) {
-        adh_rings_spec rs = { .dr = gc.dr, .fine = gc.fine, .ratio = gc.ratio, .rmax = gc.rmax };
+        adh_rings_spec rs = { .dr = gc.dr / bench_refine, .fine = gc.fine, .ratio = gc.ratio, .rmax = gc.rmax };
         g = adh_rings_alloc(&rs);
     } else {
-        g = adh_grid_alloc(gc.n, isnan(gc.dr) ? adh_grid_spacing_for(&m, gc.n) : gc.dr);
+        double dr = isnan(gc.dr) ? adh_grid_spacing_for(&m, gc.n) : gc.dr;
+        g = adh_grid_alloc((size_t)lround((double)gc.n * bench_refine), dr / bench_refine);
     }
     adh_kernel_settings ks = { .type = gc.graded ? ADH_KERNEL_RING : ADH_KERNEL_PAPER,
                                .storage = gc.hierarchical ? ADH_STORAGE_H2 : ADH_STORAGE_DENSE };
@@ -143,9 +157,10 @@ static int soft(double sigma)
     adh_run_free(&run);
     adh_visco_result res;
     int rv = visco_cycle(g, k, &m, 10.0, &tv, &res);
-    printf("\nsigma = %g (E0 = %.3g Pa, Einf = 10 E0, tau = 1 ms, 1 um/s, tolerance %g), %s grid of %zu nodes, %s:\n",
+    printf("\nsigma = %g (E0 = %.3g Pa, Einf = 10 E0, tau = 1 ms, 1 um/s, tolerance %g), %s grid of %zu nodes "
+           "(spacing %.4g nm), %s:\n",
            sigma, m.E, bench_tol > 0 ? bench_tol : adh_visco_settings_default().tol, gc.graded ? "graded" : "uniform",
-           g->n, gc.hierarchical ? "H^2" : "dense");
+           g->n, g->dr * 1e9, gc.hierarchical ? "H^2" : "dense");
     printf("  static curve %.2f CPU s, viscoelastic cycle %.2f CPU s: ratio %.2f (goal 6)\n", ts.cpu, tv.cpu,
            tv.cpu / ts.cpu);
     if (rc || rv)
@@ -166,6 +181,11 @@ int main(int argc, char **argv)
     size_t n = argc > 1 ? (size_t)atol(argv[1]) : 1000;
     double sigma = argc > 2 ? atof(argv[2]) : 75;
     bench_tol = argc > 3 ? atof(argv[3]) : 0;
+    bench_refine = argc > 4 ? atof(argv[4]) : 1;
+    if (!(bench_refine >= 1 && bench_refine <= 4)) {
+        fprintf(stderr, "bench-visco: refine %s is not allowed: from 1 to 4\n", argv[4]);
+        return 2;
+    }
     openblas_set_num_threads(1);
     int bad = n ? figure4(n) : 0;   /* N = 0: sigma's cycle alone */
     bad |= soft(sigma);
