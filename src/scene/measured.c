@@ -113,9 +113,12 @@ static int number(const char *s, double *v, char *why, size_t whylen)
     char *end;
     errno = 0;
     *v = strtod(s, &end);
-    if (end == s || *end)
+    /* strtod reads hex floats (0x10 is 16): no instrument writes one, a
+     * garbled field does; and it overflows to inf with ERANGE, which is
+     * no gap in the measurement */
+    if (end == s || *end || strpbrk(s, "xX"))
         snprintf(why, whylen, "is not a number");
-    else if (!isfinite(*v))
+    else if (!isfinite(*v) && errno != ERANGE)
         snprintf(why, whylen, "is not a finite number (a gap in the measurement?)");
     else if (errno == ERANGE || (*v != 0 && fabs(*v) < DBL_MIN))
         snprintf(why, whylen, fabs(*v) < 1 ? "is too small for a double (it underflows: magnitudes below 2.2e-308 "
