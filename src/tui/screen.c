@@ -570,12 +570,16 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     int compact = h < 5;
     int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
     const adh_measured *meas = v->measured && v->measured->n ? v->measured : NULL;
+    /* through a spring h0 is where the sphere is, the base drives it (h0 =
+     * base + F/k), as force.png's axis says */
+    const adh_run_spec *sp = &s->cfg.spec;
+    const char *pos = sp->mode != ADH_MODE_RIGID && isfinite(sp->time.spring) ? "sphere" : "drive";
     if (stat)
-        put(y0, x0, w, A_BOLD, " %s  * stable  . unstable  @ now%s", compact ? "Equilibrium F against h0"
-            : "Equilibrium force F against drive position h0 ", meas ? "  x measured" : "");
+        put(y0, x0, w, A_BOLD, " %s%s%s  * stable  . unstable  @ now%s", compact ? "Equilibrium F against h0" :
+            "Equilibrium force F against ", compact ? "" : pos, compact ? "" : " position h0 ", meas ? "  x measured" : "");
     else
-        put(y0, x0, w, A_BOLD, " %s  + loading  o unloading  @ now%s", compact ? "F against h0"
-            : "Force F against drive position h0 ", meas ? "  x measured" : "");
+        put(y0, x0, w, A_BOLD, " %s%s%s  + loading  o unloading  @ now%s", compact ? "F against h0" : "Force F against ",
+            compact ? "" : pos, compact ? "" : " position h0 ", meas ? "  x measured" : "");
     const int lab = 11;
     int pw = w - lab - 1, ph = h - (compact ? 1 : 2);
     if (n == 0 && !meas) {
