@@ -571,9 +571,9 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
     const adh_measured *meas = v->measured && v->measured->n ? v->measured : NULL;
     /* through a spring h0 is where the sphere is, the base drives it (h0 =
-     * base + F/k), as force.png's axis says */
-    const adh_run_spec *sp = &s->cfg.spec;
-    const char *pos = sp->mode != ADH_MODE_RIGID && isfinite(sp->time.spring) ? "sphere" : "drive";
+     * base + F/k), as force.png's axis says; the relaxation (m from the
+     * static curve keeps the key) has none */
+    const char *pos = tui_sim_curve_mode(s) && isfinite(s->cfg.spec.time.spring) ? "sphere" : "drive";
     if (stat)
         put(y0, x0, w, A_BOLD, " %s%s%s  * stable  . unstable  @ now%s", compact ? "Equilibrium F against h0" :
             "Equilibrium force F against ", compact ? "" : pos, compact ? "" : " position h0 ", meas ? "  x measured" : "");
