@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "scene/measured.h"
@@ -128,6 +129,20 @@ int main(void)
     ok(rc == 0 && m.n == 2, "DOS line ends, the last line's without its line feed: read (%s)", rc ? why : "ok");
     if (rc == 0)
         adh_measured_free(&m);
+    /* a named pipe no program writes into: refused at once, not waited on
+     * (the open held the run for ever); alarm: a hang fails the test */
+    char fifo[80];
+    snprintf(fifo, sizeof fifo, "/tmp/adhere-test-measured-fifo-%ld", (long)getpid());
+    if (mkfifo(fifo, 0600) == 0) {
+        alarm(20);
+        rc = adh_measured_load(fifo, NULL, &m, why, sizeof why);
+        alarm(0);
+        ok(rc != 0 && strstr(why, "a pipe no program writes into"), "a pipe no program writes into: refused at once (%s)",
+           why);
+        unlink(fifo);
+    } else {
+        ok(0, "mkfifo %s", fifo);
+    }
     unlink(path);
     return tap_done();
 }
