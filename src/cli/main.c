@@ -66,7 +66,10 @@ static int plan(cli_options *cli)
     if (cli->shard_n) {
         cli_study st;
         cli_study_from_cli(&st, cli);
-        printf("shard: %u of %u: drives %u, %u, ... (%zu of the %zu runs); adhere merge joins the shards\n",
+        /* the time line above counts every run (a shard's job was sized
+         * by it with nothing to say so) */
+        printf("shard: %u of %u: drives %u, %u, ... (%zu of the %zu runs; the time above is the whole study's); "
+               "adhere merge joins the shards\n",
                st.shard_k, st.shard_n, st.shard_k, st.shard_k + st.shard_n, cli_study_shard_runs(&st), st.nruns);
         printf("fingerprint: %s\n", st.fingerprint);
     }

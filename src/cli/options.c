@@ -189,6 +189,10 @@ static int apply_data_fit(cli_options *cli, const option_doc *o, const char *arg
         cli->data[cli->ndata++] = arg;
         return 0;
     case OPT_COLUMNS:
+        if (!*arg) {   /* refused as every flag's empty value is: not the default guessed */
+            snprintf(why, n, "--columns: '' names no column: give POS,FORCE, each a number from 1 or a header name");
+            return 2;
+        }
         if (strlen(arg) >= sizeof cli->columns) {
             snprintf(why, n, "--columns: longer than %zu characters", sizeof cli->columns - 1);
             return 2;
@@ -198,6 +202,12 @@ static int apply_data_fit(cli_options *cli, const option_doc *o, const char *arg
     case OPT_FREE: case OPT_MODEL: {
         char *dst = o->opt.val == OPT_FREE ? cli->fit.free : cli->fit.model;
         size_t len = o->opt.val == OPT_FREE ? sizeof cli->fit.free : sizeof cli->fit.model;
+        if (!*arg) {   /* '' is the default's mark: given, it is refused, not taken for E,A or static */
+            snprintf(why, n, o->opt.val == OPT_FREE ? "--free: '' names no parameter: use E, A, z0, R, offset and "
+                                                      "baseline, separated by commas"
+                                                    : "--model: '' is not a model: use static or relax");
+            return 2;
+        }
         if (strlen(arg) >= len) {
             snprintf(why, n, "--%s: '%s' is too long", name, arg);
             return 2;

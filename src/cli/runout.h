@@ -15,7 +15,7 @@
  * study's row repeats the word. */
 typedef struct cli_runout_said {
     char lost[256];
-    char word[32];
+    char word[64];      /* a study row's status holds as much: "iteration cap reached before convergence" is 40 */
 } cli_runout_said;
 
 /* The worse of two exit statuses: usage and output errors first, then

@@ -291,16 +291,21 @@ int adh_budget_check_path(const adh_run_spec *run, size_t kept, char *why, size_
         return 0;
     double n = (double)adh_config_nodes(run), steps = adh_budget_path_steps(run);
     double per_step = SNAPSHOT_NODE * n + SNAPSHOT_STEP;
-    double path = fmax(0.0, steps - (double)kept) * per_step, have;
-    if (adh_budget_fits(adh_budget_bytes(run, 0) + path, 1, &have, NULL))
+    double path = fmax(0.0, steps - (double)kept) * per_step, have, own = adh_budget_bytes(run, 0);
+    if (adh_budget_fits(own + path, 1, &have, NULL))
         return 0;
-    char a[32], b[32], c[32];
+    /* the run alone past the budget: its own refusal (the kernel, its
+     * operator), not the path's, which named 432 MB as more than 1.64 GB */
+    if (!adh_budget_fits(own, 1, &have, NULL))
+        return adh_budget_check(run, 0, why, whylen);
+    char a[32], b[32], c[32], d[32];
     bytes_text(steps * per_step, a, sizeof a);
     bytes_text(have, b, sizeof b);
     bytes_text(per_step, c, sizeof c);
+    bytes_text(own, d, sizeof d);
     snprintf(why, whylen, "undo would keep %s for this path (%.0f steps to the turn and back, %s a step on %.0f "
-             "nodes), more than the %s this process may use: take a larger protocol.step, fewer grid.nodes, or a "
-             "turn nearer the start", a, steps, c, n, b);
+             "nodes) beside the %s the run holds, more than the %s this process may use: take a larger "
+             "protocol.step, fewer grid.nodes, or a turn nearer the start", a, steps, c, n, d, b);
     return -1;
 }
 

@@ -9,7 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #define MAX_COLS 64
 #define MAC_LINE_ENDS "a carriage return without a line feed (old Mac line ends): save the file with Unix (LF) or " \
@@ -113,9 +115,12 @@ static int number(const char *s, double *v, char *why, size_t whylen)
     char *end;
     errno = 0;
     *v = strtod(s, &end);
-    if (end == s || *end)
+    /* strtod reads hex floats (0x10 is 16): no instrument writes one, a
+     * garbled field does; and it overflows to inf with ERANGE, which is
+     * no gap in the measurement */
+    if (end == s || *end || strpbrk(s, "xX"))
         snprintf(why, whylen, "is not a number");
-    else if (!isfinite(*v))
+    else if (!isfinite(*v) && errno != ERANGE)
         snprintf(why, whylen, "is not a finite number (a gap in the measurement?)");
     else if (errno == ERANGE || (*v != 0 && fabs(*v) < DBL_MIN))
         snprintf(why, whylen, fabs(*v) < 1 ? "is too small for a double (it underflows: magnitudes below 2.2e-308 "
@@ -437,15 +442,51 @@ void adh_measured_free(adh_measured *m)
     m->n = m->nseg = 0;
 }
 
+/* path opened to read, without waiting: a named pipe no program writes
+ * into held the open (and the run) for ever, where a replay script's is
+ * refused at once; one with a writer (a shell's <(...)) is read as it
+ * comes. NULL with errno, or with *idle set for the writerless pipe. */
+static FILE *open_curve(const char *path, int *idle)
+{
+    *idle = 0;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC), first = EOF, e = 0;
+    struct stat st;
+    if (fd < 0)
+        return NULL;
+    if (fstat(fd, &st) == 0 && S_ISFIFO(st.st_mode)) {
+        unsigned char b;
+        ssize_t r = read(fd, &b, 1);   /* 0: no writer (EOF); -1, EAGAIN: a writer, nothing yet */
+        if (r == 0) {
+            close(fd);
+            *idle = 1;
+            return NULL;
+        }
+        if (r == 1)
+            first = b;
+    }
+    FILE *f = fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) == 0 ? fdopen(fd, "r") : NULL;
+    if (!f) {
+        e = errno;
+        close(fd);
+        errno = e;
+        return NULL;
+    }
+    if (first != EOF)
+        ungetc(first, f);
+    return f;
+}
+
 int adh_measured_load(const char *path, const char *columns, adh_measured *m, char *why, size_t whylen)
 {
     memset(m, 0, sizeof *m);
     snprintf(m->path, sizeof m->path, "%s", path);
     const char *base = strrchr(path, '/');
     snprintf(m->name, sizeof m->name, "%s", base && base[1] ? base + 1 : path);
-    FILE *f = fopen(path, "r");
+    int idle;
+    FILE *f = open_curve(path, &idle);
     if (!f) {
-        snprintf(why, whylen, "%s: cannot read the measured curve: %s", path, strerror(errno));
+        snprintf(why, whylen, "%s: cannot read the measured curve: %s", path,
+                 idle ? "a pipe no program writes into" : strerror(errno));
         return -1;
     }
     double fx = 1e-9, fy = 1e-9;   /* nm, nN without a header */

@@ -100,6 +100,7 @@ typedef struct adh_plan_time_cost {
     double a_turn;         /* contact radius at the deepest turn, m */
     double E_in, E_out;    /* effective moduli approaching, retracting, Pa */
     double step_in, step_out;  /* the contact line's travel a step, m */
+    double spring;         /* the instrument's k, N/m; NAN: none (its steps are not counted) */
 } adh_plan_time_cost;
 void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c);
 

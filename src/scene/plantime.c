@@ -119,5 +119,6 @@ void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c)
     c->contact_steps *= c->lattice;
     c->step_in = step_in;
     c->step_out = step_out;
+    c->spring = v.drive.spring;
     c->steps = TIME_EXTRA * (c->free_steps + c->contact_steps);
 }

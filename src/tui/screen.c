@@ -14,6 +14,7 @@
 #include "adhere/models.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
+#include "plot/axes.h"
 #include "plot/outdir.h"
 #include "scene/measured.h"
 #include "tui/actions.h"
@@ -529,6 +530,32 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
     }
 }
 
+/* The preview's column of position h0 (past the axis: the last). */
+static int preview_col(double h0, double xmin, double xmax, int pw)
+{
+    int c = (int)lround((h0 - xmin) / (xmax - xmin) * (pw - 1));
+    return c < 0 ? 0 : c > pw - 1 ? pw - 1 : c;
+}
+
+/* The position axis's right end: a soft spring's snap-out lands where the
+ * base is, a millimetre out, and the whole contact then sat in one column
+ * (as force.png's did): force.png's end, past the last row or measured
+ * point where the force reaches 1 % of its span, when that is under a
+ * tenth of the rows' span; else xmax. */
+static double preview_right(const adh_obs *rows, size_t n, const adh_measured *meas, double span, double xmin,
+                            double xmax)
+{
+    double active = xmin;
+    for (size_t i = 0; i < n; i++)
+        if (fabs(rows[i].F) >= 0.01 * span && rows[i].h0 > active)
+            active = rows[i].h0;
+    for (const adh_measured *m = meas; m; m = m->next)
+        for (size_t i = 0; i < m->n; i++)
+            active = fmax(active, m->h0[i]);
+    double right = adh_plot_active_right(active, xmin, xmax);
+    return right - xmin < 0.1 * (xmax - xmin) ? right : xmax;
+}
+
 /* The force-position curve so far, drawn with characters: '+' loading,
  * 'o' unloading, '@' the current state, '-' the zero-force line; in static
  * mode '*' a stable point of the equilibrium curve and '.' an unstable one. */
@@ -543,12 +570,16 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     int compact = h < 5;
     int stat = tui_sim_mode(s) == ADH_MODE_STATIC;
     const adh_measured *meas = v->measured && v->measured->n ? v->measured : NULL;
+    /* through a spring h0 is where the sphere is, the base drives it (h0 =
+     * base + F/k), as force.png's axis says; the relaxation (m from the
+     * static curve keeps the key) has none */
+    const char *pos = tui_sim_curve_mode(s) && isfinite(s->cfg.spec.time.spring) ? "sphere" : "drive";
     if (stat)
-        put(y0, x0, w, A_BOLD, " %s  * stable  . unstable  @ now%s", compact ? "Equilibrium F against h0"
-            : "Equilibrium force F against drive position h0 ", meas ? "  x measured" : "");
+        put(y0, x0, w, A_BOLD, " %s%s%s  * stable  . unstable  @ now%s", compact ? "Equilibrium F against h0" :
+            "Equilibrium force F against ", compact ? "" : pos, compact ? "" : " position h0 ", meas ? "  x measured" : "");
     else
-        put(y0, x0, w, A_BOLD, " %s  + loading  o unloading  @ now%s", compact ? "F against h0"
-            : "Force F against drive position h0 ", meas ? "  x measured" : "");
+        put(y0, x0, w, A_BOLD, " %s%s%s  + loading  o unloading  @ now%s", compact ? "F against h0" : "Force F against ",
+            compact ? "" : pos, compact ? "" : " position h0 ", meas ? "  x measured" : "");
     const int lab = 11;
     int pw = w - lab - 1, ph = h - (compact ? 1 : 2);
     if (n == 0 && !meas) {
@@ -578,6 +609,8 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
         ymax = 1e-12;
         ymin = -1e-12;
     }
+    double xall = xmax;   /* what lies past the axis's end is drawn in its last column */
+    xmax = preview_right(rows, n, meas, ymax - ymin, xmin, xmax);
     char *grid = malloc((size_t)(pw * ph));
     if (!grid)
         return;
@@ -588,7 +621,7 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     /* the measurement under the computed path: where they meet, the model shows */
     for (const adh_measured *m = meas; m; m = m->next)
     for (size_t i = 0; i < m->n; i++) {
-        int c = (int)lround((m->h0[i] - xmin) / (xmax - xmin) * (pw - 1));
+        int c = preview_col(m->h0[i], xmin, xmax, pw);
         int r = (int)lround((ymax - m->F[i]) / (ymax - ymin) * (ph - 1));
         grid[r * pw + c] = 'x';
     }
@@ -599,12 +632,12 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
             int first = stat ? !rows[i].stable : rows[i].branch > 0;
             if ((pass == 0) != first)
                 continue;
-            int c = (int)lround((rows[i].h0 - xmin) / (xmax - xmin) * (pw - 1));
+            int c = preview_col(rows[i].h0, xmin, xmax, pw);
             int r = (int)lround((ymax - rows[i].F) / (ymax - ymin) * (ph - 1));
             grid[r * pw + c] = stat ? (first ? '.' : '*') : first ? '+' : 'o';
         }
     if (cur) {
-        int c = (int)lround((cur->h0 - xmin) / (xmax - xmin) * (pw - 1));
+        int c = preview_col(cur->h0, xmin, xmax, pw);
         int r = (int)lround((ymax - cur->F) / (ymax - ymin) * (ph - 1));
         grid[r * pw + c] = '@';
     }
@@ -622,9 +655,11 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
         put(y0 + 1 + r, x0 + lab, pw, A_NORMAL, "%.*s", pw, grid + r * pw);
     }
     free(grid);
-    char lo[64], hi[64];
+    char lo[64], end[64], all[64], hi[160];
     q(v, xmin, ADH_Q_LENGTH, lo, sizeof lo);
-    q(v, xmax, ADH_Q_LENGTH, hi, sizeof hi);
+    q(v, xmax, ADH_Q_LENGTH, end, sizeof end);
+    q(v, xall, ADH_Q_LENGTH, all, sizeof all);
+    snprintf(hi, sizeof hi, "%s%s%s", end, xall > xmax ? ", then to " : "", xall > xmax ? all : "");   /* the last column holds the rest */
     if (compact) {   /* the position axis in words, at the heading's end */
         char range[160];
         snprintf(range, sizeof range, "h0 %s to %s ", lo, hi);

@@ -101,6 +101,16 @@ printf ':set N 20000\n:set d 0.1pm\nf\n' >path.keys
 rc=$?
 check "the TUI at N = 20000, d = 0.1 pm: its first step refused, naming the undo states (exit $rc: $(grep -o 'error: .*' path.screen | cut -c1-160))" \
     sh -c "[ $rc -eq 0 ] && grep -q 'undo would keep [0-9.]* GB for this path' path.screen && grep -q 'path   0 states' path.screen"
+# the run alone past the budget (a dense kernel of 20000 nodes, 3.2 GB,
+# under 2 GB of address space): refused for the kernel and its operator,
+# not as the path's 432 MB of undo "more than the 1.64 GB this process may
+# use"
+printf ':set N 20000\n:set grid.operator dense\nf\n' >dense.keys
+(ulimit -v 2000000 && exec "$ADHERE" --replay=dense.keys --screen=dense.screen --size=200x32 --no-clock </dev/null >dense.out 2>&1)
+rc=$?
+check "the TUI at N = 20000 on the dense operator under ulimit -v 2000000: refused for the run's kernel, not the path (exit $rc: $(grep -o 'error: .*' dense.screen | cut -c1-160))" \
+    sh -c "[ $rc -eq 0 ] && grep -q 'error: a run on 20000 nodes with the dense operator would hold about 3.2[0-9]* GB' dense.screen &&
+           ! grep -q 'undo would keep' dense.screen && grep -q 'path   0 states' dense.screen"
 
 # --data: a million points and one more, and a file of 65 MiB
 awk 'BEGIN {for (i = 0; i <= 1000000; i++) print i * 1e-3, 1}' >many.dat

@@ -83,6 +83,15 @@ check "adhere fit without --data is refused ($(cat "$TMP/e1"))" sh -c "[ $? -eq 
 check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep -q "^adhere: --free: 'gamma' is not a parameter: use E, A, z0, R, offset and baseline" "$TMP/e2"
 "$ADHERE" --batch --free=E fig1 >/dev/null 2>"$TMP/e3"
 check "--free outside adhere fit is refused ($(cat "$TMP/e3"))" grep -q "are adhere fit's" "$TMP/e3"
+# an empty list is refused as every other flag's empty value is (it was
+# taken for the default: --free= fitted E and A, --model= the static curve,
+# --columns= guessed the columns)
+for flag in --free= --model= --columns=; do
+    "$ADHERE" fit --data="$DATA" $flag -o "$TMP/emptyout" fig1 >/dev/null 2>"$TMP/e5"
+    rc=$?
+    check "$flag (empty): exit 2, naming what is allowed, nothing written ($rc: $(cat "$TMP/e5"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q \"^adhere: ${flag%=}: '' .*: \" '$TMP/e5' && [ ! -e '$TMP/emptyout' ]"
+done
 printf 'Separation (nm)\tForce (nN)\n5\t-1\n4\tnan\n' >"$TMP/nan.tsv"
 "$ADHERE" fit --data="$TMP/nan.tsv" -o "$TMP/nanout" fig1 >/dev/null 2>"$TMP/e4"
 rc=$?

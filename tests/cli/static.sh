@@ -135,6 +135,15 @@ rc=$?
 check "a study of such starts: exit 1, each row's status says why ($rc: $(tail -n 1 "$TMP/stops/sweep.tsv" | tr '\t' '\n' | tail -n 1))" \
     sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stops/sweep.tsv' | tail -n 2 | awk -F'\t' '{print \$NF}' |
            grep -c \"^iteration cap reached before convergence: the static curve's start h0 = [34]00 pm could not be solved: .*(--start)\$\" | grep -qx 2"
+# with run-K directories (the default up to 32 runs) the row takes the
+# word its run's summary.tsv said: that word was held in 32 bytes, and the
+# status column said 'iteration cap reached before co: ...'
+"$ADHERE" --batch -q --no-plot --mode=static --sweep=start=0.3nm,0.4nm --run-dirs=yes -o "$TMP/stopsd" 2>"$TMP/err"
+rc=$?
+check "... with run-K directories: the status word whole, as in run-K's summary.tsv ($rc: $(grep -v '^#' "$TMP/stopsd/sweep.tsv" | tail -n 1 | awk -F'\t' '{print $NF}' | cut -c1-60))" \
+    sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stopsd/sweep.tsv' | tail -n 2 | awk -F'\t' '{print \$NF}' |
+           grep -c \"^iteration cap reached before convergence: the static curve's start h0 = [34]00 pm could not be solved: .*(--start)\$\" | grep -qx 2 &&
+           grep -qx 'status	iteration cap reached before convergence' '$TMP/stopsd/run-1/summary.tsv'"
 cp "$TMP/stops/sweep.tsv" "$TMP/stops.before"
 "$ADHERE" --batch -q --no-plot --mode=static --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
 rc=$?

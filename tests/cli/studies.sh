@@ -442,7 +442,8 @@ check "... over one decade a linear one" sh -c "[ -s '$TMP/clin/curves.png' ] &&
 check "the plan counts the runs" grep -qx 'runs: 16' "$TMP/plan"
 check "... the study's product" grep -q '^study: 16 runs, every combination of the 2 keys (4 x 4' "$TMP/plan"
 check "... the drives sharing a loading branch" grep -q '^drives: 4 ' "$TMP/plan"
-check "... the shard's part" grep -q '^shard: 2 of 3: .*(4 of the 16 runs)' "$TMP/plan"
+check "... the shard's part, and that the time above it is the whole study's (it said nothing of it)" \
+    grep -q "^shard: 2 of 3: .*(4 of the 16 runs; the time above is the whole study's)" "$TMP/plan"
 check "... one time line, from the pilot ($(grep -c 'time:' "$TMP/plan") lines with time:)" \
     sh -c "grep -q '^time: about .* on [0-9]* cores*, from a pilot of the study' '$TMP/plan' && [ \$(grep -c 'time:' '$TMP/plan') -eq 1 ]"
 check "... and the disk" grep -q '^disk: about .* MB written' "$TMP/plan"

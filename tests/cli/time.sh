@@ -327,6 +327,27 @@ jb() { awk -F'\t' -v p="$1" -v c="$2" '$1 == "jump" && $2 == p {print $c}' "$TMP
 check "elastic in time through 10 N/m: the snap-in and the snap-out where the static curve puts them ($(jb 0 4), $(jb 1 4))" sh -c \
     "[ '$(jb 0 4)' = '$(ev "$TMP/elks" snap_in_base)' ] && [ '$(jb 0 5)' = '$(ev "$TMP/elks" snap_in_h0)' ] && [ '$(jb 1 4)' = '$(ev "$TMP/elks" snap_out_base)' ] && [ '$(jb 1 5)' = '$(ev "$TMP/elks" snap_out_h0)' ]"
 
+# --plan of a dense grid past 4000 nodes times its kernel on 4000 and
+# scales it as N^2, not a kernel of its own: the plan of a sweep of N up to
+# 20000 on the dense operator built 32 kernels of up to 3.2 GB, a minute
+# each. The plan's CPU seconds (sh's times) at 8000 nodes against 4000's,
+# the same session: about 1 now, 2 when it built the 512 MB kernel.
+plan_cpu() {
+    ( "$ADHERE" --plan --material=sls --force --operator=dense -N "$1" >"$TMP/pd$1" 2>&1; times ) |
+        awk 'NR == 2 {split($1, u, /[ms]/); split($2, s, /[ms]/); print u[1] * 60 + u[2] + s[1] * 60 + s[2]}'
+}
+c4=$(plan_cpu 4000) c8=$(plan_cpu 8000)
+check "--plan on 8000 dense nodes: the kernel timed on 4000 and scaled, said so; its CPU seconds $c8 against 4000 nodes' $c4 (below 1.5 times)" \
+    sh -c "grep -q 'the kernel.s product and build timed on 4000 nodes and scaled as N^2' '$TMP/pd8000' &&
+           ! grep -q 'scaled as N^2' '$TMP/pd4000' && awk 'BEGIN {exit !($c4 > 0 && $c8 < 1.5 * $c4)}'"
+
+# a spring's steps are not in the plan's count (a run through 1 mN/m took
+# 4 to 10 times the plan's CPU): the plan says so in place of its factor 3
+"$ADHERE" --plan $S225 --spring=1e-3N/m >"$TMP/tpk" 2>&1
+check "--plan through a spring: its steps said not counted, no factor of 3 promised" \
+    sh -c "grep -q '^time: .*not counted: the steps the spring adds' '$TMP/tpk' && ! grep -q '^time: .*within a factor of about 3' '$TMP/tpk' &&
+           grep -q '^time: .*within a factor of about 3' '$TMP/tp1'"
+
 # A run in time that stops says why: from inside the snap-in (0.3 nm) the
 # start is no stable point out of contact. stderr and summary.tsv name it
 # and --start, not only "continuation could not make progress".

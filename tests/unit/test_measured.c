@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "scene/measured.h"
@@ -113,10 +114,35 @@ int main(void)
     rc = load("h0 \r(nm)\tF (nN)\r\n5\t-1\r\n4\t-2\r\n", NULL, &m, why, sizeof why);
     ok(rc != 0 && strstr(why, ":1: a carriage return without a line feed") && !strchr(why, '\r'),
        "a carriage return inside a line: refused, not quoted (%s)", why);
+    /* a value too large for a double is an overflow, not a gap (strtod
+     * gives inf and ERANGE, and the test for a gap came first); a hex
+     * float (strtod reads 0x10 as 16) is no instrument's number, refused
+     * as the units' parser refuses it */
+    rc = load("h0 (nm)\tF (nN)\n5\t1e400\n4\t-2\n", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":2: '1e400' is too large for a double") && !strstr(why, "gap"),
+       "1e400: refused as too large, not as a gap (%s)", why);
+    rc = load("h0 (nm)\tF (nN)\n5\t0x10\n4\t-2\n", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":2: '0x10' is not a number"), "a hex float, 0x10: refused, not read as 16 (%s)", why);
+    rc = load("h0 (nm)\tF (nN)\n0X1p2\t1\n4\t-2\n", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":2: '0X1p2' is not a number"), "a hex float, 0X1p2: refused, not read as 4 (%s)", why);
     rc = load("h0 (nm)\tF (nN)\r\n5\t-1\r\n4\t-2\r", NULL, &m, why, sizeof why);
     ok(rc == 0 && m.n == 2, "DOS line ends, the last line's without its line feed: read (%s)", rc ? why : "ok");
     if (rc == 0)
         adh_measured_free(&m);
+    /* a named pipe no program writes into: refused at once, not waited on
+     * (the open held the run for ever); alarm: a hang fails the test */
+    char fifo[80];
+    snprintf(fifo, sizeof fifo, "/tmp/adhere-test-measured-fifo-%ld", (long)getpid());
+    if (mkfifo(fifo, 0600) == 0) {
+        alarm(20);
+        rc = adh_measured_load(fifo, NULL, &m, why, sizeof why);
+        alarm(0);
+        ok(rc != 0 && strstr(why, "a pipe no program writes into"), "a pipe no program writes into: refused at once (%s)",
+           why);
+        unlink(fifo);
+    } else {
+        ok(0, "mkfifo %s", fifo);
+    }
     unlink(path);
     return tap_done();
 }
