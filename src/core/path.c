@@ -246,6 +246,9 @@ static void emit(adh_path *p, path_pt *q, double t, int leg)
 {
     q->o.t = t;
     q->o.base = base_of(p, &q->o);
+    /* eq 22 at the row's own h0: a row between the curve's points (a turn,
+     * a fold, a landing) is no mixture of its neighbours' closed forms */
+    q->o.F_rigid = adh_rigid_force(&p->m, q->o.h0);
     q->o.branch = p->branch;
     q->o.path = p->path;
     q->o.converged = 1;
@@ -513,6 +516,7 @@ static void load(adh_path *p)
                 adh_obs *o = &p->run->rows[p->run->nrows - 1];
                 o->h0 = T;   /* exactly: the protocol's turn */
                 o->base = base_of(p, o);
+                o->F_rigid = adh_rigid_force(&p->m, T);
                 p->last.o = *o;
                 reach_turn(p);
                 continue;

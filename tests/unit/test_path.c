@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "adhere/cycle.h"
+#include "adhere/models.h"
 #include "adhere/rule_path.h"
 #include "adhere/rule_time.h"
 #include "tap.h"
@@ -158,6 +159,15 @@ static void times(const fixture *f)
        worst, p.run.nrows);
     ok_rel(p.r.time, turn_t[2] + d.dwell + (r[p.run.nrows - 1].base - turn_b[2]) / d.speed_out, 1e-12,
            "the time is the protocol's: the deepest turn's, its dwell and the retraction back to the start");
+    /* a row between the curve's points (a turn, a fold, a landing) has
+     * eq 22 at its own h0, not a mixture of its neighbours' */
+    double rigid = 0;
+    for (size_t i = 0; i < p.run.nrows; i++) {
+        double want = adh_rigid_force(&f->m, r[i].h0);
+        rigid = fmax(rigid, isnan(want) ? (isnan(r[i].F_rigid) ? 0 : INFINITY)
+                                        : fabs(r[i].F_rigid - want) / fabs(want));
+    }
+    ok(rigid <= 1e-12, "every row's F_rigid is eq 22 at its h0 (worst %.2g relative)", rigid);
     adh_run_free(&p.run);
 }
 
