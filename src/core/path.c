@@ -478,22 +478,38 @@ static double landing_in(const adh_path *p, size_t i, double bf)
 /* A snap-in from base bf that found no landing on the curve (xl at its
  * end, the base there still above bf): a soft spring throws the sphere
  * past the deepest turn. The landing is where F(h0) = k (h0 - bf); past
- * the end the force rises with depth at least as fast as at the end (a
- * contact stiffens as it grows), so the line through the end at its slope
- * meets k (h0 - bf) beyond the landing: a curve to there, and a fifth
- * more, holds it (adh_path_deeper asks for it). Where the force still
- * falls with depth at the end, F >= F_end bounds it: bf + F_end / k. */
-static void note_deeper(adh_path *p, double xl, double bf)
+ * the end the force rises with depth at least as fast as it did over the
+ * curve's last stretch in contact (a contact stiffens as it grows), so
+ * the chord over that stretch, at least 2 z0 of h0 long (the lattice's
+ * steps, steep between its folds, average out over it: the last two
+ * rows' slope put the end short of the landing twice on 200 nodes of
+ * 7.5 nm), meets k (h0 - bf) beyond the landing: a curve to there, and a
+ * fifth more, holds it (adh_path_deeper asks for it). An end out of
+ * contact says nothing of the contact's force: 2 z0 into contact first,
+ * and from there the chord (the solve again asks again). Where the force
+ * still falls with depth, F >= F_end bounds it: bf + F_end / k. 1 when
+ * the landing lies past the curve's end. */
+static int note_deeper(adh_path *p, double xl, double bf)
 {
     size_t n = p->c->n;
-    const adh_obs *e = &p->c->rows[n - 1], *d = &p->c->rows[n - 2 + (n < 2)];
+    const adh_obs *e = &p->c->rows[n - 1];
     if (xl < (double)(n - 1) || row_base(p, n - 1) < bf || !isfinite(p->k) || !(e->F < 0))
-        return;
-    double s = d->h0 != e->h0 ? (e->F - d->F) / (e->h0 - d->h0) : 0;   /* dF/dh0 < 0: rising with depth */
-    double gap = e->F - p->k * (e->h0 - bf);                           /* < 0: no landing yet */
-    double need = s < 0 ? e->h0 + 1.2 * gap / (p->k - s) : bf + 1.1 * e->F / p->k;
+        return 0;
+    double z0 = p->m.z0, need;
+    if (!(e->a > 0)) {
+        need = fmin(e->h0, 0) - 2 * z0;
+    } else {
+        size_t j = n - 1;
+        while (j > 0 && p->c->rows[j - 1].a > 0 && p->c->rows[j].h0 - e->h0 < 2 * z0)
+            j--;
+        const adh_obs *d = &p->c->rows[j];
+        double s = d->h0 != e->h0 ? (e->F - d->F) / (e->h0 - d->h0) : 0;   /* dF/dh0 < 0: rising with depth */
+        double gap = e->F - p->k * (e->h0 - bf);                           /* < 0: no landing yet */
+        need = s < 0 ? e->h0 + 1.2 * gap / (p->k - s) : bf + 1.1 * e->F / p->k;
+    }
     if (need < e->h0 && !(need >= p->deeper))
         p->deeper = need;
+    return 1;
 }
 
 /* Loading, from the curve's start down to the deepest turn (without
@@ -536,7 +552,13 @@ static void load(adh_path *p)
             static_fold(p, i - 1, 1, &f);
             xl = landing_in(p, i, base_of(p, &f.o));
         }
-        note_deeper(p, xl, base_of(p, &f.o));
+        if (note_deeper(p, xl, base_of(p, &f.o))) {
+            /* no landing on this curve: the path stops at the fold (the
+             * curve solved deeper walks again), never lands off the
+             * spring's line with the base moved in an instant */
+            emit(p, &f, time_at(p, base_of(p, &f.o)), 1);
+            break;
+        }
         path_pt l = at(p, xl);
         jump(p, &f, &l, jump_loss(p, &f, i, xl));
         bmin = base_of(p, &f.o);

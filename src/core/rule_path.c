@@ -186,11 +186,13 @@ static int walk(path_rule *r)
 
 
 /* The path read off the curve (as far as it went); solved deeper, at
- * most twice, where a snap-in lands past its end. */
+ * most PATH_DEEPER times, where a snap-in lands past its end (a turn short
+ * of contact: once into contact, then by the chord there). */
+#define PATH_DEEPER 4
 static int build(path_rule *r)
 {
     int rc = walk(r);
-    for (int again = 0; again < 2 && rc == ADH_SUCCESS && r->status == ADH_SUCCESS; again++) {
+    for (int again = 0; again < PATH_DEEPER && rc == ADH_SUCCESS && r->status == ADH_SUCCESS; again++) {
         double need = adh_path_deeper(r->path);
         if (!isfinite(need))
             break;

@@ -213,12 +213,12 @@ static void spring(const fixture *f, double k)
  * mode itself, and k (h0 - base) at its force. (The curve had ended at the
  * turn and the landing was put at its end, off the spring's line, the base
  * 225 nm away in the same instant.) */
-static void landing_past_turn(const fixture *f)
+static void landing_past_turn(const fixture *f, double k, double h_turn)
 {
     adh_protocol_settings ps = protocol();
-    ps.turns[0] = -2e-9;
+    ps.turns[0] = h_turn;
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
-    d.spring = 1.0;
+    d.spring = k;
     prun p = path_run(f, &d, &ps);
     const adh_visco_event *in = NULL, *turn = NULL;
     for (size_t i = 0; i < p.nev; i++)
@@ -227,7 +227,7 @@ static void landing_past_turn(const fixture *f)
         else if (p.ev[i].kind == ADH_VISCO_TURN)
             turn = &p.ev[i];
     ok(p.rc == ADH_SUCCESS && in && turn && in->h0_after < ps.turns[0] && turn->h0 == in->h0_after,
-       "1 N/m, turn at -2 nm: the snap-in lands past the turn (%.6g nm) and turns there",
+       "%g N/m, turn at %g nm: the snap-in lands past the turn (%.6g nm) and turns there", k, h_turn * 1e9,
        in ? in->h0_after * 1e9 : NAN);
     ok(in && fabs(in->F_after - d.spring * (in->h0_after - in->base)) <= 1e-9 * fabs(in->F_after),
        "its landing is on the spring's line at the jump's base: F = k (h0 - base)");
@@ -282,7 +282,11 @@ int main(void)
     times(&f);
     spring(&f, 10);
     spring(&f, 1e-3);
-    landing_past_turn(&f);
+    landing_past_turn(&f, 1.0, -2e-9);
+    /* a turn short of contact (the curve's end out of it: its slope says
+     * nothing of the contact's) under a soft spring that throws the
+     * sphere 2 nm into it */
+    landing_past_turn(&f, 1e-3, 5e-9);
     so_far(&f);
     fix_close(&f);
     return tap_done();
