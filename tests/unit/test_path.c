@@ -171,6 +171,34 @@ static void times(const fixture *f)
     adh_run_free(&p.run);
 }
 
+/* A turn short of contact before the deepest: the surfaces never touched
+ * on its branch, so it has no jump-out (as the integrator and the static
+ * mode say), and its force is the static curve's at that h0 (solved to
+ * it: its last point), not a chord across the far field's long steps. */
+static void short_turn(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    ps.nturns = 2;
+    ps.turns[0] = 5e-9;
+    ps.turns[1] = FIX_TURN;
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    prun p = path_run(f, &d, &ps);
+    adh_protocol_settings to5 = protocol();
+    to5.turns[0] = 5e-9;
+    adh_run st;
+    adh_static_result sr;
+    int src = static_run(f, INFINITY, &to5, &st, &sr);
+    const adh_turn_result *tr = p.run.nturns == 2 ? &p.run.turns[0] : NULL;
+    ok(p.rc == ADH_SUCCESS && tr && tr->h0 == 5e-9 && tr->a_turn == 0 && isnan(tr->jump_out_h0),
+       "a turn at 5 nm, short of contact, before the deepest: no jump-out on its branch (%g)",
+       tr ? tr->jump_out_h0 : NAN);
+    ok(src == ADH_SUCCESS && st.nrows && tr && fabs(tr->max_load / st.rows[st.nrows - 1].F - 1) < 1e-3,
+       "its force is the static curve's at 5 nm (%.6g against %.6g nN)", tr ? tr->max_load * 1e9 : NAN,
+       st.nrows ? st.rows[st.nrows - 1].F * 1e9 : NAN);
+    adh_run_free(&st);
+    adh_run_free(&p.run);
+}
+
 /* Through a spring: the jumps where the static curve under it puts its
  * snap points. */
 static void spring(const fixture *f, double k)
@@ -280,6 +308,7 @@ int main(void)
     fixture f = fix_open(FIX_N, 1.0);
     against_static(&f);
     times(&f);
+    short_turn(&f);
     spring(&f, 10);
     spring(&f, 1e-3);
     landing_past_turn(&f, 1.0, -2e-9);
