@@ -228,8 +228,7 @@ static int path_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
     e->grid = *gc;
     e->grid.g = NULL;
     double deep = s->proto.nturns ? adh_protocol_deepest_turn(&s->proto) : adh_static_settings_default().h0_end;
-    e->exact = !adh_static_skips(gc->g, &s->mat, deep);
-    e->c.steps = e->exact ? adh_static_exact_points(gc->g, &s->mat, deep) : ADH_STATIC_STEP_POINTS;
+    e->c.steps = adh_plan_path_points(s, gc->g, &e->exact);
     e->c.a_turn = adh_rings_contact_estimate(&s->mat, fmin(deep, 0.0));
     e->lu_nodes = 0;
     e->lu = 0;
