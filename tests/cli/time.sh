@@ -110,6 +110,9 @@ pts=$("$ADHERE" --plan visco --material=elastic -N 150 --force 2>&1 | sed -n 's/
 sls=$("$ADHERE" --plan visco -N 150 --force 2>&1 | sed -n 's/^time: .*about \([0-9]*\) integrator steps.*/\1/p')
 check "a sweep of elastic and sls: $pct % done after the elastic run, its share of the plan's work ($pts points, $sls steps) within 5 %" \
     sh -c "[ -n '$pct' ] && [ -n '$pts' ] && [ -n '$sls' ] && echo $pts $sls $pct | awk '{s = 100 * \$1 / (\$1 + \$2); exit !(\$3 > s - 5 && \$3 < s + 5)}'"
+"$ADHERE" --plan visco -N 150 --force --sweep=material=elastic,sls >"$TMP/planmat" 2>&1
+check "--plan of a sweep of the material: run 1, elastic, priced as its static curve, the whole in steps and points" \
+    sh -c "grep -q '^time: run 1 about .*no time integration, an elastic sphere' '$TMP/planmat' && ! grep -q 'modulus 0 Pa' '$TMP/planmat' && grep -q '^time: about .* integrator steps and static curve points, ' '$TMP/planmat'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
 check "--plan afm: one static curve serves every k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^skip: a curve per k: the 9 runs .* share 1 static curve ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1
