@@ -279,6 +279,35 @@ static void landing_past_turn(const fixture *f, double k, double h_turn)
     adh_run_free(&p.run);
 }
 
+/* In batches of one point (the TUI, reading keys between): the curve is
+ * solved a point a call before the first row (it was solved whole in the
+ * first call, deaf to keys), and the rows are the runner's, to the digit. */
+static void batches(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    prun whole = path_run(f, &d, &ps);
+    adh_run run;
+    adh_run_init(&run);
+    adh_visco_rule_settings vs = adh_visco_rule_settings_default(f->m.E);
+    vs.drive = d;
+    adh_drive *dr = adh_drive_alloc(&adh_rule_path, f->g, f->k);
+    adh_drive_set(dr, &f->m, &vs, &ps, &run);
+    size_t before = 0, calls = 0;
+    int row = 0, rc;
+    while ((rc = adh_drive_iterate(dr, 1, &row)) == ADH_CONTINUE && calls++ < 1000000)
+        before += !row && run.nrows == 0;
+    int same = rc == ADH_SUCCESS && run.nrows == whole.run.nrows;
+    for (size_t i = 0; same && i < run.nrows; i++)
+        same = run.rows[i].t == whole.run.rows[i].t && run.rows[i].h0 == whole.run.rows[i].h0 &&
+               run.rows[i].F == whole.run.rows[i].F;
+    ok(before > 10 && same, "a point of the curve a call: %zu calls before the first row, then the runner's %zu rows "
+       "to the digit", before, whole.run.nrows);
+    adh_drive_free(dr);
+    adh_run_free(&run);
+    adh_run_free(&whole.run);
+}
+
 /* Stepped by hand (the TUI's f), the summary says only what the rows so
  * far have seen. */
 static void so_far(const fixture *f)
@@ -317,6 +346,7 @@ int main(void)
      * sphere 2 nm into it */
     landing_past_turn(&f, 1e-3, 5e-9);
     so_far(&f);
+    batches(&f);
     fix_close(&f);
     return tap_done();
 }
