@@ -604,8 +604,12 @@ static void pulloff(adh_path *p, adh_turn_result *tr)
         q.o.h0 = q.o.base = tr->pulloff_h0 = sr->pulloff_h0;
         q.o.t = time_at(p, q.o.base);
     }
+    /* before every event of its instant too: under a soft spring the
+     * force minimum is the snap-out's fold, and the jump and the branch's
+     * end (from the landing's row) follow it */
     size_t at_ev = p->nev;
-    while (at_ev > p->branch_ev && p->ev[at_ev - 1].t > q.o.t)
+    size_t pull_at = (size_t)p->pull_row - p->row0;
+    while (at_ev > p->branch_ev && p->ev[at_ev - 1].t >= q.o.t && p->ev_row[at_ev - 1] >= pull_at)
         at_ev--;
     adh_visco_event *e = add_event(p, ADH_VISCO_PULLOFF, &q);
     if (!e)

@@ -225,6 +225,21 @@ static void spring(const fixture *f, double k)
        out ? out->base * 1e9 : NAN);
     ok(p.r.pulloff_F <= (out ? out->F : 0) && fabs(p.r.pulloff_F / sr.pulloff_F - 1) < 1e-3,
        "%g N/m: the pull-off before it, the static curve's force minimum (%.6g N)", k, p.r.pulloff_F);
+    /* events.tsv in the order they happen: the pull-off (at the snap-out's
+     * fold itself under a soft spring, the same instant) before the
+     * snap-out and the branch's end */
+    size_t i_pull = p.nev, i_out = p.nev, i_end = p.nev;
+    for (size_t i = 0; i < p.nev; i++) {
+        if (p.ev[i].path != 1)
+            continue;
+        if (p.ev[i].kind == ADH_VISCO_PULLOFF)
+            i_pull = i;
+        else if (p.ev[i].kind == ADH_VISCO_JUMP)
+            i_out = i;
+        else if (p.ev[i].kind == ADH_VISCO_END)
+            i_end = i;
+    }
+    ok(i_pull < i_out && i_out < i_end && i_end < p.nev, "%g N/m: the events in order: pull-off, snap-out, end", k);
     if (k < 1e-2 && out) {
         /* a soft spring: the sphere flies |F|/k, out of the surface force's
          * reach, and the jump releases the spring's energy */
