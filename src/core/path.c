@@ -589,10 +589,17 @@ static void load(adh_path *p)
  * reached it (its rows around it). */
 static void pulloff(adh_path *p, adh_turn_result *tr)
 {
-    /* none where the force only rose from the turn (a turn short of
-     * contact): no minimum */
-    if (p->pull_row < 0 || p->run->rows[p->pull_row - (p->pull_row > 0)].path != p->path)
+    /* no event where the force only rose from the turn (a turn short of
+     * contact): no minimum; the summary's lowest force is the turn's, with
+     * its time and base (as the integrator's; they were NaN beside it) */
+    if (p->pull_row < 0)
         return;
+    if (p->run->rows[p->pull_row - (p->pull_row > 0)].path != p->path) {
+        const adh_obs *o = &p->run->rows[p->pull_row];
+        if ((size_t)p->path == p->ps.nturns)
+            p->res.pulloff_F = o->F, p->res.pulloff_h0 = o->h0, p->res.pulloff_t = o->t, p->res.pulloff_base = o->base;
+        return;
+    }
     path_pt q = { .o = p->run->rows[p->pull_row] };
     const adh_static_result *sr = p->c->res;
     const adh_obs *r = p->run->rows;

@@ -195,6 +195,17 @@ static void short_turn(const fixture *f)
     ok(src == ADH_SUCCESS && st.nrows && tr && fabs(tr->max_load / st.rows[st.nrows - 1].F - 1) < 1e-3,
        "its force is the static curve's at 5 nm (%.6g against %.6g nN)", tr ? tr->max_load * 1e9 : NAN,
        st.nrows ? st.rows[st.nrows - 1].F * 1e9 : NAN);
+    /* the turn alone: the lowest force on its branch is the turn's, at
+     * its time (the loading's travel over the speed), as the integrator's */
+    ps.nturns = 1;
+    prun one = path_run(f, &d, &ps);
+    const adh_obs *r0 = one.run.nrows ? &one.run.rows[0] : NULL;
+    double t5 = r0 ? (r0->base - 5e-9) / d.speed_in : NAN;
+    ok(one.rc == ADH_SUCCESS && one.run.nturns == 1 && one.r.pulloff_F == one.run.turns[0].max_load &&
+       one.r.pulloff_h0 == 5e-9 && fabs(one.r.pulloff_t - t5) <= 1e-12 * t5,
+       "the turn at 5 nm alone: the summary's lowest force is the turn's, at its time %.6g s (%.6g)", t5,
+       one.r.pulloff_t);
+    adh_run_free(&one.run);
     adh_run_free(&st);
     adh_run_free(&p.run);
 }
