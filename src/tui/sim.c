@@ -1097,6 +1097,9 @@ static int curve_work(tui_sim *s, char *why, size_t whylen, int *busy)
     if (s->walk) {
         s->ccur = s->walk > 0 ? s->ccur + 1 : s->ccur - 1;
         s->walk = 0;
+        /* physical time's summary as at the point shown: walked back
+         * before the path's end it showed the whole cycle's hysteresis */
+        adh_rule_time_summary_at(s->sdrv, s->ccur + 1, &s->vres);
         return ADH_SUCCESS;
     }
     if (!s->cset) {
