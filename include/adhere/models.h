@@ -35,7 +35,8 @@ double adh_hertz_force(const adh_material *m, double delta);
 void adh_jkr(const adh_material *m, double a, double *F, double *overlap);
 /* JKR's contact radius at an overlap on its stable branch (past the fold,
  * where the overlap rises with a); 0 where the overlap is at or below the
- * fold's (JKR has no stable contact there). */
+ * fold's (JKR has no stable contact there); NAN for a NaN overlap,
+ * INFINITY for an infinite one. */
 double adh_jkr_radius(const adh_material *m, double overlap);
 /* DMT: force at overlap (positive) delta: Hertz - 2 pi gamma R. */
 double adh_dmt_force(const adh_material *m, double delta);

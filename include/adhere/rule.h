@@ -32,9 +32,10 @@
  *     protocol picks every position (loading, each turn's unloading branch
  *     from its snapshot, the dwell) and the rule solves there. Steps by
  *     hand and adh_drive_retarget work. relax.
- *   curve (next; move and iterate NULL): the rule walks its own path from
- *     the protocol's start to its end, one point a step; the drive records
- *     the rows. static, rigid.
+ *   curve (next; move NULL): the rule walks its own path from the
+ *     protocol's start to its end, one point a step; the drive records
+ *     the rows. static, rigid, visco; path also fills iterate, its work
+ *     before a point in batches (a driver reading keys stays responsive).
  *
  * A new rule (a time-dependent material, say) needs nothing else changed:
  *   1. a file src/core/rule_NAME.c defining
@@ -77,7 +78,10 @@ typedef struct adh_rule_type {
      * until it is done). ADH_CONTINUE: call again; ADH_SUCCESS: solved;
      * ADH_EMAXITER: at the cap (a row, flagged unconverged); else the error
      * that ends the run (ADH_EINTR when the settings' cancel flag was
-     * raised). The rows do not depend on max_batch. */
+     * raised). The rows do not depend on max_batch. A curve rule may fill
+     * it too, for work before its next point (path: the static curve, a
+     * point a unit): ADH_CONTINUE, no point yet; ADH_SUCCESS, next has its
+     * point (or its failure). */
     int (*iterate)(void *r, size_t max_batch);
 
     /* A curve rule: the next point of its path (the first call: the start).

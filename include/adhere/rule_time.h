@@ -16,6 +16,10 @@ int adh_rule_time_is(const adh_drive *d);
  * Newton and GMRES iterations and seconds the static curve's). 0, or -1
  * when d steps another rule (res untouched). */
 int adh_rule_time_summary(const adh_drive *d, adh_visco_result *res);
+/* The summary as the record's first `rows` rows saw it (a cursor walked
+ * back over them: the TUI's b and u): the path's from its rows; the
+ * integrator keeps no history, so its summary so far. 0, or -1 as above. */
+int adh_rule_time_summary_at(const adh_drive *d, size_t rows, adh_visco_result *res);
 /* The events so far (borrowed), 0 for another rule. */
 size_t adh_rule_time_events(const adh_drive *d, const adh_visco_event **ev);
 /* Moves the turns' summaries and the profiles the rule keeps into run,

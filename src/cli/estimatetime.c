@@ -228,8 +228,7 @@ static int path_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
     e->grid = *gc;
     e->grid.g = NULL;
     double deep = s->proto.nturns ? adh_protocol_deepest_turn(&s->proto) : adh_static_settings_default().h0_end;
-    e->exact = !adh_static_skips(gc->g, &s->mat, deep);
-    e->c.steps = e->exact ? adh_static_exact_points(gc->g, &s->mat, deep) : ADH_STATIC_STEP_POINTS;
+    e->c.steps = adh_plan_path_points(s, gc->g, &e->exact);
     e->c.a_turn = adh_rings_contact_estimate(&s->mat, fmin(deep, 0.0));
     e->lu_nodes = 0;
     e->lu = 0;
@@ -315,6 +314,7 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
     grid_cost gc = { .g = NULL, .n = 0 };
     run_est e = { .cpu = 0 }, first = e;
     double cpu = 0, steps = 0, smin = INFINITY, smax = 0;
+    int first_sls = 0, sls = 0, paths = 0;   /* a sweep of the material has both kinds */
     for (size_t j = 0; j < n; j++) {
         /* a study past the runs the plan lists: n runs spread over it, the
          * first and the last among them (its first n were taken for all: a
@@ -328,7 +328,9 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
             return;
         }
         if (j == 0)
-            first = e;
+            first = e, first_sls = s.time.sls;
+        sls |= s.time.sls;
+        paths |= !s.time.sls;
         runs[j] = (adh_plan_progress){ .cost = e.cpu };
         cpu += e.cpu;
         steps += e.c.steps;
@@ -348,8 +350,13 @@ void cli_estimate_time_print(FILE *f, const adh_config *cfg, const adh_plan *pla
                      plan->nruns - n, n, plan->nruns);
         fprintf(f, "time: about %s of CPU in all, %s on %d core%s (%.3g s: about %.0f %s, %.0f to %.0f "
                    "a run, each run's as run 1's below%s)\n", t, w, plan->jobs, plan->jobs == 1 ? "" : "s", cpu * all,
-                two_digits(steps * all), cfg->spec.time.sls ? "integrator steps" : "static curve points",
+                two_digits(steps * all),
+                sls && paths ? "integrator steps and static curve points" : sls ? "integrator steps"
+                                                                         : "static curve points",
                 two_digits(smin), two_digits(smax), rest);
     }
-    (cfg->spec.time.sls ? print_run : print_path)(f, n > 1 ? "run 1 " : "", &first);
+    /* run 1's own kind: an elastic first run of a sweep of the material
+     * was printed as an integrator's, "0 out of contact ... the effective
+     * modulus 0 Pa" */
+    (first_sls ? print_run : print_path)(f, n > 1 ? "run 1 " : "", &first);
 }

@@ -712,7 +712,14 @@ static double drive_cost(const adh_run_spec *ds)
         if (c.steps > 0 && isfinite(c.steps))
             return c.steps;
     }
-    return 1.0;
+    /* an elastic sphere in time: its static curve's points, as --plan
+     * counts them, so that a sweep of the material weighs it beside the
+     * standard linear solid's steps, not as one of them (0 % and 2 h 14 min
+     * left after the elastic half of a 2 s study) */
+    adh_grid *g = ds->mode == ADH_MODE_TIME ? adh_config_grid_alloc(ds) : NULL;
+    double points = g ? adh_plan_path_points(ds, g, NULL) : 1.0;
+    adh_grid_free(g);
+    return points > 0 && isfinite(points) ? points : 1.0;
 }
 
 /* The threads: a run per core. */

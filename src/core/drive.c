@@ -706,8 +706,15 @@ static int curve_step(adh_drive *d, int *row)
 int adh_drive_iterate(adh_drive *d, size_t max_batch, int *row)
 {
     *row = 0;
-    if (d->type->next)
-        return d->c.ph == PH_DONE ? d->c.status : curve_step(d, row);
+    if (d->type->next) {
+        if (d->c.ph == PH_DONE)
+            return d->c.status;
+        /* a curve rule's work before its next point, in batches (the
+         * elastic path's curve): no row yet */
+        if (d->type->iterate && d->type->iterate(d->r, max_batch) == ADH_CONTINUE)
+            return ADH_CONTINUE;
+        return curve_step(d, row);
+    }
     if (!d->c.inflight) {
         if (d->c.ph == PH_DONE && !d->c.hand)
             return d->c.status;

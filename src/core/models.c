@@ -74,6 +74,8 @@ static double jkr_overlap_less(double a, void *ctx)
  * a_f past it, and Brent's method (GSL) finds it to a few roundings. */
 double adh_jkr_radius(const adh_material *m, double overlap)
 {
+    if (isnan(overlap) || overlap == INFINITY)   /* no answer; a contact without bound */
+        return overlap;
     double arg[4] = { m->E, m->R, adh_material_gamma(m), overlap };
     double lo = cbrt(M_PI * arg[2] * m->R * m->R / (8.0 * (m->E / 2.0))), hi = lo;
     if (!(jkr_overlap_less(lo, arg) < 0))

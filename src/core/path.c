@@ -246,6 +246,9 @@ static void emit(adh_path *p, path_pt *q, double t, int leg)
 {
     q->o.t = t;
     q->o.base = base_of(p, &q->o);
+    /* eq 22 at the row's own h0: a row between the curve's points (a turn,
+     * a fold, a landing) is no mixture of its neighbours' closed forms */
+    q->o.F_rigid = adh_rigid_force(&p->m, q->o.h0);
     q->o.branch = p->branch;
     q->o.path = p->path;
     q->o.converged = 1;
@@ -301,15 +304,20 @@ static void contact_now(adh_path *p, int now, const path_pt *q)
     }
 }
 
-/* A row of the curve followed without a jump. */
-static void step_to(adh_path *p, double x)
+/* A point of the curve followed without a jump. */
+static void step_pt(adh_path *p, path_pt q)
 {
-    path_pt q = at(p, x);
     emit(p, &q, time_at(p, base_of(p, &q.o)), 1);
     if ((q.o.a > 0) != p->in_contact) {
         add_event(p, ADH_VISCO_CONTACT, &q);
         contact_now(p, q.o.a > 0, &q);
     }
+}
+
+/* A row of the curve followed without a jump. */
+static void step_to(adh_path *p, double x)
+{
+    step_pt(p, at(p, x));
 }
 
 /* The fold of the base at row i (the rows i - 1, i, i + 1 turn it): every
@@ -475,22 +483,53 @@ static double landing_in(const adh_path *p, size_t i, double bf)
 /* A snap-in from base bf that found no landing on the curve (xl at its
  * end, the base there still above bf): a soft spring throws the sphere
  * past the deepest turn. The landing is where F(h0) = k (h0 - bf); past
- * the end the force rises with depth at least as fast as at the end (a
- * contact stiffens as it grows), so the line through the end at its slope
- * meets k (h0 - bf) beyond the landing: a curve to there, and a fifth
- * more, holds it (adh_path_deeper asks for it). Where the force still
- * falls with depth at the end, F >= F_end bounds it: bf + F_end / k. */
-static void note_deeper(adh_path *p, double xl, double bf)
+ * the end the force rises with depth at least as fast as it did over the
+ * curve's last stretch in contact (a contact stiffens as it grows), so
+ * the chord over that stretch, at least 2 z0 of h0 long (the lattice's
+ * steps, steep between its folds, average out over it: the last two
+ * rows' slope put the end short of the landing twice on 200 nodes of
+ * 7.5 nm), meets k (h0 - bf) beyond the landing: a curve to there, and a
+ * fifth more, holds it (adh_path_deeper asks for it). An end out of
+ * contact says nothing of the contact's force: 2 z0 into contact first,
+ * and from there the chord (the solve again asks again). Where the force
+ * still falls with depth, F >= F_end bounds it: bf + F_end / k. 1 when
+ * the landing lies past the curve's end. */
+static int note_deeper(adh_path *p, double xl, double bf)
 {
     size_t n = p->c->n;
-    const adh_obs *e = &p->c->rows[n - 1], *d = &p->c->rows[n - 2 + (n < 2)];
+    const adh_obs *e = &p->c->rows[n - 1];
     if (xl < (double)(n - 1) || row_base(p, n - 1) < bf || !isfinite(p->k) || !(e->F < 0))
-        return;
-    double s = d->h0 != e->h0 ? (e->F - d->F) / (e->h0 - d->h0) : 0;   /* dF/dh0 < 0: rising with depth */
-    double gap = e->F - p->k * (e->h0 - bf);                           /* < 0: no landing yet */
-    double need = s < 0 ? e->h0 + 1.2 * gap / (p->k - s) : bf + 1.1 * e->F / p->k;
+        return 0;
+    double z0 = p->m.z0, need;
+    if (!(e->a > 0)) {
+        need = fmin(e->h0, 0) - 2 * z0;
+    } else {
+        size_t j = n - 1;
+        while (j > 0 && p->c->rows[j - 1].a > 0 && p->c->rows[j].h0 - e->h0 < 2 * z0)
+            j--;
+        const adh_obs *d = &p->c->rows[j];
+        double s = d->h0 != e->h0 ? (e->F - d->F) / (e->h0 - d->h0) : 0;   /* dF/dh0 < 0: rising with depth */
+        double gap = e->F - p->k * (e->h0 - bf);                           /* < 0: no landing yet */
+        need = s < 0 ? e->h0 + 1.2 * gap / (p->k - s) : bf + 1.1 * e->F / p->k;
+    }
     if (need < e->h0 && !(need >= p->deeper))
         p->deeper = need;
+    return 1;
+}
+
+/* The turn at h0 = T (exactly: the protocol's), at x between rows a and
+ * b. Out of contact the curve's far-field steps are long (1.2 nm around
+ * 5 nm) and F ~ h0^-2 bends across them: a chord put F 2.6 % off the
+ * curve solved to T; the ratio to eq 22, F / F_rigid (1 + the sphere's
+ * small bulge), is what is linear there. */
+static path_pt turn_point(const adh_path *p, double x, double T, const adh_obs *a, const adh_obs *b)
+{
+    path_pt q = at(p, x);
+    q.o.h0 = T;
+    double ra = a->F / adh_rigid_force(&p->m, a->h0), rb = b->F / adh_rigid_force(&p->m, b->h0);
+    if (!(a->a > 0) && !(b->a > 0) && isfinite(ra) && isfinite(rb))
+        q.o.F = adh_rigid_force(&p->m, T) * (ra + (rb - ra) * (T - a->h0) / (b->h0 - a->h0));
+    return q;
 }
 
 /* Loading, from the curve's start down to the deepest turn (without
@@ -509,11 +548,7 @@ static void load(adh_path *p)
             const adh_obs *a = &c->rows[i - 1], *b = &c->rows[i];
             double x = (double)(i - 1) + (T - a->h0) / (b->h0 - a->h0);
             if (b->h0 < T && a->h0 > T && x > p->last.x) {   /* the turn, between the rows */
-                step_to(p, x);
-                adh_obs *o = &p->run->rows[p->run->nrows - 1];
-                o->h0 = T;   /* exactly: the protocol's turn */
-                o->base = base_of(p, o);
-                p->last.o = *o;
+                step_pt(p, turn_point(p, x, T, a, b));
                 reach_turn(p);
                 continue;
             }
@@ -532,7 +567,13 @@ static void load(adh_path *p)
             static_fold(p, i - 1, 1, &f);
             xl = landing_in(p, i, base_of(p, &f.o));
         }
-        note_deeper(p, xl, base_of(p, &f.o));
+        if (note_deeper(p, xl, base_of(p, &f.o))) {
+            /* no landing on this curve: the path stops at the fold (the
+             * curve solved deeper walks again), never lands off the
+             * spring's line with the base moved in an instant */
+            emit(p, &f, time_at(p, base_of(p, &f.o)), 1);
+            break;
+        }
         path_pt l = at(p, xl);
         jump(p, &f, &l, jump_loss(p, &f, i, xl));
         bmin = base_of(p, &f.o);
@@ -548,10 +589,17 @@ static void load(adh_path *p)
  * reached it (its rows around it). */
 static void pulloff(adh_path *p, adh_turn_result *tr)
 {
-    /* none where the force only rose from the turn (a turn short of
-     * contact): no minimum */
-    if (p->pull_row < 0 || p->run->rows[p->pull_row - (p->pull_row > 0)].path != p->path)
+    /* no event where the force only rose from the turn (a turn short of
+     * contact): no minimum; the summary's lowest force is the turn's, with
+     * its time and base (as the integrator's; they were NaN beside it) */
+    if (p->pull_row < 0)
         return;
+    if (p->run->rows[p->pull_row - (p->pull_row > 0)].path != p->path) {
+        const adh_obs *o = &p->run->rows[p->pull_row];
+        if ((size_t)p->path == p->ps.nturns)
+            p->res.pulloff_F = o->F, p->res.pulloff_h0 = o->h0, p->res.pulloff_t = o->t, p->res.pulloff_base = o->base;
+        return;
+    }
     path_pt q = { .o = p->run->rows[p->pull_row] };
     const adh_static_result *sr = p->c->res;
     const adh_obs *r = p->run->rows;
@@ -563,8 +611,12 @@ static void pulloff(adh_path *p, adh_turn_result *tr)
         q.o.h0 = q.o.base = tr->pulloff_h0 = sr->pulloff_h0;
         q.o.t = time_at(p, q.o.base);
     }
+    /* before every event of its instant too: under a soft spring the
+     * force minimum is the snap-out's fold, and the jump and the branch's
+     * end (from the landing's row) follow it */
     size_t at_ev = p->nev;
-    while (at_ev > p->branch_ev && p->ev[at_ev - 1].t > q.o.t)
+    size_t pull_at = (size_t)p->pull_row - p->row0;
+    while (at_ev > p->branch_ev && p->ev[at_ev - 1].t >= q.o.t && p->ev_row[at_ev - 1] >= pull_at)
         at_ev--;
     adh_visco_event *e = add_event(p, ADH_VISCO_PULLOFF, &q);
     if (!e)
@@ -650,8 +702,6 @@ static void unload(adh_path *p, size_t k)
     tr->path = (int)k + 1;
     p->run->nturns = k + 1;
     p->in_contact = q.o.a > 0;
-    if (!p->in_contact)   /* a turn short of contact: out of it from the first row */
-        tr->jump_out_h0 = q.o.h0;
     double bt = base_of(p, &q.o);
     p->t0 = q.o.t, p->b0 = bt, p->speed = p->d.speed_out;
     emit(p, &q, p->t0, 0);

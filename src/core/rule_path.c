@@ -35,7 +35,10 @@ typedef struct path_rule {
     adh_run run;            /* the path's record */
     size_t next;            /* the next row of run to hand out */
     int first;              /* the status of the curve's start */
+    int kept_first;         /* the curve's start is among its rows */
+    int deeper;             /* the solves deeper so far */
     int built, status;      /* the path read off; the curve's final status */
+    int brc;                /* the walk's own status once built (ADH_ENOMEM, ADH_EINTR, ...) */
     char why[256];          /* a stop of the path's own (else the curve's) */
 } path_rule;
 
@@ -85,6 +88,8 @@ static int restart(path_rule *r)
     adh_run_init(&r->run);
     r->next = 0;
     r->built = 0;
+    r->kept_first = 0;
+    r->brc = ADH_SUCCESS;
     int rc = adh_static_set(r->sw, &r->m, &r->ss);
     r->first = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;
     return rc;
@@ -110,6 +115,7 @@ static int path_set(void *vr, const adh_material *m, const void *settings, const
     r->ps = *ps;
     r->ss = s;
     r->keep_u = 1;
+    r->deeper = 0;
     int rc = restart(r);
     return rc == ADH_EINVAL ? ADH_EINVAL : ADH_SUCCESS;
 }
@@ -148,28 +154,31 @@ static int keep_point(path_rule *r)
     return ADH_SUCCESS;
 }
 
-/* The whole static curve: its status (ADH_SUCCESS at its end). */
-static int solve_curve(path_rule *r)
+/* One point more of the static curve (the first call: its start):
+ * ADH_CONTINUE while it goes on, else its final status (ADH_SUCCESS at its
+ * end). */
+static int curve_point(path_rule *r)
 {
-    int rc = r->first;
-    if (rc != ADH_CONTINUE)
-        return rc;
-    if ((rc = keep_point(r)) != ADH_SUCCESS)
-        return rc;
-    while ((rc = adh_static_iterate(r->sw)) == ADH_CONTINUE || rc == ADH_SUCCESS || rc == ADH_EGRID) {
+    if (!r->kept_first) {
+        if (r->first != ADH_CONTINUE)
+            return r->first;
+        r->kept_first = 1;
+        int krc = keep_point(r);
+        return krc != ADH_SUCCESS ? krc : ADH_CONTINUE;
+    }
+    int rc = adh_static_iterate(r->sw);
+    if (rc == ADH_CONTINUE || rc == ADH_SUCCESS || rc == ADH_EGRID) {
         int krc = keep_point(r);
         if (krc != ADH_SUCCESS)
             return krc;
-        if (rc != ADH_CONTINUE)
-            break;
     }
     return rc;
 }
 
-/* The curve solved, and the path read off it. */
-static int walk(path_rule *r)
+/* The path read off the curve solved (its final status st). */
+static int walk(path_rule *r, int st)
 {
-    r->status = solve_curve(r);
+    r->status = st;
     if (r->status == ADH_EINTR || r->status == ADH_ENOMEM)
         return r->status;
     const adh_fold *f;
@@ -186,17 +195,19 @@ static int walk(path_rule *r)
 
 
 /* The path read off the curve (as far as it went); solved deeper, at
- * most twice, where a snap-in lands past its end. */
-static int build(path_rule *r)
+ * most PATH_DEEPER times, where a snap-in lands past its end (a turn short
+ * of contact: once into contact, then by the chord there). 1 once the
+ * path is built (r->brc its status), 0 when the curve is solved again. */
+#define PATH_DEEPER 4
+static int walked(path_rule *r, int st)
 {
-    int rc = walk(r);
-    for (int again = 0; again < 2 && rc == ADH_SUCCESS && r->status == ADH_SUCCESS; again++) {
-        double need = adh_path_deeper(r->path);
-        if (!isfinite(need))
-            break;
+    int rc = walk(r, st);
+    double need = adh_path_deeper(r->path);
+    if (rc == ADH_SUCCESS && r->status == ADH_SUCCESS && isfinite(need) && r->deeper < PATH_DEEPER) {
+        r->deeper++;
         r->ss.h0_end = need;
         if ((rc = restart(r)) == ADH_SUCCESS)
-            rc = walk(r);
+            return 0;
     }
     r->why[0] = '\0';
     if (rc == ADH_SUCCESS && r->status == ADH_SUCCESS && isfinite(adh_path_deeper(r->path))) {
@@ -204,17 +215,32 @@ static int build(path_rule *r)
         snprintf(r->why, sizeof r->why, "the snap-in through the spring lands deeper than h0 = %s, where the static "
                  "curve was solved to", adh_qtext(r->ss.h0_end, ADH_Q_LENGTH).s);
     }
-    return rc;
+    r->built = 1;
+    r->brc = rc;
+    return 1;
+}
+
+/* The work before the path's first row, max_batch points of the curve at
+ * a time (0: all): a driver that reads keys between calls (the TUI) stays
+ * responsive while a large grid's curve is solved. ADH_CONTINUE: call
+ * again; ADH_SUCCESS: built (next hands out its rows, or its failure). */
+static int path_iterate(void *vr, size_t max_batch)
+{
+    path_rule *r = vr;
+    for (size_t n = 0; !r->built && (max_batch == 0 || n < max_batch); n++) {
+        int rc = curve_point(r);
+        if (rc != ADH_CONTINUE)
+            walked(r, rc);
+    }
+    return r->built ? ADH_SUCCESS : ADH_CONTINUE;
 }
 
 static int path_next(void *vr)
 {
     path_rule *r = vr;
-    if (!r->built) {
-        int rc = build(r);
-        if (rc != ADH_SUCCESS)
-            return rc;
-    }
+    path_iterate(r, 0);
+    if (r->brc != ADH_SUCCESS)
+        return r->brc;
     if (r->next >= r->run.nrows)
         return r->status == ADH_SUCCESS || r->status == ADH_EGRID ? ADH_ESTALL : r->status;
     r->next++;
@@ -261,6 +287,7 @@ const adh_rule_type adh_rule_path = {
     .alloc = path_alloc,
     .free = path_free,
     .set = path_set,
+    .iterate = path_iterate,
     .next = path_next,
     .jump_in = path_jump_in,
     .observe = path_observe,

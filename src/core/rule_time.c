@@ -34,6 +34,20 @@ int adh_rule_time_summary(const adh_drive *d, adh_visco_result *res)
     return 0;
 }
 
+int adh_rule_time_summary_at(const adh_drive *d, size_t rows, adh_visco_result *res)
+{
+    if (adh_rule_time_summary(d, res) != 0)
+        return -1;
+    size_t handed;
+    const adh_path *p = adh_rule_path_walk(d, &handed);
+    if (p && rows < handed) {
+        adh_visco_result all = *res;
+        adh_path_summary(p, rows, res);
+        res->newton = all.newton, res->krylov = all.krylov, res->setups = all.setups, res->seconds = all.seconds;
+    }
+    return 0;
+}
+
 size_t adh_rule_time_events(const adh_drive *d, const adh_visco_event **ev)
 {
     const adh_visco *w = adh_rule_visco_solver(d);

@@ -103,6 +103,12 @@ typedef struct adh_plan_time_cost {
     double spring;         /* the instrument's k, N/m; NAN: none (its steps are not counted) */
 } adh_plan_time_cost;
 void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c);
+/* An elastic sphere in physical time integrates nothing: its cost is its
+ * static curve's points on grid g (adh_static_skips' estimate: the exact
+ * curve's, or ADH_STATIC_STEP_POINTS over the lattice folds), a point
+ * priced about as an integrator step (the default scene: 3.7 against 2.3
+ * ms); *exact (may be NULL): 1 for the exact curve. */
+double adh_plan_path_points(const adh_run_spec *s, const adh_grid *g, int *exact);
 
 /* Runs at once for a sweep: [sweep] jobs, else one per online core, never
  * more than the runs. */

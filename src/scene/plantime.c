@@ -7,6 +7,7 @@
 
 #include "adhere/models.h"
 #include "adhere/params.h"
+#include "adhere/static.h"
 #include "adhere/units.h"
 #include "adhere/visco.h"
 
@@ -121,4 +122,13 @@ void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c)
     c->step_out = step_out;
     c->spring = v.drive.spring;
     c->steps = TIME_EXTRA * (c->free_steps + c->contact_steps);
+}
+
+double adh_plan_path_points(const adh_run_spec *s, const adh_grid *g, int *exact)
+{
+    double deep = s->proto.nturns ? adh_protocol_deepest_turn(&s->proto) : adh_static_settings_default().h0_end;
+    int ex = !adh_static_skips(g, &s->mat, deep);
+    if (exact)
+        *exact = ex;
+    return ex ? adh_static_exact_points(g, &s->mat, deep) : ADH_STATIC_STEP_POINTS;
 }

@@ -247,6 +247,7 @@ enum { PROF_CONTACT = 0, PROF_PULLOFF = 1 };
 static void curve_drop(tui_sim *s)
 {
     s->curve.nrows = 0;
+    s->cset = 0;
     s->ccur = 0;
     s->walk = 0;
     s->cstatus = ADH_CONTINUE;
@@ -268,7 +269,7 @@ double tui_sim_curve_end(const tui_sim *s)
 
 static int curve_started(const tui_sim *s)
 {
-    return s->curve.nrows > 0 || s->cstatus != ADH_CONTINUE;
+    return s->curve.nrows > 0 || s->cstatus != ADH_CONTINUE || s->cset;
 }
 
 /* A curve belongs to the material, grid, start and end it was computed
@@ -1088,16 +1089,20 @@ static void curve_pushed(tui_sim *s, const adh_state *st)
 /* One accepted point of the continuation (the start point first), from
  * the drive's static step rule, or one move of the cursor over points
  * computed before. */
-static int curve_work(tui_sim *s, char *why, size_t whylen)
+static int curve_work(tui_sim *s, char *why, size_t whylen, int *busy)
 {
+    *busy = 0;
     s->busy = 0;
     s->walked = s->walk != 0;
     if (s->walk) {
         s->ccur = s->walk > 0 ? s->ccur + 1 : s->ccur - 1;
         s->walk = 0;
+        /* physical time's summary as at the point shown: walked back
+         * before the path's end it showed the whole cycle's hysteresis */
+        adh_rule_time_summary_at(s->sdrv, s->ccur + 1, &s->vres);
         return ADH_SUCCESS;
     }
-    if (s->curve.nrows == 0) {
+    if (!s->cset) {
         /* the relaxation's start and deepest turn: the two share an axis,
          * as in --batch */
         adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, curve_mode_of(s));
@@ -1119,10 +1124,18 @@ static int curve_work(tui_sim *s, char *why, size_t whylen)
             snprintf(why, whylen, "the curve cannot start: %s", adh_strerror(rc));
             return rc;
         }
+        s->cset = 1;
     }
     char h0[64];
     adh_format_quantity(s->curve.nrows ? s->curve.rows[s->curve.nrows - 1].h0 : s->start, ADH_Q_LENGTH, 4, h0, sizeof h0);
-    int row, rc = adh_drive_iterate(s->sdrv, 0, &row);
+    /* a point of the elastic path's static curve a call: keys are read
+     * between (it was solved whole inside one call: 8 s deaf to 'q' at
+     * N = 2000, under "any key stops") */
+    int row, rc = adh_drive_iterate(s->sdrv, 1, &row);
+    if (rc == ADH_CONTINUE && !row) {
+        *busy = s->busy = 1;   /* no point yet: the work goes on */
+        return ADH_SUCCESS;
+    }
     const adh_static *sw = adh_rule_static_solver(s->sdrv);
     if (sw)
         adh_static_summary(sw, &s->sres);
@@ -1256,8 +1269,10 @@ tui_work tui_sim_work(tui_sim *s, size_t batch, char *why, size_t whylen)
 {
     if (!s->busy)
         return TUI_WORK_STEPPED;
-    if (tui_sim_curve_mode(s))
-        return curve_work(s, why, whylen) == ADH_SUCCESS ? TUI_WORK_STEPPED : TUI_WORK_FAILED;
+    if (tui_sim_curve_mode(s)) {
+        int busy, rc = curve_work(s, why, whylen, &busy);
+        return busy ? TUI_WORK_BUSY : rc == ADH_SUCCESS ? TUI_WORK_STEPPED : TUI_WORK_FAILED;
+    }
     int row, rc = adh_drive_iterate(s->drv, batch, &row);
     if (rc == ADH_CONTINUE && !row)
         return TUI_WORK_BUSY;

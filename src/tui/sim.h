@@ -146,6 +146,7 @@ typedef struct tui_sim {
     size_t ccur;               /* the point shown (when curve.nrows > 0) */
     int walk;                  /* the step in progress only moves the cursor: +1, -1 */
     int walked;                /* the last step moved the cursor over kept points */
+    int cset;                  /* the curve's drive is set (its first point may be under way) */
     int cstatus;               /* ADH_CONTINUE while the curve can go on, ADH_SUCCESS
                                   once it came down to its end, else the error that
                                   stopped it (shown, never hidden) */

@@ -224,7 +224,8 @@ static void describe_time(tui *t)
 {
     const tui_sim *s = &t->sim;
     const adh_obs *o = tui_sim_row(s);
-    char h0[64], F[64], a[64], tt[64], v[64];
+    char h0[64], F[64], a[64], tt[64], v[64], b[64];
+    fmtq(o->base, ADH_Q_LENGTH, b, sizeof b);
     fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
     fmtq(o->F, ADH_Q_FORCE, F, sizeof F);
     fmtq(o->a, ADH_Q_LENGTH, a, sizeof a);
@@ -234,7 +235,7 @@ static void describe_time(tui *t)
     const adh_obs *prev = s->ccur > 0 ? &tui_sim_curve(s, &(size_t){ 0 })[s->ccur - 1] : NULL;
     if (!s->walked && prev && (prev->a > 0) != (o->a > 0))
         say(t, 0, "t = %s: jumped %s at h0 = %s (base at %s): F %s%s%s", tt, o->a > 0 ? "into contact" : "out of contact",
-            h0, v, F, o->a > 0 ? ", contact radius " : "", o->a > 0 ? a : "");
+            h0, b, F, o->a > 0 ? ", contact radius " : "", o->a > 0 ? a : "");
     else
         say(t, 0, "t = %s%s: h0 %s, F %s, %s%s (base %s at %s)", tt, s->walked ? " (kept, not solved again)" : "",
             h0, F, o->a > 0 ? "a " : "not in contact", o->a > 0 ? a : "", o->branch > 0 ? "approaching" : "retracting", v);

@@ -101,6 +101,18 @@ pct=$(sed -n 's/.*run 1 of 2 .* done, *\([0-9]*\) %.*/\1/p' "$TMP/swpct.err")
 split=$("$ADHERE" --plan visco -N 150 --force --sweep=speed=10nm/s,1mm/s 2>&1 | sed -n 's/^time: about .* of CPU in all, .*about \([0-9]*\) integrator steps, \([0-9]*\) to \([0-9]*\) a run.*/\1 \3/p')
 check "a sweep of 10 nm/s and 1 mm/s: $pct % done after the slow run, its share of the plan's steps ($split) within 5 %" \
     sh -c "[ -n '$pct' ] && [ -n '$split' ] && echo $split $pct | awk '{exit !(\$3 > 100 * \$2 / \$1 - 5 && \$3 < 100 * \$2 / \$1 + 5)}'"
+# A sweep of the material: the elastic run, no integration, weighs its
+# static curve's points beside the solid's integrator steps (it weighed
+# one step: 0 % done after it, hours left of a 2 s study)
+"$ADHERE" --batch visco -N 150 --force --no-plot --sweep=material=elastic,sls -j1 -o "$TMP/swmat" >/dev/null 2>"$TMP/swmat.err"
+pct=$(sed -n 's/.*run 1 of 2 (material = elastic).* done, *\([0-9]*\) %.*/\1/p' "$TMP/swmat.err")
+pts=$("$ADHERE" --plan visco --material=elastic -N 150 --force 2>&1 | sed -n 's/^time: .*its static curve, about \([0-9]*\) points.*/\1/p')
+sls=$("$ADHERE" --plan visco -N 150 --force 2>&1 | sed -n 's/^time: .*about \([0-9]*\) integrator steps.*/\1/p')
+check "a sweep of elastic and sls: $pct % done after the elastic run, its share of the plan's work ($pts points, $sls steps) within 5 %" \
+    sh -c "[ -n '$pct' ] && [ -n '$pts' ] && [ -n '$sls' ] && echo $pts $sls $pct | awk '{s = 100 * \$1 / (\$1 + \$2); exit !(\$3 > s - 5 && \$3 < s + 5)}'"
+"$ADHERE" --plan visco -N 150 --force --sweep=material=elastic,sls >"$TMP/planmat" 2>&1
+check "--plan of a sweep of the material: run 1, elastic, priced as its static curve, the whole in steps and points" \
+    sh -c "grep -q '^time: run 1 about .*no time integration, an elastic sphere' '$TMP/planmat' && ! grep -q 'modulus 0 Pa' '$TMP/planmat' && grep -q '^time: about .* integrator steps and static curve points, ' '$TMP/planmat'"
 "$ADHERE" --plan afm >"$TMP/plana" 2>&1
 check "--plan afm: one static curve serves every k, snap.png, the snap points in sweep.tsv" sh -c "grep -q '^mode: static' '$TMP/plana' && grep -q '^runs: 9$' '$TMP/plana' && grep -q '^skip: a curve per k: the 9 runs .* share 1 static curve ' '$TMP/plana' && grep -q '^stored: snap.png' '$TMP/plana' && grep -q '^stored: sweep.tsv: .*the snap points' '$TMP/plana' && grep -q '^sweep: spring = 100 mN/m, ' '$TMP/plana'"
 "$ADHERE" --plan fig4 >"$TMP/plan4" 2>&1

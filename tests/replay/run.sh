@@ -461,6 +461,11 @@ TE=$W/time-elastic
 trows() { grep -v '^#' "$1" | cut -f1-14; }
 check "elastic in time: the screen's rows are --batch --mode=time's, every one ($(trows "$work/te-batch/force.tsv" 2>/dev/null | wc -l) lines)" \
     sh -c "[ -s '$TE/time-elastic-rows.tsv' ] && trows() { grep -v '^#' \"\$1\" | cut -f1-14; }; [ \"\$(trows '$TE/time-elastic-rows.tsv')\" = \"\$(trows '$work/te-batch/force.tsv')\" ]"
+TW=$W/time-elastic-walk
+check "elastic in time: the jump into contact names the base's position, not its speed (it said 'base at 1 um/s')" \
+    sh -c "cat '$TW'/j*.scr | grep -q 'jumped into contact at h0 = [-0-9.]* nm (base at [-0-9.]* nm)' && ! cat '$TW'/j*.scr | grep -q 'base at [0-9.]* [u]m/s)'"
+check "elastic in time: walked back from the end, no hysteresis before the path is back at its start" \
+    grep -q 'hysteresis not yet' "$TW/time-elastic-walk-b.txt"
 check "elastic in time: no jump and no pull-off after three rows, the batch's two jumps and hysteresis at the end" \
     sh -c "grep -q 'jumps  0; in not yet' '$TE/time-elastic-3.txt' && grep -q 'jumps  2; in' '$TE/time-elastic-end.txt' && grep -q 'steps  none in time' '$TE/time-elastic-end.txt'"
 

@@ -140,6 +140,24 @@ int main(void)
         }
         ok(adh_jkr_radius(&m, ov_f * 1.5) == 0.0 && adh_jkr_radius(&m, ov_f) == 0.0,
            "JKR radius: no contact at or below the fold's overlap %g m", ov_f);
+        ok(isnan(adh_jkr_radius(&m, NAN)) && adh_jkr_radius(&m, INFINITY) == INFINITY,
+           "JKR radius: a NaN overlap gives NaN (it said 0, no contact), an infinite one an infinite radius (it "
+           "said NaN)");
+        /* at the materials' limits (params.c) and overlaps up to 1e300 m */
+        double worst_back = 0;
+        for (int lim = 0; lim < 16; lim++) {
+            adh_material x = m;
+            x.E = lim & 1 ? 1e13 : 1e3, x.A = lim & 2 ? 1e-15 : 1e-24, x.z0 = lim & 4 ? 1e-7 : 1e-12;
+            x.R = lim & 8 ? 10.0 : 1e-9;
+            const double ovs[] = { 1e-12, 1e-9, 1.0, 1e300 };
+            for (size_t i = 0; i < sizeof ovs / sizeof *ovs; i++) {
+                double a = adh_jkr_radius(&x, ovs[i]), ov = NAN;
+                adh_jkr(&x, a, NULL, &ov);
+                worst_back = fmax(worst_back, a > 0 ? fabs(ov - ovs[i]) / (ovs[i] + a * a / x.R) : INFINITY);
+            }
+        }
+        ok(worst_back <= 1e-12, "JKR radius at the materials' limits, overlaps 1 pm to 1e300 m: the overlap back "
+           "(worst %.2g of a^2/R)", worst_back);
     }
     return tap_done();
 }

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "adhere/cycle.h"
+#include "adhere/models.h"
 #include "adhere/rule_path.h"
 #include "adhere/rule_time.h"
 #include "tap.h"
@@ -158,6 +159,54 @@ static void times(const fixture *f)
        worst, p.run.nrows);
     ok_rel(p.r.time, turn_t[2] + d.dwell + (r[p.run.nrows - 1].base - turn_b[2]) / d.speed_out, 1e-12,
            "the time is the protocol's: the deepest turn's, its dwell and the retraction back to the start");
+    /* a row between the curve's points (a turn, a fold, a landing) has
+     * eq 22 at its own h0, not a mixture of its neighbours' */
+    double rigid = 0;
+    for (size_t i = 0; i < p.run.nrows; i++) {
+        double want = adh_rigid_force(&f->m, r[i].h0);
+        rigid = fmax(rigid, isnan(want) ? (isnan(r[i].F_rigid) ? 0 : INFINITY)
+                                        : fabs(r[i].F_rigid - want) / fabs(want));
+    }
+    ok(rigid <= 1e-12, "every row's F_rigid is eq 22 at its h0 (worst %.2g relative)", rigid);
+    adh_run_free(&p.run);
+}
+
+/* A turn short of contact before the deepest: the surfaces never touched
+ * on its branch, so it has no jump-out (as the integrator and the static
+ * mode say), and its force is the static curve's at that h0 (solved to
+ * it: its last point), not a chord across the far field's long steps. */
+static void short_turn(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    ps.nturns = 2;
+    ps.turns[0] = 5e-9;
+    ps.turns[1] = FIX_TURN;
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    prun p = path_run(f, &d, &ps);
+    adh_protocol_settings to5 = protocol();
+    to5.turns[0] = 5e-9;
+    adh_run st;
+    adh_static_result sr;
+    int src = static_run(f, INFINITY, &to5, &st, &sr);
+    const adh_turn_result *tr = p.run.nturns == 2 ? &p.run.turns[0] : NULL;
+    ok(p.rc == ADH_SUCCESS && tr && tr->h0 == 5e-9 && tr->a_turn == 0 && isnan(tr->jump_out_h0),
+       "a turn at 5 nm, short of contact, before the deepest: no jump-out on its branch (%g)",
+       tr ? tr->jump_out_h0 : NAN);
+    ok(src == ADH_SUCCESS && st.nrows && tr && fabs(tr->max_load / st.rows[st.nrows - 1].F - 1) < 1e-3,
+       "its force is the static curve's at 5 nm (%.6g against %.6g nN)", tr ? tr->max_load * 1e9 : NAN,
+       st.nrows ? st.rows[st.nrows - 1].F * 1e9 : NAN);
+    /* the turn alone: the lowest force on its branch is the turn's, at
+     * its time (the loading's travel over the speed), as the integrator's */
+    ps.nturns = 1;
+    prun one = path_run(f, &d, &ps);
+    const adh_obs *r0 = one.run.nrows ? &one.run.rows[0] : NULL;
+    double t5 = r0 ? (r0->base - 5e-9) / d.speed_in : NAN;
+    ok(one.rc == ADH_SUCCESS && one.run.nturns == 1 && one.r.pulloff_F == one.run.turns[0].max_load &&
+       one.r.pulloff_h0 == 5e-9 && fabs(one.r.pulloff_t - t5) <= 1e-12 * t5,
+       "the turn at 5 nm alone: the summary's lowest force is the turn's, at its time %.6g s (%.6g)", t5,
+       one.r.pulloff_t);
+    adh_run_free(&one.run);
+    adh_run_free(&st);
     adh_run_free(&p.run);
 }
 
@@ -187,6 +236,21 @@ static void spring(const fixture *f, double k)
        out ? out->base * 1e9 : NAN);
     ok(p.r.pulloff_F <= (out ? out->F : 0) && fabs(p.r.pulloff_F / sr.pulloff_F - 1) < 1e-3,
        "%g N/m: the pull-off before it, the static curve's force minimum (%.6g N)", k, p.r.pulloff_F);
+    /* events.tsv in the order they happen: the pull-off (at the snap-out's
+     * fold itself under a soft spring, the same instant) before the
+     * snap-out and the branch's end */
+    size_t i_pull = p.nev, i_out = p.nev, i_end = p.nev;
+    for (size_t i = 0; i < p.nev; i++) {
+        if (p.ev[i].path != 1)
+            continue;
+        if (p.ev[i].kind == ADH_VISCO_PULLOFF)
+            i_pull = i;
+        else if (p.ev[i].kind == ADH_VISCO_JUMP)
+            i_out = i;
+        else if (p.ev[i].kind == ADH_VISCO_END)
+            i_end = i;
+    }
+    ok(i_pull < i_out && i_out < i_end && i_end < p.nev, "%g N/m: the events in order: pull-off, snap-out, end", k);
     if (k < 1e-2 && out) {
         /* a soft spring: the sphere flies |F|/k, out of the surface force's
          * reach, and the jump releases the spring's energy */
@@ -203,12 +267,12 @@ static void spring(const fixture *f, double k)
  * mode itself, and k (h0 - base) at its force. (The curve had ended at the
  * turn and the landing was put at its end, off the spring's line, the base
  * 225 nm away in the same instant.) */
-static void landing_past_turn(const fixture *f)
+static void landing_past_turn(const fixture *f, double k, double h_turn)
 {
     adh_protocol_settings ps = protocol();
-    ps.turns[0] = -2e-9;
+    ps.turns[0] = h_turn;
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
-    d.spring = 1.0;
+    d.spring = k;
     prun p = path_run(f, &d, &ps);
     const adh_visco_event *in = NULL, *turn = NULL;
     for (size_t i = 0; i < p.nev; i++)
@@ -217,7 +281,7 @@ static void landing_past_turn(const fixture *f)
         else if (p.ev[i].kind == ADH_VISCO_TURN)
             turn = &p.ev[i];
     ok(p.rc == ADH_SUCCESS && in && turn && in->h0_after < ps.turns[0] && turn->h0 == in->h0_after,
-       "1 N/m, turn at -2 nm: the snap-in lands past the turn (%.6g nm) and turns there",
+       "%g N/m, turn at %g nm: the snap-in lands past the turn (%.6g nm) and turns there", k, h_turn * 1e9,
        in ? in->h0_after * 1e9 : NAN);
     ok(in && fabs(in->F_after - d.spring * (in->h0_after - in->base)) <= 1e-9 * fabs(in->F_after),
        "its landing is on the spring's line at the jump's base: F = k (h0 - base)");
@@ -239,6 +303,35 @@ static void landing_past_turn(const fixture *f)
        "and on the static curve solved past it (%.6g against %.6g nN)", Fc * 1e9, in ? in->F_after * 1e9 : NAN);
     adh_run_free(&st);
     adh_run_free(&p.run);
+}
+
+/* In batches of one point (the TUI, reading keys between): the curve is
+ * solved a point a call before the first row (it was solved whole in the
+ * first call, deaf to keys), and the rows are the runner's, to the digit. */
+static void batches(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    prun whole = path_run(f, &d, &ps);
+    adh_run run;
+    adh_run_init(&run);
+    adh_visco_rule_settings vs = adh_visco_rule_settings_default(f->m.E);
+    vs.drive = d;
+    adh_drive *dr = adh_drive_alloc(&adh_rule_path, f->g, f->k);
+    adh_drive_set(dr, &f->m, &vs, &ps, &run);
+    size_t before = 0, calls = 0;
+    int row = 0, rc;
+    while ((rc = adh_drive_iterate(dr, 1, &row)) == ADH_CONTINUE && calls++ < 1000000)
+        before += !row && run.nrows == 0;
+    int same = rc == ADH_SUCCESS && run.nrows == whole.run.nrows;
+    for (size_t i = 0; same && i < run.nrows; i++)
+        same = run.rows[i].t == whole.run.rows[i].t && run.rows[i].h0 == whole.run.rows[i].h0 &&
+               run.rows[i].F == whole.run.rows[i].F;
+    ok(before > 10 && same, "a point of the curve a call: %zu calls before the first row, then the runner's %zu rows "
+       "to the digit", before, whole.run.nrows);
+    adh_drive_free(dr);
+    adh_run_free(&run);
+    adh_run_free(&whole.run);
 }
 
 /* Stepped by hand (the TUI's f), the summary says only what the rows so
@@ -270,10 +363,16 @@ int main(void)
     fixture f = fix_open(FIX_N, 1.0);
     against_static(&f);
     times(&f);
+    short_turn(&f);
     spring(&f, 10);
     spring(&f, 1e-3);
-    landing_past_turn(&f);
+    landing_past_turn(&f, 1.0, -2e-9);
+    /* a turn short of contact (the curve's end out of it: its slope says
+     * nothing of the contact's) under a soft spring that throws the
+     * sphere 2 nm into it */
+    landing_past_turn(&f, 1e-3, 5e-9);
     so_far(&f);
+    batches(&f);
     fix_close(&f);
     return tap_done();
 }
