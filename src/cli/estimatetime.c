@@ -107,6 +107,8 @@ typedef struct grid_cost {
     size_t timed_n;       /* the nodes its kernel was timed on (n, or DENSE_TIMED_MAX) */
     int hierarchical;
     double product, pass, build;
+    size_t lu_n;          /* the last LU timed for its runs: its size, */
+    double lu_t;          /* and its CPU seconds (a sweep's runs share them) */
 } grid_cost;
 
 /* Above this many nodes a dense kernel is built and timed on a uniform
@@ -116,10 +118,26 @@ typedef struct grid_cost {
  * kernels of up to 3.2 GB, a minute each, to say how long it would take. */
 #define DENSE_TIMED_MAX 4000
 
+/* lu_seconds(m) for the runs of one grid, timed again only where m is a
+ * quarter off the size last timed (scaled as m^3 between): a sweep of 32
+ * dwells timed 32 equal LUs, 1.6 s of its plan's 1.75. */
+static double lu_for(grid_cost *gc, size_t m)
+{
+    double r = gc->lu_n ? (double)m / (double)gc->lu_n : 0;
+    if (!(r >= 0.8 && r <= 1.25) || !(gc->lu_t >= 0)) {
+        gc->lu_t = lu_seconds(m);
+        gc->lu_n = m;
+        r = 1;
+    }
+    return gc->lu_t * r * r * r;
+}
+
 static int time_grid(const adh_run_spec *s, grid_cost *gc)
 {
     adh_grid_free(gc->g);
     gc->n = 0;
+    gc->lu_n = 0;
+    gc->lu_t = NAN;
     double t0 = adh_clock_cpu_seconds();
     adh_grid *g = gc->g = adh_config_grid_alloc(s);
     adh_run_spec timed = *s;
@@ -195,7 +213,7 @@ static int run_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
         e->step += STEP_HODLR_PRODUCTS * gc->product;
     } else {
         e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(gc->g, e->c.a_turn));
-        e->lu = lu_seconds(e->lu_nodes);
+        e->lu = lu_for(gc, e->lu_nodes);
         e->step += STEP_LUS * e->lu;
     }
     e->cpu = e->build + e->c.steps * e->step;
@@ -236,7 +254,7 @@ static int path_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
         e->step = PATH_HODLR_PRODUCTS * gc->product;
     } else {
         e->lu_nodes = (size_t)(STEP_LU_SHARE * (double)nodes_inside(gc->g, e->c.a_turn));
-        e->lu = lu_seconds(e->lu_nodes);
+        e->lu = lu_for(gc, e->lu_nodes);
         e->step = PATH_PRODUCTS * gc->product + PATH_LU_SHARE * e->lu;
     }
     e->cpu = e->build + e->c.steps * e->step;
