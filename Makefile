@@ -226,7 +226,7 @@ $(BUILD)/fuzz/fuzz_gpstring: $(call fuzz_objs,tests/fuzz/fuzz_gpstring.c src/plo
 fuzz-build: $(FUZZ_BIN)
 
 check-fuzz: fuzz-build
-	@BUILD=$(BUILD) tests/fuzz/run.sh
+	@BUILD=$(BUILD) FUZZ_SECONDS=$${FUZZ_SECONDS:-60} tests/fuzz/run.sh
 
 bench: all $(BENCH_BIN)
 	@tests/bench/run.sh $(BUILD)

@@ -78,7 +78,7 @@ rest=""
 for t in "$@" $asan; do
     runnable "$t" || continue
     case "$t" in
-    */hard-*|*/fuzz/run.sh|*/test_fit|*/test_equilibrium|*/test_soft_static|*/test_mixing|*/test_rate_grid) long="$long $t" ;;
+    */hard-*|*/fuzz/run.sh|*/cli/time.sh|*/test_fit|*/test_equilibrium|*/test_soft_static|*/test_mixing|*/test_rate_grid) long="$long $t" ;;
     *) rest="$rest $t" ;;
     esac
 done

@@ -3,10 +3,12 @@
 # number/unit parser, scene files, replay scripts, measured curves as adhere
 # fit labels them) and over the quoting that
 # carries user text into gnuplot's command stream. Seeds in corpus/; the
-# pass is seconds long (FUZZ_SECONDS, default 5 each) and must find nothing.
+# pass is seconds long (FUZZ_SECONDS, default 3 each in make check, whose
+# longest single test it was; a minute each in make check-fuzz) and must
+# find nothing.
 . "$(dirname "$0")/../cli/lib.sh"
 BUILD=${BUILD:-build}
-secs=${FUZZ_SECONDS:-5}
+secs=${FUZZ_SECONDS:-3}
 for t in units scene replay gpstring measured; do
     bin="$BUILD/fuzz/fuzz_$t"
     if [ ! -x "$bin" ]; then not_ok "fuzz_$t was not built"; continue; fi
