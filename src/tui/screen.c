@@ -683,9 +683,35 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
     (void)v;
 }
 
+/* A number's micro prefix as the micro sign where the terminal shows
+ * UTF-8: "1.04 uN" -> "1.04 µN" (the messages are written in ASCII by a
+ * layer that knows no terminal; the panels above write µ). Only a digit,
+ * a blank, u and a unit (m N s J Pa) not followed by a letter: a quoted
+ * value ('5um') or a word (" up") is left as it is. */
+static void micro_text(const char *in, char *out, size_t len)
+{
+    size_t o = 0;
+    for (size_t i = 0; in[i] && o + 3 < len; i++) {
+        const char *u = in + i;
+        size_t ul = u[0] == ' ' && u[1] == 'u' ? (u[2] == 'P' && u[3] == 'a' ? 2 : strchr("mNsJ", u[2]) && u[2] ? 1 : 0) : 0;
+        if (ul && i > 0 && isdigit((unsigned char)in[i - 1]) && !isalpha((unsigned char)u[2 + ul])) {
+            out[o++] = ' ', out[o++] = '\xc2', out[o++] = '\xb5';
+            i++;   /* the u */
+            continue;
+        }
+        out[o++] = in[i];
+    }
+    out[o] = '\0';
+}
+
 static void status_text(const tui_view *v, char *st, size_t len)
 {
-    snprintf(st, len, "%s%s", v->status_error ? "error: " : "", v->status);
+    char raw[1200];
+    snprintf(raw, sizeof raw, "%s%s", v->status_error ? "error: " : "", v->status);
+    if (v->utf8)
+        micro_text(raw, st, len);
+    else
+        snprintf(st, len, "%s", raw);
 }
 
 /* The rows the status line takes above the key hints: at least one. */
