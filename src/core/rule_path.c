@@ -16,7 +16,9 @@
 
 /* The rows' deformations are kept (as floats: profiles and the state
  * shown) up to this many bytes; past it the path has no profiles. */
+#ifndef PATH_U_BYTES   /* (a test sets its own) */
 #define PATH_U_BYTES ((size_t)1 << 28)
+#endif
 
 typedef struct path_rule {
     const adh_grid *g;
@@ -143,6 +145,7 @@ static int keep_point(path_rule *r)
         if (!u) {   /* past the bound (or out of memory): no profiles */
             free(r->u);
             r->u = NULL;
+            r->ucap = 0;   /* the next set keeps them again, from a new array */
             r->keep_u = 0;
         } else {
             r->u = u;
