@@ -190,7 +190,8 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
  * next adh_static_set on (NULL: none; copied, kept until changed): the
  * curve of a sphere with a known extra deformation -e. A viscoelastic
  * sphere at one instant is elastic at its instantaneous modulus with its
- * delayed deformation frozen (adhere/visco.h lands its jumps so).
+ * delayed deformation frozen (adhere/visco.h lands its jumps into
+ * contact so).
  * ADH_ENOMEM when the copy cannot be made. */
 int adh_static_set_gap(adh_static *w, const double *e);
 

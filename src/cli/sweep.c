@@ -729,7 +729,8 @@ static void step_all(study_job *job, int jobs)
     /* each drive's expected cost, for the time left: its iterations in
      * relaxation (adh_plan_iterations), its integrator steps in physical
      * time (adh_plan_time_steps: a sweep of speeds over decades costs
-     * 3-10 times more at its fast end), else one each; O(drives) a
+     * 3-10 times more at its fast end), an elastic one its static curve's
+     * points (drive_cost), else one each; O(drives) a
      * progress line, so for a few thousand drives at most */
     job->jobs = jobs;
     job->eta = job->ntodo <= ETA_MAX_DRIVES ? calloc(job->ntodo ? job->ntodo : 1, sizeof *job->eta) : NULL;
