@@ -56,32 +56,38 @@ int adh_forcebase_wanted(const adh_plot_setup *s)
     return s->sprung && isfinite(s->spring) && s->spring > 0 && (s->equilibrium || s->timed);
 }
 
+/* Room for one more of n items of size sz in *a (capacity *cap, first
+ * first, doubling); 0, or -1 with fg->bad set and *a kept. */
+static int room(fb_fig *fg, void **a, size_t *cap, size_t n, size_t sz, size_t first)
+{
+    if (n < *cap)
+        return 0;
+    size_t c = *cap ? 2 * *cap : first;
+    void *p = realloc(*a, c * sz);
+    if (!p) {
+        fg->bad = 1;
+        return -1;
+    }
+    *a = p, *cap = c;
+    return 0;
+}
+
 static void push(fb_fig *fg, fb_line *l, fb_point pt)
 {
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 64;
-        fb_point *p = realloc(l->p, cap * sizeof *p);
-        if (!p) {
-            fg->bad = 1;
-            return;
-        }
-        l->p = p, l->cap = cap;
+    void *a = l->p;
+    if (room(fg, &a, &l->cap, l->n, sizeof pt, 64) == 0) {
+        l->p = a;
+        l->p[l->n++] = pt;
     }
-    l->p[l->n++] = pt;
 }
 
 static void add_jump(fb_fig *fg, fb_jump j)
 {
-    if (fg->njump == fg->capjump) {
-        size_t cap = fg->capjump ? 2 * fg->capjump : 8;
-        fb_jump *p = realloc(fg->jump, cap * sizeof *p);
-        if (!p) {
-            fg->bad = 1;
-            return;
-        }
-        fg->jump = p, fg->capjump = cap;
+    void *a = fg->jump;
+    if (room(fg, &a, &fg->capjump, fg->njump, sizeof j, 8) == 0) {
+        fg->jump = a;
+        fg->jump[fg->njump++] = j;
     }
-    fg->jump[fg->njump++] = j;
 }
 
 static void fig_free(fb_fig *fg)
