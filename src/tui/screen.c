@@ -146,17 +146,39 @@ static const char *gk(const tui_view *v, const char *utf8, const char *ascii)
     return v->utf8 ? utf8 : ascii;
 }
 
+/* A number's micro prefix as the micro sign where the terminal shows
+ * UTF-8: "1.04 uN" -> "1.04 µN" (the messages are written in ASCII by a
+ * layer that knows no terminal; the panels above write µ). Only a digit,
+ * a blank, u and a unit (m N s J Pa) not followed by a letter: a quoted
+ * value ('5um') or a word (" up") is left as it is. */
+static void micro_text(const char *in, char *out, size_t len)
+{
+    size_t o = 0;
+    for (size_t i = 0; in[i] && o + 3 < len; i++) {
+        const char *u = in + i;
+        size_t ul = u[0] == ' ' && u[1] == 'u' ? (u[2] == 'P' && u[3] == 'a' ? 2 : strchr("mNsJ", u[2]) && u[2] ? 1 : 0) : 0;
+        if (ul && i > 0 && isdigit((unsigned char)in[i - 1]) && !isalpha((unsigned char)u[2 + ul])) {
+            out[o++] = ' ', out[o++] = '\xc2', out[o++] = '\xb5';
+            i++;   /* the u */
+            continue;
+        }
+        out[o++] = in[i];
+    }
+    out[o] = '\0';
+}
+
 /* value in its unit, micro as the micro sign where the terminal shows
  * UTF-8 (the parameter panel beside it writes "10 µm"; "1 um/s" under it
  * read as another unit) */
 static void q(const tui_view *v, double value, adh_quantity kind, char *buf, size_t len)
 {
-    adh_format_quantity(value, kind, 4, buf, len);
-    char *u = strstr(buf, " u");
-    if (v->utf8 && u && isalpha((unsigned char)u[2]) && strlen(buf) + 2 < len) {
-        memmove(u + 3, u + 2, strlen(u + 2) + 1);
-        u[1] = '\xc2', u[2] = '\xb5';
+    if (!v->utf8) {
+        adh_format_quantity(value, kind, 4, buf, len);
+        return;
     }
+    char raw[64];
+    adh_format_quantity(value, kind, 4, raw, sizeof raw);
+    micro_text(raw, buf, len);
 }
 
 static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w)
@@ -681,27 +703,6 @@ static void draw_preview(const tui_sim *s, const tui_view *v, int y0, int x0, in
         put(y, x0 + mx, ml, A_NORMAL, "%s", mid);
     put(y, x0 + lab + pw - hil, hil, A_NORMAL, "%s", hi);
     (void)v;
-}
-
-/* A number's micro prefix as the micro sign where the terminal shows
- * UTF-8: "1.04 uN" -> "1.04 µN" (the messages are written in ASCII by a
- * layer that knows no terminal; the panels above write µ). Only a digit,
- * a blank, u and a unit (m N s J Pa) not followed by a letter: a quoted
- * value ('5um') or a word (" up") is left as it is. */
-static void micro_text(const char *in, char *out, size_t len)
-{
-    size_t o = 0;
-    for (size_t i = 0; in[i] && o + 3 < len; i++) {
-        const char *u = in + i;
-        size_t ul = u[0] == ' ' && u[1] == 'u' ? (u[2] == 'P' && u[3] == 'a' ? 2 : strchr("mNsJ", u[2]) && u[2] ? 1 : 0) : 0;
-        if (ul && i > 0 && isdigit((unsigned char)in[i - 1]) && !isalpha((unsigned char)u[2 + ul])) {
-            out[o++] = ' ', out[o++] = '\xc2', out[o++] = '\xb5';
-            i++;   /* the u */
-            continue;
-        }
-        out[o++] = in[i];
-    }
-    out[o] = '\0';
 }
 
 static void status_text(const tui_view *v, char *st, size_t len)
