@@ -54,6 +54,7 @@ struct adh_path {
     adh_obs turn_o[ADH_MAX_TURNS];
     size_t reached;
     double deeper;              /* the curve's end a snap-in's landing needs (NAN: none) */
+    double loop;                /* the static curve's loop, once asked (NAN: not yet) */
 };
 
 /* Nothing measured yet: no jump, no pull-off, no cycle. */
@@ -639,26 +640,35 @@ static void end_branch(adh_path *p, double stored_change)
     adh_turn_result *tr = &p->run->turns[k];
     pulloff(p, tr);
     p->res.time = p->last.o.t;
-    if (k + 1 != p->ps.nturns)
-        return;
-    /* the deepest turn's cycle: the loading to it, then this branch */
-    adh_visco_energy *cy = &p->res.cycle;
-    cy->work = p->turn_work[k] + p->work;
-    cy->jumps = p->turn_loss[k] + p->losses;
-    cy->dissipated = 0;
-    cy->stored0 = 0;
-    cy->stored = stored_change;
+    /* the turn's cycle: the loading to it, then this branch */
+    double jumps = p->turn_loss[k] + p->losses;
     /* no dissipation on the way: the base's work is what the jumps
      * released and what stays stored (nothing, back at the start); under
      * displacement control the static curve's loop, the area between its
      * highest and lowest stable force at each h0 (the loading and the
      * unloading of this path), by parabolas through each stable leg
      * (adh_cycle_static_hysteresis): the sum of the losses, by chords
-     * along the curve, is within 0.3 % of it on the default scene */
-    adh_run view = { .rows = (adh_obs *)p->c->rows, .nrows = p->c->n };
-    p->res.hysteresis = isfinite(p->k) || !p->c->complete
-                      ? cy->jumps + stored_change
-                      : adh_cycle_static_hysteresis(&view, ADH_CYCLE_HYSTERESIS_STEP * p->m.z0);
+     * along the curve, is within 0.3 % of it on the default scene. A
+     * shallower turn in contact retraces the deepest's curve, so its loop
+     * is the same; one short of contact jumped nowhere and has none */
+    if (isfinite(p->k) || !p->c->complete || (jumps == 0 && k + 1 != p->ps.nturns)) {
+        tr->hysteresis = jumps + stored_change;
+    } else {
+        if (isnan(p->loop)) {
+            adh_run view = { .rows = (adh_obs *)p->c->rows, .nrows = p->c->n };
+            p->loop = adh_cycle_static_hysteresis(&view, ADH_CYCLE_HYSTERESIS_STEP * p->m.z0);
+        }
+        tr->hysteresis = p->loop;
+    }
+    if (k + 1 != p->ps.nturns)
+        return;
+    adh_visco_energy *cy = &p->res.cycle;
+    cy->work = p->turn_work[k] + p->work;
+    cy->jumps = jumps;
+    cy->dissipated = 0;
+    cy->stored0 = 0;
+    cy->stored = stored_change;
+    p->res.hysteresis = tr->hysteresis;
 }
 
 /* The landing of a fold at base bf on unloading: from row j back, the
@@ -699,6 +709,7 @@ static void unload(adh_path *p, size_t k)
     tr->a_turn = q.o.a;
     tr->pulloff_F = INFINITY;
     tr->jump_out_h0 = NAN;
+    tr->hysteresis = NAN;   /* until the branch ends (end_branch) */
     tr->path = (int)k + 1;
     p->run->nturns = k + 1;
     p->in_contact = q.o.a > 0;
@@ -783,6 +794,7 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     p->branch_ev = 0;
     p->pull_row = -1;
     p->deeper = NAN;
+    p->loop = NAN;
     qsort(p->ps.turns, p->ps.nturns, sizeof *p->ps.turns, cmp_desc);
     qsort(p->ps.profiles, p->ps.nprofiles, sizeof *p->ps.profiles, cmp_desc);
     adh_visco_result *r = &p->res;

@@ -549,6 +549,7 @@ static int begin_turn(adh_visco *w, size_t k)
     tr->pulloff_F = w->F_now;
     tr->pulloff_h0 = sn->h0;
     tr->jump_out_h0 = NAN;
+    tr->hysteresis = NAN;   /* until its cycle closes (close_cycle) */
     tr->path = (int)k + 1;
     w->run->nturns = k + 1;
     w->in_contact = tr->a_turn > 0;
@@ -564,6 +565,11 @@ static void close_cycle(adh_visco *w)
 {
     w->acc = accounts_now(w);
     w->acc.stored = adh_visco_energy_of(w, N_VGetArrayPointer(w->y), NULL, NULL, NULL);
+    /* every turn's cycle began at the start (its accounts the loading's to
+     * its snapshot), so its work is its hysteresis: turns.tsv's */
+    adh_turn_result *tr = turn_now(w);
+    if (tr)
+        tr->hysteresis = w->acc.work;
     if ((size_t)w->seg.path != w->nturns)
         return;
     w->res.cycle = w->acc;

@@ -195,6 +195,11 @@ static void short_turn(const fixture *f)
     ok(src == ADH_SUCCESS && st.nrows && tr && fabs(tr->max_load / st.rows[st.nrows - 1].F - 1) < 1e-3,
        "its force is the static curve's at 5 nm (%.6g against %.6g nN)", tr ? tr->max_load * 1e9 : NAN,
        st.nrows ? st.rows[st.nrows - 1].F * 1e9 : NAN);
+    /* turns.tsv's hysteresis: the turn short of contact jumped nowhere,
+     * so its cycle has none; the deepest's is the summary's */
+    ok(tr && tr->hysteresis == 0 && p.run.turns[1].hysteresis == p.r.hysteresis && p.r.hysteresis > 0,
+       "the turn short of contact has no hysteresis (%g J), the deepest the summary's (%g, %g J)",
+       tr ? tr->hysteresis : NAN, p.run.nturns == 2 ? p.run.turns[1].hysteresis : NAN, p.r.hysteresis);
     /* the turn alone: the lowest force on its branch is the turn's, at
      * its time (the loading's travel over the speed), as the integrator's */
     ps.nturns = 1;
