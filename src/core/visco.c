@@ -18,6 +18,7 @@
 #include "adhere/rings.h"
 #include "adhere/static.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 #define VISCO_START_ITERS 400   /* the start's fixed-point iterations */
 /* A crossing that has not landed in this many steps is lost (a resolved
@@ -485,8 +486,8 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     w->seg.t0 = 0, w->seg.bdot = 0, w->seg.b0 = h0;
     if (solve_start(w, h0, y, &w->b_start) != ADH_SUCCESS) {
         if (why)
-            snprintf(why, whylen, "the start h0 = %g m is not a stable point out of contact%s: start further out",
-                     h0, w->spring ? " under the spring" : "");
+            snprintf(why, whylen, "the start h0 = %s is not a stable point out of contact%s: start further out",
+                     adh_qtext(h0, ADH_Q_LENGTH).s, w->spring ? " under the spring" : "");
         return ADH_ESTALL;
     }
     w->h0_start = h0;
