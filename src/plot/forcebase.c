@@ -431,10 +431,15 @@ static int draw(adh_session *ses, const fb_fig *fg, const adh_run *run, const ch
     if (!f)
         return -1;
     int *idx = malloc((fg->nline + 2) * sizeof *idx);
+    if (!idx) {   /* not "no curve to draw": there is one, and no memory */
+        fclose(f);
+        snprintf(why, whylen, "out of memory");
+        return -1;
+    }
     fb_frame fr = { INFINITY, -INFINITY, INFINITY, -INFINITY };
-    int bad = !idx || write_data(fg, f, idx, &fr) != 0;
+    int bad = write_data(fg, f, idx, &fr) != 0;
     if (fclose(f) != 0 || bad || !(fr.bhi >= fr.blo)) {
-        snprintf(why, whylen, idx && fr.bhi >= fr.blo ? "cannot write %.3000s" : "no curve to draw", dat);
+        snprintf(why, whylen, fr.bhi >= fr.blo ? "cannot write %.3000s" : "no curve to draw", dat);
         free(idx);
         return -1;
     }
