@@ -427,11 +427,15 @@ static path_pt land_rigid(const adh_path *p, double b, double *loss)
 }
 
 /* A jump from the fold f to the landing l (the same base, the same
- * time): both rows, and its event or its count. */
+ * time): both rows (f's only when it is not the last row emitted: a jump
+ * from where the path stands), and its event or its count. */
 static void jump(adh_path *p, path_pt *f, path_pt *l, double loss)
 {
     double t = time_at(p, base_of(p, &f->o));
-    emit(p, f, t, 1);
+    if (!(p->have_last && f == &p->last))
+        emit(p, f, t, 1);
+    path_pt from = *f;   /* as written: the landing's row becomes the last */
+    f = &from;
     emit(p, l, t, 0);
     p->losses += loss;
     int before = f->o.a > 0, after = l->o.a > 0;
@@ -728,10 +732,11 @@ static void unload(adh_path *p, size_t k)
             end_branch(p, 0);
             return;
         }
-        if (j < 0) {   /* the curve's start, in contact still: a fold beyond it */
+        if (j < 0) {   /* the curve's start, in contact still: a fold beyond it, from the last row
+                          (emitted once: it was written twice, one row repeated to the digit) */
             double loss;
-            path_pt f = p->last, l = land_rigid(p, bmax, &loss);
-            jump(p, &f, &l, loss);
+            path_pt l = land_rigid(p, bmax, &loss);
+            jump(p, &p->last, &l, loss);
             end_branch(p, stored_beyond(p, &l));
             return;
         }

@@ -363,6 +363,33 @@ static void so_far(const fixture *f)
     adh_run_free(&run);
 }
 
+/* A stiff sphere (1 TPa) started at z0, where its surfaces already touch:
+ * unloading reaches the curve's start still in contact and leaves it by a
+ * fold beyond it, from the last row; that row was written twice, the same
+ * row to the digit. Under displacement control and through 100 N/m. */
+static void start_in_contact(const fixture *f, double k)
+{
+    fixture stiff = *f;
+    stiff.m.E = 1e12;
+    adh_protocol_settings ps = protocol();
+    ps.start = stiff.m.z0;
+    ps.turns[0] = isfinite(k) ? 0.2e-9 : -1e-9;
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    d.spring = k;
+    prun p = path_run(&stiff, &d, &ps);
+    size_t same = 0, out = 0;
+    const adh_obs *r = p.run.rows;
+    for (size_t i = 1; i < p.run.nrows; i++)
+        same += r[i].t == r[i - 1].t && r[i].h0 == r[i - 1].h0 && r[i].F == r[i - 1].F && r[i].base == r[i - 1].base &&
+                r[i].path == r[i - 1].path;
+    for (size_t i = 0; i < p.nev; i++)
+        out += p.ev[i].kind == ADH_VISCO_JUMP && p.ev[i].path == 1 && p.ev[i].a > 0 && !(p.ev[i].a_after > 0);
+    ok(p.rc == ADH_SUCCESS && p.run.nrows > 2 && r[0].a > 0 && out == 1 && same == 0,
+       "k = %g N/m, a 1 TPa sphere from z0 (in contact, a = %.3g nm): the jump out beyond the curve's start from the "
+       "last row, no row repeated (%zu of %zu)", k, p.run.nrows ? r[0].a * 1e9 : NAN, same, p.run.nrows);
+    adh_run_free(&p.run);
+}
+
 int main(void)
 {
     fixture f = fix_open(FIX_N, 1.0);
@@ -378,6 +405,8 @@ int main(void)
     landing_past_turn(&f, 1e-3, 5e-9);
     so_far(&f);
     batches(&f);
+    start_in_contact(&f, INFINITY);
+    start_in_contact(&f, 100);
     fix_close(&f);
     return tap_done();
 }
