@@ -69,11 +69,16 @@ static void result_reset(adh_visco_result *r)
 adh_path *adh_path_alloc(void)
 {
     adh_path *p = calloc(1, sizeof *p);
-    if (p) {
-        p->jump_in_row = (size_t)-1;
-        result_reset(&p->res);
-    }
+    if (p)
+        adh_path_clear(p);
     return p;
+}
+
+void adh_path_clear(adh_path *p)
+{
+    p->nev = p->nxs = p->nlat = 0;
+    p->jump_in_row = (size_t)-1;
+    result_reset(&p->res);
 }
 
 void adh_path_free(adh_path *p)
@@ -787,7 +792,7 @@ static int cmp_desc(const void *a, const void *b)
 int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, const adh_visco_drive *d,
                    const adh_protocol_settings *ps, adh_run *run)
 {
-    p->nev = p->nxs = p->nlat = 0;
+    adh_path_clear(p);
     p->row0 = run->nrows;
     p->c = c, p->m = *m, p->d = *d, p->ps = *ps, p->run = run;
     p->rc = ADH_SUCCESS;
@@ -795,7 +800,6 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     p->reached = 0;
     p->work = p->losses = 0;
     p->in_contact = 0;
-    p->jump_in_row = (size_t)-1;
     p->branch_ev = 0;
     p->pull_row = -1;
     p->deeper = NAN;
@@ -803,7 +807,6 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     qsort(p->ps.turns, p->ps.nturns, sizeof *p->ps.turns, cmp_desc);
     qsort(p->ps.profiles, p->ps.nprofiles, sizeof *p->ps.profiles, cmp_desc);
     adh_visco_result *r = &p->res;
-    result_reset(r);
     if (c->n == 0)
         return ADH_SUCCESS;
     p->b_start = row_base(p, 0);

@@ -363,6 +363,40 @@ static void so_far(const fixture *f)
     adh_run_free(&run);
 }
 
+/* The same drive set again (the TUI's edit, its restart): until the new
+ * walk, the summary knows nothing yet, as a fresh drive's says; it was the
+ * last walk's (its start, 10.5 nm, beside a new start of 12 nm). */
+static void set_again(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    adh_run run, fresh_run;
+    adh_run_init(&run);
+    adh_run_init(&fresh_run);
+    adh_drive *dr = adh_drive_alloc(&adh_rule_path, f->g, f->k), *fresh = adh_drive_alloc(&adh_rule_path, f->g, f->k);
+    adh_drive_set(dr, &f->m, NULL, &ps, &run);
+    int rc = adh_runner_drive(dr, NULL, NULL);
+    adh_visco_result first, again, new;
+    adh_rule_time_summary(dr, &first);
+    ps.start = 12e-9;
+    adh_run_free(&run);
+    adh_run_init(&run);
+    adh_drive_set(dr, &f->m, NULL, &ps, &run);
+    adh_drive_set(fresh, &f->m, NULL, &ps, &fresh_run);
+    adh_rule_time_summary(dr, &again);
+    adh_rule_time_summary(fresh, &new);
+    const adh_visco_event *ev;
+    ok(rc == ADH_SUCCESS && first.jumps == 2 && !isnan(first.start_h0) && isnan(again.start_h0) &&
+       isnan(again.start_base) && isnan(again.jump_in_h0) && isnan(again.pulloff_F) && isnan(again.hysteresis) &&
+       again.jumps == 0 && again.lattice_jumps == 0 && again.time == 0 && again.cycle.work == 0 &&
+       adh_rule_time_events(dr, &ev) == 0 && isnan(new.start_h0) && new.jumps == 0 && new.time == 0,
+       "set again, before the new walk: the summary knows nothing yet, as a fresh drive's (start %g, was %g m)",
+       again.start_h0, first.start_h0);
+    adh_drive_free(dr);
+    adh_drive_free(fresh);
+    adh_run_free(&run);
+    adh_run_free(&fresh_run);
+}
+
 /* A stiff sphere (1 TPa) started at z0, where its surfaces already touch:
  * unloading reaches the curve's start still in contact and leaves it by a
  * fold beyond it, from the last row; that row was written twice, the same
@@ -405,6 +439,7 @@ int main(void)
     landing_past_turn(&f, 1e-3, 5e-9);
     so_far(&f);
     batches(&f);
+    set_again(&f);
     start_in_contact(&f, INFINITY);
     start_in_contact(&f, 100);
     fix_close(&f);
