@@ -137,6 +137,7 @@ $(BUILD)/%.o: %.c | deps
 
 # a test that compiles a source of the library with a bound of its own
 $(BUILD)/tests/test_path_ubound: src/core/rule_path.c
+$(BUILD)/tests/test_forcebase_oom: src/plot/forcebase.c
 
 $(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(wildcard tests/unit/*.h) $(LIBS) | deps
 	@mkdir -p $(dir $@)

@@ -56,6 +56,11 @@ typedef struct adh_path adh_path;
 
 adh_path *adh_path_alloc(void);
 void adh_path_free(adh_path *p);
+/* Forgets the last walk: no rows, no events, nothing measured (its
+ * summary NAN where nothing is known, zero counts). A driver that solves
+ * its curve again calls it, so that the summary asked before the next
+ * walk is no earlier walk's. */
+void adh_path_clear(adh_path *p);
 
 /* Walks curve c for material m under drive d (speeds, dwell, spring) and
  * protocol ps (turns reached by h0, profiles at positions of the base),

@@ -26,6 +26,10 @@ typedef struct adh_turn_result {
     double pulloff_h0;   /* where that minimum is */
     double jump_out_h0;  /* first position out of contact on unloading; NAN if none */
     int path;            /* its path number in the rows */
+    double hysteresis;   /* physical time's, J: the base's net work over this turn's cycle (loading to it,
+                            the dwell, unloading back to the start), as its step rule accounted it, the
+                            deepest turn's its summary's; NAN until that cycle closes, and in the other
+                            modes (their rows' area between the branches, adh_cycle_hysteresis) */
 } adh_turn_result;
 
 typedef struct adh_run {

@@ -107,6 +107,7 @@ size_t adh_cycle_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, si
         tr->pulloff_F = INFINITY;
         tr->pulloff_h0 = NAN;
         tr->jump_out_h0 = NAN;
+        tr->hysteresis = NAN;
         int touched = 0;
         for (size_t j = i; j < n && rows[j].branch < 0 && rows[j].path == p; j++) {
             if (rows[j].F < tr->pulloff_F) {

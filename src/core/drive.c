@@ -427,6 +427,7 @@ static int record_turn(adh_drive *d, const adh_obs *o)
     tr->pulloff_h0 = NAN;
     tr->jump_out_h0 = NAN;
     tr->path = 0;
+    tr->hysteresis = NAN;
     return ADH_SUCCESS;
 }
 

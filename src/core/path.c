@@ -54,6 +54,7 @@ struct adh_path {
     adh_obs turn_o[ADH_MAX_TURNS];
     size_t reached;
     double deeper;              /* the curve's end a snap-in's landing needs (NAN: none) */
+    double loop;                /* the static curve's loop, once asked (NAN: not yet) */
 };
 
 /* Nothing measured yet: no jump, no pull-off, no cycle. */
@@ -68,11 +69,16 @@ static void result_reset(adh_visco_result *r)
 adh_path *adh_path_alloc(void)
 {
     adh_path *p = calloc(1, sizeof *p);
-    if (p) {
-        p->jump_in_row = (size_t)-1;
-        result_reset(&p->res);
-    }
+    if (p)
+        adh_path_clear(p);
     return p;
+}
+
+void adh_path_clear(adh_path *p)
+{
+    p->nev = p->nxs = p->nlat = 0;
+    p->jump_in_row = (size_t)-1;
+    result_reset(&p->res);
 }
 
 void adh_path_free(adh_path *p)
@@ -426,11 +432,15 @@ static path_pt land_rigid(const adh_path *p, double b, double *loss)
 }
 
 /* A jump from the fold f to the landing l (the same base, the same
- * time): both rows, and its event or its count. */
+ * time): both rows (f's only when it is not the last row emitted: a jump
+ * from where the path stands), and its event or its count. */
 static void jump(adh_path *p, path_pt *f, path_pt *l, double loss)
 {
     double t = time_at(p, base_of(p, &f->o));
-    emit(p, f, t, 1);
+    if (!(p->have_last && f == &p->last))
+        emit(p, f, t, 1);
+    path_pt from = *f;   /* as written: the landing's row becomes the last */
+    f = &from;
     emit(p, l, t, 0);
     p->losses += loss;
     int before = f->o.a > 0, after = l->o.a > 0;
@@ -639,26 +649,35 @@ static void end_branch(adh_path *p, double stored_change)
     adh_turn_result *tr = &p->run->turns[k];
     pulloff(p, tr);
     p->res.time = p->last.o.t;
-    if (k + 1 != p->ps.nturns)
-        return;
-    /* the deepest turn's cycle: the loading to it, then this branch */
-    adh_visco_energy *cy = &p->res.cycle;
-    cy->work = p->turn_work[k] + p->work;
-    cy->jumps = p->turn_loss[k] + p->losses;
-    cy->dissipated = 0;
-    cy->stored0 = 0;
-    cy->stored = stored_change;
+    /* the turn's cycle: the loading to it, then this branch */
+    double jumps = p->turn_loss[k] + p->losses;
     /* no dissipation on the way: the base's work is what the jumps
      * released and what stays stored (nothing, back at the start); under
      * displacement control the static curve's loop, the area between its
      * highest and lowest stable force at each h0 (the loading and the
      * unloading of this path), by parabolas through each stable leg
      * (adh_cycle_static_hysteresis): the sum of the losses, by chords
-     * along the curve, is within 0.3 % of it on the default scene */
-    adh_run view = { .rows = (adh_obs *)p->c->rows, .nrows = p->c->n };
-    p->res.hysteresis = isfinite(p->k) || !p->c->complete
-                      ? cy->jumps + stored_change
-                      : adh_cycle_static_hysteresis(&view, ADH_CYCLE_HYSTERESIS_STEP * p->m.z0);
+     * along the curve, is within 0.3 % of it on the default scene. A
+     * shallower turn in contact retraces the deepest's curve, so its loop
+     * is the same; one short of contact jumped nowhere and has none */
+    if (isfinite(p->k) || !p->c->complete || (jumps == 0 && k + 1 != p->ps.nturns)) {
+        tr->hysteresis = jumps + stored_change;
+    } else {
+        if (isnan(p->loop)) {
+            adh_run view = { .rows = (adh_obs *)p->c->rows, .nrows = p->c->n };
+            p->loop = adh_cycle_static_hysteresis(&view, ADH_CYCLE_HYSTERESIS_STEP * p->m.z0);
+        }
+        tr->hysteresis = p->loop;
+    }
+    if (k + 1 != p->ps.nturns)
+        return;
+    adh_visco_energy *cy = &p->res.cycle;
+    cy->work = p->turn_work[k] + p->work;
+    cy->jumps = jumps;
+    cy->dissipated = 0;
+    cy->stored0 = 0;
+    cy->stored = stored_change;
+    p->res.hysteresis = tr->hysteresis;
 }
 
 /* The landing of a fold at base bf on unloading: from row j back, the
@@ -699,6 +718,7 @@ static void unload(adh_path *p, size_t k)
     tr->a_turn = q.o.a;
     tr->pulloff_F = INFINITY;
     tr->jump_out_h0 = NAN;
+    tr->hysteresis = NAN;   /* until the branch ends (end_branch) */
     tr->path = (int)k + 1;
     p->run->nturns = k + 1;
     p->in_contact = q.o.a > 0;
@@ -717,10 +737,11 @@ static void unload(adh_path *p, size_t k)
             end_branch(p, 0);
             return;
         }
-        if (j < 0) {   /* the curve's start, in contact still: a fold beyond it */
+        if (j < 0) {   /* the curve's start, in contact still: a fold beyond it, from the last row
+                          (emitted once: it was written twice, one row repeated to the digit) */
             double loss;
-            path_pt f = p->last, l = land_rigid(p, bmax, &loss);
-            jump(p, &f, &l, loss);
+            path_pt l = land_rigid(p, bmax, &loss);
+            jump(p, &p->last, &l, loss);
             end_branch(p, stored_beyond(p, &l));
             return;
         }
@@ -771,7 +792,7 @@ static int cmp_desc(const void *a, const void *b)
 int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, const adh_visco_drive *d,
                    const adh_protocol_settings *ps, adh_run *run)
 {
-    p->nev = p->nxs = p->nlat = 0;
+    adh_path_clear(p);
     p->row0 = run->nrows;
     p->c = c, p->m = *m, p->d = *d, p->ps = *ps, p->run = run;
     p->rc = ADH_SUCCESS;
@@ -779,14 +800,13 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     p->reached = 0;
     p->work = p->losses = 0;
     p->in_contact = 0;
-    p->jump_in_row = (size_t)-1;
     p->branch_ev = 0;
     p->pull_row = -1;
     p->deeper = NAN;
+    p->loop = NAN;
     qsort(p->ps.turns, p->ps.nturns, sizeof *p->ps.turns, cmp_desc);
     qsort(p->ps.profiles, p->ps.nprofiles, sizeof *p->ps.profiles, cmp_desc);
     adh_visco_result *r = &p->res;
-    result_reset(r);
     if (c->n == 0)
         return ADH_SUCCESS;
     p->b_start = row_base(p, 0);

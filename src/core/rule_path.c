@@ -90,6 +90,7 @@ static int restart(path_rule *r)
     adh_run_init(&r->run);
     r->next = 0;
     r->built = 0;
+    adh_path_clear(r->path);   /* the summary until the walk: nothing yet, not the last walk's */
     r->kept_first = 0;
     r->brc = ADH_SUCCESS;
     int rc = adh_static_set(r->sw, &r->m, &r->ss);

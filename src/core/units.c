@@ -2,6 +2,7 @@
 #include "adhere/status.h"
 
 #include <errno.h>
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -144,7 +145,18 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
             return ADH_EINVAL;
         }
     }
+    /* below a double's normal range (strtod's ERANGE for a tiny number, or
+     * the unit's factor taking it there): it underflows, to 0 or to a
+     * number that has lost its digits, which is no out-of-range overflow */
+    int under = (errno == ERANGE && fabs(v) < 1) || (v != 0 && fabs(v * factor) < DBL_MIN);
     v *= factor;
+    if (under) {
+        if (why)
+            snprintf(why, whylen, "'%s' underflows%s (a double keeps no magnitude below %.2g%s%s): write 0 "
+                     "for zero, or a magnitude of at least %.2g%s%s", buf, v == 0 ? " to zero" : "", DBL_MIN,
+                     *unit_sym[q] ? " " : "", unit_sym[q], DBL_MIN, *unit_sym[q] ? " " : "", unit_sym[q]);
+        return ADH_EINVAL;
+    }
     if (!isfinite(v) || errno == ERANGE) {
         if (why)
             snprintf(why, whylen, "'%s' is out of the range of finite numbers", buf);

@@ -18,6 +18,7 @@
 #include "adhere/rings.h"
 #include "adhere/static.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 
 #define VISCO_START_ITERS 400   /* the start's fixed-point iterations */
 /* A crossing that has not landed in this many steps is lost (a resolved
@@ -485,8 +486,8 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     w->seg.t0 = 0, w->seg.bdot = 0, w->seg.b0 = h0;
     if (solve_start(w, h0, y, &w->b_start) != ADH_SUCCESS) {
         if (why)
-            snprintf(why, whylen, "the start h0 = %g m is not a stable point out of contact%s: start further out",
-                     h0, w->spring ? " under the spring" : "");
+            snprintf(why, whylen, "the start h0 = %s is not a stable point out of contact%s: start further out",
+                     adh_qtext(h0, ADH_Q_LENGTH).s, w->spring ? " under the spring" : "");
         return ADH_ESTALL;
     }
     w->h0_start = h0;
@@ -549,6 +550,7 @@ static int begin_turn(adh_visco *w, size_t k)
     tr->pulloff_F = w->F_now;
     tr->pulloff_h0 = sn->h0;
     tr->jump_out_h0 = NAN;
+    tr->hysteresis = NAN;   /* until its cycle closes (close_cycle) */
     tr->path = (int)k + 1;
     w->run->nturns = k + 1;
     w->in_contact = tr->a_turn > 0;
@@ -564,6 +566,11 @@ static void close_cycle(adh_visco *w)
 {
     w->acc = accounts_now(w);
     w->acc.stored = adh_visco_energy_of(w, N_VGetArrayPointer(w->y), NULL, NULL, NULL);
+    /* every turn's cycle began at the start (its accounts the loading's to
+     * its snapshot), so its work is its hysteresis: turns.tsv's */
+    adh_turn_result *tr = turn_now(w);
+    if (tr)
+        tr->hysteresis = w->acc.work;
     if ((size_t)w->seg.path != w->nturns)
         return;
     w->res.cycle = w->acc;

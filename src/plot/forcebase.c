@@ -329,23 +329,56 @@ static double turn_h0(const adh_run *run, int path)
     return NAN;
 }
 
+/* How many drawn retractions begin where line i's does (i's among them):
+ * turns a snap passed together (a soft spring's snap-in landing past
+ * both) are one turn, the same rows from the same point; in *first
+ * whether i is the first of them. 0 for a line that is no retraction. */
+static int same_turn(const fb_fig *fg, const adh_run *run, const int *idx, size_t i, int *first)
+{
+    int p = fg->line[i].path, n = 0;
+    double h = p > 0 ? turn_h0(run, p) : NAN;
+    *first = 1;
+    if (!(p > 0) || idx[i] < 0)
+        return 0;
+    for (size_t j = 0; j < fg->nline; j++) {
+        int q = fg->line[j].path;
+        if (j == i || (q > 0 && idx[j] >= 0 && isfinite(h) && turn_h0(run, q) == h)) {
+            n++;
+            *first &= j >= i;
+        }
+    }
+    return n;
+}
+
+/* The key's entries: each curve drawn, a retraction once per turn point. */
+static int key_lines(const fb_fig *fg, const adh_run *run, const int *idx)
+{
+    int n = 0, first;
+    for (size_t i = 0; i < fg->nline; i++)
+        n += idx[i] >= 0 && (same_turn(fg, run, idx, i, &first) == 0 || first);
+    return n;
+}
+
 /* The plot command, clause by clause: the static curve under the run, the
  * approach, the retractions, the snap points over them. */
 static void plot_clauses(const fb_fig *fg, const adh_run *run, const int *idx, const char *qdat, FILE *c)
 {
     fprintf(c, "plot 0 ls 7 notitle");
-    int nunload = 0;
+    int nunload = 0, first;
     for (size_t i = 0; i < fg->nline; i++)
         nunload += fg->line[i].path > 0 && idx[i] >= 0;
     for (size_t i = 0; i < fg->nline; i++) {
-        int p = fg->line[i].path;
-        if (idx[i] < 0)
+        int p = fg->line[i].path, same = same_turn(fg, run, idx, i, &first);
+        if (idx[i] < 0 || !first)   /* a turn passed in one snap with an earlier one: its rows drawn already */
             continue;
         fprintf(c, ", \\\n  %s index %d using ($1*Bu):($2*Fu) with lines ", qdat, idx[i]);
         if (p < 0)
             fprintf(c, "lc rgb \"#999999\" lw 1 dt adh_unstable_dash title \"static curve (unstable between folds)\"");
         else if (p == 0)
             fprintf(c, "ls 1 title \"approach\"");
+        else if (nunload > 1 && isfinite(turn_h0(run, p)) && same > 1)
+            fprintf(c, "lc rgb adh_ucol(%d) lw adh_unloading_width dt adh_udash(%d) title \"retraction from "
+                       "h_0 = %.3g nm (%d turns, one snap)\"", p, p, turn_h0(run, p) * 1e9, same);
         else if (nunload > 1 && isfinite(turn_h0(run, p)))
             fprintf(c, "lc rgb adh_ucol(%d) lw adh_unloading_width dt adh_udash(%d) title \"retraction from "
                        "h_0 = %.3g nm\"", p, p, turn_h0(run, p) * 1e9);
@@ -398,10 +431,15 @@ static int draw(adh_session *ses, const fb_fig *fg, const adh_run *run, const ch
     if (!f)
         return -1;
     int *idx = malloc((fg->nline + 2) * sizeof *idx);
+    if (!idx) {   /* not "no curve to draw": there is one, and no memory */
+        fclose(f);
+        snprintf(why, whylen, "out of memory");
+        return -1;
+    }
     fb_frame fr = { INFINITY, -INFINITY, INFINITY, -INFINITY };
-    int bad = !idx || write_data(fg, f, idx, &fr) != 0;
+    int bad = write_data(fg, f, idx, &fr) != 0;
     if (fclose(f) != 0 || bad || !(fr.bhi >= fr.blo)) {
-        snprintf(why, whylen, idx && fr.bhi >= fr.blo ? "cannot write %.3000s" : "no curve to draw", dat);
+        snprintf(why, whylen, fr.bhi >= fr.blo ? "cannot write %.3000s" : "no curve to draw", dat);
         free(idx);
         return -1;
     }
@@ -409,8 +447,8 @@ static int draw(adh_session *ses, const fb_fig *fg, const adh_run *run, const ch
     const char *fu, *bu;
     adh_force_unit(fmax(fabs(fr.flo), fabs(fr.fhi)), &fs, &fu);
     length_unit(fmax(fabs(fr.blo), fabs(fr.bhi)), &bs, &bu);
-    int nkey = 0;
-    for (size_t i = 0; i < fg->nline + 2; i++)
+    int nkey = key_lines(fg, run, idx);
+    for (size_t i = fg->nline; i < fg->nline + 2; i++)
         nkey += idx[i] >= 0;
     for (size_t i = 0; i < fg->njump; i++)
         if (!isfinite(fg->jump[i].to.F)) {

@@ -71,13 +71,18 @@ static void put(int y, int x, int w, attr_t attr, const char *fmt, ...)
     attroff(attr);
 }
 
+/* The columns s takes (a Greek letter one, in two bytes). */
+static size_t text_cols(const char *s)
+{
+    size_t cols = mbstowcs(NULL, s, 0);
+    return cols == (size_t)-1 ? strlen(s) : cols;
+}
+
 /* s padded with blanks to w columns (s may hold 2-byte Greek letters, one
  * column each): printf's %-*s counts bytes. */
 static const char *pad(const char *s, int w, char *buf, size_t len)
 {
-    size_t cols = mbstowcs(NULL, s, 0);
-    if (cols == (size_t)-1)
-        cols = strlen(s);
+    size_t cols = text_cols(s);
     size_t l = strlen(s), blanks = (int)cols < w ? (size_t)(w - (int)cols) : 0;
     if (!len)
         return buf;
@@ -280,8 +285,19 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     q(v, d->h_star, ADH_Q_LENGTH, hs, sizeof hs);
     q(v, m->md_jump_out, ADH_Q_LENGTH, jo, sizeof jo);
     put(y, x, w, A_BOLD, " Derived from the parameters; models");
-    put(y + 1, x, w, A_NORMAL, "  %s %.4g   %s %.4g   %s %s", gk(v, "\xcf\x83", "sigma"), d->sigma,
-        gk(v, "\xce\xbc", "mu"), d->mu, gk(v, "\xce\xb3", "gamma"), g);
+    /* sigma, mu and gamma three blanks apart, fewer where the column is
+     * narrower (ASCII's names are longer: at 100 columns the cut took
+     * gamma's unit, "mJ/m^"), and mu left out before gamma's unit is */
+    char line[192];
+    const char *sg = gk(v, "\xcf\x83", "sigma"), *mu = gk(v, "\xce\xbc", "mu"), *ga = gk(v, "\xce\xb3", "gamma");
+    for (int gap = 3; gap >= 1; gap--) {
+        snprintf(line, sizeof line, "  %s %.4g%*s%s %.4g%*s%s %s", sg, d->sigma, gap, "", mu, d->mu, gap, "", ga, g);
+        if ((int)text_cols(line) <= w)
+            break;
+    }
+    if ((int)text_cols(line) > w)
+        snprintf(line, sizeof line, "  %s %.4g  %s %s", sg, d->sigma, ga, g);
+    put(y + 1, x, w, A_NORMAL, "%s", line);
     /* the grid's resolution of the contact edge, as E, A, z0, R, N or the
      * spacing change: the core's check (adh_grid_check), shown */
     const adh_grid_report *gr = &s->gridres;

@@ -330,8 +330,10 @@ static int run_done(tui *t)
         fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
         fmtq(r->time, ADH_Q_TIME, tt, sizeof tt);
         fmtq(r->hysteresis, ADH_Q_WORK, hy, sizeof hy);
-        say(t, 0, "cycle complete after %s (%zu steps, %zu jumps): pull-off %s, hysteresis %s", tt,
-            t->sim.curve.nrows, r->jumps, pl, hy);
+        /* an elastic sphere walks its static curve: its rows are the
+         * curve's points, no integrator steps */
+        say(t, 0, "cycle complete after %s (%zu %s, %zu jumps): pull-off %s, hysteresis %s", tt,
+            t->sim.curve.nrows, config(t)->spec.time.sls ? "steps" : "points", r->jumps, pl, hy);
         return 1;
     }
     if (is_curve(t)) {

@@ -81,6 +81,12 @@ check "... and no temporary is left" sh -c "! ls -a '$TMP/full' | grep -v '^\.ad
 check "adhere fit without --data is refused ($(cat "$TMP/e1"))" sh -c "[ $? -eq 2 ] && grep -q 'adhere fit needs the measured curve: --data=FILE' '$TMP/e1'"
 "$ADHERE" fit --data="$DATA" --free=E,gamma fig1 >/dev/null 2>"$TMP/e2"
 check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep -q "^adhere: --free: 'gamma' is not a parameter: use E, A, z0, R, offset and baseline" "$TMP/e2"
+# a number below a double's range underflows (it was called out of the
+# range of finite numbers, as 1e400 is): said so, and what may be written
+"$ADHERE" fit --data="$DATA" --offset=1e-400m -o "$TMP/underout" fig1 >/dev/null 2>"$TMP/e4"
+rc=$?
+check "--offset=1e-400m: exit 2, it underflows to zero, 0 or at least 2.2e-308 m allowed, nothing written ($rc: $(cat "$TMP/e4"))" \
+    sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --offset: '1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.2e-308 m\" '$TMP/e4' && [ ! -e '$TMP/underout' ]"
 "$ADHERE" --batch --free=E fig1 >/dev/null 2>"$TMP/e3"
 check "--free outside adhere fit is refused ($(cat "$TMP/e3"))" grep -q "are adhere fit's" "$TMP/e3"
 # an empty list is refused as every other flag's empty value is (it was

@@ -391,6 +391,15 @@ land=$(awk -F'\t' -v k="$k" '$1 == "jump" {d = $9 - k * ($8 - $4); print (d < 0 
 # landing's base is h0 - F/k again, equal to the snap's to rounding)
 check '[ -n "$a" ] && awk -v k="$a" "!NF {b++; brk = 1; next} {if (b >= 2) i++; b = 0} i == k {if (!brk && n && \$1 > p + 1e-12 * (p < 0 ? -p : p)) bad++; p = \$1; n++; brk = 0} END {exit bad || n < 10}" "$T/te.gp.forcebase.dat" && [ "$(grep -c "^set arrow" "$T/te.gp")" -eq 0 ] && [ "$land" = 1 ]' \
     "elastic physical time: the approach's base never rises, the snap-in from base $eb m lands past the turn on the spring's line, no arrow"
+# turns a snap-in passes together (through 10 N/m the landing at -2.79 nm
+# passes -1 and -2 nm) unload from one point, the same rows: the key named
+# that retraction twice; now once, saying so, and the turn at -3 nm apart
+D=$T/tt
+GPLOG=$T/tt.gp ADHERE_GNUPLOT=$T/logging-gnuplot "$BIN" $RUN --turns=-1nm,-2nm,-3nm --mode=time --spring=10N/m \
+    --plots=force -o "$D" 2>/dev/null
+same=$(grep -v '^#' "$D/turns.tsv" | awk -F'\t' 'NR > 1 {n[$1]++} END {for (h in n) if (n[h] == 2) print h}')
+check '[ -n "$same" ] && [ "$(grep -o "title \"retraction[^\"]*\"" "$T/tt.gp" | sort | uniq -d)" = "" ] && [ "$(grep -c "title \"retraction from h_0 = " "$T/tt.gp")" -eq 2 ] && grep -q "title \"retraction from h_0 = $(awk "BEGIN {printf \"%.3g\", $same * 1e9}") nm (2 turns, one snap)\"" "$T/tt.gp" && grep -q "title \"retraction from h_0 = -3 nm\"" "$T/tt.gp"' \
+    "turns at -1 and -2 nm both passed in the snap-in (at $same m): one retraction in force-base.png's key, said so, and -3 nm's"
 # the same directory run again without a spring: the earlier figure goes
 "$BIN" $RUN -E 1GPa --turn=-2nm --mode=static --plots=force -o "$T/sk" 2>/dev/null
 check '[ -s "$T/sk/force.png" ] && [ ! -e "$T/sk/force-base.png" ]' \

@@ -37,15 +37,15 @@ wait_for() {
     return 1
 }
 check() { what=$1; shift; if "$@"; then pass "$what"; else fail "$what"; fi; }
-# start: a fresh session running adhere in a 100x32 terminal; its exit
-# status lands in $work/exit.
+# start [LOCALE]: a fresh session running adhere in a 100x32 terminal
+# (LC_ALL C.UTF-8 unless given); its exit status lands in $work/exit.
 start() {
     rm -f "$work/exit" "$work/stty"
     T kill-server 2>/dev/null
     k=$((k + 1))
     sock=adhere-test-$$-$k
     T new-session -d -s t -x 100 -y 32 \
-        "cd '$work' && LC_ALL=C.UTF-8 '$bin' 2>'$work/stderr'; echo \$? >'$work/exit'; stty -a >'$work/stty'; sleep 60"
+        "cd '$work' && LC_ALL=${1:-C.UTF-8} '$bin' 2>'$work/stderr'; echo \$? >'$work/exit'; stty -a >'$work/stty'; sleep 60"
 }
 exit_status() {
     i=0
@@ -120,6 +120,16 @@ check "and nothing is wider than 80 columns" [ "$(screen | wc -L)" -le 80 ]
 T send-keys -t t q
 check "q quits with status 0" [ "$(exit_status)" = 0 ]
 check "the terminal is restored (the TUI is gone from the screen)" sh -c "! tmux -L '$sock' capture-pane -p -t t | grep -q 'Parameters'"
+
+# An ASCII terminal (LC_ALL=C) names sigma, mu and gamma in letters: at
+# 100 columns the derived panel's line was cut in gamma's unit ("mJ/m^")
+start C
+check "LC_ALL=C at 100 columns: the derived panel shows gamma with its unit whole, mJ/m^2" \
+    wait_for "  sigma 7.503  mu 6.084  gamma 7.958 mJ/m^2"
+T resize-window -t t -x 80 -y 32
+check "... and at 80 columns (mu makes room): sigma 7.503  gamma 7.958 mJ/m^2" wait_for "  sigma 7.503  gamma 7.958 mJ/m^2"
+T send-keys -t t q
+check "... q quits with status 0" [ "$(exit_status)" = 0 ]
 
 start
 wait_for "? lists every key" >/dev/null

@@ -195,6 +195,11 @@ static void short_turn(const fixture *f)
     ok(src == ADH_SUCCESS && st.nrows && tr && fabs(tr->max_load / st.rows[st.nrows - 1].F - 1) < 1e-3,
        "its force is the static curve's at 5 nm (%.6g against %.6g nN)", tr ? tr->max_load * 1e9 : NAN,
        st.nrows ? st.rows[st.nrows - 1].F * 1e9 : NAN);
+    /* turns.tsv's hysteresis: the turn short of contact jumped nowhere,
+     * so its cycle has none; the deepest's is the summary's */
+    ok(tr && tr->hysteresis == 0 && p.run.turns[1].hysteresis == p.r.hysteresis && p.r.hysteresis > 0,
+       "the turn short of contact has no hysteresis (%g J), the deepest the summary's (%g, %g J)",
+       tr ? tr->hysteresis : NAN, p.run.nturns == 2 ? p.run.turns[1].hysteresis : NAN, p.r.hysteresis);
     /* the turn alone: the lowest force on its branch is the turn's, at
      * its time (the loading's travel over the speed), as the integrator's */
     ps.nturns = 1;
@@ -358,6 +363,67 @@ static void so_far(const fixture *f)
     adh_run_free(&run);
 }
 
+/* The same drive set again (the TUI's edit, its restart): until the new
+ * walk, the summary knows nothing yet, as a fresh drive's says; it was the
+ * last walk's (its start, 10.5 nm, beside a new start of 12 nm). */
+static void set_again(const fixture *f)
+{
+    adh_protocol_settings ps = protocol();
+    adh_run run, fresh_run;
+    adh_run_init(&run);
+    adh_run_init(&fresh_run);
+    adh_drive *dr = adh_drive_alloc(&adh_rule_path, f->g, f->k), *fresh = adh_drive_alloc(&adh_rule_path, f->g, f->k);
+    adh_drive_set(dr, &f->m, NULL, &ps, &run);
+    int rc = adh_runner_drive(dr, NULL, NULL);
+    adh_visco_result first, again, new;
+    adh_rule_time_summary(dr, &first);
+    ps.start = 12e-9;
+    adh_run_free(&run);
+    adh_run_init(&run);
+    adh_drive_set(dr, &f->m, NULL, &ps, &run);
+    adh_drive_set(fresh, &f->m, NULL, &ps, &fresh_run);
+    adh_rule_time_summary(dr, &again);
+    adh_rule_time_summary(fresh, &new);
+    const adh_visco_event *ev;
+    ok(rc == ADH_SUCCESS && first.jumps == 2 && !isnan(first.start_h0) && isnan(again.start_h0) &&
+       isnan(again.start_base) && isnan(again.jump_in_h0) && isnan(again.pulloff_F) && isnan(again.hysteresis) &&
+       again.jumps == 0 && again.lattice_jumps == 0 && again.time == 0 && again.cycle.work == 0 &&
+       adh_rule_time_events(dr, &ev) == 0 && isnan(new.start_h0) && new.jumps == 0 && new.time == 0,
+       "set again, before the new walk: the summary knows nothing yet, as a fresh drive's (start %g, was %g m)",
+       again.start_h0, first.start_h0);
+    adh_drive_free(dr);
+    adh_drive_free(fresh);
+    adh_run_free(&run);
+    adh_run_free(&fresh_run);
+}
+
+/* A stiff sphere (1 TPa) started at z0, where its surfaces already touch:
+ * unloading reaches the curve's start still in contact and leaves it by a
+ * fold beyond it, from the last row; that row was written twice, the same
+ * row to the digit. Under displacement control and through 100 N/m. */
+static void start_in_contact(const fixture *f, double k)
+{
+    fixture stiff = *f;
+    stiff.m.E = 1e12;
+    adh_protocol_settings ps = protocol();
+    ps.start = stiff.m.z0;
+    ps.turns[0] = isfinite(k) ? 0.2e-9 : -1e-9;
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    d.spring = k;
+    prun p = path_run(&stiff, &d, &ps);
+    size_t same = 0, out = 0;
+    const adh_obs *r = p.run.rows;
+    for (size_t i = 1; i < p.run.nrows; i++)
+        same += r[i].t == r[i - 1].t && r[i].h0 == r[i - 1].h0 && r[i].F == r[i - 1].F && r[i].base == r[i - 1].base &&
+                r[i].path == r[i - 1].path;
+    for (size_t i = 0; i < p.nev; i++)
+        out += p.ev[i].kind == ADH_VISCO_JUMP && p.ev[i].path == 1 && p.ev[i].a > 0 && !(p.ev[i].a_after > 0);
+    ok(p.rc == ADH_SUCCESS && p.run.nrows > 2 && r[0].a > 0 && out == 1 && same == 0,
+       "k = %g N/m, a 1 TPa sphere from z0 (in contact, a = %.3g nm): the jump out beyond the curve's start from the "
+       "last row, no row repeated (%zu of %zu)", k, p.run.nrows ? r[0].a * 1e9 : NAN, same, p.run.nrows);
+    adh_run_free(&p.run);
+}
+
 int main(void)
 {
     fixture f = fix_open(FIX_N, 1.0);
@@ -373,6 +439,9 @@ int main(void)
     landing_past_turn(&f, 1e-3, 5e-9);
     so_far(&f);
     batches(&f);
+    set_again(&f);
+    start_in_contact(&f, INFINITY);
+    start_in_contact(&f, 100);
     fix_close(&f);
     return tap_done();
 }

@@ -115,7 +115,7 @@ static void visco_stops(const adh_grid *g, const adh_kernel *k, const adh_materi
     adh_run run;
     int rc = visco_run(g, k, m, 200000, 0.3e-9, &run);
     ok(rc == ADH_ESTALL && run.nrows == 0 &&
-       says(&run, (const char *[]){ "the start h0 = 3e-10 m is not a stable point out of contact", "start further out",
+       says(&run, (const char *[]){ "the start h0 = 300 pm is not a stable point out of contact", "start further out",
                                     NULL }) && run.fix == ADH_FIX_START,
        "physical time from inside the snap-in: the start named, start further out (%s: %s)", adh_strerror(rc), run.why);
     adh_run_free(&run);

@@ -51,6 +51,12 @@ int main(void)
     rejects("-inf", ADH_Q_PRESSURE, "not a number");
     rejects("0x10", ADH_Q_LENGTH, "not a number");
     rejects("1e999", ADH_Q_LENGTH, "range");
+    /* below a double's normal range: an underflow, not "out of range" */
+    rejects("1e-400m", ADH_Q_LENGTH, "underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0");
+    rejects("1e-310", ADH_Q_NONE, "underflows (a double keeps no magnitude below 2.2e-308)");
+    rejects("1e-300pm", ADH_Q_LENGTH, "underflows");
+    accepts("0m", ADH_Q_LENGTH, 0);
+    accepts("3e-308m", ADH_Q_LENGTH, 3e-308);
     rejects("5 furlongs", ADH_Q_LENGTH, "unknown unit");
     rejects("", ADH_Q_LENGTH, "not a number");
     rejects("5nm", ADH_Q_NONE, "plain number");

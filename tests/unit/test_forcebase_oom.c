@@ -1,0 +1,135 @@
+/* force-base.png when memory runs out (SQLite style: every allocation of
+ * forcebase.c fails once, in turn): each says "out of memory", never "no
+ * curve to draw" (the figure's point indices, allocated once the curves
+ * are built, said that), and nothing is half-drawn (gnuplot is not reached:
+ * this session has none). forcebase.c is compiled here with its malloc,
+ * calloc and realloc counted. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static long calls, fail_at = -1;
+
+static int fails(void)
+{
+    return ++calls == fail_at;
+}
+static void *count_malloc(size_t n)
+{
+    return fails() ? NULL : malloc(n);
+}
+static void *count_calloc(size_t n, size_t sz)
+{
+    return fails() ? NULL : calloc(n, sz);
+}
+static void *count_realloc(void *p, size_t n)
+{
+    return fails() ? NULL : realloc(p, n);
+}
+#define malloc count_malloc
+#define calloc count_calloc
+#define realloc count_realloc
+#include "plot/forcebase.c"   /* in place of libadhere-plot.a's */
+#undef malloc
+#undef calloc
+#undef realloc
+
+#include "tap.h"
+
+/* A run in physical time through k = 10 N/m: an approach with a snap-in
+ * (two rows at one time), a retraction with a snap-out. */
+static void timed_run(adh_run *run)
+{
+    adh_run_init(run);
+    const double k = 10;
+    double h0[] = { 10e-9, 6e-9, 4e-9, 2e-9, 1e-9, 2e-9, 5e-9, 8e-9, 20e-9 };
+    double F[] = { -1e-9, -3e-9, -8e-9, -40e-9, 20e-9, -60e-9, -90e-9, -100e-9, -1e-9 };
+    int path[] = { 0, 0, 0, 0, 0, 1, 1, 1, 1 };
+    double t[] = { 0, 1, 2, 3, 3, 4, 5, 6, 6 };
+    for (size_t i = 0; i < sizeof h0 / sizeof h0[0]; i++) {
+        adh_obs o;
+        memset(&o, 0, sizeof o);
+        o.h0 = h0[i], o.F = F[i], o.path = path[i], o.t = t[i];
+        o.branch = path[i] ? -1 : 1;
+        o.base = h0[i] - F[i] / k;
+        adh_run_push_row(run, &o);
+    }
+    run->turns[0].h0 = 1e-9;
+    run->turns[0].path = 1;
+    run->nturns = 1;
+}
+
+/* A static curve under the same spring: its base h0 - F/k falls, turns
+ * back at 6.5 nm (the snap-in's fold), rises to 7.5 nm and falls again. */
+static void static_curve(adh_run *run)
+{
+    adh_run_init(run);
+    double h0[] = { 10e-9, 8e-9, 6e-9, 5e-9, 4e-9, 3e-9, 2e-9, 1e-9 };
+    double F[] = { -1e-9, -2e-9, -5e-9, -20e-9, -35e-9, -30e-9, -10e-9, 20e-9 };
+    for (size_t i = 0; i < sizeof h0 / sizeof h0[0]; i++) {
+        adh_obs o;
+        memset(&o, 0, sizeof o);
+        o.h0 = o.base = h0[i], o.F = F[i], o.branch = 1, o.stable = 1, o.t = NAN;
+        adh_run_push_row(run, &o);
+    }
+}
+
+/* Every allocation of run's figure failing in turn (those before its data
+ * file counted first, its directory missing, plus the point indices after
+ * it): each says out of memory. */
+static void sweep(const char *what, const adh_plot_setup *s, const adh_run *run, const char *dir)
+{
+    adh_session ses;
+    memset(&ses, 0, sizeof ses);
+    char why[512];
+    snprintf(ses.tmpdir, sizeof ses.tmpdir, "%s/none", dir);
+    calls = 0, fail_at = -1;
+    int rc = adh_forcebase_figure(&ses, s, run, "t", why, sizeof why);
+    long before = calls;
+    ok(rc == -1 && strstr(why, "cannot write") && before > 3,
+       "%s without a directory for its data: cannot write it (%s), after %ld allocations", what, why, before);
+    snprintf(ses.tmpdir, sizeof ses.tmpdir, "%s", dir);
+    int all_oom = 1;
+    for (long k = 1; k <= before + 1; k++) {
+        calls = 0, fail_at = k;
+        ses.nmade = 0;
+        why[0] = '\0';
+        rc = adh_forcebase_figure(&ses, s, run, "t", why, sizeof why);
+        if (rc != -1 || strcmp(why, "out of memory") != 0) {
+            all_oom = 0;
+            printf("# allocation %ld failing: %d, '%s'\n", k, rc, why);
+        }
+    }
+    ok(all_oom && calls == before + 1,
+       "%s: each of its %ld allocations failing in turn says out of memory (the last, the figure's point "
+       "indices, made last before gnuplot, said there was no curve to draw)", what, before + 1);
+}
+
+int main(void)
+{
+    char dir[] = "/tmp/adhere-fb-oom-XXXXXX";
+    if (!mkdtemp(dir)) {
+        printf("Bail out! no temporary directory\n");
+        return 1;
+    }
+    adh_plot_setup s;
+    memset(&s, 0, sizeof s);
+    s.sprung = 1, s.spring = 10;
+    adh_run run;
+    s.timed = 1;
+    timed_run(&run);
+    sweep("physical time", &s, &run, dir);
+    adh_run_free(&run);
+    s.timed = 0, s.equilibrium = 1;
+    static_curve(&run);
+    sweep("the static curve", &s, &run, dir);
+    adh_run_free(&run);
+
+    char dat[PATH_MAX + 32];
+    snprintf(dat, sizeof dat, "%s/forcebase.dat", dir);
+    unlink(dat);
+    rmdir(dir);
+    return tap_done();
+}
