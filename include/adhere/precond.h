@@ -12,7 +12,9 @@
  *   adh_precond_dense  the LU (LAPACK, through lapacke) of B truncated to
  *                      the index prefix of nodes where alpha d_j W's column
  *                      j is large; the nodes beyond are left to the Krylov
- *                      solver. Holds W dense: n^2 numbers, (m+1)^3 / 3 a
+ *                      solver. Holds W dense: n^2 numbers (its own copy,
+ *                      or borrowed where W's entries are held already:
+ *                      adh_precond_alloc_shared), (m+1)^3 / 3 a
  *                      factorization. The oracle, for dense kernels.
  *   adh_precond_hodlr  the whole I + alpha W diag(d), W held as a HODLR
  *                      matrix (adhere/hodlr.h, O(n log n) numbers), its
@@ -58,7 +60,7 @@ typedef struct adh_precond_type {
     const char *name;   /* "dense" or "hodlr" */
     int truncates;      /* 1: set takes a prefix of the nodes, and a lower
                            active_tol takes more (dense); 0: all of them */
-    void *(*alloc)(size_t n, adh_precond_entry_fn entry, void *ctx);
+    void *(*alloc)(size_t n, adh_precond_entry_fn entry, void *ctx, const double *entries);
     void (*free)(void *state);
     int (*set)(void *state, const adh_precond_system *sys, size_t *active, int *det_sign);
     int (*border)(void *state, const double *g, const double *nu, double nh);
@@ -73,6 +75,13 @@ extern const adh_precond_type *adh_precond_hodlr;
  * HODLR one assembles it by cross approximation (O(n log n) calls). NULL
  * out of memory. */
 adh_precond *adh_precond_alloc(const adh_precond_type *T, size_t n, adh_precond_entry_fn entry, void *ctx);
+/* As adh_precond_alloc, where W's entries are held already, row-major
+ * (entries[i n + j] = entry(ctx, i, j), bit for bit), by whoever outlives
+ * this preconditioner and leaves them unchanged: the dense one reads them
+ * there instead of copying them (n^2 numbers fewer, the same arithmetic);
+ * the HODLR one assembles its own as before. entries NULL: a copy. */
+adh_precond *adh_precond_alloc_shared(const adh_precond_type *T, size_t n, adh_precond_entry_fn entry, void *ctx,
+                                      const double *entries);
 void adh_precond_free(adh_precond *p);
 
 /* Factorizes B at the point sys describes; its border is the operator's

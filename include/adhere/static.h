@@ -180,6 +180,12 @@ typedef struct adh_static adh_static;
  * dense W (N^2 doubles) once, or assembles a hierarchical one as HODLR
  * (O(N log N)); material changes do not rebuild it. */
 adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k);
+/* As adh_static_alloc, borrowing W's entries where another solver of the
+ * same kernel holds them already, row-major and bit for bit those of
+ * adh_kernel_entry (adhere/precond.h's adh_precond_alloc_shared): a dense
+ * kernel is then not copied again. entries must outlive the solver; NULL:
+ * adh_static_alloc. */
+adh_static *adh_static_alloc_shared(const adh_grid *g, const adh_kernel *k, const double *entries);
 void adh_static_free(adh_static *w);
 
 /* Solves the start point (u = 0 as the first guess) and resets the curve.

@@ -557,7 +557,7 @@ static void cost_done(const cost_job *job, const char *out)
  * takes hours): each run's expected iterations (adh_plan_iterations) times
  * a kernel product timed now on its N, in CPU seconds as --plan does,
  * shared out over the workers. Negative when a kernel could not be built. */
-static double cost_estimate(const adh_config *cfg, const cost_run *runs, size_t n, int jobs)
+static double cost_estimate(const adh_config *cfg, const cost_run *runs, size_t n, int jobs, size_t *scaled)
 {
     static adh_config c;   /* a configuration is large: not on the stack */
     /* one timing for each N (the runs come sorted by cost, not by N) */
@@ -573,7 +573,9 @@ static double cost_estimate(const adh_config *cfg, const cost_run *runs, size_t 
             k++;
         if (k == nt) {
             tn[nt] = runs[i].nodes;
-            tp[nt] = cli_estimate_iteration(&c, &tb[nt]);
+            size_t timed_n = 0;
+            tp[nt] = cli_estimate_iteration(&c, &tb[nt], &timed_n);
+            *scaled = timed_n && timed_n < tn[nt] ? timed_n : *scaled;
             nt++;
         }
         total = isfinite(tp[k]) ? total + tb[k] + adh_plan_iterations(&c.spec) * tp[k] : -1;
@@ -601,12 +603,17 @@ int cli_cost_main(const cli_options *cli)
         return CLI_EXIT_USAGE;
     }
     if (!cfg->output.quiet) {
-        double est = cost_estimate(cfg, runs, n, cost_jobs());
-        char t[32];
+        size_t scaled = 0;   /* the nodes a larger dense kernel was timed on */
+        double est = cost_estimate(cfg, runs, n, cost_jobs(), &scaled);
+        char t[32], on[128] = "";
         cli_progress_duration(est, t, sizeof t);
+        if (scaled)
+            snprintf(on, sizeof on, ", a dense kernel past %zu nodes on a smaller grid of %zu and scaled as N^2", scaled,
+                     scaled);
         if (est >= 0)
             fprintf(stderr, "adhere: --cost: %zu runs, expected about %s on %d core%s (the plan's iterations, a kernel "
-                    "product timed now; the static curve beside them)\n", n, t, cost_jobs(), cost_jobs() > 1 ? "s" : "");
+                    "product timed now%s; the static curve beside them)\n", n, t, cost_jobs(), cost_jobs() > 1 ? "s" : "",
+                    on);
     }
     cli_interrupt_catch();
     adh_ready_phase("cost");

@@ -37,24 +37,53 @@ double cli_estimate_product_seconds(const adh_kernel *k, size_t n, double *v, si
     return cli_estimate_cpu_per_call(product_once, &pj, min_reps, min_seconds);
 }
 
-double cli_estimate_iteration(const adh_config *cfg, double *build)
+int cli_estimate_kernel(const adh_run_spec *s, const adh_grid *g, double *v, size_t min_reps, double min_seconds,
+                        cli_estimate_kernel_cost *kc)
 {
     /* CPU seconds, not wall: on a shared machine the wall clock times
      * the other jobs too, and the estimate is of this run's work */
     double t0 = adh_clock_cpu_seconds();
-    adh_grid *g = adh_config_grid_alloc(&cfg->spec);
+    adh_run_spec timed = *s;
+    double scale = 1.0;   /* the grid's nodes over the timed kernel's */
+    if (s->grid.use.storage == ADH_STORAGE_DENSE && g->n > CLI_ESTIMATE_DENSE_MAX) {
+        timed.grid.use.nodes = CLI_ESTIMATE_DENSE_MAX;
+        timed.grid.use.graded = 0;
+        timed.grid.use.spacing = g->r[g->n - 1] / (double)CLI_ESTIMATE_DENSE_MAX;
+        scale = (double)g->n / CLI_ESTIMATE_DENSE_MAX;
+    }
+    adh_grid *tg = scale > 1.0 ? adh_config_grid_alloc(&timed) : NULL;
+    const adh_grid *kg = scale > 1.0 ? tg : g;
     int st = 0;
-    adh_kernel *k = g ? adh_config_kernel_alloc(&cfg->spec, g, &st) : NULL;
-    *build = adh_clock_cpu_seconds() - t0;
-    double *v = k ? malloc(3 * g->n * sizeof *v) : NULL;
+    adh_kernel *k = kg ? adh_config_kernel_alloc(&timed, kg, &st) : NULL;
+    int rc = -1;
+    if (k) {
+        kc->build = (adh_clock_cpu_seconds() - t0) * scale * scale;
+        kc->timed_n = kg->n;
+        kc->hierarchical = adh_kernel_storage_of(k) != ADH_STORAGE_DENSE;
+        kc->product = cli_estimate_product_seconds(k, kg->n, v, min_reps, min_seconds) * scale * scale;
+        rc = 0;
+    }
+    adh_kernel_free(k);
+    adh_grid_free(tg);
+    return rc;
+}
+
+double cli_estimate_iteration(const adh_config *cfg, double *build, size_t *timed_n)
+{
+    adh_grid *g = adh_config_grid_alloc(&cfg->spec);
+    double *v = g ? malloc(3 * g->n * sizeof *v) : NULL;
     double per = NAN;
+    cli_estimate_kernel_cost kc;
     if (v) {
         for (size_t i = 0; i < g->n; i++)
             v[i] = 1.0 / (1.0 + (double)i);   /* a pressure falling off from the axis */
-        per = cli_estimate_product_seconds(k, g->n, v, 5, 0.2);
+        if (cli_estimate_kernel(&cfg->spec, g, v, 5, 0.2, &kc) == 0) {
+            per = kc.product;
+            *build = kc.build;
+            *timed_n = kc.timed_n;
+        }
     }
     free(v);
-    adh_kernel_free(k);
     adh_grid_free(g);
     return per;
 }
@@ -74,7 +103,9 @@ void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
                    "(seconds on the paper's grid, up to some 20 s at sigma = 100)\n");
         return;
     }
-    double build, per = cli_estimate_iteration(cfg, &build);
+    double build;
+    size_t timed_n;
+    double per = cli_estimate_iteration(cfg, &build, &timed_n);
     if (!isfinite(per)) {
         fprintf(f, "time: not estimated (the kernel could not be built here)\n");
         return;
@@ -90,10 +121,14 @@ void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
         iterations += plan->runs[i].iterations;
     }
     double wall = build + adh_plan_time_left(runs, n, plan->jobs, 0, 1.0 / per);
-    char t[32];
+    char t[32], timed[160] = "";
     cli_progress_duration(wall, t, sizeof t);
+    size_t nodes = adh_config_nodes(&cfg->spec);
+    /* an estimate from a smaller grid says so (cli_estimate_kernel) */
+    if (timed_n < nodes)
+        snprintf(timed, sizeof timed, " on a smaller grid, %zu nodes, and scaled as N^2 to its %zu", timed_n, nodes);
     fprintf(f, "time: about %s (%.2g iterations, each about one kernel product: %.3g ms of CPU on this machine, "
-               "timed now%s; the kernel built in %.2g s)%s\n", t, iterations, per * 1e3,
-            plan->jobs > 1 ? ", the runs shared out over the jobs" : "", build,
+               "timed now%s%s; the kernel built in %.2g s%s)%s\n", t, iterations, per * 1e3, timed,
+            plan->jobs > 1 ? ", the runs shared out over the jobs" : "", build, timed_n < nodes ? ", scaled alike" : "",
             n < plan->nruns ? "; the first runs alone" : "");
 }

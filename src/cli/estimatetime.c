@@ -104,19 +104,12 @@ typedef struct grid_cost {
     adh_run_spec spec;    /* whose grid */
     adh_grid *g;          /* the grid, kept for the runs that share it */
     size_t n;
-    size_t timed_n;       /* the nodes its kernel was timed on (n, or DENSE_TIMED_MAX) */
+    size_t timed_n;       /* the nodes its kernel was timed on (n, or CLI_ESTIMATE_DENSE_MAX) */
     int hierarchical;
     double product, pass, build;
     size_t lu_n;          /* the last LU timed for its runs: its size, */
     double lu_t;          /* and its CPU seconds (a sweep's runs share them) */
 } grid_cost;
-
-/* Above this many nodes a dense kernel is built and timed on a uniform
- * grid of this many, its build and product scaled as n^2 (a matrix of
- * 128 MB, out of every cache as the larger ones are): a plan timed every
- * grid's own, and a sweep of N up to 20000 on the dense operator built 32
- * kernels of up to 3.2 GB, a minute each, to say how long it would take. */
-#define DENSE_TIMED_MAX 4000
 
 /* lu_seconds(m) for the runs of one grid, timed again only where m is a
  * quarter off the size last timed (scaled as m^3 between): a sweep of 32
@@ -138,38 +131,26 @@ static int time_grid(const adh_run_spec *s, grid_cost *gc)
     gc->n = 0;
     gc->lu_n = 0;
     gc->lu_t = NAN;
-    double t0 = adh_clock_cpu_seconds();
     adh_grid *g = gc->g = adh_config_grid_alloc(s);
-    adh_run_spec timed = *s;
-    double scale = 1.0;   /* the grid's nodes over the timed kernel's */
-    if (g && s->grid.use.storage == ADH_STORAGE_DENSE && g->n > DENSE_TIMED_MAX) {
-        timed.grid.use.nodes = DENSE_TIMED_MAX;
-        timed.grid.use.graded = 0;
-        timed.grid.use.spacing = g->r[g->n - 1] / (double)DENSE_TIMED_MAX;
-        scale = (double)g->n / DENSE_TIMED_MAX;
-    }
-    adh_grid *tg = scale > 1.0 && g ? adh_config_grid_alloc(&timed) : g;
-    int st = 0;
-    adh_kernel *k = tg ? adh_config_kernel_alloc(&timed, tg, &st) : NULL;
-    gc->build = (adh_clock_cpu_seconds() - t0) * scale * scale;
-    double *v = k ? malloc(3 * g->n * sizeof *v) : NULL;
+    double *v = g ? malloc(3 * g->n * sizeof *v) : NULL;
+    cli_estimate_kernel_cost kc;
     int rc = -1;
     if (v) {
         for (size_t i = 0; i < g->n; i++)
             v[i] = 1.0 / (1.0 + (double)i);   /* a pressure falling off from the axis */
+        rc = cli_estimate_kernel(s, g, v, 3, 0.05, &kc);
+    }
+    if (rc == 0) {
         law_job lj = { g, &s->mat, v + g->n };
         gc->spec = *s;
         gc->n = g->n;
-        gc->timed_n = tg->n;
-        gc->hierarchical = adh_kernel_storage_of(k) != ADH_STORAGE_DENSE;
-        gc->product = cli_estimate_product_seconds(k, tg->n, v, 3, 0.05) * scale * scale;
+        gc->timed_n = kc.timed_n;
+        gc->hierarchical = kc.hierarchical;
+        gc->build = kc.build;
+        gc->product = kc.product;
         gc->pass = cpu_per_call(law_once, &lj);
-        rc = 0;
     }
     free(v);
-    adh_kernel_free(k);
-    if (tg != g)
-        adh_grid_free(tg);
     return rc;
 }
 

@@ -14,12 +14,18 @@ struct adh_precond {
 
 adh_precond *adh_precond_alloc(const adh_precond_type *T, size_t n, adh_precond_entry_fn entry, void *ctx)
 {
+    return adh_precond_alloc_shared(T, n, entry, ctx, NULL);
+}
+
+adh_precond *adh_precond_alloc_shared(const adh_precond_type *T, size_t n, adh_precond_entry_fn entry, void *ctx,
+                                      const double *entries)
+{
     adh_precond *p = calloc(1, sizeof *p);
     if (!p)
         return NULL;
     p->type = T;
     p->det_sign = 1;
-    p->state = T->alloc(n, entry, ctx);
+    p->state = T->alloc(n, entry, ctx, entries);
     if (!p->state) {
         free(p);
         return NULL;

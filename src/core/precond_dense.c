@@ -22,7 +22,8 @@
  * dominates a static curve at large sigma on a dense kernel. */
 typedef struct dense {
     size_t n, m;
-    double *W;        /* row-major n x n */
+    const double *W;  /* row-major n x n: own, or borrowed (adh_precond_alloc_shared) */
+    double *own;      /* W when copied, and colnorm, one block */
     double *colnorm;  /* sum_i |W_ij| */
     double *B;        /* LU of the (m+1)^2 reduced matrix */
     int *perm;        /* LAPACK pivots, 1-based */
@@ -35,28 +36,32 @@ static void dense_free(void *state)
     dense *P = state;
     if (!P)
         return;
-    free(P->W);
+    free(P->own);
     free(P->B);
     free(P->perm);
     free(P->D);
     free(P);
 }
 
-static void *dense_alloc(size_t n, adh_precond_entry_fn entry, void *ctx)
+/* W's entries copied into own, or read where they are (entries), and
+ * their column sums in the same order either way. */
+static void *dense_alloc(size_t n, adh_precond_entry_fn entry, void *ctx, const double *entries)
 {
     dense *P = calloc(1, sizeof *P);
     if (!P)
         return NULL;
     P->n = n;
-    P->W = malloc((n * n + n) * sizeof *P->W);
+    P->own = malloc(((entries ? 0 : n * n) + n) * sizeof *P->own);
     P->B = malloc((n + 1) * (n + 1) * sizeof *P->B);
     P->perm = malloc((n + 1) * sizeof *P->perm);
     P->D = malloc((5 * n + 2) * sizeof *P->D);
-    if (!P->W || !P->B || !P->perm || !P->D) {
+    if (!P->own || !P->B || !P->perm || !P->D) {
         dense_free(P);
         return NULL;
     }
-    P->colnorm = P->W + n * n;
+    double *W = entries ? NULL : P->own;
+    P->W = entries ? entries : W;
+    P->colnorm = P->own + (entries ? 0 : n * n);
     P->g = P->D + n;
     P->nu = P->g + n;
     P->y = P->nu + n;
@@ -64,8 +69,7 @@ static void *dense_alloc(size_t n, adh_precond_entry_fn entry, void *ctx)
     memset(P->colnorm, 0, n * sizeof *P->colnorm);
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < n; j++) {
-            double v = entry(ctx, i, j);
-            P->W[i * n + j] = v;
+            double v = W ? (W[i * n + j] = entry(ctx, i, j)) : entries[i * n + j];
             P->colnorm[j] += fabs(v);
         }
     return P;
@@ -165,8 +169,8 @@ static void dense_apply(void *state, const double *v, double *z)
 static size_t dense_bytes(const void *state)
 {
     const dense *P = state;
-    size_t n = P->n;
-    return (n * n + n + (n + 1) * (n + 1) + 5 * n + 2) * sizeof(double) + (n + 1) * sizeof(int);
+    size_t n = P->n, w = P->W == P->own ? n * n : 0;   /* a borrowed W is its owner's */
+    return (w + n + (n + 1) * (n + 1) + 5 * n + 2) * sizeof(double) + (n + 1) * sizeof(int);
 }
 
 static const adh_precond_type dense_type = {

@@ -40,7 +40,7 @@ static void hodlr_free(void *state)
     free(P);
 }
 
-static void *hodlr_alloc(size_t n, adh_precond_entry_fn entry, void *ctx)
+static void *hodlr_alloc(size_t n, adh_precond_entry_fn entry, void *ctx, const double *entries)
 {
     hodlr *P = calloc(1, sizeof *P);
     if (!P)

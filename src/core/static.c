@@ -83,12 +83,18 @@ void adh_static_free(adh_static *w)
 
 adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k)
 {
+    return adh_static_alloc_shared(g, k, NULL);
+}
+
+adh_static *adh_static_alloc_shared(const adh_grid *g, const adh_kernel *k, const double *entries)
+{
     adh_static *w = calloc(1, sizeof *w);
     if (!w)
         return NULL;
     size_t n = g->n;
     w->grid = g;
     w->k = k;
+    w->entries = entries;
     w->n = n;
     w->st = adh_state_alloc(n);
     w->trial = adh_state_alloc(n);

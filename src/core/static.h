@@ -100,6 +100,7 @@ typedef struct static_front {
 struct adh_static {
     const adh_grid *grid;
     const adh_kernel *k;
+    const double *entries; /* W's, borrowed for a dense preconditioner; NULL: it copies them */
     size_t n;
     int skip;         /* lattice_skip in effect (the setting, or auto's choice) */
     double *shape;    /* r^2 / 2R, plus the extra gap if one is set */

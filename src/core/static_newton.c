@@ -37,7 +37,7 @@ int static_newton_alloc(adh_static *w)
 {
     const adh_precond_type *T =
         adh_kernel_storage_of(w->k) == ADH_STORAGE_DENSE ? adh_precond_dense : adh_precond_hodlr;
-    w->nw.P = adh_precond_alloc(T, w->n, kernel_entry, (void *)w->k);
+    w->nw.P = adh_precond_alloc_shared(T, w->n, kernel_entry, (void *)w->k, w->entries);
     w->nw.kr = adh_fgmres_alloc(w->n + 1, ADH_GMRES_MAX);
     return w->nw.P && w->nw.kr ? ADH_SUCCESS : ADH_ENOMEM;
 }

@@ -61,7 +61,9 @@ static int land_curve(adh_visco *w, double h0_end, double *v)
 int adh_visco_land_static(adh_visco *w, double *y)
 {
     size_t n = w->n;
-    if (!w->stat && !(w->stat = adh_static_alloc(w->g, w->k)))
+    /* its preconditioner reads W where the path's holds it: a dense
+     * kernel's N^2 entries are not copied a second time */
+    if (!w->stat && !(w->stat = adh_static_alloc_shared(w->g, w->k, adh_visco_pre_entries(w->pre))))
         return ADH_ENOMEM;
     if (!w->egap && !(w->egap = malloc(n * sizeof *w->egap)))
         return ADH_ENOMEM;

@@ -152,6 +152,11 @@ adh_visco_pre *adh_visco_pre_alloc(const adh_grid *g, const adh_kernel *k)
     return p;
 }
 
+const double *adh_visco_pre_entries(const adh_visco_pre *p)
+{
+    return p->W;
+}
+
 /* The inverse of the nb x nb matrix S (row-major), in place; ADH_ESTALL
  * when singular. */
 static int small_inverse(size_t nb, double *S)

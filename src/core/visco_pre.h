@@ -20,6 +20,11 @@ typedef struct adh_visco_pre adh_visco_pre;
 adh_visco_pre *adh_visco_pre_alloc(const adh_grid *g, const adh_kernel *k);
 void adh_visco_pre_free(adh_visco_pre *p);
 
+/* Under a dense kernel, W's entries as it holds them (row-major, those of
+ * adh_kernel_entry), for another solver of the same kernel to borrow
+ * while p lives (adh_static_alloc_shared); NULL under a hierarchical one. */
+const double *adh_visco_pre_entries(const adh_visco_pre *p);
+
 /* Factorizes the bordered system
  *     [J  B ] [x ]   [r  ]
  *     [C  C0] [xi] = [rxi],     J = I - c W diag(d),

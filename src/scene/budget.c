@@ -262,6 +262,13 @@ double adh_budget_bytes(const adh_run_spec *run, unsigned solvers)
     /* a static solver copies a dense kernel and factors it (2 n^2 more
      * doubles); over a hierarchical one it builds a HODLR preconditioner */
     double solver = ss == ADH_STORAGE_DENSE ? 16.0 * (n + 1) * (n + 1) : HODLR_NODE * n;
+    /* in physical time a viscoelastic sphere's solver holds those two for
+     * its path and, from its first jump into contact, the static solver
+     * that lands it: that one reads the path's copy of a dense kernel and
+     * factors its own (n^2 more), or builds a HODLR of its own: allocated
+     * mid-run, past the estimate, where it was not counted */
+    if (run->mode == ADH_MODE_TIME && run->time.sls)
+        solver += ss == ADH_STORAGE_DENSE ? 8.0 * (n + 1) * (n + 1) : HODLR_NODE * n;
     double own = solvers && ss != storage ? kernel_bytes(ss, n) : 0;
     return PROGRAM_BYTES + kernel_bytes(storage, n) + own + VECTORS_NODE * n + (double)solvers * solver;
 }

@@ -191,6 +191,23 @@ int main(void)
     }
     adh_precond *pd = adh_precond_alloc(adh_precond_dense, n, entry, k);
     adh_precond *ph = adh_precond_alloc(adh_precond_hodlr, n, entry, k);
+    /* W's entries held already (as the viscoelastic path's preconditioner
+     * holds them when its jump is landed by the static solver): borrowed,
+     * n^2 numbers fewer, and the same factorization and solve to the bit */
+    adh_precond *pb = adh_precond_alloc_shared(adh_precond_dense, n, entry, k, W);
+    problem pc = p, pw = p;
+    pc.P = pd, pw.P = pb;
+    int rcc = set(&pc, 0.3), rcw = set(&pw, 0.3);
+    adh_precond_apply(pd, v, x);
+    adh_precond_apply(pb, v, xr);
+    ok(rcc == ADH_SUCCESS && rcw == ADH_SUCCESS && adh_precond_active(pb) == adh_precond_active(pd) &&
+           adh_precond_det_sign(pb) == adh_precond_det_sign(pd) && memcmp(x, xr, (n + 1) * sizeof *x) == 0,
+       "dense on W's entries borrowed: the same prefix (%zu), det sign and M^-1 v to the bit as on its copy",
+       adh_precond_active(pb));
+    ok(adh_precond_bytes(pd) - adh_precond_bytes(pb) == n * n * sizeof(double),
+       "... holding n^2 numbers fewer (%.2f MB against %.2f MB)", adh_precond_bytes(pb) / 1048576.0,
+       adh_precond_bytes(pd) / 1048576.0);
+    adh_precond_free(pb);
     ok(adh_precond_bytes(pd) >= n * n * sizeof(double) && adh_precond_bytes(ph) < adh_precond_bytes(pd),
        "dense holds W (%.2f MB), HODLR less (%.2f MB)", adh_precond_bytes(pd) / 1048576.0,
        adh_precond_bytes(ph) / 1048576.0);
