@@ -654,6 +654,7 @@ static int fold(adh_visco *w, double t0)
     w->b_fold = w->base_now;
     w->seg_fold = w->seg;
     w->jump_steps = 0;
+    w->retries = 0;
     w->nudge = VISCO_NUDGE;
     w->mode = MODE_CROSS;
     w->have_prev = 0;
@@ -769,7 +770,7 @@ static int on_equilibrium(adh_visco *w)
  * state then moves there. Else a soft spring's flight, checked mid-way
  * (Newton finds where it lands, hundreds of nm on), landed where it was:
  * 457 of 522 nm out at 1 N/m, the force off the spring's line. */
-static int next_to_equilibrium(adh_visco *w)
+int adh_visco_next_to_equilibrium(adh_visco *w)
 {
     if (!on_equilibrium(w))
         return 0;
@@ -932,6 +933,9 @@ static int cross_retry(adh_visco *w)
 {
     double h;
     IDAGetLastStep(w->ida, &h);
+    if (w->retries++ == 0)
+        w->retry_h1 = fabs(h);
+    w->retry_h = fabs(h);
     if (++w->jump_steps > VISCO_CROSS_STEPS || fabs(h) < VISCO_RETRY_MIN * w->s.tol)
         return start_flow(w);
     double *y = N_VGetArrayPointer(w->y);
@@ -1012,7 +1016,7 @@ static int flow_step(adh_visco *w, double t0, int *out)
         *out = stop(w, ADH_ESTALL);
         return 1;
     }
-    if ((w->jump_steps + 1) % VISCO_FLOW_CHECK == 0 && next_to_equilibrium(w)) {
+    if ((w->jump_steps + 1) % VISCO_FLOW_CHECK == 0 && adh_visco_next_to_equilibrium(w)) {
         *out = land(w, t0, 0);
         return 1;
     }

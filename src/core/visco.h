@@ -113,6 +113,10 @@ struct adh_visco {
      * a relaxation's start y' */
     double *yfold, *ypfold, *ywork, *yprev, *ypprev, *ypflow;
     long jump_steps;     /* steps of the crossing so far */
+    long retries;        /* its retries (visco.c's cross_retry), with the first
+                            and the last step that went backwards: what the
+                            tests bound by the retries' rule */
+    double retry_h1, retry_h;
     int land_try;        /* a jump-in: try the static solver's landing first
                             (visco_land.c) */
     struct adh_static *stat; /* its static solver (allocated at the first) */
@@ -242,6 +246,12 @@ int adh_visco_flow_start(adh_visco *w, const double *y, const double *d, double 
 /* How fast it still moves: max over u (and h0) of |y'| / atol, per unit
  * pseudo-time. */
 double adh_visco_flow_speed(const adh_visco *w, const double *d);
+
+/* visco.c: a relaxation still moving, checked every VISCO_FLOW_CHECK
+ * steps: 1 when Newton on a copy of w->y (at its q and time, h0 by the
+ * spring) converges within ten tolerances (z0) of it in u and h0, and w->y
+ * is then Newton's state; else 0, w->y untouched. */
+int adh_visco_next_to_equilibrium(adh_visco *w);
 
 /* visco_energy.c */
 /* U of y (the stored energy), with parts (any may be NULL); uses w->h,

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "adhere/kernel.h"
+#include "adhere/law.h"
 #include "adhere/runner.h"
 #include "adhere/static.h"
 #include "adhere/status.h"
@@ -157,6 +158,31 @@ static inline double static_gap(const adh_run *run, const adh_run *st, const adh
         worst = fmax(worst, best);
         (*compared)++;
     }
+    return worst;
+}
+
+/* An equilibrium's residual at frozen q, from the kernel's entries and the
+ * law (not the solver's products): max_n |u_n + sum_j W_nj (cinf p_j +
+ * cdel q_j)|, p at the gaps h = h0 + r^2/2R - u (into h). */
+static inline double fix_frozen_residual(const fixture *f, const adh_sls *v, const double *u, const double *q,
+                                         double h0, double *h)
+{
+    size_t n = f->g->n;
+    double cinf = 2.0 / v->Einf, cdel = 2.0 * (1.0 / v->E0 - 1.0 / v->Einf), worst = 0;
+    double *x = malloc(n * sizeof *x);
+    if (!x)
+        return INFINITY;
+    for (size_t j = 0; j < n; j++) {
+        h[j] = h0 + f->g->r[j] * f->g->r[j] / (2.0 * f->m.R) - u[j];
+        x[j] = cinf * adh_lj_pressure(h[j], f->m.A, f->m.z0) + cdel * q[j];
+    }
+    for (size_t i = 0; i < n; i++) {
+        double s = u[i];
+        for (size_t j = 0; j < n; j++)
+            s += adh_kernel_entry(f->k, i, j) * x[j];
+        worst = fmax(worst, fabs(s));
+    }
+    free(x);
     return worst;
 }
 
