@@ -41,6 +41,28 @@ __attribute__((constructor)) static void tap_gsl_handler_off(void)
     gsl_set_error_handler_off();
 }
 
+/* TAP_SANITIZED: 1 in make check's second build of the C tests, under
+ * ASan/UBSan (gcc defines __SANITIZE_ADDRESS__, clang has the feature).
+ * There the heaviest numerical tests leave out a case that runs the same
+ * code as one they keep, only on a larger grid or a second time: its
+ * assertion holds in the plain build, which runs every case, and the
+ * sanitizers see every path on the smaller one (docs/testing.md lists
+ * which). tap_sanitized_leaves_out says so in the TAP stream. */
+#if defined(__SANITIZE_ADDRESS__)
+#define TAP_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TAP_SANITIZED 1
+#endif
+#endif
+#ifndef TAP_SANITIZED
+#define TAP_SANITIZED 0
+#endif
+static inline void tap_sanitized_leaves_out(const char *what)
+{
+    printf("# under ASan: %s left to the plain build (the same code, run here on a smaller case)\n", what);
+}
+
 #define ok(cond, ...) tap_ok(!!(cond), __FILE__, __LINE__, __VA_ARGS__)
 
 static inline int tap_ok(int pass, const char *file, int line, const char *fmt, ...)
