@@ -192,8 +192,10 @@ asan-build: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="$(SAN_FLAGS)" \
 	  $(UNIT_SRC:tests/unit/%.c=build-asan/tests/%) $(HARD_SRC:tests/hard/%.c=build-asan/tests/hard-%)
 
+# Every case of every C test under the sanitizers (TAP_FULL: make check's
+# ASan pass leaves a few heavy ones to its plain build, tests/unit/tap.h).
 check-asan: asan-build
-	@ONLY=c tests/run-all.sh build-asan
+	@ONLY=c TAP_FULL=1 tests/run-all.sh build-asan
 
 # The two drivers that run on threads (--cost's grid, a study's runs), built
 # under ThreadSanitizer and run small on 2 threads: a race stops them.

@@ -43,11 +43,12 @@ __attribute__((constructor)) static void tap_gsl_handler_off(void)
 
 /* TAP_SANITIZED: 1 in make check's second build of the C tests, under
  * ASan/UBSan (gcc defines __SANITIZE_ADDRESS__, clang has the feature).
- * There the heaviest numerical tests leave out a case that runs the same
- * code as one they keep, only on a larger grid or a second time: its
- * assertion holds in the plain build, which runs every case, and the
- * sanitizers see every path on the smaller one (docs/testing.md lists
- * which). tap_sanitized_leaves_out says so in the TAP stream. */
+ * There (tap_sanitized_short) the heaviest numerical tests leave out a
+ * case that runs the same code as one they keep, only on a larger grid or
+ * a second time: make check's plain build runs it and asserts it, and the
+ * sanitizers see its paths on the smaller case (docs/testing.md lists
+ * which); tap_sanitized_leaves_out says so in the TAP stream. TAP_FULL=1
+ * in the environment (make check-asan sets it) runs every case. */
 #if defined(__SANITIZE_ADDRESS__)
 #define TAP_SANITIZED 1
 #elif defined(__has_feature)
@@ -58,6 +59,10 @@ __attribute__((constructor)) static void tap_gsl_handler_off(void)
 #ifndef TAP_SANITIZED
 #define TAP_SANITIZED 0
 #endif
+static inline int tap_sanitized_short(void)
+{
+    return TAP_SANITIZED && !getenv("TAP_FULL");
+}
 static inline void tap_sanitized_leaves_out(const char *what)
 {
     printf("# under ASan: %s left to the plain build (the same code, run here on a smaller case)\n", what);

@@ -269,7 +269,7 @@ static void check_large_sigma(void)
     adh_material_derive(&m10, &d10);
     adh_static_settings s10 = adh_static_settings_default();
     s10.h0_end = 2.5e-9;
-    if (TAP_SANITIZED) {
+    if (tap_sanitized_short()) {
         tap_sanitized_leaves_out("sigma 10, N 230 (the coarse grid's lattice folds below, on twice the nodes)");
     } else {
         curve c10 = run_curve(&m10, 230, adh_grid_default_spacing(&m10), ADH_KERNEL_PAPER, &s10);

@@ -150,7 +150,7 @@ int main(void)
     start = truth;
     start.E *= 3;
     start.A /= 3;
-    if (TAP_SANITIZED) {
+    if (tap_sanitized_short()) {
         tap_sanitized_leaves_out("the start a factor 3 off (the fit of E and A above, from further)");
     } else {
         adh_fit_result b = fit(&s.d, EA, start, 0);
@@ -183,7 +183,7 @@ int main(void)
      * fails honestly, its chi2 far above the data's scatter. */
     start = truth;
     start.R = 7e-6;
-    if (TAP_SANITIZED) {
+    if (tap_sanitized_short()) {
         tap_sanitized_leaves_out("R = 7 um fixed, E and A free (the fit of E and A above, another R)");
     } else {
         adh_fit_result d = fit(&s.d, EA, start, 0);

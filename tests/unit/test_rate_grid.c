@@ -98,7 +98,7 @@ int main(void)
     result a = cycle(&m, adh_grid_alloc(gc.n, gc.dr));
     result w = cycle(&m, adh_rings_alloc(&wide));
     ok(a.hyst > 0 && a.pulloff < 0 && a.jump_out > a.jump_in, "the cycle has a loop: %.4g fJ", a.hyst * 1e15);
-    if (TAP_SANITIZED) {
+    if (tap_sanitized_short()) {
         tap_sanitized_leaves_out("the uniform grid 1.5x finer (the automatic grid's cycle on 1.5x the nodes)");
     } else {
         result f = cycle(&m, adh_grid_alloc(fine, fdr));
