@@ -41,6 +41,33 @@ __attribute__((constructor)) static void tap_gsl_handler_off(void)
     gsl_set_error_handler_off();
 }
 
+/* TAP_SANITIZED: 1 in make check's second build of the C tests, under
+ * ASan/UBSan (gcc defines __SANITIZE_ADDRESS__, clang has the feature).
+ * There (tap_sanitized_short) the heaviest numerical tests leave out a
+ * case that runs the same code as one they keep, only on a larger grid or
+ * a second time: make check's plain build runs it and asserts it, and the
+ * sanitizers see its paths on the smaller case (docs/testing.md lists
+ * which); tap_sanitized_leaves_out says so in the TAP stream. TAP_FULL=1
+ * in the environment (make check-asan sets it) runs every case. */
+#if defined(__SANITIZE_ADDRESS__)
+#define TAP_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TAP_SANITIZED 1
+#endif
+#endif
+#ifndef TAP_SANITIZED
+#define TAP_SANITIZED 0
+#endif
+static inline int tap_sanitized_short(void)
+{
+    return TAP_SANITIZED && !getenv("TAP_FULL");
+}
+static inline void tap_sanitized_leaves_out(const char *what)
+{
+    printf("# under ASan: %s left to the plain build (the same code, run here on a smaller case)\n", what);
+}
+
 #define ok(cond, ...) tap_ok(!!(cond), __FILE__, __LINE__, __VA_ARGS__)
 
 static inline int tap_ok(int pass, const char *file, int line, const char *fmt, ...)

@@ -269,12 +269,16 @@ static void check_large_sigma(void)
     adh_material_derive(&m10, &d10);
     adh_static_settings s10 = adh_static_settings_default();
     s10.h0_end = 2.5e-9;
-    curve c10 = run_curve(&m10, 230, adh_grid_default_spacing(&m10), ADH_KERNEL_PAPER, &s10);
-    ok(c10.rc == ADH_SUCCESS, "sigma %.3g, N 230: run succeeds (%s)", d10.sigma, adh_strerror(c10.rc));
-    ok(rel(c10.res.pulloff_F, d10.F_jkr) < 0.10, "sigma %.3g: pull-off %.5g N within 10 %% of JKR %.5g N", d10.sigma,
-       c10.res.pulloff_F, d10.F_jkr);
-    ok(c10.res.folds > 100, "sigma %.3g: lattice trapping, %zu folds", d10.sigma, c10.res.folds);
-    adh_run_free(&c10.run);
+    if (tap_sanitized_short()) {
+        tap_sanitized_leaves_out("sigma 10, N 230 (the coarse grid's lattice folds below, on twice the nodes)");
+    } else {
+        curve c10 = run_curve(&m10, 230, adh_grid_default_spacing(&m10), ADH_KERNEL_PAPER, &s10);
+        ok(c10.rc == ADH_SUCCESS, "sigma %.3g, N 230: run succeeds (%s)", d10.sigma, adh_strerror(c10.rc));
+        ok(rel(c10.res.pulloff_F, d10.F_jkr) < 0.10, "sigma %.3g: pull-off %.5g N within 10 %% of JKR %.5g N",
+           d10.sigma, c10.res.pulloff_F, d10.F_jkr);
+        ok(c10.res.folds > 100, "sigma %.3g: lattice trapping, %zu folds", d10.sigma, c10.res.folds);
+        adh_run_free(&c10.run);
+    }
 
     /* Stronger trapping (sigma 10 on a grid twice as coarse: every node
      * crossing is a fold pair of some picometres) and the same curve with

@@ -150,10 +150,14 @@ int main(void)
     start = truth;
     start.E *= 3;
     start.A /= 3;
-    adh_fit_result b = fit(&s.d, EA, start, 0);
-    ok(b.status == ADH_SUCCESS && fabs(b.value[ADH_FIT_E] / a.value[ADH_FIT_E] - 1) < 1e-3 &&
-       fabs(b.value[ADH_FIT_A] / a.value[ADH_FIT_A] - 1) < 1e-3,
-       "a start a factor 3 off (3E, A/3) converges to the same values (1e-3)");
+    if (tap_sanitized_short()) {
+        tap_sanitized_leaves_out("the start a factor 3 off (the fit of E and A above, from further)");
+    } else {
+        adh_fit_result b = fit(&s.d, EA, start, 0);
+        ok(b.status == ADH_SUCCESS && fabs(b.value[ADH_FIT_E] / a.value[ADH_FIT_E] - 1) < 1e-3 &&
+           fabs(b.value[ADH_FIT_A] / a.value[ADH_FIT_A] - 1) < 1e-3,
+           "a start a factor 3 off (3E, A/3) converges to the same values (1e-3)");
+    }
 
     /* the position offset: the same curve measured 0.7 nm further out, a
      * baseline of 2 nN; offset and baseline free beside E and A */
@@ -179,11 +183,15 @@ int main(void)
      * fails honestly, its chi2 far above the data's scatter. */
     start = truth;
     start.R = 7e-6;
-    adh_fit_result d = fit(&s.d, EA, start, 0);
-    double gR = adh_material_gamma(&d.best) * d.best.R / (adh_material_gamma(&truth) * truth.R);
-    double sg = adh_material_sigma(&d.best) / adh_material_sigma(&truth);
-    ok(d.chi2_red < 1.6 && fabs(gR - 1) < 0.01 && fabs(sg - 1) < 0.01,
-       "R = 7 um fixed, E and A free: gamma R and sigma as made (%.4f, %.4f), chi2/dof %.3g", gR, sg, d.chi2_red);
+    if (tap_sanitized_short()) {
+        tap_sanitized_leaves_out("R = 7 um fixed, E and A free (the fit of E and A above, another R)");
+    } else {
+        adh_fit_result d = fit(&s.d, EA, start, 0);
+        double gR = adh_material_gamma(&d.best) * d.best.R / (adh_material_gamma(&truth) * truth.R);
+        double sg = adh_material_sigma(&d.best) / adh_material_sigma(&truth);
+        ok(d.chi2_red < 1.6 && fabs(gR - 1) < 0.01 && fabs(sg - 1) < 0.01,
+           "R = 7 um fixed, E and A free: gamma R and sigma as made (%.4f, %.4f), chi2/dof %.3g", gR, sg, d.chi2_red);
+    }
     adh_fit_result d2 = fit(&s.d, 1u << ADH_FIT_A, start, 0);
     ok(isfinite(d2.chi2_red) && d2.chi2_red > 4, "R = 7 um and E fixed, A free: a poor fit (chi2/dof %.3g against "
        "the data's scatter, above 4)", d2.chi2_red);

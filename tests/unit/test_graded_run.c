@@ -116,13 +116,17 @@ int main(void)
     adh_grid *g = adh_rings_alloc(&spec);
     ok(g && 2 * g->n < u->n, "graded grid: %zu rings where the uniform one has %zu", g->n, u->n);
     adh_run ru, rg, rh[2];
-    int cu = cycle(u, ADH_STORAGE_DENSE, &ru), cg = cycle(g, ADH_STORAGE_DENSE, &rg);
+    adh_run_init(&ru);
+    int uniform = !tap_sanitized_short(); /* the uniform grid's cycle: the dense one's on 2.4x the nodes */
+    int cu = uniform ? cycle(u, ADH_STORAGE_DENSE, &ru) : ADH_SUCCESS, cg = cycle(g, ADH_STORAGE_DENSE, &rg);
     int ch[2] = { cycle(g, fast[0], &rh[0]), cycle(g, fast[1], &rh[1]) };
-    int all = cu == ADH_SUCCESS && cg == ADH_SUCCESS && ch[0] == ADH_SUCCESS && ch[1] == ADH_SUCCESS && ru.nturns == 1 &&
-              rg.nturns == 1 && rh[0].nturns == 1 && rh[1].nturns == 1;
-    ok(all, "the cycle succeeds on the uniform grid, the graded grid, and the graded grid with hmat and h2 (%d %d %d %d)",
-       cu, cg, ch[0], ch[1]);
-    if (all) {
+    int all = cu == ADH_SUCCESS && cg == ADH_SUCCESS && ch[0] == ADH_SUCCESS && ch[1] == ADH_SUCCESS &&
+              (ru.nturns == 1 || !uniform) && rg.nturns == 1 && rh[0].nturns == 1 && rh[1].nturns == 1;
+    ok(all, "the cycle succeeds on %sthe graded grid, and the graded grid with hmat and h2 (%d %d %d %d)",
+       uniform ? "the uniform grid, " : "", cu, cg, ch[0], ch[1]);
+    if (all && !uniform)
+        tap_sanitized_leaves_out("the cycle on the uniform grid and the graded grid's agreement with it");
+    if (all && uniform) {
         const adh_turn_result *a = &ru.turns[0], *b = &rg.turns[0];
         ok(fabs(ru.jump_in_h0 - rg.jump_in_h0) < 0.051e-9, "jump-in within a step: uniform %.2f nm, graded %.2f nm",
            ru.jump_in_h0 * 1e9, rg.jump_in_h0 * 1e9);
@@ -134,6 +138,9 @@ int main(void)
         ok_rel((double)rg.iterations, (double)ru.iterations, 0.05,
                "graded iterations within 5 % of uniform (eps means the same on both)");
         ok(ru.unconverged == 0 && rg.unconverged == 0, "every step converged on both grids");
+    }
+    if (all) {
+        const adh_turn_result *b = &rg.turns[0];
         for (int s = 0; s < 2; s++) {
             const adh_turn_result *c = &rh[s].turns[0];
             const char *name = adh_kernel_storage_name(fast[s]);

@@ -218,7 +218,10 @@ int main(void)
     settings();
     scaled_rule();
     stiff_contact();
-    same_equilibrium();
+    if (tap_sanitized_short())
+        tap_sanitized_leaves_out("the rules' equilibrium at eps 1e-15 m (both_rules, as the stiff contact's at 1e-13 m)");
+    else
+        same_equilibrium();
     same_cycle();
     return tap_done();
 }

@@ -95,10 +95,15 @@ int main(void)
     double fdr = gc.rmax / (double)fine;
     /* twice the radius in rings growing past the automatic grid's */
     adh_rings_spec wide = { .dr = fdr, .fine = gc.rmax, .ratio = 1.05, .rmax = 2 * gc.rmax };
-    result a = cycle(&m, adh_grid_alloc(gc.n, gc.dr)), f = cycle(&m, adh_grid_alloc(fine, fdr));
+    result a = cycle(&m, adh_grid_alloc(gc.n, gc.dr));
     result w = cycle(&m, adh_rings_alloc(&wide));
     ok(a.hyst > 0 && a.pulloff < 0 && a.jump_out > a.jump_in, "the cycle has a loop: %.4g fJ", a.hyst * 1e15);
-    agree("1.5x finer, same Rmax", &a, &f);
+    if (tap_sanitized_short()) {
+        tap_sanitized_leaves_out("the uniform grid 1.5x finer (the automatic grid's cycle on 1.5x the nodes)");
+    } else {
+        result f = cycle(&m, adh_grid_alloc(fine, fdr));
+        agree("1.5x finer, same Rmax", &a, &f);
+    }
     agree("1.5x finer, 2x Rmax (graded past the automatic radius)", &a, &w);
     return tap_done();
 }
