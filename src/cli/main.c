@@ -97,8 +97,7 @@ static int checked(adh_config *cfg, const cli_options *cli, char *why, size_t le
     if (cli_options_validate(cfg, why, len) != 0)
         return CLI_EXIT_USAGE;
     const adh_run_spec *spec = &cfg->spec;
-    unsigned solvers = spec->mode == ADH_MODE_STATIC || spec->mode == ADH_MODE_TIME ? (unsigned)adh_plan_jobs(cfg)
-                     : cli->reference[0] ? 1 : 0;
+    unsigned solvers = adh_budget_solvers(spec, (unsigned)adh_plan_jobs(cfg), cli->reference[0] != 0);
     char msg[1200];
     if (adh_budget_check_threads(spec, solvers, (unsigned)adh_plan_jobs(cfg), msg, sizeof msg) != 0) {
         cli_options_words(msg, why, len);

@@ -474,9 +474,10 @@ static size_t drives_to_step(study_job *job, size_t *todo, adh_run_spec *grids, 
 static int kernels_fit(const adh_config *cfg, const adh_run_spec *grids, size_t ngrids, int jobs, size_t keep,
                        char *why, size_t whylen)
 {
-    unsigned solvers = cfg->spec.mode == ADH_MODE_STATIC ? (unsigned)jobs : 0;
     double most = 0;
     for (size_t g = 0; g < ngrids; g++) {
+        /* as a single run counts them: in physical time too */
+        unsigned solvers = adh_budget_solvers(&grids[g], (unsigned)jobs, 0);
         if (adh_budget_check(&grids[g], solvers, why, whylen) != 0)
             return -1;
         most = fmax(most, adh_budget_bytes(&grids[g], solvers));

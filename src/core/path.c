@@ -298,7 +298,11 @@ static double time_at(const adh_path *p, double b)
 static void contact_now(adh_path *p, int now, const path_pt *q)
 {
     p->in_contact = now;
-    if (now && p->branch > 0 && isnan(p->res.jump_in_h0)) {
+    /* in contact at the walk's first row (a start where the surfaces
+     * already touch) is no jump in: none was seen, as in relaxation and
+     * the static curve (it said jump_in_h0 = the start, t = 0) */
+    int first = p->run->nrows - 1 == p->row0;
+    if (now && p->branch > 0 && !first && isnan(p->res.jump_in_h0)) {
         p->res.jump_in_h0 = q->o.h0, p->res.jump_in_t = q->o.t, p->res.jump_in_base = q->o.base;
         p->jump_in_row = p->run->nrows - 1;
     }

@@ -1,10 +1,13 @@
-/* The viscoelastic solver's preconditioner: the static mode's two
- * (src/core/static.c: linearize, precond), for a compliance c given at
- * each factorization and with general borders (the viscoelastic Newton
- * systems carry one or two, and a different compliance each time the
- * integrator's step changes much). static.c keeps its own copies inside
- * its continuation; when its preconditioner becomes a module of its own,
- * this file should become a user of it.
+/* The viscoelastic solver's preconditioner: the static mode's two (the
+ * module adhere/precond.h: a dense LU of the active block, a HODLR of the
+ * whole J), for a compliance c given at each factorization and with
+ * general borders (the viscoelastic Newton systems carry one or two, and a
+ * different compliance each time the integrator's step changes much; the
+ * static module's has one border and -2/E). Under a dense kernel this
+ * file holds W's entries once for the run: the static solver that lands a
+ * jump into contact borrows them (adh_visco_pre_entries,
+ * adh_static_alloc_shared, adh_precond_alloc_shared) rather than keeping a
+ * copy of its own; it factors its own LU, or builds its own HODLR.
  *
  * Dense: J = I - U E_S^T with U = c W[:,S] diag(d_S) (the columns outside
  * the active prefix S are those of I), so J x = x - U x_S and, with the

@@ -273,6 +273,11 @@ double adh_budget_bytes(const adh_run_spec *run, unsigned solvers)
     return PROGRAM_BYTES + kernel_bytes(storage, n) + own + VECTORS_NODE * n + (double)solvers * solver;
 }
 
+unsigned adh_budget_solvers(const adh_run_spec *run, unsigned jobs, int reference)
+{
+    return run->mode == ADH_MODE_STATIC || run->mode == ADH_MODE_TIME ? jobs : reference ? 1 : 0;
+}
+
 /* "3.2 GB", "130 MB" */
 static void bytes_text(double b, char *buf, size_t len)
 {

@@ -24,6 +24,13 @@ double adh_budget_machine_bytes(void);
  * solver's matrices, and the program's own. */
 double adh_budget_bytes(const adh_run_spec *run, unsigned solvers);
 
+/* The static solvers `jobs` runs of run's mode hold at once, for
+ * adh_budget_bytes: one a job in static mode and in physical time (where a
+ * viscoelastic path holds its preconditioner and the landing its LU), none
+ * for a relaxation but its static reference's (reference 1). A single run
+ * and a study count alike. */
+unsigned adh_budget_solvers(const adh_run_spec *run, unsigned jobs, int reference);
+
 /* Whether need bytes fit, with `threads` threads computing: need within
  * the memory there is, and need and the address space the threads map
  * beside it (the BLAS's working buffer each) within ulimit -v and -d. *have

@@ -188,8 +188,16 @@ static void q(const tui_view *v, double value, adh_quantity kind, char *buf, siz
 
 static void draw_params(const tui_sim *s, const tui_view *v, int y, int x, int w)
 {
-    put(y, x, w, A_BOLD, " Parameters  (%s select, Enter edit, +/- x2)",
-        gk(v, "\xe2\x86\x91\xe2\x86\x93", "Up/Down"));
+    /* the key hints whole, or fewer of them with the bracket closed: cut
+     * at a clause, the line ended '(Up/Down select, Enter edit' */
+    char head[96];
+    const char *ud = gk(v, "\xe2\x86\x91\xe2\x86\x93", "Up/Down");
+    snprintf(head, sizeof head, " Parameters  (%s select, Enter edit, +/- x2)", ud);
+    if ((int)text_cols(head) > w)
+        snprintf(head, sizeof head, " Parameters  (%s select, Enter edit)", ud);
+    if ((int)text_cols(head) > w)
+        snprintf(head, sizeof head, " Parameters  (%s select)", ud);
+    put(y, x, w, A_BOLD, "%s", head);
     for (int p = 0, row = 1; p < P_COUNT; p++) {
         if (!tui_sim_param_shown(s, (tui_param)p))
             continue;   /* physical time's fields only in it */
@@ -304,11 +312,16 @@ static void draw_derived(const tui_sim *s, const tui_view *v, int y, int x, int 
     put(y + 2, x, w, gr->resolved ? A_NORMAL : A_BOLD, "  E* %s  %s/%s %.3g %s", es, gk(v, "\xe2\x84\x93", "l"),
         gk(v, "\xce\x94", "dr"), gr->edge_nodes, gr->resolved ? "resolved" : "UNRESOLVED");
     put(y + 3, x, w, A_NORMAL, "  pull-off JKR %s DMT %s", jkr, dmt);
-    put(y + 4, x, w, A_NORMAL, "    M-D %s = %.3g %s (%s %.3g)", md, m->md_pulloff / -unit, pgr,
-        gk(v, "\xce\xbb", "lambda"), m->md_lambda);
+    /* lambda beside the M-D pull-off, or after its jump-out where that
+     * line is too narrow for it (ASCII's 'lambda' at 100 columns) */
+    char mdl[128], lam[48];
+    snprintf(mdl, sizeof mdl, "    M-D %s = %.3g %s", md, m->md_pulloff / -unit, pgr);
+    snprintf(lam, sizeof lam, " (%s %.3g)", gk(v, "\xce\xbb", "lambda"), m->md_lambda);
+    int below = (int)(text_cols(mdl) + text_cols(lam)) > w;
+    put(y + 4, x, w, A_NORMAL, "%s%s", mdl, below ? "" : lam);
     /* eq 24 is a gap; the jump-in it gives (through eq 23) a drive position */
     put(y + 5, x, w, A_NORMAL, "  eq 24: gap h* %s, jump-in %s", hs, ji);
-    put(y + 6, x, w, A_NORMAL, "  M-D jump-out %s", isnan(m->md_jump_out) ? "none" : jo);
+    put(y + 6, x, w, A_NORMAL, "  M-D jump-out %s%s", isnan(m->md_jump_out) ? "none" : jo, below ? lam : "");
 }
 
 /* Relaxation: the cycle on the path so far, the quantities an experiment

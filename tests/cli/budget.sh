@@ -42,6 +42,22 @@ check "... naming the estimate and what to use: $(head -c 300 dense.err)" \
     sh -c "grep -q 'about 3.2[0-9]* GB' dense.err && grep -q -- '--operator=h2' dense.err"
 check "... before anything was written" [ ! -e dense/force.tsv ]
 
+# A study in physical time counts each run's solvers as a single run does
+# (a viscoelastic path's preconditioner, n^2 on a dense kernel, and the
+# landing's LU, n^2 more): over nodes = 100, 4000 on the dense operator
+# under 600 MB of address space its largest run (a 128 MB kernel, about
+# 531 MB with its solvers) is refused alone, and the study with it, before
+# its first run. It counted the kernels only and started (killed here
+# after 20 s).
+for a in "-N 4000" "--sweep=nodes=100,4000"; do
+    (ulimit -v 600000 && exec timeout -s KILL 20 "$ADHERE" --batch -q --no-plot --mode=time --material=sls $a \
+        --operator=dense --force --jobs=1 -o visco) 2>visco.err
+    rc=$?
+    check "physical time, sls, $a, dense, under ulimit -v 600000: refused up front, exit 2 (got $rc): $(grep -v warning visco.err | head -c 300)" \
+        sh -c "[ $rc -eq 2 ] && grep -q 'a run on 4000 nodes with the dense operator and its static solver would hold about 5[0-9][0-9] MB, more than the [0-9.]* MB this process may use' visco.err"
+    check "... before a run was written" sh -c "[ ! -e visco/sweep.tsv ] && [ ! -e visco/force.tsv ] && [ ! -e visco/run-1 ]"
+done
+
 # Under an address-space limit the BLAS's working buffers (OpenBLAS maps
 # 128 MiB a thread and, before 0.3.30, retries forever when it cannot,
 # deaf to signals) are counted: a run either fits or is refused, and

@@ -126,8 +126,20 @@ check "the terminal is restored (the TUI is gone from the screen)" sh -c "! tmux
 start C
 check "LC_ALL=C at 100 columns: the derived panel shows gamma with its unit whole, mJ/m^2" \
     wait_for "  sigma 7.503  mu 6.084  gamma 7.958 mJ/m^2"
+# the heading's key hints and the Maugis-Dugdale lambda were cut there:
+# "Parameters  (Up/Down select, Enter edit" with its bracket open, and
+# "(lambda 7.06)" gone; now fewer hints with the bracket closed, and lambda
+# after the M-D jump-out where the pull-off's line has no room for it
+check "... the heading's hints whole, the bracket closed: (Up/Down select, Enter edit)" \
+    sh -c "tmux -L '$sock' capture-pane -p -t t | grep -qF ' Parameters  (Up/Down select, Enter edit) '"
+check "... the M-D line keeps lambda: M-D jump-out 5.408 nm (lambda 7.06)" \
+    sh -c "tmux -L '$sock' capture-pane -p -t t | grep -qF '  M-D jump-out 5.408 nm (lambda 7.06)'"
 T resize-window -t t -x 80 -y 32
 check "... and at 80 columns (mu makes room): sigma 7.503  gamma 7.958 mJ/m^2" wait_for "  sigma 7.503  gamma 7.958 mJ/m^2"
+check "... the heading's bracket closed: (Up/Down select)" \
+    sh -c "tmux -L '$sock' capture-pane -p -t t | grep -qF ' Parameters  (Up/Down select) '"
+check "... and lambda kept: (lambda 7.06)" \
+    sh -c "tmux -L '$sock' capture-pane -p -t t | grep -qF '(lambda 7.06)'"
 T send-keys -t t q
 check "... q quits with status 0" [ "$(exit_status)" = 0 ]
 

@@ -421,6 +421,10 @@ static void start_in_contact(const fixture *f, double k)
     ok(p.rc == ADH_SUCCESS && p.run.nrows > 2 && r[0].a > 0 && out == 1 && same == 0,
        "k = %g N/m, a 1 TPa sphere from z0 (in contact, a = %.3g nm): the jump out beyond the curve's start from the "
        "last row, no row repeated (%zu of %zu)", k, p.run.nrows ? r[0].a * 1e9 : NAN, same, p.run.nrows);
+    /* in contact from its first row, it saw no jump in (relaxation and
+     * the static curve report none from that start either) */
+    ok(isnan(p.r.jump_in_h0) && isnan(p.r.jump_in_t),
+       "k = %g N/m, a 1 TPa sphere from z0: no jump in claimed (jump_in_h0 %g, t %g)", k, p.r.jump_in_h0, p.r.jump_in_t);
     adh_run_free(&p.run);
 }
 
