@@ -212,6 +212,12 @@ static int apply_data_fit(cli_options *cli, const option_doc *o, const char *arg
             snprintf(why, n, "--%s: '%s' is too long", name, arg);
             return 2;
         }
+        if (o->opt.val == OPT_FREE && empty_element(name, arg, why, n))   /* 'E,' */
+            return 2;
+        if (o->opt.val == OPT_FREE && *dst) {   /* the second list replaced the first without a word */
+            snprintf(why, n, "--free given twice ('%s' and '%s'): give one list, --free=%s,%s", dst, arg, dst, arg);
+            return 2;
+        }
         memcpy(dst, arg, strlen(arg) + 1);   /* fits: checked above */
         cli->fit.given = 1;
         return 0;

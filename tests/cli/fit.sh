@@ -87,6 +87,17 @@ check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep
 rc=$?
 check "--offset=1e-400m: exit 2, it underflows to zero, 0 or at least 2.2e-308 m allowed, nothing written ($rc: $(cat "$TMP/e4"))" \
     sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --offset: '1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.2e-308 m\" '$TMP/e4' && [ ! -e '$TMP/underout' ]"
+# E, A and R free together: the force is gamma R times a function of h0/z0
+# and sigma, so one direction of the three changes nothing; the fit said
+# 'result: fit' (exit 0) with R 7.96 um +- 3.6 % on this curve (made with
+# 10 um). A name twice, a second --free (it replaced the first) and an
+# empty element (taken for nothing) are refused too; nothing is written.
+for free in --free=E,A,R --free=E,e "--free=E --free=A" --free=E,; do
+    "$ADHERE" fit --data="$DATA" $free -o "$TMP/freeout" fig1 >/dev/null 2>"$TMP/e12"
+    rc=$?
+    check "$free: exit 2, said why, nothing written ($rc: $(cat "$TMP/e12"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --free.*\(not determined by a force curve\|named twice\|given twice\|empty element\)' '$TMP/e12' && [ ! -e '$TMP/freeout' ]"
+done
 "$ADHERE" --batch --free=E fig1 >/dev/null 2>"$TMP/e3"
 check "--free outside adhere fit is refused ($(cat "$TMP/e3"))" grep -q "are adhere fit's" "$TMP/e3"
 # an empty list is refused as every other flag's empty value is (it was
