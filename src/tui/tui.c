@@ -986,10 +986,13 @@ static void run_next(tui *t)
             return;
         }
         if (got == KEYSRC_ITEM) {
-            if (it.kind == TUI_REPLAY_KEY) {
+            if (it.kind == TUI_REPLAY_KEY && it.key == KEY_RESIZE) {
+                /* the window changed, not the user's mind: redrawn at the
+                 * new size, the run goes on (it paused, as a key does) */
+                clearok(curscr, TRUE);
+                t->dirty = 1;
+            } else if (it.kind == TUI_REPLAY_KEY) {
                 stop_all(t);
-                if (it.key == KEY_RESIZE)
-                    clearok(curscr, TRUE);
                 const adh_obs *o = tui_sim_row(&t->sim);
                 char h0[64];
                 fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);

@@ -101,6 +101,13 @@ type_cmd "set d 0.05nm"
 type_cmd "set eps 0.1pm"
 T send-keys -t t r
 check "r runs" wait_for "running to the turn"
+# a resize during the run redraws and lets it go on (it paused the run, as
+# a key does: the window changed, not the user's mind)
+T resize-window -t t -x 90 -y 30
+at90() { [ "$(screen | head -1 | wc -L)" -le 90 ] && screen | head -1 | grep -q ' ? help  q quit *$'; }
+i=0
+while ! at90 && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+check "a resize during a run redraws at the new size and does not pause it" sh -c "tmux -L '$sock' capture-pane -p -t t | head -1 | grep -q ' ? help  q quit *\$' && ! tmux -L '$sock' capture-pane -p -t t | grep -q 'paused'"
 T send-keys -t t Space
 check "a key pauses the run" wait_for "paused at h0"
 
