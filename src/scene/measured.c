@@ -170,6 +170,11 @@ static int column_of(const char *spec, char **hdr, int nh, int ncols, char *why,
     int found = -1, exact = -1, nfound = 0;
     char want[64], have[64];
     bare_name(spec, want, sizeof want);
+    if (!*want) {   /* '' (--columns=1,) or a unit alone: a prefix of every name, "more than one column" */
+        snprintf(why, whylen, "column '%.40s' names no column: give POS,FORCE, each a number from 1 or a header "
+                 "name", spec);
+        return -1;
+    }
     for (int i = 0; i < nh; i++) {
         bare_name(hdr[i], have, sizeof have);
         if (strcmp(have, want) == 0)

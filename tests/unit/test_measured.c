@@ -96,6 +96,12 @@ int main(void)
     ok(rc != 0 && strstr(why, "the file has no header: give its number"), "a name without a header: refused (%s)", why);
     rc = load("Separation (nm),Sep2 (nm),F (nN)\n1,2,3\n", "sep,F", &m, why, sizeof why);
     ok(rc != 0 && strstr(why, "names more than one column"), "an ambiguous prefix: refused (%s)", why);
+    /* an empty name (--columns=1,) or a unit alone is a prefix of every
+     * name: it was refused as naming "more than one column" */
+    rc = load("Separation (nm),F (nN)\n1,2\n", "1,", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, "column '' names no column"), "an empty column name: refused as naming none (%s)", why);
+    rc = load("Separation (nm),F (nN)\n1,2\n", "1,(nN)", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, "column '(nN)' names no column"), "a unit alone: refused as naming none (%s)", why);
     /* old Mac line ends (a carriage return alone): the file is one line,
      * refused as a comment of 0 points or a line over 4096 bytes; and a
      * carriage return inside a line, quoted, moved the terminal's cursor
