@@ -253,6 +253,19 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
         return 2;
     }
     adh_mode mode = cli->cfg.spec.mode;
+    if (mode == ADH_MODE_TIME && cli->cfg.spec.time.sls) {   /* the solid chose the mode: "leave it out" named none given */
+        snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax) of an "
+                 "elastic sphere: material = sls (a standard linear solid, in physical time) would be ignored; give "
+                 "--material=elastic, with E for its modulus");
+        return 2;
+    }
+    unsigned drive = cli->cfg.spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);
+    if (mode == ADH_MODE_TIME && !(cli->cfg.spec.time.given & ADH_TIME_MODE) && drive) {   /* an elastic sphere's drive */
+        snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax): "
+                 "the %s given puts the sphere in physical time, which would be ignored; leave it out",
+                 drive & ADH_TIME_SPEED ? "speed" : drive & ADH_TIME_DWELL ? "dwell_time" : "spring");
+        return 2;
+    }
     if (mode == ADH_MODE_TIME || mode == ADH_MODE_RIGID) {
         snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax): "
                  "mode = %s would be ignored; leave it out", mode == ADH_MODE_TIME ? "time" : "rigid");

@@ -138,6 +138,15 @@ check "a sweep with adhere fit (the afm scene's, --sweep): exit 2, naming the sw
 rc=$?
 check "--mode=time with adhere fit: exit 2, naming the fit's models ($(cat "$TMP/e11"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'mode = time would be ignored' '$TMP/e11'"
+# the visco scene names no mode: its solid (material = sls), or with
+# --material=elastic its speed, puts it in physical time; the refusal
+# said "mode = time would be ignored; leave it out"
+"$ADHERE" fit --data="$DATA" visco >/dev/null 2>"$TMP/e13"
+rc1=$?
+"$ADHERE" fit --data="$DATA" --material=elastic visco >/dev/null 2>"$TMP/e14"
+rc2=$?
+check "the visco scene with adhere fit: exit 2, naming its solid, then its speed, not a mode ($(cat "$TMP/e13" "$TMP/e14"))" \
+    sh -c "[ $rc1 -eq 2 ] && [ $rc2 -eq 2 ] && grep -q 'material = sls (a standard linear solid' '$TMP/e13' && grep -q 'the speed given puts the sphere in physical time' '$TMP/e14'"
 awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
