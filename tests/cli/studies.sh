@@ -54,6 +54,18 @@ if command -v parallel >/dev/null 2>&1; then
     check "the merged map.png is the whole study's, byte for byte" cmp -s "$TMP/whole/map.png" "$TMP/merged/map.png"
     check "and the timing column is really there to differ (16 times, each > 0)" \
         awk -F'\t' '!/^#/ && $1 != "run" {n++; if (!($15 > 0)) bad = 1} END {exit bad || n != 16}' "$TMP/merged/sweep.tsv"
+    # the Slurm example's task resubmitted alone (sbatch --array=2, as for a
+    # task that failed): with ADHERE_SHARDS (submit.sh sets it) its index is
+    # the shard, 2/3 again, and it merges with the others; the array's own
+    # numbering made it shard 1/1, refused in shard-1's directory
+    mkdir -p "$TMP/slurm" && cp -r "$TMP/shard1" "$TMP/slurm/shard-1" && cp -r "$TMP/shard3" "$TMP/slurm/shard-3"
+    SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=2 SLURM_ARRAY_TASK_COUNT=1 ADHERE_SHARDS=3 ADHERE="$ADHERE" \
+        ADHERE_SCENE="$TMP/map.scene" ADHERE_OUT="$TMP/slurm" ADHERE_ARGS="$TINY" \
+        sh "${ADHERE_SRC:-.}/share/adhere/examples/study.sbatch" 2>"$TMP/sb.err"
+    rc=$?
+    "$ADHERE" merge -q --no-plot -o "$TMP/slurm/merged" "$TMP"/slurm/shard-* 2>>"$TMP/sb.err"
+    check "the Slurm example's task 2 resubmitted alone is shard 2/3 and merges (exit $rc $?: $(head -c 300 "$TMP/sb.err"))" \
+        sh -c "grep -q '^shard	2/3\$' '$TMP/slurm/shard-2/study.tsv' && [ \"\$(grep -vc '^#' '$TMP/slurm/merged/sweep.tsv')\" -eq 17 ]"
     # a signal while the merge draws (a gnuplot that never answers, which
     # says when it started): the earlier merge's table and figure stay as
     # they were, no temporary is left, exit 128 + the signal's number
