@@ -123,6 +123,11 @@ wait_until() {  # wait_until SECONDS COMMAND...: until COMMAND succeeds
 }
 check "a resize redraws at the new size" wait_until 10 resized
 check "and nothing is wider than 80 columns" [ "$(screen | wc -L)" -le 80 ]
+# a tiny window: the compact parameters had no rows left and were drawn
+# from row 0 over the title (pb = H - 2 - their rows < 1)
+T resize-window -t t -x 20 -y 5
+check "a 20x5 window keeps its title on the first row" wait_until 10 sh -c "tmux -L '$sock' capture-pane -p -t t | head -1 | grep -q '^ ad  ? help  q quit\$'"
+T resize-window -t t -x 80 -y 24
 
 T send-keys -t t q
 check "q quits with status 0" [ "$(exit_status)" = 0 ]
