@@ -1,5 +1,6 @@
 #include "adhere/units.h"
 #include "scene/measured.h"
+#include "scene/text.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -336,25 +337,6 @@ static int header(adh_measured *m, char **f, int nf, const char *columns, int *c
     return 0;
 }
 
-/* The first byte of s that does not begin or continue a UTF-8 character
- * (overlong forms and surrogates pass: what matters is that no byte a
- * terminal takes for a control, 0x80-0x9f, is quoted alone), or NULL. */
-static const char *not_utf8(const char *s)
-{
-    const unsigned char *p = (const unsigned char *)s;
-    while (*p) {
-        int n = *p < 0x80 ? 0 : *p >= 0xc2 && *p <= 0xdf ? 1 : *p >= 0xe0 && *p <= 0xef ? 2
-              : *p >= 0xf0 && *p <= 0xf4 ? 3 : -1;
-        if (n < 0)
-            return (const char *)p;
-        for (int k = 1; k <= n; k++)
-            if ((p[k] & 0xc0) != 0x80)
-                return (const char *)p;
-        p += n + 1;
-    }
-    return NULL;
-}
-
 /* One line: a header before any point, else a point. 0, or -1 with why. */
 static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, const char *columns, char *sep,
                       int *ncols, int *cx, int *cy, double *fx, double *fy, size_t *cap, char *why, size_t whylen)
@@ -388,7 +370,7 @@ static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, co
     /* quoted in a refusal, a Latin-1 byte (0xb5, the micro sign) reached the
      * terminal as it was, and 0x9b is a control (CSI) to some; comments may
      * keep theirs */
-    const char *bad = not_utf8(line);
+    const char *bad = adh_text_not_utf8(line);
     if (bad) {
         snprintf(why, whylen, "%s:%zu: the byte 0x%02x is not UTF-8 text (a Latin-1 or Windows-1252 export? µ is "
                  "0xb5 there): save the file as UTF-8, or write um for µm", m->path, lineno, (unsigned char)*bad);
