@@ -9,6 +9,7 @@
 #define _GNU_SOURCE
 #endif
 #include "plot/outdir.h"
+#include "scene/text.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -530,13 +531,20 @@ void adh_outdir_escape(const char *in, char *out, size_t len)
     size_t o = 0;
     for (; *in && o + 1 < len; in++) {
         unsigned char b = (unsigned char)*in;
-        if (b < 0x20 || b == 0x7f) {
+        /* a byte that begins no UTF-8 character too: 0x9b alone is CSI to
+         * some terminals, as ESC [ is to all */
+        int n = adh_text_utf8_len(in);
+        if (b < 0x20 || b == 0x7f || n == 0) {
             if (o + 5 > len)
                 break;
             snprintf(out + o, len - o, "\\x%02x", b);
             o += 4;
+        } else if (o + (size_t)n < len) {   /* a character whole, or none */
+            memcpy(out + o, in, (size_t)n);
+            o += (size_t)n;
+            in += n - 1;
         } else {
-            out[o++] = (char)b;
+            break;
         }
     }
     if (len)

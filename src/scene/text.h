@@ -9,4 +9,8 @@
  * terminals) or Latin-1 text is quoted as it is. */
 const char *adh_text_not_utf8(const char *s);
 
+/* The bytes of the UTF-8 character s begins with (1 to 4; an ASCII byte,
+ * the NUL too, is 1), or 0 when s does not begin one. */
+int adh_text_utf8_len(const char *s);
+
 #endif
