@@ -260,7 +260,10 @@ int cli_fit_main(cli_options *cli)
     }
     const char *word;
     int verdict = cli_fit_verdict(&r, &word);
-    if (!cfg->output.quiet && out && rc == CLI_EXIT_OK)
+    if (!cfg->output.quiet && out && !isfinite(res.chi2))   /* it said "wrote fit.tsv, ..." of files not written */
+        fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s; no evaluation succeeded: nothing written "
+                "in %s\n", word, fr.evals, res.seconds, adh_outdir_path(od));
+    else if (!cfg->output.quiet && out && rc == CLI_EXIT_OK)
         fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s; wrote fit.tsv, fit-points.tsv, best.scene%s "
                 "in %s (open it: adhere %s/best.scene)\n", word, fr.evals, res.seconds, cfg->output.plot ? ", fit.png" : "",
                 adh_outdir_path(od), adh_outdir_path(od));

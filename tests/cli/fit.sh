@@ -169,6 +169,11 @@ check "a fit whose model stalls: exit 1, the report says why and what to change 
            grep -q \"^the last model evaluation that failed stopped: $stall.*(--model=relax)\$\" '$TMP/stall.out'"
 check "... standard error too, under -q; no --mode named ($(cat "$TMP/stall.err"))" \
     sh -c "grep -q \"^adhere: the model stopped: $stall.*(--model=relax)\$\" '$TMP/stall.err' && ! grep -qE -- '--mode([^l]|\$)' '$TMP/stall.err' '$TMP/stall.out'"
+# with -o, no evaluation having succeeded, nothing is written: the closing
+# line said "wrote fit.tsv, fit-points.tsv, best.scene, fit.png in DIR"
+"$ADHERE" fit --data="$DATA" -E 0.3GPa -N 45 --spacing=16nm --force -o "$TMP/stallout" fig1 >/dev/null 2>"$TMP/stall.err"
+check "... with -o: its closing line says nothing was written, and nothing was ($(grep -v '^  eval' "$TMP/stall.err" | head -c 300))" \
+    sh -c "grep -q 'no evaluation succeeded: nothing written in .*stallout' '$TMP/stall.err' && ! grep -q 'wrote fit.tsv' '$TMP/stall.err' && [ -z \"\$(ls '$TMP/stallout')\" ]"
 
 # --model=relax: a curve the relaxation made (E = 1 GPa, loaded to -2 nm
 # and unloaded; its force.tsv's h0, F and path, with noise of about 1 % of
