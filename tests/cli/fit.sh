@@ -122,6 +122,13 @@ ln -s "$(cd "$(dirname "$DATA")" && pwd)/$(basename "$DATA")" "$TMP/again.tsv"
 rc=$?
 check "the same curve given twice: exit 2, both names, nothing written ($(cat "$TMP/e7"))" \
     sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --data: $TMP/again.tsv is $DATA again: give each measured curve once' '$TMP/e7' && [ ! -e '$TMP/twiceout' ]"
+# a copy under another name (CRLF line ends, a comment: the same points)
+# was taken as a second curve, the errors again sqrt(2) too small
+{ echo '# copied'; sed 's/$/\r/' "$DATA"; } >"$TMP/copy.tsv"
+"$ADHERE" fit --data="$DATA" --data="$TMP/copy.tsv" -o "$TMP/twiceout" fig1 >/dev/null 2>"$TMP/e7"
+rc=$?
+check "a copy of the curve: exit 2, both names, nothing written ($(cat "$TMP/e7"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --data: $TMP/copy.tsv holds the same 200 points as $DATA (a copy?)' '$TMP/e7' && [ ! -e '$TMP/twiceout' ]"
 # what the fit's model does not hold: a spring, a sweep (the shipped afm
 # scene sweeps the spring). Each was silently left out, and the fit ran.
 "$ADHERE" fit --data="$DATA" --spring=1N/m -o "$TMP/springout" fig1 >/dev/null 2>"$TMP/e8"
