@@ -418,6 +418,24 @@ $M --allow-partial -o "$TMP/m8" "$TMP/fast" "$TMP/slow" 2>/dev/null
 check "... joined with --allow-partial: # PARTIAL, runs 1 and 3 with results" \
     sh -c "grep -q '^# PARTIAL: 2 of 4 runs' '$TMP/m8/sweep.tsv' && awk -F'\t' '!/^#/ && (\$1 == 1 || \$1 == 3) && \$NF != \"not run\" {n++} END {exit n != 2}' '$TMP/m8/sweep.tsv'"
 
+# --- another study's results are not cleared without --overwrite ---
+# the fingerprint is the scene's whole text: a comment added to the scene
+# cleared a study's results without a word and ran it again from scratch
+printf '[scene]\nmode = rigid\n[sweep]\nE = 1GPa, 2GPa\n' >"$TMP/edit.scene"
+"$ADHERE" --batch -q "$TMP/edit.scene" -o "$TMP/edit" 2>/dev/null
+cp "$TMP/edit/runs.tsv" "$TMP/edit.runs"
+printf '# a note\n' >>"$TMP/edit.scene"
+"$ADHERE" --batch -q "$TMP/edit.scene" -o "$TMP/edit" 2>"$TMP/err"
+rc=$?
+check "a study's scene edited (a comment), rerun into its directory: exit 2, said, its rows kept ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'holds another study.s results (2 of its 2 runs; their scenes differ): give a new -o' '$TMP/err' && cmp -s '$TMP/edit.runs' '$TMP/edit/runs.tsv'"
+"$ADHERE" --batch -q "$TMP/edit.scene" --overwrite -o "$TMP/edit" 2>"$TMP/err"
+rc=$?
+check "... --overwrite replaces them with this study's (exit $rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && grep -q '^# runs.tsv: study' '$TMP/edit/runs.tsv' && ! cmp -s '$TMP/edit.runs' '$TMP/edit/runs.tsv'"
+"$ADHERE" --batch -q "$TMP/edit.scene" --sweep=E=1GPa,3GPa -o "$TMP/edit" 2>"$TMP/err"
+check "... another flag: named ($(cat "$TMP/err"))" grep -q 'their options differ (none against sweep.E = 1GPa,3GPa)' "$TMP/err"
+
 # --- values, ranges, the plan ---
 "$ADHERE" --batch -q --mode=rigid --sweep='E=10MPa..10GPa,log,13' --run-dirs=no -o "$TMP/log" 2>"$TMP/err"
 check "a log range of 13 values runs (rigid spheres: $(head -c 200 "$TMP/err"))" [ "$(rows "$TMP/log/sweep.tsv" | wc -l)" -eq 13 ]
