@@ -435,6 +435,15 @@ check "... --overwrite replaces them with this study's (exit $rc: $(cat "$TMP/er
     sh -c "[ $rc -eq 0 ] && grep -q '^# runs.tsv: study' '$TMP/edit/runs.tsv' && ! cmp -s '$TMP/edit.runs' '$TMP/edit/runs.tsv'"
 "$ADHERE" --batch -q "$TMP/edit.scene" --sweep=E=1GPa,3GPa -o "$TMP/edit" 2>"$TMP/err"
 check "... another flag: named ($(cat "$TMP/err"))" grep -q 'their options differ (none against sweep.E = 1GPa,3GPa)' "$TMP/err"
+# a single run (or a fit, or the TUI's plots) into a study's directory
+# removed its results as an earlier run's files
+cp "$TMP/edit/runs.tsv" "$TMP/edit.runs"
+"$ADHERE" --batch -q --mode=rigid -o "$TMP/edit" 2>"$TMP/err"
+rc=$?
+check "a single run into a study's directory: exit 2, said, its rows kept ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'edit holds a study.s results (2 runs in runs.tsv), which a run there would remove' '$TMP/err' && cmp -s '$TMP/edit.runs' '$TMP/edit/runs.tsv'"
+"$ADHERE" --batch -q --mode=rigid --overwrite -o "$TMP/edit" 2>"$TMP/err"
+check "... with --overwrite it runs there ($(cat "$TMP/err"))" sh -c "[ -s '$TMP/edit/summary.tsv' ] && [ ! -e '$TMP/edit/runs.tsv' ]"
 
 # --- values, ranges, the plan ---
 "$ADHERE" --batch -q --mode=rigid --sweep='E=10MPa..10GPa,log,13' --run-dirs=no -o "$TMP/log" 2>"$TMP/err"
