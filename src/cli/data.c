@@ -1,6 +1,7 @@
 #include "cli/data.h"
 
 #include <stdio.h>
+#include <string.h>
 #include <sys/stat.h>
 
 #include "scene/measured.h"
@@ -22,6 +23,21 @@ static int named_before(const cli_options *cli, size_t k, char *why, size_t whyl
     return 0;
 }
 
+/* Whether curve k holds the points an earlier one does, bit for bit: a
+ * copy of one file under another name (two measurements never agree to
+ * the last digit of every point), which named_before cannot see. */
+static int copied_before(const cli_options *cli, const adh_measured *m, size_t k, char *why, size_t whylen)
+{
+    for (size_t i = 0; i < k; i++)
+        if (m[i].n == m[k].n && memcmp(m[i].h0, m[k].h0, m[k].n * sizeof *m[k].h0) == 0 &&
+            memcmp(m[i].F, m[k].F, m[k].n * sizeof *m[k].F) == 0) {
+            snprintf(why, whylen, "--data: %s holds the same %zu points as %s (a copy?): give each measured curve "
+                     "once (a fit would count its points twice)", cli->data[k], m[k].n, cli->data[i]);
+            return -1;
+        }
+    return 0;
+}
+
 int cli_data_load(cli_options *cli, char *why, size_t whylen)
 {
     static adh_measured measured[CLI_MAX_DATA];
@@ -31,7 +47,8 @@ int cli_data_load(cli_options *cli, char *why, size_t whylen)
         cli->data[cli->ndata++] = cli->cfg.output.data;
     for (size_t i = 0; i < cli->ndata; i++) {
         if (named_before(cli, i, why, whylen) != 0 ||
-            adh_measured_load(cli->data[i], cli->columns, &measured[i], why, whylen) != 0)
+            adh_measured_load(cli->data[i], cli->columns, &measured[i], why, whylen) != 0 ||
+            copied_before(cli, measured, i, why, whylen) != 0)
             return -1;
         if (i > 0)
             measured[i - 1].next = &measured[i];

@@ -69,25 +69,6 @@ static void run_list(const size_t *runs, size_t n, char *buf, size_t len)
     }
 }
 
-/* What two studies' recipes differ in, for the refusal. */
-static void difference(const cli_study *a, const cli_study *b, char *buf, size_t len)
-{
-    if ((a->scene_text == NULL) != (b->scene_text == NULL) ||
-        (a->scene_text && strcmp(a->scene_text, b->scene_text) != 0)) {
-        snprintf(buf, len, "their scenes differ");
-        return;
-    }
-    for (size_t i = 0; i < a->nset || i < b->nset; i++)
-        if (i >= a->nset || i >= b->nset || strcmp(a->set[i].key, b->set[i].key) ||
-            strcmp(a->set[i].value, b->set[i].value)) {
-            snprintf(buf, len, "their options differ (%s%s%s against %s%s%s)", i < a->nset ? a->set[i].key : "none",
-                     i < a->nset ? " = " : "", i < a->nset ? a->set[i].value : "", i < b->nset ? b->set[i].key : "none",
-                     i < b->nset ? " = " : "", i < b->nset ? b->set[i].value : "");
-            return;
-        }
-    snprintf(buf, len, "their options differ in keys that do not change the runs");
-}
-
 /* Shard k's directory: opened, not in use by a running shard (a shared
  * lock beside its exclusive one), its study read. 0, or 2 with why. */
 static int open_shard(merge *m, size_t k, char *why, size_t whylen)
@@ -148,7 +129,7 @@ static int same_study(const merge *m, char *why, size_t whylen)
         const cli_study *b = &m->sh[k].st;
         char diff[600];
         if (strcmp(a->fingerprint, b->fingerprint) != 0) {
-            difference(a, b, diff, sizeof diff);
+            cli_study_difference(a, b, diff, sizeof diff);
             snprintf(why, whylen, "%.900s (study %s) and %.900s (study %s) are shards of different studies: %.600s",
                      m->sh[0].path, a->fingerprint, m->sh[k].path, b->fingerprint, diff);
             return 2;

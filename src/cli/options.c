@@ -212,6 +212,12 @@ static int apply_data_fit(cli_options *cli, const option_doc *o, const char *arg
             snprintf(why, n, "--%s: '%s' is too long", name, arg);
             return 2;
         }
+        if (o->opt.val == OPT_FREE && empty_element(name, arg, why, n))   /* 'E,' */
+            return 2;
+        if (o->opt.val == OPT_FREE && *dst) {   /* the second list replaced the first without a word */
+            snprintf(why, n, "--free given twice ('%s' and '%s'): give one list, --free=%s,%s", dst, arg, dst, arg);
+            return 2;
+        }
         memcpy(dst, arg, strlen(arg) + 1);   /* fits: checked above */
         cli->fit.given = 1;
         return 0;
@@ -247,6 +253,19 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
         return 2;
     }
     adh_mode mode = cli->cfg.spec.mode;
+    if (mode == ADH_MODE_TIME && cli->cfg.spec.time.sls) {   /* the solid chose the mode: "leave it out" named none given */
+        snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax) of an "
+                 "elastic sphere: material = sls (a standard linear solid, in physical time) would be ignored; give "
+                 "--material=elastic, with E for its modulus");
+        return 2;
+    }
+    unsigned drive = cli->cfg.spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);
+    if (mode == ADH_MODE_TIME && !(cli->cfg.spec.time.given & ADH_TIME_MODE) && drive) {   /* an elastic sphere's drive */
+        snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax): "
+                 "the %s given puts the sphere in physical time, which would be ignored; leave it out",
+                 drive & ADH_TIME_SPEED ? "speed" : drive & ADH_TIME_DWELL ? "dwell_time" : "spring");
+        return 2;
+    }
     if (mode == ADH_MODE_TIME || mode == ADH_MODE_RIGID) {
         snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax): "
                  "mode = %s would be ignored; leave it out", mode == ADH_MODE_TIME ? "time" : "rigid");

@@ -391,3 +391,31 @@ long cli_study_read_rows(const cli_study *st, int dirfd, const char *path, cli_s
     }
     return n;
 }
+
+/* The next flag at or after i that makes a study (-q, -o, --jobs ... do
+ * not: as its recipe). */
+static size_t next_set(const cli_study *st, size_t i)
+{
+    while (i < st->nset && outside_study(st->set[i].key))
+        i++;
+    return i;
+}
+
+void cli_study_difference(const cli_study *a, const cli_study *b, char *buf, size_t len)
+{
+    if ((a->scene_text == NULL) != (b->scene_text == NULL) ||
+        (a->scene_text && strcmp(a->scene_text, b->scene_text) != 0)) {
+        snprintf(buf, len, "their scenes differ");
+        return;
+    }
+    for (size_t i = next_set(a, 0), j = next_set(b, 0); i < a->nset || j < b->nset;
+         i = next_set(a, i + 1), j = next_set(b, j + 1))
+        if (i >= a->nset || j >= b->nset || strcmp(a->set[i].key, b->set[j].key) ||
+            strcmp(a->set[i].value, b->set[j].value)) {
+            snprintf(buf, len, "their options differ (%s%s%s against %s%s%s)", i < a->nset ? a->set[i].key : "none",
+                     i < a->nset ? " = " : "", i < a->nset ? a->set[i].value : "", j < b->nset ? b->set[j].key : "none",
+                     j < b->nset ? " = " : "", j < b->nset ? b->set[j].value : "");
+            return;
+        }
+    snprintf(buf, len, "their options differ in keys that do not change the runs");
+}

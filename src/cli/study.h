@@ -60,6 +60,9 @@ int cli_study_read(cli_study *st, adh_config *cfg, int dirfd, const char *path, 
  * with why when runs.tsv is another study's. No runs.tsv: 0. */
 long cli_study_read_rows(const cli_study *st, int dirfd, const char *path, cli_studyrow *rows,
                          size_t *partial_lines, char *why, size_t whylen);
+/* What two studies' recipes differ in (their scenes, or the first flag),
+ * for a refusal. */
+void cli_study_difference(const cli_study *a, const cli_study *b, char *buf, size_t len);
 /* runs.tsv's first lines (a comment and the header). */
 void cli_study_rows_head(FILE *f, const cli_study *st);
 

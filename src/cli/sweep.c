@@ -337,6 +337,29 @@ static int other_build(const cli_study *st, const char *there, adh_outdir *od, c
     return adh_outdir_clear(od, why, whylen) == 0 ? 0 : -1;
 }
 
+/* Another study in od (prev, read with its configuration) whose runs.tsv
+ * holds results: refused without --overwrite (-1 with why), naming what
+ * differs. Its fingerprint is its scene's whole text: an edited comment
+ * cleared a study of hours without a word. 0 when it may be cleared. */
+static int other_study(const cli_study *st, const cli_study *prev, adh_outdir *od, char *why, size_t whylen)
+{
+    if (st->cfg->output.overwrite)
+        return 0;
+    cli_studyrow *rows = calloc(prev->nruns ? prev->nruns : 1, sizeof *rows);
+    size_t cut;
+    char msg[1024], diff[700];
+    long n = rows ? cli_study_read_rows(prev, adh_outdir_fd(od), adh_outdir_path(od), rows, &cut, msg, sizeof msg) : 0;
+    if (rows)
+        cli_studyrow_clear_all(rows, prev->nruns);
+    free(rows);
+    if (n <= 0)   /* nothing of it to lose (a runs.tsv that is not its record included) */
+        return 0;
+    cli_study_difference(prev, st, diff, sizeof diff);
+    snprintf(why, whylen, "%.300s holds another study's results (%ld of its %zu runs; %.300s): give a new -o to keep "
+             "them, or --overwrite to replace them with this study's", adh_outdir_path(od), n, prev->nruns, diff);
+    return -1;
+}
+
 /* An earlier run of this study's shard in od: its rows into rows (1), or
  * nothing (0: od is cleared of another study's files, or of another
  * build's with --overwrite); -1 with why. */
@@ -363,7 +386,8 @@ static int resume(const cli_study *st, adh_outdir *od, cli_studyrow *rows, char 
     int unread = r < 0 && !strcmp(prev.fingerprint, st->fingerprint);
     const char *there = unread ? "unreadable, a line of its study.tsv not of this build's form"
                                : cli_study_numerics_shown(prev.numerics);
-    int rc = other_shard ? -1 : rebuilt || unread ? other_build(st, there, od, why, whylen) : 1;
+    int rc = other_shard ? -1 : rebuilt || unread ? other_build(st, there, od, why, whylen)
+           : r == 1 && !same && other_study(st, &prev, od, why, whylen) != 0 ? -1 : 1;
     cli_study_free(&prev);
     free(old);
     if (rc <= 0)

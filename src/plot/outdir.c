@@ -9,6 +9,7 @@
 #define _GNU_SOURCE
 #endif
 #include "plot/outdir.h"
+#include "scene/text.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -530,13 +531,20 @@ void adh_outdir_escape(const char *in, char *out, size_t len)
     size_t o = 0;
     for (; *in && o + 1 < len; in++) {
         unsigned char b = (unsigned char)*in;
-        if (b < 0x20 || b == 0x7f) {
+        /* a byte that begins no UTF-8 character too: 0x9b alone is CSI to
+         * some terminals, as ESC [ is to all */
+        int n = adh_text_utf8_len(in);
+        if (b < 0x20 || b == 0x7f || n == 0) {
             if (o + 5 > len)
                 break;
             snprintf(out + o, len - o, "\\x%02x", b);
             o += 4;
+        } else if (o + (size_t)n < len) {   /* a character whole, or none */
+            memcpy(out + o, in, (size_t)n);
+            o += (size_t)n;
+            in += n - 1;
         } else {
-            out[o++] = (char)b;
+            break;
         }
     }
     if (len)
@@ -778,6 +786,24 @@ static void prune(adh_outdir *d)
 /* Locked, the earlier run's files cleared (KEEP: their stale records),
  * foreign files refused, the manifest written: d is ready for this run's
  * files. */
+/* The rows of a study's runs.tsv in d that adhere wrote (its manifest
+ * proves it), 0 without one: each a run's result, perhaps hours of them. */
+static long study_rows(const adh_outdir *d)
+{
+    struct stat st;
+    if (fstatat(d->fd, "runs.tsv", &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(st.st_mode) ||
+        find(d, "runs.tsv", &st) < 0)
+        return 0;
+    FILE *f = adh_outdir_read(d->fd, "runs.tsv");
+    if (!f)
+        return 0;
+    long n = 0;
+    for (int c, bol = 1; (c = getc(f)) != EOF; bol = c == '\n')
+        n += bol && c != '#';
+    fclose(f);
+    return n > 0 ? n - 1 : 0;   /* its header */
+}
+
 static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
 {
     if (lock(d, why, whylen) != 0)
@@ -787,6 +813,15 @@ static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
         return -1;
     }
     load(d);
+    /* a run, a fit or the TUI's plots into a study's directory removed its
+     * results without a word: only --overwrite does (a study opens with
+     * KEEP and decides itself) */
+    long rows = depth || (d->flags & (ADH_OUTDIR_KEEP | ADH_OUTDIR_OVERWRITE)) ? 0 : study_rows(d);
+    if (rows > 0) {
+        snprintf(why, whylen, "%.3000s holds a study's results (%ld run%s in runs.tsv), which a run there would "
+                 "remove: give another -o, or --overwrite to replace them", d->path, rows, rows == 1 ? "" : "s");
+        return -1;
+    }
     /* refused before anything is removed; KEEP: an earlier study's files stay */
     if (foreign(d, depth, why, whylen) != 0 || (!(d->flags & ADH_OUTDIR_KEEP) && clear(d, depth, why, whylen) != 0))
         return -1;

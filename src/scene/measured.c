@@ -1,5 +1,6 @@
 #include "adhere/units.h"
 #include "scene/measured.h"
+#include "scene/text.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -170,6 +171,11 @@ static int column_of(const char *spec, char **hdr, int nh, int ncols, char *why,
     int found = -1, exact = -1, nfound = 0;
     char want[64], have[64];
     bare_name(spec, want, sizeof want);
+    if (!*want) {   /* '' (--columns=1,) or a unit alone: a prefix of every name, "more than one column" */
+        snprintf(why, whylen, "column '%.40s' names no column: give POS,FORCE, each a number from 1 or a header "
+                 "name", spec);
+        return -1;
+    }
     for (int i = 0; i < nh; i++) {
         bare_name(hdr[i], have, sizeof have);
         if (strcmp(have, want) == 0)
@@ -361,6 +367,15 @@ static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, co
         *hash = '\0';
     if (!*trim(line))
         return 0;
+    /* quoted in a refusal, a Latin-1 byte (0xb5, the micro sign) reached the
+     * terminal as it was, and 0x9b is a control (CSI) to some; comments may
+     * keep theirs */
+    const char *bad = adh_text_not_utf8(line);
+    if (bad) {
+        snprintf(why, whylen, "%s:%zu: the byte 0x%02x is not UTF-8 text (a Latin-1 or Windows-1252 export? µ is "
+                 "0xb5 there): save the file as UTF-8, or write um for µm", m->path, lineno, (unsigned char)*bad);
+        return -1;
+    }
     if (!*sep)
         *sep = separator_of(line);
     char *f[MAX_COLS + 1], msg[256];

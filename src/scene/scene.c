@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 #include "scene/datadir.h"
+#include "scene/text.h"
 
 #include <errno.h>
 #include <ini.h>
@@ -153,20 +154,29 @@ static int control_byte(const char *buf, scene_parse *sp)
     const char *p = buf;
     while (*p && ((unsigned char)*p >= 0x20 || *p == '\t') && *p != 0x7f)
         p++;
-    if (!*p)
-        return 0;
-    char key[64] = "", msg[300];
     const char *eq = strpbrk(buf, "=:"), *k = buf;
     while (*k == ' ' || *k == '\t')
         k++;
+    /* Latin-1 text, or a C1 control (0x9b, CSI to some terminals), was
+     * quoted as it was in a value's refusal; a comment line may keep it */
+    const char *bad = *k == '#' || *k == ';' ? NULL : adh_text_not_utf8(buf);
+    if (bad && bad < p)
+        p = bad;
+    if (!*p)
+        return 0;
+    char key[64] = "", msg[300];
     if (eq && eq < p && *k != '[' && *k != '#' && *k != ';') {   /* the key is text: name it */
         size_t kl = (size_t)(eq - k);
         while (kl && (k[kl - 1] == ' ' || k[kl - 1] == '\t'))
             kl--;
         snprintf(key, sizeof key, "%.*s: ", (int)(kl < 40 ? kl : 40), k);
     }
-    snprintf(msg, sizeof msg, "%sthe control character 0x%02x is not allowed: a scene is printable text (an escape "
-             "sequence would reach the terminal in a message)", key, (unsigned char)*p);
+    if (p == bad)
+        snprintf(msg, sizeof msg, "%sthe byte 0x%02x is not UTF-8 text: save the scene as UTF-8 (a Latin-1 byte, or a "
+                 "control to some terminals, would reach the terminal in a message)", key, (unsigned char)*p);
+    else
+        snprintf(msg, sizeof msg, "%sthe control character 0x%02x is not allowed: a scene is printable text (an escape "
+                 "sequence would reach the terminal in a message)", key, (unsigned char)*p);
     fail(sp, "%s%s", msg, "");
     return 1;
 }

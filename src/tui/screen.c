@@ -793,7 +793,9 @@ void tui_draw(const tui_sim *s, const tui_view *v)
          * models while there is room; the parameters stay in view in
          * their compact form at the bottom. */
         int np = draw_params_compact(s, v, 0, 0, W, 0);
-        int pb = H - 2 - np, y = stat ? 15 : 13;
+        /* under the title however few the rows (20x5 in physical time
+         * drew the parameters over it: pb was 0) */
+        int pb = H - 2 - np > 1 ? H - 2 - np : 1, y = stat ? 15 : 13;
         clip_bottom = pb;
         draw_state(s, v, 1, 0, W);
         if (!stat) {

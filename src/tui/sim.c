@@ -2,6 +2,7 @@
 #include "adhere/clock.h"
 
 #include <limits.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -938,6 +939,11 @@ int tui_sim_scale(tui_sim *s, tui_param p, double factor, char *why, size_t whyl
     char text[1100];
     if (isnan(v)) {
         snprintf(why, whylen, "%s is not set: type a value first", tui_params[p].name);
+        return -1;
+    }
+    if (!isfinite(v * factor)) {   /* 99999+: it was refused as "'infs' is not a number" */
+        snprintf(why, whylen, "%s doubled that many times is past the largest number a double holds (%.3g)",
+                 tui_params[p].name, DBL_MAX);
         return -1;
     }
     if (p == P_TURN && ps->nturns > 1) {

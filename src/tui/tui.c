@@ -728,7 +728,17 @@ static void move_history(tui *t, int redo, long n)
 static void toggle_mode(tui *t)
 {
     if (is_timed(t)) {
-        say(t, 1, "m does nothing in physical time: :set material.material elastic leaves it");
+        /* an elastic sphere stays in time for its drive: the advice to set
+         * elastic again changed nothing, and said the same */
+        const adh_time_settings *ts = &config(t)->spec.time;
+        unsigned g = ts->given;
+        if (ts->sls)
+            say(t, 1, "m does nothing in physical time: :set material.material elastic leaves it");
+        else
+            say(t, 1, "m does nothing in physical time: this elastic sphere is in it for its %s; start adhere "
+                "without %s for the relaxation and the static curve", g & ADH_TIME_MODE ? "scene.mode = time"
+                : g & ADH_TIME_SPEED ? "speed" : g & ADH_TIME_DWELL ? "dwell_time" : "spring",
+                g & ADH_TIME_MODE ? "it" : "its drive (speed, dwell_time, spring)");
         return;
     }
     stop_all(t);
@@ -986,10 +996,13 @@ static void run_next(tui *t)
             return;
         }
         if (got == KEYSRC_ITEM) {
-            if (it.kind == TUI_REPLAY_KEY) {
+            if (it.kind == TUI_REPLAY_KEY && it.key == KEY_RESIZE) {
+                /* the window changed, not the user's mind: redrawn at the
+                 * new size, the run goes on (it paused, as a key does) */
+                clearok(curscr, TRUE);
+                t->dirty = 1;
+            } else if (it.kind == TUI_REPLAY_KEY) {
                 stop_all(t);
-                if (it.key == KEY_RESIZE)
-                    clearok(curscr, TRUE);
                 const adh_obs *o = tui_sim_row(&t->sim);
                 char h0[64];
                 fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);

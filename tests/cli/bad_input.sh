@@ -105,6 +105,14 @@ check "... a run into it: its closing line names it escaped ($(cat "$TMP/stderr"
 "$ADHERE" merge "$ESCDIR" >/dev/null 2>"$TMP/stderr"
 check "... merge of it (no shard there): exit 2, escaped ($(cat "$TMP/stderr"))" \
     sh -c "[ $? -eq 2 ] && grep -qF 'o\\x1b[2Jdir holds no study.tsv' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+# a byte that begins no UTF-8 character (0x9b, CSI to some terminals) in
+# the name is escaped too: it was quoted as it was; a UTF-8 name is not
+C1DIR=$TMP/$(printf 'o\2332J\302\265dir')
+: >"$C1DIR"
+"$ADHERE" --batch -q --mode=rigid -o "$C1DIR/x" >/dev/null 2>"$TMP/stderr"
+check "-o DIR/x under a file named with the byte 0x9b: escaped, its micro sign kept ($(cat "$TMP/stderr"))" \
+    sh -c "grep -qF 'o\\x9b2Jµdir/x' '$TMP/stderr' && ! grep -q \"\$(printf '\233')\" '$TMP/stderr'"
+rm -f "$C1DIR"
 printf '1 2\n3 1e-320\n' >"$TMP/tiny.dat"
 bad "tiny.dat:2: '1e-320' is too small for a double (it underflows" --data="$TMP/tiny.dat"
 

@@ -87,6 +87,17 @@ check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep
 rc=$?
 check "--offset=1e-400m: exit 2, it underflows to zero, 0 or at least 2.2e-308 m allowed, nothing written ($rc: $(cat "$TMP/e4"))" \
     sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --offset: '1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.2e-308 m\" '$TMP/e4' && [ ! -e '$TMP/underout' ]"
+# E, A and R free together: the force is gamma R times a function of h0/z0
+# and sigma, so one direction of the three changes nothing; the fit said
+# 'result: fit' (exit 0) with R 7.96 um +- 3.6 % on this curve (made with
+# 10 um). A name twice, a second --free (it replaced the first) and an
+# empty element (taken for nothing) are refused too; nothing is written.
+for free in --free=E,A,R --free=E,e "--free=E --free=A" --free=E,; do
+    "$ADHERE" fit --data="$DATA" $free -o "$TMP/freeout" fig1 >/dev/null 2>"$TMP/e12"
+    rc=$?
+    check "$free: exit 2, said why, nothing written ($rc: $(cat "$TMP/e12"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --free.*\(not determined by a force curve\|named twice\|given twice\|empty element\)' '$TMP/e12' && [ ! -e '$TMP/freeout' ]"
+done
 "$ADHERE" --batch --free=E fig1 >/dev/null 2>"$TMP/e3"
 check "--free outside adhere fit is refused ($(cat "$TMP/e3"))" grep -q "are adhere fit's" "$TMP/e3"
 # an empty list is refused as every other flag's empty value is (it was
@@ -111,6 +122,13 @@ ln -s "$(cd "$(dirname "$DATA")" && pwd)/$(basename "$DATA")" "$TMP/again.tsv"
 rc=$?
 check "the same curve given twice: exit 2, both names, nothing written ($(cat "$TMP/e7"))" \
     sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --data: $TMP/again.tsv is $DATA again: give each measured curve once' '$TMP/e7' && [ ! -e '$TMP/twiceout' ]"
+# a copy under another name (CRLF line ends, a comment: the same points)
+# was taken as a second curve, the errors again sqrt(2) too small
+{ echo '# copied'; sed 's/$/\r/' "$DATA"; } >"$TMP/copy.tsv"
+"$ADHERE" fit --data="$DATA" --data="$TMP/copy.tsv" -o "$TMP/twiceout" fig1 >/dev/null 2>"$TMP/e7"
+rc=$?
+check "a copy of the curve: exit 2, both names, nothing written ($(cat "$TMP/e7"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --data: $TMP/copy.tsv holds the same 200 points as $DATA (a copy?)' '$TMP/e7' && [ ! -e '$TMP/twiceout' ]"
 # what the fit's model does not hold: a spring, a sweep (the shipped afm
 # scene sweeps the spring). Each was silently left out, and the fit ran.
 "$ADHERE" fit --data="$DATA" --spring=1N/m -o "$TMP/springout" fig1 >/dev/null 2>"$TMP/e8"
@@ -127,6 +145,15 @@ check "a sweep with adhere fit (the afm scene's, --sweep): exit 2, naming the sw
 rc=$?
 check "--mode=time with adhere fit: exit 2, naming the fit's models ($(cat "$TMP/e11"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'mode = time would be ignored' '$TMP/e11'"
+# the visco scene names no mode: its solid (material = sls), or with
+# --material=elastic its speed, puts it in physical time; the refusal
+# said "mode = time would be ignored; leave it out"
+"$ADHERE" fit --data="$DATA" visco >/dev/null 2>"$TMP/e13"
+rc1=$?
+"$ADHERE" fit --data="$DATA" --material=elastic visco >/dev/null 2>"$TMP/e14"
+rc2=$?
+check "the visco scene with adhere fit: exit 2, naming its solid, then its speed, not a mode ($(cat "$TMP/e13" "$TMP/e14"))" \
+    sh -c "[ $rc1 -eq 2 ] && [ $rc2 -eq 2 ] && grep -q 'material = sls (a standard linear solid' '$TMP/e13' && grep -q 'the speed given puts the sphere in physical time' '$TMP/e14'"
 awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
@@ -149,6 +176,11 @@ check "a fit whose model stalls: exit 1, the report says why and what to change 
            grep -q \"^the last model evaluation that failed stopped: $stall.*(--model=relax)\$\" '$TMP/stall.out'"
 check "... standard error too, under -q; no --mode named ($(cat "$TMP/stall.err"))" \
     sh -c "grep -q \"^adhere: the model stopped: $stall.*(--model=relax)\$\" '$TMP/stall.err' && ! grep -qE -- '--mode([^l]|\$)' '$TMP/stall.err' '$TMP/stall.out'"
+# with -o, no evaluation having succeeded, nothing is written: the closing
+# line said "wrote fit.tsv, fit-points.tsv, best.scene, fit.png in DIR"
+"$ADHERE" fit --data="$DATA" -E 0.3GPa -N 45 --spacing=16nm --force -o "$TMP/stallout" fig1 >/dev/null 2>"$TMP/stall.err"
+check "... with -o: its closing line says nothing was written, and nothing was ($(grep -v '^  eval' "$TMP/stall.err" | head -c 300))" \
+    sh -c "grep -q 'no evaluation succeeded: nothing written in .*stallout' '$TMP/stall.err' && ! grep -q 'wrote fit.tsv' '$TMP/stall.err' && [ -z \"\$(ls '$TMP/stallout')\" ]"
 
 # --model=relax: a curve the relaxation made (E = 1 GPa, loaded to -2 nm
 # and unloaded; its force.tsv's h0, F and path, with noise of about 1 % of

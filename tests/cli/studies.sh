@@ -54,6 +54,18 @@ if command -v parallel >/dev/null 2>&1; then
     check "the merged map.png is the whole study's, byte for byte" cmp -s "$TMP/whole/map.png" "$TMP/merged/map.png"
     check "and the timing column is really there to differ (16 times, each > 0)" \
         awk -F'\t' '!/^#/ && $1 != "run" {n++; if (!($15 > 0)) bad = 1} END {exit bad || n != 16}' "$TMP/merged/sweep.tsv"
+    # the Slurm example's task resubmitted alone (sbatch --array=2, as for a
+    # task that failed): with ADHERE_SHARDS (submit.sh sets it) its index is
+    # the shard, 2/3 again, and it merges with the others; the array's own
+    # numbering made it shard 1/1, refused in shard-1's directory
+    mkdir -p "$TMP/slurm" && cp -r "$TMP/shard1" "$TMP/slurm/shard-1" && cp -r "$TMP/shard3" "$TMP/slurm/shard-3"
+    SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=2 SLURM_ARRAY_TASK_COUNT=1 ADHERE_SHARDS=3 ADHERE="$ADHERE" \
+        ADHERE_SCENE="$TMP/map.scene" ADHERE_OUT="$TMP/slurm" ADHERE_ARGS="$TINY" \
+        sh "${ADHERE_SRC:-.}/share/adhere/examples/study.sbatch" 2>"$TMP/sb.err"
+    rc=$?
+    "$ADHERE" merge -q --no-plot -o "$TMP/slurm/merged" "$TMP"/slurm/shard-* 2>>"$TMP/sb.err"
+    check "the Slurm example's task 2 resubmitted alone is shard 2/3 and merges (exit $rc $?: $(head -c 300 "$TMP/sb.err"))" \
+        sh -c "grep -q '^shard	2/3\$' '$TMP/slurm/shard-2/study.tsv' && [ \"\$(grep -vc '^#' '$TMP/slurm/merged/sweep.tsv')\" -eq 17 ]"
     # a signal while the merge draws (a gnuplot that never answers, which
     # says when it started): the earlier merge's table and figure stay as
     # they were, no temporary is left, exit 128 + the signal's number
@@ -405,6 +417,33 @@ check "a shard cut short: exit 2, its runs listed ($(cat "$TMP/err"))" \
 $M --allow-partial -o "$TMP/m8" "$TMP/fast" "$TMP/slow" 2>/dev/null
 check "... joined with --allow-partial: # PARTIAL, runs 1 and 3 with results" \
     sh -c "grep -q '^# PARTIAL: 2 of 4 runs' '$TMP/m8/sweep.tsv' && awk -F'\t' '!/^#/ && (\$1 == 1 || \$1 == 3) && \$NF != \"not run\" {n++} END {exit n != 2}' '$TMP/m8/sweep.tsv'"
+
+# --- another study's results are not cleared without --overwrite ---
+# the fingerprint is the scene's whole text: a comment added to the scene
+# cleared a study's results without a word and ran it again from scratch
+printf '[scene]\nmode = rigid\n[sweep]\nE = 1GPa, 2GPa\n' >"$TMP/edit.scene"
+"$ADHERE" --batch -q "$TMP/edit.scene" -o "$TMP/edit" 2>/dev/null
+cp "$TMP/edit/runs.tsv" "$TMP/edit.runs"
+printf '# a note\n' >>"$TMP/edit.scene"
+"$ADHERE" --batch -q "$TMP/edit.scene" -o "$TMP/edit" 2>"$TMP/err"
+rc=$?
+check "a study's scene edited (a comment), rerun into its directory: exit 2, said, its rows kept ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'holds another study.s results (2 of its 2 runs; their scenes differ): give a new -o' '$TMP/err' && cmp -s '$TMP/edit.runs' '$TMP/edit/runs.tsv'"
+"$ADHERE" --batch -q "$TMP/edit.scene" --overwrite -o "$TMP/edit" 2>"$TMP/err"
+rc=$?
+check "... --overwrite replaces them with this study's (exit $rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && grep -q '^# runs.tsv: study' '$TMP/edit/runs.tsv' && ! cmp -s '$TMP/edit.runs' '$TMP/edit/runs.tsv'"
+"$ADHERE" --batch -q "$TMP/edit.scene" --sweep=E=1GPa,3GPa -o "$TMP/edit" 2>"$TMP/err"
+check "... another flag: named ($(cat "$TMP/err"))" grep -q 'their options differ (none against sweep.E = 1GPa,3GPa)' "$TMP/err"
+# a single run (or a fit, or the TUI's plots) into a study's directory
+# removed its results as an earlier run's files
+cp "$TMP/edit/runs.tsv" "$TMP/edit.runs"
+"$ADHERE" --batch -q --mode=rigid -o "$TMP/edit" 2>"$TMP/err"
+rc=$?
+check "a single run into a study's directory: exit 2, said, its rows kept ($rc: $(cat "$TMP/err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'edit holds a study.s results (2 runs in runs.tsv), which a run there would remove' '$TMP/err' && cmp -s '$TMP/edit.runs' '$TMP/edit/runs.tsv'"
+"$ADHERE" --batch -q --mode=rigid --overwrite -o "$TMP/edit" 2>"$TMP/err"
+check "... with --overwrite it runs there ($(cat "$TMP/err"))" sh -c "[ -s '$TMP/edit/summary.tsv' ] && [ ! -e '$TMP/edit/runs.tsv' ]"
 
 # --- values, ranges, the plan ---
 "$ADHERE" --batch -q --mode=rigid --sweep='E=10MPa..10GPa,log,13' --run-dirs=no -o "$TMP/log" 2>"$TMP/err"

@@ -101,6 +101,13 @@ type_cmd "set d 0.05nm"
 type_cmd "set eps 0.1pm"
 T send-keys -t t r
 check "r runs" wait_for "running to the turn"
+# a resize during the run redraws and lets it go on (it paused the run, as
+# a key does: the window changed, not the user's mind)
+T resize-window -t t -x 90 -y 30
+at90() { [ "$(screen | head -1 | wc -L)" -le 90 ] && screen | head -1 | grep -q ' ? help  q quit *$'; }
+i=0
+while ! at90 && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+check "a resize during a run redraws at the new size and does not pause it" sh -c "tmux -L '$sock' capture-pane -p -t t | head -1 | grep -q ' ? help  q quit *\$' && ! tmux -L '$sock' capture-pane -p -t t | grep -q 'paused'"
 T send-keys -t t Space
 check "a key pauses the run" wait_for "paused at h0"
 
@@ -116,6 +123,11 @@ wait_until() {  # wait_until SECONDS COMMAND...: until COMMAND succeeds
 }
 check "a resize redraws at the new size" wait_until 10 resized
 check "and nothing is wider than 80 columns" [ "$(screen | wc -L)" -le 80 ]
+# a tiny window: the compact parameters had no rows left and were drawn
+# from row 0 over the title (pb = H - 2 - their rows < 1)
+T resize-window -t t -x 20 -y 5
+check "a 20x5 window keeps its title on the first row" wait_until 10 sh -c "tmux -L '$sock' capture-pane -p -t t | head -1 | grep -q '^ ad  ? help  q quit\$'"
+T resize-window -t t -x 80 -y 24
 
 T send-keys -t t q
 check "q quits with status 0" [ "$(exit_status)" = 0 ]

@@ -96,6 +96,25 @@ int main(void)
     ok(rc != 0 && strstr(why, "the file has no header: give its number"), "a name without a header: refused (%s)", why);
     rc = load("Separation (nm),Sep2 (nm),F (nN)\n1,2,3\n", "sep,F", &m, why, sizeof why);
     ok(rc != 0 && strstr(why, "names more than one column"), "an ambiguous prefix: refused (%s)", why);
+    /* a Latin-1 header (0xb5, the micro sign) was quoted byte for byte in
+     * the refusal, as was a C1 control (0x9b, CSI to some terminals) in a
+     * number; a comment may keep its Latin-1 */
+    rc = load("h0 (\xb5m)\tF (nN)\n5\t-1\n", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":1: the byte 0xb5 is not UTF-8 text") && !strstr(why, "(\xb5m"),
+       "a Latin-1 micro sign in the header: refused as not UTF-8, the byte not quoted (%s)", why);
+    rc = load("h0 (nm)\tF (nN)\n5\t-1\x9b\n", NULL, &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, ":2: the byte 0x9b is not UTF-8 text") && !strchr(why, '\x9b'),
+       "a C1 control in a number: refused, the byte not quoted (%s)", why);
+    rc = load("# 25 \xb0" "C\nh0 (\xc2\xb5m)\tF (nN)\n0.005\t-1\n0.004\t-2\n", NULL, &m, why, sizeof why);
+    ok(rc == 0, "a Latin-1 comment and a UTF-8 micro sign: read (%s)", rc ? why : "ok");
+    if (rc == 0)
+        adh_measured_free(&m);
+    /* an empty name (--columns=1,) or a unit alone is a prefix of every
+     * name: it was refused as naming "more than one column" */
+    rc = load("Separation (nm),F (nN)\n1,2\n", "1,", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, "column '' names no column"), "an empty column name: refused as naming none (%s)", why);
+    rc = load("Separation (nm),F (nN)\n1,2\n", "1,(nN)", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, "column '(nN)' names no column"), "a unit alone: refused as naming none (%s)", why);
     /* old Mac line ends (a carriage return alone): the file is one line,
      * refused as a comment of 0 points or a line over 4096 bytes; and a
      * carriage return inside a line, quoted, moved the terminal's cursor

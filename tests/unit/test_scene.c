@@ -244,6 +244,17 @@ static void bad_scenes(void)
     bad("[protocol]\nturns = -1nm, \033[31m-2nm\n", 2, "turns: the control character 0x1b");
     bad("[scene]\ntitle = a\001b\n", 2, "title: the control character 0x01 is not allowed");
     bad("[grid]\n# a comment \033[2J\n", 2, "the control character 0x1b");
+    /* a lone byte that is not UTF-8 was quoted as it was: 0x9b is CSI to
+     * some terminals, 0xb5 a Latin-1 micro sign; a comment may keep it */
+    bad("[material]\nE = 1\x9b" "2JGPa\n", 2, "E: the byte 0x9b is not UTF-8 text");
+    bad("[scene]\ntitle = 5 \xb5m\n", 2, "title: the byte 0xb5 is not UTF-8 text");
+    {
+        adh_config lc;
+        adh_config_default(&lc);
+        char lwhy[512] = "";
+        ok(adh_scene_parse_string("# caf\xe9\n[scene]\ntitle = 5 \xc2\xb5m\n", "ok.scene", &lc, lwhy, sizeof lwhy) == 0,
+           "a Latin-1 comment line and a UTF-8 title parse (%s)", lwhy);
+    }
 
     adh_config c;
     char why[1024] = "";

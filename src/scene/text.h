@@ -1,0 +1,16 @@
+/* Text read from a user's file (a scene, a measured curve) that a message
+ * may quote back to the terminal. */
+#ifndef ADH_SCENE_TEXT_H
+#define ADH_SCENE_TEXT_H
+
+/* The first byte of s that does not begin or continue a UTF-8 character,
+ * or NULL. Overlong forms and surrogates pass: what matters is that no
+ * lone byte 0x80-0x9f (C1 controls, CSI 0x9b among them, to some
+ * terminals) or Latin-1 text is quoted as it is. */
+const char *adh_text_not_utf8(const char *s);
+
+/* The bytes of the UTF-8 character s begins with (1 to 4; an ASCII byte,
+ * the NUL too, is 1), or 0 when s does not begin one. */
+int adh_text_utf8_len(const char *s);
+
+#endif
