@@ -1,4 +1,5 @@
 #include "cli/batch.h"
+#include "plot/say.h"
 
 #include "adhere/cycle.h"
 #include "adhere/clock.h"
@@ -250,7 +251,7 @@ static void batch_judge(batch_job *j)
         j->status = CLI_EXIT_SOLVER;
     }
     if (j->note[0])
-        fprintf(stderr, "adhere: %s\n", j->note);
+        adh_say(j->note);
     char sep[512];
     adh_derived der;
     adh_material_derive(&spec->mat, &der);
@@ -345,7 +346,7 @@ static void batch_write(batch_job *j, cli_tables *tables, const cli_tables *ref_
         if (!tab[i].want)
             continue;
         if (adh_outdir_write(j->od, tab[i].name, tab[i].w, tab[i].t, why, sizeof why) != 0) {
-            fprintf(stderr, "adhere: %s\n", why);
+            adh_say(why);
             j->status = CLI_EXIT_USAGE;
             cli_tables_names_add(unwritten, sizeof unwritten, tab[i].name);
         }
@@ -356,7 +357,7 @@ static void batch_write(batch_job *j, cli_tables *tables, const cli_tables *ref_
     if (cli_interrupt_signal() && !tables->partial)
         tables->status = "interrupted";   /* while plotting: the figures not written are named */
     if (adh_outdir_write(j->od, "summary.tsv", cli_tables_summary, tables, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         j->status = CLI_EXIT_USAGE;
     }
     tables->unwritten = NULL;   /* unwritten ends here */
@@ -430,7 +431,7 @@ int cli_batch_main(cli_options *cli)
      * itself), and another's files under adhere's names refuse it */
     unsigned flags = (cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0) | (cfg->sweep.naxes ? ADH_OUTDIR_KEEP : 0);
     if (cfg->output.dir[0] && !(od = adh_outdir_open(cfg->output.dir, flags, why, sizeof why))) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         return CLI_EXIT_USAGE;
     }
     int rc = cfg->sweep.naxes ? cli_sweep_main(cli, od) : run_batch(cli, od, t_start);

@@ -1,4 +1,5 @@
 #include "cli/cost.h"
+#include "plot/say.h"
 #include "adhere/cycle.h"
 #include "adhere/clock.h"
 
@@ -447,7 +448,7 @@ static void cost_print(const cost_job *job, const cost_run *best, const cost_ref
     adh_mix_rule_describe(&job->cfg->spec.relax, rule, sizeof rule);
     if (job->partial[0]) {
         printf("# PARTIAL: %s\n", job->partial);
-        fprintf(stderr, "adhere: %s\n", job->partial);
+        adh_say(job->partial);
     }
     printf("What accuracy costs: %zu runs of the load/unload cycle, %d at a time on %ld cores, 1 BLAS thread each; mixing %s\n",
            job->n, started ? started : 1, sysconf(_SC_NPROCESSORS_ONLN), rule);
@@ -481,7 +482,7 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
     double eps[MAX_EPS];
     size_t nodes[MAX_NODES], neps, nnodes;
     if (parse_lists(cli, eps, &neps, nodes, &nnodes, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         return CLI_EXIT_USAGE;
     }
     if (cfg->spec.mode != ADH_MODE_RELAX || cfg->spec.proto.nturns == 0) {
@@ -501,7 +502,7 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
             }
         }
     if (cost_budget(cfg, nodes, nnodes, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         return CLI_EXIT_USAGE;
     }
     size_t n = neps * nnodes * 2, m = 0;
@@ -530,7 +531,7 @@ static int cost_write(const cost_job *job, adh_outdir *od)
     /* still caught: a signal while gnuplot draws ends the wait, and the
      * exit says interrupted */
     if (adh_outdir_write(od, "cost.tsv", write_cost, job, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         return CLI_EXIT_USAGE;
     }
     if (!job->cfg->output.plot || cli_interrupt_signal())
@@ -598,7 +599,7 @@ int cli_cost_main(const cli_options *cli)
     const char *out = cfg->output.dir[0] ? cfg->output.dir : NULL;
     adh_outdir *od = out ? adh_outdir_open(out, cfg->output.overwrite ? ADH_OUTDIR_OVERWRITE : 0, why, sizeof why) : NULL;
     if (out && !od) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         free(runs);
         return CLI_EXIT_USAGE;
     }

@@ -1,4 +1,5 @@
 #include "cli/fit.h"
+#include "plot/say.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -178,7 +179,7 @@ static int fit_once(fit_run *fr, adh_fit_result *res, adh_fit **out)
 
 static int refuse(const char *why)
 {
-    fprintf(stderr, "adhere: %s\n", why);
+    adh_say(why);
     return CLI_EXIT_USAGE;
 }
 
@@ -254,7 +255,7 @@ int cli_fit_main(cli_options *cli)
     if (out && isfinite(res.chi2)) {
         int wr = cli_fit_write(&r, od, cfg->output.plot, why, sizeof why);
         if (wr != 0) {
-            fprintf(stderr, "adhere: %s\n", why);
+            adh_say(why);
             rc = wr == 3 ? CLI_EXIT_PLOT : CLI_EXIT_USAGE;
         }
     }

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "adhere/grid.h"
+#include "plot/say.h"
 #include "cli/advice.h"
 #include "cli/batch.h"
 #include "cli/cost.h"
@@ -154,7 +155,7 @@ static int run(int argc, char **argv)
     gsl_set_error_handler_off();
     char why[1024];
     if (cli_options_parse(argc, argv, &cli, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         return CLI_EXIT_USAGE;
     }
     switch (cli.action) {
@@ -174,7 +175,7 @@ static int run(int argc, char **argv)
     }
     /* A measured curve is read before any work: a bad line stops here. */
     if (cli_data_load(&cli, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);   /* then FILE:LINE:, as compilers do */
+        adh_say(why);   /* then FILE:LINE:, as compilers do */
         return CLI_EXIT_USAGE;
     }
     /* A fit chooses its own grid, for the start values and the data */
@@ -190,7 +191,7 @@ static int run(int argc, char **argv)
             if (adh_config_unit_hint(&cli.cfg, accept, &cli, hint, sizeof hint) == 1)
                 fprintf(stderr, "adhere: %s (a bare number is in SI units: %s)\n", hint, why);
             else
-                fprintf(stderr, "adhere: %s\n", why);
+                adh_say(why);
             return rc;
         }
     }

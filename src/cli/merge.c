@@ -3,6 +3,7 @@
 #define _DEFAULT_SOURCE   /* flock(2) */
 #endif
 #include "cli/merge.h"
+#include "plot/say.h"
 
 #include <errno.h>
 #include <math.h>
@@ -542,7 +543,7 @@ static int write_out(merge *m, const char *partial)
         return fflush(stdout) == 0 && !ferror(stdout) ? CLI_EXIT_OK : CLI_EXIT_USAGE;
     }
     if (adh_outdir_write(m->out, "sweep.tsv", cli_studyrow_table, &t, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         return CLI_EXIT_USAGE;
     }
     if (!cfg->output.plot || adh_sweep_plot_kind(&cfg->sweep) == ADH_SWEEP_PLOT_NONE || *partial)

@@ -1,4 +1,5 @@
 #include "cli/runout.h"
+#include "plot/say.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -52,13 +53,13 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
         const void *ctx[3] = { &t, &t, tout };
         for (int k = 0; k < 3; k++)
             if (names[k] && adh_outdir_write(dir, names[k], writers[k], ctx[k], why, sizeof why) != 0) {
-                fprintf(stderr, "adhere: %s\n", why);
+                adh_say(why);
                 status = CLI_EXIT_USAGE;
                 cli_tables_names_add(lost, sizeof said->lost, names[k]);
             }
     }
     if (adh_outdir_write(dir, "summary.tsv", cli_tables_summary, &t, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         status = CLI_EXIT_USAGE;
         cli_tables_names_add(lost, sizeof said->lost, "summary.tsv");   /* sweep.tsv says it */
         said->word[0] = '\0';

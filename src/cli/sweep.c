@@ -1,4 +1,5 @@
 #include "cli/sweep.h"
+#include "plot/say.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -119,7 +120,7 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
         adh_outdir *dir = adh_outdir_sub(job->od, name, why, sizeof why);
         pthread_mutex_unlock(&job->dirs);
         if (!dir) {
-            fprintf(stderr, "adhere: %s\n", why);
+            adh_say(why);
             out = CLI_EXIT_USAGE;
         } else {
             cli_runout_said said;
@@ -547,7 +548,7 @@ static size_t mark_interrupted(study_job *job)
             cli_runout_said said;
             int t = dir ? cli_runout_tables(job->cfg, i, &spec, &none, NULL, NULL, ADH_SUCCESS, dir, &said) : CLI_EXIT_USAGE;
             if (!dir)
-                fprintf(stderr, "adhere: %s\n", why);
+                adh_say(why);
             job->exit_status = cli_runout_worse(job->exit_status, t);
             adh_outdir_close(dir);
         }
@@ -624,7 +625,7 @@ static void study_outputs(study_job *job, size_t missing)
         return;
     }
     if (adh_outdir_write(job->od, "sweep.tsv", cli_studyrow_table, &t, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         job->exit_status = cli_runout_worse(job->exit_status, CLI_EXIT_USAGE);
         return;
     }
@@ -852,7 +853,7 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
     }
     free(grids);
     if (rc) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         if (job.rows_fd >= 0)
             adh_outdir_log_close(od, "runs.tsv", job.rows_fd);
         cli_studyrow_clear_all(job.rows, st.nruns);

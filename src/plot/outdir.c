@@ -528,13 +528,19 @@ static void load(adh_outdir *d)
 
 void adh_outdir_escape(const char *in, char *out, size_t len)
 {
+    adh_outdir_escape_text(in, out, len, 0);
+}
+
+void adh_outdir_escape_text(const char *in, char *out, size_t len, int keep_lines)
+{
     size_t o = 0;
     for (; *in && o + 1 < len; in++) {
         unsigned char b = (unsigned char)*in;
         /* a byte that begins no UTF-8 character too: 0x9b alone is CSI to
          * some terminals, as ESC [ is to all */
         int n = adh_text_utf8_len(in);
-        if (b < 0x20 || b == 0x7f || n == 0) {
+        int layout = keep_lines && (b == '\n' || b == '\t');
+        if (!layout && (b < 0x20 || b == 0x7f || n == 0)) {
             if (o + 5 > len)
                 break;
             snprintf(out + o, len - o, "\\x%02x", b);

@@ -63,6 +63,11 @@ void adh_outdir_close(adh_outdir *d);
  * recolour the terminal that reads the message. */
 void adh_outdir_escape(const char *in, char *out, size_t len);
 
+/* The same for a message's text: with keep_lines its newlines and tabs
+ * stay as they are (they lay the message out; they move no cursor a
+ * terminal does not expect). */
+void adh_outdir_escape_text(const char *in, char *out, size_t len, int keep_lines);
+
 /* The path d was opened as, for messages ("DIR/run-2"), escaped as
  * adh_outdir_escape does. */
 const char *adh_outdir_path(const adh_outdir *d);

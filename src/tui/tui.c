@@ -6,6 +6,7 @@
  * times a second. */
 #define NCURSES_WIDECHAR 1
 #include "tui/tui.h"
+#include "plot/say.h"
 #include "adhere/clock.h"
 
 #include <curses.h>
@@ -1178,7 +1179,7 @@ int tui_main(const adh_config *cfg)
         tui_keysrc_terminal(&t.keys);
     }
     if (tui_sim_init(&t.sim, cfg, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         tui_keysrc_free(&t.keys);
         return EXIT_BAD_INPUT;
     }
@@ -1206,7 +1207,7 @@ int tui_main(const adh_config *cfg)
         sigaction(SIGINT, &old_int, NULL);
         sigaction(SIGTERM, &old_term, NULL);
         sigaction(SIGHUP, &old_hup, NULL);
-        fprintf(stderr, "adhere: %s\n", why);
+        adh_say(why);
         tui_sim_free(&t.sim);
         tui_keysrc_free(&t.keys);
         return EXIT_BAD_INPUT;   /* no terminal to run on: a usage error */

@@ -105,6 +105,15 @@ check "... a run into it: its closing line names it escaped ($(cat "$TMP/stderr"
 "$ADHERE" merge "$ESCDIR" >/dev/null 2>"$TMP/stderr"
 check "... merge of it (no shard there): exit 2, escaped ($(cat "$TMP/stderr"))" \
     sh -c "[ $? -eq 2 ] && grep -qF 'o\\x1b[2Jdir holds no study.tsv' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+# a scene or --data file named with an escape sequence: the refusal names
+# it escaped, as a directory's (every "adhere: ..." message goes through
+# one writer; it printed the name's bytes as they were)
+"$ADHERE" --batch -q "$TMP/$(printf 'x\033[2J').scene" >/dev/null 2>"$TMP/stderr"
+check "a scene file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 2 ] && grep -qF 'x\\x1b[2J.scene' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+"$ADHERE" --batch -q --mode=rigid --data="$TMP/$(printf 'd\033[2J').tsv" -o "$TMP/escdata" >/dev/null 2>"$TMP/stderr"
+check "a --data file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 2 ] && grep -qF 'd\\x1b[2J.tsv' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
 # a byte that begins no UTF-8 character (0x9b, CSI to some terminals) in
 # the name is escaped too: it was quoted as it was; a UTF-8 name is not
 C1DIR=$TMP/$(printf 'o\2332J\302\265dir')
