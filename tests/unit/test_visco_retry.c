@@ -37,14 +37,9 @@ int main(void)
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
     d.spring = SPRING;
     adh_visco_settings s = adh_visco_settings_default();
-    adh_protocol_settings ps = adh_protocol_settings_default();
-    ps.turns[0] = FIX_TURN;
     adh_run run;
-    adh_run_init(&run);
-    adh_visco *w = adh_visco_alloc(f.g, f.k);
-    int rc = w ? adh_visco_set(w, &f.m, &sls, &d, &s, &ps, &run, NULL, 0) : ADH_ENOMEM;
-    if (rc == ADH_SUCCESS)
-        rc = ADH_CONTINUE;
+    int rc;
+    adh_visco *w = fix_visco_begin(&f, &sls, &d, &run, &rc);
     while (rc == ADH_CONTINUE && w->mode != MODE_CROSS)
         rc = adh_visco_iterate(w);
     ok(rc == ADH_CONTINUE && w->mode == MODE_CROSS, "the snap-in's crossing starts (%zu rows)", run.nrows);
