@@ -54,7 +54,6 @@ struct adh_path {
     adh_obs turn_o[ADH_MAX_TURNS];
     size_t reached;
     double deeper;              /* the curve's end a snap-in's landing needs (NAN: none) */
-    double loop;                /* the static curve's loop, once asked (NAN: not yet) */
 };
 
 /* Nothing measured yet: no jump, no pull-off, no cycle. */
@@ -662,16 +661,16 @@ static void end_branch(adh_path *p, double stored_change)
      * unloading of this path), by parabolas through each stable leg
      * (adh_cycle_static_hysteresis): the sum of the losses, by chords
      * along the curve, is within 0.3 % of it on the default scene. A
-     * shallower turn in contact retraces the deepest's curve, so its loop
-     * is the same; one short of contact jumped nowhere and has none */
+     * shallower turn's loop is that of the curve down to its turn: its
+     * cycle meets no lattice fold deeper (the whole curve's loop, 21 %
+     * above its own at -1 nm beside a turn at -3 nm on a coarse grid); one
+     * short of contact jumped nowhere and has none */
     if (isfinite(p->k) || !p->c->complete || (jumps == 0 && k + 1 != p->ps.nturns)) {
         tr->hysteresis = jumps + stored_change;
     } else {
-        if (isnan(p->loop)) {
-            adh_run view = { .rows = (adh_obs *)p->c->rows, .nrows = p->c->n };
-            p->loop = adh_cycle_static_hysteresis(&view, ADH_CYCLE_HYSTERESIS_STEP * p->m.z0);
-        }
-        tr->hysteresis = p->loop;
+        size_t rows = k + 1 == p->ps.nturns ? p->c->n : (size_t)floor(p->turn_x[k]) + 1;
+        adh_run view = { .rows = (adh_obs *)p->c->rows, .nrows = rows < p->c->n ? rows : p->c->n };
+        tr->hysteresis = adh_cycle_static_hysteresis(&view, ADH_CYCLE_HYSTERESIS_STEP * p->m.z0);
     }
     if (k + 1 != p->ps.nturns)
         return;
@@ -807,7 +806,6 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     p->branch_ev = 0;
     p->pull_row = -1;
     p->deeper = NAN;
-    p->loop = NAN;
     qsort(p->ps.turns, p->ps.nturns, sizeof *p->ps.turns, cmp_desc);
     qsort(p->ps.profiles, p->ps.nprofiles, sizeof *p->ps.profiles, cmp_desc);
     adh_visco_result *r = &p->res;

@@ -152,8 +152,11 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
     v *= factor;
     if (under) {
         if (why)
+            /* the least magnitude offered is one that is accepted:
+             * DBL_MIN to 3 digits rounds up (2.23e-308), to 2 it rounds
+             * down to a number refused here (2.2e-308) */
             snprintf(why, whylen, "'%s' underflows%s (a double keeps no magnitude below %.2g%s%s): write 0 "
-                     "for zero, or a magnitude of at least %.2g%s%s", buf, v == 0 ? " to zero" : "", DBL_MIN,
+                     "for zero, or a magnitude of at least %.3g%s%s", buf, v == 0 ? " to zero" : "", DBL_MIN,
                      *unit_sym[q] ? " " : "", unit_sym[q], DBL_MIN, *unit_sym[q] ? " " : "", unit_sym[q]);
         return ADH_EINVAL;
     }

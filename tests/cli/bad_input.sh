@@ -68,7 +68,7 @@ bad "--grid-radius: '0' is not allowed: use a length above 0" --grid-radius=0
 bad "--operator: 'sparse' is not an operator: use dense, hmat or h2" --operator=sparse
 bad "out of the range of finite numbers" -E 1e999
 # below a double's range: an underflow, not out of range; a unit's factor too
-bad "'1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.2e-308 m$" --start=1e-400m
+bad "'1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.23e-308 m$" --start=1e-400m
 bad "'1e-300pm' underflows (a double keeps no magnitude below 2.2e-308 m)" --start=1e-300pm
 bad "step d = 0 nm is not allowed" --step=0
 bad "more than one scene" fig1 fig2

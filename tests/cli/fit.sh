@@ -85,8 +85,8 @@ check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep
 # range of finite numbers, as 1e400 is): said so, and what may be written
 "$ADHERE" fit --data="$DATA" --offset=1e-400m -o "$TMP/underout" fig1 >/dev/null 2>"$TMP/e4"
 rc=$?
-check "--offset=1e-400m: exit 2, it underflows to zero, 0 or at least 2.2e-308 m allowed, nothing written ($rc: $(cat "$TMP/e4"))" \
-    sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --offset: '1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.2e-308 m\" '$TMP/e4' && [ ! -e '$TMP/underout' ]"
+check "--offset=1e-400m: exit 2, it underflows to zero, 0 or at least 2.23e-308 m allowed, nothing written ($rc: $(cat "$TMP/e4"))" \
+    sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --offset: '1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.23e-308 m\" '$TMP/e4' && [ ! -e '$TMP/underout' ]"
 # E, A and R free together: the force is gamma R times a function of h0/z0
 # and sigma, so one direction of the three changes nothing; the fit said
 # 'result: fit' (exit 0) with R 7.96 um +- 3.6 % on this curve (made with

@@ -12,6 +12,26 @@ static void accepts(const char *text, adh_quantity q, double want)
     ok(rc == 0 && fabs(v - want) <= 1e-12 * fabs(want), "'%s' parses to %g (got %g) %s", text, want, v, why);
 }
 
+/* An underflow's message offers the least magnitude it allows ("at least
+ * X m"): that X, written back with its unit, is accepted (2.2e-308 m, the
+ * one it offered, was itself refused: DBL_MIN is 2.2251e-308). */
+static void offered_is_accepted(const char *text, adh_quantity q, const char *unit)
+{
+    double v = 0;
+    char why[256] = "", back[64] = "";
+    adh_parse_quantity(text, q, &v, why, sizeof why);
+    const char *at = strstr(why, "at least ");
+    if (at) {
+        size_t l = strcspn(at + 9, " ");
+        l = l < 40 ? l : 40;
+        memcpy(back, at + 9, l);
+        strcpy(back + l, unit);
+    }
+    int rc = at ? adh_parse_quantity(back, q, &v, why, sizeof why) : -1;
+    ok(rc == 0 && v > 0, "'%s': the least magnitude its message offers, '%s', is accepted %s", text, back,
+       rc == 0 ? "" : why);
+}
+
 static void rejects(const char *text, adh_quantity q, const char *mentions)
 {
     double v = 12345;
@@ -57,6 +77,9 @@ int main(void)
     rejects("1e-300pm", ADH_Q_LENGTH, "underflows");
     accepts("0m", ADH_Q_LENGTH, 0);
     accepts("3e-308m", ADH_Q_LENGTH, 3e-308);
+    offered_is_accepted("1e-400m", ADH_Q_LENGTH, "m");
+    offered_is_accepted("1e-310", ADH_Q_NONE, "");
+    accepts("2.23e-308m", ADH_Q_LENGTH, 2.23e-308);
     rejects("5 furlongs", ADH_Q_LENGTH, "unknown unit");
     rejects("", ADH_Q_LENGTH, "not a number");
     rejects("5nm", ADH_Q_NONE, "plain number");

@@ -45,14 +45,9 @@ static void next_to(void)
     adh_sls sls = { f.m.E, 2 * f.m.E, FIX_TAU };
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
     adh_visco_settings s = adh_visco_settings_default();
-    adh_protocol_settings ps = adh_protocol_settings_default();
-    ps.turns[0] = FIX_TURN;
     adh_run run;
-    adh_run_init(&run);
-    adh_visco *w = adh_visco_alloc(f.g, f.k);
-    int rc = w ? adh_visco_set(w, &f.m, &sls, &d, &s, &ps, &run, NULL, 0) : ADH_ENOMEM;
-    if (rc == ADH_SUCCESS)
-        rc = ADH_CONTINUE;
+    int rc;
+    adh_visco *w = fix_visco_begin(&f, &sls, &d, &run, &rc);
     /* loading, in contact, on the path */
     while (rc == ADH_CONTINUE && !(w->mode == MODE_PATH && w->st->h0 < 0))
         rc = adh_visco_iterate(w);
@@ -105,14 +100,9 @@ static void in_flight(void)
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
     d.spring = SOFT_K;
     adh_visco_settings s = adh_visco_settings_default();
-    adh_protocol_settings ps = adh_protocol_settings_default();
-    ps.turns[0] = FIX_TURN;
     adh_run run;
-    adh_run_init(&run);
-    adh_visco *w = adh_visco_alloc(f.g, f.k);
-    int rc = w ? adh_visco_set(w, &f.m, &sls, &d, &s, &ps, &run, NULL, 0) : ADH_ENOMEM;
-    if (rc == ADH_SUCCESS)
-        rc = ADH_CONTINUE;
+    int rc;
+    adh_visco *w = fix_visco_begin(&f, &sls, &d, &run, &rc);
     const adh_visco_event *ev = NULL;
     size_t nev = 0, relaxed = 0;
     /* to the snap-out: the unloading's jump event */

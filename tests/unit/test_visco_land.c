@@ -52,15 +52,10 @@ int main(void)
     adh_sls sls = { f.m.E, 2 * f.m.E, FIX_TAU };
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
     adh_visco_settings s = adh_visco_settings_default();
-    adh_protocol_settings ps = adh_protocol_settings_default();
-    ps.turns[0] = FIX_TURN;
     adh_run run;
-    adh_run_init(&run);
-    adh_visco *w = adh_visco_alloc(f.g, f.k);
-    int rc = w ? adh_visco_set(w, &f.m, &sls, &d, &s, &ps, &run, NULL, 0) : ADH_ENOMEM;
+    int rc;
+    adh_visco *w = fix_visco_begin(&f, &sls, &d, &run, &rc);
     /* to the loading's fold: the jump-in waiting for its landing */
-    if (rc == ADH_SUCCESS)
-        rc = ADH_CONTINUE;
     while (rc == ADH_CONTINUE) {
         rc = adh_visco_iterate(w);
         if (w->mode == MODE_CROSS && w->land_try)

@@ -37,14 +37,9 @@ int main(void)
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
     d.spring = SPRING;
     adh_visco_settings s = adh_visco_settings_default();
-    adh_protocol_settings ps = adh_protocol_settings_default();
-    ps.turns[0] = FIX_TURN;
     adh_run run;
-    adh_run_init(&run);
-    adh_visco *w = adh_visco_alloc(f.g, f.k);
-    int rc = w ? adh_visco_set(w, &f.m, &sls, &d, &s, &ps, &run, NULL, 0) : ADH_ENOMEM;
-    if (rc == ADH_SUCCESS)
-        rc = ADH_CONTINUE;
+    int rc;
+    adh_visco *w = fix_visco_begin(&f, &sls, &d, &run, &rc);
     while (rc == ADH_CONTINUE && w->mode != MODE_CROSS)
         rc = adh_visco_iterate(w);
     ok(rc == ADH_CONTINUE && w->mode == MODE_CROSS, "the snap-in's crossing starts (%zu rows)", run.nrows);
@@ -79,8 +74,13 @@ int main(void)
            w->retry_h1, w->retry_h, floor_h, bound);
     ok(w->retries >= 2 && w->retry_h1 >= floor_h, "the crossing went backwards and was retried (%ld times)",
        w->retries);
-    ok(w->retry_h < floor_h && w->retry_h <= w->retry_h1 * pow(0.25, (double)(w->retries - 1)),
-       "each retry a quarter of the step or less, down to the floor: the last %.3g < %.3g", w->retry_h, floor_h);
+    /* a quarter to rounding: IDA holds the step to 1/hmax_inv, not to hmax
+     * itself, an ulp either side (under valgrind the last step was 1 ulp
+     * above h1 / 4^5 and this failed) */
+    double quarter = w->retry_h1 * pow(0.25, (double)(w->retries - 1));
+    ok(w->retry_h < floor_h && w->retry_h <= quarter * (1 + 1e-12),
+       "each retry a quarter of the step or less, down to the floor: the last %.17g <= %.17g (to rounding), < %.3g",
+       w->retry_h, quarter, floor_h);
     ok(w->retries <= bound, "the retries stop at the floor: %ld, at most 2 + log4(%.3g / %.3g) = %ld", w->retries,
        w->retry_h1, floor_h, bound);
     adh_visco_result r;

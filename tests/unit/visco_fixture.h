@@ -94,6 +94,23 @@ static inline vrun fix_visco_tau(const fixture *f, double ratio, double tau, con
     return v;
 }
 
+/* A solver set for one cycle to the fixture's turn under sls and the
+ * drive d (default settings and protocol otherwise), to be stepped by
+ * hand: *rc ADH_CONTINUE, or why it was not set. Free it and run. */
+static inline adh_visco *fix_visco_begin(const fixture *f, const adh_sls *sls, const adh_visco_drive *d, adh_run *run,
+                                         int *rc)
+{
+    adh_visco_settings s = adh_visco_settings_default();
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.turns[0] = FIX_TURN;
+    adh_run_init(run);
+    adh_visco *w = adh_visco_alloc(f->g, f->k);
+    *rc = w ? adh_visco_set(w, &f->m, sls, d, &s, &ps, run, NULL, 0) : ADH_ENOMEM;
+    if (*rc == ADH_SUCCESS)
+        *rc = ADH_CONTINUE;
+    return w;
+}
+
 /* The same at tau = FIX_TAU. */
 static inline vrun fix_visco_from(const fixture *f, double ratio, const adh_visco_drive *d, double tol, double start)
 {
