@@ -609,7 +609,7 @@ int cli_cost_main(const cli_options *cli)
         char t[32], on[128] = "";
         cli_progress_duration(est, t, sizeof t);
         if (scaled)
-            snprintf(on, sizeof on, ", a dense kernel past %zu nodes on a smaller grid of %zu and scaled as N^2", scaled,
+            snprintf(on, sizeof on, ", a dense kernel past %zu nodes timed on a grid of that many and scaled as N^2",
                      scaled);
         if (est >= 0)
             fprintf(stderr, "adhere: --cost: %zu runs, expected about %s on %d core%s (the plan's iterations, a kernel "

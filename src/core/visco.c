@@ -561,7 +561,8 @@ static int begin_turn(adh_visco *w, size_t k)
     return ADH_SUCCESS;
 }
 
-/* The deepest turn's cycle is over: its accounts and summary. */
+/* A turn's cycle is over: its hysteresis (turns.tsv); the deepest's
+ * accounts are the run's, and its summary. */
 static void close_cycle(adh_visco *w)
 {
     w->acc = accounts_now(w);

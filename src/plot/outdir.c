@@ -789,9 +789,6 @@ static void prune(adh_outdir *d)
     }
 }
 
-/* Locked, the earlier run's files cleared (KEEP: their stale records),
- * foreign files refused, the manifest written: d is ready for this run's
- * files. */
 /* The rows of a study's runs.tsv in d that adhere wrote (its manifest
  * proves it), 0 without one: each a run's result, perhaps hours of them. */
 static long study_rows(const adh_outdir *d)
@@ -810,6 +807,9 @@ static long study_rows(const adh_outdir *d)
     return n > 0 ? n - 1 : 0;   /* its header */
 }
 
+/* Locked, the earlier run's files cleared (KEEP: their stale records),
+ * foreign files refused, the manifest written: d is ready for this run's
+ * files. */
 static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
 {
     if (lock(d, why, whylen) != 0)
