@@ -435,15 +435,13 @@ static path_pt land_rigid(const adh_path *p, double b, double *loss)
 }
 
 /* A jump from the fold f to the landing l (the same base, the same
- * time): both rows (f's only when it is not the last row emitted: a jump
- * from where the path stands), and its event or its count. */
-static void jump(adh_path *p, path_pt *f, path_pt *l, double loss)
+ * time): both rows (f's unless written, a jump from the row the path
+ * already stands on), and its event or its count. */
+static void jump(adh_path *p, path_pt *f, path_pt *l, double loss, int written)
 {
     double t = time_at(p, base_of(p, &f->o));
-    if (!(p->have_last && f == &p->last))
+    if (!written)
         emit(p, f, t, 1);
-    path_pt from = *f;   /* as written: the landing's row becomes the last */
-    f = &from;
     emit(p, l, t, 0);
     p->losses += loss;
     int before = f->o.a > 0, after = l->o.a > 0;
@@ -588,7 +586,7 @@ static void load(adh_path *p)
             break;
         }
         path_pt l = at(p, xl);
-        jump(p, &f, &l, jump_loss(p, &f, i, xl));
+        jump(p, &f, &l, jump_loss(p, &f, i, xl), 0);
         bmin = base_of(p, &f.o);
         reach_turns(p, xl >= (double)(n - 1) && c->complete);
         i = (size_t)ceil(xl);
@@ -743,8 +741,8 @@ static void unload(adh_path *p, size_t k)
         if (j < 0) {   /* the curve's start, in contact still: a fold beyond it, from the last row
                           (emitted once: it was written twice, one row repeated to the digit) */
             double loss;
-            path_pt l = land_rigid(p, bmax, &loss);
-            jump(p, &p->last, &l, loss);
+            path_pt f = p->last, l = land_rigid(p, bmax, &loss);
+            jump(p, &f, &l, loss, 1);
             end_branch(p, stored_beyond(p, &l));
             return;
         }
@@ -773,12 +771,12 @@ static void unload(adh_path *p, size_t k)
         if (xl < 0) {   /* beyond the curve's start: a soft spring's flight */
             double loss;
             path_pt l = land_rigid(p, base_of(p, &f.o), &loss);
-            jump(p, &f, &l, loss + jump_loss(p, &f, (size_t)j, 0));
+            jump(p, &f, &l, loss + jump_loss(p, &f, (size_t)j, 0), 0);
             end_branch(p, stored_beyond(p, &l));
             return;
         }
         path_pt l = at(p, xl);
-        jump(p, &f, &l, jump_loss(p, &f, (size_t)j, xl));
+        jump(p, &f, &l, jump_loss(p, &f, (size_t)j, xl), 0);
         bmax = base_of(p, &f.o);
         j = (long)floor(xl);
         if ((double)j == xl)
