@@ -101,7 +101,7 @@ static int checked(adh_config *cfg, const cli_options *cli, char *why, size_t le
     unsigned solvers = adh_budget_solvers(spec, (unsigned)adh_plan_jobs(cfg), cli->reference[0] != 0);
     char msg[1200];
     if (adh_budget_check_threads(spec, solvers, (unsigned)adh_plan_jobs(cfg), msg, sizeof msg) != 0) {
-        cli_options_words(msg, why, len);
+        cli_options_words(cfg, msg, why, len);
         return CLI_EXIT_USAGE;
     }
     return 0;

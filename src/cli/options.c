@@ -143,20 +143,70 @@ static const char *flag_of(const char *key)
     return "";
 }
 
-/* The configuration's words in the CLI's: a key ("grid.kernel") becomes its
- * flag (--kernel), "key = value" the flag with its value (--kernel=paper). */
+/* How a sentence names its keys: the keys the scene set, and the flags
+ * set, among those it names; the scene's keys already located. */
+typedef struct voice {
+    const adh_config *cfg;
+    int scene, flag;               /* the sentence names a key the scene (a flag) set */
+    char located[8][40];           /* scene keys already given their file and line */
+    size_t nlocated;
+    int file_named;                /* the scene's file named once: later keys say "line N" */
+} voice;
+
+/* The first pass: whose keys the sentence names. */
+static void hear(const char *key, const char *value, char *buf, size_t len, void *ctx)
+{
+    voice *v = ctx;
+    int from = adh_config_origin(v->cfg, key);
+    v->scene |= from == -1 || from > 0;
+    v->flag |= from == 0;
+    snprintf(buf, len, "%s", key);
+}
+
+/* A scene key's first mention: where it was written, the file once. */
+static void locate(voice *v, const char *key, int line, char *buf, size_t len)
+{
+    for (size_t i = 0; i < v->nlocated; i++)
+        if (!strcmp(v->located[i], key))
+            return;
+    if (v->nlocated < sizeof v->located / sizeof v->located[0])
+        snprintf(v->located[v->nlocated++], sizeof v->located[0], "%s", key);
+    size_t n = strlen(buf);
+    if (line > 0 && v->file_named)
+        snprintf(buf + n, len - n, " (line %d)", line);
+    else if (line > 0)
+        snprintf(buf + n, len - n, " (%s:%d)", v->cfg->scene, line);
+    else
+        snprintf(buf + n, len - n, " (%s)", v->cfg->scene);
+    v->file_named = 1;
+}
+
+/* The second pass: a key a flag set (or nobody, in a sentence not the
+ * scene's alone) becomes its flag (--kernel), "key = value" the flag with
+ * its value (--kernel=paper); a scene's key its name under its section
+ * (kernel = paper), located. */
 static void say_flag(const char *key, const char *value, char *buf, size_t len, void *ctx)
 {
-    const char *flag = flag_of(key);
-    if (!*flag)
+    voice *v = ctx;
+    int from = adh_config_origin(v->cfg, key);
+    const adh_config_key *k = adh_config_key_find(key);
+    int scene = from == -1 || from > 0 || (from == -2 && v->scene && !v->flag);
+    const char *flag = flag_of(key), *dot = strchr(key, '.');
+    if (scene && k && (k->where & ADH_KEY_SCENE) && dot)
+        snprintf(buf, len, "%s%s%s", dot + 1, value ? " = " : "", value ? value : "");
+    else if (!*flag)
         snprintf(buf, len, "%s%s%s", key, value ? " = " : "", value ? value : "");
     else
         snprintf(buf, len, "--%s%s%s", flag, value ? "=" : "", value ? value : "");
+    if ((from == -1 || from > 0) && v->cfg->scene[0])
+        locate(v, key, from, buf, len);
 }
 
-void cli_options_words(const char *sentence, char *out, size_t len)
+void cli_options_words(const adh_config *cfg, const char *sentence, char *out, size_t len)
 {
-    adh_config_reword(sentence, say_flag, NULL, out, len);
+    voice v = { .cfg = cfg };
+    adh_config_reword(sentence, hear, &v, out, len);
+    adh_config_reword(sentence, say_flag, &v, out, len);
 }
 
 /* strtok would pass over an empty element ("1pm,,2pm"): refuse it. */
@@ -318,6 +368,7 @@ static int sweep_flag(cli_options *cli, const char *arg, char *why, size_t n)
         snprintf(why, n, "--sweep: %.*s: %s", (int)(eq - arg), arg, msg);
         return 2;
     }
+    adh_config_note_origin(&cli->cfg, key, 0);
     return record(cli, key, eq + 1, why, n);
 }
 
@@ -347,9 +398,10 @@ static int apply(cli_options *cli, const option_doc *o, const char *arg, char *w
         if (adh_config_set(&cli->cfg, o->key, o->value ? o->value : arg, msg, sizeof msg) == 0) {
             snprintf(words, sizeof words, "--%s", name);
             adh_config_note_given(&cli->cfg, o->key, o->value ? o->value : arg, words);
+            adh_config_note_origin(&cli->cfg, o->key, 0);
             return record(cli, o->key, o->value ? o->value : arg, why, n);
         }
-        cli_options_words(msg, words, sizeof words);
+        cli_options_words(&cli->cfg, msg, words, sizeof words);
         snprintf(why, n, "--%s: %s", name, words);
         return 2;
     }
@@ -697,7 +749,7 @@ static int sweep_plot_fits(const adh_config *cfg, char *why, size_t whylen)
     }
     char msg[1024];
     if (adh_config_time_sweep_check(cfg, msg, sizeof msg) != 0) {
-        cli_options_words(msg, why, whylen);
+        cli_options_words(cfg, msg, why, whylen);
         return 2;
     }
     if (s->run_dirs == 0 && plot == ADH_SWEEP_PLOT_FORCE) {
@@ -750,12 +802,12 @@ static int readable_file(const char *opt, const char *path, char *why, size_t wh
 
 /* The grid of run: its settings make a grid, it holds the run (the core's
  * check) and resolves the contact (unless --force). */
-static int validate_grid(const adh_run_spec *run, char *why, size_t whylen)
+static int validate_grid(const adh_config *cfg, const adh_run_spec *run, char *why, size_t whylen)
 {
     const adh_grid_spec *u = &run->grid.use;
     char msg[1024];
     if (adh_config_grid_check(run, msg, sizeof msg) != 0) {
-        cli_options_words(msg, why, whylen);
+        cli_options_words(cfg, msg, why, whylen);
         return 2;
     }
     /* a uniform grid is checked from its description; a graded one is built */
@@ -805,7 +857,7 @@ static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *wh
         return 2;
     char msg[1024];
     if (adh_config_time_check(cfg, run, msg, sizeof msg) != 0) {   /* the material, drive and mode fit */
-        cli_options_words(msg, why, whylen);
+        cli_options_words(cfg, msg, why, whylen);
         return 2;
     }
     const adh_output_options *o = &cfg->output;
@@ -824,5 +876,5 @@ static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *wh
         snprintf(why, whylen, "drive speed %s is not allowed: it must be above 0 and below 1000 m/s", adh_qtext(o->drive_speed, ADH_Q_SPEED).s);
         return 2;
     }
-    return validate_grid(run, why, whylen);
+    return validate_grid(cfg, run, why, whylen);
 }

@@ -59,8 +59,11 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
 void cli_options_usage(FILE *out);
 
 /* A sentence of the configuration's (naming keys: grid.kernel = paper) in
- * the CLI's words (flags: --kernel=paper). */
-void cli_options_words(const char *sentence, char *out, size_t len);
+ * the words the user wrote each key in: a flag's (--kernel=paper), or the
+ * scene's key with its file and line (kernel = paper (a.scene:3)); a key
+ * nobody set in the scene's words when the sentence's keys came from the
+ * scene alone, else as a flag. */
+void cli_options_words(const adh_config *cfg, const char *sentence, char *out, size_t len);
 
 /* Checks the whole configuration before anything runs. 0 or 2 with why. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen);

@@ -162,6 +162,14 @@ typedef struct adh_given {
     char where[160];               /* who gave it: a flag ("--radius"), or a scene file */
 } adh_given;
 
+/* Who set a key last, so that a refusal names what the user wrote: a
+ * flag, or a scene's line (adh_config_origin). */
+#define ADH_MAX_ORIGINS 128
+typedef struct adh_origin {
+    char key[40];                  /* "material.Einf", "sweep.speed" */
+    int line;                      /* 0: a flag; > 0: the scene's line; -1: the scene, line unknown */
+} adh_origin;
+
 typedef struct adh_config {
     adh_run_spec spec;
     adh_sweep sweep;               /* kind ADH_SWEEP_NONE: a single run */
@@ -170,6 +178,8 @@ typedef struct adh_config {
     char scene[PATH_MAX];          /* scene file in use, "" = built-in default */
     adh_given given[ADH_MAX_GIVEN];  /* the bare quantities of the flags and the scene */
     size_t ngiven;
+    adh_origin origin[ADH_MAX_ORIGINS];  /* the keys flags and the scene set */
+    size_t norigin;
 } adh_config;
 
 /* The built-in default scene: Figure 4's material (E = 0.3 GPa), the paper's
@@ -235,6 +245,14 @@ const adh_config_key *adh_config_key_suggest(const char *section, const char *na
  * where says who ("--radius", a scene's file). A quantity given bare (no
  * unit anywhere, not 0) is remembered; given with a unit, forgotten. */
 void adh_config_note_given(adh_config *c, const char *key, const char *text, const char *where);
+/* key was set by a flag (line 0) or by the scene c->scene at line (> 0;
+ * -1 when the line is not known); a later word replaces an earlier. */
+void adh_config_note_origin(adh_config *c, const char *key, int line);
+/* Who set key: -2 nobody (its default), 0 a flag, else the scene's line as
+ * noted. A key a [sweep] sets in each run ("protocol.speed" by sweep.speed)
+ * is the sweep key's. */
+int adh_config_origin(const adh_config *c, const char *key);
+
 /* After c was refused (accept(c) != 0): each bare quantity tried on a copy
  * of c in each of its key's units; accept(copy, ctx) == 0 says the copy
  * would run. out receives, for the first bare quantity some unit rescues,

@@ -21,6 +21,8 @@ typedef struct scene_parse {
     int kernel_given, grid_given; /* in this scene: together they must fit (adh_config_kernel_fits) */
     char seen[128][64];          /* "section.key" already given: duplicates are errors */
     size_t nseen;
+    int keyline[256];            /* the lines inih hands the handler, in order (prescan's) */
+    size_t nkeyline, ncall;      /* how many; the handler's calls so far */
 } scene_parse;
 
 static int fail(scene_parse *sp, const char *fmt, const char *a, const char *b)
@@ -90,6 +92,10 @@ static int handler(void *user, const char *section, const char *name, const char
 {
     scene_parse *sp = user;
     adh_config *c = sp->cfg;
+    /* inih (built without INI_HANDLER_LINENO) does not say the line: the
+     * prescan counted the key lines, the handler is called once for each */
+    int line = sp->ncall < sp->nkeyline ? sp->keyline[sp->ncall] : -1;
+    sp->ncall++;
     if (!known_section(section))
         return fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep%s", section, "");
     char full[64], msg[400];
@@ -128,6 +134,7 @@ static int handler(void *user, const char *section, const char *name, const char
         return fail(sp, hash ? "%s: %s (a comment after a value starts with ' ;', not '#')" : "%s: %s", name, words);
     }
     adh_config_note_given(c, full, value, sp->file);
+    adh_config_note_origin(c, full, line);
     if (!strcmp(full, "protocol.turns") && sp->unload_given)
         c->spec.proto.unload = unload;
     sp->unload_given |= !strcmp(full, "protocol.unload");
@@ -257,6 +264,9 @@ static int prescan(const char *text, scene_parse *sp)
             fail(sp, "'%.200s' comes before any [section]%s", t, "");
             return line;
         }
+        /* a line with no '=' or ':' inih refuses, with no call */
+        if (strpbrk(t, "=:") && sp->nkeyline < sizeof sp->keyline / sizeof sp->keyline[0])
+            sp->keyline[sp->nkeyline++] = line;
     }
     return 0;
 }

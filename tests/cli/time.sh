@@ -53,7 +53,17 @@ bad "--spring is not allowed with --mode=relax" --spring=1N/m
 bad "--spring is not allowed with --mode=rigid" --mode=rigid --spring=1N/m
 bad "--dwell=5 counts relaxation iterations: in physical time the hold at a turn is --dwell-time" --material=sls --dwell=5
 printf '[scene]\nmode = relax\n[sweep]\nspeed = 1um/s, 2um/s\n' >"$TMP/sw.scene"
-bad "sweep run 1 (speed = 1e-06): --speed is physical time's: --mode=relax steps the drive in eps-time" "$TMP/sw.scene"
+bad "sweep run 1 (speed = 1e-06): speed ($TMP/sw.scene:4) is physical time's: mode = relax (line 2) steps the drive in eps-time (material = sls, or mode = time)$" "$TMP/sw.scene"
+# a refusal names what was written: a scene's key by its name, file and
+# line (it named flags nobody gave: --Einf ... --material=elastic); a
+# flag by the flag, beside the scene's key
+printf '[material]\n# stiff at first\nEinf = 3GPa\n' >"$TMP/einf.scene"
+bad "^adhere: Einf ($TMP/einf.scene:3) is a standard linear solid's: material = elastic cannot use it (material = sls, or leave Einf out)$" "$TMP/einf.scene"
+check "... and names no flag" sh -c "! grep -q -- '--' '$TMP/stderr'"
+printf '[material]\nmaterial = sls\n' >"$TMP/sls.scene"
+bad "^adhere: material = sls ($TMP/sls.scene:2) runs in physical time: --mode=static cannot use it (leave the mode out, or --mode=time)$" "$TMP/sls.scene" --mode=static
+printf '[material]\nmaterial = elastic\n' >"$TMP/el.scene"
+bad "^adhere: --Einf is a standard linear solid's: material = elastic ($TMP/el.scene:2) cannot use it (material = sls, or leave --Einf out)$" "$TMP/el.scene" --Einf=3GPa
 # speed sets the retraction speed too: swept after speed_out it undid its values (4 runs, two twice)
 bad "speed and speed_out both set the retraction speed (speed sets both ways): sweep one of them" visco --sweep=speed_out=3um/s,4um/s --sweep=speed=1um/s,2um/s
 # E0 is the modulus E and sigma set: swept with either, one undid the other's values
@@ -64,9 +74,9 @@ bad "speed and speed_out both set the retraction speed" "$TMP/speeds.scene"
 printf '[material]\nmaterial = sls\n[sweep]\neps = 1pm, 2pm\n' >"$TMP/eps.scene"
 bad "physical time has none" "$TMP/eps.scene"
 printf '[material]\nmaterial = sls\n[sweep]\nE = 1GPa, 2GPa\nplot = snap\n' >"$TMP/snap.scene"
-bad "sweep.plot = snap draws the snap points against the spring: a sweep of spring" "$TMP/snap.scene"
+bad "plot = snap ($TMP/snap.scene:5) draws the snap points against the spring: a sweep of spring in mode = static or time is needed$" "$TMP/snap.scene"
 printf '[material]\nmaterial = sls\n[sweep]\nspeed = 1um/s, 2um/s\ntau = 1ms, 2ms\nplot = speed\n' >"$TMP/speed2.scene"
-bad "sweep.plot = speed draws one swept key: the study varies 2" "$TMP/speed2.scene"
+bad "plot = speed ($TMP/speed2.scene:6) draws one swept key: the study varies 2" "$TMP/speed2.scene"
 
 # the plan says what runs
 "$ADHERE" --plan visco >"$TMP/plan" 2>&1

@@ -381,8 +381,30 @@ static void mutations(void)
     ok(!bad, "3000 mutations of fig5.scene: each parses (%d did) or names fuzz:LINE", parsed);
 }
 
+/* Each key the scene set is noted with its line (comments, blank lines and
+ * sections counted; inih does not say it), a swept key's run key with the
+ * sweep's; a later flag's word replaces the scene's. */
+static void origins(void)
+{
+    adh_config c;
+    char why[512];
+    adh_config_default(&c);
+    int rc = adh_scene_parse_string("# a comment\n\n[material]\n; another\nE = 1GPa\nEinf = 3GPa\n[sweep]\n"
+                                    "speed = 1um/s, 2um/s\n", "o.scene", &c, why, sizeof why);
+    ok(rc == 0, "origins: the scene parses (%s)", rc ? why : "");
+    ok(adh_config_origin(&c, "material.E") == 5, "origins: E at line 5 (%d)", adh_config_origin(&c, "material.E"));
+    ok(adh_config_origin(&c, "material.Einf") == 6, "origins: Einf at line 6 (%d)", adh_config_origin(&c, "material.Einf"));
+    ok(adh_config_origin(&c, "protocol.speed") == 8, "origins: the swept speed at the sweep's line 8 (%d)",
+       adh_config_origin(&c, "protocol.speed"));
+    ok(adh_config_origin(&c, "material.R") == -2, "origins: R set by nobody (%d)", adh_config_origin(&c, "material.R"));
+    adh_config_note_origin(&c, "material.E", 0);
+    ok(adh_config_origin(&c, "material.E") == 0, "origins: a flag's E replaces the scene's (%d)",
+       adh_config_origin(&c, "material.E"));
+}
+
 int main(void)
 {
+    origins();
     default_scene_is_builtin_default();
     figure_parameters();
     planner();

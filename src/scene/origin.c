@@ -1,0 +1,36 @@
+/* Who set each key, a flag or a scene's line: a refusal of the run is
+ * about keys, and names them in the words the user wrote them in (the
+ * flag, or the scene's key with its file and line). */
+#include "scene/config.h"
+
+#include <stdio.h>
+#include <string.h>
+
+void adh_config_note_origin(adh_config *c, const char *key, int line)
+{
+    size_t i = 0;
+    while (i < c->norigin && strcmp(c->origin[i].key, key) != 0)
+        i++;
+    if (i == c->norigin) {
+        /* a longer key is no key of the table: nothing to name it by */
+        if (c->norigin == ADH_MAX_ORIGINS || strlen(key) >= sizeof c->origin[0].key)
+            return;
+        c->norigin++;
+    }
+    snprintf(c->origin[i].key, sizeof c->origin[i].key, "%s", key);
+    c->origin[i].line = line;
+}
+
+int adh_config_origin(const adh_config *c, const char *key)
+{
+    for (size_t i = 0; i < c->norigin; i++)
+        if (!strcmp(c->origin[i].key, key))
+            return c->origin[i].line;
+    /* each run of a study takes the swept key's values */
+    char swept[64];
+    for (size_t i = 0; i < c->norigin; i++)
+        if (!strncmp(c->origin[i].key, "sweep.", 6) && adh_sweep_key_of(c->origin[i].key + 6, swept, sizeof swept) == 0 &&
+            !strcmp(swept, key))
+            return c->origin[i].line;
+    return -2;
+}
