@@ -145,6 +145,19 @@ int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *wh
             return ADH_EINVAL;
         }
     }
+    /* a number past a double's range as written that its unit brings back
+     * ('1e-310GPa' is 1e-301 Pa): read again wider and taken in SI, so that
+     * the key's own range judges it (E: 1 kPa to 10 TPa), not the double's
+     * least magnitude, which 1e-301 Pa is far above. Only there: every
+     * other number is read as before, to the same digit. */
+    if (errno == ERANGE && factor != 1.0) {
+        long double wide = strtold(buf, NULL) * (long double)factor;
+        if (fabsl(wide) >= DBL_MIN && fabsl(wide) <= DBL_MAX) {
+            v = (double)wide;
+            factor = 1.0;
+            errno = 0;
+        }
+    }
     /* below a double's normal range (strtod's ERANGE for a tiny number, or
      * the unit's factor taking it there): it underflows, to 0 or to a
      * number that has lost its digits, which is no out-of-range overflow */

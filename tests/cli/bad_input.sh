@@ -70,6 +70,10 @@ bad "out of the range of finite numbers" -E 1e999
 # below a double's range: an underflow, not out of range; a unit's factor too
 bad "'1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.23e-308 m$" --start=1e-400m
 bad "'1e-300pm' underflows (a double keeps no magnitude below 2.2e-308 m)" --start=1e-300pm
+# a number below a double's range before its unit but not after: the
+# modulus's own range, not the double's least magnitude (1e-301 Pa is far
+# above 2.2e-308 Pa, the limit the refusal named)
+bad "^adhere: E (modulus) = 1e-301 Pa is out of range: allowed 1 kPa to 10 TPa$" -E 1e-310GPa
 bad "step d = 0 nm is not allowed" --step=0
 bad "more than one scene" fig1 fig2
 # the core names quantities, the CLI adds its flags

@@ -75,6 +75,14 @@ int main(void)
     rejects("1e-400m", ADH_Q_LENGTH, "underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0");
     rejects("1e-310", ADH_Q_NONE, "underflows (a double keeps no magnitude below 2.2e-308)");
     rejects("1e-300pm", ADH_Q_LENGTH, "underflows");
+    /* a number past a double's range before its unit, inside it after:
+     * the value it is (a key's range then judges it), not an underflow
+     * naming a least magnitude the value is far above */
+    accepts("1e-310GPa", ADH_Q_PRESSURE, 1e-301);
+    accepts("-1e-310km", ADH_Q_LENGTH, -1e-307);
+    accepts("1e309pm", ADH_Q_LENGTH, 1e297);
+    rejects("1e-400GPa", ADH_Q_PRESSURE, "underflows to zero (a double keeps no magnitude below 2.2e-308 Pa)");
+    rejects("1e310GPa", ADH_Q_PRESSURE, "range");
     accepts("0m", ADH_Q_LENGTH, 0);
     accepts("3e-308m", ADH_Q_LENGTH, 3e-308);
     offered_is_accepted("1e-400m", ADH_Q_LENGTH, "m");
