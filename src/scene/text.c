@@ -1,13 +1,21 @@
 #include "scene/text.h"
 
+/* RFC 3629's well-formed sequences (its table in section 4): the lead
+ * byte fixes how many continuation bytes follow and the range of the
+ * first, which is where an overlong form (E0 80 80 for U+0000), a
+ * surrogate (ED A0 80, U+D800) and a code point past U+10FFFF (F4 90 80 80)
+ * fall out; C0, C1 and F5 to FF lead nothing. */
 int adh_text_utf8_len(const char *s)
 {
     const unsigned char *p = (const unsigned char *)s;
-    int n = *p < 0x80 ? 0 : *p >= 0xc2 && *p <= 0xdf ? 1 : *p >= 0xe0 && *p <= 0xef ? 2
-          : *p >= 0xf0 && *p <= 0xf4 ? 3 : -1;
-    if (n < 0)
+    if (*p < 0x80)
+        return 1;
+    int n = *p >= 0xc2 && *p <= 0xdf ? 1 : *p >= 0xe0 && *p <= 0xef ? 2 : *p >= 0xf0 && *p <= 0xf4 ? 3 : 0;
+    unsigned char lo = *p == 0xe0 ? 0xa0 : *p == 0xf0 ? 0x90 : 0x80;
+    unsigned char hi = *p == 0xed ? 0x9f : *p == 0xf4 ? 0x8f : 0xbf;
+    if (n == 0 || p[1] < lo || p[1] > hi)
         return 0;
-    for (int k = 1; k <= n; k++)
+    for (int k = 2; k <= n; k++)
         if ((p[k] & 0xc0) != 0x80)
             return 0;
     return n + 1;

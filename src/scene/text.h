@@ -4,13 +4,15 @@
 #define ADH_SCENE_TEXT_H
 
 /* The first byte of s that does not begin or continue a UTF-8 character,
- * or NULL. Overlong forms and surrogates pass: what matters is that no
- * lone byte 0x80-0x9f (C1 controls, CSI 0x9b among them, to some
- * terminals) or Latin-1 text is quoted as it is. */
+ * or NULL: no lone byte 0x80-0x9f (C1 controls, CSI 0x9b among them, to
+ * some terminals) or Latin-1 text is quoted as it is, nor an overlong
+ * form, a surrogate or a code point past U+10FFFF (not UTF-8, RFC 3629,
+ * and an overlong form may hide an ASCII control from a check). */
 const char *adh_text_not_utf8(const char *s);
 
 /* The bytes of the UTF-8 character s begins with (1 to 4; an ASCII byte,
- * the NUL too, is 1), or 0 when s does not begin one. */
+ * the NUL too, is 1), or 0 when s does not begin a well-formed one
+ * (RFC 3629: no overlong form, surrogate, or code point past U+10FFFF). */
 int adh_text_utf8_len(const char *s);
 
 #endif
