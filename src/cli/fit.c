@@ -111,11 +111,11 @@ static int configure(fit_run *fr, char *why, size_t whylen)
     cfg->spec.proto.nprofiles = 0;
     unsigned fix = 0;
     if (adh_config_grid(cfg, why, whylen, &fix) != 0) {
-        cli_advice_append(why, whylen, fix);
+        cli_advice_append_for(CLI_ADVICE_FIT, why, whylen, fix);
         return -1;
     }
     /* the checks every run meets, and memory for one static solver */
-    if (cli_options_validate(cfg, why, whylen) != 0 ||
+    if (cli_options_validate_for(cfg, CLI_ADVICE_FIT, why, whylen) != 0 ||
         adh_budget_check(&cfg->spec, cfg->spec.mode == ADH_MODE_STATIC, why, whylen) != 0)
         return -1;
     return 0;

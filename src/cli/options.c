@@ -725,7 +725,7 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
     return 0;
 }
 
-static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *why, size_t whylen);
+static int validate_run(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen);
 
 /* A sweep's figure fits its keys: a map needs two, Figure 3's jump a
  * material swept (sigma, E, A, z0 or R), the column shown is sweep.tsv's. */
@@ -764,10 +764,15 @@ static int sweep_plot_fits(const adh_config *cfg, char *why, size_t whylen)
  * protocol it steps. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen)
 {
+    return cli_options_validate_for(cfg, CLI_ADVICE_RUN, why, whylen);
+}
+
+int cli_options_validate_for(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen)
+{
     adh_run_spec run;
     if (!cfg->sweep.naxes) {
         adh_config_sweep_run(cfg, 0, &run);
-        return validate_run(cfg, &run, why, whylen);
+        return validate_run(cfg, &run, who, why, whylen);
     }
     if (sweep_plot_fits(cfg, why, whylen) != 0)
         return 2;
@@ -775,7 +780,7 @@ int cli_options_validate(const adh_config *cfg, char *why, size_t whylen)
     for (size_t i = 0; i < n; i++) {
         char msg[1024], which[256];
         adh_config_sweep_run(cfg, i, &run);
-        if (validate_run(cfg, &run, msg, sizeof msg) == 0)
+        if (validate_run(cfg, &run, who, msg, sizeof msg) == 0)
             continue;
         adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
         snprintf(why, whylen, "sweep run %zu (%s): %s", i + 1, which, msg);
@@ -802,7 +807,7 @@ static int readable_file(const char *opt, const char *path, char *why, size_t wh
 
 /* The grid of run: its settings make a grid, it holds the run (the core's
  * check) and resolves the contact (unless --force). */
-static int validate_grid(const adh_config *cfg, const adh_run_spec *run, char *why, size_t whylen)
+static int validate_grid(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen)
 {
     const adh_grid_spec *u = &run->grid.use;
     char msg[1024];
@@ -823,7 +828,7 @@ static int validate_grid(const adh_config *cfg, const adh_run_spec *run, char *w
     if (g != &uniform)
         adh_grid_free(g);
     if (rc != ADH_SUCCESS) {
-        cli_advice_append(why, whylen, fix);
+        cli_advice_append_for(who, why, whylen, fix);
         return 2;
     }
     adh_grid_report gr;
@@ -839,16 +844,16 @@ static int validate_grid(const adh_config *cfg, const adh_run_spec *run, char *w
 }
 
 /* Rigid spheres: eq 22 alone, no grid is built. */
-static int rigid_check(const adh_run_spec *run, char *why, size_t whylen)
+static int rigid_check(const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen)
 {
     unsigned fix;
     if (adh_drive_check(&run->mat, &run->relax, &run->proto, ADH_GRID_RELAX, NULL, why, whylen, &fix) == ADH_SUCCESS)
         return 0;
-    cli_advice_append(why, whylen, fix);
+    cli_advice_append_for(who, why, whylen, fix);
     return 2;
 }
 
-static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *why, size_t whylen)
+static int validate_run(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen)
 {
     /* the material first (adh_drive_check meets it again): a graded grid is
      * built from it below */
@@ -871,10 +876,10 @@ static int validate_run(const adh_config *cfg, const adh_run_spec *run, char *wh
             return 2;
     }
     if (run->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
-        return rigid_check(run, why, whylen);
+        return rigid_check(run, who, why, whylen);
     if (!(isfinite(o->drive_speed) && o->drive_speed > 0 && o->drive_speed < 1e3)) {
         snprintf(why, whylen, "drive speed %s is not allowed: it must be above 0 and below 1000 m/s", adh_qtext(o->drive_speed, ADH_Q_SPEED).s);
         return 2;
     }
-    return validate_grid(cfg, run, why, whylen);
+    return validate_grid(cfg, run, who, why, whylen);
 }

@@ -4,6 +4,7 @@
 
 #include <stdio.h>
 
+#include "cli/advice.h"
 #include "scene/config.h"
 
 typedef enum cli_action {
@@ -67,5 +68,8 @@ void cli_options_words(const adh_config *cfg, const char *sentence, char *out, s
 
 /* Checks the whole configuration before anything runs. 0 or 2 with why. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen);
+/* The same, with the advice in who's words (adhere fit's: its turn is its
+ * data's). */
+int cli_options_validate_for(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen);
 
 #endif

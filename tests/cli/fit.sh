@@ -87,6 +87,13 @@ check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep
 rc=$?
 check "--offset=1e-400m: exit 2, it underflows to zero, 0 or at least 2.23e-308 m allowed, nothing written ($rc: $(cat "$TMP/e4"))" \
     sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --offset: '1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.23e-308 m\" '$TMP/e4' && [ ! -e '$TMP/underout' ]"
+# a grid the fit's turn cannot have: the advice is what a fit's user
+# changes (the start R; the turn is the fit's own, below the data), not
+# --turn, which the fit overwrites
+"$ADHERE" fit --data="$DATA" -R 500nm -E 10MPa -A 1e-19J -o "$TMP/deepfit" fig1 >/dev/null 2>"$TMP/e15"
+rc=$?
+check "a fit whose turn the grid cannot reach: exit 2, advice without --turn, nothing written ($rc: $(cat "$TMP/e15"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'beyond 0.3 R = 150 nm.*(-R; the turn is the fit.s, a step below the deepest position in --data)\$' '$TMP/e15' && ! grep -q -- '--turn' '$TMP/e15' && [ ! -e '$TMP/deepfit' ]"
 # E, A and R free together: the force is gamma R times a function of h0/z0
 # and sigma, so one direction of the three changes nothing; the fit said
 # 'result: fit' (exit 0) with R 7.96 um +- 3.6 % on this curve (made with
