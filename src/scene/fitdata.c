@@ -132,6 +132,12 @@ static int ranges(adh_fitdata *fd, const adh_material *start, double offset, cha
         if (fd->F[i] < fd->F[imin])
             imin = i;
     }
+    if (!(fjkr > 0)) {   /* no adhesion at the start: no JKR pull-off, and no ratio to it ("inf times") */
+        snprintf(why, whylen, "%s:%zu: the strongest attraction is %s, but the start values have no adhesion (A = %s: "
+                 "no JKR pull-off to compare it with): start A above 0", fd->file[imin]->path, fd->line[imin],
+                 adh_qtext(fd->F[imin], ADH_Q_FORCE).s, adh_qtext(start->A, ADH_Q_ENERGY).s);
+        return -1;
+    }
     double ratio = fabs(fd->F[imin]) / fjkr;
     if (!(ratio > 1.0 / 30 && ratio < 30)) {
         snprintf(why, whylen, "%s:%zu: the strongest attraction, %s, is %.3g times the JKR pull-off at the start "

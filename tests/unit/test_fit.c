@@ -81,6 +81,33 @@ static void refused(const char *path, const char *text, const char *columns, siz
     unlink(path);
 }
 
+/* A start without adhesion (A = 0): no JKR pull-off, so no ratio of the
+ * curve's attraction to it; said so ("inf times the JKR pull-off" was not). */
+static void no_adhesion(const char *path)
+{
+    FILE *f = fopen(path, "w");
+    for (int i = 0; i < 40; i++)   /* an approach in nm and nN, a jump half-way */
+        fprintf(f, "%g %g\n", 6.0 - 0.2 * i, i < 20 ? -1.0 : -300.0 + 10 * (i - 20));
+    fclose(f);
+    adh_measured m;
+    adh_fitdata fd;
+    char why[1024] = "";
+    adh_material start = adh_material_default();
+    start.A = 0;
+    int rc = adh_measured_load(path, NULL, &m, why, sizeof why);
+    ok(rc == 0, "no adhesion: the curve loads (%s)", why);
+    if (rc == 0) {
+        rc = adh_fitdata_make(&m, 2, &start, 0, &fd, why, sizeof why);
+        if (rc == 0)
+            adh_fitdata_free(&fd);
+        adh_measured_free(&m);
+    }
+    ok(rc != 0 && strstr(why, ":21: the strongest attraction is -300 nN, but the start values have no adhesion "
+                               "(A = 0 J: no JKR pull-off to compare it with): start A above 0") && !strstr(why, "inf"),
+       "A = 0 at the start: refused, no ratio to a pull-off there is none of (%s)", why);
+    unlink(path);
+}
+
 /* Every refusal of the data path names the file and line and says why. */
 static void refusals(const char *path)
 {
@@ -255,6 +282,7 @@ int main(void)
     unlink(path);
 
     refusals(path);
+    no_adhesion(path);
     adh_kernel_free(k);
     adh_grid_free(g);
     return tap_done();
