@@ -121,6 +121,20 @@ static int ranges(adh_fitdata *fd, const adh_material *start, double offset, cha
 {
     double reach = adh_protocol_reach(start), fjkr = fabs(adh_jkr_pulloff(start));
     size_t imin = 0;
+    /* the offset, not the header's unit, when one was given, an offset
+     * would bring every position within reach and the one given does not:
+     * the range allowed (with none given, the unit is the likelier slip) */
+    double xlo = INFINITY, xhi = -INFINITY;
+    for (size_t i = 0; i < fd->d.n; i++)
+        xlo = fmin(xlo, fd->x[i]), xhi = fmax(xhi, fd->x[i]);
+    if (offset != 0 && xhi - reach <= xlo + reach && !(offset >= xhi - reach && offset <= xlo + reach)) {
+        snprintf(why, whylen, "--offset=%s is out of range: the positions less the offset must lie within the "
+                 "model's reach (|h0| up to R/50 = %s at R = %s); for these positions (%s to %s) an offset from %s to "
+                 "%s is allowed", adh_qtext_arg(offset, ADH_Q_LENGTH).s, adh_qtext(reach, ADH_Q_LENGTH).s,
+                 adh_qtext(start->R, ADH_Q_LENGTH).s, adh_qtext(xlo, ADH_Q_LENGTH).s, adh_qtext(xhi, ADH_Q_LENGTH).s,
+                 adh_qtext(xhi - reach, ADH_Q_LENGTH).s, adh_qtext(xlo + reach, ADH_Q_LENGTH).s);
+        return -1;
+    }
     for (size_t i = 0; i < fd->d.n; i++) {
         double h = fd->x[i] - offset;
         if (!(fabs(h) <= reach)) {

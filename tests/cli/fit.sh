@@ -87,6 +87,15 @@ check "--free=E,gamma is refused, naming the parameters ($(cat "$TMP/e2"))" grep
 rc=$?
 check "--offset=1e-400m: exit 2, it underflows to zero, 0 or at least 2.23e-308 m allowed, nothing written ($rc: $(cat "$TMP/e4"))" \
     sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --offset: '1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.23e-308 m\" '$TMP/e4' && [ ! -e '$TMP/underout' ]"
+# an offset past the model's reach: the offset is out of range, and the
+# range these positions allow is named (it blamed the header's unit)
+"$ADHERE" fit --data="$DATA" --offset=1e300nm -o "$TMP/offout" fig1 >/dev/null 2>"$TMP/e17"
+rc=$?
+check "--offset=1e300nm: exit 2, out of range, the offsets allowed, nothing written ($rc: $(cat "$TMP/e17"))" \
+    sh -c "[ $rc -eq 2 ] && grep -qxF 'adhere: --offset=1e+291m is out of range: the positions less the offset must lie within the model'\''s reach (|h0| up to R/50 = 200 nm at R = 10 um); for these positions (-2 nm to 8 nm) an offset from -192 nm to 198 nm is allowed' '$TMP/e17' && ! grep -q unit '$TMP/e17' && [ ! -e '$TMP/offout' ]"
+"$ADHERE" fit --data="$DATA" --offset=-193nm -o "$TMP/offout" fig1 >/dev/null 2>"$TMP/e17"
+check "--offset=-193nm, just past the least allowed: refused the same way ($(cat "$TMP/e17"))" \
+    sh -c "grep -q 'offset=-193nm is out of range.*from -192 nm to 198 nm is allowed' '$TMP/e17'"
 # a grid the fit's turn cannot have: the advice is what a fit's user
 # changes (the start R; the turn is the fit's own, below the data), not
 # --turn, which the fit overwrites
