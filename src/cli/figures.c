@@ -273,7 +273,7 @@ int cli_figures_curve(int dirfd, size_t i, adh_run *run, char *why, size_t whyle
     adh_run_init(run);
     FILE *f = adh_outdir_read(dirfd, name);
     if (!f) {
-        snprintf(why, whylen, "cannot read %s: %s", name, strerror(errno));
+        snprintf(why, whylen, "cannot read %s: %s", name, adh_outdir_read_error(errno));
         return -1;
     }
     char line[1024];

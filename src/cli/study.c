@@ -291,7 +291,7 @@ int cli_study_read(cli_study *st, adh_config *cfg, int dirfd, const char *path, 
     if (!f && errno == ENOENT)
         return 0;
     if (!f) {
-        snprintf(why, whylen, "cannot read %.3000s/study.tsv: %s", path, strerror(errno));
+        snprintf(why, whylen, "cannot read %.3000s/study.tsv: %s", path, adh_outdir_read_error(errno));
         return -1;
     }
     char *line = NULL, fp[17] = "";
@@ -349,7 +349,7 @@ long cli_study_read_rows(const cli_study *st, int dirfd, const char *path, cli_s
     if (!f && errno == ENOENT)
         return 0;
     if (!f) {
-        snprintf(why, whylen, "cannot read %.3000s/runs.tsv: %s", path, strerror(errno));
+        snprintf(why, whylen, "cannot read %.3000s/runs.tsv: %s", path, adh_outdir_read_error(errno));
         return -1;
     }
     char *line = NULL, mark[64];

@@ -973,6 +973,15 @@ FILE *adh_outdir_read(int dirfd, const char *name)
     return f;
 }
 
+const char *adh_outdir_read_error(int err)
+{
+    if (err == EINVAL)
+        return "not a regular file (a pipe, device or directory under the name; adhere reads only the files it wrote)";
+    if (err == ELOOP)
+        return "a symbolic link (adhere reads no file through a link)";
+    return strerror(err);
+}
+
 int adh_outdir_has(const adh_outdir *d, const char *name)
 {
     struct stat st;

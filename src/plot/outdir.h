@@ -50,6 +50,11 @@ int adh_outdir_fd(const adh_outdir *d);
  * regular file opened for reading without following a link at its last
  * component; NULL with errno (ENOENT: none there). */
 FILE *adh_outdir_read(int dirfd, const char *name);
+/* Why adh_outdir_read failed with err (its errno), in words: "not a
+ * regular file ..." for a pipe, device or directory under the name (EINVAL,
+ * whose strerror, "Invalid argument", said nothing of it), "a symbolic
+ * link ..." for a link (ELOOP), else strerror(err). */
+const char *adh_outdir_read_error(int err);
 
 /* Whether name in d is a file or directory the manifest proves adhere
  * wrote (and is still as it wrote it). */

@@ -492,4 +492,19 @@ check "a study past the file size limit is refused (exit $(cat "$TMP/rc"): $(cat
 "$ADHERE" --plan --mode=rigid --sweep=E=1GPa..2GPa,1000 --sweep=A=1e-20J..1e-19J,101 >/dev/null 2>"$TMP/err"
 check "more than 100000 runs are refused ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'more than 100000 runs' '$TMP/err'"
 
+# a FIFO (no file adhere wrote) named runs.tsv in a shard's directory:
+# merge says what is wrong with it ("Invalid argument" said nothing),
+# exits 2, never opens the pipe's other end, and removes nothing
+"$ADHERE" --batch -q --mode=rigid --sweep=E=1GPa,2GPa,3GPa --shard=1/2 -o "$TMP/fifoA" 2>/dev/null
+"$ADHERE" --batch -q --mode=rigid --sweep=E=1GPa,2GPa,3GPa --shard=2/2 -o "$TMP/fifoB" 2>/dev/null
+rm -f "$TMP/fifoB/runs.tsv"
+if mkfifo "$TMP/fifoB/runs.tsv" 2>/dev/null; then
+    timeout 60 "$ADHERE" merge -o "$TMP/fifoM" "$TMP/fifoA" "$TMP/fifoB" >/dev/null 2>"$TMP/err"
+    rc=$?
+    check "a FIFO named runs.tsv in a shard: exit 2, 'not a regular file', the FIFO kept, no merge written ($rc: $(cat "$TMP/err"))" \
+        sh -c "[ $rc -eq 2 ] && grep -qF 'cannot read $TMP/fifoB/runs.tsv: not a regular file' '$TMP/err' && ! grep -q 'Invalid argument' '$TMP/err' && [ -p '$TMP/fifoB/runs.tsv' ] && [ ! -e '$TMP/fifoM' ] && [ -d '$TMP/fifoB/run-2' ]"
+else
+    T=$((T + 1)); echo "ok $T # SKIP mkfifo failed: no FIFO to try"
+fi
+
 done_testing
