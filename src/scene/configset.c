@@ -259,7 +259,12 @@ static int set_nodes(adh_config *c, const key_def *k, const char *text, char *wh
         g->nodes_given = 0;
         return 0;
     }
-    if (parse_count(text, 0, LONG_MAX, &n, why, whylen) != 0 || adh_grid_nodes_check(n, why, whylen) != ADH_SUCCESS)
+    if (parse_count(text, 0, LONG_MAX, &n, why, whylen) != 0) {   /* '1e9': the range too, not just the form */
+        snprintf(why, whylen, "'%.60s' is not allowed: expected a whole number of nodes, %d to %d", text,
+                 ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX);
+        return -1;
+    }
+    if (adh_grid_nodes_check(n, why, whylen) != ADH_SUCCESS)
         return -1;
     g->asked.nodes = (size_t)n;
     g->nodes_given = 1;

@@ -24,7 +24,7 @@ bad "A (Hamaker constant) = 0 J is out of range" -A 0
 bad "z0 (equilibrium separation) = -500 pm is out of range: allowed 1 pm to 100 nm" --z0=-0.5nm
 bad "R (effective radius) = 0 nm is out of range" -R 0
 bad "N = 5 nodes is not allowed: use 10 to 20000 nodes" -N 5
-bad "'1e3' is not allowed: expected a whole number" --nodes=1e3
+bad "'1e3' is not allowed: expected a whole number of nodes, 10 to 20000$" --nodes=1e3
 bad "too coarse" -N 20
 bad "too short.*; use more nodes or a larger spacing (-N, --spacing)$" --spacing=0.5nm
 bad "unknown option '--frobnicate'" --frobnicate
