@@ -120,14 +120,15 @@ static void closing_line(const adh_run_spec *spec, const adh_run *run, const adh
     adh_format_quantity(pull, ADH_Q_FORCE, 4, F, sizeof F);
     adh_format_quantity(jin, ADH_Q_LENGTH, 4, in, sizeof in);
     adh_format_quantity(jout, ADH_Q_LENGTH, 4, jo, sizeof jo);
-    fprintf(stderr, "adhere: done in %s: pull-off %s, jump-in %s, jump-out %s%s; ", t, isnan(pull) ? "none" : F,
-            isnan(jin) ? "none" : in, isnan(jout) ? "none" : jo, hy);
+    char where[PATH_MAX + 2400];   /* the directory's name escaped with the rest: one line, one writer */
     if (out && strncmp(plots, "wrote ", 6) == 0)
-        fprintf(stderr, "wrote %s, %s\n", tables, plots + 6);
+        snprintf(where, sizeof where, "wrote %s, %s", tables, plots + 6);
     else if (out)
-        fprintf(stderr, "wrote %s in %s%s%s\n", tables, out, plots[0] ? "; " : "", plots);
+        snprintf(where, sizeof where, "wrote %s in %s%s%s", tables, out, plots[0] ? "; " : "", plots);
     else
-        fprintf(stderr, "the force table went to standard output\n");
+        snprintf(where, sizeof where, "the force table went to standard output");
+    adh_sayf("done in %s: pull-off %s, jump-in %s, jump-out %s%s; %s", t, isnan(pull) ? "none" : F,
+             isnan(jin) ? "none" : in, isnan(jout) ? "none" : jo, hy, where);
 }
 
 /* One run's state across its phases: build, step, judge, write. */
@@ -163,7 +164,7 @@ static int batch_build(batch_job *j)
         adh_config_grid_report(spec, &gr);
         if (!gr.resolved) {
             adh_grid_unresolved_sentence(&gr, why, sizeof why);
-            fprintf(stderr, "adhere: warning: %s (--force; summary.tsv: resolved 0)\n", why);
+            adh_sayf("warning: %s (--force; summary.tsv: resolved 0)", why);
         }
     }
     /* caught from here: a large ring kernel takes seconds to build */
@@ -175,10 +176,10 @@ static int batch_build(batch_job *j)
     if (j->rigid || j->k)
         return 0;
     if (kst == ADH_EINTR)
-        fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written\n",
-                cli_interrupt_signal(), spec->grid.use.nodes);
+        adh_sayf("interrupted by signal %d while building the %zu-node kernel: nothing computed, no table written",
+                 cli_interrupt_signal(), spec->grid.use.nodes);
     else
-        fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", j->g ? j->g->n : spec->grid.use.nodes);
+        adh_sayf("out of memory building the %zu-node kernel", j->g ? j->g->n : spec->grid.use.nodes);
     cli_interrupt_release();
     adh_grid_free(j->g);
     return kst == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
@@ -210,12 +211,12 @@ static void batch_step(batch_job *j)
         char rwhy[1024];
         int rrc = cli_static_reference(spec, j->g, j->k, &j->ref, &j->rres, &j->ref_resolved, rwhy, sizeof rwhy);
         if (!j->ref_resolved)
-            fprintf(stderr, "adhere: warning: the static reference curve is not resolved: %s (summary.tsv: "
-                    "static_resolved 0)\n", rwhy);
+            adh_sayf("warning: the static reference curve is not resolved: %s (summary.tsv: "
+                     "static_resolved 0)", rwhy);
         if (rrc != ADH_SUCCESS && !j->ref.interrupted) {
             char stopped[700];
-            fprintf(stderr, "adhere: the static reference curve failed: %s\n",
-                    cli_tables_stopped(&j->ref, j->ref.status, stopped, sizeof stopped));
+            adh_sayf("the static reference curve failed: %s",
+                     cli_tables_stopped(&j->ref, j->ref.status, stopped, sizeof stopped));
             j->want_ref = 0;
         }
     }
@@ -257,15 +258,15 @@ static void batch_judge(batch_job *j)
     adh_material_derive(&spec->mat, &der);
     int touched = j->rigid || adh_run_touched(run, der.h_star, sep, sizeof sep);
     if (j->status == CLI_EXIT_OK && (!touched || !adh_run_separated(run, sep, sizeof sep)))
-        fprintf(stderr, "adhere: incomplete: %s (summary.tsv: complete 0)\n", sep);
+        adh_sayf("incomplete: %s (summary.tsv: complete 0)", sep);
     /* Steps at the cap change what the numbers mean: said even under -q, and
      * the run's status, unless --allow-unconverged asked for them. */
     const adh_output_options *o = &j->cfg->output;
     int unconverged = run->unconverged && j->status == CLI_EXIT_OK;
     if (run->unconverged && (!o->allow_unconverged || !o->quiet))
-        fprintf(stderr, "adhere: warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %s; their rows say converged 0%s\n",
-                run->unconverged, run->nrows, spec->relax.max_iter, adh_qtext(spec->relax.eps, ADH_Q_LENGTH).s,
-                o->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
+        adh_sayf("warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %s; their rows say converged 0%s",
+                 run->unconverged, run->nrows, spec->relax.max_iter, adh_qtext(spec->relax.eps, ADH_Q_LENGTH).s,
+                 o->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");
     if (unconverged && !o->allow_unconverged)
         j->status = CLI_EXIT_SOLVER;
 }
@@ -305,13 +306,13 @@ static void batch_plots(batch_job *j, double ref_hyst, char *unwritten, size_t u
     int prc = adh_plots_write(&ps, &j->run, j->want_ref ? &j->ref : NULL, j->od, msg, sizeof msg, missing,
                               sizeof missing);
     if (prc != 0) {
-        fprintf(stderr, "adhere: plots not written: %s\n", msg);
+        adh_sayf("plots not written: %s", msg);
         j->status = prc == 2 ? CLI_EXIT_USAGE : j->status == CLI_EXIT_OK ? CLI_EXIT_PLOT : j->status;
     }
     cli_tables_names_add(unwritten, ulen, missing);
     /* the scene figures (Figure 1 inset, Figure 2) when asked */
     if (!cli_interrupt_signal() && cli_figures_run(j->cfg, spec, &j->run, j->od, fig, sizeof fig, unwritten, ulen) != 0) {
-        fprintf(stderr, "adhere: plots not written: %s\n", fig);
+        adh_sayf("plots not written: %s", fig);
         if (j->status == CLI_EXIT_OK)
             j->status = CLI_EXIT_PLOT;
     }
@@ -393,7 +394,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
     size_t nextra = batch_extra(j, ref_hyst, keynames, extra, snap);
     /* A force table streamed to a full disk or a closed pipe is lost: say so. */
     if (j->ctx.stream && (fflush(j->ctx.stream) != 0 || ferror(j->ctx.stream))) {
-        fprintf(stderr, "adhere: cannot write the force table to standard output: %s\n", strerror(errno));
+        adh_sayf("cannot write the force table to standard output: %s", strerror(errno));
         j->status = CLI_EXIT_USAGE;
     }
     int partial = j->note[0] != '\0';
@@ -409,7 +410,7 @@ static int run_batch(const cli_options *cli, adh_outdir *od, double t_start)
                      adh_clock_seconds() - t_start, NULL, "", "");
     cli_interrupt_release();
     if (cli_interrupt_signal() && !partial) {
-        fprintf(stderr, "adhere: interrupted by signal %d while plotting; the tables are complete\n", cli_interrupt_signal());
+        adh_sayf("interrupted by signal %d while plotting; the tables are complete", cli_interrupt_signal());
         j->status = cli_interrupt_exit();
     }
     cli_time_out_free(&j->tout);

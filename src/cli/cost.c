@@ -149,19 +149,19 @@ static void *worker(void *arg)
         if (!job->cfg->output.quiet) {
             char pr[64];
             cli_progress_text(job->done, job->n, adh_clock_seconds() - job->t0, pr, sizeof pr);
-            fprintf(stderr, "adhere: cost run %zu of %zu (N = %zu, %s, eps = %g pm): %.3g s, %zu iterations; "
-                    "%zu of %zu done, %s\n", i + 1, job->n, cr->nodes, adh_kernel_name(cr->kernel), cr->eps * 1e12,
-                    cr->seconds, cr->iterations, job->done, job->n, pr);
+            adh_sayf("cost run %zu of %zu (N = %zu, %s, eps = %g pm): %.3g s, %zu iterations; "
+                     "%zu of %zu done, %s", i + 1, job->n, cr->nodes, adh_kernel_name(cr->kernel), cr->eps * 1e12,
+                     cr->seconds, cr->iterations, job->done, job->n, pr);
         }
         /* not hidden by -q, as a study's: the row's numbers end where it stopped */
         if (cr->reason[0])
-            fprintf(stderr, "adhere: cost run %zu (N = %zu, eps = %g pm) stopped: %s\n", i + 1, cr->nodes, cr->eps * 1e12,
-                    cr->reason);
+            adh_sayf("cost run %zu (N = %zu, eps = %g pm) stopped: %s", i + 1, cr->nodes, cr->eps * 1e12,
+                     cr->reason);
         /* not hidden by -q: the row's error then measures the cap, not eps */
         if (cr->unconverged)
-            fprintf(stderr, "adhere: warning: cost run %zu (N = %zu, eps = %g pm): %zu of %zu steps reached the "
-                    "iteration cap (%zu) without meeting eps\n", i + 1, cr->nodes, cr->eps * 1e12, cr->unconverged,
-                    cr->steps, c.relax.max_iter);
+            adh_sayf("warning: cost run %zu (N = %zu, eps = %g pm): %zu of %zu steps reached the "
+                     "iteration cap (%zu) without meeting eps", i + 1, cr->nodes, cr->eps * 1e12, cr->unconverged,
+                     cr->steps, c.relax.max_iter);
         pthread_mutex_unlock(&job->lock);
     }
     return NULL;
@@ -486,7 +486,7 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
         return CLI_EXIT_USAGE;
     }
     if (cfg->spec.mode != ADH_MODE_RELAX || cfg->spec.proto.nturns == 0) {
-        fprintf(stderr, "adhere: --cost measures the relaxation's load/unload cycle: it needs mode relax and a turning point\n");
+        adh_sayf("--cost measures the relaxation's load/unload cycle: it needs mode relax and a turning point");
         return CLI_EXIT_USAGE;
     }
     for (size_t a = 0; a < nnodes; a++)
@@ -497,7 +497,7 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
             c.spec.relax.eps = eps[e];
             c.spec.grid.force = 1; /* coarse grids are what the report measures */
             if (cli_options_validate(&c, why, sizeof why) != 0) {
-                fprintf(stderr, "adhere: --cost: N = %zu, eps = %s: %s\n", nodes[a], adh_qtext(eps[e], ADH_Q_LENGTH).s, why);
+                adh_sayf("--cost: N = %zu, eps = %s: %s", nodes[a], adh_qtext(eps[e], ADH_Q_LENGTH).s, why);
                 return CLI_EXIT_USAGE;
             }
         }
@@ -508,7 +508,7 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
     size_t n = neps * nnodes * 2, m = 0;
     cost_run *runs = calloc(n, sizeof *runs);
     if (!runs) {
-        fprintf(stderr, "adhere: out of memory\n");
+        adh_sayf("out of memory");
         return CLI_EXIT_SOLVER;
     }
     *finest = 0;
@@ -539,7 +539,7 @@ static int cost_write(const cost_job *job, adh_outdir *od)
     int prc = plot_cost(job, od, why, sizeof why);
     if (!prc)
         return CLI_EXIT_OK;
-    fprintf(stderr, "adhere: cost.png not written: %s\n", why);
+    adh_sayf("cost.png not written: %s", why);
     return cli_interrupt_signal() ? cli_interrupt_exit() : prc;
 }
 
@@ -548,10 +548,10 @@ static void cost_done(const cost_job *job, const char *out)
     char t[32];
     cli_progress_duration(adh_clock_seconds() - job->t0, t, sizeof t);
     if (out)
-        fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output, cost.tsv%s in %s/\n", t, job->n,
-                job->cfg->output.plot ? " and cost.png" : "", out);
+        adh_sayf("done in %s: %zu cost runs; the table on standard output, cost.tsv%s in %s/", t, job->n,
+                 job->cfg->output.plot ? " and cost.png" : "", out);
     else
-        fprintf(stderr, "adhere: done in %s: %zu cost runs; the table on standard output\n", t, job->n);
+        adh_sayf("done in %s: %zu cost runs; the table on standard output", t, job->n);
 }
 
 /* What the grid of runs will take, said before it starts (the default grid
@@ -612,9 +612,9 @@ int cli_cost_main(const cli_options *cli)
             snprintf(on, sizeof on, ", a dense kernel past %zu nodes timed on a grid of that many and scaled as N^2",
                      scaled);
         if (est >= 0)
-            fprintf(stderr, "adhere: --cost: %zu runs, expected about %s on %d core%s (the plan's iterations, a kernel "
-                    "product timed now%s; the static curve beside them)\n", n, t, cost_jobs(), cost_jobs() > 1 ? "s" : "",
-                    on);
+            adh_sayf("--cost: %zu runs, expected about %s on %d core%s (the plan's iterations, a kernel "
+                     "product timed now%s; the static curve beside them)", n, t, cost_jobs(), cost_jobs() > 1 ? "s" : "",
+                     on);
     }
     cli_interrupt_catch();
     adh_ready_phase("cost");

@@ -234,9 +234,9 @@ int cli_fit_main(cli_options *cli)
             !isfinite(res.chi2))
             break;
         if (!cfg->output.quiet)
-            fprintf(stderr, "adhere: the grid chosen for the start has %.2f nodes across the edge zone at the optimum "
-                    "(%.2f needed): choosing it again there and fitting from the optimum\n", gr.edge_nodes,
-                    1.0 / gr.limit);
+            adh_sayf("the grid chosen for the start has %.2f nodes across the edge zone at the optimum "
+                     "(%.2f needed): choosing it again there and fitting from the optimum", gr.edge_nodes,
+                     1.0 / gr.limit);
         cfg->spec.mat = res.best;
         fr.fs.start = res.best;
         fr.fs.offset = res.value[ADH_FIT_OFFSET];
@@ -266,17 +266,17 @@ int cli_fit_main(cli_options *cli)
     const char *word;
     int verdict = cli_fit_verdict(&r, &word);
     if (!cfg->output.quiet && out && !isfinite(res.chi2))   /* it said "wrote fit.tsv, ..." of files not written */
-        fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s; no evaluation succeeded: nothing written "
-                "in %s\n", word, fr.evals, res.seconds, adh_outdir_path(od));
+        adh_sayf("%s after %zu model evaluations in %.1f s; no evaluation succeeded: nothing written "
+                 "in %s", word, fr.evals, res.seconds, adh_outdir_path(od));
     else if (!cfg->output.quiet && out && rc == CLI_EXIT_OK)
-        fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s; wrote fit.tsv, fit-points.tsv, best.scene%s "
-                "in %s (open it: adhere %s/best.scene)\n", word, fr.evals, res.seconds, cfg->output.plot ? ", fit.png" : "",
-                adh_outdir_path(od), adh_outdir_path(od));
+        adh_sayf("%s after %zu model evaluations in %.1f s; wrote fit.tsv, fit-points.tsv, best.scene%s "
+                 "in %s (open it: adhere %s/best.scene)", word, fr.evals, res.seconds, cfg->output.plot ? ", fit.png" : "",
+                 adh_outdir_path(od), adh_outdir_path(od));
     else if (!cfg->output.quiet)
-        fprintf(stderr, "adhere: %s after %zu model evaluations in %.1f s\n", word, fr.evals, res.seconds);
+        adh_sayf("%s after %zu model evaluations in %.1f s", word, fr.evals, res.seconds);
     char stop[700];
     if (!isfinite(res.chi2) && *cli_fit_model_stop(&res, fr.fs.model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))   /* not hidden by -q: no fit */
-        fprintf(stderr, "adhere: the model stopped: %s\n", stop);
+        adh_sayf("the model stopped: %s", stop);
     adh_outdir_close(od);
     adh_fit_free(f);
     adh_fitdata_free(&fr.fd);
@@ -285,7 +285,7 @@ int cli_fit_main(cli_options *cli)
      * stops gnuplot's wait and leaves no temporary, as in --batch */
     cli_interrupt_release();
     if (!r.partial && cli_interrupt_signal())
-        fprintf(stderr, "adhere: interrupted by signal %d after the fit had ended\n", cli_interrupt_signal());
+        adh_sayf("interrupted by signal %d after the fit had ended", cli_interrupt_signal());
     if (r.partial || cli_interrupt_signal())
         return cli_interrupt_exit();
     if (rc != CLI_EXIT_OK)

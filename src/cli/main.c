@@ -37,7 +37,7 @@ void openblas_set_num_threads(int num_threads) __attribute__((weak));
 static int stdout_done(void)
 {
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "adhere: cannot write to standard output: %s\n", strerror(errno));
+        adh_sayf("cannot write to standard output: %s", strerror(errno));
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
@@ -77,7 +77,7 @@ static int plan(cli_options *cli)
     int fits = cli_studycost_fits(&cli->cfg, &p, stdout, why, sizeof why);
     int rc = stdout_done();
     if (fits != 0) {
-        fprintf(stderr, "adhere: refused: %s\n", why);
+        adh_sayf("refused: %s", why);
         return CLI_EXIT_USAGE;
     }
     return rc;
@@ -189,7 +189,7 @@ static int run(int argc, char **argv)
             /* a bare number read in SI may have meant the screen's unit */
             char hint[1024];
             if (adh_config_unit_hint(&cli.cfg, accept, &cli, hint, sizeof hint) == 1)
-                fprintf(stderr, "adhere: %s (a bare number is in SI units: %s)\n", hint, why);
+                adh_sayf("%s (a bare number is in SI units: %s)", hint, why);
             else
                 adh_say(why);
             return rc;
@@ -200,10 +200,10 @@ static int run(int argc, char **argv)
     size_t nodes = adh_config_nodes(spec);
     if (cli.action != CLI_ACT_COST && !cli.cfg.output.quiet && spec->mode != ADH_MODE_RIGID &&
         spec->grid.use.storage == ADH_STORAGE_DENSE && nodes > ADH_GRID_MAX_NODES)
-        fprintf(stderr, "adhere: note: --operator=dense on %zu nodes: every relaxation iteration reads the whole "
-                "%.3g GB kernel, %.3g times the work at the dense budget's %d nodes; --operator=h2 holds it in "
-                "O(N)\n", nodes, 8e-9 * (double)nodes * (double)nodes,
-                ((double)nodes / ADH_GRID_MAX_NODES) * ((double)nodes / ADH_GRID_MAX_NODES), ADH_GRID_MAX_NODES);
+        adh_sayf("note: --operator=dense on %zu nodes: every relaxation iteration reads the whole "
+                 "%.3g GB kernel, %.3g times the work at the dense budget's %d nodes; --operator=h2 holds it in "
+                 "O(N)", nodes, 8e-9 * (double)nodes * (double)nodes,
+                 ((double)nodes / ADH_GRID_MAX_NODES) * ((double)nodes / ADH_GRID_MAX_NODES), ADH_GRID_MAX_NODES);
     /* The solvers poll the interrupt flag through their cancel hook: a
      * signal is heard inside a step, not only between steps. */
     cli.cfg.spec.relax.cancel = cli_interrupt_flag();

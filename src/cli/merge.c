@@ -448,11 +448,11 @@ static void earlier_figures(const merge *m, const char *names, int replace)
     if (!*names)
         return;
     if (replace)
-        fprintf(stderr, "adhere merge: the earlier merge's %s removed: drawn from another table\n", names);
+        adh_sayf_as("adhere merge", "the earlier merge's %s removed: drawn from another table", names);
     else
-        fprintf(stderr, "adhere merge: the earlier %s left in place: drawn from this table's rows (%s)\n", names,
-                m->earlier_same ? "the earlier sweep.tsv differed in its seconds column at most"
-                                : "the study's own, in its directory");
+        adh_sayf_as("adhere merge", "the earlier %s left in place: drawn from this table's rows (%s)", names,
+                    m->earlier_same ? "the earlier sweep.tsv differed in its seconds column at most"
+                                    : "the study's own, in its directory");
 }
 
 /* The new merge's files, written under temporaries, take the earlier
@@ -467,8 +467,8 @@ static int commit_out(merge *m, int rc)
     if (cli_interrupt_signal()) {
         if (m->out)
             adh_outdir_abandon(m->out);
-        fprintf(stderr, "adhere merge: interrupted by signal %d: nothing written%s%s%s\n", cli_interrupt_signal(),
-                m->out ? "; " : "", m->out ? adh_outdir_path(m->out) : "", m->out ? " keeps what it held" : "");
+        adh_sayf_as("adhere merge", "interrupted by signal %d: nothing written%s%s%s", cli_interrupt_signal(),
+                    m->out ? "; " : "", m->out ? adh_outdir_path(m->out) : "", m->out ? " keeps what it held" : "");
         return cli_interrupt_exit();
     }
     if (!m->out)
@@ -484,7 +484,7 @@ static int commit_out(merge *m, int rc)
     if (m->figure_failed)
         adh_outdir_earlier(m->out, ".png", names, sizeof names);
     if (adh_outdir_commit(m->out, replace, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere merge: %s\n", why);
+        adh_sayf_as("adhere merge", "%s", why);
         return CLI_EXIT_USAGE;
     }
     earlier_figures(m, names, replace);
@@ -557,7 +557,7 @@ static int write_out(merge *m, const char *partial)
     int rc = cli_figures_sweep(cfg, m->rows, st->nruns, &curves, hyst, m->out, why, sizeof why);
     free(fd);
     if (rc != 0) {
-        fprintf(stderr, "adhere: sweep plot not written: %s\n", why);
+        adh_sayf("sweep plot not written: %s", why);
         m->figure_failed = 1;
         m->earlier_same = earlier_same(m, &t);
         return CLI_EXIT_PLOT;
@@ -627,7 +627,7 @@ static int merge_run(cli_options *cli)
     if (rc == 0)
         rc = open_out(&m, why, sizeof why);
     if (rc != 0) {
-        fprintf(stderr, "adhere merge: %s\n", why);
+        adh_sayf_as("adhere merge", "%s", why);
         merge_free(&m);
         return rc;
     }
@@ -635,9 +635,9 @@ static int merge_run(cli_options *cli)
         adh_outdir_stage(m.out);
     rc = commit_out(&m, write_out(&m, partial));
     if (rc == CLI_EXIT_OK && !cli->cfg.output.quiet)
-        fprintf(stderr, "adhere merge: %zu shard%s of study %s (%zu runs) joined%s%s%s\n", m.n, m.n == 1 ? "" : "s",
-                m.sh[0].st.fingerprint, nruns, m.out ? " into " : "; sweep.tsv went to standard output",
-                m.out ? adh_outdir_path(m.out) : "", *partial ? " (# PARTIAL)" : "");
+        adh_sayf_as("adhere merge", "%zu shard%s of study %s (%zu runs) joined%s%s%s", m.n, m.n == 1 ? "" : "s",
+                    m.sh[0].st.fingerprint, nruns, m.out ? " into " : "; sweep.tsv went to standard output",
+                    m.out ? adh_outdir_path(m.out) : "", *partial ? " (# PARTIAL)" : "");
     merge_free(&m);
     return rc;
 }

@@ -70,8 +70,8 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
         return run->interrupted ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
     if (status == CLI_EXIT_OK && run->unconverged && !cfg->output.allow_unconverged) {
         if (data) /* said once, not again when the figures rewrite the summary */
-            fprintf(stderr, "adhere: warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)\n",
-                    i + 1, run->unconverged, run->nrows);
+            adh_sayf("warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)",
+                     i + 1, run->unconverged, run->nrows);
         return CLI_EXIT_SOLVER;
     }
     return status;
@@ -97,12 +97,12 @@ static int write_plots(const adh_config *cfg, size_t i, const adh_run_spec *rspe
         int prc = adh_plots_write(&ps, run, NULL, dir, msg, sizeof msg, missing, sizeof missing);
         adh_grid_free(g);
         if (prc != 0) {
-            fprintf(stderr, "adhere: run %zu: plots not written: %s\n", i + 1, msg);
+            adh_sayf("run %zu: plots not written: %s", i + 1, msg);
             status = prc == 2 ? CLI_EXIT_USAGE : CLI_EXIT_PLOT;
         }
     }
     if (cli_figures_run(cfg, rspec, run, dir, msg, sizeof msg, missing, sizeof missing) != 0) {
-        fprintf(stderr, "adhere: run %zu: %s\n", i + 1, msg);
+        adh_sayf("run %zu: %s", i + 1, msg);
         status = status ? status : CLI_EXIT_PLOT;
     }
     if (*missing) {

@@ -80,7 +80,7 @@ static void append_row(study_job *job, const cli_studyrow *row)
     cli_studyrow_write(m, job->cfg, row);
     fclose(m);
     if (job->rows_fd >= 0 && write(job->rows_fd, text, len) != (ssize_t)len && job->exit_status != CLI_EXIT_USAGE) {
-        fprintf(stderr, "adhere: cannot write %s/runs.tsv: %s\n", adh_outdir_path(job->od), strerror(errno));
+        adh_sayf("cannot write %s/runs.tsv: %s", adh_outdir_path(job->od), strerror(errno));
         job->exit_status = CLI_EXIT_USAGE;
     }
     free(text);
@@ -147,17 +147,17 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
     job->done++;
     if (!cfg->output.quiet) {
         progress_text(job, pr, sizeof pr);
-        fprintf(stderr, "adhere: run %zu of %zu (%s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s\n",
-                i + 1, job->st->nruns, which, run->interrupted ? "interrupted" : row.status, run->nrows,
-                run->iterations, run->seconds, job->done, job->total, pr);
+        adh_sayf("run %zu of %zu (%s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s",
+                 i + 1, job->st->nruns, which, run->interrupted ? "interrupted" : row.status, run->nrows,
+                 run->iterations, run->seconds, job->done, job->total, pr);
         if (!run->interrupted && row.reason)
-            fprintf(stderr, "adhere: run %zu stopped: %s\n", i + 1, row.reason);
+            adh_sayf("run %zu stopped: %s", i + 1, row.reason);
     }
     /* not hidden by -q: it changes what the run's numbers mean */
     if (run->unconverged)
-        fprintf(stderr, "adhere: warning: run %zu (%s): %zu of %zu steps reached the iteration cap (%zu) "
-                "without meeting eps; their rows say converged 0\n", i + 1, which, run->unconverged, run->nrows,
-                spec->relax.max_iter);
+        adh_sayf("warning: run %zu (%s): %zu of %zu steps reached the iteration cap (%zu) "
+                 "without meeting eps; their rows say converged 0", i + 1, which, run->unconverged, run->nrows,
+                 spec->relax.max_iter);
     pthread_mutex_unlock(&job->lock);
 }
 
@@ -333,8 +333,8 @@ static int other_build(const cli_study *st, const char *there, adh_outdir *od, c
         return -1;
     }
     if (!st->cfg->output.quiet)
-        fprintf(stderr, "adhere: note: %s holds this study computed by another build of adhere (%s): --overwrite: "
-                OVERWRITE_REMOVES "; the study runs again from scratch\n", path, ids);
+        adh_sayf("note: %s holds this study computed by another build of adhere (%s): --overwrite: "
+                 OVERWRITE_REMOVES "; the study runs again from scratch", path, ids);
     return adh_outdir_clear(od, why, whylen) == 0 ? 0 : -1;
 }
 
@@ -399,7 +399,7 @@ static int resume(const cli_study *st, adh_outdir *od, cli_studyrow *rows, char 
         return n < 0 ? -1 : 1;
     }
     if (r < 0 && !st->cfg->output.quiet)
-        fprintf(stderr, "adhere: note: %s; starting the study afresh\n", msg);
+        adh_sayf("note: %s; starting the study afresh", msg);
     return adh_outdir_clear(od, why, whylen) == 0 ? 0 : -1;
 }
 
@@ -589,14 +589,14 @@ double cli_sweep_static_hysteresis(const adh_config *cfg, cli_kcache *kc, int *r
         st = cli_static_reference(&rs, g, k, &ref, &res, resolved, why, sizeof why);
         cli_kcache_put(kc, k);
         if (!*resolved)
-            fprintf(stderr, "adhere: warning: Figure 7's equilibrium line comes from a static curve the grid does not "
-                    "resolve: %s\n", why);
+            adh_sayf("warning: Figure 7's equilibrium line comes from a static curve the grid does not "
+                     "resolve: %s", why);
     }
     double h = st == ADH_SUCCESS && !ref.interrupted ? cli_tables_static_hysteresis(&ref, &rs.mat) : NAN;
     char stopped[700];
     if (st != ADH_SUCCESS && st != ADH_EINTR && !ref.interrupted)
-        fprintf(stderr, "adhere: the static curve for Figure 7's equilibrium line failed: %s\n",
-                cli_tables_stopped(&ref, st, stopped, sizeof stopped));
+        adh_sayf("the static curve for Figure 7's equilibrium line failed: %s",
+                 cli_tables_stopped(&ref, st, stopped, sizeof stopped));
     adh_run_free(&ref);
     return h;
 }
@@ -634,7 +634,7 @@ static void study_outputs(study_job *job, size_t missing)
     int fd = adh_outdir_fd(job->od);
     cli_figures_curves curves = { &fd, 1 };
     if (cli_figures_sweep(cfg, job->rows, n, &curves, hyst, job->od, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: sweep plot not written: %s\n", why);
+        adh_sayf("sweep plot not written: %s", why);
         job->exit_status = cli_runout_worse(job->exit_status, CLI_EXIT_PLOT);
     }
 }
@@ -646,10 +646,10 @@ static void closing(const study_job *job, double t_start, size_t missing)
     const cli_study *st = job->st;
     char t[32];
     if (missing || cli_interrupt_signal()) {
-        fprintf(stderr, "adhere: interrupted by signal %d: %zu of %zu runs finished; %s says which (# PARTIAL)%s\n",
-                cli_interrupt_signal(), cli_study_shard_runs(st) - missing, cli_study_shard_runs(st),
-                st->shard_n > 1 ? "runs.tsv" : job->od ? "sweep.tsv and each run's summary.tsv" : "sweep.tsv",
-                job->od ? "; run it again to step the rest" : "");
+        adh_sayf("interrupted by signal %d: %zu of %zu runs finished; %s says which (# PARTIAL)%s",
+                 cli_interrupt_signal(), cli_study_shard_runs(st) - missing, cli_study_shard_runs(st),
+                 st->shard_n > 1 ? "runs.tsv" : job->od ? "sweep.tsv and each run's summary.tsv" : "sweep.tsv",
+                 job->od ? "; run it again to step the rest" : "");
         return;
     }
     if (job->exit_status != CLI_EXIT_OK || cfg->output.quiet)
@@ -661,15 +661,15 @@ static void closing(const study_job *job, double t_start, size_t missing)
     if (before)
         snprintf(again, sizeof again, " (%zu done before, kept)", before);
     if (!out)
-        fprintf(stderr, "adhere: done in %s: %zu runs; sweep.tsv went to standard output\n", t, st->nruns);
+        adh_sayf("done in %s: %zu runs; sweep.tsv went to standard output", t, st->nruns);
     else if (st->shard_n > 1)
-        fprintf(stderr, "adhere: done in %s: shard %u of %u, %zu of the study's %zu runs%s, in %s/runs.tsv; "
-                "adhere merge joins the shards\n", t, st->shard_k, st->shard_n, cli_study_shard_runs(st), st->nruns,
-                again, out);
+        adh_sayf("done in %s: shard %u of %u, %zu of the study's %zu runs%s, in %s/runs.tsv; "
+                 "adhere merge joins the shards", t, st->shard_k, st->shard_n, cli_study_shard_runs(st), st->nruns,
+                 again, out);
     else
-        fprintf(stderr, "adhere: done in %s: %zu runs%s; sweep.tsv%s in %s/%s\n", t, st->nruns, again,
-                cfg->output.plot && adh_sweep_plot_kind(&cfg->sweep) != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",
-                out, job->run_dirs ? ", each run's tables in run-1 ... run-N" : "");
+        adh_sayf("done in %s: %zu runs%s; sweep.tsv%s in %s/%s", t, st->nruns, again,
+                 cfg->output.plot && adh_sweep_plot_kind(&cfg->sweep) != ADH_SWEEP_PLOT_NONE ? " and the sweep's figure" : "",
+                 out, job->run_dirs ? ", each run's tables in run-1 ... run-N" : "");
 }
 
 /* --force on a grid some runs do not resolve: said even with -q (the
@@ -694,11 +694,11 @@ static void warn_unresolved(const study_job *job)
             }
             char msg[512];
             adh_grid_unresolved_sentence(&gr, msg, sizeof msg);
-            fprintf(stderr, "adhere: warning: run %zu: %s (--force; its summary.tsv: resolved 0)\n", members[j] + 1, msg);
+            adh_sayf("warning: run %zu: %s (--force; its summary.tsv: resolved 0)", members[j] + 1, msg);
         }
     }
     if (more)
-        fprintf(stderr, "adhere: warning: and %zu more runs on grids that do not resolve them (sweep.tsv: resolved 0)\n", more);
+        adh_sayf("warning: and %zu more runs on grids that do not resolve them (sweep.tsv: resolved 0)", more);
 }
 
 /* The first drive's kernel, built before any run starts (a large one takes
@@ -720,10 +720,10 @@ static int first_kernel(study_job *job)
         return 0;
     }
     if (st == ADH_EINTR)
-        fprintf(stderr, "adhere: interrupted by signal %d while building the %zu-node kernel: nothing computed, no "
-                "table written\n", cli_interrupt_signal(), adh_config_nodes(&ds));
+        adh_sayf("interrupted by signal %d while building the %zu-node kernel: nothing computed, no "
+                 "table written", cli_interrupt_signal(), adh_config_nodes(&ds));
     else
-        fprintf(stderr, "adhere: out of memory building the %zu-node kernel\n", adh_config_nodes(&ds));
+        adh_sayf("out of memory building the %zu-node kernel", adh_config_nodes(&ds));
     return st == ADH_EINTR ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
 }
 
@@ -815,16 +815,16 @@ int cli_sweep_main(cli_options *cli, adh_outdir *od)
     char why[1024];
     if (cfg->spec.mode == ADH_MODE_STATIC && adh_sweep_axis_of(&cfg->sweep, "solver.eps")) {
         /* every run would be the same equilibrium curve */
-        fprintf(stderr, "adhere: a sweep of eps in mode = static would compute the same curve %zu times: "
-                "eps is the relaxation's convergence parameter; sweep E or sigma, or use mode = relax\n",
-                adh_config_nruns(cfg));
+        adh_sayf("a sweep of eps in mode = static would compute the same curve %zu times: "
+                 "eps is the relaxation's convergence parameter; sweep E or sigma, or use mode = relax",
+                 adh_config_nruns(cfg));
         return CLI_EXIT_USAGE;
     }
     /* a study that would not fit the disk or the limits runs not at all */
     static adh_plan plan;
     adh_plan_make(cfg, &plan);
     if (cli_studycost_fits(cfg, &plan, NULL, why, sizeof why) != 0) {
-        fprintf(stderr, "adhere: refused: %s\n", why);
+        adh_sayf("refused: %s", why);
         return CLI_EXIT_USAGE;
     }
     cli_study st;

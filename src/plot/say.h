@@ -8,5 +8,12 @@
 /* Writes "adhere: MSG\n" to stderr, MSG's control bytes (but newlines and
  * tabs) and bytes that begin no UTF-8 character as \xNN. */
 void adh_say(const char *msg);
+/* The same for "WHO: MSG" ("adhere merge: ..."); who NULL: MSG alone (a
+ * replay script's "FILE:LINE: ...", as compilers say it). */
+void adh_say_as(const char *who, const char *msg);
+/* adh_say of a printf-formatted message (no newline: the writer ends the
+ * line); every "adhere: ..." line goes through one of these. */
+void adh_sayf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+void adh_sayf_as(const char *who, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #endif

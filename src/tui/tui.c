@@ -1172,7 +1172,7 @@ int tui_main(const adh_config *cfg)
     t.headless = cfg->tui.replay[0] != '\0';
     if (t.headless) {
         if (tui_keysrc_replay(&t.keys, cfg->tui.replay, why, sizeof why) != 0) {
-            fprintf(stderr, "%s\n", why);   /* FILE:LINE: first, as compilers do */
+            adh_say_as(NULL, why);   /* FILE:LINE: first, as compilers do */
             return EXIT_BAD_INPUT;
         }
     } else {
@@ -1239,7 +1239,7 @@ int tui_main(const adh_config *cfg)
     sigaction(SIGTERM, &old_term, NULL);
     sigaction(SIGHUP, &old_hup, NULL);
     if (t.fatal[0])
-        fprintf(stderr, "%s\n", t.fatal);
+        adh_say_as(NULL, t.fatal);   /* escaped: it may quote a file's name or a script's text */
     tui_sim_free(&t.sim);
     tui_keysrc_free(&t.keys);
     return t.exit_code;

@@ -118,6 +118,12 @@ check "a scene file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr
 "$ADHERE" --batch -q --mode=rigid --data="$TMP/$(printf 'd\033[2J').tsv" -o "$TMP/escdata" >/dev/null 2>"$TMP/stderr"
 check "a --data file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
     sh -c "[ $? -eq 2 ] && grep -qF 'd\\x1b[2J.tsv' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+# ... and the bare number's hint naming that scene (it was printed past
+# the one writer, the ESC as it was)
+printf '[material]\nE = 300\n' >"$TMP/$(printf 'h\033[2J').scene"
+"$ADHERE" --batch -q "$TMP/$(printf 'h\033[2J').scene" >/dev/null 2>"$TMP/stderr"
+check "a bare-number hint naming a scene named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
+    sh -c "[ $? -eq 2 ] && grep -qF 'did you mean E = 300GPa or E = 300MPa in $TMP/h\\x1b[2J.scene?' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
 # a byte that begins no UTF-8 character (0x9b, CSI to some terminals) in
 # the name is escaped too: it was quoted as it was; a UTF-8 name is not
 C1DIR=$TMP/$(printf 'o\2332J\302\265dir')
