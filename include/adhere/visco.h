@@ -230,6 +230,18 @@ double adh_visco_stored(const adh_visco *w, double *elastic, double *surface, do
  * snap-in. On the step's lattice. */
 double adh_visco_auto_start(const adh_material *m, double spring, double step);
 
+/* Whether the solid can start where ps says (its start, or NAN: the
+ * automatic one adh_visco_set takes) on grid g with kernel k: relaxed, at
+ * rest, out of contact, the state adh_visco_set solves first by the same
+ * arithmetic (where it fails, the run stops before its first step with
+ * ADH_ESTALL). ADH_SUCCESS; ADH_EINVAL with why naming the start, what a
+ * start must be and what it is there, and the least start above it that
+ * is (to within the step), *fix (may be NULL) ADH_FIX_START; ADH_ENOMEM.
+ * No I/O: a driver asks it before the run. */
+int adh_visco_start_check(const adh_grid *g, const adh_kernel *k, const adh_material *m, const adh_sls *v,
+                          const adh_visco_drive *d, const adh_protocol_settings *ps, char *why, size_t whylen,
+                          unsigned *fix);
+
 /* The settings of the viscoelastic step rule (adhere/rule_visco.h): the
  * material beyond adh_material (whose E is E0), the instrument and the
  * integrator. */

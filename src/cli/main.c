@@ -23,6 +23,7 @@
 #include "cli/options.h"
 #include "scene/budget.h"
 #include "cli/static.h"
+#include "cli/timerun.h"
 #include "scene/config.h"
 #include "scene/plan.h"
 #include "tui/actions.h"
@@ -104,7 +105,8 @@ static int checked(adh_config *cfg, const cli_options *cli, char *why, size_t le
         cli_options_words(cfg, msg, why, len);
         return CLI_EXIT_USAGE;
     }
-    return 0;
+    /* a solid's start, on its kernel: once the memory for it is known */
+    return cli_time_start_check(cfg, why, len) != 0 ? CLI_EXIT_USAGE : 0;
 }
 
 /* adh_config_unit_hint's test of a configuration with a unit put right. */

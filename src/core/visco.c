@@ -20,7 +20,6 @@
 #include "adhere/status.h"
 #include "adhere/units.h"
 
-#define VISCO_START_ITERS 400   /* the start's fixed-point iterations */
 /* A crossing that has not landed in this many steps is lost (a resolved
  * grid's crossings take tens to a few hundred): the jump relaxes instead. */
 #define VISCO_CROSS_STEPS 1000
@@ -331,34 +330,20 @@ double adh_visco_auto_start(const adh_material *m, double spring, double step)
 
 /* The start at sphere position h0, at rest: the material has relaxed
  * there (q = p), so u = -(2/E0) W p, by fixed point (a contraction this
- * far out). y gets u, q, tl = 0[, h0]; *base the base that holds it. */
+ * far out; adh_visco_rest). y gets u, q, tl = 0[, h0]; *base the base
+ * that holds it. */
 static int solve_start(adh_visco *w, double h0, double *y, double *base)
 {
     size_t n = w->n;
-    double c0 = w->cinf + w->cdel, du = INFINITY;
     memset(y, 0, w->len * sizeof *y);
-    for (int it = 0; it < VISCO_START_ITERS && !(du < 1e-13 * w->m.z0); it++) {
-        if (adh_visco_gaps(w, y, h0) < 0)
-            return ADH_ESTALL;
-        for (size_t i = 0; i < n; i++)
-            w->tmp[i] = c0 * w->p[i];
-        adh_kernel_apply(w->k, w->tmp, w->tmp2, w->scratch);
-        du = 0;
-        for (size_t i = 0; i < n; i++) {
-            du = fmax(du, fabs(-w->tmp2[i] - y[i]));
-            y[i] = -w->tmp2[i];
-        }
-    }
-    if (!(du < 1e-13 * w->m.z0) || adh_visco_gaps(w, y, h0) < 0)
+    visco_rest_buf b = { y, w->h, w->p, w->tmp, w->tmp2, w->scratch, w->shape };
+    if (adh_visco_rest(w->k, &w->m, w->cinf + w->cdel, h0, n, &b) != 0)
         return ADH_ESTALL;
     memcpy(y + w->IQ, w->p, n * sizeof *y);
     double F = adh_visco_force(w, h0);
     *base = w->spring ? h0 - F / w->dr.spring : h0;
     if (w->spring)
         y[w->IH] = h0;
-    for (size_t i = 0; i < n; i++)
-        if (w->h[i] < ADH_CONTACT_FACTOR * w->m.z0)
-            return ADH_ESTALL;
     return ADH_SUCCESS;
 }
 

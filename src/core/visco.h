@@ -179,6 +179,19 @@ int adh_visco_dae_check(adh_visco *w, double cj, double *fd, double *pre);
 /* h0 of y under the segment, and the base */
 double adh_visco_h0_of(const adh_visco *w, const double *y);
 double adh_visco_base_of(const adh_visco *w, const double *y);
+/* The solid relaxed at rest at h0 (q = p, u = -c0 W p by fixed point; c0
+ * = 2/E0 as c_inf + c_del), visco_start.c: the buffers, n each (shape
+ * r^2/2R read); u, h, p the state. 0 when it settles out of contact, or
+ * why not: */
+enum { VISCO_REST_TOUCH = 1,      /* a gap closed */
+       VISCO_REST_UNSETTLED = 2,  /* the fixed point did not settle */
+       VISCO_REST_CONTACT = 3 };  /* a gap below ADH_CONTACT_FACTOR z0 */
+typedef struct visco_rest_buf {
+    double *u, *h, *p, *tmp, *tmp2, *scratch;
+    const double *shape;
+} visco_rest_buf;
+int adh_visco_rest(const adh_kernel *k, const adh_material *m, double c0, double h0, size_t n,
+                   const visco_rest_buf *b);
 /* h, p from u and h0 into w->h, w->p; 0, or -1 when a gap closed */
 int adh_visco_gaps(adh_visco *w, const double *u, double h0);
 /* D = p'(h) at w->h into w->D */

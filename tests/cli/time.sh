@@ -390,16 +390,24 @@ check "--plan through a spring: its steps said not counted, no factor of 3 promi
     sh -c "grep -q '^time: .*not counted: the steps the spring adds' '$TMP/tpk' && ! grep -q '^time: .*within a factor of about 3' '$TMP/tpk' &&
            grep -q '^time: .*within a factor of about 3' '$TMP/tp1'"
 
-# A run in time that stops says why: from inside the snap-in (0.3 nm) the
-# start is no stable point out of contact. stderr and summary.tsv name it
-# and --start, not only "continuation could not make progress".
-"$ADHERE" --batch -q --no-plot --material=sls --tau=1ms --start=0.3nm -o "$TMP/tstop" 2>"$TMP/err"
+# A solid starts relaxed at rest out of contact (every gap >= 1.1 z0): a
+# start where it cannot (inside the snap-in, or in contact: a 0.5 TPa
+# sphere at 0.4 nm) ran, wrote tables that said "stopped after 0 steps"
+# and ended with exit 1. It is refused before anything is written, naming
+# the start, the rule and the nearest start that is, on the run's own
+# grid and kernel; an earlier run's tables in -o stay as they were.
+bad "start = 300 pm is not allowed: a standard linear solid starts relaxed, at rest out of contact (every gap at least 1.1 z0 = 550 pm), and there no rest state settles" \
+    --material=sls --tau=1ms --start=0.3nm
+bad "start = 400 pm is not allowed: .* there at rest its smallest gap is [0-9.]* pm; the nearest start that is, to within the step 50 pm: [0-9.]* pm (--start)" \
+    --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200
+bad "sweep run 1 (E0 = 5e+11): start = 400 pm is not allowed" \
+    --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200 --sweep=E0=0.5TPa,0.6TPa
+"$ADHERE" --batch -q --no-plot --material=sls --E0=0.5TPa --Einf=1TPa --start=0.6nm --turn=-2nm -N 200 -o "$TMP/tkeep" 2>"$TMP/err"
 rc=$?
-# (its length as the static mode writes one: 300 pm, not 3e-10 m)
-why="the start h0 = 300 pm is not a stable point out of contact: start further out (--start)"
-check "sls from 0.3 nm: exit 1, stderr and summary.tsv's stop_reason say why ($rc: $(cat "$TMP/err"))" \
-    sh -c "[ $rc -eq 1 ] && grep -qxF \"adhere: the solver stopped after 0 steps: continuation could not make progress: $why\" '$TMP/err' &&
-           grep -qx 'status	continuation could not make progress' '$TMP/tstop/summary.tsv' &&
-           grep -qxF \"stop_reason	$why\" '$TMP/tstop/summary.tsv'"
+cp "$TMP/tkeep/summary.tsv" "$TMP/tkeep.summary"
+"$ADHERE" --batch -q --no-plot --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200 -o "$TMP/tkeep" 2>"$TMP/err2"
+rc2=$?
+check "a 0.5 TPa solid from 0.6 nm runs ($rc: $(head -c 200 "$TMP/err")); from 0.4 nm into the same -o: exit 2 ($rc2), its tables untouched" \
+    sh -c "[ $rc -eq 0 ] && [ $rc2 -eq 2 ] && cmp -s '$TMP/tkeep.summary' '$TMP/tkeep/summary.tsv' && [ -s '$TMP/tkeep/force.tsv' ]"
 
 done_testing

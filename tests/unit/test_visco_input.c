@@ -5,6 +5,7 @@
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "adhere/rule_visco.h"
@@ -20,6 +21,76 @@ static void refused(const char *what, int rc, const char *why, const char *needl
 static int stop_after(const adh_obs *row, const adh_run *run, void *ctx)
 {
     return run->nrows >= *(const size_t *)ctx;
+}
+
+/* The start's check before a run (adh_visco_start_check) refuses exactly
+ * the starts where adh_visco_set cannot begin (ADH_ESTALL: no rest out of
+ * contact), a soft and a 0.5 TPa solid, with and without a spring, over
+ * starts 10 pm apart from 0.3 to 3.5 nm; the refusal names the start and
+ * the contact's gap, 1.1 z0, and its nearest start is one (and a step
+ * below it is not). */
+static void start_check_agrees(const fixture *f, const adh_visco_drive *d0, const adh_protocol_settings *ps0,
+                               adh_run *run)
+{
+    const adh_sls solids[] = { { 1e9, 1e10, 1e-3 }, { 0.5e12, 1e12, 1e-3 } };
+    const double springs[] = { INFINITY, 10 };
+    char why[512], msg[512] = "";
+    for (size_t si = 0; si < 2; si++)
+        for (size_t ki = 0; ki < 2; ki++) {
+            adh_visco_drive d = *d0;
+            d.spring = springs[ki];
+            adh_protocol_settings ps = *ps0;
+            adh_visco_settings s = adh_visco_settings_default();
+            adh_visco *w = adh_visco_alloc(f->g, f->k);
+            size_t agree = 0, refused_n = 0, total = 0;
+            for (int j = 30; j <= 350; j++, total++) {
+                ps.start = j * 1e-11;
+                adh_run_free(run);
+                adh_run_init(run);
+                int set = adh_visco_set(w, &f->m, &solids[si], &d, &s, &ps, run, NULL, 0);
+                unsigned fix = 0;
+                int chk = adh_visco_start_check(f->g, f->k, &f->m, &solids[si], &d, &ps, why, sizeof why, &fix);
+                agree += (chk == ADH_SUCCESS) == (set == ADH_SUCCESS) && (set == ADH_SUCCESS || set == ADH_ESTALL)
+                         && (chk == ADH_SUCCESS || (chk == ADH_EINVAL && fix == ADH_FIX_START));
+                if (chk != ADH_SUCCESS && refused_n++ == 0)
+                    snprintf(msg, sizeof msg, "%s", why);
+            }
+            ok(agree == total && refused_n > 0 && refused_n < total,
+               "E0 = %g Pa, k = %g N/m: the start's check and the solver agree at %zu of %zu starts (%zu refused)",
+               solids[si].E0, springs[ki], agree, total, refused_n);
+            ok(strstr(msg, "start = 300 pm is not allowed") && strstr(msg, "1.1 z0 = 550 pm"),
+               "... the refusal names the start and the contact's gap: \"%s\"", msg);
+            /* the nearest start it names is one, a step below it is not */
+            const char *near = strstr(msg, "within the step 50 pm: ");
+            char *unit = NULL;
+            double at = near ? strtod(near + strlen("within the step 50 pm: "), &unit) : NAN;
+            at *= unit && !strncmp(unit, " pm", 3) ? 1e-12 : unit && !strncmp(unit, " nm", 3) ? 1e-9 : NAN;
+            ps.start = at;
+            int yes = adh_visco_start_check(f->g, f->k, &f->m, &solids[si], &d, &ps, NULL, 0, NULL);
+            ps.start = at - ps.step;
+            int no = adh_visco_start_check(f->g, f->k, &f->m, &solids[si], &d, &ps, NULL, 0, NULL);
+            ok(yes == ADH_SUCCESS && no == ADH_EINVAL,
+               "... its nearest start, %.4g m, is one and a step below it is not", at);
+            adh_visco_free(w);
+        }
+    /* the automatic start is one, for every E0 from 1 MPa to 1 TPa (Einf 10
+     * E0 up to 1 TPa), with and without a spring: the CLI asks only of a
+     * start given */
+    size_t fine = 0, tried = 0;
+    for (double E0 = 1e6; E0 <= 1.001e12; E0 *= sqrt(10.0))
+        for (size_t ki = 0; ki < 2; ki++, tried++) {
+            adh_sls v = { E0, fmin(10 * E0, 1e12), 1e-3 };
+            adh_visco_drive d = *d0;
+            d.spring = springs[ki];
+            adh_protocol_settings ps = *ps0;
+            ps.start = NAN;
+            int chk = adh_visco_start_check(f->g, f->k, &f->m, &v, &d, &ps, why, sizeof why, NULL);
+            fine += chk == ADH_SUCCESS;
+            if (chk != ADH_SUCCESS)
+                printf("# E0 = %g Pa, k = %g N/m: %s\n", E0, springs[ki], why);
+        }
+    ok(fine == tried, "the automatic start is one at %zu of %zu solids from 1 MPa to 1 TPa, k none and 10 N/m", fine,
+       tried);
 }
 
 int main(void)
@@ -81,6 +152,7 @@ int main(void)
     ps.start = 0.6e-9;
     int rc = adh_visco_set(w, &f.m, &good, &d, &s, &ps, &run, why, sizeof why);
     ok(rc == ADH_ESTALL && strstr(why, "start") != NULL, "a start in contact: \"%s\"", why);
+    start_check_agrees(&f, &d, &ps, &run);
 
     /* the cancel flag: stopped on request, the run marked */
     volatile sig_atomic_t cancel = 1;
