@@ -341,19 +341,26 @@ static int other_build(const cli_study *st, const char *there, adh_outdir *od, c
 /* Another study in od (prev, read with its configuration) whose runs.tsv
  * holds results: refused without --overwrite (-1 with why), naming what
  * differs. Its fingerprint is its scene's whole text: an edited comment
- * cleared a study of hours without a word. 0 when it may be cleared. */
+ * cleared a study of hours without a word; -1 too when its runs.tsv
+ * cannot be read. 0 when it may be cleared. */
 static int other_study(const cli_study *st, const cli_study *prev, adh_outdir *od, char *why, size_t whylen)
 {
     if (st->cfg->output.overwrite)
         return 0;
     cli_studyrow *rows = calloc(prev->nruns ? prev->nruns : 1, sizeof *rows);
     size_t cut;
-    char msg[1024], diff[700];
-    long n = rows ? cli_study_read_rows(prev, adh_outdir_fd(od), adh_outdir_path(od), rows, &cut, msg, sizeof msg) : 0;
+    char msg[1024] = "out of memory for its rows", diff[700];
+    long n = rows ? cli_study_read_rows(prev, adh_outdir_fd(od), adh_outdir_path(od), rows, &cut, msg, sizeof msg) : -1;
     if (rows)
         cli_studyrow_clear_all(rows, prev->nruns);
     free(rows);
-    if (n <= 0)   /* nothing of it to lose (a runs.tsv that is not its record included) */
+    if (n < 0) {   /* what it holds cannot be told: it may be results, so nothing is cleared */
+        snprintf(why, whylen, "%.300s holds another study whose results could not be read (%.500s): nothing there "
+                 "was removed; give a new -o to keep it, or --overwrite to replace it with this study",
+                 adh_outdir_path(od), msg);
+        return -1;
+    }
+    if (n == 0)   /* no runs.tsv, or one without a row: nothing of it to lose */
         return 0;
     cli_study_difference(prev, st, diff, sizeof diff);
     snprintf(why, whylen, "%.300s holds another study's results (%ld of its %zu runs; %.300s): give a new -o to keep "

@@ -435,6 +435,25 @@ check "... --overwrite replaces them with this study's (exit $rc: $(cat "$TMP/er
     sh -c "[ $rc -eq 0 ] && grep -q '^# runs.tsv: study' '$TMP/edit/runs.tsv' && ! cmp -s '$TMP/edit.runs' '$TMP/edit/runs.tsv'"
 "$ADHERE" --batch -q "$TMP/edit.scene" --sweep=E=1GPa,3GPa -o "$TMP/edit" 2>"$TMP/err"
 check "... another flag: named ($(cat "$TMP/err"))" grep -q 'their options differ (none against sweep.E = 1GPa,3GPa)' "$TMP/err"
+# another study whose runs.tsv cannot be read (a read error: failopen.c
+# fails its open with EIO; the manifest refuses a FIFO or a directory put
+# under the name, and root reads whatever chmod says) was taken for one
+# with nothing to lose, and the directory cleared: refused, naming the file
+# and why, nothing removed
+printf '[scene]\nmode = rigid\n[sweep]\nE = 1GPa, 2GPa\n' >"$TMP/eio.scene"
+"$ADHERE" --batch -q "$TMP/eio.scene" -o "$TMP/eio" 2>/dev/null
+(cd "$TMP/eio" && ls -R) >"$TMP/eio.ls"
+cp "$TMP/eio/runs.tsv" "$TMP/eio.runs"
+printf '# a note\n' >>"$TMP/eio.scene"
+if ${CC:-cc} -shared -fPIC -o "$TMP/failopen.so" "${ADHERE_SRC:-.}/tests/cli/failopen.c" -ldl 2>"$TMP/failopen.err"; then
+    LD_PRELOAD="$TMP/failopen.so" FAILOPEN_NAME=runs.tsv "$ADHERE" --batch -q "$TMP/eio.scene" -o "$TMP/eio" 2>"$TMP/err"
+    rc=$?
+    check "another study's runs.tsv unreadable (EIO): exit 2, the file and why named, nothing removed ($rc: $(cat "$TMP/err"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q 'could not be read (cannot read .*eio/runs.tsv: Input/output error): nothing there was removed' '$TMP/err' &&
+               cmp -s '$TMP/eio.runs' '$TMP/eio/runs.tsv' && (cd '$TMP/eio' && ls -R) | cmp -s - '$TMP/eio.ls'"
+else
+    not_ok "tests/cli/failopen.c compiles: $(head -c 300 "$TMP/failopen.err")"
+fi
 # a single run (or a fit, or the TUI's plots) into a study's directory
 # removed its results as an earlier run's files
 cp "$TMP/edit/runs.tsv" "$TMP/edit.runs"
