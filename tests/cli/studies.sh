@@ -93,6 +93,43 @@ if command -v parallel >/dev/null 2>&1; then
     rc=$?
     check "a merge without figures into an earlier one's directory (exit $rc): its sweep.tsv, the earlier map.png gone" \
         sh -c "[ $rc -eq 0 ] && cmp -s '$TMP/merged.tsv' '$TMP/merged/sweep.tsv' && [ ! -e '$TMP/merged/map.png' ]"
+    # submit.sh with a stand-in for Slurm's sbatch (make check-slurm runs
+    # the real one): it runs the array's tasks under GNU parallel, then the
+    # merge. A scene, a directory and a flag's value with a space in them
+    # (and a quote): ADHERE_ARGS="$*" split --gnuplot-style's path into
+    # three words, and every task stopped on a scene path that is not one
+    mkdir -p "$TMP/fake bin" "$TMP/sub scenes" "$TMP/it's styled"
+    : >"$TMP/it's styled/style.gp"
+    printf '[scene]\nmode = rigid\n[sweep]\nE = 1GPa, 2GPa, 3GPa, 4GPa\n' >"$TMP/sub scenes/rigid map.scene"
+    cat >"$TMP/fake bin/sbatch" <<'EOF'
+#!/bin/sh
+# sbatch's stand-in: --array=LO-HI runs the script's tasks now under GNU
+# parallel, else the script; prints a job id
+array= dir=.
+while [ $# -gt 1 ]; do
+    case $1 in --array=*) array=${1#--array=} ;; --chdir=*) dir=${1#--chdir=} ;; esac
+    shift
+done
+cd "$dir" || exit 1
+if [ -n "$array" ]; then
+    lo=${array%-*} hi=${array#*-}
+    export SLURM_ARRAY_TASK_MIN=$lo SLURM_ARRAY_TASK_COUNT=$((hi - lo + 1))
+    parallel --will-cite 'SLURM_ARRAY_TASK_ID={1} sh {2} >adhere-study-{1}.out 2>&1' ::: $(seq "$lo" "$hi") ::: "$1" ||
+        exit 1
+    echo 41
+else
+    sh "$1" >adhere-merge.out 2>&1 || exit 1
+    echo 42
+fi
+EOF
+    chmod +x "$TMP/fake bin/sbatch"
+    PATH="$TMP/fake bin:$PATH" ADHERE="$ADHERE" sh "${ADHERE_SRC:-.}/share/adhere/examples/submit.sh" \
+        "$TMP/sub scenes/rigid map.scene" "$TMP/sub out" 2 --gnuplot-style="$TMP/it's styled" -N 100 \
+        >"$TMP/sub.out" 2>"$TMP/sub.err"
+    rc=$?
+    n=$(rows "$TMP/sub out/merged/sweep.tsv" 2>/dev/null | wc -l)
+    check "submit.sh: a scene, -o and --gnuplot-style with spaces and a quote reach each task whole; 2 shards run and merge, 4 rows (exit $rc, $n rows: $(cat "$TMP/sub.out" "$TMP/sub.err" "$TMP/sub out"/*.out 2>/dev/null | head -c 400))" \
+        sh -c "[ $rc -eq 0 ] && [ $n -eq 4 ] && grep -q 'shards: job 41 (array 1-2), merge: job 42' '$TMP/sub.out'"
 else
     not_ok "GNU parallel is not installed (make deps installs it)"
 fi

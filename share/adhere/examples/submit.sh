@@ -7,7 +7,9 @@
 # e.g. submit.sh map.scene "$PWD/study" 8 --eps=0.5pm. Prints the two job
 # ids. The results: OUT/merged/sweep.tsv and its figure; each shard's rows
 # in OUT/shard-K/runs.tsv. `adhere --plan SCENE --shard 1/N` first says
-# what a shard holds and about how long it takes. A task that failed is
+# what a shard holds and about how long it takes. Flags may hold spaces
+# (--gnuplot-style="$PWD/my styles"): ADHERE_ARGS carries them as quoted
+# shell words. A task that failed is
 # resubmitted alone with the same environment (ADHERE_ARGS too) and its index:
 #   sbatch --array=K --export=ALL,ADHERE_SCENE=SCENE,ADHERE_OUT=OUT,ADHERE_SHARDS=N study.sbatch
 set -eu
@@ -21,8 +23,14 @@ out=$2 n=$3
 shift 3
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
+# the flags as shell words, each single-quoted (' as '\''): study.sbatch
+# reads them back one by one, a value with a space (a path) whole
+args=
+for a in "$@"; do
+    args="$args '$(printf '%s' "$a" | sed "s/'/'\\\\''/g")'"
+done
 # ADHERE_SHARDS: task K is shard K/N, so a task resubmitted alone is its shard again
-array=$(ADHERE_SCENE="$scene" ADHERE_OUT="$out" ADHERE_ARGS="$*" ADHERE_SHARDS="$n" \
+array=$(ADHERE_SCENE="$scene" ADHERE_OUT="$out" ADHERE_ARGS="$args" ADHERE_SHARDS="$n" \
     sbatch --parsable --export=ALL --chdir="$out" --array="1-$n" "$here/study.sbatch")
 array=${array%%;*}
 merge=$(ADHERE_OUT="$out" sbatch --parsable --export=ALL --chdir="$out" --dependency="afterany:$array" \
