@@ -6,6 +6,7 @@
 #include "plot/forcebase.h"
 
 #include <limits.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -437,9 +438,16 @@ static int draw(adh_session *ses, const fb_fig *fg, const adh_run *run, const ch
         return -1;
     }
     fb_frame fr = { INFINITY, -INFINITY, INFINITY, -INFINITY };
-    int bad = write_data(fg, f, idx, &fr) != 0;
-    if (fclose(f) != 0 || bad || !(fr.bhi >= fr.blo)) {
-        snprintf(why, whylen, fr.bhi >= fr.blo ? "cannot write %.3000s" : "no curve to draw", dat);
+    /* a write that failed is said as one, with its reason, before "no
+     * curve to draw" (which hid it) */
+    int err = write_data(fg, f, idx, &fr) != 0 ? errno : 0;
+    if (fclose(f) != 0 && !err)
+        err = errno;
+    if (err || !(fr.bhi >= fr.blo)) {
+        if (err)
+            snprintf(why, whylen, "cannot write %.3000s: %s", dat, strerror(err));
+        else
+            snprintf(why, whylen, "no curve to draw");
         free(idx);
         return -1;
     }
@@ -455,22 +463,25 @@ static int draw(adh_session *ses, const fb_fig *fg, const adh_run *run, const ch
             nkey++;
             break;
         }
+    /* the plot command first: a figure once begun is ended (its image
+     * checked and its temporary gone) on every path */
+    char *cmd = NULL;
+    size_t cap = 0;
+    FILE *c = open_memstream(&cmd, &cap);
+    if (c)
+        plot_clauses(fg, run, idx, adh_gp_path(dat, q, sizeof q), c);
+    if (!c || fclose(c) != 0) {
+        free(cmd);
+        free(idx);
+        snprintf(why, whylen, "out of memory");
+        return -1;
+    }
     adh_session_begin(ses, "forcebase", "force-base.png");
     adh_gnuplot *gp = ses->gp;
     adh_gnuplot_cmd(gp, "Fu = %.17g; Bu = %.17g", fs, bs);
     adh_gnuplot_cmd(gp, "set title %s noenhanced", heading);
     adh_plot_branch_styles(gp);
     frame(gp, fg, &fr, nkey, bs, bu, fs, fu);
-    char *cmd = NULL;
-    size_t cap = 0;
-    FILE *c = open_memstream(&cmd, &cap);
-    if (!c) {
-        free(idx);
-        snprintf(why, whylen, "out of memory");
-        return -1;
-    }
-    plot_clauses(fg, run, idx, adh_gp_path(dat, q, sizeof q), c);
-    fclose(c);
     adh_gnuplot_cmd(gp, "%s", cmd);
     free(cmd);
     free(idx);

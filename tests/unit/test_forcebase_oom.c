@@ -2,8 +2,10 @@
  * forcebase.c fails once, in turn): each says "out of memory", never "no
  * curve to draw" (the figure's point indices, allocated once the curves
  * are built, said that), and nothing is half-drawn (gnuplot is not reached:
- * this session has none). forcebase.c is compiled here with its malloc,
- * calloc and realloc counted. */
+ * this session has none); and when its data file cannot be written or its
+ * command's memory stream not opened. forcebase.c is compiled here with
+ * its malloc, calloc, realloc, fclose and open_memstream counted. */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,13 +30,38 @@ static void *count_realloc(void *p, size_t n)
 {
     return fails() ? NULL : realloc(p, n);
 }
+/* and its files: the fclose_fail_at-th fclose fails with ENOSPC (a full
+ * disk, reported at the flush), open_memstream with ENOMEM when asked */
+static long fcloses, fclose_fail_at = -1;
+static int memstream_fails;
+static int count_fclose(FILE *f)
+{
+    int rc = fclose(f);
+    if (++fcloses == fclose_fail_at) {
+        errno = ENOSPC;
+        return EOF;
+    }
+    return rc;
+}
+static FILE *count_memstream(char **buf, size_t *len)
+{
+    if (memstream_fails) {
+        errno = ENOMEM;
+        return NULL;
+    }
+    return open_memstream(buf, len);
+}
 #define malloc count_malloc
 #define calloc count_calloc
 #define realloc count_realloc
+#define fclose count_fclose
+#define open_memstream count_memstream
 #include "plot/forcebase.c"   /* in place of libadhere-plot.a's */
 #undef malloc
 #undef calloc
 #undef realloc
+#undef fclose
+#undef open_memstream
 
 #include "tap.h"
 
@@ -107,6 +134,55 @@ static void sweep(const char *what, const adh_plot_setup *s, const adh_run *run,
        "indices, made last before gnuplot, said there was no curve to draw)", what, before + 1);
 }
 
+/* A write that fails (the data file's fclose, ENOSPC) is said with its
+ * reason, also where there is no curve to draw (a run of one row: said so
+ * without the fault, where the fault was hidden); an open_memstream that
+ * fails says out of memory before the figure is begun (it was begun and
+ * never ended: gnuplot left with its output open, the image unchecked). */
+static void io_faults(const adh_plot_setup *s, const adh_run *run, const char *what, const char *dir)
+{
+    adh_session ses;
+    memset(&ses, 0, sizeof ses);
+    snprintf(ses.tmpdir, sizeof ses.tmpdir, "%s", dir);
+    char why[512] = "";
+    calls = 0, fail_at = -1, fcloses = 0, fclose_fail_at = 1;
+    int rc = adh_forcebase_figure(&ses, s, run, "t", why, sizeof why);
+    ok(rc == -1 && strstr(why, "cannot write ") && strstr(why, "forcebase.dat: No space left on device"),
+       "%s, its data file's fclose failing: \"%s\"", what, why);
+    fclose_fail_at = -1, memstream_fails = 1, ses.nmade = 0;
+    why[0] = '\0';
+    rc = adh_forcebase_figure(&ses, s, run, "t", why, sizeof why);
+    memstream_fails = 0;
+    int begun = 0;   /* the session's record of the image a begun figure makes */
+    for (size_t i = 0; i < ses.nmade; i++)
+        begun |= strcmp(ses.made[i], "force-base.png") == 0;
+    ok(rc == -1 && strcmp(why, "out of memory") == 0 && !begun,
+       "%s, open_memstream failing: \"%s\", no figure begun (%d)", what, why, begun);
+}
+
+static void empty_faults(const adh_plot_setup *s, const char *dir)
+{
+    adh_run run;
+    adh_run_init(&run);
+    adh_obs o;
+    memset(&o, 0, sizeof o);
+    o.h0 = o.base = 10e-9, o.F = -1e-9, o.branch = 1, o.stable = 1, o.t = NAN;
+    adh_run_push_row(&run, &o);
+    adh_session ses;
+    memset(&ses, 0, sizeof ses);
+    snprintf(ses.tmpdir, sizeof ses.tmpdir, "%s", dir);
+    char why[512] = "";
+    calls = 0, fail_at = -1, fcloses = 0, fclose_fail_at = -1;
+    int rc = adh_forcebase_figure(&ses, s, &run, "t", why, sizeof why);
+    ok(rc == -1 && strcmp(why, "no curve to draw") == 0, "a static curve of one row: \"%s\"", why);
+    fcloses = 0, fclose_fail_at = 1;
+    rc = adh_forcebase_figure(&ses, s, &run, "t", why, sizeof why);
+    fclose_fail_at = -1;
+    ok(rc == -1 && strstr(why, "forcebase.dat: No space left on device"),
+       "... its data file's fclose failing: the write error, not no curve (\"%s\")", why);
+    adh_run_free(&run);
+}
+
 int main(void)
 {
     char dir[] = "/tmp/adhere-fb-oom-XXXXXX";
@@ -121,11 +197,14 @@ int main(void)
     s.timed = 1;
     timed_run(&run);
     sweep("physical time", &s, &run, dir);
+    io_faults(&s, &run, "physical time", dir);
     adh_run_free(&run);
     s.timed = 0, s.equilibrium = 1;
     static_curve(&run);
     sweep("the static curve", &s, &run, dir);
+    io_faults(&s, &run, "the static curve", dir);
     adh_run_free(&run);
+    empty_faults(&s, dir);
 
     char dat[PATH_MAX + 32];
     snprintf(dat, sizeof dat, "%s/forcebase.dat", dir);
