@@ -435,13 +435,11 @@ static path_pt land_rigid(const adh_path *p, double b, double *loss)
 }
 
 /* A jump from the fold f to the landing l (the same base, the same
- * time): both rows (f's unless written, a jump from the row the path
- * already stands on), and its event or its count. */
-static void jump(adh_path *p, path_pt *f, path_pt *l, double loss, int written)
+ * time): both rows, and its event or its count. */
+static void jump(adh_path *p, path_pt *f, path_pt *l, double loss)
 {
     double t = time_at(p, base_of(p, &f->o));
-    if (!written)
-        emit(p, f, t, 1);
+    emit(p, f, t, 1);
     emit(p, l, t, 0);
     p->losses += loss;
     int before = f->o.a > 0, after = l->o.a > 0;
@@ -586,7 +584,7 @@ static void load(adh_path *p)
             break;
         }
         path_pt l = at(p, xl);
-        jump(p, &f, &l, jump_loss(p, &f, i, xl), 0);
+        jump(p, &f, &l, jump_loss(p, &f, i, xl));
         bmin = base_of(p, &f.o);
         reach_turns(p, xl >= (double)(n - 1) && c->complete);
         i = (size_t)ceil(xl);
@@ -738,12 +736,17 @@ static void unload(adh_path *p, size_t k)
             end_branch(p, 0);
             return;
         }
-        if (j < 0) {   /* the curve's start, in contact still: a fold beyond it, from the last row
-                          (emitted once: it was written twice, one row repeated to the digit) */
-            double loss;
-            path_pt f = p->last, l = land_rigid(p, bmax, &loss);
-            jump(p, &f, &l, loss, 1);
-            end_branch(p, stored_beyond(p, &l));
+        if (j < 0) {
+            /* the curve's start, in contact still (a start where the
+             * surfaces touch): the curve goes on beyond it, where it was
+             * not solved, and turns nowhere here. The branch ends on it,
+             * in contact (the run says so: not separated), with the
+             * curve's pull-off and no jump out, as the static curve from
+             * that start; it claimed a fold there, landing on rigid
+             * spheres at the same h0 (not an equilibrium: a 1 TPa sphere
+             * from z0 "pulled off" at F_rigid = -500 nN, the curve's
+             * least force -498.55 nN, and "jumped out" at its start) */
+            end_branch(p, 0);
             return;
         }
         double bj = row_base(p, (size_t)j);
@@ -771,12 +774,12 @@ static void unload(adh_path *p, size_t k)
         if (xl < 0) {   /* beyond the curve's start: a soft spring's flight */
             double loss;
             path_pt l = land_rigid(p, base_of(p, &f.o), &loss);
-            jump(p, &f, &l, loss + jump_loss(p, &f, (size_t)j, 0), 0);
+            jump(p, &f, &l, loss + jump_loss(p, &f, (size_t)j, 0));
             end_branch(p, stored_beyond(p, &l));
             return;
         }
         path_pt l = at(p, xl);
-        jump(p, &f, &l, jump_loss(p, &f, (size_t)j, xl), 0);
+        jump(p, &f, &l, jump_loss(p, &f, (size_t)j, xl));
         bmax = base_of(p, &f.o);
         j = (long)floor(xl);
         if ((double)j == xl)
