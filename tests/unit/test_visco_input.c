@@ -26,7 +26,7 @@ static int stop_after(const adh_obs *row, const adh_run *run, void *ctx)
 /* The start's check before a run (adh_visco_start_check) refuses exactly
  * the starts where adh_visco_set cannot begin (ADH_ESTALL: no rest out of
  * contact), a soft and a 0.5 TPa solid, with and without a spring, over
- * starts 10 pm apart from 0.3 to 3.5 nm; the refusal names the start and
+ * starts 20 pm apart from 0.3 to 3.5 nm; the refusal names the start and
  * the contact's gap, 1.1 z0, and its nearest start is one (and a step
  * below it is not). */
 static void start_check_agrees(const fixture *f, const adh_visco_drive *d0, const adh_protocol_settings *ps0,
@@ -43,8 +43,8 @@ static void start_check_agrees(const fixture *f, const adh_visco_drive *d0, cons
             adh_visco_settings s = adh_visco_settings_default();
             adh_visco *w = adh_visco_alloc(f->g, f->k);
             size_t agree = 0, refused_n = 0, total = 0;
-            for (int j = 30; j <= 350; j++, total++) {
-                ps.start = j * 1e-11;
+            for (int j = 15; j <= 175; j++, total++) {
+                ps.start = j * 2e-11;
                 adh_run_free(run);
                 adh_run_init(run);
                 int set = adh_visco_set(w, &f->m, &solids[si], &d, &s, &ps, run, NULL, 0);
