@@ -187,9 +187,16 @@ static int parse_lists(const cli_options *cli, double *eps, size_t *neps, size_t
     save = NULL;
     snprintf(buf, sizeof buf, "%s", nl);
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        long v;
-        if (*nnodes == MAX_NODES || adh_parse_count(t, 0, LONG_MAX, &v, msg, sizeof msg) != 0 ||
-            adh_grid_nodes_check(v, msg, sizeof msg) != ADH_SUCCESS) {
+        long v = 0;
+        int bad = *nnodes == MAX_NODES;
+        if (!bad && adh_parse_count(t, 0, LONG_MAX, &v, msg, sizeof msg) != 0) {   /* '1e9': the range too, not only the form */
+            snprintf(msg, sizeof msg, "'%.60s' is not allowed: expected a whole number of nodes, %d to %d", t,
+                     ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX);
+            bad = 1;
+        } else if (!bad) {
+            bad = adh_grid_nodes_check(v, msg, sizeof msg) != ADH_SUCCESS;
+        }
+        if (bad) {
             snprintf(why, n, "--cost-nodes: %s", *nnodes == MAX_NODES ? "at most 16 values" : msg);
             return 2;
         }

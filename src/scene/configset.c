@@ -226,6 +226,17 @@ static int parse_count(const char *text, long lo, long hi, long *n, char *why, s
     return adh_parse_count(text, lo, hi, n, why, whylen) == 0 ? 0 : -1;
 }
 
+/* A count whose range its own check names (adh_grid_nodes_check, ...):
+ * text that is no whole number ('1e9', '12.5', '-3') is refused naming the
+ * range too, not only the form, of what (nodes, iterations). */
+static int parse_count_of(const char *text, const char *what, long lo, long hi, long *n, char *why, size_t whylen)
+{
+    if (parse_count(text, 0, LONG_MAX, n, why, whylen) == 0)
+        return 0;
+    snprintf(why, whylen, "'%.60s' is not allowed: expected a whole number of %s, %ld to %ld", text, what, lo, hi);
+    return -1;
+}
+
 /* ---- each key's own ------------------------------------------------------ */
 
 static int set_title(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
@@ -259,12 +270,8 @@ static int set_nodes(adh_config *c, const key_def *k, const char *text, char *wh
         g->nodes_given = 0;
         return 0;
     }
-    if (parse_count(text, 0, LONG_MAX, &n, why, whylen) != 0) {   /* '1e9': the range too, not just the form */
-        snprintf(why, whylen, "'%.60s' is not allowed: expected a whole number of nodes, %d to %d", text,
-                 ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX);
-        return -1;
-    }
-    if (adh_grid_nodes_check(n, why, whylen) != ADH_SUCCESS)
+    if (parse_count_of(text, "nodes", ADH_GRID_NODES_MIN, ADH_GRID_NODES_MAX, &n, why, whylen) != 0 ||
+        adh_grid_nodes_check(n, why, whylen) != ADH_SUCCESS)
         return -1;
     g->asked.nodes = (size_t)n;
     g->nodes_given = 1;
@@ -274,7 +281,8 @@ static int set_nodes(adh_config *c, const key_def *k, const char *text, char *wh
 static int set_max_iter(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
     long n;
-    if (parse_count(text, 0, LONG_MAX, &n, why, whylen) != 0 || adh_relax_max_iter_check(n, why, whylen) != ADH_SUCCESS)
+    if (parse_count_of(text, "iterations", 1, ADH_RELAX_MAX_ITER_CAP, &n, why, whylen) != 0 ||
+        adh_relax_max_iter_check(n, why, whylen) != ADH_SUCCESS)
         return -1;
     c->spec.relax.max_iter = (size_t)n;
     return 0;
@@ -283,7 +291,8 @@ static int set_max_iter(adh_config *c, const key_def *k, const char *text, char 
 static int set_dwell(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
     long n;
-    if (parse_count(text, 0, LONG_MAX, &n, why, whylen) != 0 || adh_protocol_dwell_check(n, why, whylen) != ADH_SUCCESS)
+    if (parse_count_of(text, "iterations", 0, ADH_PROTOCOL_MAX_DWELL, &n, why, whylen) != 0 ||
+        adh_protocol_dwell_check(n, why, whylen) != ADH_SUCCESS)
         return -1;
     c->spec.proto.dwell = (size_t)n;
     return 0;

@@ -25,6 +25,15 @@ bad "z0 (equilibrium separation) = -500 pm is out of range: allowed 1 pm to 100 
 bad "R (effective radius) = 0 nm is out of range" -R 0
 bad "N = 5 nodes is not allowed: use 10 to 20000 nodes" -N 5
 bad "'1e3' is not allowed: expected a whole number of nodes, 10 to 20000$" --nodes=1e3
+# every count names its range, not only the form ('expected a whole number'
+# said nothing of how many): the iteration cap, the dwell, a scene's key and
+# --cost-nodes' list
+bad "^adhere: --max-iter: '1e9' is not allowed: expected a whole number of iterations, 1 to 100000000$" --max-iter=1e9
+bad "^adhere: --max-iter: '-3' is not allowed: expected a whole number of iterations, 1 to 100000000$" --max-iter=-3
+bad "^adhere: --dwell: '12.5' is not allowed: expected a whole number of iterations, 0 to 100000000$" --dwell=12.5
+printf '[protocol]\ndwell = 1e9\n' >"$TMP/dwell.scene"
+bad "^adhere: $TMP/dwell.scene:2: dwell: '1e9' is not allowed: expected a whole number of iterations, 0 to 100000000$" "$TMP/dwell.scene"
+bad "^adhere: --cost-nodes: '1e9' is not allowed: expected a whole number of nodes, 10 to 20000$" --cost --cost-nodes=500,1e9
 bad "too coarse" -N 20
 bad "too short.*; use more nodes or a larger spacing (-N, --spacing)$" --spacing=0.5nm
 bad "unknown option '--frobnicate'" --frobnicate
