@@ -252,6 +252,10 @@ void adh_config_note_origin(adh_config *c, const char *key, int line);
  * noted. A key a [sweep] sets in each run ("protocol.speed" by sweep.speed)
  * is the sweep key's. */
 int adh_config_origin(const adh_config *c, const char *key);
+/* Of two keys that set one value (material.E and material.E0), the one
+ * whose value holds: set last, a swept one after any other; a when nobody
+ * set either. */
+const char *adh_config_origin_last(const adh_config *c, const char *a, const char *b);
 
 /* After c was refused (accept(c) != 0): each bare quantity tried on a copy
  * of c in each of its key's units; accept(copy, ctx) == 0 says the copy

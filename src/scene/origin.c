@@ -16,9 +16,34 @@ void adh_config_note_origin(adh_config *c, const char *key, int line)
         if (c->norigin == ADH_MAX_ORIGINS || strlen(key) >= sizeof c->origin[0].key)
             return;
         c->norigin++;
+    } else {
+        /* the table in the order the keys were last set: of two keys that
+         * set one value (E and E0), the later is the one that holds */
+        memmove(&c->origin[i], &c->origin[i + 1], (c->norigin - 1 - i) * sizeof c->origin[0]);
+        i = c->norigin - 1;
     }
     snprintf(c->origin[i].key, sizeof c->origin[i].key, "%s", key);
     c->origin[i].line = line;
+}
+
+/* Where key stands in the order of setting: a swept key after every other
+ * (each run sets it last); -1 when nobody set it. */
+static long rank(const adh_config *c, const char *key)
+{
+    char swept[64];
+    for (size_t i = 0; i < c->norigin; i++)
+        if (!strncmp(c->origin[i].key, "sweep.", 6) && adh_sweep_key_of(c->origin[i].key + 6, swept, sizeof swept) == 0 &&
+            !strcmp(swept, key))
+            return (long)(c->norigin + i);
+    for (size_t i = 0; i < c->norigin; i++)
+        if (!strcmp(c->origin[i].key, key))
+            return (long)i;
+    return -1;
+}
+
+const char *adh_config_origin_last(const adh_config *c, const char *a, const char *b)
+{
+    return rank(c, b) > rank(c, a) ? b : a;
 }
 
 int adh_config_origin(const adh_config *c, const char *key)

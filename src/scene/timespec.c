@@ -6,8 +6,10 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "adhere/status.h"
+#include "adhere/units.h"
 #include "adhere/rule.h"
 #include "adhere/visco.h"
 
@@ -52,6 +54,18 @@ static const char *key_of(unsigned bits)
     return bits & ADH_TIME_E0 ? "material.E0" : bits & ADH_TIME_EINF ? "material.Einf" : bits & ADH_TIME_TAU
          ? "material.tau" : bits & ADH_TIME_SPEED ? "protocol.speed" : bits & ADH_TIME_DWELL ? "protocol.dwell_time"
          : "protocol.spring";
+}
+
+/* A modulus as a value a flag or a scene takes back, to six digits
+ * ("100MPa": one word, the unit with it). */
+static adh_qtext_buf arg_text(double pa)
+{
+    adh_qtext_buf t;
+    adh_format_quantity(pa, ADH_Q_PRESSURE, 6, t.s, sizeof t.s);
+    char *sp = strchr(t.s, ' ');
+    if (sp)
+        memmove(sp, sp + 1, strlen(sp));
+    return t;
 }
 
 #define BAD(...)                                  \
@@ -110,9 +124,13 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
     if (mode == ADH_MODE_TIME) {
         adh_visco_rule_settings v;
         adh_config_visco(s, &v);
+        /* E0 is the modulus as the user gave it: E, or E0 (the same value
+         * under the solid's name), or neither (the default) */
+        const char *e0 = adh_config_origin_last(c, "material.E", "material.E0");
         if (!(v.sls.Einf >= v.sls.E0))
-            BAD("material.Einf = %g Pa is below material.E0 = %g Pa: a standard linear solid is stiffest at first "
-                "(Einf >= E0)", v.sls.Einf, v.sls.E0);
+            BAD("material.Einf = %s is below %s = %s%s: a standard linear solid is stiffest at first (Einf >= E0)",
+                arg_text(v.sls.Einf).s, e0, arg_text(v.sls.E0).s,
+                adh_config_origin(c, e0) == -2 ? " (the default)" : "");
         char msg[256];
         if (adh_sls_validate(&v.sls, msg, sizeof msg) != ADH_SUCCESS ||
             adh_visco_drive_validate(&v.drive, msg, sizeof msg) != ADH_SUCCESS)

@@ -20,7 +20,17 @@ bad() { # bad "expected text" args...
         not_ok "$* -> exit $rc (want 2 and '$want', nothing written): $msg"
     fi
 }
-bad "is below --E0=3e+08 Pa: a standard linear solid is stiffest at first" --material=sls --Einf=0.1GPa
+# E0 is the modulus as it was given, -E or the scene's E (or E0), or the
+# default: it named --E0, which nobody gave, and split a scene's value from
+# its unit ('Einf = 1e+08 (FILE:4) Pa')
+bad "^adhere: --Einf=100MPa is below --modulus=300MPa (the default): a standard linear solid is stiffest at first (Einf >= E0)$" --material=sls --Einf=0.1GPa
+bad "^adhere: --Einf=100MPa is below --modulus=500MPa: a standard" --material=sls -E 0.5GPa --Einf=0.1GPa
+bad "^adhere: --Einf=100MPa is below --E0=1GPa: a standard" --material=sls -E 0.5GPa --E0=1GPa --Einf=0.1GPa
+printf '[material]\nmaterial = sls\nE = 0.3GPa\nEinf = 0.1GPa\n' >"$TMP/einf-e.scene"
+bad "^adhere: Einf = 100MPa ($TMP/einf-e.scene:4) is below E = 300MPa (line 3): a standard" "$TMP/einf-e.scene"
+bad "^adhere: Einf = 100MPa ($TMP/einf-e.scene:4) is below --modulus=1GPa: a standard" "$TMP/einf-e.scene" -E 1GPa
+printf '[material]\nmaterial = sls\nE = 0.5GPa\nE0 = 0.3GPa\nEinf = 0.1GPa\n' >"$TMP/einf-e0.scene"
+bad "^adhere: Einf = 100MPa ($TMP/einf-e0.scene:5) is below E0 = 300MPa (line 4): a standard" "$TMP/einf-e0.scene"
 bad "Einf = 2e+12 Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa" --material=sls --Einf=2TPa
 bad "tau = 0 s is not allowed" --material=sls --tau=0
 bad "tau = -1e-06 s is not allowed" --material=sls --tau=-1us

@@ -400,6 +400,14 @@ static void origins(void)
     adh_config_note_origin(&c, "material.E", 0);
     ok(adh_config_origin(&c, "material.E") == 0, "origins: a flag's E replaces the scene's (%d)",
        adh_config_origin(&c, "material.E"));
+    /* E and E0 set one value: the one set last holds, and is named */
+    ok(!strcmp(adh_config_origin_last(&c, "material.E", "material.E0"), "material.E"), "origins: E holds, E0 unset");
+    adh_config_note_origin(&c, "material.E0", 0);
+    ok(!strcmp(adh_config_origin_last(&c, "material.E", "material.E0"), "material.E0"), "origins: E0 set after E holds");
+    adh_config_note_origin(&c, "material.E", 0);
+    ok(!strcmp(adh_config_origin_last(&c, "material.E", "material.E0"), "material.E"), "origins: E set again holds");
+    ok(!strcmp(adh_config_origin_last(&c, "protocol.speed", "material.E"), "protocol.speed"),
+       "origins: a swept key is set after any other (each run sets it)");
 }
 
 int main(void)
