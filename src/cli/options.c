@@ -304,9 +304,10 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
     }
     adh_mode mode = cli->cfg.spec.mode;
     if (mode == ADH_MODE_TIME && cli->cfg.spec.time.sls) {   /* the solid chose the mode: "leave it out" named none given */
-        snprintf(why, whylen, "adhere fit's models are the static curve and the relaxation (--model=static|relax) of an "
-                 "elastic sphere: material = sls (a standard linear solid, in physical time) would be ignored; give "
-                 "--material=elastic, with E for its modulus");
+        /* in the words the solid was given in: the flag, or the scene's key */
+        cli_options_words(&cli->cfg, "adhere fit's models are the static curve and the relaxation (--model=static|relax) "
+                          "of an elastic sphere: material.material = sls, a standard linear solid in physical time, would be "
+                          "ignored; give material.material = elastic, with E for its modulus", why, whylen);
         return 2;
     }
     unsigned drive = cli->cfg.spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);

@@ -175,7 +175,19 @@ rc1=$?
 "$ADHERE" fit --data="$DATA" --material=elastic visco >/dev/null 2>"$TMP/e14"
 rc2=$?
 check "the visco scene with adhere fit: exit 2, naming its solid, then its speed, not a mode ($(cat "$TMP/e13" "$TMP/e14"))" \
-    sh -c "[ $rc1 -eq 2 ] && [ $rc2 -eq 2 ] && grep -q 'material = sls (a standard linear solid' '$TMP/e13' && grep -q 'the speed given puts the sphere in physical time' '$TMP/e14'"
+    sh -c "[ $rc1 -eq 2 ] && [ $rc2 -eq 2 ] && grep -q 'material = sls (.*visco.scene:[0-9]*), a standard linear solid' '$TMP/e13' && grep -q 'the speed given puts the sphere in physical time' '$TMP/e14'"
+# the solid in the words it was given in: a scene's key is mended in the
+# scene ('give --material=elastic' named a flag the scene's user never
+# wrote), a flag by the flag
+printf '[material]\n# soft\nmaterial = sls\n' >"$TMP/sls.scene"
+"$ADHERE" fit --data="$DATA" "$TMP/sls.scene" >/dev/null 2>"$TMP/e19"
+rc1=$?
+"$ADHERE" fit --data="$DATA" --material=sls fig1 >/dev/null 2>"$TMP/e20"
+rc2=$?
+check "an sls scene with adhere fit: exit 2, the scene's key named, not a flag ($(cat "$TMP/e19"))" \
+    sh -c "[ $rc1 -eq 2 ] && grep -q 'material = sls ($TMP/sls.scene:3), a standard linear solid in physical time, would be ignored; give material = elastic, with E for its modulus\$' '$TMP/e19' && ! grep -q -- '--material' '$TMP/e19'"
+check "--material=sls with adhere fit: exit 2, the flag named ($(cat "$TMP/e20"))" \
+    sh -c "[ $rc2 -eq 2 ] && grep -q -- '--material=sls, a standard linear solid in physical time, would be ignored; give --material=elastic, with E' '$TMP/e20'"
 awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
