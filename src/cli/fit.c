@@ -194,8 +194,8 @@ int cli_fit_main(cli_options *cli)
     adh_config *cfg = &cli->cfg;
     if (settings(&fr, why, sizeof why) != 0)
         return refuse(why);
-    if (adh_fitdata_make(cfg->output.measured, (size_t)__builtin_popcount(fr.fs.free), &fr.fs.start, fr.fs.offset, &fr.fd,
-                         why, sizeof why) != 0)
+    if (adh_fitdata_make(cfg->output.measured, (size_t)__builtin_popcount(fr.fs.free), &fr.fs.start, fr.fs.offset,
+                         fr.fs.baseline, &fr.fd, why, sizeof why) != 0)
         return refuse(why);
     if (configure(&fr, why, sizeof why) != 0 || build(&fr, why, sizeof why) != 0) {
         adh_fitdata_free(&fr.fd);

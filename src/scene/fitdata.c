@@ -116,8 +116,9 @@ static int gather(const adh_measured *m, adh_fitdata *fd, char *why, size_t whyl
     return 0;
 }
 
-/* Positions within the model's reach, the adhesion near the start's. */
-static int ranges(adh_fitdata *fd, const adh_material *start, double offset, char *why, size_t whylen)
+/* Positions within the model's reach, an attraction (the force below the
+ * baseline somewhere), near the start's adhesion. */
+static int ranges(adh_fitdata *fd, const adh_material *start, double offset, double baseline, char *why, size_t whylen)
 {
     double reach = adh_protocol_reach(start), fjkr = fabs(adh_jkr_pulloff(start));
     size_t imin = 0;
@@ -146,23 +147,36 @@ static int ranges(adh_fitdata *fd, const adh_material *start, double offset, cha
         if (fd->F[i] < fd->F[imin])
             imin = i;
     }
+    /* the model's force is the measured less the baseline: a curve with
+     * none below it has no attraction, no pull-off to place the adhesion
+     * by (a fit of A from it was 'unidentifiable'; of E alone, a model
+     * with adhesion against a curve without) */
+    double pull = fd->F[imin] - baseline;
+    if (!(pull < 0)) {
+        snprintf(why, whylen, "%s:%zu: no attraction in the data: the least force, %s, is not below the baseline (%s), "
+                 "and a fit needs the curve's attractive part, its pull-off, to find the adhesion: check the force's "
+                 "sign and unit in the header, or give the force far from contact as --baseline",
+                 fd->file[imin]->path, fd->line[imin], adh_qtext(fd->F[imin], ADH_Q_FORCE).s,
+                 adh_qtext(baseline, ADH_Q_FORCE).s);
+        return -1;
+    }
     if (!(fjkr > 0)) {   /* no adhesion at the start: no JKR pull-off, and no ratio to it ("inf times") */
         snprintf(why, whylen, "%s:%zu: the strongest attraction is %s, but the start values have no adhesion (A = %s: "
                  "no JKR pull-off to compare it with): start A above 0", fd->file[imin]->path, fd->line[imin],
-                 adh_qtext(fd->F[imin], ADH_Q_FORCE).s, adh_qtext(start->A, ADH_Q_ENERGY).s);
+                 adh_qtext(pull, ADH_Q_FORCE).s, adh_qtext(start->A, ADH_Q_ENERGY).s);
         return -1;
     }
-    double ratio = fabs(fd->F[imin]) / fjkr;
+    double ratio = fabs(pull) / fjkr;
     if (!(ratio > 1.0 / 30 && ratio < 30)) {
         snprintf(why, whylen, "%s:%zu: the strongest attraction, %s, is %.3g times the JKR pull-off at the start "
                  "values (%s): check the force's unit in the header, or start A and R nearer", fd->file[imin]->path,
-                 fd->line[imin], adh_qtext(fd->F[imin], ADH_Q_FORCE).s, ratio, adh_qtext(-fjkr, ADH_Q_FORCE).s);
+                 fd->line[imin], adh_qtext(pull, ADH_Q_FORCE).s, ratio, adh_qtext(-fjkr, ADH_Q_FORCE).s);
         return -1;
     }
     return 0;
 }
 
-int adh_fitdata_make(const adh_measured *m, size_t nfree, const adh_material *start, double offset,
+int adh_fitdata_make(const adh_measured *m, size_t nfree, const adh_material *start, double offset, double baseline,
                      adh_fitdata *fd, char *why, size_t whylen)
 {
     memset(fd, 0, sizeof *fd);
@@ -178,7 +192,7 @@ int adh_fitdata_make(const adh_measured *m, size_t nfree, const adh_material *st
         adh_fitdata_free(fd);
         return -1;
     }
-    if (gather(m, fd, why, whylen) != 0 || ranges(fd, start, offset, why, whylen) != 0) {
+    if (gather(m, fd, why, whylen) != 0 || ranges(fd, start, offset, baseline, why, whylen) != 0) {
         adh_fitdata_free(fd);
         return -1;
     }

@@ -26,10 +26,11 @@ typedef struct adh_fitdata {
 } adh_fitdata;
 
 /* Gathers every file of the chain m into fd. nfree: free parameters of the
- * fit. start, offset: the start values, for the range checks (positions
- * within the model's reach, the adhesion within a factor 30 of the start's
- * JKR pull-off). 0, or -1 with "FILE:LINE: reason" in why (nothing kept). */
-int adh_fitdata_make(const adh_measured *m, size_t nfree, const adh_material *start, double offset,
+ * fit. start, offset, baseline: the start values, for the range checks
+ * (positions within the model's reach, a force below the baseline, the
+ * attraction within a factor 30 of the start's JKR pull-off). 0, or -1
+ * with "FILE:LINE: reason" in why (nothing kept). */
+int adh_fitdata_make(const adh_measured *m, size_t nfree, const adh_material *start, double offset, double baseline,
                      adh_fitdata *fd, char *why, size_t whylen);
 void adh_fitdata_free(adh_fitdata *fd);
 

@@ -65,7 +65,7 @@ int main(int argc, char **argv)
     char why[1024];
     const char *path = "share/adhere/data/fig1-synthetic.tsv";
     if (adh_measured_load(path, NULL, &m, why, sizeof why) != 0 ||
-        adh_fitdata_make(&m, 2, &truth, 0, &fd, why, sizeof why) != 0) {
+        adh_fitdata_make(&m, 2, &truth, 0, 0, &fd, why, sizeof why) != 0) {
         fprintf(stderr, "bench-fit: %s\n", why);
         return 1;
     }

@@ -196,6 +196,14 @@ printf 'h0 (nm)\tF (nN)\n8\t0.1\n7\t-1\n6\t-2\n' >"$TMP/three.tsv"
 rc=$?
 check "an approach of 3 points: exit 2, how many a fit needs, nothing written ($(cat "$TMP/e6"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'three.tsv:2: this approach segment has 3 points, at least 4 needed' '$TMP/e6' && [ ! -e '$TMP/threeout' ]"
+# the shipped curve 420 nN up: no force below the baseline, no attraction;
+# it was called the 'strongest attraction' when far below the pull-off,
+# and near it the fit ran to 'unidentifiable' (exit 1, A +- 170 %)
+awk -F'\t' 'NR <= 2 {print; next} {printf "%s\t%.6f\t%s\n", $1, $2 + 420, $3}' "$DATA" >"$TMP/up.tsv"
+"$ADHERE" fit --data="$TMP/up.tsv" $COARSE -o "$TMP/upout" fig1 >/dev/null 2>"$TMP/e21"
+rc=$?
+check "a curve with no force below the baseline: exit 2, no attraction said, nothing written ($(cat "$TMP/e21"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'up.tsv:[0-9]*: no attraction in the data: the least force, 29.26 nN, is not below the baseline (0 nN)' '$TMP/e21' && ! grep -q 'strongest' '$TMP/e21' && [ ! -e '$TMP/upout' ]"
 
 # A model that stops says why, as a run does: from E = 0.3 GPa on a coarse
 # grid (--force) the static curve stalls at the first evaluation, so no

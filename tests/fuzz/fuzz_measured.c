@@ -73,7 +73,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     adh_material start = adh_material_default();
     adh_fitdata fd;
     why[0] = '\0';
-    if (adh_fitdata_make(&m, 2, &start, 0, &fd, why, sizeof why) == 0)
+    if (adh_fitdata_make(&m, 2, &start, 0, 0, &fd, why, sizeof why) == 0)
         adh_fitdata_free(&fd);
     else
         check_why(why);

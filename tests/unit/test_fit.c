@@ -71,7 +71,7 @@ static void refused(const char *path, const char *text, const char *columns, siz
     int rc = adh_measured_load(path, columns, &m, why, sizeof why);
     if (rc == 0) {
         adh_fitdata fd;
-        rc = adh_fitdata_make(&m, nfree, &start, 0, &fd, why, sizeof why);
+        rc = adh_fitdata_make(&m, nfree, &start, 0, 0, &fd, why, sizeof why);
         if (rc == 0)
             adh_fitdata_free(&fd);
         adh_measured_free(&m);
@@ -97,7 +97,7 @@ static void no_adhesion(const char *path)
     int rc = adh_measured_load(path, NULL, &m, why, sizeof why);
     ok(rc == 0, "no adhesion: the curve loads (%s)", why);
     if (rc == 0) {
-        rc = adh_fitdata_make(&m, 2, &start, 0, &fd, why, sizeof why);
+        rc = adh_fitdata_make(&m, 2, &start, 0, 0, &fd, why, sizeof why);
         if (rc == 0)
             adh_fitdata_free(&fd);
         adh_measured_free(&m);
@@ -105,6 +105,39 @@ static void no_adhesion(const char *path)
     ok(rc != 0 && strstr(why, ":21: the strongest attraction is -300 nN, but the start values have no adhesion "
                                "(A = 0 J: no JKR pull-off to compare it with): start A above 0") && !strstr(why, "inf"),
        "A = 0 at the start: refused, no ratio to a pull-off there is none of (%s)", why);
+    unlink(path);
+}
+
+/* A curve with no force below the baseline has no attraction: refused in
+ * those words (it was called its 'strongest attraction', and a fit of A
+ * from it ran to 'unidentifiable'); the same curve over its baseline, given,
+ * is the attraction it holds. */
+static void no_attraction(const char *path)
+{
+    FILE *f = fopen(path, "w");
+    for (int i = 0; i < 40; i++)   /* no_adhesion's approach 310 nN up: the least force 10 nN, line 21 */
+        fprintf(f, "%g %g\n", 6.0 - 0.2 * i, i < 20 ? 309.0 : 10.0 + 10 * (i - 20));
+    fclose(f);
+    adh_material start = adh_material_default();   /* JKR pull-off -375 nN */
+    for (int given = 0; given < 2; given++) {
+        adh_measured m;
+        adh_fitdata fd;
+        char why[1024] = "";
+        int rc = adh_measured_load(path, NULL, &m, why, sizeof why);
+        ok(rc == 0, "no attraction: the curve loads (%s)", why);
+        if (rc != 0)
+            continue;
+        rc = adh_fitdata_make(&m, 2, &start, 0, given ? 310e-9 : 0, &fd, why, sizeof why);
+        if (rc == 0)
+            adh_fitdata_free(&fd);
+        adh_measured_free(&m);
+        if (given)
+            ok(rc == 0, "over a baseline of 310 nN, given: 300 nN of attraction, taken (%s)", why);
+        else
+            ok(rc != 0 && strstr(why, ":21: no attraction in the data: the least force, 10 nN, is not below the "
+                                       "baseline (0 nN)") && !strstr(why, "strongest attraction"),
+               "no force below the baseline: refused as no attraction, none called the strongest (%s)", why);
+    }
     unlink(path);
 }
 
@@ -259,7 +292,7 @@ int main(void)
     ok(rc == 0 && m.n == s.n && m.nseg == 2 && m.seg[0].dir == 1 && m.seg[1].dir == -1,
        "read back: %zu points, %zu segments, approach then retract (%s)", m.n, m.nseg, rc ? why : m.columns);
     adh_fitdata fd;
-    rc = rc == 0 ? adh_fitdata_make(&m, 2, &truth, 0, &fd, why, sizeof why) : -1;
+    rc = rc == 0 ? adh_fitdata_make(&m, 2, &truth, 0, 0, &fd, why, sizeof why) : -1;
     ok(rc == 0, "labelled for a fit (%s)", rc ? why : "ok");
     int same = rc == 0 && fd.d.n == s.n;
     for (size_t i = 0; rc == 0 && i < s.n; i++)
@@ -283,6 +316,7 @@ int main(void)
 
     refusals(path);
     no_adhesion(path);
+    no_attraction(path);
     adh_kernel_free(k);
     adh_grid_free(g);
     return tap_done();
