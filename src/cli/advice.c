@@ -5,22 +5,24 @@
 
 #include "adhere/status.h"
 
-/* In the order a sentence names them. */
+/* In the order a sentence names them: the flag, and the key a scene sets. */
 static const struct {
     unsigned bit;
     const char *flag;
+    const char *key;
 } flags[] = {
-    { ADH_FIX_MODE, "--mode" },
-    { ADH_FIX_FINE_BAND, "--fine-band" },
-    { ADH_FIX_TURNS, "--turn" },
-    { ADH_FIX_RADIUS, "-R" },
-    { ADH_FIX_STEP, "-d" },
-    { ADH_FIX_START, "--start" },
-    { ADH_FIX_NODES, "-N" },
-    { ADH_FIX_SPACING, "--spacing" },
-    { ADH_FIX_GRID_RADIUS, "--grid-radius" },
-    { ADH_FIX_FORCE, "--force" },
+    { ADH_FIX_MODE, "--mode", "scene.mode" },
+    { ADH_FIX_FINE_BAND, "--fine-band", "grid.fine_band" },
+    { ADH_FIX_TURNS, "--turn", "protocol.turns" },
+    { ADH_FIX_RADIUS, "-R", "material.R" },
+    { ADH_FIX_STEP, "-d", "protocol.step" },
+    { ADH_FIX_START, "--start", "protocol.start" },
+    { ADH_FIX_NODES, "-N", "grid.nodes" },
+    { ADH_FIX_SPACING, "--spacing", "grid.spacing" },
+    { ADH_FIX_GRID_RADIUS, "--grid-radius", "grid.radius" },
+    { ADH_FIX_FORCE, "--force", "grid.force" },
 };
+#define NFLAGS (sizeof flags / sizeof flags[0])
 
 /* Appends text to list (of len, holding *n bytes), cut at its end. */
 static void add(char *list, size_t len, size_t *n, const char *sep, const char *text)
@@ -31,16 +33,92 @@ static void add(char *list, size_t len, size_t *n, const char *sep, const char *
     }
 }
 
-void cli_advice_append_for(cli_advice_for who, char *why, size_t whylen, unsigned fix)
+static int from_scene(int origin)
 {
-    char list[160] = "";
+    return origin == -1 || origin > 0;
+}
+
+/* Whether the keys of bits that were set were set by the scene alone
+ * (some were, no flag did). */
+static int scene_voice(const adh_config *cfg, unsigned bits)
+{
+    int scene = 0, flag = 0;
+    for (size_t i = 0; cfg && i < NFLAGS; i++)
+        if (bits & flags[i].bit) {
+            int from = adh_config_origin(cfg, flags[i].key);
+            scene |= from_scene(from);
+            flag |= from == 0;
+        }
+    return scene && !flag;
+}
+
+/* The i-th key as the scene says it (its name in its section), when the
+ * scene set it, or nobody did and voice is the scene's; NULL: the flag. */
+static const char *scene_word(const adh_config *cfg, size_t i, int voice, int *origin)
+{
+    *origin = cfg ? adh_config_origin(cfg, flags[i].key) : -2;
+    const adh_config_key *k = adh_config_key_find(flags[i].key);
+    if (!k || !(k->where & ADH_KEY_SCENE) || !(from_scene(*origin) || (*origin == -2 && voice)))
+        return NULL;
+    return strchr(flags[i].key, '.') + 1;
+}
+
+void cli_advice_key(const adh_config *cfg, unsigned voice_bits, unsigned bit, const char *value, char *buf, size_t len)
+{
+    size_t i = 0;
+    while (i < NFLAGS && flags[i].bit != bit)
+        i++;
+    if (i == NFLAGS) {
+        snprintf(buf, len, "%s", value ? value : "");
+        return;
+    }
+    int origin;
+    const char *word = scene_word(cfg, i, scene_voice(cfg, voice_bits), &origin);
+    if (!word) {
+        snprintf(buf, len, "%s%s%s", flags[i].flag, value ? "=" : "", value ? value : "");
+        return;
+    }
+    int n = snprintf(buf, len, "%s%s%s", word, value ? " = " : "", value ? value : "");
+    if (n >= 0 && (size_t)n < len && from_scene(origin) && cfg->scene[0]) {
+        if (origin > 0)
+            snprintf(buf + n, len - (size_t)n, " (%.1000s:%d)", cfg->scene, origin);
+        else
+            snprintf(buf + n, len - (size_t)n, " (%.1000s)", cfg->scene);
+    }
+}
+
+/* The list's word for the i-th key: the flag, or the scene's key with
+ * where it was written ("nodes at a.scene:3", "spacing at line 4"). */
+static void list_word(const adh_config *cfg, size_t i, int voice, int *file_named, char *buf, size_t len)
+{
+    int origin;
+    const char *word = scene_word(cfg, i, voice, &origin);
+    if (!word)
+        snprintf(buf, len, "%s", flags[i].flag);
+    else if (!from_scene(origin) || !cfg->scene[0])
+        snprintf(buf, len, "%s", word);
+    else if (origin > 0 && *file_named)
+        snprintf(buf, len, "%s at line %d", word, origin);
+    else if (origin > 0)
+        snprintf(buf, len, "%s at %.1000s:%d", word, cfg->scene, origin);
+    else
+        snprintf(buf, len, "%s in %.1000s", word, cfg->scene);
+    *file_named |= word && from_scene(origin) && cfg->scene[0];
+}
+
+void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen, unsigned fix)
+{
+    char list[1200] = "", word[1100];
     size_t n = 0;
     /* a fit sets its one turn itself, below the data: --turn would be
      * overwritten, and is no advice */
     unsigned turn = who == CLI_ADVICE_FIT ? fix & ADH_FIX_TURNS : 0;
-    for (size_t i = 0; i < sizeof flags / sizeof flags[0]; i++)
-        if ((fix & ~turn) & flags[i].bit)
-            add(list, sizeof list, &n, ", ", flags[i].flag);
+    int voice = scene_voice(cfg, fix & ~turn), file_named = 0;
+    for (size_t i = 0; i < NFLAGS; i++)
+        if ((fix & ~turn) & flags[i].bit) {
+            list_word(cfg, i, voice, &file_named, word, sizeof word);
+            add(list, sizeof list, &n, ", ", word);
+        }
     if (turn)
         add(list, sizeof list, &n, "; ", "the turn is the fit's, a step below the deepest position in --data");
     size_t len = strlen(why);
@@ -50,5 +128,5 @@ void cli_advice_append_for(cli_advice_for who, char *why, size_t whylen, unsigne
 
 void cli_advice_append(char *why, size_t whylen, unsigned fix)
 {
-    cli_advice_append_for(CLI_ADVICE_RUN, why, whylen, fix);
+    cli_advice_append_cfg(NULL, CLI_ADVICE_RUN, why, whylen, fix);
 }

@@ -1,10 +1,12 @@
 /* The CLI's words for what a core refusal asks to change: the core's
  * sentence names quantities and sets ADH_FIX_* bits (adhere/status.h); the
- * CLI names the flags. */
+ * CLI names the flags, or the scene's keys where the scene set them. */
 #ifndef ADH_CLI_ADVICE_H
 #define ADH_CLI_ADVICE_H
 
 #include <stddef.h>
+
+#include "scene/config.h"
 
 /* Whose line the advice is for: a run's, or adhere fit's, whose turn is
  * no flag but a step below its measured curve's deepest position. */
@@ -13,8 +15,18 @@ typedef enum { CLI_ADVICE_RUN, CLI_ADVICE_FIT } cli_advice_for;
 /* Appends the flags of the bits in fix to the sentence in why, as
  * " (--turn, -R)"; nothing for 0 (or when they do not fit). */
 void cli_advice_append(char *why, size_t whylen, unsigned fix);
-/* The same for who: a fit's turn is named as its data's
- * " (-R; the turn is the fit's, a step below the deepest position in --data)". */
-void cli_advice_append_for(cli_advice_for who, char *why, size_t whylen, unsigned fix);
+/* The same for who (a fit's turn is named as its data's: " (-R; the turn
+ * is the fit's, a step below the deepest position in --data)"), in the
+ * words each key was given in (cfg NULL: the flags): a key the scene set
+ * by its name, where it was written ("nodes at a.scene:3, spacing at line
+ * 4"), a flag's by the flag; a key nobody set in the scene's words when
+ * the keys the list names that were set are the scene's alone, else as a
+ * flag (as cli_options_words says a sentence). */
+void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen, unsigned fix);
+/* The key of one ADH_FIX_* bit in a sentence, with value (NULL: none), in
+ * the voice of voice_bits: "--spacing=1.5nm", or "spacing = 1.5nm
+ * (a.scene:4)" where the scene set it, "spacing = 1.5nm" where nobody did
+ * and the voice is the scene's. */
+void cli_advice_key(const adh_config *cfg, unsigned voice_bits, unsigned bit, const char *value, char *buf, size_t len);
 
 #endif

@@ -238,10 +238,10 @@ static void batch_judge(batch_job *j)
             snprintf(j->note, sizeof j->note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run->nrows);
         j->status = cli_interrupt_exit();
     } else if (j->rc == ADH_EGRID && run->nrows) {
-        char edge[400];
+        char edge[900];
         double a = run->rows[run->nrows - 1].a;
         adh_rings_edge_sentence(j->g, a, edge, sizeof edge);
-        cli_advice_append(edge, sizeof edge, adh_rings_edge_fix(j->g, a));
+        cli_advice_append_cfg(j->cfg, CLI_ADVICE_RUN, edge, sizeof edge, adh_rings_edge_fix(j->g, a));
         snprintf(j->note, sizeof j->note, "the run stopped after %zu steps at h0 = %s: %s", run->nrows,
                  adh_qtext(run->rows[run->nrows - 1].h0, ADH_Q_LENGTH).s, edge);
         j->status = CLI_EXIT_SOLVER;

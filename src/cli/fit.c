@@ -115,7 +115,7 @@ static int configure(fit_run *fr, char *why, size_t whylen)
     cfg->spec.proto.nprofiles = 0;
     unsigned fix = 0;
     if (adh_config_grid(cfg, why, whylen, &fix) != 0) {
-        cli_advice_append_for(CLI_ADVICE_FIT, why, whylen, fix);
+        cli_advice_append_cfg(cfg, CLI_ADVICE_FIT, why, whylen, fix);
         return -1;
     }
     /* the checks every run meets, and memory for one static solver */

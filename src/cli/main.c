@@ -93,7 +93,7 @@ static int checked(adh_config *cfg, const cli_options *cli, char *why, size_t le
 {
     unsigned fix;
     if (adh_config_grid(cfg, why, len, &fix) != 0) {
-        cli_advice_append(why, len, fix);
+        cli_advice_append_cfg(cfg, CLI_ADVICE_RUN, why, len, fix);
         return CLI_EXIT_USAGE;
     }
     if (cli_options_validate(cfg, why, len) != 0)

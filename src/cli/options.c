@@ -829,28 +829,33 @@ static int validate_grid(const adh_config *cfg, const adh_run_spec *run, cli_adv
     if (g != &uniform)
         adh_grid_free(g);
     if (rc != ADH_SUCCESS) {
-        cli_advice_append_for(who, why, whylen, fix);
+        cli_advice_append_cfg(cfg, who, why, whylen, fix);
         return 2;
     }
     adh_grid_report gr;
     adh_grid_check(&run->mat, adh_config_grid_use(run), u->nodes, dr, &gr);
     if (!gr.resolved && !run->grid.force) {
+        /* the spacing in the words the grid was given in (N's or the
+         * spacing's: a scene's, or a flag's) */
+        char spacing[1200];
+        cli_advice_key(cfg, ADH_FIX_NODES | ADH_FIX_SPACING, ADH_FIX_SPACING, adh_qtext_arg(gr.max_spacing, ADH_Q_LENGTH).s,
+                       spacing, sizeof spacing);
         adh_grid_unresolved_sentence(&gr, why, whylen);
         size_t len = strlen(why);
-        snprintf(why + len, whylen - len, "; use --spacing=%s or more nodes over the same radius, or --force to run it anyway (marked resolved 0)",
-                 adh_qtext_arg(gr.max_spacing, ADH_Q_LENGTH).s);
+        snprintf(why + len, whylen - len, "; use %s or more nodes over the same radius, or --force to run it anyway (marked resolved 0)",
+                 spacing);
         return 2;
     }
     return 0;
 }
 
 /* Rigid spheres: eq 22 alone, no grid is built. */
-static int rigid_check(const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen)
+static int rigid_check(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen)
 {
     unsigned fix;
     if (adh_drive_check(&run->mat, &run->relax, &run->proto, ADH_GRID_RELAX, NULL, why, whylen, &fix) == ADH_SUCCESS)
         return 0;
-    cli_advice_append_for(who, why, whylen, fix);
+    cli_advice_append_cfg(cfg, who, why, whylen, fix);
     return 2;
 }
 
@@ -877,7 +882,7 @@ static int validate_run(const adh_config *cfg, const adh_run_spec *run, cli_advi
             return 2;
     }
     if (run->mode == ADH_MODE_RIGID)   /* eq 22 alone: no grid is built */
-        return rigid_check(run, who, why, whylen);
+        return rigid_check(cfg, run, who, why, whylen);
     if (!(isfinite(o->drive_speed) && o->drive_speed > 0 && o->drive_speed < 1e3)) {
         snprintf(why, whylen, "drive speed %s is not allowed: it must be above 0 and below 1000 m/s", adh_qtext(o->drive_speed, ADH_Q_SPEED).s);
         return 2;

@@ -36,6 +36,18 @@ bad "^adhere: $TMP/dwell.scene:2: dwell: '1e9' is not allowed: expected a whole 
 bad "^adhere: --cost-nodes: '1e9' is not allowed: expected a whole number of nodes, 10 to 20000$" --cost --cost-nodes=500,1e9
 bad "too coarse" -N 20
 bad "too short.*; use more nodes or a larger spacing (-N, --spacing)$" --spacing=0.5nm
+# the grid's advice in the words the grid was given in: a scene's N by its
+# key, file and line (it said '(-N)', a flag the scene's user never wrote),
+# a key nobody set in the scene's words beside it, a flag's by the flag
+printf '[grid]\n# coarse\nnodes = 20\n' >"$TMP/n20.scene"
+bad "^adhere: grid spacing 75 nm is too coarse: .*; use more nodes (nodes at $TMP/n20.scene:3)$" "$TMP/n20.scene"
+printf '[grid]\nnodes = 100\nspacing = 2nm\n' >"$TMP/ns.scene"
+bad "too short.*; use more nodes or a larger spacing (nodes at $TMP/ns.scene:2, spacing at line 3)$" "$TMP/ns.scene"
+printf '[grid]\nnodes = 10\n' >"$TMP/n10.scene"
+bad "too short.*; use more nodes or a larger spacing (nodes at $TMP/n10.scene:2, --spacing)$" "$TMP/n10.scene" --spacing=2nm
+printf '[grid]\nnodes = 100\nspacing = 10nm\n' >"$TMP/unres.scene"
+bad "coarser than the resolved limit .*; use spacing = 1.581nm ($TMP/unres.scene:3) or more nodes over the same radius, or --force to run it anyway (marked resolved 0)$" "$TMP/unres.scene"
+bad "coarser than the resolved limit .*; use --spacing=1.581nm or more nodes over the same radius, or --force" -N 100 --spacing=10nm
 bad "unknown option '--frobnicate'" --frobnicate
 bad "unknown option '-x'" -x
 bad "needs a value" --modulus

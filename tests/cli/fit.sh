@@ -103,6 +103,12 @@ check "--offset=-193nm, just past the least allowed: refused the same way ($(cat
 rc=$?
 check "a fit whose turn the grid cannot reach: exit 2, advice without --turn, nothing written ($rc: $(cat "$TMP/e15"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'beyond 0.3 R = 150 nm.*(-R; the turn is the fit.s, a step below the deepest position in --data)\$' '$TMP/e15' && ! grep -q -- '--turn' '$TMP/e15' && [ ! -e '$TMP/deepfit' ]"
+# the same start from a scene: its R by the scene's key, file and line
+printf '[material]\nR = 500nm\nE = 10MPa\n' >"$TMP/deep.scene"
+"$ADHERE" fit --data="$DATA" -A 1e-19J -o "$TMP/deepfit" "$TMP/deep.scene" >/dev/null 2>"$TMP/e22"
+rc=$?
+check "the same start from a scene: exit 2, the scene's R named, not -R ($rc: $(cat "$TMP/e22"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'beyond 0.3 R = 150 nm.*(R at $TMP/deep.scene:2; the turn is the fit.s, a step below the deepest position in --data)\$' '$TMP/e22' && ! grep -q -- ' (-R' '$TMP/e22' && [ ! -e '$TMP/deepfit' ]"
 # a start with no adhesion (A = 0) is refused as a run's material is, with
 # A's range (it was 'inf times the JKR pull-off')
 "$ADHERE" fit --data="$DATA" -A 0 -o "$TMP/a0fit" fig1 >/dev/null 2>"$TMP/e16"
