@@ -496,6 +496,13 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
         adh_sayf("--cost measures the relaxation's load/unload cycle: it needs mode relax and a turning point");
         return CLI_EXIT_USAGE;
     }
+    /* its runs are the grid's, of one material: a study's others never ran */
+    if (cfg->sweep.naxes) {
+        fprintf(stderr, "adhere: --cost measures one run's cycle over its grid of eps, N and kernels: a sweep (of %s, "
+                "from --sweep or the scene's [sweep]) would be ignored; leave it out, or run --cost for each value\n",
+                cfg->sweep.axis[0].name);
+        return CLI_EXIT_USAGE;
+    }
     for (size_t a = 0; a < nnodes; a++)
         for (size_t e = 0; e < neps; e++) {
             static adh_config c;   /* large: not on the stack */

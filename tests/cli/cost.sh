@@ -52,4 +52,15 @@ check "--cost-nodes=5 is refused with exit 2 ($(cat "$TMP/stderr"))" sh -c "[ $r
 "$ADHERE" --cost -q --cost-eps=0 >/dev/null 2>"$TMP/stderr"; rc=$?
 check "--cost-eps=0 is refused with exit 2, saying what is allowed ($(cat "$TMP/stderr"))" \
     sh -c "[ $rc -eq 2 ] && grep -qxF \"adhere: --cost-eps: '0' is not allowed: each eps must be above 0 and below 1 um\" '$TMP/stderr'"
+# A sweep (--sweep, a scene's [sweep]) is many materials or protocols:
+# --cost ran its first run's alone and said nothing of the rest (the
+# report's sigma 2.25 was E = 1 GPa's, 2 GPa never ran). Refused, exit 2,
+# naming the key, before any run.
+"$ADHERE" --cost -q --cost-nodes=100 --cost-eps=5pm --sweep=E=1GPa,2GPa -o "$TMP/costsweep" >"$TMP/stdout" 2>"$TMP/stderr"; rc=$?
+check "--cost with --sweep=E=... is refused with exit 2, naming the swept key ($(cat "$TMP/stderr"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'sweep (of E' '$TMP/stderr' && [ ! -s '$TMP/stdout' ] && [ ! -e '$TMP/costsweep' ]"
+printf '[sweep]\nsigma = 2, 4\n' >"$TMP/sweep.scene"
+"$ADHERE" --cost -q --cost-nodes=100 --cost-eps=5pm "$TMP/sweep.scene" >/dev/null 2>"$TMP/stderr"; rc=$?
+check "... and so is a scene's [sweep] (of sigma) ($(cat "$TMP/stderr"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'sweep (of sigma' '$TMP/stderr'"
 done_testing
