@@ -716,7 +716,10 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
     adh_mode mode = cli->cfg.spec.mode;
     if (fs.reference && mode != ADH_MODE_RELAX) {
         snprintf(why, whylen, "--reference=static is for --mode=relax: %s", mode == ADH_MODE_STATIC
-                 ? "in static mode the run is the static curve itself" : "rigid spheres have no elastic curve to compare");
+                 ? "in static mode the run is the static curve itself" : mode == ADH_MODE_TIME
+                 ? "in physical time the run is integrated in seconds (an elastic sphere's path is its static curve "
+                   "itself); --mode=static computes the static curve alone"
+                 : "rigid spheres have no elastic curve to compare");
         return 2;
     }
     if (fs.reference && cli->action != CLI_ACT_BATCH && cli->action != CLI_ACT_PLAN) {

@@ -56,6 +56,9 @@ refused "--plan and --cost do not go together" "$ADHERE" --plan --cost
 refused "--replay drives the TUI .* --batch" "$ADHERE" --batch --replay="$TMP/x.keys"
 refused "--reference=static is for --mode=relax" "$ADHERE" --batch --mode=static --reference=static
 refused "--reference=static is for --mode=relax" "$ADHERE" --batch --mode=rigid --reference=static
+# physical time was told "rigid spheres have no elastic curve to compare"
+refused "--reference=static is for --mode=relax: in physical time" "$ADHERE" --batch --material=sls --reference=static
+refused "--reference=static is for --mode=relax: in physical time" "$ADHERE" --batch --mode=time --reference=static
 refused "--screen writes the final screen of a --replay run" "$ADHERE" --screen="$TMP/s.txt"
 mkfifo "$TMP/fifo" 2>/dev/null
 if [ -p "$TMP/fifo" ]; then
