@@ -1045,7 +1045,7 @@ static void loop(tui *t)
     while (!t->quit) {
         if (got_signal) {
             /* 128 + the signal, as --batch: SIGINT 130, SIGTERM 143, SIGHUP
-             * (terminal gone) 129 */
+             * (terminal gone) 129, SIGQUIT (C-\) 131 */
             t->exit_code = 128 + got_signal;
             snprintf(t->fatal, sizeof t->fatal, "adhere: stopped by signal %d", (int)got_signal);
             break;
@@ -1192,7 +1192,7 @@ int tui_main(const adh_config *cfg)
     t.view.no_clock = cfg->tui.no_clock;
     t.view.measured = cfg->output.measured;
 
-    struct sigaction sa, old_int, old_term, old_hup;
+    struct sigaction sa, old_int, old_term, old_hup, old_quit;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
     sigemptyset(&sa.sa_mask);
@@ -1201,12 +1201,14 @@ int tui_main(const adh_config *cfg)
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
     sigaction(SIGHUP, &sa, &old_hup);   /* a closed terminal: restore and go */
+    sigaction(SIGQUIT, &sa, &old_quit); /* C-\ (cbreak keeps it a signal): restore, not a broken terminal */
 
     if (screen_open(&t, why, sizeof why) != 0) {
         screen_close(&t);
         sigaction(SIGINT, &old_int, NULL);
         sigaction(SIGTERM, &old_term, NULL);
         sigaction(SIGHUP, &old_hup, NULL);
+        sigaction(SIGQUIT, &old_quit, NULL);
         adh_say(why);
         tui_sim_free(&t.sim);
         tui_keysrc_free(&t.keys);
@@ -1238,6 +1240,7 @@ int tui_main(const adh_config *cfg)
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
     sigaction(SIGHUP, &old_hup, NULL);
+    sigaction(SIGQUIT, &old_quit, NULL);
     if (t.fatal[0])
         adh_say_as(NULL, t.fatal);   /* escaped: it may quote a file's name or a script's text */
     tui_sim_free(&t.sim);

@@ -186,5 +186,16 @@ while [ ! -s "$work/stty" ] && [ "$i" -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 check "and the terminal modes are back: echo and canonical input ($(grep -o -- '-*icanon\|-*echo ' "$work/stty" | tr '\n' ' '))" \
     sh -c "grep -q ' icanon' '$work/stty' && grep -q ' echo ' '$work/stty'"
 check "and it says why on stderr" grep -q "stopped by signal 1" "$work/stderr"
+
+# C-\ (SIGQUIT), the key a person presses when C-c seems not to work: it
+# killed the TUI with the alternate screen still up, the cursor hidden and
+# the keypad in application mode; now it restores them, as SIGINT does.
+start
+wait_for "? lists every key" >/dev/null
+T send-keys -t t 'C-\'
+check "C-\\ (SIGQUIT) ends it with status 131 (128 + 3)" [ "$(exit_status)" = 131 ]
+check "and the terminal is restored: no alternate screen, the cursor shown ($(T display -p -t t 'alt #{alternate_on}, cursor #{cursor_flag}'))" \
+    [ "$(T display -p -t t '#{alternate_on} #{cursor_flag}')" = "0 1" ]
+check "and it says why on stderr" grep -q "stopped by signal 3" "$work/stderr"
 echo "1..$n"
 [ "$failed" -eq 0 ]
