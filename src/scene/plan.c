@@ -162,6 +162,11 @@ static void plan_profiles(const adh_run_spec *run, adh_plan *p)
         note(p->skipped, &p->nskipped, "profiles", "rigid spheres do not deform: no profile is kept");
         return;
     }
+    if (p->static_mode) {   /* cli/static.c stores none: its points are not drive positions */
+        note(p->skipped, &p->nskipped, "profiles", "mode = static: the curve's points fall where continuation puts "
+             "them, not on drive positions; no u, h, p profile is kept");
+        return;
+    }
     for (size_t i = 0; i < run->proto.nprofiles; i++) {
         double x = run->proto.profiles[i];
         size_t hits = 0;
@@ -285,13 +290,18 @@ static void plan_skipped(const adh_config *cfg, const adh_run_spec *s0, adh_plan
     if (p->elastic && !p->unloading_branches)
         note(p->skipped, &p->nskipped, "unloading", "%s",
              s0->proto.nturns ? "unload = no: the turns end the loading branch only" : "no turning point asked (turns = none)");
-    if (p->elastic && s0->proto.nturns > 1 && p->unloading_branches)
+    if (p->elastic && s0->proto.nturns > 1 && p->unloading_branches && !p->static_mode)
         note(p->skipped, &p->nskipped, "reloading per turn", "the %zu turns share one loading branch: a state snapshot at each turn starts its unloading",
              s0->proto.nturns);
-    if (s0->proto.dwell && !p->unloading_branches)
+    if (s0->proto.dwell && p->static_mode)
+        note(p->skipped, &p->nskipped, "dwell", "mode = static: the equilibrium curve has no time to hold at a turn; "
+             "dwell = %zu iterations is not used", s0->proto.dwell);
+    else if (s0->proto.dwell && !p->unloading_branches)
         note(p->skipped, &p->nskipped, "dwell", "no unloading branch to dwell before");
     plan_profiles(s0, p);
-    if (!p->contact_speeds)
+    if (p->static_mode && p->elastic)
+        note(p->skipped, &p->nskipped, "contact-line speeds", "mode = static: a curve of equilibria has no speed");
+    else if (!p->contact_speeds)
         note(p->skipped, &p->nskipped, "contact-line speeds", "contact is not in [output] plots (the contact radius of each row is kept: one pass over the gap per step)");
     if (!cfg->output.plot)
         note(p->skipped, &p->nskipped, "plots", "--no-plot: no PNG is drawn");
@@ -331,6 +341,9 @@ static void plan_stored(const adh_config *cfg, const adh_run_spec *s0, adh_plan 
              "each jump's fold and landing, each turn: t, base, h0, F, delta, hc, a, angle, Newton iterations, F_rigid (eq 22)");
     else if (p->time_mode)
         note(p->stored, &p->nstored, what, "one row per integrator step: t, base, h0, F, delta, hc, a, angle, Newton iterations, F_rigid (eq 22)");
+    else if (p->static_mode)
+        note(p->stored, &p->nstored, what, "one row per point of the curve: h0, F, delta, hc, a, angle, Newton "
+             "iterations, stable (0 on its unstable stretches), F_rigid (eq 22)");
     else
         note(p->stored, &p->nstored, what, "one row per drive step: h0, F, delta, hc, a, angle, iterations, F_rigid (eq 22)");
     if (p->time_mode) {
@@ -342,9 +355,14 @@ static void plan_stored(const adh_config *cfg, const adh_run_spec *s0, adh_plan 
         note(p->stored, &p->nstored, what, "jump_in_h0, pull-off, jump_out_h0, the drive, hysteresis (the jumps' losses), dissipated (0), jump_loss, the times and bases of the jumps and the pull-off, time, the static curve's iterations (time_steps 0)");
     else if (p->time_mode)
         note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, the solid and the drive, hysteresis, dissipated, jump_loss, stored_change, the times and bases of the jumps and the pull-off, time, the integrator's steps and iterations");
+    else if (p->static_mode)
+        note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0 and jump_out_h0 "
+             "(the curve's folds), pull-off (load- and displacement-controlled), folds, points, Newton iterations, "
+             "hysteresis (the equilibrium loop)%s", isfinite(s0->time.spring) ? ", the spring's snap points" : "");
     else
         note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, hysteresis, total iterations and seconds");
-    if (p->unloading_branches || (p->elastic && s0->proto.nturns)) {
+    /* the static curve has no turns of its own: cli/static.c writes none */
+    if (!p->static_mode && (p->unloading_branches || (p->elastic && s0->proto.nturns))) {
         snprintf(what, sizeof what, "%sturns.tsv", prefix);
         note(p->stored, &p->nstored, what, "one row per turning point: maximum load, contact radius, pull-off, jump-out, hysteresis (adhesion vs load)");
     }
@@ -367,6 +385,9 @@ static void plan_stored(const adh_config *cfg, const adh_run_spec *s0, adh_plan 
                 /* the plot module skips a profile figure with no profile in it */
                 if (figs[i].bit == ADH_PLOT_PROFILE && !p->profiles_stored)
                     note(p->skipped, &p->nskipped, what, "profile is in plots but no profile is stored");
+                else if (figs[i].bit == ADH_PLOT_CONTACT && p->static_mode)
+                    note(p->stored, &p->nstored, what, "the contact radius (contact.tsv), its stable stretches solid "
+                         "and the unstable ones dashed");
                 else
                     note(p->stored, &p->nstored, what, "%s", figs[i].what);
             }
@@ -453,6 +474,32 @@ static void print_study(FILE *f, const adh_config *cfg, const adh_plan *p)
             : "none (each run is a row of sweep.tsv)");
 }
 
+/* Snapshots, the unloading branches, the dwell and the drive speed: a
+ * relaxation's, or time's; the static curve is one curve, the same both
+ * ways (cli/static.c unloads nothing, holds no dwell, draws no speed). */
+static void print_unloading(FILE *f, const adh_config *cfg, const adh_plan *p)
+{
+    if (p->static_mode) {
+        fprintf(f, "snapshots: 0\nunloading branches: 0%s\n", p->unloading_branches
+                ? " (the static curve is the same both ways: its folds are the jumps)" : "");
+        return;
+    }
+    fprintf(f, "snapshots: %zu%s\n", p->snapshots, p->snapshots ? " (the state at each turn, where its unloading starts)" : "");
+    fprintf(f, "unloading branches: %zu%s", p->unloading_branches, p->nruns > 1 && p->unloading_branches ? " per run" : "");
+    if (p->unloading_branches && p->time_mode)
+        fprintf(f, " (each from its turn, after the dwell, until the base is back at the start and the surfaces are apart, up to the model's reach 0.02 R)");
+    else if (p->unloading_branches)
+        fprintf(f, " (each from its turn until the surfaces jump apart: %zu steps in all back to the start, more if they still touch there, up to the model's reach 0.02 R)", p->runs[0].unloading_steps);
+    fputc('\n', f);
+    if (p->unloading_branches && !p->time_mode)
+        fprintf(f, "dwell: %zu iterations at each turn before unloading\n", cfg->spec.proto.dwell);
+    if (p->elastic && !p->time_mode) {
+        char a[64];
+        adh_format_quantity(cfg->output.drive_speed, ADH_Q_SPEED, 3, a, sizeof a);
+        fprintf(f, "drive speed: %s (turns d a / d h0 into contact-line speeds)\n", a);
+    }
+}
+
 void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
 {
     char a[64], b[64];
@@ -508,6 +555,10 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     if (p->time_mode)   /* the integrator's steps, not the drive's */
         fprintf(f, "loading branches: %zu%s (the base from %s to %s%s)\n", p->loading_branches,
                 p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "the jump into contact, about " : "", b);
+    else if (p->static_mode)   /* the continuation's points, not the drive's */
+        fprintf(f, "loading branches: %zu%s (the static curve from %s to %s%s, its points where continuation puts "
+                "them)\n", p->loading_branches, p->nruns > 1 ? " per run" : "", a,
+                p->stop_at_contact ? "about " : "", b);
     else
         fprintf(f, "loading branches: %zu%s (from %s to %s%s, %s%zu steps)\n", p->loading_branches,
                 p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "about " : "", b,
@@ -519,26 +570,14 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     } else {
         fprintf(f, "turning points: none\n");
     }
-    fprintf(f, "snapshots: %zu%s\n", p->snapshots, p->snapshots ? " (the state at each turn, where its unloading starts)" : "");
-    fprintf(f, "unloading branches: %zu%s", p->unloading_branches, p->nruns > 1 && p->unloading_branches ? " per run" : "");
-    if (p->unloading_branches && p->time_mode)
-        fprintf(f, " (each from its turn, after the dwell, until the base is back at the start and the surfaces are apart, up to the model's reach 0.02 R)");
-    else if (p->unloading_branches)
-        fprintf(f, " (each from its turn until the surfaces jump apart: %zu steps in all back to the start, more if they still touch there, up to the model's reach 0.02 R)", r0->unloading_steps);
-    fputc('\n', f);
-    if (p->unloading_branches && !p->time_mode)
-        fprintf(f, "dwell: %zu iterations at each turn before unloading\n", cfg->spec.proto.dwell);
-    if (p->elastic && !p->time_mode) {
-        adh_format_quantity(cfg->output.drive_speed, ADH_Q_SPEED, 3, a, sizeof a);
-        fprintf(f, "drive speed: %s (turns d a / d h0 into contact-line speeds)\n", a);
-    }
+    print_unloading(f, cfg, p);
     for (size_t i = 0; p->nruns > 1 && i < p->nruns && i < ADH_PLAN_MAX_RUNS; i++) {
         const adh_plan_run *r = &p->runs[i];
         fmt_len(r->start, a, sizeof a);
         fmt_len(r->end, b, sizeof b);
-        if (p->time_mode)   /* no eps, no drive steps: the integrator's */
-            fprintf(f, "run %zu: E = %s, sigma = %.4g: the base from %s to %s%s\n", i + 1,
-                    adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, a, p->stop_at_contact ? "about " : "", b);
+        if (p->time_mode || p->static_mode)   /* no eps, no drive steps: the integrator's, the curve's */
+            fprintf(f, "run %zu: E = %s, sigma = %.4g: %s from %s to %s%s\n", i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s,
+                    r->sigma, p->time_mode ? "the base" : "the static curve", a, p->stop_at_contact ? "about " : "", b);
         else
             fprintf(f, "run %zu: E = %s, sigma = %.4g, eps = %s: from %s to %s%s, %zu loading + at most %zu unloading steps to the start\n",
                     i + 1, adh_qtext(r->E, ADH_Q_PRESSURE).s, r->sigma, adh_qtext(r->eps, ADH_Q_LENGTH).s, a,
@@ -550,6 +589,8 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
         fprintf(f, "steps: the static curve's points, no time steps (the path's rows are its points the base passes)\n");
     else if (p->time_mode)
         fprintf(f, "steps: as many as the integrator's tolerance needs (short ones at every fold, jump and turn)\n");
+    else if (p->static_mode)
+        fprintf(f, "steps: the curve's points, as many as continuation's step control takes (short ones at every fold)\n");
     else
         fprintf(f, "steps: %s%zu loading + at most %zu unloading to the start%s\n", p->stop_at_contact ? "about " : "",
                 p->loading_steps, p->unloading_steps,

@@ -148,6 +148,22 @@ has_re fig7 '^time: about .* on [0-9]+ cores?, from a pilot of the study.s first
 check "... and no other time line ($(grep -c 'time:' "$TMP/fig7.plan"))" [ "$(grep -c 'time:' "$TMP/fig7.plan")" -eq 1 ]
 plan default --mode=static
 has_re default '^time: not estimated: the static curve'
+# The static curve's plan said what a relaxation does: an unloading branch
+# of 440 steps, a dwell of 100 iterations, force.tsv a row per drive step,
+# turns.tsv, profiles at the drive positions and contact-line speeds; the
+# run writes one curve, a row per point, no turns.tsv, no profiles.tsv.
+plan fig4 --mode=static --dwell=100 --plots=force,profile,contact
+has_re fig4 '^loading branches: 1 \(the static curve from .* to -5 nm, its points where continuation puts them\)$'
+has_re fig4 '^unloading branches: 0 \(the static curve is the same both ways: its folds are the jumps\)$'
+has_re fig4 '^stored: force\.tsv: one row per point of the curve: .*stable'
+has_re fig4 '^stored: contact\.png: the contact radius'
+has_re fig4 '^skip: dwell: mode = static'
+has_re fig4 '^skip: profiles: mode = static'
+has_re fig4 '^skip: profile\.png: '
+lacks_re fig4 '^(dwell|drive speed):|turns\.tsv|stored: profiles\.tsv|^steps: [0-9]'
+"$ADHERE" --batch -q --mode=static --dwell=100 --turn=-1nm -N 300 --force -o "$TMP/st" fig4 2>/dev/null
+check "... and the run writes what that plan says: no turns.tsv, no profiles.tsv ($(ls "$TMP/st" | tr '\n' ' '))" \
+    sh -c "[ -s '$TMP/st/force.tsv' ] && [ ! -e '$TMP/st/turns.tsv' ] && [ ! -e '$TMP/st/profiles.tsv' ]"
 QUICKRUN="-N 200 --force -E 1GPa --turn=-3nm --eps=2pm"
 # shellcheck disable=SC2086
 "$ADHERE" --plan $QUICKRUN >"$TMP/quick.plan" 2>&1
