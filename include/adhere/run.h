@@ -59,7 +59,8 @@ int adh_run_push_row(adh_run *run, const adh_obs *row);
  * ADH_SUCCESS or ADH_ENOMEM. */
 int adh_run_push_profile(adh_run *run, const adh_state *s, int branch, int path);
 /* Moves from's turns and profiles into to (its own freed), leaving from
- * without profiles: a curve rule's own record handed to its drive's. */
+ * without profiles, and its start once it has rows: a curve rule's own
+ * record handed to its drive's. */
 void adh_run_take(adh_run *to, adh_run *from);
 /* The last unloading branch's summary (the deepest turn), or NULL. */
 const adh_turn_result *adh_run_main_turn(const adh_run *run);

@@ -191,6 +191,10 @@ int adh_run_turn(const adh_run *src, size_t t, size_t n, adh_run *out)
 
 void adh_run_take(adh_run *to, adh_run *from)
 {
+    /* the rule's own start (under a spring, outside the snap-in), not the
+     * drive's automatic elastic one, which no row of it has */
+    if (from->nrows)
+        to->start = from->start;
     memcpy(to->turns, from->turns, sizeof to->turns);
     to->nturns = from->nturns;
     for (size_t i = 0; i < to->nprofiles; i++)
