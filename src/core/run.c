@@ -31,12 +31,19 @@ int adh_run_separated(const adh_run *run, char *why, size_t whylen)
         if (t->path <= 0 || isfinite(t->jump_out_h0))
             continue;
         double a_end = NAN, h_end = NAN;
+        int touched = t->a_turn > 0;
         for (size_t j = run->nrows; j-- > 0;)
             if (run->rows[j].path == t->path) {
-                a_end = run->rows[j].a;
-                h_end = run->rows[j].h0;
-                break;
+                if (isnan(a_end)) {
+                    a_end = run->rows[j].a;
+                    h_end = run->rows[j].h0;
+                }
+                touched |= run->rows[j].a > 0;
             }
+        /* a turn above the jump-in (beside deeper ones): its branch was
+         * never in contact, so there was nothing to separate */
+        if (!touched)
+            continue;
         snprintf(why, whylen, "the surfaces never separated: unloading from the turn at h0 = %s ended at "
                  "h0 = %s still in contact (contact radius %s), so there is no jump-out and the "
                  "pull-off is only the lowest force seen", adh_qtext(t->h0, ADH_Q_LENGTH).s, adh_qtext(h_end, ADH_Q_LENGTH).s, adh_qtext(a_end, ADH_Q_LENGTH).s);

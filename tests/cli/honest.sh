@@ -90,6 +90,19 @@ check "... saying the surfaces never touched and what to change: $(head -c 200 "
 "$ADHERE" --batch -q --turn=3nm -N 100 --force --no-plot -o "$TMP/rx3" 2>"$TMP/rx3.err"
 check "relaxation --turn=3nm: never came into contact, not 'still in contact' ($(grep -v warning "$TMP/rx3.err" | head -c 160))" \
     sh -c "grep -q 'never came into contact' '$TMP/rx3.err' && ! grep -q 'still in contact' '$TMP/rx3.err' && grep -qx 'status	no contact' '$TMP/rx3/summary.tsv'"
+# A shallow turn the surfaces never reach beside a deep one (a Figure 5 set
+# of turns reaching above the jump-in): its unloading branch is never in
+# contact, so it has nothing to separate; the run said 'the surfaces never
+# separated: ... still in contact (contact radius 0 nm)', status not
+# separated and complete 0 of a run whose deep turn separated.
+"$ADHERE" --batch -q --turn=5nm,-2nm -N 100 --force --eps=10pm --no-plot -o "$TMP/rx52" 2>"$TMP/rx52.err"
+check "relaxation --turn=5nm,-2nm: no 'never separated' of the 5 nm turn ($(grep -v warning "$TMP/rx52.err" | head -c 160))" \
+    sh -c "! grep -q 'never separated' '$TMP/rx52.err' && ! grep -qx 'status	not separated' '$TMP/rx52/summary.tsv' && grep -qx 'complete	1' '$TMP/rx52/summary.tsv'"
+check "... its turns.tsv row of 5 nm says no jump-out (nan), the -2 nm row its own" \
+    awk -F'\t' '$1 + 0 == 5e-9 {s = ($6 == "nan")} $1 + 0 == -2e-9 {d = ($6 + 0 > 0)} END {exit !(s && d)}' "$TMP/rx52/turns.tsv"
+"$ADHERE" --batch -q --material=sls --turn=5nm,-2nm -N 100 --force --no-plot -o "$TMP/tm52" 2>"$TMP/tm52.err"
+check "... and so in physical time ($(grep -v warning "$TMP/tm52.err" | head -c 160))" \
+    sh -c "! grep -q 'never separated' '$TMP/tm52.err' && grep -qx 'complete	1' '$TMP/tm52/summary.tsv'"
 
 # --- issue 24, item 7: a file name with a newline breaks no table ---------
 nl='
