@@ -914,6 +914,37 @@ adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t 
     return d;
 }
 
+adh_outdir *adh_outdir_open_in(const char *path, const char *name, unsigned flags, char *why, size_t whylen)
+{
+    char sub[PATH_MAX + 64];
+    if (!path[0] || snprintf(sub, sizeof sub, "%s/%s", path, name) >= PATH_MAX) {
+        char shown[1024];
+        adh_outdir_escape(path, shown, sizeof shown);
+        snprintf(why, whylen, "cannot write into %.200s...: %s", shown, strerror(path[0] ? ENAMETOOLONG : ENOENT));
+        return NULL;
+    }
+    if (make_path(path, why, whylen) != 0)
+        return NULL;
+    int fd = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) {
+        open_failed(path, errno, why, whylen);
+        return NULL;
+    }
+    char shown[SHOWN_MAX];
+    adh_outdir_escape(sub, shown, sizeof shown);
+    adh_outdir *d = NULL;
+    if (mkdirat(fd, name, 0777) != 0 && errno != EEXIST)
+        snprintf(why, whylen, "cannot create directory %.3000s: %s", shown, strerror(errno));
+    else
+        d = open_at(fd, name, shown, flags, why, whylen);   /* a link there is refused, not followed */
+    close(fd);
+    if (d && prepare(d, 0, why, whylen) != 0) {
+        adh_outdir_close(d);
+        return NULL;
+    }
+    return d;
+}
+
 adh_outdir *adh_outdir_sub(adh_outdir *d, const char *name, char *why, size_t whylen)
 {
     char path[PATH_MAX + 64];

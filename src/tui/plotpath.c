@@ -16,8 +16,8 @@
 #include "plot/setup.h"
 #include "plot/plot.h"
 
-static int write_into(const adh_plot_setup *ps, const adh_run *run, const char *dir, int overwrite, char *msg,
-                      size_t msglen);
+static int write_into(const adh_plot_setup *ps, const adh_run *run, const char *dir, const char *sub,
+                      int overwrite, char *msg, size_t msglen);
 
 static void add_unique(size_t *idx, size_t *k, size_t cap, size_t i)
 {
@@ -84,7 +84,8 @@ static size_t path_profiles(const tui_sim *s, const adh_obs *rows, size_t n, con
     return np;
 }
 
-int tui_plot_path(const tui_sim *s, const char *dir, const volatile sig_atomic_t *cancel, char *msg, size_t msglen)
+int tui_plot_path(const tui_sim *s, const char *dir, const char *sub, const volatile sig_atomic_t *cancel, char *msg,
+                  size_t msglen)
 {
     size_t n;
     int stat = tui_sim_curve_mode(s);   /* static mode's curve, or physical time's path */
@@ -110,15 +111,16 @@ int tui_plot_path(const tui_sim *s, const char *dir, const volatile sig_atomic_t
         run.profiles = prof;
         run.nprofiles = run.profiles_cap = np;
     }
-    return write_into(&ps, &run, dir, s->cfg.output.overwrite, msg, msglen);
+    return write_into(&ps, &run, dir, sub, s->cfg.output.overwrite, msg, msglen);
 }
 
-static int write_into(const adh_plot_setup *ps, const adh_run *run, const char *dir, int overwrite, char *msg,
-                      size_t msglen)
+static int write_into(const adh_plot_setup *ps, const adh_run *run, const char *dir, const char *sub,
+                      int overwrite, char *msg, size_t msglen)
 {
     /* the files of an earlier run or an earlier p go first: what is in dir
-     * is this path's */
-    adh_outdir *od = adh_outdir_open(dir, overwrite ? ADH_OUTDIR_OVERWRITE : 0, msg, msglen);
+     * is this path's; sub, a name of adhere's own, is never a link's */
+    unsigned flags = overwrite ? ADH_OUTDIR_OVERWRITE : 0;
+    adh_outdir *od = sub ? adh_outdir_open_in(dir, sub, flags, msg, msglen) : adh_outdir_open(dir, flags, msg, msglen);
     if (!od)
         return -1;
     msg[0] = '\0';

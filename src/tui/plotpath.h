@@ -7,11 +7,14 @@
 
 #include "tui/sim.h"
 
-/* Writes the plots of the path so far into dir (created if missing, and
- * cleared of the files adhere wrote there before, as -o is), with the
+/* Writes the plots of the path so far into dir, or into dir/sub when sub
+ * is not NULL (a name of adhere's own: static, time; never entered through
+ * a link), created if missing, and cleared of the files adhere wrote there
+ * before, as -o is, with the
  * session's configuration as it is now (its plot choices too); cancel is
  * the session's signal flag (a wait for gnuplot ends when it is raised).
  * 0 with the writer's account of what it wrote in msg, or -1 with why. */
-int tui_plot_path(const tui_sim *s, const char *dir, const volatile sig_atomic_t *cancel, char *msg, size_t msglen);
+int tui_plot_path(const tui_sim *s, const char *dir, const char *sub, const volatile sig_atomic_t *cancel, char *msg,
+                  size_t msglen);
 
 #endif

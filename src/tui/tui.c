@@ -462,15 +462,16 @@ static void write_plots(tui *t)
     }
     /* the static curve's plots (and physical time's) beside the
      * relaxation's, not over them */
+    const char *base = config(t)->output.dir[0] ? config(t)->output.dir : "adhere-plots";
+    const char *sub = is_timed(t) ? "time" : is_curve(t) ? "static" : NULL;
     char dir[PATH_MAX + 16];
-    snprintf(dir, sizeof dir, "%s%s", config(t)->output.dir[0] ? config(t)->output.dir : "adhere-plots",
-             is_timed(t) ? "/time" : is_curve(t) ? "/static" : "");
+    snprintf(dir, sizeof dir, "%s%s%s", base, sub ? "/" : "", sub ? sub : "");
     if (!t->headless) {
         say(t, 0, "writing plots to %s/ through gnuplot...", dir);
         draw(t);
     }
     char msg[600];
-    if (tui_plot_path(&t->sim, dir, &got_signal, msg, sizeof msg) == 0)
+    if (tui_plot_path(&t->sim, base, sub, &got_signal, msg, sizeof msg) == 0)
         say(t, 0, "plots: %s", msg);   /* the writer names the files and the directory */
     else
         say(t, 1, "plots not written to %s/: %s", dir, msg);

@@ -197,4 +197,21 @@ took=$(($(date +%s) - t0))
 check "an -o path of ${#long} characters: exit 0 in ${took} s (got $rc: $(head -c 160 long.err))" \
     sh -c "[ $rc -eq 0 ] && [ $took -lt 20 ]"
 check "... force.png and the tables are there" sh -c '[ -s "$1/force.png" ] && [ -s "$1/force.tsv" ]' sh "$long"
+# --- the terminal interface's time/ and static/, links to elsewhere -------
+# p in physical time writes into DIR/time, in static mode into DIR/static:
+# names adhere gives, which it entered through a link as if the user had
+# named them, writing its plots (and removing its earlier ones) in the
+# directory the link pointed to.
+mkdir tv tv/victim-t tv/victim-s tv/o
+ln -s ../victim-t tv/o/time
+ln -s ../victim-s tv/o/static
+printf 'f\np\n:dump %s\n' "$TMP/tv/t.txt" >tv/t.keys
+printf 'm\nf\np\n:dump %s\n' "$TMP/tv/s.txt" >tv/s.keys
+"$ADHERE" --replay=tv/t.keys visco -N 100 --force -o tv/o --no-clock >/dev/null 2>&1
+check "p in physical time into -o DIR whose time/ is a link: refused, nothing written through it ($(tail -3 tv/t.txt | head -2 | tr -s ' '))" \
+    sh -c "[ -z \"\$(ls -A tv/victim-t)\" ] && grep -q 'time is a symbolic link' tv/t.txt"
+"$ADHERE" --replay=tv/s.keys -N 100 --force -o tv/o --no-clock >/dev/null 2>&1
+check "... and in static mode, DIR/static a link: refused, nothing written through it" \
+    sh -c "[ -z \"\$(ls -A tv/victim-s)\" ] && grep -q 'static is a symbolic link' tv/s.txt"
+check "... the links themselves left alone" sh -c "[ -L tv/o/time ] && [ -L tv/o/static ]"
 done_testing
