@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <wchar.h>
+#include <wctype.h>
 
 #include "adhere/models.h"
 #include "adhere/status.h"
@@ -32,8 +33,9 @@ static int clip_bottom = 1 << 30;
 /* Where a line too long for w columns is cut: before the last clause
  * (", ", "; ", " (") that ends within them, so a narrow terminal loses
  * the line's last words whole ("path 2 states, 0 to redo", not "...;
- * start 16.9") and never shows a number without its unit; w when no
- * clause ends in the second half of the line. */
+ * start 16.9") and never shows a number without its unit; when no clause
+ * ends in the second half of the line, before the last number there if w
+ * would cut it or its unit ("approaching at 1 µ" of 1 µm/s), else w. */
 static int clause_end(const wchar_t *s, int w)
 {
     for (int c = w - 1; c >= w / 2; c--)
@@ -41,6 +43,16 @@ static int clause_end(const wchar_t *s, int w)
             return c;
         else if (s[c] == L' ' && s[c + 1] == L'(' && c < w)
             return c;
+    for (int c = w - 1; c >= w / 2; c--)
+        if (s[c] == L' ' && (iswdigit((wint_t)s[c + 1]) || (s[c + 1] == L'-' && iswdigit((wint_t)s[c + 2])))) {
+            int e = c + 1;
+            while (s[e] && s[e] != L' ')   /* the number */
+                e++;
+            if (s[e] == L' ')              /* and the word after it, its unit */
+                for (e++; s[e] && s[e] != L' ' && s[e] != L',' && s[e] != L';'; e++)
+                    ;
+            return e > w ? c : w;
+        }
     return w;
 }
 

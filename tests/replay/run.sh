@@ -469,6 +469,15 @@ check "elastic in time: walked back from the end, no hysteresis before the path 
 check "elastic in time: no jump and no pull-off after three rows, the batch's two jumps and hysteresis at the end" \
     sh -c "grep -q 'jumps  0; in not yet' '$TE/time-elastic-3.txt' && grep -q 'jumps  2; in' '$TE/time-elastic-end.txt' && grep -q 'steps  none in time' '$TE/time-elastic-end.txt'"
 
+# A narrow screen cuts a line of the state at a clause, else before the
+# number whose unit would not fit: physical time's base line at 40 columns
+# said 'approaching at 1 µ' (the speed 1 µm/s cut in its unit).
+mkdir -p "$work/tnarrow"
+printf '3f\nb\n' >"$work/tnarrow/n.keys"
+(cd "$work/tnarrow" && "$bin" --replay=n.keys --screen=n.screen --no-clock --size=40x24 visco -N 100 --force </dev/null >/dev/null 2>&1)
+check "physical time at 40 columns: the base's speed whole or not at all ($(grep '^  base' "$work/tnarrow/n.screen"))" \
+    sh -c "grep -q '^  base ' '$work/tnarrow/n.screen' && ! grep '^  base ' '$work/tnarrow/n.screen' | grep -E 'at [0-9.]+' | grep -vqE 'm/s *\$'"
+
 # A signal ends a replay cleanly with 128 + its number. Sent once the first
 # step is solved (ADHERE_READY_FILE, see adhere(1)), not after a guessed sleep.
 mkdir -p "$work/sig"
