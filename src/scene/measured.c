@@ -159,7 +159,7 @@ static int column_of(const char *spec, char **hdr, int nh, int ncols, char *why,
     long k = strtol(spec, &end, 10);
     if (end != spec && !*end) {
         if (k < 1 || k > ncols) {
-            snprintf(why, whylen, "column %ld does not exist: the file has %d", k, ncols);
+            snprintf(why, whylen, "column %.40s does not exist: the file has %d", spec, ncols);   /* as written: strtol clamps */
             return -1;
         }
         return (int)k - 1;

@@ -92,6 +92,10 @@ int main(void)
     ok(rc != 0 && strstr(why, ":2: 2 columns where the file has 3"), "a short line: refused (%s)", why);
     rc = load("h0 (nm),F (nN),t (s)\n1,2,3\n", "4,2", &m, why, sizeof why);
     ok(rc != 0 && strstr(why, "column 4 does not exist: the file has 3"), "a column beyond the file: refused (%s)", why);
+    /* past a long's range: it named strtol's clamp, 9223372036854775807, a number never written */
+    rc = load("h0 (nm),F (nN),t (s)\n1,2,3\n", "99999999999999999999,2", &m, why, sizeof why);
+    ok(rc != 0 && strstr(why, "column 99999999999999999999 does not exist: the file has 3"),
+       "a column number past a long's range: refused, quoted as written (%s)", why);
     rc = load("1,2,3\n2,3,4\n", "h0,F", &m, why, sizeof why);
     ok(rc != 0 && strstr(why, "the file has no header: give its number"), "a name without a header: refused (%s)", why);
     rc = load("Separation (nm),Sep2 (nm),F (nN)\n1,2,3\n", "sep,F", &m, why, sizeof why);
