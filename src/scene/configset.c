@@ -371,8 +371,20 @@ static int set_momentum(adh_config *c, const key_def *k, const char *text, char 
 static int set_turns(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
     adh_protocol_settings *p = &c->spec.proto;
-    if (parse_list(text, ADH_Q_LENGTH, 1, p->turns, ADH_MAX_TURNS, &p->nturns, why, whylen) != 0)
+    double t[ADH_MAX_TURNS];
+    size_t n;
+    if (parse_list(text, ADH_Q_LENGTH, 1, t, ADH_MAX_TURNS, &n, why, whylen) != 0)
         return -1;
+    /* a turn given twice unloaded the same branch twice, listed twice in turns.tsv */
+    for (size_t i = 1; i < n; i++)
+        for (size_t j = 0; j < i; j++)
+            if (t[i] == t[j]) {
+                snprintf(why, whylen, "'%.200s' gives the turn %s twice: give each turning point once", text,
+                         adh_qtext(t[i], ADH_Q_LENGTH).s);
+                return -1;
+            }
+    memcpy(p->turns, t, n * sizeof *t);
+    p->nturns = n;
     p->unload = p->nturns > 0;
     return 0;
 }
