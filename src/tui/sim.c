@@ -895,6 +895,11 @@ static int field_text(const tui_sim *s, tui_param p, const char *text, char *out
         }
         memcpy(one, seg, n);
         one[n] = '\0';
+        if (strspn(one, " \t") == n) {   /* said of the text typed, not of its values in SI */
+            snprintf(why, whylen, "%s: '%.100s' has an empty element: separate values by single commas",
+                     tui_params[p].name, text);
+            return -1;
+        }
         field_value(s, p, one, si, sizeof si);
         o += (size_t)snprintf(out + o, o < len ? len - o : 0, "%s%s", seg == text ? "" : ",", si);
         if (!comma)

@@ -469,6 +469,20 @@ check "elastic in time: walked back from the end, no hysteresis before the path 
 check "elastic in time: no jump and no pull-off after three rows, the batch's two jumps and hysteresis at the end" \
     sh -c "grep -q 'jumps  0; in not yet' '$TE/time-elastic-3.txt' && grep -q 'jumps  2; in' '$TE/time-elastic-end.txt' && grep -q 'steps  none in time' '$TE/time-elastic-end.txt'"
 
+# A list typed with an empty element is refused quoting what was typed: it
+# quoted the bare numbers as converted to SI, '-1.0000000000000001e-09,,-2...'
+# for '-1,,-2', and '9.9999999999999995e-07,,1.9999999999999999e-06' for
+# the speeds '1,,2'.
+mkdir -p "$work/emptyel"
+printf ':set turn -1,,-2\n' >"$work/emptyel/t.keys"
+(cd "$work/emptyel" && "$bin" --replay=t.keys --no-clock -N 100 --force </dev/null >/dev/null 2>t.err)
+check "a turn list with an empty element is refused quoting it as typed ($(cat "$work/emptyel/t.err"))" \
+    grep -qF "t.keys:1: turn: '-1,,-2' has an empty element" "$work/emptyel/t.err"
+printf ':set speed 1,\n' >"$work/emptyel/v.keys"
+(cd "$work/emptyel" && "$bin" --replay=v.keys --no-clock visco -N 100 --force </dev/null >/dev/null 2>v.err)
+check "... and the speeds: '1,' ($(cat "$work/emptyel/v.err"))" \
+    grep -qF "v.keys:1: speed: '1,' has an empty element" "$work/emptyel/v.err"
+
 # A narrow screen cuts a line of the state at a clause, else before the
 # number whose unit would not fit: physical time's base line at 40 columns
 # said 'approaching at 1 µ' (the speed 1 µm/s cut in its unit).
