@@ -379,7 +379,7 @@ static int set_turns(adh_config *c, const key_def *k, const char *text, char *wh
     for (size_t i = 1; i < n; i++)
         for (size_t j = 0; j < i; j++)
             if (t[i] == t[j]) {
-                snprintf(why, whylen, "'%.200s' gives the turn %s twice: give each turning point once", text,
+                snprintf(why, whylen, "the turn %s is given twice: give each turning point once",
                          adh_qtext(t[i], ADH_Q_LENGTH).s);
                 return -1;
             }

@@ -54,9 +54,9 @@ refused "--turn: '-1nm,,-2nm' has an empty element" "$ADHERE" --plan --turn=-1nm
 refused "--profiles: '-1nm,' has an empty element" "$ADHERE" --plan --profiles=-1nm,
 # a turn given twice unloaded the same branch twice (twice the work) and
 # listed it twice in turns.tsv; -1nm and -0.001um are the same turn
-refused "--turn: '-1nm,-2nm,-0.001um' gives the turn -1 nm twice" "$ADHERE" --plan --turn=-1nm,-2nm,-0.001um
+refused "--turn: the turn -1 nm is given twice" "$ADHERE" --plan --turn=-1nm,-2nm,-0.001um
 printf '[protocol]\nturns = -1nm, -1nm\n' >"$TMP/twice.scene"
-refused "twice.scene:2: turns: '-1nm, -1nm' gives the turn -1 nm twice" "$ADHERE" --plan "$TMP/twice.scene"
+refused "twice.scene:2: turns: the turn -1 nm is given twice" "$ADHERE" --plan "$TMP/twice.scene"
 refused "--plan and --cost do not go together" "$ADHERE" --plan --cost
 refused "--replay drives the TUI .* --batch" "$ADHERE" --batch --replay="$TMP/x.keys"
 refused "--reference=static is for --mode=relax" "$ADHERE" --batch --mode=static --reference=static
