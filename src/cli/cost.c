@@ -480,6 +480,34 @@ static void cost_print(const cost_job *job, const cost_run *best, const cost_ref
     }
 }
 
+/* A flag that sets what --cost sets for each of its runs (N, eps, the
+ * kernel, a uniform grid) would be dropped in silence: 0, or -1 with the
+ * flag to give instead. */
+static int cost_replaced(const cli_options *cli, char *why, size_t whylen)
+{
+    for (size_t i = 0; i < cli->nset; i++) {
+        const cli_set *f = &cli->set[i];
+        if (strcmp(f->key, "grid.nodes") == 0 && strcmp(f->value, "auto") != 0)
+            snprintf(why, whylen, "--cost runs its grid over --cost-nodes: -N %.40s would be ignored; give "
+                     "--cost-nodes=%.40s", f->value, f->value);
+        else if (strcmp(f->key, "solver.eps") == 0)
+            snprintf(why, whylen, "--cost runs its grid over --cost-eps: --eps=%.40s would be ignored; give "
+                     "--cost-eps=%.40s", f->value, f->value);
+        else if (strcmp(f->key, "grid.kernel") == 0)
+            snprintf(why, whylen, "--cost runs both kernels, paper and ring: --kernel=%.40s would be ignored; "
+                     "leave it out", f->value);
+        else
+            continue;
+        return -1;
+    }
+    if (cli->cfg.spec.grid.use.graded) {
+        snprintf(why, whylen, "--cost runs uniform grids of --cost-nodes: grid = graded would be ignored; leave "
+                 "it out");
+        return -1;
+    }
+    return 0;
+}
+
 /* The runs the lists ask for, each checked as a run would be, and the
  * memory they take at once: 0, or the exit status with its message said. */
 static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, size_t *finest)
@@ -501,6 +529,10 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
         fprintf(stderr, "adhere: --cost measures one run's cycle over its grid of eps, N and kernels: a sweep (of %s, "
                 "from --sweep or the scene's [sweep]) would be ignored; leave it out, or run --cost for each value\n",
                 cfg->sweep.axis[0].name);
+        return CLI_EXIT_USAGE;
+    }
+    if (cost_replaced(cli, why, sizeof why) != 0) {
+        adh_say(why);
         return CLI_EXIT_USAGE;
     }
     for (size_t a = 0; a < nnodes; a++)
