@@ -500,6 +500,11 @@ static int cost_replaced(const cli_options *cli, char *why, size_t whylen)
             continue;
         return -1;
     }
+    if (cli->ndata) {   /* drawn over force.png, which --cost does not draw */
+        snprintf(why, whylen, "--cost draws no force curve: --data would be ignored; leave it out (--batch draws "
+                 "it over force.png)");
+        return -1;
+    }
     if (cli->cfg.spec.grid.use.graded) {
         snprintf(why, whylen, "--cost runs uniform grids of --cost-nodes: grid = graded would be ignored; leave "
                  "it out");

@@ -66,8 +66,11 @@ check "... and so is a scene's [sweep] (of sigma) ($(cat "$TMP/stderr"))" \
 # -N, --eps and --kernel are what --cost-nodes, --cost-eps and its two
 # kernels replace: given with --cost they were dropped in silence ('--cost
 # -N 100' ran its default 500,1000,2000); --grid=graded too (its runs are
-# uniform grids). Refused, exit 2, saying which flag to give.
-for f in "-N 100:--cost-nodes" "--eps=5pm:--cost-eps" "--kernel=ring:both kernels" "--grid=graded:uniform"; do
+# uniform grids), and --data, drawn over a force.png --cost does not draw.
+# Refused, exit 2, saying which flag to give.
+ADHERE_DATADIR_TREE=$(cd "$(dirname "$0")/../../share/adhere" && pwd)
+for f in "-N 100:--cost-nodes" "--eps=5pm:--cost-eps" "--kernel=ring:both kernels" "--grid=graded:uniform" \
+         "--data=$ADHERE_DATADIR_TREE/data/fig1-synthetic.tsv:draws no force curve"; do
     "$ADHERE" --cost -q --cost-nodes=100 --cost-eps=5pm "${f%%:*}" >"$TMP/stdout" 2>"$TMP/stderr"; rc=$?
     check "--cost with ${f%%:*} is refused with exit 2, naming ${f#*:} ($(cat "$TMP/stderr"))" \
         sh -c "[ $rc -eq 2 ] && grep -q -- '${f#*:}' '$TMP/stderr' && [ ! -s '$TMP/stdout' ]"
