@@ -103,7 +103,9 @@ double adh_plan_iterations(const adh_run_spec *spec)
         contact += c;
         free += fmax(0.0, (start - t) / step - c);
     }
-    return contact * per_contact + free * per_free;
+    /* each unloaded turn is held for the dwell's iterations, every one run */
+    double dwell = ps->unload ? (double)ps->nturns * (double)ps->dwell : 0.0;
+    return contact * per_contact + free * per_free + dwell;
 }
 
 static void plan_run(const adh_run_spec *rc, const adh_plan *p, adh_plan_run *r)
@@ -597,8 +599,9 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
                 p->unloading_branches ? " (more if the surfaces still touch there)" : "");
     if (p->elastic && !p->static_mode && !p->time_mode)   /* every run's: runs[] holds the first few */
         fprintf(f, "iterations: about %.2g (some 17 a step out of contact; in contact %.0f a step at sigma = %.3g "
-                   "and eps = 1 pm, more as eps^-0.72 for smaller eps)\n", p->iterations,
-                contact_iterations(p->runs[0].sigma), p->runs[0].sigma);
+                   "and eps = 1 pm, more as eps^-0.72 for smaller eps%s)\n", p->iterations,
+                contact_iterations(p->runs[0].sigma), p->runs[0].sigma,
+                p->unloading_branches && cfg->spec.proto.dwell ? "; the dwell's at each turn" : "");
     for (size_t i = 0; i < p->nstored; i++)
         fprintf(f, "stored: %s: %s\n", p->stored[i].what, p->stored[i].why);
     for (size_t i = 0; i < p->nskipped; i++)

@@ -146,6 +146,17 @@ done
 # every run and grid
 has_re fig7 '^time: about .* on [0-9]+ cores?, from a pilot of the study.s first and last drives'
 check "... and no other time line ($(grep -c 'time:' "$TMP/fig7.plan"))" [ "$(grep -c 'time:' "$TMP/fig7.plan")" -eq 1 ]
+# A dwell holds each turn for its iterations: the plan left them out, and
+# --dwell=200000 on a run of 2.2e4 iterations was planned at 3e4 (the run
+# took 2.2e5). Against a run of the same settings: within a factor 2.
+DW="-N 100 --force --eps=10pm --turn=-1nm --dwell=200000"
+# shellcheck disable=SC2086
+pit=$("$ADHERE" --plan $DW 2>/dev/null | sed -n 's/^iterations: about \([0-9.e+]*\) .*/\1/p')
+# shellcheck disable=SC2086
+"$ADHERE" --batch -q --no-plot $DW -o "$TMP/dwell" 2>/dev/null
+rit=$(awk -F'\t' '$1 == "iterations" {print $2}' "$TMP/dwell/summary.tsv")
+check "--plan --dwell=200000 counts the dwell's iterations: planned $pit, ran $rit (within a factor 2)" \
+    awk -v p="$pit" -v r="$rit" 'BEGIN {exit !(p > 0 && r > 0 && p < 2 * r && r < 2 * p)}'
 plan default --mode=static
 has_re default '^time: not estimated: the static curve'
 # The static curve's plan said what a relaxation does: an unloading branch
