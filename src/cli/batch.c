@@ -343,6 +343,8 @@ static void batch_write(batch_job *j, cli_tables *tables, const cli_tables *ref_
         { "static.tsv", j->want_ref, cli_tables_force, ref_tables },
         { "events.tsv", j->timed, cli_time_events, &j->tout },
     };
+    j->tout.scene = j->cfg->scene;
+    j->tout.partial = tables->partial ? (tables->note ? tables->note : "the run did not finish") : NULL;
     for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
         if (!tab[i].want)
             continue;

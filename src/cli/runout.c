@@ -50,7 +50,10 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
     if (data) {
         const char *names[3] = { "force.tsv", run->nturns ? "turns.tsv" : NULL, timed ? "events.tsv" : NULL };
         adh_outdir_writer writers[3] = { cli_tables_force, cli_tables_turns, cli_time_events };
-        const void *ctx[3] = { &t, &t, tout };
+        cli_time_out to = timed ? *tout : (cli_time_out){ 0 };   /* events.tsv says the scene and a stop too */
+        to.scene = cfg->scene;
+        to.partial = partial ? note : NULL;
+        const void *ctx[3] = { &t, &t, &to };
         for (int k = 0; k < 3; k++)
             if (names[k] && adh_outdir_write(dir, names[k], writers[k], ctx[k], why, sizeof why) != 0) {
                 adh_say(why);

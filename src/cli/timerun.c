@@ -185,6 +185,10 @@ int cli_time_events(FILE *f, const void *vo)
     fputs("# adhere " ADH_VERSION "\n# events in physical time, SI units (s, m, N, J): jump (a fold of the "
           "instantaneous problem or the spring's instability, before and after), contact formed or lost without "
           "a jump, pulloff (a force minimum on unloading), turn, unload (retraction begins), end\n", f);
+    if (o->scene && o->scene[0])
+        cli_tables_comment(f, "scene", o->scene);
+    if (o->partial)   /* the events of a run cut short, as its force.tsv says */
+        fprintf(f, "# PARTIAL: %s\n", o->partial);
     fputs("event\tpath\tt\tbase\th0\tF\ta\th0_after\tF_after\ta_after\tloss\n", f);
     for (size_t i = 0; i < o->nev; i++) {
         const adh_visco_event *e = &o->ev[i];

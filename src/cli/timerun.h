@@ -18,6 +18,8 @@ typedef struct cli_time_out {
     adh_visco_result res;
     adh_visco_event *ev;           /* its events (owned), nev of them */
     size_t nev;
+    const char *scene;             /* for events.tsv's comment lines: the scene, NULL none */
+    const char *partial;           /* why the run did not finish (# PARTIAL), NULL when it did */
 } cli_time_out;
 
 /* Runs spec (mode time) on grid g with kernel k, cb after every row, into

@@ -429,4 +429,14 @@ rc2=$?
 check "a 0.5 TPa solid from 0.6 nm runs ($rc: $(head -c 200 "$TMP/err")); from 0.4 nm into the same -o: exit 2 ($rc2), its tables untouched" \
     sh -c "[ $rc -eq 0 ] && [ $rc2 -eq 2 ] && cmp -s '$TMP/tkeep.summary' '$TMP/tkeep/summary.tsv' && [ -s '$TMP/tkeep/force.tsv' ]"
 
+# An interrupted run in physical time: events.tsv is a table of the run cut
+# short as force.tsv is, and said nothing of it (no # PARTIAL, no scene line)
+rm -f "$TMP/ready"
+ADHERE_READY_FILE="$TMP/ready" "$ADHERE" --batch -q visco -N 150 --force --no-plot -o "$TMP/tint" 2>/dev/null &
+pid=$!
+wait_phase "$TMP/ready" step "$pid" && kill -INT "$pid" 2>/dev/null
+wait "$pid"
+rc=$?
+check "an interrupted run in time: exit 130, force.tsv and events.tsv both say # PARTIAL and name the scene (exit $rc)" \
+    sh -c "[ $rc -eq 130 ] && grep -q '^# PARTIAL: interrupted' '$TMP/tint/force.tsv' && grep -q '^# PARTIAL: interrupted' '$TMP/tint/events.tsv' && grep -q '^# scene: .*visco.scene' '$TMP/tint/events.tsv'"
 done_testing
