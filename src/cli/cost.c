@@ -17,6 +17,7 @@
 #include "adhere/runner.h"
 #include "adhere/static.h"
 #include "adhere/grid.h"
+#include "adhere/models.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
 #include "cli/estimate.h"
@@ -55,6 +56,7 @@ typedef struct cost_run {
     double err[4];        /* against the most accurate run */
     double err_static[4]; /* pull-off, jump-in, hysteresis and a at the turn against the static curve */
     char reason[600];     /* why a run that stopped on an error stopped (summary.tsv's stop_reason); "" else */
+    int fault;            /* a finished run: 1 the surfaces never touched, 2 never separated (summary.tsv's words) */
 } cost_run;
 
 /* The static curve every eps should approach, solved on this thread while
@@ -139,6 +141,12 @@ static void *worker(void *arg)
         if (run.interrupted)
             cr->status = ADH_CONTINUE;
         measure(cr, &run);
+        if (cr->status == ADH_SUCCESS) {   /* a turn above the jump-in: its numbers are no cycle's */
+            adh_derived d;
+            char w[8];
+            adh_material_derive(&c.mat, &d);
+            cr->fault = !adh_run_touched(&run, d.h_star, w, sizeof w) ? 1 : !adh_run_separated(&run, w, sizeof w) ? 2 : 0;
+        }
         if (cr->status != ADH_CONTINUE && cr->status == run.status)
             cli_tables_stop_reason(&run, cr->reason, sizeof cr->reason);
         adh_run_free(&run);
@@ -220,6 +228,8 @@ static const char *cost_status(const cost_run *r)
         return "not_run";
     if (r->status == ADH_CONTINUE)
         return "interrupted";
+    if (r->status == ADH_SUCCESS && r->fault)
+        return r->fault == 1 ? "no contact" : "not separated";
     return r->status == ADH_SUCCESS && r->unconverged ? "unconverged" : adh_strerror(r->status);
 }
 
@@ -397,7 +407,7 @@ static const cost_run *cost_best(const cost_run *runs, size_t n)
     const cost_run *best = NULL;
     for (size_t i = 0; i < n; i++) {
         const cost_run *r = &runs[i];
-        if (!r->ran || r->status != ADH_SUCCESS)
+        if (!r->ran || r->status != ADH_SUCCESS || r->fault)
             continue;
         if (!best || r->nodes > best->nodes || (r->nodes == best->nodes && r->kernel > best->kernel) ||
             (r->nodes == best->nodes && r->kernel == best->kernel && r->eps < best->eps))
@@ -440,6 +450,9 @@ static const char *cost_note(const cost_run *r, char *buf, size_t len)
 {
     if (!r->ran)
         return "  (not run)";
+    if (r->status == ADH_SUCCESS && r->fault)
+        return r->fault == 1 ? "  (no contact: the surfaces never touched; put the turn below the jump-in)"
+                             : "  (not separated: an unloading branch ended in contact)";
     if (r->status == ADH_SUCCESS)
         return r->unconverged ? "  (some steps at the cap)" : "";
     if (r->status == ADH_CONTINUE)

@@ -75,4 +75,14 @@ for f in "-N 100:--cost-nodes" "--eps=5pm:--cost-eps" "--kernel=ring:both kernel
     check "--cost with ${f%%:*} is refused with exit 2, naming ${f#*:} ($(cat "$TMP/stderr"))" \
         sh -c "[ $rc -eq 2 ] && grep -q -- '${f#*:}' '$TMP/stderr' && [ ! -s '$TMP/stdout' ]"
 done
+# A turn above the jump-in: the surfaces never touch. --cost printed its
+# numbers as any run's (a pull-off that was the force at the turn, a
+# negative hysteresis, errors of -nan and inf) with status success; a
+# --batch run of it says no contact. Now its rows say so.
+"$ADHERE" --cost -q --no-plot -E 1GPa --turn=5nm --spacing=15nm --cost-nodes=60 --cost-eps=20pm -o "$TMP/nocontact" \
+    >"$TMP/stdout4" 2>&1
+check "--cost with a turn the surfaces never reach: every row says no contact ($(grep -c 'no contact' "$TMP/stdout4") of 2)" \
+    sh -c "[ \$(grep -c '(no contact' '$TMP/stdout4') -eq 2 ]"
+check "... and cost.tsv's status column too" \
+    sh -c "[ \$(grep -v '^#' '$TMP/nocontact/cost.tsv' | awk -F'\t' 'NR > 1 && \$21 == \"no contact\"' | wc -l) -eq 2 ]"
 done_testing
