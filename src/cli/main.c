@@ -44,6 +44,14 @@ static int stdout_done(void)
     return CLI_EXIT_OK;
 }
 
+/* A report that went to standard output (a study's sweep.tsv, --cost's,
+ * adhere fit's) was lost to a full disk with exit 0: a run that finished
+ * says so with exit 2, as --plan does; one that failed keeps its status. */
+static int reported(int rc)
+{
+    return rc == CLI_EXIT_OK ? stdout_done() : rc;
+}
+
 /* --plan: the plan, and for a study its shard, expected time, disk; a
  * study that would not fit is refused (exit 2) after its plan. */
 static int plan(cli_options *cli)
@@ -183,7 +191,7 @@ static int run(int argc, char **argv)
     /* A fit chooses its own grid, for the start values and the data */
     if (cli.action == CLI_ACT_FIT) {
         cli.cfg.spec.relax.cancel = cli_interrupt_flag();
-        return cli_fit_main(&cli);
+        return reported(cli_fit_main(&cli));
     }
     if (cli.action != CLI_ACT_COST) {   /* --cost replaces N and eps and checks each of its runs itself */
         int rc = checked(&cli.cfg, &cli, why, sizeof why);
@@ -211,11 +219,11 @@ static int run(int argc, char **argv)
     cli.cfg.spec.relax.cancel = cli_interrupt_flag();
     switch (cli.action) {
     case CLI_ACT_BATCH:
-        return cli_batch_main(&cli);
+        return reported(cli_batch_main(&cli));
     case CLI_ACT_PLAN:
         return plan(&cli);
     case CLI_ACT_COST:
-        return cli_cost_main(&cli);
+        return reported(cli_cost_main(&cli));
     default:
         return tui_main(&cli.cfg);
     }

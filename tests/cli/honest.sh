@@ -85,6 +85,18 @@ for a in --plan --help --list-keys --version; do
     check "$a to a full disk: exit 2 with a message (got $rc: $(cat "$TMP/err"))" \
         sh -c "[ $rc -eq 2 ] && grep -q 'cannot write to standard output' '$TMP/err'"
 done
+# a study's sweep.tsv, --cost's report and adhere fit's, on standard output
+# to a full disk, were lost with exit 0 and not a word
+D1=$(cd "$(dirname "$0")/../../share/adhere/data" && pwd)/fig1-synthetic.tsv
+for a in "--batch -N 100 --force --eps=10pm --turn=-1nm --no-plot --sweep=E=1GPa,2GPa" \
+         "--cost -E 1GPa --turn=-1nm --spacing=15nm --cost-nodes=60 --cost-eps=20pm --no-plot" \
+         "fit --data=$D1 fig1"; do
+    # shellcheck disable=SC2086
+    "$ADHERE" $a -q >/dev/full 2>"$TMP/err"
+    rc=$?
+    check "${a%% *} ... to a full disk: exit 2 with a message (got $rc: $(grep -v warning "$TMP/err" | head -c 200))" \
+        sh -c "[ $rc -eq 2 ] && grep -q 'cannot write to standard output' '$TMP/err'"
+done
 
 # --- issue 24, item 6: a turn the surfaces never reach --------------------
 "$ADHERE" --batch -q --mode=static --turn=3nm --no-plot -o "$TMP/st3" 2>"$TMP/st3.err"
