@@ -38,6 +38,27 @@ static int copied_before(const cli_options *cli, const adh_measured *m, size_t k
     return 0;
 }
 
+/* Whether a segment of m repeats an earlier one of the same direction
+ * point for point: the curve written twice in one file (appended again),
+ * which a fit would count twice as it would a copy of the file. */
+static int repeated_within(const adh_measured *m, char *why, size_t whylen)
+{
+    for (size_t k = 1; k < m->nseg; k++)
+        for (size_t j = 0; j < k; j++) {
+            const adh_measured_segment *a = &m->seg[j], *b = &m->seg[k];
+            if (a->dir != b->dir || a->n != b->n || a->n < 2 ||
+                memcmp(m->h0 + a->first, m->h0 + b->first, b->n * sizeof *m->h0) != 0 ||
+                memcmp(m->F + a->first, m->F + b->first, b->n * sizeof *m->F) != 0)
+                continue;
+            snprintf(why, whylen, "%s:%zu: lines %zu to %zu repeat lines %zu to %zu point for point (the curve "
+                     "written twice?): give each measured segment once (a fit would count its points twice)",
+                     m->path, m->line[b->first], m->line[b->first], m->line[b->first + b->n - 1], m->line[a->first],
+                     m->line[a->first + a->n - 1]);
+            return -1;
+        }
+    return 0;
+}
+
 int cli_data_load(cli_options *cli, char *why, size_t whylen)
 {
     static adh_measured measured[CLI_MAX_DATA];
@@ -48,7 +69,7 @@ int cli_data_load(cli_options *cli, char *why, size_t whylen)
     for (size_t i = 0; i < cli->ndata; i++) {
         if (named_before(cli, i, why, whylen) != 0 ||
             adh_measured_load(cli->data[i], cli->columns, &measured[i], why, whylen) != 0 ||
-            copied_before(cli, measured, i, why, whylen) != 0)
+            copied_before(cli, measured, i, why, whylen) != 0 || repeated_within(&measured[i], why, whylen) != 0)
             return -1;
         if (i > 0)
             measured[i - 1].next = &measured[i];

@@ -157,6 +157,14 @@ check "the same curve given twice: exit 2, both names, nothing written ($(cat "$
 rc=$?
 check "a copy of the curve: exit 2, both names, nothing written ($(cat "$TMP/e7"))" \
     sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --data: $TMP/copy.tsv holds the same 200 points as $DATA (a copy?)' '$TMP/e7' && [ ! -e '$TMP/twiceout' ]"
+# the curve written twice in one file (its points appended again): the fit
+# took four segments, each point twice, and its standard errors came out
+# sqrt(2) smaller (E 0.26 % where the curve gives 0.37 %)
+{ cat "$DATA"; grep -v '^#' "$DATA" | tail -n +2; } >"$TMP/written-twice.tsv"
+"$ADHERE" fit --data="$TMP/written-twice.tsv" -o "$TMP/writtenout" fig1 >/dev/null 2>"$TMP/e10"
+rc=$?
+check "a curve written twice in one file: exit 2, the lines named, nothing written ($(cat "$TMP/e10"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q '^adhere: $TMP/written-twice.tsv:203: .* repeat lines 3 to 102 point for point' '$TMP/e10' && [ ! -e '$TMP/writtenout' ]"
 # what the fit's model does not hold: a spring, a sweep (the shipped afm
 # scene sweeps the spring). Each was silently left out, and the fit ran.
 "$ADHERE" fit --data="$DATA" --spring=1N/m -o "$TMP/springout" fig1 >/dev/null 2>"$TMP/e8"
