@@ -18,7 +18,9 @@ adh_material adh_material_default(void)
 static int check(const char *name, double v, double lo, double hi, adh_quantity q,
                  char *why, size_t n)
 {
-    if (isfinite(v) && v >= lo && v <= hi)
+    /* the limits as the refusal writes them are allowed, within a relative
+     * 1e-12, the rounding of values with units: 100nm is 1.0000000000000001e-7 */
+    if (isfinite(v) && v >= lo * (1 - 1e-12) && v <= hi * (1 + 1e-12))
         return 0;
     if (why)
         snprintf(why, n, "%s = %s is out of range: allowed %s to %s", name, adh_qtext(v, q).s,

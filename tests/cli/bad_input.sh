@@ -23,6 +23,10 @@ bad "E (modulus) = -1 GPa is out of range: allowed 1 kPa to 10 TPa" -E -1GPa
 bad "A (Hamaker constant) = 0 J is out of range" -A 0
 bad "z0 (equilibrium separation) = -500 pm is out of range: allowed 1 pm to 100 nm" --z0=-0.5nm
 bad "R (effective radius) = 0 nm is out of range" -R 0
+# the limits themselves are allowed as the refusal writes them: -z 100nm
+# (100 x 1e-9 rounds to 1.0000000000000001e-7) was refused with 'allowed 1
+# pm to 100 nm'; it now gets as far as R's own check
+bad "R = 10 um is too small for this model" -z 100nm
 bad "N = 5 nodes is not allowed: use 10 to 20000 nodes" -N 5
 bad "'1e3' is not allowed: expected a whole number of nodes, 10 to 20000$" --nodes=1e3
 # every count names its range, not only the form ('expected a whole number'
