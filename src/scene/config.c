@@ -35,8 +35,10 @@ double adh_config_start(const adh_run_spec *s)
 {
     if (!isnan(s->proto.start))
         return s->proto.start;
-    /* a static curve under a spring starts outside its snap-in */
-    if (s->mode == ADH_MODE_STATIC && isfinite(s->time.spring))
+    /* a static curve under a spring starts outside its snap-in, and so
+     * does a path in physical time through it (the time rules' own start,
+     * adh_visco_auto_start: the plan and the screen say where it is) */
+    if ((s->mode == ADH_MODE_STATIC || s->mode == ADH_MODE_TIME) && isfinite(s->time.spring))
         return adh_visco_auto_start(&s->mat, s->time.spring, s->proto.step);
     return adh_protocol_auto_start(&s->mat, s->proto.step);
 }

@@ -554,7 +554,11 @@ void adh_plan_print(FILE *f, const adh_config *cfg, const adh_plan *p)
     const adh_plan_run *r0 = &p->runs[0];
     fmt_len(r0->start, a, sizeof a);
     fmt_len(r0->end, b, sizeof b);
-    if (p->time_mode)   /* the integrator's steps, not the drive's */
+    if (p->time_mode && isfinite(cfg->spec.time.spring))   /* the start is the sphere's, outside the snap-in */
+        fprintf(f, "loading branches: %zu%s (the sphere from %s, the base F/k further out, to %s%s)\n",
+                p->loading_branches, p->nruns > 1 ? " per run" : "", a,
+                p->stop_at_contact ? "the jump into contact, about " : "the base at ", b);
+    else if (p->time_mode)   /* the integrator's steps, not the drive's */
         fprintf(f, "loading branches: %zu%s (the base from %s to %s%s)\n", p->loading_branches,
                 p->nruns > 1 ? " per run" : "", a, p->stop_at_contact ? "the jump into contact, about " : "", b);
     else if (p->static_mode)   /* the continuation's points, not the drive's */
