@@ -807,6 +807,40 @@ static long study_rows(const adh_outdir *d)
     return n > 0 ? n - 1 : 0;   /* its header */
 }
 
+/* The results d holds as a study's run-K: its parent's manifest lists d
+ * (a run-K of d's device and inode) and the parent's runs.tsv holds that
+ * many rows adhere wrote; 0 otherwise. name gets the run-K. */
+static long study_run_rows(const adh_outdir *d, char *name, size_t len)
+{
+    struct stat me;
+    if (fstat(d->fd, &me) != 0)
+        return 0;
+    int pfd = openat(d->fd, "..", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    adh_outdir *p = pfd >= 0 ? outdir_new(pfd, 0, "..") : NULL;
+    if (!p)
+        return 0;
+    load(p);
+    long rows = 0;
+    for (size_t i = 0; i < p->n && !rows; i++) {
+        const entry *e = &p->e[i];
+        size_t l = strlen(e->name);
+        char run[32];
+        struct stat st;
+        if (l < 2 || e->name[l - 1] != '/' || e->dev != (unsigned long long)me.st_dev ||
+            e->ino != (unsigned long long)me.st_ino)
+            continue;
+        memcpy(run, e->name, l - 1);   /* name is shorter than run: entry's is 32 too */
+        run[l - 1] = '\0';
+        if (!is_run_dir(run) || fstatat(p->fd, run, &st, AT_SYMLINK_NOFOLLOW) != 0 || st.st_dev != me.st_dev ||
+            st.st_ino != me.st_ino)
+            continue;
+        rows = study_rows(p);
+        snprintf(name, len, "%s", run);
+    }
+    adh_outdir_close(p);
+    return rows;
+}
+
 /* Locked, the earlier run's files cleared (KEEP: their stale records),
  * foreign files refused, the manifest written: d is ready for this run's
  * files. */
@@ -826,6 +860,14 @@ static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
     if (rows > 0) {
         snprintf(why, whylen, "%.3000s holds a study's results (%ld run%s in runs.tsv), which a run there would "
                  "remove: give another -o, or --overwrite to replace them", d->path, rows, rows == 1 ? "" : "s");
+        return -1;
+    }
+    /* nor a run-K of one, whose tables sweep.tsv and runs.tsv still describe */
+    char run[32];
+    rows = depth || (d->flags & (ADH_OUTDIR_KEEP | ADH_OUTDIR_OVERWRITE)) ? 0 : study_run_rows(d, run, sizeof run);
+    if (rows > 0) {
+        snprintf(why, whylen, "%.3000s is %s of a study (%ld run%s in its runs.tsv), whose tables a run there would "
+                 "replace: give another -o, or --overwrite to replace them", d->path, run, rows, rows == 1 ? "" : "s");
         return -1;
     }
     /* refused before anything is removed; KEEP: an earlier study's files stay */

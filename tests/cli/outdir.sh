@@ -157,7 +157,8 @@ check "... the first finishes its own tables (exit $rc, summary says interrupted
     sh -c "[ $rc -eq 143 ] && grep -qx 'status	interrupted' both/summary.tsv"
 
 # --- a run into an earlier sweep's run-1 while a sweep is started into its parent
-# The run holds run-1's lock while gnuplot draws (a stand-in that never
+# The run (--overwrite: it replaces that study's run-1 on purpose) holds
+# run-1's lock while gnuplot draws (a stand-in that never
 # answers, and says when it started); the sweep must not empty run-1 under
 # it: it used to remove the run's tables and the directory itself.
 cat >gp-slow <<EOF
@@ -168,7 +169,7 @@ EOF
 chmod +x gp-slow
 "$ADHERE" $QUICK --no-plot sweep.scene -o nest 2>/dev/null
 rm -f nest.started
-GP_STARTED="$TMP/nest.started" ADHERE_GNUPLOT="$TMP/gp-slow" "$ADHERE" $QUICK --plots=force -o nest/run-1 \
+GP_STARTED="$TMP/nest.started" ADHERE_GNUPLOT="$TMP/gp-slow" "$ADHERE" $QUICK --plots=force --overwrite -o nest/run-1 \
     2>inner.err &
 pid=$!
 i=0
@@ -214,4 +215,16 @@ check "p in physical time into -o DIR whose time/ is a link: refused, nothing wr
 check "... and in static mode, DIR/static a link: refused, nothing written through it" \
     sh -c "[ -z \"\$(ls -A tv/victim-s)\" ] && grep -q 'static is a symbolic link' tv/s.txt"
 check "... the links themselves left alone" sh -c "[ -L tv/o/time ] && [ -L tv/o/static ]"
+# --- -o one run-K of a study -------------------------------------------------
+# The study's directory refuses another run while its runs.tsv holds
+# results; its run-K did not: a run into DIR/run-2 removed that run's
+# tables (sweep.tsv and runs.tsv still describing them) without a word.
+"$ADHERE" $QUICK --turn=-1nm --no-plot --sweep=E=1GPa,2GPa -o rk 2>/dev/null
+before=$(cat rk/run-2/force.tsv rk/run-2/summary.tsv | cksum)
+"$ADHERE" $QUICK --turn=-1nm --no-plot -o rk/run-2 2>rk.err; rc=$?
+after=$(cat rk/run-2/force.tsv rk/run-2/summary.tsv 2>/dev/null | cksum)
+check "a run into a study's run-2: exit 2, the run's tables kept ($(grep -v warning rk.err | head -c 200))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'run-2 of a study' rk.err && [ '$before' = '$after' ]"
+"$ADHERE" $QUICK --turn=-1nm --no-plot --overwrite -o rk/run-2 2>/dev/null; rc=$?
+check "... and with --overwrite it runs there (exit $rc)" sh -c "[ $rc -eq 0 ] && [ -s rk/run-2/force.tsv ]"
 done_testing
