@@ -548,6 +548,26 @@ check "a study past the file size limit is refused (exit $(cat "$TMP/rc"): $(cat
 "$ADHERE" --plan --mode=rigid --sweep=E=1GPa..2GPa,1000 --sweep=A=1e-20J..1e-19J,101 >/dev/null 2>"$TMP/err"
 check "more than 100000 runs are refused ($(cat "$TMP/err"))" sh -c "[ $? -eq 2 ] && grep -q 'more than 100000 runs' '$TMP/err'"
 
+# the Slurm examples read their flags (ADHERE_ARGS, ADHERE_MERGE_ARGS) as
+# quoted shell words, never as commands: eval ran a $(...) or a backtick in
+# them, and a user's ADHERE_ARGS (a task resubmitted by hand) is text
+printf '#!/bin/sh\nfor a in "$@"; do printf "[%%s]\\n" "$a"; done >"$ARGS_OUT"\n' >"$TMP/show-args"
+chmod +x "$TMP/show-args"
+evil="-N 100 --title=\$(touch '$TMP/ran1') '\`touch $TMP/ran2\`' \"a b\" 'it'\\''s' \$HOME"
+ARGS_OUT="$TMP/sb.args" SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=1 ADHERE="$TMP/show-args" ADHERE_SCENE=s.scene \
+    ADHERE_OUT="$TMP/sbq" ADHERE_ARGS="$evil" sh "${ADHERE_SRC:-.}/share/adhere/examples/study.sbatch" 2>"$TMP/err"
+printf '[--batch]\n[-q]\n[--jobs=1]\n[-N]\n[100]\n[--title=$(touch]\n[%s)]\n[`touch %s`]\n[a b]\n[it'"'"'s]\n[$HOME]\n[s.scene]\n[--shard]\n[1/1]\n[-o]\n[%s]\n' \
+    "$TMP/ran1" "$TMP/ran2" "$TMP/sbq/shard-1" >"$TMP/sb.want"
+check "study.sbatch: ADHERE_ARGS's \$(...) and backticks are text, not run; quotes group words ($(cat "$TMP/err" "$TMP/sb.args" 2>/dev/null | head -c 400))" \
+    sh -c "[ ! -e '$TMP/ran1' ] && [ ! -e '$TMP/ran2' ] && cmp -s '$TMP/sb.want' '$TMP/sb.args'"
+ARGS_OUT="$TMP/mg.args" ADHERE="$TMP/show-args" ADHERE_OUT="$TMP/sbq" ADHERE_MERGE_ARGS="$evil" \
+    sh "${ADHERE_SRC:-.}/share/adhere/examples/merge.sbatch" 2>"$TMP/err"
+check "merge.sbatch: ADHERE_MERGE_ARGS likewise ($(cat "$TMP/err" "$TMP/mg.args" 2>/dev/null | head -c 400))" \
+    sh -c "[ ! -e '$TMP/ran1' ] && [ ! -e '$TMP/ran2' ] && grep -qx '\[--title=\$(touch\]' '$TMP/mg.args' && grep -qx '\[a b\]' '$TMP/mg.args'"
+ADHERE="$TMP/show-args" ADHERE_OUT="$TMP/sbq" ADHERE_MERGE_ARGS="'open" ARGS_OUT="$TMP/mg2.args" \
+    sh "${ADHERE_SRC:-.}/share/adhere/examples/merge.sbatch" 2>"$TMP/err"
+check "an unclosed quote in ADHERE_MERGE_ARGS is refused, nothing run (exit $?: $(cat "$TMP/err"))" \
+    sh -c "[ ! -e '$TMP/mg2.args' ] && grep -q 'opened and never closed' '$TMP/err'"
 # a FIFO (no file adhere wrote) named runs.tsv in a shard's directory:
 # merge says what is wrong with it ("Invalid argument" said nothing),
 # exits 2, never opens the pipe's other end, and removes nothing
