@@ -41,8 +41,10 @@ int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *
 }
 
 /* A solid's start on grid g, kernel k (built here when NULL, for the
- * caller to free): 0, or 2 with why. */
-static int start_check(const adh_run_spec *spec, adh_grid **g, adh_kernel **k, char *why, size_t whylen)
+ * caller to free): 0, or 2 with why, its advice in the words cfg's keys
+ * were given in (a scene's start by its key and line, not --start). */
+static int start_check(const adh_config *cfg, const adh_run_spec *spec, adh_grid **g, adh_kernel **k, char *why,
+                       size_t whylen)
 {
     int st = ADH_ENOMEM;
     if (!*g)
@@ -59,7 +61,7 @@ static int start_check(const adh_run_spec *spec, adh_grid **g, adh_kernel **k, c
                  *g ? (*g)->n : spec->grid.use.nodes);
     if (st == ADH_SUCCESS)
         return 0;
-    cli_advice_append(why, whylen, fix);
+    cli_advice_append_cfg(cfg, CLI_ADVICE_RUN, why, whylen, fix);
     return 2;
 }
 
@@ -84,7 +86,7 @@ int cli_time_start_check(const adh_config *cfg, char *why, size_t whylen)
         }
         built = run;
         char msg[1024], which[256];
-        if ((rc = start_check(&run, &g, &k, msg, sizeof msg)) == 0)
+        if ((rc = start_check(cfg, &run, &g, &k, msg, sizeof msg)) == 0)
             continue;
         if (!cfg->sweep.naxes) {
             snprintf(why, whylen, "%s", msg);

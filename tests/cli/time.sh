@@ -423,6 +423,10 @@ bad "start = 300 pm is not allowed: a standard linear solid starts relaxed, at r
     --material=sls --tau=1ms --start=0.3nm
 bad "start = 400 pm is not allowed: .* there at rest its smallest gap is [0-9.]* pm; the nearest start that is, to within the step 50 pm: [0-9.]* pm (--start)" \
     --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200
+# a scene's start is named as the scene wrote it (the advice said --start,
+# a flag the scene's user never gave)
+printf '[material]\nmaterial = sls\nE0 = 0.5TPa\nEinf = 1TPa\n[protocol]\nstart = 0.4nm\nturns = -2nm\n[grid]\nnodes = 200\n' >"$TMP/start.scene"
+bad "start = 400 pm is not allowed: .*: [0-9.]* pm (start at $TMP/start.scene:6)$" "$TMP/start.scene"
 bad "sweep run 1 (E0 = 5e+11): start = 400 pm is not allowed" \
     --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200 --sweep=E0=0.5TPa,0.6TPa
 "$ADHERE" --batch -q --no-plot --material=sls --E0=0.5TPa --Einf=1TPa --start=0.6nm --turn=-2nm -N 200 -o "$TMP/tkeep" 2>"$TMP/err"
