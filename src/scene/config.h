@@ -250,7 +250,7 @@ void adh_config_note_given(adh_config *c, const char *key, const char *text, con
 void adh_config_note_origin(adh_config *c, const char *key, int line);
 /* Who set key: -2 nobody (its default), 0 a flag, else the scene's line as
  * noted. A key a [sweep] sets in each run ("protocol.speed" by sweep.speed)
- * is the sweep key's. */
+ * is the sweep key's, whoever set the key itself. */
 int adh_config_origin(const adh_config *c, const char *key);
 /* Of two keys that set one value (material.E and material.E0), the one
  * whose value holds: set last, a swept one after any other; a when nobody

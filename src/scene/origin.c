@@ -48,14 +48,16 @@ const char *adh_config_origin_last(const adh_config *c, const char *a, const cha
 
 int adh_config_origin(const adh_config *c, const char *key)
 {
-    for (size_t i = 0; i < c->norigin; i++)
-        if (!strcmp(c->origin[i].key, key))
-            return c->origin[i].line;
-    /* each run of a study takes the swept key's values */
+    /* each run of a study takes the swept key's values, over the key's
+     * own setting (as rank orders them): a scene's 'E = 0.05GPa' beside
+     * '[sweep] E = 1GPa, 2GPa' is not where a run's 1GPa was written */
     char swept[64];
     for (size_t i = 0; i < c->norigin; i++)
         if (!strncmp(c->origin[i].key, "sweep.", 6) && adh_sweep_key_of(c->origin[i].key + 6, swept, sizeof swept) == 0 &&
             !strcmp(swept, key))
+            return c->origin[i].line;
+    for (size_t i = 0; i < c->norigin; i++)
+        if (!strcmp(c->origin[i].key, key))
             return c->origin[i].line;
     return -2;
 }

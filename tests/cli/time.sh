@@ -31,6 +31,12 @@ bad "^adhere: Einf = 100MPa ($TMP/einf-e.scene:4) is below E = 300MPa (line 3): 
 bad "^adhere: Einf = 100MPa ($TMP/einf-e.scene:4) is below --modulus=1GPa: a standard" "$TMP/einf-e.scene" -E 1GPa
 printf '[material]\nmaterial = sls\nE = 0.5GPa\nE0 = 0.3GPa\nEinf = 0.1GPa\n' >"$TMP/einf-e0.scene"
 bad "^adhere: Einf = 100MPa ($TMP/einf-e0.scene:5) is below E0 = 300MPa (line 4): a standard" "$TMP/einf-e0.scene"
+# E set and swept: a run's E is the sweep's, named at the sweep's line (it
+# named line 3, whose 50MPa no run took), or the --sweep flag's
+printf '[material]\nmaterial = sls\nE = 0.05GPa\nEinf = 0.1GPa\n[sweep]\nE = 1GPa, 2GPa\n' >"$TMP/einf-sw.scene"
+bad "^adhere: sweep run 1 (E = 1e+09): Einf = 100MPa ($TMP/einf-sw.scene:4) is below E = 1GPa (line 6): a standard" "$TMP/einf-sw.scene"
+printf '[material]\nmaterial = sls\nE = 0.05GPa\nEinf = 0.1GPa\n' >"$TMP/einf-swf.scene"
+bad "^adhere: sweep run 1 (E = 1e+09): Einf = 100MPa ($TMP/einf-swf.scene:4) is below --modulus=1GPa: a standard" "$TMP/einf-swf.scene" --sweep=E=1GPa,2GPa
 bad "Einf = 2e+12 Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa" --material=sls --Einf=2TPa
 bad "tau = 0 s is not allowed" --material=sls --tau=0
 bad "tau = -1e-06 s is not allowed" --material=sls --tau=-1us

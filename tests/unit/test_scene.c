@@ -408,6 +408,15 @@ static void origins(void)
     ok(!strcmp(adh_config_origin_last(&c, "material.E", "material.E0"), "material.E"), "origins: E set again holds");
     ok(!strcmp(adh_config_origin_last(&c, "protocol.speed", "material.E"), "protocol.speed"),
        "origins: a swept key is set after any other (each run sets it)");
+    /* a key set and swept: each run's value is the sweep's, and so is the
+     * line named (it named the key's own line, whose value no run took) */
+    adh_config_default(&c);
+    rc = adh_scene_parse_string("[material]\nE = 0.05GPa\n[sweep]\nE = 1GPa, 2GPa\n", "s.scene", &c, why, sizeof why);
+    ok(rc == 0 && adh_config_origin(&c, "material.E") == 4, "origins: E set at line 2 and swept at line 4: the sweep's "
+       "line (%d; %s)", adh_config_origin(&c, "material.E"), rc ? why : "");
+    adh_config_note_origin(&c, "sweep.E", 0);
+    ok(adh_config_origin(&c, "material.E") == 0, "origins: swept by a flag (--sweep=E=...) after the scene's E: the "
+       "flag (%d)", adh_config_origin(&c, "material.E"));
 }
 
 int main(void)
