@@ -440,9 +440,10 @@ static int draw(adh_session *ses, const fb_fig *fg, const adh_run *run, const ch
     fb_frame fr = { INFINITY, -INFINITY, INFINITY, -INFINITY };
     /* a write that failed is said as one, with its reason, before "no
      * curve to draw" (which hid it) */
-    int err = write_data(fg, f, idx, &fr) != 0 ? errno : 0;
+    errno = 0;
+    int err = write_data(fg, f, idx, &fr) != 0 ? (errno ? errno : EIO) : 0;
     if (fclose(f) != 0 && !err)
-        err = errno;
+        err = errno ? errno : EIO;   /* never 0: a failure is never drawn from */
     if (err || !(fr.bhi >= fr.blo)) {
         if (err)
             snprintf(why, whylen, "cannot write %.3000s: %s", dat, strerror(err));

@@ -33,12 +33,13 @@ static void *count_realloc(void *p, size_t n)
 /* and its files: the fclose_fail_at-th fclose fails with ENOSPC (a full
  * disk, reported at the flush), open_memstream with ENOMEM when asked */
 static long fcloses, fclose_fail_at = -1;
+static int fclose_errno = ENOSPC;   /* 0: a failure that leaves errno unset */
 static int memstream_fails;
 static int count_fclose(FILE *f)
 {
     int rc = fclose(f);
     if (++fcloses == fclose_fail_at) {
-        errno = ENOSPC;
+        errno = fclose_errno;
         return EOF;
     }
     return rc;
@@ -149,6 +150,12 @@ static void io_faults(const adh_plot_setup *s, const adh_run *run, const char *w
     int rc = adh_forcebase_figure(&ses, s, run, "t", why, sizeof why);
     ok(rc == -1 && strstr(why, "cannot write ") && strstr(why, "forcebase.dat: No space left on device"),
        "%s, its data file's fclose failing: \"%s\"", what, why);
+    /* a failure with errno unset is still one (EIO), never drawn from */
+    fcloses = 0, fclose_fail_at = 1, fclose_errno = 0, errno = 0;
+    rc = adh_forcebase_figure(&ses, s, run, "t", why, sizeof why);
+    fclose_errno = ENOSPC;
+    ok(rc == -1 && strstr(why, "forcebase.dat: Input/output error"),
+       "%s, its data file's fclose failing with errno unset: \"%s\"", what, why);
     fclose_fail_at = -1, memstream_fails = 1, ses.nmade = 0;
     why[0] = '\0';
     rc = adh_forcebase_figure(&ses, s, run, "t", why, sizeof why);
