@@ -586,9 +586,10 @@ static int lock(adh_outdir *d, char *why, size_t whylen)
     return 0;
 }
 
-/* The directory name in dirfd, never through a link: d with no entries
- * yet, or NULL with why. */
-static adh_outdir *open_at(int dirfd, const char *name, const char *path, unsigned flags, char *why, size_t whylen)
+/* The directory name in dirfd opened without following a link: its
+ * descriptor, or -1 with why (path is name as the user reads it, hint what
+ * to do when it is a link). */
+static int open_nofollow(int dirfd, const char *name, const char *path, const char *hint, char *why, size_t whylen)
 {
     int fd = openat(dirfd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
     if (fd < 0) {
@@ -596,12 +597,22 @@ static adh_outdir *open_at(int dirfd, const char *name, const char *path, unsign
         struct stat st;
         int link = e == ELOOP || (fstatat(dirfd, name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISLNK(st.st_mode));
         if (link)
-            snprintf(why, whylen, "%.3000s is a symbolic link: adhere writes through no link; remove it, or "
-                     "choose another -o", path);
+            snprintf(why, whylen, "%.3000s is a symbolic link: adhere writes through no link; remove it, or %s",
+                     path, hint);
         else
             snprintf(why, whylen, "cannot open directory %.3000s: %s", path, strerror(e));
-        return NULL;
     }
+    return fd;
+}
+
+/* The directory name in dirfd, never through a link: d with no entries
+ * yet, or NULL with why. */
+static adh_outdir *open_at(int dirfd, const char *name, const char *path, const char *hint, unsigned flags,
+                           char *why, size_t whylen)
+{
+    int fd = open_nofollow(dirfd, name, path, hint, why, whylen);
+    if (fd < 0)
+        return NULL;
     adh_outdir *d = outdir_new(fd, flags, path);
     if (!d)
         snprintf(why, whylen, "out of memory");
@@ -616,7 +627,7 @@ static int empty_subdir(adh_outdir *d, const char *name, unsigned flags, char *w
 {
     char path[PATH_MAX + 64];
     snprintf(path, sizeof path, "%.4000s/%.40s", d->path, name);
-    adh_outdir *s = open_at(d->fd, name, path, flags, why, whylen);
+    adh_outdir *s = open_at(d->fd, name, path, "choose another -o", flags, why, whylen);
     if (!s)
         return -1;
     /* a run writing into DIR/run-K itself (-o DIR/run-K) holds its lock */
@@ -956,30 +967,58 @@ adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t 
     return d;
 }
 
+/* name's components below dirfd (which is closed), each made if missing
+ * and entered without following a link: the last one's d, or NULL with why. */
+static adh_outdir *walk_in(int dirfd, const char *path, const char *name, unsigned flags, char *why, size_t whylen)
+{
+    const char *hint = path ? "choose another -o" : "give -o DIR to write elsewhere";
+    char shown_raw[PATH_MAX + 64], comp[PATH_MAX];
+    size_t at = path ? (size_t)snprintf(shown_raw, sizeof shown_raw, "%s/", path) : 0;
+    for (const char *c = name;;) {
+        size_t n = strcspn(c, "/");   /* name is shorter than PATH_MAX */
+        memcpy(comp, c, n < sizeof comp ? n : sizeof comp - 1);
+        comp[n < sizeof comp ? n : sizeof comp - 1] = '\0';
+        at += (size_t)snprintf(shown_raw + at, sizeof shown_raw - at, "%s%s", at && shown_raw[at - 1] != '/' ? "/" : "",
+                               comp);
+        char shown[SHOWN_MAX];
+        adh_outdir_escape(shown_raw, shown, sizeof shown);
+        if (mkdirat(dirfd, comp, 0777) != 0 && errno != EEXIST) {
+            snprintf(why, whylen, "cannot create directory %.3000s: %s", shown, strerror(errno));
+            close(dirfd);
+            return NULL;
+        }
+        if (!c[n]) {   /* a link there is refused, not followed */
+            adh_outdir *d = open_at(dirfd, comp, shown, hint, flags, why, whylen);
+            close(dirfd);
+            return d;
+        }
+        int fd = open_nofollow(dirfd, comp, shown, hint, why, whylen);
+        close(dirfd);
+        if (fd < 0)
+            return NULL;
+        dirfd = fd;
+        c += n + 1;
+    }
+}
+
 adh_outdir *adh_outdir_open_in(const char *path, const char *name, unsigned flags, char *why, size_t whylen)
 {
     char sub[PATH_MAX + 64];
-    if (!path[0] || snprintf(sub, sizeof sub, "%s/%s", path, name) >= PATH_MAX) {
+    int n = path ? snprintf(sub, sizeof sub, "%s/%s", path, name) : snprintf(sub, sizeof sub, "%s", name);
+    if ((path && !path[0]) || n >= PATH_MAX) {
         char shown[1024];
-        adh_outdir_escape(path, shown, sizeof shown);
-        snprintf(why, whylen, "cannot write into %.200s...: %s", shown, strerror(path[0] ? ENAMETOOLONG : ENOENT));
+        adh_outdir_escape(path ? path : name, shown, sizeof shown);
+        snprintf(why, whylen, "cannot write into %.200s...: %s", shown, strerror(n >= PATH_MAX ? ENAMETOOLONG : ENOENT));
         return NULL;
     }
-    if (make_path(path, why, whylen) != 0)
+    if (path && make_path(path, why, whylen) != 0)
         return NULL;
-    int fd = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    int fd = open(path ? path : ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) {
-        open_failed(path, errno, why, whylen);
+        open_failed(path ? path : ".", errno, why, whylen);
         return NULL;
     }
-    char shown[SHOWN_MAX];
-    adh_outdir_escape(sub, shown, sizeof shown);
-    adh_outdir *d = NULL;
-    if (mkdirat(fd, name, 0777) != 0 && errno != EEXIST)
-        snprintf(why, whylen, "cannot create directory %.3000s: %s", shown, strerror(errno));
-    else
-        d = open_at(fd, name, shown, flags, why, whylen);   /* a link there is refused, not followed */
-    close(fd);
+    adh_outdir *d = walk_in(fd, path, name, flags, why, whylen);
     if (d && prepare(d, 0, why, whylen) != 0) {
         adh_outdir_close(d);
         return NULL;
@@ -1004,7 +1043,8 @@ adh_outdir *adh_outdir_sub(adh_outdir *d, const char *name, char *why, size_t wh
             return NULL;
         }
     }
-    adh_outdir *s = open_at(d->fd, name, path, d->flags & ~(unsigned)ADH_OUTDIR_KEEP, why, whylen);
+    adh_outdir *s = open_at(d->fd, name, path, "choose another -o", d->flags & ~(unsigned)ADH_OUTDIR_KEEP, why,
+                            whylen);
     if (s && prepare(s, 1, why, whylen) != 0) {
         adh_outdir_close(s);
         return NULL;

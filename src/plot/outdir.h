@@ -34,10 +34,11 @@ enum { ADH_OUTDIR_OVERWRITE = 1,
 adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen);
 
 /* path/name, a directory adhere names inside the one the user named (the
- * terminal interface's static/ and time/): path is followed as
- * adh_outdir_open follows it, name is made there and never entered through
- * a link; then opened as adh_outdir_open does, path itself left as it is.
- * NULL with why. */
+ * terminal interface's static/ and time/), or name in the working
+ * directory when path is NULL (its adhere-plots, adhere-plots/static):
+ * path is followed as adh_outdir_open follows it, each component of name
+ * is made there and never entered through a link; then opened as
+ * adh_outdir_open does, path itself left as it is. NULL with why. */
 adh_outdir *adh_outdir_open_in(const char *path, const char *name, unsigned flags, char *why, size_t whylen);
 
 /* The subdirectory name (a sweep's run-K) of d: made with mkdirat, opened

@@ -9,7 +9,8 @@
 
 /* Writes the plots of the path so far into dir, or into dir/sub when sub
  * is not NULL (a name of adhere's own: static, time; never entered through
- * a link), created if missing, and cleared of the files adhere wrote there
+ * a link), or into sub in the working directory when dir is NULL
+ * (adhere-plots, adhere-plots/static: never through a link), created if missing, and cleared of the files adhere wrote there
  * before, as -o is, with the
  * session's configuration as it is now (its plot choices too); cancel is
  * the session's signal flag (a wait for gnuplot ends when it is raised).

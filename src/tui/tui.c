@@ -462,10 +462,15 @@ static void write_plots(tui *t)
     }
     /* the static curve's plots (and physical time's) beside the
      * relaxation's, not over them */
-    const char *base = config(t)->output.dir[0] ? config(t)->output.dir : "adhere-plots";
-    const char *sub = is_timed(t) ? "time" : is_curve(t) ? "static" : NULL;
-    char dir[PATH_MAX + 16];
-    snprintf(dir, sizeof dir, "%s%s%s", base, sub ? "/" : "", sub ? sub : "");
+    const char *base = config(t)->output.dir[0] ? config(t)->output.dir : NULL;
+    const char *kind = is_timed(t) ? "time" : is_curve(t) ? "static" : NULL;
+    /* ./adhere-plots is a name adhere gives, as static/ and time/ are:
+     * never entered through a link */
+    char own[32];
+    snprintf(own, sizeof own, "adhere-plots%s%s", kind ? "/" : "", kind ? kind : "");
+    const char *sub = base ? kind : own;
+    char dir[PATH_MAX + 48];
+    snprintf(dir, sizeof dir, "%s%s%s", base ? base : "", base && sub ? "/" : "", sub ? sub : "");
     if (!t->headless) {
         say(t, 0, "writing plots to %s/ through gnuplot...", dir);
         draw(t);

@@ -227,4 +227,22 @@ check "a run into a study's run-2: exit 2, the run's tables kept ($(grep -v warn
     sh -c "[ $rc -eq 2 ] && grep -q 'run-2 of a study' rk.err && [ '$before' = '$after' ]"
 "$ADHERE" $QUICK --turn=-1nm --no-plot --overwrite -o rk/run-2 2>/dev/null; rc=$?
 check "... and with --overwrite it runs there (exit $rc)" sh -c "[ $rc -eq 0 ] && [ -s rk/run-2/force.tsv ]"
+# --- the terminal interface's ./adhere-plots, a link ------------------------
+# p without -o writes into ./adhere-plots, a name adhere gives as it gives
+# time/ and static/ there; a link of that name took the plots into the
+# directory it pointed to (and lost the files of an earlier p there), in
+# relaxation and in static mode.
+mkdir tw tw/victim tw/victim-s tw/cwd tw/cwd-s
+ln -s ../victim tw/cwd/adhere-plots
+ln -s ../victim-s tw/cwd-s/adhere-plots
+printf 'f\np\n:dump %s\n' "$TMP/tw/r.txt" >tw/r.keys
+printf 'm\nf\np\n:dump %s\n' "$TMP/tw/s.txt" >tw/s.keys
+(cd tw/cwd && "$ADHERE" --replay=../r.keys -N 100 --force --no-clock >/dev/null 2>&1)
+rc=$?
+check "p without -o, ./adhere-plots a link: refused, nothing written through it, exit 0 ($rc: $(grep -A1 'plots not' tw/r.txt | tr -s ' ' | tr '\n' ' '))" \
+    sh -c "[ $rc -eq 0 ] && [ -z \"\$(ls -A tw/victim)\" ] && grep -A1 'plots not written' tw/r.txt | tr '\n' ' ' | tr -s ' ' | grep -q 'adhere-plots is a symbolic link: .*give -o DIR to write elsewhere'"
+check "... the link left alone" [ -L tw/cwd/adhere-plots ]
+(cd tw/cwd-s && "$ADHERE" --replay=../s.keys -N 100 --force --no-clock >/dev/null 2>&1)
+check "... and in static mode (adhere-plots/static): refused, nothing written through it" \
+    sh -c "[ -z \"\$(ls -A tw/victim-s)\" ] && grep -A1 'plots not written' tw/s.txt | tr '\n' ' ' | tr -s ' ' | grep -q 'adhere-plots is a symbolic link'"
 done_testing
