@@ -71,6 +71,37 @@ static int parse_free(const char *text, unsigned *mask, char *why, size_t whylen
     return 0;
 }
 
+/* A drive flag the fit's model does not use would be dropped in silence:
+ * the turn and the start are the fit's own in both models (the model's
+ * curve runs from where the force is negligible to a step below the data),
+ * the relaxation unloads at its turn without a dwell, and the static curve
+ * has neither a dwell nor a relaxation for --eps to end. 0, or -1 with the
+ * flag and why. The scene's keys stay: they set the runs it also opens. */
+static int fit_ignored(const cli_options *cli, int relax, char *why, size_t whylen)
+{
+    for (size_t i = 0; i < cli->nset; i++) {
+        const cli_set *f = &cli->set[i];
+        if (strcmp(f->key, "protocol.turns") == 0)
+            snprintf(why, whylen, "adhere fit takes its turn from the data, a step below the deepest position in "
+                     "--data: --turn=%.40s would be ignored; leave it out", f->value);
+        else if (strcmp(f->key, "protocol.start") == 0 && strcmp(f->value, "auto") != 0)
+            snprintf(why, whylen, "adhere fit starts its model's curve where the force is negligible, above the "
+                     "highest position in --data: --start=%.40s would be ignored; leave it out", f->value);
+        else if (strcmp(f->key, "protocol.dwell") == 0 && cli->cfg.spec.proto.dwell)
+            snprintf(why, whylen, relax ? "adhere fit --model=relax unloads at its turn without a dwell: "
+                     "--dwell=%.40s would be ignored; leave it out" : "adhere fit's static model is the static "
+                     "curve, with no turn to dwell at: --dwell=%.40s would be ignored; leave it out", f->value);
+        else if (strcmp(f->key, "solver.eps") == 0 && !relax)
+            snprintf(why, whylen, "adhere fit's static model solves each point of the static curve to its own "
+                     "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out, "
+                     "or give --model=relax", f->value);
+        else
+            continue;
+        return -1;
+    }
+    return 0;
+}
+
 /* The fit's settings from the line and the scene: the start values, the
  * free parameters, the model and its solver. */
 static int settings(fit_run *fr, char *why, size_t whylen)
@@ -86,6 +117,8 @@ static int settings(fit_run *fr, char *why, size_t whylen)
         return -1;
     }
     fr->fs.model.kind = strcmp(model, "relax") == 0 ? ADH_FIT_MODEL_RELAX : ADH_FIT_MODEL_STATIC;
+    if (fit_ignored(cli, fr->fs.model.kind == ADH_FIT_MODEL_RELAX, why, whylen) != 0)
+        return -1;
     fr->fs.model.relax = cfg->spec.relax;
     fr->fs.model.step = cfg->spec.proto.step;
     fr->fs.start = cfg->spec.mat;

@@ -181,6 +181,22 @@ check "a sweep with adhere fit (the afm scene's, --sweep): exit 2, naming the sw
 rc=$?
 check "--mode=time with adhere fit: exit 2, naming the fit's models ($(cat "$TMP/e11"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'mode = time would be ignored' '$TMP/e11'"
+# the drive's flags a fit's model does not use were dropped in silence:
+# the turn is the fit's own (a step below the deepest position in --data)
+# and so is the start (where the force is negligible, above the data) in
+# both models; the static curve has no turn to dwell at and no relaxation
+# for --eps to end; the relaxation unloads at its turn without a dwell but
+# ends each step by --eps (the --model=relax fit below gives it)
+for m in static relax; do
+    for f in --turn=-3nm --dwell=10 --start=20nm --eps=2pm; do
+        [ $m = relax ] && [ $f = --eps=2pm ] && continue
+        name=${f%%=*}
+        "$ADHERE" fit --model=$m --data="$DATA" $f -o "$TMP/ignoredout" fig1 >/dev/null 2>"$TMP/e23"
+        rc=$?
+        check "$f with adhere fit --model=$m: exit 2, naming it and why, nothing written ($rc: $(cat "$TMP/e23"))" \
+            sh -c "[ $rc -eq 2 ] && grep -q -- '$f would be ignored' '$TMP/e23' && grep -q 'leave it out' '$TMP/e23' && [ ! -e '$TMP/ignoredout' ]"
+    done
+done
 # the visco scene names no mode: its solid (material = sls), or with
 # --material=elastic its speed, puts it in physical time; the refusal
 # said "mode = time would be ignored; leave it out"
