@@ -7,6 +7,7 @@
 #include <math.h>
 #include <pthread.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -77,6 +78,7 @@ typedef struct cost_job {
     const adh_config *cfg;
     cost_run *runs;
     size_t n, next, done;
+    size_t base;              /* the smallest N, whose grid a given spacing is (cost_spacing) */
     double t0;                /* when the runs began */
     pthread_mutex_t lock;
     const cost_ref *ref;      /* the static curve, once solved */
@@ -98,15 +100,27 @@ static void measure(cost_run *cr, const adh_run *run)
     cr->hysteresis = adh_cycle_run_hysteresis(run);
 }
 
-/* Run 0's spec on the uniform grid of n nodes in mode, with the operator
- * that mode takes there unless one was given (adh_config_storage_for): the
- * cost of what a run of that N costs by default. */
-static adh_run_spec cost_spec(const adh_config *cfg, size_t n, adh_mode mode)
+/* The spacing of the grid of n nodes when the coarsest, of base nodes, has
+ * the spacing s (--spacing): every N covers its radius, so a larger N
+ * refines the same domain and the largest is the reference, a finer grid,
+ * not a wider one; each grid as fine as s or finer. Without s (NAN) each
+ * N's default grid, which keeps the radius already. */
+static double cost_spacing(double s, size_t n, size_t base)
+{
+    return isnan(s) || n == base ? s : s * (double)base / (double)n;
+}
+
+/* Run 0's spec on the uniform grid of n nodes in mode (of the radius of
+ * the coarsest, of base nodes), with the operator that mode takes there
+ * unless one was given (adh_config_storage_for): the cost of what a run of
+ * that N costs by default. */
+static adh_run_spec cost_spec(const adh_config *cfg, size_t n, size_t base, adh_mode mode)
 {
     adh_run_spec c;
     adh_config_sweep_run(cfg, 0, &c);
     c.mode = mode;
     c.grid.use.nodes = n;
+    c.grid.use.spacing = cost_spacing(c.grid.use.spacing, n, base);
     c.grid.use.graded = 0;
     c.grid.chosen = 0;
     c.grid.chosen_h2 = 0;
@@ -125,7 +139,7 @@ static void *worker(void *arg)
             break;
         cost_run *cr = &job->runs[i];
         cr->ran = 1;
-        adh_run_spec c = cost_spec(job->cfg, cr->nodes, ADH_MODE_RELAX);
+        adh_run_spec c = cost_spec(job->cfg, cr->nodes, job->base, ADH_MODE_RELAX);
         c.relax.eps = cr->eps;
         c.grid.use.kernel = cr->kernel;
         double t0 = adh_clock_seconds();
@@ -337,12 +351,9 @@ static int cost_jobs(void)
  * each (each run's program share counted too: a margin), beside the static
  * curve's kernel and solver at the finest N, and every thread its BLAS
  * buffer (under ulimit -v). 0, or -1 with why. */
-static int cost_budget(const adh_config *cfg, const size_t *nodes, size_t nnodes, char *why, size_t whylen)
+static int cost_budget(const adh_config *cfg, size_t n, size_t base, char *why, size_t whylen)
 {
-    size_t n = 0;
-    for (size_t a = 0; a < nnodes; a++)
-        n = nodes[a] > n ? nodes[a] : n;
-    adh_run_spec sc = cost_spec(cfg, n, ADH_MODE_STATIC), rc = cost_spec(cfg, n, ADH_MODE_RELAX);
+    adh_run_spec sc = cost_spec(cfg, n, base, ADH_MODE_STATIC), rc = cost_spec(cfg, n, base, ADH_MODE_RELAX);
     double jobs = cost_jobs();
     double need = adh_budget_bytes(&sc, 1) + jobs * adh_budget_bytes(&rc, 0), have;
     /* the workers and this thread, which solves the static curve meanwhile */
@@ -364,10 +375,10 @@ static int by_cost(const void *a, const void *b)
 }
 
 
-static void cost_static_reference(const adh_config *cfg, size_t finest, cost_ref *ref)
+static void cost_static_reference(const adh_config *cfg, size_t finest, size_t base, cost_ref *ref)
 {
     memset(ref, 0, sizeof *ref);
-    ref->spec = cost_spec(cfg, finest, ADH_MODE_STATIC);
+    ref->spec = cost_spec(cfg, finest, base, ADH_MODE_STATIC);
     ref->spec.grid.use.kernel = ADH_KERNEL_RING;
     adh_grid_report gr;
     adh_grid_check(&ref->spec.mat, ADH_GRID_STATIC, finest, adh_config_spacing(&ref->spec), &gr);
@@ -528,7 +539,7 @@ static int cost_replaced(const cli_options *cli, char *why, size_t whylen)
 
 /* The runs the lists ask for, each checked as a run would be, and the
  * memory they take at once: 0, or the exit status with its message said. */
-static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, size_t *finest)
+static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, size_t *finest, size_t *base)
 {
     const adh_config *cfg = &cli->cfg;
     char why[1024];
@@ -553,11 +564,18 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
         adh_say(why);
         return CLI_EXIT_USAGE;
     }
+    *finest = 0;
+    *base = SIZE_MAX;
+    for (size_t a = 0; a < nnodes; a++) {
+        *finest = nodes[a] > *finest ? nodes[a] : *finest;
+        *base = nodes[a] < *base ? nodes[a] : *base;
+    }
     for (size_t a = 0; a < nnodes; a++)
         for (size_t e = 0; e < neps; e++) {
             static adh_config c;   /* large: not on the stack */
             c = *cfg;
             c.spec.grid.use.nodes = nodes[a];
+            c.spec.grid.use.spacing = cost_spacing(cfg->spec.grid.use.spacing, nodes[a], *base);
             c.spec.relax.eps = eps[e];
             c.spec.grid.force = 1; /* coarse grids are what the report measures */
             if (cli_options_validate(&c, why, sizeof why) != 0) {
@@ -565,7 +583,7 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
                 return CLI_EXIT_USAGE;
             }
         }
-    if (cost_budget(cfg, nodes, nnodes, why, sizeof why) != 0) {
+    if (cost_budget(cfg, *finest, *base, why, sizeof why) != 0) {
         adh_say(why);
         return CLI_EXIT_USAGE;
     }
@@ -575,9 +593,7 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
         adh_sayf("out of memory");
         return CLI_EXIT_SOLVER;
     }
-    *finest = 0;
     for (size_t a = 0; a < nnodes; a++) {
-        *finest = nodes[a] > *finest ? nodes[a] : *finest;
         for (int k = 0; k < 2; k++)
             for (size_t e = 0; e < neps; e++)
                 runs[m++] = (cost_run){ .eps = eps[e], .nodes = nodes[a], .kernel = (adh_kernel_type)k };
@@ -622,7 +638,8 @@ static void cost_done(const cost_job *job, const char *out)
  * takes hours): each run's expected iterations (adh_plan_iterations) times
  * a kernel product timed now on its N, in CPU seconds as --plan does,
  * shared out over the workers. Negative when a kernel could not be built. */
-static double cost_estimate(const adh_config *cfg, const cost_run *runs, size_t n, int jobs, size_t *scaled)
+static double cost_estimate(const adh_config *cfg, const cost_run *runs, size_t n, size_t base, int jobs,
+                            size_t *scaled)
 {
     static adh_config c;   /* a configuration is large: not on the stack */
     /* one timing for each N (the runs come sorted by cost, not by N) */
@@ -630,7 +647,7 @@ static double cost_estimate(const adh_config *cfg, const cost_run *runs, size_t 
     double *tp = calloc(n ? n : 1, sizeof *tp), *tb = calloc(n ? n : 1, sizeof *tb), total = 0;
     for (size_t i = 0; tn && tp && tb && i < n && total >= 0; i++) {
         c = *cfg;
-        c.spec = cost_spec(cfg, runs[i].nodes, ADH_MODE_RELAX);
+        c.spec = cost_spec(cfg, runs[i].nodes, base, ADH_MODE_RELAX);
         c.spec.relax.eps = runs[i].eps;
         c.spec.grid.use.kernel = runs[i].kernel;
         size_t k = 0;
@@ -655,8 +672,8 @@ int cli_cost_main(const cli_options *cli)
 {
     const adh_config *cfg = &cli->cfg;
     cost_run *runs;
-    size_t n, finest;
-    int status = cost_make_runs(cli, &runs, &n, &finest);
+    size_t n, finest, base;
+    int status = cost_make_runs(cli, &runs, &n, &finest, &base);
     if (status)
         return status;
     char why[1024];
@@ -669,7 +686,7 @@ int cli_cost_main(const cli_options *cli)
     }
     if (!cfg->output.quiet) {
         size_t scaled = 0;   /* the nodes a larger dense kernel was timed on */
-        double est = cost_estimate(cfg, runs, n, cost_jobs(), &scaled);
+        double est = cost_estimate(cfg, runs, n, base, cost_jobs(), &scaled);
         char t[32], on[128] = "";
         cli_progress_duration(est, t, sizeof t);
         if (scaled)
@@ -682,7 +699,7 @@ int cli_cost_main(const cli_options *cli)
     }
     cli_interrupt_catch();
     adh_ready_phase("cost");
-    cost_job job = { .cfg = cfg, .runs = runs, .n = n };
+    cost_job job = { .cfg = cfg, .runs = runs, .n = n, .base = base };
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = adh_clock_seconds();
     pthread_t threads[8];
@@ -693,7 +710,7 @@ int cli_cost_main(const cli_options *cli)
     if (!started)
         worker(&job);
     static cost_ref ref;   /* holds a run spec: not on the stack */
-    cost_static_reference(cfg, finest, &ref);
+    cost_static_reference(cfg, finest, base, &ref);
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     pthread_mutex_destroy(&job.lock);
