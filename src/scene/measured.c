@@ -132,6 +132,56 @@ static int number(const char *s, double *v, char *why, size_t whylen)
     return -1;
 }
 
+/* Whether line's numbers are written with decimal commas (a spreadsheet's
+ * export in a comma-decimal locale: "1,5 -2,3", "1,5;-2,3"): every field
+ * between blanks and semicolons a number once its one comma, between
+ * digits, is a point, and one field at least has that comma. Then ex is the
+ * hint that says so, quoting the first such field; else "". */
+static void decimal_comma(const char *line, char *ex, size_t exlen)
+{
+    ex[0] = '\0';
+    if (!strchr(line, ','))
+        return;
+    char first[48] = "", dotted[48] = "";
+    for (const char *p = line; *p;) {
+        size_t n = strcspn(p, " \t;\r\n");
+        char buf[48], *end;
+        if (n >= sizeof buf)
+            return;
+        memcpy(buf, p, n);
+        buf[n] = '\0';
+        char *c = strchr(buf, ',');
+        if (c) {
+            if (c == buf || !isdigit((unsigned char)c[-1]) || !isdigit((unsigned char)c[1]) || strchr(c + 1, ','))
+                return;
+            if (!first[0])
+                memcpy(first, buf, n + 1);
+            *c = '.';
+            if (!dotted[0])
+                memcpy(dotted, buf, n + 1);
+        }
+        if (n && (strtod(buf, &end), end == buf || *end || strpbrk(buf, "xX")))
+            return;
+        p += n;
+        p += strspn(p, " \t;\r\n");
+    }
+    if (first[0])
+        snprintf(ex, exlen, "; it looks like a decimal comma ('%s' for %s): write the numbers with a decimal point",
+                 first, dotted);
+}
+
+/* why, with the hint ex (decimal_comma's) after it: -1. */
+static int with_hint(const char *ex, char *why, size_t whylen)
+{
+    size_t n = strlen(why), k = strlen(ex);
+    if (n + 1 >= whylen)
+        return -1;
+    k = k < whylen - n - 1 ? k : whylen - n - 1;   /* cut, as snprintf would */
+    memcpy(why + n, ex, k);
+    why[n + k] = '\0';
+    return -1;
+}
+
 /* The name of a header field without its unit, lower case. */
 static void bare_name(const char *field, char *out, size_t len)
 {
@@ -378,6 +428,8 @@ static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, co
     }
     if (!*sep)
         *sep = separator_of(line);
+    char ex[256];   /* the hint of a decimal comma, for a refusal of this line */
+    decimal_comma(line, ex, sizeof ex);
     char *f[MAX_COLS + 1], msg[256];
     int nf = split(line, *sep, f);
     if (nf == 0)
@@ -388,6 +440,10 @@ static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, co
     }
     double v;
     int first_number = number(f[0], &v, msg, sizeof msg) == 0;
+    if (!*ncols && !first_number && m->n == 0 && *ex) {   /* numbers, not a header's names */
+        snprintf(why, whylen, "%s:%zu: '%.40s' %s", m->path, lineno, f[0], msg);
+        return with_hint(ex, why, whylen);
+    }
     if (!*ncols && !first_number && m->n == 0) {   /* the header */
         *ncols = nf;
         return header(m, f, nf, columns, cx, cy, fx, fy, lineno, why, whylen);
@@ -396,13 +452,13 @@ static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, co
         *ncols = nf;
         if (choose_columns(columns, NULL, 0, nf, cx, cy, msg, sizeof msg) != 0) {
             snprintf(why, whylen, "%s:%zu: %s", m->path, lineno, msg);
-            return -1;
+            return with_hint(ex, why, whylen);
         }
     }
     if (nf != *ncols) {
         snprintf(why, whylen, "%s:%zu: %d column%s where the file has %d", m->path, lineno, nf, nf == 1 ? "" : "s",
                  *ncols);
-        return -1;
+        return with_hint(ex, why, whylen);
     }
     double x, y;
     for (int c = 0; c < 2; c++) {
@@ -410,7 +466,7 @@ static int parse_line(adh_measured *m, char *line, size_t len, size_t lineno, co
         if (number(f[col], c ? &y : &x, msg, sizeof msg) != 0) {
             snprintf(why, whylen, "%s:%zu: '%.40s' %s (column %d, the %s)", m->path, lineno, f[col], msg, col + 1,
                      c ? "force" : "position");
-            return -1;
+            return with_hint(ex, why, whylen);
         }
     }
     if (m->n == ADH_MEASURED_MAX_POINTS) {

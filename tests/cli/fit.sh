@@ -157,6 +157,21 @@ check "the same curve given twice: exit 2, both names, nothing written ($(cat "$
 rc=$?
 check "a copy of the curve: exit 2, both names, nothing written ($(cat "$TMP/e7"))" \
     sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --data: $TMP/copy.tsv holds the same 200 points as $DATA (a copy?)' '$TMP/e7' && [ ! -e '$TMP/twiceout' ]"
+# a curve written with decimal commas (a spreadsheet's export in a
+# comma-decimal locale), blank-, tab- or semicolon-separated, with a header
+# or without: refused as before, now saying it looks like a decimal comma
+# (it said '4 columns where the file has 2', '3 columns and no header', or
+# took the first line for a header that names no unit)
+i=0
+for body in 'h0 (nm) F (nN)\n1,5 -2,3\n1,4 -2,2\n' '1,5 -2,3\n1,4 -2,2\n' 'h0 (nm)\tF (nN)\n1,5\t-2,3\n' \
+            '1,5\t-2,3\n1,4\t-2,2\n' 'h0 (nm);F (nN)\n1,5;-2,3\n' '1,5;-2,3\n1,4;-2,2\n'; do
+    i=$((i + 1))
+    printf "$body" >"$TMP/comma$i.tsv"
+    "$ADHERE" fit --data="$TMP/comma$i.tsv" -o "$TMP/commaout" fig1 >/dev/null 2>"$TMP/e24"
+    rc=$?
+    check "decimal commas, file $i of 6: exit 2, the hint given, nothing written ($rc: $(cat "$TMP/e24"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q \"comma$i.tsv:[12]: .*looks like a decimal comma ('1,5' for 1.5): write the numbers with a decimal point\" '$TMP/e24' && [ ! -e '$TMP/commaout' ]"
+done
 # the curve written twice in one file (its points appended again): the fit
 # took four segments, each point twice, and its standard errors came out
 # sqrt(2) smaller (E 0.26 % where the curve gives 0.37 %)
