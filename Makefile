@@ -186,7 +186,10 @@ check-fp: deps
 	  echo "$$b: $$(grep -c '^ok' $$b/replay.log) passed, $$(grep -c '^not ok' $$b/replay.log) failed (log: $$b/replay.log)"; \
 	done; exit $$fail
 
-SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+# -g1: line tables alone, which is all a sanitizer's report prints (file and
+# line of every frame, inlined ones too); full -g cost 9 of this build's 44
+# CPU s (docs/testing.md). For a debugger, set SAN_FLAGS with -g.
+SAN_FLAGS = -O1 -g1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
 asan-build: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="$(SAN_FLAGS)" \
@@ -207,9 +210,10 @@ check-tsan: deps
 	  build-tsan/adhere --batch -N 100 --force --eps=10pm --no-plot -q tests/cli/map.scene -o $$d/map 2>>$$d/err; \
 	  rc=$$?; [ $$rc -eq 0 ] || cat $$d/err; rm -rf $$d; [ $$rc -eq 0 ] && echo "check-tsan: --cost and a 16-run study on 2 threads, no race"; exit $$rc
 
-# libFuzzer targets, built with clang over the parsers' own sources.
+# libFuzzer targets, built with clang over the parsers' own sources (-g1:
+# line tables for the crash's stack, as SAN_FLAGS).
 FUZZ_CC    = clang
-FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined $(CPPFLAGS) $(PKG_CFLAGS)
+FUZZ_FLAGS = -g1 -O1 -fsanitize=fuzzer,address,undefined $(CPPFLAGS) $(PKG_CFLAGS)
 FUZZ_BIN   = $(BUILD)/fuzz/fuzz_units $(BUILD)/fuzz/fuzz_scene $(BUILD)/fuzz/fuzz_replay \
              $(BUILD)/fuzz/fuzz_gpstring $(BUILD)/fuzz/fuzz_measured
 CORE_SRC   = $(wildcard src/core/*.c)
