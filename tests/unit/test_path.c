@@ -450,8 +450,17 @@ int main(void)
     times(&f);
     short_turn(&f);
     spring(&f, 10);
-    spring(&f, 1e-3);
-    landing_past_turn(&f, 1.0, -2e-9);
+    /* Under ASan, the soft spring's snap points and the 1 N/m landing
+     * (1.5 CPU s each) run no line or branch of the library that the
+     * cases kept do not (gcov over each case alone): the soft spring's
+     * own checks of |F|/k and F^2/2k stay in the plain build. */
+    if (tap_sanitized_short()) {
+        tap_sanitized_leaves_out("the 1e-3 N/m spring's snap points and the 1 N/m landing past the turn "
+                                 "(the 10 N/m snap points and the 1e-3 N/m landing)");
+    } else {
+        spring(&f, 1e-3);
+        landing_past_turn(&f, 1.0, -2e-9);
+    }
     /* a turn short of contact (the curve's end out of it: its slope says
      * nothing of the contact's) under a soft spring that throws the
      * sphere 2 nm into it */
