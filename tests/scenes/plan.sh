@@ -93,8 +93,13 @@ has_re fig2 '^unloading branches: 1 '
 
 # [grid] keys plan the grid their flags plan (the plan's kernel: line), flags
 # override them, and an operator a scene gives is kept by the automatic grid.
+planned() { # planned ARGS...: a file holding --plan ARGS's output (2>&1), planned once for those ARGS
+    _f="$TMP/planned.$(printf '%s\n' "$@" | cksum | tr ' ' .)"
+    [ -e "$_f" ] || "$ADHERE" --plan "$@" >"$_f" 2>&1
+    echo "$_f"
+}
 kline() { # kline ARGS...: the plan's kernel line, or the error
-    "$ADHERE" --plan "$@" 2>&1 | grep -E '^(kernel:|adhere:)'
+    grep -E '^(kernel:|adhere:)' "$(planned "$@")"
 }
 same_kernel() { # same_kernel WHAT "scene args" "flag args"
     a=$(kline $2) b=$(kline $3)
@@ -104,7 +109,7 @@ printf '[grid]\nkernel = ring\ngrid = graded\noperator = h2\n' >"$TMP/graded.sce
 same_kernel "grid = graded, operator = h2 plans the grid of --grid=graded --operator=h2" \
     "$TMP/graded.scene" "--kernel=ring --grid=graded --operator=h2"
 check "which is a graded grid held as h2 ($(kline "$TMP/graded.scene"))" \
-    sh -c "\"$ADHERE\" --plan '$TMP/graded.scene' | grep -qE '^kernel: ring, h2, graded grid of [0-9]+ rings'"
+    grep -qE '^kernel: ring, h2, graded grid of [0-9]+ rings' "$(planned "$TMP/graded.scene")"
 cat >"$TMP/rings.scene" <<'S'
 [grid]
 kernel = ring
@@ -117,7 +122,8 @@ S
 same_kernel "fine_band, growth and radius plan the rings of --fine-band, --growth, --grid-radius" \
     "$TMP/rings.scene" "--kernel=ring --grid=graded --fine-band=700nm --growth=1.08 --grid-radius=2um --operator=hmat"
 check "the rings are the scene's ($(kline "$TMP/rings.scene"))" \
-    sh -c "\"$ADHERE\" --plan '$TMP/rings.scene' | grep -qE '^kernel: ring, hmat, graded grid of [0-9]+ rings: spacing 1\.5 nm to 700 nm, then growing x1\.08 to Rmax 2 um'"
+    grep -qE '^kernel: ring, hmat, graded grid of [0-9]+ rings: spacing 1\.5 nm to 700 nm, then growing x1\.08 to Rmax 2 um' \
+    "$(planned "$TMP/rings.scene")"
 same_kernel "the flags override every [grid] key" \
     "$TMP/rings.scene --fine-band=800nm --growth=1.02 --grid-radius=2.5um --operator=h2" \
     "--kernel=ring --grid=graded --fine-band=800nm --growth=1.02 --grid-radius=2.5um --operator=h2"
@@ -127,7 +133,7 @@ same_kernel "--fine-band=auto and --grid-radius=auto bring back the defaults ove
 # sigma = 22.5: the automatic grid is graded and held as h2, unless told
 printf '[material]\nE = 0.1GPa\n[grid]\noperator = dense\n' >"$TMP/soft.scene"
 check "an automatic graded grid keeps the scene's operator = dense ($(kline "$TMP/soft.scene"))" \
-    sh -c "\"$ADHERE\" --plan '$TMP/soft.scene' | grep -qE '^kernel: ring, dense, graded grid of'"
+    grep -qE '^kernel: ring, dense, graded grid of' "$(planned "$TMP/soft.scene")"
 same_kernel "as it keeps --operator=dense" "$TMP/soft.scene" "-E 0.1GPa --operator=dense"
 same_kernel "and --operator=h2 overrides it" "$TMP/soft.scene --operator=h2" "-E 0.1GPa"
 
