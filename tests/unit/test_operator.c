@@ -134,8 +134,15 @@ int main(void)
     adh_rings_spec spec = { .dr = 0.2e-9, .fine = 200e-9, .ratio = 1.05, .rmax = 3e-6 };
     adh_grid *g = adh_rings_alloc(&spec);
     const adh_kernel_storage fast[] = { ADH_STORAGE_HMAT, ADH_STORAGE_H2 };
+    /* Under ASan the ring kernel on the uniform grid (1.8 CPU s) runs no
+     * line or branch of the library that the same kernel and storage on
+     * the graded grid do not (gcov over each case alone). */
+    int uniform_ring = !tap_sanitized_short();
+    if (!uniform_ring)
+        tap_sanitized_leaves_out("the ring kernel on the uniform grid in hmat and h2 (the graded grid's, in both)");
     for (int s = 0; s < 2; s++) {
-        compare("uniform N=1500", u, ADH_KERNEL_RING, fast[s]);
+        if (uniform_ring)
+            compare("uniform N=1500", u, ADH_KERNEL_RING, fast[s]);
         compare("uniform N=1500", u, ADH_KERNEL_PAPER, fast[s]);
         compare("graded", g, ADH_KERNEL_RING, fast[s]);
         adh_kernel_settings ks = { .type = ADH_KERNEL_PAPER, .storage = fast[s] };
