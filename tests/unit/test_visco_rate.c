@@ -24,8 +24,15 @@ int main(void)
     ok(fix_static(&f, f.m.E, 5.0, &st, &sr) == ADH_SUCCESS, "the static curve at E0");
 
     double V[NV] = { 1e-10, 1e-8, 1e-6, 1e-5, 1e-1 }, pull[NV], diss[NV];
+    /* Under ASan the cycles below 1e-5 m/s (2.4 of the test's 3 CPU s)
+     * run no line or branch of the library that those at 1e-5 and 0.1 m/s
+     * do not (gcov over each cycle alone): the ASan pass runs these two,
+     * each way, and the trends over nine decades are the plain build's. */
+    int first = tap_sanitized_short() ? 3 : 0;
+    if (first)
+        tap_sanitized_leaves_out("the cycles at 1e-10, 1e-8 and 1e-6 m/s, and the trends over the speeds");
     int ran = 1;
-    for (int i = 0; i < NV; i++) {
+    for (int i = first; i < NV; i++) {
         adh_visco_drive d = fix_drive(1e-9, V[i]);
         d.dwell = 20 * FIX_TAU;
         vrun v = fix_visco(&f, 10.0, &d, 1e-4);
@@ -35,17 +42,19 @@ int main(void)
                pull[i] / -sr.pulloff_F);
         vrun_free(&v);
     }
-    ok(ran, "relaxed and unloaded at %d speeds from 1e-10 to 0.1 m/s: every cycle runs", NV);
-    int mono = 1;
-    for (int i = 1; i < NV; i++)
-        mono &= pull[i] > pull[i - 1];
-    ok(mono, "the pull-off rises monotonically with the unloading speed over 9 decades");
-    ok_rel(pull[0], -sr.pulloff_F, 1e-3, "at 1e-10 m/s it is the static pull-off at E0");
-    ok(pull[NV - 1] / pull[0] > 2 && pull[NV - 1] / -sr.pulloff_F < 10,
-       "its enhancement %.4g is real and below Einf/E0 = 10", pull[NV - 1] / -sr.pulloff_F);
+    ok(ran, "relaxed and unloaded at %d speeds from %g to 0.1 m/s: every cycle runs", NV - first, V[first]);
+    if (!first) {
+        int mono = 1;
+        for (int i = 1; i < NV; i++)
+            mono &= pull[i] > pull[i - 1];
+        ok(mono, "the pull-off rises monotonically with the unloading speed over 9 decades");
+        ok_rel(pull[0], -sr.pulloff_F, 1e-3, "at 1e-10 m/s it is the static pull-off at E0");
+        ok(pull[NV - 1] / pull[0] > 2 && pull[NV - 1] / -sr.pulloff_F < 10,
+           "its enhancement %.4g is real and below Einf/E0 = 10", pull[NV - 1] / -sr.pulloff_F);
+    }
 
     ran = 1;
-    for (int i = 0; i < NV; i++) {
+    for (int i = first; i < NV; i++) {
         adh_visco_drive d = fix_drive(V[i], V[i]);
         vrun v = fix_visco(&f, 10.0, &d, 1e-4);
         ran &= v.rc == ADH_SUCCESS;
@@ -54,7 +63,12 @@ int main(void)
                v.r.hysteresis);
         vrun_free(&v);
     }
-    ok(ran, "one speed both ways, %d speeds: every cycle runs", NV);
+    ok(ran, "one speed both ways, %d speeds: every cycle runs", NV - first);
+    if (first) {
+        adh_run_free(&st);
+        fix_close(&f);
+        return tap_done();
+    }
     int peak = 0;
     for (int i = 1; i < NV; i++)
         if (diss[i] > diss[peak])
