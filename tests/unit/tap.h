@@ -44,9 +44,10 @@ __attribute__((constructor)) static void tap_gsl_handler_off(void)
 /* TAP_SANITIZED: 1 in make check's second build of the C tests, under
  * ASan/UBSan (gcc defines __SANITIZE_ADDRESS__, clang has the feature).
  * There (tap_sanitized_short) the heaviest numerical tests leave out a
- * case that runs the same code as one they keep, only on a larger grid or
- * a second time: make check's plain build runs it and asserts it, and the
- * sanitizers see its paths on the smaller case (docs/testing.md lists
+ * case that runs the same code as one they keep (on a larger grid, a
+ * second time, or another parameter through the same lines and branches,
+ * by gcov): make check's plain build runs it and asserts it, and the
+ * sanitizers see its paths on the case kept (docs/testing.md lists
  * which); tap_sanitized_leaves_out says so in the TAP stream. TAP_FULL=1
  * in the environment (make check-asan sets it) runs every case. */
 #if defined(__SANITIZE_ADDRESS__)
@@ -65,7 +66,7 @@ static inline int tap_sanitized_short(void)
 }
 static inline void tap_sanitized_leaves_out(const char *what)
 {
-    printf("# under ASan: %s left to the plain build (the same code, run here on a smaller case)\n", what);
+    printf("# under ASan: %s left to the plain build (the same code, run here by the cases kept)\n", what);
 }
 
 #define ok(cond, ...) tap_ok(!!(cond), __FILE__, __LINE__, __VA_ARGS__)
