@@ -255,13 +255,16 @@ int static_stalled(adh_static *w, const char *how)
     return ADH_ESTALL;
 }
 
-/* The start point: undeformed, going down, corrected at h0 = h0_start,
- * its tangent and det J's sign (J = I + small out there: det J > 0, and
- * the start must lie on the outer branch, going in). */
-static int start(adh_static *w)
+/* The start point: from guess (NULL: undeformed), going down, corrected
+ * at h0 = h0_start, its tangent and det J's sign (the start must lie on a
+ * stable branch going in: out there J = I + small, det J > 0). */
+static int start(adh_static *w, const double *guess)
 {
     size_t n = w->n;
-    memset(w->st->u, 0, n * sizeof *w->st->u);
+    if (guess)
+        memcpy(w->st->u, guess, n * sizeof *w->st->u);
+    else
+        memset(w->st->u, 0, n * sizeof *w->st->u);
     w->st->h0 = w->s.h0_start;
     memset(w->tau_u, 0, n * sizeof *w->tau_u);
     w->tau_h = -1.0;
@@ -308,6 +311,9 @@ static int start(adh_static *w)
     return w->skip ? static_qstep_start(w) : ADH_SUCCESS;
 }
 
+static void reset(adh_static *w);
+static int traced(adh_static *w, double *guess, char *how, size_t howlen, unsigned *fix);
+
 int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settings *s)
 {
     if (adh_static_settings_validate(s, NULL, 0) != ADH_SUCCESS || adh_material_validate(m, NULL, 0) != ADH_SUCCESS)
@@ -323,13 +329,45 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->c2E = 2.0 / m->E;
     for (size_t i = 0; i < n; i++)
         w->shape[i] = w->grid->r[i] * w->grid->r[i] / (2.0 * m->R) + (w->extra ? w->extra[i] : 0.0);
+    reset(w);
+    int rc = start(w, NULL);
+    if (rc == ADH_EMAXITER || rc == ADH_ENAN) {
+        /* Newton from the undeformed surfaces did not reach the state
+         * there: a contact (a stiff sphere already pressing, or past the
+         * snap-in, the inner branch) too far from them. The curve from
+         * further out reaches it; from there the start is solved at once. */
+        adh_static_settings want = w->s;
+        double *guess = malloc(n * sizeof *guess);
+        char how[160];
+        unsigned fix = 0;
+        int trc = guess ? traced(w, guess, how, sizeof how, &fix) : ADH_ENOMEM;
+        w->s = want;
+        reset(w);
+        rc = start(w, trc == ADH_SUCCESS ? guess : NULL);
+        free(guess);
+        if (rc != ADH_SUCCESS && trc != ADH_SUCCESS && trc != ADH_ENOMEM) {
+            /* the start's own failure, and what stopped the way to it */
+            snprintf(w->why, sizeof w->why, "the static curve's start h0 = %s could not be solved from the "
+                     "undeformed surfaces, nor reached by the curve from further out: %s",
+                     adh_qtext(w->s.h0_start, ADH_Q_LENGTH).s, how);
+            w->fix = fix;
+            rc = trc;
+        }
+    }
+    w->res.seconds += adh_clock_seconds() - t0;
+    return rc;
+}
+
+/* A new curve under w->s (its start resolved) from no points. */
+static void reset(adh_static *w)
+{
     memset(&w->res, 0, sizeof w->res);
     w->done = 0;
     w->s_arc = 0;
     w->ds = w->s.ds_init;
     w->nw.act = w->s.active_tol;
     w->det_sign = +1;
-    w->skip = s->lattice_skip < 0 ? adh_static_skips(w->grid, m, s->h0_end) : s->lattice_skip;
+    w->skip = w->s.lattice_skip < 0 ? adh_static_skips(w->grid, &w->m, w->s.h0_end) : w->s.lattice_skip;
     adh_folds_set(w->folds, w->skip ? ADH_FOLDS_PARABOLA : ADH_FOLDS_HERMITE);
     w->q.nhist = 0;
     w->end_next = 0;
@@ -337,8 +375,38 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     w->fix = 0;
     w->last_reject = NULL;
     static_front_set(w);
-    int rc = start(w);
-    w->res.seconds += adh_clock_seconds() - t0;
+}
+
+/* The curve from the automatic start (where the undeformed surfaces are
+ * solved at once) down to w->s.h0_start, through every fold: its last
+ * point's u into guess; or why not, in how (with the settings that get
+ * past it in *fix). w->s is left changed. */
+static int traced(adh_static *w, double *guess, char *how, size_t howlen, unsigned *fix)
+{
+    double to = w->s.h0_start, from = adh_protocol_auto_start(&w->m, 0.05e-9);
+    *fix = ADH_FIX_START;
+    snprintf(how, howlen, "the automatic start, %s, is not further out", adh_qtext(from, ADH_Q_LENGTH).s);
+    if (!(from > to))
+        return ADH_EINVAL;
+    w->s.h0_start = from;
+    w->s.h0_end = to;
+    reset(w);
+    int rc = start(w, NULL);
+    while (rc == ADH_SUCCESS && !w->done)
+        if ((rc = adh_static_iterate(w)) == ADH_CONTINUE)
+            rc = ADH_SUCCESS;
+    if (rc == ADH_SUCCESS) {
+        memcpy(guess, w->st->u, w->n * sizeof *guess);
+        return rc;
+    }
+    double a = adh_contact_radius(w->grid, w->st->h, w->m.z0);
+    if (rc == ADH_EGRID) {   /* as a run's stop at the grid's edge says it */
+        adh_rings_edge_sentence(w->grid, a, how, howlen);
+        *fix = adh_rings_edge_fix(w->grid, a);
+    } else {
+        snprintf(how, howlen, "%.150s", w->why[0] ? w->why : adh_strerror(rc));
+        *fix = w->fix;
+    }
     return rc;
 }
 

@@ -130,7 +130,7 @@ struct adh_static {
     adh_static_result res;
     double *buf;      /* the vectors above, one allocation */
     const char *last_reject; /* why the last step attempt was rejected (static_reject) */
-    char why[300];    /* why the curve stopped ("" while it goes on) */
+    char why[400];    /* why the curve stopped ("" while it goes on; as long as a run's) */
     unsigned fix;     /* ADH_FIX_* bits beside it */
 };
 

@@ -115,37 +115,60 @@ rc=$?
 last=$(grep -v '^#' "$TMP/land/force.tsv" | tail -1 | cut -f1)
 check "fig1 static at N = 200, 3.4 nm, turn -2.25 nm: exit 0, ends at the turn ($rc, last h0 $last: $(head -c 200 "$TMP/err"))" \
     sh -c "[ $rc -eq 0 ] && awk 'BEGIN {exit !($last > -2.2501e-9 && $last < -2.2499e-9)}' && grep -qx 'status	success' '$TMP/land/summary.tsv'"
-# A curve that stops says why, not only the status words: from inside the
-# snap-in (0.3 nm) the start cannot be solved. stderr and summary.tsv's
-# # PARTIAL line name the start and what to change (--start); summary.tsv
-# keeps its status line and adds stop_reason after it; a study's status
-# column says "status: reason", and a rerun reads its rows back.
-"$ADHERE" --batch -q --no-plot --mode=static --start=0.3nm -o "$TMP/stop" 2>"$TMP/err"
+# From inside the snap-in (0.3 nm, the jump-in is at $jin m) the
+# equilibrium is a contact on the curve's inner branch: the curve starts
+# there (it stopped after 0 steps, exit 1: Newton from the undeformed
+# surfaces did not converge). Its first row is at the start, in contact,
+# with the force of the curve from the automatic start through that h0
+# (its last crossing going in, linear between rows).
+S="--batch -q --no-plot --mode=static -E 1GPa --force --turn=-2nm"
+# shellcheck disable=SC2086
+"$ADHERE" $S -N 400 -o "$TMP/far" 2>"$TMP/err"
+# shellcheck disable=SC2086
+"$ADHERE" $S -N 400 --start=0.3nm -o "$TMP/inner" 2>"$TMP/err"
 rc=$?
-why="the static curve's start h0 = 300 pm could not be solved: Newton's corrector did not converge: start further out (--start)"
-check "static from 0.3 nm: exit 1, stderr says why ($rc: $(cat "$TMP/err"))" \
-    sh -c "[ $rc -eq 1 ] && grep -qxF \"adhere: the solver stopped after 0 steps: iteration cap reached before convergence: $why\" '$TMP/err'"
+first=$(grep -v '^#' "$TMP/inner/force.tsv" | sed -n 2p | cut -f1,2,4)
+Fc=$(grep -v '^#' "$TMP/far/force.tsv" | awk -F'\t' 'NR > 2 && p > 3e-10 && $1 <= 3e-10 {F = pF + ($2 - pF) * (3e-10 - p) / ($1 - p)}
+                                                     NR > 1 {p = $1; pF = $2} END {print F}')
+check "static from 0.3 nm: exit 0, the first row at 0.3 nm in contact, its force the curve's there, $Fc N ($rc: $first: $(head -c 300 "$TMP/err"))" \
+    sh -c "[ $rc -eq 0 ] && echo '$first' | awk -v Fc='$Fc' '{exit !(\$1 > 2.9999e-10 && \$1 < 3.0001e-10 && \$3 < 1.1 * 5e-10 &&
+                                                               (\$2 / Fc - 1)^2 < 0.005^2)}'"
+# A curve that stops says why, not only the status words: from 0.3 nm on
+# 200 nodes (1.6 across the contact's edge zone, forced) the continuation
+# stalls deep in contact. stderr and summary.tsv's # PARTIAL line name
+# where and what to change (--mode); summary.tsv keeps its status line and
+# adds stop_reason after it; a study's status column says "status:
+# reason", and a rerun reads its rows back.
+# shellcheck disable=SC2086
+"$ADHERE" $S -N 200 --start=0.3nm -o "$TMP/stop" 2>"$TMP/err"
+rc=$?
+why="the static curve stalled at h0 = [^ ]* nm (F = [^)]*): the arclength step fell below its floor, 1e-07 z0; .*(--mode)"
+check "static from 0.3 nm on 200 nodes: exit 1, stderr says why ($rc: $(tail -n 1 "$TMP/err"))" \
+    sh -c "[ $rc -eq 1 ] && grep -qx \"adhere: the solver stopped after [0-9]* steps: continuation could not make progress: $why\" '$TMP/err'"
 check "... summary.tsv: # PARTIAL says it, status unchanged, then stop_reason, last" \
-    sh -c "grep -qF \"# PARTIAL: the solver stopped after 0 steps: iteration cap reached before convergence: $why\" '$TMP/stop/summary.tsv' &&
-           tail -n 2 '$TMP/stop/summary.tsv' | head -n 1 | grep -qx 'status	iteration cap reached before convergence' &&
-           tail -n 1 '$TMP/stop/summary.tsv' | grep -qxF \"stop_reason	$why\""
-check "a finished run has no stop_reason line" sh -c "! grep -q '^stop_reason' '$out/summary.tsv'"
-"$ADHERE" --batch -q --no-plot --mode=static --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
+    sh -c "grep -q \"^# PARTIAL: the solver stopped after [0-9]* steps: continuation could not make progress: $why\" '$TMP/stop/summary.tsv' &&
+           tail -n 2 '$TMP/stop/summary.tsv' | head -n 1 | grep -qx 'status	continuation could not make progress' &&
+           tail -n 1 '$TMP/stop/summary.tsv' | grep -qx \"stop_reason	$why\""
+check "a finished run has no stop_reason line" sh -c "! grep -q '^stop_reason' '$out/summary.tsv' '$TMP/inner/summary.tsv'"
+# shellcheck disable=SC2086
+"$ADHERE" $S -N 200 --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
 rc=$?
-check "a study of such starts: exit 1, each row's status says why ($rc: $(tail -n 1 "$TMP/stops/sweep.tsv" | tr '\t' '\n' | tail -n 1))" \
-    sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stops/sweep.tsv' | tail -n 2 | awk -F'\t' '{print \$NF}' |
-           grep -c \"^iteration cap reached before convergence: the static curve's start h0 = [34]00 pm could not be solved: .*(--start)\$\" | grep -qx 2"
+check "a study of such starts: exit 1, the row that stopped says why ($rc: $(grep -v '^#' "$TMP/stops/sweep.tsv" | sed -n 2p | awk -F'\t' '{print $NF}'))" \
+    sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stops/sweep.tsv' | sed -n 2p | awk -F'\t' '{print \$NF}' |
+           grep -qx \"continuation could not make progress: $why\""
 # with run-K directories (the default up to 32 runs) the row takes the
 # word its run's summary.tsv said: that word was held in 32 bytes, and the
 # status column said 'iteration cap reached before co: ...'
-"$ADHERE" --batch -q --no-plot --mode=static --sweep=start=0.3nm,0.4nm --run-dirs=yes -o "$TMP/stopsd" 2>"$TMP/err"
+# shellcheck disable=SC2086
+"$ADHERE" $S -N 200 --sweep=start=0.3nm,0.4nm --run-dirs=yes -o "$TMP/stopsd" 2>"$TMP/err"
 rc=$?
-check "... with run-K directories: the status word whole, as in run-K's summary.tsv ($rc: $(grep -v '^#' "$TMP/stopsd/sweep.tsv" | tail -n 1 | awk -F'\t' '{print $NF}' | cut -c1-60))" \
-    sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stopsd/sweep.tsv' | tail -n 2 | awk -F'\t' '{print \$NF}' |
-           grep -c \"^iteration cap reached before convergence: the static curve's start h0 = [34]00 pm could not be solved: .*(--start)\$\" | grep -qx 2 &&
-           grep -qx 'status	iteration cap reached before convergence' '$TMP/stopsd/run-1/summary.tsv'"
+check "... with run-K directories: the status word whole, as in run-K's summary.tsv ($rc: $(grep -v '^#' "$TMP/stopsd/sweep.tsv" | sed -n 2p | awk -F'\t' '{print $NF}' | cut -c1-60))" \
+    sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stopsd/sweep.tsv' | sed -n 2p | awk -F'\t' '{print \$NF}' |
+           grep -qx \"continuation could not make progress: $why\" &&
+           grep -qx 'status	continuation could not make progress' '$TMP/stopsd/run-1/summary.tsv'"
 cp "$TMP/stops/sweep.tsv" "$TMP/stops.before"
-"$ADHERE" --batch -q --no-plot --mode=static --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
+# shellcheck disable=SC2086
+"$ADHERE" $S -N 200 --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
 rc=$?
 check "... a rerun reads those rows back: the same sweep.tsv, exit 1 ($rc: $(head -c 300 "$TMP/err"))" \
     sh -c "[ $rc -eq 1 ] && cmp -s '$TMP/stops.before' '$TMP/stops/sweep.tsv'"

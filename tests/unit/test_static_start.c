@@ -1,0 +1,94 @@
+/* The static curve from a start where the equilibrium is already a
+ * contact: a stiff sphere pressing (sigma 0.23, a curve without folds) and
+ * a softer one past its snap-in (sigma 0.5, the inner branch). Newton from
+ * the undeformed surfaces does not reach these states; the start is the
+ * curve's own state there all the same: it solves u = -(2/E) W p (checked
+ * here by the kernel's own product), it is stable and goes in, and its
+ * force is the curve's through that h0 traced from far out (the last of
+ * its crossings going in: past the snap-in, the inner branch). */
+#include <math.h>
+#include <stdlib.h>
+
+#include "adhere/kernel.h"
+#include "adhere/law.h"
+#include "adhere/observe.h"
+#include "adhere/runner.h"
+#include "adhere/static.h"
+#include "adhere/status.h"
+#include "tap.h"
+
+/* max_n |u_n + (2/E) (W p)_n| over z0 */
+static double residual(const adh_kernel *k, const adh_material *m, const adh_state *st, size_t n)
+{
+    double *out = malloc(n * sizeof *out), *scratch = malloc(n * sizeof *scratch), r = 0;
+    adh_kernel_apply(k, st->p, out, scratch);
+    for (size_t i = 0; i < n; i++)
+        r = fmax(r, fabs(st->u[i] + 2.0 / m->E * out[i]));
+    free(out);
+    free(scratch);
+    return r / m->z0;
+}
+
+/* The force of the curve traced from far out at h0, on its last crossing
+ * of h0 going in (linear between the rows around it); NAN: none. */
+static double curve_force_at(const adh_run *run, double h0)
+{
+    double F = NAN;
+    for (size_t i = 1; i < run->nrows; i++) {
+        const adh_obs *a = &run->rows[i - 1], *b = &run->rows[i];
+        if (a->h0 >= h0 && b->h0 <= h0 && a->h0 > b->h0)
+            F = a->F + (b->F - a->F) * (h0 - a->h0) / (b->h0 - a->h0);
+    }
+    return F;
+}
+
+static void one(double E, double start, size_t n, double dr, const char *what)
+{
+    adh_material m = { .E = E, .A = 1e-19, .z0 = 0.5e-9, .R = 10e-6 };
+    adh_grid *g = adh_grid_alloc(n, dr);
+    adh_kernel *k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL);
+    adh_static *w = adh_static_alloc(g, k);
+    adh_static_settings s = adh_static_settings_default();
+    s.h0_start = start;
+    s.h0_end = -1e-9;
+    int rc = adh_static_set(w, &m, &s);
+    ok(rc == ADH_SUCCESS, "%s: the static curve starts at h0 = %g nm (%s)", what, start * 1e9,
+       adh_static_why(w, NULL));
+    if (rc == ADH_SUCCESS) {
+        adh_obs o;
+        adh_observe(g, &m, adh_static_state(w), &o);
+        adh_static_point pt = adh_static_current(w);
+        double r = residual(k, &m, adh_static_state(w), n);
+        ok(r < 1e-6, "%s: the start solves the equations (residual %.2g z0)", what, r);
+        ok(o.hc < ADH_CONTACT_FACTOR * m.z0 && pt.stable && pt.direction == +1,
+           "%s: a stable contact going in (central gap %.3g z0)", what, o.hc / m.z0);
+    }
+    if (rc == ADH_SUCCESS) {
+        adh_obs o;
+        adh_observe(g, &m, adh_static_state(w), &o);
+        adh_run run;
+        adh_run_init(&run);
+        adh_static_settings far = adh_static_settings_default();
+        far.h0_end = s.h0_end;
+        adh_static_result res;
+        int frc = adh_runner_static_curve(g, k, &m, &far, NULL, NULL, &run, &res);
+        double Fc = curve_force_at(&run, start);
+        ok(frc == ADH_SUCCESS && fabs(o.F / Fc - 1) < 0.005,
+           "%s: its force %.5g N is the curve's from far out there, %.5g N (%.2g %%)", what, o.F, Fc,
+           100 * fabs(o.F / Fc - 1));
+        if (res.folds)
+            ok(res.jump_in_h0 > start, "%s: the start is past the curve's snap-in at %.4g nm: its inner branch",
+               what, res.jump_in_h0 * 1e9);
+        adh_run_free(&run);
+    }
+    adh_static_free(w);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+}
+
+int main(void)
+{
+    one(10e9, 0.4e-9, 200, 1.5e-9, "E = 10 GPa (no folds)");
+    one(3e9, 1.0e-9, 200, 1.5e-9, "E = 3 GPa");
+    return tap_done();
+}
