@@ -8,7 +8,6 @@
 
 #include "adhere/drive.h"
 #include "adhere/rule_time.h"
-#include "adhere/rule_visco.h"
 #include "adhere/status.h"
 #include "cli/advice.h"
 
@@ -40,64 +39,13 @@ int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *
     return rc;
 }
 
-/* A solid's start on grid g, kernel k (built here when NULL, for the
- * caller to free): 0, or 2 with why, its advice in the words cfg's keys
- * were given in (a scene's start by its key and line, not --start). */
-static int start_check(const adh_config *cfg, const adh_run_spec *spec, adh_grid **g, adh_kernel **k, char *why,
-                       size_t whylen)
+int cli_time_start_check(const adh_config *cfg, char *why, size_t whylen)
 {
-    int st = ADH_ENOMEM;
-    if (!*g)
-        *g = adh_config_grid_alloc(spec);
-    if (*g && !*k)
-        *k = adh_config_kernel_alloc(spec, *g, &st);
-    adh_visco_rule_settings vs;
-    adh_config_visco(spec, &vs);
-    unsigned fix = 0;
-    if (*k)
-        st = adh_visco_start_check(*g, *k, &spec->mat, &vs.sls, &vs.drive, &spec->proto, why, whylen, &fix);
-    else
-        snprintf(why, whylen, "out of memory building the %zu-node kernel to check the start",
-                 *g ? (*g)->n : spec->grid.use.nodes);
-    if (st == ADH_SUCCESS)
+    unsigned fix;
+    if (adh_config_start_check(cfg, why, whylen, &fix) == ADH_SUCCESS)
         return 0;
     cli_advice_append_cfg(cfg, CLI_ADVICE_RUN, why, whylen, fix);
     return 2;
-}
-
-int cli_time_start_check(const adh_config *cfg, char *why, size_t whylen)
-{
-    size_t n = cfg->sweep.naxes ? adh_config_nruns(cfg) : 1;
-    adh_run_spec run, built;
-    adh_grid *g = NULL;
-    adh_kernel *k = NULL;
-    int rc = 0;
-    for (size_t i = 0; i < n && rc == 0; i++) {
-        adh_config_sweep_run(cfg, i, &run);
-        /* the automatic start is one (test_visco_input, E0 from 1 MPa to
-         * 1 TPa): a kernel is built here only for a start given, where a
-         * large one costs seconds */
-        if (run.mode != ADH_MODE_TIME || adh_config_time_rule(&run) != &adh_rule_visco || isnan(run.proto.start))
-            continue;
-        if (g && !adh_config_same_grid(&built, &run)) {   /* a sweep's runs share a grid where they can */
-            adh_kernel_free(k);
-            adh_grid_free(g);
-            g = NULL, k = NULL;
-        }
-        built = run;
-        char msg[1024], which[256];
-        if ((rc = start_check(cfg, &run, &g, &k, msg, sizeof msg)) == 0)
-            continue;
-        if (!cfg->sweep.naxes) {
-            snprintf(why, whylen, "%s", msg);
-            break;
-        }
-        adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
-        snprintf(why, whylen, "sweep run %zu (%s): %s", i + 1, which, msg);
-    }
-    adh_kernel_free(k);
-    adh_grid_free(g);
-    return rc;
 }
 
 void cli_time_out_free(cli_time_out *out)

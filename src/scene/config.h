@@ -369,6 +369,14 @@ const struct adh_rule_type *adh_config_time_rule(const adh_run_spec *s);
  * spring in relaxation or for rigid spheres, an iteration dwell in
  * physical time, Einf below E0. */
 int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why, size_t whylen);
+/* Before any work, once memory is bounded: whether each run of cfg that is
+ * a standard linear solid in physical time from a start given can start at
+ * rest out of contact there, on its own grid and kernel
+ * (adh_visco_start_check); else that run would stop before its first
+ * step. ADH_SUCCESS; or ADH_EINVAL (ADH_ENOMEM) with why naming the start
+ * (a sweep's run named) and *fix the settings that get past it, for the
+ * driver's words (timestart.c). */
+int adh_config_start_check(const adh_config *cfg, char *why, size_t whylen, unsigned *fix);
 /* 0, or -1 with a sentence, when c's study does not fit physical time: plot
  * = speed without one speed swept in time, plot = snap without one spring
  * swept, eps swept in time. */

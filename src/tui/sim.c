@@ -363,6 +363,8 @@ static int params_check(const tui_sim *s, char *why, size_t whylen)
     int rc = check_words(s, msg, sizeof msg, &fix);
     if (rc == ADH_SUCCESS && adh_config_time_check(&s->cfg, spec(s), msg, sizeof msg) != 0)
         rc = ADH_EINVAL;   /* the material, drive and mode do not fit */
+    if (rc == ADH_SUCCESS)   /* a solid's start, as a run from the command line is refused */
+        rc = adh_config_start_check(&s->cfg, msg, sizeof msg, &fix);
     if (rc != ADH_SUCCESS) {
         tui_sim_words(msg, why, whylen);   /* a sentence of the configuration's names keys */
         advice(why, whylen, fix);

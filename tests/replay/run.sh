@@ -363,6 +363,20 @@ for lim in "R 5nm|--radius=5nm" "eps 1e-25m|--eps=1e-25m"; do
                [ "$1" = 2 ] && [ "$(core "$2")" = "adhere: $(core "$3")" ] && case "$3" in *--*) false ;; esac' \
         _ "$brc" "$out" "$want"
 done
+# A solid's start: :set protocol.start is refused as --batch --start is,
+# with the same sentence, and the screen stays up (it steps from the
+# automatic start); --batch writes nothing.
+VS=$W/visco-start
+out=$("$bin" --batch --no-plot -o "$work/vs-out" visco -N 150 --force --start=0.4nm </dev/null 2>&1 >/dev/null)
+brc=$?
+said=$(sed -n '/^error: start = 400 pm/,/(:set protocol.start)$/p' "$VS/visco-start-refused.txt" | tr '\n' ' ' | sed 's/ $//')
+check ":set protocol.start 0.4nm and --start=0.4nm are refused alike in a solid's physical time ($brc: $out; the screen: $said)" \
+    sh -c 'core() { printf "%s" "$1" | sed "s/ ([^()]*)\$//"; }
+           [ "$1" = 2 ] && [ ! -e "$4" ] && [ "$(core "$2")" = "adhere: $(core "${3#error: }")" ] &&
+           case "$3" in *"is not allowed"*"(:set protocol.start)") true ;; *) false ;; esac' \
+    _ "$brc" "$out" "$said" "$work/vs-out"
+check "... the screen stays up and steps from the automatic start" \
+    sh -c "grep -q 'h0     16.95 nm' '$VS/visco-start-step.txt' && grep -q '^t = 0 s: h0 16.95 nm' '$VS/visco-start-step.txt'"
 check ":set spacing 16nm on 100 nodes is taken, as --batch -N 100 --spacing=16nm is" \
     grep -q "spacing = 16 nm: .* a new path starts" "$W/limit-spacing/limit-spacing.screen"
 E=$W/static-edge
