@@ -63,6 +63,17 @@ check "a static reference from inside the snap-in is solved ($(grep '^reference'
            ! grep -q 'failed' '$TMP/stdout3' && ! grep -q '^# static curve stopped' '$TMP/stop/cost.tsv'"
 check "... cost.tsv keeps its columns (21 in every row)" \
     sh -c "grep -v '^#' '$TMP/stop/cost.tsv' | awk -F'\t' 'NF != 21 {bad = 1} END {exit bad || NR != 3}'"
+# A solid from a start where it cannot rest out of contact: --cost skips
+# the run's checks, but not the refusal: it measures the relaxation only,
+# so a solid (whose mode is physical time) is refused before any run, with
+# exit 2 and nothing written, as --batch refuses the start.
+for m in "" "--mode=relax"; do
+    # shellcheck disable=SC2086
+    "$ADHERE" --cost -q --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm $m -o "$TMP/solid" >/dev/null 2>"$TMP/stderr"
+    rc=$?
+    check "--cost of a solid from 0.4 nm${m:+ ($m)}: exit 2, nothing written ($rc: $(cat "$TMP/stderr"))" \
+        sh -c "[ $rc -eq 2 ] && [ ! -e '$TMP/solid' ]"
+done
 "$ADHERE" --cost -q --cost-nodes=5 >/dev/null 2>"$TMP/stderr"; rc=$?
 check "--cost-nodes=5 is refused with exit 2 ($(cat "$TMP/stderr"))" sh -c "[ $rc -eq 2 ] && grep -q 'use 10 to 20000 nodes' '$TMP/stderr'"
 "$ADHERE" --cost -q --cost-eps=0 >/dev/null 2>"$TMP/stderr"; rc=$?
