@@ -338,7 +338,7 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
          * further out reaches it; from there the start is solved at once. */
         adh_static_settings want = w->s;
         double *guess = malloc(n * sizeof *guess);
-        char how[160];
+        char how[sizeof w->why];   /* the way's stop whole: its remedy is at its end */
         unsigned fix = 0;
         int trc = guess ? traced(w, guess, how, sizeof how, &fix) : ADH_ENOMEM;
         w->s = want;
@@ -347,9 +347,12 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
         free(guess);
         if (rc != ADH_SUCCESS && trc != ADH_SUCCESS && trc != ADH_ENOMEM) {
             /* the start's own failure, and what stopped the way to it */
-            snprintf(w->why, sizeof w->why, "the static curve's start h0 = %s could not be solved from the "
-                     "undeformed surfaces, nor reached by the curve from further out: %s",
-                     adh_qtext(w->s.h0_start, ADH_Q_LENGTH).s, how);
+            snprintf(w->why, sizeof w->why, "the static curve from further out did not reach its start h0 = %s: ",
+                     adh_qtext(w->s.h0_start, ADH_Q_LENGTH).s);
+            size_t k = strlen(w->why), len = strlen(how);   /* how whole where it fits (its remedy last) */
+            len = len < sizeof w->why - 1 - k ? len : sizeof w->why - 1 - k;
+            memcpy(w->why + k, how, len);
+            w->why[k + len] = '\0';
             w->fix = fix;
             rc = trc;
         }
@@ -404,7 +407,7 @@ static int traced(adh_static *w, double *guess, char *how, size_t howlen, unsign
         adh_rings_edge_sentence(w->grid, a, how, howlen);
         *fix = adh_rings_edge_fix(w->grid, a);
     } else {
-        snprintf(how, howlen, "%.150s", w->why[0] ? w->why : adh_strerror(rc));
+        snprintf(how, howlen, "%s", w->why[0] ? w->why : adh_strerror(rc));
         *fix = w->fix;
     }
     return rc;

@@ -53,8 +53,8 @@ static void static_stops(const adh_grid *g, const adh_kernel *k, const adh_mater
     s.max_points = 5;
     int rc = static_run(g, k, m, s, 0.3e-9, &run);
     ok(rc == ADH_EMAXITER && run.status == rc && run.nrows == 0 &&
-       says(&run, (const char *[]){ "start h0 = 300 pm could not be solved from the undeformed surfaces, nor reached "
-                                    "by the curve from further out: the static curve reached its cap of 5 points",
+       says(&run, (const char *[]){ "the static curve from further out did not reach its start h0 = 300 pm: the "
+                                    "static curve reached its cap of 5 points",
                                     "before its end h0 = 300 pm", NULL }),
        "a static curve whose start fails says where and what stopped the way there (%s: %s; fix %#x)",
        adh_strerror(rc), run.why, run.fix);
@@ -78,6 +78,17 @@ static void static_stops(const adh_grid *g, const adh_kernel *k, const adh_mater
        "an arclength step below ds_min: the curve stalled, where, the last rejection, the relaxation named (%s)",
        run.why);
     ok(!strstr(run.why, adh_strerror(ADH_ESTALL)), "... in its own words, not the status code's");
+    adh_run_free(&run);
+    /* the same stall on the way to a start in contact (0.3 nm): the
+     * start, then the stall's sentence whole, to its last words */
+    rc = static_run(g, k, m, s, 0.3e-9, &run);
+    ok(rc == ADH_ESTALL && run.nrows == 0 &&
+       says(&run, (const char *[]){ "start h0 = 300 pm", "arclength step fell below its floor",
+                                    "the last attempt: the corrected point left the curve",
+                                    "the relaxation steps the drive without following the curve", NULL }) &&
+       run.fix == ADH_FIX_MODE,
+       "a stall on the way to the start: the start, and the stall's sentence whole (%zu bytes: %s)",
+       strlen(run.why), run.why);
     adh_run_free(&run);
 
     /* the same in steps of Q (lattice_skip): Newton's corrector given two
