@@ -138,6 +138,7 @@ $(BUILD)/%.o: %.c | deps
 # a test that compiles a source of the library with a bound of its own
 $(BUILD)/tests/test_path_ubound: src/core/rule_path.c
 $(BUILD)/tests/test_forcebase_oom: src/plot/forcebase.c
+$(BUILD)/tests/test_static_start_oom: src/core/static.c
 
 # The test programs (some 100 in make check, two builds) link through gold,
 # which binutils ships: 0.05 CPU s a program against ld.bfd's 0.18

@@ -188,8 +188,10 @@ adh_static *adh_static_alloc(const adh_grid *g, const adh_kernel *k);
 adh_static *adh_static_alloc_shared(const adh_grid *g, const adh_kernel *k, const double *entries);
 void adh_static_free(adh_static *w);
 
-/* Solves the start point (u = 0 as the first guess) and resets the curve.
- * ADH_EINVAL on bad settings, ADH_EMAXITER / ADH_ENAN when it fails. */
+/* Solves the start point (u = 0 as the first guess; where Newton fails
+ * from there, the curve traced down to it from the automatic start) and
+ * resets the curve. ADH_EINVAL on bad settings, ADH_EMAXITER / ADH_ENAN
+ * (or the way's stop) when it fails, ADH_ENOMEM. */
 int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settings *s);
 
 /* An extra undeformed gap e_n at every node, added to r^2/2R from the

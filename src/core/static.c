@@ -343,9 +343,13 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
         int trc = guess ? traced(w, guess, how, sizeof how, &fix) : ADH_ENOMEM;
         w->s = want;
         reset(w);
-        rc = start(w, trc == ADH_SUCCESS ? guess : NULL);
+        rc = trc == ADH_ENOMEM ? ADH_ENOMEM : start(w, trc == ADH_SUCCESS ? guess : NULL);
         free(guess);
-        if (rc != ADH_SUCCESS && trc != ADH_SUCCESS && trc != ADH_ENOMEM) {
+        if (rc == ADH_ENOMEM) {   /* said so, not as the start's Newton failure */
+            snprintf(w->why, sizeof w->why, "out of memory on the way to the static curve's start h0 = %s",
+                     adh_qtext(w->s.h0_start, ADH_Q_LENGTH).s);
+            w->fix = 0;
+        } else if (rc != ADH_SUCCESS && trc != ADH_SUCCESS) {
             /* the start's own failure, and what stopped the way to it */
             snprintf(w->why, sizeof w->why, "the static curve from further out did not reach its start h0 = %s: ",
                      adh_qtext(w->s.h0_start, ADH_Q_LENGTH).s);
