@@ -127,6 +127,7 @@ typedef struct adh_run_spec {
     adh_mode mode;
     adh_grid_settings grid;
     adh_time_settings time;        /* mode time's material and drive; the spring also static's */
+    size_t max_points;             /* the static curve's cap on points; 0: the solver's own */
 } adh_run_spec;
 
 /* What the drivers write, and where. */

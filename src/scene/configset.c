@@ -12,6 +12,7 @@
 #include <strings.h>
 
 #include "adhere/grid.h"
+#include "adhere/static.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
 #include "adhere/visco.h"
@@ -285,6 +286,21 @@ static int set_max_iter(adh_config *c, const key_def *k, const char *text, char 
         adh_relax_max_iter_check(n, why, whylen) != ADH_SUCCESS)
         return -1;
     c->spec.relax.max_iter = (size_t)n;
+    return 0;
+}
+
+/* The static curve's cap on points: a bound on its work, and the one stop
+ * a test can provoke on every CPU alike (a stall depends on rounding) */
+static int set_max_points(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    long n, hi = (long)adh_static_settings_default().max_points;
+    if (parse_count_of(text, "points", 2, hi, &n, why, whylen) != 0)
+        return -1;
+    if (n < 2 || n > hi) {
+        snprintf(why, whylen, "%ld points is not allowed: from 2 to %ld", n, hi);
+        return -1;
+    }
+    c->spec.max_points = (size_t)n;
     return 0;
 }
 
@@ -627,6 +643,11 @@ static void get_max_iter(const adh_config *c, const key_def *k, char *buf, size_
     snprintf(buf, len, "%zu", c->spec.relax.max_iter);
 }
 
+static void get_max_points(const adh_config *c, const key_def *k, char *buf, size_t len)
+{
+    snprintf(buf, len, "%zu", c->spec.max_points ? c->spec.max_points : adh_static_settings_default().max_points);
+}
+
 static void get_dwell(const adh_config *c, const key_def *k, char *buf, size_t len)
 {
     snprintf(buf, len, "%zu", c->spec.proto.dwell);
@@ -767,6 +788,7 @@ static const key_def keys[] = {
     { { "grid.force", R, ADH_Q_NONE, NULL }, set_bool, F(spec.grid.force), get_bool },
     { { "solver.eps", S | R, ADH_Q_LENGTH, "pm" }, set_quantity, F(spec.relax.eps), get_quantity },
     { { "solver.max_iter", S | R | C, ADH_Q_NONE, NULL }, set_max_iter, 0, get_max_iter },
+    { { "solver.max_points", S | R | C, ADH_Q_NONE, NULL }, set_max_points, 0, get_max_points },
     { { "solver.mixing", S | R, ADH_Q_NONE, NULL }, set_mixing, 0, get_mixing },
     { { "solver.momentum", S | R, ADH_Q_NONE, NULL }, set_momentum, 0, get_momentum },
     { { "protocol.start", S | R, ADH_Q_LENGTH, "nm" }, set_quantity_auto, F(spec.proto.start), get_quantity },

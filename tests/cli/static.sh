@@ -133,42 +133,53 @@ Fc=$(grep -v '^#' "$TMP/far/force.tsv" | awk -F'\t' 'NR > 2 && p > 3e-10 && $1 <
 check "static from 0.3 nm: exit 0, the first row at 0.3 nm in contact, its force the curve's there, $Fc N ($rc: $first: $(head -c 300 "$TMP/err"))" \
     sh -c "[ $rc -eq 0 ] && echo '$first' | awk -v Fc='$Fc' '{exit !(\$1 > 2.9999e-10 && \$1 < 3.0001e-10 && \$3 < 1.1 * 5e-10 &&
                                                                (\$2 / Fc - 1)^2 < 0.005^2)}'"
-# A curve that stops says why, not only the status words: from 0.3 nm on
-# 200 nodes (1.6 across the contact's edge zone, forced) the continuation
-# stalls deep in contact. stderr and summary.tsv's # PARTIAL line name
-# where and what to change (--mode); summary.tsv keeps its status line and
-# adds stop_reason after it; a study's status column says "status:
-# reason", and a rerun reads its rows back.
+# A curve that stops says why, not only the status words: the static
+# curve's cap on points (solver.max_points = 10, a scene's key), the one
+# stop every CPU reaches alike (the stall this provoked before depended on
+# rounding: the reference BLAS completed the curve). stderr and
+# summary.tsv's # PARTIAL line name where it was and where it was going;
+# summary.tsv keeps its status line and adds stop_reason after it; a
+# study's status column says "status: reason", and a rerun reads its rows
+# back.
+# the cap's own range: 2 points to the solver's 200000, refused by the value
+for v in 1 200001; do
+    printf '[solver]\nmax_points = %s\n' "$v" >"$TMP/capbad.scene"
+    "$ADHERE" --batch -q --no-plot --mode=static "$TMP/capbad.scene" -o "$TMP/capbad" 2>"$TMP/err"
+    rc=$?
+    check "max_points = $v: exit 2, the range named, nothing written ($rc: $(head -c 200 "$TMP/err"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q ': max_points: $v points is not allowed: from 2 to 200000\$' '$TMP/err' && [ ! -e '$TMP/capbad' ]"
+done
+printf '[solver]\nmax_points = 10\n' >"$TMP/cap.scene"
 # shellcheck disable=SC2086
-"$ADHERE" $S -N 200 --start=0.3nm -o "$TMP/stop" 2>"$TMP/err"
+"$ADHERE" $S -N 200 "$TMP/cap.scene" -o "$TMP/stop" 2>"$TMP/err"
 rc=$?
-why="the static curve stalled at h0 = [^ ]* nm (F = [^)]*): the arclength step fell below its floor, 1e-07 z0; .*(--mode)"
-check "static from 0.3 nm on 200 nodes: exit 1, stderr says why ($rc: $(tail -n 1 "$TMP/err"))" \
-    sh -c "[ $rc -eq 1 ] && grep -qx \"adhere: the solver stopped after [0-9]* steps: continuation could not make progress: $why\" '$TMP/err'"
+why="the static curve reached its cap of 10 points at h0 = [^ ]* nm, before its end h0 = -2 nm"
+check "static capped at 10 points on 200 nodes: exit 1, stderr says why ($rc: $(tail -n 1 "$TMP/err"))" \
+    sh -c "[ $rc -eq 1 ] && grep -qx \"adhere: the solver stopped after 10 steps: iteration cap reached before convergence: $why\" '$TMP/err'"
 check "... summary.tsv: # PARTIAL says it, status unchanged, then stop_reason, last" \
-    sh -c "grep -q \"^# PARTIAL: the solver stopped after [0-9]* steps: continuation could not make progress: $why\" '$TMP/stop/summary.tsv' &&
-           tail -n 2 '$TMP/stop/summary.tsv' | head -n 1 | grep -qx 'status	continuation could not make progress' &&
+    sh -c "grep -q \"^# PARTIAL: the solver stopped after 10 steps: iteration cap reached before convergence: $why\" '$TMP/stop/summary.tsv' &&
+           tail -n 2 '$TMP/stop/summary.tsv' | head -n 1 | grep -qx 'status	iteration cap reached before convergence' &&
            tail -n 1 '$TMP/stop/summary.tsv' | grep -qx \"stop_reason	$why\""
 check "a finished run has no stop_reason line" sh -c "! grep -q '^stop_reason' '$out/summary.tsv' '$TMP/inner/summary.tsv'"
 # shellcheck disable=SC2086
-"$ADHERE" $S -N 200 --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
+"$ADHERE" $S -N 200 "$TMP/cap.scene" --sweep=start=10nm,12nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
 rc=$?
 check "a study of such starts: exit 1, the row that stopped says why ($rc: $(grep -v '^#' "$TMP/stops/sweep.tsv" | sed -n 2p | awk -F'\t' '{print $NF}'))" \
     sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stops/sweep.tsv' | sed -n 2p | awk -F'\t' '{print \$NF}' |
-           grep -qx \"continuation could not make progress: $why\""
+           grep -qx \"iteration cap reached before convergence: $why\""
 # with run-K directories (the default up to 32 runs) the row takes the
 # word its run's summary.tsv said: that word was held in 32 bytes, and the
 # status column said 'iteration cap reached before co: ...'
 # shellcheck disable=SC2086
-"$ADHERE" $S -N 200 --sweep=start=0.3nm,0.4nm --run-dirs=yes -o "$TMP/stopsd" 2>"$TMP/err"
+"$ADHERE" $S -N 200 "$TMP/cap.scene" --sweep=start=10nm,12nm --run-dirs=yes -o "$TMP/stopsd" 2>"$TMP/err"
 rc=$?
 check "... with run-K directories: the status word whole, as in run-K's summary.tsv ($rc: $(grep -v '^#' "$TMP/stopsd/sweep.tsv" | sed -n 2p | awk -F'\t' '{print $NF}' | cut -c1-60))" \
     sh -c "[ $rc -eq 1 ] && grep -v '^#' '$TMP/stopsd/sweep.tsv' | sed -n 2p | awk -F'\t' '{print \$NF}' |
-           grep -qx \"continuation could not make progress: $why\" &&
-           grep -qx 'status	continuation could not make progress' '$TMP/stopsd/run-1/summary.tsv'"
+           grep -qx \"iteration cap reached before convergence: $why\" &&
+           grep -qx 'status	iteration cap reached before convergence' '$TMP/stopsd/run-1/summary.tsv'"
 cp "$TMP/stops/sweep.tsv" "$TMP/stops.before"
 # shellcheck disable=SC2086
-"$ADHERE" $S -N 200 --sweep=start=0.3nm,0.4nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
+"$ADHERE" $S -N 200 "$TMP/cap.scene" --sweep=start=10nm,12nm --run-dirs=no -o "$TMP/stops" 2>"$TMP/err"
 rc=$?
 check "... a rerun reads those rows back: the same sweep.tsv, exit 1 ($rc: $(head -c 300 "$TMP/err"))" \
     sh -c "[ $rc -eq 1 ] && cmp -s '$TMP/stops.before' '$TMP/stops/sweep.tsv'"
