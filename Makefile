@@ -162,7 +162,7 @@ run: all
 
 # One pass, one closing line: the tests, the C tests again under ASan and
 # UBSan, a short fuzz pass over the parsers and each benchmark once at a tiny
-# size. Under 3 minutes from a fresh clone on 2 cores (docs/testing.md). CI=true: a skip fails it.
+# size. About 3 minutes from a fresh clone on 2 cores (docs/testing.md). CI=true: a skip fails it.
 check: all $(UNIT_BIN) $(HARD_BIN) $(BENCH_BIN) asan-build fuzz-build
 	@ADHERE_BIN=$(abspath $(BIN)) ASAN_BUILD=build-asan FUZZ_BUILD=$(BUILD) tests/run-all.sh $(BUILD)
 
