@@ -192,7 +192,10 @@ typedef struct visco_rest_buf {
 } visco_rest_buf;
 int adh_visco_rest(const adh_kernel *k, const adh_material *m, double c0, double h0, size_t n,
                    const visco_rest_buf *b);
-/* h, p from u and h0 into w->h, w->p; 0, or -1 when a gap closed */
+/* h, p from u and h0 on n nodes of the given shape (r^2/2R, and any
+ * extra gap); 0, or -1 when a gap closed; adh_visco_gaps into w->h, w->p */
+int adh_visco_gaps_of(const adh_material *m, size_t n, const double *shape, const double *u, double h0, double *h,
+                      double *p);
 int adh_visco_gaps(adh_visco *w, const double *u, double h0);
 /* D = p'(h) at w->h into w->D */
 void adh_visco_slopes(adh_visco *w);

@@ -27,17 +27,23 @@ double adh_visco_h0_of(const adh_visco *w, const double *y)
     return w->spring ? y[w->IH] : adh_visco_base_of(w, y);
 }
 
-int adh_visco_gaps(adh_visco *w, const double *u, double h0)
+int adh_visco_gaps_of(const adh_material *m, size_t n, const double *shape, const double *u, double h0, double *h,
+                      double *p)
 {
-    double A = w->m.A, z0 = w->m.z0;
-    for (size_t i = 0; i < w->n; i++) {
-        double h = h0 + w->shape[i] - u[i];
-        if (!(h > 0))
+    double A = m->A, z0 = m->z0;
+    for (size_t i = 0; i < n; i++) {
+        double hi = h0 + shape[i] - u[i];
+        if (!(hi > 0))
             return -1;
-        w->h[i] = h;
-        w->p[i] = adh_lj_pressure(h, A, z0);
+        h[i] = hi;
+        p[i] = adh_lj_pressure(hi, A, z0);
     }
     return 0;
+}
+
+int adh_visco_gaps(adh_visco *w, const double *u, double h0)
+{
+    return adh_visco_gaps_of(&w->m, w->n, w->shape, u, h0, w->h, w->p);
 }
 
 void adh_visco_slopes(adh_visco *w)

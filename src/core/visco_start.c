@@ -8,26 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "adhere/law.h"
 #include "adhere/observe.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
 
 #define VISCO_START_ITERS 400   /* the start's fixed-point iterations */
-
-/* h, p from u at h0 (as adh_visco_gaps); 0, or -1 when a gap closed. */
-static int gaps(const adh_material *m, size_t n, const double *shape, const double *u, double h0, double *h,
-                double *p)
-{
-    for (size_t i = 0; i < n; i++) {
-        double hi = h0 + shape[i] - u[i];
-        if (!(hi > 0))
-            return -1;
-        h[i] = hi;
-        p[i] = adh_lj_pressure(hi, m->A, m->z0);
-    }
-    return 0;
-}
 
 int adh_visco_rest(const adh_kernel *k, const adh_material *m, double c0, double h0, size_t n,
                    const visco_rest_buf *b)
@@ -35,7 +20,7 @@ int adh_visco_rest(const adh_kernel *k, const adh_material *m, double c0, double
     double du = INFINITY;
     memset(b->u, 0, n * sizeof *b->u);
     for (int it = 0; it < VISCO_START_ITERS && !(du < 1e-13 * m->z0); it++) {
-        if (gaps(m, n, b->shape, b->u, h0, b->h, b->p) < 0)
+        if (adh_visco_gaps_of(m, n, b->shape, b->u, h0, b->h, b->p) < 0)
             return VISCO_REST_TOUCH;
         for (size_t i = 0; i < n; i++)
             b->tmp[i] = c0 * b->p[i];
@@ -48,7 +33,7 @@ int adh_visco_rest(const adh_kernel *k, const adh_material *m, double c0, double
     }
     if (!(du < 1e-13 * m->z0))
         return VISCO_REST_UNSETTLED;
-    if (gaps(m, n, b->shape, b->u, h0, b->h, b->p) < 0)
+    if (adh_visco_gaps_of(m, n, b->shape, b->u, h0, b->h, b->p) < 0)
         return VISCO_REST_TOUCH;
     for (size_t i = 0; i < n; i++)
         if (b->h[i] < ADH_CONTACT_FACTOR * m->z0)
