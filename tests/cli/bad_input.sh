@@ -120,35 +120,34 @@ bad "nul.dat:2: a NUL byte" --data="$TMP/nul.dat"
 printf 'h0 (\033[2Jnm)\tF (nN)\n1\t2\n' >"$TMP/esc.dat"
 bad "esc.dat:1: the control byte 0x1b: this is not a text table" --data="$TMP/esc.dat"
 check "... and the refusal holds no escape byte" sh -c "! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+# escaped RC WANT TEXT: the run exited WANT and its stderr says TEXT (a
+# name shown escaped, read as fixed text) with no ESC byte in it
+escaped() {
+    [ "$1" -eq "$2" ] && grep -qF -- "$3" "$TMP/stderr" && ! grep -q "$(printf '\033')" "$TMP/stderr"
+}
 # -o DIR with an escape sequence in its name: the messages show it escaped
 # (\x1b), its bytes never reach the terminal
 ESCDIR=$TMP/$(printf 'o\033[2Jdir')
 : >"$ESCDIR"
 "$ADHERE" --batch -q --mode=rigid -o "$ESCDIR/x" >/dev/null 2>"$TMP/stderr"
-check "-o DIR/x under a file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
-    sh -c "[ $? -eq 2 ] && grep -qF 'o\\x1b[2Jdir/x' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+check "-o DIR/x under a file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" escaped $? 2 'o\x1b[2Jdir/x'
 rm -f "$ESCDIR"
 "$ADHERE" --batch --mode=rigid -o "$ESCDIR" >/dev/null 2>"$TMP/stderr"
-check "... a run into it: its closing line names it escaped ($(cat "$TMP/stderr"))" \
-    sh -c "[ $? -eq 0 ] && grep -qF 'o\\x1b[2Jdir' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+check "... a run into it: its closing line names it escaped ($(cat "$TMP/stderr"))" escaped $? 0 'o\x1b[2Jdir'
 "$ADHERE" merge "$ESCDIR" >/dev/null 2>"$TMP/stderr"
-check "... merge of it (no shard there): exit 2, escaped ($(cat "$TMP/stderr"))" \
-    sh -c "[ $? -eq 2 ] && grep -qF 'o\\x1b[2Jdir holds no study.tsv' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+check "... merge of it (no shard there): exit 2, escaped ($(cat "$TMP/stderr"))" escaped $? 2 'o\x1b[2Jdir holds no study.tsv'
 # a scene or --data file named with an escape sequence: the refusal names
 # it escaped, as a directory's (every "adhere: ..." message goes through
 # one writer; it printed the name's bytes as they were)
 "$ADHERE" --batch -q "$TMP/$(printf 'x\033[2J').scene" >/dev/null 2>"$TMP/stderr"
-check "a scene file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
-    sh -c "[ $? -eq 2 ] && grep -qF 'x\\x1b[2J.scene' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+check "a scene file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" escaped $? 2 'x\x1b[2J.scene'
 "$ADHERE" --batch -q --mode=rigid --data="$TMP/$(printf 'd\033[2J').tsv" -o "$TMP/escdata" >/dev/null 2>"$TMP/stderr"
-check "a --data file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
-    sh -c "[ $? -eq 2 ] && grep -qF 'd\\x1b[2J.tsv' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+check "a --data file named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" escaped $? 2 'd\x1b[2J.tsv'
 # ... and the bare number's hint naming that scene (it was printed past
 # the one writer, the ESC as it was)
 printf '[material]\nE = 300\n' >"$TMP/$(printf 'h\033[2J').scene"
 "$ADHERE" --batch -q "$TMP/$(printf 'h\033[2J').scene" >/dev/null 2>"$TMP/stderr"
-check "a bare-number hint naming a scene named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" \
-    sh -c "[ $? -eq 2 ] && grep -qF 'did you mean E = 300GPa or E = 300MPa in $TMP/h\\x1b[2J.scene?' '$TMP/stderr' && ! grep -q \"\$(printf '\033')\" '$TMP/stderr'"
+check "a bare-number hint naming a scene named with ESC: exit 2, the name escaped ($(cat "$TMP/stderr"))" escaped $? 2 "did you mean E = 300GPa or E = 300MPa in $TMP/h\\x1b[2J.scene?"
 # a byte that begins no UTF-8 character (0x9b, CSI to some terminals) in
 # the name is escaped too: it was quoted as it was; a UTF-8 name is not
 C1DIR=$TMP/$(printf 'o\2332J\302\265dir')
