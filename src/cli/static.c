@@ -5,18 +5,13 @@
 #include <string.h>
 
 #include "adhere/grid.h"
-#include "adhere/rule_path.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
 
 int cli_static_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k,
                    adh_step_cb cb, void *ctx, adh_run *run, adh_static_result *res)
 {
-    /* the one cancel flag of the run; under a spring close points, as
-     * physical time's elastic path takes them (one curve, one setting) */
-    adh_static_settings s = adh_rule_path_static_settings(spec->time.spring, spec->relax.cancel);
-    if (spec->max_points)
-        s.max_points = spec->max_points;
+    adh_static_settings s = adh_config_static_settings(spec);
     /* The same start as the relaxation run, so the two curves share an
      * axis; the drive ends the curve at the protocol's deepest turn. */
     adh_protocol_settings ps = spec->proto;

@@ -6,6 +6,7 @@
 
 #include "adhere/grid.h"
 #include "adhere/models.h"
+#include "adhere/rule_path.h"
 #include "adhere/status.h"
 #include "adhere/visco.h"
 
@@ -41,6 +42,16 @@ double adh_config_start(const adh_run_spec *s)
     if ((s->mode == ADH_MODE_STATIC || s->mode == ADH_MODE_TIME) && isfinite(s->time.spring))
         return adh_visco_auto_start(&s->mat, s->time.spring, s->proto.step);
     return adh_protocol_auto_start(&s->mat, s->proto.step);
+}
+
+adh_static_settings adh_config_static_settings(const adh_run_spec *s)
+{
+    /* under a spring close points, as physical time's elastic path takes
+     * them (one curve, one setting), polling the run's one cancel flag */
+    adh_static_settings ss = adh_rule_path_static_settings(s->time.spring, s->relax.cancel);
+    if (s->max_points)
+        ss.max_points = s->max_points;
+    return ss;
 }
 
 /* Up to max profile positions spread from the deepest turn (without turns:

@@ -17,6 +17,7 @@
 #include "adhere/protocol.h"
 #include "adhere/relax.h"
 #include "adhere/rings.h"
+#include "adhere/static.h"
 #include "adhere/units.h"
 #include "scene/figures.h"
 
@@ -282,6 +283,11 @@ adh_protocol_settings adh_config_protocol_for(const adh_config *c, adh_mode mode
 size_t adh_config_default_profiles(const adh_material *mat, const adh_protocol_settings *ps, double *out, size_t max);
 /* The start a run of s begins at: s's, or the automatic one. */
 double adh_config_start(const adh_run_spec *s);
+/* The static curve's settings for run s, as every driver (--batch
+ * --mode=static, the reference curve, the screen's m) hands them to the
+ * solver: the spring's closer points (adh_rule_path_static_settings),
+ * s's cancel flag and its cap on points (solver.max_points). */
+adh_static_settings adh_config_static_settings(const adh_run_spec *s);
 
 /* The grid the run s builds, uniform or graded (NULL if it cannot be
  * built: adh_config_grid_check says why), and its kernel in the storage

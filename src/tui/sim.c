@@ -1119,9 +1119,7 @@ static int curve_work(tui_sim *s, char *why, size_t whylen, int *busy)
         /* the relaxation's start and deepest turn: the two share an axis,
          * as in --batch */
         adh_protocol_settings ps = adh_config_protocol_for(&s->cfg, curve_mode_of(s));
-        adh_static_settings ss = adh_static_settings_default();
-        if (spec(s)->max_points)
-            ss.max_points = spec(s)->max_points;
+        adh_static_settings ss = adh_config_static_settings(spec(s));
         adh_visco_rule_settings vs;
         adh_config_visco(spec(s), &vs);
         s->ckey.mat = spec(s)->mat;

@@ -326,6 +326,14 @@ if [ -s "$SB/summary.tsv" ]; then
 else
     fail "--batch --mode=static with the static case's settings wrote no summary: $(head -c 300 "$work/static-batch.err")"
 fi
+# One static curve under a spring, whoever builds its settings: the
+# screen's m takes --batch --mode=static --spring's closer points (the
+# snap points are read off between them), the same rows, every one.
+SS=$work/staticspring-batch
+"$bin" --batch --mode=static --nodes=100 --spacing=10nm --force --turn=-1nm --spring=1 --no-plot -o "$SS" \
+    </dev/null >/dev/null 2>"$SS.err"
+check "under a spring the screen's static curve is --batch --mode=static --spring's rows, every one ($(($(rows "$SS/force.tsv" 2>/dev/null | wc -l) - 1)) rows)" \
+    same_rows "$W/staticspring/staticspring-rows.tsv" "$SS"
 check "the end of the curve is said, on the state and status lines" \
     sh -c "grep -q 'curve  complete, ends at h0 = -5 nm' '$ST/static-end.txt' && grep -q '^curve complete at h0 = -5 nm' '$ST/static-end.txt'"
 check "the preview marks stable (*) and unstable (.) points" \
