@@ -139,6 +139,8 @@ $(BUILD)/%.o: %.c | deps
 $(BUILD)/tests/test_path_ubound: src/core/rule_path.c
 $(BUILD)/tests/test_forcebase_oom: src/plot/forcebase.c
 $(BUILD)/tests/test_static_start_oom: src/core/static.c
+# ... or a driver's (the screen's session, its kernel count read)
+$(BUILD)/tests/test_tui_start_kernels: src/tui/sim.c src/tui/sim.h
 
 # The test programs (some 100 in make check, two builds) link through gold,
 # which binutils ships: 0.05 CPU s a program against ld.bfd's 0.18

@@ -306,6 +306,30 @@ int adh_config_kernel_fits(adh_kernel_type kernel, int graded);
 /* Whether runs a and b build the same grid and kernel (one can serve
  * both): rigid runs build none. */
 int adh_config_same_grid(const adh_run_spec *a, const adh_run_spec *b);
+/* A grid and its kernel kept for the run they were built for, between
+ * calls (kernelkeep.c): the screen's start check at every edit builds one
+ * only when the grid changes. Owned (freed by adh_config_kept_drop), or
+ * lent by a caller that holds the same grid for itself. */
+typedef struct adh_config_kept {
+    adh_run_spec spec;   /* the run g and k were built for */
+    adh_grid *g;
+    adh_kernel *k;       /* NULL: none kept */
+    int lent;            /* g and k are the lender's: never freed here */
+    size_t built;        /* kernels built into it so far */
+} adh_config_kept;
+void adh_config_kept_init(adh_config_kept *kp);
+/* Forgets g and k, freeing them unless lent. */
+void adh_config_kept_drop(adh_config_kept *kp);
+/* Keeps the caller's g and k, built for run s (until dropped). */
+void adh_config_kept_lend(adh_config_kept *kp, const adh_run_spec *s, adh_grid *g, adh_kernel *k);
+/* The grid and kernel of run s in kp: those kept when s builds the same
+ * grid (adh_config_same_grid), else built now (counted in kp->built).
+ * ADH_SUCCESS; ADH_ENOMEM or ADH_EINTR with none kept. */
+int adh_config_kept_get(adh_config_kept *kp, const adh_run_spec *s);
+/* Moves an owned grid and kernel that run s builds into *g, *k (the caller
+ * frees them now): 1; else 0, nothing moved. */
+int adh_config_kept_take(adh_config_kept *kp, const adh_run_spec *s, adh_grid **g, adh_kernel **k);
+
 /* The nodes (uniform) or rings (graded) of the grid the run s builds. */
 size_t adh_config_nodes(const adh_run_spec *s);
 /* The grid spacing in use: the explicit one, or the paper's grid radius
@@ -384,6 +408,10 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
  * (a sweep's run named) and *fix the settings that get past it, for the
  * driver's words (timestart.c). */
 int adh_config_start_check(const adh_config *cfg, char *why, size_t whylen, unsigned *fix);
+/* The same on the grid and kernel kept in kp (adh_config_kept), left
+ * there for the next call: an edit that leaves the grid builds none. */
+int adh_config_start_check_kept(const adh_config *cfg, adh_config_kept *kp, char *why, size_t whylen,
+                                unsigned *fix);
 /* 0, or -1 with a sentence, when c's study does not fit physical time: plot
  * = speed without one speed swept in time, plot = snap without one spring
  * swept, eps swept in time. */

@@ -142,6 +142,10 @@ typedef struct tui_sim {
     adh_grid *sg;              /* its own grid and kernel: an automatic grid is chosen per mode, */
     adh_kernel *sk;            /* the static curve's finer (0.3 edge widths against 0.45) */
     adh_grid_spec sbuilt;      /* the grid sg was built for */
+    adh_config_kept startk;    /* a solid's start check: its grid and kernel (sg, sk lent while they
+                                  are the same grid), kept from edit to edit, and handed to the curve */
+    size_t kernels_built;      /* kernels this session built for the path and the curve (the start
+                                  check's: startk.built) */
     adh_run curve;             /* rows: every point computed so far, in curve order */
     size_t ccur;               /* the point shown (when curve.nrows > 0) */
     int walk;                  /* the step in progress only moves the cursor: +1, -1 */
@@ -287,5 +291,8 @@ const adh_grid_spec *tui_sim_grid(const tui_sim *s);
 /* Whether the next step of the mode on screen first builds its grid and
  * kernel (the first step, or the grid changed): a moment at large N. */
 int tui_sim_will_build(const tui_sim *s);
+/* Kernels this session has built: the path's, the curve's and the start
+ * check's (an edit that leaves the grid builds none). */
+size_t tui_sim_kernels_built(const tui_sim *s);
 
 #endif
