@@ -314,6 +314,12 @@ static int start(adh_static *w, const double *guess)
 static void reset(adh_static *w);
 static int traced(adh_static *w, double *guess, char *how, size_t howlen, unsigned *fix);
 
+/* Whether the surfaces touch at the present point (a row's a > 0). */
+static int in_contact(const adh_static *w)
+{
+    return adh_contact_radius(w->grid, w->st->h, w->m.z0) > 0;
+}
+
 int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settings *s)
 {
     if (adh_static_settings_validate(s, NULL, 0) != ADH_SUCCESS || adh_material_validate(m, NULL, 0) != ADH_SUCCESS)
@@ -330,8 +336,16 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     for (size_t i = 0; i < n; i++)
         w->shape[i] = w->grid->r[i] * w->grid->r[i] / (2.0 * m->R) + (w->extra ? w->extra[i] : 0.0);
     reset(w);
+    w->past_on = w->past_lost = 0;
     int rc = start(w, NULL);
-    if (rc == ADH_EMAXITER || rc == ADH_ENAN) {
+    /* A start in contact: the unloading goes on past it until the surfaces
+     * separate (the protocol's rule, adhere/drive.h, one for every mode):
+     * on the static curve that is the curve from further out, traced from
+     * the automatic start down to the start; its pull-off and jump-out are
+     * the curve's (docs/static-curve.md). The start itself is solved again
+     * as it was, from the undeformed surfaces. */
+    int past = rc == ADH_SUCCESS && in_contact(w);
+    if (rc == ADH_EMAXITER || rc == ADH_ENAN || past) {
         /* Newton from the undeformed surfaces did not reach the state
          * there: a contact (a stiff sphere already pressing, or past the
          * snap-in, the inner branch) too far from them. The curve from
@@ -343,8 +357,13 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
         int trc = guess ? traced(w, guess, how, sizeof how, &fix) : ADH_ENOMEM;
         w->s = want;
         reset(w);
-        rc = trc == ADH_ENOMEM ? ADH_ENOMEM : start(w, trc == ADH_SUCCESS ? guess : NULL);
+        /* (stopped on the way: no curve) */
+        rc = trc == ADH_ENOMEM || trc == ADH_EINTR ? trc : start(w, trc == ADH_SUCCESS && !past ? guess : NULL);
         free(guess);
+        if (rc == ADH_SUCCESS && in_contact(w)) {
+            w->past_on = trc == ADH_SUCCESS;
+            w->past_lost = trc != ADH_SUCCESS;
+        }
         if (rc == ADH_ENOMEM) {   /* said so, not as the start's Newton failure */
             snprintf(w->why, sizeof w->why, "out of memory on the way to the static curve's start h0 = %s",
                      adh_qtext(w->s.h0_start, ADH_Q_LENGTH).s);
@@ -404,6 +423,7 @@ static int traced(adh_static *w, double *guess, char *how, size_t howlen, unsign
             rc = ADH_SUCCESS;
     if (rc == ADH_SUCCESS) {
         memcpy(guess, w->st->u, w->n * sizeof *guess);
+        w->past = adh_folds_summary_of(w->folds);
         return rc;
     }
     double a = adh_contact_radius(w->grid, w->st->h, w->m.z0);
@@ -485,6 +505,18 @@ void adh_static_summary(const adh_static *w, adh_static_result *res)
     res->pulloff_h0 = f.pulloff_h0;
     res->pulloff_F_disp = f.pulloff_F_disp;
     res->folds = f.folds;
+    if (w->past_lost) {   /* the unloading past the start is not known */
+        res->pulloff_F = res->pulloff_h0 = NAN;
+    } else if (w->past_on) {   /* the curve past the start, as from further out */
+        if (w->past.pulloff_F < res->pulloff_F) {
+            res->pulloff_F = w->past.pulloff_F;
+            res->pulloff_h0 = w->past.pulloff_h0;
+        }
+        if (!isnan(w->past.jump_out_h0) && !(w->past.jump_out_h0 <= res->jump_out_h0)) {
+            res->jump_out_h0 = w->past.jump_out_h0;
+            res->pulloff_F_disp = w->past.pulloff_F_disp;
+        }
+    }
 }
 
 size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds)

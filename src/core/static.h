@@ -128,6 +128,12 @@ struct adh_static {
     static_front fr;
     adh_folds *folds;
     adh_static_result res;
+    /* A start in contact: the curve past it, from the automatic start down
+     * to it (the unloading goes on past the start until the surfaces
+     * separate, as the drive's does): its summary, merged into the
+     * curve's (past_on), or unknown (past_lost: no pull-off then). */
+    adh_folds_summary past;
+    int past_on, past_lost;
     double *buf;      /* the vectors above, one allocation */
     const char *last_reject; /* why the last step attempt was rejected (static_reject) */
     char why[400];    /* why the curve stopped ("" while it goes on; as long as a run's) */

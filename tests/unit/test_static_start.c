@@ -5,7 +5,10 @@
  * curve's own state there all the same: it solves u = -(2/E) W p (checked
  * here by the kernel's own product), it is stable and goes in, and its
  * force is the curve's through that h0 traced from far out (the last of
- * its crossings going in: past the snap-in, the inner branch). */
+ * its crossings going in: past the snap-in, the inner branch). Its
+ * unloading goes on past the start until the surfaces part: the curve's
+ * pull-off and jump-out are those of the curve from far out (a 1 TPa
+ * sphere from 0.1 nm reported +9 uN, its start's force, as a pull-off). */
 #include <math.h>
 #include <stdlib.h>
 
@@ -78,6 +81,24 @@ static void one(double E, double start, size_t n, double dr, int folded, const c
         ok(frc == ADH_SUCCESS && fabs(o.F / Fc - 1) < 0.005,
            "%s: its force %.5g N is the curve's from far out there, %.5g N (%.2g %%)", what, o.F, Fc,
            100 * fabs(o.F / Fc - 1));
+        /* the unloading goes on past the start until the surfaces part
+         * (the protocol's rule): the pull-off and jump-out are the curve's
+         * from far out, not the lowest force from the start inward (that
+         * of the start itself where the force only rises inward) */
+        int irc;
+        while ((irc = adh_static_iterate(w)) == ADH_CONTINUE)
+            ;
+        adh_static_result mine;
+        adh_static_summary(w, &mine);
+        ok(irc == ADH_SUCCESS && res.pulloff_F < 0 && fabs(mine.pulloff_F / res.pulloff_F - 1) < 1e-3 &&
+           fabs(mine.pulloff_h0 - res.pulloff_h0) < 1e-3 * m.z0 && mine.pulloff_h0 > start,
+           "%s: its pull-off %.6g N at %.4g nm, past the start, is the curve's from far out, %.6g N at %.4g nm",
+           what, mine.pulloff_F, mine.pulloff_h0 * 1e9, res.pulloff_F, res.pulloff_h0 * 1e9);
+        ok(isnan(res.jump_out_h0) ? isnan(mine.jump_out_h0)
+                                  : fabs(mine.jump_out_h0 - res.jump_out_h0) < 1e-3 * m.z0 &&
+                                    fabs(mine.pulloff_F_disp / res.pulloff_F_disp - 1) < 1e-3,
+           "%s: and its jump-out %.4g nm (F %.4g N) the curve's, %.4g nm (F %.4g N)", what,
+           mine.jump_out_h0 * 1e9, mine.pulloff_F_disp, res.jump_out_h0 * 1e9, res.pulloff_F_disp);
         if (folded)
             ok(res.folds && res.jump_in_h0 > start,
                "%s: the start is past the curve's snap-in at %.4g nm: its inner branch (%zu folds)", what,
@@ -95,5 +116,8 @@ int main(void)
 {
     one(10e9, 0.4e-9, 200, 1.5e-9, 0, "E = 10 GPa (no folds)");
     one(3e9, 1.0e-9, 200, 1.5e-9, 1, "E = 3 GPa");
+    /* Newton from the undeformed surfaces solves this start (pressing,
+     * +9 uN); the pull-off past it, DMT's -2 pi gamma R nearly */
+    one(1e12, 0.1e-9, 200, 1.5e-9, 0, "E = 1 TPa (no folds)");
     return tap_done();
 }
