@@ -409,7 +409,8 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
  * driver's words (timestart.c). */
 int adh_config_start_check(const adh_config *cfg, char *why, size_t whylen, unsigned *fix);
 /* The same on the grid and kernel kept in kp (adh_config_kept), left
- * there for the next call: an edit that leaves the grid builds none. */
+ * there for the next call: an edit that leaves the grid builds none (kp
+ * is dropped when no run has a start to check). */
 int adh_config_start_check_kept(const adh_config *cfg, adh_config_kept *kp, char *why, size_t whylen,
                                 unsigned *fix);
 /* 0, or -1 with a sentence, when c's study does not fit physical time: plot

@@ -32,7 +32,7 @@ int adh_config_start_check_kept(const adh_config *cfg, adh_config_kept *kp, char
 {
     size_t n = cfg->sweep.naxes ? adh_config_nruns(cfg) : 1;
     adh_run_spec run;
-    int rc = ADH_SUCCESS;
+    int rc = ADH_SUCCESS, used = 0;
     *fix = 0;
     for (size_t i = 0; i < n && rc == ADH_SUCCESS; i++) {
         adh_config_sweep_run(cfg, i, &run);
@@ -43,6 +43,7 @@ int adh_config_start_check_kept(const adh_config *cfg, adh_config_kept *kp, char
         if (run.mode != ADH_MODE_TIME || adh_config_time_rule(&run) != &adh_rule_visco || isnan(run.proto.start))
             continue;
         char msg[1024], which[256];
+        used = 1;
         if ((rc = start_check(&run, kp, msg, sizeof msg, fix)) == ADH_SUCCESS)
             continue;
         if (!cfg->sweep.naxes) {
@@ -52,6 +53,8 @@ int adh_config_start_check_kept(const adh_config *cfg, adh_config_kept *kp, char
         adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
         snprintf(why, whylen, "sweep run %zu (%s): %s", i + 1, which, msg);
     }
+    if (!used)   /* nothing to check now: no kernel held for nothing */
+        adh_config_kept_drop(kp);
     return rc;
 }
 

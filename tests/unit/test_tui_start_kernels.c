@@ -97,6 +97,9 @@ int main(void)
     rc = edit(&s, "grid.nodes", "200");
     ok(rc == 0 && tui_sim_kernels_built(&s) == 3, "back to N = 200: its kernel again, one (%zu built)",
        tui_sim_kernels_built(&s));
+    rc = edit(&s, "protocol.start", "auto");
+    ok(rc == 0 && !s.startk.k && tui_sim_kernels_built(&s) == 3,
+       "the automatic start has nothing to check: no kernel is held for it (%zu built)", tui_sim_kernels_built(&s));
     tui_sim_free(&s);
     return tap_done();
 }
