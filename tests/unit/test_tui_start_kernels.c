@@ -58,7 +58,7 @@ int main(void)
         return tap_done();
     }
     tui_sim s;
-    char why[1024];
+    char why[1024] = "";
     ok(tui_sim_init(&s, &c, why, sizeof why) == 0, "the screen opens on it (%s)", why);
     ok(tui_sim_kernels_built(&s) == 1, "opening checks the start twice on one kernel (%zu built)",
        tui_sim_kernels_built(&s));
