@@ -533,6 +533,12 @@ void adh_outdir_escape(const char *in, char *out, size_t len)
 
 void adh_outdir_escape_text(const char *in, char *out, size_t len, int keep_lines)
 {
+    adh_outdir_escape_prefix(in, out, len, keep_lines);
+}
+
+size_t adh_outdir_escape_prefix(const char *in, char *out, size_t len, int keep_lines)
+{
+    const char *in0 = in;
     size_t o = 0;
     for (; *in && o + 1 < len; in++) {
         unsigned char b = (unsigned char)*in;
@@ -555,6 +561,7 @@ void adh_outdir_escape_text(const char *in, char *out, size_t len, int keep_line
     }
     if (len)
         out[o < len ? o : len - 1] = '\0';
+    return (size_t)(in - in0);
 }
 
 static adh_outdir *outdir_new(int fd, unsigned flags, const char *path)

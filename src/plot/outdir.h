@@ -80,6 +80,9 @@ void adh_outdir_escape(const char *in, char *out, size_t len);
  * stay as they are (they lay the message out; they move no cursor a
  * terminal does not expect). */
 void adh_outdir_escape_text(const char *in, char *out, size_t len, int keep_lines);
+/* The same, returning how many bytes of in were written (escaped): all of
+ * them (strlen(in)) when out held the text whole; out holds 4 strlen(in) + 1. */
+size_t adh_outdir_escape_prefix(const char *in, char *out, size_t len, int keep_lines);
 
 /* The path d was opened as, for messages ("DIR/run-2"), escaped as
  * adh_outdir_escape does. */

@@ -5,6 +5,14 @@
 #ifndef ADH_PLOT_SAY_H
 #define ADH_PLOT_SAY_H
 
+#include <stddef.h>
+
+/* The most of a message's bytes said: a message is written whole up to
+ * this size (a long path, a long list), and a longer one cut there, ending
+ * with an ellipsis and how many bytes were left out ("... (message cut:
+ * 5000 bytes more)"); the same where memory for a long one runs out. */
+#define ADH_SAY_MAX ((size_t)1 << 20)
+
 /* Writes "adhere: MSG\n" to stderr, MSG's control bytes (but newlines and
  * tabs) and bytes that begin no UTF-8 character as \xNN. */
 void adh_say(const char *msg);
