@@ -97,9 +97,14 @@ if command -v parallel >/dev/null 2>&1; then
     # the real one): it runs the array's tasks under GNU parallel, then the
     # merge. A scene, a directory and a flag's value with a space in them
     # (and a quote): ADHERE_ARGS="$*" split --gnuplot-style's path into
-    # three words, and every task stopped on a scene path that is not one
-    mkdir -p "$TMP/fake bin" "$TMP/sub scenes" "$TMP/it's styled"
-    : >"$TMP/it's styled/style.gp"
+    # three words, and every task stopped on a scene path that is not one.
+    # The style's directory name ends in two newlines: submit.sh's $(...)
+    # dropped them, and every task was refused a directory that is not there
+    styled="$TMP/it's styled
+
+"
+    mkdir -p "$TMP/fake bin" "$TMP/sub scenes" "$styled"
+    : >"$styled/style.gp"
     printf '[scene]\nmode = rigid\n[sweep]\nE = 1GPa, 2GPa, 3GPa, 4GPa\n' >"$TMP/sub scenes/rigid map.scene"
     cat >"$TMP/fake bin/sbatch" <<'EOF'
 #!/bin/sh
@@ -123,12 +128,15 @@ else
 fi
 EOF
     chmod +x "$TMP/fake bin/sbatch"
+    # OUT's name ends in a newline too: submit.sh's $(cd OUT && pwd) dropped it
+    subout="$TMP/sub out
+"
     PATH="$TMP/fake bin:$PATH" ADHERE="$ADHERE" sh "${ADHERE_SRC:-.}/share/adhere/examples/submit.sh" \
-        "$TMP/sub scenes/rigid map.scene" "$TMP/sub out" 2 --gnuplot-style="$TMP/it's styled" -N 100 \
+        "$TMP/sub scenes/rigid map.scene" "$subout" 2 --gnuplot-style="$styled" -N 100 \
         >"$TMP/sub.out" 2>"$TMP/sub.err"
     rc=$?
-    n=$(rows "$TMP/sub out/merged/sweep.tsv" 2>/dev/null | wc -l)
-    check "submit.sh: a scene, -o and --gnuplot-style with spaces and a quote reach each task whole; 2 shards run and merge, 4 rows (exit $rc, $n rows: $(cat "$TMP/sub.out" "$TMP/sub.err" "$TMP/sub out"/*.out 2>/dev/null | head -c 400))" \
+    n=$(rows "$subout/merged/sweep.tsv" 2>/dev/null | wc -l)
+    check "submit.sh: a scene, -o and --gnuplot-style with spaces, a quote and trailing newlines reach each task whole; 2 shards run and merge, 4 rows (exit $rc, $n rows: $(cat "$TMP/sub.out" "$TMP/sub.err" "$subout"/*.out 2>/dev/null | head -c 400))" \
         sh -c "[ $rc -eq 0 ] && [ $n -eq 4 ] && grep -q 'shards: job 41 (array 1-2), merge: job 42' '$TMP/sub.out'"
 else
     not_ok "GNU parallel is not installed (make deps installs it)"

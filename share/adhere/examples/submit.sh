@@ -18,16 +18,21 @@ if [ $# -lt 3 ]; then
     exit 2
 fi
 here=$(cd "$(dirname "$0")" && pwd)
-scene=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+# the scene and OUT as absolute paths, each whole: $(...) would drop a
+# name's trailing newlines
+case $1 in /*) scene=$1 ;; *) scene=$PWD/$1 ;; esac
 out=$2 n=$3
 shift 3
 mkdir -p "$out"
-out=$(cd "$out" && pwd)
+case $out in /*) ;; *) out=$PWD/$out ;; esac
 # the flags as shell words, each single-quoted (' as '\''): study.sbatch
-# reads them back one by one, a value with a space (a path) whole
+# reads them back one by one, a value with a space (a path) whole. $(...)
+# drops the trailing newlines of what it captures: the quoted value ends
+# with a sentinel x, removed after, so a value ending in newlines keeps them
 args=
 for a in "$@"; do
-    args="$args '$(printf '%s' "$a" | sed "s/'/'\\\\''/g")'"
+    q=$(printf '%s' "$a" | sed "s/'/'\\\\''/g"; printf x)
+    args="$args '${q%x}'"
 done
 # ADHERE_SHARDS: task K is shard K/N, so a task resubmitted alone is its shard again
 array=$(ADHERE_SCENE="$scene" ADHERE_OUT="$out" ADHERE_ARGS="$args" ADHERE_SHARDS="$n" \
