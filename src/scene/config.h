@@ -406,11 +406,14 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
  * (adh_visco_start_check); else that run would stop before its first
  * step. ADH_SUCCESS; or ADH_EINVAL (ADH_ENOMEM) with why naming the start
  * (a sweep's run named) and *fix the settings that get past it, for the
- * driver's words (timestart.c). */
-int adh_config_start_check(const adh_config *cfg, char *why, size_t whylen, unsigned *fix);
+ * driver's words (timestart.c). keyed: the sentence names the start as the
+ * configuration's sentences name a key ("protocol.start = 400pm is not
+ * allowed", for adh_config_reword); else as a quantity ("start = 400 pm"). */
+int adh_config_start_check(const adh_config *cfg, int keyed, char *why, size_t whylen, unsigned *fix);
 /* The same on the grid and kernel kept in kp (adh_config_kept), left
- * there for the next call: an edit that leaves the grid builds none (kp
- * is dropped when no run has a start to check). */
+ * there for the next call, the start as a quantity (the screen's words):
+ * an edit that leaves the grid builds none (kp is dropped when no run has
+ * a start to check). */
 int adh_config_start_check_kept(const adh_config *cfg, adh_config_kept *kp, char *why, size_t whylen,
                                 unsigned *fix);
 /* 0, or -1 with a sentence, when c's study does not fit physical time: plot

@@ -425,15 +425,17 @@ check "--plan through a spring: its steps said not counted, no factor of 3 promi
 # and ended with exit 1. It is refused before anything is written, naming
 # the start, the rule and the nearest start that is, on the run's own
 # grid and kernel; an earlier run's tables in -o stay as they were.
-bad "start = 300 pm is not allowed: a standard linear solid starts relaxed, at rest out of contact (every gap at least 1.1 z0 = 550 pm), and there no rest state settles" \
+# The first words name the start as it was given: the flag with its value
+# (they said 'start = 300 pm' to a user who wrote --start)
+bad "^adhere: --start=300pm is not allowed: a standard linear solid starts relaxed, at rest out of contact (every gap at least 1.1 z0 = 550 pm), and there no rest state settles" \
     --material=sls --tau=1ms --start=0.3nm
-bad "start = 400 pm is not allowed: .* there at rest its smallest gap is [0-9.]* pm; the nearest start that is, to within the step 50 pm: [0-9.]* pm (--start)" \
+bad "^adhere: --start=400pm is not allowed: .* there at rest its smallest gap is [0-9.]* pm; the nearest start that is, to within the step 50 pm: [0-9.]* pm (--start)" \
     --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200
-# a scene's start is named as the scene wrote it (the advice said --start,
-# a flag the scene's user never gave)
+# a scene's start is named as the scene wrote it, its key with file and
+# line (the advice said --start, a flag the scene's user never gave)
 printf '[material]\nmaterial = sls\nE0 = 0.5TPa\nEinf = 1TPa\n[protocol]\nstart = 0.4nm\nturns = -2nm\n[grid]\nnodes = 200\n' >"$TMP/start.scene"
-bad "start = 400 pm is not allowed: .*: [0-9.]* pm (start at $TMP/start.scene:6)$" "$TMP/start.scene"
-bad "sweep run 1 (E0 = 5e+11): start = 400 pm is not allowed" \
+bad "^adhere: start = 400pm ($TMP/start.scene:6) is not allowed: .*: [0-9.]* pm (start at $TMP/start.scene:6)$" "$TMP/start.scene"
+bad "^adhere: sweep run 1 (E0 = 5e+11): --start=400pm is not allowed" \
     --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200 --sweep=E0=0.5TPa,0.6TPa
 "$ADHERE" --batch -q --no-plot --material=sls --E0=0.5TPa --Einf=1TPa --start=0.6nm --turn=-2nm -N 200 -o "$TMP/tkeep" 2>"$TMP/err"
 rc=$?

@@ -25,7 +25,7 @@ static int fresh(const tui_sim *s)
 {
     char why[1024];
     unsigned fix;
-    return adh_config_start_check(&s->cfg, why, sizeof why, &fix);
+    return adh_config_start_check(&s->cfg, 0, why, sizeof why, &fix);
 }
 
 /* An edit on the screen, as :set makes it: 0 taken, -1 refused. */
@@ -75,7 +75,7 @@ int main(void)
     adh_config bad = s.cfg;
     ok(set(&bad, "protocol.start", "0.4nm") == 0, "the same start set on a copy");
     unsigned fix;
-    ok(adh_config_start_check(&bad, why, sizeof why, &fix) == ADH_EINVAL && (fix & ADH_FIX_START),
+    ok(adh_config_start_check(&bad, 0, why, sizeof why, &fix) == ADH_EINVAL && (fix & ADH_FIX_START),
        "and a fresh check refuses it too, naming the start");
     ok(tui_sim_kernels_built(&s) == 1, "the refusal built none either (%zu built)", tui_sim_kernels_built(&s));
 
