@@ -63,6 +63,17 @@ static const char *scene_word(const adh_config *cfg, size_t i, int voice, int *o
     return strchr(flags[i].key, '.') + 1;
 }
 
+/* The i-th key as a flag, with value (NULL: none): "-R=500nm", or a run's
+ * value of a sweep the line gave ("--sweep=R=500nm"; "--sweep=R"). */
+static void flag_word(const adh_config *cfg, size_t i, const char *value, char *buf, size_t len)
+{
+    const char *swept = cfg && adh_config_origin(cfg, flags[i].key) == 0 ? adh_config_swept_as(cfg, flags[i].key) : NULL;
+    if (swept)
+        snprintf(buf, len, "--sweep=%s%s%s", swept, value ? "=" : "", value ? value : "");
+    else
+        snprintf(buf, len, "%s%s%s", flags[i].flag, value ? "=" : "", value ? value : "");
+}
+
 void cli_advice_key(const adh_config *cfg, unsigned voice_bits, unsigned bit, const char *value, char *buf, size_t len)
 {
     size_t i = 0;
@@ -75,7 +86,7 @@ void cli_advice_key(const adh_config *cfg, unsigned voice_bits, unsigned bit, co
     int origin;
     const char *word = scene_word(cfg, i, scene_voice(cfg, voice_bits), &origin);
     if (!word) {
-        snprintf(buf, len, "%s%s%s", flags[i].flag, value ? "=" : "", value ? value : "");
+        flag_word(cfg, i, value, buf, len);
         return;
     }
     int n = snprintf(buf, len, "%s%s%s", word, value ? " = " : "", value ? value : "");
@@ -94,7 +105,7 @@ static void list_word(const adh_config *cfg, size_t i, int voice, int *file_name
     int origin;
     const char *word = scene_word(cfg, i, voice, &origin);
     if (!word)
-        snprintf(buf, len, "%s", flags[i].flag);
+        flag_word(cfg, i, NULL, buf, len);
     else if (!from_scene(origin) || !cfg->scene[0])
         snprintf(buf, len, "%s", word);
     else if (origin > 0 && *file_named)

@@ -191,9 +191,11 @@ static void say_flag(const char *key, const char *value, char *buf, size_t len, 
     int from = adh_config_origin(v->cfg, key);
     const adh_config_key *k = adh_config_key_find(key);
     int scene = from == -1 || from > 0 || (from == -2 && v->scene && !v->flag);
-    const char *flag = flag_of(key), *dot = strchr(key, '.');
+    const char *flag = flag_of(key), *dot = strchr(key, '.'), *swept = adh_config_swept_as(v->cfg, key);
     if (scene && k && (k->where & ADH_KEY_SCENE) && dot)
         snprintf(buf, len, "%s%s%s", dot + 1, value ? " = " : "", value ? value : "");
+    else if (from == 0 && swept)   /* a run's value of --sweep=E=1GPa,2GPa: --sweep=E=1GPa */
+        snprintf(buf, len, "--sweep=%s%s%s", swept, value ? "=" : "", value ? value : "");
     else if (!*flag)
         snprintf(buf, len, "%s%s%s", key, value ? " = " : "", value ? value : "");
     else

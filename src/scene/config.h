@@ -254,6 +254,9 @@ void adh_config_note_origin(adh_config *c, const char *key, int line);
  * noted. A key a [sweep] sets in each run ("protocol.speed" by sweep.speed)
  * is the sweep key's, whoever set the key itself. */
 int adh_config_origin(const adh_config *c, const char *key);
+/* The name a sweep of key was given by ("E" for material.E, from
+ * --sweep=E=... or a [sweep] line E = ...), NULL when key is not swept. */
+const char *adh_config_swept_as(const adh_config *c, const char *key);
 /* Of two keys that set one value (material.E and material.E0), the one
  * whose value holds: set last, a swept one after any other; a when nobody
  * set either. */

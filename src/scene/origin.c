@@ -26,15 +26,25 @@ void adh_config_note_origin(adh_config *c, const char *key, int line)
     c->origin[i].line = line;
 }
 
-/* Where key stands in the order of setting: a swept key after every other
- * (each run sets it last); -1 when nobody set it. */
-static long rank(const adh_config *c, const char *key)
+/* The origin table's entry of a sweep of key (sweep.NAME, NAME any of
+ * the key's names), or -1. */
+static long swept_at(const adh_config *c, const char *key)
 {
     char swept[64];
     for (size_t i = 0; i < c->norigin; i++)
         if (!strncmp(c->origin[i].key, "sweep.", 6) && adh_sweep_key_of(c->origin[i].key + 6, swept, sizeof swept) == 0 &&
             !strcmp(swept, key))
-            return (long)(c->norigin + i);
+            return (long)i;
+    return -1;
+}
+
+/* Where key stands in the order of setting: a swept key after every other
+ * (each run sets it last); -1 when nobody set it. */
+static long rank(const adh_config *c, const char *key)
+{
+    long s = swept_at(c, key);
+    if (s >= 0)
+        return (long)c->norigin + s;
     for (size_t i = 0; i < c->norigin; i++)
         if (!strcmp(c->origin[i].key, key))
             return (long)i;
@@ -46,16 +56,20 @@ const char *adh_config_origin_last(const adh_config *c, const char *a, const cha
     return rank(c, b) > rank(c, a) ? b : a;
 }
 
+const char *adh_config_swept_as(const adh_config *c, const char *key)
+{
+    long s = swept_at(c, key);
+    return s >= 0 ? c->origin[s].key + 6 : NULL;
+}
+
 int adh_config_origin(const adh_config *c, const char *key)
 {
     /* each run of a study takes the swept key's values, over the key's
      * own setting (as rank orders them): a scene's 'E = 0.05GPa' beside
      * '[sweep] E = 1GPa, 2GPa' is not where a run's 1GPa was written */
-    char swept[64];
-    for (size_t i = 0; i < c->norigin; i++)
-        if (!strncmp(c->origin[i].key, "sweep.", 6) && adh_sweep_key_of(c->origin[i].key + 6, swept, sizeof swept) == 0 &&
-            !strcmp(swept, key))
-            return c->origin[i].line;
+    long s = swept_at(c, key);
+    if (s >= 0)
+        return c->origin[s].line;
     for (size_t i = 0; i < c->norigin; i++)
         if (!strcmp(c->origin[i].key, key))
             return c->origin[i].line;

@@ -36,7 +36,9 @@ bad "^adhere: Einf = 100MPa ($TMP/einf-e0.scene:5) is below E0 = 300MPa (line 4)
 printf '[material]\nmaterial = sls\nE = 0.05GPa\nEinf = 0.1GPa\n[sweep]\nE = 1GPa, 2GPa\n' >"$TMP/einf-sw.scene"
 bad "^adhere: sweep run 1 (E = 1e+09): Einf = 100MPa ($TMP/einf-sw.scene:4) is below E = 1GPa (line 6): a standard" "$TMP/einf-sw.scene"
 printf '[material]\nmaterial = sls\nE = 0.05GPa\nEinf = 0.1GPa\n' >"$TMP/einf-swf.scene"
-bad "^adhere: sweep run 1 (E = 1e+09): Einf = 100MPa ($TMP/einf-swf.scene:4) is below --modulus=1GPa: a standard" "$TMP/einf-swf.scene" --sweep=E=1GPa,2GPa
+# ... the flag's sweep named as it was given, not as -E (which the user never
+# wrote, and which a sweep's run does not take)
+bad "^adhere: sweep run 1 (E = 1e+09): Einf = 100MPa ($TMP/einf-swf.scene:4) is below --sweep=E=1GPa: a standard" "$TMP/einf-swf.scene" --sweep=E=1GPa,2GPa
 bad "Einf = 2e+12 Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa" --material=sls --Einf=2TPa
 bad "tau = 0 s is not allowed" --material=sls --tau=0
 bad "tau = -1e-06 s is not allowed" --material=sls --tau=-1us
@@ -437,6 +439,11 @@ printf '[material]\nmaterial = sls\nE0 = 0.5TPa\nEinf = 1TPa\n[protocol]\nstart 
 bad "^adhere: start = 400pm ($TMP/start.scene:6) is not allowed: .*: [0-9.]* pm (start at $TMP/start.scene:6)$" "$TMP/start.scene"
 bad "^adhere: sweep run 1 (E0 = 5e+11): --start=400pm is not allowed" \
     --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200 --sweep=E0=0.5TPa,0.6TPa
+bad "^adhere: sweep run 1 (start = 4e-10): --sweep=start=400pm is not allowed: .* (--sweep=start)$" \
+    --material=sls --E0=0.5TPa --Einf=1TPa --turn=-2nm -N 200 --sweep=start=0.4nm,0.6nm
+printf '[sweep]\nstart = 0.4nm, 0.6nm\n' >>"$TMP/start.scene"
+bad "^adhere: sweep run 1 (start = 4e-10): start = 400pm ($TMP/start.scene:11) is not allowed: .* (start at $TMP/start.scene:11)$" \
+    "$TMP/start.scene"
 "$ADHERE" --batch -q --no-plot --material=sls --E0=0.5TPa --Einf=1TPa --start=0.6nm --turn=-2nm -N 200 -o "$TMP/tkeep" 2>"$TMP/err"
 rc=$?
 cp "$TMP/tkeep/summary.tsv" "$TMP/tkeep.summary"

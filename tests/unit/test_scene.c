@@ -417,6 +417,13 @@ static void origins(void)
     adh_config_note_origin(&c, "sweep.E", 0);
     ok(adh_config_origin(&c, "material.E") == 0, "origins: swept by a flag (--sweep=E=...) after the scene's E: the "
        "flag (%d)", adh_config_origin(&c, "material.E"));
+    /* ... named by the sweep's name, as given: a message says --sweep=E=1GPa */
+    const char *as = adh_config_swept_as(&c, "material.E");
+    ok(as && !strcmp(as, "E"), "origins: material.E is swept as E (%s)", as ? as : "NULL");
+    ok(!adh_config_swept_as(&c, "material.A"), "origins: material.A is not swept");
+    adh_config_note_origin(&c, "sweep.protocol.turns", 0);
+    as = adh_config_swept_as(&c, "protocol.turns");
+    ok(as && !strcmp(as, "protocol.turns"), "origins: a sweep by the key's full name is that name (%s)", as ? as : "NULL");
 }
 
 int main(void)
