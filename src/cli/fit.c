@@ -34,6 +34,7 @@ typedef struct fit_run {
     size_t nodes;
     size_t evals;             /* over every fit */
     double t0;
+    char note[1200];          /* the scene's keys the fit ignores, said as it starts; "" none */
 } fit_run;
 
 static int parse_free(const char *text, unsigned *mask, char *why, size_t whylen)
@@ -76,7 +77,8 @@ static int parse_free(const char *text, unsigned *mask, char *why, size_t whylen
  * curve runs from where the force is negligible to a step below the data),
  * the relaxation unloads at its turn without a dwell, and the static curve
  * has neither a dwell nor a relaxation for --eps to end. 0, or -1 with the
- * flag and why. The scene's keys stay: they set the runs it also opens. */
+ * flag and why. The scene's keys stay (scene_ignored says them): they set
+ * the runs the scene itself opens. */
 static int fit_ignored(const cli_options *cli, int relax, char *why, size_t whylen)
 {
     for (size_t i = 0; i < cli->nset; i++) {
@@ -102,6 +104,40 @@ static int fit_ignored(const cli_options *cli, int relax, char *why, size_t whyl
     return 0;
 }
 
+/* The same settings from the scene are ignored too, but not refused: every
+ * shipped figure scene sets its turns (fig1's, -2 nm), which its own runs
+ * take, and a fit of the scene must still run. The fit says once, in
+ * note, which of them it ignores, by key and line ("" when none). */
+static void scene_ignored(const adh_config *cfg, int relax, char *note, size_t len)
+{
+    const struct { const char *key; int ignored; } keys[] = {
+        { "protocol.turns", 1 },
+        { "protocol.start", !isnan(cfg->spec.proto.start) },
+        { "protocol.dwell", cfg->spec.proto.dwell != 0 },
+        { "protocol.unload", !cfg->spec.proto.unload },   /* fig1's 'unload = no': the fit unloads */
+        { "solver.eps", !relax },
+    };
+    char list[200] = "";
+    size_t n = 0, nkeys = sizeof keys / sizeof keys[0];
+    int eps = 0;
+    for (size_t i = 0; i < nkeys; i++) {
+        int from = adh_config_origin(cfg, keys[i].key);
+        if (keys[i].ignored && (from == -1 || from > 0)) {
+            n += (size_t)snprintf(list + n, sizeof list - n, "%s%s", n ? ", " : "", keys[i].key);
+            eps |= i == nkeys - 1;
+        }
+    }
+    note[0] = '\0';
+    if (!n)
+        return;
+    char sentence[800];
+    snprintf(sentence, sizeof sentence, "the fit ignores the scene's %s: its model's curve runs from where the force "
+             "is negligible, above the highest position in --data, to a turn a step below the deepest%s%s (the "
+             "scene's own runs take them)", list, relax ? " and back at once" : "",
+             eps ? "; the static curve solves each point to its own tolerance, with no relaxation for eps to end" : "");
+    cli_options_words(cfg, sentence, note, len);
+}
+
 /* The fit's settings from the line and the scene: the start values, the
  * free parameters, the model and its solver. */
 static int settings(fit_run *fr, char *why, size_t whylen)
@@ -119,6 +155,7 @@ static int settings(fit_run *fr, char *why, size_t whylen)
     fr->fs.model.kind = strcmp(model, "relax") == 0 ? ADH_FIT_MODEL_RELAX : ADH_FIT_MODEL_STATIC;
     if (fit_ignored(cli, fr->fs.model.kind == ADH_FIT_MODEL_RELAX, why, whylen) != 0)
         return -1;
+    scene_ignored(cfg, fr->fs.model.kind == ADH_FIT_MODEL_RELAX, fr->note, sizeof fr->note);
     fr->fs.model.relax = cfg->spec.relax;
     fr->fs.model.step = cfg->spec.proto.step;
     fr->fs.start = cfg->spec.mat;
@@ -243,6 +280,8 @@ int cli_fit_main(cli_options *cli)
         release(&fr);
         return refuse(why);
     }
+    if (fr.note[0] && !cfg->output.quiet)   /* a note: the fit is what it would be without them */
+        adh_say(fr.note);
     cli_interrupt_catch();
     adh_ready_phase("fit");
     adh_fit_result res;
