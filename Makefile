@@ -141,6 +141,8 @@ $(BUILD)/tests/test_forcebase_oom: src/plot/forcebase.c
 $(BUILD)/tests/test_static_start_oom: src/core/static.c
 # ... or a driver's (the screen's session, its kernel count read)
 $(BUILD)/tests/test_tui_start_kernels: src/tui/sim.c src/tui/sim.h
+# ... or the CLI's words (its advice, tables and fit report)
+$(BUILD)/tests/test_reason_words: src/cli/advice.c src/cli/tables.c src/cli/fitreport.c
 
 # The test programs (some 100 in make check, two builds) link through gold,
 # which binutils ships: 0.05 CPU s a program against ld.bfd's 0.18

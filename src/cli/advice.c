@@ -10,7 +10,7 @@ static const struct {
     unsigned bit;
     const char *flag;
     const char *key;
-} flags[] = {
+} keys[] = {
     { ADH_FIX_MODE, "--mode", "scene.mode" },
     { ADH_FIX_FINE_BAND, "--fine-band", "grid.fine_band" },
     { ADH_FIX_TURNS, "--turn", "protocol.turns" },
@@ -22,7 +22,7 @@ static const struct {
     { ADH_FIX_GRID_RADIUS, "--grid-radius", "grid.radius" },
     { ADH_FIX_FORCE, "--force", "grid.force" },
 };
-#define NFLAGS (sizeof flags / sizeof flags[0])
+#define NFLAGS (sizeof keys / sizeof keys[0])
 
 /* Appends text to list (of len, holding *n bytes), cut at its end. */
 static void add(char *list, size_t len, size_t *n, const char *sep, const char *text)
@@ -44,8 +44,8 @@ static int scene_voice(const adh_config *cfg, unsigned bits)
 {
     int scene = 0, flag = 0;
     for (size_t i = 0; cfg && i < NFLAGS; i++)
-        if (bits & flags[i].bit) {
-            int from = adh_config_origin(cfg, flags[i].key);
+        if (bits & keys[i].bit) {
+            int from = adh_config_origin(cfg, keys[i].key);
             scene |= from_scene(from);
             flag |= from == 0;
         }
@@ -56,28 +56,28 @@ static int scene_voice(const adh_config *cfg, unsigned bits)
  * scene set it, or nobody did and voice is the scene's; NULL: the flag. */
 static const char *scene_word(const adh_config *cfg, size_t i, int voice, int *origin)
 {
-    *origin = cfg ? adh_config_origin(cfg, flags[i].key) : -2;
-    const adh_config_key *k = adh_config_key_find(flags[i].key);
+    *origin = cfg ? adh_config_origin(cfg, keys[i].key) : -2;
+    const adh_config_key *k = adh_config_key_find(keys[i].key);
     if (!k || !(k->where & ADH_KEY_SCENE) || !(from_scene(*origin) || (*origin == -2 && voice)))
         return NULL;
-    return strchr(flags[i].key, '.') + 1;
+    return strchr(keys[i].key, '.') + 1;
 }
 
 /* The i-th key as a flag, with value (NULL: none): "-R=500nm", or a run's
  * value of a sweep the line gave ("--sweep=R=500nm"; "--sweep=R"). */
 static void flag_word(const adh_config *cfg, size_t i, const char *value, char *buf, size_t len)
 {
-    const char *swept = cfg && adh_config_origin(cfg, flags[i].key) == 0 ? adh_config_swept_as(cfg, flags[i].key) : NULL;
+    const char *swept = cfg && adh_config_origin(cfg, keys[i].key) == 0 ? adh_config_swept_as(cfg, keys[i].key) : NULL;
     if (swept)
         snprintf(buf, len, "--sweep=%s%s%s", swept, value ? "=" : "", value ? value : "");
     else
-        snprintf(buf, len, "%s%s%s", flags[i].flag, value ? "=" : "", value ? value : "");
+        snprintf(buf, len, "%s%s%s", keys[i].flag, value ? "=" : "", value ? value : "");
 }
 
 void cli_advice_key(const adh_config *cfg, unsigned voice_bits, unsigned bit, const char *value, char *buf, size_t len)
 {
     size_t i = 0;
-    while (i < NFLAGS && flags[i].bit != bit)
+    while (i < NFLAGS && keys[i].bit != bit)
         i++;
     if (i == NFLAGS) {
         snprintf(buf, len, "%s", value ? value : "");
@@ -126,7 +126,7 @@ void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why,
     unsigned turn = who == CLI_ADVICE_FIT ? fix & ADH_FIX_TURNS : 0;
     int voice = scene_voice(cfg, fix & ~turn), file_named = 0;
     for (size_t i = 0; i < NFLAGS; i++)
-        if ((fix & ~turn) & flags[i].bit) {
+        if ((fix & ~turn) & keys[i].bit) {
             list_word(cfg, i, voice, &file_named, word, sizeof word);
             add(list, sizeof list, &n, ", ", word);
         }
@@ -135,9 +135,4 @@ void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why,
     size_t len = strlen(why);
     if (n && len + n + 4 <= whylen)
         snprintf(why + len, whylen - len, " (%s)", list);
-}
-
-void cli_advice_append(char *why, size_t whylen, unsigned fix)
-{
-    cli_advice_append_cfg(NULL, CLI_ADVICE_RUN, why, whylen, fix);
 }

@@ -12,10 +12,9 @@
  * no flag but a step below its measured curve's deepest position. */
 typedef enum { CLI_ADVICE_RUN, CLI_ADVICE_FIT } cli_advice_for;
 
-/* Appends the flags of the bits in fix to the sentence in why, as
- * " (--turn, -R)"; nothing for 0 (or when they do not fit). */
-void cli_advice_append(char *why, size_t whylen, unsigned fix);
-/* The same for who (a fit's turn is named as its data's: " (-R; the turn
+/* Appends the settings of the bits in fix to the sentence in why, as
+ * " (--turn, -R)"; nothing for 0 (or when they do not fit). For who (a
+ * fit's turn is named as its data's: " (-R; the turn
  * is the fit's, a step below the deepest position in --data)"), in the
  * words each key was given in (cfg NULL: the flags): a key the scene set
  * by its name, where it was written ("nodes at a.scene:3, spacing at line

@@ -214,9 +214,9 @@ static void batch_step(batch_job *j)
             adh_sayf("warning: the static reference curve is not resolved: %s (summary.tsv: "
                      "static_resolved 0)", rwhy);
         if (rrc != ADH_SUCCESS && !j->ref.interrupted) {
-            char stopped[700];
+            char stopped[CLI_TABLES_STOPPED_LEN];
             adh_sayf("the static reference curve failed: %s",
-                     cli_tables_stopped(&j->ref, j->ref.status, stopped, sizeof stopped));
+                     cli_tables_stopped(j->cfg, &j->ref, j->ref.status, stopped, sizeof stopped));
             j->want_ref = 0;
         }
     }
@@ -246,9 +246,9 @@ static void batch_judge(batch_job *j)
                  adh_qtext(run->rows[run->nrows - 1].h0, ADH_Q_LENGTH).s, edge);
         j->status = CLI_EXIT_SOLVER;
     } else if (j->rc != ADH_SUCCESS) {
-        char stopped[700];
+        char stopped[CLI_TABLES_STOPPED_LEN];
         snprintf(j->note, sizeof j->note, "the solver stopped after %zu steps: %s", run->nrows,
-                 cli_tables_stopped(run, j->rc, stopped, sizeof stopped));
+                 cli_tables_stopped(j->cfg, run, j->rc, stopped, sizeof stopped));
         j->status = CLI_EXIT_SOLVER;
     }
     if (j->note[0])

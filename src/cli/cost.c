@@ -56,7 +56,7 @@ typedef struct cost_run {
     double pulloff, jump_in, hysteresis, a_turn;
     double err[4];        /* against the most accurate run */
     double err_static[4]; /* pull-off, jump-in, hysteresis and a at the turn against the static curve */
-    char reason[600];     /* why a run that stopped on an error stopped (summary.tsv's stop_reason); "" else */
+    char reason[CLI_TABLES_REASON_LEN];   /* why a run that stopped on an error stopped (summary.tsv's stop_reason); "" else */
     int fault;            /* a finished run: 1 the surfaces never touched, 2 never separated (summary.tsv's words) */
 } cost_run;
 
@@ -69,7 +69,7 @@ typedef struct cost_ref {
     int status;
     int resolved;
     char why[512];       /* why the grid does not resolve it; "" when it does */
-    char stopped[600];   /* "STATUS: REASON" of a curve that stopped on an error; "" else */
+    char stopped[CLI_TABLES_STOPPED_LEN];   /* "STATUS: REASON" of a curve that stopped on an error; "" else */
     double hysteresis;   /* J; NAN when the curve failed */
     double a_turn;       /* m; NAN when the curve failed */
 } cost_ref;
@@ -162,7 +162,7 @@ static void *worker(void *arg)
             cr->fault = !adh_run_touched(&run, d.h_star, w, sizeof w) ? 1 : !adh_run_separated(&run, w, sizeof w) ? 2 : 0;
         }
         if (cr->status != ADH_CONTINUE && cr->status == run.status)
-            cli_tables_stop_reason(&run, cr->reason, sizeof cr->reason);
+            cli_tables_stop_reason(job->cfg, &run, cr->reason, sizeof cr->reason);
         adh_run_free(&run);
         adh_kernel_free(k);
         adh_grid_free(g);
@@ -396,11 +396,8 @@ static void cost_static_reference(const adh_config *cfg, size_t finest, size_t b
     if (srun.interrupted)
         ref->status = ADH_EINTR;   /* part of a curve is no reference */
     int ok = ref->status == ADH_SUCCESS;
-    if (!ok && !srun.interrupted) {
-        char reason[560];
-        snprintf(ref->stopped, sizeof ref->stopped, "%s%s%s", adh_strerror(ref->status),
-                 *cli_tables_stop_reason(&srun, reason, sizeof reason) ? ": " : "", reason);
-    }
+    if (!ok && !srun.interrupted)
+        cli_tables_stopped(cfg, &srun, ref->status, ref->stopped, sizeof ref->stopped);
     /* a fine h0 grid: lattice-trapping legs are far shorter than d */
     ref->hysteresis = ok ? cli_tables_static_hysteresis(&srun, &ref->spec.mat) : NAN;
     /* the curve ends at the (deepest) turn: its contact radius there */
@@ -496,7 +493,7 @@ static void cost_print(const cost_job *job, const cost_run *best, const cost_ref
            "a_turn", "st.pull", "st.jump", "st.hyst", "st.a");
     for (size_t i = 0; i < job->n; i++) {
         const cost_run *r = &job->runs[i];
-        char note[640];
+        char note[CLI_TABLES_REASON_LEN + 40];
         printf("%-6s %6zu %7.3g %9.3f %11zu %12.5g %10.4g %11.5g %9.4g | %8.2e %8.2e %8.2e %8.2e | %8.2e %8.2e %8.2e %8.2e%s\n",
                adh_kernel_name(r->kernel), r->nodes, r->eps * 1e12, r->seconds, r->iterations, r->pulloff * 1e6,
                r->jump_in * 1e9, r->hysteresis * 1e15, r->a_turn * 1e6, r->err[0], r->err[1], r->err[2], r->err[3],

@@ -15,6 +15,7 @@
 #include "cli/batch.h"
 #include "cli/fitreport.h"
 #include "cli/interrupt.h"
+#include "cli/tables.h"
 #include "util/ready.h"
 #include "plot/outdir.h"
 #include "scene/budget.h"
@@ -346,8 +347,8 @@ int cli_fit_main(cli_options *cli)
                  adh_outdir_path(od), adh_outdir_path(od));
     else if (!cfg->output.quiet)
         adh_sayf("%s after %zu model evaluations in %.1f s", word, fr.evals, res.seconds);
-    char stop[700];
-    if (!isfinite(res.chi2) && *cli_fit_model_stop(&res, fr.fs.model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))   /* not hidden by -q: no fit */
+    char stop[CLI_TABLES_STOPPED_LEN];
+    if (!isfinite(res.chi2) && *cli_fit_model_stop(cfg, &res, fr.fs.model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))   /* not hidden by -q: no fit */
         adh_sayf("the model stopped: %s", stop);
     adh_outdir_close(od);
     adh_fit_free(f);

@@ -44,7 +44,8 @@ int cli_fit_verdict(const cli_fit_report *r, const char **word)
     return strcmp(*word, "fit") != 0;
 }
 
-const char *cli_fit_model_stop(const adh_fit_result *res, int relax_model, char *buf, size_t len)
+const char *cli_fit_model_stop(const adh_config *cfg, const adh_fit_result *res, int relax_model, char *buf,
+                               size_t len)
 {
     buf[0] = '\0';
     if (!res->failed || res->model_status == ADH_SUCCESS)
@@ -52,8 +53,8 @@ const char *cli_fit_model_stop(const adh_fit_result *res, int relax_model, char 
     /* fit's own words: the drive (turns, start, step) follows the data, not
      * a flag; the relaxation is --model's, not --mode's */
     unsigned grid = ADH_FIX_NODES | ADH_FIX_SPACING | ADH_FIX_GRID_RADIUS | ADH_FIX_FINE_BAND | ADH_FIX_FORCE;
-    char reason[600];
-    cli_tables_reason(res->model_why, res->model_fix & grid, reason, sizeof reason);
+    char reason[CLI_TABLES_REASON_LEN];
+    cli_tables_reason(cfg, res->model_why, res->model_fix & grid, reason, sizeof reason);
     snprintf(buf, len, "%s%s%s%s", adh_strerror(res->model_status), *reason ? ": " : "", reason,
              *reason && res->model_fix & ADH_FIX_MODE && !relax_model ? " (--model=relax)" : "");
     return buf;
@@ -169,8 +170,8 @@ void cli_fit_print(FILE *out, const cli_fit_report *r)
             res->noise * 1e9, res->chi2_red);
     fprintf(out, "model evaluations: %zu (%zu failed), %zu iterations, %.2f s\n", r->evals, res->failed,
             res->iterations, r->seconds);
-    char stop[700];
-    if (*cli_fit_model_stop(res, r->fs->model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))
+    char stop[CLI_TABLES_STOPPED_LEN];
+    if (*cli_fit_model_stop(r->cfg, res, r->fs->model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))
         fprintf(out, "the last model evaluation that failed stopped: %s\n", stop);
     print_warnings(out, r);
     fprintf(out, "result: %s\n", word);
@@ -193,8 +194,8 @@ static int write_fit_tsv(FILE *f, const void *ctx)
     fprintf(f, "# model: %s; grid N = %zu, spacing %.6g m; %zu model evaluations, %.3f s\n",
             r->fs->model.kind == ADH_FIT_MODEL_RELAX ? "relax" : "static", r->cfg->spec.grid.use.nodes,
             adh_config_spacing(&r->cfg->spec), r->evals, r->seconds);
-    char stop[700];
-    if (*cli_fit_model_stop(res, r->fs->model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))
+    char stop[CLI_TABLES_STOPPED_LEN];
+    if (*cli_fit_model_stop(r->cfg, res, r->fs->model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))
         fprintf(f, "# the last model evaluation that failed stopped: %s\n", stop);
     fprintf(f, "# chi2 %.9g N^2, %zu points, chi2/point %.9g N^2, scatter %.9g N, chi2/dof against it %.6g\n",
             res->chi2, res->n, res->chi2 / (double)res->n, res->noise, res->chi2_red);

@@ -38,10 +38,13 @@ typedef struct cli_fit_report {
 int cli_fit_verdict(const cli_fit_report *r, const char **word);
 
 /* Why the fit's last failed model evaluation stopped, as a run's stop is
- * said: "STATUS: REASON (--flag)" in fit's flags (relax_model: the fit's
- * model is the relaxation), the status alone where the model gave no
- * reason, "" when none failed. Written to buf, which is returned. */
-const char *cli_fit_model_stop(const adh_fit_result *res, int relax_model, char *buf, size_t len);
+ * said: "STATUS: REASON (--flag)", its grid's settings in the words cfg's
+ * keys were given in (a scene's by key and line) and --model=relax for
+ * the relaxation (relax_model: the fit's model is already the relaxation),
+ * the status alone where the model gave no reason, "" when none failed.
+ * Written to buf (CLI_TABLES_STOPPED_LEN holds it whole), which is returned. */
+const char *cli_fit_model_stop(const adh_config *cfg, const adh_fit_result *res, int relax_model, char *buf,
+                               size_t len);
 
 /* The report on out (standard output). */
 void cli_fit_print(FILE *out, const cli_fit_report *r);

@@ -23,7 +23,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
                       const char *word, cli_runout_said *said)
 {
     char *lost = said->lost;
-    char why[1024], note[1024] = "", stopped[700];
+    char why[1024], note[CLI_TABLES_STOPPED_LEN + 100] = "", stopped[CLI_TABLES_STOPPED_LEN];
     const adh_run_spec *rs = spec;
     cli_tables_names_add(lost, sizeof said->lost, unwritten ? unwritten : "");
     int partial = run->interrupted || rc != ADH_SUCCESS;
@@ -31,7 +31,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
         snprintf(note, sizeof note, "interrupted by signal %d after %zu steps", cli_interrupt_signal(), run->nrows);
     else if (rc != ADH_SUCCESS)
         snprintf(note, sizeof note, "the solver stopped after %zu steps: %s", run->nrows,
-                 cli_tables_stopped(run, rc, stopped, sizeof stopped));
+                 cli_tables_stopped(cfg, run, rc, stopped, sizeof stopped));
     /* a static run's summary.tsv has the batch's static keys */
     char keynames[CLI_TABLES_STATIC_KEYS][32];
     cli_tables_extra extra[CLI_TABLES_STATIC_KEYS + CLI_TIME_SNAP_KEYS + CLI_TIME_KEYS];

@@ -238,7 +238,7 @@ static void fill_time(double *v, const adh_run *r, const cli_time_out *o)
     time_jump(v, r, o);
 }
 
-void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, const adh_run *r,
+void cli_studyrow_fill(cli_studyrow *row, const adh_config *cfg, size_t i, const adh_run_spec *rc, const adh_run *r,
                        const adh_static_result *sres, const cli_time_out *tout, int status)
 {
     double *v = row->v;
@@ -281,9 +281,9 @@ void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, cons
     const char *word = status != ADH_SUCCESS && !r->interrupted ? adh_strerror(status) : cli_tables_verdict(rc, r);
     snprintf(row->status, sizeof row->status, "%s", word);
     row->reason = NULL;
-    char reason[600];
+    char reason[CLI_TABLES_REASON_LEN];
     if (status != ADH_SUCCESS && !r->interrupted && r->status == status &&
-        *cli_tables_stop_reason(r, reason, sizeof reason))
+        *cli_tables_stop_reason(cfg, r, reason, sizeof reason))
         row->reason = strdup(reason);   /* NULL when out of memory: the status word alone */
     int partial = r->interrupted || status != ADH_SUCCESS;
     v[CLI_ROW_COMPLETE] = !partial && strcmp(word, "no contact") && strcmp(word, "not separated") ? 1 : 0;
@@ -300,7 +300,7 @@ void cli_studyrow_empty(cli_studyrow *row, const adh_config *cfg, size_t i, cons
     adh_config_sweep_run(cfg, i, &rc);
     adh_static_result sres;
     memset(&sres, 0, sizeof sres);
-    cli_studyrow_fill(row, i, &rc, &none, rc.mode == ADH_MODE_STATIC ? &sres : NULL, NULL, ADH_SUCCESS);
+    cli_studyrow_fill(row, cfg, i, &rc, &none, rc.mode == ADH_MODE_STATIC ? &sres : NULL, NULL, ADH_SUCCESS);
     snprintf(row->status, sizeof row->status, "%s", status);
     row->v[CLI_ROW_COMPLETE] = 0;
 }

@@ -55,8 +55,9 @@ void cli_studyrow_clear_all(cli_studyrow *rows, size_t n);
 
 /* Row i of cfg's study from its run r of specification rc (status: the
  * run's adh status; sres: a static curve's summary, or NULL; tout: a run
- * in physical time's summary and events, or NULL). */
-void cli_studyrow_fill(cli_studyrow *row, size_t i, const adh_run_spec *rc, const adh_run *r,
+ * in physical time's summary and events, or NULL); its reason names what
+ * gets past a stop in the words cfg's keys were given in. */
+void cli_studyrow_fill(cli_studyrow *row, const adh_config *cfg, size_t i, const adh_run_spec *rc, const adh_run *r,
                        const adh_static_result *sres, const cli_time_out *tout, int status);
 /* Row i of a run that did not run: every number NAN, status word. */
 void cli_studyrow_empty(cli_studyrow *row, const adh_config *cfg, size_t i, const char *status);

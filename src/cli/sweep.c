@@ -111,7 +111,7 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
 {
     const adh_config *cfg = job->cfg;
     cli_studyrow row;
-    cli_studyrow_fill(&row, i, spec, run, sres, tout, status);
+    cli_studyrow_fill(&row, cfg, i, spec, run, sres, tout, status);
     int out = run_exit(cfg, run, status);
     if (job->od && job->run_dirs) {
         char name[32], why[1024];
@@ -600,10 +600,10 @@ double cli_sweep_static_hysteresis(const adh_config *cfg, cli_kcache *kc, int *r
                      "resolve: %s", why);
     }
     double h = st == ADH_SUCCESS && !ref.interrupted ? cli_tables_static_hysteresis(&ref, &rs.mat) : NAN;
-    char stopped[700];
+    char stopped[CLI_TABLES_STOPPED_LEN];
     if (st != ADH_SUCCESS && st != ADH_EINTR && !ref.interrupted)
         adh_sayf("the static curve for Figure 7's equilibrium line failed: %s",
-                 cli_tables_stopped(&ref, st, stopped, sizeof stopped));
+                 cli_tables_stopped(cfg, &ref, st, stopped, sizeof stopped));
     adh_run_free(&ref);
     return h;
 }

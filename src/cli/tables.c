@@ -115,30 +115,31 @@ const char *cli_tables_summary_word(const cli_tables *t)
     return !strcmp(word, "success") && t->unwritten && *t->unwritten ? "output incomplete" : word;
 }
 
-const char *cli_tables_reason(const char *why, unsigned fix, char *buf, size_t len)
+const char *cli_tables_reason(const adh_config *cfg, const char *why, unsigned fix, char *buf, size_t len)
 {
     snprintf(buf, len, "%s", why);
+    if (buf[0])   /* in the words each key was given in: a scene's by its key and line */
+        cli_advice_append_cfg(cfg, CLI_ADVICE_RUN, buf, len, fix);
+    /* after the advice: a scene's name may hold a tab or a newline too */
     for (char *p = buf; *p; p++)
         if ((unsigned char)*p < 0x20 || *p == 0x7f)
             *p = ' ';
-    if (buf[0])
-        cli_advice_append(buf, len, fix);
     return buf;
 }
 
-const char *cli_tables_stop_reason(const adh_run *r, char *buf, size_t len)
+const char *cli_tables_stop_reason(const adh_config *cfg, const adh_run *r, char *buf, size_t len)
 {
     buf[0] = '\0';
     if (r->interrupted || r->status == ADH_SUCCESS || !r->why[0])
         return buf;
-    return cli_tables_reason(r->why, r->fix, buf, len);
+    return cli_tables_reason(cfg, r->why, r->fix, buf, len);
 }
 
-const char *cli_tables_stopped(const adh_run *r, int status, char *buf, size_t len)
+const char *cli_tables_stopped(const adh_config *cfg, const adh_run *r, int status, char *buf, size_t len)
 {
-    char reason[600];
-    snprintf(buf, len, "%s%s%s", adh_strerror(status), *cli_tables_stop_reason(r, reason, sizeof reason) ? ": " : "",
-             reason);
+    char reason[CLI_TABLES_REASON_LEN];
+    snprintf(buf, len, "%s%s%s", adh_strerror(status),
+             *cli_tables_stop_reason(cfg, r, reason, sizeof reason) ? ": " : "", reason);
     return buf;
 }
 
@@ -234,8 +235,8 @@ int cli_tables_summary(FILE *f, const void *ctx)
      * touched and separated, every file of which was written */
     fprintf(f, "status\t%s\n", cli_tables_summary_word(t));
     /* what stopped a run that ended on an error, and what may get past it */
-    char reason[600];
-    if (*cli_tables_stop_reason(r, reason, sizeof reason))
+    char reason[CLI_TABLES_REASON_LEN];
+    if (*cli_tables_stop_reason(t->cfg, r, reason, sizeof reason))
         fprintf(f, "stop_reason\t%s\n", reason);
     return 0;
 }

@@ -43,18 +43,26 @@ const char *cli_tables_verdict(const adh_run_spec *c, const adh_run *r);
  * verdict, and "output incomplete" for a success some file of which was
  * not written. */
 const char *cli_tables_summary_word(const cli_tables *t);
-/* Why run r stopped on an error, as summary.tsv's stop_reason and the
- * stderr line say it: the core's sentence (control bytes as spaces) and
- * the flags of its ADH_FIX_* bits; "" for a run that finished or was
- * interrupted. Written to buf, which is returned. */
-const char *cli_tables_stop_reason(const adh_run *r, char *buf, size_t len);
+/* A reason's room: the core's sentence (400 bytes) and the advice after
+ * it (a scene's keys with its file and line) whole; and a "STATUS: REASON". */
+#define CLI_TABLES_REASON_LEN 1700
+#define CLI_TABLES_STOPPED_LEN (CLI_TABLES_REASON_LEN + 100)
+/* Why run r stopped on an error, as summary.tsv's stop_reason, sweep.tsv's
+ * status column and the stderr line say it: the core's sentence and what
+ * gets past it (its ADH_FIX_* bits) in the words cfg's keys were given in
+ * (cli_advice_append_cfg: "(-N, --spacing)" from flags, "(nodes at
+ * a.scene:3, spacing at line 4)" from a scene; cfg NULL: the flags),
+ * control bytes as spaces; "" for a run that finished or was interrupted.
+ * Written to buf (CLI_TABLES_REASON_LEN holds it whole), which is returned. */
+const char *cli_tables_stop_reason(const adh_config *cfg, const adh_run *r, char *buf, size_t len);
 /* "STATUS: REASON" for run r that stopped with status (adh_strerror's
- * word, then cli_tables_stop_reason's, when it has one), in buf (700 bytes
- * hold both whole), which is returned. */
-const char *cli_tables_stopped(const adh_run *r, int status, char *buf, size_t len);
+ * word, then cli_tables_stop_reason's, when it has one), in buf
+ * (CLI_TABLES_STOPPED_LEN holds both whole), which is returned. */
+const char *cli_tables_stopped(const adh_config *cfg, const adh_run *r, int status, char *buf, size_t len);
 /* A core's reason (why, fix: adh_run.why and .fix, or the like) in those
- * words: control bytes as spaces, the flags for fix added; "" for "". */
-const char *cli_tables_reason(const char *why, unsigned fix, char *buf, size_t len);
+ * words: what fix names in cfg's words added, control bytes as spaces;
+ * "" for "". */
+const char *cli_tables_reason(const adh_config *cfg, const char *why, unsigned fix, char *buf, size_t len);
 /* Appends name (or a comma-separated list) to the comma-separated list in
  * buf; what does not fit is left off whole names at a time. */
 void cli_tables_names_add(char *buf, size_t len, const char *name);
