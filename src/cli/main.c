@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "adhere/grid.h"
+#include "adhere/status.h"
 #include "plot/say.h"
 #include "cli/advice.h"
 #include "cli/batch.h"
@@ -23,7 +24,6 @@
 #include "cli/options.h"
 #include "scene/budget.h"
 #include "cli/static.h"
-#include "cli/timerun.h"
 #include "scene/config.h"
 #include "scene/plan.h"
 #include "tui/actions.h"
@@ -92,6 +92,23 @@ static int plan(cli_options *cli)
     return rc;
 }
 
+/* Before any work, once memory is bounded: adh_config_start_check (each
+ * run of cfg that is a standard linear solid in physical time from a start
+ * given can start at rest out of contact there). 0, or 2 with why in the
+ * CLI's words: the start as it was given (--start=400pm, or start = 400pm
+ * (a.scene:6)), a sweep's run named, and the advice in the words cfg's
+ * keys were given in. */
+static int start_checked(const adh_config *cfg, char *why, size_t whylen)
+{
+    unsigned fix;
+    char keyed[1024];
+    if (adh_config_start_check(cfg, 1, keyed, sizeof keyed, &fix) == ADH_SUCCESS)
+        return 0;
+    cli_options_words(cfg, keyed, why, whylen);
+    cli_advice_append_cfg(cfg, CLI_ADVICE_RUN, why, whylen, fix);
+    return 2;
+}
+
 /* Before any work: the grid (the one the contact's edge needs when none
  * was given, or a refusal), every run valid, the memory for the grid,
  * whichever it is, before anything is allocated (a static curve holds its
@@ -114,7 +131,7 @@ static int checked(adh_config *cfg, const cli_options *cli, char *why, size_t le
         return CLI_EXIT_USAGE;
     }
     /* a solid's start, on its kernel: once the memory for it is known */
-    return cli_time_start_check(cfg, why, len) != 0 ? CLI_EXIT_USAGE : 0;
+    return start_checked(cfg, why, len) != 0 ? CLI_EXIT_USAGE : 0;
 }
 
 /* adh_config_unit_hint's test of a configuration with a unit put right. */

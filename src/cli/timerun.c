@@ -9,8 +9,6 @@
 #include "adhere/drive.h"
 #include "adhere/rule_time.h"
 #include "adhere/status.h"
-#include "cli/advice.h"
-#include "cli/options.h"
 
 int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *k, adh_step_cb cb, void *ctx,
                  adh_run *run, cli_time_out *out)
@@ -38,18 +36,6 @@ int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *
     adh_drive_free(d);
     run->status = rc;
     return rc;
-}
-
-int cli_time_start_check(const adh_config *cfg, char *why, size_t whylen)
-{
-    unsigned fix;
-    char keyed[1024];
-    if (adh_config_start_check(cfg, 1, keyed, sizeof keyed, &fix) == ADH_SUCCESS)
-        return 0;
-    /* the start as the user gave it: --start=400pm, or start = 400pm (a.scene:6) */
-    cli_options_words(cfg, keyed, why, whylen);
-    cli_advice_append_cfg(cfg, CLI_ADVICE_RUN, why, whylen, fix);
-    return 2;
 }
 
 void cli_time_out_free(cli_time_out *out)

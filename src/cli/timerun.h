@@ -28,13 +28,6 @@ int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *
                  adh_run *run, cli_time_out *out);
 void cli_time_out_free(cli_time_out *out);
 
-/* Before any work, once memory is bounded: adh_config_start_check (each
- * run of cfg that is a standard linear solid in physical time from a start
- * given can start at rest out of contact there). 0, or 2 with why in the
- * CLI's words (a sweep's run named; the advice in the words cfg's keys
- * were given in: a scene's start by its key and line, not --start). */
-int cli_time_start_check(const adh_config *cfg, char *why, size_t whylen);
-
 /* The summary keys of a run in physical time (at most CLI_TIME_KEYS):
  * the solid and drive, hysteresis, dissipated, the cycle's energies,
  * the times and bases of the jumps and the pull-off (their h0 and force
