@@ -99,8 +99,13 @@ void cli_estimate_print(FILE *f, const adh_config *cfg, const adh_plan *plan)
         return;
     }
     if (plan->static_mode) {
+        /* a study's too: a pilot on a coarse grid met folds the real grid
+         * has not (studycost.c) */
         fprintf(f, "time: not estimated: the static curve's Newton steps cost as its folds and grid make them "
-                   "(seconds on the paper's grid, up to some 20 s at sigma = 100)\n");
+                   "(seconds on the paper's grid, up to some 20 s at sigma = 100)");
+        if (plan->drives > 1)
+            fprintf(f, "; the study solves %zu curves, %d at a time", plan->drives, plan->jobs);
+        fputc('\n', f);
         return;
     }
     double build;

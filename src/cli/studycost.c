@@ -12,7 +12,6 @@
 #include "adhere/status.h"
 #include "plot/outdir.h"
 #include "cli/progress.h"
-#include "cli/static.h"
 
 #define PILOT_NODES 150
 #define PILOT_SECONDS 3.0
@@ -38,7 +37,7 @@ static void coarse(adh_run_spec *spec)
     u->storage = ADH_STORAGE_DENSE;
 }
 
-/* Seconds a kernel product takes on spec's grid (NAN: not built). */
+/* CPU seconds a kernel product takes on spec's grid (NAN: not built). */
 static double product_seconds(const adh_run_spec *spec)
 {
     int st;
@@ -50,11 +49,11 @@ static double product_seconds(const adh_run_spec *spec)
         for (size_t i = 0; i < g->n; i++)
             v[i] = 1.0 / (1.0 + (double)i);
         int reps = 0;
-        double t0 = adh_clock_seconds();
+        double t0 = adh_clock_cpu_seconds();
         do
             adh_kernel_apply(k, v, v + g->n, v + 2 * g->n);
-        while (++reps < 1000 && adh_clock_seconds() - t0 < 0.05);
-        t = (adh_clock_seconds() - t0) / reps;
+        while (++reps < 1000 && adh_clock_cpu_seconds() - t0 < 0.05);
+        t = (adh_clock_cpu_seconds() - t0) / reps;
     }
     free(v);
     adh_kernel_free(k);
@@ -76,22 +75,26 @@ static void fly(const adh_config *cfg, const adh_plan *p, size_t u, const adh_ru
     out->planned += adh_plan_steps(p, &spec);
     spec.grid = grid->grid;
     spec.proto.nprofiles = 0;
+    /* the steps alone: the dwells are priced apart, by their iterations
+     * (a pilot cut in a long dwell counted it as one step of millions of
+     * iterations, one cut before its turn not at all) */
+    spec.proto.dwell = 0;
     adh_grid *g = spec.mode == ADH_MODE_RIGID ? NULL : adh_config_grid_alloc(&spec);
     int st = ADH_SUCCESS;
     adh_kernel *k = g ? adh_config_kernel_alloc(&spec, g, &st) : NULL;
     adh_run run;
-    adh_static_result sres;
     adh_run_init(&run);
-    double t0 = adh_clock_seconds();
+    /* stopped by the wall clock (the plan's own wait), priced in CPU
+     * seconds, as --plan's other times: on a shared machine the wall
+     * clock times the other jobs too */
+    double t0 = adh_clock_seconds(), c0 = adh_clock_cpu_seconds();
     if (spec.mode == ADH_MODE_RIGID)
         adh_runner_rule(&adh_rule_rigid, NULL, NULL, &spec.mat, NULL, &spec.proto, pilot_clock, &t0, &run);
-    else if (k && spec.mode == ADH_MODE_STATIC)
-        cli_static_run(&spec, g, k, pilot_clock, &t0, &run, &sres);
     else if (k)
         adh_runner_rule(&adh_rule_relax, g, k, &spec.mat, &spec.relax, &spec.proto, pilot_clock, &t0, &run);
     out->rows += run.nrows;
     out->iterations += run.iterations;
-    out->seconds += adh_clock_seconds() - t0;
+    out->seconds += adh_clock_cpu_seconds() - c0;
     out->cut |= run.interrupted;
     adh_run_free(&run);
     adh_kernel_free(k);
@@ -105,7 +108,11 @@ void cli_studycost_time(const adh_config *cfg, const adh_plan *p, cli_studycost 
     e->jobs = p->jobs;
     adh_run_spec real, small;
     adh_sweep_drive_spec(cfg, 0, &real);
-    if (real.mode == ADH_MODE_TIME) {   /* no drive steps to count: the integrator chooses its own */
+    /* no drive steps to count: in physical time the integrator chooses
+     * its own, and the static curve's points and their Newton steps
+     * follow its folds, which a coarse pilot grid multiplies (the default
+     * scene's study of two A: 15 s planned, 0.7 s run) */
+    if (real.mode == ADH_MODE_TIME || real.mode == ADH_MODE_STATIC) {
         e->timed = 1;
         return;
     }
@@ -130,8 +137,12 @@ void cli_studycost_time(const adh_config *cfg, const adh_plan *p, cli_studycost 
     double per_row = pl.seconds / (double)pl.rows * scale;
     e->per_step = (double)pl.iterations / (double)pl.rows;
     e->t_iter = pl.iterations ? pl.seconds / (double)pl.iterations * scale : NAN;
+    /* each turn's dwell: its iterations, each as the pilot's cost an
+     * iteration (a dwell's iteration is a relaxation's, at a fixed h0) */
+    e->dwell_iterations = p->dwell_iterations;
+    double dwell = e->dwell_iterations > 0 ? e->dwell_iterations * e->t_iter : 0.0;
     double parallel = p->drives < (size_t)p->jobs ? (double)p->drives : (double)p->jobs;
-    e->seconds = steps * per_row / (parallel > 0 ? parallel : 1);
+    e->seconds = (steps * per_row + dwell) / (parallel > 0 ? parallel : 1);
 }
 
 int cli_studycost_print(FILE *f, const cli_studycost *e)
@@ -144,7 +155,10 @@ int cli_studycost_print(FILE *f, const cli_studycost *e)
             e->jobs == 1 ? "" : "s", e->pilot_nodes ? " on a coarse grid" : "", e->pilot_cut ? ", cut at 3 s each" : "");
     if (e->per_step > 0)
         fprintf(f, " (%.0f iterations a step, %.3g ms an iteration here)", e->per_step, e->t_iter * 1e3);
-    fprintf(f, " times the plan's steps of every drive; a guide within a factor of about 3\n");
+    fprintf(f, " times the plan's steps of every drive");
+    if (e->dwell_iterations > 0)
+        fprintf(f, ", and the dwells' %.3g iterations at the turns at that cost an iteration", e->dwell_iterations);
+    fprintf(f, "; a guide within a factor of about 3\n");
     return 0;
 }
 

@@ -15,9 +15,11 @@ typedef struct cli_studycost {
     double seconds;          /* expected wall time of the runs to do, s (NAN: no estimate) */
     double per_step;         /* iterations a step, from the pilot (relaxation) */
     double t_iter;           /* seconds an iteration takes on the real grid */
+    double dwell_iterations; /* held at the turns, every drive's (the plan's), priced at t_iter */
     size_t pilot_nodes;      /* the pilot's grid */
     int pilot_cut;           /* the pilot was stopped before its end (it took too long) */
-    int timed;               /* physical time: no pilot (its steps follow the integrator's tolerance) */
+    int timed;               /* physical time or the static curve: no pilot (their steps follow the
+                                integrator's tolerance, the curve's folds) */
     int jobs;
 } cli_studycost;
 
@@ -25,8 +27,9 @@ typedef struct cli_studycost {
  * pilot: it runs for at most a few seconds. */
 void cli_studycost_time(const adh_config *cfg, const adh_plan *p, cli_studycost *e);
 /* The study's one "time:" line, saying what it is built from: 0, or -1
- * with nothing printed when the pilot gives no estimate (physical time;
- * a pilot that computed nothing): the plan's own line then says why. */
+ * with nothing printed when the pilot gives no estimate (physical time,
+ * the static curve; a pilot that computed nothing): the plan's own line
+ * then says why. */
 int cli_studycost_print(FILE *f, const cli_studycost *e);
 
 /* Whether the study fits: at most ADH_SWEEP_MAX_RUNS runs, what it writes

@@ -276,6 +276,10 @@ static void plan_totals(const adh_config *cfg, adh_plan *p)
         plan_run(&rc, p, &r);
         p->loading_steps += r.loading_steps;
         p->unloading_steps += r.unloading_steps;
+        /* each unloaded turn of a relaxation held for the dwell (static
+         * and physical time have none in iterations) */
+        if (p->elastic && !p->static_mode && !p->time_mode && rc.proto.unload)
+            p->dwell_iterations += (double)rc.proto.nturns * (double)rc.proto.dwell;
     }
     free(grids);
     p->shared_kernel = p->elastic && p->kernels == 1;

@@ -57,6 +57,7 @@ typedef struct adh_plan {
                                  position may be passed on several branches) */
     int contact_speeds;       /* contact-line speeds (contact.png) asked */
     size_t loading_steps, unloading_steps;   /* totals over the runs (shared loading counted once) */
+    double dwell_iterations;  /* relaxation iterations held at the turns, over every drive */
     int run_dirs;             /* run-K directories written */
     double bytes;             /* about how much the study writes, bytes */
     size_t nstored, nskipped;
