@@ -49,6 +49,26 @@ static void time_steps(adh_config *c)
     ok(fabs(fast.E_in / s->time.Einf - 1) < 0.01 && fast.steps < slow.steps,
        "fast (1 m/s): Einf's (%.4g of it), fewer steps (%.0f against %.0f)", fast.E_in / s->time.Einf,
        fast.steps, slow.steps);
+    /* far from elastic the steps do not depend on Einf (measured: 1530
+     * and 1547 steps at 100 and 1000 E0, 100 nm/s; the former effective
+     * modulus, E0^(1-f) Einf^f, planned 760 and 390), and a branch in
+     * contact takes some 60 steps at least (50-74 measured, the sphere
+     * then DMT-stiff) */
+    adh_plan_time_cost e100, e1000;
+    s->time.speed_in = s->time.speed_out = 1e-7;
+    s->time.Einf = 100 * s->mat.E;
+    adh_plan_time_steps(s, &e100);
+    s->time.Einf = 1000 * s->mat.E;
+    adh_plan_time_steps(s, &e1000);
+    ok(fabs(e100.steps / e1000.steps - 1) < 0.01 && e100.E_in < 10 * s->mat.E,
+       "100 nm/s, Einf = 100 and 1000 E0: the same steps within 1 %% (%.0f, %.0f), at an effective modulus below "
+       "10 E0 (%.3g E0)",
+       e100.steps, e1000.steps, e100.E_in / s->mat.E);
+    s->time.speed_in = s->time.speed_out = 1.0;
+    adh_plan_time_steps(s, &e1000);
+    ok(e1000.contact_steps >= 2 * 60.0 - 1e-9, "1 m/s, Einf = 1000 E0: at least 60 steps a branch in contact "
+       "(%.0f in two)", e1000.contact_steps);
+    s->time.Einf = 10 * s->mat.E;
     s->time.sls = 0;
     adh_plan_time_steps(s, &fast_el);
     s->time.speed_in = s->time.speed_out = 1e-15;
