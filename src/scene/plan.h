@@ -82,10 +82,11 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg);
 /* What a run in physical time is expected to take (plantime.c): about
  * one integrator step per TIME_EDGE_PER_STEP (0.068) edge zones the
  * contact line moves, the edge zone (adh_edge_zone) of an effective modulus
- * between E0 (slow: y = sqrt(10 v tau / l(E0)) small) and Einf (fast),
- * E0^(1-f) Einf^f with f = y/(1+y); the contact line's travel JKR's
+ * E0 (1 + 2y), y = sqrt(10 v tau / l(E0)), up to Einf (past Einf ~ 10 E0
+ * the steps do not depend on Einf); the contact line's travel JKR's
  * radius at each turn at that modulus (in on loading, out on each
- * unloading); about 60 steps out of contact a branch, 40 a dwell; 15 %
+ * unloading), at least 60 steps a branch in contact; about 60 steps out
+ * of contact a branch, 40 a dwell; 15 %
  * more for rejected steps and jumps; near the elastic limit, where the
  * instantaneous problem has a lattice fold at every ring, up to 3.5 times
  * the steps in contact (lattice, 1 + 2.5 / (1 + (Einf/E0 - 1)/0.15)).

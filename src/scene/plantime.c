@@ -63,21 +63,22 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg)
     }
 }
 
-/* Measured on the Figure 4 sphere (sigma0 = 7.5, N = 648, tau = 1 ms,
- * Einf/E0 = 3 ... 1000, 1 nm/s ... 10 mm/s) and on sigma0 = 2.25 (3 nm,
- * Einf/E0 = 1 ... 1000), docs/viscoelastic.md: the contact line moves about
- * 0.068 edge zones a step, of the edge zone at an effective modulus
- * E0 (1 + 1.5 y), y = sqrt(10 v tau / l(E0)), up to Einf; out of contact
- * about 60 steps a branch, 40 more for a dwell; steps rejected or spent on
- * jumps add about 15 %. The effective modulus is no interpolation between
- * E0 and Einf: past Einf ~ 10 E0 the steps do not depend on Einf at all
- * (at 100 nm/s 1530 and 1547 steps at Einf = 100 and 1000 E0, 1428 at
- * 10 E0): the solid's creep, J(t) = 1/Einf + (1/E0 - 1/Einf)(1 - e^-t/tau),
- * is then all in its delayed part, whose pace is tau's, not Einf's (the
- * former E0^(1-f) Einf^f, f = y/(1+y), planned 170 steps for 625 at
- * 1000 E0). A branch in contact takes at least about 60 steps (measured
- * 50-74 where Einf is large and the drive fast, the sphere then as stiff
- * as DMT's with no edge zone to follow: the contact's growth itself). */
+/* Measured on the Figure 4 sphere (sigma0 = 7.5, N = 648, tau = 1 ms) and
+ * on sigma0 = 2.25 (N = 400 of 3 nm), Einf/E0 = 1 ... 1000, 1 nm/s ...
+ * 1 mm/s (docs/viscoelastic.md: planned 0.68-1.73 of the run's steps from
+ * Einf = 3 E0 up): the contact line moves about 0.068 edge zones a step,
+ * of the edge zone at an effective modulus E0 (1 + 2 y),
+ * y = sqrt(10 v tau / l(E0)), up to Einf; out of contact about 60 steps a
+ * branch, 40 more for a dwell; steps rejected or spent on jumps add about
+ * 15 %. The effective modulus is no interpolation between E0 and Einf:
+ * past Einf ~ 10 E0 the steps do not depend on Einf at all (at 100 nm/s
+ * 1530, 1530 and 1547 steps at Einf = 10, 100 and 1000 E0): the solid's
+ * creep, J(t) = 1/Einf + (1/E0 - 1/Einf)(1 - e^-t/tau), is then all in its
+ * delayed part, whose pace is tau's, not Einf's (the former
+ * E0^(1-f) Einf^f, f = y/(1+y), planned 170 steps for 680 at 1000 E0). A
+ * branch in contact takes at least about 60 steps (measured 50-74 where
+ * Einf is large and the drive fast, the sphere then nearly as stiff as
+ * DMT's, with no edge zone to follow: the contact's growth itself). */
 #define TIME_EDGE_PER_STEP 0.068
 #define TIME_SPEED_STIFFENING 2.0
 #define TIME_CONTACT_MIN_STEPS 60.0
