@@ -264,7 +264,7 @@ static void print_run(FILE *f, const char *label, const run_est *e)
     int one = strcmp(ei, eo) == 0;   /* the same both ways: say it once */
     fprintf(f, "time: %sabout %s of CPU (%.3g s: about %.0f integrator steps, %.0f out of contact and %.0f as the "
                "contact line moves out to %s and back, %s a step in and %s out: 0.068 edge zones at the effective "
-               "modul%s %s%s%s, measured; ", label, t, e->cpu, two_digits(e->c.steps), two_digits(e->c.free_steps),
+               "modul%s %s%s%s, measured, at least 60 a branch; ", label, t, e->cpu, two_digits(e->c.steps), two_digits(e->c.free_steps),
             two_digits(e->c.contact_steps), a, si, so, one ? "us" : "i", ei, one ? "" : " and ", one ? "" : eo);
     if (e->c.lattice > 1.05)
         fprintf(f, "%.2g times that for the lattice folds of a solid near elastic (Einf/E0 = %.3g); ", e->c.lattice,
