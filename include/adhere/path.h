@@ -50,6 +50,12 @@ typedef struct adh_path_curve {
     size_t nfolds;
     int complete;                 /* 1: the curve reached its end; 0: it stopped (the
                                      path then loads as far as it goes) */
+    size_t start;                 /* the protocol's start among rows: 0, or, for a start
+                                     where the surfaces already touch, after the curve
+                                     beyond it (from where they do not), which the
+                                     unloading follows on past the start until they
+                                     part; a start in contact at rows[0] (no curve beyond
+                                     it) ends its unloading there, with no pull-off */
 } adh_path_curve;
 
 typedef struct adh_path adh_path;

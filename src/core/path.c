@@ -46,6 +46,9 @@ struct adh_path {
     path_pt last;               /* the last row emitted */
     int have_last, in_contact;
     double work, losses;        /* the base's work and the jumps' losses so far */
+    double losses_in;           /* ... those of the jumps whose base lies below the
+                                   start's (a start in contact: its cycle's range) */
+    int stranded;               /* the branch ended in contact at the curve's first row */
     size_t branch_ev;           /* the branch's first event */
     long pull_row;              /* the branch's lowest force: its row, -1 none */
     /* the turns reached on loading: where on the curve, when, the base, and
@@ -442,6 +445,8 @@ static void jump(adh_path *p, path_pt *f, path_pt *l, double loss)
     emit(p, f, t, 1);
     emit(p, l, t, 0);
     p->losses += loss;
+    if (p->c->start == 0 || base_of(p, &f->o) < p->b_start)
+        p->losses_in += loss;
     int before = f->o.a > 0, after = l->o.a > 0;
     if (before == after) {
         p->res.lattice_jumps++;
@@ -549,9 +554,9 @@ static void load(adh_path *p)
     size_t n = c->n, nt = p->ps.nturns;
     p->path = 0, p->branch = +1, p->t0 = 0, p->b0 = p->b_start, p->speed = p->d.speed_in;
     p->have_last = 0;
-    step_to(p, 0);
+    step_to(p, (double)c->start);
     double bmin = p->b_start;
-    for (size_t i = 1; i < n && p->rc == ADH_SUCCESS && (nt ? p->reached < nt : !p->in_contact);) {
+    for (size_t i = c->start + 1; i < n && p->rc == ADH_SUCCESS && (nt ? p->reached < nt : !p->in_contact);) {
         double T = nt ? p->ps.turns[p->reached] : -INFINITY;
         if (row_base(p, i) < bmin) {
             const adh_obs *a = &c->rows[i - 1], *b = &c->rows[i];
@@ -639,17 +644,29 @@ static void pulloff(adh_path *p, adh_turn_result *tr)
         p->res.pulloff_F = q.o.F, p->res.pulloff_h0 = q.o.h0, p->res.pulloff_t = q.o.t, p->res.pulloff_base = q.o.base;
 }
 
-/* The base back at its start (or beyond it, a soft spring's landing):
- * the branch ends. */
+/* The base back at its start (or beyond it, a soft spring's landing; or
+ * past a start in contact, where the surfaces part): the branch ends.
+ * stored_change: the stored energy there less the start's. */
 static void end_branch(adh_path *p, double stored_change)
 {
     add_event(p, ADH_VISCO_END, &p->last);
     size_t k = (size_t)p->path - 1;
     adh_turn_result *tr = &p->run->turns[k];
-    pulloff(p, tr);
+    if (p->stranded)   /* the unloading past the start is not known: no pull-off */
+        tr->pulloff_F = tr->pulloff_h0 = NAN;
+    else
+        pulloff(p, tr);
     p->res.time = p->last.o.t;
     /* the turn's cycle: the loading to it, then this branch */
     double jumps = p->turn_loss[k] + p->losses;
+    /* A start in contact: the cycle's loop is over the range of the base
+     * both its loading and its unloading cover, the base below the start's
+     * (docs/stop-reasons.md, hysteresis): the unloading past the start has
+     * no loading beside it. Under displacement control the curve's loop
+     * from the start's row on; through a spring the losses of the jumps
+     * below the start's base. */
+    size_t s0 = p->c->start;
+    double in_range = p->turn_loss[k] + p->losses_in;
     /* no dissipation on the way: the base's work is what the jumps
      * released and what stays stored (nothing, back at the start); under
      * displacement control the static curve's loop, the area between its
@@ -662,10 +679,11 @@ static void end_branch(adh_path *p, double stored_change)
      * above its own at -1 nm beside a turn at -3 nm on a coarse grid); one
      * short of contact jumped nowhere and has none */
     if (isfinite(p->k) || !p->c->complete || (jumps == 0 && k + 1 != p->ps.nturns)) {
-        tr->hysteresis = jumps + stored_change;
+        tr->hysteresis = s0 ? in_range : jumps + stored_change;
     } else {
         size_t rows = k + 1 == p->ps.nturns ? p->c->n : (size_t)floor(p->turn_x[k]) + 1;
-        adh_run view = { .rows = (adh_obs *)p->c->rows, .nrows = rows < p->c->n ? rows : p->c->n };
+        rows = rows < p->c->n ? rows : p->c->n;
+        adh_run view = { .rows = (adh_obs *)p->c->rows + s0, .nrows = rows > s0 ? rows - s0 : 0 };
         tr->hysteresis = adh_cycle_static_hysteresis(&view, ADH_CYCLE_HYSTERESIS_STEP * p->m.z0);
     }
     if (k + 1 != p->ps.nturns)
@@ -700,6 +718,14 @@ static double stored_beyond(const adh_path *p, const path_pt *l)
     return rigid_energy(&p->m, l->o.h0) - rigid_energy(&p->m, s->h0) + sk;
 }
 
+/* The stored energy at the last row, on the curve, less the start's:
+ * nothing back at the start; past a start in contact, the base's work
+ * along the curve from there to the start. */
+static double stored_here(const adh_path *p)
+{
+    return p->last.x < (double)p->c->start ? curve_work(p, p->last.x, (double)p->c->start) : 0;
+}
+
 /* Turn k's unloading branch: from its point on the loading path back up
  * the curve, the base rising, until it is back at the start with the
  * surfaces apart. */
@@ -707,7 +733,8 @@ static void unload(adh_path *p, size_t k)
 {
     path_pt q = { .x = p->turn_x[k], .o = p->turn_o[k] };
     p->path = (int)k + 1, p->branch = -1, p->have_last = 0;
-    p->work = p->losses = 0;
+    p->work = p->losses = p->losses_in = 0;
+    p->stranded = 0;
     p->branch_ev = p->nev;
     p->pull_row = -1;
     adh_turn_result *tr = &p->run->turns[k];
@@ -733,19 +760,18 @@ static void unload(adh_path *p, size_t k)
     long j = x == floor(x) ? (long)x - 1 : (long)floor(x);
     while (p->rc == ADH_SUCCESS) {
         if (!p->in_contact && bmax >= p->b_start && p->last.o.base >= p->b_start) {
-            end_branch(p, 0);
+            end_branch(p, stored_here(p));
             return;
         }
         if (j < 0) {
-            /* the curve's start, in contact still (a start where the
-             * surfaces touch): the curve goes on beyond it, where it was
-             * not solved, and turns nowhere here. The branch ends on it,
-             * in contact (the run says so: not separated), with the
-             * curve's pull-off and no jump out, as the static curve from
-             * that start; it claimed a fold there, landing on rigid
-             * spheres at the same h0 (not an equilibrium: a 1 TPa sphere
-             * from z0 "pulled off" at F_rigid = -500 nN, the curve's
-             * least force -498.55 nN, and "jumped out" at its start) */
+            /* the curve's first row, in contact still: a start where the
+             * surfaces touch whose curve beyond it (from where they do
+             * not, adh_path_curve.start) was not had. The unloading would
+             * go on past it until they part; the branch ends here, in
+             * contact (the run says so: not separated), with no jump out
+             * and no pull-off: the lowest force seen is not one (a 1 TPa
+             * sphere from 0.1 nm reported its start's +8.96 uN) */
+            p->stranded = 1;
             end_branch(p, 0);
             return;
         }
@@ -755,7 +781,7 @@ static void unload(adh_path *p, size_t k)
                 /* the base back at its start between the rows: the end there */
                 double xs = (double)j + (p->b_start - bj) / (base_of(p, &p->last.o) - bj) * (p->last.x - (double)j);
                 step_to(p, xs);
-                end_branch(p, 0);
+                end_branch(p, stored_here(p));
                 return;
             }
             step_to(p, (double)j);
@@ -775,7 +801,7 @@ static void unload(adh_path *p, size_t k)
             double loss;
             path_pt l = land_rigid(p, base_of(p, &f.o), &loss);
             jump(p, &f, &l, loss + jump_loss(p, &f, (size_t)j, 0));
-            end_branch(p, stored_beyond(p, &l));
+            end_branch(p, stored_beyond(p, &l) + curve_work(p, 0, (double)p->c->start));
             return;
         }
         path_pt l = at(p, xl);
@@ -802,7 +828,8 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     p->rc = ADH_SUCCESS;
     p->k = d->spring;
     p->reached = 0;
-    p->work = p->losses = 0;
+    p->work = p->losses = p->losses_in = 0;
+    p->stranded = 0;
     p->in_contact = 0;
     p->branch_ev = 0;
     p->pull_row = -1;
@@ -810,12 +837,12 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     qsort(p->ps.turns, p->ps.nturns, sizeof *p->ps.turns, cmp_desc);
     qsort(p->ps.profiles, p->ps.nprofiles, sizeof *p->ps.profiles, cmp_desc);
     adh_visco_result *r = &p->res;
-    if (c->n == 0)
+    if (c->n == 0 || c->start >= c->n)
         return ADH_SUCCESS;
-    p->b_start = row_base(p, 0);
-    r->start_h0 = c->rows[0].h0;
+    p->b_start = row_base(p, c->start);
+    r->start_h0 = c->rows[c->start].h0;
     r->start_base = p->b_start;
-    run->start = c->rows[0].h0;
+    run->start = c->rows[c->start].h0;
     load(p);
     r->time = p->have_last ? p->last.o.t : 0;
     if (c->complete && ps->unload && p->reached == p->ps.nturns)

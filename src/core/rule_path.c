@@ -38,6 +38,8 @@ typedef struct path_rule {
     size_t next;            /* the next row of run to hand out */
     int first;              /* the status of the curve's start */
     int kept_first;         /* the curve's start is among its rows */
+    size_t start_row;       /* the start's row: after the curve past a start in
+                               contact (past_rows), else 0 */
     int deeper;             /* the solves deeper so far */
     int built, status;      /* the path read off; the curve's final status */
     int brc;                /* the walk's own status once built (ADH_ENOMEM, ADH_EINTR, ...) */
@@ -81,6 +83,47 @@ static void path_free(void *vr)
     free(r);
 }
 
+static int keep_point(path_rule *r);
+
+/* Whether the surfaces touch at the static curve's present point. */
+static int in_contact(const path_rule *r)
+{
+    return adh_contact_radius(r->g, adh_static_state(r->sw)->h, r->m.z0) > 0;
+}
+
+/* A start in contact: the unloading goes on past it until the surfaces
+ * part (the protocol's one rule, adhere/drive.h), so the path needs the
+ * curve beyond the start too: the curve from the automatic start (out of
+ * contact, where the undeformed surfaces are solved at once) down to the
+ * start, its rows kept before the start's (its last, the start itself,
+ * dropped: the start's own row follows). The walk begins at the start's
+ * row (adh_path_curve.start). Where that curve stops short, no rows past
+ * the start: the walk ends there, with no pull-off (adhere/path.h). The
+ * curve from the start is set again afterwards. ADH_SUCCESS, or
+ * ADH_ENOMEM / ADH_EINTR. */
+static int past_rows(path_rule *r)
+{
+    adh_static_settings past = r->ss;
+    past.h0_start = adh_protocol_auto_start(&r->m, 0.05e-9);
+    past.h0_end = r->ss.h0_start;
+    int rc = past.h0_start > past.h0_end ? adh_static_set(r->sw, &r->m, &past) : ADH_EINVAL;
+    if (rc == ADH_SUCCESS && (rc = keep_point(r)) == ADH_SUCCESS)
+        for (;;) {
+            int irc = adh_static_iterate(r->sw);
+            if (irc != ADH_CONTINUE && irc != ADH_SUCCESS) {
+                rc = irc;
+                break;
+            }
+            if ((rc = keep_point(r)) != ADH_SUCCESS || irc == ADH_SUCCESS)
+                break;
+        }
+    if (rc == ADH_ENOMEM || rc == ADH_EINTR)
+        return rc;
+    r->start_row = rc == ADH_SUCCESS && r->curve.nrows > 1 ? r->curve.nrows - 1 : 0;
+    r->curve.nrows = r->start_row;   /* (the start's own row comes next) */
+    return adh_static_set(r->sw, &r->m, &r->ss);
+}
+
 /* The curve from its start again, under r->ss: no rows yet. */
 static int restart(path_rule *r)
 {
@@ -93,7 +136,10 @@ static int restart(path_rule *r)
     adh_path_clear(r->path);   /* the summary until the walk: nothing yet, not the last walk's */
     r->kept_first = 0;
     r->brc = ADH_SUCCESS;
+    r->start_row = 0;
     int rc = adh_static_set(r->sw, &r->m, &r->ss);
+    if (rc == ADH_SUCCESS && in_contact(r))
+        rc = past_rows(r);
     r->first = rc == ADH_SUCCESS ? ADH_CONTINUE : rc;
     return rc;
 }
@@ -189,7 +235,8 @@ static int walk(path_rule *r, int st)
     size_t nf = adh_static_folds(r->sw, &f);
     adh_static_summary(r->sw, &r->sres);
     r->pc = (adh_path_curve){ .rows = r->curve.rows, .n = r->curve.nrows, .u = r->keep_u ? r->u : NULL, .g = r->g,
-                              .res = &r->sres, .folds = f, .nfolds = nf, .complete = r->status == ADH_SUCCESS };
+                              .res = &r->sres, .folds = f, .nfolds = nf, .complete = r->status == ADH_SUCCESS,
+                              .start = r->start_row };
     r->built = 1;
     int rc = adh_path_build(r->path, &r->pc, &r->m, &r->drive, &r->ps, &r->run);
     if (rc == ADH_SUCCESS && r->run.nrows)
