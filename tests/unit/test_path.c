@@ -397,50 +397,71 @@ static void set_again(const fixture *f)
     adh_run_free(&fresh_run);
 }
 
-/* A stiff sphere (1 TPa) started at z0, where its surfaces already touch:
- * unloading reaches the curve's start still in contact. The curve turns
- * nowhere there (it goes on beyond the start, unsolved): the branch ends
- * on it, at the start, in contact, with no jump, and its pull-off is the
- * curve's least force on it, the start's (the static curve from that
- * start says the same, and no jump out). It claimed a fold there landing
- * on rigid spheres at the same h0, no equilibrium: a pull-off of F_rigid
- * = -500 nN below every force of the curve, and a jump out at the start;
- * before that, its last row was written twice. Under displacement control
- * and through 100 N/m. */
+/* A stiff sphere (1 TPa) started at 0.1 nm, where its surfaces already
+ * touch (pressing: F > 0). Its unloading goes on past the start until the
+ * surfaces part (the protocol's one rule, as the drive's and the static
+ * curve's), so its pull-off and jump-out are those of the same run from
+ * the automatic start, an independent run whose loading came from out of
+ * contact; and its cycle closes (complete). It ended at the start in
+ * contact, `not separated`, with the start's +8.96 uN as its pull-off.
+ * Its hysteresis is the loop over the range of h0 both its loading and
+ * its unloading cover (below the start): under displacement control the
+ * static curve's loop from that start (adh_cycle_static_hysteresis). Under
+ * displacement control and through 100 N/m. */
 static void start_in_contact(const fixture *f, double k)
 {
     fixture stiff = *f;
     stiff.m.E = 1e12;
     adh_protocol_settings ps = protocol();
-    ps.start = stiff.m.z0;
-    ps.turns[0] = isfinite(k) ? 0.2e-9 : -1e-9;
+    ps.start = 0.2 * stiff.m.z0;
+    ps.turns[0] = isfinite(k) ? 0 : -1e-9;
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
     d.spring = k;
     prun p = path_run(&stiff, &d, &ps);
+    adh_protocol_settings pa = ps;
+    pa.start = NAN;
+    prun a = path_run(&stiff, &d, &pa);
     size_t same = 0, jumps = 0;
     const adh_obs *r = p.run.rows, *last = p.run.nrows ? &r[p.run.nrows - 1] : NULL;
-    double least = INFINITY;
-    for (size_t i = 1; i < p.run.nrows; i++) {
+    for (size_t i = 1; i < p.run.nrows; i++)
         same += r[i].t == r[i - 1].t && r[i].h0 == r[i - 1].h0 && r[i].F == r[i - 1].F && r[i].base == r[i - 1].base &&
                 r[i].path == r[i - 1].path;
-        if (r[i].path == 1)
-            least = fmin(least, r[i].F);
-    }
     for (size_t i = 0; i < p.nev; i++)
-        jumps += p.ev[i].kind == ADH_VISCO_JUMP;
-    ok(p.rc == ADH_SUCCESS && p.run.nrows > 2 && r[0].a > 0 && jumps == 0 && same == 0 && last->path == 1 &&
-       last->h0 == r[0].h0 && last->a > 0 && last->F == r[0].F,
-       "k = %g N/m, a 1 TPa sphere from z0 (in contact, a = %.3g nm): unloading ends at the curve's start, in contact "
-       "(a = %.3g nm), on the curve (F %.6g N, the start's %.6g); no jump (%zu), no row repeated (%zu of %zu)", k,
-       r[0].a * 1e9, last ? last->a * 1e9 : NAN, last ? last->F : NAN, r[0].F, jumps, same, p.run.nrows);
-    ok(isnan(p.r.jump_out_h0) && p.r.pulloff_F == least && least == r[0].F && least > r[0].F_rigid,
-       "... no jump out (%g), the pull-off the curve's least force on the branch, %.6g N (the start's), above rigid "
-       "spheres' %.6g N there", p.r.jump_out_h0, p.r.pulloff_F, r[0].F_rigid);
+        jumps += p.ev[i].kind == ADH_VISCO_JUMP && p.ev[i].path == 0;
+    ok(p.rc == ADH_SUCCESS && a.rc == ADH_SUCCESS && p.run.nrows > 2 && r[0].h0 == ps.start && r[0].a > 0 &&
+       r[0].t == 0 && jumps == 0 && same == 0 && last->path == 1 && !(last->a > 0) && last->h0 > ps.start,
+       "k = %g N/m, a 1 TPa sphere from 0.1 nm (in contact, a = %.3g nm, F = %.3g N): its first row the start, "
+       "no jump in; unloading goes on past the start until the surfaces part (its last row at %.4g nm, a = %g), no row "
+       "repeated (%zu of %zu)", k, r[0].a * 1e9, r[0].F, last ? last->h0 * 1e9 : NAN, last ? last->a : NAN, same,
+       p.run.nrows);
+    ok(p.r.cycle.work - p.r.cycle.jumps - p.r.cycle.stored == 0 ||
+       fabs(p.r.cycle.work - p.r.cycle.jumps - p.r.cycle.stored) < 1e-6 * fabs(p.r.cycle.work),
+       "k = %g N/m: the base's work (%.6g J) is the jumps' losses (%.6g) and the stored change (%.6g)", k,
+       p.r.cycle.work, p.r.cycle.jumps, p.r.cycle.stored);
+    ok(fabs(p.r.pulloff_F - a.r.pulloff_F) < 1e-3 * fabs(a.r.pulloff_F),
+       "k = %g N/m: its pull-off (%.6g N) is the run's from the automatic start (%.6g N)", k, p.r.pulloff_F,
+       a.r.pulloff_F);
+    ok(fabs(p.r.pulloff_h0 - a.r.pulloff_h0) < 1e-3 * stiff.m.z0 &&
+       fabs(p.r.jump_out_h0 - a.r.jump_out_h0) < 1e-3 * stiff.m.z0,
+       "k = %g N/m: ... at the same h0 (%.6g, %.6g m), and so is its jump-out (%.6g, %.6g m)", k, p.r.pulloff_h0,
+       a.r.pulloff_h0, p.r.jump_out_h0, a.r.jump_out_h0);
+    if (!isfinite(k)) {
+        adh_run st;
+        adh_static_result sr;
+        int src = static_run(&stiff, k, &ps, &st, &sr);
+        double loop = src == ADH_SUCCESS ? adh_cycle_static_hysteresis(&st, ADH_CYCLE_HYSTERESIS_STEP * stiff.m.z0)
+                                         : NAN;
+        ok(p.r.hysteresis == loop, "k = inf: its hysteresis is the static curve's loop from that start (%.6g J, %.6g)",
+           p.r.hysteresis, loop);
+        adh_run_free(&st);
+    }
     /* in contact from its first row, it saw no jump in (relaxation and
      * the static curve report none from that start either) */
     ok(isnan(p.r.jump_in_h0) && isnan(p.r.jump_in_t),
-       "k = %g N/m, a 1 TPa sphere from z0: no jump in claimed (jump_in_h0 %g, t %g)", k, p.r.jump_in_h0, p.r.jump_in_t);
+       "k = %g N/m, a 1 TPa sphere from 0.1 nm: no jump in claimed (jump_in_h0 %g, t %g)", k, p.r.jump_in_h0,
+       p.r.jump_in_t);
     adh_run_free(&p.run);
+    adh_run_free(&a.run);
 }
 
 int main(void)
