@@ -38,7 +38,10 @@ size_t adh_cycle_turns(const adh_obs *rows, size_t n, adh_turn_result *turns, si
  * position, integrated by the trapezoid rule over the positions both
  * branches cover; past the loading branch's start (unloading goes on
  * there while the surfaces touch) the loading force is the rigid
- * spheres', F_rigid. 0 when they share fewer than two positions. */
+ * spheres', F_rigid, where the loading began out of contact; from a
+ * start in contact (the loading's first row a > 0) the area is over the
+ * positions both branches cover only, up to the start. 0 when they share
+ * fewer than two positions. */
 double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path);
 
 /* The area between the loading and unloading force curves over the positions
@@ -53,6 +56,9 @@ double adh_cycle_run_hysteresis(const adh_run *run);
  * lattice's folds, never across the jump-in or jump-out). NAN when memory
  * runs out. */
 double adh_cycle_static_hysteresis(const adh_run *curve, double step);
+/* The same over the positions h0 < top only (the same samples below it):
+ * the loop of a cycle whose start, top, lies on the curve. */
+double adh_cycle_static_hysteresis_below(const adh_run *curve, double step, double top);
 /* The step, in z0, every driver samples a static curve's loop at. */
 #define ADH_CYCLE_HYSTERESIS_STEP 0.002
 

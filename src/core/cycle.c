@@ -25,9 +25,12 @@ static double loading_force(const adh_obs *rows, size_t n, double h0)
 double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path)
 {
     double area = 0, prev_h = NAN, prev_gap = NAN, top = -INFINITY;
+    int touching = 0;   /* the loading began in contact */
     for (size_t i = 0; i < n; i++)
-        if (rows[i].path == 0)
-            top = fmax(top, rows[i].h0);
+        if (rows[i].path == 0 && rows[i].h0 > top) {
+            top = rows[i].h0;
+            touching = rows[i].a > 0;
+        }
     for (size_t i = 0; i < n; i++) {
         const adh_obs *u = &rows[i];
         if (u->path != path || path <= 0)
@@ -36,8 +39,12 @@ double adh_cycle_hysteresis(const adh_obs *rows, size_t n, int path)
         /* Unloading goes on past the start while the surfaces touch: the
          * approach was never solved out there, but it began where the
          * force is negligible and the deformation below 1 % of z0, so its
-         * force is the rigid spheres' (eq 22) */
-        if (isnan(Fl) && u->h0 > top)
+         * force is the rigid spheres' (eq 22). Not from a start in
+         * contact: no approach of this cycle's came through there (rigid
+         * spheres' force below z0 is their overlap's, 3.39 pJ of a 1 TPa
+         * sphere's "loop" from 0.1 nm), so the loop is over the positions
+         * both branches cover (docs/stop-reasons.md, hysteresis) */
+        if (isnan(Fl) && u->h0 > top && !touching)
             Fl = u->F_rigid;
         double gap = Fl - u->F;
         if (!isnan(gap) && !isnan(prev_gap))
@@ -192,6 +199,11 @@ static double piece_force(const adh_run *c, const cycle_piece *s, double x)
  * memory runs out. */
 double adh_cycle_static_hysteresis(const adh_run *curve, double step)
 {
+    return adh_cycle_static_hysteresis_below(curve, step, INFINITY);
+}
+
+double adh_cycle_static_hysteresis_below(const adh_run *curve, double step, double top)
+{
     size_t n = curve->nrows, np = 0;
     cycle_piece *pc = n ? malloc(n * sizeof *pc) : NULL;
     if (n && !pc)
@@ -211,6 +223,7 @@ double adh_cycle_static_hysteresis(const adh_run *curve, double step)
                                   .q = q < n && (curve->rows[q].h0 - curve->rows[j].h0) * dir > 0 ? q : n };
     }
     double area = 0;
+    hi = fmin(hi, top);
     for (double x = lo + 0.5 * step; x < hi; x += step) {
         double fmax_ = -INFINITY, fmin_ = INFINITY;
         for (size_t k = 0; k < np; k++) {

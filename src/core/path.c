@@ -46,8 +46,8 @@ struct adh_path {
     path_pt last;               /* the last row emitted */
     int have_last, in_contact;
     double work, losses;        /* the base's work and the jumps' losses so far */
-    double losses_in;           /* ... those of the jumps whose base lies below the
-                                   start's (a start in contact: its cycle's range) */
+    double work_in;             /* the branch's work until its base came back to the
+                                   start's (NAN before: a start in contact's loop) */
     int stranded;               /* the branch ended in contact at the curve's first row */
     size_t branch_ev;           /* the branch's first event */
     long pull_row;              /* the branch's lowest force: its row, -1 none */
@@ -262,6 +262,12 @@ static void emit(adh_path *p, path_pt *q, double t, int leg)
     q->o.converged = 1;
     q->o.stable = 1;
     if (p->have_last) {
+        double b0 = p->last.o.base, b1 = q->o.base;
+        if (p->branch < 0 && isnan(p->work_in) && b0 < p->b_start && b1 >= p->b_start) {
+            /* the base back at the start's: the loop of a cycle from a start in contact */
+            double Fs = p->last.o.F + (q->o.F - p->last.o.F) * (p->b_start - b0) / (b1 - b0);
+            p->work_in = p->work - 0.5 * (p->last.o.F + Fs) * (p->b_start - b0);
+        }
         p->work -= 0.5 * (p->last.o.F + q->o.F) * (q->o.base - p->last.o.base);
         if (leg)
             profiles_between(p, q);
@@ -445,8 +451,6 @@ static void jump(adh_path *p, path_pt *f, path_pt *l, double loss)
     emit(p, f, t, 1);
     emit(p, l, t, 0);
     p->losses += loss;
-    if (p->c->start == 0 || base_of(p, &f->o) < p->b_start)
-        p->losses_in += loss;
     int before = f->o.a > 0, after = l->o.a > 0;
     if (before == after) {
         p->res.lattice_jumps++;
@@ -663,10 +667,10 @@ static void end_branch(adh_path *p, double stored_change)
      * both its loading and its unloading cover, the base below the start's
      * (docs/stop-reasons.md, hysteresis): the unloading past the start has
      * no loading beside it. Under displacement control the curve's loop
-     * from the start's row on; through a spring the losses of the jumps
-     * below the start's base. */
+     * from the start's row on; through a spring the base's work from the
+     * start to the turn and back to the start's base. */
     size_t s0 = p->c->start;
-    double in_range = p->turn_loss[k] + p->losses_in;
+    double in_range = p->turn_work[k] + (isnan(p->work_in) ? p->work : p->work_in);
     /* no dissipation on the way: the base's work is what the jumps
      * released and what stays stored (nothing, back at the start); under
      * displacement control the static curve's loop, the area between its
@@ -733,7 +737,8 @@ static void unload(adh_path *p, size_t k)
 {
     path_pt q = { .x = p->turn_x[k], .o = p->turn_o[k] };
     p->path = (int)k + 1, p->branch = -1, p->have_last = 0;
-    p->work = p->losses = p->losses_in = 0;
+    p->work = p->losses = 0;
+    p->work_in = NAN;
     p->stranded = 0;
     p->branch_ev = p->nev;
     p->pull_row = -1;
@@ -828,7 +833,8 @@ int adh_path_build(adh_path *p, const adh_path_curve *c, const adh_material *m, 
     p->rc = ADH_SUCCESS;
     p->k = d->spring;
     p->reached = 0;
-    p->work = p->losses = p->losses_in = 0;
+    p->work = p->losses = 0;
+    p->work_in = NAN;
     p->stranded = 0;
     p->in_contact = 0;
     p->branch_ev = 0;

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "adhere/cycle.h"
 #include "adhere/kernel.h"
 #include "adhere/law.h"
 #include "adhere/observe.h"
@@ -99,6 +100,21 @@ static void one(double E, double start, size_t n, double dr, int folded, const c
                                     fabs(mine.pulloff_F_disp / res.pulloff_F_disp - 1) < 1e-3,
            "%s: and its jump-out %.4g nm (F %.4g N) the curve's, %.4g nm (F %.4g N)", what,
            mine.jump_out_h0 * 1e9, mine.pulloff_F_disp, res.jump_out_h0 * 1e9, res.pulloff_F_disp);
+        /* its hysteresis: the loop over the positions both its loading and
+         * its unloading cover, below the start (the unloading past it has
+         * no loading of this cycle beside it): the curve's from far out
+         * over the same positions, the same samples */
+        adh_run mine_rows;
+        adh_run_init(&mine_rows);
+        adh_static_result mres;
+        int mrc = adh_runner_static_curve(g, k, &m, &s, NULL, NULL, &mine_rows, &mres);
+        double step = ADH_CYCLE_HYSTERESIS_STEP * m.z0;
+        double hm = adh_cycle_static_hysteresis(&mine_rows, step), hf = adh_cycle_static_hysteresis_below(&run, step, start);
+        double scale = fabs(res.pulloff_F) * m.z0;   /* the adhesion's work, a pull-off over z0 */
+        ok(mrc == ADH_SUCCESS && fabs(hm - hf) <= 1e-3 * fmax(fabs(hf), 1e-3 * scale),
+           "%s: its hysteresis %.6g J is the loop of the curve from far out below the start, %.6g J "
+           "(the whole curve's %.6g J)", what, hm, hf, adh_cycle_static_hysteresis(&run, step));
+        adh_run_free(&mine_rows);
         if (folded)
             ok(res.folds && res.jump_in_h0 > start,
                "%s: the start is past the curve's snap-in at %.4g nm: its inner branch (%zu folds)", what,
@@ -119,5 +135,10 @@ int main(void)
     /* Newton from the undeformed surfaces solves this start (pressing,
      * +9 uN); the pull-off past it, DMT's -2 pi gamma R nearly */
     one(1e12, 0.1e-9, 200, 1.5e-9, 0, "E = 1 TPa (no folds)");
+    /* a coarse grid (6 nm, 0.5 edge-zone widths: unresolved on purpose),
+     * whose contact line steps over the nodes in lattice folds, loading
+     * and unloading alike: a loop below the start, where the others have
+     * none */
+    one(1e9, 1.0e-9, 200, 6e-9, 1, "E = 1 GPa on 6 nm (lattice folds)");
     return tap_done();
 }
