@@ -222,5 +222,10 @@ const char *adh_static_why(const adh_static *w, unsigned *fix);
 void adh_static_summary(const adh_static *w, adh_static_result *res);
 /* The folds found so far: their number, and a borrowed array. */
 size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds);
+/* From a start in contact, the point of least force on the curve past the
+ * start (traced from the automatic start down to it: the unloading goes on
+ * there, adh_static_set): its state (borrowed) and force in *F; NULL when
+ * the start is out of contact, or that curve was not followed. */
+const adh_state *adh_static_past_least(const adh_static *w, double *F);
 
 #endif

@@ -75,6 +75,7 @@ void adh_static_free(adh_static *w)
     static_newton_free(w);
     adh_state_free(w->st);
     adh_state_free(w->trial);
+    adh_state_free(w->past_least);
     adh_folds_free(w->folds);
     free(w->extra);
     free(w->buf);
@@ -417,10 +418,22 @@ static int traced(adh_static *w, double *guess, char *how, size_t howlen, unsign
     w->s.h0_start = from;
     w->s.h0_end = to;
     reset(w);
+    if (!w->past_least && !(w->past_least = adh_state_alloc(w->n)))
+        return ADH_ENOMEM;
+    w->past_least_F = INFINITY;
     int rc = start(w, NULL);
-    while (rc == ADH_SUCCESS && !w->done)
+    while (rc == ADH_SUCCESS && !w->done) {
+        if (w->F < w->past_least_F) {   /* where the pull-off profile is */
+            adh_state_copy(w->past_least, w->st);
+            w->past_least_F = w->F;
+        }
         if ((rc = adh_static_iterate(w)) == ADH_CONTINUE)
             rc = ADH_SUCCESS;
+    }
+    if (rc == ADH_SUCCESS && w->F < w->past_least_F) {
+        adh_state_copy(w->past_least, w->st);
+        w->past_least_F = w->F;
+    }
     if (rc == ADH_SUCCESS) {
         memcpy(guess, w->st->u, w->n * sizeof *guess);
         w->past = adh_folds_summary_of(w->folds);
@@ -522,4 +535,12 @@ void adh_static_summary(const adh_static *w, adh_static_result *res)
 size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds)
 {
     return adh_folds_kept(w->folds, folds);
+}
+
+const adh_state *adh_static_past_least(const adh_static *w, double *F)
+{
+    if (!w->past_on || !w->past_least)
+        return NULL;
+    *F = w->past_least_F;
+    return w->past_least;
 }

@@ -134,6 +134,8 @@ struct adh_static {
      * curve's (past_on), or unknown (past_lost: no pull-off then). */
     adh_folds_summary past;
     int past_on, past_lost;
+    adh_state *past_least; /* its point of least force (allocated on the first trace) */
+    double past_least_F;
     double *buf;      /* the vectors above, one allocation */
     const char *last_reject; /* why the last step attempt was rejected (static_reject) */
     char why[400];    /* why the curve stopped ("" while it goes on; as long as a run's) */

@@ -60,8 +60,8 @@ static size_t curve_profiles(const tui_sim *s, const adh_obs *rows, adh_profile 
         size_t at;
         const adh_state *st = tui_sim_curve_profile(s, which, &at);
         int dup = 0;
-        for (size_t k = 0; k < np; k++)
-            dup |= prof[k].h0 == rows[at].h0;
+        for (size_t k = 0; st && k < np; k++)
+            dup |= prof[k].h0 == st->h0;   /* (a pull-off past a start in contact is no row's) */
         if (!st || dup)
             continue;
         prof[np++] = (adh_profile){ .h0 = st->h0, .branch = rows[at].branch, .path = 0, .u = st->u, .h = st->h,

@@ -437,27 +437,33 @@ static void draw_curve_state(const tui_sim *s, const tui_view *v, int y, int x, 
         draw_point_rows(o, 0, v, y, x, w);
         put(y + 6, x, w, o->stable ? A_NORMAL : A_BOLD, "  point  %zu of %zu, %s, %zu Newton iteration%s", s->ccur + 1,
             s->curve.nrows, o->stable ? "stable" : "UNSTABLE", o->iters, o->iters == 1 ? "" : "s");
+        /* a complete curve's missing jump is none, not one to come */
+        const char *missing = s->cstatus == ADH_SUCCESS ? "none" : "not yet";
         if (r->folds) {
             /* the physical folds, where an experiment jumps, apart from
              * those of the grid's lattice (the contact line crossing a node) */
             q(v, r->jump_in_h0, ADH_Q_LENGTH, a, sizeof a);
+            if (isnan(r->jump_in_h0))
+                snprintf(a, sizeof a, "%s", missing);
             q(v, r->jump_out_h0, ADH_Q_LENGTH, b, sizeof b);
             size_t physical = !isnan(r->jump_in_h0) + !isnan(r->jump_out_h0);
             size_t lattice = r->folds > physical ? r->folds - physical : 0;
             char more[48] = "";
             if (lattice)
                 snprintf(more, sizeof more, ", +%zu lattice", lattice);
-            put(y + 7, x, w, A_NORMAL, "  folds  jump-in %s, out %s%s", a, isnan(r->jump_out_h0) ? "not yet" : b,
+            put(y + 7, x, w, A_NORMAL, "  folds  jump-in %s, out %s%s", a, isnan(r->jump_out_h0) ? missing : b,
                 more);
         } else {
-            put(y + 7, x, w, A_NORMAL, "  folds  none yet");
+            put(y + 7, x, w, A_NORMAL, "  folds  %s", s->cstatus == ADH_SUCCESS ? "none: no jumps" : "none yet");
         }
         q(v, r->pulloff_F, ADH_Q_FORCE, a, sizeof a);
+        if (isnan(r->pulloff_F))   /* (past a start in contact, where the curve was not followed) */
+            snprintf(a, sizeof a, "%s", s->cstatus == ADH_SUCCESS ? "not known" : "not yet");
         q(v, r->pulloff_F_disp, ADH_Q_FORCE, b, sizeof b);
         /* the pull-off is the force minimum; the force where the surfaces
          * leave at fixed h0 is the jump-out's (summary: pulloff_F_disp) */
         if (isnan(r->pulloff_F_disp))
-            put(y + 8, x, w, A_NORMAL, "  pull-off %s; F at the jump-out not yet", a);
+            put(y + 8, x, w, A_NORMAL, "  pull-off %s; F at the jump-out %s", a, missing);
         else
             put(y + 8, x, w, A_NORMAL, "  pull-off %s; F at the jump-out %s", a, b);
     }

@@ -1226,6 +1226,19 @@ const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at)
         *at = s->curve.nrows - 1;
         return adh_drive_state(s->sdrv);
     }
+    /* From a start in contact the unloading goes on past the start
+     * (adh_static_set): the pull-off is on the curve past it where it lies
+     * below every point from the start inward (1 TPa from 0.1 nm: there
+     * the start's own force, +9 uN, was the least of the rows'); the
+     * profile is the solver's, at the start's row (no row of the curve's) */
+    const adh_static *sw = which == PROF_PULLOFF && s->sdrv && s->curve.nrows ? adh_rule_static_solver(s->sdrv) : NULL;
+    double F;
+    const adh_state *past = sw ? adh_static_past_least(sw, &F) : NULL;
+    if (past && (s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->curve.nrows ||
+                 F < s->curve.rows[s->cprof_at[which]].F)) {
+        *at = 0;
+        return past;
+    }
     if (which < 0 || which > 1 || s->cprof_at[which] == NO_POINT || s->cprof_at[which] >= s->curve.nrows)
         return NULL;
     *at = s->cprof_at[which];

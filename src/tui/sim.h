@@ -221,7 +221,8 @@ double tui_sim_curve_end(const tui_sim *s);
 /* Static mode: the points computed so far (all of them, past the cursor
  * too), and the states kept for profiles (which 0: first point in contact,
  * 1: pull-off, 2: the last point computed; NULL when none), with the point
- * each belongs to. */
+ * each belongs to (a pull-off past a start in contact, on the curve beyond
+ * the start, is no point's: the start's, 0). */
 const adh_obs *tui_sim_curve(const tui_sim *s, size_t *n);
 const adh_state *tui_sim_curve_profile(const tui_sim *s, int which, size_t *at);
 /* The last fold the curve passed (0 when none yet, else the fold count). */

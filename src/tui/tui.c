@@ -318,6 +318,34 @@ static void describe_step(tui *t)
             o->a > 0 ? ", contact radius " : ", not in contact", o->a > 0 ? a : "");
 }
 
+/* The jumps a complete static curve made, in words: "jump-in, jump-out
+ * and 3 lattice folds", "jump-out", "no jumps" (a stiff sphere's curve
+ * has no fold at all; it said "jump-in, jump-out and 0 lattice folds"). */
+static void curve_jumps(const adh_static_result *r, char *buf, size_t len)
+{
+    size_t physical = !isnan(r->jump_in_h0) + !isnan(r->jump_out_h0);
+    size_t lattice = r->folds > physical ? r->folds - physical : 0;
+    const char *part[3];
+    char lat[48];
+    size_t n = 0;
+    if (!isnan(r->jump_in_h0))
+        part[n++] = "jump-in";
+    if (!isnan(r->jump_out_h0))
+        part[n++] = "jump-out";
+    if (lattice) {
+        snprintf(lat, sizeof lat, "%zu lattice fold%s", lattice, lattice == 1 ? "" : "s");
+        part[n++] = lat;
+    }
+    if (n == 0)
+        snprintf(buf, len, "no jumps");
+    else if (n == 1)
+        snprintf(buf, len, "%s", part[0]);
+    else if (n == 2)
+        snprintf(buf, len, "%s and %s", part[0], part[1]);
+    else
+        snprintf(buf, len, "%s, %s and %s", part[0], part[1], part[2]);
+}
+
 /* Whether a continuous run has reached its goal after the step just done. */
 static int run_done(tui *t)
 {
@@ -329,6 +357,8 @@ static int run_done(tui *t)
             return 0;
         char pl[64], tt[64], hy[64];
         fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
+        if (isnan(r->pulloff_F))   /* (a start in contact whose unloading could not go on past it) */
+            snprintf(pl, sizeof pl, "not reached");
         fmtq(r->time, ADH_Q_TIME, tt, sizeof tt);
         fmtq(r->hysteresis, ADH_Q_WORK, hy, sizeof hy);
         /* an elastic sphere walks its static curve: its rows are the
@@ -341,13 +371,17 @@ static int run_done(tui *t)
         const adh_static_result *r = &t->sim.sres;
         if (t->sim.cstatus != ADH_SUCCESS || tui_sim_redoable(&t->sim))
             return 0;
-        char pl[64], pd[64];
+        char pl[64], pd[64], jumps[96], tail[128] = "";
         fmtq(o->h0, ADH_Q_LENGTH, h0, sizeof h0);
         fmtq(r->pulloff_F, ADH_Q_FORCE, pl, sizeof pl);
-        fmtq(r->pulloff_F_disp, ADH_Q_FORCE, pd, sizeof pd);
-        size_t physical = !isnan(r->jump_in_h0) + !isnan(r->jump_out_h0);
-        say(t, 0, "curve complete at h0 = %s (%zu points; jump-in, jump-out and %zu lattice folds): pull-off %s, "
-            "F at jump-out %s", h0, t->sim.curve.nrows, r->folds > physical ? r->folds - physical : 0, pl, pd);
+        curve_jumps(r, jumps, sizeof jumps);
+        if (!isnan(r->jump_out_h0)) {
+            fmtq(r->pulloff_F_disp, ADH_Q_FORCE, pd, sizeof pd);
+            snprintf(tail, sizeof tail, ", F at jump-out %s", pd);
+        }
+        say(t, 0, "curve complete at h0 = %s (%zu points; %s): %s%s%s", h0, t->sim.curve.nrows, jumps,
+            isnan(r->pulloff_F) ? "no pull-off (the curve past the start was not followed)" : "pull-off ",
+            isnan(r->pulloff_F) ? "" : pl, tail);
         return 1;
     }
     /* the drive says what the row meant; the run pauses where a branch

@@ -342,6 +342,19 @@ check "p in static mode writes force.png as a PNG, into static/ beside the relax
     sh -c "[ \"\$(head -c 8 '$ST/adhere-plots/static/force.png' | od -An -tx1 | tr -d ' ')\" = 89504e470d0a1a0a ] && grep -q '^plots: wrote force.png' '$ST/static-plots.txt' && grep -q 'adhere-plots/static' '$ST/static-plots.txt'"
 check "its profiles: first contact, pull-off and the curve's end (3)" \
     [ "$(grep -v '^#' "$ST/adhere-plots/static/profiles.tsv" | tail -n +2 | cut -f1 | sort -u | wc -l)" -eq 3 ]
+# A start in contact (1 TPa from 0.1 nm): the pull-off is past the start,
+# where the unloading goes on; its profile is kept there, at the curve's
+# point of least force, within a tenth of z0 of --batch's pull-off from the
+# automatic start (an independent run: the curve from out of contact); the
+# screen kept the start's (0.1 nm). A curve without folds says so in words.
+SC=$W/staticcontact
+SB=$work/staticcontact-batch
+"$bin" --batch --mode=static --nodes=200 -E 1TPa --turn=-1nm --no-plot -o "$SB" </dev/null >/dev/null 2>"$SB.err"
+sc_pull=$(awk -F'\t' '$1 == "pulloff_h0" { print $2 }' "$SB/summary.tsv" 2>/dev/null)
+check "a start in contact: the pull-off's profile is past the start, at the pull-off from the automatic start (${sc_pull:-none} m)" \
+    sh -c "[ -n '$sc_pull' ] && grep -v '^#' '$SC/adhere-plots/static/profiles.tsv' | tail -n +2 | cut -f1 | sort -u | awk -v p='$sc_pull' 'BEGIN { n = 0 } { d = \$1 - p; if (d < 0) d = -d; if (d < 0.05e-9) n++ } END { exit n != 1 }'"
+check "a curve without folds says there were no jumps, in words (no nan)" \
+    sh -c "grep -q '^curve complete at h0 = -1 nm ([0-9]* points; no jumps): pull-off -4' '$SC/staticcontact-end.txt' && grep -q 'folds  none: no jumps' '$SC/staticcontact-end.txt' && ! grep -qi 'nan' '$SC/staticcontact-end.txt'"
 check "its contact.tsv has no speed: a curve of equilibria does not move in time" \
     sh -c "grep -q '^# the static equilibrium curve: nothing moves along it' '$ST/adhere-plots/static/contact.tsv' && ! awk -F'\t' '!/^#/ && \$1 != \"h0\" && \$6 != \"nan\"' '$ST/adhere-plots/static/contact.tsv' | grep -q ."
 check "p back in relaxation keeps both: the path's plots in adhere-plots/, the curve's in static/" \
