@@ -464,6 +464,46 @@ static void start_in_contact(const fixture *f, double k)
     adh_run_free(&a.run);
 }
 
+/* The walk over a curve that begins in contact with nothing of the curve
+ * beyond its start (adh_path_curve.start 0: what the rule hands it where
+ * the curve from the automatic start could not be followed): unloading
+ * comes back to the start still in contact and can go no further. The
+ * branch ends there, not separated, with no pull-off: the lowest force
+ * seen (the start's own, +8.96 uN, pressing) is none. */
+static void stranded(const fixture *f)
+{
+    fixture stiff = *f;
+    stiff.m.E = 1e12;
+    adh_static_settings ss = adh_static_settings_default();
+    ss.h0_start = 0.2 * stiff.m.z0;
+    ss.h0_end = -1e-9;
+    adh_run curve, run;
+    adh_run_init(&curve);
+    adh_run_init(&run);
+    adh_static_result sr;
+    int src = adh_runner_static_curve(stiff.g, stiff.k, &stiff.m, &ss, NULL, NULL, &curve, &sr);
+    adh_path_curve c = { .rows = curve.rows, .n = curve.nrows, .g = stiff.g, .res = &sr, .complete = 1 };
+    adh_protocol_settings ps = protocol();
+    ps.start = ss.h0_start;
+    ps.turns[0] = ss.h0_end;
+    adh_visco_drive d = fix_drive(1e-6, 1e-6);
+    adh_path *p = adh_path_alloc();
+    int rc = p ? adh_path_build(p, &c, &stiff.m, &d, &ps, &run) : ADH_ENOMEM;
+    adh_visco_result r;
+    if (p)
+        adh_path_summary(p, adh_path_rows(p), &r);
+    const adh_obs *last = run.nrows ? &run.rows[run.nrows - 1] : NULL;
+    ok(src == ADH_SUCCESS && rc == ADH_SUCCESS && curve.rows[0].a > 0 && last && last->path == 1 && last->a > 0 &&
+       last->h0 == curve.rows[0].h0 && isnan(r.pulloff_F) && isnan(r.pulloff_h0) && isnan(r.jump_out_h0) &&
+       run.nturns == 1 && isnan(run.turns[0].pulloff_F),
+       "a curve in contact from its first row, nothing beyond it: the unloading ends at the start in contact "
+       "(a = %.3g nm), with no pull-off (%g; the start's force %.3g N is none) and no jump out", last ? last->a * 1e9 : NAN,
+       p ? r.pulloff_F : NAN, curve.nrows ? curve.rows[0].F : NAN);
+    adh_path_free(p);
+    adh_run_free(&curve);
+    adh_run_free(&run);
+}
+
 int main(void)
 {
     fixture f = fix_open(FIX_N, 1.0);
@@ -491,6 +531,7 @@ int main(void)
     set_again(&f);
     start_in_contact(&f, INFINITY);
     start_in_contact(&f, 100);
+    stranded(&f);
     fix_close(&f);
     return tap_done();
 }
