@@ -45,8 +45,10 @@ int adh_run_separated(const adh_run *run, char *why, size_t whylen)
         if (!touched)
             continue;
         snprintf(why, whylen, "the surfaces never separated: unloading from the turn at h0 = %s ended at "
-                 "h0 = %s still in contact (contact radius %s), so there is no jump-out and the "
-                 "pull-off is only the lowest force seen", adh_qtext(t->h0, ADH_Q_LENGTH).s, adh_qtext(h_end, ADH_Q_LENGTH).s, adh_qtext(a_end, ADH_Q_LENGTH).s);
+                 "h0 = %s still in contact (contact radius %s), so there is no jump-out and %s",
+                 adh_qtext(t->h0, ADH_Q_LENGTH).s, adh_qtext(h_end, ADH_Q_LENGTH).s, adh_qtext(a_end, ADH_Q_LENGTH).s,
+                 /* (none where the unloading could not go on: physical time past a start in contact) */
+                 isnan(t->pulloff_F) ? "no pull-off" : "the pull-off is only the lowest force seen");
         return 0;
     }
     return 1;
