@@ -28,7 +28,9 @@
 adh_static_settings adh_rule_path_static_settings(double k, const volatile sig_atomic_t *cancel);
 
 /* The static curve behind drive d and its summary (NULL, and res
- * untouched, when d steps another rule or the curve is not solved yet). */
+ * untouched, when d steps another rule or the curve is not solved yet);
+ * from a start in contact its rows begin with the curve beyond the start,
+ * from the automatic start down to it (adh_path_curve.start). */
 const adh_run *adh_rule_path_curve(const adh_drive *d, adh_static_result *res);
 
 /* The path behind drive d (summary, events: none before the first
