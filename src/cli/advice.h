@@ -8,9 +8,10 @@
 
 #include "scene/config.h"
 
-/* Whose line the advice is for: a run's, or adhere fit's, whose turn is
- * no flag but a step below its measured curve's deepest position. */
-typedef enum { CLI_ADVICE_RUN, CLI_ADVICE_FIT } cli_advice_for;
+/* Whose line the advice is for: a run's, adhere fit's, whose turn is no
+ * flag but a step below its measured curve's deepest position, or a
+ * --cost run's, whose N and eps are --cost-nodes' and --cost-eps'. */
+typedef enum { CLI_ADVICE_RUN, CLI_ADVICE_FIT, CLI_ADVICE_COST } cli_advice_for;
 
 /* Appends the settings of the bits in fix to the sentence in why, as
  * " (--turn, -R)"; nothing for 0 (or when they do not fit). For who (a

@@ -575,7 +575,8 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
             c.spec.grid.use.spacing = cost_spacing(cfg->spec.grid.use.spacing, nodes[a], *base);
             c.spec.relax.eps = eps[e];
             c.spec.grid.force = 1; /* coarse grids are what the report measures */
-            if (cli_options_validate(&c, why, sizeof why) != 0) {
+            /* its N and eps are the lists', not the keys' */
+            if (cli_options_validate_for(&c, CLI_ADVICE_COST, why, sizeof why) != 0) {
                 adh_sayf("--cost: N = %zu, eps = %s: %s", nodes[a], adh_qtext(eps[e], ADH_Q_LENGTH).s, why);
                 return CLI_EXIT_USAGE;
             }

@@ -162,8 +162,11 @@ static int settings(fit_run *fr, char *why, size_t whylen)
     fr->fs.start = cfg->spec.mat;
     /* the start values are a material as a run's are (A = 0 has no
      * adhesion, nothing to compare the curve's pull-off with) */
-    if (adh_material_validate(&fr->fs.start, why, whylen) != ADH_SUCCESS)
+    char msg[512];
+    if (adh_material_validate(&fr->fs.start, msg, sizeof msg) != ADH_SUCCESS) {
+        cli_options_core_words(cfg, &cfg->spec, CLI_ADVICE_FIT, msg, why, whylen);
         return -1;
+    }
     fr->fs.offset = cli->fit.offset;
     fr->fs.baseline = cli->fit.baseline;
     fr->fs.cancel = cli_interrupt_flag();

@@ -211,6 +211,16 @@ void cli_options_words(const adh_config *cfg, const char *sentence, char *out, s
     adh_config_reword(sentence, say_flag, &v, out, len);
 }
 
+void cli_options_core_words(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, const char *sentence,
+                            char *out, size_t len)
+{
+    char keyed[1200];
+    const char *key = adh_config_key_opening(cfg, run, sentence, keyed, sizeof keyed);
+    if (key && who == CLI_ADVICE_COST && (!strcmp(key, "grid.nodes") || !strcmp(key, "solver.eps")))
+        snprintf(keyed, sizeof keyed, "%s", sentence);
+    cli_options_words(cfg, keyed, out, len);
+}
+
 /* strtok would pass over an empty element ("1pm,,2pm"): refuse it. */
 static int empty_element(const char *name, const char *arg, char *why, size_t n)
 {
@@ -818,7 +828,7 @@ static int validate_grid(const adh_config *cfg, const adh_run_spec *run, cli_adv
     const adh_grid_spec *u = &run->grid.use;
     char msg[1024];
     if (adh_config_grid_check(run, msg, sizeof msg) != 0) {
-        cli_options_words(cfg, msg, why, whylen);
+        cli_options_core_words(cfg, run, who, msg, why, whylen);
         return 2;
     }
     /* a uniform grid is checked from its description; a graded one is built */
@@ -830,10 +840,11 @@ static int validate_grid(const adh_config *cfg, const adh_run_spec *run, cli_adv
         return 2;
     }
     unsigned fix;
-    int rc = adh_drive_check(&run->mat, &run->relax, &run->proto, adh_config_grid_use(run), g, why, whylen, &fix);
+    int rc = adh_drive_check(&run->mat, &run->relax, &run->proto, adh_config_grid_use(run), g, msg, sizeof msg, &fix);
     if (g != &uniform)
         adh_grid_free(g);
     if (rc != ADH_SUCCESS) {
+        cli_options_core_words(cfg, run, who, msg, why, whylen);
         cli_advice_append_cfg(cfg, who, why, whylen, fix);
         return 2;
     }
@@ -858,8 +869,10 @@ static int validate_grid(const adh_config *cfg, const adh_run_spec *run, cli_adv
 static int rigid_check(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen)
 {
     unsigned fix;
-    if (adh_drive_check(&run->mat, &run->relax, &run->proto, ADH_GRID_RELAX, NULL, why, whylen, &fix) == ADH_SUCCESS)
+    char msg[1024];
+    if (adh_drive_check(&run->mat, &run->relax, &run->proto, ADH_GRID_RELAX, NULL, msg, sizeof msg, &fix) == ADH_SUCCESS)
         return 0;
+    cli_options_core_words(cfg, run, who, msg, why, whylen);
     cli_advice_append_cfg(cfg, who, why, whylen, fix);
     return 2;
 }
@@ -868,12 +881,11 @@ static int validate_run(const adh_config *cfg, const adh_run_spec *run, cli_advi
 {
     /* the material first (adh_drive_check meets it again): a graded grid is
      * built from it below */
-    if (adh_material_validate(&run->mat, why, whylen) != ADH_SUCCESS ||
-        adh_relax_settings_validate(&run->relax, why, whylen) != ADH_SUCCESS)
-        return 2;
     char msg[1024];
-    if (adh_config_time_check(cfg, run, msg, sizeof msg) != 0) {   /* the material, drive and mode fit */
-        cli_options_words(cfg, msg, why, whylen);
+    if (adh_material_validate(&run->mat, msg, sizeof msg) != ADH_SUCCESS ||
+        adh_relax_settings_validate(&run->relax, msg, sizeof msg) != ADH_SUCCESS ||
+        adh_config_time_check(cfg, run, msg, sizeof msg) != 0) {   /* the material, drive and mode fit */
+        cli_options_core_words(cfg, run, who, msg, why, whylen);
         return 2;
     }
     const adh_output_options *o = &cfg->output;

@@ -65,6 +65,13 @@ void cli_options_usage(FILE *out);
  * nobody set in the scene's words when the sentence's keys came from the
  * scene alone, else as a flag. */
 void cli_options_words(const adh_config *cfg, const char *sentence, char *out, size_t len);
+/* A core check's sentence about run of cfg in those words: its opening
+ * setting as it was given (adh_config_key_opening: --start=400pm, or
+ * start = 400pm (a.scene:6), where the core wrote start = 400 pm), and any
+ * key it names. For who CLI_ADVICE_COST N and eps keep the core's words:
+ * --cost takes them from --cost-nodes and --cost-eps, not the keys. */
+void cli_options_core_words(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, const char *sentence,
+                            char *out, size_t len);
 
 /* Checks the whole configuration before anything runs. 0 or 2 with why. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen);

@@ -221,6 +221,17 @@ int adh_config_set(adh_config *c, const char *key, const char *text, char *why, 
  * named. out receives the sentence reworded. */
 typedef void (*adh_config_say)(const char *key, const char *value, char *buf, size_t len, void *ctx);
 void adh_config_reword(const char *in, adh_config_say say, void *ctx, char *out, size_t len);
+/* A core check's sentence in run of c (the core names quantities, never a
+ * flag) that opens with a setting's quantity and value ("start = 400 pm is
+ * not allowed", "E (modulus) = 0 Pa is out of range", "N = 5 nodes is not
+ * allowed") opened with the key and the value as typed instead
+ * ("protocol.start = 400pm is not allowed"), for adh_config_reword: out
+ * receives it, and the key is returned (keyed.c lists every opening).
+ * NULL and in as it was when it opens otherwise, when nobody set the key
+ * (its default is no setting of the user's), or when the value it names
+ * is not the key's (one the core derived: a uniform grid's radius). */
+const char *adh_config_key_opening(const adh_config *c, const adh_run_spec *run, const char *in, char *out,
+                                   size_t len);
 /* key's value as text that adh_config_set reads back to the same value
  * (numbers in SI, exactly; "auto", "none", lists by commas). 0, or -1 for
  * no such key. */
@@ -411,7 +422,8 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
  * (a sweep's run named) and *fix the settings that get past it, for the
  * driver's words (timestart.c). keyed: the sentence names the start as the
  * configuration's sentences name a key ("protocol.start = 400pm is not
- * allowed", for adh_config_reword); else as a quantity ("start = 400 pm"). */
+ * allowed", for adh_config_reword: adh_config_key_opening); else as a
+ * quantity ("start = 400 pm"). */
 int adh_config_start_check(const adh_config *cfg, int keyed, char *why, size_t whylen, unsigned *fix);
 /* The same on the grid and kernel kept in kp (adh_config_kept), left
  * there for the next call, the start as a quantity (the screen's words):

@@ -6,12 +6,10 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 #include "adhere/kernel.h"
 #include "adhere/rule_visco.h"
 #include "adhere/status.h"
-#include "adhere/units.h"
 #include "adhere/visco.h"
 
 /* A solid's start on the grid and kernel kept in kp (built there when
@@ -29,23 +27,8 @@ static int start_check(const adh_run_spec *spec, adh_config_kept *kp, char *why,
     return adh_visco_start_check(kp->g, kp->k, &spec->mat, &vs.sls, &vs.drive, &spec->proto, why, whylen, fix);
 }
 
-/* The core's sentence names the start as a quantity ("start = 400 pm is
- * not allowed"): keyed, as the configuration's sentences name a key
- * ("protocol.start = 400pm is not allowed"), which a driver says in its
- * own words (the flag, or the scene's key and line). */
-static void key_start(const adh_run_spec *run, char *msg, size_t len)
-{
-    char head[96], keyed[1024];
-    int n = snprintf(head, sizeof head, "start = %s is not allowed", adh_qtext(run->proto.start, ADH_Q_LENGTH).s);
-    if (n <= 0 || strncmp(msg, head, (size_t)n) != 0)
-        return;
-    snprintf(keyed, sizeof keyed, "protocol.start = %s is not allowed%s",
-             adh_qtext_arg(run->proto.start, ADH_Q_LENGTH).s, msg + n);
-    snprintf(msg, len, "%s", keyed);
-}
-
 /* Each run's start on the grid and kernel kept in kp; keyed: the refusal
- * names the start as a key (key_start). */
+ * names the start as a key (adh_config_key_opening). */
 static int check(const adh_config *cfg, adh_config_kept *kp, int keyed, char *why, size_t whylen, unsigned *fix)
 {
     size_t n = cfg->sweep.naxes ? adh_config_nruns(cfg) : 1;
@@ -64,14 +47,15 @@ static int check(const adh_config *cfg, adh_config_kept *kp, int keyed, char *wh
         used = 1;
         if ((rc = start_check(&run, kp, msg, sizeof msg, fix)) == ADH_SUCCESS)
             continue;
-        if (keyed)
-            key_start(&run, msg, sizeof msg);
+        char said[1024];
+        if (!keyed || !adh_config_key_opening(cfg, &run, msg, said, sizeof said))
+            snprintf(said, sizeof said, "%s", msg);
         if (!cfg->sweep.naxes) {
-            snprintf(why, whylen, "%s", msg);
+            snprintf(why, whylen, "%s", said);
             break;
         }
         adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
-        snprintf(why, whylen, "sweep run %zu (%s): %s", i + 1, which, msg);
+        snprintf(why, whylen, "sweep run %zu (%s): %s", i + 1, which, said);
     }
     if (!used)   /* nothing to check now: no kernel held for nothing */
         adh_config_kept_drop(kp);

@@ -18,11 +18,13 @@ bad() { # bad "expected text" args...
     fi
 }
 
-bad "E (modulus) = 0 Pa is out of range" -E 0
-bad "E (modulus) = -1 GPa is out of range: allowed 1 kPa to 10 TPa" -E -1GPa
-bad "A (Hamaker constant) = 0 J is out of range" -A 0
-bad "z0 (equilibrium separation) = -500 pm is out of range: allowed 1 pm to 100 nm" --z0=-0.5nm
-bad "R (effective radius) = 0 nm is out of range" -R 0
+# the core's sentence names a quantity ("E (modulus) = 0 Pa"): the CLI opens
+# it with the setting as it was given, a flag by the flag with its value
+bad "^adhere: --modulus=0Pa is out of range: allowed 1 kPa to 10 TPa$" -E 0
+bad "^adhere: --modulus=-1GPa is out of range: allowed 1 kPa to 10 TPa$" -E -1GPa
+bad "^adhere: --hamaker=0J is out of range" -A 0
+bad "^adhere: --z0=-500pm is out of range: allowed 1 pm to 100 nm$" --z0=-0.5nm
+bad "^adhere: --radius=0nm is out of range" -R 0
 # the limits themselves are allowed as the refusal writes them: -z 100nm
 # (100 x 1e-9 rounds to 1.0000000000000001e-7) was refused with 'allowed 1
 # pm to 100 nm'; it now gets as far as R's own check
@@ -74,11 +76,11 @@ bad "grid radius Rmax = 3.013 um is not << R = 10 um: at most 0.3 R = 3 um is al
     -R 10um --grid=graded --kernel=ring --grid-radius=3um
 bad "material.E swept twice (--sweep=E=... and --sweep=material.E=...): give its values once" --sweep=E=1GPa,2GPa --sweep=material.E=3GPa
 bad "sigma swept twice (--sweep=sigma=... and --sweep=sigma=...)" --sweep=sigma=1,2 --sweep=sigma=3
-bad "eps = 0 nm is not allowed" --eps=0
+bad "^adhere: --eps=0nm is not allowed" --eps=0
 bad "--mixing: 'fast' is not a mixing rule: use paper or momentum" --mixing=fast
 bad "--momentum: '1' is not allowed: a number from 0 to below 1" --momentum=1
 bad "--momentum: 'x' is not allowed" --momentum=x
-bad "eps = -1 pm is not allowed" --eps=-1pm
+bad "^adhere: --eps=-1pm is not allowed" --eps=-1pm
 bad "'paperish' is not a kernel" --kernel=paperish
 bad "--grid: 'graded2' is not a grid: use uniform or graded" --grid=graded2
 bad "--grid=graded is not allowed with --kernel=paper" --grid=graded
@@ -86,7 +88,7 @@ bad "--growth: '1.2' is not allowed: use a ratio from 1 to 1.1" --grid=graded --
 bad "--growth: 'x' is not allowed" --growth=x
 bad "fine band radius .* too short.*; use a larger fine band (--fine-band)$" --grid=graded --kernel=ring --fine-band=100nm
 bad "grid radius Rmax = .* is too short" --grid=graded --kernel=ring --grid-radius=200nm
-bad "grid radius 600 nm is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
+bad "^adhere: --grid-radius=600nm is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
 bad "--growth: '0.9' is not allowed: use a ratio from 1 to 1.1" --growth=0.9
 bad "--fine-band: '-1nm' is not allowed: use a length above 0" --fine-band=-1nm
 bad "--grid-radius: '0' is not allowed: use a length above 0" --grid-radius=0
@@ -98,8 +100,8 @@ bad "'1e-300pm' underflows (a double keeps no magnitude below 2.2e-308 m)" --sta
 # a number below a double's range before its unit but not after: the
 # modulus's own range, not the double's least magnitude (1e-301 Pa is far
 # above 2.2e-308 Pa, the limit the refusal named)
-bad "^adhere: E (modulus) = 1e-301 Pa is out of range: allowed 1 kPa to 10 TPa$" -E 1e-310GPa
-bad "step d = 0 nm is not allowed" --step=0
+bad "^adhere: --modulus=1e-301Pa is out of range: allowed 1 kPa to 10 TPa$" -E 1e-310GPa
+bad "^adhere: --step=0nm is not allowed" --step=0
 bad "more than one scene" fig1 fig2
 # the core names quantities, the CLI adds its flags
 bad "(the default turn) is too deep.*; give a shallower turn or a larger R (--turn, -R)$" -R 100nm
@@ -107,6 +109,30 @@ bad "beyond this program's budget.*; use a stiffer material.*run it anyway (-N, 
 bad "a resolved static curve.*; use the relaxation.*run it anyway (--mode, -N, --spacing, --force)$" -E 20MPa --mode=static
 bad "at most 2e6 are allowed; take a larger step (-d)$" -d 0.01pm
 bad "no scene named 'nosuchscene'" nosuchscene
+# Every core sentence that opens with a setting's quantity and value (the
+# material's, the protocol's, the solver's, the grid's) opens with the
+# setting as it was given: a scene's key with its file and line, a swept
+# one by its sweep; they said 'E (modulus) = 1e+20 Pa', 'step d = 100 nm',
+# 'grid radius 600 nm' to users who never wrote those words
+printf '# hard\n[material]\nE = 1e20\n' >"$TMP/e20.scene"
+bad "^adhere: E = 1e+20Pa ($TMP/e20.scene:3) is out of range: allowed 1 kPa to 10 TPa$" "$TMP/e20.scene"
+printf '[protocol]\nstep = 100nm\n' >"$TMP/step.scene"
+bad "^adhere: step = 100nm ($TMP/step.scene:2) is not allowed: it must be from 0.01 pm to 10 nm$" "$TMP/step.scene"
+bad "^adhere: --step=100nm is not allowed: it must be from 0.01 pm to 10 nm$" -d 100nm
+printf '[solver]\neps = 2um\n' >"$TMP/eps.scene"
+bad "^adhere: eps = 2um ($TMP/eps.scene:2) is not allowed" "$TMP/eps.scene"
+bad "^adhere: --eps=1e-30m is below what double precision can reach" --eps=1e-30
+printf '[grid]\ngrid = graded\nkernel = ring\nfine_band = 800nm\nradius = 600nm\n' >"$TMP/rings.scene"
+bad "^adhere: radius = 600nm ($TMP/rings.scene:5) is not allowed: it must be at least the fine band's 800 nm$" "$TMP/rings.scene"
+bad "^adhere: sweep run 2 (step = 1e-07): --sweep=step=100nm is not allowed" --sweep=step=1nm,100nm
+printf '[sweep]\nstep = 1nm, 100nm\n' >"$TMP/sweepstep.scene"
+bad "^adhere: sweep run 2 (step = 1e-07): step = 100nm ($TMP/sweepstep.scene:2) is not allowed" "$TMP/sweepstep.scene"
+bad "^adhere: --radius=10um is too small for this model: .* over 0.045 (-R)$" -z 100nm -R 10um
+# what nobody set stays the core's quantity (no flag to name)
+bad "^adhere: R = 10 um is too small for this model: .* (-R)$" -z 100nm
+# --cost's eps is --cost-eps', not the scene's eps beside it
+bad "^adhere: --cost: N = 100, eps = 1e-30 m: eps = 1e-30 m is below what double precision can reach" \
+    --cost --cost-nodes=100 --cost-eps=1e-30 "$TMP/eps.scene"
 
 # Messages that name the real limit (issue 24, item 7): a radius past 0.3 R
 # is not the node budget; a NUL byte and a number below a double's range in
@@ -167,12 +193,12 @@ bad "^adhere: turns = -5 m is out of range; did you mean --turn=-5nm? (a bare nu
 bad "turns = -5 m, -2 m is out of range; did you mean --turn=-5nm,-2nm?" --turn=-5,-2
 bad "eps = 1 m is out of range; did you mean --eps=1pm?" --eps=1
 bad "z0 = 500 mm is out of range; did you mean --z0=0.5nm?" -z 0.5
-bad "E = 1 Pa is out of range; did you mean --modulus=1GPa? (a bare number is in SI units: E (modulus) = 1 Pa is out of range: allowed 1 kPa to 10 TPa)" -E 1
+bad "E = 1 Pa is out of range; did you mean --modulus=1GPa? (a bare number is in SI units: --modulus=1Pa is out of range: allowed 1 kPa to 10 TPa)" -E 1
 printf '[material]\nE = 300\n' >"$TMP/e300.scene"
 bad "E = 300 Pa is out of range; did you mean E = 300GPa or E = 300MPa in $TMP/e300.scene?" "$TMP/e300.scene"
-bad "^adhere: grid spacing 2 m is too coarse" --spacing=2
+bad "^adhere: --spacing=2m is too coarse" --spacing=2
 check "... and a bare number no unit rescues gets no hint" sh -c "! grep -q 'did you mean' '$TMP/stderr'"
-bad "^adhere: E (modulus) = 300 Pa is out of range" -E 300Pa
+bad "^adhere: --modulus=300Pa is out of range" -E 300Pa
 check "... nor one given with its unit" sh -c "! grep -q 'did you mean' '$TMP/stderr'"
 # Names (issue 28, item 6): the scene key's name is a flag too; a mistyped
 # one gets the flag, by a short option's letter or a key's name

@@ -110,11 +110,11 @@ rc=$?
 check "the same start from a scene: exit 2, the scene's R named, not -R ($rc: $(cat "$TMP/e22"))" \
     sh -c "[ $rc -eq 2 ] && grep -q 'beyond 0.3 R = 150 nm.*(R at $TMP/deep.scene:2; the turn is the fit.s, a step below the deepest position in --data)\$' '$TMP/e22' && ! grep -q -- ' (-R' '$TMP/e22' && [ ! -e '$TMP/deepfit' ]"
 # a start with no adhesion (A = 0) is refused as a run's material is, with
-# A's range (it was 'inf times the JKR pull-off')
+# A's range (it was 'inf times the JKR pull-off'), -A by its flag
 "$ADHERE" fit --data="$DATA" -A 0 -o "$TMP/a0fit" fig1 >/dev/null 2>"$TMP/e16"
 rc=$?
 check "-A 0 as a fit's start: exit 2, A's range, no ratio, nothing written ($rc: $(cat "$TMP/e16"))" \
-    sh -c "[ $rc -eq 2 ] && grep -qxF 'adhere: A (Hamaker constant) = 0 J is out of range: allowed 1e-24 J to 1e-15 J' '$TMP/e16' && [ ! -e '$TMP/a0fit' ]"
+    sh -c "[ $rc -eq 2 ] && grep -qxF 'adhere: --hamaker=0J is out of range: allowed 1e-24 J to 1e-15 J' '$TMP/e16' && [ ! -e '$TMP/a0fit' ]"
 # E, A and R free together: the force is gamma R times a function of h0/z0
 # and sigma, so one direction of the three changes nothing; the fit said
 # 'result: fit' (exit 0) with R 7.96 um +- 3.6 % on this curve (made with

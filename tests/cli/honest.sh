@@ -33,7 +33,7 @@ refused() { # refused "expected text" args...: exit 2, one message with the text
         not_ok "$* -> exit $rc (want 2 and '$want'): $(head -c 300 "$TMP/err")"
     fi
 }
-refused "eps = 1e-30 m is below what double precision can reach.*smallest eps allowed here is [0-9.e-]* m" \
+refused "^adhere: --eps=1e-30m is below what double precision can reach.*smallest eps allowed here is [0-9.e-]* m" \
     "$ADHERE" --batch -q --eps=1e-30 -o "$TMP/e30"
 check "and nothing was written" [ ! -e "$TMP/e30/force.tsv" ]
 
