@@ -1,5 +1,6 @@
 #include "cli/advice.h"
 
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -39,8 +40,9 @@ static int from_scene(int origin)
 }
 
 /* Whether the keys of bits that were set were set by the scene alone
- * (some were, no flag did). */
-static int scene_voice(const adh_config *cfg, unsigned bits)
+ * (some were, no flag did); when none was, placed: whether the sentence
+ * the list follows placed a key in the scene (spacing = 2m (a.scene:3)). */
+static int scene_voice(const adh_config *cfg, unsigned bits, int placed)
 {
     int scene = 0, flag = 0;
     for (size_t i = 0; cfg && i < NFLAGS; i++)
@@ -49,7 +51,7 @@ static int scene_voice(const adh_config *cfg, unsigned bits)
             scene |= from_scene(from);
             flag |= from == 0;
         }
-    return scene && !flag;
+    return scene ? !flag : !flag && placed;
 }
 
 /* The i-th key as the scene says it (its name in its section), when the
@@ -84,7 +86,7 @@ void cli_advice_key(const adh_config *cfg, unsigned voice_bits, unsigned bit, co
         return;
     }
     int origin;
-    const char *word = scene_word(cfg, i, scene_voice(cfg, voice_bits), &origin);
+    const char *word = scene_word(cfg, i, scene_voice(cfg, voice_bits, 0), &origin);
     if (!word) {
         flag_word(cfg, i, value, buf, len);
         return;
@@ -98,15 +100,42 @@ void cli_advice_key(const adh_config *cfg, unsigned voice_bits, unsigned bit, co
     }
 }
 
-/* The list's word for the i-th key: the flag, or the scene's key with
- * where it was written ("nodes at a.scene:3", "spacing at line 4"). */
-static void list_word(const adh_config *cfg, size_t i, int voice, int *file_named, char *buf, size_t len)
+/* Whether sentence names where the scene's line (0: the scene itself) is,
+ * as cli_options_words writes it: "(a.scene:6)", "(line 6)", "(a.scene)". */
+static int names_place(const char *sentence, const char *scene, int line)
+{
+    char place[PATH_MAX + 32];
+    if (line > 0) {
+        snprintf(place, sizeof place, "(line %d)", line);
+        if (strstr(sentence, place))
+            return 1;
+        snprintf(place, sizeof place, "(%s:%d)", scene, line);
+    } else {
+        snprintf(place, sizeof place, "(%s)", scene);
+    }
+    return strstr(sentence, place) != NULL;
+}
+
+/* Whether sentence names the scene's file, at any line. */
+static int names_file(const char *sentence, const char *scene)
+{
+    char place[PATH_MAX + 8];
+    snprintf(place, sizeof place, "(%s:", scene);
+    return strstr(sentence, place) != NULL || names_place(sentence, scene, 0);
+}
+
+/* The list's word for the i-th key after sentence: the flag, or the
+ * scene's key with where it was written ("nodes at a.scene:3", "spacing
+ * at line 4"), or its name alone where the sentence says where ("start",
+ * after "start = 400pm (a.scene:6)": a scene's key is one a line). */
+static void list_word(const adh_config *cfg, size_t i, int voice, const char *sentence, int *file_named, char *buf,
+                      size_t len)
 {
     int origin;
     const char *word = scene_word(cfg, i, voice, &origin);
     if (!word)
         flag_word(cfg, i, NULL, buf, len);
-    else if (!from_scene(origin) || !cfg->scene[0])
+    else if (!from_scene(origin) || !cfg->scene[0] || names_place(sentence, cfg->scene, origin > 0 ? origin : 0))
         snprintf(buf, len, "%s", word);
     else if (origin > 0 && *file_named)
         snprintf(buf, len, "%s at line %d", word, origin);
@@ -124,10 +153,16 @@ void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why,
     /* a fit sets its one turn itself, below the data: --turn would be
      * overwritten, and is no advice */
     unsigned turn = who == CLI_ADVICE_FIT ? fix & ADH_FIX_TURNS : 0;
-    int voice = scene_voice(cfg, fix & ~turn), file_named = 0;
+    /* --cost's N is each of --cost-nodes (-N is refused beside it) */
+    unsigned nodes = who == CLI_ADVICE_COST ? fix & ADH_FIX_NODES : 0;
+    int file_named = cfg && cfg->scene[0] && names_file(why, cfg->scene);
+    int voice = scene_voice(cfg, fix & ~turn & ~nodes, file_named);
     for (size_t i = 0; i < NFLAGS; i++)
         if ((fix & ~turn) & keys[i].bit) {
-            list_word(cfg, i, voice, &file_named, word, sizeof word);
+            if (keys[i].bit & nodes)
+                snprintf(word, sizeof word, "--cost-nodes");
+            else
+                list_word(cfg, i, voice, why, &file_named, word, sizeof word);
             add(list, sizeof list, &n, ", ", word);
         }
     if (turn)

@@ -16,12 +16,15 @@ typedef enum { CLI_ADVICE_RUN, CLI_ADVICE_FIT, CLI_ADVICE_COST } cli_advice_for;
 /* Appends the settings of the bits in fix to the sentence in why, as
  * " (--turn, -R)"; nothing for 0 (or when they do not fit). For who (a
  * fit's turn is named as its data's: " (-R; the turn
- * is the fit's, a step below the deepest position in --data)"), in the
- * words each key was given in (cfg NULL: the flags): a key the scene set
- * by its name, where it was written ("nodes at a.scene:3, spacing at line
- * 4"), a flag's by the flag; a key nobody set in the scene's words when
- * the keys the list names that were set are the scene's alone, else as a
- * flag (as cli_options_words says a sentence). */
+ * is the fit's, a step below the deepest position in --data)"; a --cost
+ * run's N as --cost-nodes), in the words each key was given in (cfg NULL:
+ * the flags): a key the scene set by its name, where it was written
+ * ("nodes at a.scene:3, spacing at line 4"; the file once, with what the
+ * sentence in why names: a key it names with its file and line by its
+ * name alone), a flag's by the flag; a key nobody set in the scene's
+ * words when the keys the list names that were set are the scene's
+ * alone (or none was, and the sentence placed a key in the scene), else
+ * as a flag (as cli_options_words says a sentence). */
 void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen, unsigned fix);
 /* The key of one ADH_FIX_* bit in a sentence, with value (NULL: none), in
  * the voice of voice_bits: "--spacing=1.5nm", or "spacing = 1.5nm

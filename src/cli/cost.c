@@ -162,7 +162,7 @@ static void *worker(void *arg)
             cr->fault = !adh_run_touched(&run, d.h_star, w, sizeof w) ? 1 : !adh_run_separated(&run, w, sizeof w) ? 2 : 0;
         }
         if (cr->status != ADH_CONTINUE && cr->status == run.status)
-            cli_tables_stop_reason(job->cfg, &run, cr->reason, sizeof cr->reason);
+            cli_tables_stop_reason_for(job->cfg, CLI_ADVICE_COST, &run, cr->reason, sizeof cr->reason);
         adh_run_free(&run);
         adh_kernel_free(k);
         adh_grid_free(g);
@@ -575,7 +575,7 @@ static int cost_make_runs(const cli_options *cli, cost_run **out, size_t *nout, 
             c.spec.grid.use.spacing = cost_spacing(cfg->spec.grid.use.spacing, nodes[a], *base);
             c.spec.relax.eps = eps[e];
             c.spec.grid.force = 1; /* coarse grids are what the report measures */
-            /* its N and eps are the lists', not the keys' */
+            /* its N and eps are the lists', not the keys' (the advice names --cost-nodes) */
             if (cli_options_validate_for(&c, CLI_ADVICE_COST, why, sizeof why) != 0) {
                 adh_sayf("--cost: N = %zu, eps = %s: %s", nodes[a], adh_qtext(eps[e], ADH_Q_LENGTH).s, why);
                 return CLI_EXIT_USAGE;

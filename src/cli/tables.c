@@ -115,11 +115,12 @@ const char *cli_tables_summary_word(const cli_tables *t)
     return !strcmp(word, "success") && t->unwritten && *t->unwritten ? "output incomplete" : word;
 }
 
-const char *cli_tables_reason(const adh_config *cfg, const char *why, unsigned fix, char *buf, size_t len)
+static const char *reason_for(const adh_config *cfg, cli_advice_for who, const char *why, unsigned fix, char *buf,
+                              size_t len)
 {
     snprintf(buf, len, "%s", why);
     if (buf[0])   /* in the words each key was given in: a scene's by its key and line */
-        cli_advice_append_cfg(cfg, CLI_ADVICE_RUN, buf, len, fix);
+        cli_advice_append_cfg(cfg, who, buf, len, fix);
     /* after the advice: a scene's name may hold a tab or a newline too */
     for (char *p = buf; *p; p++)
         if ((unsigned char)*p < 0x20 || *p == 0x7f)
@@ -127,12 +128,23 @@ const char *cli_tables_reason(const adh_config *cfg, const char *why, unsigned f
     return buf;
 }
 
-const char *cli_tables_stop_reason(const adh_config *cfg, const adh_run *r, char *buf, size_t len)
+const char *cli_tables_reason(const adh_config *cfg, const char *why, unsigned fix, char *buf, size_t len)
+{
+    return reason_for(cfg, CLI_ADVICE_RUN, why, fix, buf, len);
+}
+
+const char *cli_tables_stop_reason_for(const adh_config *cfg, cli_advice_for who, const adh_run *r, char *buf,
+                                       size_t len)
 {
     buf[0] = '\0';
     if (r->interrupted || r->status == ADH_SUCCESS || !r->why[0])
         return buf;
-    return cli_tables_reason(cfg, r->why, r->fix, buf, len);
+    return reason_for(cfg, who, r->why, r->fix, buf, len);
+}
+
+const char *cli_tables_stop_reason(const adh_config *cfg, const adh_run *r, char *buf, size_t len)
+{
+    return cli_tables_stop_reason_for(cfg, CLI_ADVICE_RUN, r, buf, len);
 }
 
 const char *cli_tables_stopped(const adh_config *cfg, const adh_run *r, int status, char *buf, size_t len)

@@ -10,6 +10,7 @@
 #include "adhere/cycle.h"
 #include "adhere/protocol.h"
 #include "adhere/static.h"
+#include "cli/advice.h"
 #include "scene/config.h"
 
 typedef struct cli_tables_extra {
@@ -55,6 +56,10 @@ const char *cli_tables_summary_word(const cli_tables *t);
  * control bytes as spaces; "" for a run that finished or was interrupted.
  * Written to buf (CLI_TABLES_REASON_LEN holds it whole), which is returned. */
 const char *cli_tables_stop_reason(const adh_config *cfg, const adh_run *r, char *buf, size_t len);
+/* The same with the advice for who (cli_advice_for: a --cost run's N is
+ * --cost-nodes'). */
+const char *cli_tables_stop_reason_for(const adh_config *cfg, cli_advice_for who, const adh_run *r, char *buf,
+                                       size_t len);
 /* "STATUS: REASON" for run r that stopped with status (adh_strerror's
  * word, then cli_tables_stop_reason's, when it has one), in buf
  * (CLI_TABLES_STOPPED_LEN holds both whole), which is returned. */

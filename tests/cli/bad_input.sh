@@ -127,10 +127,27 @@ bad "^adhere: radius = 600nm ($TMP/rings.scene:5) is not allowed: it must be at 
 bad "^adhere: sweep run 2 (step = 1e-07): --sweep=step=100nm is not allowed" --sweep=step=1nm,100nm
 printf '[sweep]\nstep = 1nm, 100nm\n' >"$TMP/sweepstep.scene"
 bad "^adhere: sweep run 2 (step = 1e-07): step = 100nm ($TMP/sweepstep.scene:2) is not allowed" "$TMP/sweepstep.scene"
+# ... the advice after it says the file once: a key the sentence placed
+# by its name alone ('(R at r.scene:3)' repeated what it had just said)
+printf '[material]\nz0 = 100nm\nR = 10um\n' >"$TMP/r10.scene"
+bad "^adhere: R = 10um ($TMP/r10.scene:3) is too small for this model: .* over 0.045 (R)$" "$TMP/r10.scene"
 bad "^adhere: --radius=10um is too small for this model: .* over 0.045 (-R)$" -z 100nm -R 10um
-# what nobody set stays the core's quantity (no flag to name)
+# ... a key nobody set in the scene's words after a sentence that placed
+# one in the scene (it said '(-N)' to a user of the scene alone)
+printf '# coarse\n[grid]\nspacing = 2\n' >"$TMP/sp2.scene"
+bad "^adhere: spacing = 2m ($TMP/sp2.scene:3) is too coarse: .*; use more nodes (nodes)$" "$TMP/sp2.scene"
+# ... and what nobody set stays the core's quantity (no flag to name)
 bad "^adhere: R = 10 um is too small for this model: .* (-R)$" -z 100nm
-# --cost's eps is --cost-eps', not the scene's eps beside it
+# --cost's N is each of --cost-nodes: its advice names that, not -N (which
+# --cost refuses) nor a scene's nodes; the spacing it scales is --spacing's
+bad "^adhere: --cost: N = 20, eps = 1 pm: grid spacing 75 nm is too coarse: .*; use more nodes (--cost-nodes)$" \
+    --cost --cost-nodes=20 --cost-eps=1pm
+bad "^adhere: --cost: N = 20, eps = 1 pm: grid radius Rmax = 100 nm is too short: .* (--cost-nodes, --spacing)$" \
+    --cost --cost-nodes=20 --cost-eps=1pm --spacing=5nm
+printf '[grid]\nspacing = 5nm\n' >"$TMP/costsp.scene"
+bad "^adhere: --cost: N = 20, eps = 1 pm: grid radius Rmax = 100 nm is too short: .* (--cost-nodes, spacing at $TMP/costsp.scene:2)$" \
+    --cost --cost-nodes=20 --cost-eps=1pm "$TMP/costsp.scene"
+# ... and its eps is --cost-eps', not the scene's eps beside it
 bad "^adhere: --cost: N = 100, eps = 1e-30 m: eps = 1e-30 m is below what double precision can reach" \
     --cost --cost-nodes=100 --cost-eps=1e-30 "$TMP/eps.scene"
 

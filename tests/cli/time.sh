@@ -434,15 +434,17 @@ bad "^adhere: --start=300pm is not allowed: a standard linear solid starts relax
 bad "^adhere: --start=400pm is not allowed: .* there at rest its smallest gap is [0-9.]* pm; the nearest start that is, to within the step 50 pm: [0-9.]* pm (--start)" \
     --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200
 # a scene's start is named as the scene wrote it, its key with file and
-# line (the advice said --start, a flag the scene's user never gave)
+# line (the advice said --start, a flag the scene's user never gave), and
+# the advice names it once placed by its key alone (it said '(start at
+# start.scene:6)' after 'start = 400pm (start.scene:6)')
 printf '[material]\nmaterial = sls\nE0 = 0.5TPa\nEinf = 1TPa\n[protocol]\nstart = 0.4nm\nturns = -2nm\n[grid]\nnodes = 200\n' >"$TMP/start.scene"
-bad "^adhere: start = 400pm ($TMP/start.scene:6) is not allowed: .*: [0-9.]* pm (start at $TMP/start.scene:6)$" "$TMP/start.scene"
+bad "^adhere: start = 400pm ($TMP/start.scene:6) is not allowed: .*: [0-9.]* pm (start)$" "$TMP/start.scene"
 bad "^adhere: sweep run 1 (E0 = 5e+11): --start=400pm is not allowed" \
     --material=sls --E0=0.5TPa --Einf=1TPa --start=0.4nm --turn=-2nm -N 200 --sweep=E0=0.5TPa,0.6TPa
 bad "^adhere: sweep run 1 (start = 4e-10): --sweep=start=400pm is not allowed: .* (--sweep=start)$" \
     --material=sls --E0=0.5TPa --Einf=1TPa --turn=-2nm -N 200 --sweep=start=0.4nm,0.6nm
 printf '[sweep]\nstart = 0.4nm, 0.6nm\n' >>"$TMP/start.scene"
-bad "^adhere: sweep run 1 (start = 4e-10): start = 400pm ($TMP/start.scene:11) is not allowed: .* (start at $TMP/start.scene:11)$" \
+bad "^adhere: sweep run 1 (start = 4e-10): start = 400pm ($TMP/start.scene:11) is not allowed: .* (start)$" \
     "$TMP/start.scene"
 "$ADHERE" --batch -q --no-plot --material=sls --E0=0.5TPa --Einf=1TPa --start=0.6nm --turn=-2nm -N 200 -o "$TMP/tkeep" 2>"$TMP/err"
 rc=$?

@@ -79,6 +79,22 @@ int main(void)
     rr.fix = ADH_FIX_RADIUS;
     reason_is(&swept, &rr, " (--sweep=R)", "R swept by --sweep=R=...");
 
+    /* a --cost run's N is one of --cost-nodes: cost.tsv's reason names
+     * that (it said -N, or a scene's nodes, neither of which --cost reads);
+     * the spacing it scales is the configuration's */
+    char cost[CLI_TABLES_REASON_LEN];
+    adh_config plain;
+    adh_config_default(&plain);
+    cli_tables_stop_reason_for(&plain, CLI_ADVICE_COST, &r, cost, sizeof cost);
+    ok(!strcmp(cost, EDGE " (--cost-nodes, --spacing)"), "a --cost run's reason: --cost-nodes (%s)", cost);
+    adh_config costsp;
+    adh_config_default(&costsp);
+    rc = adh_scene_parse_string("[grid]\nspacing = 5nm\n", "a.scene", &costsp, why, sizeof why);
+    snprintf(costsp.scene, sizeof costsp.scene, "a.scene");
+    cli_tables_stop_reason_for(&costsp, CLI_ADVICE_COST, &r, cost, sizeof cost);
+    ok(rc == 0 && !strcmp(cost, EDGE " (--cost-nodes, spacing at a.scene:2)"),
+       "... and the scene's spacing beside it (%s)", cost);
+
     /* summary.tsv's stop_reason line: the scene's words */
     char line[4096];
     summary_reason(&scene, &r, line, sizeof line);
