@@ -151,11 +151,11 @@ TEST_LD := $(shell $(CC) -fuse-ld=gold -Wl,--version 2>/dev/null | grep -q gold 
 
 $(BUILD)/tests/%: tests/unit/%.c tests/unit/tap.h $(wildcard tests/unit/*.h) $(LIBS) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) $(TEST_LD) -o $@ $< $(LIBS) $(PKG_LIBS)
+	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) $(TEST_OPT) $(TEST_LD) -o $@ $< $(LIBS) $(PKG_LIBS)
 
 $(BUILD)/tests/hard-%: tests/hard/%.c tests/unit/tap.h $(LIBS) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) $(TEST_LD) -o $@ $< $(LIBS) $(PKG_LIBS)
+	$(CC) $(CPPFLAGS) $(TEST_CPPFLAGS) $(ALL_CFLAGS) $(TEST_OPT) $(TEST_LD) -o $@ $< $(LIBS) $(PKG_LIBS)
 
 $(BUILD)/tests/bench-%: tests/bench/%.c $(LIBS) | deps
 	@mkdir -p $(dir $@)
@@ -194,10 +194,13 @@ check-fp: deps
 # -g1: line tables alone, which is all a sanitizer's report prints (file and
 # line of every frame, inlined ones too); full -g cost 9 of this build's 44
 # CPU s (docs/testing.md). For a debugger, set SAN_FLAGS with -g.
+# TEST_OPT=-O0: the test programs' own sources (the library stays at -O1)
+# compile in 0.2 CPU s each, not 0.35, and run as fast: their time is the
+# library's (docs/testing.md).
 SAN_FLAGS = -O1 -g1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
 asan-build: deps
-	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="$(SAN_FLAGS)" \
+	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="$(SAN_FLAGS)" TEST_OPT=-O0 \
 	  $(UNIT_SRC:tests/unit/%.c=build-asan/tests/%) $(HARD_SRC:tests/hard/%.c=build-asan/tests/hard-%)
 
 # Every case of every C test under the sanitizers (TAP_FULL: make check's
@@ -232,19 +235,28 @@ $(FUZZ_OBJ)/%.o: %.c | deps
 	$(FUZZ_CC) $(FUZZ_FLAGS) -MMD -MP -c -o $@ $<
 fuzz_objs = $(patsubst %.c,$(FUZZ_OBJ)/%.o,$(1))
 # The scene fuzzers link the whole core, but a parser runs only the few
-# sources below (libFuzzer's -print_coverage=1 over the corpus); the rest,
-# numerics no fuzzer reaches, build at -O0, sanitizers on: 32 of the
-# fuzzers' 42 CPU s of compiling at -O1 went to them (h2.c, the H^2
-# product inlined per instruction set, alone 14). The C tests run them
-# under ASan.
+# sources below (libFuzzer's -print_coverage=1 over the corpus): those are
+# compiled here, with the fuzzer's coverage. The rest, numerics no fuzzer
+# reaches, come from the ASan/UBSan build's core archive (gcc, -O1,
+# sanitizers on; clang's runtime serves gcc's instrumentation alike),
+# which make check builds anyway: compiling them again with clang, even at
+# -O0, was 7 of the fuzzers' 15 CPU s of compiling (docs/testing.md).
+# The archive's units.o and the others above are never pulled in: the
+# fuzzer's own objects, linked first, define their symbols.
 FUZZ_RUN_CORE = $(addprefix src/core/,units.c params.c protocol.c grid.c rings.c kernel.c relax.c visco_params.c)
-$(call fuzz_objs,$(filter-out $(FUZZ_RUN_CORE),$(CORE_SRC))): FUZZ_FLAGS += -O0
+ASAN_CORE_LIB = build-asan/libadhere.a
+# asan-build's sub-make builds it (where it is $(LIB), under its own rule);
+# a phony prerequisite, so the scene fuzzers relink (0.3 s each) after it,
+# never against a stale archive.
+ifneq ($(BUILD),build-asan)
+$(ASAN_CORE_LIB): asan-build ;
+endif
 
 $(BUILD)/fuzz/fuzz_units: $(call fuzz_objs,tests/fuzz/fuzz_units.c src/core/units.c)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ -lm
-$(BUILD)/fuzz/fuzz_scene: $(call fuzz_objs,tests/fuzz/fuzz_scene.c $(wildcard src/scene/*.c) $(CORE_SRC))
+$(BUILD)/fuzz/fuzz_scene: $(call fuzz_objs,tests/fuzz/fuzz_scene.c $(wildcard src/scene/*.c) $(FUZZ_RUN_CORE)) $(ASAN_CORE_LIB)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
-$(BUILD)/fuzz/fuzz_measured: $(call fuzz_objs,tests/fuzz/fuzz_measured.c $(wildcard src/scene/*.c) $(CORE_SRC))
+$(BUILD)/fuzz/fuzz_measured: $(call fuzz_objs,tests/fuzz/fuzz_measured.c $(wildcard src/scene/*.c) $(FUZZ_RUN_CORE)) $(ASAN_CORE_LIB)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
 $(BUILD)/fuzz/fuzz_replay: $(call fuzz_objs,tests/fuzz/fuzz_replay.c src/tui/replay.c)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)

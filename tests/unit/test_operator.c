@@ -87,7 +87,7 @@ static void compare(const char *where, const adh_grid *g, adh_kernel_type type, 
  * dense; the static mode keeps the dense kernel on a uniform grid. */
 static void figure(int i)
 {
-    char name[8], why[1024] = "";
+    char name[16], why[1024] = "";
     snprintf(name, sizeof name, "fig%d", i);
     adh_config c;
     adh_config_default(&c);
