@@ -74,10 +74,14 @@ runnable() { [ -f "$1" ] && case "$1" in *bench-*) false ;; *) true ;; esac; }  
 # the list's order. (Two lanes fixed in advance, the ASan build's and the
 # rest, left one core idle for a minute: 171 against 108 s of tests.)
 # The long ones, longest first (docs/testing.md has their seconds; the
-# fuzz pass is 5 x 3 s of wall clock whatever its CPU):
+# fuzz pass is 5 x 3 s of wall clock whatever its CPU), down to 1.5 CPU s:
+# the rest, glob order with the ASan build's last, ended on its visco tests
+# of 1.5 to 2.6 s, one core idle meanwhile.
 longest="*/cli/time.sh */fuzz/run.sh */scenes/plan.sh */replay/run.sh */cli/studies.sh */cli/fit.sh
-    */bench/smoke.sh */test_path */test_fit */test_mixing */test_rate_grid */test_equilibrium */test_operator
-    */cli/operator.sh */test_soft_static */test_graded_run */hard-* */plots/batch-plots.sh */test_visco_lattice"
+    */bench/smoke.sh */test_path */test_fit */test_mixing */cli/honest.sh */test_rate_grid */test_equilibrium
+    */plots/batch-plots.sh */cli/operator.sh */test_operator */test_soft_static */test_graded_run */test_visco_lattice
+    */hard-* */cli/static.sh */test_visco_soft */test_visco_limits */test_visco_rate */cli/budget.sh */scenes/run.sh
+    */test_static_skip */test_visco_shared */cli/outdir.sh */cli/signals.sh */test_path_ubound */test_physics"
 set -f
 long=""
 for p in $longest; do
