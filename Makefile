@@ -240,26 +240,31 @@ fuzz_objs = $(patsubst %.c,$(FUZZ_OBJ)/%.o,$(1))
 # The scene fuzzers link the whole core, but a parser runs only the few
 # sources below (libFuzzer's -print_coverage=1 over the corpus): those are
 # compiled here, with the fuzzer's coverage. The rest, numerics no fuzzer
-# reaches, come from the ASan/UBSan build's core archive (gcc, -O1,
+# reaches, come from the ASan/UBSan build's archives (gcc, -O1,
 # sanitizers on; clang's runtime serves gcc's instrumentation alike),
 # which make check builds anyway: compiling them again with clang, even at
 # -O0, was 7 of the fuzzers' 15 CPU s of compiling (docs/testing.md).
-# The archive's units.o and the others above are never pulled in: the
-# fuzzer's own objects, linked first, define their symbols.
+# The archives' units.o and the others compiled here are never pulled in:
+# the fuzzer's own objects, linked first, define their symbols.
+# Of the scene layer, the fuzzers compile what the linker takes for them
+# (-Wl,-Map: the plan, its time and budget and the start check are never
+# linked in); anything else comes from the ASan build's scene archive.
 FUZZ_RUN_CORE = $(addprefix src/core/,units.c params.c protocol.c grid.c rings.c kernel.c relax.c visco_params.c)
-ASAN_CORE_LIB = build-asan/libadhere.a
-# asan-build's sub-make builds it (where it is $(LIB), under its own rule);
-# a phony prerequisite, so the scene fuzzers relink (0.3 s each) after it,
-# never against a stale archive.
+FUZZ_SCENE = $(addprefix src/scene/,config.c configset.c datadir.c hint.c origin.c scene.c sweep.c text.c timespec.c)
+FUZZ_MEASURED = $(addprefix src/scene/,fitdata.c measured.c text.c)
+ASAN_LIBS = build-asan/libadhere-scene.a build-asan/libadhere.a
+# asan-build's sub-make builds them (where they are $(LIBS), under their
+# own rules); a phony prerequisite, so the scene fuzzers relink (0.3 s
+# each) after it, never against a stale archive.
 ifneq ($(BUILD),build-asan)
-$(ASAN_CORE_LIB): asan-build ;
+$(ASAN_LIBS): asan-build ;
 endif
 
 $(BUILD)/fuzz/fuzz_units: $(call fuzz_objs,tests/fuzz/fuzz_units.c src/core/units.c)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ -lm
-$(BUILD)/fuzz/fuzz_scene: $(call fuzz_objs,tests/fuzz/fuzz_scene.c $(wildcard src/scene/*.c) $(FUZZ_RUN_CORE)) $(ASAN_CORE_LIB)
+$(BUILD)/fuzz/fuzz_scene: $(call fuzz_objs,tests/fuzz/fuzz_scene.c $(FUZZ_SCENE) $(FUZZ_RUN_CORE)) $(ASAN_LIBS)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
-$(BUILD)/fuzz/fuzz_measured: $(call fuzz_objs,tests/fuzz/fuzz_measured.c $(wildcard src/scene/*.c) $(FUZZ_RUN_CORE)) $(ASAN_CORE_LIB)
+$(BUILD)/fuzz/fuzz_measured: $(call fuzz_objs,tests/fuzz/fuzz_measured.c $(FUZZ_MEASURED) $(FUZZ_RUN_CORE)) $(ASAN_LIBS)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
 $(BUILD)/fuzz/fuzz_replay: $(call fuzz_objs,tests/fuzz/fuzz_replay.c src/tui/replay.c)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $^ $(PKG_LIBS)
