@@ -54,6 +54,10 @@ void openblas_set_num_threads(int);
 #ifndef FLOOR
 #define FLOOR 1e-3 /* the error norm's floor, in 2 pi R dgamma (out of contact sum |p| is small) */
 #endif
+#ifndef SHIFT
+#define SHIFT 1 /* the predictor in the front's frame (0: linear in time) */
+#endif
+#define FRONT_GAP 1.5 /* the front: where the gap passes this, in z0 */
 #ifndef NEWTON_TOL
 #define NEWTON_TOL 1e-6 /* the step's Newton: max |G| below this, in z0 */
 #endif
@@ -83,6 +87,9 @@ typedef struct rothe {
     double *u0, *q0, *p0, *pm, *um; /* now; p and u a step before */
     double *q1;
     double t, h0, F, dtm;           /* time, position, force; the last step */
+    double hprev;                   /* h0 a step before */
+    double *hc, *hp;                /* gap profiles now and a step before (the predictor's) */
+    size_t nf;                      /* nodes of the uniform fine band */
     int hist;                       /* pm, um hold the step before */
     double h_start, h_turn, t_turn, t_end;
     int contact, unloading, next_contact;
@@ -226,6 +233,64 @@ static int jump(rothe *R)
     return ADH_SUCCESS;
 }
 
+/* The front: where the gap passes FRONT_GAP z0, between nodes (m); -1 none. */
+static double front_of(const rothe *R, const double *h)
+{
+    double G = FRONT_GAP * R->m.z0;
+    if (!(h[0] <= G))
+        return -1;
+    size_t e = 1;
+    while (e < R->n && h[e] <= G)
+        e++;
+    if (e == R->n)
+        return -1;
+    const double *r = R->g->r;
+    return r[e - 1] + (G - h[e - 1]) / (h[e] - h[e - 1]) * (r[e] - r[e - 1]);
+}
+
+/* h at radius x (linear between nodes; even in r). */
+static double h_at(const rothe *R, const double *h, double x)
+{
+    const double *r = R->g->r;
+    x = fabs(x);
+    if (x <= r[0])
+        return h[0];
+    /* the fine band is uniform: the node below x at once there */
+    size_t j = x < r[R->nf - 1] ? (size_t)((x - r[0]) / (r[1] - r[0])) : R->nf - 1;
+    while (j + 1 < R->n && r[j + 1] < x)
+        j++;
+    if (j + 1 >= R->n)
+        return h[R->n - 1];
+    return h[j] + (h[j + 1] - h[j]) * (x - r[j]) / (r[j + 1] - r[j]);
+}
+
+/* The predictor's u at h1 into R->tmp: linear in time; in contact, in the
+ * fine band, in the frame moving with the front (the last two gap
+ * profiles shifted by the front's predicted move: a travelling front, as
+ * the static curve's front steps predict). */
+static void predict(rothe *R, double dt, double h1)
+{
+    size_t n = R->n;
+    double f = R->hist ? dt / R->dtm : 0;
+    for (size_t i = 0; i < n; i++)
+        R->tmp[i] = R->u0[i] + f * (R->u0[i] - R->um[i]);
+    if (!R->hist || !R->contact || !SHIFT)
+        return;
+    for (size_t i = 0; i < n; i++) {
+        R->hc[i] = R->h0 + R->r2R[i] - R->u0[i];
+        R->hp[i] = R->hprev + R->r2R[i] - R->um[i];
+    }
+    double a0 = front_of(R, R->hc), am = front_of(R, R->hp);
+    if (a0 < 0 || am < 0)
+        return;
+    double a1 = a0 + f * (a0 - am);
+    for (size_t i = 0; i < R->nf; i++) {
+        double x = R->g->r[i];
+        double hp = (1 + f) * h_at(R, R->hc, x - (a1 - a0)) - f * h_at(R, R->hp, x - (a1 - am));
+        R->tmp[i] = h1 + R->r2R[i] - hp;
+    }
+}
+
 /* One attempted step of dt: 0 accepted, 1 rejected by the error (dt
  * proposed in *dtn), 2 failed (Newton, or the contact changed). */
 static int attempt(rothe *R, double dt, double *err)
@@ -241,9 +306,9 @@ static int attempt(rothe *R, double dt, double *err)
         R->e[i] *= R->cdel;
     double ceff = R->cinf + R->cdel * c1, h1 = h0_at(R, R->t + dt);
     set_problem(R, ceff, R->e);
-    double f = R->hist ? dt / R->dtm : 0;
+    predict(R, dt, h1);
     for (size_t i = 0; i < n; i++)
-        R->tmp[i] = R->u0[i] + f * (R->u0[i] - R->um[i]) + R->e[i];
+        R->tmp[i] += R->e[i];
     if (newton_at(R, R->tmp, h1) != ADH_SUCCESS)
         return 2;
     /* a contact formed or lost far from the predictor is a jump (a
@@ -309,6 +374,7 @@ static void accept(rothe *R, double dt, rothe_result *res, double *Dnow)
     res->hyst += -0.5 * (R->F + F1) * (h1 - R->h0);
     memcpy(R->pm, R->p0, n * sizeof *R->pm);
     memcpy(R->um, R->u0, n * sizeof *R->um);
+    R->hprev = R->h0;
     for (size_t i = 0; i < n; i++) {
         R->u0[i] = S->trial->u[i] - R->e[i];
         R->p0[i] = S->trial->p[i];
@@ -420,13 +486,17 @@ static int rothe_run(const adh_grid *g, const adh_kernel *k, const adh_material 
     R.t_turn = (R.h_start - R.h_turn) / R.V;
     R.t_end = R.t_turn + (R.h_start - R.h_turn) / R.V;
     size_t n = R.n;
-    double *buf = calloc(12 * n, sizeof *buf);
+    double *buf = calloc(14 * n, sizeof *buf);
     R.S = adh_static_alloc(g, k);
     if (!buf || !R.S)
         return ADH_ENOMEM;
-    double **bufs[] = { &R.area, &R.r2R, &R.scratch, &R.e, &R.tmp, &R.u0, &R.q0, &R.p0, &R.pm, &R.um, &R.q1 };
+    double **bufs[] = { &R.area, &R.r2R, &R.scratch, &R.e, &R.tmp, &R.u0, &R.q0, &R.p0, &R.pm, &R.um, &R.q1, &R.hc, &R.hp };
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
         *bufs[i] = buf + i * n;
+    double w0 = adh_rings_width(g, 0);
+    R.nf = 1;
+    while (R.nf < n && fabs(adh_rings_width(g, R.nf) - w0) < 1e-6 * w0)
+        R.nf++;
     for (size_t i = 0; i < n; i++) {
         R.area[i] = 2.0 * M_PI * adh_rings_weight(g, i);
         R.r2R[i] = g->r[i] * g->r[i] / (2.0 * m->R);
