@@ -54,6 +54,12 @@ void openblas_set_num_threads(int);
 #ifndef FLOOR
 #define FLOOR 1e-3 /* the error norm's floor, in 2 pi R dgamma (out of contact sum |p| is small) */
 #endif
+#ifndef ORDER3
+#define ORDER3 1 /* p quadratic through three steps (third order; 0: linear, second) */
+#endif
+#ifndef ERR_SCALE
+#define ERR_SCALE 2.0 /* the estimate's factor (its first runs: 2) */
+#endif
 #ifndef SHIFT
 #define SHIFT 1 /* the predictor in the front's frame (0: linear in time) */
 #endif
@@ -301,6 +307,16 @@ static int attempt(rothe *R, double dt, double *err)
     coeffs(al, &a, &c0, &c1, &k3);
     for (size_t i = 0; i < n; i++)
         R->tmp[i] = a * R->q0[i] + c0 * R->p0[i];
+    /* third order: p quadratic through the step before too (q's part of
+     * the quadratic, -tau^2 k3 c2 with c2 = A p1 + B_n the second divided
+     * difference), the difference to the linear rule the error estimate */
+    double A = 0, kq = R->tau * R->tau * k3;
+    if (ORDER3 && R->hist) {
+        A = 1.0 / (dt * (dt + R->dtm));
+        for (size_t i = 0; i < n; i++)
+            R->tmp[i] += kq * (R->p0[i] / dt + (R->p0[i] - R->pm[i]) / R->dtm) / (dt + R->dtm);
+        c1 -= kq * A;
+    }
     adh_kernel_apply(R->k, R->tmp, R->e, R->scratch);
     for (size_t i = 0; i < n; i++)
         R->e[i] *= R->cdel;
@@ -329,7 +345,9 @@ static int attempt(rothe *R, double dt, double *err)
         R->q1[i] = a * R->q0[i] + c0 * R->p0[i] + c1 * p1[i];
         if (R->hist) {
             double c2 = ((p1[i] - R->p0[i]) / dt - (R->p0[i] - R->pm[i]) / R->dtm) / (dt + R->dtm);
-            num += R->area[i] * fabs(2.0 * c2 * R->tau * R->tau * k3);
+            if (ORDER3)
+                R->q1[i] += kq * (R->p0[i] / dt + (R->p0[i] - R->pm[i]) / R->dtm) / (dt + R->dtm);
+            num += R->area[i] * fabs(ERR_SCALE * c2 * kq);
         }
         den += R->area[i] * fabs(p1[i]);
     }
