@@ -75,8 +75,14 @@ static double cpu_now(void)
     return (double)c.tv_sec + 1e-9 * (double)c.tv_nsec;
 }
 
+/* The cycle's phases: approach, loading in contact, unloading in
+ * contact, apart after the jump-out. */
+enum { PH_APPROACH, PH_LOAD, PH_UNLOAD, PH_APART, NPH };
+
 typedef struct rothe_result {
     double pulloff, jump_in, jump_out, hyst, diss, cpu;
+    size_t ph_steps[NPH];
+    double ph_cpu[NPH];
     size_t steps, rejected, halved, newton, krylov, factor;
     int rc;
 } rothe_result;
@@ -443,7 +449,11 @@ static int cycle(rothe *R, rothe_result *res)
         double lim = R->t < R->t_turn ? R->t_turn : R->t_end;
         int last = dt >= lim - R->t;
         double step = last ? lim - R->t : dt, err = 0;
+        int ph = !R->contact ? (R->unloading ? PH_APART : PH_APPROACH) : (R->unloading ? PH_UNLOAD : PH_LOAD);
+        double c0 = cpu_now();
         int rc = attempt(R, step, &err);
+        res->ph_cpu[ph] += cpu_now() - c0;
+        res->ph_steps[ph]++;
         if (rc == 0) {
             accept(R, step, res, &Dnow);
             if (R->t >= R->t_turn * (1 - 1e-12))
@@ -632,6 +642,10 @@ int main(int argc, char **argv)
                "dissipated %.6g J\n",
                tol, r.cpu, r.cpu / ts, r.steps, r.rejected, r.halved, r.newton, r.krylov, r.factor, r.pulloff,
                r.jump_in, r.jump_out, r.hyst, r.diss);
+        printf("  attempts (CPU s): approach %zu (%.2f), loading in contact %zu (%.2f), unloading in contact %zu "
+               "(%.2f), apart %zu (%.2f)\n",
+               r.ph_steps[0], r.ph_cpu[0], r.ph_steps[1], r.ph_cpu[1], r.ph_steps[2], r.ph_cpu[2], r.ph_steps[3],
+               r.ph_cpu[3]);
         fflush(stdout);
     }
     adh_kernel_free(k);
