@@ -28,7 +28,8 @@
  *
  * Usage: bench-rothe SIGMA TOL [IDAS_TOLS...]   (SIGMA 0: the Figure-4-like
  * cycle at N = 1000; each IDAS tolerance runs IDAS's cycle once; TOL the
- * Rothe step's tolerance, run at TOL and TOL/2). */
+ * Rothe step's tolerance, run at TOL and TOL/2; ROTHE_REFINE=1.5 in the
+ * environment: the grid 1.5 times finer, the same radius and band). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -584,6 +585,13 @@ int main(int argc, char **argv)
         return 2;
     }
     double sigma = atof(argv[1]), tol = atof(argv[2]);
+    /* ROTHE_REFINE: the grid's spacing over this (the same radius and band) */
+    const char *rf = getenv("ROTHE_REFINE");
+    double refine = rf ? atof(rf) : 1;
+    if (!(refine >= 1 && refine <= 4)) {
+        fprintf(stderr, "bench-rothe: ROTHE_REFINE %s is not allowed: from 1 to 4\n", rf);
+        return 2;
+    }
     openblas_set_num_threads(1);
     adh_material m = adh_material_default();
     adh_grid *g;
@@ -598,17 +606,18 @@ int main(int argc, char **argv)
             return 1;
         }
         if (gc.graded) {
-            adh_rings_spec rs = { .dr = gc.dr, .fine = gc.fine, .ratio = gc.ratio, .rmax = gc.rmax };
+            adh_rings_spec rs = { .dr = gc.dr / refine, .fine = gc.fine, .ratio = gc.ratio, .rmax = gc.rmax };
             g = adh_rings_alloc(&rs);
         } else {
-            g = adh_grid_alloc(gc.n, isnan(gc.dr) ? adh_grid_spacing_for(&m, gc.n) : gc.dr);
+            g = adh_grid_alloc((size_t)lround(gc.n * refine),
+                               (isnan(gc.dr) ? adh_grid_spacing_for(&m, gc.n) : gc.dr) / refine);
         }
         adh_kernel_settings ks = { .type = gc.graded ? ADH_KERNEL_RING : ADH_KERNEL_PAPER,
                                    .storage = gc.hierarchical ? ADH_STORAGE_H2 : ADH_STORAGE_DENSE };
         k = adh_kernel_alloc(g, &ks, NULL);
     } else {   /* the Figure-4-like cycle, N = 1000, H^2 */
         m.E = 0.3e9;
-        g = adh_grid_alloc(1000, adh_grid_spacing_for(&m, 1000));
+        g = adh_grid_alloc((size_t)lround(1000 * refine), adh_grid_spacing_for(&m, 1000) / refine);
         k = adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER, .storage = ADH_STORAGE_H2 }, NULL);
     }
     double ratio = 10.0;
