@@ -413,6 +413,15 @@ static void accept(rothe *R, double dt, rothe_result *res, double *Dnow)
     R->t += dt;
     R->h0 = h1;
     R->F = F1;
+    /* a contact formed or lost without a jump (a low sigma): where, as IDAS
+     * records it */
+    if (!R->contact && R->next_contact && isnan(res->jump_in))
+        res->jump_in = h1;
+    if (R->contact && !R->next_contact && R->unloading && isnan(res->jump_out)) {
+        res->jump_out = h1;
+        if (R->t + R->m.z0 / R->V > R->t_turn + (R->h_start - R->h_turn) / R->V)
+            R->t_end = R->t + R->m.z0 / R->V;
+    }
     R->contact = R->next_contact;
     if (R->unloading)
         pulloff(R, res);
