@@ -55,9 +55,11 @@ void openblas_set_num_threads(int);
 #ifndef FLOOR
 #define FLOOR 1e-3 /* the error norm's floor, in 2 pi R dgamma (out of contact sum |p| is small) */
 #endif
-#ifndef ORDER3
-#define ORDER3 1 /* p quadratic through three steps (third order; 0: linear, second) */
+#ifndef ORDER
+#define ORDER 3 /* 3: p quadratic through three steps; 2: linear over the step;
+                   1: backward Euler on q (for the record) */
 #endif
+#define ORDER3 (ORDER == 3)
 #ifndef ERR_SCALE
 #define ERR_SCALE 2.0 /* the estimate's factor (its first runs: 2) */
 #endif
@@ -310,8 +312,12 @@ static int attempt(rothe *R, double dt, double *err)
 {
     adh_static *S = R->S;
     size_t n = R->n;
-    double al = dt / R->tau, a, c0, c1, k3;
+    double al = dt / R->tau, a, c0, c1, k3, l[3] = { 0, 0, 0 };
     coeffs(al, &a, &c0, &c1, &k3);
+    if (ORDER == 1) {   /* q1 = (q0 + alpha p1) / (1 + alpha); its error against the linear rule */
+        l[0] = a, l[1] = c0, l[2] = c1;
+        a = 1.0 / (1.0 + al), c0 = 0, c1 = al / (1.0 + al);
+    }
     for (size_t i = 0; i < n; i++)
         R->tmp[i] = a * R->q0[i] + c0 * R->p0[i];
     /* third order: p quadratic through the step before too (q's part of
@@ -354,8 +360,11 @@ static int attempt(rothe *R, double dt, double *err)
             double c2 = ((p1[i] - R->p0[i]) / dt - (R->p0[i] - R->pm[i]) / R->dtm) / (dt + R->dtm);
             if (ORDER3)
                 R->q1[i] += kq * (R->p0[i] / dt + (R->p0[i] - R->pm[i]) / R->dtm) / (dt + R->dtm);
-            num += R->area[i] * fabs(ERR_SCALE * c2 * kq);
+            if (ORDER > 1)
+                num += R->area[i] * fabs(ERR_SCALE * c2 * kq);
         }
+        if (ORDER == 1)
+            num += R->area[i] * fabs(R->q1[i] - (l[0] * R->q0[i] + l[1] * R->p0[i] + l[2] * p1[i]));
         den += R->area[i] * fabs(p1[i]);
     }
     /* the floor: FLOOR times the adhesion's force scale 2 pi R dgamma, A R / 8 z0^2 */
@@ -468,14 +477,14 @@ static int cycle(rothe *R, rothe_result *res)
             accept(R, step, res, &Dnow);
             if (R->t >= R->t_turn * (1 - 1e-12))
                 R->unloading = 1;
-            double grow = err > 0 ? 0.9 * cbrt(R->tol / err) : 2.0;
+            double grow = err > 0 ? 0.9 * pow(R->tol / err, 1.0 / (ORDER == 1 ? 2 : 3)) : 2.0;
             dt = step * fmin(2.0, fmax(0.2, grow));
             dt = fmin(dt, DT_MAX * R->tau);
             continue;
         }
         if (rc == 1) {
             res->rejected++;
-            dt = step * fmax(0.2, 0.9 * cbrt(R->tol / err));
+            dt = step * fmax(0.2, 0.9 * pow(R->tol / err, 1.0 / (ORDER == 1 ? 2 : 3)));
             continue;
         }
         res->halved++;
