@@ -7,16 +7,20 @@
  * (alpha = dt/tau) with p linear in time between its ends, q's equation
  * integrates exactly (an exponential integrator, second order):
  *     q1 = a q0 + c0 p0 + c1 p1,
- *     a = e^-alpha, c1 = 1 - (1 - a)/alpha, c0 = (1 - a)/alpha - a,
- * so u1 = -W (ceff p1) - e, ceff = cinf + cdel c1, e = cdel W (a q0 + c0 p0):
+ *     a = e^-alpha, c1 = 1 - (1 - a)/alpha, c0 = (1 - a)/alpha - a;
+ * with p quadratic through the step before too (ORDER 3, the default) q1
+ * gains -tau^2 k3 c2 (c2 the second divided difference of p, linear in p1;
+ * k3 below), third order. Either way q1 = (known) + c1' p1, so
+ * u1 = -W (ceff p1) - e, ceff = cinf + cdel c1', e = cdel W (known):
  * for v = u1 + e the static problem at the modulus 2/ceff with the extra
  * gap e, v + ceff W p(h0 + r^2/2R + e - v) = 0, at the drive's h0. It is
  * solved by the static solver's Newton-Krylov corrector (src/core/static.h,
  * its HODLR preconditioner, h0 held by the bordering row) from a predictor
  * extrapolating u linearly in time.
  *
- * The step's error: q's local error from p's curvature (the quadratic
- * through the last three p's against the linear one), in the norm the
+ * The step's error: the linear rule's local error from p's curvature (the
+ * quadratic through the last three p's against the linear one; with
+ * ORDER 3 the step keeps the quadratic's q, a conservative estimate), in the norm the
  * force sees: sum_n 2 pi w_n |dq_n| over sum_n 2 pi w_n |p_n| (plus a
  * floor, the adhesion's force scale). A node the contact line crosses has
  * a kink in p: its estimate is large, but it weighs only its ring's area.
@@ -110,6 +114,7 @@ typedef struct rothe {
     int contact, unloading, next_contact;
     double Fm, hm, F2, h2;          /* the unloading's force two points back */
     int nun;                        /* unloading points so far */
+    size_t newton, krylov, factor;  /* the static solver's counters before its last set */
 } rothe;
 
 static double h0_at(const rothe *R, double t)
@@ -190,6 +195,16 @@ static void frozen(rothe *R)
         R->e[i] *= R->cdel;
 }
 
+/* The static solver's counters so far into R's (before a set clears them). */
+static void count(rothe *R)
+{
+    adh_static_result sr;
+    adh_static_summary(R->S, &sr);
+    R->newton += sr.newton_iterations;
+    R->krylov += sr.krylov_iterations;
+    R->factor += sr.factorizations;
+}
+
 /* A jump at frozen q from the state now: ADH_SUCCESS with u0, p0 the
  * landing's. */
 static int jump(rothe *R)
@@ -206,6 +221,7 @@ static int jump(rothe *R)
         rc = ADH_ESTALL;
         for (int k = 0; k < 3 && rc != ADH_SUCCESS; k++, below *= 10) {
             ss.h0_end = R->h0 - below;
+            count(R);   /* set clears the solver's counters */
             adh_static_set_gap(S, R->e);
             rc = adh_static_set(S, &mi, &ss);
             if (rc == ADH_SUCCESS || rc == ADH_CONTINUE)
@@ -558,11 +574,10 @@ static int rothe_run(const adh_grid *g, const adh_kernel *k, const adh_material 
     R.S->s.tol = NEWTON_TOL;
     if (rc == ADH_SUCCESS || rc == ADH_CONTINUE)
         rc = cycle(&R, res);
-    adh_static_result sr;
-    adh_static_summary(R.S, &sr);
-    res->newton = sr.newton_iterations;
-    res->krylov = sr.krylov_iterations;
-    res->factor = sr.factorizations;
+    count(&R);
+    res->newton = R.newton;
+    res->krylov = R.krylov;
+    res->factor = R.factor;
     res->cpu = cpu_now() - c0;
     res->rc = rc;
     if (rc != ADH_SUCCESS)
