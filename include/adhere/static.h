@@ -203,6 +203,20 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
  * ADH_ENOMEM when the copy cannot be made. */
 int adh_static_set_gap(adh_static *w, const double *e);
 
+/* One equilibrium at h0 by the curve's corrector alone (Newton-Krylov
+ * with its preconditioner, h0 held), for a caller whose every solve is a
+ * new static problem (a viscoelastic time step, adhere/visco.h): the
+ * compliance c = 2/E in place of the material's, the extra gap e (n;
+ * NULL none) in place of adh_static_set_gap's, from the predictor v (n, u
+ * at h0), to tol (in z0; 0: the settings'). Needs an adh_static_set first
+ * (the material's other values, the settings); the problem stays changed
+ * until the next adh_static_set, which also starts a curve afresh. The
+ * answer (u, h, p, h0; borrowed until the next call) in *x (may be NULL).
+ * ADH_SUCCESS, ADH_EINVAL for c <= 0 or tol < 0, or the corrector's
+ * error (ADH_EMAXITER when it does not converge, ADH_ENAN). */
+int adh_static_solve_at(adh_static *w, double c, const double *e, const double *v, double h0, double tol,
+                        const adh_state **x);
+
 /* Advances by one accepted point. ADH_CONTINUE: more to come; ADH_SUCCESS:
  * this point is the end (h0 = h0_end); otherwise an error (ADH_ESTALL when
  * the step fell below ds_min, ADH_EMAXITER past max_points, ADH_ENAN,
