@@ -89,10 +89,20 @@ adh_visco_drive adh_visco_drive_default(void);
  * (INFINITY allowed). */
 int adh_visco_drive_validate(const adh_visco_drive *d, char *why, size_t whylen);
 
+/* The integrator (adh_visco_settings.integrator). */
+enum {
+    ADH_VISCO_AUTO = 0,   /* Rothe where it applies (displacement control), else IDAS */
+    ADH_VISCO_IDAS = 1,   /* IDAS along the arclength, everywhere */
+    ADH_VISCO_ROTHE = 2   /* the Rothe steps; refused under a spring */
+};
+
 typedef struct adh_visco_settings {
+    int integrator;      /* ADH_VISCO_AUTO, _IDAS or _ROTHE */
     double tol;          /* the integrator's relative tolerance; absolute ones are
                             tol z0 (u, h0), tol A / (6 pi z0^3) (q) and the time
-                            to move z0 (t) */
+                            to move z0 (t); the Rothe steps' local error in q,
+                            in the force's area-weighted norm, is held below
+                            ADH_ROTHE_TOL_FACTOR tol */
     double active_tol;   /* the preconditioner's dense LU takes node j where
                             c |p'(h_j)| sum_n |W_nj| exceeds this (as static) */
     size_t max_steps;    /* integrator steps of the whole run (ADH_EMAXITER beyond) */
@@ -102,6 +112,7 @@ typedef struct adh_visco_settings {
                             with ADH_EINTR; NULL = never */
 } adh_visco_settings;
 
+#define ADH_ROTHE_TOL_FACTOR 5.0
 adh_visco_settings adh_visco_settings_default(void);
 int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t whylen);
 

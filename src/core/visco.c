@@ -72,6 +72,7 @@ void adh_visco_free(adh_visco *w)
     snaps_free(w);
     adh_state_free(w->st);
     adh_static_free(w->stat);
+    adh_visco_rothe_free(w);
     free(w->egap);
     free(w->shape);
     free(w->ev);
@@ -157,18 +158,26 @@ static int add_event(adh_visco *w, int kind)
  * by a few per cent) make a minimum at each ring; an unloading path has
  * one pull-off, its lowest minimum: a lower one replaces the last, which
  * moves to the end of the events (those between came before it). */
-static int pulloff_event(adh_visco *w)
+static int pulloff_event_at(adh_visco *w, const adh_visco_event *at)
 {
     adh_visco_event *last = w->pull_ev ? &w->ev[w->pull_ev - 1] : NULL;
-    if (last && !(w->F_now < last->F))
+    double F = at ? at->F : w->F_now;
+    if (last && !(F < last->F))
         return ADH_SUCCESS;
     if (last) {
         memmove(last, last + 1, (w->nev - w->pull_ev) * sizeof *last);
         w->nev--;
     }
     int rc = add_event(w, ADH_VISCO_PULLOFF);
+    if (rc == ADH_SUCCESS && at)
+        w->ev[w->nev - 1] = *at;
     w->pull_ev = rc == ADH_SUCCESS ? w->nev : 0;
     return rc;
+}
+
+static int pulloff_event(adh_visco *w)
+{
+    return pulloff_event_at(w, NULL);
 }
 
 /* IDAS's counters so far: steps, Newton and GMRES iterations,
@@ -213,9 +222,8 @@ static void fold_in(adh_visco *w)
 
 /* Starts the integrator at s and y under the current segment and mode
  * (y' the path's tangent, or given). */
-static int restart(adh_visco *w, double s, double *y, const double *yp_given)
+static int restart_idas(adh_visco *w, double s, double *y, const double *yp_given)
 {
-    fold_in(w);
     double *ypv = malloc(w->len * sizeof *ypv);
     if (!ypv)
         return ADH_ENOMEM;
@@ -240,6 +248,24 @@ static int restart(adh_visco *w, double s, double *y, const double *yp_given)
     w->live = rc == ADH_SUCCESS;
     free(ypv);
     return rc;
+}
+
+/* Starts the path's integration at y: the Rothe steps where they
+ * integrate it (the path, not a jump), else IDAS. */
+static int restart(adh_visco *w, double s, double *y, const double *yp_given)
+{
+    fold_in(w);
+    w->nrprev = 0;
+    if (w->rothe && w->mode == MODE_PATH) {
+        w->rothe_on = 1;
+        int rc = adh_visco_rothe_reset(w, y);
+        if (rc != ADH_SUCCESS)
+            snprintf(w->errmsg, sizeof w->errmsg, "at t = %.6g s, h0 = %.6g m, the Rothe steps could not start: %s",
+                     w->t_now, adh_visco_h0_of(w, y), adh_strerror(rc));
+        return rc;
+    }
+    w->rothe_on = 0;
+    return restart_idas(w, s, y, yp_given);
 }
 
 static int push_row(adh_visco *w, double t0)
@@ -422,6 +448,15 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     w->v = *v, w->dr = *d, w->s = *s, w->ps = *ps, w->run = run;
     w->errmsg[0] = '\0';
     w->spring = isfinite(d->spring);
+    if (s->integrator == ADH_VISCO_ROTHE && w->spring) {
+        if (why)
+            snprintf(why, whylen, "the Rothe integrator under a spring of %g N/m is not allowed: it steps under "
+                     "displacement control only (the IDAS integrator, or auto, takes the spring)", d->spring);
+        return ADH_EINVAL;
+    }
+    w->rothe = !w->spring && s->integrator != ADH_VISCO_IDAS;
+    w->rothe_on = 0;
+    adh_visco_rothe_free(w);
     w->IQ = n, w->IT = 2 * n, w->IH = 2 * n + 1;
     w->len = 2 * n + 1 + (size_t)w->spring;
     w->cinf = 2.0 / v->Einf;
@@ -624,28 +659,15 @@ static int segment_end(adh_visco *w, double t0)
  * direction through t, with t' ~ cj dt unbounded as the first step
  * shrinks). Under a spring the fold is the spring's, where J_u is
  * regular, and the crossing starts anew there. */
+static void jump_begin(adh_visco *w);
+
 static int fold(adh_visco *w, double t0)
 {
     double *y = N_VGetArrayPointer(w->y), *yp = N_VGetArrayPointer(w->yp);
     int rc = push_row(w, t0);
-    adh_visco_event *e = &w->pending;
-    memset(e, 0, sizeof *e);
-    e->kind = ADH_VISCO_JUMP;
-    e->path = w->seg.path;
-    e->t = w->t_now, e->base = w->base_now, e->h0 = w->st->h0, e->F = w->F_now, e->a = contact_radius(w);
-    w->U_before = adh_visco_energy_of(w, y, NULL, NULL, NULL);
-    memcpy(w->yfold, y, w->len * sizeof *y);
+    jump_begin(w);
     memcpy(w->ypfold, N_VGetArrayPointer(w->yp), w->len * sizeof *y);
-    w->s_fold = w->s_now;
-    w->b_fold = w->base_now;
-    w->seg_fold = w->seg;
-    w->jump_steps = 0;
-    w->retries = 0;
-    w->nudge = VISCO_NUDGE;
-    w->mode = MODE_CROSS;
-    w->have_prev = 0;
-    w->phase = 1;
-    w->cross_dir = w->seg.bdot > 0 ? +1 : w->seg.bdot < 0 ? -1 : w->spring ? 0 : +1;
+    adh_visco_event *e = &w->pending;
     if (!w->spring && w->seg.bdot == 0) {
         /* a dwell: h0 moves through tl at a virtual speed, z0 per tau */
         w->seg.bdot = w->m.z0 / w->v.tau;
@@ -663,6 +685,30 @@ static int fold(adh_visco *w, double t0)
     if (brc != ADH_SUCCESS)
         return stop(w, brc);
     return finish_row(w, rc);
+}
+
+/* A jump begins at the state now: its side before (pending), the fold's
+ * state and segment, the crossing's set-up. */
+static void jump_begin(adh_visco *w)
+{
+    double *y = N_VGetArrayPointer(w->y);
+    adh_visco_event *e = &w->pending;
+    memset(e, 0, sizeof *e);
+    e->kind = ADH_VISCO_JUMP;
+    e->path = w->seg.path;
+    e->t = w->t_now, e->base = w->base_now, e->h0 = w->st->h0, e->F = w->F_now, e->a = contact_radius(w);
+    w->U_before = adh_visco_energy_of(w, y, NULL, NULL, NULL);
+    memcpy(w->yfold, y, w->len * sizeof *y);
+    w->s_fold = w->s_now;
+    w->b_fold = w->base_now;
+    w->seg_fold = w->seg;
+    w->jump_steps = 0;
+    w->retries = 0;
+    w->nudge = VISCO_NUDGE;
+    w->mode = MODE_CROSS;
+    w->have_prev = 0;
+    w->phase = 1;
+    w->cross_dir = w->seg.bdot > 0 ? +1 : w->seg.bdot < 0 ? -1 : w->spring ? 0 : +1;
 }
 
 /* Contact formed or lost at an event (a jump's landing or a root). */
@@ -803,7 +849,8 @@ static int land(adh_visco *w, double t0, int crossed)
     memcpy(y + w->IQ, w->yfold + w->IQ, (n + 1) * sizeof *y);
     w->seg = w->seg_fold;
     w->mode = MODE_PATH;
-    IDASetMaxStep(w->ida, 0); /* the crossing's limit, if it set one, is off */
+    if (w->ida)
+        IDASetMaxStep(w->ida, 0); /* the crossing's limit, if it set one, is off */
     for (size_t i = 0; i < n; i++)
         moved = fmax(moved, fabs(y[i] - w->yfold[i]));
     if (!crossed && !(moved > w->s.tol * w->m.z0))
@@ -847,7 +894,8 @@ static int start_flow(adh_visco *w)
 {
     double *y0 = N_VGetArrayPointer(w->y);
     w->seg = w->seg_fold;
-    IDASetMaxStep(w->ida, 0);
+    if (w->ida)
+        IDASetMaxStep(w->ida, 0);
     w->mode = MODE_FLOW;
     w->jump_steps = 0;
     w->rest = VISCO_REST;
@@ -1014,6 +1062,129 @@ static int flow_step(adh_visco *w, double t0, int *out)
     return 0;
 }
 
+/* The local time where the segment ends (its target reached, its dwell
+ * over) and where the base passes the next profile position. */
+static double seg_end_tl(const adh_visco *w, double *tl_prof)
+{
+    const visco_seg *sg = &w->seg;
+    *tl_prof = INFINITY;
+    if (sg->kind == SEG_DWELL)
+        return sg->tl_end;
+    double tl = N_VGetArrayPointer(w->y)[w->IT], e;
+    if (!isnan(sg->prof) && (e = (sg->prof - sg->b0) / sg->bdot) > tl)
+        *tl_prof = e;
+    e = isnan(sg->target) ? INFINITY : (sg->target - sg->b0) / sg->bdot;
+    return e > tl ? e : INFINITY;
+}
+
+/* A force minimum on unloading between Rothe rows: at the row before,
+ * refined to the parabola's vertex through it and its neighbours. */
+static int rothe_pulloff(adh_visco *w)
+{
+    adh_visco_event *a = &w->rprev[1], *b = &w->rprev[0];
+    if (w->seg.kind != SEG_UNLOAD || w->nrprev < 2 || !(b->F < a->F) || !(w->F_now > b->F))
+        return ADH_SUCCESS;
+    adh_visco_event e = *b;
+    double x0 = a->h0, x1 = b->h0, x2 = w->st->h0, f0 = a->F, f1 = b->F, f2 = w->F_now;
+    double num = (x1 - x0) * (x1 - x0) * (f1 - f2) - (x1 - x2) * (x1 - x2) * (f1 - f0);
+    double den = (x1 - x0) * (f1 - f2) - (x1 - x2) * (f1 - f0);
+    if (den != 0) {
+        double x = x1 - 0.5 * num / den;
+        if (x > fmin(x0, x2) && x < fmax(x0, x2)) {
+            double l0 = (x - x1) * (x - x2) / ((x0 - x1) * (x0 - x2)), l1 = (x - x0) * (x - x2) / ((x1 - x0) * (x1 - x2)),
+                   l2 = (x - x0) * (x - x1) / ((x2 - x0) * (x2 - x1));
+            double F = l0 * f0 + l1 * f1 + l2 * f2;
+            if (F < e.F) {
+                e.F = e.F_after = F;
+                e.h0 = e.h0_after = e.base = x;
+            }
+        }
+    }
+    adh_turn_result *tr = turn_now(w);
+    if (tr && e.F < tr->pulloff_F)
+        tr->pulloff_F = e.F, tr->pulloff_h0 = e.h0;
+    if (tr && (size_t)w->seg.path == w->nturns && !(e.F >= w->res.pulloff_F))
+        w->res.pulloff_F = e.F, w->res.pulloff_h0 = e.h0, w->res.pulloff_t = e.t, w->res.pulloff_base = e.base;
+    return pulloff_event_at(w, &e);
+}
+
+/* A Rothe step found no convergent step down to its shortest: a fold
+ * ahead. IDAS takes the path from the last accepted state: its root of
+ * t' confirms the fold and its crossing (or the static landing) lands the
+ * jump; the Rothe steps resume where it lands (restart). */
+static int land(adh_visco *w, double t0, int crossed);
+
+static int rothe_jump(adh_visco *w, double t0, int *landed)
+{
+    double *y = N_VGetArrayPointer(w->y);
+    *landed = 0;
+    if (!w->in_contact || w->seg.kind == SEG_UNLOAD) {
+        /* a jump-in by the static curve at frozen q (which confirms its
+         * fold: the curve passes one), a jump-out by Newton from the
+         * surfaces apart */
+        jump_begin(w);
+        int lrc = w->in_contact ? adh_visco_rothe_land_out(w, y) : adh_visco_land_static(w, y);
+        if (lrc == ADH_SUCCESS) {
+            *landed = 1;
+            return land(w, t0, 1);
+        }
+        if (lrc == ADH_ENOMEM || lrc == ADH_EINTR)
+            return lrc;
+        memcpy(y, w->yfold, w->len * sizeof *y);
+        w->seg = w->seg_fold;
+        w->mode = MODE_PATH;
+    }
+    fold_in(w);
+    w->rothe_on = 0;
+    w->idas_rows = 0;
+    return restart_idas(w, w->s_now, y, NULL);
+}
+
+/* One Rothe step and its row: a profile, a contact formed or lost, a
+ * force minimum, a segment's end on the way. VISCO_ROTHE_JUMP: IDAS has
+ * the path now. */
+static int rothe_iterate(adh_visco *w, double t0)
+{
+    double *y = N_VGetArrayPointer(w->y), tl_prof;
+    if (w->stat0[0] >= (long)w->s.max_steps)
+        return stop(w, ADH_EMAXITER);
+    double tl_end = seg_end_tl(w, &tl_prof);
+    int hit, rc;
+    adh_visco_event before;
+    fill_event(w, &before, ADH_VISCO_PULLOFF);
+    rc = adh_visco_rothe_advance(w, y, fmin(tl_end, tl_prof), &hit);
+    if (rc == VISCO_ROTHE_JUMP) {
+        int landed;
+        rc = rothe_jump(w, t0, &landed);
+        if (landed)
+            return rc;
+        return rc == ADH_SUCCESS ? VISCO_ROTHE_JUMP : stop(w, rc);
+    }
+    if (rc != ADH_SUCCESS)
+        return stop(w, rc);
+    load_state(w, y);
+    w->rprev[1] = w->rprev[0];
+    w->rprev[0] = before;
+    w->nrprev++;
+    int now = contact_radius(w) > 0;
+    if (now != w->in_contact) {
+        contact_changed(w, now, w->st->h0, w->t_now, w->base_now);
+        add_event(w, ADH_VISCO_CONTACT);
+        tl_end = seg_end_tl(w, &tl_prof); /* an extended unloading ends a z0 on */
+    }
+    if (rothe_pulloff(w) != ADH_SUCCESS)
+        return stop(w, ADH_ENOMEM);
+    if (hit && !(tl_prof > y[w->IT] * (1 + 1e-12))) {
+        if (adh_run_push_profile(w->run, w->st, w->seg.branch, w->seg.path) != ADH_SUCCESS)
+            return stop(w, ADH_ENOMEM);
+        w->pi += w->seg.branch > 0 ? 1 : -1;
+        w->seg.prof = next_profile(w);
+    }
+    if (hit && !(tl_end > y[w->IT] * (1 + 1e-12)))
+        return segment_end(w, t0);
+    return finish_row(w, push_row(w, t0));
+}
+
 int adh_visco_iterate(adh_visco *w)
 {
     if (w->done)
@@ -1026,6 +1197,11 @@ int adh_visco_iterate(adh_visco *w)
     }
     if (w->finishing)
         return stop(w, ADH_SUCCESS);
+    if (w->rothe_on) {
+        int rrc = rothe_iterate(w, t0);
+        if (rrc != VISCO_ROTHE_JUMP)
+            return rrc;
+    }
     if (w->mode == MODE_CROSS && w->land_try) {
         w->land_try = 0;
         int lrc = adh_visco_land_static(w, N_VGetArrayPointer(w->y));
@@ -1094,6 +1270,13 @@ int adh_visco_iterate(adh_visco *w)
             continue;
         }
         load_state(w, N_VGetArrayPointer(w->y));
+        if (flag != IDA_ROOT_RETURN && w->rothe && ++w->idas_rows >= VISCO_ROTHE_BACK) {
+            /* no fold came: the Rothe steps' failure was no jump's; they
+             * take the path back */
+            int rc = push_row(w, t0);
+            int brc = restart(w, w->s_now, N_VGetArrayPointer(w->y), NULL);
+            return brc == ADH_SUCCESS ? finish_row(w, rc) : stop(w, brc);
+        }
         if (flag != IDA_ROOT_RETURN)
             return finish_row(w, push_row(w, t0));
         int rf[NROOTS];

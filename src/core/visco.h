@@ -119,7 +119,16 @@ struct adh_visco {
     double retry_h1, retry_h;
     int land_try;        /* a jump-in: try the static solver's landing first
                             (visco_land.c) */
-    struct adh_static *stat; /* its static solver (allocated at the first) */
+    struct adh_static *stat; /* its static solver (allocated at the first; the
+                            Rothe steps' too) */
+    int rothe;           /* the Rothe steps integrate the path (visco_rothe.c),
+                            IDAS only a jump's fold and crossing */
+    int rothe_on;        /* they do now (else IDAS took over for a jump) */
+    size_t idas_rows;    /* rows IDAS has pushed since it took over */
+    adh_visco_event rprev[2]; /* the Rothe rows one and two back on this
+                            segment (a force minimum between steps) */
+    int nrprev;
+    struct visco_rothe *ro;
     double *egap;        /* and its extra gap cdel W q, n */
     double nudge;        /* a relaxed jump's push off its fold, per z0 */
     double rest;         /* its rest test: speeds below this (VISCO_REST, less
@@ -219,6 +228,26 @@ double adh_visco_force_rate(const adh_visco *w, const double *y, const double *d
  * the fold's h0, q and time, in contact; ADH_ESTALL (or the static
  * solver's error) where it did not land, y untouched. */
 int adh_visco_land_static(adh_visco *w, double *y);
+
+/* visco_rothe.c: the path by Rothe steps (displacement control) */
+typedef struct visco_rothe visco_rothe;
+#define VISCO_ROTHE_BACK 40   /* IDAS rows without a fold before the Rothe steps take the path back */
+#define VISCO_ROTHE_JUMP 1000 /* advance's return: a fold, the path to IDAS */
+void adh_visco_rothe_free(adh_visco *w);
+/* Starts the steps afresh at y (u, q, local time) under the current
+ * segment: no history, a short first step. ADH_SUCCESS, ADH_ENOMEM, or
+ * the static solver's error setting it up. */
+int adh_visco_rothe_reset(adh_visco *w, const double *y);
+/* One accepted step of at most tl_end - y's local time: y, the accounts
+ * and the counters updated, *hit 1 when it landed on tl_end. ADH_SUCCESS;
+ * VISCO_ROTHE_JUMP where no step down to the shortest converges (y
+ * untouched: the last accepted state, before a fold); ADH_EINTR. */
+int adh_visco_rothe_advance(adh_visco *w, double *y, double tl_end, int *hit);
+/* A jump out of contact at y's q, time and h0 (frozen: the static problem
+ * at Einf with the extra gap cdel W q), landed by Newton from the
+ * undeformed surfaces: y's u the landing. ADH_SUCCESS out of contact;
+ * ADH_ESTALL where it lands in contact, or the corrector's error. */
+int adh_visco_rothe_land_out(adh_visco *w, double *y);
 
 /* visco_path.c: the path's residual, Jacobian products, preconditioner,
  * and the tangent that starts each segment */

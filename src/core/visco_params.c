@@ -92,6 +92,7 @@ adh_visco_settings adh_visco_settings_default(void)
      * past the 0.5 % physical time promises; from 5e-5 on 0.26 %. The
      * Figure-4-like cycle costs 12 % more steps (docs/viscoelastic.md). */
     adh_visco_settings s = {
+        .integrator = ADH_VISCO_AUTO,
         .tol = 5e-5,
         .active_tol = 0.1,
         .max_steps = 200000,
@@ -103,6 +104,8 @@ adh_visco_settings adh_visco_settings_default(void)
 
 int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t whylen)
 {
+    if (s->integrator < ADH_VISCO_AUTO || s->integrator > ADH_VISCO_ROTHE)
+        BAD("integrator %d is not allowed: it must be 0 (auto), 1 (IDAS) or 2 (Rothe)", s->integrator);
     if (!(s->tol >= 1e-10 && s->tol <= 1e-2))
         BAD("time tolerance %g is not allowed: it must be from 1e-10 to 1e-2", s->tol);
     if (!(s->active_tol >= 0 && s->active_tol <= 1))
