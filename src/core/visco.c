@@ -456,6 +456,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     }
     w->rothe = !w->spring && s->integrator != ADH_VISCO_IDAS;
     w->rothe_on = 0;
+    w->rothe_factor = 0;
     adh_visco_rothe_free(w);
     w->IQ = n, w->IT = 2 * n, w->IH = 2 * n + 1;
     w->len = 2 * n + 1 + (size_t)w->spring;
@@ -1077,6 +1078,15 @@ static double seg_end_tl(const adh_visco *w, double *tl_prof)
     return e > tl ? e : INFINITY;
 }
 
+/* The gaps' minimum now. */
+static double min_gap(const adh_visco *w)
+{
+    double g = INFINITY;
+    for (size_t i = 0; i < w->n; i++)
+        g = fmin(g, w->st->h[i]);
+    return g;
+}
+
 /* A force minimum on unloading between Rothe rows: at the row before,
  * refined to the parabola's vertex through it and its neighbours. */
 static int rothe_pulloff(adh_visco *w)
@@ -1108,19 +1118,29 @@ static int rothe_pulloff(adh_visco *w)
     return pulloff_event_at(w, &e);
 }
 
-/* A Rothe step found no convergent step down to its shortest: a fold
- * ahead. IDAS takes the path from the last accepted state: its root of
- * t' confirms the fold and its crossing (or the static landing) lands the
- * jump; the Rothe steps resume where it lands (restart). */
+/* A Rothe step found no convergent step down to its shortest (the state
+ * itself predicting too): a fold ahead. A jump-in lands by the static
+ * curve at frozen q (visco_land.c), which confirms the fold; on unloading,
+ * on a grid that resolves the edge zone, the jump out by Newton from the
+ * surfaces apart. Any other (a lattice fold's snap in contact on a coarse
+ * grid: to the nearest branch, not the surfaces apart) and a landing that
+ * fails go to IDAS from the last accepted state: its root of t' confirms
+ * the fold and its crossing lands the jump, and the Rothe steps resume
+ * where it lands (restart), or after VISCO_ROTHE_BACK rows without a
+ * fold. */
 static int land(adh_visco *w, double t0, int crossed);
 
 static int rothe_jump(adh_visco *w, double t0, int *landed)
 {
     double *y = N_VGetArrayPointer(w->y);
     *landed = 0;
-    if (!w->in_contact || w->seg.kind == SEG_UNLOAD) {
-        /* a jump-in by the static curve at frozen q (which confirms its
-         * fold: the curve passes one), a jump-out by Newton from the
+    /* on a grid that resolves the contact's edge zone (the static
+     * curve's limit) the contact line has no lattice folds to snap
+     * across: a fold on unloading is the jump out */
+    int resolved = w->g->dr <= ADH_GRID_EDGE_SPACING_STATIC * adh_edge_zone(&w->m);
+    if ((!w->in_contact && w->seg.kind == SEG_LOAD) || (w->in_contact && w->seg.kind == SEG_UNLOAD && resolved)) {
+        /* a jump-in by the static curve at frozen q, which confirms its
+         * fold (the curve passes one); a jump-out by Newton from the
          * surfaces apart */
         jump_begin(w);
         int lrc = w->in_contact ? adh_visco_rothe_land_out(w, y) : adh_visco_land_static(w, y);
@@ -1137,7 +1157,18 @@ static int rothe_jump(adh_visco *w, double t0, int *landed)
     fold_in(w);
     w->rothe_on = 0;
     w->idas_rows = 0;
-    return restart_idas(w, w->s_now, y, NULL);
+    int rc = restart_idas(w, w->s_now, y, NULL);
+    if (rc != ADH_SUCCESS && rc != ADH_ENOMEM && adh_visco_rothe_back(w, y)) {
+        /* too close to the fold for IDAS's tangent: from the step before
+         * (its row is the table's last but one: the last goes) */
+        if (w->run->nrows && w->run->rows[w->run->nrows - 1].t == w->t_now)
+            w->run->nrows--;
+        load_state(w, y);
+        w->in_contact = contact_radius(w) > 0;
+        w->errmsg[0] = '\0';
+        rc = restart_idas(w, w->s_now, y, NULL);
+    }
+    return rc;
 }
 
 /* One Rothe step and its row: a profile, a contact formed or lost, a
@@ -1152,6 +1183,7 @@ static int rothe_iterate(adh_visco *w, double t0)
     int hit, rc;
     adh_visco_event before;
     fill_event(w, &before, ADH_VISCO_PULLOFF);
+    double g0 = min_gap(w);
     rc = adh_visco_rothe_advance(w, y, fmin(tl_end, tl_prof), &hit);
     if (rc == VISCO_ROTHE_JUMP) {
         int landed;
@@ -1168,8 +1200,17 @@ static int rothe_iterate(adh_visco *w, double t0)
     w->nrprev++;
     int now = contact_radius(w) > 0;
     if (now != w->in_contact) {
-        contact_changed(w, now, w->st->h0, w->t_now, w->base_now);
-        add_event(w, ADH_VISCO_CONTACT);
+        /* where the gap's minimum passed the contact's, between the steps
+         * (linear in it): as IDAS's root places it */
+        double g1 = min_gap(w), f = (ADH_CONTACT_FACTOR * w->m.z0 - g0) / (g1 - g0);
+        f = isfinite(f) ? fmin(1, fmax(0, f)) : 1;
+        double h0 = before.h0 + f * (w->st->h0 - before.h0), t = before.t + f * (w->t_now - before.t);
+        double base = before.base + f * (w->base_now - before.base);
+        contact_changed(w, now, h0, t, base);
+        if (add_event(w, ADH_VISCO_CONTACT) == ADH_SUCCESS) {
+            adh_visco_event *e = &w->ev[w->nev - 1];
+            e->h0 = e->h0_after = h0, e->t = t, e->base = base;
+        }
         tl_end = seg_end_tl(w, &tl_prof); /* an extended unloading ends a z0 on */
     }
     if (rothe_pulloff(w) != ADH_SUCCESS)
@@ -1326,7 +1367,7 @@ void adh_visco_summary(const adh_visco *w, adh_visco_result *res)
     res->steps = (size_t)(w->stat0[0] + c[0]);
     res->newton = (size_t)(w->stat0[1] + c[1]);
     res->krylov = (size_t)(w->stat0[2] + c[2]);
-    res->setups = adh_visco_pre_factorizations(w->pre);
+    res->setups = adh_visco_pre_factorizations(w->pre) + w->rothe_factor;
     res->error_fails = (size_t)(w->stat0[4] + c[4]);
     res->time = w->t_now;
     res->seconds = w->run ? w->run->seconds : 0;

@@ -125,6 +125,7 @@ struct adh_visco {
                             IDAS only a jump's fold and crossing */
     int rothe_on;        /* they do now (else IDAS took over for a jump) */
     size_t idas_rows;    /* rows IDAS has pushed since it took over */
+    size_t rothe_factor; /* the Rothe steps' preconditioner factorizations */
     adh_visco_event rprev[2]; /* the Rothe rows one and two back on this
                             segment (a force minimum between steps) */
     int nrprev;
@@ -243,11 +244,15 @@ int adh_visco_rothe_reset(adh_visco *w, const double *y);
  * VISCO_ROTHE_JUMP where no step down to the shortest converges (y
  * untouched: the last accepted state, before a fold); ADH_EINTR. */
 int adh_visco_rothe_advance(adh_visco *w, double *y, double tl_end, int *hit);
+/* Back to the state a step before on this segment: y and the accounts
+ * there. 1, or 0 when there is none (y untouched). */
+int adh_visco_rothe_back(adh_visco *w, double *y);
 /* A jump out of contact at y's q, time and h0 (frozen: the static problem
  * at Einf with the extra gap cdel W q), landed by Newton from the
- * undeformed surfaces: y's u the landing. ADH_SUCCESS out of contact;
+ * surfaces apart: y's u the landing. ADH_SUCCESS out of contact;
  * ADH_ESTALL where it lands in contact, or the corrector's error. */
 int adh_visco_rothe_land_out(adh_visco *w, double *y);
+
 
 /* visco_path.c: the path's residual, Jacobian products, preconditioner,
  * and the tangent that starts each segment */

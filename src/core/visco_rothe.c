@@ -35,7 +35,6 @@
 #include "visco.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -52,6 +51,8 @@
                                error allows more */
 #define ROTHE_DT_START 1e-3 /* the first step after a (re)start, in tau */
 #define ROTHE_JUMP_MOVE 0.5 /* a contact change moving a node this far (z0) from the predictor: a jump */
+#define ROTHE_SNAP_MOVE 0.3 /* in contact, a node this far (z0) from the predictor: a snap */
+#define ROTHE_LOCATE 1e-4   /* a contact made or lost smoothly placed within this (z0) */
 #define ROTHE_FLOOR 1e-3    /* the error norm's floor, in 2 pi R dgamma */
 #define ROTHE_ERR_SCALE 2.0 /* the estimate's factor */
 #define ROTHE_FRONT_GAP 1.5 /* the front: where the gap passes this, in z0 */
@@ -59,12 +60,16 @@
 
 struct visco_rothe {
     double *u0, *q0, *p0, *pm, *um, *q1, *e, *tmp, *hc, *hp, *r2R, *buf;
-    double dt, dtm, hprev, D0;  /* the next step; the last; h0 a step before; D now */
+    double *yback;              /* y a step before (len) and the accounts there */
+    adh_visco_energy acc_back;
+    int have_back;
+    double dt, dtm, hprev;      /* the next step; the last; h0 a step before */
+    double D0, Dm, P0, Pm;      /* the dissipation and the base's power now and a step before */
     double du;                  /* the last step's largest move of u, m */
     int hist;                   /* pm, um hold the step before */
     int contact, next_contact;
     size_t nf;                  /* nodes of the uniform fine band */
-    size_t newton_seen;         /* the static solver's Newton count already taken */
+    size_t seen[3];             /* the static solver's counters already taken */
 };
 
 void adh_visco_rothe_free(adh_visco *w)
@@ -83,8 +88,9 @@ static int rothe_alloc(adh_visco *w)
     if (!R)
         return ADH_ENOMEM;
     w->ro = R;
-    if (!(R->buf = calloc(11 * n, sizeof *R->buf)))
+    if (!(R->buf = calloc(11 * n + w->len, sizeof *R->buf)))
         return ADH_ENOMEM;
+    R->yback = R->buf + 11 * n;
     double **bufs[] = { &R->u0, &R->q0, &R->p0, &R->pm, &R->um, &R->q1, &R->e, &R->tmp, &R->hc, &R->hp, &R->r2R };
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
         *bufs[i] = R->buf + i * n;
@@ -101,8 +107,7 @@ static int rothe_alloc(adh_visco *w)
     adh_material mi = w->m;
     mi.E = w->v.Einf;
     adh_static_settings ss = adh_static_settings_default();
-    ss.h0_start = w->h0_start;
-    ss.cancel = w->s.cancel;
+    ss.h0_start = w->h0_start;   /* (the cancel flag is the steps', not its start's) */
     int rc = adh_static_set(w->stat, &mi, &ss);
     return rc == ADH_CONTINUE ? ADH_SUCCESS : rc;
 }
@@ -136,11 +141,13 @@ int adh_visco_rothe_reset(adh_visco *w, const double *y)
     memcpy(R->p0, w->p, n * sizeof *R->p0);
     R->contact = R->next_contact = adh_contact_radius(w->g, w->h, w->m.z0) > 0;
     R->hist = 0;
+    R->have_back = 0;
     double v = fabs(w->seg.bdot);
     R->dt = ROTHE_DT_START * w->v.tau;
     if (v > 0)
         R->dt = fmin(R->dt, ROTHE_MOVE_MAX * w->m.z0 / v);
     R->D0 = dissipation(w, R->p0, R->q0);
+    R->P0 = -adh_visco_force(w, h0) * w->seg.bdot;
     return ADH_SUCCESS;
 }
 
@@ -223,21 +230,30 @@ static void predict(adh_visco *w, double dt, double h0, double h1)
     }
 }
 
-/* The static solver's Newton iterations since the last call (its set
- * clears them: a jump-in's landing). */
-static size_t newton_count(adh_visco *w)
+/* The static solver's counters since the last call into the run's
+ * (Newton and GMRES iterations, factorizations; its set clears them: a
+ * jump-in's landing). */
+static void count(adh_visco *w)
 {
     adh_static_result sr;
     adh_static_summary(w->stat, &sr);
     visco_rothe *R = w->ro;
-    size_t d = sr.newton_iterations >= R->newton_seen ? sr.newton_iterations - R->newton_seen : sr.newton_iterations;
-    R->newton_seen = sr.newton_iterations;
-    return d;
+    size_t now[3] = { sr.newton_iterations, sr.krylov_iterations, sr.factorizations };
+    for (int i = 0; i < 3; i++) {
+        size_t d = now[i] >= R->seen[i] ? now[i] - R->seen[i] : now[i];
+        R->seen[i] = now[i];
+        if (i < 2)
+            w->stat0[1 + i] += (long)d;
+        else
+            w->rothe_factor += d;
+    }
 }
 
 /* One attempted step of dt from local time tl: 0 solved and within the
  * tolerance (the answer in *x, q1 in R->q1), 1 rejected by the error, 2
- * failed (Newton, or the contact changed far from the predictor). */
+ * failed (Newton, or the contact changed far from the predictor), 3 the
+ * contact changed smoothly too far on (*err the fraction of the step to
+ * the change). */
 static int attempt(adh_visco *w, double tl, double dt, int shortest, double *err, const adh_state **x)
 {
     visco_rothe *R = w->ro;
@@ -267,16 +283,30 @@ static int attempt(adh_visco *w, double tl, double dt, int shortest, double *err
             R->tmp[i] = R->u0[i] + R->e[i];
         rc = adh_static_solve_at(w->stat, ceff, R->e, R->tmp, h1, ROTHE_NEWTON_TOL, x);
     }
-    w->stat0[1] += (long)newton_count(w);
+    count(w);
     if (rc != ADH_SUCCESS)
         return 2;
     int now = adh_contact_radius(w->g, (*x)->h, w->m.z0) > 0;
-    if (now != R->contact) {
-        double moved = 0;
-        for (size_t i = 0; i < n; i++)
-            moved = fmax(moved, fabs((*x)->u[i] - R->tmp[i]));
-        if (moved > ROTHE_JUMP_MOVE * w->m.z0)
-            return 2;
+    double moved = 0;
+    for (size_t i = 0; i < n; i++)
+        moved = fmax(moved, fabs((*x)->u[i] - R->tmp[i]));
+    /* the contact made or lost, or (in contact) the contact line snapped
+     * a ring across a lattice fold, inside the step: halved, down to the
+     * jump that IDAS crosses and counts */
+    if (now != R->contact ? moved > ROTHE_JUMP_MOVE * w->m.z0 : R->hist && now && moved > ROTHE_SNAP_MOVE * w->m.z0)
+        return 2;
+    if (now != R->contact && fabs(h1 - h0) + (w->seg.bdot == 0 ? dt / tau * w->m.z0 : 0) > ROTHE_LOCATE * w->m.z0) {
+        /* the contact made or lost smoothly: the step shortened to where
+         * the gaps' minimum passes the contact's (secant), until it is
+         * placed within ROTHE_LOCATE z0, as IDAS's root */
+        double g0 = INFINITY, g1 = INFINITY;
+        for (size_t i = 0; i < n; i++) {
+            g0 = fmin(g0, h0 + R->r2R[i] - R->u0[i]);
+            g1 = fmin(g1, (*x)->h[i]);
+        }
+        double f = (ADH_CONTACT_FACTOR * w->m.z0 - g0) / (g1 - g0);
+        *err = isfinite(f) ? fmin(0.9, fmax(1e-3, f)) : 0.5;
+        return 3;
     }
     R->next_contact = now;
     const double *p1 = (*x)->p;
@@ -301,11 +331,25 @@ static int attempt(adh_visco *w, double tl, double dt, int shortest, double *err
 
 /* The accepted step into y (u, q, local time) and the accounts: the
  * base's work and the viscous dissipation, trapezoidal in time. */
+/* The integral over the step of f (f0 at its start, f1 at its end, fm a
+ * step before): the trapezoid, less the part of the quadratic through the
+ * three (third order, as q's rule). */
+static double quad(const visco_rothe *R, double dt, double fm, double f0, double f1)
+{
+    double s = 0.5 * (f0 + f1) * dt;
+    if (R->hist)
+        s -= ((f1 - f0) / dt - (f0 - fm) / R->dtm) / (dt + R->dtm) * dt * dt * dt / 6.0;
+    return s;
+}
+
 static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
 {
     visco_rothe *R = w->ro;
     size_t n = w->n;
-    double tl = y[w->IT], h0 = w->seg.b0 + w->seg.bdot * tl, F0 = w->F_now;
+    double tl = y[w->IT], h0 = w->seg.b0 + w->seg.bdot * tl;
+    memcpy(R->yback, y, w->len * sizeof *y);
+    R->acc_back = w->acc;
+    R->have_back = 1;
     memcpy(R->pm, R->p0, n * sizeof *R->pm);
     memcpy(R->um, R->u0, n * sizeof *R->um);
     R->hprev = h0;
@@ -321,10 +365,11 @@ static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
     y[w->IT] = tl + dt;
     double h1 = x->h0;
     adh_visco_gaps(w, y, h1);
-    double F1 = adh_visco_force(w, h1), D1 = dissipation(w, R->p0, R->q0);
-    w->acc.work += -0.5 * (F0 + F1) * (h1 - h0);
-    w->acc.dissipated += 0.5 * (R->D0 + D1) * dt;
-    R->D0 = D1;
+    double P1 = -adh_visco_force(w, h1) * w->seg.bdot, D1 = dissipation(w, R->p0, R->q0);
+    w->acc.work += quad(R, dt, R->Pm, R->P0, P1);
+    w->acc.dissipated += quad(R, dt, R->Dm, R->D0, D1);
+    R->Pm = R->P0, R->P0 = P1;
+    R->Dm = R->D0, R->D0 = D1;
     R->dtm = dt;
     R->hist = 1;
     R->contact = R->next_contact;
@@ -360,6 +405,10 @@ int adh_visco_rothe_advance(adh_visco *w, double *y, double tl_end, int *hit)
             return ADH_SUCCESS;
         }
         w->stat0[4]++;
+        if (rc == 3) {
+            R->dt = dt * err * (1 - 1e-3);
+            continue;
+        }
         if (rc == 1) {
             R->dt = dt * fmax(0.2, grow);
             continue;
@@ -373,6 +422,18 @@ int adh_visco_rothe_advance(adh_visco *w, double *y, double tl_end, int *hit)
     }
 }
 
+
+int adh_visco_rothe_back(adh_visco *w, double *y)
+{
+    visco_rothe *R = w->ro;
+    if (!R || !R->have_back)
+        return 0;
+    memcpy(y, R->yback, w->len * sizeof *y);
+    w->acc = R->acc_back;
+    R->have_back = 0;
+    return 1;
+}
+
 int adh_visco_rothe_land_out(adh_visco *w, double *y)
 {
     visco_rothe *R = w->ro;
@@ -383,7 +444,7 @@ int adh_visco_rothe_land_out(adh_visco *w, double *y)
         R->e[i] *= w->cdel;
     const adh_state *x = NULL;
     int rc = adh_static_solve_at(w->stat, w->cinf, R->e, R->e, h0, ROTHE_NEWTON_TOL, &x);
-    w->stat0[1] += (long)newton_count(w);
+    count(w);
     if (rc != ADH_SUCCESS)
         return rc;
     if (adh_contact_radius(w->g, x->h, w->m.z0) > 0)

@@ -14,10 +14,12 @@
  * default the solver's, 1e-4; refine: the grids' spacing divided by this,
  * over the same radius and band, default 1: the convergence promise's
  * grid is 1.5; with either, the Figure-4-like rows leave the relaxation
- * out). */
+ * out). BENCH_INTEGRATOR=idas in the environment: the IDAS path
+ * (adh_visco_settings.integrator) instead of the default, for the record. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "adhere/kernel.h"
@@ -54,6 +56,21 @@ static clock2 since(clock2 t0)
 /* The viscoelastic cycle of material m (E = E0) with Einf = ratio E0. */
 static double bench_tol; /* 0: the solver's default */
 static double bench_refine = 1; /* the grids' spacing over this */
+static int bench_integrator = ADH_VISCO_AUTO; /* BENCH_INTEGRATOR=idas: the IDAS path for the record */
+
+/* The machine, as /proc/cpuinfo names it. */
+static void machine(void)
+{
+    char line[256];
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    while (f && fgets(line, sizeof line, f))
+        if (!strncmp(line, "model name", 10) && strchr(line, ':')) {
+            printf("machine: %s", strchr(line, ':') + 2);
+            break;
+        }
+    if (f)
+        fclose(f);
+}
 
 static int visco_cycle(const adh_grid *g, const adh_kernel *k, const adh_material *m, double ratio, clock2 *t,
                        adh_visco_result *res)
@@ -62,6 +79,7 @@ static int visco_cycle(const adh_grid *g, const adh_kernel *k, const adh_materia
     vs.sls.Einf = ratio * m->E;
     if (bench_tol > 0)
         vs.s.tol = bench_tol;
+    vs.s.integrator = bench_integrator;
     adh_protocol_settings ps = adh_protocol_settings_default();
     adh_run run;
     adh_run_init(&run);
@@ -186,7 +204,15 @@ int main(int argc, char **argv)
         fprintf(stderr, "bench-visco: refine %s is not allowed: from 1 to 4\n", argv[4]);
         return 2;
     }
+    const char *in = getenv("BENCH_INTEGRATOR");
+    if (in && strcmp(in, "idas") && strcmp(in, "rothe") && strcmp(in, "auto")) {
+        fprintf(stderr, "bench-visco: BENCH_INTEGRATOR=%s is not allowed: idas, rothe or auto\n", in);
+        return 2;
+    }
+    bench_integrator = !in || !strcmp(in, "auto") ? ADH_VISCO_AUTO : !strcmp(in, "idas") ? ADH_VISCO_IDAS : ADH_VISCO_ROTHE;
     openblas_set_num_threads(1);
+    machine();
+    printf("integrator: %s\n", bench_integrator == ADH_VISCO_IDAS ? "IDAS" : "Rothe (auto)");
     int bad = n ? figure4(n) : 0;   /* N = 0: sigma's cycle alone */
     bad |= soft(sigma);
     return bad;

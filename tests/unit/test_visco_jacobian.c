@@ -20,6 +20,7 @@ static void check(const char *what, adh_kernel_storage storage, double spring, d
     adh_visco_drive d = fix_drive(1e-6, 1e-6);
     d.spring = spring;
     adh_visco_settings s = adh_visco_settings_default();
+    s.integrator = ADH_VISCO_IDAS; /* its Jacobian and preconditioner are what is checked */
     adh_protocol_settings ps = adh_protocol_settings_default();
     ps.turns[0] = FIX_TURN;
     adh_run run;

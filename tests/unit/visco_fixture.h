@@ -95,12 +95,13 @@ static inline vrun fix_visco_tau(const fixture *f, double ratio, double tau, con
 }
 
 /* A solver set for one cycle to the fixture's turn under sls and the
- * drive d (default settings and protocol otherwise), to be stepped by
+ * drive d (default settings and protocol otherwise, the IDAS integrator), to be stepped by
  * hand: *rc ADH_CONTINUE, or why it was not set. Free it and run. */
 static inline adh_visco *fix_visco_begin(const fixture *f, const adh_sls *sls, const adh_visco_drive *d, adh_run *run,
                                          int *rc)
 {
     adh_visco_settings s = adh_visco_settings_default();
+    s.integrator = ADH_VISCO_IDAS; /* its callers look into IDAS's jumps */
     adh_protocol_settings ps = adh_protocol_settings_default();
     ps.turns[0] = FIX_TURN;
     adh_run_init(run);
@@ -146,7 +147,7 @@ static inline double seg_dist(double x, double y, double x0, double y0, double x
 }
 
 /* How far the run's rows lie from the static curve st: each row's
- * distance to the curve's stable segments (in the same contact state,
+ * distance to the curve's stable segments over its h0 (in the same contact state,
  * unless the curve has no fold and so one branch), h0 in units of z0 and
  * F in units of the curve's pull-off; the largest over the rows, and how
  * many rows had a segment in reach (within 0.1 z0 in h0). Rows within
@@ -165,6 +166,10 @@ static inline double static_gap(const adh_run *run, const adh_run *st, const adh
         for (size_t j = 0; j + 1 < st->nrows; j++) {
             const adh_obs *a = &st->rows[j], *b = &st->rows[j + 1];
             if (!a->stable || !b->stable || fmin(fabs(o->h0 - a->h0), fabs(o->h0 - b->h0)) > 0.1 * z0)
+                continue;
+            /* a segment beside the row, not over it, is no measure of its
+             * distance: its end's offset in h0 alone */
+            if (o->h0 < fmin(a->h0, b->h0) - 1e-3 * z0 || o->h0 > fmax(a->h0, b->h0) + 1e-3 * z0)
                 continue;
             if (sr->folds && ((a->a > 0) != (o->a > 0) || (b->a > 0) != (o->a > 0)))
                 continue;
