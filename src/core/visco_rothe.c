@@ -45,7 +45,7 @@
 
 #define ROTHE_DT_MIN 1e-4   /* shortest step before a jump: the base moving this
                                far (z0), or in a dwell this long (tau) */
-#define ROTHE_MOVE_MAX 0.5  /* longest: the base, or the surface, moving this
+#define ROTHE_MOVE_MAX 0.4  /* longest: the base, or the surface, moving this
                                far (z0; in a dwell the error alone bounds it):
                                rows as dense as a static curve's where q's
                                error allows more */
