@@ -17,7 +17,13 @@
  * k = INFINITY is the paper's displacement control, h0 = base). There is
  * no inertia: the sphere's position follows quasi-statically.
  *
- * The integration. The state (u, q, t[, h0]) is a differential-algebraic
+ * The integration (settings.integrator). Under displacement control, by
+ * default, Rothe steps: each time step the static problem at an effective
+ * compliance with a known extra gap (q's equation integrated exactly over
+ * the step), solved by the static solver's corrector, the step held by
+ * q's local error; a fold where no step converges, landed by the static
+ * curve (in), Newton from apart (out) or the IDAS path below from the last
+ * step. Through a spring (or asked for), IDAS: the state (u, q, t[, h0]) is a differential-algebraic
  * system solved by SUNDIALS' IDAS (variable-order BDF with error control)
  * along an arclength s of the path in (u, base speed x t): the residual
  *     u + W (cinf p + cdel q) = 0
