@@ -97,7 +97,7 @@ int adh_visco_drive_validate(const adh_visco_drive *d, char *why, size_t whylen)
 
 /* The integrator (adh_visco_settings.integrator). */
 enum {
-    ADH_VISCO_AUTO = 0,   /* Rothe where it applies (displacement control), else IDAS */
+    ADH_VISCO_AUTO = 0,   /* Rothe where it applies and was measured to (adh_visco_rothe_applies), else IDAS */
     ADH_VISCO_IDAS = 1,   /* IDAS along the arclength, everywhere */
     ADH_VISCO_ROTHE = 2   /* the Rothe steps; refused under a spring */
 };
@@ -119,7 +119,15 @@ typedef struct adh_visco_settings {
 } adh_visco_settings;
 
 #define ADH_ROTHE_TOL_FACTOR 5.0
+/* auto takes the Rothe steps up to this Einf/E0: measured beyond (100 and
+ * 1000 E0) their error estimate took 2.3 and 8.6 times IDAS's steps and
+ * their pull-off lay 0.3 and 1.1 % off IDAS's (docs/viscoelastic.md) */
+#define ADH_ROTHE_RATIO_MAX 10.0
 adh_visco_settings adh_visco_settings_default(void);
+/* 1 when the Rothe steps integrate the path of solid v under drive d with
+ * settings s: asked for, or auto without a spring and Einf at most
+ * ADH_ROTHE_RATIO_MAX E0; else 0 (IDAS). */
+int adh_visco_rothe_applies(const adh_sls *v, const adh_visco_drive *d, const adh_visco_settings *s);
 int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t whylen);
 
 /* What happened where. */

@@ -454,7 +454,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
                      "displacement control only (the IDAS integrator, or auto, takes the spring)", d->spring);
         return ADH_EINVAL;
     }
-    w->rothe = !w->spring && s->integrator != ADH_VISCO_IDAS;
+    w->rothe = adh_visco_rothe_applies(v, d, s);
     w->rothe_on = 0;
     w->rothe_factor = 0;
     adh_visco_rothe_free(w);

@@ -115,6 +115,13 @@ int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t w
     return ADH_SUCCESS;
 }
 
+int adh_visco_rothe_applies(const adh_sls *v, const adh_visco_drive *d, const adh_visco_settings *s)
+{
+    if (s->integrator == ADH_VISCO_IDAS || isfinite(d->spring))
+        return 0;
+    return s->integrator == ADH_VISCO_ROTHE || v->Einf <= ADH_ROTHE_RATIO_MAX * v->E0 * (1 + 1e-12);
+}
+
 adh_visco_rule_settings adh_visco_rule_settings_default(double E)
 {
     adh_visco_rule_settings r = {

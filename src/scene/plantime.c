@@ -18,12 +18,12 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg)
     adh_visco_rule_settings v;
     adh_config_visco(&s, &v);
     char a[64], b[64], c[64];
-    if (s.time.sls && isfinite(v.drive.spring))
+    if (s.time.sls && !adh_visco_rothe_applies(&v.sls, &v.drive, &v.s))
         fprintf(f, "mode: time (physical time: the path integrated by IDAS with error control, relative tolerance %g; "
                    "each fold or spring instability crossed as a jump)\n", v.s.tol);
     else if (s.time.sls)
         fprintf(f, "mode: time (physical time: the path integrated by Rothe steps, each a static problem at the "
-                   "drive's h0, q's error held below %g; each fold crossed as a jump, the jump out by IDAS)\n",
+                   "drive's h0, q's error held below %g; each fold crossed as a jump)\n",
                 ADH_ROTHE_TOL_FACTOR * v.s.tol);
     else
         fprintf(f, "mode: time (physical time, no time integration needed: an elastic solid without inertia is "
