@@ -455,9 +455,11 @@ check "a 0.5 TPa solid from 0.6 nm runs ($rc: $(head -c 200 "$TMP/err")); from 0
     sh -c "[ $rc -eq 0 ] && [ $rc2 -eq 2 ] && cmp -s '$TMP/tkeep.summary' '$TMP/tkeep/summary.tsv' && [ -s '$TMP/tkeep/force.tsv' ]"
 
 # An interrupted run in physical time: events.tsv is a table of the run cut
-# short as force.tsv is, and said nothing of it (no # PARTIAL, no scene line)
+# short as force.tsv is, and said nothing of it (no # PARTIAL, no scene line);
+# on 600 nodes, whose cycle lasts seconds (150 ran through in a third of
+# one on the Rothe steps, before the signal came)
 rm -f "$TMP/ready"
-ADHERE_READY_FILE="$TMP/ready" "$ADHERE" --batch -q visco -N 150 --force --no-plot -o "$TMP/tint" 2>/dev/null &
+ADHERE_READY_FILE="$TMP/ready" "$ADHERE" --batch -q visco -N 600 --force --no-plot -o "$TMP/tint" 2>/dev/null &
 pid=$!
 wait_phase "$TMP/ready" step "$pid" && kill -INT "$pid" 2>/dev/null
 wait "$pid"
