@@ -946,7 +946,8 @@ void adh_config_reword(const char *in, adh_config_say say, void *ctx, char *out,
             out[o++] = *p++;
             continue;
         }
-        char value[128] = "", said[256];
+        /* said: a scene's key is said with its file's path and line, whole */
+        char value[128] = "", said[PATH_MAX + 256];
         const char *q = p + klen;
         int assigned = strncmp(q, " = ", 3) == 0;
         if (assigned) {
