@@ -139,6 +139,7 @@ $(BUILD)/%.o: %.c | deps
 $(BUILD)/tests/test_path_ubound: src/core/rule_path.c
 $(BUILD)/tests/test_forcebase_oom: src/plot/forcebase.c
 $(BUILD)/tests/test_static_start_oom: src/core/static.c
+$(BUILD)/tests/test_say: src/plot/say.c
 # ... or a driver's (the screen's session, its kernel count read)
 $(BUILD)/tests/test_tui_start_kernels: src/tui/sim.c src/tui/sim.h
 # ... or the CLI's words (its advice, tables and fit report)

@@ -26,8 +26,13 @@ static void say_text(const char *who, const char *msg, size_t n, size_t more)
     const char *text = cut ? cut : msg;
     if (n > SAY_STACK)
         big = malloc(4 * n + 1);
-    /* out of memory: as much as the stack holds, and what was left out said */
-    size_t done = adh_outdir_escape_prefix(text, big ? big : small, big ? 4 * n + 1 : sizeof small, 1);
+    /* out of memory: as much as the stack holds, and what was left out said;
+     * without the prefix's copy, room for n bytes at most, which escape no
+     * more than n of msg's (not all of it, past the bound) */
+    size_t room = big ? 4 * n + 1 : sizeof small;
+    if (text == msg && msg[n] != '\0' && room > n + 1)
+        room = n + 1;
+    size_t done = adh_outdir_escape_prefix(text, big ? big : small, room, 1);
     more += n - (done < n ? done : n);
     char tail[80] = "";
     if (more)

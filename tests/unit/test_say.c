@@ -6,6 +6,17 @@
 #include <string.h>
 #include <unistd.h>
 
+/* say.c compiled here with its malloc counted: the allocation numbered
+ * fail_at fails (out of memory on the way) */
+static long calls, fail_at = -1;
+static void *count_malloc(size_t n)
+{
+    return ++calls == fail_at ? NULL : malloc(n);
+}
+#define malloc count_malloc
+#include "plot/say.c"   /* in place of libadhere.a's */
+#undef malloc
+
 #include "plot/say.h"
 #include "tap.h"
 
@@ -110,6 +121,21 @@ int main(void)
     got = msg ? said(say, msg, &got_n) : NULL;
     ok(got && got_n > strlen(tail) && !strcmp(got + got_n - strlen(tail), tail) && got_n < ADH_SAY_MAX + 200,
        "adh_say cuts it the same way (%zu bytes said)", got_n);
+    free(got);
+
+    /* out of memory for the cut's copy: still cut at the bound, never the
+     * whole message with a tail that says some of it was left out (it
+     * escaped the message whole, 'END' and all, then said 5000 bytes more) */
+    calls = 0, fail_at = 1;
+    got = msg ? said(say, msg, &got_n) : NULL;
+    fail_at = -1;
+    const char *cutword = got ? strstr(got, "(message cut: ") : NULL;
+    size_t more = 0;
+    ok(got && !strstr(got, "END") && got_n < ADH_SAY_MAX + 200 && cutword &&
+       sscanf(cutword, "(message cut: %zu bytes more)", &more) == 1 &&
+       (size_t)(strstr(got, "\xe2\x80\xa6") - got) - strlen("adhere: ") + more == n,
+       "without memory for the cut's copy, a message of %zu bytes is still cut near ADH_SAY_MAX, what was said and "
+       "what was left out adding up (%zu bytes said, %zu more)", n, got_n, more);
     free(got);
     free(msg);
     return tap_done();
