@@ -530,6 +530,8 @@ void adh_static_summary(const adh_static *w, adh_static_result *res)
             res->pulloff_F_disp = w->past.pulloff_F_disp;
         }
     }
+    if (isinf(res->pulloff_F))   /* no point at all: the least force of none is no pull-off */
+        res->pulloff_F = res->pulloff_h0 = NAN;
 }
 
 size_t adh_static_folds(const adh_static *w, const adh_static_fold **folds)

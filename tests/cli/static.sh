@@ -188,4 +188,12 @@ rc=$?
 check "... adhere merge keeps the reasons: the same rows ($rc: $(head -c 300 "$TMP/err"))" \
     sh -c "[ $rc -le 1 ] && grep -v '^#' '$TMP/stops.before' >'$TMP/m1' && grep -v '^#' '$TMP/stops-merged/sweep.tsv' >'$TMP/m2' &&
            cmp -s '$TMP/m1' '$TMP/m2'"
+# A curve with no point at all (the way to its start stopped by the cap
+# on points) has no pull-off: nan in summary.tsv, not the least force of
+# no rows, inf
+printf '[solver]\nmax_points = 8\n' >"$TMP/cap8.scene"
+"$ADHERE" --batch --mode=static -E 10GPa --start=0.6nm -N 200 --force --no-plot -q -o "$TMP/nopoint" "$TMP/cap8.scene" 2>"$TMP/err"
+rc=$?
+check "a static curve stopped before its first point: exit 1, points 0 and pulloff_F nan ($rc: $(grep -E '^(points|pulloff_F)	' "$TMP/nopoint/summary.tsv" | tr '\n\t' '  '))" \
+    sh -c "[ $rc -eq 1 ] && grep -qx 'points	0' '$TMP/nopoint/summary.tsv' && grep -qx 'pulloff_F	nan' '$TMP/nopoint/summary.tsv'"
 done_testing
