@@ -2,6 +2,7 @@
  * runner, the plan or cost reports, or the TUI. */
 #include <errno.h>
 #include <gsl/gsl_errno.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -180,7 +181,8 @@ static int run(int argc, char **argv)
      * is process-wide, so the program sets it, once, and the library never
      * does. */
     gsl_set_error_handler_off();
-    char why[1024];
+    /* room for a sentence and a path whole (a scene's FILE:LINE: first) */
+    char why[PATH_MAX + 1024];
     if (cli_options_parse(argc, argv, &cli, why, sizeof why) != 0) {
         adh_say(why);
         return CLI_EXIT_USAGE;

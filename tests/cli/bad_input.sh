@@ -229,6 +229,12 @@ printf '[protocol]\nturn = -2nm\n' >"$TMP/turn.scene"
 bad "turn.scene:2: unknown key 'turn': did you mean 'turns'? (see adhere-scene(5))" "$TMP/turn.scene"
 printf '[protocol]\nR = 2um\n' >"$TMP/r.scene"
 bad "r.scene:2: unknown key 'R' in \\[protocol\\]: did you mean 'R' in \\[material\\]?" "$TMP/r.scene"
+# ... whole from a scene deep in directories (a path of 1.3 KB): the
+# message was cut at 1023 bytes, in the path, and the error itself lost
+deep="$TMP/$(printf 'k%.0s' $(seq 1 250))/$(printf 'l%.0s' $(seq 1 250))/$(printf 'm%.0s' $(seq 1 250))"
+deep="$deep/$(printf 'n%.0s' $(seq 1 250))/$(printf 'o%.0s' $(seq 1 250))"
+mkdir -p "$deep" && cp "$TMP/r.scene" "$deep/r.scene"
+bad "^adhere: $deep/r.scene:2: unknown key 'R' in \\[protocol\\]: did you mean 'R' in \\[material\\]?" "$deep/r.scene"
 
 # An output path that cannot be a directory.
 touch "$TMP/afile"
