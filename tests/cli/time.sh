@@ -450,7 +450,7 @@ bad "^adhere: sweep run 1 (start = 4e-10): start = 400pm ($TMP/start.scene:11) i
 # 255 bytes, the file's name mid-way and its line lost
 deep="$TMP/$(printf 'd%.0s' $(seq 1 250))"
 mkdir -p "$deep" && head -n 9 "$TMP/start.scene" >"$deep/start.scene"
-bad "^adhere: start = 400pm ($deep/start.scene:6) is not allowed: .*: [0-9.]* pm (start at $deep/start.scene:6)$" "$deep/start.scene"
+bad "^adhere: start = 400pm ($deep/start.scene:6) is not allowed: .*: [0-9.]* pm (start)$" "$deep/start.scene"
 "$ADHERE" --batch -q --no-plot --material=sls --E0=0.5TPa --Einf=1TPa --start=0.6nm --turn=-2nm -N 200 -o "$TMP/tkeep" 2>"$TMP/err"
 rc=$?
 cp "$TMP/tkeep/summary.tsv" "$TMP/tkeep.summary"
