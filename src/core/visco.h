@@ -304,6 +304,8 @@ double adh_visco_flow_speed(const adh_visco *w, const double *d);
 int adh_visco_next_to_equilibrium(adh_visco *w);
 
 /* visco_energy.c */
+/* <a, W a> in the area-weighted inner product; uses w->tmp2 */
+double adh_visco_energy_norm(adh_visco *w, const double *a);
 /* U of y (the stored energy), with parts (any may be NULL); uses w->h,
  * w->p, w->tmp, two kernel products */
 double adh_visco_energy_of(adh_visco *w, const double *y, double *el, double *surf, double *spr);

@@ -230,16 +230,6 @@ static int roots(realtype s, N_Vector yy, N_Vector yp, realtype *g, void *data)
     return 0;
 }
 
-/* <a, W a> in the area-weighted inner product. */
-static double energy_norm(adh_visco *w, const double *a)
-{
-    adh_visco_apply(w, a, w->tmp2);
-    double e = 0;
-    for (size_t i = 0; i < w->n; i++)
-        e += w->area[i] * a[i] * w->tmp2[i];
-    return e;
-}
-
 /* The base's work -F bdot t' and the dissipation D t' per unit s; none
  * during a jump (no time passes). */
 static int quad(realtype s, N_Vector yy, N_Vector yp, N_Vector rQ, void *data)
@@ -256,7 +246,7 @@ static int quad(realtype s, N_Vector yy, N_Vector yp, N_Vector rQ, void *data)
     if (w->cdel > 0) {
         for (size_t i = 0; i < w->n; i++)
             w->tmp[i] = w->p[i] - y[w->IQ + i];
-        q[QDISS] = w->cdel / w->v.tau * energy_norm(w, w->tmp) * tp;
+        q[QDISS] = w->cdel / w->v.tau * adh_visco_energy_norm(w, w->tmp) * tp;
     }
     return 0;
 }

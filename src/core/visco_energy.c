@@ -8,10 +8,12 @@
 #include "adhere/law.h"
 #include "adhere/observe.h"
 
-/* <a, W a> in the area-weighted inner product. */
-static double quadratic(adh_visco *w, const double *a)
+/* <a, W a> in the area-weighted inner product (w->tmp2 its scratch): the
+ * elastic energies here, the viscous dissipation of the IDAS path and of
+ * the Rothe steps. */
+double adh_visco_energy_norm(adh_visco *w, const double *a)
 {
-    adh_kernel_apply(w->k, a, w->tmp2, w->scratch);
+    adh_visco_apply(w, a, w->tmp2);
     double e = 0;
     for (size_t i = 0; i < w->n; i++)
         e += w->area[i] * a[i] * w->tmp2[i];
@@ -38,9 +40,9 @@ double adh_visco_energy_of(adh_visco *w, const double *y, double *el, double *su
     double F = adh_visco_force(w, h0), Us = tail_energy(w, h0);
     for (size_t i = 0; i < w->n; i++)
         Us += w->area[i] * adh_lj_energy(w->h[i], w->m.A, w->m.z0);
-    double Ue = 0.5 * w->cinf * quadratic(w, w->p);
+    double Ue = 0.5 * w->cinf * adh_visco_energy_norm(w, w->p);
     if (w->cdel > 0)
-        Ue += 0.5 * w->cdel * quadratic(w, y + w->IQ);
+        Ue += 0.5 * w->cdel * adh_visco_energy_norm(w, y + w->IQ);
     double Uk = w->spring ? F * F / (2.0 * w->dr.spring) : 0;
     if (el)
         *el = Ue;

@@ -119,11 +119,7 @@ static double dissipation(adh_visco *w, const double *p, const double *q)
         return 0;
     for (size_t i = 0; i < w->n; i++)
         R->tmp[i] = p[i] - q[i];
-    adh_visco_apply(w, R->tmp, R->e);
-    double s = 0;
-    for (size_t i = 0; i < w->n; i++)
-        s += w->area[i] * R->tmp[i] * R->e[i];
-    return w->cdel / w->v.tau * s;
+    return w->cdel / w->v.tau * adh_visco_energy_norm(w, R->tmp);
 }
 
 int adh_visco_rothe_reset(adh_visco *w, const double *y)
