@@ -24,14 +24,50 @@ static const struct {
     { ADH_FIX_FORCE, "--force", "grid.force" },
 };
 #define NFLAGS (sizeof keys / sizeof keys[0])
+#define ELLIPSIS "\xe2\x80\xa6"   /* U+2026, where a name or a list is cut */
 
-/* Appends text to list (of len, holding *n bytes), cut at its end. */
+/* Appends text to list (of len, holding *n bytes), cut at its end; *n
+ * counts what the whole would take, so a caller sees a list that did not fit. */
 static void add(char *list, size_t len, size_t *n, const char *sep, const char *text)
 {
-    if (*n + 1 < len) {
-        int w = snprintf(list + *n, len - *n, "%s%s", *n ? sep : "", text);
-        *n += w < 0 ? 0 : (size_t)w < len - *n ? (size_t)w : len - *n - 1;
+    const char *s = *n ? sep : "";
+    if (*n + 1 < len)
+        snprintf(list + *n, len - *n, "%s%s", s, text);
+    *n += strlen(s) + strlen(text);
+}
+
+void cli_advice_path(const char *path, size_t max, char *buf, size_t len)
+{
+    size_t n = strlen(path), ell = sizeof ELLIPSIS - 1;
+    if (n <= max || max < ell + 2) {
+        snprintf(buf, len, "%s", path);
+        return;
     }
+    /* the file's name at the end is what a reader looks for: a third before, the rest after */
+    size_t head = (max - ell) / 3, tail = max - ell - head;
+    while (head > 0 && ((unsigned char)path[head] & 0xC0) == 0x80)   /* not inside a UTF-8 character */
+        head--;
+    const char *end = path + n - tail;
+    while (*end && ((unsigned char)*end & 0xC0) == 0x80)
+        end++;
+    size_t t = strlen(end);
+    if (len > head + ell + t) {   /* buf holds max bytes and its end */
+        memcpy(buf, path, head);
+        memcpy(buf + head, ELLIPSIS, ell);
+        memcpy(buf + head + ell, end, t + 1);
+    } else if (len) {
+        buf[0] = '\0';
+    }
+}
+
+void cli_advice_cat(char *buf, size_t len, const char *text)
+{
+    size_t n = strnlen(buf, len), t = strlen(text);
+    if (n + 1 >= len)
+        return;
+    t = t < len - n - 1 ? t : len - n - 1;
+    memcpy(buf + n, text, t);
+    buf[n + t] = '\0';
 }
 
 static int from_scene(int origin)
@@ -92,11 +128,16 @@ void cli_advice_key(const adh_config *cfg, unsigned voice_bits, unsigned bit, co
         return;
     }
     int n = snprintf(buf, len, "%s%s%s", word, value ? " = " : "", value ? value : "");
-    if (n >= 0 && (size_t)n < len && from_scene(origin) && cfg->scene[0]) {
+    if (n >= 0 && (size_t)n + 32 < len && from_scene(origin) && cfg->scene[0]) {
+        char place[PATH_MAX], line[32] = "";   /* the name whole, or cut in its middle to the room left */
+        cli_advice_path(cfg->scene, len - (size_t)n - 32, place, sizeof place);
         if (origin > 0)
-            snprintf(buf + n, len - (size_t)n, " (%.1000s:%d)", cfg->scene, origin);
-        else
-            snprintf(buf + n, len - (size_t)n, " (%.1000s)", cfg->scene);
+            snprintf(line, sizeof line, ":%d", origin);
+        size_t p = strlen(place), l = strlen(line);
+        memcpy(buf + n, " (", 2);
+        memcpy(buf + n + 2, place, p);
+        memcpy(buf + n + 2 + p, line, l);
+        memcpy(buf + n + 2 + p + l, ")", 2);
     }
 }
 
@@ -127,12 +168,16 @@ static int names_file(const char *sentence, const char *scene)
 /* The list's word for the i-th key after sentence: the flag, or the
  * scene's key with where it was written ("nodes at a.scene:3", "spacing
  * at line 4"), or its name alone where the sentence says where ("start",
- * after "start = 400pm (a.scene:6)": a scene's key is one a line). */
-static void list_word(const adh_config *cfg, size_t i, int voice, const char *sentence, int *file_named, char *buf,
-                      size_t len)
+ * after "start = 400pm (a.scene:6)": a scene's key is one a line). The
+ * scene's name is cut in its middle to max bytes (cli_advice_path). */
+static void list_word(const adh_config *cfg, size_t i, int voice, const char *sentence, size_t max, int *file_named,
+                      char *buf, size_t len)
 {
     int origin;
     const char *word = scene_word(cfg, i, voice, &origin);
+    char place[PATH_MAX];
+    if (word && cfg->scene[0])
+        cli_advice_path(cfg->scene, max, place, sizeof place);
     if (!word)
         flag_word(cfg, i, NULL, buf, len);
     else if (!from_scene(origin) || !cfg->scene[0] || names_place(sentence, cfg->scene, origin > 0 ? origin : 0))
@@ -140,16 +185,20 @@ static void list_word(const adh_config *cfg, size_t i, int voice, const char *se
     else if (origin > 0 && *file_named)
         snprintf(buf, len, "%s at line %d", word, origin);
     else if (origin > 0)
-        snprintf(buf, len, "%s at %.1000s:%d", word, cfg->scene, origin);
+        snprintf(buf, len, "%s at %s:%d", word, place, origin);
     else
-        snprintf(buf, len, "%s in %.1000s", word, cfg->scene);
+        snprintf(buf, len, "%s in %s", word, place);
     *file_named |= word && from_scene(origin) && cfg->scene[0];
 }
 
-void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen, unsigned fix)
+/* The list for fix after why into list (len), the scene's name cut to
+ * max bytes; returns the length the whole list takes. */
+static size_t advice_list(const adh_config *cfg, cli_advice_for who, const char *why, unsigned fix, size_t max,
+                          char *list, size_t len)
 {
-    char list[1200] = "", word[1100];
+    char word[PATH_MAX + 64];
     size_t n = 0;
+    list[0] = '\0';
     /* a fit sets its one turn itself, below the data: --turn would be
      * overwritten, and is no advice */
     unsigned turn = who == CLI_ADVICE_FIT ? fix & ADH_FIX_TURNS : 0;
@@ -162,12 +211,37 @@ void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why,
             if (keys[i].bit & nodes)
                 snprintf(word, sizeof word, "--cost-nodes");
             else
-                list_word(cfg, i, voice, why, &file_named, word, sizeof word);
-            add(list, sizeof list, &n, ", ", word);
+                list_word(cfg, i, voice, why, max, &file_named, word, sizeof word);
+            add(list, len, &n, ", ", word);
         }
     if (turn)
-        add(list, sizeof list, &n, "; ", "the turn is the fit's, a step below the deepest position in --data");
-    size_t len = strlen(why);
-    if (n && len + n + 4 <= whylen)
-        snprintf(why + len, whylen - len, " (%s)", list);
+        add(list, len, &n, "; ", "the turn is the fit's, a step below the deepest position in --data");
+    return n;
+}
+
+void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen, unsigned fix)
+{
+    char list[CLI_ADVICE_LEN];
+    size_t len = strlen(why), max = PATH_MAX, ell = sizeof ELLIPSIS - 1;
+    if (len + 4 + ell >= whylen)   /* no room for " (…)": the sentence itself was cut */
+        return;
+    size_t room = whylen - len - 4 < sizeof list - 1 ? whylen - len - 4 : sizeof list - 1;
+    size_t n = advice_list(cfg, who, why, fix, max, list, sizeof list);
+    /* too long for why: the scene's name cut in its middle, shorter until the list fits */
+    while (n > room && max > 16 && cfg && cfg->scene[0]) {
+        max = n - room < max - 16 ? max - (n - room) : 16;
+        n = advice_list(cfg, who, why, fix, max, list, sizeof list);
+    }
+    if (!n)
+        return;
+    if (n > room) {   /* still too long: its end cut where it is seen, never dropped */
+        size_t keep = room - ell;
+        while (keep > 0 && ((unsigned char)list[keep] & 0xC0) == 0x80)
+            keep--;
+        snprintf(list + keep, sizeof list - keep, ELLIPSIS);
+    }
+    size_t k = strlen(list);   /* k + 4 <= whylen - len: room checked above */
+    memcpy(why + len, " (", 2);
+    memcpy(why + len + 2, list, k);
+    memcpy(why + len + 2 + k, ")", 2);
 }

@@ -14,7 +14,7 @@
 typedef enum { CLI_ADVICE_RUN, CLI_ADVICE_FIT, CLI_ADVICE_COST } cli_advice_for;
 
 /* Appends the settings of the bits in fix to the sentence in why, as
- * " (--turn, -R)"; nothing for 0 (or when they do not fit). For who (a
+ * " (--turn, -R)"; nothing for 0. For who (a
  * fit's turn is named as its data's: " (-R; the turn
  * is the fit's, a step below the deepest position in --data)"; a --cost
  * run's N as --cost-nodes), in the words each key was given in (cfg NULL:
@@ -26,6 +26,20 @@ typedef enum { CLI_ADVICE_RUN, CLI_ADVICE_FIT, CLI_ADVICE_COST } cli_advice_for;
  * alone (or none was, and the sentence placed a key in the scene), else
  * as a flag (as cli_options_words says a sentence). */
 void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen, unsigned fix);
+/* The room a sentence and its advice take whole: a core's sentence, a
+ * scene's name (PATH_MAX) and the keys' words. Where why has less room,
+ * cli_advice_append_cfg cuts the scene's name in its middle ("…") until
+ * the list fits, and the list's end (with "…") only when even that does
+ * not: the advice is never dropped for want of room. */
+#define CLI_ADVICE_LEN (PATH_MAX + 1024)
+/* path into buf (len), whole when it has at most max bytes, else cut in
+ * its middle to max bytes: "/home/…/runs/a.scene" (a third before "…",
+ * the rest after it: the file's own name is kept). */
+void cli_advice_path(const char *path, size_t max, char *buf, size_t len);
+/* Appends text to the string in buf (len), as much as fits: for texts
+ * longer than one printf conversion may portably write (4095 bytes), a
+ * sentence with a scene's name whole in it. */
+void cli_advice_cat(char *buf, size_t len, const char *text);
 /* The key of one ADH_FIX_* bit in a sentence, with value (NULL: none), in
  * the voice of voice_bits: "--spacing=1.5nm", or "spacing = 1.5nm
  * (a.scene:4)" where the scene set it, "spacing = 1.5nm" where nobody did

@@ -465,7 +465,9 @@ static const char *cost_note(const cost_run *r, char *buf, size_t len)
         return r->unconverged ? "  (some steps at the cap)" : "";
     if (r->status == ADH_CONTINUE)
         return "  (interrupted)";
-    snprintf(buf, len, "  (failed%s%s)", r->reason[0] ? ": " : "", r->reason);
+    snprintf(buf, len, "  (failed%s", r->reason[0] ? ": " : "");
+    cli_advice_cat(buf, len, r->reason);
+    cli_advice_cat(buf, len, ")");
     return buf;
 }
 

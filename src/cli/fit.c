@@ -35,7 +35,7 @@ typedef struct fit_run {
     size_t nodes;
     size_t evals;             /* over every fit */
     double t0;
-    char note[1200];          /* the scene's keys the fit ignores, said as it starts; "" none */
+    char note[PATH_MAX + 1200]; /* the scene's keys the fit ignores, said as it starts; "" none */
 } fit_run;
 
 static int parse_free(const char *text, unsigned *mask, char *why, size_t whylen)

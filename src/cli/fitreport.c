@@ -55,8 +55,9 @@ const char *cli_fit_model_stop(const adh_config *cfg, const adh_fit_result *res,
     unsigned grid = ADH_FIX_NODES | ADH_FIX_SPACING | ADH_FIX_GRID_RADIUS | ADH_FIX_FINE_BAND | ADH_FIX_FORCE;
     char reason[CLI_TABLES_REASON_LEN];
     cli_tables_reason(cfg, res->model_why, res->model_fix & grid, reason, sizeof reason);
-    snprintf(buf, len, "%s%s%s%s", adh_strerror(res->model_status), *reason ? ": " : "", reason,
-             *reason && res->model_fix & ADH_FIX_MODE && !relax_model ? " (--model=relax)" : "");
+    snprintf(buf, len, "%s%s", adh_strerror(res->model_status), *reason ? ": " : "");
+    cli_advice_cat(buf, len, reason);
+    cli_advice_cat(buf, len, *reason && res->model_fix & ADH_FIX_MODE && !relax_model ? " (--model=relax)" : "");
     return buf;
 }
 

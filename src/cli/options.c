@@ -853,13 +853,13 @@ static int validate_grid(const adh_config *cfg, const adh_run_spec *run, cli_adv
     if (!gr.resolved && !run->grid.force) {
         /* the spacing in the words the grid was given in (N's or the
          * spacing's: a scene's, or a flag's) */
-        char spacing[1200];
+        char spacing[PATH_MAX + 64];
         cli_advice_key(cfg, ADH_FIX_NODES | ADH_FIX_SPACING, ADH_FIX_SPACING, adh_qtext_arg(gr.max_spacing, ADH_Q_LENGTH).s,
                        spacing, sizeof spacing);
         adh_grid_unresolved_sentence(&gr, why, whylen);
-        size_t len = strlen(why);
-        snprintf(why + len, whylen - len, "; use %s or more nodes over the same radius, or --force to run it anyway (marked resolved 0)",
-                 spacing);
+        cli_advice_cat(why, whylen, "; use ");
+        cli_advice_cat(why, whylen, spacing);
+        cli_advice_cat(why, whylen, " or more nodes over the same radius, or --force to run it anyway (marked resolved 0)");
         return 2;
     }
     return 0;

@@ -46,7 +46,7 @@ const char *cli_tables_verdict(const adh_run_spec *c, const adh_run *r);
 const char *cli_tables_summary_word(const cli_tables *t);
 /* A reason's room: the core's sentence (400 bytes) and the advice after
  * it (a scene's keys with its file and line) whole; and a "STATUS: REASON". */
-#define CLI_TABLES_REASON_LEN 1700
+#define CLI_TABLES_REASON_LEN (PATH_MAX + 1700)
 #define CLI_TABLES_STOPPED_LEN (CLI_TABLES_REASON_LEN + 100)
 /* Why run r stopped on an error, as summary.tsv's stop_reason, sweep.tsv's
  * status column and the stderr line say it: the core's sentence and what

@@ -401,7 +401,7 @@ static void draw_point_rows(const adh_obs *o, int rigid_ref, const tui_view *v, 
  * in bold at y: 1 when one was shown. */
 static int put_stopped(const tui_sim *s, int y, int x, int w, const char *what)
 {
-    char msg[1200], reason[600];
+    char msg[TUI_SIM_WHY_LEN + 64], reason[600];
     int stopped = s->cstatus != ADH_CONTINUE && s->cstatus != ADH_SUCCESS;
     if (stopped)
         snprintf(msg, sizeof msg, "! the %s stopped: %s%s%s (x starts it again)", what, adh_strerror(s->cstatus),
@@ -593,7 +593,7 @@ static void draw_state(const tui_sim *s, const tui_view *v, int y, int x, int w)
     else if (bad)
         put(y + 10, x, w, A_BOLD, "  ! %zu step%s on this path did not converge", bad, bad == 1 ? "" : "s");
     else if (s->gridwarn[0]) {
-        char msg[600];
+        char msg[TUI_SIM_WHY_LEN + 4];
         snprintf(msg, sizeof msg, "! %s", s->gridwarn);
         put_wrapped(y + 10, x + 2, w - 2, 2, A_BOLD, msg);
     }

@@ -376,7 +376,7 @@ static int start_check(tui_sim *s, char *why, size_t whylen, unsigned *fix)
 
 static int params_check(tui_sim *s, char *why, size_t whylen)
 {
-    char msg[512];
+    char msg[TUI_SIM_WHY_LEN];   /* a sweep's run (256) before a start's sentence (1024), whole */
     unsigned fix = 0;
     int rc = check_words(s, msg, sizeof msg, &fix);
     if (rc == ADH_SUCCESS && adh_config_time_check(&s->cfg, spec(s), msg, sizeof msg) != 0)

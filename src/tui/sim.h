@@ -50,6 +50,10 @@
 #include "adhere/visco.h"
 #include "scene/config.h"
 
+/* A check's sentence on the screen whole: "sweep run N (its values): "
+ * (up to 256 bytes of values) before the core's sentence (up to 1024). */
+#define TUI_SIM_WHY_LEN 1536
+
 /* The panel's fields, in panel order: each edits one key of the
  * configuration (adh_config_set). */
 typedef enum tui_param {
@@ -134,7 +138,7 @@ typedef struct tui_sim {
     double target;             /* static mode: the point's h0 */
     double t0;
     char warn[256];            /* about the last step; "" when fine */
-    char gridwarn[512];        /* why the grid may not hold the run to the turn; "" */
+    char gridwarn[TUI_SIM_WHY_LEN]; /* why the grid may not hold the run to the turn; "" */
     adh_grid_report gridres;   /* the core's resolution check of the grid (Derived panel) */
 
     /* static mode: the equilibrium curve */
