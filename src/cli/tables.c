@@ -150,8 +150,8 @@ const char *cli_tables_stop_reason(const adh_config *cfg, const adh_run *r, char
 const char *cli_tables_stopped(const adh_config *cfg, const adh_run *r, int status, char *buf, size_t len)
 {
     char reason[CLI_TABLES_REASON_LEN];
-    snprintf(buf, len, "%s%s%s", adh_strerror(status),
-             *cli_tables_stop_reason(cfg, r, reason, sizeof reason) ? ": " : "", reason);
+    snprintf(buf, len, "%s%s", adh_strerror(status), *cli_tables_stop_reason(cfg, r, reason, sizeof reason) ? ": " : "");
+    cli_advice_cat(buf, len, reason);
     return buf;
 }
 

@@ -132,5 +132,53 @@ int main(void)
        "the fit's report names the scene's grid keys (%s)", stopped);
     cli_fit_model_stop(&byflag, &res, 0, stopped, sizeof stopped);
     ok(strstr(stopped, EDGE " (-N, --spacing)"), "... and a flag user's flags (%s)", stopped);
+
+    /* a scene 1.3 KB deep in directories: summary.tsv's reason names its
+     * keys with the file whole (the advice was dropped whole: its list
+     * held 1200 bytes, a word 1100, and the path was cut at 1000) */
+    static char deep[PATH_MAX];
+    size_t d = 0;
+    for (int i = 0; i < 5; i++) {
+        deep[d++] = '/';
+        memset(deep + d, 'k' + i, 250);
+        d += 250;
+    }
+    snprintf(deep + d, sizeof deep - d, "/r.scene");
+    adh_config far;
+    adh_config_default(&far);
+    rc = adh_scene_parse_string("[grid]\nnodes = 200\nspacing = 5nm\n", deep, &far, why, sizeof why);
+    snprintf(far.scene, sizeof far.scene, "%s", deep);
+    char want[PATH_MAX + 256], reason[CLI_TABLES_REASON_LEN];
+    snprintf(want, sizeof want, EDGE " (nodes at %s:2, spacing at line 3)", deep);
+    cli_tables_stop_reason(&far, &r, reason, sizeof reason);
+    ok(rc == 0 && !strcmp(reason, want), "a deep scene's reason: the sentence and its advice whole (%zu bytes of %zu)",
+       strlen(reason), strlen(want));
+    summary_reason(&far, &r, line, sizeof line);
+    ok(!strncmp(line, "stop_reason\t", 12) && !strncmp(line + 12, want, strlen(want)) && line[12 + strlen(want)] == '\n',
+       "... and summary.tsv's stop_reason says it whole");
+
+    /* where the caller's room is short the scene's name is cut in its
+     * middle ("…"), the file's own name and the lines kept; never the
+     * advice dropped */
+    char small[600];
+    cli_tables_stop_reason(&far, &r, small, sizeof small);
+    const char *head = " (nodes at /kkkk", *end = "oooo/r.scene:2, spacing at line 3)";
+    size_t sn = strlen(small);
+    ok(!strncmp(small, EDGE, strlen(EDGE)) && !strncmp(small + strlen(EDGE), head, strlen(head)) &&
+       strstr(small, "\xe2\x80\xa6") && sn > strlen(end) && !strcmp(small + sn - strlen(end), end) &&
+       sn < sizeof small,
+       "a short room: the path cut in its middle, the advice kept (%s)", small);
+    /* a room too short for even the cut name: the list's end cut, seen */
+    char tiny[sizeof EDGE + 24];
+    cli_tables_stop_reason(&far, &r, tiny, sizeof tiny);
+    ok(!strncmp(tiny, EDGE " (nodes at ", strlen(EDGE) + 11) && strstr(tiny, "\xe2\x80\xa6)"),
+       "a tiny room: the advice begun and cut where it shows (%s)", tiny);
+    /* the path cut alone: at most max bytes, its end kept, whole below max */
+    char cut[64];
+    cli_advice_path(deep, 40, cut, sizeof cut);
+    ok(strlen(cut) == 40 && !strncmp(cut, "/kkkkkkkkkk", 11) && !strcmp(cut + 40 - 8, "/r.scene"),
+       "cli_advice_path cuts a long path's middle (%s)", cut);
+    cli_advice_path("a/b.scene", 40, cut, sizeof cut);
+    ok(!strcmp(cut, "a/b.scene"), "... and leaves a short one whole (%s)", cut);
     return tap_done();
 }
