@@ -235,6 +235,10 @@ deep="$TMP/$(printf 'k%.0s' $(seq 1 250))/$(printf 'l%.0s' $(seq 1 250))/$(print
 deep="$deep/$(printf 'n%.0s' $(seq 1 250))/$(printf 'o%.0s' $(seq 1 250))"
 mkdir -p "$deep" && cp "$TMP/r.scene" "$deep/r.scene"
 bad "^adhere: $deep/r.scene:2: unknown key 'R' in \\[protocol\\]: did you mean 'R' in \\[material\\]?" "$deep/r.scene"
+# ... and a refusal's advice names the deep scene's key with its file whole
+# (the advice cut the path at 1000 bytes: its file's name and line lost)
+printf '[material]\nR = 100nm\n' >"$deep/d.scene"
+bad "^adhere: turning point .* is too deep: .*; give a shallower turn or a larger R (turns, R at $deep/d.scene:2)\$" "$deep/d.scene"
 
 # An output path that cannot be a directory.
 touch "$TMP/afile"
