@@ -128,6 +128,15 @@ int adh_static_set_gap(adh_static *w, const double *e)
     return ADH_SUCCESS;
 }
 
+/* The undeformed gap less h0 at each node, r^2/2R and the extra gap e
+ * (NULL: none), for the material set in w->m. */
+void static_shape(adh_static *w, const double *e)
+{
+    const double *r = w->grid->r;
+    for (size_t i = 0; i < w->n; i++)
+        w->shape[i] = r[i] * r[i] / (2.0 * w->m.R) + (e ? e[i] : 0.0);
+}
+
 double static_metric_dot(const adh_static *w, const double *au, double ah, const double *bu, double bh)
 {
     double d = 0;
@@ -334,8 +343,7 @@ int adh_static_set(adh_static *w, const adh_material *m, const adh_static_settin
     if (!(w->s.h0_start > w->s.h0_end))
         return ADH_EINVAL;
     w->c2E = 2.0 / m->E;
-    for (size_t i = 0; i < n; i++)
-        w->shape[i] = w->grid->r[i] * w->grid->r[i] / (2.0 * m->R) + (w->extra ? w->extra[i] : 0.0);
+    static_shape(w, w->extra);
     reset(w);
     w->past_on = w->past_lost = 0;
     int rc = start(w, NULL);

@@ -153,6 +153,7 @@ void static_predict(adh_static *w, double ds, int fix, double h0_fix);
 int static_correct(adh_static *w, const static_row *row, size_t *iters);
 
 /* static.c */
+void static_shape(adh_static *w, const double *e);
 double static_metric_dot(const adh_static *w, const double *au, double ah, const double *bu, double bh);
 void static_secant(adh_static *w, double *su, double *sh);
 void static_accept(adh_static *w);

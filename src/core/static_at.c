@@ -17,11 +17,9 @@ int adh_static_solve_at(adh_static *w, double c, const double *e, const double *
     size_t n = w->n;
     if (!(c > 0) || !(tol >= 0))
         return ADH_EINVAL;
-    const double *r = w->grid->r;
     w->c2E = c;
     w->m.E = 2.0 / c;
-    for (size_t i = 0; i < n; i++)
-        w->shape[i] = r[i] * r[i] / (2.0 * w->m.R) + (e ? e[i] : 0.0);
+    static_shape(w, e);
     if (tol > 0)
         w->s.tol = tol;
     memcpy(w->trial->u, v, n * sizeof *v);
