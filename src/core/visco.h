@@ -218,6 +218,9 @@ double adh_visco_tail(const adh_visco *w, double h0, double *slope);
 double adh_visco_uh_length(const adh_visco *w, const double *d);
 /* out = W x (the kernel's product) */
 void adh_visco_apply(adh_visco *w, const double *x, double *out);
+/* e = cdel W q: the gap a frozen (or known) q adds to the elastic problem
+ * at Einf (a jump's landing, a Rothe step) */
+void adh_visco_extra_gap(adh_visco *w, const double *q, double *e);
 /* The preconditioners' q part (cross and flow alike): z_q = r_q / cj, and
  * w->tmp2 = W z_q (zero when c_del is) */
 void adh_visco_psolve_q(adh_visco *w, const double *r, double *z);

@@ -87,6 +87,13 @@ void adh_visco_apply(adh_visco *w, const double *x, double *out)
     adh_kernel_apply(w->k, x, out, w->scratch);
 }
 
+void adh_visco_extra_gap(adh_visco *w, const double *q, double *e)
+{
+    adh_visco_apply(w, q, e);
+    for (size_t i = 0; i < w->n; i++)
+        e[i] *= w->cdel;
+}
+
 void adh_visco_psolve_q(adh_visco *w, const double *r, double *z)
 {
     size_t n = w->n;

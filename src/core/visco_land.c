@@ -67,9 +67,7 @@ int adh_visco_land_static(adh_visco *w, double *y)
         return ADH_ENOMEM;
     if (!w->egap && !(w->egap = malloc(n * sizeof *w->egap)))
         return ADH_ENOMEM;
-    adh_visco_apply(w, w->yfold + w->IQ, w->egap);
-    for (size_t i = 0; i < n; i++)
-        w->egap[i] *= w->cdel;
+    adh_visco_extra_gap(w, w->yfold + w->IQ, w->egap);
     if (adh_static_set_gap(w->stat, w->egap) != ADH_SUCCESS)
         return ADH_ENOMEM;
     double h0f = adh_visco_h0_of(w, w->yfold), below = LAND_BELOW * w->s.tol * w->m.z0;

@@ -263,9 +263,7 @@ static int attempt(adh_visco *w, double tl, double dt, int shortest, double *err
             R->tmp[i] += kq * (R->p0[i] / dt + (R->p0[i] - R->pm[i]) / R->dtm) / (dt + R->dtm);
     }
     c1 -= kq * A;
-    adh_visco_apply(w, R->tmp, R->e);
-    for (size_t i = 0; i < n; i++)
-        R->e[i] *= w->cdel;
+    adh_visco_extra_gap(w, R->tmp, R->e);
     double ceff = w->cinf + w->cdel * c1, h0 = w->seg.b0 + w->seg.bdot * tl;
     double h1 = w->seg.b0 + w->seg.bdot * (tl + dt);
     predict(w, dt, h0, h1);
@@ -435,9 +433,7 @@ int adh_visco_rothe_land_out(adh_visco *w, double *y)
     visco_rothe *R = w->ro;
     size_t n = w->n;
     double h0 = adh_visco_h0_of(w, y);
-    adh_visco_apply(w, y + w->IQ, R->e);
-    for (size_t i = 0; i < n; i++)
-        R->e[i] *= w->cdel;
+    adh_visco_extra_gap(w, y + w->IQ, R->e);
     const adh_state *x = NULL;
     int rc = adh_static_solve_at(w->stat, w->cinf, R->e, R->e, h0, ROTHE_NEWTON_TOL, &x);
     count(w);
