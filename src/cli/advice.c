@@ -60,16 +60,6 @@ void cli_advice_path(const char *path, size_t max, char *buf, size_t len)
     }
 }
 
-void cli_advice_cat(char *buf, size_t len, const char *text)
-{
-    size_t n = strnlen(buf, len), t = strlen(text);
-    if (n + 1 >= len)
-        return;
-    t = t < len - n - 1 ? t : len - n - 1;
-    memcpy(buf + n, text, t);
-    buf[n + t] = '\0';
-}
-
 static int from_scene(int origin)
 {
     return origin == -1 || origin > 0;

@@ -36,10 +36,6 @@ void cli_advice_append_cfg(const adh_config *cfg, cli_advice_for who, char *why,
  * its middle to max bytes: "/home/…/runs/a.scene" (a third before "…",
  * the rest after it: the file's own name is kept). */
 void cli_advice_path(const char *path, size_t max, char *buf, size_t len);
-/* Appends text to the string in buf (len), as much as fits: for texts
- * longer than one printf conversion may portably write (4095 bytes), a
- * sentence with a scene's name whole in it. */
-void cli_advice_cat(char *buf, size_t len, const char *text);
 /* The key of one ADH_FIX_* bit in a sentence, with value (NULL: none), in
  * the voice of voice_bits: "--spacing=1.5nm", or "spacing = 1.5nm
  * (a.scene:4)" where the scene set it, "spacing = 1.5nm" where nobody did

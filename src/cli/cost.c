@@ -23,6 +23,7 @@
 #include "adhere/units.h"
 #include "cli/estimate.h"
 #include "cli/exit.h"
+#include "scene/text.h"
 #include "cli/interrupt.h"
 #include "util/ready.h"
 #include "cli/progress.h"
@@ -466,8 +467,8 @@ static const char *cost_note(const cost_run *r, char *buf, size_t len)
     if (r->status == ADH_CONTINUE)
         return "  (interrupted)";
     snprintf(buf, len, "  (failed%s", r->reason[0] ? ": " : "");
-    cli_advice_cat(buf, len, r->reason);
-    cli_advice_cat(buf, len, ")");
+    adh_text_cat(buf, len, r->reason);
+    adh_text_cat(buf, len, ")");
     return buf;
 }
 

@@ -12,6 +12,7 @@
 #include "cli/tables.h"
 #include "plot/fitplot.h"
 #include "plot/outdir.h"
+#include "scene/text.h"
 
 static const char *const units[ADH_FIT_NPARAM] = { "Pa", "J", "m", "m", "m", "N" };
 static const adh_quantity quantities[ADH_FIT_NPARAM] = { ADH_Q_PRESSURE, ADH_Q_ENERGY, ADH_Q_LENGTH, ADH_Q_LENGTH,
@@ -56,8 +57,8 @@ const char *cli_fit_model_stop(const adh_config *cfg, const adh_fit_result *res,
     char reason[CLI_TABLES_REASON_LEN];
     cli_tables_reason(cfg, res->model_why, res->model_fix & grid, reason, sizeof reason);
     snprintf(buf, len, "%s%s", adh_strerror(res->model_status), *reason ? ": " : "");
-    cli_advice_cat(buf, len, reason);
-    cli_advice_cat(buf, len, *reason && res->model_fix & ADH_FIX_MODE && !relax_model ? " (--model=relax)" : "");
+    adh_text_cat(buf, len, reason);
+    adh_text_cat(buf, len, *reason && res->model_fix & ADH_FIX_MODE && !relax_model ? " (--model=relax)" : "");
     return buf;
 }
 

@@ -16,6 +16,7 @@
 #include "adhere/status.h"
 #include "adhere/units.h"
 #include "cli/advice.h"
+#include "scene/text.h"
 #include "cli/studyrow.h"
 #include "scene/scene.h"
 #include "adhere/run.h"
@@ -857,9 +858,9 @@ static int validate_grid(const adh_config *cfg, const adh_run_spec *run, cli_adv
         cli_advice_key(cfg, ADH_FIX_NODES | ADH_FIX_SPACING, ADH_FIX_SPACING, adh_qtext_arg(gr.max_spacing, ADH_Q_LENGTH).s,
                        spacing, sizeof spacing);
         adh_grid_unresolved_sentence(&gr, why, whylen);
-        cli_advice_cat(why, whylen, "; use ");
-        cli_advice_cat(why, whylen, spacing);
-        cli_advice_cat(why, whylen, " or more nodes over the same radius, or --force to run it anyway (marked resolved 0)");
+        adh_text_cat(why, whylen, "; use ");
+        adh_text_cat(why, whylen, spacing);
+        adh_text_cat(why, whylen, " or more nodes over the same radius, or --force to run it anyway (marked resolved 0)");
         return 2;
     }
     return 0;

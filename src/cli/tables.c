@@ -14,6 +14,7 @@
 #include "adhere/models.h"
 #include "adhere/status.h"
 #include "cli/advice.h"
+#include "scene/text.h"
 
 #define VERSION_LINE "# adhere " ADH_VERSION "\n"
 
@@ -151,7 +152,7 @@ const char *cli_tables_stopped(const adh_config *cfg, const adh_run *r, int stat
 {
     char reason[CLI_TABLES_REASON_LEN];
     snprintf(buf, len, "%s%s", adh_strerror(status), *cli_tables_stop_reason(cfg, r, reason, sizeof reason) ? ": " : "");
-    cli_advice_cat(buf, len, reason);
+    adh_text_cat(buf, len, reason);
     return buf;
 }
 

@@ -22,6 +22,7 @@
 #include "plot/labels.h"
 #include "plot/models.h"
 #include "plot/outdir.h"
+#include "scene/text.h"
 #include "plot/png.h"
 #include "plot/session.h"
 #include "plot/speed.h"
@@ -50,21 +51,6 @@ typedef struct plotter {
     int base_done;            /* force-base.png in place, or skipped with force.png */
     char error[1024];         /* the first gnuplot failure */
 } plotter;
-
-static void append(char *buf, size_t len, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-
-static void append(char *buf, size_t len, const char *fmt, ...)
-{
-    size_t n = strlen(buf);
-    if (n + 1 >= len)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(buf + n, len - n, fmt, ap);
-    va_end(ap);
-}
-
 
 /* A scene title makes a two-line heading, which needs more room above. */
 static int has_title(const plotter *pl)
@@ -172,7 +158,7 @@ static FILE *data_file(plotter *pl, const char *name, char *path, size_t len)
     char why[PATH_MAX + 128];
     FILE *f = adh_session_data(&pl->ses, name, path, len, why, sizeof why);
     if (!f)
-        append(pl->error, sizeof pl->error, "%s%s", *pl->error ? "; " : "", why);
+        adh_text_catf(pl->error, sizeof pl->error, "%s%s", *pl->error ? "; " : "", why);
     return f;
 }
 
@@ -180,7 +166,7 @@ static int data_close(plotter *pl, FILE *f, const char *path)
 {
     int bad = ferror(f);
     if (fclose(f) != 0 || bad) {
-        append(pl->error, sizeof pl->error, "%scannot write %s", *pl->error ? "; " : "", path);
+        adh_text_catf(pl->error, sizeof pl->error, "%scannot write %s", *pl->error ? "; " : "", path);
         return -1;
     }
     return 0;
@@ -271,7 +257,7 @@ static int finish_figure(plotter *pl, const char *name)
             snprintf(pl->error, sizeof pl->error, "%s: %.960s", name, why);
         return -1;
     }
-    append(pl->done, sizeof pl->done, "%s%s", *pl->done ? ", " : "", name);
+    adh_text_catf(pl->done, sizeof pl->done, "%s%s", *pl->done ? ", " : "", name);
     pl->written |= !strcmp(name, "force.png") ? ADH_PLOT_FORCE
                  : !strcmp(name, "profile.png") ? ADH_PLOT_PROFILE : ADH_PLOT_CONTACT;
     return 0;
@@ -788,7 +774,7 @@ static int plot_force(plotter *pl)
     const adh_derived *d = &pl->d;
     if (run->nrows < 2) {
         pl->skipped |= ADH_PLOT_FORCE;
-        append(pl->notes, sizeof pl->notes, "%sforce.png skipped: fewer than 2 rows",
+        adh_text_catf(pl->notes, sizeof pl->notes, "%sforce.png skipped: fewer than 2 rows",
                *pl->notes ? "; " : "");
         return 0;
     }
@@ -854,7 +840,7 @@ static int plot_force_base(plotter *pl)
             snprintf(pl->error, sizeof pl->error, "force-base.png: %.960s", why);
         return -1;
     }
-    append(pl->done, sizeof pl->done, "%sforce-base.png", *pl->done ? ", " : "");
+    adh_text_catf(pl->done, sizeof pl->done, "%sforce-base.png", *pl->done ? ", " : "");
     pl->base_done = 1;
     return 0;
 }
@@ -1017,7 +1003,7 @@ static int plot_profile(plotter *pl)
         goto out;
     if (pf.nsel == 0) {
         pl->skipped |= ADH_PLOT_PROFILE;
-        append(pl->notes, sizeof pl->notes, "%sprofile.png skipped: no profiles stored "
+        adh_text_catf(pl->notes, sizeof pl->notes, "%sprofile.png skipped: no profiles stored "
                "(ask with --profiles=M[,M...])", *pl->notes ? "; " : "");
         rc = 0;
         goto out;
@@ -1210,7 +1196,7 @@ static int contact_range(plotter *pl, double *lo, double *hi)
         }
     if (!(xmax >= xmin)) {
         pl->skipped |= ADH_PLOT_CONTACT;
-        append(pl->notes, sizeof pl->notes, "%scontact.png skipped: never in contact", *pl->notes ? "; " : "");
+        adh_text_catf(pl->notes, sizeof pl->notes, "%scontact.png skipped: never in contact", *pl->notes ? "; " : "");
         return 0;
     }
     double xpad = fmax(0.03 * (xmax - xmin), 2 * fabs(pl->s->step));
@@ -1338,7 +1324,7 @@ out:
 static void add_name(char *buf, size_t len, const char *name)
 {
     if (buf && len)
-        append(buf, len, "%s%s", *buf ? "," : "", name);
+        adh_text_catf(buf, len, "%s%s", *buf ? "," : "", name);
 }
 
 /* The figures asked for that are neither in place nor skipped for lack of

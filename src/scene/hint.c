@@ -4,6 +4,7 @@
  * after a refusal each is tried in the units a screen shows it in, and the
  * ones that would run are named. */
 #include "scene/config.h"
+#include "scene/text.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -83,19 +84,6 @@ void adh_config_note_given(adh_config *c, const char *key, const char *text, con
     snprintf(g->where, sizeof g->where, "%s", where);
 }
 
-/* Appends to out (len bytes), cut at its end. */
-static void cat(char *out, size_t len, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static void cat(char *out, size_t len, const char *fmt, ...)
-{
-    size_t o = strlen(out);
-    if (o + 1 >= len)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(out + o, len - o, fmt, ap);
-    va_end(ap);
-}
-
 /* text with unit after each element ("-5,-2" and "nm": "-5nm,-2nm"); its
  * values as given (in SI) into si, *n of them. 0, or -1 when it does not
  * fit. */
@@ -130,9 +118,9 @@ static void read_as(const adh_given *g, const adh_config_key *k, const double *s
 {
     const char *dot = strchr(g->key, '.');
     out[0] = '\0';
-    cat(out, len, "%s = ", dot ? dot + 1 : g->key);
+    adh_text_catf(out, len, "%s = ", dot ? dot + 1 : g->key);
     for (size_t i = 0; i < n; i++)
-        cat(out, len, "%s%s", i ? ", " : "", adh_qtext(si[i], k->q).s);
+        adh_text_catf(out, len, "%s%s", i ? ", " : "", adh_qtext(si[i], k->q).s);
 }
 
 /* The units of g's key that make c run, as the one who gave it would write
@@ -157,7 +145,7 @@ static int rescues(const adh_config *c, const adh_given *g, const adh_config_key
         *copy = *c;
         if (adh_config_set(copy, g->key, text, why, sizeof why) != 0 || accept(copy, ctx) != 0)
             continue;
-        cat(out, len, "%s%s%s%s", found ? " or " : "", flag ? g->where : dot ? dot + 1 : g->key, flag ? "=" : " = ",
+        adh_text_catf(out, len, "%s%s%s%s", found ? " or " : "", flag ? g->where : dot ? dot + 1 : g->key, flag ? "=" : " = ",
             text);
         found = 1;
     }

@@ -1,5 +1,9 @@
 #include "scene/text.h"
 
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
 /* RFC 3629's well-formed sequences (its table in section 4): the lead
  * byte fixes how many continuation bytes follow and the range of the
  * first, which is where an overlong form (E0 80 80 for U+0000), a
@@ -27,4 +31,25 @@ const char *adh_text_not_utf8(const char *s)
         if ((n = adh_text_utf8_len(s)) == 0)
             return s;
     return 0;
+}
+
+void adh_text_cat(char *buf, size_t len, const char *text)
+{
+    size_t n = strnlen(buf, len), t = strlen(text);
+    if (n + 1 >= len)
+        return;
+    t = t < len - n - 1 ? t : len - n - 1;
+    memcpy(buf + n, text, t);
+    buf[n + t] = '\0';
+}
+
+void adh_text_catf(char *buf, size_t len, const char *fmt, ...)
+{
+    size_t n = strnlen(buf, len);
+    if (n + 1 >= len)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf + n, len - n, fmt, ap);
+    va_end(ap);
 }
