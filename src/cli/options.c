@@ -415,8 +415,13 @@ static int apply(cli_options *cli, const option_doc *o, const char *arg, char *w
             adh_config_note_origin(&cli->cfg, o->key, 0);
             return record(cli, o->key, o->value ? o->value : arg, why, n);
         }
-        cli_options_words(&cli->cfg, msg, words, sizeof words);
-        snprintf(why, n, "--%s: %s", name, words);
+        /* "--nodes=5 is not allowed", not "--nodes: N = 5 nodes is ..." */
+        const char *given = o->value ? o->value : arg, *after = adh_config_opening_after(o->key, msg);
+        cli_options_words(&cli->cfg, after ? after : msg, words, sizeof words);
+        if (after)
+            snprintf(why, n, "--%s=%s%s", name, given, words);
+        else
+            snprintf(why, n, "--%s: %s", name, words);
         return 2;
     }
     switch (o->opt.val) {

@@ -115,3 +115,15 @@ const char *adh_config_key_opening(const adh_config *c, const adh_run_spec *run,
     snprintf(out, len, "%s", in);
     return NULL;
 }
+
+const char *adh_config_opening_after(const char *key, const char *in)
+{
+    for (size_t i = 0; i < NOPENINGS; i++) {
+        size_t h = strlen(openings[i].head), t = strlen(openings[i].tail);
+        const char *v = in + h, *is = strncmp(in, openings[i].head, h) == 0 ? strstr(v, " is ") : NULL;
+        int named = !strcmp(key, openings[i].key) || (openings[i].alt && !strcmp(key, openings[i].alt));
+        if (named && is && (size_t)(is - v) > t && strncmp(is - t, openings[i].tail, t) == 0)
+            return is;
+    }
+    return NULL;
+}

@@ -127,11 +127,16 @@ static int handler(void *user, const char *section, const char *name, const char
     int unload = c->spec.proto.unload;
     if (adh_config_set(c, full, value, msg, sizeof msg) != 0) {
         char words[400];
-        adh_config_reword(msg, say_key, NULL, words, sizeof words);
+        /* "nodes = 5 is not allowed", not "nodes: N = 5 nodes is ..." */
+        const char *after = adh_config_opening_after(full, msg);
+        adh_config_reword(after ? after : msg, say_key, NULL, words, sizeof words);
         /* '#' comments a line only at its start: "E = 1GPa # stiff" read
          * 'GPa # stiff' as the unit */
         const char *hash = strstr(value, " #");
-        return fail(sp, hash ? "%s: %s (a comment after a value starts with ' ;', not '#')" : "%s: %s", name, words);
+        char lead[300];
+        snprintf(lead, sizeof lead, after ? "%s = %s" : "%s:", name, value);
+        return fail(sp, hash ? "%s %s (a comment after a value starts with ' ;', not '#')" : "%s %s", lead,
+                    words + (after && words[0] == ' '));
     }
     adh_config_note_given(c, full, value, sp->file);
     adh_config_note_origin(c, full, line);

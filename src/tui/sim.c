@@ -753,6 +753,20 @@ static void key_value_in_unit(const tui_sim *s, const adh_config_key *k, const c
     }
 }
 
+/* A setter's refusal of text typed for key, shown as name: "N = 5 is not
+ * allowed: ...", not "N: N = 5 nodes is not allowed" (the core names its
+ * quantity), else "name: sentence". */
+static void refused(const char *name, const char *key, const char *text, const char *msg, char *why, size_t whylen)
+{
+    char words[512];
+    const char *after = adh_config_opening_after(key, msg);
+    tui_sim_words(after ? after : msg, words, sizeof words);
+    if (after)
+        snprintf(why, whylen, "%s = %s%s", name, text, words);
+    else
+        snprintf(why, whylen, "%s: %s", name, words);
+}
+
 int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, size_t whylen)
 {
     const adh_config_key *k = adh_config_key_find(key);
@@ -768,9 +782,7 @@ int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, si
     char value[1024];
     key_value_in_unit(s, k, text, value, sizeof value);
     if (adh_config_set(&s->cfg, key, value, msg, sizeof msg) != 0) {
-        char words[512];
-        tui_sim_words(msg, words, sizeof words);
-        snprintf(why, whylen, "%s: %s", key, words);
+        refused(key, key, text, msg, why, whylen);
         return -1;
     }
     return edit_apply(s, &before, key, why, whylen);
@@ -954,10 +966,8 @@ int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t why
         adh_config_set(&s->cfg, "grid.nodes", n, msg, sizeof msg);
     }
     if (adh_config_set(&s->cfg, pi->key, value, msg, sizeof msg) != 0) {
-        char words[512];
         s->cfg.spec = before;
-        tui_sim_words(msg, words, sizeof words);
-        snprintf(why, whylen, "%s: %s", pi->name, words);
+        refused(pi->name, pi->key, text, msg, why, whylen);
         return -1;
     }
     return edit_apply(s, &before, pi->key, why, whylen);

@@ -29,7 +29,7 @@ bad "^adhere: --radius=0nm is out of range" -R 0
 # (100 x 1e-9 rounds to 1.0000000000000001e-7) was refused with 'allowed 1
 # pm to 100 nm'; it now gets as far as R's own check
 bad "R = 10 um is too small for this model" -z 100nm
-bad "N = 5 nodes is not allowed: use 10 to 20000 nodes" -N 5
+bad "^adhere: --nodes=5 is not allowed: use 10 to 20000 nodes$" -N 5
 bad "'1e3' is not allowed: expected a whole number of nodes, 10 to 20000$" --nodes=1e3
 # every count names its range, not only the form ('expected a whole number'
 # said nothing of how many): the iteration cap, the dwell, a scene's key and

@@ -39,13 +39,13 @@ printf '[material]\nmaterial = sls\nE = 0.05GPa\nEinf = 0.1GPa\n' >"$TMP/einf-sw
 # ... the flag's sweep named as it was given, not as -E (which the user never
 # wrote, and which a sweep's run does not take)
 bad "^adhere: sweep run 1 (E = 1e+09): Einf = 100MPa ($TMP/einf-swf.scene:4) is below --sweep=E=1GPa: a standard" "$TMP/einf-swf.scene" --sweep=E=1GPa,2GPa
-bad "Einf = 2e+12 Pa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa" --material=sls --Einf=2TPa
-bad "tau = 0 s is not allowed" --material=sls --tau=0
-bad "tau = -1e-06 s is not allowed" --material=sls --tau=-1us
+bad "--Einf=2TPa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa" --material=sls --Einf=2TPa
+bad "--tau=0 is not allowed" --material=sls --tau=0
+bad "--tau=-1us is not allowed" --material=sls --tau=-1us
 bad "approach speed 0 m/s is not allowed" --material=sls --speed=0
 bad "retraction speed -1e-06 m/s is not allowed" --material=sls --speed=1um/s,-1um/s
-bad "spring k = 0 N/m is not allowed" --mode=static --spring=0
-bad "spring k = -1 N/m is not allowed: it must be from 0.001 to 10000 N/m, or none (displacement control, what a stiffer spring approaches)" --mode=static --spring=-1N/m
+bad "--spring=0 is not allowed" --mode=static --spring=0
+bad "--spring=-1N/m is not allowed: it must be from 0.001 to 10000 N/m, or none (displacement control, what a stiffer spring approaches)" --mode=static --spring=-1N/m
 # tau = 10 fs at 1 um/s (1e-20 m of travel) stopped the integrator: refused, the relaxed limit named
 bad "speed = 1e-20 m is below 1e-18 m: the solid relaxes before the drive moves a billionth of z0" visco --tau=1e-14
 bad "tau x speed = 9.9e-19 m is below 1e-18 m" visco --tau=0.99ps
@@ -55,8 +55,8 @@ rc=$?
 check "tau x speed at the limit, 1 ps x 1 um/s: runs (exit $rc: $(grep -v 'warning: grid spacing' "$TMP/stderr" | head -c 300))" \
     sh -c "[ $rc -eq 0 ] && grep -q '^status	unresolved' '$TMP/taulim/summary.tsv'"
 # 1e-12 N/m ran the static curve for minutes deaf to signals; 1e5 N/m stopped physical time
-bad "spring k = 1e-12 N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e-12N/m
-bad "spring k = 100000 N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e5N/m
+bad "--spring=1e-12N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e-12N/m
+bad "--spring=1e5N/m is not allowed: it must be from 0.001 to 10000 N/m" --mode=static --spring=1e5N/m
 # softer than 1e-3 N/m, runs in time stopped (4 of 6 at 1e-4 and 3e-4 N/m): refused, the reason named
 bad "a softer one would hold the sphere's position only to the force's tolerance over k" --material=sls --spring=1e-4N/m
 bad "'2GPa' is a pressure" --material=sls --tau=2GPa

@@ -125,6 +125,17 @@ bad 3 "mixing: 'fast' is not a mixing rule: use paper or momentum" <<'S'
 eps = 1pm
 mixing = fast
 S
+# a core check's refusal names the key as written, once: "nodes = 5 is not
+# allowed", not "nodes: N = 5 nodes is not allowed"
+bad 2 ":2: nodes = 5 is not allowed: use 10 to 20000 nodes" <<'S'
+[grid]
+nodes = 5
+S
+bad 3 ":3: tau = -1 s is not allowed: the relaxation time must be above 0" <<'S'
+[material]
+material = sls
+tau = -1 s
+S
 bad 2 "momentum: '1' is not allowed: a number from 0 to below 1" <<'S'
 [solver]
 momentum = 1
