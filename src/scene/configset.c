@@ -3,6 +3,7 @@
  * fields and :set all come here, so a value means the same and is refused
  * with the same sentence whichever way it is given. */
 #include "scene/config.h"
+#include "scene/text.h"
 
 #include <limits.h>
 #include <math.h>
@@ -62,14 +63,19 @@ static int set_quantity(adh_config *c, const key_def *k, const char *text, char 
     return 0;
 }
 
-/* A quantity, or auto: the automatic value (NAN). */
+/* A quantity, or auto: the automatic value (NAN). A refusal says auto is
+ * allowed too. */
 static int set_quantity_auto(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
 {
     if (strcasecmp(text, "auto") == 0) {
         *dbl(c, k) = NAN;
         return 0;
     }
-    return set_quantity(c, k, text, why, whylen);
+    if (set_quantity(c, k, text, why, whylen) != 0) {
+        adh_text_cat(why, whylen, ", or auto");
+        return -1;
+    }
+    return 0;
 }
 
 /* A length above 0, or auto: a graded grid's band and radius (how they fit
@@ -558,8 +564,11 @@ static int set_time_quantity(adh_config *c, const key_def *k, const char *text, 
         v = NAN;
     else if (!strcmp(name, "spring") && strcasecmp(text, "none") == 0)
         v = INFINITY;
-    else if (adh_parse_quantity(text, k->pub.q, &v, why, whylen) != 0 || !time_value_ok(name, v, why, whylen))
+    else if (adh_parse_quantity(text, k->pub.q, &v, why, whylen) != 0 || !time_value_ok(name, v, why, whylen)) {
+        if (!strcmp(name, "Einf"))
+            adh_text_cat(why, whylen, ", or auto (10 E0)");
         return -1;
+    }
     *dbl(c, k) = v;
     c->spec.time.given |= time_bit(name);
     return 0;

@@ -95,7 +95,7 @@ bad "--grid-radius: '0' is not allowed: use a length above 0" --grid-radius=0
 bad "--operator: 'sparse' is not an operator: use dense, hmat or h2" --operator=sparse
 bad "out of the range of finite numbers" -E 1e999
 # below a double's range: an underflow, not out of range; a unit's factor too
-bad "'1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.23e-308 m$" --start=1e-400m
+bad "'1e-400m' underflows to zero (a double keeps no magnitude below 2.2e-308 m): write 0 for zero, or a magnitude of at least 2.23e-308 m, or auto$" --start=1e-400m
 bad "'1e-300pm' underflows (a double keeps no magnitude below 2.2e-308 m)" --start=1e-300pm
 # a number below a double's range before its unit but not after: the
 # modulus's own range, not the double's least magnitude (1e-301 Pa is far

@@ -39,7 +39,8 @@ printf '[material]\nmaterial = sls\nE = 0.05GPa\nEinf = 0.1GPa\n' >"$TMP/einf-sw
 # ... the flag's sweep named as it was given, not as -E (which the user never
 # wrote, and which a sweep's run does not take)
 bad "^adhere: sweep run 1 (E = 1e+09): Einf = 100MPa ($TMP/einf-swf.scene:4) is below --sweep=E=1GPa: a standard" "$TMP/einf-swf.scene" --sweep=E=1GPa,2GPa
-bad "--Einf=2TPa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa" --material=sls --Einf=2TPa
+bad "--Einf=2TPa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa, or auto (10 E0)" --material=sls --Einf=2TPa
+bad "^adhere: --spacing: 'abc' is not a number; expected a length (m, nm, um, ...), or auto$" --spacing=abc
 bad "--tau=0 is not allowed" --material=sls --tau=0
 bad "--tau=-1us is not allowed" --material=sls --tau=-1us
 bad "approach speed 0 m/s is not allowed" --material=sls --speed=0
