@@ -238,6 +238,10 @@ int adh_visco_last(const adh_visco *w);
 /* Why the run stopped, when it stopped on an error (the integrator's own
  * words for ADH_ESTALL); "" otherwise. */
 const char *adh_visco_why(const adh_visco *w);
+/* The ADH_FIX_* bits (adhere/status.h) of what may get past that stop:
+ * ADH_FIX_SPACING | ADH_FIX_NODES where the contact line's lattice folds
+ * stopped it on a grid coarser than the one that resolves them; else 0. */
+unsigned adh_visco_fix(const adh_visco *w);
 
 /* The current state (borrowed), time and base. */
 const adh_state *adh_visco_state(const adh_visco *w);

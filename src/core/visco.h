@@ -171,7 +171,8 @@ struct adh_visco {
                             branch's first, from its turn's snapshot) */
     int finishing;       /* the next call ends the run */
     int done, status;
-    char errmsg[320];    /* why the run stopped (IDAS's last words within) */
+    unsigned fix;        /* ADH_FIX_* bits of what may get past the stop (adh_visco_fix) */
+    char errmsg[400];    /* why the run stopped (IDAS's last words within) */
 };
 
 /* visco_dae.c: IDAS, its callbacks (dispatched by mode), the roots and

@@ -472,4 +472,14 @@ wait "$pid"
 rc=$?
 check "an interrupted run in time: exit 130, force.tsv and events.tsv both say # PARTIAL and name the scene (exit $rc)" \
     sh -c "[ $rc -eq 130 ] && grep -q '^# PARTIAL: interrupted' '$TMP/tint/force.tsv' && grep -q '^# PARTIAL: interrupted' '$TMP/tint/events.tsv' && grep -q '^# scene: .*visco.scene' '$TMP/tint/events.tsv'"
+# A grid coarser than the contact's edge zone (--force) in physical time at
+# E0 = Einf, 1 nm/s: on 5 nm rings (1.054 nm resolve the contact line) its
+# lattice folds stopped the integrator with IDAS's words alone; the stop
+# now names the spacing, the one that resolves them and the flags to change
+# (exit 1, summary.tsv's stop_reason the same). Should it one day run
+# through, it must say it is unresolved (resolved 0).
+"$ADHERE" --batch -q --no-plot -o "$TMP/tlat" visco --Einf=0.3GPa --speed=1nm/s -N 300 --force 2>"$TMP/stderr"
+rc=$?
+check "an unresolved grid's lattice folds in time: a stop that names the spacing and the grid that resolves them, or a run marked unresolved (exit $rc: $(head -c 400 "$TMP/stderr"))" \
+    sh -c "if [ $rc -eq 0 ]; then grep -qx 'resolved	0' '$TMP/tlat/summary.tsv'; else [ $rc -eq 1 ] && grep -q \"lattice folds stopped the integrator at t = .* on a grid of spacing 5 nm, coarser than the 1.054 nm that resolves them .*(-N, --spacing)\$\" '$TMP/stderr' && grep -q '^stop_reason	the contact line.s lattice folds' '$TMP/tlat/summary.tsv'; fi"
 done_testing
