@@ -462,8 +462,12 @@ static void seg_set(adh_visco *w, int kind, double t0, double b0)
     sg->bdot = kind == SEG_LOAD ? -w->dr.speed_in : kind == SEG_UNLOAD ? w->dr.speed_out : 0;
     /* the metric's speed: the base's, but at least z0 per tau, so that
      * time counts while q relaxes at a standing (or crawling) base: the
-     * path there must not look vertical (t' ~ 0, a fold to the rootfinder) */
-    double vt = w->m.z0 / w->v.tau;
+     * path there must not look vertical (t' ~ 0, a fold to the rootfinder).
+     * An elastic solid (cdel = 0) has no q to relax: a moving base's own
+     * speed, so that its path is the same at every speed (rate-independent,
+     * as it is); with the floor 500 times the base's at 1 nm/s, IDAS's
+     * corrector failed at a lattice fold on 5 nm rings where 1 um/s ran */
+    double vt = w->cdel > 0 || kind == SEG_DWELL ? w->m.z0 / w->v.tau : 0;
     sg->vm = fmax(kind == SEG_LOAD ? w->dr.speed_in : kind == SEG_UNLOAD ? w->dr.speed_out : 0, vt);
     sg->tl_end = w->dr.dwell;
     sg->branch = kind == SEG_LOAD ? +1 : -1;
@@ -536,10 +540,11 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     for (size_t i = 0; i < ps->nturns; i++)
         if (!(w->snap[i].y = malloc(w->len * sizeof *w->snap[i].y)))
             return ADH_ENOMEM;
-    if (!(w->yfold = malloc(6 * w->len * sizeof *w->yfold)))
+    if (!(w->yfold = malloc(8 * w->len * sizeof *w->yfold)))
         return ADH_ENOMEM;
     w->ypfold = w->yfold + w->len, w->ywork = w->ypfold + w->len;
     w->yprev = w->ywork + w->len, w->ypprev = w->yprev + w->len, w->ypflow = w->ypprev + w->len;
+    w->ro_last = w->ypflow + w->len, w->ro_dir = w->ro_last + w->len;
     if ((rc = adh_visco_dae_create(w)) != ADH_SUCCESS)
         return rc;
     double h0 = isnan(ps->start) ? auto_start(w) : ps->start;
@@ -1170,6 +1175,39 @@ static int rothe_pulloff(adh_visco *w)
  * fold. */
 static int land(adh_visco *w, double t0, int crossed);
 
+/* Neither IDAS's tangent at the Rothe steps' last state nor at the one
+ * before: on a coarse grid, next to a pair of the contact line's lattice
+ * folds, Newton's polish there fails. The jump relaxes instead, from the
+ * last state (ylast, its accounts and rows), pushed along the Rothe
+ * steps' own last secant (yb to ylast, scaled to the path's metric: a
+ * tangent's length z0), as a lost crossing relaxes from its fold (pushed
+ * harder where it comes back; a state it comes back to from every push
+ * is stable, and the path goes on from it). */
+static int rothe_relax(adh_visco *w, double *yb, const double *ylast, adh_visco_energy acc_last, size_t rows_last)
+{
+    double *y = N_VGetArrayPointer(w->y), *d = w->ro_dir, len = 0;
+    for (size_t i = 0; i < w->len; i++)
+        d[i] = ylast[i] - yb[i];
+    for (size_t i = 0; i < w->n; i++)
+        len += w->theta * d[i] * d[i];
+    len += w->seg.vm * w->seg.vm * d[w->IT] * d[w->IT];
+    if (!(len > 0))
+        return ADH_ESTALL;
+    len = sqrt(len) / w->m.z0;
+    for (size_t i = 0; i < w->len; i++)
+        d[i] /= len;
+    memcpy(y, ylast, w->len * sizeof *y);
+    w->acc = acc_last;
+    if (w->run->nrows < rows_last)   /* the last state's row, taken back above, is its row again */
+        w->run->nrows = rows_last;
+    load_state(w, y);
+    w->in_contact = contact_radius(w) > 0;
+    w->errmsg[0] = '\0';
+    jump_begin(w);
+    memcpy(w->ypfold, d, w->len * sizeof *d);
+    return start_flow(w);
+}
+
 static int rothe_jump(adh_visco *w, double t0, int *landed)
 {
     double *y = N_VGetArrayPointer(w->y);
@@ -1197,6 +1235,10 @@ static int rothe_jump(adh_visco *w, double t0, int *landed)
     fold_in(w);
     w->rothe_on = 0;
     w->idas_rows = 0;
+    double *ylast = w->ro_last;
+    memcpy(ylast, y, w->len * sizeof *y);
+    adh_visco_energy acc_last = w->acc;
+    size_t rows_last = w->run->nrows;
     int rc = restart_idas(w, w->s_now, y, NULL);
     if (rc != ADH_SUCCESS && rc != ADH_ENOMEM && adh_visco_rothe_back(w, y)) {
         /* too close to the fold for IDAS's tangent: from the step before
@@ -1207,6 +1249,8 @@ static int rothe_jump(adh_visco *w, double t0, int *landed)
         w->in_contact = contact_radius(w) > 0;
         w->errmsg[0] = '\0';
         rc = restart_idas(w, w->s_now, y, NULL);
+        if (rc != ADH_SUCCESS && rc != ADH_ENOMEM && w->in_contact)
+            rc = rothe_relax(w, y, ylast, acc_last, rows_last);
     }
     return rc;
 }

@@ -112,6 +112,7 @@ struct adh_visco {
      * crossing's start y' (or step's secant); its last good point and y';
      * a relaxation's start y' */
     double *yfold, *ypfold, *ywork, *yprev, *ypprev, *ypflow;
+    double *ro_last, *ro_dir; /* a Rothe fold's last state and its secant, where the jump relaxes (rothe_relax) */
     long jump_steps;     /* steps of the crossing so far */
     long retries;        /* its retries (visco.c's cross_retry), with the first
                             and the last step that went backwards: what the
