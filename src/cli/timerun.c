@@ -70,6 +70,9 @@ size_t cli_time_keys(const cli_time_out *o, cli_tables_extra *x)
         { "dissipated", closed ? c->dissipated : NAN },
         { "jump_loss", closed ? c->jumps : NAN },
         { "stored_change", closed ? c->stored - c->stored0 : NAN },
+        /* what the balance leaves: the work less the three, the
+         * integration's error (no term is missing: docs/viscoelastic.md) */
+        { "energy_residual", closed ? r->hysteresis - c->dissipated - c->jumps - (c->stored - c->stored0) : NAN },
         { "time", r->time },
         { "time_steps", (double)r->steps },
         { "jumps", (double)r->jumps },

@@ -360,7 +360,7 @@ static void plan_stored(const adh_config *cfg, const adh_run_spec *s0, adh_plan 
     if (p->time_path)   /* cli/timerun.c's keys besides the run's */
         note(p->stored, &p->nstored, what, "jump_in_h0, pull-off, jump_out_h0, the drive, hysteresis (the jumps' losses), dissipated (0), jump_loss, the times and bases of the jumps and the pull-off, time, the static curve's iterations (time_steps 0)");
     else if (p->time_mode)
-        note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, the solid and the drive, hysteresis, dissipated, jump_loss, stored_change, the times and bases of the jumps and the pull-off, time, the integrator's steps and iterations");
+        note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0, pull-off, jump_out_h0, the solid and the drive, hysteresis, dissipated, jump_loss, stored_change, energy_residual (what the balance leaves), the times and bases of the jumps and the pull-off, time, the integrator's steps and iterations");
     else if (p->static_mode)
         note(p->stored, &p->nstored, what, "sigma, gamma, JKR/DMT, h_star (eq 24's gap), jump_in_h0 and jump_out_h0 "
              "(the curve's folds), pull-off (load- and displacement-controlled), folds, points, Newton iterations, "

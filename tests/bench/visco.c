@@ -102,6 +102,18 @@ static int visco_cycle(const adh_grid *g, const adh_kernel *k, const adh_materia
     return rc;
 }
 
+/* The rest of the cycle's energy balance beside its hysteresis and
+ * dissipated energy, which differ by these (no pair read alone): the
+ * jumps' losses, the energy still stored when the base is back, and what
+ * the balance leaves (the integration's error), as a fraction of the work. */
+static void energy_line(const char *indent, const adh_visco_result *res)
+{
+    const adh_visco_energy *c = &res->cycle;
+    double du = c->stored - c->stored0;
+    printf("%sjump loss %.6g J, stored change %.6g J, energy residual %.2g of the work\n", indent, c->jumps, du,
+           (res->hysteresis - c->dissipated - c->jumps - du) / res->hysteresis);
+}
+
 static int figure4(size_t n)
 {
     adh_material m = adh_material_default();
@@ -136,6 +148,7 @@ static int figure4(size_t n)
                    tv.cpu, tv.cpu / tr.cpu, res.steps, res.jumps, tr.wall, tv.wall, rc || rv ? "  FAILED" : "");
         printf("        pull-off %.6g N, jump-in %.6g m, jump-out %.6g m, hysteresis %.6g J, dissipated %.6g J\n",
                res.pulloff_F, res.jump_in_h0, res.jump_out_h0, res.hysteresis, res.cycle.dissipated);
+        energy_line("        ", &res);
         bad |= rc != ADH_SUCCESS || rv != ADH_SUCCESS;
         adh_kernel_free(k);
     }
@@ -190,6 +203,7 @@ static int soft(double sigma)
            res.newton, res.krylov);
     printf("  pull-off %.6g N, jump-in %.6g m, jump-out %.6g m, hysteresis %.6g J, dissipated %.6g J\n", res.pulloff_F,
            res.jump_in_h0, res.jump_out_h0, res.hysteresis, res.cycle.dissipated);
+    energy_line("  ", &res);
     adh_kernel_free(k);
     adh_grid_free(g);
     return rc != ADH_SUCCESS || rv != ADH_SUCCESS;

@@ -5,9 +5,14 @@
  * from the states, a jump's loss as the stored energy before minus after);
  * within 1 %. With Einf = E0 there is no dissipation, and the work over a
  * cycle is the static curve's hysteresis, the area between its stable
- * branches (adh_cycle_static_hysteresis). */
+ * branches (adh_cycle_static_hysteresis). Far from elastic on a coarse
+ * grid (Einf = 1000 E0, 5 nm rings, no jump): the hysteresis is not the
+ * dissipated energy alone (0.45 % apart) but closes with the energy still
+ * stored when the base is back (stored_change), to the integration's
+ * tolerance. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "adhere/cycle.h"
 #include "tap.h"
@@ -29,8 +34,56 @@ static void closes(const fixture *f, double ratio, adh_visco_drive d, const char
     vrun_free(&v);
 }
 
+/* The brief's cycle: the visco scene's sphere (E0 = 0.3 GPa, R = 10 um,
+ * sigma 7.5) far from elastic, Einf = 1000 E0, on 300 rings of 5 nm (0.7
+ * nodes across its edge zone) at 1 um/s to -5 nm and back, at the
+ * default tolerance and integrator (IDAS, past 10 E0). No jump of either
+ * kind: the work is the dissipated energy plus the stored energy's change,
+ * which the material, retracted within two tau of losing contact, still
+ * holds (0.47 % of the work). Measured: residual 1.8e-4 of the work at
+ * 5e-5, 1.6e-6 at 1.25e-5 (integration, not a missing term). */
+static void far_from_elastic(void)
+{
+    adh_material m = adh_material_default();
+    m.E = 0.3e9;
+    adh_grid *g = adh_grid_alloc(300, 5e-9);
+    adh_kernel *k = g ? adh_kernel_alloc(g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL) : NULL;
+    adh_sls sls = { m.E, 1000 * m.E, 1e-3 };
+    adh_visco_drive d = adh_visco_drive_default();
+    adh_visco_settings s = adh_visco_settings_default();
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.turns[0] = -5e-9;
+    adh_run run;
+    adh_run_init(&run);
+    adh_visco *w = k ? adh_visco_alloc(g, k) : NULL;
+    int rc = w ? adh_visco_set(w, &m, &sls, &d, &s, &ps, &run, NULL, 0) : ADH_ENOMEM;
+    if (rc == ADH_SUCCESS)
+        rc = adh_visco_run(w);
+    adh_visco_result r;
+    memset(&r, 0, sizeof r);
+    if (w)
+        adh_visco_summary(w, &r);
+    const adh_visco_energy *e = &r.cycle;
+    double du = e->stored - e->stored0, res = (e->work - e->dissipated - e->jumps - du) / e->work;
+    printf("# Einf = 1000 E0, 5 nm rings: hysteresis %.6g J, dissipated %.6g, stored change %.4g (%.2g of it), "
+           "jumps %zu + %zu lattice, residual %.2g of the work\n",
+           r.hysteresis, e->dissipated, du, du / e->work, r.jumps, r.lattice_jumps, res);
+    ok(rc == ADH_SUCCESS && r.jumps == 0 && r.lattice_jumps == 0 && e->jumps == 0,
+       "Einf = 1000 E0 on 5 nm rings: the cycle runs, no jump (%s, %zu, %zu)", adh_strerror(rc), r.jumps,
+       r.lattice_jumps);
+    ok(fabs(res) < 1e-3, "... the work is the dissipated energy and the stored energy's change within 1e-3 (%.2g)", res);
+    ok(du / e->work > 2e-3 && fabs(r.hysteresis - e->dissipated) / e->work > 2e-3,
+       "... which differ from the dissipated energy alone by the energy still stored (%.2g, %.2g of the work)",
+       du / e->work, (r.hysteresis - e->dissipated) / e->work);
+    adh_visco_free(w);
+    adh_run_free(&run);
+    adh_kernel_free(k);
+    adh_grid_free(g);
+}
+
 int main(void)
 {
+    far_from_elastic();
     fixture f = fix_open(FIX_N, 1.0);
     adh_visco_drive d = fix_drive(1e-5, 1e-5);
     closes(&f, 10.0, d, "Einf = 10 E0 at 1e-5 m/s (a jump out)");
