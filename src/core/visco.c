@@ -529,6 +529,7 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     memset(w->stat0, 0, sizeof w->stat0);
     memset(&w->res, 0, sizeof w->res);
     w->t_resumed = w->t_stuck = NAN;
+    w->stuck_push = VISCO_NUDGE;
     w->res.jump_in_h0 = w->res.jump_out_h0 = w->res.pulloff_F = NAN;
     w->res.jump_in_t = w->res.jump_in_base = w->res.jump_out_t = w->res.jump_out_base = NAN;
     w->res.pulloff_h0 = w->res.pulloff_t = w->res.pulloff_base = NAN;
@@ -820,11 +821,16 @@ static int fold(adh_visco *w, double t0);
  * second time at the same instant it is stuck. */
 static int path_stuck(adh_visco *w, double t0)
 {
+    /* stuck again at the same instant, after a relaxation that came to
+     * rest next to where it began: pushed ten times harder, up to a
+     * tenth of z0, as a relaxation that comes back is */
+    w->stuck_push = w->t_now == w->t_stuck ? 10 * w->stuck_push : VISCO_NUDGE;
     w->t_stuck = w->t_now;
     load_state(w, N_VGetArrayPointer(w->y));
     int rc = fold(w, t0);
     if (w->done || w->spring)
         return rc;
+    w->nudge = w->stuck_push;
     int brc = start_flow(w);
     return brc == ADH_SUCCESS ? rc : stop(w, brc);
 }
@@ -1350,7 +1356,7 @@ int adh_visco_iterate(adh_visco *w)
                 return stop(w, brc);
             continue;
         }
-        if (flag < 0 && w->mode == MODE_PATH && w->t_now != w->t_stuck) {
+        if (flag < 0 && w->mode == MODE_PATH && (w->t_now != w->t_stuck || (!w->spring && w->stuck_push < VISCO_NUDGE_MAX))) {
             w->s_now = s;
             return path_stuck(w, t0);
         }

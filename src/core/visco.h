@@ -139,6 +139,7 @@ struct adh_visco {
                             that was no fold (resume) */
     double t_stuck;      /* when the integrator last could not follow the path
                             on, and the sphere jumped from there */
+    double stuck_push;   /* the push of the last relaxation from there (path_stuck) */
     int have_prev;       /* a crossing's last good point is kept (yprev) */
     double s_prev;       /* and where it was */
     adh_visco_event pending; /* the jump being crossed: its side before */

@@ -479,10 +479,14 @@ check "an interrupted run in time: exit 130, force.tsv and events.tsv both say #
 # runs through, its pull-off and jump-out the static curve's on the same
 # grid (the elastic path's, 1e-3; measured 6e-7, 4e-11), the energy closing
 # (the work = the jumps' losses, 1 %; measured 0.22 %), marked resolved 0.
-# Einf = 1.1 E0 still stops there: the stop names the spacing, the one that
-# resolves the contact line and the flags to change (exit 1, summary.tsv's
-# stop_reason the same); should it one day run through, it must say it is
-# unresolved.
+# Einf = 1.1 E0 on 150 rings stopped there too (IDAS stuck twice at one
+# instant): it runs through, nearly relaxed at speed x tau = 1 pm (the
+# pull-off the elastic path's at E0, 1e-3; measured 2.7e-4), its energy
+# closing within 2 % (1.0 %; 0.47 % at a quarter of the tolerance: the
+# coarse grid's lattice jumps). Einf = 1.2 E0 on 120 rings still stops:
+# the stop names the spacing, the one that resolves the contact line and
+# the flags to change (exit 1, summary.tsv's stop_reason the same);
+# should it one day run through, it must say it is unresolved.
 "$ADHERE" --batch -q --no-plot -o "$TMP/tlate" visco --material=elastic -N 120 --spacing=5nm --turn=1nm --force 2>/dev/null
 "$ADHERE" --batch -q --no-plot -o "$TMP/tlat1" visco --Einf=0.3GPa --speed=1nm/s -N 120 --spacing=5nm --turn=1nm --force 2>"$TMP/stderr"
 rc=$?
@@ -493,7 +497,13 @@ check "an elastic solid at 1 nm/s on 5 nm rings runs through (exit $rc), pull-of
         -v w="$(key "$TMP/tlat1" hysteresis)" -v j="$(key "$TMP/tlat1" jump_loss)" -v d="$(key "$TMP/tlat1" dissipated)" \
         -v u="$(key "$TMP/tlat1" stored_change)" -v res="$(key "$TMP/tlat1" resolved)" \
         'function a(x) { return x < 0 ? -x : x } BEGIN { exit !(rc == 0 && res == 0 && f0 < 0 && a(f1 - f0) < 1e-3 * a(f0) && o0 > 0 && a(o1 - o0) < 1e-3 * o0 && w > 0 && a(w - j - d - u) < 0.01 * w) }'
-"$ADHERE" --batch -q --no-plot -o "$TMP/tlat" visco --Einf=0.33GPa --speed=1nm/s -N 200 --spacing=5nm --turn=1nm --force 2>"$TMP/stderr"
+"$ADHERE" --batch -q --no-plot -o "$TMP/tlat11" visco --Einf=0.33GPa --speed=1nm/s -N 150 --spacing=5nm --turn=1nm --force 2>"$TMP/stderr"
+rc=$?
+check "Einf = 1.1 E0 at 1 nm/s on 5 nm rings runs through (exit $rc), relaxed: pull-off $(key "$TMP/tlat11" pulloff_F) against E0's $(key "$TMP/tlate" pulloff_F), the energy closing within 2 %, resolved 0" \
+    awk -v rc=$rc -v f1="$(key "$TMP/tlat11" pulloff_F)" -v f0="$(key "$TMP/tlate" pulloff_F)" \
+        -v w="$(key "$TMP/tlat11" hysteresis)" -v r="$(key "$TMP/tlat11" energy_residual)" -v res="$(key "$TMP/tlat11" resolved)" \
+        'function a(x) { return x < 0 ? -x : x } BEGIN { exit !(rc == 0 && res == 0 && f0 < 0 && a(f1 - f0) < 1e-3 * a(f0) && w > 0 && a(r) < 0.02 * w) }'
+"$ADHERE" --batch -q --no-plot -o "$TMP/tlat" visco --Einf=0.36GPa --speed=1nm/s -N 120 --spacing=5nm --turn=1nm --force 2>"$TMP/stderr"
 rc=$?
 check "an unresolved grid's lattice folds in time: a stop that names the spacing and the grid that resolves them, or a run marked unresolved (exit $rc: $(grep -v 'warning: grid spacing' "$TMP/stderr" | head -c 400))" \
     sh -c "if [ $rc -eq 0 ]; then grep -qx 'resolved	0' '$TMP/tlat/summary.tsv'; else [ $rc -eq 1 ] && grep -q \"lattice folds stopped the integrator at t = .* on a grid of spacing 5 nm, coarser than the 1.054 nm that resolves them .*(-N, --spacing)\$\" '$TMP/stderr' && grep -q '^stop_reason	the contact line.s lattice folds' '$TMP/tlat/summary.tsv'; fi"

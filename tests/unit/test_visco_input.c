@@ -199,6 +199,34 @@ int main(void)
     ok(rc == ADH_EGRID && run.rows[run.nrows - 1].a >= 0.9 * f.g->rmax,
        "the contact reaches 0.9 Rmax: ADH_EGRID, its row kept (a = %.3g m)", run.rows[run.nrows - 1].a);
 
+    /* a stall in contact on a grid coarser than the one that resolves the
+     * contact line (the visco scene's sphere on 120 rings of 5 nm, 1.054 nm
+     * resolve it), provoked by a jump's relaxation cut at 10 steps: the
+     * reason names the spacing and the one allowed, and asks for more
+     * nodes or a finer spacing (before: the relaxation's words alone) */
+    adh_run_free(&run);
+    adh_material m5 = adh_material_default();
+    m5.E = 0.3e9;
+    fixture f5 = { m5, adh_grid_alloc(120, 5e-9), NULL };
+    f5.k = f5.g ? adh_kernel_alloc(f5.g, &(adh_kernel_settings){ .type = ADH_KERNEL_PAPER }, NULL) : NULL;
+    adh_visco *w5 = f5.k ? adh_visco_alloc(f5.g, f5.k) : NULL;
+    adh_sls el5 = { m5.E, m5.E, 1e-3 };
+    s = adh_visco_settings_default();
+    s.max_jump_steps = 10;
+    ps.turns[0] = 1e-9;
+    rc = w5 ? adh_visco_set(w5, &m5, &el5, &d, &s, &ps, &run, why, sizeof why) : ADH_ENOMEM;
+    if (rc == ADH_SUCCESS)
+        rc = adh_visco_run(w5);
+    printf("# %s: %s\n", adh_strerror(rc), w5 ? adh_visco_why(w5) : "");
+    ok(rc == ADH_ESTALL && w5 && strstr(adh_visco_why(w5), "lattice folds stopped the integrator at t = ") &&
+           strstr(adh_visco_why(w5), "on a grid of spacing 5 nm, coarser than the 1.054 nm that resolves them") &&
+           adh_visco_fix(w5) == (ADH_FIX_SPACING | ADH_FIX_NODES),
+       "a stall in contact on 5 nm rings names the spacing and the 1.054 nm that resolve the contact line, "
+       "and asks for the grid (fix bits %#x)", w5 ? adh_visco_fix(w5) : 0u);
+    adh_visco_free(w5);
+    adh_kernel_free(f5.k);
+    adh_grid_free(f5.g);
+    ps.turns[0] = FIX_TURN;
     adh_visco_free(w);
     adh_run_free(&run);
     fix_close(&f);
