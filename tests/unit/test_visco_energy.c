@@ -34,7 +34,7 @@ static void closes(const fixture *f, double ratio, adh_visco_drive d, const char
     vrun_free(&v);
 }
 
-/* The brief's cycle: the visco scene's sphere (E0 = 0.3 GPa, R = 10 um,
+/* A cycle far from elastic on a coarse grid: the visco scene's sphere (E0 = 0.3 GPa, R = 10 um,
  * sigma 7.5) far from elastic, Einf = 1000 E0, on 300 rings of 5 nm (0.7
  * nodes across its edge zone) at 1 um/s to -5 nm and back, at the
  * default tolerance and integrator (IDAS, past 10 E0). No jump of either
