@@ -549,7 +549,7 @@ static int split_unit_hint(int argc, char **orig, const char *arg, char *why, si
 typedef struct flags_seen {
     struct { const option_doc *o; const char *arg; } list[512];
     size_t n;
-    int info, plan, cost, batch, replay, screen, reference;
+    int info, plan, cost, batch, replay, screen, size, reference;
 } flags_seen;
 
 static const option_doc *option_for(int val)
@@ -605,6 +605,7 @@ static int collect(int argc, char **argv, flags_seen *fs, char *why, size_t whyl
         fs->batch |= c == 'b';
         fs->replay |= c == OPT_REPLAY;
         fs->screen |= c == OPT_SCREEN;
+        fs->size |= c == OPT_SIZE;
         fs->reference |= c == OPT_REFERENCE && strcmp(optarg, "none") != 0;
     }
     return 0;
@@ -667,6 +668,12 @@ static int combinations(int argc, char **argv, const flags_seen *fs, char *why, 
     }
     if (fs->screen && !fs->replay) {
         snprintf(why, whylen, "--screen writes the final screen of a --replay run: give --replay=FILE too");
+        return 2;
+    }
+    /* a terminal has its own size: --size was dropped in silence without --replay */
+    if (fs->size && !fs->replay) {
+        snprintf(why, whylen, "--size sets the screen of a --replay run (a terminal keeps its own size): give "
+                 "--replay=FILE too, or leave --size out");
         return 2;
     }
     return 0;

@@ -131,6 +131,15 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
             BAD("material.Einf = %s is below %s = %s%s: a standard linear solid is stiffest at first (Einf >= E0)",
                 arg_text(v.sls.Einf).s, e0, arg_text(v.sls.E0).s,
                 adh_config_origin(c, e0) == -2 ? " (the default)" : "");
+        /* auto is 10 E0: past E0 = 100 GPa it is past Einf's own limit, and
+         * the core's refusal named a value no one gave ("Einf = 2e+12 Pa") */
+        if (isnan(t->Einf) && !(v.sls.Einf <= 1e12)) {
+            adh_qtext_buf e0v = arg_text(v.sls.E0);
+            char give[64];
+            snprintf(give, sizeof give, v.sls.E0 < 1e12 ? "from %s to 1TPa" : "= %s", e0v.s);
+            BAD("material.Einf = auto (10 times %s = %s) is %s, above 1TPa, the instantaneous modulus's limit: "
+                "give material.Einf %s, or %s up to 100GPa", e0, e0v.s, arg_text(v.sls.Einf).s, give, e0);
+        }
         char msg[256];
         if (adh_sls_validate(&v.sls, msg, sizeof msg) != ADH_SUCCESS ||
             adh_visco_drive_validate(&v.drive, msg, sizeof msg) != ADH_SUCCESS)

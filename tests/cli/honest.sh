@@ -65,6 +65,11 @@ refused "--reference=static is for --mode=relax" "$ADHERE" --batch --mode=rigid 
 refused "--reference=static is for --mode=relax: in physical time" "$ADHERE" --batch --material=sls --reference=static
 refused "--reference=static is for --mode=relax: in physical time" "$ADHERE" --batch --mode=time --reference=static
 refused "--screen writes the final screen of a --replay run" "$ADHERE" --screen="$TMP/s.txt"
+# --size sets a replay's screen: without --replay it was dropped in silence
+refused "^adhere: --size sets the screen of a --replay run (a terminal keeps its own size): give --replay=FILE too" \
+    "$ADHERE" --batch -q --size=100x32 -o "$TMP/size"
+check "and nothing was written" [ ! -e "$TMP/size" ]
+refused "^adhere: --size sets the screen of a --replay run" "$ADHERE" --size=100x32
 mkfifo "$TMP/fifo" 2>/dev/null
 if [ -p "$TMP/fifo" ]; then
     refused "cannot read the replay script: not a regular file" timeout 10 "$ADHERE" --replay="$TMP/fifo"

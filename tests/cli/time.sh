@@ -40,6 +40,12 @@ printf '[material]\nmaterial = sls\nE = 0.05GPa\nEinf = 0.1GPa\n' >"$TMP/einf-sw
 # wrote, and which a sweep's run does not take)
 bad "^adhere: sweep run 1 (E = 1e+09): Einf = 100MPa ($TMP/einf-swf.scene:4) is below --sweep=E=1GPa: a standard" "$TMP/einf-swf.scene" --sweep=E=1GPa,2GPa
 bad "--Einf=2TPa is not allowed: the instantaneous modulus must be from 1 kPa to 1 TPa, or auto (10 E0)" --material=sls --Einf=2TPa
+# Einf auto is 10 E0: past E0 = 100 GPa it is past Einf's limit, and the
+# refusal named a value no one gave ('Einf = 2e+12 Pa is not allowed')
+bad "^adhere: --Einf=auto (10 times --E0=200GPa) is 2TPa, above 1TPa, the instantaneous modulus's limit: give --Einf from 200GPa to 1TPa, or --E0 up to 100GPa$" --material=sls --E0=200GPa
+bad "^adhere: --Einf=auto (10 times --E0=1TPa) is 10TPa, above 1TPa, the instantaneous modulus's limit: give --Einf=1TPa, or --E0 up to 100GPa$" --material=sls --E0=1TPa
+printf '[material]\nmaterial = sls\nE0 = 500GPa\n' >"$TMP/einf-auto.scene"
+bad "^adhere: Einf = auto (10 times E0 = 500GPa ($TMP/einf-auto.scene:3)) is 5TPa, above 1TPa" "$TMP/einf-auto.scene"
 bad "^adhere: --spacing: 'abc' is not a number; expected a length (m, nm, um, ...), or auto$" --spacing=abc
 bad "--tau=0 is not allowed" --material=sls --tau=0
 bad "--tau=-1us is not allowed" --material=sls --tau=-1us
