@@ -728,6 +728,17 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
         snprintf(why, whylen, "--allow-partial is adhere merge's: adhere merge --allow-partial -o DIR SHARD_DIR...");
         return 2;
     }
+    if (cli->columns[0] && !cli->ndata) {   /* it was dropped in silence */
+        snprintf(why, whylen, "--columns=%s picks the columns of a measured curve: give --data=FILE too, or leave "
+                 "--columns out", cli->columns);
+        return 2;
+    }
+    for (size_t i = 0; i < fs.n; i++)   /* it was dropped in silence */
+        if (fs.list[i].o->opt.val == OPT_RUN_DIRS && !cli->cfg.sweep.naxes) {
+            snprintf(why, whylen, "--run-dirs=%s sets a study's run-K directories: give a scene with a [sweep] "
+                     "section, or --sweep=KEY=VALUES, or leave --run-dirs out", fs.list[i].arg);
+            return 2;
+        }
     if (cli->shard_n && !cli->cfg.sweep.naxes) {
         snprintf(why, whylen, "--shard=%u/%u splits a sweep: give a scene with a [sweep] section, or --sweep=KEY=VALUES",
                  cli->shard_k, cli->shard_n);

@@ -70,6 +70,10 @@ refused "^adhere: --size sets the screen of a --replay run (a terminal keeps its
     "$ADHERE" --batch -q --size=100x32 -o "$TMP/size"
 check "and nothing was written" [ ! -e "$TMP/size" ]
 refused "^adhere: --size sets the screen of a --replay run" "$ADHERE" --size=100x32
+# ... as were --columns without --data and --run-dirs without a study
+refused "^adhere: --columns=3,2 picks the columns of a measured curve: give --data=FILE too" "$ADHERE" --batch -q --columns=3,2 --plan
+refused "^adhere: --run-dirs=yes sets a study's run-K directories: give a scene with a \[sweep\] section" \
+    "$ADHERE" --batch -q --run-dirs=yes --plan
 mkfifo "$TMP/fifo" 2>/dev/null
 if [ -p "$TMP/fifo" ]; then
     refused "cannot read the replay script: not a regular file" timeout 10 "$ADHERE" --replay="$TMP/fifo"
