@@ -141,6 +141,25 @@ EOF
 else
     not_ok "GNU parallel is not installed (make deps installs it)"
 fi
+# submit.sh with a shipped scene's name (fig3, whose [sweep] makes a
+# study): it was made a path in the working directory, which every task was
+# refused; and N checked before anything is made or queued (an sbatch that
+# only records what each submission would run)
+mkdir -p "$TMP/rec bin"
+printf '#!/bin/sh\nprintf "%%s\\n" "${ADHERE_SCENE:-merge}" >>"$SBATCH_LOG"\necho 41\n' >"$TMP/rec bin/sbatch"
+chmod +x "$TMP/rec bin/sbatch"
+(cd "$TMP" && PATH="$TMP/rec bin:$PATH" SBATCH_LOG="$TMP/sbatch.log" sh "${ADHERE_SRC:-$OLDPWD}/share/adhere/examples/submit.sh" \
+    fig3 "$TMP/shipped" 2 >"$TMP/rec.out" 2>&1)
+rc=$?
+check "submit.sh fig3 OUT 2: the tasks get the shipped scene's name, fig3, not a path to nothing (exit $rc: $(cat "$TMP/sbatch.log" "$TMP/rec.out" | head -c 300))" \
+    sh -c "[ $rc -eq 0 ] && [ \"\$(head -n 1 '$TMP/sbatch.log')\" = fig3 ]"
+for n in 0 x 1-3; do
+    (cd "$TMP" && PATH="$TMP/rec bin:$PATH" SBATCH_LOG="$TMP/sbatch0.log" sh "${ADHERE_SRC:-$OLDPWD}/share/adhere/examples/submit.sh" \
+        fig3 "$TMP/zero" "$n" >"$TMP/rec.out" 2>&1)
+    rc=$?
+    check "submit.sh fig3 OUT $n: exit 2 naming N, nothing made or queued (exit $rc: $(head -c 200 "$TMP/rec.out"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q \"N = '$n': give the number of shards\" '$TMP/rec.out' && [ ! -e '$TMP/zero' ] && [ ! -e '$TMP/sbatch0.log' ]"
+done
 
 # every run's status is carried: the merged row says what its run-K/summary.tsv says
 bad=0

@@ -4,7 +4,8 @@
 #
 #   submit.sh SCENE OUT N [adhere flags...]
 #
-# e.g. submit.sh map.scene "$PWD/study" 8 --eps=0.5pm. Prints the two job
+# e.g. submit.sh map.scene "$PWD/study" 8 --eps=0.5pm (SCENE a file, or a
+# shipped scene's name: submit.sh fig3 ...). Prints the two job
 # ids. The results: OUT/merged/sweep.tsv and its figure; each shard's rows
 # in OUT/shard-K/runs.tsv. `adhere --plan SCENE --shard 1/N` first says
 # what a shard holds and about how long it takes. Flags may hold spaces
@@ -19,11 +20,23 @@ if [ $# -lt 3 ]; then
 fi
 here=$(cd "$(dirname "$0")" && pwd)
 # the scene and OUT as absolute paths, each whole: $(...) would drop a
-# name's trailing newlines
-case $1 in /*) scene=$1 ;; *) scene=$PWD/$1 ;; esac
+# name's trailing newlines. A SCENE that is no file here and has no /
+# is a shipped scene's name (fig3, afm): made a path, every task was
+# refused a file that is not there
+case $1 in
+/*) scene=$1 ;;
+*/*) scene=$PWD/$1 ;;
+*) if [ -e "$1" ]; then scene=$PWD/$1; else scene=$1; fi ;;
+esac
 out=$2 n=$3
 shift 3
-mkdir -p "$out"
+# N before anything is made or queued: sbatch took --array=1-0 or 1-x
+case $n in
+'' | *[!0-9]* | 0*)
+    echo "$0: N = '$n': give the number of shards, a whole number from 1" >&2
+    exit 2 ;;
+esac
+mkdir -p -- "$out"
 case $out in /*) ;; *) out=$PWD/$out ;; esac
 # the flags as shell words, each single-quoted (' as '\''): study.sbatch
 # reads them back one by one, a value with a space (a path) whole. $(...)
