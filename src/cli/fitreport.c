@@ -89,7 +89,9 @@ static void print_params(FILE *out, const cli_fit_report *r)
             continue;
         }
         value_text(i, res->se[i], s, sizeof s);
-        if (i <= ADH_FIT_R)
+        if (!isfinite(res->se[i]))   /* none to give: "nan Pa (nan %)" said nothing of why */
+            snprintf(se, sizeof se, "%s", r->partial ? "- (interrupted)" : "-");
+        else if (i <= ADH_FIT_R)
             snprintf(se, sizeof se, "%s (%.2g %%)", s, 100 * res->se[i] / res->value[i]);
         else
             snprintf(se, sizeof se, "%s", s);

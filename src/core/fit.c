@@ -69,6 +69,7 @@ struct adh_fit {
     unsigned model_fix;
     double xcur[ADH_FIT_NPARAM], se[ADH_FIT_NPARAM];   /* the accepted point, its standard errors */
     int have_se, converged;
+    int jac_whole;                  /* the workspace's J has every column: no stop cut it short */
     struct timespec t0;
 };
 
@@ -195,6 +196,7 @@ static int gsl_df(const gsl_vector *x, void *params, gsl_matrix *J)
         f->cache_ok = residuals(f, x->data, f->cache_r, f->cache_slope, 0) == 0;
     }
     double *rh = malloc(n * sizeof *rh), theta[ADH_FIT_NPARAM];
+    f->jac_whole = 0;
     if (!rh)
         return GSL_ENOMEM;
     for (size_t j = 0; j < f->p && !f->stop; j++) {
@@ -220,6 +222,7 @@ static int gsl_df(const gsl_vector *x, void *params, gsl_matrix *J)
             gsl_matrix_set(J, i, j, h != 0 && f->cache_ok ? (rh[i] - f->cache_r[i]) / h : 0.0);
     }
     free(rh);
+    f->jac_whole = !f->stop;
     return f->stop ? GSL_EBADFUNC : GSL_SUCCESS;
 }
 
@@ -360,6 +363,11 @@ double adh_fit_noise(const adh_fit_data *d)
 static void statistics(adh_fit *f, gsl_multifit_nlinear_workspace *w, adh_fit_result *res)
 {
     size_t p = f->p, n = f->d->n;
+    /* a J that a signal cut short holds a column of the refused point's
+     * penalty (or none): its errors were garbage, A +- 7e-28 J (7e-7 %)
+     * from a fit stopped in its first Jacobian; they stay nan */
+    if (!f->jac_whole)
+        return;
     gsl_matrix *cov = gsl_matrix_alloc(p, p);
     double s2 = res->chi2 / (f->fscale * f->fscale) / (double)(n - p);
     if (cov)
@@ -443,7 +451,7 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
     size_t n = f->d->n, p = f->p;
     f->best_chi2 = INFINITY;
     f->evals = f->failed = f->iters = 0;
-    f->stop = f->converged = f->have_se = 0;
+    f->stop = f->converged = f->have_se = f->jac_whole = 0;
     f->model_status = ADH_SUCCESS;
     f->model_why[0] = '\0';
     f->model_fix = 0;

@@ -8,6 +8,7 @@
  * columns, through adh_measured_load and adh_fitdata_make, and each of
  * their refusals. */
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -46,6 +47,40 @@ static adh_fit_result fit(const adh_fit_data *d, unsigned free, adh_material sta
            res.value[ADH_FIT_A], res.se[ADH_FIT_A], res.value[ADH_FIT_OFFSET] * 1e9, res.se[ADH_FIT_OFFSET] * 1e9,
            res.chi2_red, res.evals, res.iterations, res.seconds, res.flags[ADH_FIT_E], res.flags[ADH_FIT_A]);
     return res;
+}
+
+/* A signal that comes while the first Jacobian is differenced: raised
+ * after the start's evaluation, seen by the next (E's column), which the
+ * model then stops (ADH_EINTR) as SIGINT stops it. */
+static volatile sig_atomic_t signalled;
+static int signal_after_first(const adh_fit_progress *p, void *ctx)
+{
+    (void)ctx;
+    if (p->evals == 1)
+        signalled = 1;
+    return 0;
+}
+
+/* The best point so far, with no standard error or correlation from that
+ * Jacobian: its column of E held the refused point's penalty, and the
+ * report said 'A 1e-19 J +- 7.3945e-28 J (7.4e-07 %)'. */
+static void interrupted_jacobian(const adh_fit_data *d, adh_material start)
+{
+    adh_fit_settings s = adh_fit_settings_default();
+    s.free = 1u << ADH_FIT_E | 1u << ADH_FIT_A;
+    s.start = start;
+    s.cancel = &signalled;
+    s.progress = signal_after_first;
+    int st;
+    adh_fit *f = adh_fit_alloc(G, K, d, &s, &st);
+    adh_fit_result res;
+    int rc = f ? adh_fit_run(f, &res) : st;
+    ok(rc == ADH_EINTR && res.evals == 2 && isfinite(res.chi2) && isnan(res.se[ADH_FIT_E]) &&
+       isnan(res.se[ADH_FIT_A]) && isnan(res.corr[ADH_FIT_E][ADH_FIT_A]) && !res.flags[ADH_FIT_E] && !res.flags[ADH_FIT_A],
+       "a signal in the first Jacobian: the start's chi2 kept, no standard error nor correlation from the Jacobian "
+       "it cut short (status %d, %zu evaluations, se E %.3g Pa, A %.3g J, corr %.3g)", rc, rc == st ? 0 : res.evals,
+       res.se[ADH_FIT_E], res.se[ADH_FIT_A], res.corr[ADH_FIT_E][ADH_FIT_A]);
+    adh_fit_free(f);
 }
 
 static int recovered(const adh_fit_result *r, int p, double truth, double tol)
@@ -218,6 +253,11 @@ int main(void)
            fabs(b.value[ADH_FIT_A] / a.value[ADH_FIT_A] - 1) < 1e-3,
            "a start a factor 3 off (3E, A/3) converges to the same values (1e-3)");
     }
+
+    start = truth;
+    start.E *= 1.3;
+    start.A *= 0.8;
+    interrupted_jacobian(&s.d, start);
 
     /* the position offset: the same curve measured 0.7 nm further out, a
      * baseline of 2 nN; offset and baseline free beside E and A */
