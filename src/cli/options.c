@@ -811,6 +811,21 @@ int cli_options_validate_for(const adh_config *cfg, cli_advice_for who, char *wh
 {
     adh_run_spec run;
     if (!cfg->sweep.naxes) {
+        /* a study's figure or run-K directories with no key swept: they
+         * were dropped in silence, the scene run once */
+        static const char *const study_only[] = { "sweep.plot", "sweep.map", "sweep.run_dirs" };
+        for (size_t i = 0; i < sizeof study_only / sizeof study_only[0]; i++)
+            if (adh_config_origin(cfg, study_only[i]) != -2) {
+                char msg[512], flag[32], value[128] = "";   /* a flag's name as typed: --sweep=plot, --run-dirs */
+                snprintf(flag, sizeof flag, i == 2 ? "--run-dirs" : "--sweep=%s", study_only[i] + 6);
+                const char *name = adh_config_origin(cfg, study_only[i]) == 0 ? flag : study_only[i];
+                adh_config_get(cfg, study_only[i], value, sizeof value);
+                snprintf(msg, sizeof msg, "%s%s%s is a study's, and no key is swept: sweep one (a key of the run "
+                         "under [sweep], or --sweep=KEY=VALUES), or leave %s out", name, name == flag ? "=" : " = ",
+                         value, name);
+                cli_options_words(cfg, msg, why, whylen);
+                return 2;
+            }
         adh_config_sweep_run(cfg, 0, &run);
         return validate_run(cfg, &run, who, why, whylen);
     }

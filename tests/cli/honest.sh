@@ -74,6 +74,11 @@ refused "^adhere: --size sets the screen of a --replay run" "$ADHERE" --size=100
 refused "^adhere: --columns=3,2 picks the columns of a measured curve: give --data=FILE too" "$ADHERE" --batch -q --columns=3,2 --plan
 refused "^adhere: --run-dirs=yes sets a study's run-K directories: give a scene with a \[sweep\] section" \
     "$ADHERE" --batch -q --run-dirs=yes --plan
+# a study's figure with no key swept (a scene's [sweep] plot = map, or
+# --sweep=plot=map): dropped in silence, the scene run once
+refused "^adhere: --sweep=plot=map is a study's, and no key is swept: sweep one" "$ADHERE" --batch -q --plan --sweep=plot=map
+printf '[sweep]\nmap = pulloff_F\n' >"$TMP/nokey.scene"
+refused "^adhere: map = pulloff_F ($TMP/nokey.scene:2) is a study's, and no key is swept" "$ADHERE" --batch -q --plan "$TMP/nokey.scene"
 mkfifo "$TMP/fifo" 2>/dev/null
 if [ -p "$TMP/fifo" ]; then
     refused "cannot read the replay script: not a regular file" timeout 10 "$ADHERE" --replay="$TMP/fifo"
