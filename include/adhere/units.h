@@ -24,6 +24,11 @@ typedef enum adh_quantity {
  * metric prefix and unit ("nm", "um", "GPa", "zJ"...). Returns ADH_SUCCESS,
  * or ADH_EINVAL with a message in why (naming the text and what is allowed). */
 int adh_parse_quantity(const char *text, adh_quantity q, double *value, char *why, size_t whylen);
+/* A comma-separated list of q that reads as a decimal comma: a bare whole
+ * number, then an element of digits with a unit ("-0,5nm": 0 m, or 0 nm on
+ * the screen, and 5 nm; "1,5um/s"), whose joined form (-0.5nm) parses. ADH_EINVAL with a message
+ * naming both readings; ADH_SUCCESS for any other list. */
+int adh_list_decimal_comma(const char *text, adh_quantity q, char *why, size_t whylen);
 /* A whole number in [lo, hi]: ADH_SUCCESS, or ADH_EINVAL with a message. */
 int adh_parse_count(const char *text, long lo, long hi, long *value, char *why, size_t whylen);
 /* The SI unit symbol of q ("m", "Pa", ...), "" for ADH_Q_NONE. */

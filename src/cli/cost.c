@@ -196,6 +196,10 @@ static int parse_lists(const cli_options *cli, double *eps, size_t *neps, size_t
     const char *nl = cli->cost_nodes[0] ? cli->cost_nodes : "500,1000,2000";
     char buf[256], msg[256] = "", *save = NULL;
     *neps = *nnodes = 0;
+    if (adh_list_decimal_comma(el, ADH_Q_LENGTH, msg, sizeof msg) != ADH_SUCCESS) {   /* 0,5pm: 0 m refused, as 0 */
+        snprintf(why, n, "--cost-eps: %s", msg);
+        return 2;
+    }
     snprintf(buf, sizeof buf, "%s", el);
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         if (*neps == MAX_EPS || adh_parse_quantity(t, ADH_Q_LENGTH, &eps[*neps], msg, sizeof msg) != 0 ||

@@ -276,3 +276,41 @@ int adh_quantity_is_bare(const char *text)
     }
     return 1;
 }
+
+/* One element of a list, blanks trimmed, into buf (cut at len). */
+static void element(const char *seg, size_t n, char *buf, size_t len)
+{
+    while (n && (*seg == ' ' || *seg == '\t'))
+        seg++, n--;
+    while (n && (seg[n - 1] == ' ' || seg[n - 1] == '\t'))
+        n--;
+    if (n >= len)
+        n = len - 1;
+    memcpy(buf, seg, n);
+    buf[n] = '\0';
+}
+
+int adh_list_decimal_comma(const char *text, adh_quantity q, char *why, size_t whylen)
+{
+    char a[64], b[64], joined[130];
+    for (const char *seg = text, *comma; (comma = strchr(seg, ',')) != NULL; seg = comma + 1) {
+        const char *next = strchr(comma + 1, ',');
+        element(seg, (size_t)(comma - seg), a, sizeof a);
+        element(comma + 1, next ? (size_t)(next - comma - 1) : strlen(comma + 1), b, sizeof b);
+        const char *d = a + (*a == '+' || *a == '-');
+        size_t digits = strspn(b, "0123456789");
+        double v;
+        /* a: a sign and digits alone (bare: SI); b: digits, then a unit */
+        if (!*d || d[strspn(d, "0123456789")] || !digits || !b[digits] || b[digits] == '.' || b[digits] == 'e' ||
+            b[digits] == 'E')
+            continue;
+        snprintf(joined, sizeof joined, "%s.%s", a, b);
+        if (adh_parse_quantity(joined, q, &v, NULL, 0) != ADH_SUCCESS)
+            continue;
+        if (why)
+            snprintf(why, whylen, "'%.200s' reads as two values, %s and %s: a decimal comma? write %s for one "
+                     "value, or give each value its unit", text, a, b, joined);
+        return ADH_EINVAL;
+    }
+    return ADH_SUCCESS;
+}

@@ -156,6 +156,9 @@ static int parse_list(const char *text, adh_quantity q, int allow_none, double *
             break;
         seg = comma + 1;
     }
+    /* "-0,5nm" was two turns, 0 m and 5 nm, taken without a word */
+    if (adh_list_decimal_comma(text, q, why, whylen) != ADH_SUCCESS)
+        return -1;
     double vals[ADH_MAX_TURNS > ADH_MAX_PROFILES ? ADH_MAX_TURNS : ADH_MAX_PROFILES];
     snprintf(buf, sizeof buf, "%s", text);
     char *save = NULL;

@@ -10,6 +10,7 @@
 #include <strings.h>
 
 #include "adhere/params.h"
+#include "adhere/status.h"
 #include "adhere/units.h"
 
 /* sigma is no key of the configuration: it sets E by eq 17 */
@@ -204,6 +205,8 @@ static int parse_list(const char *text, adh_sweep_axis *a, char *why, size_t why
 {
     a->spacing = ADH_SWEEP_LIST;
     a->n = 0;
+    if (adh_list_decimal_comma(text, (adh_quantity)a->quantity, why, whylen) != ADH_SUCCESS)
+        return -1;
     for (const char *seg = text;;) {
         const char *comma = strchr(seg, ',');
         size_t len = comma ? (size_t)(comma - seg) : strlen(seg);

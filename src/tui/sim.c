@@ -921,7 +921,14 @@ static int field_text(const tui_sim *s, tui_param p, const char *text, char *out
         field_value(s, p, text, out, len);
         return 0;
     }
-    /* a list of turning points, as a scene's turns = ... (or the two speeds) */
+    /* a list of turning points, as a scene's turns = ... (or the two speeds);
+     * "-1,5nm" (a decimal comma) said of the text typed, before its bare
+     * numbers become SI */
+    char msg[400];
+    if (adh_list_decimal_comma(text, p == P_TURN ? ADH_Q_LENGTH : ADH_Q_SPEED, msg, sizeof msg) != ADH_SUCCESS) {
+        snprintf(why, whylen, "%s: %s", tui_params[p].name, msg);
+        return -1;
+    }
     size_t o = 0;
     for (const char *seg = text;;) {
         const char *comma = strchr(seg, ',');

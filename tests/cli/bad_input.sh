@@ -30,6 +30,17 @@ bad "^adhere: --radius=0nm is out of range" -R 0
 # pm to 100 nm'; it now gets as far as R's own check
 bad "R = 10 um is too small for this model" -z 100nm
 bad "^adhere: --nodes=5 is not allowed: use 10 to 20000 nodes$" -N 5
+# a decimal comma in a list: '-0,5nm' ran two turns, 0 m and 5 nm, without a
+# word; a scene's, a sweep's and the screen's list alike
+bad "^adhere: --turn: '-0,5nm' reads as two values, -0 and 5nm: a decimal comma? write -0.5nm for one value, or give each value its unit$" --turns=-0,5nm
+printf '[protocol]\nturns = -1,5nm\n' >"$TMP/comma.scene"
+bad "^adhere: $TMP/comma.scene:2: turns: '-1,5nm' reads as two values, -1 and 5nm: a decimal comma? write -1.5nm" "$TMP/comma.scene"
+bad "^adhere: --sweep: E: '1,5GPa' reads as two values, 1 and 5GPa: a decimal comma? write 1.5GPa" --sweep=E=1,5GPa
+printf ':set turn -1,5nm\n' >"$TMP/comma.keys"
+"$ADHERE" --replay="$TMP/comma.keys" -N 100 --force >/dev/null 2>"$TMP/comma.err"
+rc=$?
+check "... and the screen's :set turn -1,5nm (a bare -1 is nm there): exit $rc, $(cat "$TMP/comma.err")" \
+    sh -c "[ $rc -eq 2 ] && grep -q \"comma.keys:1: turn: '-1,5nm' reads as two values, -1 and 5nm: a decimal comma?\" '$TMP/comma.err'"
 bad "'1e3' is not allowed: expected a whole number of nodes, 10 to 20000$" --nodes=1e3
 # every count names its range, not only the form ('expected a whole number'
 # said nothing of how many): the iteration cap, the dwell, a scene's key and

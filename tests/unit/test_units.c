@@ -141,5 +141,23 @@ int main(void)
        "bare numbers and lists of them are bare");
     ok(!adh_quantity_is_bare("10um") && !adh_quantity_is_bare("-5,-2nm") && !adh_quantity_is_bare("none") &&
        !adh_quantity_is_bare("auto"), "a unit anywhere, or a word, is not bare");
+
+    /* a decimal comma in a list ("-0,5nm" was two turns, 0 m and 5 nm, taken
+     * without a word): refused, naming both readings and the joined one */
+    why[0] = '\0';
+    ok(adh_list_decimal_comma("-0,5nm", ADH_Q_LENGTH, why, sizeof why) != 0 &&
+       strstr(why, "'-0,5nm' reads as two values, -0 and 5nm: a decimal comma? write -0.5nm for one value"),
+       "'-0,5nm' is refused as a decimal comma: %s", why);
+    ok(adh_list_decimal_comma("2nm, 1,5nm", ADH_Q_LENGTH, why, sizeof why) != 0 && strstr(why, "write 1.5nm"),
+       "... anywhere in a list, blanks around: %s", why);
+    ok(adh_list_decimal_comma("1,5um/s", ADH_Q_SPEED, why, sizeof why) != 0 && strstr(why, "write 1.5um/s"),
+       "... a speed's: %s", why);
+    ok(adh_list_decimal_comma("1,5GPa", ADH_Q_LENGTH, why, sizeof why) == 0,
+       "not when the joined form is no value of the quantity (a pressure for a length)");
+    const char *fine[] = { "1nm,5nm", "0,-1nm", "2nm,0", "-1,-2", "1,5", "1.5,2nm", "1,5e-9m", "none", "-5nm" };
+    int all = 1;
+    for (size_t i = 0; i < sizeof fine / sizeof fine[0]; i++)
+        all &= adh_list_decimal_comma(fine[i], ADH_Q_LENGTH, why, sizeof why) == 0;
+    ok(all, "every other list passes: units on both, a signed second value, bare values alone, a decimal point");
     return tap_done();
 }
