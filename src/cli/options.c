@@ -18,6 +18,7 @@
 #include "cli/advice.h"
 #include "scene/text.h"
 #include "cli/studyrow.h"
+#include "plot/outdir.h"
 #include "scene/scene.h"
 #include "adhere/run.h"
 
@@ -727,6 +728,18 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
     if (cli->allow_partial) {
         snprintf(why, whylen, "--allow-partial is adhere merge's: adhere merge --allow-partial -o DIR SHARD_DIR...");
         return 2;
+    }
+    if (cli->cfg.tui.screen[0]) {   /* the screen was put over the replay script */
+        const char *in[CLI_MAX_DATA + 3] = { cli->cfg.scene, cli->cfg.tui.replay, cli->cfg.output.gnuplot_style };
+        for (size_t i = 0; i < cli->ndata; i++)
+            in[3 + i] = cli->data[i];
+        int i = adh_outfile_names_input(cli->cfg.tui.screen, in, 3 + cli->ndata);
+        if (i >= 0) {
+            snprintf(why, whylen, "--screen=%s is %s this run reads: the screen would replace it; name another file",
+                     cli->cfg.tui.screen, i == 0 ? "the scene" : i == 1 ? "the replay script (--replay)"
+                     : i == 2 ? "the gnuplot style (--gnuplot-style)" : "a measured curve (--data)");
+            return 2;
+        }
     }
     if (cli->columns[0] && !cli->ndata) {   /* it was dropped in silence */
         snprintf(why, whylen, "--columns=%s picks the columns of a measured curve: give --data=FILE too, or leave "

@@ -1502,3 +1502,14 @@ int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ct
         close(dfd);
     return e;
 }
+
+int adh_outfile_names_input(const char *path, const char *const *inputs, size_t n)
+{
+    struct stat out, in;
+    if (lstat(path, &out) != 0 || !S_ISREG(out.st_mode))
+        return -1;
+    for (size_t i = 0; i < n; i++)
+        if (inputs[i] && *inputs[i] && stat(inputs[i], &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino)
+            return (int)i;
+    return -1;
+}

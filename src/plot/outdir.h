@@ -150,4 +150,11 @@ int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t w
  * that stopped it (nothing left under a temporary name). */
 int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx);
 
+/* Which of inputs[0..n) (files the run reads: its scene, replay script,
+ * measured curve, style; "" or NULL for none) path would replace: the
+ * index of the one path names (the same file, not a link to it, which
+ * adh_outfile_write replaces rather than writes through), or -1. '--screen'
+ * naming the replay script put the screen over it. */
+int adh_outfile_names_input(const char *path, const char *const *inputs, size_t n);
+
 #endif

@@ -597,6 +597,22 @@ static int write_rows(tui *t, const char *path, char *why, size_t whylen)
     return e ? -1 : 0;
 }
 
+/* A file :dump or :rows names that is one the session reads (its scene,
+ * its replay script): the screen was put over the script, the rows over
+ * the scene. -1 with why; 0 for any other. */
+static int reads_it(const tui *t, const char *path, const char *what, char *why, size_t whylen)
+{
+    const adh_config *c = config(t);
+    const char *in[] = { c->scene, c->tui.replay, c->output.data, c->output.gnuplot_style };
+    static const char *const names[] = { "the scene", "the replay script", "the measured curve", "the gnuplot style" };
+    int i = adh_outfile_names_input(path, in, sizeof in / sizeof in[0]);
+    if (i < 0)
+        return 0;
+    snprintf(why, whylen, "not writing the %s to %s: it is %s this session reads; name another file", what, path,
+             names[i]);
+    return -1;
+}
+
 /* A :set / :dump / :rows / :wait / :resize, from a script or the ':' prompt.
  * 0, or -1 with a sentence in why. */
 static int run_command(tui *t, const tui_replay_item *it, char *why, size_t whylen)
@@ -623,9 +639,13 @@ static int run_command(tui *t, const tui_replay_item *it, char *why, size_t whyl
         return 0;
     }
     case TUI_REPLAY_DUMP:
+        if (reads_it(t, it->value, "screen", why, whylen) != 0)
+            return -1;
         draw(t);
         return tui_dump_screen(it->value, why, whylen);
     case TUI_REPLAY_ROWS:
+        if (reads_it(t, it->value, "rows", why, whylen) != 0)
+            return -1;
         return write_rows(t, it->value, why, whylen);
     case TUI_REPLAY_WAIT:
         t->waiting = t->run_dir != 0;

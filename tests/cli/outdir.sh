@@ -245,4 +245,25 @@ check "... the link left alone" [ -L tw/cwd/adhere-plots ]
 (cd tw/cwd-s && "$ADHERE" --replay=../s.keys -N 100 --force --no-clock >/dev/null 2>&1)
 check "... and in static mode (adhere-plots/static): refused, nothing written through it" \
     sh -c "[ -z \"\$(ls -A tw/victim-s)\" ] && grep -A1 'plots not written' tw/s.txt | tr '\n' ' ' | tr -s ' ' | grep -q 'adhere-plots is a symbolic link'"
+# --- :dump, :rows and --screen over a file the session reads ---------------
+# --screen naming the replay script put the screen over it, and :dump
+# naming the scene put the screen over the scene: refused, exit 2, the
+# file as it was; a link to the script is replaced, not written through
+mkdir ti
+printf '# my script\nf\n' >ti/s.keys
+printf '[material]\nE = 1GPa\n' >ti/a.scene
+printf 'f\n:dump a.scene\n' >ti/d.keys
+printf 'f\n:rows r.keys\n' >ti/r.keys
+ln -s s.keys ti/link.keys
+before=$(cat ti/s.keys ti/a.scene ti/r.keys | cksum)
+(cd ti && "$ADHERE" --replay=s.keys --screen=s.keys -N 100 --force >/dev/null 2>s.err); rc1=$?
+(cd ti && "$ADHERE" --replay=d.keys -N 100 --force a.scene >/dev/null 2>d.err); rc2=$?
+(cd ti && "$ADHERE" --replay=r.keys -N 100 --force >/dev/null 2>r.err); rc3=$?
+check "--screen=the replay script, :dump the scene, :rows the script: exit 2 each ($rc1 $rc2 $rc3), the files as they were" \
+    sh -c "[ $rc1 -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ '$before' = \"\$(cat ti/s.keys ti/a.scene ti/r.keys | cksum)\" ]"
+check "... each naming the file and what it is ($(cat ti/s.err ti/d.err ti/r.err | tr '\n' ' '))" \
+    sh -c "grep -q '^adhere: --screen=s.keys is the replay script (--replay) this run reads' ti/s.err && grep -q '^d.keys:2: not writing the screen to a.scene: it is the scene this session reads' ti/d.err && grep -q '^r.keys:2: not writing the rows to r.keys: it is the replay script this session reads' ti/r.err"
+(cd ti && "$ADHERE" --replay=s.keys --screen=link.keys -N 100 --force >/dev/null 2>&1); rc=$?
+check "... --screen=a link to the script: the link replaced by the screen, the script kept (exit $rc)" \
+    sh -c "[ $rc -eq 0 ] && [ ! -L ti/link.keys ] && grep -q 'adhere: two elastic' ti/link.keys && grep -q '^# my script' ti/s.keys"
 done_testing
