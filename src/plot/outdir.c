@@ -859,6 +859,46 @@ static long study_run_rows(const adh_outdir *d, char *name, size_t len)
     return rows;
 }
 
+/* The session's inputs by identity (adh_outdir_inputs). */
+static struct {
+    dev_t dev;
+    ino_t ino;
+    char path[256];
+} session_input[16];
+static size_t ninputs;
+
+void adh_outdir_inputs(const char *const *paths, size_t n)
+{
+    struct stat st;
+    ninputs = 0;
+    for (size_t i = 0; i < n && ninputs < sizeof session_input / sizeof session_input[0]; i++)
+        if (paths[i] && *paths[i] && stat(paths[i], &st) == 0 && S_ISREG(st.st_mode)) {
+            session_input[ninputs].dev = st.st_dev, session_input[ninputs].ino = st.st_ino;
+            adh_outdir_escape(paths[i], session_input[ninputs].path, sizeof session_input[ninputs].path);
+            ninputs++;
+        }
+}
+
+/* A file under one of adhere's names in d that is an input of this
+ * session: clearing d (as an earlier run's, or --overwrite) would remove
+ * it. 0, or -1 with why. */
+static int removes_input(const adh_outdir *d, char *why, size_t whylen)
+{
+    for (size_t k = 0; k < sizeof owned / sizeof owned[0] && ninputs; k++) {
+        struct stat st;
+        if (fstatat(d->fd, owned[k], &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(st.st_mode))
+            continue;
+        for (size_t i = 0; i < ninputs; i++)
+            if (st.st_dev == session_input[i].dev && st.st_ino == session_input[i].ino) {
+                snprintf(why, whylen, "%.3000s/%s is read by this run (as %s), and a run into %.3000s would remove "
+                         "or replace it: copy it elsewhere first, or give another -o", d->path, owned[k],
+                         session_input[i].path, d->path);
+                return -1;
+            }
+    }
+    return 0;
+}
+
 /* Locked, the earlier run's files cleared (KEEP: their stale records),
  * foreign files refused, the manifest written: d is ready for this run's
  * files. */
@@ -889,7 +929,7 @@ static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
         return -1;
     }
     /* refused before anything is removed; KEEP: an earlier study's files stay */
-    if (foreign(d, depth, why, whylen) != 0 || (!(d->flags & ADH_OUTDIR_KEEP) && clear(d, depth, why, whylen) != 0))
+    if ((!(d->flags & ADH_OUTDIR_KEEP) && removes_input(d, why, whylen) != 0) || foreign(d, depth, why, whylen) != 0 || (!(d->flags & ADH_OUTDIR_KEEP) && clear(d, depth, why, whylen) != 0))
         return -1;
     if (d->flags & ADH_OUTDIR_KEEP)
         prune(d);
@@ -1061,7 +1101,7 @@ adh_outdir *adh_outdir_sub(adh_outdir *d, const char *name, char *why, size_t wh
 
 int adh_outdir_clear(adh_outdir *d, char *why, size_t whylen)
 {
-    if (clear(d, 0, why, whylen) != 0)
+    if (removes_input(d, why, whylen) != 0 || clear(d, 0, why, whylen) != 0)
         return -1;
     if (save(d) != 0) {
         snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));

@@ -33,6 +33,13 @@ enum { ADH_OUTDIR_OVERWRITE = 1,
  * why. */
 adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen);
 
+/* The files this session reads (its scene, measured curves, style, replay
+ * script; "" or NULL skipped), by identity: an output directory whose
+ * clearing would remove one (adhere DIR/best.scene -o DIR: the scene a fit
+ * wrote, an earlier run's file) is refused, naming it, --overwrite or not.
+ * Up to 16; later calls replace the list. */
+void adh_outdir_inputs(const char *const *paths, size_t n);
+
 /* path/name, a directory adhere names inside the one the user named (the
  * terminal interface's static/ and time/), or name in the working
  * directory when path is NULL (its adhere-plots, adhere-plots/static):

@@ -51,6 +51,13 @@ printf 'q\n' >"$TMP/q.keys"
 "$ADHERE" --replay="$TMP/q.keys" --screen="$TMP/best.screen" "$D/best.scene" >/dev/null 2>&1
 check "and the TUI opens it with the best E and A" sh -c "grep -q '^ >E     1.00[0-9] GPa' '$TMP/best.screen' && grep -Eq '^  A     1(\.00[0-9])?e-19 J' '$TMP/best.screen'"
 check "no temporary file is left (adhere's manifest aside)" sh -c "! ls -a '$D' | grep -v '^\.adhere-manifest$' | grep -q '^\.[^.]'"
+# run from it into the fit's own directory: clearing it as an earlier
+# run's removed best.scene, the scene the run read (and the fit with it)
+sum=$(cat "$D/best.scene" "$D/fit.tsv" | cksum)
+"$ADHERE" --batch -q --no-plot -o "$D" "$D/best.scene" >/dev/null 2>"$TMP/self.err"
+rc=$?
+check "adhere -b -o OUT OUT/best.scene: exit 2, naming the scene, best.scene and fit.tsv kept ($rc: $(cat "$TMP/self.err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'best.scene is read by this run (as $D/best.scene), and a run into .* would remove or replace it' '$TMP/self.err' && [ '$sum' = \"\$(cat '$D/best.scene' '$D/fit.tsv' | cksum)\" ]"
 
 # a grid given on the line that does not resolve the optimum (2.97 nodes
 # across the edge zone, 3.33 needed): E lands 1.2 % from the resolved fit's
