@@ -209,6 +209,13 @@ static int parse_lists(const cli_options *cli, double *eps, size_t *neps, size_t
             return 2;
         }
         msg[0] = '\0';
+        /* a value twice ran its runs twice, and the reference was which? */
+        for (size_t j = 0; j < *neps; j++)
+            if (fabs(eps[j] - eps[*neps]) <= 1e-12 * eps[j]) {   /* 1pm and 0.001nm: the rounding of units */
+                snprintf(why, n, "--cost-eps: '%s' is given twice (the same eps as value %zu): each eps once", t,
+                         j + 1);
+                return 2;
+            }
         (*neps)++;
     }
     save = NULL;
@@ -227,6 +234,11 @@ static int parse_lists(const cli_options *cli, double *eps, size_t *neps, size_t
             snprintf(why, n, "--cost-nodes: %s", *nnodes == MAX_NODES ? "at most 16 values" : msg);
             return 2;
         }
+        for (size_t j = 0; j < *nnodes; j++)
+            if (nodes[j] == (size_t)v) {
+                snprintf(why, n, "--cost-nodes: %ld is given twice: each N once", v);
+                return 2;
+            }
         nodes[(*nnodes)++] = (size_t)v;
     }
     if (!*neps || !*nnodes) {

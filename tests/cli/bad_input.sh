@@ -51,6 +51,9 @@ bad "^adhere: --dwell: '12.5' is not allowed: expected a whole number of iterati
 printf '[protocol]\ndwell = 1e9\n' >"$TMP/dwell.scene"
 bad "^adhere: $TMP/dwell.scene:2: dwell: '1e9' is not allowed: expected a whole number of iterations, 0 to 100000000$" "$TMP/dwell.scene"
 bad "^adhere: --cost-nodes: '1e9' is not allowed: expected a whole number of nodes, 10 to 20000$" --cost --cost-nodes=500,1e9
+# a cost value twice ran its runs twice (--cost-nodes=100,100: 20 runs for 10)
+bad "^adhere: --cost-nodes: 100 is given twice: each N once$" --cost --cost-nodes=100,100
+bad "^adhere: --cost-eps: '0.001nm' is given twice (the same eps as value 1): each eps once$" --cost --cost-eps=1pm,0.001nm
 bad "too coarse" -N 20
 bad "too short.*; use more nodes or a larger spacing (-N, --spacing)$" --spacing=0.5nm
 # the grid's advice in the words the grid was given in: a scene's N by its
