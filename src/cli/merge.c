@@ -540,7 +540,11 @@ static int write_out(merge *m, const char *partial)
     char why[1024];
     if (!m->out) {
         cli_studyrow_table(stdout, &t);
-        return fflush(stdout) == 0 && !ferror(stdout) ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+        if (fflush(stdout) == 0 && !ferror(stdout))
+            return CLI_EXIT_OK;
+        /* exit 2 without a word: the table was lost and nothing said so */
+        adh_sayf_as("adhere merge", "cannot write sweep.tsv to standard output: %s", strerror(errno));
+        return CLI_EXIT_USAGE;
     }
     if (adh_outdir_write(m->out, "sweep.tsv", cli_studyrow_table, &t, why, sizeof why) != 0) {
         adh_say(why);

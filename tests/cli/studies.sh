@@ -49,6 +49,12 @@ if command -v parallel >/dev/null 2>&1; then
     "$ADHERE" merge -o "$TMP/merged" "$TMP/shard3" "$TMP/shard1" "$TMP/shard2" 2>"$TMP/merge.err"
     rc=$?
     check "adhere merge joins them (exit $rc: $(head -c 300 "$TMP/merge.err"))" [ "$rc" -eq 0 ]
+    # without -o, sweep.tsv on a standard output that cannot be written: it
+    # exited 2 without a word, the table lost
+    "$ADHERE" merge "$TMP/shard1" "$TMP/shard2" "$TMP/shard3" >/dev/full 2>"$TMP/full.err"
+    rc=$?
+    check "adhere merge to a full standard output: exit 2, saying so ($rc: $(cat "$TMP/full.err"))" \
+        sh -c "[ $rc -eq 2 ] && grep -q '^adhere merge: cannot write sweep.tsv to standard output: No space left on device' '$TMP/full.err'"
     check "the merged sweep.tsv is the whole study's but for its timing column" \
         sh -c "untimed() { grep -v '^# scene:' \"\$1\" | cut -f1-14,16-; }; untimed '$TMP/whole/sweep.tsv' >'$TMP/a'; untimed '$TMP/merged/sweep.tsv' >'$TMP/b'; cmp -s '$TMP/a' '$TMP/b'"
     check "the merged map.png is the whole study's, byte for byte" cmp -s "$TMP/whole/map.png" "$TMP/merged/map.png"
