@@ -144,9 +144,12 @@ static int check_grid(const adh_protocol_settings *ps, const adh_material *m, co
     double gap_edge = lowest + g->rmax * g->rmax / (2.0 * m->R);
     double a_est = 1.5 * sqrt(2.0 * m->R * fmax(0.0, m->z0 - lowest));
     if (gap_edge < 10 * m->z0 || a_est > 0.8 * g->rmax) {
-        snprintf(why, whylen, "grid radius Rmax = %s is too short: the contact at h0 = %s may reach %s; use more nodes or a larger spacing",
-                 adh_qtext(g->rmax, ADH_Q_LENGTH).s, adh_qtext(lowest, ADH_Q_LENGTH).s, adh_qtext(a_est, ADH_Q_LENGTH).s);
-        set_fix(fix, ADH_FIX_NODES | ADH_FIX_SPACING);
+        /* a graded grid's radius is its own setting: more nodes or a larger
+         * spacing (the advice it had) leave a radius given as it was */
+        snprintf(why, whylen, "grid radius Rmax = %s is too short: the contact at h0 = %s may reach %s; %s",
+                 adh_qtext(g->rmax, ADH_Q_LENGTH).s, adh_qtext(lowest, ADH_Q_LENGTH).s, adh_qtext(a_est, ADH_Q_LENGTH).s,
+                 g->graded ? "use a larger grid radius" : "use more nodes or a larger spacing");
+        set_fix(fix, g->graded ? ADH_FIX_GRID_RADIUS : ADH_FIX_NODES | ADH_FIX_SPACING);
         return ADH_EGRID;
     }
     /* Coarser than five edge zones, the contact line moves node by node and

@@ -101,7 +101,9 @@ bad "--grid=graded is not allowed with --kernel=paper" --grid=graded
 bad "--growth: '1.2' is not allowed: use a ratio from 1 to 1.1" --grid=graded --kernel=ring --growth=1.2
 bad "--growth: 'x' is not allowed" --growth=x
 bad "fine band radius .* too short.*; use a larger fine band (--fine-band)$" --grid=graded --kernel=ring --fine-band=100nm
-bad "grid radius Rmax = .* is too short" --grid=graded --kernel=ring --grid-radius=200nm
+# a graded grid's radius is its own setting: it was told 'use more nodes or
+# a larger spacing (-N, --spacing)', neither of which moves a radius given
+bad "grid radius Rmax = .* is too short: .*; use a larger grid radius (--grid-radius)$" --grid=graded --kernel=ring --grid-radius=200nm
 bad "^adhere: --grid-radius=600nm is not allowed: it must be at least the fine band" --grid=graded --kernel=ring --fine-band=800nm --grid-radius=600nm
 bad "--growth: '0.9' is not allowed: use a ratio from 1 to 1.1" --growth=0.9
 bad "--fine-band: '-1nm' is not allowed: use a length above 0" --fine-band=-1nm
