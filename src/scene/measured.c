@@ -580,6 +580,10 @@ int adh_measured_load(const char *path, const char *columns, adh_measured *m, ch
             snprintf(why, whylen, "%s:%zu: %s", path, lineno, MAC_LINE_ENDS);
             goto bad;
         }
+        if (len < 0 && memchr(line, '\0', sizeof line - 1)) {   /* a file of NULs is binary, not a long line */
+            snprintf(why, whylen, "%s:%zu: a NUL byte: this is not a text table (a binary file?)", path, lineno);
+            goto bad;
+        }
         if (len < 0) {
             snprintf(why, whylen, "%s:%zu: line longer than %d bytes", path, lineno, ADH_MEASURED_MAX_LINE);
             goto bad;

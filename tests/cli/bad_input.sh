@@ -174,6 +174,10 @@ bad "beyond 0.3 R = 60 nm where the paraboloid gap" -R 0.2um -E 10MPa --turn=-1n
 check "... and does not blame the node budget" sh -c "! grep -q 'budget of N' '$TMP/stderr'"
 printf '1 2\n3\0004 5\n' >"$TMP/nul.dat"
 bad "nul.dat:2: a NUL byte" --data="$TMP/nul.dat"
+# a file of NULs (no newline in its first 4096 bytes) was 'line longer than
+# 4096 bytes', which sent the user to the line length of a binary file
+head -c 10000 /dev/zero >"$TMP/zeros.dat"
+bad "zeros.dat:1: a NUL byte: this is not a text table" --data="$TMP/zeros.dat"
 # an escape sequence in a header word would reach the terminal in the
 # refusal that quotes it
 printf 'h0 (\033[2Jnm)\tF (nN)\n1\t2\n' >"$TMP/esc.dat"
