@@ -145,6 +145,10 @@ pts=$("$ADHERE" --plan visco --material=elastic -N 150 --force 2>&1 | sed -n 's/
 sls=$("$ADHERE" --plan visco -N 150 --force 2>&1 | sed -n 's/^time: .*about \([0-9]*\) integrator steps.*/\1/p')
 check "a sweep of elastic and sls: $pct % done after the elastic run, its share of the plan's work ($pts points, $sls steps) within 5 %" \
     sh -c "[ -n '$pct' ] && [ -n '$pts' ] && [ -n '$sls' ] && echo $pts $sls $pct | awk '{s = 100 * \$1 / (\$1 + \$2); exit !(\$3 > s - 5 && \$3 < s + 5)}'"
+# ... from a scene in relaxation, run 2 (sls) went into physical time on
+# run 1's grid (refused as too coarse, or with --force run there) and
+# sweep.tsv held relaxation's columns only: refused, naming the modes
+bad "^adhere: sweep run 2 (material = sls) runs in mode time, run 1 in mode relax: a study's runs share one mode unless the mode itself is swept; give the mode (--mode=time" --sweep=material=elastic,sls -N 150 --force
 "$ADHERE" --plan visco -N 150 --force --sweep=material=elastic,sls >"$TMP/planmat" 2>&1
 check "--plan of a sweep of the material: run 1, elastic, priced as its static curve, the whole in steps and points" \
     sh -c "grep -q '^time: run 1 about .*no time integration, an elastic sphere' '$TMP/planmat' && ! grep -q 'modulus 0 Pa' '$TMP/planmat' && grep -q '^time: about .* integrator steps and static curve points, ' '$TMP/planmat'"
