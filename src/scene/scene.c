@@ -217,6 +217,18 @@ static int prescan(const char *text, scene_parse *sp)
         line++;
         char buf[512];
         if (len >= 199) {
+            /* a binary file is one long line: its control byte named, not
+             * the length (as a short line's is) */
+            size_t c = 0;
+            while (c < len && ((unsigned char)p[c] >= 0x20 || p[c] == '\t' || p[c] == '\r') && p[c] != 0x7f)
+                c++;
+            if (c < len) {
+                char msg[200];
+                snprintf(msg, sizeof msg, "the control character 0x%02x is not allowed: a scene is printable text (an "
+                         "escape sequence would reach the terminal in a message)", (unsigned char)p[c]);
+                fail(sp, "%s%s", msg, "");
+                return line;
+            }
             fail(sp, "line longer than 198 characters%s%s", "", "");
             return line;
         }

@@ -243,6 +243,12 @@ static void bad_scenes(void)
     bad("[material]\n\033[2J = 1\n", 2, "the control character 0x1b is not allowed");
     bad("[protocol]\nturns = -1nm, \033[31m-2nm\n", 2, "turns: the control character 0x1b");
     bad("[scene]\ntitle = a\001b\n", 2, "title: the control character 0x01 is not allowed");
+    {   /* a binary file, its control bytes in a line past 198 bytes: it was 'line longer than 198 characters' */
+        char binary[600];
+        memset(binary, 1, sizeof binary - 1);
+        binary[sizeof binary - 1] = '\0';
+        bad(binary, 1, "the control character 0x01 is not allowed");
+    }
     bad("[grid]\n# a comment \033[2J\n", 2, "the control character 0x1b");
     /* a lone byte that is not UTF-8 was quoted as it was: 0x9b is CSI to
      * some terminals, 0xb5 a Latin-1 micro sign; a comment may keep it */
