@@ -740,6 +740,20 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
                      : i == 2 ? "the gnuplot style (--gnuplot-style)" : "a measured curve (--data)");
             return 2;
         }
+        /* where it cannot go, said before the replay runs (it was said after) */
+        char dir[PATH_MAX];
+        const char *slash = strrchr(cli->cfg.tui.screen, '/');
+        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - cli->cfg.tui.screen) + (slash == cli->cfg.tui.screen)
+                 : 1, slash ? cli->cfg.tui.screen : ".");
+        struct stat st;
+        int e = stat(dir, &st) != 0 ? errno : !S_ISDIR(st.st_mode) ? ENOTDIR : 0;
+        if (!e && stat(cli->cfg.tui.screen, &st) == 0 && S_ISDIR(st.st_mode))
+            e = EISDIR;
+        if (e) {
+            snprintf(why, whylen, "--screen=%s: cannot write the screen there: %s", cli->cfg.tui.screen,
+                     e == EISDIR ? "it is a directory" : strerror(e));
+            return 2;
+        }
     }
     if (cli->columns[0] && !cli->ndata) {   /* it was dropped in silence */
         snprintf(why, whylen, "--columns=%s picks the columns of a measured curve: give --data=FILE too, or leave "

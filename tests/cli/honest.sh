@@ -65,6 +65,10 @@ refused "--reference=static is for --mode=relax" "$ADHERE" --batch --mode=rigid 
 refused "--reference=static is for --mode=relax: in physical time" "$ADHERE" --batch --material=sls --reference=static
 refused "--reference=static is for --mode=relax: in physical time" "$ADHERE" --batch --mode=time --reference=static
 refused "--screen writes the final screen of a --replay run" "$ADHERE" --screen="$TMP/s.txt"
+# a --screen that cannot be written was found after the whole replay ran
+printf 'f\n' >"$TMP/f.keys"
+refused "^adhere: --screen=$TMP/nodir/s.txt: cannot write the screen there: No such file or directory$" \
+    "$ADHERE" --replay="$TMP/f.keys" --screen="$TMP/nodir/s.txt" -N 100 --force
 # --size sets a replay's screen: without --replay it was dropped in silence
 refused "^adhere: --size sets the screen of a --replay run (a terminal keeps its own size): give --replay=FILE too" \
     "$ADHERE" --batch -q --size=100x32 -o "$TMP/size"
