@@ -24,6 +24,7 @@
 #include "cli/merge.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
+#include "scene/datadir.h"
 #include "scene/budget.h"
 #include "cli/static.h"
 #include "scene/config.h"
@@ -184,7 +185,7 @@ static int run(int argc, char **argv)
     gsl_set_error_handler_off();
     /* room for a sentence and a path whole (a scene's FILE:LINE: first) */
     char why[PATH_MAX + 1024];
-    if (cli_options_parse(argc, argv, &cli, why, sizeof why) != 0) {
+    if (adh_data_env_check(why, sizeof why) != 0 || cli_options_parse(argc, argv, &cli, why, sizeof why) != 0) {
         adh_say(why);
         return CLI_EXIT_USAGE;
     }

@@ -125,6 +125,13 @@ static int set_path(adh_config *c, const key_def *k, const char *text, char *why
         snprintf(why, whylen, "a path of 1 to %d characters is needed", PATH_MAX - 1);
         return -1;
     }
+    /* "-" is standard input or output to most programs; adhere's paths
+     * name files and directories (-o - made a directory called "-") */
+    if (!strcmp(text, "-")) {
+        snprintf(why, whylen, "'-' is not allowed: adhere reads and writes named files and directories, not standard "
+                 "input or output; write ./- for one named '-'");
+        return -1;
+    }
     snprintf((char *)c + k->off, PATH_MAX, "%s", text);
     return 0;
 }

@@ -55,3 +55,14 @@ int adh_data_dir(const char *sub, char *buf, size_t len)
     }
     return -1;
 }
+
+int adh_data_env_check(char *why, size_t whylen)
+{
+    const char *env = getenv("ADHERE_DATADIR");
+    struct stat st;
+    if (!env || !*env || (stat(env, &st) == 0 && S_ISDIR(st.st_mode)))
+        return 0;
+    snprintf(why, whylen, "ADHERE_DATADIR=%s is not a directory: set it to the one holding scenes/ and gnuplot/, or "
+             "unset it (adhere then looks beside its executable and in %s)", env, ADH_DATADIR);
+    return -1;
+}

@@ -16,4 +16,9 @@ int adh_data_root(int i, char *buf, size_t len);
  * ROOT/sub to buf. 0, or -1 when none holds it. */
 int adh_data_dir(const char *sub, char *buf, size_t len);
 
+/* $ADHERE_DATADIR, when set and not empty, names a directory: 0, or -1
+ * with why naming it (a misspelt one was passed over in silence, and the
+ * built-in places used instead). */
+int adh_data_env_check(char *why, size_t whylen);
+
 #endif

@@ -266,4 +266,19 @@ touch "$TMP/afile"
 rc=$?
 if [ "$rc" -eq 2 ] && grep -q "cannot create directory" "$TMP/stderr"; then ok "unwritable --out -> exit 2: $(cat "$TMP/stderr")"; else not_ok "unwritable --out -> exit $rc"; fi
 
+# "-" names no file here (standard output to most programs): -o - made a
+# directory called "-", --data=- looked for a file called "-"
+bad "^adhere: --out: '-' is not allowed: adhere reads and writes named files and directories, not standard input or output; write ./- for one named '-'$" -o -
+check "-o - leaves no directory called '-'" test ! -e ./-
+bad "^adhere: --data: '-' is not allowed" --data=-
+
+# a misspelt ADHERE_DATADIR was passed over in silence (the built-in places
+# used instead): refused, naming it, before anything is read or written
+ADHERE_DATADIR="$TMP/no-such-dir" "$ADHERE" --batch -q -o "$TMP/dd" fig1 >/dev/null 2>"$TMP/stderr"
+rc=$?
+check "ADHERE_DATADIR=missing -> exit 2 naming it, nothing written ($rc: $(cat "$TMP/stderr"))" \
+    sh -c "[ $rc -eq 2 ] && grep -qF 'adhere: ADHERE_DATADIR=$TMP/no-such-dir is not a directory' '$TMP/stderr' && [ ! -e '$TMP/dd' ]"
+ADHERE_DATADIR="$ADHERE_SRC/share/adhere" "$ADHERE" --plan fig1 >/dev/null 2>"$TMP/stderr"
+check "ADHERE_DATADIR naming the shipped data is read (exit $?)" [ $? -eq 0 ]
+
 done_testing
