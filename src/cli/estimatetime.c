@@ -197,6 +197,7 @@ static int run_estimate(const adh_run_spec *s, grid_cost *gc, run_est *e)
         e->lu = lu_for(gc, e->lu_nodes);
         e->step += STEP_LUS * e->lu;
     }
+    e->step *= e->c.work;
     e->cpu = e->build + e->c.steps * e->step;
     return isfinite(e->cpu) ? 0 : -1;
 }
@@ -262,14 +263,24 @@ static void print_run(FILE *f, const char *label, const run_est *e)
     adh_format_quantity(e->c.E_in, ADH_Q_PRESSURE, 3, ei, sizeof ei);
     adh_format_quantity(e->c.E_out, ADH_Q_PRESSURE, 3, eo, sizeof eo);
     int one = strcmp(ei, eo) == 0;   /* the same both ways: say it once */
-    fprintf(f, "time: %sabout %s of CPU (%.3g s: about %.0f integrator steps, %.0f out of contact and %.0f as the "
-               "contact line moves out to %s and back, %s a step in and %s out: 0.068 edge zones at the effective "
-               "modul%s %s%s%s, measured, at least 60 a branch; ", label, t, e->cpu, two_digits(e->c.steps), two_digits(e->c.free_steps),
-            two_digits(e->c.contact_steps), a, si, so, one ? "us" : "i", ei, one ? "" : " and ", one ? "" : eo);
-    if (e->c.lattice > 1.05)
-        fprintf(f, "%.2g times that for the lattice folds of a solid near elastic (Einf/E0 = %.3g); ", e->c.lattice,
-                e->c.E_ratio);
-    fprintf(f, "15 %% more for jumps and rejected steps; a step about %.3g ms: 14 kernel products of %.3g ms, ", e->step * 1e3, e->grid.product * 1e3);
+    if (e->c.rothe) {
+        fprintf(f, "time: %sabout %s of CPU (%.3g s: about %.0f integrator steps (Rothe steps), %.0f out of contact, the "
+                   "base 0.4 z0 a step, and %.0f as the contact line moves out to %s and back, %s a step in and %s out "
+                   "as q's error allows, measured, at least the base 0.17 z0 a step in contact; a step about %.3g ms: "
+                   "%.2g times IDAS's price for its Newton and GMRES iterations, ", label, t, e->cpu,
+                two_digits(e->c.steps), two_digits(e->c.free_steps), two_digits(e->c.contact_steps), a, si, so,
+                e->step * 1e3, e->c.work);
+    } else {
+        fprintf(f, "time: %sabout %s of CPU (%.3g s: about %.0f integrator steps, %.0f out of contact and %.0f as the "
+                   "contact line moves out to %s and back, %s a step in and %s out: 0.068 edge zones at the effective "
+                   "modul%s %s%s%s, measured, at least 60 a branch; ", label, t, e->cpu, two_digits(e->c.steps), two_digits(e->c.free_steps),
+                two_digits(e->c.contact_steps), a, si, so, one ? "us" : "i", ei, one ? "" : " and ", one ? "" : eo);
+        if (e->c.lattice > 1.05)
+            fprintf(f, "%.2g times that for the lattice folds of a solid near elastic (Einf/E0 = %.3g); ", e->c.lattice,
+                    e->c.E_ratio);
+        fprintf(f, "15 %% more for jumps and rejected steps; a step about %.3g ms: ", e->step * 1e3);
+    }
+    fprintf(f, "14 kernel products of %.3g ms, ", e->grid.product * 1e3);
     if (e->lu_nodes)
         fprintf(f, "a dense LU of %zu nodes (%.3g ms), ", e->lu_nodes, e->lu * 1e3);
     else if (e->grid.hierarchical)

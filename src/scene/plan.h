@@ -103,6 +103,10 @@ typedef struct adh_plan_time_cost {
     double E_in, E_out;    /* effective moduli approaching, retracting, Pa */
     double step_in, step_out;  /* the contact line's travel a step, m */
     double spring;         /* the instrument's k, N/m; NAN: none (its steps are not counted) */
+    int rothe;             /* 1: the Rothe steps' model (adh_visco_rothe_applies), 0: IDAS's */
+    double work;           /* a step's work against IDAS's step price: 1 for IDAS, 1 + 4.5
+                              times the contact line's mean move a step in Einf's edge
+                              zones for the Rothe steps (their Newton and GMRES iterations) */
 } adh_plan_time_cost;
 void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c);
 /* An elastic sphere in physical time integrates nothing: its cost is its

@@ -118,10 +118,91 @@ static double contact_branch(double a, double step)
     return a > 0 ? fmax(a / step, TIME_CONTACT_MIN_STEPS) : 0.0;
 }
 
+/* The Rothe steps (visco_rothe.c), measured on the same two spheres at
+ * Einf/E0 = 1.5, 3 and 10, 1 nm/s ... 1 mm/s (docs/viscoelastic.md): a
+ * step's length is held by q's error or by the move of the base and the
+ * surface (0.4 z0), whichever is shorter. Out of contact the move: the base
+ * 0.4 z0 a step from the start to z0 and back (94-245 steps measured). In
+ * contact q's error holds the contact line's step to ROTHE_EDGE_PER_STEP
+ * edge zones at E0 (1 + 2 y), as IDAS's, with no cap at Einf (fast, q
+ * hardly moves within a step and its error vanishes), longer where less of
+ * the compliance is delayed, by 1 / sqrt(g), g = (1 - E0/Einf) / 0.9 (at
+ * 1.5 E0 0.55 of 10 E0's steps at 1 nm/s), and no lattice factor (a static
+ * problem at each step, no integrator crawling round a fold); the surface's
+ * move holds the base to ROTHE_CONTACT_MOVE z0 a step in contact (0.08-0.09
+ * nm measured at 1 mm/s and 10 um/s) over its travel in contact, z0 - turn
+ * in and about twice that out (the jump-out lies about as far out as the
+ * turn is deep: 15-17 nm at sigma 7.5 to -5 nm, 9 nm at 2.25 to -3 nm),
+ * the steps the more of the two. A step's work grows with the contact
+ * line's move a step against Einf's edge zone, the static problem's length
+ * scale (its Newton and GMRES iterations: 9 GMRES a step at 10 E0 and
+ * 1 nm/s, 38 at 1.5 E0 and 1 mm/s, where the line moves 0.55 of it a step):
+ * 1 + ROTHE_WORK_PER_EDGE times that move, on IDAS's step price. */
+#define ROTHE_MOVE 0.4
+#define ROTHE_EDGE_PER_STEP 0.055
+#define ROTHE_DELAYED_REF 0.9
+#define ROTHE_CONTACT_MOVE 0.17
+#define ROTHE_WORK_PER_EDGE 4.5
+
+/* The contact line's step in contact: q's error's, at E0 (1 + 2 y) */
+static double rothe_step(const adh_material *m0, const adh_visco_rule_settings *v, double speed, double g)
+{
+    adh_material m = *m0;
+    m.E = v->sls.E0;
+    double y = sqrt(10.0 * speed * v->sls.tau / adh_edge_zone(&m));
+    m.E = v->sls.E0 * (1.0 + TIME_SPEED_STIFFENING * y);
+    return ROTHE_EDGE_PER_STEP * adh_edge_zone(&m) / sqrt(g);
+}
+
+/* The steps of a branch in contact: the contact line's travel a at step,
+ * or the base's travel h in contact at ROTHE_CONTACT_MOVE z0, the more. */
+static double rothe_contact(double a, double step, double h, double z0)
+{
+    return a > 0 ? fmax(a / step, fmax(h, 0.0) / (ROTHE_CONTACT_MOVE * z0)) : 0.0;
+}
+
+static void rothe_steps(const adh_run_spec *s, const adh_visco_rule_settings *v, adh_plan_time_cost *c)
+{
+    const adh_protocol_settings *ps = &s->proto;
+    adh_material m = s->mat;
+    double z0 = m.z0, g = fmax((1.0 - v->sls.E0 / v->sls.Einf) / ROTHE_DELAYED_REF, 1e-6);
+    c->step_in = rothe_step(&s->mat, v, v->drive.speed_in, g);
+    c->step_out = rothe_step(&s->mat, v, v->drive.speed_out, g);
+    /* the contact's size as IDAS's rule has it (at most Einf's JKR) */
+    (void)travel_step(&s->mat, v, v->drive.speed_in, &c->E_in);
+    (void)travel_step(&s->mat, v, v->drive.speed_out, &c->E_out);
+    double start = adh_config_start(s), deep = ps->nturns ? adh_protocol_deepest_turn(ps) : start;
+    double branch_free = fmax(start - z0, 0.0) / (ROTHE_MOVE * z0);
+    m.E = c->E_in;
+    c->a_turn = ps->nturns ? adh_jkr_radius(&m, m.z0 - deep) : 0.0;
+    double travel = c->a_turn;
+    c->free_steps = branch_free;
+    c->contact_steps = rothe_contact(c->a_turn, c->step_in, z0 - deep, z0);
+    m.E = c->E_out;
+    for (size_t i = 0; ps->unload && i < ps->nturns; i++) {
+        double a = adh_jkr_radius(&m, m.z0 - ps->turns[i]);
+        travel += a;
+        c->free_steps += branch_free + (v->drive.dwell > 0 ? TIME_DWELL_STEPS : 0.0);
+        c->contact_steps += rothe_contact(a, c->step_out, 2.0 * (z0 - ps->turns[i]), z0);
+    }
+    c->lattice = 1.0;
+    c->steps = c->free_steps + c->contact_steps;
+    m.E = v->sls.Einf;
+    c->work = c->contact_steps > 0 ? 1.0 + ROTHE_WORK_PER_EDGE * travel / c->contact_steps / adh_edge_zone(&m) : 1.0;
+}
+
 void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c)
 {
     adh_visco_rule_settings v;
     adh_config_visco(s, &v);
+    c->E_ratio = v.sls.Einf / v.sls.E0;
+    c->spring = v.drive.spring;
+    c->rothe = adh_visco_rothe_applies(&v.sls, &v.drive, &v.s);
+    c->work = 1.0;
+    if (c->rothe) {
+        rothe_steps(s, &v, c);
+        return;
+    }
     const adh_protocol_settings *ps = &s->proto;
     adh_material m = s->mat;
     double step_in = travel_step(&s->mat, &v, v.drive.speed_in, &c->E_in);
@@ -137,11 +218,9 @@ void adh_plan_time_steps(const adh_run_spec *s, adh_plan_time_cost *c)
         c->contact_steps += contact_branch(adh_jkr_radius(&m, m.z0 - ps->turns[i]), step_out);
     }
     c->lattice = lattice_factor(&v);
-    c->E_ratio = v.sls.Einf / v.sls.E0;
     c->contact_steps *= c->lattice;
     c->step_in = step_in;
     c->step_out = step_out;
-    c->spring = v.drive.spring;
     c->steps = TIME_EXTRA * (c->free_steps + c->contact_steps);
 }
 
