@@ -82,8 +82,9 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg);
 /* What a run in physical time is expected to take (plantime.c), in the
  * steps of the integrator that will run (adh_visco_rothe_applies, the
  * core's rule). The Rothe steps: the base 0.4 z0 a step out of contact; in
- * contact q's error's step, 0.055 edge zones at E0 (1 + 2y) (no cap at
- * Einf) over sqrt((1 - E0/Einf)/0.9), at least the base 0.17 z0 a step
+ * contact q's error's step, 0.055 edge zones at E0 (1 + 2y) (y of the
+ * contact line's speed, no cap at Einf) over sqrt((1 - E0/Einf)/0.9), at
+ * least the base 0.17 z0 a step
  * (rothe_steps, docs/viscoelastic.md). IDAS: about
  * one integrator step per TIME_EDGE_PER_STEP (0.068) edge zones the
  * contact line moves, the edge zone (adh_edge_zone) of an effective modulus

@@ -119,12 +119,16 @@ static double contact_branch(double a, double step)
 }
 
 /* The Rothe steps (visco_rothe.c), measured on the same two spheres at
- * Einf/E0 = 1.5, 3 and 10, 1 nm/s ... 1 mm/s (docs/viscoelastic.md): a
+ * Einf/E0 = 1.5, 3 and 10, 1 nm/s ... 1 mm/s, and R = 1 um
+ * (docs/viscoelastic.md: planned 0.73-1.23 of the steps run): a
  * step's length is held by q's error or by the move of the base and the
  * surface (0.4 z0), whichever is shorter. Out of contact the move: the base
  * 0.4 z0 a step from the start to z0 and back (94-245 steps measured). In
  * contact q's error holds the contact line's step to ROTHE_EDGE_PER_STEP
- * edge zones at E0 (1 + 2 y), as IDAS's, with no cap at Einf (fast, q
+ * edge zones at E0 (1 + 2 y), as IDAS's, but y of the contact line's speed
+ * (the base's times a0 / (z0 - turn), a0 JKR's radius at E0 there, over
+ * ROTHE_LINE_REF, the Figure 4 sphere's 59: at R = 1 um it is 18, and the
+ * line stepped half as far at 100 nm/s) and with no cap at Einf (fast, q
  * hardly moves within a step and its error vanishes), longer where less of
  * the compliance is delayed, by 1 / sqrt(g), g = (1 - E0/Einf) / 0.9 (at
  * 1.5 E0 0.55 of 10 E0's steps at 1 nm/s), and no lattice factor (a static
@@ -143,13 +147,15 @@ static double contact_branch(double a, double step)
 #define ROTHE_DELAYED_REF 0.9
 #define ROTHE_CONTACT_MOVE 0.17
 #define ROTHE_WORK_PER_EDGE 4.5
+#define ROTHE_LINE_REF 60.0
 
-/* The contact line's step in contact: q's error's, at E0 (1 + 2 y) */
-static double rothe_step(const adh_material *m0, const adh_visco_rule_settings *v, double speed, double g)
+/* The contact line's step in contact: q's error's, at E0 (1 + 2 y), y of
+ * the contact line's speed (line: its speed over the base's) */
+static double rothe_step(const adh_material *m0, const adh_visco_rule_settings *v, double speed, double g, double line)
 {
     adh_material m = *m0;
     m.E = v->sls.E0;
-    double y = sqrt(10.0 * speed * v->sls.tau / adh_edge_zone(&m));
+    double y = sqrt(10.0 * speed * line / ROTHE_LINE_REF * v->sls.tau / adh_edge_zone(&m));
     m.E = v->sls.E0 * (1.0 + TIME_SPEED_STIFFENING * y);
     return ROTHE_EDGE_PER_STEP * adh_edge_zone(&m) / sqrt(g);
 }
@@ -166,12 +172,14 @@ static void rothe_steps(const adh_run_spec *s, const adh_visco_rule_settings *v,
     const adh_protocol_settings *ps = &s->proto;
     adh_material m = s->mat;
     double z0 = m.z0, g = fmax((1.0 - v->sls.E0 / v->sls.Einf) / ROTHE_DELAYED_REF, 1e-6);
-    c->step_in = rothe_step(&s->mat, v, v->drive.speed_in, g);
-    c->step_out = rothe_step(&s->mat, v, v->drive.speed_out, g);
+    double start = adh_config_start(s), deep = ps->nturns ? adh_protocol_deepest_turn(ps) : start;
+    m.E = v->sls.E0;
+    double line = ps->nturns && deep < z0 ? adh_jkr_radius(&m, z0 - deep) / (z0 - deep) : ROTHE_LINE_REF;
+    c->step_in = rothe_step(&s->mat, v, v->drive.speed_in, g, line);
+    c->step_out = rothe_step(&s->mat, v, v->drive.speed_out, g, line);
     /* the contact's size as IDAS's rule has it (at most Einf's JKR) */
     (void)travel_step(&s->mat, v, v->drive.speed_in, &c->E_in);
     (void)travel_step(&s->mat, v, v->drive.speed_out, &c->E_out);
-    double start = adh_config_start(s), deep = ps->nturns ? adh_protocol_deepest_turn(ps) : start;
     double branch_free = fmax(start - z0, 0.0) / (ROTHE_MOVE * z0);
     m.E = c->E_in;
     c->a_turn = ps->nturns ? adh_jkr_radius(&m, m.z0 - deep) : 0.0;
