@@ -17,7 +17,9 @@ static int near(double a, double b)
     return fabs(a - b) <= 1e-9 * fmax(1.0, fabs(b));
 }
 
-/* Physical time's steps (adh_plan_time_steps): the contact line's travel
+/* Physical time's steps (adh_plan_time_steps) as IDAS takes them (it
+ * integrates through a spring, whose own steps the plan does not count):
+ * the contact line's travel
  * is JKR's radius at the turn (its overlap there is z0 - turn), a step's
  * travel 0.068 edge zones of E0 when slow and of Einf when fast, and an
  * elastic sphere (Einf = E0) does not depend on the speed and takes 3.5
@@ -32,8 +34,10 @@ static void time_steps(adh_config *c)
     s->time.tau = 1e-3;
     s->time.speed_in = s->time.speed_out = 1e-15;
     s->time.dwell = 0;
+    s->time.spring = 1.0;
     adh_plan_time_cost slow, fast, slow_el, fast_el;
     adh_plan_time_steps(s, &slow);
+    ok(!slow.rothe, "through a spring: IDAS's steps (its rule, adh_visco_rothe_applies)");
     double ov;
     adh_material m = s->mat;
     m.E = slow.E_in;
@@ -79,6 +83,38 @@ static void time_steps(adh_config *c)
        "its lattice folds", slow_el.steps);
 }
 
+/* Without a spring, up to Einf = 10 E0, the Rothe steps run (the core's
+ * rule) and the plan counts theirs: no lattice factor near elastic, and
+ * fast (1 m/s) the base's travel in contact, z0 - turn in and twice that
+ * out, at 0.17 z0 a step; past 10 E0 IDAS's again. */
+static void rothe_steps(adh_config *c)
+{
+    adh_config_default(c);
+    adh_run_spec *s = &c->spec;
+    s->mode = ADH_MODE_TIME;
+    s->time.sls = 1;
+    s->time.Einf = 1.5 * s->mat.E;
+    s->time.tau = 1e-3;
+    s->time.speed_in = s->time.speed_out = 1.0;
+    s->time.dwell = 0;
+    s->time.spring = INFINITY;
+    adh_plan_time_cost r, idas, far;
+    adh_plan_time_steps(s, &r);
+    double h = s->mat.z0 - adh_protocol_deepest_turn(&s->proto);
+    ok(r.rothe && r.lattice == 1.0 && near(r.contact_steps, 3.0 * h / (0.17 * s->mat.z0)),
+       "no spring, Einf = 1.5 E0, 1 m/s: the Rothe steps', no lattice factor, in contact the base's %.3g nm at "
+       "0.17 z0 a step (%.1f)", 3e9 * h, r.contact_steps);
+    s->time.spring = 1.0;
+    adh_plan_time_steps(s, &idas);
+    ok(!idas.rothe && idas.lattice > 1.5 && idas.steps > 2 * r.steps,
+       "through a spring IDAS's, with its lattice folds (%.2g): %.0f steps against the Rothe steps' %.0f",
+       idas.lattice, idas.steps, r.steps);
+    s->time.spring = INFINITY;
+    s->time.Einf = 11 * s->mat.E;
+    adh_plan_time_steps(s, &far);
+    ok(!far.rothe, "no spring, Einf = 11 E0: IDAS's");
+}
+
 int main(void)
 {
     /* Figure 7 as it ran: eps = 1, 0.5, 0.1 pm cost 1 : 1.65 : 5.28
@@ -115,6 +151,7 @@ int main(void)
     ok(i01 / i1 > 4 && i01 / i1 < pow(10, 0.72) * 1.0001, "eps 10 times smaller: %.2f times the iterations "
        "(the steps out of contact do not grow)", i01 / i1);
     time_steps(&c);
+    rothe_steps(&c);
 
     /* a sweep of more runs than the plan lists one by one (32): the
      * iterations' total summed runs[i] over every run, reading past the
