@@ -93,6 +93,18 @@ typedef struct static_front {
                          the lattice seen) */
     size_t nf;        /* nodes of the uniform fine band */
     double fH;        /* the gap held at the front node, m */
+    /* A phase sweep (HODLR preconditioner: the graded grids): at an
+     * extremum the front crosses one ring in ADH_FRONT_PHASES steps, each
+     * holding the gap at fe[0] at a value between fH (phase 0) and hin
+     * (the gap one ring inside at phase 0: phase 1), instead of ~20 steps
+     * in Q over a dozen rings */
+    int pw;           /* sweeping */
+    size_t pwleft;    /* steps left in the sweep */
+    size_t nosweep[2]; /* no new sweep for h0's maximum, F's minimum before
+                          the front passes this node */
+    double ph[3];     /* the phases of fe[0..2] (fractions of a ring) */
+    double phn;       /* the phase of the step being taken */
+    double hin;
     int ok;           /* front mode allowed (it falls back to Q for good
                          when a one-ring step fails) */
 } static_front;
@@ -173,7 +185,9 @@ int static_qstep_iterate(adh_static *w);
 /* static_front.c */
 void static_front_set(adh_static *w);
 size_t static_front_node_of(const adh_static *w, const adh_state *x);
-void static_front_predict(adh_static *w, size_t tgt, adh_state *x);
+void static_front_aim(adh_static *w);
+void static_front_predict(adh_static *w, size_t tgt, double phase, adh_state *x);
+int static_front_is_target(const adh_static *w, size_t node);
 void static_front_row(adh_static *w, static_row *row);
 int static_front_past_end(adh_static *w);
 void static_front_accepted(adh_static *w, size_t iters, double q, double q0);

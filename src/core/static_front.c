@@ -30,6 +30,12 @@
 #ifndef ADH_FRONT_WINDOW
 #define ADH_FRONT_WINDOW 6 /* rings each side of an extremum stepped in Q */
 #endif
+#ifndef ADH_FRONT_PHASES /* steps of a phase sweep across one ring */
+#define ADH_FRONT_PHASES 16
+#endif
+#ifndef ADH_FRONT_SWEEP_MIN /* rings in contact for a phase sweep */
+#define ADH_FRONT_SWEEP_MIN 400
+#endif
 
 /* Front mode off; allowed when the lattice folds are stepped over; the
  * uniform fine band's extent. */
@@ -38,6 +44,8 @@ void static_front_set(adh_static *w)
     static_front *fr = &w->fr;
     fr->on = 0;
     fr->fwin = 0;
+    fr->pw = 0;
+    fr->nosweep[0] = fr->nosweep[1] = 0;
     fr->ok = w->skip;
     fr->nf = 1;
     double w0 = adh_rings_width(w->grid, 0);
@@ -54,14 +62,60 @@ size_t static_front_node_of(const adh_static *w, const adh_state *x)
     return e;
 }
 
-/* Front mode's predictor for the front at node tgt: the gap profiles of
- * the last front points (Lagrange in the front radius), each moved out by
- * its distance to tgt within the fine band (whole rings: exact shifts, the
- * axis's flat gap repeated), u extrapolated in place beyond it. */
-void static_front_predict(adh_static *w, size_t tgt, adh_state *x)
+/* static_front_predict in a phase sweep: the front at tgt + phase rings,
+ * the last points' at fe[j] + ph[j]; each gap profile moved out by its
+ * distance in rings, whole and fractional (linear between rings). */
+static void front_predict_phased(adh_static *w, size_t tgt, double phase, adh_state *x)
 {
     const static_front *fr = &w->fr;
     size_t n = w->n, np = fr->fn < 3 ? fr->fn : 3;
+    const double *us[3] = { w->st->u, w->q.u1, w->q.u2 };
+    double h0s[3] = { w->st->h0, w->q.h1, w->q.h2 }, L[3], pj[3];
+    double a = (double)tgt + phase;
+    for (size_t j = 0; j < np; j++)
+        pj[j] = (double)fr->fe[j] + fr->ph[j];
+    for (size_t j = 0; j < np; j++) {
+        L[j] = 1;
+        for (size_t l = 0; l < np; l++)
+            if (l != j)
+                L[j] *= (a - pj[l]) / (pj[j] - pj[l]);
+    }
+    x->h0 = 0;
+    for (size_t j = 0; j < np; j++)
+        x->h0 += L[j] * h0s[j];
+    for (size_t i = 0; i < n; i++) {
+        double v = 0;
+        if (i < fr->nf) {
+            for (size_t j = 0; j < np; j++) {
+                double d = a - pj[j], whole = floor(d), f = d - whole;
+                double m0 = (double)i - whole, m1 = m0 - 1;
+                size_t k0 = m0 > 0 ? (size_t)m0 : 0, k1 = m1 > 0 ? (size_t)m1 : 0;
+                double g0 = h0s[j] + w->shape[k0] - us[j][k0], g1 = h0s[j] + w->shape[k1] - us[j][k1];
+                v += L[j] * ((1 - f) * g0 + f * g1);
+            }
+            x->u[i] = x->h0 + w->shape[i] - v;
+        } else {
+            for (size_t j = 0; j < np; j++)
+                v += L[j] * us[j][i];
+            x->u[i] = v;
+        }
+    }
+}
+
+/* Front mode's predictor for the front at node tgt: the gap profiles of
+ * the last front points (Lagrange in the front radius), each moved out by
+ * its distance to tgt within the fine band (whole rings: exact shifts, the
+ * axis's flat gap repeated), u extrapolated in place beyond it. In a phase
+ * sweep the front is at tgt + phase and the points at theirs
+ * (front_predict_phased). */
+void static_front_predict(adh_static *w, size_t tgt, double phase, adh_state *x)
+{
+    const static_front *fr = &w->fr;
+    size_t n = w->n, np = fr->fn < 3 ? fr->fn : 3;
+    if (phase != 0 || (fr->ph[0] != 0 && np > 0) || (fr->ph[1] != 0 && np > 1) || (fr->ph[2] != 0 && np > 2)) {
+        front_predict_phased(w, tgt, phase, x);
+        return;
+    }
     const double *r = w->grid->r;
     const double *us[3] = { w->st->u, w->q.u1, w->q.u2 };
     double h0s[3] = { w->st->h0, w->q.h1, w->q.h2 }, L[3];
@@ -97,13 +151,36 @@ void static_front_predict(adh_static *w, size_t tgt, adh_state *x)
  * Jacobian's. */
 void static_front_row(adh_static *w, static_row *row)
 {
-    size_t tgt = w->fr.fe[0] + w->fr.fk;
-    double th = w->s.u_weight;
+    const static_front *fr = &w->fr;
+    size_t tgt = fr->fe[0] + fr->fk;
+    double th = w->s.u_weight, gap = fr->pw ? (1 - fr->phn) * fr->fH + fr->phn * fr->hin : fr->fH;
     memset(w->q.rG, 0, w->n * sizeof *w->q.rG);
     w->q.rG[tgt] = -1.0 / th; /* the row of h_tgt = h0 + r^2/2R - u_tgt */
-    *row = (static_row){ .kind = STATIC_ROW_GAP, .nu = w->q.rG, .nh = 1.0, .node = tgt, .gap = w->fr.fH,
+    *row = (static_row){ .kind = STATIC_ROW_GAP, .nu = w->q.rG, .nh = 1.0, .node = tgt, .gap = gap,
                          .refresh = w->fr.fk >= ADH_FRONT_REFRESH &&
                                     !adh_precond_type_of(w->nw.P)->truncates };
+}
+
+/* A phase sweep's next step: a 1/ADH_FRONT_PHASES ring on (fk whole rings
+ * and the phase phn past them). Front steps otherwise keep theirs. */
+void static_front_aim(adh_static *w)
+{
+    static_front *fr = &w->fr;
+    if (!fr->pw)
+        return;
+    double pos = fr->ph[0] + 1.0 / ADH_FRONT_PHASES;
+    size_t whole = (size_t)floor(pos + 1e-9);
+    fr->fk = whole;
+    fr->phn = whole ? 0 : pos;
+}
+
+/* The corrected point's front node is the one asked for: the target ring,
+ * or in a sweep past mid-ring (its gap held below 1.5 z0) the next. */
+int static_front_is_target(const adh_static *w, size_t node)
+{
+    const static_front *fr = &w->fr;
+    size_t tgt = fr->fe[0] + fr->fk;
+    return node == tgt || (fr->pw && node == tgt + 1);
 }
 
 /* A front step went past h0_end: a shorter one to about the end first
@@ -133,6 +210,8 @@ static void front_start(adh_static *w)
     fr->fn = 1;
     fr->fk = 1;
     fr->fhold = 0;
+    fr->pw = 0;
+    fr->ph[0] = fr->ph[1] = fr->ph[2] = fr->phn = 0;
 }
 
 /* At one lattice phase the jump-out (h0's maximum) and the pull-off (F's
@@ -142,6 +221,8 @@ static void front_start(adh_static *w)
  * front steps shorten to land a few rings before it, and from there steps
  * in Q of about a ring (every phase) cross it. kused: the last step in
  * rings, dq: Q's change over it. */
+static void front_sweep_near(adh_static *w, const double *ahead, const double *behind);
+
 static void front_extremum(adh_static *w, size_t kused, double dq)
 {
     static_front *fr = &w->fr;
@@ -150,7 +231,7 @@ static void front_extremum(adh_static *w, size_t kused, double dq)
     const double *r = w->grid->r;
     double a[3] = { r[fr->fe[2]], r[fr->fe[1]], r[fr->fe[0]] }, hh[3] = { w->q.h2, w->q.h1, w->st->h0 };
     double FF[3] = { adh_folds_recent(w->folds, 2).F, adh_folds_recent(w->folds, 1).F, w->F };
-    double dr = adh_rings_width(w->grid, 0), ahead = INFINITY;
+    double dr = adh_rings_width(w->grid, 0), ahd[2] = { INFINITY, INFINITY }, bhd[2] = { INFINITY, INFINITY };
     for (int which = 0; which < 2; which++) {
         const double *y = which ? FF : hh;
         /* the parabola y = y1 + b (x - x1) + c (x - x1)^2 through the three */
@@ -160,8 +241,15 @@ static void front_extremum(adh_static *w, size_t kused, double dq)
             continue; /* F's minimum, h0's maximum */
         double v = a[1] - b / (2 * c);
         if (v > a[2])
-            ahead = fmin(ahead, (v - a[2]) / dr);
+            ahd[which] = (v - a[2]) / dr;
+        else
+            bhd[which] = (a[2] - v) / dr;
     }
+    if (!adh_precond_type_of(w->nw.P)->truncates && fr->fe[0] >= ADH_FRONT_SWEEP_MIN) {
+        front_sweep_near(w, ahd, bhd);
+        return;
+    }
+    double ahead = fmin(ahd[0], ahd[1]);
     if (!(ahead < 2.0 * (double)fr->fk + ADH_FRONT_WINDOW))
         return;
     if (ahead > 2 * ADH_FRONT_WINDOW) {
@@ -175,6 +263,42 @@ static void front_extremum(adh_static *w, size_t kused, double dq)
     fr->on = 0;
     fr->fwin = fr->fe[0] + (size_t)ceil(ahead) + ADH_FRONT_WINDOW;
     w->q.dq = dq / (double)kused;
+}
+
+/* Under the HODLR preconditioner (the graded grids) the lattice's swing
+ * at an extremum is found by a phase sweep, not by steps in Q: the curve
+ * repeats from ring to ring there (the contact spans thousands of rings:
+ * at sigma = 100 h0 at one phase moves by 0.1 pm over a dozen rings, its
+ * swing over the phases of one ring is 32 pm), so one ring crossed in
+ * ADH_FRONT_PHASES steps holds every phase a dozen rings in Q do, and a
+ * step held at a ring's gap converges in ~4 Newton iterations where a
+ * step in Q takes ~6 (each with ~6 GMRES iterations). The front steps
+ * halve towards the extremum and sweep the ring it is within one of. */
+static void front_sweep_near(adh_static *w, const double *ahead, const double *behind)
+{
+    static_front *fr = &w->fr;
+    double next = INFINITY;
+    int now = 0;
+    for (int k = 0; k < 2; k++) {
+        if (fr->fe[0] < fr->nosweep[k])
+            continue; /* swept already */
+        now |= ahead[k] <= 1.0 || behind[k] <= 3.0;
+        next = fmin(next, ahead[k]);
+    }
+    if (now && fr->fe[0] > 0) {
+        fr->pw = 1;
+        fr->pwleft = ADH_FRONT_PHASES;
+        fr->hin = w->st->h[fr->fe[0] - 1];
+        for (int k = 0; k < 2; k++)
+            if (ahead[k] <= 1.0 || behind[k] <= 3.0)
+                fr->nosweep[k] = fr->fe[0] + 2 * ADH_FRONT_WINDOW;
+        return;
+    }
+    if (next < 2.0 * (double)fr->fk + ADH_FRONT_WINDOW) {
+        size_t k = (size_t)(next / 2);
+        fr->fk = k > 1 ? k : 1;
+        fr->fhold = 1;
+    }
 }
 
 /* An accepted front step: the front moves on, and the next step grows
@@ -194,7 +318,16 @@ void static_front_accepted(adh_static *w, size_t iters, double q, double q0)
     static_front *fr = &w->fr;
     size_t kused = fr->fk;
     fr->fe[2] = fr->fe[1], fr->fe[1] = fr->fe[0], fr->fe[0] += fr->fk;
+    fr->ph[2] = fr->ph[1], fr->ph[1] = fr->ph[0], fr->ph[0] = fr->pw ? fr->phn : 0;
     fr->fn++;
+    if (fr->pw) {
+        /* swept: front steps from here, at this point's phase */
+        if (--fr->pwleft == 0) {
+            fr->pw = 0;
+            front_start(w);
+        }
+        return;
+    }
     if (q > q0)
         w->q.dq = q - q0; /* should it fall back to steps in Q */
     if (fr->fhold)
@@ -242,6 +375,14 @@ void static_front_clamp(adh_static *w)
 int static_front_failed(adh_static *w, int fix)
 {
     static_front *fr = &w->fr;
+    if (fr->on && !fix && fr->pw) {
+        /* a sweep's step failed: steps in Q across the extremum instead */
+        fr->pw = 0;
+        fr->on = 0;
+        fr->fwin = fr->fe[0] + 2 * ADH_FRONT_WINDOW;
+        w->q.dq = w->q.dq > 0 ? w->q.dq : w->s.ds_init * w->q.qslope;
+        return 1;
+    }
     if (fr->on && !fix) {
         if (fr->fk == 1) {
             fr->on = 0;

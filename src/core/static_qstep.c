@@ -100,11 +100,12 @@ static int correct(adh_static *w, double ds, int fix, size_t *iters)
     static_row row = { .kind = STATIC_ROW_PLANE, .nu = w->nw.zero, .nh = 1.0 };
     if (fix) {
         if (w->fr.on) {
-            static_front_predict(w, w->fr.fend, x);
+            static_front_predict(w, w->fr.fend, 0, x);
             x->h0 = h0_end;
         }
     } else if (w->fr.on) {
-        static_front_predict(w, w->fr.fe[0] + w->fr.fk, x);
+        static_front_aim(w);
+        static_front_predict(w, w->fr.fe[0] + w->fr.fk, w->fr.pw ? w->fr.phn : 0, x);
         static_front_row(w, &row);
     } else {
         double qtarget = w->q.q + w->q.dq;
@@ -176,7 +177,7 @@ int static_qstep_iterate(adh_static *w)
         }
         /* the gap fH at the target ring, but the contact is not the disk
          * up to it: not the front that was asked for */
-        if (ok && w->fr.on && !fix && static_front_node_of(w, w->trial) != w->fr.fe[0] + w->fr.fk)
+        if (ok && w->fr.on && !fix && !static_front_is_target(w, static_front_node_of(w, w->trial)))
             ok = 0;
         if (ok)
             return accepted(w, fix, iters);
