@@ -24,6 +24,7 @@
 #define ADH_FRONT_GAP 1.5 /* z0: the front node's gap is above this */
 #define ADH_FRONT_MIN 8   /* rings in contact before front mode starts */
 #define ADH_FRONT_REL 10
+#define ADH_FRONT_REL_SWEEP 5 /* ... where the extremes are swept */
 #ifndef ADH_FRONT_REFRESH /* front steps of this many rings refactorize first */
 #define ADH_FRONT_REFRESH 2
 #endif
@@ -35,6 +36,9 @@
 #endif
 #ifndef ADH_FRONT_SWEEP_MIN /* rings in contact for a phase sweep */
 #define ADH_FRONT_SWEEP_MIN 400
+#endif
+#ifndef ADH_FRONT_SWEEP_BAND /* and rings of the fine band */
+#define ADH_FRONT_SWEEP_BAND 4000
 #endif
 
 /* Front mode off; allowed when the lattice folds are stepped over; the
@@ -223,6 +227,21 @@ static void front_start(adh_static *w)
  * rings, dq: Q's change over it. */
 static void front_sweep_near(adh_static *w, const double *ahead, const double *behind);
 
+/* The extremes are found by phase sweeps (front_sweep_near) under the
+ * HODLR preconditioner (the graded grids) on fine bands of
+ * ADH_FRONT_SWEEP_BAND rings or more (sigma above ~40), with the contact
+ * ADH_FRONT_SWEEP_MIN rings or more across (the curve at one phase flat
+ * over a few rings). At sigma = 20 and 30 (bands of 1 640 and 2 790
+ * rings) the sweeps found the lattice's extremes more closely than the
+ * steps in Q, and further from the finer grid's: pull-off 9.5e-4 and
+ * 1.07e-3 from it, hysteresis 1.0e-3 and 1.6e-3 (docs/static-curve.md),
+ * so there the steps in Q stay. */
+static int front_sweeps(const adh_static *w)
+{
+    return !adh_precond_type_of(w->nw.P)->truncates && w->fr.nf >= ADH_FRONT_SWEEP_BAND &&
+           w->fr.fe[0] >= ADH_FRONT_SWEEP_MIN;
+}
+
 static void front_extremum(adh_static *w, size_t kused, double dq)
 {
     static_front *fr = &w->fr;
@@ -245,7 +264,7 @@ static void front_extremum(adh_static *w, size_t kused, double dq)
         else
             bhd[which] = (a[2] - v) / dr;
     }
-    if (!adh_precond_type_of(w->nw.P)->truncates && fr->fe[0] >= ADH_FRONT_SWEEP_MIN) {
+    if (front_sweeps(w)) {
         front_sweep_near(w, ahd, bhd);
         return;
     }
@@ -336,7 +355,8 @@ void static_front_accepted(adh_static *w, size_t iters, double q, double q0)
         fr->fk += fr->fk / 2 > 1 ? fr->fk / 2 : 1;
     else if (iters >= ADH_FRONT_GROW + 3)
         fr->fk = fr->fk * 2 / 3 > 1 ? fr->fk * 2 / 3 : 1;
-    size_t kmax = fr->fe[0] / ADH_FRONT_REL, cap = fr->nf / ADH_FRONT_BAND;
+    size_t rel = front_sweeps(w) ? ADH_FRONT_REL_SWEEP : ADH_FRONT_REL;
+    size_t kmax = fr->fe[0] / rel, cap = fr->nf / ADH_FRONT_BAND;
     cap = cap > ADH_FRONT_MAX ? cap : ADH_FRONT_MAX;
     kmax = kmax < 1 ? 1 : kmax > cap ? cap : kmax;
     if (fr->fk > kmax)
