@@ -93,18 +93,18 @@ typedef struct static_front {
                          the lattice seen) */
     size_t nf;        /* nodes of the uniform fine band */
     double fH;        /* the gap held at the front node, m */
-    /* A phase sweep (HODLR preconditioner: the graded grids): at an
-     * extremum the front crosses one ring in ADH_FRONT_PHASES steps, each
-     * holding the gap at fe[0] at a value between fH (phase 0) and hin
-     * (the gap one ring inside at phase 0: phase 1), instead of ~20 steps
-     * in Q over a dozen rings */
+    /* A phase sweep (HODLR preconditioner, fine bands of 4000 rings or
+     * more: static_front.c): at an extremum the front crosses one ring in
+     * ADH_FRONT_PHASES steps, each holding the gap at fe[0] at a value
+     * between fH (phase 0) and hin (phase 1), instead of ~20 steps in Q
+     * over a dozen rings */
     int pw;           /* sweeping */
     size_t pwleft;    /* steps left in the sweep */
     size_t nosweep[2]; /* no new sweep for h0's maximum, F's minimum before
                           the front passes this node */
     double ph[3];     /* the phases of fe[0..2] (fractions of a ring) */
     double phn;       /* the phase of the step being taken */
-    double hin;
+    double hin;       /* the gap a ring inside the front at phase 0, m */
     int ok;           /* front mode allowed (it falls back to Q for good
                          when a one-ring step fails) */
 } static_front;

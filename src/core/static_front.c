@@ -218,13 +218,6 @@ static void front_start(adh_static *w)
     fr->ph[0] = fr->ph[1] = fr->ph[2] = fr->phn = 0;
 }
 
-/* At one lattice phase the jump-out (h0's maximum) and the pull-off (F's
- * minimum) would miss the lattice's own swing, up to ~1e-3 (the exact
- * curve's extremes are its highest lattice folds): when the parabola
- * through the last three front points puts either a few steps ahead, the
- * front steps shorten to land a few rings before it, and from there steps
- * in Q of about a ring (every phase) cross it. kused: the last step in
- * rings, dq: Q's change over it. */
 static void front_sweep_near(adh_static *w, const double *ahead, const double *behind);
 
 /* The extremes are found by phase sweeps (front_sweep_near) under the
@@ -242,6 +235,14 @@ static int front_sweeps(const adh_static *w)
            w->fr.fe[0] >= ADH_FRONT_SWEEP_MIN;
 }
 
+/* At one lattice phase the jump-out (h0's maximum) and the pull-off (F's
+ * minimum) would miss the lattice's own swing, up to ~1e-3 (the exact
+ * curve's extremes are its highest lattice folds): when the parabola
+ * through the last three front points puts either a few steps ahead, the
+ * front steps shorten to land a few rings before it, and from there steps
+ * in Q of about a ring (every phase) cross it; where front_sweeps, a
+ * phase sweep of one ring does (front_sweep_near). kused: the last step
+ * in rings, dq: Q's change over it. */
 static void front_extremum(adh_static *w, size_t kused, double dq)
 {
     static_front *fr = &w->fr;
@@ -284,15 +285,18 @@ static void front_extremum(adh_static *w, size_t kused, double dq)
     w->q.dq = dq / (double)kused;
 }
 
-/* Under the HODLR preconditioner (the graded grids) the lattice's swing
- * at an extremum is found by a phase sweep, not by steps in Q: the curve
- * repeats from ring to ring there (the contact spans thousands of rings:
- * at sigma = 100 h0 at one phase moves by 0.1 pm over a dozen rings, its
- * swing over the phases of one ring is 32 pm), so one ring crossed in
- * ADH_FRONT_PHASES steps holds every phase a dozen rings in Q do, and a
- * step held at a ring's gap converges in ~4 Newton iterations where a
- * step in Q takes ~6 (each with ~6 GMRES iterations). The front steps
- * halve towards the extremum and sweep the ring it is within one of. */
+/* Where front_sweeps, the lattice's swing at an extremum is found by a
+ * phase sweep, not by steps in Q: the curve repeats from ring to ring
+ * there (the contact spans thousands of rings: at sigma = 100 h0 at one
+ * phase moves by 0.1 pm over a dozen rings, its swing over the phases of
+ * one ring is 32 pm, the same in each), so one ring crossed in
+ * ADH_FRONT_PHASES steps holds every phase a dozen rings in Q do. A step
+ * of a sixteenth of a ring from the last (whose profile moved out by it
+ * predicts the next) converges in 2 Newton iterations of ~5 GMRES, ~40 ms
+ * at sigma = 100, where a step in Q across the lattice took 5-6 of ~6
+ * (~120 ms: its predictor, a parabola in Q over points at other phases,
+ * was off by ~0.5 z0). The front steps halve towards the extremum and
+ * sweep the ring it is within one of (three past it). */
 static void front_sweep_near(adh_static *w, const double *ahead, const double *behind)
 {
     static_front *fr = &w->fr;
@@ -330,6 +334,8 @@ static void front_sweep_near(adh_static *w, const double *ahead, const double *b
  * turn, 0.3 edge widths a ring: ~1 640 rings at sigma = 20, ~12 800 at
  * 100): 210 front steps at sigma = 100 against 66 at 20; with the cap a
  * share of the band 110, where the tenth of the contact radius binds
+ * (a fifth where the extremes are swept: sigma = 100 237 -> 205 points,
+ * the extremes the same)
  * (docs/static-curve.md). Up to sigma ~ 25 (a band of 2 048 rings) the
  * cap is 64 as before. q, q0: Q at the new point and the one before. */
 void static_front_accepted(adh_static *w, size_t iters, double q, double q0)
