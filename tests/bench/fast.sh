@@ -10,8 +10,9 @@
 #     printed numbers compared too (every summary value to 10 digits);
 #   - the static curve at each sigma of BENCH_SIGMAS (default 1 2 5 7.5 10
 #     15 20 50 100; E set for each, defaults otherwise) against sigma = 20,
-#     with its grid, points and time a point (docs/performance.md says why
-#     sigma = 50 and 100 stay above 3x: the rings the grid needs).
+#     with its grid, points and time a point (docs/performance.md says where
+#     sigma = 50 and 100's time goes, and why they stay above 3x: the rings
+#     the grid needs).
 # BENCH_FIGURES=" " (a blank) runs no figure.
 # BENCH_ROUNDS (default 3) rounds. ADHERE: the program (default ./adhere).
 # BENCH_ARGS_<figure>: more arguments for that figure's runs, both alike
