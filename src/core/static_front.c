@@ -229,10 +229,14 @@ static void front_sweep_near(adh_static *w, const double *ahead, const double *b
  * steps in Q, and further from the finer grid's: pull-off 9.5e-4 and
  * 1.07e-3 from it, hysteresis 1.0e-3 and 1.6e-3 (docs/static-curve.md),
  * so there the steps in Q stay. */
+static int front_band_swept(const adh_static *w)
+{
+    return !adh_precond_type_of(w->nw.P)->truncates && w->fr.nf >= ADH_FRONT_SWEEP_BAND;
+}
+
 static int front_sweeps(const adh_static *w)
 {
-    return !adh_precond_type_of(w->nw.P)->truncates && w->fr.nf >= ADH_FRONT_SWEEP_BAND &&
-           w->fr.fe[0] >= ADH_FRONT_SWEEP_MIN;
+    return front_band_swept(w) && w->fr.fe[0] >= ADH_FRONT_SWEEP_MIN;
 }
 
 /* At one lattice phase the jump-out (h0's maximum) and the pull-off (F's
@@ -361,7 +365,7 @@ void static_front_accepted(adh_static *w, size_t iters, double q, double q0)
         fr->fk += fr->fk / 2 > 1 ? fr->fk / 2 : 1;
     else if (iters >= ADH_FRONT_GROW + 3)
         fr->fk = fr->fk * 2 / 3 > 1 ? fr->fk * 2 / 3 : 1;
-    size_t rel = front_sweeps(w) ? ADH_FRONT_REL_SWEEP : ADH_FRONT_REL;
+    size_t rel = front_band_swept(w) ? ADH_FRONT_REL_SWEEP : ADH_FRONT_REL;
     size_t kmax = fr->fe[0] / rel, cap = fr->nf / ADH_FRONT_BAND;
     cap = cap > ADH_FRONT_MAX ? cap : ADH_FRONT_MAX;
     kmax = kmax < 1 ? 1 : kmax > cap ? cap : kmax;
