@@ -229,6 +229,7 @@ static void front_sweep_near(adh_static *w, const double *ahead, const double *b
  * steps in Q, and further from the finer grid's: pull-off 9.5e-4 and
  * 1.07e-3 from it, hysteresis 1.0e-3 and 1.6e-3 (docs/static-curve.md),
  * so there the steps in Q stay. */
+/* The bands whose extremes are swept (front_sweeps, below) */
 static int front_band_swept(const adh_static *w)
 {
     return !adh_precond_type_of(w->nw.P)->truncates && w->fr.nf >= ADH_FRONT_SWEEP_BAND;
