@@ -305,21 +305,26 @@ int main(void)
      * differences are 0, so their median is, and the scatter read 0, chi2
      * per degree of freedom inf, a good fit "poor". The rounding is a noise
      * of its own, uniform over a step: standard deviation q / sqrt(12). */
-    static synth sq;
-    synth_make(&sq, g, k, &truth, 6e-9, -2e-9, 60, 60, 0.5e-9 / fabs(adh_jkr_pulloff(&truth)), 11, 0, 0);
-    const double q = 10e-9;
-    for (size_t i = 0; i < sq.n; i++)
-        sq.F[i] = q * round(sq.F[i] / q);
-    start = truth;
-    start.E *= 1.3;
-    start.A *= 0.8;
-    adh_fit_result qr = fit(&sq.d, EA, start, 0);
-    double qsd = q / sqrt(12.0), qall = sqrt(qsd * qsd + 0.25e-18);
-    ok(qr.noise >= qsd * (1 - 1e-9) && qr.noise < 1.25 * qall,
-       "forces in steps of 10 nN over 0.5 nN of noise: the scatter is at least the rounding's, q/sqrt(12) = %.4g nN "
-       "(%.4g nN)", qsd * 1e9, qr.noise * 1e9);
-    ok(qr.status == ADH_SUCCESS && qr.chi2_red > 0.6 && qr.chi2_red < 1.6 && recovered(&qr, ADH_FIT_E, truth.E, 0.02),
-       "and the fit is a fit: chi2 per degree of freedom %.3g, E within 2 %% and two standard errors", qr.chi2_red);
+    if (tap_sanitized_short()) {
+        tap_sanitized_leaves_out("forces in steps of 10 nN (the fit of E and A above, on rounded forces)");
+    } else {
+        static synth sq;
+        synth_make(&sq, g, k, &truth, 6e-9, -2e-9, 60, 60, 0.5e-9 / fabs(adh_jkr_pulloff(&truth)), 11, 0, 0);
+        const double q = 10e-9;
+        for (size_t i = 0; i < sq.n; i++)
+            sq.F[i] = q * round(sq.F[i] / q);
+        start = truth;
+        start.E *= 1.3;
+        start.A *= 0.8;
+        adh_fit_result qr = fit(&sq.d, EA, start, 0);
+        double qsd = q / sqrt(12.0), qall = sqrt(qsd * qsd + 0.25e-18);
+        ok(qr.noise >= qsd * (1 - 1e-9) && qr.noise < 1.25 * qall,
+           "forces in steps of 10 nN over 0.5 nN of noise: the scatter is at least the rounding's, q/sqrt(12) = %.4g nN "
+           "(%.4g nN)", qsd * 1e9, qr.noise * 1e9);
+        ok(qr.status == ADH_SUCCESS && qr.chi2_red > 0.6 && qr.chi2_red < 1.6 &&
+           recovered(&qr, ADH_FIT_E, truth.E, 0.02),
+           "and the fit is a fit: chi2 per degree of freedom %.3g, E within 2 %% and two standard errors", qr.chi2_red);
+    }
 
     /* the measured-file path: a header with spaces and units, three
      * columns, tab-separated, read and labelled as adhere fit reads it */
@@ -342,7 +347,10 @@ int main(void)
             same = 0;
         }
     ok(same, "each point's branch from the data's own jumps is the model's (%zu in contact)", rc ? 0 : fd.ncontact);
-    if (rc == 0) {
+    if (rc == 0 && tap_sanitized_short()) {
+        tap_sanitized_leaves_out("the fit of the file's curve (the fit of E and A above, its data read back)");
+        adh_fitdata_free(&fd);
+    } else if (rc == 0) {
         start = truth;
         start.E *= 1.3;
         start.A *= 0.8;
