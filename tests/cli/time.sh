@@ -230,8 +230,9 @@ check "and its summary's start is its first row's h0, outside the snap-in, not t
     sh -c "[ \"\$(grep -v '^#' '$d/force.tsv' | awk -F'\t' 'NR == 2 {print \$3}')\" = \"\$(awk -F'\t' '\$1 == \"start\" {print \$2}' '$d/summary.tsv')\" ]"
 # ... and --plan says that start: it said 'the base from 16.95 nm'
 st=$(awk -F'\t' '$1 == "start" {printf "%.4g nm", $2 * 1e9}' "$d/summary.tsv")
-check "--plan through that spring starts where the run did ($st): $("$ADHERE" --plan --material=sls --spring=1e-3N/m --speed=1m/s -N 400 --force | grep '^loading')" \
-    sh -c "'$ADHERE' --plan --material=sls --spring=1e-3N/m --speed=1m/s -N 400 --force | grep -q '^loading branches: 1 (the sphere from $st, '"
+"$ADHERE" --plan --material=sls --spring=1e-3N/m --speed=1m/s -N 400 --force >"$TMP/softplan" 2>&1
+check "--plan through that spring starts where the run did ($st): $(grep '^loading' "$TMP/softplan")" \
+    grep -q "^loading branches: 1 (the sphere from $st, " "$TMP/softplan"
 "$ADHERE" --batch -q --material=elastic --mode=time --spring=1e-3N/m --turn=-1nm -N 100 --force --no-plot -o "$TMP/softe" 2>/dev/null
 check "... and the elastic sphere's path through that spring says its own start too ($(grep '^start' "$TMP/softe/summary.tsv"))" \
     sh -c "[ \"\$(grep -v '^#' '$TMP/softe/force.tsv' | awk -F'\t' 'NR == 2 {print \$3}')\" = \"\$(awk -F'\t' '\$1 == \"start\" {print \$2}' '$TMP/softe/summary.tsv')\" ]"
