@@ -17,10 +17,11 @@ export LC_ALL=C.UTF-8 ADHERE_BIN="${ADHERE_BIN:-$PWD/adhere}" ADHERE_SRC="$PWD"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 pass=0 fail=0 skip=0
-# ONLY=c: just the C programs (make check-asan). ASAN_BUILD: a second build
-# of the C tests under the sanitizers, run among the others by the two
-# workers below (the tests are single-threaded). FUZZ_BUILD: where the
-# fuzzers are.
+# ONLY=c: just the C programs (make check-asan). ASAN_TESTS: C tests of a
+# second build under the sanitizers (make check: all but those its plain
+# build alone runs, the Makefile's ASAN_PLAIN_ONLY), run among the others
+# by the two workers below (the tests are single-threaded). FUZZ_BUILD:
+# where the fuzzers are.
 # TESTS="FILE ...": just those (e.g. TESTS=tests/replay/run.sh).
 asan=""
 if [ -n "${TESTS:-}" ]; then
@@ -31,7 +32,7 @@ elif [ "${ONLY:-}" = c ]; then
 else
     set -- "$BUILD"/tests/* tests/cli/*.sh tests/scenes/*.sh tests/replay/*.sh tests/plots/*.sh tests/man/*.sh \
         tests/source/*.sh tests/bench/smoke.sh
-    [ -n "${ASAN_BUILD:-}" ] && asan=$(ls "$ASAN_BUILD"/tests/*)
+    asan=${ASAN_TESTS:-}
     [ -n "${FUZZ_BUILD:-}" ] && set -- "$@" tests/fuzz/run.sh
 fi
 export BUILD=${FUZZ_BUILD:-$BUILD}
