@@ -218,10 +218,15 @@ int main(void)
     settings();
     scaled_rule();
     stiff_contact();
-    if (tap_sanitized_short())
+    /* Under ASan the cycle with both rules runs no line or branch of the
+     * library that the stiff contact's relaxations and the pass's other
+     * tests do not (gcov): its agreement stays in the plain build. */
+    if (tap_sanitized_short()) {
         tap_sanitized_leaves_out("the rules' equilibrium at eps 1e-15 m (both_rules, as the stiff contact's at 1e-13 m)");
-    else
+        tap_sanitized_leaves_out("the load/unload cycle with both rules (the stiff contact's relaxations with both)");
+    } else {
         same_equilibrium();
-    same_cycle();
+        same_cycle();
+    }
     return tap_done();
 }
