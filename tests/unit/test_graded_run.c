@@ -67,15 +67,24 @@ static const adh_kernel_storage fast[] = { ADH_STORAGE_HMAT, ADH_STORAGE_H2 };
 static void statics(const adh_grid *u, const adh_grid *g)
 {
     adh_static_result ru, rg, rh[2];
-    int cu = curve(u, ADH_STORAGE_DENSE, &ru), cg = curve(g, ADH_STORAGE_DENSE, &rg);
+    /* the uniform grid's curve, as its cycle above: under ASan it runs no
+     * line or branch of the library the graded grid's and the pass's other
+     * tests do not (gcov) */
+    int uniform = !tap_sanitized_short();
+    int cu = uniform ? curve(u, ADH_STORAGE_DENSE, &ru) : ADH_SUCCESS, cg = curve(g, ADH_STORAGE_DENSE, &rg);
     int ch[2] = { curve(g, fast[0], &rh[0]), curve(g, fast[1], &rh[1]) };
     if (!ok(cu == ADH_SUCCESS && cg == ADH_SUCCESS && ch[0] == ADH_SUCCESS && ch[1] == ADH_SUCCESS,
-            "static curves on both grids, and with hmat and h2 (%d %d %d %d)", cu, cg, ch[0], ch[1]))
+            "static curves on %sthe graded grid, and with hmat and h2 (%d %d %d %d)", uniform ? "the uniform and " : "",
+            cu, cg, ch[0], ch[1]))
         return;
-    ok_rel(rg.pulloff_F, ru.pulloff_F, 0.01, "static: graded pull-off within 1 % of uniform");
-    ok(fabs(rg.jump_in_h0 - ru.jump_in_h0) < 0.01e-9 && fabs(rg.jump_out_h0 - ru.jump_out_h0) < 0.01e-9,
-       "static: graded folds at the uniform grid's (jump-in %.4f vs %.4f nm, jump-out %.4f vs %.4f nm)",
-       rg.jump_in_h0 * 1e9, ru.jump_in_h0 * 1e9, rg.jump_out_h0 * 1e9, ru.jump_out_h0 * 1e9);
+    if (!uniform) {
+        tap_sanitized_leaves_out("the static curve on the uniform grid and the graded grid's agreement with it");
+    } else {
+        ok_rel(rg.pulloff_F, ru.pulloff_F, 0.01, "static: graded pull-off within 1 % of uniform");
+        ok(fabs(rg.jump_in_h0 - ru.jump_in_h0) < 0.01e-9 && fabs(rg.jump_out_h0 - ru.jump_out_h0) < 0.01e-9,
+           "static: graded folds at the uniform grid's (jump-in %.4f vs %.4f nm, jump-out %.4f vs %.4f nm)",
+           rg.jump_in_h0 * 1e9, ru.jump_in_h0 * 1e9, rg.jump_out_h0 * 1e9, ru.jump_out_h0 * 1e9);
+    }
     for (int s = 0; s < 2; s++) {
         const char *name = adh_kernel_storage_name(fast[s]);
         ok(rh[s].folds == rg.folds, "static %s: the same %zu folds as dense (%zu)", name, rh[s].folds, rg.folds);
