@@ -295,10 +295,15 @@ int main(void)
     adh_fit_result d2 = fit(&s.d, 1u << ADH_FIT_A, start, 0);
     ok(isfinite(d2.chi2_red) && d2.chi2_red > 4, "R = 7 um and E fixed, A free: a poor fit (chi2/dof %.3g against "
        "the data's scatter, above 4)", d2.chi2_red);
-    adh_fit_result d4 = fit(&s.d, EA | 1u << ADH_FIT_R, truth, 0);
-    ok(d4.flags[ADH_FIT_R] || d4.flags[ADH_FIT_E] || d4.flags[ADH_FIT_A] || fabs(d4.corr[ADH_FIT_A][ADH_FIT_R]) > 0.99,
-       "E, A and R free: reported unidentifiable or correlated above 0.99 (flags E %u A %u R %u, corr A-R %.4f)",
-       d4.flags[ADH_FIT_E], d4.flags[ADH_FIT_A], d4.flags[ADH_FIT_R], d4.corr[ADH_FIT_A][ADH_FIT_R]);
+    if (tap_sanitized_short()) {
+        tap_sanitized_leaves_out("E, A and R free (the fits of E and A, and of four parameters with the offset)");
+    } else {
+        adh_fit_result d4 = fit(&s.d, EA | 1u << ADH_FIT_R, truth, 0);
+        ok(d4.flags[ADH_FIT_R] || d4.flags[ADH_FIT_E] || d4.flags[ADH_FIT_A] ||
+               fabs(d4.corr[ADH_FIT_A][ADH_FIT_R]) > 0.99,
+           "E, A and R free: reported unidentifiable or correlated above 0.99 (flags E %u A %u R %u, corr A-R %.4f)",
+           d4.flags[ADH_FIT_E], d4.flags[ADH_FIT_A], d4.flags[ADH_FIT_R], d4.corr[ADH_FIT_A][ADH_FIT_R]);
+    }
 
     /* forces written more coarsely than their noise (an export in uN with
      * two decimals: steps of q = 10 nN over noise of 0.5 nN): most second
