@@ -205,9 +205,9 @@ SAN_FLAGS = -O1 -g1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sa
 
 # make check's ASan pass leaves these C tests to its plain build: every
 # line and branch of the library they run (gcov over src/), the pass's
-# other tests run too (but a branch that touches no memory: a return 0, a
-# store to a NULL pointer's array not made), and none is an error path's
-# or an allocation's test (docs/testing.md); make check-asan runs them.
+# other tests run too (but for three branches that touch no memory,
+# docs/testing.md names them), and none is an error path's or an
+# allocation's test; make check-asan runs them.
 ASAN_PLAIN_ONLY = test_physics test_rate_grid test_soft_static test_static_vs_relax test_visco_converge \
                   test_visco_energy test_visco_limits test_visco_spring
 ASAN_ALL   = $(UNIT_SRC:tests/unit/%.c=build-asan/tests/%) $(HARD_SRC:tests/hard/%.c=build-asan/tests/hard-%)
