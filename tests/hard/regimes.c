@@ -177,7 +177,13 @@ int main(void)
             c.proto.turns[0] = -1e-9;
         }
         snprintf(name, sizeof name, "sigma = %g (N = %zu)", sigmas[i], c.grid.use.nodes);
-        regime(name, c);
+        /* under ASan sigma = 10 on 200 nodes runs no line or branch of the
+         * library that the other regimes and the pass's other tests do not
+         * (gcov): the plain build asserts it */
+        if (sigmas[i] >= 10 && tap_sanitized_short())
+            tap_sanitized_leaves_out("sigma = 10 on N = 200 (the other sigmas' runs, and sigma = 100's approach)");
+        else
+            regime(name, c);
     }
     /* sigma = 100: the contact edge zone (0.26 nm) is far below the default
      * grids' spacing; the program says so instead of iterating in vain, and
