@@ -290,25 +290,33 @@ static void check_large_sigma(void)
     s10.h0_end = 3e-9;
     double dr10 = 2 * adh_grid_default_spacing(&m10);
     curve c1 = run_curve(&m10, 110, dr10, ADH_KERNEL_PAPER, &s10);
-    adh_static_settings s2 = s10;
-    s2.ds_max *= 0.5;
-    s2.max_angle *= 0.5;
-    s2.max_gap_step *= 0.5;
-    curve c2 = run_curve(&m10, 110, dr10, ADH_KERNEL_PAPER, &s2);
-    ok(c1.rc == ADH_SUCCESS && c2.rc == ADH_SUCCESS, "sigma 10, coarse grid: both runs succeed");
+    /* under ASan the curve at half the steps runs no line or branch of the
+     * library that the pass runs without it (gcov): its agreement stays in
+     * the plain build */
+    if (tap_sanitized_short()) {
+        ok(c1.rc == ADH_SUCCESS, "sigma 10, coarse grid: the run succeeds");
+        tap_sanitized_leaves_out("sigma 10 on the coarse grid at half the steps (the same curve at the steps set)");
+    } else {
+        adh_static_settings s2 = s10;
+        s2.ds_max *= 0.5;
+        s2.max_angle *= 0.5;
+        s2.max_gap_step *= 0.5;
+        curve c2 = run_curve(&m10, 110, dr10, ADH_KERNEL_PAPER, &s2);
+        ok(c1.rc == ADH_SUCCESS && c2.rc == ADH_SUCCESS, "sigma 10, coarse grid: both runs succeed");
+        ok(c2.res.folds == c1.res.folds,
+           "halving ds_max, max_angle and max_gap_step finds the same folds (%zu vs %zu): none skipped", c2.res.folds,
+           c1.res.folds);
+        ok(rel(c2.res.pulloff_F, c1.res.pulloff_F) < 1e-3 && rel(c2.res.jump_out_h0, c1.res.jump_out_h0) < 1e-3 &&
+               rel(c2.res.jump_in_h0, c1.res.jump_in_h0) < 1e-3,
+           "and the same pull-off, jump-in and jump-out within 0.1 %%");
+        adh_run_free(&c2.run);
+    }
     ok(c1.res.folds > 20, "sigma 10, coarse grid: many lattice-trapping folds (%zu)", c1.res.folds);
-    ok(c2.res.folds == c1.res.folds,
-       "halving ds_max, max_angle and max_gap_step finds the same folds (%zu vs %zu): none skipped", c2.res.folds,
-       c1.res.folds);
-    ok(rel(c2.res.pulloff_F, c1.res.pulloff_F) < 1e-3 && rel(c2.res.jump_out_h0, c1.res.jump_out_h0) < 1e-3 &&
-           rel(c2.res.jump_in_h0, c1.res.jump_in_h0) < 1e-3,
-       "and the same pull-off, jump-in and jump-out within 0.1 %%");
     int stable_ok = 1;
     for (size_t i = 0; i < c1.run.nrows; i++)
         stable_ok &= c1.run.rows[i].stable == (c1.run.rows[i].branch == 1);
     ok(stable_ok, "through every lattice fold, stable exactly where h0 decreases along the curve");
     adh_run_free(&c1.run);
-    adh_run_free(&c2.run);
     adh_run_free(&c.run);
 }
 
