@@ -205,7 +205,7 @@ SAN_FLAGS = -O1 -g1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sa
 
 # make check's ASan pass leaves these C tests to its plain build: every
 # line and branch of the library they run (gcov over src/), the pass's
-# other tests run too (but for three branches that touch no memory,
+# other tests run too (but for two branches that touch no memory,
 # docs/testing.md names them), and none is an error path's or an
 # allocation's test; make check-asan runs them.
 ASAN_PLAIN_ONLY = test_physics test_rate_grid test_soft_static test_static_vs_relax test_visco_converge \
