@@ -96,9 +96,12 @@ check "? shows the help" wait_for "adhere keys"
 T send-keys -t t Space
 check "any key leaves the help" wait_for "Parameters"
 
-# A long run (small d, tight eps) so there is time to pause it.
-type_cmd "set d 0.05nm"
-type_cmd "set eps 0.1pm"
+# A long run (small d, tight eps) so there is time to pause it: ~10 CPU s
+# to the turn at d = 0.05 nm and eps = 0.1 pm reached it before the Space
+# at load 10, and the key then paused nothing; ~20 times that now (it is
+# paused, then quit: the length costs nothing).
+type_cmd "set d 0.01nm"
+type_cmd "set eps 0.02pm"
 T send-keys -t t r
 check "r runs" wait_for "running to the turn"
 # a resize during the run redraws and lets it go on (it paused the run, as
