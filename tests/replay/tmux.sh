@@ -167,6 +167,7 @@ check "and it says why on stderr" grep -q "stopped by signal 2" "$work/stderr"
 
 start
 wait_for "? lists every key" >/dev/null
+type_cmd "set d 0.01nm"   # a run that cannot end before the signal comes
 T send-keys -t t r
 wait_for "running to the turn" >/dev/null
 # the pane runs sh, whose child is adhere
