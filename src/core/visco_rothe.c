@@ -66,6 +66,7 @@ struct visco_rothe {
     double dt, dtm, hprev;      /* the next step; the last; h0 a step before */
     double D0, Dm, P0, Pm;      /* the dissipation and the base's power now and a step before */
     double du;                  /* the last step's largest move of u, m */
+    double dF;                  /* the last step's change of the force, over its scale */
     int hist;                   /* pm, um hold the step before */
     int contact, next_contact;
     size_t nf;                  /* nodes of the uniform fine band */
@@ -345,6 +346,11 @@ static double quad(const visco_rothe *R, double dt, double fm, double f0, double
     return s;
 }
 
+static double force_floor(const adh_visco *w)
+{
+    return getenv("RF") ? atof(getenv("RF")) * 2 * M_PI * w->m.R * w->m.A / (16.0 * M_PI * w->m.z0 * w->m.z0) : 1e300;
+}
+
 static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
 {
     visco_rothe *R = w->ro;
@@ -369,6 +375,8 @@ static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
     double h1 = x->h0;
     adh_visco_gaps(w, y, h1);
     double P1 = -adh_visco_force(w, h1) * w->seg.bdot, D1 = dissipation(w, R->p0, R->q0);
+    double F0 = -R->P0 / w->seg.bdot, F1 = -P1 / w->seg.bdot;
+    R->dF = w->seg.bdot != 0 ? fabs(F1 - F0) / fmax(fmax(fabs(F0), fabs(F1)), force_floor(w)) : 0;
     w->acc.work += quad(R, dt, R->Pm, R->P0, P1);
     w->acc.dissipated += quad(R, dt, R->Dm, R->D0, D1);
     R->Pm = R->P0, R->P0 = P1;
@@ -404,6 +412,9 @@ int adh_visco_rothe_advance(adh_visco *w, double *y, double tl_end, int *hit)
             double nd = dt * fmin(2.0, fmax(0.2, grow));
             if (R->du > ROTHE_MOVE_MAX * w->m.z0)   /* the surface moves fast: rows as dense as the base's */
                 nd = fmin(nd, dt * fmax(0.2, ROTHE_MOVE_MAX * w->m.z0 / R->du));
+            double kap = cbrt(ADH_ROTHE_TOL_FACTOR * w->s.tol);
+            if (R->dF > kap)
+                nd = fmin(nd, dt * fmax(0.2, kap / R->dF));
             R->dt = fmin(last ? fmax(nd, R->dt) : nd, dt_max);
             return ADH_SUCCESS;
         }
