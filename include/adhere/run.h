@@ -45,7 +45,9 @@ typedef struct adh_run {
     char why[400];          /* when it stopped on an error: the step rule's (or the
                                drive's) sentence, what failed and where (h0, t, the
                                step size...); "" otherwise. Names quantities, never a
-                               flag: a driver adds its words for fix */
+                               flag: a driver adds its words for fix. A run in time
+                               whose energy balance is open (unconverged 1, status
+                               ADH_SUCCESS) says that here */
     unsigned fix;           /* ADH_FIX_* bits (adhere/status.h) of what may get past
                                the stop; 0: nothing known to */
     int interrupted;        /* 1 when a callback or the cancel flag asked to stop */

@@ -263,7 +263,10 @@ static void batch_judge(batch_job *j)
      * the run's status, unless --allow-unconverged asked for them. */
     const adh_output_options *o = &j->cfg->output;
     int unconverged = run->unconverged && j->status == CLI_EXIT_OK;
-    if (run->unconverged && (!o->allow_unconverged || !o->quiet))
+    if (run->unconverged && run->why[0] && (!o->allow_unconverged || !o->quiet))
+        adh_sayf("warning: %s%s", run->why,   /* a run in time: its energy balance open */
+                 o->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts it)");
+    else if (run->unconverged && (!o->allow_unconverged || !o->quiet))
         adh_sayf("warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %s; their rows say converged 0%s",
                  run->unconverged, run->nrows, spec->relax.max_iter, adh_qtext(spec->relax.eps, ADH_Q_LENGTH).s,
                  o->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts them)");

@@ -3,6 +3,7 @@
 #include "cli/timerun.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -35,6 +36,16 @@ int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *
     adh_rule_time_take(d, run);
     adh_drive_free(d);
     run->status = rc;
+    /* a balance open past what the integration promises: its numbers did
+     * not converge, and the run says so as a capped step's would */
+    double open = adh_visco_balance_open(&out->res);
+    if (rc == ADH_SUCCESS && fabs(open) > ADH_VISCO_BALANCE_MAX) {
+        run->unconverged = 1;
+        snprintf(run->why, sizeof run->why,
+                 "the energy balance is open by %.2g %% of the hysteresis (over %g %%: hysteresis - dissipated - "
+                 "jump_loss - stored_change): the integration did not converge, its numbers are not to its tolerance",
+                 100 * fabs(open), 100 * ADH_VISCO_BALANCE_MAX);
+    }
     return rc;
 }
 

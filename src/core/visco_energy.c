@@ -144,3 +144,11 @@ double adh_visco_spring_snap_out(const adh_run *curve, double k, double *base)
         *base = b;
     return h0;
 }
+
+double adh_visco_balance_open(const adh_visco_result *r)
+{
+    const adh_visco_energy *c = &r->cycle;
+    if (isnan(r->hysteresis))
+        return NAN;
+    return (r->hysteresis - c->dissipated - c->jumps - (c->stored - c->stored0)) / fabs(r->hysteresis);
+}
