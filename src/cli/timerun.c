@@ -37,9 +37,11 @@ int cli_time_run(const adh_run_spec *spec, const adh_grid *g, const adh_kernel *
     adh_drive_free(d);
     run->status = rc;
     /* a balance open past what the integration promises: its numbers did
-     * not converge, and the run says so as a capped step's would */
+     * not converge, and the run says so as a capped step's would (an
+     * elastic path integrates nothing: its residual is its loop's
+     * quadrature against its chords, the static curve's) */
     double open = adh_visco_balance_open(&out->res);
-    if (rc == ADH_SUCCESS && fabs(open) > ADH_VISCO_BALANCE_MAX) {
+    if (rc == ADH_SUCCESS && out->res.steps > 0 && fabs(open) > ADH_VISCO_BALANCE_MAX) {
         run->unconverged = 1;
         snprintf(run->why, sizeof run->why,
                  "the energy balance is open by %.2g %% of the hysteresis (over %g %%: hysteresis - dissipated - "
