@@ -57,7 +57,7 @@
 #define ROTHE_ERR_SCALE 2.0 /* the estimate's factor */
 #define ROTHE_FRONT_GAP 1.5 /* the front: where the gap passes this, in z0 */
 #define ROTHE_NEWTON_TOL 1e-6 /* the step's Newton: max |G| below this, in z0 */
-#define ROTHE_FORCE_FLOOR 0.1 /* the force's change a step is relative to at least this, in 2 pi R dgamma */
+#define ROTHE_FORCE_FLOOR 0.3 /* the force's change a step is relative to at least this, in 2 pi R dgamma */
 
 struct visco_rothe {
     double *u0, *q0, *p0, *pm, *um, *q1, *e, *tmp, *hc, *hp, *r2R, *buf;
