@@ -88,7 +88,7 @@ static void far_from_elastic(void)
  * converged one (IDAS at a sixteenth of its tolerance) at any tolerance,
  * the balance as open. Now within 0.5 % of it, the balance closed within
  * ADH_VISCO_BALANCE_MAX; at a loose tolerance (3e-3: steps of 0.25 of the
- * force) the balance is open past it (2 % measured), which the CLI marks
+ * force) the balance is open past it (1.7 % measured), which the CLI marks
  * unconverged. */
 static adh_visco_result fast_cycle(const fixture *f, int integrator, double tol)
 {
