@@ -275,7 +275,7 @@ void cli_studyrow_fill(cli_studyrow *row, const adh_config *cfg, size_t i, const
     v[CLI_ROW_SECONDS] = r->seconds;
     v[CLI_ROW_JUMPED] = cli_jumps_jumped(r, rc->proto.step);
     v[CLI_ROW_START] = r->start;
-    v[CLI_ROW_UNCONVERGED] = (double)r->unconverged;
+    v[CLI_ROW_UNCONVERGED] = (double)cli_tables_capped_steps(r);
     v[CLI_ROW_TAIL] = rc->mode == ADH_MODE_RIGID || !ran ? NAN : r->rows[0].F_tail / r->rows[0].F;
     v[CLI_ROW_CONVERGED] = r->unconverged == 0 && status == ADH_SUCCESS && !r->interrupted ? 1 : 0;
     const char *word = status != ADH_SUCCESS && !r->interrupted ? adh_strerror(status) : cli_tables_verdict(rc, r);

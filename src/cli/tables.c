@@ -224,7 +224,7 @@ int cli_tables_summary(FILE *f, const void *ctx)
         kv(f, t->extra[i].key, t->extra[i].value);
     kv(f, "steps", (double)r->nrows);
     kv(f, "iterations", (double)r->iterations);
-    kv(f, "unconverged_steps", (double)r->unconverged);
+    kv(f, "unconverged_steps", (double)cli_tables_capped_steps(r));
     kv(f, "seconds", r->seconds);
     /* the grid's resolution of the contact edge (adh_grid_check) and the
      * share of the starting force from beyond Rmax (the analytic tail) */
@@ -299,4 +299,9 @@ size_t cli_tables_static_keys(const adh_static_result *res, double hysteresis, c
         extra[i].value = v[i].value;
     }
     return CLI_TABLES_STATIC_KEYS;
+}
+
+size_t cli_tables_capped_steps(const adh_run *r)
+{
+    return r->status == ADH_SUCCESS && r->why[0] ? 0 : r->unconverged;
 }

@@ -32,6 +32,11 @@ typedef struct cli_tables {
     const char *status;              /* summary status word; NULL = from the run */
 } cli_tables;
 
+/* The steps of r that reached the iteration cap (summary.tsv's and
+ * sweep.tsv's unconverged_steps): a run in time whose energy balance is
+ * open is unconverged (r->unconverged, r->why said, ADH_SUCCESS) with no
+ * step at any cap. */
+size_t cli_tables_capped_steps(const adh_run *r);
 /* The summary's status word: interrupted, unconverged (steps at the
  * iteration cap), success, or the solver's error. */
 const char *cli_tables_status_word(const adh_run *r);
