@@ -66,6 +66,22 @@ size_t static_front_node_of(const adh_static *w, const adh_state *x)
     return e;
 }
 
+/* The Lagrange weights L of the np (at most 3) points at xs for a, and
+ * the values ys interpolated there with them: the front predictors' h0. */
+static double front_lagrange(const double *xs, size_t np, double a, const double *ys, double *L)
+{
+    double y = 0;
+    for (size_t j = 0; j < np; j++) {
+        L[j] = 1;
+        for (size_t l = 0; l < np; l++)
+            if (l != j)
+                L[j] *= (a - xs[l]) / (xs[j] - xs[l]);
+    }
+    for (size_t j = 0; j < np; j++)
+        y += L[j] * ys[j];
+    return y;
+}
+
 /* static_front_predict in a phase sweep: the front at tgt + phase rings,
  * the last points' at fe[j] + ph[j]; each gap profile moved out by its
  * distance in rings, whole and fractional (linear between rings). */
@@ -78,15 +94,7 @@ static void front_predict_phased(adh_static *w, size_t tgt, double phase, adh_st
     double a = (double)tgt + phase;
     for (size_t j = 0; j < np; j++)
         pj[j] = (double)fr->fe[j] + fr->ph[j];
-    for (size_t j = 0; j < np; j++) {
-        L[j] = 1;
-        for (size_t l = 0; l < np; l++)
-            if (l != j)
-                L[j] *= (a - pj[l]) / (pj[j] - pj[l]);
-    }
-    x->h0 = 0;
-    for (size_t j = 0; j < np; j++)
-        x->h0 += L[j] * h0s[j];
+    x->h0 = front_lagrange(pj, np, a, h0s, L);
     for (size_t i = 0; i < n; i++) {
         double v = 0;
         if (i < fr->nf) {
@@ -122,17 +130,10 @@ void static_front_predict(adh_static *w, size_t tgt, double phase, adh_state *x)
     }
     const double *r = w->grid->r;
     const double *us[3] = { w->st->u, w->q.u1, w->q.u2 };
-    double h0s[3] = { w->st->h0, w->q.h1, w->q.h2 }, L[3];
-    double a = r[tgt];
-    for (size_t j = 0; j < np; j++) {
-        L[j] = 1;
-        for (size_t l = 0; l < np; l++)
-            if (l != j)
-                L[j] *= (a - r[fr->fe[l]]) / (r[fr->fe[j]] - r[fr->fe[l]]);
-    }
-    x->h0 = 0;
+    double h0s[3] = { w->st->h0, w->q.h1, w->q.h2 }, L[3], re[3];
     for (size_t j = 0; j < np; j++)
-        x->h0 += L[j] * h0s[j];
+        re[j] = r[fr->fe[j]];
+    x->h0 = front_lagrange(re, np, r[tgt], h0s, L);
     for (size_t i = 0; i < n; i++) {
         double v = 0;
         if (i < fr->nf) {
