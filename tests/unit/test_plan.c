@@ -17,6 +17,21 @@ static int near(double a, double b)
     return fabs(a - b) <= 1e-9 * fmax(1.0, fabs(b));
 }
 
+/* A run in physical time at Einf = einf_ratio E0, one speed both ways. */
+static adh_run_spec *time_spec(adh_config *c, double einf_ratio, double speed, double spring)
+{
+    adh_config_default(c);
+    adh_run_spec *s = &c->spec;
+    s->mode = ADH_MODE_TIME;
+    s->time.sls = 1;
+    s->time.Einf = einf_ratio * s->mat.E;
+    s->time.tau = 1e-3;
+    s->time.speed_in = s->time.speed_out = speed;
+    s->time.dwell = 0;
+    s->time.spring = spring;
+    return s;
+}
+
 /* Physical time's steps (adh_plan_time_steps) as IDAS takes them (it
  * integrates through a spring, whose own steps the plan does not count):
  * the contact line's travel
@@ -26,15 +41,7 @@ static int near(double a, double b)
  * times the steps in contact (a lattice fold at every ring). */
 static void time_steps(adh_config *c)
 {
-    adh_config_default(c);
-    adh_run_spec *s = &c->spec;
-    s->mode = ADH_MODE_TIME;
-    s->time.sls = 1;
-    s->time.Einf = 10 * s->mat.E;
-    s->time.tau = 1e-3;
-    s->time.speed_in = s->time.speed_out = 1e-15;
-    s->time.dwell = 0;
-    s->time.spring = 1.0;
+    adh_run_spec *s = time_spec(c, 10, 1e-15, 1.0);
     adh_plan_time_cost slow, fast, slow_el, fast_el;
     adh_plan_time_steps(s, &slow);
     ok(!slow.rothe, "through a spring: IDAS's steps (its rule, adh_visco_rothe_applies)");
@@ -89,15 +96,7 @@ static void time_steps(adh_config *c)
  * out, at 0.17 z0 a step; past 10 E0 IDAS's again. */
 static void rothe_steps(adh_config *c)
 {
-    adh_config_default(c);
-    adh_run_spec *s = &c->spec;
-    s->mode = ADH_MODE_TIME;
-    s->time.sls = 1;
-    s->time.Einf = 1.5 * s->mat.E;
-    s->time.tau = 1e-3;
-    s->time.speed_in = s->time.speed_out = 1.0;
-    s->time.dwell = 0;
-    s->time.spring = INFINITY;
+    adh_run_spec *s = time_spec(c, 1.5, 1.0, INFINITY);
     adh_plan_time_cost r, idas, far;
     adh_plan_time_steps(s, &r);
     double h = s->mat.z0 - adh_protocol_deepest_turn(&s->proto);
