@@ -263,7 +263,7 @@ static void batch_judge(batch_job *j)
      * the run's status, unless --allow-unconverged asked for them. */
     const adh_output_options *o = &j->cfg->output;
     int unconverged = run->unconverged && j->status == CLI_EXIT_OK;
-    if (run->unconverged && run->why[0] && (!o->allow_unconverged || !o->quiet))
+    if (cli_tables_balance_open(run) && (!o->allow_unconverged || !o->quiet))
         adh_sayf("warning: %s%s", run->why,   /* a run in time: its energy balance open */
                  o->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts it)");
     else if (run->unconverged && (!o->allow_unconverged || !o->quiet))

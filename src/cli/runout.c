@@ -72,7 +72,7 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
     if (status == CLI_EXIT_OK && partial)
         return run->interrupted ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
     if (status == CLI_EXIT_OK && run->unconverged && !cfg->output.allow_unconverged) {
-        if (data && run->why[0]) /* a run in time: its energy balance open */
+        if (data && cli_tables_balance_open(run)) /* a run in time: its energy balance open */
             adh_sayf("warning: run %zu: %s (status unconverged; --allow-unconverged accepts it)", i + 1, run->why);
         else if (data) /* said once, not again when the figures rewrite the summary */
             adh_sayf("warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)",

@@ -154,7 +154,7 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
             adh_sayf("run %zu stopped: %s", i + 1, row.reason);
     }
     /* not hidden by -q: it changes what the run's numbers mean */
-    if (run->unconverged && run->why[0])   /* a run in time: its energy balance open */
+    if (cli_tables_balance_open(run))   /* a run in time: its energy balance open */
         adh_sayf("warning: run %zu (%s): %s", i + 1, which, run->why);
     else if (run->unconverged)
         adh_sayf("warning: run %zu (%s): %zu of %zu steps reached the iteration cap (%zu) "

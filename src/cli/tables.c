@@ -301,7 +301,12 @@ size_t cli_tables_static_keys(const adh_static_result *res, double hysteresis, c
     return CLI_TABLES_STATIC_KEYS;
 }
 
+int cli_tables_balance_open(const adh_run *r)
+{
+    return r->status == ADH_SUCCESS && r->unconverged && r->why[0];
+}
+
 size_t cli_tables_capped_steps(const adh_run *r)
 {
-    return r->status == ADH_SUCCESS && r->why[0] ? 0 : r->unconverged;
+    return cli_tables_balance_open(r) ? 0 : r->unconverged;
 }

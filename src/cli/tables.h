@@ -32,10 +32,12 @@ typedef struct cli_tables {
     const char *status;              /* summary status word; NULL = from the run */
 } cli_tables;
 
+/* Whether r is a run in time whose energy balance is open: unconverged
+ * (r->unconverged) with its sentence in r->why, having stopped on no error
+ * (a run that stopped has its stop's sentence there). */
+int cli_tables_balance_open(const adh_run *r);
 /* The steps of r that reached the iteration cap (summary.tsv's and
- * sweep.tsv's unconverged_steps): a run in time whose energy balance is
- * open is unconverged (r->unconverged, r->why said, ADH_SUCCESS) with no
- * step at any cap. */
+ * sweep.tsv's unconverged_steps): none where the balance is open. */
 size_t cli_tables_capped_steps(const adh_run *r);
 /* The summary's status word: interrupted, unconverged (steps at the
  * iteration cap), success, or the solver's error. */
