@@ -259,6 +259,10 @@ void adh_visco_summary(const adh_visco *w, adh_visco_result *res);
  * or a loose tolerance leaves it open further. */
 #define ADH_VISCO_BALANCE_MAX 5e-3
 double adh_visco_balance_open(const adh_visco_result *r);
+/* What the balance leaves, J: the work (hysteresis) less the dissipated
+ * energy, the jumps' losses and the stored energy's change over the
+ * cycle (summary.tsv's energy_residual). */
+double adh_visco_balance_residual(const adh_visco_result *r);
 /* The events so far (borrowed). */
 size_t adh_visco_events(const adh_visco *w, const adh_visco_event **ev);
 /* The stored energy U of the current state, J, and its parts. */

@@ -86,7 +86,7 @@ size_t cli_time_keys(const cli_time_out *o, cli_tables_extra *x)
         /* what the balance leaves: the work less the three, the
          * integration's error (no term is missing: docs/viscoelastic.md);
          * an elastic path's, its loop's quadrature against its chords */
-        { "energy_residual", closed ? r->hysteresis - c->dissipated - c->jumps - (c->stored - c->stored0) : NAN },
+        { "energy_residual", closed ? adh_visco_balance_residual(r) : NAN },
         { "time", r->time },
         { "time_steps", (double)r->steps },
         { "jumps", (double)r->jumps },

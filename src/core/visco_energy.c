@@ -145,10 +145,15 @@ double adh_visco_spring_snap_out(const adh_run *curve, double k, double *base)
     return h0;
 }
 
-double adh_visco_balance_open(const adh_visco_result *r)
+double adh_visco_balance_residual(const adh_visco_result *r)
 {
     const adh_visco_energy *c = &r->cycle;
+    return r->hysteresis - c->dissipated - c->jumps - (c->stored - c->stored0);
+}
+
+double adh_visco_balance_open(const adh_visco_result *r)
+{
     if (isnan(r->hysteresis))
         return NAN;
-    return (r->hysteresis - c->dissipated - c->jumps - (c->stored - c->stored0)) / fabs(r->hysteresis);
+    return adh_visco_balance_residual(r) / fabs(r->hysteresis);
 }
