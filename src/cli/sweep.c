@@ -744,8 +744,10 @@ static double drive_cost(const adh_run_spec *ds)
     if (ds->mode == ADH_MODE_TIME && ds->time.sls) {
         adh_plan_time_cost c;
         adh_plan_time_steps(ds, &c);
-        if (c.steps > 0 && isfinite(c.steps))
-            return c.steps;
+        /* a step priced as the integrator that runs it (the Rothe steps'
+         * against IDAS's: c.work), as --plan prices it (estimatetime.c) */
+        if (c.steps > 0 && isfinite(c.steps * c.work))
+            return c.steps * c.work;
     }
     /* an elastic sphere in time: its static curve's points, as --plan
      * counts them, so that a sweep of the material weighs it beside the
