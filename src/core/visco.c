@@ -1191,12 +1191,10 @@ static int land(adh_visco *w, double t0, int crossed);
  * is stable, and the path goes on from it). */
 static int rothe_relax(adh_visco *w, double *yb, const double *ylast, adh_visco_energy acc_last, size_t rows_last)
 {
-    double *y = N_VGetArrayPointer(w->y), *d = w->ro_dir, len = 0;
+    double *y = N_VGetArrayPointer(w->y), *d = w->ro_dir;
     for (size_t i = 0; i < w->len; i++)
         d[i] = ylast[i] - yb[i];
-    for (size_t i = 0; i < w->n; i++)
-        len += w->theta * d[i] * d[i];
-    len += w->seg.vm * w->seg.vm * d[w->IT] * d[w->IT];
+    double len = cross_dot(w, d, d);   /* the path's metric (no spring here) */
     if (!(len > 0))
         return ADH_ESTALL;
     len = sqrt(len) / w->m.z0;
