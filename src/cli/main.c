@@ -184,9 +184,17 @@ static int run(int argc, char **argv)
      * does. */
     gsl_set_error_handler_off();
     /* room for a sentence and a path whole (a scene's FILE:LINE: first) */
-    char why[PATH_MAX + 1024];
-    if (adh_data_env_check(why, sizeof why) != 0 || cli_options_parse(argc, argv, &cli, why, sizeof why) != 0) {
-        adh_say(why);
+    char why[PATH_MAX + 1024], envwhy[PATH_MAX + 256];
+    /* a set ADHERE_DATADIR naming no directory: refused before anything
+     * is read or written (a scene the parse found elsewhere too), but not
+     * for --help and --version, which read nothing */
+    int envbad = adh_data_env_check(envwhy, sizeof envwhy) != 0;
+    if (cli_options_parse(argc, argv, &cli, why, sizeof why) != 0) {
+        adh_say(envbad ? envwhy : why);
+        return CLI_EXIT_USAGE;
+    }
+    if (envbad && cli.action != CLI_ACT_HELP && cli.action != CLI_ACT_VERSION) {
+        adh_say(envwhy);
         return CLI_EXIT_USAGE;
     }
     /* what the run reads, which clearing its -o must not remove (adhere

@@ -278,6 +278,8 @@ ADHERE_DATADIR="$TMP/no-such-dir" "$ADHERE" --batch -q -o "$TMP/dd" fig1 >/dev/n
 rc=$?
 check "ADHERE_DATADIR=missing -> exit 2 naming it, nothing written ($rc: $(cat "$TMP/stderr"))" \
     sh -c "[ $rc -eq 2 ] && grep -qF 'adhere: ADHERE_DATADIR=$TMP/no-such-dir is not a directory' '$TMP/stderr' && [ ! -e '$TMP/dd' ]"
+ADHERE_DATADIR="$TMP/no-such-dir" "$ADHERE" --help >"$TMP/stdout" 2>"$TMP/stderr"
+check "... but --help reads nothing and answers (exit $?)" sh -c "[ $? -eq 0 ] && grep -q '^usage: adhere' '$TMP/stdout'"
 ADHERE_DATADIR="$ADHERE_SRC/share/adhere" "$ADHERE" --plan fig1 >/dev/null 2>"$TMP/stderr"
 check "ADHERE_DATADIR naming the shipped data is read (exit $?)" [ $? -eq 0 ]
 
