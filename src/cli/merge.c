@@ -539,11 +539,13 @@ static int write_out(merge *m, const char *partial)
     cli_studyrow_sweep t = { cfg, m->rows, partial, adh_sweep_run_dirs(&cfg->sweep), hyst, resolved };
     char why[1024];
     if (!m->out) {
+        errno = 0;   /* so that the reason said is this table's write's */
         cli_studyrow_table(stdout, &t);
         if (fflush(stdout) == 0 && !ferror(stdout))
             return CLI_EXIT_OK;
         /* exit 2 without a word: the table was lost and nothing said so */
-        adh_sayf_as("adhere merge", "cannot write sweep.tsv to standard output: %s", strerror(errno));
+        adh_sayf_as("adhere merge", "cannot write sweep.tsv to standard output%s%s", errno ? ": " : "",
+                    errno ? strerror(errno) : "");
         return CLI_EXIT_USAGE;
     }
     if (adh_outdir_write(m->out, "sweep.tsv", cli_studyrow_table, &t, why, sizeof why) != 0) {
