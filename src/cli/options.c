@@ -859,9 +859,8 @@ int cli_options_validate_for(const adh_config *cfg, cli_advice_for who, char *wh
     if (sweep_plot_fits(cfg, why, whylen) != 0)
         return 2;
     size_t n = adh_config_nruns(cfg);
-    static const char *const mode_words[] = { [ADH_MODE_RELAX] = "relax", [ADH_MODE_STATIC] = "static",
-                                              [ADH_MODE_RIGID] = "rigid", [ADH_MODE_TIME] = "time" };
     adh_mode first = ADH_MODE_RELAX;
+    int mode_swept = adh_sweep_touches(&cfg->sweep, "scene.mode");
     for (size_t i = 0; i < n; i++) {
         char msg[1024], which[256];
         adh_config_sweep_run(cfg, i, &run);
@@ -870,12 +869,12 @@ int cli_options_validate_for(const adh_config *cfg, cli_advice_for who, char *wh
          * first run's columns (no time, no dissipated) */
         if (i == 0)
             first = run.mode;
-        if (run.mode != first && !adh_sweep_touches(&cfg->sweep, "scene.mode")) {
+        if (run.mode != first && !mode_swept) {
             adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
             snprintf(why, whylen, "sweep run %zu (%s) runs in mode %s, run 1 in mode %s: a study's runs share one mode "
                      "unless the mode itself is swept; give the mode (--mode=%s, or scene.mode) for every run, or "
-                     "sweep it", i + 1, which, mode_words[run.mode], mode_words[first],
-                     run.mode == ADH_MODE_TIME ? "time" : mode_words[first]);
+                     "sweep it", i + 1, which, adh_config_mode_word(run.mode), adh_config_mode_word(first),
+                     adh_config_mode_word(run.mode == ADH_MODE_TIME ? ADH_MODE_TIME : first));
             return 2;
         }
         if (validate_run(cfg, &run, who, msg, sizeof msg) == 0)

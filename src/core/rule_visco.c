@@ -93,10 +93,11 @@ static const adh_state *visco_state(const void *vr)
 static const char *visco_why(const void *vr, unsigned *fix)
 {
     const visco_rule *r = vr;
+    int own = r->first != ADH_CONTINUE && r->why[0];   /* the rule's own sentence, else the solver's */
     /* the start was no stable point out of contact; or the solver's (a
      * coarse grid's lattice folds: a finer grid) */
-    *fix = r->first == ADH_ESTALL ? ADH_FIX_START : r->first != ADH_CONTINUE && r->why[0] ? 0 : adh_visco_fix(r->w);
-    return r->first != ADH_CONTINUE && r->why[0] ? r->why : adh_visco_why(r->w);
+    *fix = r->first == ADH_ESTALL ? ADH_FIX_START : own ? 0 : adh_visco_fix(r->w);
+    return own ? r->why : adh_visco_why(r->w);
 }
 
 const adh_rule_type adh_rule_visco = {

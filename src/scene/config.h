@@ -295,6 +295,8 @@ int adh_config_unit_hint(const adh_config *c, int (*accept)(adh_config *copy, vo
  * dwell, profiles), with profile positions spread along the path when the
  * profile figure is asked in relaxation and none was given. */
 adh_protocol_settings adh_config_protocol(const adh_config *c);
+/* mode's word as scene.mode and --mode take it: relax, static, rigid, time. */
+const char *adh_config_mode_word(adh_mode m);
 /* The same for c's run in mode (the TUI keeps one path per mode). */
 adh_protocol_settings adh_config_protocol_for(const adh_config *c, adh_mode mode);
 /* The positions adh_config_protocol spreads: up to max, from the deepest

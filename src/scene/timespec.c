@@ -43,7 +43,7 @@ const adh_rule_type *adh_config_time_rule(const adh_run_spec *s)
     return s->time.sls ? &adh_rule_visco : &adh_rule_path;
 }
 
-static const char *mode_word(adh_mode m)
+const char *adh_config_mode_word(adh_mode m)
 {
     return m == ADH_MODE_STATIC ? "static" : m == ADH_MODE_RIGID ? "rigid" : m == ADH_MODE_TIME ? "time" : "relax";
 }
@@ -104,7 +104,7 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
     adh_mode mode = s->mode;
     if (t->sls && mode != ADH_MODE_TIME)
         BAD("material.material = sls runs in physical time: scene.mode = %s cannot use it (leave the mode out, or "
-            "scene.mode = time)", mode_word(mode));
+            "scene.mode = time)", adh_config_mode_word(mode));
     unsigned solid = t->given & (ADH_TIME_E0 | ADH_TIME_EINF | ADH_TIME_TAU);
     if (solid && !t->sls)
         BAD("%s is a standard linear solid's: material.material = elastic cannot use it (material.material = sls, "
@@ -112,10 +112,10 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
     unsigned drive = t->given & (ADH_TIME_SPEED | ADH_TIME_DWELL);
     if (drive && mode != ADH_MODE_TIME)
         BAD("%s is physical time's: scene.mode = %s steps the drive in eps-time (material.material = sls, or "
-            "scene.mode = time)", key_of(drive), mode_word(mode));
+            "scene.mode = time)", key_of(drive), adh_config_mode_word(mode));
     if ((t->given & ADH_TIME_SPRING) && isfinite(t->spring) && (mode == ADH_MODE_RELAX || mode == ADH_MODE_RIGID))
         BAD("protocol.spring is not allowed with scene.mode = %s: %s (scene.mode = static for the snap points of "
-            "the static curve, or physical time)", mode_word(mode), mode == ADH_MODE_RIGID
+            "the static curve, or physical time)", adh_config_mode_word(mode), mode == ADH_MODE_RIGID
             ? "rigid spheres are followed at fixed positions only" : "the relaxation has no physical time for the "
             "sphere to follow the spring in");
     if (mode == ADH_MODE_TIME && s->proto.dwell)
