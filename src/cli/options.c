@@ -827,10 +827,10 @@ static int sweep_plot_fits(const adh_config *cfg, char *why, size_t whylen)
     return 0;
 }
 
-/* Every run is checked (a sweep's each set their own keys), with the
- * protocol it steps. */
 static int validate(const adh_config *cfg, cli_advice_for who, int study, char *why, size_t whylen);
 
+/* Every run is checked (a sweep's each set their own keys), with the
+ * protocol it steps. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen)
 {
     return validate(cfg, CLI_ADVICE_RUN, 1, why, whylen);

@@ -460,7 +460,8 @@ static int save_why(adh_outdir *d, char *why, size_t whylen)
     int e = save_e(d, &made);
     char reason[200];
     if (e && !made)
-        snprintf(why, whylen, "cannot create a file in %.3000s: %s", d->path, create_reason("the directory", e, reason, sizeof reason));
+        snprintf(why, whylen, "cannot create a file in %.3000s: %s", d->path,
+                 create_reason("the directory", e, reason, sizeof reason));
     else if (e)
         snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, ADH_OUTDIR_MANIFEST, strerror(e));
     return e ? -1 : 0;
@@ -995,8 +996,9 @@ static int make_path(const char *path, char *why, size_t whylen)
              * refusal is this mkdir's, in a directory that exists */
             char *up = strrchr(buf, '/');
             struct stat st;
-            *up = '\0';
-            int in_dir = stat(up == buf ? "/" : buf, &st) == 0 && S_ISDIR(st.st_mode);
+            if (up)
+                *up = '\0';
+            int in_dir = stat(!up ? "." : up == buf ? "/" : buf, &st) == 0 && S_ISDIR(st.st_mode);
             snprintf(why, whylen, "cannot create directory %.3000s: %s", shown,
                      in_dir ? create_reason("the directory it goes in", e, reason, sizeof reason) : strerror(e));
             return -1;
