@@ -124,7 +124,7 @@ static int checked(adh_config *cfg, const cli_options *cli, char *why, size_t le
         cli_advice_append_cfg(cfg, CLI_ADVICE_RUN, why, len, fix);
         return CLI_EXIT_USAGE;
     }
-    if (cli_options_validate(cfg, why, len) != 0)
+    if ((cli->action == CLI_ACT_TUI ? cli_options_validate_screen : cli_options_validate)(cfg, why, len) != 0)
         return CLI_EXIT_USAGE;
     const adh_run_spec *spec = &cfg->spec;
     unsigned solvers = adh_budget_solvers(spec, (unsigned)adh_plan_jobs(cfg), cli->reference[0] != 0);

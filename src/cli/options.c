@@ -827,14 +827,30 @@ static int sweep_plot_fits(const adh_config *cfg, char *why, size_t whylen)
     return 0;
 }
 
+static int validate(const adh_config *cfg, cli_advice_for who, int study, char *why, size_t whylen);
+
 /* Every run is checked (a sweep's each set their own keys), with the
  * protocol it steps. */
 int cli_options_validate(const adh_config *cfg, char *why, size_t whylen)
 {
-    return cli_options_validate_for(cfg, CLI_ADVICE_RUN, why, whylen);
+    return validate(cfg, CLI_ADVICE_RUN, 1, why, whylen);
+}
+
+int cli_options_validate_screen(const adh_config *cfg, char *why, size_t whylen)
+{
+    return validate(cfg, CLI_ADVICE_RUN, 0, why, whylen);
 }
 
 int cli_options_validate_for(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen)
+{
+    return validate(cfg, who, 1, why, whylen);
+}
+
+/* Every run checked; with study, that they share one mode as well (a
+ * study's table and grid are one). Without (the screen, which runs one
+ * run), a run in another mode than the first's is not checked: on the
+ * first run's grid it is no run anyone steps, and --batch refuses it. */
+static int validate(const adh_config *cfg, cli_advice_for who, int study, char *why, size_t whylen)
 {
     adh_run_spec run;
     if (!cfg->sweep.naxes) {
@@ -870,6 +886,8 @@ int cli_options_validate_for(const adh_config *cfg, cli_advice_for who, char *wh
         if (i == 0)
             first = run.mode;
         if (run.mode != first && !mode_swept) {
+            if (!study)
+                continue;   /* the screen's run is in the first's mode: the others are --batch's to refuse */
             adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
             snprintf(why, whylen, "sweep run %zu (%s) runs in mode %s, run 1 in mode %s: a study's runs share one mode "
                      "unless the mode itself is swept; give the mode (--mode=%s, or scene.mode) for every run, or "

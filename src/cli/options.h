@@ -78,5 +78,9 @@ int cli_options_validate(const adh_config *cfg, char *why, size_t whylen);
 /* The same, with the advice in who's words (adhere fit's: its turn is its
  * data's). */
 int cli_options_validate_for(const adh_config *cfg, cli_advice_for who, char *why, size_t whylen);
+/* The same for the screen, which runs one run of a sweep (the values at
+ * the left): a sweep whose runs move between modes (a material swept
+ * between elastic and sls) is a study's concern, --batch's refusal. */
+int cli_options_validate_screen(const adh_config *cfg, char *why, size_t whylen);
 
 #endif

@@ -412,18 +412,59 @@ static int manifest_table(FILE *f, const void *ctx)
     return 0;
 }
 
-/* The manifest rewritten from d's entries (a new file renamed over it). */
-static int save(adh_outdir *d)
+/* The manifest rewritten from d's entries (a new file renamed over it):
+ * 0, or the errno of the call that failed (*made, when not NULL, says
+ * whether that was after the new file was made: else the create's). */
+static int save_e(adh_outdir *d, int *made)
 {
     char tmp[64];
     int fd = temp_create(d->fd, ADH_OUTDIR_MANIFEST, tmp, sizeof tmp);
+    if (made)
+        *made = fd >= 0;
     if (fd < 0)
-        return -1;
-    if (fill(fd, manifest_table, d, NULL) != 0 || renameat(d->fd, tmp, d->fd, ADH_OUTDIR_MANIFEST) != 0) {
+        return errno;
+    int e = fill(fd, manifest_table, d, NULL);
+    if (!e && renameat(d->fd, tmp, d->fd, ADH_OUTDIR_MANIFEST) != 0)
+        e = errno;
+    if (e)
         unlinkat(d->fd, tmp, 0);
-        return -1;
-    }
-    return 0;
+    return e;
+}
+
+/* save_e's, as -1 with errno (that failing call's, not the clean-up's). */
+static int save(adh_outdir *d)
+{
+    int e = save_e(d, NULL);
+    errno = e;
+    return e ? -1 : 0;
+}
+
+/* The words for e, the errno of creating a file or directory in a
+ * directory that exists (what: "the directory", or one the user can find
+ * by it): ENOENT there is a file system that makes its own files only
+ * (/proc), which the system's words alone ("No such file or directory")
+ * hide. */
+static const char *create_reason(const char *what, int e, char *buf, size_t len)
+{
+    if (e != ENOENT)
+        return strerror(e);
+    snprintf(buf, len, "%.3000s exists, but its file system lets nothing new be made in it (%s)", what, strerror(e));
+    return buf;
+}
+
+/* d's manifest saved, or why not in words naming the call that failed:
+ * a file not created in d, or the new manifest not written. 0, or -1. */
+static int save_why(adh_outdir *d, char *why, size_t whylen)
+{
+    int made;
+    int e = save_e(d, &made);
+    char reason[200];
+    if (e && !made)
+        snprintf(why, whylen, "cannot create a file in %.3000s: %s", d->path,
+                 create_reason("the directory", e, reason, sizeof reason));
+    else if (e)
+        snprintf(why, whylen, "cannot write %.3000s/%s: %s", d->path, ADH_OUTDIR_MANIFEST, strerror(e));
+    return e ? -1 : 0;
 }
 
 /* The last entry added, appended to the manifest (a study adds a run-K
@@ -934,11 +975,7 @@ static int prepare(adh_outdir *d, int depth, char *why, size_t whylen)
     if (d->flags & ADH_OUTDIR_KEEP)
         prune(d);
     d->foreign_manifest = 0;
-    if (save(d) != 0) {
-        snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));
-        return -1;
-    }
-    return 0;
+    return save_why(d, why, whylen);
 }
 
 /* mkdir -p: each missing component of path made. */
@@ -953,9 +990,17 @@ static int make_path(const char *path, char *why, size_t whylen)
         *p = '\0';
         if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
             int e = errno;
-            char shown[SHOWN_MAX];
+            char shown[SHOWN_MAX], reason[200];
             adh_outdir_escape(buf, shown, sizeof shown);
-            snprintf(why, whylen, "cannot create directory %.3000s: %s", shown, strerror(e));
+            /* the one before it is there (a dangling link is not): the
+             * refusal is this mkdir's, in a directory that exists */
+            char *up = strrchr(buf, '/');
+            struct stat st;
+            if (up)
+                *up = '\0';
+            int in_dir = stat(!up ? "." : up == buf ? "/" : buf, &st) == 0 && S_ISDIR(st.st_mode);
+            snprintf(why, whylen, "cannot create directory %.3000s: %s", shown,
+                     in_dir ? create_reason("the directory it goes in", e, reason, sizeof reason) : strerror(e));
             return -1;
         }
         *p = c;
@@ -1030,7 +1075,9 @@ static adh_outdir *walk_in(int dirfd, const char *path, const char *name, unsign
         char shown[SHOWN_MAX];
         adh_outdir_escape(shown_raw, shown, sizeof shown);
         if (mkdirat(dirfd, comp, 0777) != 0 && errno != EEXIST) {
-            snprintf(why, whylen, "cannot create directory %.3000s: %s", shown, strerror(errno));
+            char reason[200];
+            snprintf(why, whylen, "cannot create directory %.3000s: %s", shown,
+                     create_reason("the directory it goes in", errno, reason, sizeof reason));
             close(dirfd);
             return NULL;
         }
@@ -1078,7 +1125,9 @@ adh_outdir *adh_outdir_sub(adh_outdir *d, const char *name, char *why, size_t wh
     char path[PATH_MAX + 64];
     snprintf(path, sizeof path, "%.4000s/%.40s", d->path, name);
     if (mkdirat(d->fd, name, 0777) != 0 && errno != EEXIST) {
-        snprintf(why, whylen, "cannot create directory %.3000s: %s", path, strerror(errno));
+        char reason[200];
+        snprintf(why, whylen, "cannot create directory %.3000s: %s", path,
+                 create_reason("the directory it goes in", errno, reason, sizeof reason));
         return NULL;
     }
     struct stat st;
@@ -1103,11 +1152,7 @@ int adh_outdir_clear(adh_outdir *d, char *why, size_t whylen)
 {
     if (removes_input(d, why, whylen) != 0 || clear(d, 0, why, whylen) != 0)
         return -1;
-    if (save(d) != 0) {
-        snprintf(why, whylen, "cannot write into %.3000s: %s", d->path, strerror(errno));
-        return -1;
-    }
-    return 0;
+    return save_why(d, why, whylen);
 }
 
 int adh_outdir_fd(const adh_outdir *d)
@@ -1500,20 +1545,51 @@ int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t w
     return -1;
 }
 
-int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx)
+/* path's directory part into dir (PATH_MAX bytes; path is shorter):
+ * its last component, or NULL when path names no file (too long, or
+ * "", ".", ".." there: *e the errno to say). */
+static const char *outfile_dir(const char *path, char *dir, int *e)
 {
-    char dir[PATH_MAX], tmp[PATH_MAX];
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
-    if (strlen(path) >= PATH_MAX - 16 || !*base || !strcmp(base, ".") || !strcmp(base, ".."))
-        return strlen(path) >= PATH_MAX - 16 ? ENAMETOOLONG : EISDIR;
-    /* the directory part, shorter than path (checked above): copied, not
-     * printed, so that no compiler sees a truncation to warn about */
+    if (strlen(path) >= PATH_MAX - 16 || !*base || !strcmp(base, ".") || !strcmp(base, "..")) {
+        *e = strlen(path) >= PATH_MAX - 16 ? ENAMETOOLONG : EISDIR;
+        return NULL;
+    }
+    /* shorter than path (checked above): copied, not printed, so that no
+     * compiler sees a truncation to warn about */
     size_t dl = slash ? (slash == path ? 1 : (size_t)(slash - path)) : 1;
     memcpy(dir, slash ? path : ".", dl);
     dir[dl] = '\0';
+    return base;
+}
+
+const char *adh_outfile_reason(const char *path, int e, char *buf, size_t len)
+{
+    char dir[PATH_MAX], shown[SHOWN_MAX];
+    struct stat st;
+    int bad;
+    if (e == ENXIO)
+        return "a pipe no program reads";
+    /* ENOENT with the directory there: the create's, in it (the open of a
+     * missing directory gives ENOENT too, and the system's words then) */
+    if (e != ENOENT || !outfile_dir(path, dir, &bad) || stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+        return strerror(e);
+    char what[SHOWN_MAX + 16];
+    adh_outdir_escape(dir, shown, sizeof shown);
+    snprintf(what, sizeof what, "the directory %.3000s", shown);
+    return create_reason(what, e, buf, len);
+}
+
+int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx)
+{
+    char dir[PATH_MAX], tmp[PATH_MAX];
+    int e;
+    const char *base = outfile_dir(path, dir, &e);
+    if (!base)
+        return e;
     int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    int e = dfd < 0 ? errno : 0;
+    e = dfd < 0 ? errno : 0;
     struct stat st;
     int there = !e && fstatat(dfd, base, &st, AT_SYMLINK_NOFOLLOW) == 0;
     if (there && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode) && !S_ISDIR(st.st_mode)) {

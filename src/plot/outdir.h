@@ -157,6 +157,12 @@ int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t w
  * that stopped it (nothing left under a temporary name). */
 int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx);
 
+/* The words for e, adh_outfile_write's errno for path: a pipe no program
+ * reads (ENXIO), a directory whose file system lets no file be created in
+ * it (ENOENT with the directory there: /proc), else the system's. buf
+ * (len bytes) may hold them. */
+const char *adh_outfile_reason(const char *path, int e, char *buf, size_t len);
+
 /* Which of inputs[0..n) (files the run reads: its scene, replay script,
  * measured curve, style; "" or NULL for none) path would replace: the
  * index of the one path names (the same file, not a link to it, which

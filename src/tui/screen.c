@@ -989,7 +989,8 @@ static int screen_text(FILE *f, const void *ctx)
 int tui_dump_screen(const char *path, char *why, size_t whylen)
 {
     int e = adh_outfile_write(path, screen_text, NULL);
+    char reason[1024];
     if (e)
-        snprintf(why, whylen, "cannot write the screen to %s: %s", path, e == ENXIO ? "a pipe no program reads" : strerror(e));
+        snprintf(why, whylen, "cannot write the screen to %s: %s", path, adh_outfile_reason(path, e, reason, sizeof reason));
     return e ? -1 : 0;
 }

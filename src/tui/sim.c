@@ -20,6 +20,7 @@
 #include "adhere/rule_time.h"
 #include "adhere/status.h"
 #include "scene/budget.h"
+#include "scene/text.h"
 
 static void drive_attach(tui_sim *s);
 static void sync_turn(tui_sim *s);
@@ -728,17 +729,23 @@ static int edit_apply(tui_sim *s, const adh_run_spec *before, const char *key, c
 /* A :set key's text in the configuration's words: on the screen a bare
  * number is in the unit shown, here the unit its key is shown in for its
  * present value (protocol.start in nm, grid.fine_band in um or nm), each
- * element of a list; given on in SI, exactly. Anything else as typed. */
-static void key_value_in_unit(const tui_sim *s, const adh_config_key *k, const char *text, char *out, size_t len)
+ * element of a list; given on in SI, exactly. Anything else as typed.
+ * unit (ulen bytes) receives the unit a bare number was read in ("" when
+ * none was). */
+static void key_value_in_unit(const tui_sim *s, const adh_config_key *k, const char *text, char *out, size_t len,
+                              char *unit, size_t ulen)
 {
     char cur[1024];
     double now = NAN, f = 1;
     snprintf(out, len, "%s", text);
+    unit[0] = '\0';
     if (!k->units || !adh_quantity_is_bare(text) || adh_config_get(&s->cfg, k->key, cur, sizeof cur) != 0)
         return;
     now = strtod(cur, NULL);   /* "auto", "none": 0, the smallest unit */
-    if (!adh_config_key_unit(k, now, &f))
+    const char *u = adh_config_key_unit(k, now, &f);
+    if (!u)
         return;
+    snprintf(unit, ulen, "%s", u);
     size_t o = 0;
     out[0] = '\0';
     for (const char *p = text; *p;) {
@@ -753,14 +760,53 @@ static void key_value_in_unit(const tui_sim *s, const adh_config_key *k, const c
     }
 }
 
-/* A setter's refusal of text typed for key, shown as name: "N = 5 is not
- * allowed: ...", not "N: N = 5 nodes is not allowed" (the core names its
- * quantity), else "name: sentence". */
-static void refused(const char *name, const char *key, const char *text, const char *msg, char *why, size_t whylen)
+/* n bytes of s without the blanks around them: *s moved, the length left. */
+static size_t trimmed(const char **s, size_t n)
 {
-    char words[512];
-    const char *after = adh_config_opening_after(key, msg);
-    tui_sim_words(after ? after : msg, words, sizeof words);
+    while (n && (**s == ' ' || **s == '\t'))
+        (*s)++, n--;
+    while (n && ((*s)[n - 1] == ' ' || (*s)[n - 1] == '\t'))
+        n--;
+    return n;
+}
+
+/* msg, a setter's refusal of value (the text typed, its bare numbers read
+ * in unit and given on in SI), with each element of value it quotes
+ * ('1.0000000000000019e-309') put back as typed ('1e-300' nm): the
+ * refusal names what the user typed, never the conversion. value and
+ * text are lists alike, element for element. */
+static void as_typed(const char *msg, const char *value, const char *text, const char *unit, char *out, size_t len)
+{
+    snprintf(out, len, "%s", msg);
+    for (const char *v = value, *t = text; unit[0] && *v && *t;) {
+        size_t nv = strcspn(v, ","), nt = strcspn(t, ",");
+        const char *ts = t;
+        size_t tn = trimmed(&ts, nt);
+        char quoted[64], said[1024];
+        char *at = nv + 3 <= sizeof quoted && (nv != tn || strncmp(v, ts, nv))
+                 ? (snprintf(quoted, sizeof quoted, "'%.*s'", (int)nv, v), strstr(out, quoted)) : NULL;
+        if (at) {
+            snprintf(said, sizeof said, "%.*s'%.*s' %s%s", (int)(at - out), out, (int)(tn < 100 ? tn : 100), ts, unit,
+                     at + strlen(quoted));
+            out[0] = '\0';
+            adh_text_cat(out, len, said);
+        }
+        v += nv + (v[nv] == ',');
+        t += nt + (t[nt] == ',');
+    }
+}
+
+/* A setter's refusal of text typed for key (value: as the setter was
+ * given it, bare numbers read in unit, "" for none), shown as name: "N =
+ * 5 is not allowed: ...", not "N: N = 5 nodes is not allowed" (the core
+ * names its quantity), else "name: sentence", a value it quotes as typed. */
+static void refused(const char *name, const char *key, const char *text, const char *value, const char *unit,
+                    const char *msg, char *why, size_t whylen)
+{
+    char words[512], typed[512];
+    as_typed(msg, value, text, unit, typed, sizeof typed);
+    const char *after = adh_config_opening_after(key, typed);
+    tui_sim_words(after ? after : typed, words, sizeof words);
     if (after)
         snprintf(why, whylen, "%s = %s%s", name, text, words);
     else
@@ -779,10 +825,10 @@ int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, si
         return -1;
     }
     adh_run_spec before = s->cfg.spec;
-    char value[1024];
-    key_value_in_unit(s, k, text, value, sizeof value);
+    char value[1024], unit[16];
+    key_value_in_unit(s, k, text, value, sizeof value, unit, sizeof unit);
     if (adh_config_set(&s->cfg, key, value, msg, sizeof msg) != 0) {
-        refused(key, key, text, msg, why, whylen);
+        refused(key, key, text, value, unit, msg, why, whylen);
         return -1;
     }
     return edit_apply(s, &before, key, why, whylen);
@@ -973,8 +1019,10 @@ int tui_sim_set(tui_sim *s, tui_param p, const char *text, char *why, size_t why
         adh_config_set(&s->cfg, "grid.nodes", n, msg, sizeof msg);
     }
     if (adh_config_set(&s->cfg, pi->key, value, msg, sizeof msg) != 0) {
+        double f;
+        const char *unit = p == P_N ? "" : tui_sim_param_unit(s, p, 0, &f);   /* field_value's */
         s->cfg.spec = before;
-        refused(pi->name, pi->key, text, msg, why, whylen);
+        refused(pi->name, pi->key, text, value, unit, msg, why, whylen);
         return -1;
     }
     return edit_apply(s, &before, pi->key, why, whylen);

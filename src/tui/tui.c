@@ -592,8 +592,9 @@ static int write_rows(tui *t, const char *path, char *why, size_t whylen)
     r.rows = is_curve(t) ? tui_sim_curve(&t->sim, &r.n) : tui_sim_rows(&t->sim, &r.n);
     r.timed = is_timed(t);
     int e = adh_outfile_write(path, rows_table, &r);
+    char reason[1024];
     if (e)
-        snprintf(why, whylen, "cannot write the rows to %s: %s", path, e == ENXIO ? "a pipe no program reads" : strerror(e));
+        snprintf(why, whylen, "cannot write the rows to %s: %s", path, adh_outfile_reason(path, e, reason, sizeof reason));
     return e ? -1 : 0;
 }
 

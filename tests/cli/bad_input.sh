@@ -266,6 +266,23 @@ touch "$TMP/afile"
 rc=$?
 if [ "$rc" -eq 2 ] && grep -q "cannot create directory" "$TMP/stderr"; then ok "unwritable --out -> exit 2: $(cat "$TMP/stderr")"; else not_ok "unwritable --out -> exit $rc"; fi
 
+# A directory whose file system makes its own files only (/proc): creating
+# a file or directory there fails with "No such file or directory", which
+# alone read as if /proc were missing. The failing call is named, and that
+# the directory is there (not root: the access check's own refusal).
+nonew="the directory.* exists, but its file system lets nothing new be made in it \(No such file or directory\)\$"
+for o in /proc /proc/adhere-new; do
+    "$ADHERE" --batch -q -N 100 --force -o "$o" >/dev/null 2>"$TMP/stderr"
+    rc=$?
+    check "-o $o: exit 2, the create named, not a missing directory (got $rc: $(cat "$TMP/stderr"))" \
+        sh -c "[ $rc -eq 2 ] && grep -Eq '^adhere: cannot (create a file in $o: |create directory $o: )$nonew|: Permission denied\$' '$TMP/stderr'"
+done
+printf 'q\n' >"$TMP/quit.keys"
+"$ADHERE" --replay="$TMP/quit.keys" --screen=/proc/adhere-screen.txt >/dev/null 2>"$TMP/stderr"
+rc=$?
+check "--screen=/proc/FILE: exit 2, naming /proc as there (got $rc: $(cat "$TMP/stderr"))" \
+    sh -c "[ $rc -eq 2 ] && grep -Eq '^adhere: cannot write the screen to /proc/adhere-screen.txt: ($nonew|Permission denied\$)' '$TMP/stderr'"
+
 # "-" names no file here (standard output to most programs): -o - made a
 # directory called "-", --data=- looked for a file called "-"
 bad "^adhere: --out: '-' is not allowed: adhere reads and writes named files and directories, not standard input or output; write ./- for one named '-'$" -o -
