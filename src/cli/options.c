@@ -680,7 +680,53 @@ static int combinations(int argc, char **argv, const flags_seen *fs, char *why, 
     return 0;
 }
 
-int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
+/* The files the session reads (adh_outdir_inputs), known once the line
+ * is read: the one list that -o's clearing, --screen and the TUI's :dump
+ * and :rows are checked against. A scene's output.data is a measured
+ * curve too (cli_data_load adds it to the list of --data later). */
+static void inputs(const cli_options *cli)
+{
+    adh_outdir_input in[CLI_MAX_DATA + 4] = {
+        { cli->cfg.scene, "the scene", NULL },
+        { cli->cfg.tui.replay, "the replay script", "--replay" },
+        { cli->cfg.output.gnuplot_style, "the gnuplot style", "--gnuplot-style" },
+        { cli->cfg.output.data, "a measured curve", "--data" },
+    };
+    for (size_t i = 0; i < cli->ndata; i++)
+        in[4 + i] = (adh_outdir_input){ cli->data[i], "a measured curve", "--data" };
+    adh_outdir_inputs(in, 4 + cli->ndata);
+}
+
+/* --screen: not a file the session reads, and somewhere it can be
+ * written, said before the replay runs. 0, or 2 with why. */
+static int screen_check(const cli_options *cli, char *why, size_t whylen)
+{
+    const char *what, *option;
+    if (!cli->cfg.tui.screen[0])
+        return 0;
+    if (adh_outdir_input_named(cli->cfg.tui.screen, &what, &option)) {   /* it was put over the replay script */
+        snprintf(why, whylen, "--screen=%s is %s%s%s%s this run reads: the screen would replace it; name another "
+                 "file", cli->cfg.tui.screen, what, option ? " (" : "", option ? option : "", option ? ")" : "");
+        return 2;
+    }
+    /* where it cannot go, said before the replay runs (it was said after) */
+    char dir[PATH_MAX];
+    const char *slash = strrchr(cli->cfg.tui.screen, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - cli->cfg.tui.screen) + (slash == cli->cfg.tui.screen)
+             : 1, slash ? cli->cfg.tui.screen : ".");
+    struct stat st;
+    int e = stat(dir, &st) != 0 ? errno : !S_ISDIR(st.st_mode) ? ENOTDIR : 0;
+    if (!e && stat(cli->cfg.tui.screen, &st) == 0 && S_ISDIR(st.st_mode))
+        e = EISDIR;
+    if (e) {
+        snprintf(why, whylen, "--screen=%s: cannot write the screen there: %s", cli->cfg.tui.screen,
+                 e == EISDIR ? "it is a directory" : strerror(e));
+        return 2;
+    }
+    return 0;
+}
+
+static int parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
 {
     static flags_seen fs;
     memset(cli, 0, sizeof *cli);
@@ -729,32 +775,6 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
         snprintf(why, whylen, "--allow-partial is adhere merge's: adhere merge --allow-partial -o DIR SHARD_DIR...");
         return 2;
     }
-    if (cli->cfg.tui.screen[0]) {   /* the screen was put over the replay script */
-        const char *in[CLI_MAX_DATA + 3] = { cli->cfg.scene, cli->cfg.tui.replay, cli->cfg.output.gnuplot_style };
-        for (size_t i = 0; i < cli->ndata; i++)
-            in[3 + i] = cli->data[i];
-        int i = adh_outfile_names_input(cli->cfg.tui.screen, in, 3 + cli->ndata);
-        if (i >= 0) {
-            snprintf(why, whylen, "--screen=%s is %s this run reads: the screen would replace it; name another file",
-                     cli->cfg.tui.screen, i == 0 ? "the scene" : i == 1 ? "the replay script (--replay)"
-                     : i == 2 ? "the gnuplot style (--gnuplot-style)" : "a measured curve (--data)");
-            return 2;
-        }
-        /* where it cannot go, said before the replay runs (it was said after) */
-        char dir[PATH_MAX];
-        const char *slash = strrchr(cli->cfg.tui.screen, '/');
-        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - cli->cfg.tui.screen) + (slash == cli->cfg.tui.screen)
-                 : 1, slash ? cli->cfg.tui.screen : ".");
-        struct stat st;
-        int e = stat(dir, &st) != 0 ? errno : !S_ISDIR(st.st_mode) ? ENOTDIR : 0;
-        if (!e && stat(cli->cfg.tui.screen, &st) == 0 && S_ISDIR(st.st_mode))
-            e = EISDIR;
-        if (e) {
-            snprintf(why, whylen, "--screen=%s: cannot write the screen there: %s", cli->cfg.tui.screen,
-                     e == EISDIR ? "it is a directory" : strerror(e));
-            return 2;
-        }
-    }
     if (cli->columns[0] && !cli->ndata) {   /* it was dropped in silence */
         snprintf(why, whylen, "--columns=%s picks the columns of a measured curve: give --data=FILE too, or leave "
                  "--columns out", cli->columns);
@@ -790,6 +810,15 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
         return 2;
     }
     return 0;
+}
+
+int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
+{
+    int rc = parse(argc, argv, cli, why, whylen);
+    if (rc != 0)
+        return rc;
+    inputs(cli);
+    return screen_check(cli, why, whylen);
 }
 
 static int validate_run(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen);

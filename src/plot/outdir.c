@@ -900,24 +900,42 @@ static long study_run_rows(const adh_outdir *d, char *name, size_t len)
     return rows;
 }
 
-/* The session's inputs by identity (adh_outdir_inputs). */
+/* The session's inputs by identity (adh_outdir_inputs), each with what
+ * it is to the run and the option that named it. */
 static struct {
     dev_t dev;
     ino_t ino;
     char path[256];
+    const char *what, *option;
 } session_input[16];
 static size_t ninputs;
 
-void adh_outdir_inputs(const char *const *paths, size_t n)
+void adh_outdir_inputs(const adh_outdir_input *in, size_t n)
 {
     struct stat st;
     ninputs = 0;
     for (size_t i = 0; i < n && ninputs < sizeof session_input / sizeof session_input[0]; i++)
-        if (paths[i] && *paths[i] && stat(paths[i], &st) == 0 && S_ISREG(st.st_mode)) {
+        if (in[i].path && *in[i].path && stat(in[i].path, &st) == 0 && S_ISREG(st.st_mode)) {
             session_input[ninputs].dev = st.st_dev, session_input[ninputs].ino = st.st_ino;
-            adh_outdir_escape(paths[i], session_input[ninputs].path, sizeof session_input[ninputs].path);
+            adh_outdir_escape(in[i].path, session_input[ninputs].path, sizeof session_input[ninputs].path);
+            session_input[ninputs].what = in[i].what;
+            session_input[ninputs].option = in[i].option;
             ninputs++;
         }
+}
+
+int adh_outdir_input_named(const char *path, const char **what, const char **option)
+{
+    struct stat out;
+    if (lstat(path, &out) != 0 || !S_ISREG(out.st_mode))
+        return 0;
+    for (size_t i = 0; i < ninputs; i++)
+        if (session_input[i].dev == out.st_dev && session_input[i].ino == out.st_ino) {
+            *what = session_input[i].what;
+            *option = session_input[i].option;
+            return 1;
+        }
+    return 0;
 }
 
 /* A file under one of adhere's names in d that is an input of this
@@ -1617,15 +1635,4 @@ int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ct
     if (dfd >= 0)
         close(dfd);
     return e;
-}
-
-int adh_outfile_names_input(const char *path, const char *const *inputs, size_t n)
-{
-    struct stat out, in;
-    if (lstat(path, &out) != 0 || !S_ISREG(out.st_mode))
-        return -1;
-    for (size_t i = 0; i < n; i++)
-        if (inputs[i] && *inputs[i] && stat(inputs[i], &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino)
-            return (int)i;
-    return -1;
 }
