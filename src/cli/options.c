@@ -710,17 +710,11 @@ static int screen_check(const cli_options *cli, char *why, size_t whylen)
         return 2;
     }
     /* where it cannot go, said before the replay runs (it was said after) */
-    char dir[PATH_MAX];
-    const char *slash = strrchr(cli->cfg.tui.screen, '/');
-    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - cli->cfg.tui.screen) + (slash == cli->cfg.tui.screen)
-             : 1, slash ? cli->cfg.tui.screen : ".");
-    struct stat st;
-    int e = stat(dir, &st) != 0 ? errno : !S_ISDIR(st.st_mode) ? ENOTDIR : 0;
-    if (!e && stat(cli->cfg.tui.screen, &st) == 0 && S_ISDIR(st.st_mode))
-        e = EISDIR;
+    int e = adh_outfile_check(cli->cfg.tui.screen);
     if (e) {
+        char reason[512];
         snprintf(why, whylen, "--screen=%s: cannot write the screen there: %s", cli->cfg.tui.screen,
-                 e == EISDIR ? "it is a directory" : strerror(e));
+                 e == EISDIR ? "it is a directory" : adh_outfile_reason(cli->cfg.tui.screen, e, reason, sizeof reason));
         return 2;
     }
     return 0;

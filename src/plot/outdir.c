@@ -1599,18 +1599,43 @@ const char *adh_outfile_reason(const char *path, int e, char *buf, size_t len)
     return create_reason(what, e, buf, len);
 }
 
+/* path's directory opened into *dfd (-1 when it is not) and its last
+ * component in *base, what stands there in *st (*there 0 when nothing
+ * does): 0, or the errno that refuses path before anything is made there
+ * (a name too long, no file name, no such directory, a directory at path). */
+static int outfile_at(const char *path, int *dfd, const char **base, struct stat *st, int *there)
+{
+    char dir[PATH_MAX];
+    int e;
+    *dfd = -1;
+    *there = 0;
+    if (!(*base = outfile_dir(path, dir, &e)))
+        return e;
+    *dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (*dfd < 0)
+        return errno;
+    *there = fstatat(*dfd, *base, st, AT_SYMLINK_NOFOLLOW) == 0;
+    /* a rename cannot put a file over a directory */
+    return *there && S_ISDIR(st->st_mode) ? EISDIR : 0;
+}
+
+int adh_outfile_check(const char *path)
+{
+    const char *base;
+    struct stat st;
+    int dfd, there, e = outfile_at(path, &dfd, &base, &st, &there);
+    if (dfd >= 0)
+        close(dfd);
+    return e;
+}
+
 int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx)
 {
-    char dir[PATH_MAX], tmp[PATH_MAX];
-    int e;
-    const char *base = outfile_dir(path, dir, &e);
-    if (!base)
-        return e;
-    int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    e = dfd < 0 ? errno : 0;
+    char tmp[PATH_MAX];
+    const char *base;
     struct stat st;
-    int there = !e && fstatat(dfd, base, &st, AT_SYMLINK_NOFOLLOW) == 0;
-    if (there && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode) && !S_ISDIR(st.st_mode)) {
+    int dfd, there, e = outfile_at(path, &dfd, &base, &st, &there);
+    if (!e && there && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode) && !S_ISDIR(st.st_mode)) {
         /* a terminal, pipe or /dev/null: written in place, nothing to
          * replace. Opened without waiting: a pipe no program reads would
          * hold the open for ever (the screen frozen), and is ENXIO */

@@ -168,6 +168,12 @@ int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t w
  * pipe no program reads: ENXIO at once, not waited on). 0, or the errno
  * that stopped it (nothing left under a temporary name). */
 int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx);
+/* What adh_outfile_write refuses path for before it makes anything there
+ * (its directory missing or not one, a directory at path, no file name, a
+ * name too long; not a read-only file, which it finds as it writes): 0,
+ * or that errno. For a path checked before the work that fills it
+ * (--screen, before the replay). */
+int adh_outfile_check(const char *path);
 
 /* The words for e, adh_outfile_write's errno for path: a pipe no program
  * reads (ENXIO), a directory whose file system lets no file be created in
