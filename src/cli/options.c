@@ -774,12 +774,6 @@ static int parse(int argc, char **argv, cli_options *cli, char *why, size_t whyl
                  "--columns out", cli->columns);
         return 2;
     }
-    for (size_t i = 0; i < fs.n; i++)   /* it was dropped in silence */
-        if (fs.list[i].o->opt.val == OPT_RUN_DIRS && !cli->cfg.sweep.naxes) {
-            snprintf(why, whylen, "--run-dirs=%s sets a study's run-K directories: give a scene with a [sweep] "
-                     "section, or --sweep=KEY=VALUES, or leave --run-dirs out", fs.list[i].arg);
-            return 2;
-        }
     if (cli->shard_n && !cli->cfg.sweep.naxes) {
         snprintf(why, whylen, "--shard=%u/%u splits a sweep: give a scene with a [sweep] section, or --sweep=KEY=VALUES",
                  cli->shard_k, cli->shard_n);
@@ -886,9 +880,13 @@ static int validate(const adh_config *cfg, cli_advice_for who, int study, char *
                 snprintf(flag, sizeof flag, i == 2 ? "--run-dirs" : "--sweep=%s", study_only[i] + 6);
                 const char *name = adh_config_origin(cfg, study_only[i]) == 0 ? flag : study_only[i];
                 adh_config_get(cfg, study_only[i], value, sizeof value);
-                snprintf(msg, sizeof msg, "%s%s%s is a study's, and no key is swept: sweep one (a key of the run "
-                         "under [sweep], or --sweep=KEY=VALUES), or leave %s out", name, name == flag ? "=" : " = ",
-                         value, name);
+                if (i == 2 && name == flag)   /* the flag: what it sets, and where a sweep comes from */
+                    snprintf(msg, sizeof msg, "%s=%s sets a study's run-K directories: give a scene with a [sweep] "
+                             "section, or --sweep=KEY=VALUES, or leave %s out", name, value, name);
+                else
+                    snprintf(msg, sizeof msg, "%s%s%s is a study's, and no key is swept: sweep one (a key of the run "
+                             "under [sweep], or --sweep=KEY=VALUES), or leave %s out", name, name == flag ? "=" : " = ",
+                             value, name);
                 cli_options_words(cfg, msg, why, whylen);
                 return 2;
             }
