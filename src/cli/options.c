@@ -213,6 +213,12 @@ void cli_options_words(const adh_config *cfg, const char *sentence, char *out, s
     adh_config_reword(sentence, say_flag, &v, out, len);
 }
 
+/* cli_options_words as an adh_config_words (ctx: the configuration) */
+static void flag_words(const char *in, void *ctx, char *out, size_t len)
+{
+    cli_options_words(ctx, in, out, len);
+}
+
 void cli_options_core_words(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, const char *sentence,
                             char *out, size_t len)
 {
@@ -417,12 +423,10 @@ static int apply(cli_options *cli, const option_doc *o, const char *arg, char *w
             return record(cli, o->key, o->value ? o->value : arg, why, n);
         }
         /* "--nodes=5 is not allowed", not "--nodes: N = 5 nodes is ..." */
-        const char *given = o->value ? o->value : arg, *after = adh_config_opening_after(o->key, msg);
-        cli_options_words(&cli->cfg, after ? after : msg, words, sizeof words);
-        if (after)
-            snprintf(why, n, "--%s=%s%s", name, given, words);
-        else
-            snprintf(why, n, "--%s: %s", name, words);
+        char setting[600];
+        snprintf(setting, sizeof setting, "--%s=%s", name, o->value ? o->value : arg);
+        snprintf(words, sizeof words, "--%s", name);
+        adh_config_refusal(o->key, setting, words, msg, flag_words, &cli->cfg, why, n);
         return 2;
     }
     switch (o->opt.val) {
