@@ -39,6 +39,7 @@
 #include <string.h>
 
 #include "adhere/observe.h"
+#include "adhere/params.h"
 #include "adhere/rings.h"
 #include "adhere/static.h"
 #include "adhere/status.h"
@@ -318,7 +319,7 @@ static int attempt(adh_visco *w, double tl, double dt, int shortest, double *err
         den += w->area[i] * fabs(p1[i]);
     }
     /* the floor: ROTHE_FLOOR times the adhesion's force scale 2 pi R dgamma */
-    den += ROTHE_FLOOR * w->m.A / (16.0 * M_PI * w->m.z0 * w->m.z0) * 2 * M_PI * w->m.R;
+    den += ROTHE_FLOOR * adh_material_gamma(&w->m) * 2 * M_PI * w->m.R;
     /* q's error moves u by cdel W dq against u's cinf W p + cdel W q:
      * none in an elastic solid (Einf = E0) */
     *err = num / den * w->cdel / (w->cinf + w->cdel);
@@ -351,7 +352,7 @@ static double quad(const visco_rothe *R, double dt, double fm, double f0, double
  * ROTHE_FORCE_FLOOR times the adhesion's force 2 pi R dgamma */
 static double force_floor(const adh_visco *w)
 {
-    return ROTHE_FORCE_FLOOR * 2 * M_PI * w->m.R * w->m.A / (16.0 * M_PI * w->m.z0 * w->m.z0);
+    return ROTHE_FORCE_FLOOR * 2 * M_PI * w->m.R * adh_material_gamma(&w->m);
 }
 
 static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
