@@ -379,8 +379,11 @@ static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
     double h1 = x->h0;
     adh_visco_gaps(w, y, h1);
     double P1 = -adh_visco_force(w, h1) * w->seg.bdot, D1 = dissipation(w, R->p0, R->q0);
-    double F0 = -R->P0 / w->seg.bdot, F1 = -P1 / w->seg.bdot;
-    R->dF = w->seg.bdot != 0 ? fabs(F1 - F0) / fmax(fmax(fabs(F0), fabs(F1)), force_floor(w)) : 0;
+    R->dF = 0;
+    if (w->seg.bdot != 0) {   /* F recovered from the power P = -F bdot: not while the base is held */
+        double F0 = -R->P0 / w->seg.bdot, F1 = -P1 / w->seg.bdot;
+        R->dF = fabs(F1 - F0) / fmax(fmax(fabs(F0), fabs(F1)), force_floor(w));
+    }
     w->acc.work += quad(R, dt, R->Pm, R->P0, P1);
     w->acc.dissipated += quad(R, dt, R->Dm, R->D0, D1);
     R->Pm = R->P0, R->P0 = P1;
