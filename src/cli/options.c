@@ -901,23 +901,15 @@ static int validate(const adh_config *cfg, cli_advice_for who, int study, char *
         return 2;
     size_t n = adh_config_nruns(cfg);
     adh_mode first = ADH_MODE_RELAX;
-    int mode_swept = adh_sweep_touches(&cfg->sweep, "scene.mode");
     for (size_t i = 0; i < n; i++) {
         char msg[1024], which[256];
         adh_config_sweep_run(cfg, i, &run);
-        /* a material swept between elastic and sls moved runs into physical
-         * time or out of it: run on the first run's grid, in a table of the
-         * first run's columns (no time, no dissipated) */
         if (i == 0)
             first = run.mode;
-        if (run.mode != first && !mode_swept) {
+        if (adh_config_sweep_mode_check(cfg, i, &run, first, msg, sizeof msg) != 0) {
             if (!study)
                 continue;   /* the screen's run is in the first's mode: the others are --batch's to refuse */
-            adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
-            snprintf(why, whylen, "sweep run %zu (%s) runs in mode %s, run 1 in mode %s: a study's runs share one mode "
-                     "unless the mode itself is swept; give the mode (--mode=%s, or scene.mode) for every run, or "
-                     "sweep it", i + 1, which, adh_config_mode_word(run.mode), adh_config_mode_word(first),
-                     adh_config_mode_word(run.mode == ADH_MODE_TIME ? ADH_MODE_TIME : first));
+            cli_options_words(cfg, msg, why, whylen);
             return 2;
         }
         if (validate_run(cfg, &run, who, msg, sizeof msg) == 0)

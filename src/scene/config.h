@@ -500,6 +500,13 @@ int adh_sweep_run_dirs(const adh_sweep *s);
  * and the protocol every run steps (adh_config_protocol). A config
  * without a sweep is its own run 0. */
 void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run);
+/* Run i of c's sweep (run, as adh_config_sweep_run gave it) against run
+ * 1's mode first: a study's runs share one mode unless scene.mode itself
+ * is swept (a material swept between elastic and sls would move runs into
+ * physical time or out of it, on run 1's grid, in a table of run 1's
+ * columns). 0, or -1 with why naming the run and scene.mode. */
+int adh_config_sweep_mode_check(const adh_config *c, size_t i, const adh_run_spec *run, adh_mode first, char *why,
+                                size_t whylen);
 /* Number of runs: the sweep's, or 1. */
 size_t adh_config_nruns(const adh_config *c);
 
