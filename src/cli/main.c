@@ -11,7 +11,6 @@
 
 #include "adhere/grid.h"
 #include "adhere/status.h"
-#include "plot/outdir.h"
 #include "plot/say.h"
 #include "cli/advice.h"
 #include "cli/batch.h"
@@ -197,12 +196,6 @@ static int run(int argc, char **argv)
         adh_say(envwhy);
         return CLI_EXIT_USAGE;
     }
-    /* what the run reads, which clearing its -o must not remove (adhere
-     * DIR/best.scene -o DIR removed the scene a fit wrote there) */
-    const char *inputs[CLI_MAX_DATA + 3] = { cli.cfg.scene, cli.cfg.output.gnuplot_style, cli.cfg.tui.replay };
-    for (size_t i = 0; i < cli.ndata; i++)
-        inputs[3 + i] = cli.data[i];
-    adh_outdir_inputs(inputs, 3 + cli.ndata);
     switch (cli.action) {
     case CLI_ACT_HELP:
         cli_options_usage(stdout);

@@ -213,6 +213,12 @@ void cli_options_words(const adh_config *cfg, const char *sentence, char *out, s
     adh_config_reword(sentence, say_flag, &v, out, len);
 }
 
+/* cli_options_words as an adh_config_words (ctx: the configuration) */
+static void flag_words(const char *in, void *ctx, char *out, size_t len)
+{
+    cli_options_words(ctx, in, out, len);
+}
+
 void cli_options_core_words(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, const char *sentence,
                             char *out, size_t len)
 {
@@ -417,12 +423,10 @@ static int apply(cli_options *cli, const option_doc *o, const char *arg, char *w
             return record(cli, o->key, o->value ? o->value : arg, why, n);
         }
         /* "--nodes=5 is not allowed", not "--nodes: N = 5 nodes is ..." */
-        const char *given = o->value ? o->value : arg, *after = adh_config_opening_after(o->key, msg);
-        cli_options_words(&cli->cfg, after ? after : msg, words, sizeof words);
-        if (after)
-            snprintf(why, n, "--%s=%s%s", name, given, words);
-        else
-            snprintf(why, n, "--%s: %s", name, words);
+        char setting[600];
+        snprintf(setting, sizeof setting, "--%s=%s", name, o->value ? o->value : arg);
+        snprintf(words, sizeof words, "--%s", name);
+        adh_config_refusal(o->key, setting, words, msg, flag_words, &cli->cfg, why, n);
         return 2;
     }
     switch (o->opt.val) {
@@ -680,7 +684,47 @@ static int combinations(int argc, char **argv, const flags_seen *fs, char *why, 
     return 0;
 }
 
-int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
+/* The files the session reads (adh_outdir_inputs), known once the line
+ * is read: the one list that -o's clearing, --screen and the TUI's :dump
+ * and :rows are checked against. A scene's output.data is a measured
+ * curve too (cli_data_load adds it to the list of --data later). */
+static void inputs(const cli_options *cli)
+{
+    adh_outdir_input in[CLI_MAX_DATA + 4] = {
+        { cli->cfg.scene, "the scene", NULL },
+        { cli->cfg.tui.replay, "the replay script", "--replay" },
+        { cli->cfg.output.gnuplot_style, "the gnuplot style", "--gnuplot-style" },
+        { cli->cfg.output.data, "a measured curve", "--data" },
+    };
+    for (size_t i = 0; i < cli->ndata; i++)
+        in[4 + i] = (adh_outdir_input){ cli->data[i], "a measured curve", "--data" };
+    adh_outdir_inputs(in, 4 + cli->ndata);
+}
+
+/* --screen: not a file the session reads, and somewhere it can be
+ * written, said before the replay runs. 0, or 2 with why. */
+static int screen_check(const cli_options *cli, char *why, size_t whylen)
+{
+    const char *what, *option;
+    if (!cli->cfg.tui.screen[0])
+        return 0;
+    if (adh_outdir_input_named(cli->cfg.tui.screen, &what, &option)) {   /* it was put over the replay script */
+        snprintf(why, whylen, "--screen=%s is %s%s%s%s this run reads: the screen would replace it; name another "
+                 "file", cli->cfg.tui.screen, what, option ? " (" : "", option ? option : "", option ? ")" : "");
+        return 2;
+    }
+    /* where it cannot go, said before the replay runs (it was said after) */
+    int e = adh_outfile_check(cli->cfg.tui.screen);
+    if (e) {
+        char reason[512];
+        snprintf(why, whylen, "--screen=%s: cannot write the screen there: %s", cli->cfg.tui.screen,
+                 e == EISDIR ? "it is a directory" : adh_outfile_reason(cli->cfg.tui.screen, e, reason, sizeof reason));
+        return 2;
+    }
+    return 0;
+}
+
+static int parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
 {
     static flags_seen fs;
     memset(cli, 0, sizeof *cli);
@@ -729,43 +773,11 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
         snprintf(why, whylen, "--allow-partial is adhere merge's: adhere merge --allow-partial -o DIR SHARD_DIR...");
         return 2;
     }
-    if (cli->cfg.tui.screen[0]) {   /* the screen was put over the replay script */
-        const char *in[CLI_MAX_DATA + 3] = { cli->cfg.scene, cli->cfg.tui.replay, cli->cfg.output.gnuplot_style };
-        for (size_t i = 0; i < cli->ndata; i++)
-            in[3 + i] = cli->data[i];
-        int i = adh_outfile_names_input(cli->cfg.tui.screen, in, 3 + cli->ndata);
-        if (i >= 0) {
-            snprintf(why, whylen, "--screen=%s is %s this run reads: the screen would replace it; name another file",
-                     cli->cfg.tui.screen, i == 0 ? "the scene" : i == 1 ? "the replay script (--replay)"
-                     : i == 2 ? "the gnuplot style (--gnuplot-style)" : "a measured curve (--data)");
-            return 2;
-        }
-        /* where it cannot go, said before the replay runs (it was said after) */
-        char dir[PATH_MAX];
-        const char *slash = strrchr(cli->cfg.tui.screen, '/');
-        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - cli->cfg.tui.screen) + (slash == cli->cfg.tui.screen)
-                 : 1, slash ? cli->cfg.tui.screen : ".");
-        struct stat st;
-        int e = stat(dir, &st) != 0 ? errno : !S_ISDIR(st.st_mode) ? ENOTDIR : 0;
-        if (!e && stat(cli->cfg.tui.screen, &st) == 0 && S_ISDIR(st.st_mode))
-            e = EISDIR;
-        if (e) {
-            snprintf(why, whylen, "--screen=%s: cannot write the screen there: %s", cli->cfg.tui.screen,
-                     e == EISDIR ? "it is a directory" : strerror(e));
-            return 2;
-        }
-    }
     if (cli->columns[0] && !cli->ndata) {   /* it was dropped in silence */
         snprintf(why, whylen, "--columns=%s picks the columns of a measured curve: give --data=FILE too, or leave "
                  "--columns out", cli->columns);
         return 2;
     }
-    for (size_t i = 0; i < fs.n; i++)   /* it was dropped in silence */
-        if (fs.list[i].o->opt.val == OPT_RUN_DIRS && !cli->cfg.sweep.naxes) {
-            snprintf(why, whylen, "--run-dirs=%s sets a study's run-K directories: give a scene with a [sweep] "
-                     "section, or --sweep=KEY=VALUES, or leave --run-dirs out", fs.list[i].arg);
-            return 2;
-        }
     if (cli->shard_n && !cli->cfg.sweep.naxes) {
         snprintf(why, whylen, "--shard=%u/%u splits a sweep: give a scene with a [sweep] section, or --sweep=KEY=VALUES",
                  cli->shard_k, cli->shard_n);
@@ -790,6 +802,15 @@ int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t
         return 2;
     }
     return 0;
+}
+
+int cli_options_parse(int argc, char **argv, cli_options *cli, char *why, size_t whylen)
+{
+    int rc = parse(argc, argv, cli, why, whylen);
+    if (rc != 0)
+        return rc;
+    inputs(cli);
+    return screen_check(cli, why, whylen);
 }
 
 static int validate_run(const adh_config *cfg, const adh_run_spec *run, cli_advice_for who, char *why, size_t whylen);
@@ -863,9 +884,13 @@ static int validate(const adh_config *cfg, cli_advice_for who, int study, char *
                 snprintf(flag, sizeof flag, i == 2 ? "--run-dirs" : "--sweep=%s", study_only[i] + 6);
                 const char *name = adh_config_origin(cfg, study_only[i]) == 0 ? flag : study_only[i];
                 adh_config_get(cfg, study_only[i], value, sizeof value);
-                snprintf(msg, sizeof msg, "%s%s%s is a study's, and no key is swept: sweep one (a key of the run "
-                         "under [sweep], or --sweep=KEY=VALUES), or leave %s out", name, name == flag ? "=" : " = ",
-                         value, name);
+                if (i == 2 && name == flag)   /* the flag: what it sets, and where a sweep comes from */
+                    snprintf(msg, sizeof msg, "%s=%s sets a study's run-K directories: give a scene with a [sweep] "
+                             "section, or --sweep=KEY=VALUES, or leave %s out", name, value, name);
+                else
+                    snprintf(msg, sizeof msg, "%s%s%s is a study's, and no key is swept: sweep one (a key of the run "
+                             "under [sweep], or --sweep=KEY=VALUES), or leave %s out", name, name == flag ? "=" : " = ",
+                             value, name);
                 cli_options_words(cfg, msg, why, whylen);
                 return 2;
             }
@@ -876,23 +901,15 @@ static int validate(const adh_config *cfg, cli_advice_for who, int study, char *
         return 2;
     size_t n = adh_config_nruns(cfg);
     adh_mode first = ADH_MODE_RELAX;
-    int mode_swept = adh_sweep_touches(&cfg->sweep, "scene.mode");
     for (size_t i = 0; i < n; i++) {
         char msg[1024], which[256];
         adh_config_sweep_run(cfg, i, &run);
-        /* a material swept between elastic and sls moved runs into physical
-         * time or out of it: run on the first run's grid, in a table of the
-         * first run's columns (no time, no dissipated) */
         if (i == 0)
             first = run.mode;
-        if (run.mode != first && !mode_swept) {
+        if (adh_config_sweep_mode_check(cfg, i, &run, first, msg, sizeof msg) != 0) {
             if (!study)
                 continue;   /* the screen's run is in the first's mode: the others are --batch's to refuse */
-            adh_sweep_describe(&cfg->sweep, i, which, sizeof which);
-            snprintf(why, whylen, "sweep run %zu (%s) runs in mode %s, run 1 in mode %s: a study's runs share one mode "
-                     "unless the mode itself is swept; give the mode (--mode=%s, or scene.mode) for every run, or "
-                     "sweep it", i + 1, which, adh_config_mode_word(run.mode), adh_config_mode_word(first),
-                     adh_config_mode_word(run.mode == ADH_MODE_TIME ? ADH_MODE_TIME : first));
+            cli_options_words(cfg, msg, why, whylen);
             return 2;
         }
         if (validate_run(cfg, &run, who, msg, sizeof msg) == 0)

@@ -43,6 +43,18 @@
  * than the push), up to a tenth. */
 #define VISCO_NUDGE 1e-3
 #define VISCO_NUDGE_MAX 0.1
+
+/* A push that came to nothing (a relaxation back at its fold, or the
+ * integrator stuck again at the instant it was pushed off): ten times
+ * harder, while below VISCO_NUDGE_MAX. 1 with *push raised, 0 when it
+ * may grow no more. */
+static int push_harder(double *push)
+{
+    if (!(*push < VISCO_NUDGE_MAX))
+        return 0;
+    *push *= 10;
+    return 1;
+}
 /* A relaxation that has not come to rest is checked every this many steps
  * for an equilibrium next to it (Newton on a copy): next to a lattice fold
  * of the contact line one crawled on at steps of 1e-5 with an error-test
@@ -821,10 +833,11 @@ static int fold(adh_visco *w, double t0);
  * second time at the same instant it is stuck. */
 static int path_stuck(adh_visco *w, double t0)
 {
-    /* stuck again at the same instant, after a relaxation that came to
-     * rest next to where it began: pushed ten times harder, up to a
-     * tenth of z0, as a relaxation that comes back is */
-    w->stuck_push = w->t_now == w->t_stuck ? 10 * w->stuck_push : VISCO_NUDGE;
+    /* stuck anew: the first push; stuck again at the same instant, after
+     * a relaxation that came to rest next to where it began, the caller
+     * has pushed harder (push_harder, as a relaxation that comes back) */
+    if (w->t_now != w->t_stuck)
+        w->stuck_push = VISCO_NUDGE;
     w->t_stuck = w->t_now;
     load_state(w, N_VGetArrayPointer(w->y));
     int rc = fold(w, t0);
@@ -1086,8 +1099,7 @@ static int on_roots(adh_visco *w, const int *rf, double t0)
 static int flow_step(adh_visco *w, double t0, int *out)
 {
     double v = adh_visco_flow_speed(w, N_VGetArrayPointer(w->yp));
-    if (v < w->rest && came_back(w) && w->nudge < VISCO_NUDGE_MAX) {
-        w->nudge *= 10;   /* relaxed back to the fold: pushed harder */
+    if (v < w->rest && came_back(w) && push_harder(&w->nudge)) {   /* relaxed back to the fold */
         w->res.jumps_relaxed--;   /* the same jump, counted again as it starts */
         int brc = start_flow(w);
         *out = brc == ADH_SUCCESS ? ADH_CONTINUE : stop(w, brc);
@@ -1354,7 +1366,10 @@ int adh_visco_iterate(adh_visco *w)
                 return stop(w, brc);
             continue;
         }
-        if (flag < 0 && w->mode == MODE_PATH && (w->t_now != w->t_stuck || (!w->spring && w->stuck_push < VISCO_NUDGE_MAX))) {
+        /* stuck on the path: a relaxation from there; stuck again at the
+         * same instant, pushed harder while it may be */
+        if (flag < 0 && w->mode == MODE_PATH &&
+            (w->t_now != w->t_stuck || (!w->spring && push_harder(&w->stuck_push)))) {
             w->s_now = s;
             return path_stuck(w, t0);
         }

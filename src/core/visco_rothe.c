@@ -39,6 +39,7 @@
 #include <string.h>
 
 #include "adhere/observe.h"
+#include "adhere/params.h"
 #include "adhere/rings.h"
 #include "adhere/static.h"
 #include "adhere/status.h"
@@ -318,7 +319,7 @@ static int attempt(adh_visco *w, double tl, double dt, int shortest, double *err
         den += w->area[i] * fabs(p1[i]);
     }
     /* the floor: ROTHE_FLOOR times the adhesion's force scale 2 pi R dgamma */
-    den += ROTHE_FLOOR * w->m.A / (16.0 * M_PI * w->m.z0 * w->m.z0) * 2 * M_PI * w->m.R;
+    den += ROTHE_FLOOR * adh_material_gamma(&w->m) * 2 * M_PI * w->m.R;
     /* q's error moves u by cdel W dq against u's cinf W p + cdel W q:
      * none in an elastic solid (Einf = E0) */
     *err = num / den * w->cdel / (w->cinf + w->cdel);
@@ -351,7 +352,7 @@ static double quad(const visco_rothe *R, double dt, double fm, double f0, double
  * ROTHE_FORCE_FLOOR times the adhesion's force 2 pi R dgamma */
 static double force_floor(const adh_visco *w)
 {
-    return ROTHE_FORCE_FLOOR * 2 * M_PI * w->m.R * w->m.A / (16.0 * M_PI * w->m.z0 * w->m.z0);
+    return ROTHE_FORCE_FLOOR * 2 * M_PI * w->m.R * adh_material_gamma(&w->m);
 }
 
 static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
@@ -378,8 +379,11 @@ static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
     double h1 = x->h0;
     adh_visco_gaps(w, y, h1);
     double P1 = -adh_visco_force(w, h1) * w->seg.bdot, D1 = dissipation(w, R->p0, R->q0);
-    double F0 = -R->P0 / w->seg.bdot, F1 = -P1 / w->seg.bdot;
-    R->dF = w->seg.bdot != 0 ? fabs(F1 - F0) / fmax(fmax(fabs(F0), fabs(F1)), force_floor(w)) : 0;
+    R->dF = 0;
+    if (w->seg.bdot != 0) {   /* F recovered from the power P = -F bdot: not while the base is held */
+        double F0 = -R->P0 / w->seg.bdot, F1 = -P1 / w->seg.bdot;
+        R->dF = fabs(F1 - F0) / fmax(fmax(fabs(F0), fabs(F1)), force_floor(w));
+    }
     w->acc.work += quad(R, dt, R->Pm, R->P0, P1);
     w->acc.dissipated += quad(R, dt, R->Dm, R->D0, D1);
     R->Pm = R->P0, R->P0 = P1;

@@ -900,24 +900,42 @@ static long study_run_rows(const adh_outdir *d, char *name, size_t len)
     return rows;
 }
 
-/* The session's inputs by identity (adh_outdir_inputs). */
+/* The session's inputs by identity (adh_outdir_inputs), each with what
+ * it is to the run and the option that named it. */
 static struct {
     dev_t dev;
     ino_t ino;
     char path[256];
+    const char *what, *option;
 } session_input[16];
 static size_t ninputs;
 
-void adh_outdir_inputs(const char *const *paths, size_t n)
+void adh_outdir_inputs(const adh_outdir_input *in, size_t n)
 {
     struct stat st;
     ninputs = 0;
     for (size_t i = 0; i < n && ninputs < sizeof session_input / sizeof session_input[0]; i++)
-        if (paths[i] && *paths[i] && stat(paths[i], &st) == 0 && S_ISREG(st.st_mode)) {
+        if (in[i].path && *in[i].path && stat(in[i].path, &st) == 0 && S_ISREG(st.st_mode)) {
             session_input[ninputs].dev = st.st_dev, session_input[ninputs].ino = st.st_ino;
-            adh_outdir_escape(paths[i], session_input[ninputs].path, sizeof session_input[ninputs].path);
+            adh_outdir_escape(in[i].path, session_input[ninputs].path, sizeof session_input[ninputs].path);
+            session_input[ninputs].what = in[i].what;
+            session_input[ninputs].option = in[i].option;
             ninputs++;
         }
+}
+
+int adh_outdir_input_named(const char *path, const char **what, const char **option)
+{
+    struct stat out;
+    if (lstat(path, &out) != 0 || !S_ISREG(out.st_mode))
+        return 0;
+    for (size_t i = 0; i < ninputs; i++)
+        if (session_input[i].dev == out.st_dev && session_input[i].ino == out.st_ino) {
+            *what = session_input[i].what;
+            *option = session_input[i].option;
+            return 1;
+        }
+    return 0;
 }
 
 /* A file under one of adhere's names in d that is an input of this
@@ -1581,18 +1599,43 @@ const char *adh_outfile_reason(const char *path, int e, char *buf, size_t len)
     return create_reason(what, e, buf, len);
 }
 
+/* path's directory opened into *dfd (-1 when it is not) and its last
+ * component in *base, what stands there in *st (*there 0 when nothing
+ * does): 0, or the errno that refuses path before anything is made there
+ * (a name too long, no file name, no such directory, a directory at path). */
+static int outfile_at(const char *path, int *dfd, const char **base, struct stat *st, int *there)
+{
+    char dir[PATH_MAX];
+    int e;
+    *dfd = -1;
+    *there = 0;
+    if (!(*base = outfile_dir(path, dir, &e)))
+        return e;
+    *dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (*dfd < 0)
+        return errno;
+    *there = fstatat(*dfd, *base, st, AT_SYMLINK_NOFOLLOW) == 0;
+    /* a rename cannot put a file over a directory */
+    return *there && S_ISDIR(st->st_mode) ? EISDIR : 0;
+}
+
+int adh_outfile_check(const char *path)
+{
+    const char *base;
+    struct stat st;
+    int dfd, there, e = outfile_at(path, &dfd, &base, &st, &there);
+    if (dfd >= 0)
+        close(dfd);
+    return e;
+}
+
 int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx)
 {
-    char dir[PATH_MAX], tmp[PATH_MAX];
-    int e;
-    const char *base = outfile_dir(path, dir, &e);
-    if (!base)
-        return e;
-    int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    e = dfd < 0 ? errno : 0;
+    char tmp[PATH_MAX];
+    const char *base;
     struct stat st;
-    int there = !e && fstatat(dfd, base, &st, AT_SYMLINK_NOFOLLOW) == 0;
-    if (there && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode) && !S_ISDIR(st.st_mode)) {
+    int dfd, there, e = outfile_at(path, &dfd, &base, &st, &there);
+    if (!e && there && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode) && !S_ISDIR(st.st_mode)) {
         /* a terminal, pipe or /dev/null: written in place, nothing to
          * replace. Opened without waiting: a pipe no program reads would
          * hold the open for ever (the screen frozen), and is ENXIO */
@@ -1617,15 +1660,4 @@ int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ct
     if (dfd >= 0)
         close(dfd);
     return e;
-}
-
-int adh_outfile_names_input(const char *path, const char *const *inputs, size_t n)
-{
-    struct stat out, in;
-    if (lstat(path, &out) != 0 || !S_ISREG(out.st_mode))
-        return -1;
-    for (size_t i = 0; i < n; i++)
-        if (inputs[i] && *inputs[i] && stat(inputs[i], &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino)
-            return (int)i;
-    return -1;
 }

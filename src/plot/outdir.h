@@ -33,12 +33,24 @@ enum { ADH_OUTDIR_OVERWRITE = 1,
  * why. */
 adh_outdir *adh_outdir_open(const char *path, unsigned flags, char *why, size_t whylen);
 
-/* The files this session reads (its scene, measured curves, style, replay
- * script; "" or NULL skipped), by identity: an output directory whose
- * clearing would remove one (adhere DIR/best.scene -o DIR: the scene a fit
- * wrote, an earlier run's file) is refused, naming it, --overwrite or not.
- * Up to 16; later calls replace the list. */
-void adh_outdir_inputs(const char *const *paths, size_t n);
+/* The files this session reads (its scene, replay script, gnuplot style,
+ * measured curves; a path "" or NULL skipped), by identity, each with what
+ * it is ("the scene") and the option that named it ("--replay"; NULL for
+ * none), both kept as pointers (string constants): an output directory
+ * whose clearing would remove one (adhere DIR/best.scene -o DIR: the scene
+ * a fit wrote, an earlier run's file) is refused, naming it, --overwrite
+ * or not; a file the user names for output (--screen, the TUI's :dump and
+ * :rows) is looked up by adh_outdir_input_named. Up to 16; later calls
+ * replace the list. */
+typedef struct adh_outdir_input {
+    const char *path, *what, *option;
+} adh_outdir_input;
+void adh_outdir_inputs(const adh_outdir_input *in, size_t n);
+/* Whether path names one of the session's inputs (the same file, not a
+ * link to it, which adh_outfile_write replaces rather than writes
+ * through): 1 with what it is and its option (adh_outdir_inputs), or 0.
+ * --screen naming the replay script put the screen over it. */
+int adh_outdir_input_named(const char *path, const char **what, const char **option);
 
 /* path/name, a directory adhere names inside the one the user named (the
  * terminal interface's static/ and time/), or name in the working
@@ -156,18 +168,17 @@ int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t w
  * pipe no program reads: ENXIO at once, not waited on). 0, or the errno
  * that stopped it (nothing left under a temporary name). */
 int adh_outfile_write(const char *path, adh_outdir_writer writer, const void *ctx);
+/* What adh_outfile_write refuses path for before it makes anything there
+ * (its directory missing or not one, a directory at path, no file name, a
+ * name too long; not a read-only file, which it finds as it writes): 0,
+ * or that errno. For a path checked before the work that fills it
+ * (--screen, before the replay). */
+int adh_outfile_check(const char *path);
 
 /* The words for e, adh_outfile_write's errno for path: a pipe no program
  * reads (ENXIO), a directory whose file system lets no file be created in
  * it (ENOENT with the directory there: /proc), else the system's. buf
  * (len bytes) may hold them. */
 const char *adh_outfile_reason(const char *path, int e, char *buf, size_t len);
-
-/* Which of inputs[0..n) (files the run reads: its scene, replay script,
- * measured curve, style; "" or NULL for none) path would replace: the
- * index of the one path names (the same file, not a link to it, which
- * adh_outfile_write replaces rather than writes through), or -1. '--screen'
- * naming the replay script put the screen over it. */
-int adh_outfile_names_input(const char *path, const char *const *inputs, size_t n);
 
 #endif

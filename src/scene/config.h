@@ -232,12 +232,17 @@ void adh_config_reword(const char *in, adh_config_say say, void *ctx, char *out,
  * is not the key's (one the core derived: a uniform grid's radius). */
 const char *adh_config_key_opening(const adh_config *c, const adh_run_spec *run, const char *in, char *out,
                                    size_t len);
-/* A setter's refusal of the text its user typed for key that opens with
- * key's quantity and value ("N = 5 nodes is not allowed: ..."): the words
- * after the value (" is not allowed: ..."), so that the driver opens the
- * sentence with the setting as typed ("--nodes=5 is not allowed: ...");
- * NULL when in opens otherwise. */
-const char *adh_config_opening_after(const char *key, const char *in);
+/* A driver's words for a sentence of the configuration's (its keys said
+ * as the driver says them: adh_config_reword with its own adh_config_say). */
+typedef void (*adh_config_words)(const char *in, void *ctx, char *out, size_t len);
+/* adh_config_set's refusal msg of the text a driver's user gave for key,
+ * in the driver's words: opened with the setting as the user gave it
+ * (setting: "--nodes=5", "nodes = 5", "N = 5") where msg opens with key's
+ * quantity and value ("N = 5 nodes is not allowed: ..." becomes "--nodes=5
+ * is not allowed: ..."), else "name: msg" (name: "--nodes", "nodes", "N");
+ * the rest through words. */
+void adh_config_refusal(const char *key, const char *setting, const char *name, const char *msg,
+                        adh_config_words words, void *ctx, char *out, size_t len);
 /* key's value as text that adh_config_set reads back to the same value
  * (numbers in SI, exactly; "auto", "none", lists by commas). 0, or -1 for
  * no such key. */
@@ -495,6 +500,13 @@ int adh_sweep_run_dirs(const adh_sweep *s);
  * and the protocol every run steps (adh_config_protocol). A config
  * without a sweep is its own run 0. */
 void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run);
+/* Run i of c's sweep (run, as adh_config_sweep_run gave it) against run
+ * 1's mode first: a study's runs share one mode unless scene.mode itself
+ * is swept (a material swept between elastic and sls would move runs into
+ * physical time or out of it, on run 1's grid, in a table of run 1's
+ * columns). 0, or -1 with why naming the run and scene.mode. */
+int adh_config_sweep_mode_check(const adh_config *c, size_t i, const adh_run_spec *run, adh_mode first, char *why,
+                                size_t whylen);
 /* Number of runs: the sweep's, or 1. */
 size_t adh_config_nruns(const adh_config *c);
 

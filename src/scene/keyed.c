@@ -116,7 +116,10 @@ const char *adh_config_key_opening(const adh_config *c, const adh_run_spec *run,
     return NULL;
 }
 
-const char *adh_config_opening_after(const char *key, const char *in)
+/* The words after the value of a refusal that opens with key's quantity
+ * and value ("N = 5 nodes is not allowed: ...": " is not allowed: ..."),
+ * NULL when it opens otherwise. */
+static const char *opening_after(const char *key, const char *in)
 {
     for (size_t i = 0; i < NOPENINGS; i++) {
         size_t h = strlen(openings[i].head), t = strlen(openings[i].tail);
@@ -126,4 +129,13 @@ const char *adh_config_opening_after(const char *key, const char *in)
             return is;
     }
     return NULL;
+}
+
+void adh_config_refusal(const char *key, const char *setting, const char *name, const char *msg,
+                        adh_config_words words, void *ctx, char *out, size_t len)
+{
+    char w[1024];
+    const char *after = opening_after(key, msg);
+    words(after ? after : msg, ctx, w, sizeof w);
+    snprintf(out, len, after ? "%s%s" : "%s: %s", after ? setting : name, w);
 }

@@ -102,14 +102,25 @@ static double lattice_factor(const adh_visco_rule_settings *v)
     return 1.0 + 2.5 / (1.0 + (r - 1.0) / 0.15);
 }
 
-static double travel_step(const adh_material *m0, const adh_visco_rule_settings *v, double speed, double *E)
+/* The edge zone at the effective modulus E0 (1 + 2 y), y = sqrt(rate tau
+ * / l(E0)) (rate: 10 v, v the contact line's speed), up to cap: the length
+ * a step of IDAS's (cap Einf) and of the Rothe steps (no cap) is a part
+ * of; *E that modulus. */
+static double stiffened_zone(const adh_material *m0, const adh_visco_rule_settings *v, double rate, double cap,
+                             double *E)
 {
     adh_material m = *m0;
     m.E = v->sls.E0;
-    double y = sqrt(10.0 * speed * v->sls.tau / adh_edge_zone(&m));
-    *E = fmin(v->sls.E0 * (1.0 + TIME_SPEED_STIFFENING * y), v->sls.Einf);
+    double y = sqrt(rate * v->sls.tau / adh_edge_zone(&m));
+    double E1 = v->sls.E0 * (1.0 + TIME_SPEED_STIFFENING * y);
+    *E = isinf(cap) ? E1 : fmin(E1, cap);   /* no cap: E1 as it is, NaN too */
     m.E = *E;
-    return TIME_EDGE_PER_STEP * adh_edge_zone(&m);
+    return adh_edge_zone(&m);
+}
+
+static double travel_step(const adh_material *m0, const adh_visco_rule_settings *v, double speed, double *E)
+{
+    return TIME_EDGE_PER_STEP * stiffened_zone(m0, v, 10.0 * speed, v->sls.Einf, E);
 }
 
 /* The steps of a branch whose contact line travels a at step a step. */
@@ -153,11 +164,8 @@ static double contact_branch(double a, double step)
  * the contact line's speed (line: its speed over the base's) */
 static double rothe_step(const adh_material *m0, const adh_visco_rule_settings *v, double speed, double g, double line)
 {
-    adh_material m = *m0;
-    m.E = v->sls.E0;
-    double y = sqrt(10.0 * speed * line / ROTHE_LINE_REF * v->sls.tau / adh_edge_zone(&m));
-    m.E = v->sls.E0 * (1.0 + TIME_SPEED_STIFFENING * y);
-    return ROTHE_EDGE_PER_STEP * adh_edge_zone(&m) / sqrt(g);
+    double E;
+    return ROTHE_EDGE_PER_STEP * stiffened_zone(m0, v, 10.0 * speed * line / ROTHE_LINE_REF, INFINITY, &E) / sqrt(g);
 }
 
 /* The steps of a branch in contact: the contact line's travel a at step,

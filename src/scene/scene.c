@@ -65,6 +65,12 @@ static void say_key(const char *key, const char *value, char *buf, size_t len, v
     snprintf(buf, len, "%s%s%s", dot ? dot + 1 : key, value ? " = " : "", value ? value : "");
 }
 
+/* adh_config_reword with say_key, as an adh_config_words */
+static void key_words(const char *in, void *ctx, char *out, size_t len)
+{
+    adh_config_reword(in, say_key, ctx, out, len);
+}
+
 /* [sweep] E after [sweep] material.E (or sigma after material.sigma):
  * one key under two spellings, the second's values would silently replace
  * the first's. 0, or the failure reported. */
@@ -126,17 +132,14 @@ static int handler(void *user, const char *section, const char *name, const char
 
     int unload = c->spec.proto.unload;
     if (adh_config_set(c, full, value, msg, sizeof msg) != 0) {
-        char words[400];
+        char words[700], setting[300];
         /* "nodes = 5 is not allowed", not "nodes: N = 5 nodes is ..." */
-        const char *after = adh_config_opening_after(full, msg);
-        adh_config_reword(after ? after : msg, say_key, NULL, words, sizeof words);
+        snprintf(setting, sizeof setting, "%s = %s", name, value);
+        adh_config_refusal(full, setting, name, msg, key_words, NULL, words, sizeof words);
         /* '#' comments a line only at its start: "E = 1GPa # stiff" read
          * 'GPa # stiff' as the unit */
         const char *hash = strstr(value, " #");
-        char lead[300];
-        snprintf(lead, sizeof lead, after ? "%s = %s" : "%s:", name, value);
-        return fail(sp, hash ? "%s %s (a comment after a value starts with ' ;', not '#')" : "%s %s", lead,
-                    words + (after && words[0] == ' '));
+        return fail(sp, hash ? "%s%s (a comment after a value starts with ' ;', not '#')" : "%s%s", words, "");
     }
     adh_config_note_given(c, full, value, sp->file);
     adh_config_note_origin(c, full, line);

@@ -424,6 +424,28 @@ static void apply(const adh_sweep *s, size_t base_turns, size_t i, adh_config *t
         t->spec.mat.E = adh_material_modulus_at_sigma(&t->spec.mat, sigma);
 }
 
+/* The one rule of a study's modes: its runs share run 1's mode unless
+ * scene.mode itself is swept (then each run has its mode, and a grid of
+ * its own). */
+static int mode_swept(const adh_sweep *s)
+{
+    return adh_sweep_touches(s, "scene.mode");
+}
+
+int adh_config_sweep_mode_check(const adh_config *c, size_t i, const adh_run_spec *run, adh_mode first, char *why,
+                                size_t whylen)
+{
+    if (run->mode == first || mode_swept(&c->sweep))
+        return 0;
+    char which[256];
+    adh_sweep_describe(&c->sweep, i, which, sizeof which);
+    snprintf(why, whylen, "sweep run %zu (%s) runs in mode %s, run 1 in mode %s: a study's runs share one mode unless "
+             "the mode itself is swept; give the mode (scene.mode = %s) for every run, or sweep it", i + 1, which,
+             adh_config_mode_word(run->mode), adh_config_mode_word(first),
+             adh_config_mode_word(run->mode == ADH_MODE_TIME ? ADH_MODE_TIME : first));
+    return -1;
+}
+
 void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run)
 {
     if (!c->sweep.naxes || i >= adh_sweep_runs(&c->sweep)) {
@@ -437,7 +459,7 @@ void adh_config_sweep_run(const adh_config *c, size_t i, adh_run_spec *run)
     t.output.plots = c->output.plots;
     apply(&c->sweep, c->spec.proto.nturns, i, &t);
     /* a run whose grid settings or mode differ has a grid of its own */
-    if (adh_sweep_touches(&c->sweep, "grid.") || adh_sweep_touches(&c->sweep, "scene.mode")) {
+    if (adh_sweep_touches(&c->sweep, "grid.") || mode_swept(&c->sweep)) {
         char why[512];
         adh_config_choose_grid(&t.spec, NULL, why, sizeof why, NULL);
     }

@@ -175,6 +175,12 @@ void tui_sim_words(const char *sentence, char *out, size_t len)
     adh_config_reword(sentence, say_field, NULL, out, len);
 }
 
+/* tui_sim_words as an adh_config_words */
+static void field_words(const char *in, void *ctx, char *out, size_t len)
+{
+    tui_sim_words(in, out, len);
+}
+
 /* ---- the grid of each mode ------------------------------------------------ */
 
 /* The grid of run r as it stands: N and the spacing resolved, and a graded
@@ -782,14 +788,13 @@ static void as_typed(const char *msg, const char *value, const char *text, const
         size_t nv = strcspn(v, ","), nt = strcspn(t, ",");
         const char *ts = t;
         size_t tn = trimmed(&ts, nt);
-        char quoted[64], said[1024];
+        char quoted[64], rest[1024];
         char *at = nv + 3 <= sizeof quoted && (nv != tn || strncmp(v, ts, nv))
                  ? (snprintf(quoted, sizeof quoted, "'%.*s'", (int)nv, v), strstr(out, quoted)) : NULL;
-        if (at) {
-            snprintf(said, sizeof said, "%.*s'%.*s' %s%s", (int)(at - out), out, (int)(tn < 100 ? tn : 100), ts, unit,
-                     at + strlen(quoted));
-            out[0] = '\0';
-            adh_text_cat(out, len, said);
+        if (at) {   /* out up to the quote kept in place, the rest put after it */
+            snprintf(rest, sizeof rest, "'%.*s' %s%s", (int)(tn < 100 ? tn : 100), ts, unit, at + strlen(quoted));
+            *at = '\0';
+            adh_text_cat(out, len, rest);
         }
         v += nv + (v[nv] == ',');
         t += nt + (t[nt] == ',');
@@ -803,14 +808,10 @@ static void as_typed(const char *msg, const char *value, const char *text, const
 static void refused(const char *name, const char *key, const char *text, const char *value, const char *unit,
                     const char *msg, char *why, size_t whylen)
 {
-    char words[512], typed[512];
+    char setting[512], typed[512];
     as_typed(msg, value, text, unit, typed, sizeof typed);
-    const char *after = adh_config_opening_after(key, typed);
-    tui_sim_words(after ? after : typed, words, sizeof words);
-    if (after)
-        snprintf(why, whylen, "%s = %s%s", name, text, words);
-    else
-        snprintf(why, whylen, "%s: %s", name, words);
+    snprintf(setting, sizeof setting, "%s = %s", name, text);
+    adh_config_refusal(key, setting, name, typed, field_words, NULL, why, whylen);
 }
 
 int tui_sim_set_key(tui_sim *s, const char *key, const char *text, char *why, size_t whylen)

@@ -599,18 +599,15 @@ static int write_rows(tui *t, const char *path, char *why, size_t whylen)
 }
 
 /* A file :dump or :rows names that is one the session reads (its scene,
- * its replay script): the screen was put over the script, the rows over
- * the scene. -1 with why; 0 for any other. */
-static int reads_it(const tui *t, const char *path, const char *what, char *why, size_t whylen)
+ * its replay script: adh_outdir_inputs): the screen was put over the
+ * script, the rows over the scene. -1 with why; 0 for any other. */
+static int reads_it(const char *path, const char *what, char *why, size_t whylen)
 {
-    const adh_config *c = config(t);
-    const char *in[] = { c->scene, c->tui.replay, c->output.data, c->output.gnuplot_style };
-    static const char *const names[] = { "the scene", "the replay script", "the measured curve", "the gnuplot style" };
-    int i = adh_outfile_names_input(path, in, sizeof in / sizeof in[0]);
-    if (i < 0)
+    const char *input, *option;
+    if (!adh_outdir_input_named(path, &input, &option))
         return 0;
     snprintf(why, whylen, "not writing the %s to %s: it is %s this session reads; name another file", what, path,
-             names[i]);
+             input);
     return -1;
 }
 
@@ -640,12 +637,12 @@ static int run_command(tui *t, const tui_replay_item *it, char *why, size_t whyl
         return 0;
     }
     case TUI_REPLAY_DUMP:
-        if (reads_it(t, it->value, "screen", why, whylen) != 0)
+        if (reads_it(it->value, "screen", why, whylen) != 0)
             return -1;
         draw(t);
         return tui_dump_screen(it->value, why, whylen);
     case TUI_REPLAY_ROWS:
-        if (reads_it(t, it->value, "rows", why, whylen) != 0)
+        if (reads_it(it->value, "rows", why, whylen) != 0)
             return -1;
         return write_rows(t, it->value, why, whylen);
     case TUI_REPLAY_WAIT:
