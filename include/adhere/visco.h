@@ -119,6 +119,9 @@ typedef struct adh_visco_settings {
 } adh_visco_settings;
 
 #define ADH_ROTHE_TOL_FACTOR 5.0
+/* tol's range (adh_visco_settings_validate): relative, as its name says */
+#define ADH_VISCO_TOL_MIN 1e-10
+#define ADH_VISCO_TOL_MAX 1e-2
 /* auto takes the Rothe steps up to this Einf/E0: measured beyond (100 and
  * 1000 E0) their error estimate took 2.3 and 8.6 times IDAS's steps and
  * their pull-off lay 0.35 and 1.1 % (dissipation 0.55 and 11 %) off the

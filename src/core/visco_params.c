@@ -106,8 +106,9 @@ int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t w
 {
     if (s->integrator < ADH_VISCO_AUTO || s->integrator > ADH_VISCO_ROTHE)
         BAD("integrator %d is not allowed: it must be 0 (auto), 1 (IDAS) or 2 (Rothe)", s->integrator);
-    if (!(s->tol >= 1e-10 && s->tol <= 1e-2))
-        BAD("time tolerance %g is not allowed: it must be from 1e-10 to 1e-2", s->tol);
+    if (!(s->tol >= ADH_VISCO_TOL_MIN && s->tol <= ADH_VISCO_TOL_MAX))
+        BAD("time tolerance = %s is not allowed: it must be from 1e-10 to 1e-2 (relative)",
+            outside(s->tol, ADH_VISCO_TOL_MIN, ADH_VISCO_TOL_MAX).s);
     if (!(s->active_tol >= 0 && s->active_tol <= 1))
         BAD("active_tol %g is not allowed: it must be from 0 to 1", s->active_tol);
     if (s->max_steps < 10 || s->max_jump_steps < 10)
