@@ -93,7 +93,7 @@ adh_visco_settings adh_visco_settings_default(void)
      * Figure-4-like cycle costs 12 % more steps (docs/viscoelastic.md). */
     adh_visco_settings s = {
         .integrator = ADH_VISCO_AUTO,
-        .tol = 5e-5,
+        .tol = ADH_VISCO_TOL_DEFAULT,
         .active_tol = 0.1,
         .max_steps = 200000,
         .max_jump_steps = 20000,

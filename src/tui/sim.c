@@ -136,6 +136,7 @@ static const struct { unsigned bit; const char *here; } fix_words[] = {
     { ADH_FIX_NODES, "N" },
     { ADH_FIX_SPACING, "spacing" },
     { ADH_FIX_GRID_RADIUS, ":set grid.radius" },
+    { ADH_FIX_TIME_TOL, ":set solver.time_tol" },
 };
 
 /* The core's sentence in why with the screen's words for fix after it, as
