@@ -129,6 +129,9 @@ typedef struct adh_visco_settings {
  * 0.3 %: the balance does not see that error): numbers at a looser tol
  * are not promised, and a driver says so. */
 #define ADH_VISCO_TOL_DEFAULT 5e-5
+/* 1 when tol is looser than ADH_VISCO_TOL_DEFAULT: its numbers are not
+ * promised to 0.5 % (to rounding: the default's own text reads back as it). */
+int adh_visco_tol_loose(double tol);
 /* auto takes the Rothe steps up to this Einf/E0: measured beyond (100 and
  * 1000 E0) their error estimate took 2.3 and 8.6 times IDAS's steps and
  * their pull-off lay 0.35 and 1.1 % (dissipation 0.55 and 11 %) off the

@@ -27,7 +27,7 @@
 static void time_mark(int sls, const adh_visco_settings *s, const adh_visco_result *res, adh_run *run)
 {
     double open = adh_visco_balance_open(res);
-    int loose = sls && s->tol > ADH_VISCO_TOL_DEFAULT * (1 + 1e-12);
+    int loose = sls && adh_visco_tol_loose(s->tol);
     int unclosed = res->steps > 0 && fabs(open) > ADH_VISCO_BALANCE_MAX;
     if (!loose && !unclosed)
         return;

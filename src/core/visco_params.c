@@ -116,6 +116,11 @@ int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t w
     return ADH_SUCCESS;
 }
 
+int adh_visco_tol_loose(double tol)
+{
+    return tol > ADH_VISCO_TOL_DEFAULT * (1 + 1e-12);
+}
+
 int adh_visco_rothe_applies(const adh_sls *v, const adh_visco_drive *d, const adh_visco_settings *s)
 {
     if (s->integrator == ADH_VISCO_IDAS || isfinite(d->spring))

@@ -228,6 +228,9 @@ tplan() { "$ADHERE" --plan $TOLS "$@" 2>&1 | sed -n 's/^time: about [^(]* ([0-9.
 check "the plan's steps follow the tolerance as the run's: half of it, $(tplan --time-tol=2.5e-5) against $(tplan) planned, $(tk "$TMP/tols/run-1" time_steps) against $(tk "$TMP/tol1" time_steps) run (ratios within 15 %)" \
     awk -v p1="$(tplan --time-tol=2.5e-5)" -v p0="$(tplan)" -v r1="$(tk "$TMP/tols/run-1" time_steps)" -v r0="$(tk "$TMP/tol1" time_steps)" \
         'BEGIN { q = (p1 / p0) / (r1 / r0); exit !(p0 > 0 && r0 > 0 && p1 > p0 && q > 0.87 && q < 1.15) }'
+# shellcheck disable=SC2086
+check "the plan says a run looser than the default will be marked, and says nothing at it" \
+    sh -c "'$ADHERE' --plan $TOLS --time-tol=1e-3 | grep -q '^tolerance: 0.001, looser than the default 5e-05, .*: the run will be marked unconverged\$' && ! '$ADHERE' --plan $TOLS | grep -q '^tolerance:'"
 # turns.tsv's deepest turn is the same cycle as summary.tsv's: the same
 # number (turns.tsv took the area between the rows' branches, 0.28 % above
 # the base's work here, which the energy balance closes to 2e-4)
