@@ -43,7 +43,7 @@ int cli_tables_time_marked(const adh_run *r);
  * returned; "" for any other run. */
 const char *cli_tables_marked_reason(const adh_config *cfg, const adh_run *r, char *buf, size_t len);
 /* The steps of r that reached the iteration cap (summary.tsv's and
- * sweep.tsv's unconverged_steps): none where the balance is open. */
+ * sweep.tsv's unconverged_steps): none where a run in time is marked. */
 size_t cli_tables_capped_steps(const adh_run *r);
 /* The summary's status word: interrupted, unconverged (steps at the
  * iteration cap), success, or the solver's error. */

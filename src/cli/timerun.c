@@ -18,12 +18,13 @@
  * a tolerance looser than the one the promise was measured at, or an
  * energy balance open past what a converged integration closes to (an
  * elastic path integrates nothing: its residual is its loop's quadrature
- * against its chords, the static curve's: no tolerance of time). Where the residual is the
- * integration's error it falls with the tolerance (Einf = 1.1 E0 on 5 nm
- * rings: 1.0 %, 0.74 % and 0.49 % at 5e-5, 2.5e-5 and 1.25e-5), so the
- * sentence says a tighter one closes it there; where it does not fall
- * (1 mm/s near elastic at R = 1 um: 0.41 %, 0.53 %, 0.63 % at 5e-5,
- * 1.25e-5, 1e-6) the error is another's, which halving it tells. */
+ * against its chords, the static curve's, and it has no time tolerance).
+ * Where the residual is the integration's error it falls with the
+ * tolerance (Einf = 1.1 E0 on 5 nm rings: 1.0 %, 0.74 % and 0.49 % at
+ * 5e-5, 2.5e-5 and 1.25e-5), so the sentence says a tighter one closes it
+ * there; where it does not fall (1 mm/s near elastic at R = 1 um: 0.41 %,
+ * 0.53 %, 0.63 % at 5e-5, 1.25e-5, 1e-6) the error is another's, which
+ * halving it tells. */
 static void time_mark(int sls, const adh_visco_settings *s, const adh_visco_result *res, adh_run *run)
 {
     double open = adh_visco_balance_open(res);
