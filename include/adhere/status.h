@@ -32,7 +32,8 @@ enum adh_fix {
     ADH_FIX_GRID_RADIUS = 1 << 5,  /* a graded grid's outer radius */
     ADH_FIX_FINE_BAND = 1 << 6,    /* a graded grid's fine band */
     ADH_FIX_FORCE = 1 << 7,        /* run a grid coarser than the resolved limit anyway (marked) */
-    ADH_FIX_MODE = 1 << 8          /* another step rule: the relaxation instead of the static curve */
+    ADH_FIX_MODE = 1 << 8,         /* another step rule: the relaxation instead of the static curve */
+    ADH_FIX_TIME_TOL = 1 << 10     /* the time integration's tolerance */
 };
 
 /* A short, constant, human description of a status code. */

@@ -119,6 +119,19 @@ typedef struct adh_visco_settings {
 } adh_visco_settings;
 
 #define ADH_ROTHE_TOL_FACTOR 5.0
+/* tol's range (adh_visco_settings_validate): relative, as its name says */
+#define ADH_VISCO_TOL_MIN 1e-10
+#define ADH_VISCO_TOL_MAX 1e-2
+/* The default tol, and the loosest at which halving it was measured to
+ * move the pull-off, the jumps and the hysteresis by under 0.5 % (at 1e-4
+ * the sigma = 75 cycle's hysteresis moved 0.59 %; at 5e-4 an Einf = 100 E0
+ * cycle's lay 2 % off the converged one, its energy balance closed to
+ * 0.3 %: the balance does not see that error): numbers at a looser tol
+ * are not promised, and a driver says so. */
+#define ADH_VISCO_TOL_DEFAULT 5e-5
+/* 1 when tol is looser than ADH_VISCO_TOL_DEFAULT: its numbers are not
+ * promised to 0.5 % (to rounding: the default's own text reads back as it). */
+int adh_visco_tol_loose(double tol);
 /* auto takes the Rothe steps up to this Einf/E0: measured beyond (100 and
  * 1000 E0) their error estimate took 2.3 and 8.6 times IDAS's steps and
  * their pull-off lay 0.35 and 1.1 % (dissipation 0.55 and 11 %) off the

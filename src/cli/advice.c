@@ -22,6 +22,7 @@ static const struct {
     { ADH_FIX_SPACING, "--spacing", "grid.spacing" },
     { ADH_FIX_GRID_RADIUS, "--grid-radius", "grid.radius" },
     { ADH_FIX_FORCE, "--force", "grid.force" },
+    { ADH_FIX_TIME_TOL, "--time-tol", "solver.time_tol" },
 };
 #define NFLAGS (sizeof keys / sizeof keys[0])
 #define ELLIPSIS "\xe2\x80\xa6"   /* U+2026, where a name or a list is cut */

@@ -263,8 +263,9 @@ static void batch_judge(batch_job *j)
      * the run's status, unless --allow-unconverged asked for them. */
     const adh_output_options *o = &j->cfg->output;
     int unconverged = run->unconverged && j->status == CLI_EXIT_OK;
-    if (cli_tables_balance_open(run) && (!o->allow_unconverged || !o->quiet))
-        adh_sayf("warning: %s%s", run->why,   /* a run in time: its energy balance open */
+    char marked[CLI_TABLES_REASON_LEN];   /* a run in time: its balance open, or its tolerance loose */
+    if (*cli_tables_marked_reason(j->cfg, run, marked, sizeof marked) && (!o->allow_unconverged || !o->quiet))
+        adh_sayf("warning: %s%s", marked,
                  o->allow_unconverged ? "" : " (status unconverged, exit 1; --allow-unconverged accepts it)");
     else if (run->unconverged && (!o->allow_unconverged || !o->quiet))
         adh_sayf("warning: %zu of %zu steps reached the iteration cap (%zu) without meeting eps = %s; their rows say converged 0%s",

@@ -29,7 +29,7 @@ enum {
     OPT_COST_NODES, OPT_MAX_ITER, OPT_MIXING, OPT_MOMENTUM, OPT_ALLOW_UNCONVERGED, OPT_FORCE, OPT_DATA,
     OPT_GRID, OPT_FINE_BAND, OPT_GROWTH, OPT_GRID_RADIUS, OPT_OPERATOR, OPT_OVERWRITE, OPT_COLUMNS, OPT_FREE,
     OPT_MODEL, OPT_OFFSET, OPT_BASELINE, OPT_MATERIAL, OPT_E0, OPT_EINF, OPT_TAU, OPT_SPEED, OPT_DWELL_TIME,
-    OPT_SPRING,
+    OPT_SPRING, OPT_TIME_TOL,
     OPT_SWEEP, OPT_RUN_DIRS, OPT_SHARD, OPT_ALLOW_PARTIAL
 };
 
@@ -76,6 +76,7 @@ static const option_doc options[] = {
     { { "speed", required_argument, 0, OPT_SPEED }, "M/S[,M/S]", "physical time: the base's speed, or approach and retraction speeds (default 1um/s)", "protocol.speed", NULL },
     { { "dwell-time", required_argument, 0, OPT_DWELL_TIME }, "S", "physical time: held at each turn before retracting (default 0)", "protocol.dwell_time", NULL },
     { { "spring", required_argument, 0, OPT_SPRING }, "N/M|none", "instrument spring k between the base and the sphere: physical time, or the static curve's snap points (default none)", "protocol.spring", NULL },
+    { { "time-tol", required_argument, 0, OPT_TIME_TOL }, "X", "sls: relative tolerance of the time integration, 1e-10 to 1e-2 (default 5e-5)", "solver.time_tol", NULL },
     { { "mode", required_argument, 0, OPT_MODE }, "relax|static|rigid|time", "paper's relaxation, the static equilibrium curve, rigid spheres only (eq 22, no elastic solve), or physical time (default relax; time with --material=sls)", "scene.mode", NULL },
     { { "reference", required_argument, 0, OPT_REFERENCE }, "static|none", "also compute the static curve as a reference in relaxation mode (none: not, the default)", NULL, NULL },
     { { "batch", no_argument, 0, 'b' }, NULL, "run the protocol without the TUI and write tables", NULL, NULL },

@@ -72,8 +72,9 @@ static int run_tables(const adh_config *cfg, size_t i, const adh_run_spec *spec,
     if (status == CLI_EXIT_OK && partial)
         return run->interrupted ? cli_interrupt_exit() : CLI_EXIT_SOLVER;
     if (status == CLI_EXIT_OK && run->unconverged && !cfg->output.allow_unconverged) {
-        if (data && cli_tables_balance_open(run)) /* a run in time: its energy balance open */
-            adh_sayf("warning: run %zu: %s (status unconverged; --allow-unconverged accepts it)", i + 1, run->why);
+        char marked[CLI_TABLES_REASON_LEN];   /* a run in time: its balance open, or its tolerance loose */
+        if (data && *cli_tables_marked_reason(cfg, run, marked, sizeof marked))
+            adh_sayf("warning: run %zu: %s (status unconverged; --allow-unconverged accepts it)", i + 1, marked);
         else if (data) /* said once, not again when the figures rewrite the summary */
             adh_sayf("warning: run %zu: %zu of %zu steps reached the iteration cap without meeting eps (status unconverged; --allow-unconverged accepts them)",
                      i + 1, run->unconverged, run->nrows);

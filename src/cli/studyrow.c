@@ -285,6 +285,8 @@ void cli_studyrow_fill(cli_studyrow *row, const adh_config *cfg, size_t i, const
     if (status != ADH_SUCCESS && !r->interrupted && r->status == status &&
         *cli_tables_stop_reason(cfg, r, reason, sizeof reason))
         row->reason = strdup(reason);   /* NULL when out of memory: the status word alone */
+    else if (status == ADH_SUCCESS && *cli_tables_marked_reason(cfg, r, reason, sizeof reason))
+        row->reason = strdup(reason);   /* why it ran through unconverged, as summary.tsv's */
     int partial = r->interrupted || status != ADH_SUCCESS;
     v[CLI_ROW_COMPLETE] = !partial && strcmp(word, "no contact") && strcmp(word, "not separated") ? 1 : 0;
     if (rc->mode == ADH_MODE_TIME && tout)

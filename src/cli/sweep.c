@@ -150,12 +150,12 @@ static void finished(study_job *job, size_t i, const adh_run_spec *spec, const a
         adh_sayf("run %zu of %zu (%s) %s: %zu steps, %zu iterations, %.3g s; %zu of %zu done, %s",
                  i + 1, job->st->nruns, which, run->interrupted ? "interrupted" : row.status, run->nrows,
                  run->iterations, run->seconds, job->done, job->total, pr);
-        if (!run->interrupted && row.reason)
+        if (!run->interrupted && row.reason && !cli_tables_time_marked(run))   /* that one ran through: below */
             adh_sayf("run %zu stopped: %s", i + 1, row.reason);
     }
     /* not hidden by -q: it changes what the run's numbers mean */
-    if (cli_tables_balance_open(run))   /* a run in time: its energy balance open */
-        adh_sayf("warning: run %zu (%s): %s", i + 1, which, run->why);
+    if (cli_tables_time_marked(run))   /* a run in time: its balance open, or its tolerance loose */
+        adh_sayf("warning: run %zu (%s): %s", i + 1, which, row.reason ? row.reason : run->why);
     else if (run->unconverged)
         adh_sayf("warning: run %zu (%s): %zu of %zu steps reached the iteration cap (%zu) "
                  "without meeting eps; their rows say converged 0", i + 1, which, run->unconverged, run->nrows,

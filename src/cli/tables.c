@@ -251,6 +251,10 @@ int cli_tables_summary(FILE *f, const void *ctx)
     char reason[CLI_TABLES_REASON_LEN];
     if (*cli_tables_stop_reason(t->cfg, r, reason, sizeof reason))
         fprintf(f, "stop_reason\t%s\n", reason);
+    /* and why a run that ran through is marked unconverged: it did not
+     * stop, so not stop_reason */
+    if (*cli_tables_marked_reason(t->cfg, r, reason, sizeof reason))
+        fprintf(f, "unconverged_reason\t%s\n", reason);
     return 0;
 }
 
@@ -301,12 +305,18 @@ size_t cli_tables_static_keys(const adh_static_result *res, double hysteresis, c
     return CLI_TABLES_STATIC_KEYS;
 }
 
-int cli_tables_balance_open(const adh_run *r)
+int cli_tables_time_marked(const adh_run *r)
 {
     return r->status == ADH_SUCCESS && r->unconverged && r->why[0];
 }
 
+const char *cli_tables_marked_reason(const adh_config *cfg, const adh_run *r, char *buf, size_t len)
+{
+    buf[0] = '\0';
+    return cli_tables_time_marked(r) ? reason_for(cfg, CLI_ADVICE_RUN, r->why, r->fix, buf, len) : buf;
+}
+
 size_t cli_tables_capped_steps(const adh_run *r)
 {
-    return cli_tables_balance_open(r) ? 0 : r->unconverged;
+    return cli_tables_time_marked(r) ? 0 : r->unconverged;
 }

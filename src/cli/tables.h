@@ -32,12 +32,18 @@ typedef struct cli_tables {
     const char *status;              /* summary status word; NULL = from the run */
 } cli_tables;
 
-/* Whether r is a run in time whose energy balance is open: unconverged
- * (r->unconverged) with its sentence in r->why, having stopped on no error
- * (a run that stopped has its stop's sentence there). */
-int cli_tables_balance_open(const adh_run *r);
+/* Whether r is a run in time marked unconverged though it ran through
+ * (its energy balance open, or its tolerance looser than promised:
+ * cli_time_run): unconverged (r->unconverged) with its sentence in
+ * r->why, having stopped on no error (a run that stopped has its stop's
+ * sentence there). */
+int cli_tables_time_marked(const adh_run *r);
+/* That sentence, with the setting that may close it as it was given
+ * (" (--time-tol)"), into buf (CLI_TABLES_REASON_LEN), which is
+ * returned; "" for any other run. */
+const char *cli_tables_marked_reason(const adh_config *cfg, const adh_run *r, char *buf, size_t len);
 /* The steps of r that reached the iteration cap (summary.tsv's and
- * sweep.tsv's unconverged_steps): none where the balance is open. */
+ * sweep.tsv's unconverged_steps): none where a run in time is marked. */
 size_t cli_tables_capped_steps(const adh_run *r);
 /* The summary's status word: interrupted, unconverged (steps at the
  * iteration cap), success, or the solver's error. */

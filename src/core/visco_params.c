@@ -93,7 +93,7 @@ adh_visco_settings adh_visco_settings_default(void)
      * Figure-4-like cycle costs 12 % more steps (docs/viscoelastic.md). */
     adh_visco_settings s = {
         .integrator = ADH_VISCO_AUTO,
-        .tol = 5e-5,
+        .tol = ADH_VISCO_TOL_DEFAULT,
         .active_tol = 0.1,
         .max_steps = 200000,
         .max_jump_steps = 20000,
@@ -106,13 +106,19 @@ int adh_visco_settings_validate(const adh_visco_settings *s, char *why, size_t w
 {
     if (s->integrator < ADH_VISCO_AUTO || s->integrator > ADH_VISCO_ROTHE)
         BAD("integrator %d is not allowed: it must be 0 (auto), 1 (IDAS) or 2 (Rothe)", s->integrator);
-    if (!(s->tol >= 1e-10 && s->tol <= 1e-2))
-        BAD("time tolerance %g is not allowed: it must be from 1e-10 to 1e-2", s->tol);
+    if (!(s->tol >= ADH_VISCO_TOL_MIN && s->tol <= ADH_VISCO_TOL_MAX))
+        BAD("time tolerance = %s is not allowed: it must be from 1e-10 to 1e-2 (relative)",
+            outside(s->tol, ADH_VISCO_TOL_MIN, ADH_VISCO_TOL_MAX).s);
     if (!(s->active_tol >= 0 && s->active_tol <= 1))
         BAD("active_tol %g is not allowed: it must be from 0 to 1", s->active_tol);
     if (s->max_steps < 10 || s->max_jump_steps < 10)
         BAD("max_steps (%zu) and max_jump_steps (%zu) must be at least 10", s->max_steps, s->max_jump_steps);
     return ADH_SUCCESS;
+}
+
+int adh_visco_tol_loose(double tol)
+{
+    return tol > ADH_VISCO_TOL_DEFAULT * (1 + 1e-12);
 }
 
 int adh_visco_rothe_applies(const adh_sls *v, const adh_visco_drive *d, const adh_visco_settings *s)

@@ -113,12 +113,15 @@ typedef struct adh_time_settings {
     double speed_in, speed_out;    /* the base's speed approaching and retracting, m/s */
     double dwell;                  /* held at each turn, s */
     double spring;                 /* instrument stiffness k, N/m; INFINITY = none */
+    double tol;                    /* the time integration's relative tolerance (a solid's: an
+                                      elastic path integrates nothing) */
     unsigned given;                /* ADH_TIME_* bits: keys set, which a mode that
                                       cannot use them refuses */
 } adh_time_settings;
 
 enum { ADH_TIME_E0 = 1, ADH_TIME_EINF = 2, ADH_TIME_TAU = 4, ADH_TIME_SPEED = 8, ADH_TIME_DWELL = 16,
-       ADH_TIME_SPRING = 32, ADH_TIME_MODE = 64 /* scene.mode was set: material = sls does not choose it */ };
+       ADH_TIME_SPRING = 32, ADH_TIME_MODE = 64 /* scene.mode was set: material = sls does not choose it */,
+       ADH_TIME_TOL = 128 };
 
 /* What the core is asked to compute: one run. */
 typedef struct adh_run_spec {

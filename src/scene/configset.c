@@ -524,7 +524,7 @@ static int set_material_kind(adh_config *c, const key_def *k, const char *text, 
         return -1;
     c->spec.time.sls = v;
     if (!v)   /* elastic over a solid (a flag over a scene's): its keys go with it */
-        c->spec.time.given &= ~(unsigned)(ADH_TIME_E0 | ADH_TIME_EINF | ADH_TIME_TAU);
+        c->spec.time.given &= ~(unsigned)(ADH_TIME_E0 | ADH_TIME_EINF | ADH_TIME_TAU | ADH_TIME_TOL);
     /* elastic leaves physical time unless its drive was given (a speed,
      * a dwell in seconds, a spring): then it is an elastic sphere in time */
     unsigned drive = c->spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);
@@ -581,6 +581,20 @@ static int set_time_quantity(adh_config *c, const key_def *k, const char *text, 
     }
     *dbl(c, k) = v;
     c->spec.time.given |= time_bit(name);
+    return 0;
+}
+
+/* The time integration's relative tolerance: a plain number, checked by
+ * the core's own limits (adh_visco_settings_validate); that it needs a
+ * solid is adh_config_time_check's. */
+static int set_time_tol(adh_config *c, const key_def *k, const char *text, char *why, size_t whylen)
+{
+    adh_visco_settings s = adh_visco_settings_default();
+    if (adh_parse_quantity(text, ADH_Q_NONE, &s.tol, why, whylen) != 0 ||
+        adh_visco_settings_validate(&s, why, whylen) != ADH_SUCCESS)
+        return -1;
+    c->spec.time.tol = s.tol;
+    c->spec.time.given |= ADH_TIME_TOL;
     return 0;
 }
 
@@ -810,6 +824,7 @@ static const key_def keys[] = {
     { { "solver.max_points", S | R | C, ADH_Q_NONE, NULL }, set_max_points, 0, get_max_points },
     { { "solver.mixing", S | R, ADH_Q_NONE, NULL }, set_mixing, 0, get_mixing },
     { { "solver.momentum", S | R, ADH_Q_NONE, NULL }, set_momentum, 0, get_momentum },
+    { { "solver.time_tol", S | R, ADH_Q_NONE, NULL }, set_time_tol, F(spec.time.tol), get_quantity },
     { { "protocol.start", S | R, ADH_Q_LENGTH, "nm" }, set_quantity_auto, F(spec.proto.start), get_quantity },
     { { "protocol.step", S | R, ADH_Q_LENGTH, "nm" }, set_quantity, F(spec.proto.step), get_quantity },
     { { "protocol.turns", S | R, ADH_Q_LENGTH, "nm" }, set_turns, 0, get_turns },

@@ -52,6 +52,8 @@ static const struct {
     { "tau = ", "material.tau", NULL, "" },
     { "spring k = ", "protocol.spring", NULL, "" },
     { "dwell = ", "protocol.dwell_time", NULL, "" },
+    /* adh_visco_settings_validate */
+    { "time tolerance = ", "solver.time_tol", NULL, "" },
 };
 #define NOPENINGS (sizeof openings / sizeof openings[0])
 

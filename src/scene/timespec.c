@@ -17,7 +17,8 @@ adh_time_settings adh_time_settings_default(void)
 {
     adh_visco_drive d = adh_visco_drive_default();
     adh_time_settings t = { .sls = 0, .Einf = NAN, .tau = 1e-3, .speed_in = d.speed_in, .speed_out = d.speed_out,
-                            .dwell = d.dwell, .spring = d.spring, .given = 0 };
+                            .dwell = d.dwell, .spring = d.spring, .tol = adh_visco_settings_default().tol,
+                            .given = 0 };
     return t;
 }
 
@@ -35,6 +36,7 @@ void adh_config_visco(const adh_run_spec *s, adh_visco_rule_settings *out)
     out->sls.tau = s->time.tau;
     out->drive = (adh_visco_drive){ .speed_in = s->time.speed_in, .speed_out = s->time.speed_out,
                                     .dwell = s->time.dwell, .spring = s->time.spring };
+    out->s.tol = s->time.tol;
     out->s.cancel = s->relax.cancel;
 }
 
@@ -109,6 +111,11 @@ int adh_config_time_check(const adh_config *c, const adh_run_spec *s, char *why,
     if (solid && !t->sls)
         BAD("%s is a standard linear solid's: material.material = elastic cannot use it (material.material = sls, "
             "or leave %s out)", key_of(solid), key_of(solid));
+    /* an elastic sphere in time follows its static curve: no integration
+     * whose tolerance this could be (the curve's own is the static one's) */
+    if ((t->given & ADH_TIME_TOL) && !t->sls)
+        BAD("solver.time_tol is the time integration's tolerance, a standard linear solid's: material.material = "
+            "elastic integrates nothing in time (material.material = sls, or leave solver.time_tol out)");
     unsigned drive = t->given & (ADH_TIME_SPEED | ADH_TIME_DWELL);
     if (drive && mode != ADH_MODE_TIME)
         BAD("%s is physical time's: scene.mode = %s steps the drive in eps-time (material.material = sls, or "

@@ -136,6 +136,7 @@ static const struct { unsigned bit; const char *here; } fix_words[] = {
     { ADH_FIX_NODES, "N" },
     { ADH_FIX_SPACING, "spacing" },
     { ADH_FIX_GRID_RADIUS, ":set grid.radius" },
+    { ADH_FIX_TIME_TOL, ":set solver.time_tol" },
 };
 
 /* The core's sentence in why with the screen's words for fix after it, as
@@ -292,7 +293,7 @@ static void curve_check(tui_sim *s)
     const adh_time_settings *ta = &s->ckey.time, *tb = &spec(s)->time;
     int time_same = ta->sls == tb->sls && (ta->Einf == tb->Einf || (isnan(ta->Einf) && isnan(tb->Einf))) &&
                     ta->tau == tb->tau && ta->speed_in == tb->speed_in && ta->speed_out == tb->speed_out &&
-                    ta->dwell == tb->dwell && ta->spring == tb->spring;
+                    ta->dwell == tb->dwell && ta->spring == tb->spring && ta->tol == tb->tol;
     if (a->E != b->E || a->A != b->A || a->z0 != b->z0 || a->R != b->R || !same_grid(&s->ckey.grid, &g) ||
         s->ckey.start != s->start || s->ckey.end != tui_sim_curve_end(s) || s->ckey.rule != curve_rule(s) ||
         (s->ckey.rule != &adh_rule_static && !time_same))

@@ -136,7 +136,11 @@ int main(void)
     refused("E0 just under 1 kPa", adh_sls_validate(&v, why, sizeof why), why, "E0 = 999.9999999 Pa");
     adh_visco_settings s = adh_visco_settings_default();
     s.tol = 0;
-    refused("tolerance 0", adh_visco_settings_validate(&s, why, sizeof why), why, "tolerance 0");
+    refused("tolerance 0", adh_visco_settings_validate(&s, why, sizeof why), why, "time tolerance = 0 is not allowed: it must be from 1e-10 to 1e-2");
+    /* named with the digits that put it outside (%g's six read 0.01) */
+    s.tol = 0.0100000001;
+    refused("tolerance just over 1e-2", adh_visco_settings_validate(&s, why, sizeof why), why,
+            "time tolerance = 0.0100000001 is not allowed");
 
     fixture f = fix_open(100, 1.0);
     adh_visco *w = adh_visco_alloc(f.g, f.k);
