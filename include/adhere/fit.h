@@ -7,9 +7,13 @@
  * model's branch chosen per point (adhere/fitmodel.h). The free parameters
  * are searched in scaled coordinates: log(p / start) for E, A, z0 and R
  * (positive, and a factor is what matters), offset / z0 and
- * baseline / |F_JKR| at the start. The Jacobian is forward differences of
- * the model for E, A, z0 and R (one model evaluation each), and exact for
- * the offset (the branch's slope) and the baseline (-1).
+ * baseline / |F_JKR| at the start; the physical-time model's solid as
+ * log(tau / start) and log of Einf/E0 over its start (Einf >= E0 is the
+ * search range's end, ratio 1). The Jacobian is forward differences of
+ * the model for E, A, z0, R, Einf and tau (one model evaluation each), and
+ * exact for the offset (the branch's slope) and the baseline (-1). Einf's
+ * standard error and correlations are Einf's own (its log is E's and the
+ * ratio's together), not the ratio's.
  *
  *   adh_fit *f = adh_fit_alloc(g, k, &data, &settings);
  *   adh_fit_run(f, &result);      (progress per evaluation through a callback)
@@ -27,12 +31,15 @@
 #include "adhere/params.h"
 
 typedef enum adh_fit_param {
-    ADH_FIT_E = 0, ADH_FIT_A, ADH_FIT_Z0, ADH_FIT_R, ADH_FIT_OFFSET, ADH_FIT_BASELINE, ADH_FIT_NPARAM
+    ADH_FIT_E = 0, ADH_FIT_A, ADH_FIT_Z0, ADH_FIT_R, ADH_FIT_OFFSET, ADH_FIT_BASELINE,
+    ADH_FIT_EINF, ADH_FIT_TAU,   /* the physical-time model's solid (adhere/visco.h); E is its E0 */
+    ADH_FIT_NPARAM
 } adh_fit_param;
 
-/* "E", "A", "z0", "R", "offset", "baseline". */
+/* "E", "A", "z0", "R", "offset", "baseline", "Einf", "tau". */
 const char *adh_fit_param_name(adh_fit_param p);
-/* The parameter a name (as above, case-insensitive) means: 0, or -1. */
+/* The parameter a name (as above, case-insensitive; "E0" is E) means: 0,
+ * or -1. */
 int adh_fit_param_parse(const char *name, adh_fit_param *p);
 
 /* Why a parameter's value cannot be trusted (result.flags[p]). */
@@ -59,6 +66,7 @@ typedef struct adh_fit_progress {
 typedef struct adh_fit_settings {
     unsigned free;                 /* mask of 1u << adh_fit_param */
     adh_material start;            /* start values (and the fixed ones) */
+    double Einf, tau;              /* the physical-time model's start values (its E0 is start.E) */
     double offset, baseline;       /* start values, m and N */
     adh_fit_model_settings model;  /* which model, its solver settings */
     size_t max_iter;               /* trust-region iterations (default 50) */
@@ -78,7 +86,7 @@ typedef struct adh_fit_result {
     int status;              /* ADH_SUCCESS; ADH_EINTR (partial: the best so far);
                                 ADH_EMAXITER; or the model's error at the start */
     unsigned free;
-    double value[ADH_FIT_NPARAM];   /* best values (SI: Pa, J, m, m, m, N) */
+    double value[ADH_FIT_NPARAM];   /* best values (SI: Pa, J, m, m, m, N, Pa, s) */
     double se[ADH_FIT_NPARAM];      /* standard errors (NAN for fixed ones) */
     double corr[ADH_FIT_NPARAM][ADH_FIT_NPARAM];   /* correlations among the free ones */
     unsigned flags[ADH_FIT_NPARAM]; /* ADH_FIT_AT_LIMIT, ADH_FIT_UNDETERMINED */

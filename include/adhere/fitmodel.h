@@ -18,6 +18,14 @@
  * below the deepest point: approach points against its loading branch,
  * retract points against its unloading branch, as the drive ran them.
  *
+ * The physical-time model (on request) runs the same protocol through the
+ * viscoelastic rule (adhere/rule_visco.h: a standard linear solid at the
+ * drive's speeds, through its spring), turned at the data's deepest point
+ * (the time spent in contact is the model's: a turn a step deeper would
+ * add to it): approach points against its loading branch, retract points
+ * against its unloading branch, both in the base's position (the drive's:
+ * h0 - F/k under a spring, h0 without one).
+ *
  * Between the curve's points a monotone cubic (GSL's Steffen interpolation)
  * gives the force and its slope. The solver is allocated once and reused by
  * every evaluation (a dense copy of the kernel, or its HODLR form); each
@@ -31,6 +39,7 @@
 #include "adhere/params.h"
 #include "adhere/relax.h"
 #include "adhere/static.h"
+#include "adhere/visco.h"
 
 /* Measured points, in the model's units and sign (x: drive position, m,
  * larger further apart; F: N, positive repulsive). */
@@ -43,12 +52,16 @@ typedef struct adh_fit_data {
     const int *seg;        /* the segment of each point */
 } adh_fit_data;
 
-typedef enum adh_fit_model_kind { ADH_FIT_MODEL_STATIC = 0, ADH_FIT_MODEL_RELAX = 1 } adh_fit_model_kind;
+typedef enum adh_fit_model_kind {
+    ADH_FIT_MODEL_STATIC = 0, ADH_FIT_MODEL_RELAX = 1, ADH_FIT_MODEL_TIME = 2
+} adh_fit_model_kind;
 
 typedef struct adh_fit_model_settings {
     adh_fit_model_kind kind;
     adh_static_settings statics;   /* h0_start and h0_end are set per evaluation */
     adh_relax_settings relax;      /* the relaxation model's */
+    adh_visco_rule_settings visco; /* the physical-time model's: the drive and the integrator
+                                      (the solid is set per evaluation) */
     double step;                   /* drive step of the relaxation, and the start's rounding, m */
     double margin;                 /* the curve runs this far past the data's ends, m */
 } adh_fit_model_settings;
@@ -73,6 +86,12 @@ void adh_fit_model_free(adh_fit_model *fm);
  * ADH_EGRID, ...: no value then). */
 int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, const adh_fit_data *d, double *F,
                        double *slope);
+
+/* The same for the physical-time model, with the solid (its E0 is m->E)
+ * and the baseline: under a spring the model's turn is the sphere's
+ * position at the data's deepest point, x - offset + (F - baseline) / k. */
+int adh_fit_model_eval_sls(adh_fit_model *fm, const adh_material *m, const adh_sls *sls, double offset,
+                           double baseline, const adh_fit_data *d, double *F, double *slope);
 
 /* Why the last evaluation failed, as a run's adh_run.why says it (what
  * stopped the curve, where), and in *fix (may be NULL) its ADH_FIX_* bits;

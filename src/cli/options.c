@@ -323,11 +323,20 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
         return 2;
     }
     adh_mode mode = cli->cfg.spec.mode;
+    if (strcmp(cli->fit.model, "time") == 0) {   /* the solid in physical time, its drive and spring: fit.c checks */
+        if (mode == ADH_MODE_RIGID || mode == ADH_MODE_STATIC) {
+            snprintf(why, whylen, "adhere fit --model=time runs its model in physical time: mode = %s would be "
+                     "ignored; leave it out", mode == ADH_MODE_RIGID ? "rigid" : "static");
+            return 2;
+        }
+        cli->action = CLI_ACT_FIT;
+        return 0;
+    }
     if (mode == ADH_MODE_TIME && cli->cfg.spec.time.sls) {   /* the solid chose the mode: "leave it out" named none given */
         /* in the words the solid was given in: the flag, or the scene's key */
         cli_options_words(&cli->cfg, "adhere fit's models are the static curve and the relaxation (--model=static|relax) "
                           "of an elastic sphere: material.material = sls, a standard linear solid in physical time, would be "
-                          "ignored; give material.material = elastic, with E for its modulus", why, whylen);
+                          "ignored; give material.material = elastic, with E for its modulus, or --model=time to fit the solid", why, whylen);
         return 2;
     }
     unsigned drive = cli->cfg.spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);
