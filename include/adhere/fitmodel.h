@@ -76,6 +76,15 @@ typedef struct adh_fit_model adh_fit_model;
  * refused past them (ADH_EMAXITER): the fit steps back. */
 #define ADH_FIT_MODEL_POINTS_FACTOR 8
 
+/* The physical-time model's integrator tolerance, at most (a run's is
+ * 5e-5): the fit's 1 % forward differences must stand above the model's
+ * own noise. Measured at tau 10 s on a curve of 4.7 s in contact
+ * (docs/fitting.md): at 5e-5 the differences of E0 and tau over a step
+ * 10 times shorter were as large as over 1 % (noise, 0.06 nN against
+ * 0.08), at 1e-5 a tenth of them (0.008 and 0.005 nN), for 1.2 times
+ * the CPU time an evaluation. */
+#define ADH_FIT_MODEL_TIME_TOL 1e-5
+
 /* g and k are borrowed. NULL when out of memory. */
 adh_fit_model *adh_fit_model_alloc(const adh_grid *g, const adh_kernel *k, const adh_fit_model_settings *s);
 void adh_fit_model_free(adh_fit_model *fm);
@@ -92,6 +101,12 @@ int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, 
  * position at the data's deepest point, x - offset + (F - baseline) / k. */
 int adh_fit_model_eval_sls(adh_fit_model *fm, const adh_material *m, const adh_sls *sls, double offset,
                            double baseline, const adh_fit_data *d, double *F, double *slope);
+
+/* The physical-time model's start, fixed at its first evaluation (the
+ * automatic start there, or above the data's highest point): its
+ * evaluations start there, or further out where a trial's own automatic
+ * start is. NAN for the other models (each curve starts at its own). */
+double adh_fit_model_start(const adh_fit_model *fm);
 
 /* Why the last evaluation failed, as a run's adh_run.why says it (what
  * stopped the curve, where), and in *fix (may be NULL) its ADH_FIX_* bits;

@@ -7,6 +7,7 @@
 #include "adhere/kernel.h"
 #include "adhere/models.h"
 #include "adhere/params.h"
+#include "adhere/protocol.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
 #include "cli/tables.h"
@@ -127,6 +128,10 @@ static void print_params(FILE *out, const cli_fit_report *r)
     adh_material_derive(&res->best, &d);
     fprintf(out, "derived: gamma = A/(16 pi z0^2) = %.4g mJ/m^2, sigma = %.4g, JKR pull-off %.4g nN\n",
             d.gamma * 1e3, d.sigma, d.F_jkr * 1e9);
+    if (time_model(r))   /* what a curve much shorter than tau determines (ADH_FIT_SLOW) */
+        fprintf(out, "derived: creep rate (1/E0 - 1/Einf)/tau = %.4g 1/(GPa s); the data %.4g s in contact\n",
+                1e9 * (1 / res->value[ADH_FIT_E] - 1 / res->value[ADH_FIT_EINF]) / res->value[ADH_FIT_TAU],
+                res->contact_time);
 }
 
 static void print_warnings(FILE *out, const cli_fit_report *r)
@@ -143,6 +148,12 @@ static void print_warnings(FILE *out, const cli_fit_report *r)
                     az ? " (A and z0 trade off: the surface energy A/(16 pi z0^2) and the range z0 act together, "
                          "and a force curve fixes mainly the energy)" : "");
         }
+    if (res->flags[ADH_FIT_TAU] & ADH_FIT_SLOW)
+        fprintf(out, "warning: E0 and tau are not determined apart: tau = %.4g s is longer than the %.4g s the data "
+                "spend in contact, over which the solid creeps as at its start, 1/Einf + (1/E0 - 1/Einf) t/tau: the "
+                "curve fixes Einf and the creep rate (1/E0 - 1/Einf)/tau, and chi2 is flat along E0 and tau together "
+                "whatever their standard errors say; fix one of them (leave it out of --free), or fit a curve "
+                "driven slower\n", res->value[ADH_FIT_TAU], res->contact_time);
     for (int i = 0; i < ADH_FIT_NPARAM; i++) {
         if (res->flags[i] & ADH_FIT_AT_LIMIT)
             fprintf(out, "warning: %s ran to the limit of its search range: unidentifiable from these data, not a "
@@ -237,7 +248,8 @@ static int write_fit_tsv(FILE *f, const void *ctx)
         if (!listed(r, i))
             continue;
         const char *flag = res->flags[i] & ADH_FIT_AT_LIMIT ? "at_limit"
-                         : res->flags[i] & ADH_FIT_UNDETERMINED ? "undetermined" : "-";
+                         : res->flags[i] & ADH_FIT_UNDETERMINED ? "undetermined"
+                         : res->flags[i] & ADH_FIT_SLOW ? "creep_rate_only" : "-";
         fprintf(f, "%s\t%.10g\t%.6g\t%s\t%d\t%s", pname(r, i), res->value[i], res->se[i],
                 units[i], is_free(r, i), flag);
         for (int j = 0; j < ADH_FIT_NPARAM; j++)
@@ -314,8 +326,11 @@ static int write_scene(FILE *f, const void *ctx)
                 adh_kernel_name(cfg->spec.grid.use.kernel));
     fprintf(f, "\n[protocol]\nstep = %.10gm\nturns = %.10gm\n", cfg->spec.proto.step,
             time_model(r) ? time_turn(r) : cfg->spec.proto.turns[0]);
-    if (time_model(r))   /* the drive the data were fitted at */
+    if (time_model(r)) {   /* the drive the data were fitted at, from the fit's start */
+        /* as the model started it (adh_fit_model_start) */
+        fprintf(f, "start = %.10gm\n", fmax(r->res->start, adh_protocol_auto_start(m, cfg->spec.proto.step)));
         write_scene_drive(f, r);
+    }
     return 0;
 }
 

@@ -414,6 +414,23 @@ static void einf_covariance(const adh_fit *f, gsl_matrix *cov)
     gsl_matrix_set(cov, jr, jr, gsl_matrix_get(cov, jr, jr) + 2 * cer + cee);
 }
 
+/* The data's time in contact at the drive's speeds: the travel between
+ * neighbouring points of a segment both past its jump, and the dwell. */
+static double contact_time(const adh_fit *f)
+{
+    const adh_fit_data *d = f->d;
+    const adh_visco_drive *dr = &f->s.model.visco.drive;
+    double t = dr->dwell;
+    for (size_t i = 0; i + 1 < d->n; i++)
+        if (d->seg[i] == d->seg[i + 1] && d->contact[i] && d->contact[i + 1])
+            t += fabs(d->x[i + 1] - d->x[i]) / (d->dir[i] > 0 ? dr->speed_in : dr->speed_out);
+    /* the turn: the approach's deepest point and the retraction's first */
+    for (size_t i = 0; i + 1 < d->n; i++)
+        if (d->seg[i] != d->seg[i + 1] && d->contact[i] && d->contact[i + 1])
+            t += fabs(d->x[i + 1] - d->x[i]) / dr->speed_out;
+    return t;
+}
+
 /* Standard errors and correlations from J at the best point, scaled by the
  * residual variance; the flags. */
 static void statistics(adh_fit *f, gsl_multifit_nlinear_workspace *w, adh_fit_result *res)
@@ -449,6 +466,12 @@ static void statistics(adh_fit *f, gsl_multifit_nlinear_workspace *w, adh_fit_re
         }
     }
     gsl_matrix_free(cov);
+    unsigned slow = 1u << ADH_FIT_E | 1u << ADH_FIT_TAU;
+    if (f->s.model.kind == ADH_FIT_MODEL_TIME && (f->s.free & slow) == slow &&
+        res->value[ADH_FIT_TAU] > ADH_FIT_SLOW_RATIO * res->contact_time) {
+        res->flags[ADH_FIT_E] |= ADH_FIT_SLOW;
+        res->flags[ADH_FIT_TAU] |= ADH_FIT_SLOW;
+    }
 }
 
 static void fill_result(adh_fit *f, adh_fit_result *res)
@@ -466,6 +489,8 @@ static void fill_result(adh_fit *f, adh_fit_result *res)
     res->best = (adh_material){ res->value[ADH_FIT_E], res->value[ADH_FIT_A], res->value[ADH_FIT_Z0],
                                 res->value[ADH_FIT_R] };
     res->chi2 = f->best_chi2;
+    res->start = adh_fit_model_start(f->fm);
+    res->contact_time = f->s.model.kind == ADH_FIT_MODEL_TIME ? contact_time(f) : NAN;
     res->rms = sqrt(f->best_chi2 / (double)f->d->n);
     res->noise = adh_fit_noise(f->d);
     res->chi2_red = f->best_chi2 / (res->noise * res->noise * (double)(f->d->n - f->p));

@@ -29,6 +29,8 @@ struct adh_fit_model {
     const adh_kernel *k;
     adh_fit_model_settings s;
     adh_static *w;               /* built on the first static evaluation */
+    double time_start;           /* the physical-time model's start, fixed at its first
+                                    evaluation (0: none yet) */
     size_t first_points;         /* the first curve's points: later ones are capped at
                                     ADH_FIT_MODEL_POINTS_FACTOR times as many */
     size_t n, cap;               /* the curve */
@@ -334,8 +336,18 @@ static int eval_time(adh_fit_model *fm, const adh_material *m, const adh_sls *sl
     adh_visco_rule_settings vs = fm->s.visco;
     vs.sls = *sls;
     vs.sls.E0 = m->E;
+    vs.s.tol = fmin(vs.s.tol, ADH_FIT_MODEL_TIME_TOL);
     adh_protocol_settings ps = adh_protocol_settings_default();
     ps.step = fm->s.step;
+    /* one start for every evaluation (the automatic one moves by whole
+     * steps with E and A, and with it the time the solid has relaxed
+     * before contact: a step in the residuals); a trial whose own is
+     * further out (its force not negligible there) starts from its own */
+    double lo, hi;
+    data_range(d, offset, &lo, &hi);
+    if (!fm->time_start)
+        fm->time_start = fmax(adh_protocol_auto_start(m, ps.step), ps.step * ceil((hi + fm->s.margin) / ps.step));
+    ps.start = fmax(fm->time_start, adh_protocol_auto_start(m, ps.step));
     ps.nturns = 1;
     ps.turns[0] = d->x[deep] - offset;
     if (isfinite(vs.drive.spring))
@@ -394,6 +406,11 @@ int adh_fit_model_eval_sls(adh_fit_model *fm, const adh_material *m, const adh_s
             return ADH_ENAN;
     }
     return ADH_SUCCESS;
+}
+
+double adh_fit_model_start(const adh_fit_model *fm)
+{
+    return fm->s.kind == ADH_FIT_MODEL_TIME && fm->time_start ? fm->time_start : NAN;
 }
 
 const char *adh_fit_model_why(const adh_fit_model *fm, unsigned *fix)
