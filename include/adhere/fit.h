@@ -75,6 +75,11 @@ typedef struct adh_fit_progress {
  * model's own noise), or an accepted step moved each by less than xtol. */
 #define ADH_FIT_STEP_SE 0.1
 
+/* The physical-time model searches again from its best point, at most this
+ * many times, until a search lowers chi2 by less than the data's noise^2
+ * (adh_fit_run). */
+#define ADH_FIT_RESTARTS 3
+
 typedef struct adh_fit_settings {
     unsigned free;                 /* mask of 1u << adh_fit_param */
     adh_material start;            /* start values (and the fixed ones) */

@@ -61,7 +61,8 @@ static int parse_free(const char *text, int time, unsigned *mask, char *why, siz
             return -1;
         }
         if (*mask & 1u << p) {   /* a typo for another name, not a second wish for this one */
-            snprintf(why, whylen, "--free: %s is named twice in '%s': name each parameter once", adh_fit_param_name(p), text);
+            snprintf(why, whylen, "--free: %s is named twice in '%s': name each parameter once",
+                     p == ADH_FIT_E && time ? "E0 (E)" : adh_fit_param_name(p), text);
             return -1;
         }
         *mask |= 1u << p;
@@ -97,11 +98,15 @@ static int fit_ignored(const cli_options *cli, adh_fit_model_kind kind, char *wh
     for (size_t i = 0; i < cli->nset; i++) {
         const cli_set *f = &cli->set[i];
         if (strcmp(f->key, "protocol.turns") == 0)
-            snprintf(why, whylen, "adhere fit takes its turn from the data, a step below the deepest position in "
-                     "--data: --turn=%.40s would be ignored; leave it out", f->value);
+            snprintf(why, whylen, "adhere fit takes its turn from the data, %s the deepest position in "
+                     "--data: --turn=%.40s would be ignored; leave it out",
+                     kind == ADH_FIT_MODEL_TIME ? "at" : "a step below", f->value);
         else if (strcmp(f->key, "protocol.start") == 0 && strcmp(f->value, "auto") != 0)
             snprintf(why, whylen, "adhere fit starts its model's curve where the force is negligible, above the "
                      "highest position in --data: --start=%.40s would be ignored; leave it out", f->value);
+        else if (strcmp(f->key, "protocol.dwell") == 0 && cli->cfg.spec.proto.dwell && kind == ADH_FIT_MODEL_TIME)
+            snprintf(why, whylen, "adhere fit --model=time holds at its turn for a time in seconds (--dwell-time, "
+                     "the data's), not a count of iterations: --dwell=%.40s would be ignored; leave it out", f->value);
         else if (strcmp(f->key, "protocol.dwell") == 0 && cli->cfg.spec.proto.dwell)
             snprintf(why, whylen, relax ? "adhere fit --model=relax unloads at its turn without a dwell: "
                      "--dwell=%.40s would be ignored; leave it out" : "adhere fit's static model is the static "

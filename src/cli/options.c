@@ -323,7 +323,12 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
         return 2;
     }
     adh_mode mode = cli->cfg.spec.mode;
-    if (strcmp(cli->fit.model, "time") == 0) {   /* the solid in physical time, its drive and spring: fit.c checks */
+    const char *model = cli->fit.model;
+    if (*model && strcmp(model, "static") != 0 && strcmp(model, "relax") != 0 && strcmp(model, "time") != 0) {
+        snprintf(why, whylen, "--model: '%s' is not a model: use static, relax or time", model);
+        return 2;
+    }
+    if (strcmp(model, "time") == 0) {   /* the solid in physical time, its drive and spring: fit.c checks */
         if (mode == ADH_MODE_RIGID || mode == ADH_MODE_STATIC) {
             snprintf(why, whylen, "adhere fit --model=time runs its model in physical time: mode = %s would be "
                      "ignored; leave it out", mode == ADH_MODE_RIGID ? "rigid" : "static");

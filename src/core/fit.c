@@ -528,17 +528,15 @@ static void accept(adh_fit *f, gsl_multifit_nlinear_workspace *w, const gsl_vect
     gsl_matrix_free(cov);
 }
 
-int adh_fit_run(adh_fit *f, adh_fit_result *res)
+/* One Levenberg-Marquardt search from theta0 (scaled): the status, why it
+ * stopped in *ginfo, and its workspace (its J at the last accepted point)
+ * in *wout, or NULL when out of memory. */
+static int lm_search(adh_fit *f, const double *theta0, gsl_multifit_nlinear_workspace **wout, int *ginfo)
 {
-    clock_gettime(CLOCK_MONOTONIC, &f->t0);
     size_t n = f->d->n, p = f->p;
-    f->best_chi2 = INFINITY;
-    f->evals = f->failed = f->iters = 0;
     f->stop = f->converged = f->have_se = f->jac_whole = 0;
-    f->model_status = ADH_SUCCESS;
-    f->model_why[0] = '\0';
-    f->model_fix = 0;
-    memset(f->best_theta, 0, sizeof f->best_theta);
+    f->cache_ok = 0;
+    *ginfo = 0;
     gsl_multifit_nlinear_fdf fdf = { .f = gsl_f, .df = gsl_df, .fvv = NULL, .n = n, .p = p, .params = f };
     gsl_multifit_nlinear_parameters par = gsl_multifit_nlinear_default_parameters();
     /* Levenberg-Marquardt; the parameters are already scaled (log of a
@@ -550,14 +548,15 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
     par.scale = gsl_multifit_nlinear_scale_levenberg;
     gsl_multifit_nlinear_workspace *w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &par, n, p);
     gsl_vector *x = gsl_vector_calloc(p), *xold = gsl_vector_alloc(p);
+    *wout = w;
     if (!w || !x || !xold) {
-        gsl_multifit_nlinear_free(w);
         gsl_vector_free(x);
         gsl_vector_free(xold);
-        fill_result(f, res);
-        return res->status = ADH_ENOMEM;
+        return ADH_ENOMEM;
     }
-    int status = ADH_CONTINUE, ginfo = 0, gs = gsl_multifit_nlinear_init(x, &fdf, w);
+    for (size_t j = 0; j < p; j++)
+        gsl_vector_set(x, j, theta0[j]);
+    int status = ADH_CONTINUE, gs = gsl_multifit_nlinear_init(x, &fdf, w);
     if (gs != GSL_SUCCESS || !isfinite(f->best_chi2))
         status = f->stop ? ADH_EINTR : f->model_status != ADH_SUCCESS ? f->model_status : ADH_EINVAL;
     else
@@ -571,7 +570,7 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
         gs = gsl_multifit_nlinear_iterate(w);
         f->iters++;
         if (f->converged) {   /* the next step would be below the data's resolution */
-            ginfo = 4;
+            *ginfo = 4;
             status = ADH_SUCCESS;
             break;
         }
@@ -580,7 +579,7 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
             break;
         }
         if (gs == GSL_ENOPROG) {   /* no step lowers chi2 any more: a minimum, or a limit */
-            ginfo = 3;
+            *ginfo = 3;
             status = ADH_SUCCESS;
             break;
         }
@@ -596,17 +595,50 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
         gsl_multifit_nlinear_test(1e-300, 1e-8, 0, &info, w);
         accept(f, w, xold);
         if (dmax < f->s.xtol || info == 2) {
-            ginfo = info == 2 ? 2 : 1;
+            *ginfo = info == 2 ? 2 : 1;
             status = ADH_SUCCESS;
         }
     }
-    fill_result(f, res);
-    res->gsl_info = ginfo;
-    if (isfinite(f->best_chi2))
-        statistics(f, w, res);
-    res->status = status;
-    gsl_multifit_nlinear_free(w);
     gsl_vector_free(x);
     gsl_vector_free(xold);
     return status;
+}
+
+int adh_fit_run(adh_fit *f, adh_fit_result *res)
+{
+    clock_gettime(CLOCK_MONOTONIC, &f->t0);
+    f->best_chi2 = INFINITY;
+    f->evals = f->failed = f->iters = 0;
+    f->model_status = ADH_SUCCESS;
+    f->model_why[0] = '\0';
+    f->model_fix = 0;
+    memset(f->best_theta, 0, sizeof f->best_theta);
+    double theta0[ADH_FIT_NPARAM] = { 0 };
+    int ginfo = 0;
+    gsl_multifit_nlinear_workspace *w = NULL;
+    int status = lm_search(f, theta0, &w, &ginfo);
+    /* The physical-time model's chi2 is rough on the scale of its steps
+     * (a jump crossing a point moves that point's force by the jump), and
+     * the search stops in a pocket of it: on a curve of the round trip's
+     * kind (docs/fitting.md) from (1.3 E0, 0.8 A, 0.83 Einf, 0.7 tau) at
+     * chi2 2.4 noise^2 above the optimum found from the truth, E0 3.2
+     * standard errors off. A new search from the best point (a new trust
+     * region, a new J) until one lowers chi2 by less than the noise^2 */
+    double noise = adh_fit_noise(f->d);
+    for (int again = 0; f->s.model.kind == ADH_FIT_MODEL_TIME && again < ADH_FIT_RESTARTS && status == ADH_SUCCESS &&
+                        isfinite(noise); again++) {
+        double before = f->best_chi2;
+        memcpy(theta0, f->best_theta, sizeof theta0);
+        gsl_multifit_nlinear_free(w);
+        status = lm_search(f, theta0, &w, &ginfo);
+        if (before - f->best_chi2 < noise * noise)
+            break;
+    }
+    fill_result(f, res);
+    res->gsl_info = ginfo;
+    if (w && isfinite(f->best_chi2))
+        statistics(f, w, res);
+    res->status = w ? status : ADH_ENOMEM;
+    gsl_multifit_nlinear_free(w);
+    return res->status;
 }
