@@ -118,7 +118,9 @@ const char *adh_fit_model_why(const adh_fit_model *fm, unsigned *fix);
  * unloading branch. Their length; *h0 and *F borrowed. */
 size_t adh_fit_model_branch(const adh_fit_model *fm, int which, const double **h0, const double **F);
 
-/* The last evaluation's curve (every point, in the order solved; borrowed). */
+/* The last evaluation's curve (every point, in the order solved; borrowed;
+ * the physical-time model's in the base's position, as its points are
+ * compared). */
 size_t adh_fit_model_curve(const adh_fit_model *fm, const double **h0, const double **F, const int **stable);
 
 #endif

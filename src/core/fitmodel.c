@@ -361,8 +361,8 @@ static int eval_time(adh_fit_model *fm, const adh_material *m, const adh_sls *sl
         snprintf(fm->why, sizeof fm->why, "%s", run.why);
         fm->fix = run.fix;
     }
-    for (size_t i = 0; rc == ADH_SUCCESS && i < run.nrows; i++)
-        rc = curve_push(fm, run.rows[i].h0, run.rows[i].F, 1);
+    for (size_t i = 0; rc == ADH_SUCCESS && i < run.nrows; i++)   /* in the base's position, as the points */
+        rc = curve_push(fm, run.rows[i].base, run.rows[i].F, 1);
     size_t *idx = malloc((run.nrows ? run.nrows : 1) * sizeof *idx);
     if (!idx && rc == ADH_SUCCESS)
         rc = ADH_ENOMEM;
