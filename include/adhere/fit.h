@@ -7,9 +7,13 @@
  * model's branch chosen per point (adhere/fitmodel.h). The free parameters
  * are searched in scaled coordinates: log(p / start) for E, A, z0 and R
  * (positive, and a factor is what matters), offset / z0 and
- * baseline / |F_JKR| at the start. The Jacobian is forward differences of
- * the model for E, A, z0 and R (one model evaluation each), and exact for
- * the offset (the branch's slope) and the baseline (-1).
+ * baseline / |F_JKR| at the start; the physical-time model's solid as
+ * log(tau / start) and log of Einf/E0 over its start (Einf >= E0 is the
+ * search range's end, ratio 1). The Jacobian is forward differences of
+ * the model for E, A, z0, R, Einf and tau (one model evaluation each), and
+ * exact for the offset (the branch's slope) and the baseline (-1). Einf's
+ * standard error and correlations are Einf's own (its log is E's and the
+ * ratio's together), not the ratio's.
  *
  *   adh_fit *f = adh_fit_alloc(g, k, &data, &settings);
  *   adh_fit_run(f, &result);      (progress per evaluation through a callback)
@@ -27,19 +31,34 @@
 #include "adhere/params.h"
 
 typedef enum adh_fit_param {
-    ADH_FIT_E = 0, ADH_FIT_A, ADH_FIT_Z0, ADH_FIT_R, ADH_FIT_OFFSET, ADH_FIT_BASELINE, ADH_FIT_NPARAM
+    ADH_FIT_E = 0, ADH_FIT_A, ADH_FIT_Z0, ADH_FIT_R, ADH_FIT_OFFSET, ADH_FIT_BASELINE,
+    ADH_FIT_EINF, ADH_FIT_TAU,   /* the physical-time model's solid (adhere/visco.h); E is its E0 */
+    ADH_FIT_NPARAM
 } adh_fit_param;
 
-/* "E", "A", "z0", "R", "offset", "baseline". */
+/* "E", "A", "z0", "R", "offset", "baseline", "Einf", "tau". */
 const char *adh_fit_param_name(adh_fit_param p);
-/* The parameter a name (as above, case-insensitive) means: 0, or -1. */
+/* The parameter a name (as above, case-insensitive; "E0" is E) means: 0,
+ * or -1. */
 int adh_fit_param_parse(const char *name, adh_fit_param *p);
 
 /* Why a parameter's value cannot be trusted (result.flags[p]). */
 enum {
     ADH_FIT_AT_LIMIT = 1,     /* it ran to the end of its search range */
-    ADH_FIT_UNDETERMINED = 2  /* its standard error is above its value (or J is singular) */
+    ADH_FIT_UNDETERMINED = 2, /* its standard error is above its value (or J is singular) */
+    ADH_FIT_SLOW = 4          /* E0 and tau with tau beyond the data's time in contact
+                                 (ADH_FIT_SLOW_RATIO): only the creep rate is determined */
 };
+
+/* The physical-time model with E0 and tau free: over a contact much
+ * shorter than tau the solid creeps as 1/Einf + (1/E0 - 1/Einf) t/tau, and
+ * a curve determines Einf and the rate (1/E0 - 1/Einf)/tau, not E0 and tau
+ * apart. Measured (docs/fitting.md) on curves 4.7 s in contact: tau 4 s
+ * recovered within 1.3 standard errors; at 10 s chi2 is flat (within 3)
+ * from (E0, tau) = (1.00 GPa, 10.1 s) to (1.17 GPa, 7.6 s), each reported
+ * with errors of 1-2 %. Both are flagged when tau exceeds this many times
+ * the data's time in contact. */
+#define ADH_FIT_SLOW_RATIO 1.0
 
 typedef struct adh_fit_progress {
     size_t evals;            /* model evaluations so far */
@@ -56,9 +75,15 @@ typedef struct adh_fit_progress {
  * model's own noise), or an accepted step moved each by less than xtol. */
 #define ADH_FIT_STEP_SE 0.1
 
+/* The physical-time model searches again from its best point, at most this
+ * many times, until a search lowers chi2 by less than the data's noise^2
+ * (adh_fit_run). */
+#define ADH_FIT_RESTARTS 3
+
 typedef struct adh_fit_settings {
     unsigned free;                 /* mask of 1u << adh_fit_param */
     adh_material start;            /* start values (and the fixed ones) */
+    double Einf, tau;              /* the physical-time model's start values (its E0 is start.E) */
     double offset, baseline;       /* start values, m and N */
     adh_fit_model_settings model;  /* which model, its solver settings */
     size_t max_iter;               /* trust-region iterations (default 50) */
@@ -78,11 +103,15 @@ typedef struct adh_fit_result {
     int status;              /* ADH_SUCCESS; ADH_EINTR (partial: the best so far);
                                 ADH_EMAXITER; or the model's error at the start */
     unsigned free;
-    double value[ADH_FIT_NPARAM];   /* best values (SI: Pa, J, m, m, m, N) */
+    double value[ADH_FIT_NPARAM];   /* best values (SI: Pa, J, m, m, m, N, Pa, s) */
     double se[ADH_FIT_NPARAM];      /* standard errors (NAN for fixed ones) */
     double corr[ADH_FIT_NPARAM][ADH_FIT_NPARAM];   /* correlations among the free ones */
     unsigned flags[ADH_FIT_NPARAM]; /* ADH_FIT_AT_LIMIT, ADH_FIT_UNDETERMINED */
     adh_material best;       /* the best material */
+    double start;            /* the physical-time model's start (adh_fit_model_start), m; NAN */
+    double contact_time;     /* the physical-time model's: the data's time in contact, s
+                                (positions in contact over the drive's speeds, and the
+                                dwell); NAN for the other models */
     size_t n, nfree;         /* points, free parameters */
     double chi2;             /* sum of squared residuals, N^2 */
     double rms;              /* sqrt(chi2 / n), N */

@@ -18,6 +18,14 @@
  * below the deepest point: approach points against its loading branch,
  * retract points against its unloading branch, as the drive ran them.
  *
+ * The physical-time model (on request) runs the same protocol through the
+ * viscoelastic rule (adhere/rule_visco.h: a standard linear solid at the
+ * drive's speeds, through its spring), turned at the data's deepest point
+ * (the time spent in contact is the model's: a turn a step deeper would
+ * add to it): approach points against its loading branch, retract points
+ * against its unloading branch, both in the base's position (the drive's:
+ * h0 - F/k under a spring, h0 without one).
+ *
  * Between the curve's points a monotone cubic (GSL's Steffen interpolation)
  * gives the force and its slope. The solver is allocated once and reused by
  * every evaluation (a dense copy of the kernel, or its HODLR form); each
@@ -31,6 +39,7 @@
 #include "adhere/params.h"
 #include "adhere/relax.h"
 #include "adhere/static.h"
+#include "adhere/visco.h"
 
 /* Measured points, in the model's units and sign (x: drive position, m,
  * larger further apart; F: N, positive repulsive). */
@@ -43,12 +52,16 @@ typedef struct adh_fit_data {
     const int *seg;        /* the segment of each point */
 } adh_fit_data;
 
-typedef enum adh_fit_model_kind { ADH_FIT_MODEL_STATIC = 0, ADH_FIT_MODEL_RELAX = 1 } adh_fit_model_kind;
+typedef enum adh_fit_model_kind {
+    ADH_FIT_MODEL_STATIC = 0, ADH_FIT_MODEL_RELAX = 1, ADH_FIT_MODEL_TIME = 2
+} adh_fit_model_kind;
 
 typedef struct adh_fit_model_settings {
     adh_fit_model_kind kind;
     adh_static_settings statics;   /* h0_start and h0_end are set per evaluation */
     adh_relax_settings relax;      /* the relaxation model's */
+    adh_visco_rule_settings visco; /* the physical-time model's: the drive and the integrator
+                                      (the solid is set per evaluation) */
     double step;                   /* drive step of the relaxation, and the start's rounding, m */
     double margin;                 /* the curve runs this far past the data's ends, m */
 } adh_fit_model_settings;
@@ -63,6 +76,15 @@ typedef struct adh_fit_model adh_fit_model;
  * refused past them (ADH_EMAXITER): the fit steps back. */
 #define ADH_FIT_MODEL_POINTS_FACTOR 8
 
+/* The physical-time model's integrator tolerance, at most (a run's is
+ * 5e-5): the fit's 1 % forward differences must stand above the model's
+ * own noise. Measured at tau 10 s on a curve of 4.7 s in contact
+ * (docs/fitting.md): at 5e-5 the differences of E0 and tau over a step
+ * 10 times shorter were as large as over 1 % (noise, 0.06 nN against
+ * 0.08), at 1e-5 a tenth of them (0.008 and 0.005 nN), for 1.2 times
+ * the CPU time an evaluation. */
+#define ADH_FIT_MODEL_TIME_TOL 1e-5
+
 /* g and k are borrowed. NULL when out of memory. */
 adh_fit_model *adh_fit_model_alloc(const adh_grid *g, const adh_kernel *k, const adh_fit_model_settings *s);
 void adh_fit_model_free(adh_fit_model *fm);
@@ -74,6 +96,18 @@ void adh_fit_model_free(adh_fit_model *fm);
 int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, const adh_fit_data *d, double *F,
                        double *slope);
 
+/* The same for the physical-time model, with the solid (its E0 is m->E)
+ * and the baseline: under a spring the model's turn is the sphere's
+ * position at the data's deepest point, x - offset + (F - baseline) / k. */
+int adh_fit_model_eval_sls(adh_fit_model *fm, const adh_material *m, const adh_sls *sls, double offset,
+                           double baseline, const adh_fit_data *d, double *F, double *slope);
+
+/* The physical-time model's start, fixed at its first evaluation (the
+ * automatic start there, or above the data's highest point): its
+ * evaluations start there, or further out where a trial's own automatic
+ * start is. NAN for the other models (each curve starts at its own). */
+double adh_fit_model_start(const adh_fit_model *fm);
+
 /* Why the last evaluation failed, as a run's adh_run.why says it (what
  * stopped the curve, where), and in *fix (may be NULL) its ADH_FIX_* bits;
  * "" when it succeeded or nothing more than its status is known. */
@@ -84,7 +118,9 @@ const char *adh_fit_model_why(const adh_fit_model *fm, unsigned *fix);
  * unloading branch. Their length; *h0 and *F borrowed. */
 size_t adh_fit_model_branch(const adh_fit_model *fm, int which, const double **h0, const double **F);
 
-/* The last evaluation's curve (every point, in the order solved; borrowed). */
+/* The last evaluation's curve (every point, in the order solved; borrowed;
+ * the physical-time model's in the base's position, as its points are
+ * compared). */
 size_t adh_fit_model_curve(const adh_fit_model *fm, const double **h0, const double **F, const int **stable);
 
 #endif

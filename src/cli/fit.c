@@ -38,25 +38,37 @@ typedef struct fit_run {
     char note[PATH_MAX + 1200]; /* the scene's keys the fit ignores, said as it starts; "" none */
 } fit_run;
 
-static int parse_free(const char *text, unsigned *mask, char *why, size_t whylen)
+/* The free parameters each model takes, and its default set. */
+#define FIT_ELASTIC_PARAMS "E, A, z0, R, offset and baseline"
+#define FIT_TIME_FREE "E,A,Einf,tau"
+#define FIT_TIME_PARAMS "E0 (or E), Einf, tau, A, z0, R, offset and baseline"
+
+static int parse_free(const char *text, int time, unsigned *mask, char *why, size_t whylen)
 {
     char buf[128], *save = NULL;
-    snprintf(buf, sizeof buf, "%s", *text ? text : "E,A");
+    snprintf(buf, sizeof buf, "%s", *text ? text : time ? FIT_TIME_FREE : "E,A");
     *mask = 0;
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         adh_fit_param p;
         if (adh_fit_param_parse(t, &p) != 0) {
-            snprintf(why, whylen, "--free: '%s' is not a parameter: use E, A, z0, R, offset and baseline, separated by commas", t);
+            snprintf(why, whylen, "--free: '%s' is not a parameter: use %s, separated by commas", t,
+                     time ? FIT_TIME_PARAMS : FIT_ELASTIC_PARAMS);
+            return -1;
+        }
+        if ((p == ADH_FIT_EINF || p == ADH_FIT_TAU) && !time) {
+            snprintf(why, whylen, "--free: '%s' is the standard linear solid's, which only --model=time fits (with "
+                     "--material=sls): this model's parameters are %s", t, FIT_ELASTIC_PARAMS);
             return -1;
         }
         if (*mask & 1u << p) {   /* a typo for another name, not a second wish for this one */
-            snprintf(why, whylen, "--free: %s is named twice in '%s': name each parameter once", adh_fit_param_name(p), text);
+            snprintf(why, whylen, "--free: %s is named twice in '%s': name each parameter once",
+                     p == ADH_FIT_E && time ? "E0 (E)" : adh_fit_param_name(p), text);
             return -1;
         }
         *mask |= 1u << p;
     }
     if (!*mask) {
-        snprintf(why, whylen, "--free: name at least one of E, A, z0, R, offset, baseline");
+        snprintf(why, whylen, "--free: name at least one of %s", time ? FIT_TIME_PARAMS : FIT_ELASTIC_PARAMS);
         return -1;
     }
     /* the force is gamma R times a function of h0/z0 and sigma alone: E, A
@@ -80,20 +92,29 @@ static int parse_free(const char *text, unsigned *mask, char *why, size_t whylen
  * has neither a dwell nor a relaxation for --eps to end. 0, or -1 with the
  * flag and why. The scene's keys stay (scene_ignored says them): they set
  * the runs the scene itself opens. */
-static int fit_ignored(const cli_options *cli, int relax, char *why, size_t whylen)
+static int fit_ignored(const cli_options *cli, adh_fit_model_kind kind, char *why, size_t whylen)
 {
+    int relax = kind == ADH_FIT_MODEL_RELAX;
     for (size_t i = 0; i < cli->nset; i++) {
         const cli_set *f = &cli->set[i];
         if (strcmp(f->key, "protocol.turns") == 0)
-            snprintf(why, whylen, "adhere fit takes its turn from the data, a step below the deepest position in "
-                     "--data: --turn=%.40s would be ignored; leave it out", f->value);
+            snprintf(why, whylen, "adhere fit takes its turn from the data, %s the deepest position in "
+                     "--data: --turn=%.40s would be ignored; leave it out",
+                     kind == ADH_FIT_MODEL_TIME ? "at" : "a step below", f->value);
         else if (strcmp(f->key, "protocol.start") == 0 && strcmp(f->value, "auto") != 0)
             snprintf(why, whylen, "adhere fit starts its model's curve where the force is negligible, above the "
                      "highest position in --data: --start=%.40s would be ignored; leave it out", f->value);
+        else if (strcmp(f->key, "protocol.dwell") == 0 && cli->cfg.spec.proto.dwell && kind == ADH_FIT_MODEL_TIME)
+            snprintf(why, whylen, "adhere fit --model=time holds at its turn for a time in seconds (--dwell-time, "
+                     "the data's), not a count of iterations: --dwell=%.40s would be ignored; leave it out", f->value);
         else if (strcmp(f->key, "protocol.dwell") == 0 && cli->cfg.spec.proto.dwell)
             snprintf(why, whylen, relax ? "adhere fit --model=relax unloads at its turn without a dwell: "
                      "--dwell=%.40s would be ignored; leave it out" : "adhere fit's static model is the static "
                      "curve, with no turn to dwell at: --dwell=%.40s would be ignored; leave it out", f->value);
+        else if (strcmp(f->key, "solver.eps") == 0 && kind == ADH_FIT_MODEL_TIME)
+            snprintf(why, whylen, "adhere fit --model=time integrates in physical time to the integrator's "
+                     "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out",
+                     f->value);
         else if (strcmp(f->key, "solver.eps") == 0 && !relax)
             snprintf(why, whylen, "adhere fit's static model solves each point of the static curve to its own "
                      "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out, "
@@ -109,8 +130,9 @@ static int fit_ignored(const cli_options *cli, int relax, char *why, size_t whyl
  * shipped figure scene sets its turns (fig1's, -2 nm), which its own runs
  * take, and a fit of the scene must still run. The fit says once, in
  * note, which of them it ignores, by key and line ("" when none). */
-static void scene_ignored(const adh_config *cfg, int relax, char *note, size_t len)
+static void scene_ignored(const adh_config *cfg, adh_fit_model_kind kind, char *note, size_t len)
 {
+    int relax = kind == ADH_FIT_MODEL_RELAX;
     const struct { const char *key; int ignored; } keys[] = {
         { "protocol.turns", 1 },
         { "protocol.start", !isnan(cfg->spec.proto.start) },
@@ -133,9 +155,11 @@ static void scene_ignored(const adh_config *cfg, int relax, char *note, size_t l
         return;
     char sentence[800];
     snprintf(sentence, sizeof sentence, "the fit ignores the scene's %s: its model's curve runs from where the force "
-             "is negligible, above the highest position in --data, to a turn a step below the deepest%s%s (the "
-             "scene's own runs take them)", list, relax ? " and back at once" : "",
-             eps ? "; the static curve solves each point to its own tolerance, with no relaxation for eps to end" : "");
+             "is negligible, above the highest position in --data, to a turn %s%s%s (the "
+             "scene's own runs take them)", list, kind == ADH_FIT_MODEL_TIME ? "at the deepest" : "a step below the deepest",
+             relax ? " and back at once" : "",
+             !eps ? "" : kind == ADH_FIT_MODEL_TIME ? "; physical time integrates to its tolerance, with no relaxation for eps to end"
+             : "; the static curve solves each point to its own tolerance, with no relaxation for eps to end");
     cli_options_words(cfg, sentence, note, len);
 }
 
@@ -146,17 +170,37 @@ static int settings(fit_run *fr, char *why, size_t whylen)
     const cli_options *cli = fr->cli;
     const adh_config *cfg = &cli->cfg;
     fr->fs = adh_fit_settings_default();
-    if (parse_free(cli->fit.free, &fr->fs.free, why, whylen) != 0)
-        return -1;
     const char *model = cli->fit.model;
-    if (*model && strcmp(model, "static") != 0 && strcmp(model, "relax") != 0) {
-        snprintf(why, whylen, "--model: '%s' is not a model: use static or relax", model);
+    if (*model && strcmp(model, "static") != 0 && strcmp(model, "relax") != 0 && strcmp(model, "time") != 0) {
+        snprintf(why, whylen, "--model: '%s' is not a model: use static, relax or time", model);
         return -1;
     }
-    fr->fs.model.kind = strcmp(model, "relax") == 0 ? ADH_FIT_MODEL_RELAX : ADH_FIT_MODEL_STATIC;
-    if (fit_ignored(cli, fr->fs.model.kind == ADH_FIT_MODEL_RELAX, why, whylen) != 0)
+    adh_fit_model_kind kind = strcmp(model, "relax") == 0 ? ADH_FIT_MODEL_RELAX
+                            : strcmp(model, "time") == 0 ? ADH_FIT_MODEL_TIME : ADH_FIT_MODEL_STATIC;
+    /* the physical-time model is the solid's, and only the solid's: an
+     * elastic sphere is rate-independent (the static model fits it) */
+    if (kind == ADH_FIT_MODEL_TIME && !cfg->spec.time.sls) {
+        snprintf(why, whylen, "--model=time fits a standard linear solid in physical time: give --material=sls "
+                 "(with start values --E0, --Einf, --tau and the data's --speed); an elastic sphere is "
+                 "rate-independent, and --model=static fits it");
         return -1;
-    scene_ignored(cfg, fr->fs.model.kind == ADH_FIT_MODEL_RELAX, fr->note, sizeof fr->note);
+    }
+    if (kind != ADH_FIT_MODEL_TIME && cfg->spec.time.sls) {
+        snprintf(why, whylen, "--model=%s fits an elastic sphere, and the material is a standard linear solid "
+                 "(material = sls): fit it with --model=time, or give --material=elastic", *model ? model : "static");
+        return -1;
+    }
+    if (parse_free(cli->fit.free, kind == ADH_FIT_MODEL_TIME, &fr->fs.free, why, whylen) != 0)
+        return -1;
+    fr->fs.model.kind = kind;
+    if (fit_ignored(cli, kind, why, whylen) != 0)
+        return -1;
+    scene_ignored(cfg, kind, fr->note, sizeof fr->note);
+    if (kind == ADH_FIT_MODEL_TIME) {   /* the drive as given; the solid's start values */
+        adh_config_visco(&cfg->spec, &fr->fs.model.visco);
+        fr->fs.Einf = fr->fs.model.visco.sls.Einf;
+        fr->fs.tau = fr->fs.model.visco.sls.tau;
+    }
     fr->fs.model.relax = cfg->spec.relax;
     fr->fs.model.step = cfg->spec.proto.step;
     fr->fs.start = cfg->spec.mat;
@@ -182,7 +226,8 @@ static int configure(fit_run *fr, char *why, size_t whylen)
     double lo = INFINITY, step = cfg->spec.proto.step;
     for (size_t i = 0; i < fr->fd.d.n; i++)
         lo = fmin(lo, fr->fd.d.x[i] - fr->fs.offset);
-    cfg->spec.mode = fr->fs.model.kind == ADH_FIT_MODEL_RELAX ? ADH_MODE_RELAX : ADH_MODE_STATIC;
+    cfg->spec.mode = fr->fs.model.kind == ADH_FIT_MODEL_RELAX ? ADH_MODE_RELAX
+                   : fr->fs.model.kind == ADH_FIT_MODEL_TIME ? ADH_MODE_TIME : ADH_MODE_STATIC;
     cfg->spec.proto.nturns = 1;
     cfg->spec.proto.turns[0] = step * floor(lo / step) - step;
     cfg->spec.proto.unload = 1;
@@ -317,6 +362,8 @@ int cli_fit_main(cli_options *cli)
         fr.fs.start = res.best;
         fr.fs.offset = res.value[ADH_FIT_OFFSET];
         fr.fs.baseline = res.value[ADH_FIT_BASELINE];
+        fr.fs.Einf = cfg->spec.time.Einf = res.value[ADH_FIT_EINF];
+        fr.fs.tau = cfg->spec.time.tau = res.value[ADH_FIT_TAU];
         if (adh_config_grid(cfg, why, sizeof why, NULL) != 0 || build(&fr, why, sizeof why) != 0)
             break;
         adh_fit_free(f);
@@ -351,7 +398,7 @@ int cli_fit_main(cli_options *cli)
     else if (!cfg->output.quiet)
         adh_sayf("%s after %zu model evaluations in %.1f s", word, fr.evals, res.seconds);
     char stop[CLI_TABLES_STOPPED_LEN];
-    if (!isfinite(res.chi2) && *cli_fit_model_stop(cfg, &res, fr.fs.model.kind == ADH_FIT_MODEL_RELAX, stop, sizeof stop))   /* not hidden by -q: no fit */
+    if (!isfinite(res.chi2) && *cli_fit_model_stop(cfg, &res, fr.fs.model.kind != ADH_FIT_MODEL_STATIC, stop, sizeof stop))   /* not hidden by -q: no fit */
         adh_sayf("the model stopped: %s", stop);
     adh_outdir_close(od);
     adh_fit_free(f);

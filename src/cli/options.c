@@ -89,8 +89,8 @@ static const option_doc options[] = {
     { { "gnuplot-style", required_argument, 0, OPT_GNUPLOT_STYLE }, "FILE|DIR", "gnuplot style file, or a directory holding style.gp, overriding the installed one", "output.gnuplot_style", NULL },
     { { "data", required_argument, 0, OPT_DATA }, "FILE", "a measured force-position curve (nm, nN, or the header's units) drawn over force.png and the TUI preview; up to 8, each in the key", NULL, NULL },
     { { "columns", required_argument, 0, OPT_COLUMNS }, "POS,FORCE", "--data's position and force columns, by number from 1 or header name (default: the only two, or by name)", NULL, NULL },
-    { { "free", required_argument, 0, OPT_FREE }, "LIST", "adhere fit: the parameters to fit, from E,A,z0,R,offset,baseline (default E,A)", NULL, NULL },
-    { { "model", required_argument, 0, OPT_MODEL }, "static|relax", "adhere fit: the static curve, or the relaxation's loading and unloading branches (default static)", NULL, NULL },
+    { { "free", required_argument, 0, OPT_FREE }, "LIST", "adhere fit: the parameters to fit, from E,A,z0,R,offset,baseline, and E0,Einf,tau with --model=time (default E,A; E0,A,Einf,tau)", NULL, NULL },
+    { { "model", required_argument, 0, OPT_MODEL }, "static|relax|time", "adhere fit: the static curve, the relaxation's loading and unloading branches, or a standard linear solid's in physical time (--material=sls; default static)", NULL, NULL },
     { { "offset", required_argument, 0, OPT_OFFSET }, "M", "adhere fit: start value of the position offset (model h0 = measured - offset, default 0)", NULL, NULL },
     { { "baseline", required_argument, 0, OPT_BASELINE }, "N", "adhere fit: start value of the force baseline (measured = model + baseline, default 0)", NULL, NULL },
     { { "sweep", required_argument, 0, OPT_SWEEP }, "KEY=VALUES", "sweep KEY (E, sigma, turns, ...) over V1,V2,... or LO..HI,[lin|log,]N; given again, every combination (as [sweep])", NULL, NULL },
@@ -324,11 +324,25 @@ static int fit_check(cli_options *cli, int action, char *why, size_t whylen)
         return 2;
     }
     adh_mode mode = cli->cfg.spec.mode;
+    const char *model = cli->fit.model;
+    if (*model && strcmp(model, "static") != 0 && strcmp(model, "relax") != 0 && strcmp(model, "time") != 0) {
+        snprintf(why, whylen, "--model: '%s' is not a model: use static, relax or time", model);
+        return 2;
+    }
+    if (strcmp(model, "time") == 0) {   /* the solid in physical time, its drive and spring: fit.c checks */
+        if (mode == ADH_MODE_RIGID || mode == ADH_MODE_STATIC) {
+            snprintf(why, whylen, "adhere fit --model=time runs its model in physical time: mode = %s would be "
+                     "ignored; leave it out", mode == ADH_MODE_RIGID ? "rigid" : "static");
+            return 2;
+        }
+        cli->action = CLI_ACT_FIT;
+        return 0;
+    }
     if (mode == ADH_MODE_TIME && cli->cfg.spec.time.sls) {   /* the solid chose the mode: "leave it out" named none given */
         /* in the words the solid was given in: the flag, or the scene's key */
         cli_options_words(&cli->cfg, "adhere fit's models are the static curve and the relaxation (--model=static|relax) "
                           "of an elastic sphere: material.material = sls, a standard linear solid in physical time, would be "
-                          "ignored; give material.material = elastic, with E for its modulus", why, whylen);
+                          "ignored; give material.material = elastic, with E for its modulus, or --model=time to fit the solid", why, whylen);
         return 2;
     }
     unsigned drive = cli->cfg.spec.time.given & (ADH_TIME_SPEED | ADH_TIME_DWELL | ADH_TIME_SPRING);

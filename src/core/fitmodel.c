@@ -11,6 +11,7 @@
 #include "adhere/protocol.h"
 #include "adhere/rings.h"
 #include "adhere/rule.h"
+#include "adhere/rule_visco.h"
 #include "adhere/run.h"
 #include "adhere/runner.h"
 #include "adhere/status.h"
@@ -28,6 +29,8 @@ struct adh_fit_model {
     const adh_kernel *k;
     adh_fit_model_settings s;
     adh_static *w;               /* built on the first static evaluation */
+    double time_start;           /* the physical-time model's start, fixed at its first
+                                    evaluation (0: none yet) */
     size_t first_points;         /* the first curve's points: later ones are capped at
                                     ADH_FIT_MODEL_POINTS_FACTOR times as many */
     size_t n, cap;               /* the curve */
@@ -52,6 +55,7 @@ adh_fit_model_settings adh_fit_model_settings_default(void)
     s.statics.lattice_skip = 1;
     s.statics.ds_max = 1.0;   /* points every 0.5 nm or closer on the outer branch: the interpolation between them stays below the lattice's noise */
     s.relax = adh_relax_settings_default();
+    s.visco = adh_visco_rule_settings_default(adh_material_default().E);
     s.step = 0.05e-9;
     s.margin = 0.25e-9;
     return s;
@@ -294,8 +298,90 @@ static int eval_relax(adh_fit_model *fm, const adh_material *m, double lo)
     return rc;
 }
 
+/* The run's rows of one path, in the base's position, as a branch: the
+ * loading path's rows where the base reached below every earlier row, the
+ * unloading path's where it rose above every earlier one (the dwell's rows
+ * at the turn, and a jump's second row at its base, left out: the branch
+ * must be monotone in the base for its interpolant). */
+static int time_branch(adh_fit_model *fm, const adh_run *run, int path, size_t *idx)
+{
+    size_t n = 0;
+    double last = path == 0 ? INFINITY : -INFINITY;
+    double *base = malloc((run->nrows ? run->nrows : 1) * sizeof *base);
+    if (!base)
+        return ADH_ENOMEM;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const adh_obs *o = &run->rows[i];
+        base[i] = o->base;
+        if (o->path != path || !(path == 0 ? o->base < last : o->base > last))
+            continue;
+        last = o->base;
+        idx[n++] = i;
+    }
+    int rc = branch_set(&fm->b[path], base, fm->F, idx, n, path == 1);
+    free(base);
+    return rc;
+}
+
+/* The physical-time model: one turn at the data's deepest point (the
+ * sphere's position there under a spring), the time the data spent in
+ * contact being the model's own. */
+static int eval_time(adh_fit_model *fm, const adh_material *m, const adh_sls *sls, double offset, double baseline,
+                     const adh_fit_data *d)
+{
+    size_t deep = 0;
+    for (size_t i = 1; i < d->n; i++)
+        if (d->x[i] < d->x[deep])
+            deep = i;
+    adh_visco_rule_settings vs = fm->s.visco;
+    vs.sls = *sls;
+    vs.sls.E0 = m->E;
+    vs.s.tol = fmin(vs.s.tol, ADH_FIT_MODEL_TIME_TOL);
+    adh_protocol_settings ps = adh_protocol_settings_default();
+    ps.step = fm->s.step;
+    /* one start for every evaluation (the automatic one moves by whole
+     * steps with E and A, and with it the time the solid has relaxed
+     * before contact: a step in the residuals); a trial whose own is
+     * further out (its force not negligible there) starts from its own */
+    double lo, hi;
+    data_range(d, offset, &lo, &hi);
+    if (!fm->time_start)
+        fm->time_start = fmax(adh_protocol_auto_start(m, ps.step), ps.step * ceil((hi + fm->s.margin) / ps.step));
+    ps.start = fmax(fm->time_start, adh_protocol_auto_start(m, ps.step));
+    ps.nturns = 1;
+    ps.turns[0] = d->x[deep] - offset;
+    if (isfinite(vs.drive.spring))
+        ps.turns[0] += (d->F[deep] - baseline) / vs.drive.spring;
+    adh_run run;
+    adh_run_init(&run);
+    int rc = adh_runner_rule(&adh_rule_visco, fm->g, fm->k, m, &vs, &ps, NULL, NULL, &run);
+    if (rc == ADH_SUCCESS && run.interrupted)
+        rc = ADH_EINTR;
+    if (rc != ADH_SUCCESS && rc != ADH_EINTR && !run.interrupted) {
+        snprintf(fm->why, sizeof fm->why, "%s", run.why);
+        fm->fix = run.fix;
+    }
+    for (size_t i = 0; rc == ADH_SUCCESS && i < run.nrows; i++)   /* in the base's position, as the points */
+        rc = curve_push(fm, run.rows[i].base, run.rows[i].F, 1);
+    size_t *idx = malloc((run.nrows ? run.nrows : 1) * sizeof *idx);
+    if (!idx && rc == ADH_SUCCESS)
+        rc = ADH_ENOMEM;
+    for (int path = 0; rc == ADH_SUCCESS && path < 2; path++)
+        rc = time_branch(fm, &run, path, idx);
+    free(idx);
+    adh_run_free(&run);
+    return rc;
+}
+
 int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, const adh_fit_data *d, double *F,
                        double *slope)
+{
+    adh_sls sls = fm->s.visco.sls;
+    return adh_fit_model_eval_sls(fm, m, &sls, offset, 0.0, d, F, slope);
+}
+
+int adh_fit_model_eval_sls(adh_fit_model *fm, const adh_material *m, const adh_sls *sls, double offset,
+                           double baseline, const adh_fit_data *d, double *F, double *slope)
 {
     double lo, hi;
     data_range(d, offset, &lo, &hi);
@@ -303,14 +389,15 @@ int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, 
     fm->b[0].n = fm->b[1].n = 0;
     fm->why[0] = '\0';
     fm->fix = 0;
-    int relax = fm->s.kind == ADH_FIT_MODEL_RELAX;
-    int rc = relax ? eval_relax(fm, m, lo) : eval_static(fm, m, lo, hi);
+    int relax = fm->s.kind == ADH_FIT_MODEL_RELAX, time = fm->s.kind == ADH_FIT_MODEL_TIME;
+    int rc = time ? eval_time(fm, m, sls, offset, baseline, d) : relax ? eval_relax(fm, m, lo)
+           : eval_static(fm, m, lo, hi);
     if (rc != ADH_SUCCESS) {
         fm->b[0].n = fm->b[1].n = 0;
         return rc;
     }
     for (size_t i = 0; i < d->n; i++) {
-        int which = relax ? d->dir[i] < 0 : d->contact[i] != 0;
+        int which = relax || time ? d->dir[i] < 0 : d->contact[i] != 0;
         double s;
         branch_eval(&fm->b[which], d->x[i] - offset, &F[i], &s);
         if (slope)
@@ -319,6 +406,11 @@ int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, 
             return ADH_ENAN;
     }
     return ADH_SUCCESS;
+}
+
+double adh_fit_model_start(const adh_fit_model *fm)
+{
+    return fm->s.kind == ADH_FIT_MODEL_TIME && fm->time_start ? fm->time_start : NAN;
 }
 
 const char *adh_fit_model_why(const adh_fit_model *fm, unsigned *fix)

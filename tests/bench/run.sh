@@ -46,3 +46,7 @@ echo
 echo
 # adhere fit: E and A to the shipped 200-point Figure 1 curve, evaluations and seconds
 "$BUILD/tests/bench-fit"
+echo
+# adhere fit --model=time: what one curve at one speed determines (tau from
+# 0.01 to 100 s) and the standard errors over seeds (docs/fitting.md)
+ADHERE=./adhere tests/bench/fittime.sh

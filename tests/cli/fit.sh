@@ -255,7 +255,7 @@ rc1=$?
 "$ADHERE" fit --data="$DATA" --material=sls fig1 >/dev/null 2>"$TMP/e20"
 rc2=$?
 check "an sls scene with adhere fit: exit 2, the scene's key named, not a flag ($(cat "$TMP/e19"))" \
-    sh -c "[ $rc1 -eq 2 ] && grep -q 'material = sls ($TMP/sls.scene:3), a standard linear solid in physical time, would be ignored; give material = elastic, with E for its modulus\$' '$TMP/e19' && ! grep -q -- '--material' '$TMP/e19'"
+    sh -c "[ $rc1 -eq 2 ] && grep -q 'material = sls ($TMP/sls.scene:3), a standard linear solid in physical time, would be ignored; give material = elastic, with E for its modulus, or --model=time to fit the solid\$' '$TMP/e19' && ! grep -q -- '--material' '$TMP/e19'"
 check "--material=sls with adhere fit: exit 2, the flag named ($(cat "$TMP/e20"))" \
     sh -c "[ $rc2 -eq 2 ] && grep -q -- '--material=sls, a standard linear solid in physical time, would be ignored; give --material=elastic, with E' '$TMP/e20'"
 awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
