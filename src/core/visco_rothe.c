@@ -368,7 +368,7 @@ static double force_kappa(const adh_visco *w)
     return cbrt(ADH_ROTHE_TOL_FACTOR * w->s.tol);
 }
 
-static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
+static void accept(adh_visco *w, double *y, double dt, const adh_state *x, int history)
 {
     visco_rothe *R = w->ro;
     size_t n = w->n;
@@ -376,9 +376,11 @@ static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
     memcpy(R->yback, y, w->len * sizeof *y);
     R->acc_back = w->acc;
     R->have_back = 1;
-    memcpy(R->pm, R->p0, n * sizeof *R->pm);
-    memcpy(R->um, R->u0, n * sizeof *R->um);
-    R->hprev = h0;
+    if (history) {
+        memcpy(R->pm, R->p0, n * sizeof *R->pm);
+        memcpy(R->um, R->u0, n * sizeof *R->um);
+        R->hprev = h0;
+    }
     R->du = 0;
     for (size_t i = 0; i < n; i++) {
         R->du = fmax(R->du, fabs(x->u[i] - R->e[i] - R->u0[i]));
@@ -397,10 +399,12 @@ static void accept(adh_visco *w, double *y, double dt, const adh_state *x)
         R->dF = force_change(w, -R->P0 / w->seg.bdot, -P1 / w->seg.bdot);
     w->acc.work += quad(R, dt, R->Pm, R->P0, P1);
     w->acc.dissipated += quad(R, dt, R->Dm, R->D0, D1);
-    R->Pm = R->P0, R->P0 = P1;
-    R->Dm = R->D0, R->D0 = D1;
-    R->dtm = dt;
-    R->hist = 1;
+    if (history) {
+        R->Pm = R->P0, R->Dm = R->D0;
+        R->dtm = dt;
+        R->hist = 1;
+    }
+    R->P0 = P1, R->D0 = D1;
     R->contact = R->next_contact;
     w->stat0[0]++;
 }
@@ -430,6 +434,15 @@ static int first_too_long(adh_visco *w, double dt, double dt_min, const adh_stat
     return 1;
 }
 
+/* A step cut to land on a segment's end or a profile that is shorter
+ * than ROTHE_QUAD_SHORT of the step it was cut from and of the step
+ * before (at a turn, 1.65e-21 s: the end within rounding). */
+static int sliver(const visco_rothe *R, double dt, int last)
+{
+    double ref = R->hist ? fmin(R->dt, R->dtm) : R->dt;
+    return last && dt < ROTHE_QUAD_SHORT * ref;
+}
+
 int adh_visco_rothe_advance(adh_visco *w, double *y, double tl_end, int *hit)
 {
     visco_rothe *R = w->ro;
@@ -450,7 +463,7 @@ int adh_visco_rothe_advance(adh_visco *w, double *y, double tl_end, int *hit)
         if (rc == 0 && first_too_long(w, dt, dt_min, x, &grow))
             rc = 1;
         if (rc == 0) {
-            accept(w, y, dt, x);
+            accept(w, y, dt, x, !sliver(R, dt, last));
             *hit = last;
             /* the next step: by the error's third order, never past DT_MAX;
              * a step cut to land on the segment's end does not shrink it */
