@@ -34,13 +34,15 @@ struct adh_relax {
     adh_material m;
     adh_relax_settings s;
     adh_state *st;
+    adh_state *next;   /* an update's new u, h and p, written beside the
+                          state's, whose place they take unless a gap closes */
     double *unew;      /* eq 11 applied to the current pressure */
     double *scratch;
     double *shape;     /* r^2 / 2R, the undeformed sphere (eq 3) */
     double *vel;       /* momentum rule: the previous update u_k - u_(k-1) */
+    double *vel_next;  /* and the new one, as next is to st */
     double *perron;    /* momentum rule: power-iteration vector of the stiffness */
-    double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x;
-                          in an update, the new gaps */
+    double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x */
     double *ring_w;    /* eps's weight of each node (adh_relax_change_weights) */
     double eps_scale;  /* and its scale, sqrt(dr / D_ref) */
     /* The rings the measure adds beyond a grid short of the paper's radius
@@ -195,8 +197,9 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->g = g;
     w->k = k;
     w->st = adh_state_alloc(g->n);
-    w->unew = malloc(8 * g->n * sizeof(double));
-    if (!w->st || !w->unew) {
+    w->next = adh_state_alloc(g->n);
+    w->unew = malloc(9 * g->n * sizeof(double));
+    if (!w->st || !w->next || !w->unew) {
         adh_relax_free(w);
         return NULL;
     }
@@ -206,6 +209,7 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->perron = w->unew + 4 * g->n;
     w->work = w->unew + 5 * g->n;
     w->ring_w = w->unew + 7 * g->n;
+    w->vel_next = w->unew + 8 * g->n;
     w->far_k = malloc(ADH_RELAX_FAR_RINGS * g->n * sizeof *w->far_k);
     if (!w->far_k) {
         adh_relax_free(w);
@@ -219,6 +223,7 @@ void adh_relax_free(adh_relax *w)
     if (!w)
         return;
     adh_state_free(w->st);
+    adh_state_free(w->next);
     free(w->unew);
     free(w->far_k);
     free(w);
@@ -437,33 +442,41 @@ static double paper_ratio(adh_relax *w)
     return w->st->mix;
 }
 
-/* v = beta v + alpha (u_new - u), u += v, and h and p after them; 1, and
- * nothing changed, where the new gap would close (h <= 0, where the law has
- * no meaning). Two passes of independent nodes, which the compiler runs in
- * vectors (the divisions of p(h) four at a time under AVX2): the new gaps
- * into h_new and whether one closes, then the update. */
-ADH_SIMD_CLONES static int update(adh_relax *w, double alpha, double beta)
+/* v = beta v + alpha (u_new - u), u += v, and h and p after them, for
+ * every node into vn and next (the nodes are independent: the compiler runs
+ * them in vectors, the divisions of p(h) four at a time under AVX2); 1
+ * where a new gap closes (h <= 0, where the law has no meaning). One pass
+ * that reads each node once: the new state is written beside the old,
+ * which an update that closes a gap leaves as it was. */
+ADH_SIMD_CLONES static int update_pass(double *restrict vn, adh_state *restrict next, const double *restrict vel,
+                                       const adh_state *restrict st, const double *restrict unew,
+                                       const double *restrict shape, double alpha, double beta, double A, double z0)
 {
-    adh_state *st = w->st;
     size_t n = st->n;
-    const double *unew = w->unew, *shape = w->shape;
-    double *vel = w->vel, *u = st->u, *h = st->h, *p = st->p, *h_new = w->work;
-    double h0 = st->h0, A = w->m.A, z0 = w->m.z0;
+    const double *restrict u = st->u;
+    double *restrict un = next->u, *restrict hn = next->h, *restrict pn = next->p, h0 = st->h0;
     int closes = 0;
 #pragma omp simd reduction(| : closes)
     for (size_t i = 0; i < n; i++) {
-        h_new[i] = h0 + shape[i] - (u[i] + (beta * vel[i] + alpha * unew[i]));
-        closes |= !(h_new[i] > 0);
+        double v = beta * vel[i] + alpha * unew[i], ui = u[i] + v, hi = h0 + shape[i] - ui;
+        vn[i] = v;
+        un[i] = ui;
+        hn[i] = hi;
+        pn[i] = adh_lj_pressure(hi, A, z0);
+        closes |= !(hi > 0);
     }
-    if (closes)
+    return closes;
+}
+
+/* the update, or 1 and nothing changed where a gap would close */
+static int update(adh_relax *w, double alpha, double beta)
+{
+    if (update_pass(w->vel_next, w->next, w->vel, w->st, w->unew, w->shape, alpha, beta, w->m.A, w->m.z0))
         return 1;
-#pragma omp simd
-    for (size_t i = 0; i < n; i++) {
-        vel[i] = beta * vel[i] + alpha * unew[i];
-        u[i] += vel[i];
-        h[i] = h_new[i];
-        p[i] = adh_lj_pressure(h_new[i], A, z0);
-    }
+    adh_state_swap_profiles(w->st, w->next);
+    double *v = w->vel;
+    w->vel = w->vel_next;
+    w->vel_next = v;
     return 0;
 }
 
