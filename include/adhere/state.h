@@ -25,5 +25,9 @@ void adh_state_free(adh_state *s);
 adh_state *adh_state_clone(const adh_state *s);
 /* dst and src must have the same n. */
 void adh_state_copy(adh_state *dst, const adh_state *src);
+/* a and b trade their profiles (u, h, p; not h0, mix or far): each keeps
+ * its address, and each block is still freed with one of them. a and b
+ * must have the same n. */
+void adh_state_swap_profiles(adh_state *a, adh_state *b);
 
 #endif

@@ -34,13 +34,19 @@ struct adh_relax {
     adh_material m;
     adh_relax_settings s;
     adh_state *st;
-    double *unew;      /* eq 11 applied to the current pressure */
+    adh_state *next;   /* an update's new u, h and p, written beside the
+                          state's, whose place they take unless a gap closes */
+    double *kp;        /* the kernel applied to the current pressure */
+    int kp_fresh;      /* kp is the current pressure's: a move shifts u and
+                          h0 and leaves h and p, so a step's first product
+                          is its predecessor's last */
+    double *unew;      /* eq 11's deformation less u: the unmixed change */
     double *scratch;
     double *shape;     /* r^2 / 2R, the undeformed sphere (eq 3) */
     double *vel;       /* momentum rule: the previous update u_k - u_(k-1) */
+    double *vel_next;  /* and the new one, as next is to st */
     double *perron;    /* momentum rule: power-iteration vector of the stiffness */
-    double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x;
-                          in an update, the new gaps */
+    double *work;      /* momentum rule: |p'| x, then (2 N doubles) S x */
     double *ring_w;    /* eps's weight of each node (adh_relax_change_weights) */
     double eps_scale;  /* and its scale, sqrt(dr / D_ref) */
     /* The rings the measure adds beyond a grid short of the paper's radius
@@ -195,8 +201,9 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->g = g;
     w->k = k;
     w->st = adh_state_alloc(g->n);
-    w->unew = malloc(8 * g->n * sizeof(double));
-    if (!w->st || !w->unew) {
+    w->next = adh_state_alloc(g->n);
+    w->unew = malloc(10 * g->n * sizeof(double));
+    if (!w->st || !w->next || !w->unew) {
         adh_relax_free(w);
         return NULL;
     }
@@ -206,6 +213,8 @@ adh_relax *adh_relax_alloc(const adh_grid *g, const adh_kernel *k)
     w->perron = w->unew + 4 * g->n;
     w->work = w->unew + 5 * g->n;
     w->ring_w = w->unew + 7 * g->n;
+    w->vel_next = w->unew + 8 * g->n;
+    w->kp = w->unew + 9 * g->n;
     w->far_k = malloc(ADH_RELAX_FAR_RINGS * g->n * sizeof *w->far_k);
     if (!w->far_k) {
         adh_relax_free(w);
@@ -219,6 +228,7 @@ void adh_relax_free(adh_relax *w)
     if (!w)
         return;
     adh_state_free(w->st);
+    adh_state_free(w->next);
     free(w->unew);
     free(w->far_k);
     free(w);
@@ -227,6 +237,7 @@ void adh_relax_free(adh_relax *w)
 void adh_relax_refresh(adh_relax *w)
 {
     adh_state *st = w->st;
+    w->kp_fresh = 0;
     for (size_t i = 0; i < st->n; i++) {
         st->h[i] = st->h0 + w->shape[i] - st->u[i];
         st->p[i] = adh_lj_pressure(st->h[i], w->m.A, w->m.z0);
@@ -437,33 +448,42 @@ static double paper_ratio(adh_relax *w)
     return w->st->mix;
 }
 
-/* v = beta v + alpha (u_new - u), u += v, and h and p after them; 1, and
- * nothing changed, where the new gap would close (h <= 0, where the law has
- * no meaning). Two passes of independent nodes, which the compiler runs in
- * vectors (the divisions of p(h) four at a time under AVX2): the new gaps
- * into h_new and whether one closes, then the update. */
-ADH_SIMD_CLONES static int update(adh_relax *w, double alpha, double beta)
+/* v = beta v + alpha (u_new - u), u += v, and h and p after them, for
+ * every node into vn and next (the nodes are independent: the compiler runs
+ * them in vectors, the divisions of p(h) four at a time under AVX2); 1
+ * where a new gap closes (h <= 0, where the law has no meaning). One pass
+ * that reads each node once: the new state is written beside the old,
+ * which an update that closes a gap leaves as it was. */
+ADH_SIMD_CLONES static int update_pass(double *restrict vn, adh_state *restrict next, const double *restrict vel,
+                                       const adh_state *restrict st, const double *restrict unew,
+                                       const double *restrict shape, double alpha, double beta, double A, double z0)
 {
-    adh_state *st = w->st;
     size_t n = st->n;
-    const double *unew = w->unew, *shape = w->shape;
-    double *vel = w->vel, *u = st->u, *h = st->h, *p = st->p, *h_new = w->work;
-    double h0 = st->h0, A = w->m.A, z0 = w->m.z0;
+    const double *restrict u = st->u;
+    double *restrict un = next->u, *restrict hn = next->h, *restrict pn = next->p, h0 = st->h0;
     int closes = 0;
 #pragma omp simd reduction(| : closes)
     for (size_t i = 0; i < n; i++) {
-        h_new[i] = h0 + shape[i] - (u[i] + (beta * vel[i] + alpha * unew[i]));
-        closes |= !(h_new[i] > 0);
+        double v = beta * vel[i] + alpha * unew[i], ui = u[i] + v, hi = h0 + shape[i] - ui;
+        vn[i] = v;
+        un[i] = ui;
+        hn[i] = hi;
+        pn[i] = adh_lj_pressure(hi, A, z0);
+        closes |= !(hi > 0);
     }
-    if (closes)
+    return closes;
+}
+
+/* the update, or 1 and nothing changed where a gap would close */
+static int update(adh_relax *w, double alpha, double beta)
+{
+    if (update_pass(w->vel_next, w->next, w->vel, w->st, w->unew, w->shape, alpha, beta, w->m.A, w->m.z0))
         return 1;
-#pragma omp simd
-    for (size_t i = 0; i < n; i++) {
-        vel[i] = beta * vel[i] + alpha * unew[i];
-        u[i] += vel[i];
-        h[i] = h_new[i];
-        p[i] = adh_lj_pressure(h_new[i], A, z0);
-    }
+    adh_state_swap_profiles(w->st, w->next);
+    w->kp_fresh = 0;
+    double *v = w->vel;
+    w->vel = w->vel_next;
+    w->vel_next = v;
     return 0;
 }
 
@@ -493,24 +513,24 @@ ADH_SIMD_CLONES static double far_change(adh_relax *w, double scale)
 
 typedef double relax_v4 __attribute__((vector_size(4 * sizeof(double)), aligned(sizeof(double)), may_alias));
 
-/* unew = scale unew - u (eq 11's deformation, now the unmixed change du),
+/* unew = scale kp - u (eq 11's deformation less u: the unmixed change du),
  * and the sums of du^2 and wt du^2, each in four interleaved parts (lane l
  * adds the nodes l, l + 4, ...; one chain of additions would bound this
  * pass by its latency) added as (0 + 1) + (2 + 3): in vectors, four lanes
  * at a time, the same additions in the same order as one at a time. */
-ADH_SIMD_CLONES static void change_sums(double *unew, const double *u, const double *wt, size_t n, double scale,
-                                        double *ssq, double *wssq)
+ADH_SIMD_CLONES static void change_sums(double *unew, const double *kp, const double *u, const double *wt, size_t n,
+                                        double scale, double *ssq, double *wssq)
 {
     relax_v4 s = { 0, 0, 0, 0 }, ws = { 0, 0, 0, 0 };
     size_t k = 0;
     for (; k + 4 <= n; k += 4) {
-        relax_v4 du = scale * *(const relax_v4 *)(unew + k) - *(const relax_v4 *)(u + k);
+        relax_v4 du = scale * *(const relax_v4 *)(kp + k) - *(const relax_v4 *)(u + k);
         *(relax_v4 *)(unew + k) = du;
         s += du * du;
         ws += *(const relax_v4 *)(wt + k) * du * du;
     }
     for (; k < n; k++) {
-        double du = scale * unew[k] - u[k];
+        double du = scale * kp[k] - u[k];
         unew[k] = du;
         s[0] += du * du;
         ws[0] += wt[k] * du * du;
@@ -528,9 +548,11 @@ static int relax_once(adh_relax *w)
     adh_state *st = w->st;
     size_t n = st->n;
     double scale = -2.0 / w->m.E;
-    adh_kernel_apply(w->k, st->p, w->unew, w->scratch);
+    if (!w->kp_fresh)
+        adh_kernel_apply(w->k, st->p, w->kp, w->scratch);
+    w->kp_fresh = 1;
     double ssq, wssq;
-    change_sums(w->unew, st->u, w->ring_w, n, scale, &ssq, &wssq);
+    change_sums(w->unew, w->kp, st->u, w->ring_w, n, scale, &ssq, &wssq);
     if (w->nfar)
         wssq += far_change(w, scale);
     if (!isfinite(ssq)) {

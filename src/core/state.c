@@ -36,6 +36,13 @@ void adh_state_copy(adh_state *dst, const adh_state *src)
     memcpy(dst->u, src->u, 3 * src->n * sizeof(double));
 }
 
+void adh_state_swap_profiles(adh_state *a, adh_state *b)
+{
+    double *u = a->u, *h = a->h, *p = a->p;
+    a->u = b->u, a->h = b->h, a->p = b->p;
+    b->u = u, b->h = h, b->p = p;
+}
+
 adh_state *adh_state_clone(const adh_state *s)
 {
     adh_state *c = adh_state_alloc(s->n);
