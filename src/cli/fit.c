@@ -170,11 +170,7 @@ static int settings(fit_run *fr, char *why, size_t whylen)
     const cli_options *cli = fr->cli;
     const adh_config *cfg = &cli->cfg;
     fr->fs = adh_fit_settings_default();
-    const char *model = cli->fit.model;
-    if (*model && strcmp(model, "static") != 0 && strcmp(model, "relax") != 0 && strcmp(model, "time") != 0) {
-        snprintf(why, whylen, "--model: '%s' is not a model: use static, relax or time", model);
-        return -1;
-    }
+    const char *model = cli->fit.model;   /* one of the three words: the line's parse refused any other */
     adh_fit_model_kind kind = strcmp(model, "relax") == 0 ? ADH_FIT_MODEL_RELAX
                             : strcmp(model, "time") == 0 ? ADH_FIT_MODEL_TIME : ADH_FIT_MODEL_STATIC;
     /* the physical-time model is the solid's, and only the solid's: an
