@@ -115,6 +115,12 @@ static int fit_ignored(const cli_options *cli, adh_fit_model_kind kind, char *wh
             snprintf(why, whylen, "adhere fit --model=time integrates in physical time to the integrator's "
                      "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out",
                      f->value);
+        else if (strcmp(f->key, "solver.time_tol") == 0 && kind == ADH_FIT_MODEL_TIME &&
+                 cli->cfg.spec.time.tol > ADH_FIT_MODEL_TIME_TOL)   /* eval_time's fmin: a looser one was dropped */
+            snprintf(why, whylen, "adhere fit --model=time integrates its model to a tolerance of %g or tighter "
+                     "(its 1 %% differences must stand above the model's own noise): --time-tol=%.40s would be "
+                     "ignored; leave it out, or give one of %g or less", ADH_FIT_MODEL_TIME_TOL, f->value,
+                     ADH_FIT_MODEL_TIME_TOL);
         else if (strcmp(f->key, "solver.eps") == 0 && !relax)
             snprintf(why, whylen, "adhere fit's static model solves each point of the static curve to its own "
                      "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out, "
