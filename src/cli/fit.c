@@ -115,6 +115,12 @@ static int fit_ignored(const cli_options *cli, adh_fit_model_kind kind, char *wh
             snprintf(why, whylen, "adhere fit --model=time integrates in physical time to the integrator's "
                      "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out",
                      f->value);
+        else if (strcmp(f->key, "solver.time_tol") == 0 && kind == ADH_FIT_MODEL_TIME &&
+                 cli->cfg.spec.time.tol > ADH_FIT_MODEL_TIME_TOL)   /* eval_time's fmin: a looser one was dropped */
+            snprintf(why, whylen, "adhere fit --model=time integrates its model to a tolerance of %g or tighter "
+                     "(its 1 %% differences must stand above the model's own noise): --time-tol=%.40s would be "
+                     "ignored; leave it out, or give one of %g or less", ADH_FIT_MODEL_TIME_TOL, f->value,
+                     ADH_FIT_MODEL_TIME_TOL);
         else if (strcmp(f->key, "solver.eps") == 0 && !relax)
             snprintf(why, whylen, "adhere fit's static model solves each point of the static curve to its own "
                      "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out, "
@@ -170,11 +176,7 @@ static int settings(fit_run *fr, char *why, size_t whylen)
     const cli_options *cli = fr->cli;
     const adh_config *cfg = &cli->cfg;
     fr->fs = adh_fit_settings_default();
-    const char *model = cli->fit.model;
-    if (*model && strcmp(model, "static") != 0 && strcmp(model, "relax") != 0 && strcmp(model, "time") != 0) {
-        snprintf(why, whylen, "--model: '%s' is not a model: use static, relax or time", model);
-        return -1;
-    }
+    const char *model = cli->fit.model;   /* one of the three words: the line's parse refused any other */
     adh_fit_model_kind kind = strcmp(model, "relax") == 0 ? ADH_FIT_MODEL_RELAX
                             : strcmp(model, "time") == 0 ? ADH_FIT_MODEL_TIME : ADH_FIT_MODEL_STATIC;
     /* the physical-time model is the solid's, and only the solid's: an

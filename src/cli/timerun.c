@@ -34,19 +34,18 @@ static void time_mark(int sls, const adh_visco_settings *s, const adh_visco_resu
         return;
     run->unconverged = 1;
     run->fix |= sls ? ADH_FIX_TIME_TOL : 0;
-    if (!sls)   /* no tolerance of time to tighten: the static curve's */
-        snprintf(run->why, sizeof run->why, "the energy balance is open by %.2g %% of the hysteresis (over %g %%: "
-                 "hysteresis - dissipated - jump_loss - stored_change): the integration did not converge, its numbers "
-                 "are not to its tolerance", 100 * fabs(open), 100 * ADH_VISCO_BALANCE_MAX);
-    else if (loose)
+    if (loose) {
         snprintf(run->why, sizeof run->why, "the time tolerance %g is looser than %g, up to which halving it moves "
                  "the pull-off, the jumps and the hysteresis by under 0.5 %%: these numbers are not promised to 0.5 %%",
                  s->tol, ADH_VISCO_TOL_DEFAULT);
-    else
+    } else {
         snprintf(run->why, sizeof run->why, "the energy balance is open by %.2g %% of the hysteresis (over %g %%: "
                  "hysteresis - dissipated - jump_loss - stored_change): the integration did not converge, its numbers "
-                 "are not to its tolerance, %g; where the residual is the integration's error, falling with the "
-                 "tolerance, a tighter one closes it", 100 * fabs(open), 100 * ADH_VISCO_BALANCE_MAX, s->tol);
+                 "are not to its tolerance", 100 * fabs(open), 100 * ADH_VISCO_BALANCE_MAX);
+        if (sls)   /* an elastic path has no tolerance of time to tighten: the static curve's */
+            adh_text_catf(run->why, sizeof run->why, ", %g; where the residual is the integration's error, falling "
+                          "with the tolerance, a tighter one closes it", s->tol);
+    }
     if (loose && unclosed)
         adh_text_catf(run->why, sizeof run->why, "; the energy balance is open by %.2g %% of the hysteresis (over %g %%)",
                       100 * fabs(open), 100 * ADH_VISCO_BALANCE_MAX);

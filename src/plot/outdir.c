@@ -1565,13 +1565,19 @@ int adh_outdir_temp(const char *name, char *buf, size_t len, char *why, size_t w
 
 /* path's directory part into dir (PATH_MAX bytes; path is shorter):
  * its last component, or NULL when path names no file (too long, or
- * "", ".", ".." there: *e the errno to say). */
+ * "", ".", ".." there: *e the errno to say, EISDIR only where a directory
+ * stands: "nodir/" is no such directory, "afile/" not a directory). */
 static const char *outfile_dir(const char *path, char *dir, int *e)
 {
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
-    if (strlen(path) >= PATH_MAX - 16 || !*base || !strcmp(base, ".") || !strcmp(base, "..")) {
-        *e = strlen(path) >= PATH_MAX - 16 ? ENAMETOOLONG : EISDIR;
+    struct stat st;
+    if (strlen(path) >= PATH_MAX - 16) {
+        *e = ENAMETOOLONG;
+        return NULL;
+    }
+    if (!*base || !strcmp(base, ".") || !strcmp(base, "..")) {
+        *e = !*path ? ENOENT : stat(path, &st) != 0 ? errno : S_ISDIR(st.st_mode) ? EISDIR : ENOTDIR;
         return NULL;
     }
     /* shorter than path (checked above): copied, not printed, so that no

@@ -132,6 +132,22 @@ static double contact_branch(double a, double step)
     return a > 0 ? fmax(a / step, TIME_CONTACT_MIN_STEPS) : 0.0;
 }
 
+/* The tolerance: measured at the default, each model's error-held steps
+ * scaled by its integrator's own rule for the others. IDAS's steps, every
+ * one held by its error test, shorten as tol^(1/(q+1)) at its order q,
+ * 5 (IDAS's most, which visco_dae.c leaves): steps x (tol/5e-5)^(-1/6)
+ * (measured 1.25-1.30 times the steps a quarter of the tolerance, 4^(1/6)
+ * = 1.26: Einf = 100 E0, and 3 E0 through a spring). A Rothe step's
+ * length in contact is held by q's third-order error and the force's
+ * change, (tol)^(1/3) both (visco_rothe.c): the contact line's step x
+ * (tol/5e-5)^(1/3); the base's move caps (0.4 z0 out of contact, 0.17 z0
+ * in) do not follow tol (measured 1.38-1.44 times the steps a quarter of
+ * the tolerance, the contact line's part 4^(1/3) = 1.59 of them). */
+static double tol_ratio(const adh_visco_rule_settings *v)
+{
+    return v->s.tol / ADH_VISCO_TOL_DEFAULT;
+}
+
 /* The Rothe steps (visco_rothe.c), measured on the same two spheres at
  * Einf/E0 = 1.5, 3 and 10, 1 nm/s ... 1 mm/s, and R = 1 um
  * (docs/viscoelastic.md: planned 0.73-1.23 of the steps run): a
@@ -156,22 +172,6 @@ static double contact_branch(double a, double step)
  * scale (its Newton and GMRES iterations: 9 GMRES a step at 10 E0 and
  * 1 nm/s, 38 at 1.5 E0 and 1 mm/s, where the line moves 0.55 of it a step):
  * 1 + ROTHE_WORK_PER_EDGE times that move, on IDAS's step price. */
-/* The tolerance: measured at the default, each model's error-held steps
- * scaled by its integrator's own rule for the others. IDAS's steps, every
- * one held by its error test, shorten as tol^(1/(q+1)) at its order q,
- * 5 (IDAS's most, which visco_dae.c leaves): steps x (tol/5e-5)^(-1/6)
- * (measured 1.25-1.30 times the steps a quarter of the tolerance, 4^(1/6)
- * = 1.26: Einf = 100 E0, and 3 E0 through a spring). A Rothe step's
- * length in contact is held by q's third-order error and the force's
- * change, (tol)^(1/3) both (visco_rothe.c): the contact line's step x
- * (tol/5e-5)^(1/3); the base's move caps (0.4 z0 out of contact, 0.17 z0
- * in) do not follow tol (measured 1.38-1.44 times the steps a quarter of
- * the tolerance, the contact line's part 4^(1/3) = 1.59 of them). */
-static double tol_ratio(const adh_visco_rule_settings *v)
-{
-    return v->s.tol / ADH_VISCO_TOL_DEFAULT;
-}
-
 #define ROTHE_MOVE 0.4
 #define ROTHE_EDGE_PER_STEP 0.055
 #define ROTHE_DELAYED_REF 0.9

@@ -98,6 +98,9 @@ refused "--free names E0 twice (as E0 and E)" "--free: E0 (E) is named twice in 
     --model=time --free=E0,A,E $SLS $G
 refused "--eps with the physical-time model" "--model=time integrates in physical time.*--eps=1pm" \
     --model=time --eps=1pm $SLS $G
+# the model integrates at 1e-5 or tighter: a looser --time-tol was dropped in silence
+refused "a --time-tol looser than the model's" "--time-tol=1e-3 would be ignored; leave it out, or give one of 1e-05 or less" \
+    --model=time --time-tol=1e-3 $SLS $G
 refused "an iteration --dwell with the physical-time model" "--dwell=5 would be ignored" --model=time --dwell=5 $SLS $G
 refused "--turn with the physical-time model" "takes its turn from the data, at the deepest.*--turn=-2nm" \
     --model=time --turn=-2nm $SLS $G

@@ -69,6 +69,14 @@ refused "--screen writes the final screen of a --replay run" "$ADHERE" --screen=
 printf 'f\n' >"$TMP/f.keys"
 refused "^adhere: --screen=$TMP/nodir/s.txt: cannot write the screen there: No such file or directory$" \
     "$ADHERE" --replay="$TMP/f.keys" --screen="$TMP/nodir/s.txt" -N 100 --force
+# a --screen naming no file (a trailing /) is said for what stands there:
+# "nodir/" was called a directory
+refused "^adhere: --screen=$TMP/nodir/: cannot write the screen there: No such file or directory$" \
+    "$ADHERE" --replay="$TMP/f.keys" --screen="$TMP/nodir/" -N 100 --force
+refused "^adhere: --screen=$TMP/f.keys/: cannot write the screen there: Not a directory$" \
+    "$ADHERE" --replay="$TMP/f.keys" --screen="$TMP/f.keys/" -N 100 --force
+refused "^adhere: --screen=$TMP/: cannot write the screen there: it is a directory$" \
+    "$ADHERE" --replay="$TMP/f.keys" --screen="$TMP/" -N 100 --force
 # --size sets a replay's screen: without --replay it was dropped in silence
 refused "^adhere: --size sets the screen of a --replay run (a terminal keeps its own size): give --replay=FILE too" \
     "$ADHERE" --batch -q --size=100x32 -o "$TMP/size"
