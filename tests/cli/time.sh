@@ -242,6 +242,9 @@ check "the plan's steps follow the tolerance as the run's: half of it, $(tplan -
 # shellcheck disable=SC2086
 check "the plan says a run looser than the default will be marked, and says nothing at it" \
     sh -c "'$ADHERE' --plan $TOLS --time-tol=1e-3 | grep -q '^tolerance: 0.001, looser than the default 5e-05, .*: the run will be marked unconverged\$' && ! '$ADHERE' --plan $TOLS | grep -q '^tolerance:'"
+# a tolerance loose only in digits %g rounds away is named with them
+check "... and names one just over the default with the digits that make it looser (5.0000001e-05, not 5e-05)" \
+    sh -c "'$ADHERE' --plan $TOLS --time-tol=5.0000001e-5 | grep -q '^tolerance: 5.0000001e-05, looser than the default 5e-05, '"
 # turns.tsv's deepest turn is the same cycle as summary.tsv's: the same
 # number (turns.tsv took the area between the rows' branches, 0.28 % above
 # the base's work here, which the energy balance closes to 2e-4)
