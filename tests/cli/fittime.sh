@@ -105,4 +105,8 @@ refused "an iteration --dwell with the physical-time model" "--dwell=5 would be 
 refused "--turn with the physical-time model" "takes its turn from the data, at the deepest.*--turn=-2nm" \
     --model=time --turn=-2nm $SLS $G
 refused "Einf below E0" "below --E0=1GPa" --model=time $SLS --Einf=0.5GPa $G
+refused "an empty --model names the time model among the models" "--model: '' is not a model: use static, relax or time" \
+    --model= $SLS $G
+refused "an empty --free names the solid's parameters among them" "--free: '' names no parameter: .*E0, Einf and tau with --model=time" \
+    --model=time --free= $SLS $G
 done_testing
