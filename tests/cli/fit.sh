@@ -335,6 +335,10 @@ wait "$pid"
 rc=$?
 check "SIGINT after the first evaluation: exit 130 (phase came $came, exit $rc)" sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
 check "the report and fit.tsv say PARTIAL" sh -c "grep -q '^# PARTIAL' '$TMP/int.out' && grep -q '^# PARTIAL' '$TMP/int/fit.tsv'"
+# (interrupted before the first Jacobian: 'correlation: - (interrupted)'; after
+# it, the matrix; the signal's moment is not the test's to choose)
+check "... and the report prints no nan where it has no Jacobian ($(grep '^correlation' "$TMP/int.out"))" \
+    sh -c "grep -q '^correlation:' '$TMP/int.out' && ! grep -qw nan '$TMP/int.out'"
 # SIGTERM once the fit has ended, while gnuplot draws fit.png (a stand-in
 # that never answers says when it started): the handlers hold to the end,
 # so gnuplot's wait hears it; the tables stay whole, no temporary is left
