@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "adhere/status.h"
+#include "adhere/visco.h"
 #include "tui/actions.h"
 #include "tui/keysrc.h"
 #include "tui/plotpath.h"
@@ -363,8 +364,14 @@ static int run_done(tui *t)
         fmtq(r->hysteresis, ADH_Q_WORK, hy, sizeof hy);
         /* an elastic sphere walks its static curve: its rows are the
          * curve's points, no integrator steps */
-        say(t, 0, "cycle complete after %s (%zu %s, %zu jumps): pull-off %s, hysteresis %s", tt,
-            t->sim.curve.nrows, config(t)->spec.time.sls ? "steps" : "points", r->jumps, pl, hy);
+        /* marked as --batch marks the run: its numbers are not promised */
+        char loose[160] = "", tol[32];
+        if (config(t)->spec.time.sls && adh_visco_tol_loose(config(t)->spec.time.tol))
+            snprintf(loose, sizeof loose, "; unconverged: the time tolerance %s is looser than %g "
+                     "(:set solver.time_tol)", adh_visco_tol_text(config(t)->spec.time.tol, tol, sizeof tol),
+                     ADH_VISCO_TOL_DEFAULT);
+        say(t, 0, "cycle complete after %s (%zu %s, %zu jumps): pull-off %s, hysteresis %s%s", tt,
+            t->sim.curve.nrows, config(t)->spec.time.sls ? "steps" : "points", r->jumps, pl, hy, loose);
         return 1;
     }
     if (is_curve(t)) {
