@@ -1279,13 +1279,21 @@ int tui_main(const adh_config *cfg)
         tui_keysrc_free(&t.keys);
         return EXIT_BAD_INPUT;   /* no terminal to run on: a usage error */
     }
+    /* the screen runs one: say where the rest are, in every mode */
+    char swept[160] = "";
+    if (adh_sweep_runs(&cfg->sweep) > 1)
+        snprintf(swept, sizeof swept, " (this scene's sweep of %zu runs is for --batch; here one run, the values at "
+                 "the left)", adh_sweep_runs(&cfg->sweep));
     if (cfg->spec.mode == ADH_MODE_RIGID)
-        say(&t, 0, "The screen relaxes step by step as the paper does; --mode=rigid is for --batch. ? lists every key.");
+        say(&t, 0, "The screen relaxes step by step as the paper does; --mode=rigid is for --batch%s. ? lists every "
+            "key.", swept);
     else if (cfg->spec.mode == ADH_MODE_STATIC)
-        say(&t, 0, "Static equilibrium: f solves the curve point by point, r follows it to the end, ? lists every key.");
+        say(&t, 0, "Static equilibrium%s: f solves the curve point by point, r follows it to the end, ? lists every "
+            "key.", swept);
     else if (cfg->spec.mode == ADH_MODE_TIME)
-        say(&t, 0, "Physical time: f takes the next step in time, r runs the cycle, b walks back, ? lists every key.");
-    else if (adh_sweep_runs(&cfg->sweep) > 1)   /* the screen runs one: say where the rest are */
+        say(&t, 0, "Physical time%s: f takes the next step in time, r runs the cycle, b walks back, ? lists every "
+            "key.", swept);
+    else if (adh_sweep_runs(&cfg->sweep) > 1)
         say(&t, 0, "%s%sits sweep of %zu runs is for --batch; here one run, the values at the left. f steps in, "
             "r runs, ? lists every key.", cfg->output.title, cfg->output.title[0] ? ": " : "This scene: ",
             adh_sweep_runs(&cfg->sweep));
