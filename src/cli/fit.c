@@ -187,6 +187,14 @@ static int settings(fit_run *fr, char *why, size_t whylen)
                  "rate-independent, and --model=static fits it");
         return -1;
     }
+    /* the data hold positions, not times: a curve measured at 10 nm/s fitted
+     * at the default speed gave its E0 and tau for another curve */
+    if (kind == ADH_FIT_MODEL_TIME && adh_config_origin(cfg, "protocol.speed") == -2) {
+        snprintf(why, whylen, "--model=time runs its model at the speed the data were measured at, which --data does "
+                 "not hold: give --speed (the approach's and retraction's, --speed=M/S or M/S,M/S); the default "
+                 "would be taken for it in silence");
+        return -1;
+    }
     if (kind != ADH_FIT_MODEL_TIME && cfg->spec.time.sls) {
         snprintf(why, whylen, "--model=%s fits an elastic sphere, and the material is a standard linear solid "
                  "(material = sls): fit it with --model=time, or give --material=elastic", *model ? model : "static");

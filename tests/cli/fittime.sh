@@ -105,6 +105,9 @@ refused "an iteration --dwell with the physical-time model" "--dwell=5 would be 
 refused "--turn with the physical-time model" "takes its turn from the data, at the deepest.*--turn=-2nm" \
     --model=time --turn=-2nm $SLS $G
 refused "Einf below E0" "below --E0=1GPa" --model=time $SLS --Einf=0.5GPa $G
+refused "--model=time without the data's --speed (the default taken for it in silence)" \
+    "--model=time runs its model at the speed the data were measured at.*give --speed" \
+    --model=time --material=sls --E0=1.3GPa --Einf=2.5GPa --tau=0.7s $G
 refused "an empty --model names the time model among the models" "--model: '' is not a model: use static, relax or time" \
     --model= $SLS $G
 refused "an empty --free names the solid's parameters among them" "--free: '' names no parameter: .*E0, Einf and tau with --model=time" \
