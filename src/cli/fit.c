@@ -310,6 +310,27 @@ static int fit_once(fit_run *fr, adh_fit_result *res, adh_fit **out)
     return res->status;
 }
 
+/* The physical-time model runs one cycle from rest: an approach, then its
+ * retraction from a turn at the deepest point. A second cycle (its history
+ * the first's, its turn elsewhere) was compared with the first's branches
+ * in silence. 0, or -1 with FILE:LINE and why. */
+static int one_cycle(const adh_fitdata *fd, char *why, size_t whylen)
+{
+    int prev = 0, nseg = 0;
+    for (size_t i = 0; i < fd->d.n; i++) {
+        if (i && fd->seg[i] == fd->seg[i - 1])
+            continue;
+        if (++nseg > 2 || (nseg == 2 && !(prev > 0 && fd->dir[i] < 0))) {
+            snprintf(why, whylen, "%.1000s:%zu: --model=time runs one cycle from rest, an approach and then its "
+                     "retraction, turned at the deepest point: the data %s here (segment %d); give one cycle",
+                     fd->file[i]->path, fd->line[i], fd->dir[i] > 0 ? "approach again" : "retract again", nseg);
+            return -1;
+        }
+        prev = fd->dir[i];
+    }
+    return 0;
+}
+
 static int refuse(const char *why)
 {
     adh_say(why);
@@ -326,6 +347,10 @@ int cli_fit_main(cli_options *cli)
     if (adh_fitdata_make(cfg->output.measured, (size_t)__builtin_popcount(fr.fs.free), &fr.fs.start, fr.fs.offset,
                          fr.fs.baseline, &fr.fd, why, sizeof why) != 0)
         return refuse(why);
+    if (fr.fs.model.kind == ADH_FIT_MODEL_TIME && one_cycle(&fr.fd, why, sizeof why) != 0) {
+        adh_fitdata_free(&fr.fd);
+        return refuse(why);
+    }
     if (configure(&fr, why, sizeof why) != 0 || build(&fr, why, sizeof why) != 0) {
         adh_fitdata_free(&fr.fd);
         release(&fr);

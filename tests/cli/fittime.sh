@@ -108,6 +108,11 @@ refused "Einf below E0" "below --E0=1GPa" --model=time $SLS --Einf=0.5GPa $G
 refused "--model=time without the data's --speed (the default taken for it in silence)" \
     "--model=time runs its model at the speed the data were measured at.*give --speed" \
     --model=time --material=sls --E0=1.3GPa --Einf=2.5GPa --tau=0.7s $G
+# a second cycle (the same curve measured again, its forces moved by 1 pN)
+awk -F'\t' 'NR == 1 {print; next} {printf "%s\t%.6f\n", $1, $2 + 0.001}' "$TMP/curve.tsv" >"$TMP/again.tsv"
+refused "a second cycle with the physical-time model (compared with the first's branches in silence)" \
+    "again.tsv:2: --model=time runs one cycle from rest.*approach again here (segment 3); give one cycle" \
+    --model=time --data="$TMP/again.tsv" $SLS $G
 refused "an empty --model names the time model among the models" "--model: '' is not a model: use static, relax or time" \
     --model= $SLS $G
 refused "an empty --free names the solid's parameters among them" "--free: '' names no parameter: .*E0, Einf and tau with --model=time" \
