@@ -70,6 +70,7 @@ bad "'2GPa' is a pressure" --material=sls --tau=2GPa
 bad "'sticky' is not a material: use elastic or sls" --material=sticky
 bad "--Einf is a standard linear solid's: --material=elastic cannot use it" --Einf=3GPa
 bad "--tau is a standard linear solid's" --mode=time --tau=1ms
+bad "^adhere: --speed: '1nm/s,2nm/s,3nm/s' has more than 2 values: give at most 2, separated by commas$" --material=sls --speed=1nm/s,2nm/s,3nm/s
 # the time integration's tolerance: a plain number, the core's range, named as typed; a solid's
 bad "^adhere: --time-tol=0.02 is not allowed: it must be from 1e-10 to 1e-2 (relative)$" --material=sls --time-tol=0.02
 bad "^adhere: --time-tol=1e-11 is not allowed: it must be from 1e-10 to 1e-2" --material=sls --time-tol=1e-11
