@@ -347,6 +347,9 @@ static int write_scene(FILE *f, const void *ctx)
         /* as the model started it (adh_fit_model_start) */
         fprintf(f, "start = %.10gm\n", fmax(r->res->start, adh_protocol_auto_start(m, cfg->spec.proto.step)));
         write_scene_drive(f, r);
+        /* the tolerance the model was fitted at (eval_time's), which a
+         * rerun at the default 5e-5 left for another model */
+        fprintf(f, "\n[solver]\ntime_tol = %.10g\n", fmin(r->fs->model.visco.s.tol, ADH_FIT_MODEL_TIME_TOL));
     }
     return 0;
 }

@@ -72,8 +72,8 @@ dmax=$(paste "$TMP/rerun.tsv" "$TMP/model.tsv" | awk -F'\t' '$1 != $3 {bad = 1} 
     END {print bad ? "positions differ" : m}')
 check "adhere --batch OUT/best.scene reruns the best model: its force within 0.2 nN of the fit's at every point (exit $rc, largest difference $dmax nN)" \
     sh -c "[ $rc -eq 0 ] && [ \$(wc -l <'$TMP/rerun.tsv') -eq $n ] && awk -v d='$dmax' 'BEGIN {exit !(d + 0 == d && d < 0.2)}'"
-check "best.scene holds the solid and the drive (mode time, material sls, speed)" \
-    sh -c "grep -qx 'mode = time' '$TMP/fit/best.scene' && grep -qx 'material = sls' '$TMP/fit/best.scene' && grep -q '^speed = 1e-09m/s, 1e-09m/s' '$TMP/fit/best.scene'"
+check "best.scene holds the solid, the drive and the model's tolerance (mode time, material sls, speed, time_tol 1e-5)" \
+    sh -c "grep -qx 'mode = time' '$TMP/fit/best.scene' && grep -qx 'material = sls' '$TMP/fit/best.scene' && grep -q '^speed = 1e-09m/s, 1e-09m/s' '$TMP/fit/best.scene' && grep -qx 'time_tol = 1e-05' '$TMP/fit/best.scene'"
 
 # the refusals: exit 2, the value named as typed, nothing written
 refused() { # refused WHAT PATTERN ARGS...: exit 2, stderr matching PATTERN, no output directory
