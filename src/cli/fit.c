@@ -187,6 +187,14 @@ static int settings(fit_run *fr, char *why, size_t whylen)
                  "rate-independent, and --model=static fits it");
         return -1;
     }
+    /* the data hold positions, not times: a curve measured at 10 nm/s fitted
+     * at the default speed gave its E0 and tau for another curve */
+    if (kind == ADH_FIT_MODEL_TIME && adh_config_origin(cfg, "protocol.speed") == -2) {
+        snprintf(why, whylen, "--model=time runs its model at the speed the data were measured at, which --data does "
+                 "not hold: give --speed (the approach's and retraction's, --speed=M/S or M/S,M/S); the default "
+                 "would be taken for it in silence");
+        return -1;
+    }
     if (kind != ADH_FIT_MODEL_TIME && cfg->spec.time.sls) {
         snprintf(why, whylen, "--model=%s fits an elastic sphere, and the material is a standard linear solid "
                  "(material = sls): fit it with --model=time, or give --material=elastic", *model ? model : "static");
@@ -302,6 +310,27 @@ static int fit_once(fit_run *fr, adh_fit_result *res, adh_fit **out)
     return res->status;
 }
 
+/* The physical-time model runs one cycle from rest: an approach, then its
+ * retraction from a turn at the deepest point. A second cycle (its history
+ * the first's, its turn elsewhere) was compared with the first's branches
+ * in silence. 0, or -1 with FILE:LINE and why. */
+static int one_cycle(const adh_fitdata *fd, char *why, size_t whylen)
+{
+    int prev = 0, nseg = 0;
+    for (size_t i = 0; i < fd->d.n; i++) {
+        if (i && fd->seg[i] == fd->seg[i - 1])
+            continue;
+        if (++nseg > 2 || (nseg == 2 && !(prev > 0 && fd->dir[i] < 0))) {
+            snprintf(why, whylen, "%.1000s:%zu: --model=time runs one cycle from rest, an approach and then its "
+                     "retraction, turned at the deepest point: the data %s here (segment %d); give one cycle",
+                     fd->file[i]->path, fd->line[i], fd->dir[i] > 0 ? "approach again" : "retract again", nseg);
+            return -1;
+        }
+        prev = fd->dir[i];
+    }
+    return 0;
+}
+
 static int refuse(const char *why)
 {
     adh_say(why);
@@ -318,6 +347,10 @@ int cli_fit_main(cli_options *cli)
     if (adh_fitdata_make(cfg->output.measured, (size_t)__builtin_popcount(fr.fs.free), &fr.fs.start, fr.fs.offset,
                          fr.fs.baseline, &fr.fd, why, sizeof why) != 0)
         return refuse(why);
+    if (fr.fs.model.kind == ADH_FIT_MODEL_TIME && one_cycle(&fr.fd, why, sizeof why) != 0) {
+        adh_fitdata_free(&fr.fd);
+        return refuse(why);
+    }
     if (configure(&fr, why, sizeof why) != 0 || build(&fr, why, sizeof why) != 0) {
         adh_fitdata_free(&fr.fd);
         release(&fr);

@@ -176,6 +176,31 @@ static void print_warnings(FILE *out, const cli_fit_report *r)
                 "it): the model's numbers may be off by more than 1 %%\n", r->grid_edge_nodes);
 }
 
+/* None where the fit has no Jacobian at its best point (interrupted
+ * before one): a matrix of nan said nothing of why. */
+static void print_corr(FILE *out, const cli_fit_report *r)
+{
+    for (int i = 0; i < ADH_FIT_NPARAM; i++)
+        if (is_free(r, i) && !isfinite(r->res->corr[i][i])) {
+            fprintf(out, "correlation: -%s\n", r->partial ? " (interrupted)" : "");
+            return;
+        }
+    fprintf(out, "correlation:");
+    for (int j = 0; j < ADH_FIT_NPARAM; j++)
+        if (is_free(r, j))
+            fprintf(out, " %9s", pname(r, j));
+    fprintf(out, "\n");
+    for (int i = 0; i < ADH_FIT_NPARAM; i++) {
+        if (!is_free(r, i))
+            continue;
+        fprintf(out, "  %-9s  ", pname(r, i));
+        for (int j = 0; j < ADH_FIT_NPARAM; j++)
+            if (is_free(r, j))
+                fprintf(out, " %9.4f", r->res->corr[i][j]);
+        fprintf(out, "\n");
+    }
+}
+
 void cli_fit_print(FILE *out, const cli_fit_report *r)
 {
     const adh_fit_result *res = r->res;
@@ -196,20 +221,7 @@ void cli_fit_print(FILE *out, const cli_fit_report *r)
             r->grid_edge_nodes, r->grid_resolved ? "resolved" : "NOT resolved",
             r->refits ? ", chosen again at the optimum" : "");
     print_params(out, r);
-    fprintf(out, "correlation:");
-    for (int j = 0; j < ADH_FIT_NPARAM; j++)
-        if (is_free(r, j))
-            fprintf(out, " %9s", pname(r, j));
-    fprintf(out, "\n");
-    for (int i = 0; i < ADH_FIT_NPARAM; i++) {
-        if (!is_free(r, i))
-            continue;
-        fprintf(out, "  %-9s  ", pname(r, i));
-        for (int j = 0; j < ADH_FIT_NPARAM; j++)
-            if (is_free(r, j))
-                fprintf(out, " %9.4f", res->corr[i][j]);
-        fprintf(out, "\n");
-    }
+    print_corr(out, r);
     fprintf(out, "chi2 per point: %.4g N^2 (rms residual %.4g nN); the data's own scatter %.4g nN: chi2 per degree "
             "of freedom against it %.3g (about 1 when the model fits)\n", res->chi2 / (double)res->n, res->rms * 1e9,
             res->noise * 1e9, res->chi2_red);
@@ -335,6 +347,9 @@ static int write_scene(FILE *f, const void *ctx)
         /* as the model started it (adh_fit_model_start) */
         fprintf(f, "start = %.10gm\n", fmax(r->res->start, adh_protocol_auto_start(m, cfg->spec.proto.step)));
         write_scene_drive(f, r);
+        /* the tolerance the model was fitted at (eval_time's), which a
+         * rerun at the default 5e-5 left for another model */
+        fprintf(f, "\n[solver]\ntime_tol = %.10g\n", fmin(r->fs->model.visco.s.tol, ADH_FIT_MODEL_TIME_TOL));
     }
     return 0;
 }

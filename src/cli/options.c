@@ -275,8 +275,9 @@ static int apply_data_fit(cli_options *cli, const option_doc *o, const char *arg
         size_t len = o->opt.val == OPT_FREE ? sizeof cli->fit.free : sizeof cli->fit.model;
         if (!*arg) {   /* '' is the default's mark: given, it is refused, not taken for E,A or static */
             snprintf(why, n, o->opt.val == OPT_FREE ? "--free: '' names no parameter: use E, A, z0, R, offset and "
-                                                      "baseline, separated by commas"
-                                                    : "--model: '' is not a model: use static or relax");
+                                                      "baseline (and E0, Einf and tau with --model=time), separated by "
+                                                      "commas"
+                                                    : "--model: '' is not a model: use static, relax or time");
             return 2;
         }
         if (strlen(arg) >= len) {

@@ -28,6 +28,7 @@
 static void time_mark(int sls, const adh_visco_settings *s, const adh_visco_result *res, adh_run *run)
 {
     double open = adh_visco_balance_open(res);
+    char tol[32];
     int loose = sls && adh_visco_tol_loose(s->tol);
     int unclosed = res->steps > 0 && fabs(open) > ADH_VISCO_BALANCE_MAX;
     if (!loose && !unclosed)
@@ -35,9 +36,9 @@ static void time_mark(int sls, const adh_visco_settings *s, const adh_visco_resu
     run->unconverged = 1;
     run->fix |= sls ? ADH_FIX_TIME_TOL : 0;
     if (loose) {
-        snprintf(run->why, sizeof run->why, "the time tolerance %g is looser than %g, up to which halving it moves "
+        snprintf(run->why, sizeof run->why, "the time tolerance %s is looser than %g, up to which halving it moves "
                  "the pull-off, the jumps and the hysteresis by under 0.5 %%: these numbers are not promised to 0.5 %%",
-                 s->tol, ADH_VISCO_TOL_DEFAULT);
+                 adh_visco_tol_text(s->tol, tol, sizeof tol), ADH_VISCO_TOL_DEFAULT);
     } else {
         snprintf(run->why, sizeof run->why, "the energy balance is open by %.2g %% of the hysteresis (over %g %%: "
                  "hysteresis - dissipated - jump_loss - stored_change): the integration did not converge, its numbers "

@@ -171,7 +171,8 @@ static int parse_list(const char *text, adh_quantity q, int allow_none, double *
     char *save = NULL;
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         if (n == cap || n == sizeof vals / sizeof vals[0]) {
-            snprintf(why, whylen, "more than %zu values", cap);
+            snprintf(why, whylen, "'%.200s' has more than %zu values: give at most %zu, separated by commas", text, cap,
+                     cap);
             return -1;
         }
         if (adh_parse_quantity(t, q, &vals[n++], why, whylen) != 0)

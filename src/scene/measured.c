@@ -607,6 +607,10 @@ int adh_measured_load(const char *path, const char *columns, adh_measured *m, ch
         snprintf(why, whylen, "%s:%zu: read error: %s", path, lineno, strerror(errno));
         goto bad;
     }
+    if (m->n < 2 && !lineno) {   /* no line to name: "FILE:0:" named none */
+        snprintf(why, whylen, "%s: the file is empty: a measured curve needs at least 2 points", path);
+        goto bad;
+    }
     if (m->n < 2) {
         snprintf(why, whylen, "%s:%zu: %zu point%s: a measured curve needs at least 2", path, lineno, m->n,
                  m->n == 1 ? "" : "s");

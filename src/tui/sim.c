@@ -785,6 +785,15 @@ static size_t trimmed(const char **s, size_t n)
 static void as_typed(const char *msg, const char *value, const char *text, const char *unit, char *out, size_t len)
 {
     snprintf(out, len, "%s", msg);
+    char whole[600], *all;   /* a list quoted whole ("has more than 2 values") */
+    if (unit[0] && strchr(value, ',') && strlen(value) < 500 && (snprintf(whole, sizeof whole, "'%s'", value),
+                                                                 all = strstr(out, whole))) {
+        char rest[1024];
+        snprintf(rest, sizeof rest, "'%.200s' %s%s", text, unit, all + strlen(whole));
+        *all = '\0';
+        adh_text_cat(out, len, rest);
+        return;
+    }
     for (const char *v = value, *t = text; unit[0] && *v && *t;) {
         size_t nv = strcspn(v, ","), nt = strcspn(t, ",");
         const char *ts = t;

@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "adhere/status.h"
+#include "adhere/visco.h"
 #include "tui/actions.h"
 #include "tui/keysrc.h"
 #include "tui/plotpath.h"
@@ -363,8 +364,14 @@ static int run_done(tui *t)
         fmtq(r->hysteresis, ADH_Q_WORK, hy, sizeof hy);
         /* an elastic sphere walks its static curve: its rows are the
          * curve's points, no integrator steps */
-        say(t, 0, "cycle complete after %s (%zu %s, %zu jumps): pull-off %s, hysteresis %s", tt,
-            t->sim.curve.nrows, config(t)->spec.time.sls ? "steps" : "points", r->jumps, pl, hy);
+        /* marked as --batch marks the run: its numbers are not promised */
+        char loose[160] = "", tol[32];
+        if (config(t)->spec.time.sls && adh_visco_tol_loose(config(t)->spec.time.tol))
+            snprintf(loose, sizeof loose, "; unconverged: the time tolerance %s is looser than %g "
+                     "(:set solver.time_tol)", adh_visco_tol_text(config(t)->spec.time.tol, tol, sizeof tol),
+                     ADH_VISCO_TOL_DEFAULT);
+        say(t, 0, "cycle complete after %s (%zu %s, %zu jumps): pull-off %s, hysteresis %s%s", tt,
+            t->sim.curve.nrows, config(t)->spec.time.sls ? "steps" : "points", r->jumps, pl, hy, loose);
         return 1;
     }
     if (is_curve(t)) {
@@ -1272,13 +1279,21 @@ int tui_main(const adh_config *cfg)
         tui_keysrc_free(&t.keys);
         return EXIT_BAD_INPUT;   /* no terminal to run on: a usage error */
     }
+    /* the screen runs one: say where the rest are, in every mode */
+    char swept[160] = "";
+    if (adh_sweep_runs(&cfg->sweep) > 1)
+        snprintf(swept, sizeof swept, " (this scene's sweep of %zu runs is for --batch; here one run, the values at "
+                 "the left)", adh_sweep_runs(&cfg->sweep));
     if (cfg->spec.mode == ADH_MODE_RIGID)
-        say(&t, 0, "The screen relaxes step by step as the paper does; --mode=rigid is for --batch. ? lists every key.");
+        say(&t, 0, "The screen relaxes step by step as the paper does; --mode=rigid is for --batch%s. ? lists every "
+            "key.", swept);
     else if (cfg->spec.mode == ADH_MODE_STATIC)
-        say(&t, 0, "Static equilibrium: f solves the curve point by point, r follows it to the end, ? lists every key.");
+        say(&t, 0, "Static equilibrium%s: f solves the curve point by point, r follows it to the end, ? lists every "
+            "key.", swept);
     else if (cfg->spec.mode == ADH_MODE_TIME)
-        say(&t, 0, "Physical time: f takes the next step in time, r runs the cycle, b walks back, ? lists every key.");
-    else if (adh_sweep_runs(&cfg->sweep) > 1)   /* the screen runs one: say where the rest are */
+        say(&t, 0, "Physical time%s: f takes the next step in time, r runs the cycle, b walks back, ? lists every "
+            "key.", swept);
+    else if (adh_sweep_runs(&cfg->sweep) > 1)
         say(&t, 0, "%s%sits sweep of %zu runs is for --batch; here one run, the values at the left. f steps in, "
             "r runs, ? lists every key.", cfg->output.title, cfg->output.title[0] ? ": " : "This scene: ",
             adh_sweep_runs(&cfg->sweep));

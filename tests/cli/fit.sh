@@ -164,6 +164,12 @@ check "the same curve given twice: exit 2, both names, nothing written ($(cat "$
 rc=$?
 check "a copy of the curve: exit 2, both names, nothing written ($(cat "$TMP/e7"))" \
     sh -c "[ $rc -eq 2 ] && grep -q '^adhere: --data: $TMP/copy.tsv holds the same 200 points as $DATA (a copy?)' '$TMP/e7' && [ ! -e '$TMP/twiceout' ]"
+# an empty file (a failed export): named without a line ('FILE:0:' named none)
+: >"$TMP/empty.tsv"
+"$ADHERE" fit --data="$TMP/empty.tsv" -o "$TMP/emptyout" fig1 >/dev/null 2>"$TMP/e8"
+rc=$?
+check "an empty --data file: exit 2, the file named as empty, no line 0, nothing written ($(cat "$TMP/e8"))" \
+    sh -c "[ $rc -eq 2 ] && grep -qx 'adhere: $TMP/empty.tsv: the file is empty: a measured curve needs at least 2 points' '$TMP/e8' && [ ! -e '$TMP/emptyout' ]"
 # a curve written with decimal commas (a spreadsheet's export in a
 # comma-decimal locale), blank-, tab- or semicolon-separated, with a header
 # or without: refused as before, now saying it looks like a decimal comma
@@ -335,6 +341,10 @@ wait "$pid"
 rc=$?
 check "SIGINT after the first evaluation: exit 130 (phase came $came, exit $rc)" sh -c "[ $came -eq 1 ] && [ $rc -eq 130 ]"
 check "the report and fit.tsv say PARTIAL" sh -c "grep -q '^# PARTIAL' '$TMP/int.out' && grep -q '^# PARTIAL' '$TMP/int/fit.tsv'"
+# (interrupted before the first Jacobian: 'correlation: - (interrupted)'; after
+# it, the matrix; the signal's moment is not the test's to choose)
+check "... and the report prints no nan where it has no Jacobian ($(grep '^correlation' "$TMP/int.out"))" \
+    sh -c "grep -q '^correlation:' '$TMP/int.out' && ! grep -qw nan '$TMP/int.out'"
 # SIGTERM once the fit has ended, while gnuplot draws fit.png (a stand-in
 # that never answers says when it started): the handlers hold to the end,
 # so gnuplot's wait hears it; the tables stay whole, no temporary is left

@@ -72,8 +72,8 @@ dmax=$(paste "$TMP/rerun.tsv" "$TMP/model.tsv" | awk -F'\t' '$1 != $3 {bad = 1} 
     END {print bad ? "positions differ" : m}')
 check "adhere --batch OUT/best.scene reruns the best model: its force within 0.2 nN of the fit's at every point (exit $rc, largest difference $dmax nN)" \
     sh -c "[ $rc -eq 0 ] && [ \$(wc -l <'$TMP/rerun.tsv') -eq $n ] && awk -v d='$dmax' 'BEGIN {exit !(d + 0 == d && d < 0.2)}'"
-check "best.scene holds the solid and the drive (mode time, material sls, speed)" \
-    sh -c "grep -qx 'mode = time' '$TMP/fit/best.scene' && grep -qx 'material = sls' '$TMP/fit/best.scene' && grep -q '^speed = 1e-09m/s, 1e-09m/s' '$TMP/fit/best.scene'"
+check "best.scene holds the solid, the drive and the model's tolerance (mode time, material sls, speed, time_tol 1e-5)" \
+    sh -c "grep -qx 'mode = time' '$TMP/fit/best.scene' && grep -qx 'material = sls' '$TMP/fit/best.scene' && grep -q '^speed = 1e-09m/s, 1e-09m/s' '$TMP/fit/best.scene' && grep -qx 'time_tol = 1e-05' '$TMP/fit/best.scene'"
 
 # the refusals: exit 2, the value named as typed, nothing written
 refused() { # refused WHAT PATTERN ARGS...: exit 2, stderr matching PATTERN, no output directory
@@ -105,4 +105,16 @@ refused "an iteration --dwell with the physical-time model" "--dwell=5 would be 
 refused "--turn with the physical-time model" "takes its turn from the data, at the deepest.*--turn=-2nm" \
     --model=time --turn=-2nm $SLS $G
 refused "Einf below E0" "below --E0=1GPa" --model=time $SLS --Einf=0.5GPa $G
+refused "--model=time without the data's --speed (the default taken for it in silence)" \
+    "--model=time runs its model at the speed the data were measured at.*give --speed" \
+    --model=time --material=sls --E0=1.3GPa --Einf=2.5GPa --tau=0.7s $G
+# a second cycle (the same curve measured again, its forces moved by 1 pN)
+awk -F'\t' 'NR == 1 {print; next} {printf "%s\t%.6f\n", $1, $2 + 0.001}' "$TMP/curve.tsv" >"$TMP/again.tsv"
+refused "a second cycle with the physical-time model (compared with the first's branches in silence)" \
+    "again.tsv:2: --model=time runs one cycle from rest.*approach again here (segment 3); give one cycle" \
+    --model=time --data="$TMP/again.tsv" $SLS $G
+refused "an empty --model names the time model among the models" "--model: '' is not a model: use static, relax or time" \
+    --model= $SLS $G
+refused "an empty --free names the solid's parameters among them" "--free: '' names no parameter: .*E0, Einf and tau with --model=time" \
+    --model=time --free= $SLS $G
 done_testing

@@ -70,6 +70,7 @@ bad "'2GPa' is a pressure" --material=sls --tau=2GPa
 bad "'sticky' is not a material: use elastic or sls" --material=sticky
 bad "--Einf is a standard linear solid's: --material=elastic cannot use it" --Einf=3GPa
 bad "--tau is a standard linear solid's" --mode=time --tau=1ms
+bad "^adhere: --speed: '1nm/s,2nm/s,3nm/s' has more than 2 values: give at most 2, separated by commas$" --material=sls --speed=1nm/s,2nm/s,3nm/s
 # the time integration's tolerance: a plain number, the core's range, named as typed; a solid's
 bad "^adhere: --time-tol=0.02 is not allowed: it must be from 1e-10 to 1e-2 (relative)$" --material=sls --time-tol=0.02
 bad "^adhere: --time-tol=1e-11 is not allowed: it must be from 1e-10 to 1e-2" --material=sls --time-tol=1e-11
@@ -242,6 +243,9 @@ check "the plan's steps follow the tolerance as the run's: half of it, $(tplan -
 # shellcheck disable=SC2086
 check "the plan says a run looser than the default will be marked, and says nothing at it" \
     sh -c "'$ADHERE' --plan $TOLS --time-tol=1e-3 | grep -q '^tolerance: 0.001, looser than the default 5e-05, .*: the run will be marked unconverged\$' && ! '$ADHERE' --plan $TOLS | grep -q '^tolerance:'"
+# a tolerance loose only in digits %g rounds away is named with them
+check "... and names one just over the default with the digits that make it looser (5.0000001e-05, not 5e-05)" \
+    sh -c "'$ADHERE' --plan $TOLS --time-tol=5.0000001e-5 | grep -q '^tolerance: 5.0000001e-05, looser than the default 5e-05, '"
 # turns.tsv's deepest turn is the same cycle as summary.tsv's: the same
 # number (turns.tsv took the area between the rows' branches, 0.28 % above
 # the base's work here, which the energy balance closes to 2e-4)

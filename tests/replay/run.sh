@@ -523,6 +523,19 @@ printf ':set speed 1,\n' >"$work/emptyel/v.keys"
 check "... and the speeds: '1,' ($(cat "$work/emptyel/v.err"))" \
     grep -qF "v.keys:1: speed: '1,' has an empty element" "$work/emptyel/v.err"
 
+# A cycle run at a time tolerance looser than the default is marked on the
+# screen as --batch marks it (it said 'cycle complete' and its numbers as
+# though promised); at the default it is not.
+mkdir -p "$work/loose"
+printf ':set solver.time_tol 1e-2\nr :wait\n' >"$work/loose/l.keys"
+printf 'r :wait\n' >"$work/loose/d.keys"
+for k in l d; do
+    (cd "$work/loose" && "$bin" --replay=$k.keys --screen=$k.screen --no-clock --material=sls --E0=1GPa --Einf=3GPa --tau=1s --mode=time -R 1um \
+        -N 150 --spacing=2nm --turn=-1nm --speed=1nm/s </dev/null >/dev/null 2>$k.err)
+done
+check "a cycle at a loose time tolerance says unconverged and why, one at the default does not ($(grep -h -A1 'cycle complete' "$work/loose/l.screen" | head -c 300))" \
+    sh -c "grep -q 'cycle complete' '$work/loose/l.screen' && grep -q 'unconverged: the time tolerance 0.01 is looser than 5e-05' '$work/loose/l.screen' && grep -q 'cycle complete' '$work/loose/d.screen' && ! grep -q unconverged '$work/loose/d.screen'"
+
 # A narrow screen cuts a line of the state at a clause, else before the
 # number whose unit would not fit: physical time's base line at 40 columns
 # said 'approaching at 1 µ' (the speed 1 µm/s cut in its unit).
