@@ -130,7 +130,10 @@ void cli_options_usage(FILE *out)
         else
             n = snprintf(lhs, sizeof lhs, "    ");
         snprintf(lhs + n, sizeof lhs - (size_t)n, "--%s%s%s", o->opt.name, o->arg ? "=" : "", o->arg ? o->arg : "");
-        fprintf(out, "  %-28s %s\n", lhs, o->help);
+        if (strlen(lhs) > 28)   /* too long for the column: the help on the next line, in the column */
+            fprintf(out, "  %s\n  %-28s %s\n", lhs, "", o->help);
+        else
+            fprintf(out, "  %-28s %s\n", lhs, o->help);
     }
     fprintf(out, "\nSCENE is a scene file or the name of a shipped one (default, fig1 ... fig8, visco,\n"
                  "visco-speed, afm).\n"
