@@ -397,8 +397,10 @@ int cli_fit_main(cli_options *cli)
         fr.fs.start = res.best;
         fr.fs.offset = res.value[ADH_FIT_OFFSET];
         fr.fs.baseline = res.value[ADH_FIT_BASELINE];
-        fr.fs.Einf = cfg->spec.time.Einf = res.value[ADH_FIT_EINF];
-        fr.fs.tau = cfg->spec.time.tau = res.value[ADH_FIT_TAU];
+        if (fr.fs.model.kind == ADH_FIT_MODEL_TIME) {   /* the solid's: an elastic fit's are its unused starts */
+            fr.fs.Einf = cfg->spec.time.Einf = res.value[ADH_FIT_EINF];
+            fr.fs.tau = cfg->spec.time.tau = res.value[ADH_FIT_TAU];
+        }
         if (adh_config_grid(cfg, why, sizeof why, NULL) != 0 || build(&fr, why, sizeof why) != 0)
             break;
         adh_fit_free(f);
