@@ -705,8 +705,9 @@ static int combinations(int argc, char **argv, const flags_seen *fs, char *why, 
 
 /* The files the session reads (adh_outdir_inputs), known once the line
  * is read: the one list that -o's clearing, --screen and the TUI's :dump
- * and :rows are checked against. A scene's output.data is a measured
- * curve too (cli_data_load adds it to the list of --data later). */
+ * and :rows are checked against. output.data is the first --data's
+ * path (adh_config's key has no scene word: a scene cannot name a curve),
+ * so it is --data's. */
 static void inputs(const cli_options *cli)
 {
     adh_outdir_input in[CLI_MAX_DATA + 4] = {
