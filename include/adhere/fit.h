@@ -108,7 +108,9 @@ typedef struct adh_fit_result {
     double corr[ADH_FIT_NPARAM][ADH_FIT_NPARAM];   /* correlations among the free ones */
     unsigned flags[ADH_FIT_NPARAM]; /* ADH_FIT_AT_LIMIT, ADH_FIT_UNDETERMINED */
     adh_material best;       /* the best material */
-    double start;            /* the physical-time model's start (adh_fit_model_start), m; NAN */
+    double start, turn;      /* the physical-time model's drive at the best point, as its evaluation
+                                runs it (adh_fit_model_drive): where it starts and turns, m; NAN
+                                for the other models */
     double contact_time;     /* the physical-time model's: the data's time in contact, s
                                 (positions in contact over the drive's speeds, and the
                                 dwell); NAN for the other models */

@@ -489,7 +489,8 @@ static void fill_result(adh_fit *f, adh_fit_result *res)
     res->best = (adh_material){ res->value[ADH_FIT_E], res->value[ADH_FIT_A], res->value[ADH_FIT_Z0],
                                 res->value[ADH_FIT_R] };
     res->chi2 = f->best_chi2;
-    res->start = adh_fit_model_start(f->fm);
+    adh_fit_model_drive(f->fm, &res->best, res->value[ADH_FIT_OFFSET], res->value[ADH_FIT_BASELINE], f->d,
+                        &res->start, &res->turn);
     res->contact_time = f->s.model.kind == ADH_FIT_MODEL_TIME ? contact_time(f) : NAN;
     res->rms = sqrt(f->best_chi2 / (double)f->d->n);
     res->noise = adh_fit_noise(f->d);
