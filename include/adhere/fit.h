@@ -111,6 +111,9 @@ typedef struct adh_fit_result {
     double start, turn;      /* the physical-time model's drive at the best point, as its evaluation
                                 runs it (adh_fit_model_drive): where it starts and turns, m; NAN
                                 for the other models */
+    double creep_rate;       /* the physical-time model's (1/E0 - 1/Einf)/tau at the best point,
+                                1/(Pa s): what a curve much shorter than tau determines
+                                (ADH_FIT_SLOW); NAN for the other models */
     double contact_time;     /* the physical-time model's: the data's time in contact, s
                                 (positions in contact over the drive's speeds, and the
                                 dwell); NAN for the other models */

@@ -129,8 +129,7 @@ static void print_params(FILE *out, const cli_fit_report *r)
             d.gamma * 1e3, d.sigma, d.F_jkr * 1e9);
     if (time_model(r))   /* what a curve much shorter than tau determines (ADH_FIT_SLOW) */
         fprintf(out, "derived: creep rate (1/E0 - 1/Einf)/tau = %.4g 1/(GPa s); the data %.4g s in contact\n",
-                1e9 * (1 / res->value[ADH_FIT_E] - 1 / res->value[ADH_FIT_EINF]) / res->value[ADH_FIT_TAU],
-                res->contact_time);
+                1e9 * res->creep_rate, res->contact_time);
 }
 
 static void print_warnings(FILE *out, const cli_fit_report *r)

@@ -491,6 +491,8 @@ static void fill_result(adh_fit *f, adh_fit_result *res)
     res->chi2 = f->best_chi2;
     adh_fit_model_drive(f->fm, &res->best, res->value[ADH_FIT_OFFSET], res->value[ADH_FIT_BASELINE], f->d,
                         &res->start, &res->turn);
+    res->creep_rate = f->s.model.kind == ADH_FIT_MODEL_TIME
+                    ? (1 / res->value[ADH_FIT_E] - 1 / res->value[ADH_FIT_EINF]) / res->value[ADH_FIT_TAU] : NAN;
     res->contact_time = f->s.model.kind == ADH_FIT_MODEL_TIME ? contact_time(f) : NAN;
     res->rms = sqrt(f->best_chi2 / (double)f->d->n);
     res->noise = adh_fit_noise(f->d);
