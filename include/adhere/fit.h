@@ -77,7 +77,8 @@ typedef struct adh_fit_progress {
 
 /* The physical-time model searches again from its best point, at most this
  * many times, until a search lowers chi2 by less than the data's noise^2
- * (adh_fit_run). */
+ * (adh_fit_run). The restarts are probes: each has its own max_iter, and
+ * one that runs out leaves a converged fit converged. */
 #define ADH_FIT_RESTARTS 3
 
 typedef struct adh_fit_settings {
@@ -86,7 +87,7 @@ typedef struct adh_fit_settings {
     double Einf, tau;              /* the physical-time model's start values (its E0 is start.E) */
     double offset, baseline;       /* start values, m and N */
     adh_fit_model_settings model;  /* which model, its solver settings */
-    size_t max_iter;               /* trust-region iterations (default 50) */
+    size_t max_iter;               /* trust-region iterations a search (default 50; each restart has its own) */
     double xtol;                   /* stop when a step changes every scaled parameter by less (1e-4) */
     double fd_step;                /* forward-difference step in log(p) (default 1e-2: the model's own noise, the lattice's, must stay small beside the change) */
     double range;                  /* a factor: E, A, z0, R are searched within start / range
@@ -128,8 +129,9 @@ typedef struct adh_fit_result {
     unsigned model_fix;      /* its ADH_FIX_* bits */
     size_t iterations;
     double seconds;
-    int gsl_info;            /* why it stopped: 1 small step (xtol), 2 small gradient, 3 no step
-                                lowers chi2, 4 the next step below ADH_FIT_STEP_SE */
+    int gsl_info;            /* why the search that found the best point stopped: 1 small step
+                                (xtol), 2 small gradient, 3 no step lowers chi2, 4 the next step
+                                below ADH_FIT_STEP_SE; 0 it ran out of iterations */
 } adh_fit_result;
 
 typedef struct adh_fit adh_fit;
