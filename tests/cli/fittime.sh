@@ -4,8 +4,9 @@
 # at E0 = 1 GPa, Einf = 3 GPa, tau = 1 s, A = 1e-19 J, driven at 1 nm/s to
 # -1 nm (R = 1 um on a coarse resolved grid, N = 150, 2 nm), read at every
 # 0.05 nm of the base's travel (the turn itself the deepest point) with
-# Gaussian noise of 0.66 nN (1 % of its pull-off) from awk's generator,
-# seeded: the truth is what the test chose. The fit starts from (1.3 E0,
+# Gaussian noise of 0.66 nN (1 % of its pull-off) from a seeded generator
+# written out in the awk script (drand48's, so the same numbers under any
+# awk: srand/rand were mawk's own): the truth is what the test chose. The fit starts from (1.3 E0,
 # 0.8 A, 2.5 GPa, 0.7 s). Then best.scene reruns the best model, and the
 # refusals.
 . "$(dirname "$0")/lib.sh"
@@ -17,12 +18,21 @@ check "the physical-time run that makes the curve ($rc: $(head -c 300 "$TMP/gen.
 # force.tsv's base (2) and F (4) by path (11), linear between the
 # integrator's rows, at every DX nm of the base from the start down to the
 # turn and back (from FROM nm, when given, not the start); SD nN of noise
-# (Box-Muller on awk's rand, seeded)
+# (Box-Muller on drand48's generator, seeded as srand48(SEED) seeds it:
+# X' = (a X + 11) mod 2^48, a = 1502 2^24 + 15525485, its products split
+# at 2^24 so that every one is an exact integer in a double)
 cat >"$TMP/sample.awk" <<'EOF'
-BEGIN {FS = "\t"; srand(seed); print "position (nm)\tF (nN)"}
+BEGIN {FS = "\t"; X = seed * 65536 + 13070; print "position (nm)\tF (nN)"}
 /^#/ || $1 == "t" {next}
 {p = $11 + 0; n[p]++; b[p, n[p]] = $2 * 1e9; f[p, n[p]] = $4 * 1e9}
-function gauss(  u, v) {u = rand(); v = rand(); return sqrt(-2 * log(1 - u)) * cos(6.283185307 * v)}
+function mod(x, m) {return x - m * int(x / m)}
+function urand(  lo) {
+    lo = mod(X, 16777216)
+    X = mod(15525485 * lo + 16777216 * mod(1502 * lo + 15525485 * (X - lo) / 16777216, 16777216) + 11,
+            281474976710656)
+    return X / 281474976710656
+}
+function gauss(  u, v) {u = urand(); v = urand(); return sqrt(-2 * log(1 - u)) * cos(6.283185307 * v)}
 function emit(p, x,   i, a, c) {
     for (i = 1; i < n[p]; i++) {
         a = b[p, i]; c = b[p, i + 1]
