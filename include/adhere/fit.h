@@ -53,10 +53,10 @@ enum {
 /* The physical-time model with E0 and tau free: over a contact much
  * shorter than tau the solid creeps as 1/Einf + (1/E0 - 1/Einf) t/tau, and
  * a curve determines Einf and the rate (1/E0 - 1/Einf)/tau, not E0 and tau
- * apart. Measured (docs/fitting.md) on curves 4.7 s in contact: tau 4 s
- * recovered within 1.3 standard errors; at 10 s chi2 is flat (within 3)
- * from (E0, tau) = (1.00 GPa, 10.1 s) to (1.17 GPa, 7.6 s), each reported
- * with errors of 1-2 %. Both are flagged when tau exceeds this many times
+ * apart. Measured (docs/fitting.md) on curves 3.9-4.7 s in contact: tau
+ * 4 s recovered within 0.4 to 1.3 standard errors; at 10 s chi2 is flat
+ * (within 3) from (E0, tau) = (1.00 GPa, 10.1 s) to (1.17 GPa, 7.6 s),
+ * each reported with errors of 1-2 %. Both are flagged when tau exceeds this many times
  * the data's time in contact. */
 #define ADH_FIT_SLOW_RATIO 1.0
 
