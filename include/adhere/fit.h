@@ -53,10 +53,10 @@ enum {
 /* The physical-time model with E0 and tau free: over a contact much
  * shorter than tau the solid creeps as 1/Einf + (1/E0 - 1/Einf) t/tau, and
  * a curve determines Einf and the rate (1/E0 - 1/Einf)/tau, not E0 and tau
- * apart. Measured (docs/fitting.md) on curves 4.7 s in contact: tau 4 s
- * recovered within 1.3 standard errors; at 10 s chi2 is flat (within 3)
- * from (E0, tau) = (1.00 GPa, 10.1 s) to (1.17 GPa, 7.6 s), each reported
- * with errors of 1-2 %. Both are flagged when tau exceeds this many times
+ * apart. Measured (docs/fitting.md) on curves 3.9-4.7 s in contact: tau
+ * 4 s recovered within 0.4 to 1.3 standard errors; at 10 s chi2 is flat
+ * (within 3) from (E0, tau) = (1.00 GPa, 10.1 s) to (1.17 GPa, 7.6 s),
+ * each reported with errors of 1-2 %. Both are flagged when tau exceeds this many times
  * the data's time in contact. */
 #define ADH_FIT_SLOW_RATIO 1.0
 
@@ -77,7 +77,8 @@ typedef struct adh_fit_progress {
 
 /* The physical-time model searches again from its best point, at most this
  * many times, until a search lowers chi2 by less than the data's noise^2
- * (adh_fit_run). */
+ * (adh_fit_run). The restarts are probes: each has its own max_iter, and
+ * one that runs out leaves a converged fit converged. */
 #define ADH_FIT_RESTARTS 3
 
 typedef struct adh_fit_settings {
@@ -86,7 +87,7 @@ typedef struct adh_fit_settings {
     double Einf, tau;              /* the physical-time model's start values (its E0 is start.E) */
     double offset, baseline;       /* start values, m and N */
     adh_fit_model_settings model;  /* which model, its solver settings */
-    size_t max_iter;               /* trust-region iterations (default 50) */
+    size_t max_iter;               /* trust-region iterations a search (default 50; each restart has its own) */
     double xtol;                   /* stop when a step changes every scaled parameter by less (1e-4) */
     double fd_step;                /* forward-difference step in log(p) (default 1e-2: the model's own noise, the lattice's, must stay small beside the change) */
     double range;                  /* a factor: E, A, z0, R are searched within start / range
@@ -108,7 +109,12 @@ typedef struct adh_fit_result {
     double corr[ADH_FIT_NPARAM][ADH_FIT_NPARAM];   /* correlations among the free ones */
     unsigned flags[ADH_FIT_NPARAM]; /* ADH_FIT_AT_LIMIT, ADH_FIT_UNDETERMINED */
     adh_material best;       /* the best material */
-    double start;            /* the physical-time model's start (adh_fit_model_start), m; NAN */
+    double start, turn;      /* the physical-time model's drive at the best point, as its evaluation
+                                runs it (adh_fit_model_drive): where it starts and turns, m; NAN
+                                for the other models */
+    double creep_rate;       /* the physical-time model's (1/E0 - 1/Einf)/tau at the best point,
+                                1/(Pa s): what a curve much shorter than tau determines
+                                (ADH_FIT_SLOW); NAN for the other models */
     double contact_time;     /* the physical-time model's: the data's time in contact, s
                                 (positions in contact over the drive's speeds, and the
                                 dwell); NAN for the other models */
@@ -123,8 +129,9 @@ typedef struct adh_fit_result {
     unsigned model_fix;      /* its ADH_FIX_* bits */
     size_t iterations;
     double seconds;
-    int gsl_info;            /* why it stopped: 1 small step (xtol), 2 small gradient, 3 no step
-                                lowers chi2, 4 the next step below ADH_FIT_STEP_SE */
+    int gsl_info;            /* why the search that found the best point stopped: 1 small step
+                                (xtol), 2 small gradient, 3 no step lowers chi2, 4 the next step
+                                below ADH_FIT_STEP_SE; 0 it ran out of iterations */
 } adh_fit_result;
 
 typedef struct adh_fit adh_fit;

@@ -102,11 +102,16 @@ int adh_fit_model_eval(adh_fit_model *fm, const adh_material *m, double offset, 
 int adh_fit_model_eval_sls(adh_fit_model *fm, const adh_material *m, const adh_sls *sls, double offset,
                            double baseline, const adh_fit_data *d, double *F, double *slope);
 
-/* The physical-time model's start, fixed at its first evaluation (the
- * automatic start there, or above the data's highest point): its
- * evaluations start there, or further out where a trial's own automatic
- * start is. NAN for the other models (each curve starts at its own). */
-double adh_fit_model_start(const adh_fit_model *fm);
+/* The physical-time model's drive for material m at offset and baseline,
+ * as its evaluation runs it: *start, m, fixed at the model's first
+ * evaluation (the automatic start there, or above the data's highest
+ * point), or further out where m's own automatic start is; *turn, m, the
+ * data's deepest position in the model's coordinates (the sphere's there
+ * under a spring: x - offset + (F - baseline) / k). 0; -1 with both NAN
+ * for the other models (each curve starts at its own) or before the first
+ * evaluation. */
+int adh_fit_model_drive(const adh_fit_model *fm, const adh_material *m, double offset, double baseline,
+                        const adh_fit_data *d, double *start, double *turn);
 
 /* Why the last evaluation failed, as a run's adh_run.why says it (what
  * stopped the curve, where), and in *fix (may be NULL) its ADH_FIX_* bits;

@@ -145,27 +145,33 @@ static void scene_ignored(const adh_config *cfg, adh_fit_model_kind kind, char *
         { "protocol.dwell", cfg->spec.proto.dwell != 0 },
         { "protocol.unload", !cfg->spec.proto.unload },   /* fig1's 'unload = no': the fit unloads */
         { "solver.eps", !relax },
+        /* eval_time's fmin: a looser one is the model's ADH_FIT_MODEL_TIME_TOL */
+        { "solver.time_tol", kind == ADH_FIT_MODEL_TIME && cfg->spec.time.tol > ADH_FIT_MODEL_TIME_TOL },
     };
     char list[200] = "";
     size_t n = 0, nkeys = sizeof keys / sizeof keys[0];
-    int eps = 0;
+    int eps = 0, tol = 0;
     for (size_t i = 0; i < nkeys; i++) {
         int from = adh_config_origin(cfg, keys[i].key);
         if (keys[i].ignored && (from == -1 || from > 0)) {
             n += (size_t)snprintf(list + n, sizeof list - n, "%s%s", n ? ", " : "", keys[i].key);
-            eps |= i == nkeys - 1;
+            eps |= strcmp(keys[i].key, "solver.eps") == 0;
+            tol |= strcmp(keys[i].key, "solver.time_tol") == 0;
         }
     }
     note[0] = '\0';
     if (!n)
         return;
-    char sentence[800];
+    char sentence[800], tail[160] = "";
+    if (tol)
+        snprintf(tail, sizeof tail, "; the model integrates to a tolerance of %g or tighter, for its 1 %% differences "
+                 "to stand above its own noise", ADH_FIT_MODEL_TIME_TOL);
     snprintf(sentence, sizeof sentence, "the fit ignores the scene's %s: its model's curve runs from where the force "
-             "is negligible, above the highest position in --data, to a turn %s%s%s (the "
+             "is negligible, above the highest position in --data, to a turn %s%s%s%s (the "
              "scene's own runs take them)", list, kind == ADH_FIT_MODEL_TIME ? "at the deepest" : "a step below the deepest",
              relax ? " and back at once" : "",
              !eps ? "" : kind == ADH_FIT_MODEL_TIME ? "; physical time integrates to its tolerance, with no relaxation for eps to end"
-             : "; the static curve solves each point to its own tolerance, with no relaxation for eps to end");
+             : "; the static curve solves each point to its own tolerance, with no relaxation for eps to end", tail);
     cli_options_words(cfg, sentence, note, len);
 }
 
@@ -397,8 +403,10 @@ int cli_fit_main(cli_options *cli)
         fr.fs.start = res.best;
         fr.fs.offset = res.value[ADH_FIT_OFFSET];
         fr.fs.baseline = res.value[ADH_FIT_BASELINE];
-        fr.fs.Einf = cfg->spec.time.Einf = res.value[ADH_FIT_EINF];
-        fr.fs.tau = cfg->spec.time.tau = res.value[ADH_FIT_TAU];
+        if (fr.fs.model.kind == ADH_FIT_MODEL_TIME) {   /* the solid's: an elastic fit's are its unused starts */
+            fr.fs.Einf = cfg->spec.time.Einf = res.value[ADH_FIT_EINF];
+            fr.fs.tau = cfg->spec.time.tau = res.value[ADH_FIT_TAU];
+        }
         if (adh_config_grid(cfg, why, sizeof why, NULL) != 0 || build(&fr, why, sizeof why) != 0)
             break;
         adh_fit_free(f);

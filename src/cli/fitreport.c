@@ -7,7 +7,6 @@
 #include "adhere/kernel.h"
 #include "adhere/models.h"
 #include "adhere/params.h"
-#include "adhere/protocol.h"
 #include "adhere/status.h"
 #include "adhere/units.h"
 #include "cli/tables.h"
@@ -130,8 +129,7 @@ static void print_params(FILE *out, const cli_fit_report *r)
             d.gamma * 1e3, d.sigma, d.F_jkr * 1e9);
     if (time_model(r))   /* what a curve much shorter than tau determines (ADH_FIT_SLOW) */
         fprintf(out, "derived: creep rate (1/E0 - 1/Einf)/tau = %.4g 1/(GPa s); the data %.4g s in contact\n",
-                1e9 * (1 / res->value[ADH_FIT_E] - 1 / res->value[ADH_FIT_EINF]) / res->value[ADH_FIT_TAU],
-                res->contact_time);
+                1e9 * res->creep_rate, res->contact_time);
 }
 
 static void print_warnings(FILE *out, const cli_fit_report *r)
@@ -167,10 +165,10 @@ static void print_warnings(FILE *out, const cli_fit_report *r)
                 "whole drive steps as the parameters change, so chi2 is piecewise and the Jacobian's differences "
                 "can span a jump (the values are good to about a step's worth)\n");
     if (time_model(r))
-        fprintf(out, "warning: with the physical-time model the standard errors are too small by about 1.5: its "
-                "force between the integrator's steps is interpolated, and chi2 is rough on the scale of a step "
-                "(measured over 12 synthetic curves: the errors over the standard errors had an rms of 1.1 to 1.6, "
-                "the largest 2.5)\n");
+        fprintf(out, "warning: with the physical-time model the standard errors are too small by about 1.5 to 2: "
+                "its force between the integrator's steps is interpolated, and chi2 is rough on the scale of a step "
+                "(measured over 24 synthetic curves: the errors over the standard errors had an rms of 1.5 to 1.8, "
+                "the largest 4.0)\n");
     if (!r->grid_resolved)
         fprintf(out, "warning: the grid does not resolve the contact's edge zone at the optimum (%.2f nodes across "
                 "it): the model's numbers may be off by more than 1 %%\n", r->grid_edge_nodes);
@@ -293,20 +291,6 @@ static int write_points_tsv(FILE *f, const void *ctx)
     return 0;
 }
 
-/* The physical-time model's turn at the best point: the data's deepest
- * position in the model's coordinates, the sphere's under a spring (as
- * adh_fit_model_eval_sls turns). */
-static double time_turn(const cli_fit_report *r)
-{
-    const adh_fit_data *d = &r->fd->d;
-    size_t deep = 0;
-    for (size_t i = 1; i < d->n; i++)
-        if (d->x[i] < d->x[deep])
-            deep = i;
-    double k = r->fs->model.visco.drive.spring, turn = d->x[deep] - r->res->value[ADH_FIT_OFFSET];
-    return isfinite(k) ? turn + (d->F[deep] - r->res->value[ADH_FIT_BASELINE]) / k : turn;
-}
-
 /* The physical-time model's drive (in [protocol]). */
 static void write_scene_drive(FILE *f, const cli_fit_report *r)
 {
@@ -342,10 +326,9 @@ static int write_scene(FILE *f, const void *ctx)
         fprintf(f, "\n[grid]\nnodes = %zu\nspacing = %.10gm\nkernel = %s\n", cfg->spec.grid.use.nodes, adh_config_spacing(&cfg->spec),
                 adh_kernel_name(cfg->spec.grid.use.kernel));
     fprintf(f, "\n[protocol]\nstep = %.10gm\nturns = %.10gm\n", cfg->spec.proto.step,
-            time_model(r) ? time_turn(r) : cfg->spec.proto.turns[0]);
-    if (time_model(r)) {   /* the drive the data were fitted at, from the fit's start */
-        /* as the model started it (adh_fit_model_start) */
-        fprintf(f, "start = %.10gm\n", fmax(r->res->start, adh_protocol_auto_start(m, cfg->spec.proto.step)));
+            time_model(r) ? r->res->turn : cfg->spec.proto.turns[0]);
+    if (time_model(r)) {   /* the drive the data were fitted at, from the model's start */
+        fprintf(f, "start = %.10gm\n", r->res->start);
         write_scene_drive(f, r);
         /* the tolerance the model was fitted at (eval_time's), which a
          * rerun at the default 5e-5 left for another model */

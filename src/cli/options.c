@@ -130,7 +130,10 @@ void cli_options_usage(FILE *out)
         else
             n = snprintf(lhs, sizeof lhs, "    ");
         snprintf(lhs + n, sizeof lhs - (size_t)n, "--%s%s%s", o->opt.name, o->arg ? "=" : "", o->arg ? o->arg : "");
-        fprintf(out, "  %-28s %s\n", lhs, o->help);
+        if (strlen(lhs) > 28)   /* too long for the column: the help on the next line, in the column */
+            fprintf(out, "  %s\n  %-28s %s\n", lhs, "", o->help);
+        else
+            fprintf(out, "  %-28s %s\n", lhs, o->help);
     }
     fprintf(out, "\nSCENE is a scene file or the name of a shipped one (default, fig1 ... fig8, visco,\n"
                  "visco-speed, afm).\n"
@@ -702,8 +705,9 @@ static int combinations(int argc, char **argv, const flags_seen *fs, char *why, 
 
 /* The files the session reads (adh_outdir_inputs), known once the line
  * is read: the one list that -o's clearing, --screen and the TUI's :dump
- * and :rows are checked against. A scene's output.data is a measured
- * curve too (cli_data_load adds it to the list of --data later). */
+ * and :rows are checked against. output.data is the first --data's
+ * path (adh_config's key has no scene word: a scene cannot name a curve),
+ * so it is --data's. */
 static void inputs(const cli_options *cli)
 {
     adh_outdir_input in[CLI_MAX_DATA + 4] = {

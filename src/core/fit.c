@@ -489,7 +489,10 @@ static void fill_result(adh_fit *f, adh_fit_result *res)
     res->best = (adh_material){ res->value[ADH_FIT_E], res->value[ADH_FIT_A], res->value[ADH_FIT_Z0],
                                 res->value[ADH_FIT_R] };
     res->chi2 = f->best_chi2;
-    res->start = adh_fit_model_start(f->fm);
+    adh_fit_model_drive(f->fm, &res->best, res->value[ADH_FIT_OFFSET], res->value[ADH_FIT_BASELINE], f->d,
+                        &res->start, &res->turn);
+    res->creep_rate = f->s.model.kind == ADH_FIT_MODEL_TIME
+                    ? (1 / res->value[ADH_FIT_E] - 1 / res->value[ADH_FIT_EINF]) / res->value[ADH_FIT_TAU] : NAN;
     res->contact_time = f->s.model.kind == ADH_FIT_MODEL_TIME ? contact_time(f) : NAN;
     res->rms = sqrt(f->best_chi2 / (double)f->d->n);
     res->noise = adh_fit_noise(f->d);
@@ -533,7 +536,7 @@ static void accept(adh_fit *f, gsl_multifit_nlinear_workspace *w, const gsl_vect
  * in *wout, or NULL when out of memory. */
 static int lm_search(adh_fit *f, const double *theta0, gsl_multifit_nlinear_workspace **wout, int *ginfo)
 {
-    size_t n = f->d->n, p = f->p;
+    size_t n = f->d->n, p = f->p, iters0 = f->iters;   /* each search its own max_iter */
     f->stop = f->converged = f->have_se = f->jac_whole = 0;
     f->cache_ok = 0;
     *ginfo = 0;
@@ -562,7 +565,7 @@ static int lm_search(adh_fit *f, const double *theta0, gsl_multifit_nlinear_work
     else
         accept(f, w, NULL);
     while (status == ADH_CONTINUE) {
-        if (f->iters == f->s.max_iter) {
+        if (f->iters - iters0 == f->s.max_iter) {
             status = ADH_EMAXITER;
             break;
         }
@@ -624,14 +627,22 @@ int adh_fit_run(adh_fit *f, adh_fit_result *res)
      * chi2 2.4 noise^2 above the optimum found from the truth, E0 3.2
      * standard errors off. A new search from the best point (a new trust
      * region, a new J) until one lowers chi2 by less than the noise^2 */
+    /* The restarts are probes of a converged fit: one that runs out of its
+     * iterations (or fails) leaves the fit converged at a point at least
+     * as good; the fit says why the search that found its best point
+     * stopped. Only an interrupt (or no memory) is the fit's. */
     double noise = adh_fit_noise(f->d);
     for (int again = 0; f->s.model.kind == ADH_FIT_MODEL_TIME && again < ADH_FIT_RESTARTS && status == ADH_SUCCESS &&
                         isfinite(noise); again++) {
         double before = f->best_chi2;
         memcpy(theta0, f->best_theta, sizeof theta0);
         gsl_multifit_nlinear_free(w);
-        status = lm_search(f, theta0, &w, &ginfo);
-        if (before - f->best_chi2 < noise * noise)
+        int info, st = lm_search(f, theta0, &w, &info);
+        if (f->best_chi2 < before)
+            ginfo = info;
+        if (st == ADH_EINTR || st == ADH_ENOMEM)
+            status = st;
+        if (st != ADH_SUCCESS || before - f->best_chi2 < noise * noise)
             break;
     }
     fill_result(f, res);

@@ -329,29 +329,19 @@ static int time_branch(adh_fit_model *fm, const adh_run *run, int path, size_t *
 static int eval_time(adh_fit_model *fm, const adh_material *m, const adh_sls *sls, double offset, double baseline,
                      const adh_fit_data *d)
 {
-    size_t deep = 0;
-    for (size_t i = 1; i < d->n; i++)
-        if (d->x[i] < d->x[deep])
-            deep = i;
     adh_visco_rule_settings vs = fm->s.visco;
     vs.sls = *sls;
     vs.sls.E0 = m->E;
     vs.s.tol = fmin(vs.s.tol, ADH_FIT_MODEL_TIME_TOL);
     adh_protocol_settings ps = adh_protocol_settings_default();
     ps.step = fm->s.step;
-    /* one start for every evaluation (the automatic one moves by whole
-     * steps with E and A, and with it the time the solid has relaxed
-     * before contact: a step in the residuals); a trial whose own is
-     * further out (its force not negligible there) starts from its own */
+    /* the start is fixed at the first evaluation (adh_fit_model_drive) */
     double lo, hi;
     data_range(d, offset, &lo, &hi);
     if (!fm->time_start)
         fm->time_start = fmax(adh_protocol_auto_start(m, ps.step), ps.step * ceil((hi + fm->s.margin) / ps.step));
-    ps.start = fmax(fm->time_start, adh_protocol_auto_start(m, ps.step));
     ps.nturns = 1;
-    ps.turns[0] = d->x[deep] - offset;
-    if (isfinite(vs.drive.spring))
-        ps.turns[0] += (d->F[deep] - baseline) / vs.drive.spring;
+    adh_fit_model_drive(fm, m, offset, baseline, d, &ps.start, &ps.turns[0]);
     adh_run run;
     adh_run_init(&run);
     int rc = adh_runner_rule(&adh_rule_visco, fm->g, fm->k, m, &vs, &ps, NULL, NULL, &run);
@@ -408,9 +398,24 @@ int adh_fit_model_eval_sls(adh_fit_model *fm, const adh_material *m, const adh_s
     return ADH_SUCCESS;
 }
 
-double adh_fit_model_start(const adh_fit_model *fm)
+int adh_fit_model_drive(const adh_fit_model *fm, const adh_material *m, double offset, double baseline,
+                        const adh_fit_data *d, double *start, double *turn)
 {
-    return fm->s.kind == ADH_FIT_MODEL_TIME && fm->time_start ? fm->time_start : NAN;
+    *start = *turn = NAN;
+    if (fm->s.kind != ADH_FIT_MODEL_TIME || !fm->time_start || d->n == 0)
+        return -1;
+    /* one start for every evaluation (the automatic one moves by whole
+     * steps with E and A, and with it the time the solid has relaxed
+     * before contact: a step in the residuals); a trial whose own is
+     * further out (its force not negligible there) starts from its own */
+    *start = fmax(fm->time_start, adh_protocol_auto_start(m, fm->s.step));
+    size_t deep = 0;
+    for (size_t i = 1; i < d->n; i++)
+        if (d->x[i] < d->x[deep])
+            deep = i;
+    double k = fm->s.visco.drive.spring;
+    *turn = d->x[deep] - offset + (isfinite(k) ? (d->F[deep] - baseline) / k : 0.0);
+    return 0;
 }
 
 const char *adh_fit_model_why(const adh_fit_model *fm, unsigned *fix)

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <ini.h>
 #include <limits.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,11 +26,15 @@ typedef struct scene_parse {
     size_t nkeyline, ncall;      /* how many; the handler's calls so far */
 } scene_parse;
 
-static int fail(scene_parse *sp, const char *fmt, const char *a, const char *b)
+__attribute__((format(printf, 2, 3))) static int fail(scene_parse *sp, const char *fmt, ...)
 {
     /* inih goes on after an error and reports the first line: keep its message. */
-    if (!sp->why[0])
-        snprintf(sp->why, sizeof sp->why, fmt, a, b);
+    if (!sp->why[0]) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(sp->why, sizeof sp->why, fmt, ap);
+        va_end(ap);
+    }
     return 0; /* inih: 0 = error at this line */
 }
 
@@ -85,7 +90,7 @@ static int swept_twice(scene_parse *sp, const char *section, const char *name)
             char msg[300];
             snprintf(msg, sizeof msg, "%s swept twice in [sweep], as '%s' and as '%s': give its values once", mine,
                      sp->seen[i] + 6, name);
-            fail(sp, "%s%s", msg, "");
+            fail(sp, "%s", msg);
             return -1;
         }
     return 0;
@@ -103,7 +108,7 @@ static int handler(void *user, const char *section, const char *name, const char
     int line = sp->ncall < sp->nkeyline ? sp->keyline[sp->ncall] : -1;
     sp->ncall++;
     if (!known_section(section))
-        return fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep%s", section, "");
+        return fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep", section);
     char full[64], msg[400];
     snprintf(full, sizeof full, "%s.%s", section, name);
     const adh_config_key *k = adh_config_key_find(full);
@@ -120,7 +125,7 @@ static int handler(void *user, const char *section, const char *name, const char
             return fail(sp, "unknown key '%s': did you mean '%s'? (see adhere-scene(5))", name, dot + 1);
         snprintf(msg, sizeof msg, "unknown key '%s' in [%s]: did you mean '%s' in [%s]? (see adhere-scene(5))", name,
                  section, dot + 1, sec);
-        return fail(sp, "%s%s", msg, "");
+        return fail(sp, "%s", msg);
     }
     for (size_t i = 0; i < sp->nseen; i++)
         if (strcmp(sp->seen[i], full) == 0)
@@ -139,7 +144,7 @@ static int handler(void *user, const char *section, const char *name, const char
         /* '#' comments a line only at its start: "E = 1GPa # stiff" read
          * 'GPa # stiff' as the unit */
         const char *hash = strstr(value, " #");
-        return fail(sp, hash ? "%s%s (a comment after a value starts with ' ;', not '#')" : "%s%s", words, "");
+        return fail(sp, "%s%s", words, hash ? " (a comment after a value starts with ' ;', not '#')" : "");
     }
     adh_config_note_given(c, full, value, sp->file);
     adh_config_note_origin(c, full, line);
@@ -192,7 +197,7 @@ static int control_byte(const char *buf, scene_parse *sp)
     else
         snprintf(msg, sizeof msg, "%sthe control character 0x%02x is not allowed: a scene is printable text (an escape "
                  "sequence would reach the terminal in a message)", key, (unsigned char)*p);
-    fail(sp, "%s%s", msg, "");
+    fail(sp, "%s", msg);
     return 1;
 }
 
@@ -209,7 +214,7 @@ static int prescan(const char *text, scene_parse *sp)
         if (*p == '\n')
             line++;
         else if (*p == '\r' && p[1] != '\n') {
-            fail(sp, "a carriage return without a line feed (old Mac line ends): save the file with Unix (LF) or DOS (CRLF) line ends%s%s", "", "");
+            fail(sp, "a carriage return without a line feed (old Mac line ends): save the file with Unix (LF) or DOS (CRLF) line ends");
             return line + 1;
         }
     }
@@ -229,10 +234,10 @@ static int prescan(const char *text, scene_parse *sp)
                 char msg[200];
                 snprintf(msg, sizeof msg, "the control character 0x%02x is not allowed: a scene is printable text (an "
                          "escape sequence would reach the terminal in a message)", (unsigned char)p[c]);
-                fail(sp, "%s%s", msg, "");
+                fail(sp, "%s", msg);
                 return line;
             }
-            fail(sp, "line longer than 198 characters%s%s", "", "");
+            fail(sp, "line longer than 198 characters");
             return line;
         }
         memcpy(buf, p, len);
@@ -252,13 +257,13 @@ static int prescan(const char *text, scene_parse *sp)
         if (!*t || *t == '#' || *t == ';')
             continue;
         if (indented) {
-            fail(sp, "indented line: write each key = value at the start of its own line%s%s", "", "");
+            fail(sp, "indented line: write each key = value at the start of its own line");
             return line;
         }
         if (*t == '[') {
             const char *close = strchr(t, ']');
             if (!close) {
-                fail(sp, "syntax error: section header without ']'%s%s", "", "");
+                fail(sp, "syntax error: section header without ']'");
                 return line;
             }
             char name[64];
@@ -266,7 +271,7 @@ static int prescan(const char *text, scene_parse *sp)
             memcpy(name, t + 1, nl);   /* a longer name is no known section either way */
             name[nl] = '\0';
             if (!known_section(name)) {
-                fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep%s", name, "");
+                fail(sp, "unknown section [%s]: sections are scene, material, grid, solver, protocol, output, sweep", name);
                 return line;
             }
             /* inih drops whatever follows the ']' on the line */
@@ -281,7 +286,7 @@ static int prescan(const char *text, scene_parse *sp)
             continue;
         }
         if (!in_section) {
-            fail(sp, "'%.200s' comes before any [section]%s", t, "");
+            fail(sp, "'%.200s' comes before any [section]", t);
             return line;
         }
         /* a line with no '=' or ':' inih refuses, with no call */

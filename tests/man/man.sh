@@ -24,6 +24,10 @@ printf '%s\n' "$opts" >"$TMP/hopts"
 while read -r o; do
     check "adhere.1 documents $o, which --help lists" grep -qxF -- "$o" "$TMP/hopts"
 done <"$TMP/mopts"
+# Every option's help starts in the one column (a flag too long for it
+# stands on a line of its own, its help below).
+"$ADHERE" --help | grep -E '^ +-' | grep -vE '^  .{28} [^ ]|^  (-[A-Za-z], |    )--[^ ]+$' >"$TMP/overflow"
+check "--help's option lines keep the help's column ($(wc -l <"$TMP/overflow") do not)" [ ! -s "$TMP/overflow" ]
 # A short option goes with the same long one in both: '-E, --modulus'.
 "$ADHERE" --help | sed -nE 's/^ +-([A-Za-z]), --([a-zA-Z0-9-]+).*/\1 \2/p' >"$TMP/short"
 check "--help lists short options ($(wc -l <"$TMP/short"))" [ "$(wc -l <"$TMP/short")" -ge 10 ]
