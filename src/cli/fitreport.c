@@ -355,8 +355,12 @@ static int write_png(const cli_fit_report *r, adh_outdir *dir, char *why, size_t
         cF[i] = r->cF[i] + r->res->value[ADH_FIT_BASELINE];
     }
     char title[512], msg[960];   /* with "fit.png: ", within the caller's 1024 */
-    snprintf(title, sizeof title, "adhere fit: %s = %.4g GPa, A = %.4g J (%s model)", pname(r, ADH_FIT_E),
-             r->res->best.E * 1e-9, r->res->best.A, model_word(r, 1));
+    char solid[96] = "";   /* the time model's fit is of the solid: its Einf and tau in the title too */
+    if (time_model(r))
+        snprintf(solid, sizeof solid, ", Einf = %.4g GPa, tau = %.4g s", r->res->value[ADH_FIT_EINF] * 1e-9,
+                 r->res->value[ADH_FIT_TAU]);
+    snprintf(title, sizeof title, "adhere fit: %s = %.4g GPa%s, A = %.4g J (%s model)", pname(r, ADH_FIT_E),
+             r->res->best.E * 1e-9, solid, r->res->best.A, model_word(r, 1));
     adh_fitplot p = { .n = n, .x = r->fd->x, .F = r->fd->F, .resid = r->resid, .dir = r->fd->dir, .ncurve = nc,
                       .cx = cx, .cF = cF, .stable = r->cstable, .title = title, .style = r->cfg->output.gnuplot_style };
     int rc = adh_fitplot_write(&p, dir, r->fs->cancel, msg, sizeof msg);
