@@ -54,13 +54,28 @@ static long find_jump(const adh_measured *m, const adh_measured_segment *s, char
         }
     }
     qsort(a, s->n - 1, sizeof *a, cmp_double);
-    double med = a[(s->n - 1) / 2];
+    double med = a[(s->n - 1) / 2], most = a[s->n - 2];
     free(a);
+    /* no step the jump's way over a median step of 0: a ratio would read
+     * "0 nN is inf times the median step" (a force column of zeros) */
+    if (!(bestd > 0) && !(med > 0)) {
+        char what[128];
+        if (most > 0)
+            snprintf(what, sizeof what, "its force never steps %s and the median step is 0", s->dir > 0 ? "down" : "up");
+        else
+            snprintf(what, sizeof what, "its force is %s at every point: the curve has no force steps",
+                     adh_qtext(m->F[s->first], ADH_Q_FORCE).s);
+        snprintf(why, whylen, "%s:%zu-%zu: no jump in this %s segment: %s; a fit needs a jump %s contact, a force "
+                 "step %s at least %g times the median step", m->path, m->line[s->first],
+                 m->line[s->first + s->n - 1], adh_measured_dir_name(s->dir), what, s->dir > 0 ? "into" : "out of",
+                 s->dir > 0 ? "down" : "up", ADH_FITDATA_JUMP_RATIO);
+        return -1;
+    }
     if (!(bestd > ADH_FITDATA_JUMP_RATIO * med)) {
         snprintf(why, whylen, "%s:%zu-%zu: no jump in this %s segment: its largest force step %s (%s) is %.2g "
                  "times the median step, not %g; a fit places the contact branch by the jump %s contact",
                  m->path, m->line[s->first], m->line[s->first + s->n - 1], adh_measured_dir_name(s->dir),
-                 s->dir > 0 ? "down" : "up", adh_qtext(bestd, ADH_Q_FORCE).s, med > 0 ? bestd / med : INFINITY, ADH_FITDATA_JUMP_RATIO,
+                 s->dir > 0 ? "down" : "up", adh_qtext(bestd, ADH_Q_FORCE).s, bestd / med, ADH_FITDATA_JUMP_RATIO,
                  s->dir > 0 ? "into" : "out of");
         return -1;
     }

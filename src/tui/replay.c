@@ -137,6 +137,19 @@ static int command(tui_replay_script *s, const line_words *lw, size_t first, int
         snprintf(err, errlen, "unknown command '%s'; the commands are %s", cmd, known_commands);
         return -1;
     }
+    /* NAME=VALUE (or NAME = VALUE) as a scene or a flag writes it, for
+     * every name: ":set solver.time_tol=1e-3" was refused for its count */
+    const char *eq = it.kind == TUI_REPLAY_SET && nargs == 1 ? strchr(arg[0], '=') : NULL;
+    const char *value = nargs > 1 ? arg[1] : NULL;
+    size_t namelen = nargs ? strlen(arg[0]) : 0;
+    if (eq && eq != arg[0] && eq[1]) {
+        namelen = (size_t)(eq - arg[0]);
+        value = eq + 1;
+        nargs = 2;
+    } else if (it.kind == TUI_REPLAY_SET && nargs == 3 && strcmp(arg[1], "=") == 0) {
+        value = arg[2];
+        nargs = 2;
+    }
     /* A command owns the rest of its line, so a value can never be taken
      * for keys: ":set E 1 GPa" is an error, not ":set E 1" then "GPa". */
     if (nargs != want) {
@@ -153,8 +166,8 @@ static int command(tui_replay_script *s, const line_words *lw, size_t first, int
         return -1;
     }
     if (it.kind == TUI_REPLAY_SET) {
-        it.name = strdup(arg[0]);
-        it.value = strdup(arg[1]);
+        it.name = strndup(arg[0], namelen);
+        it.value = strdup(value);
         if (!it.name || !it.value)
             goto nomem;
     } else if (it.kind == TUI_REPLAY_DUMP || it.kind == TUI_REPLAY_ROWS) {
@@ -164,7 +177,7 @@ static int command(tui_replay_script *s, const line_words *lw, size_t first, int
     }
     if (push(s, &it) != 0)
         goto nomem;
-    *used = want + 1;
+    *used = lw->n - first;
     return 0;
 nomem:
     free(it.name);

@@ -523,9 +523,34 @@ static void write_plots(tui *t)
         say(t, 1, "plots not written to %s/: %s", dir, msg);
 }
 
+/* val, a key's value as the configuration writes it (every number at
+ * %.17g), with each element of it that is a number in its shortest exact
+ * digits: ":set solver.time_tol 5.0000001e-5" said 5.0000000999999998e-05. */
+static void shortest_numbers(char *val, size_t len)
+{
+    char in[256], one[40];
+    snprintf(in, sizeof in, "%s", val);
+    size_t o = 0;
+    for (const char *p = in;;) {
+        size_t n = strcspn(p, ",");
+        char *end;
+        double v = strtod(p, &end);
+        if (end == p + n && n > 0 && !strchr(" \t", *p)) {
+            adh_format_shortest(v, one, sizeof one);
+            o += (size_t)snprintf(val + o, o < len ? len - o : 0, "%s", one);
+        } else {
+            o += (size_t)snprintf(val + o, o < len ? len - o : 0, "%.*s", (int)n, p);
+        }
+        if (!p[n])
+            break;
+        o += (size_t)snprintf(val + o, o < len ? len - o : 0, ",");
+        p += n + 1;
+    }
+}
+
 /* A key as the screen names it, and its value: a field's name and the text
  * the panel shows ("R", "20 µm"), else the key and its value (a quantity
- * with its unit). Returns the name. */
+ * with its unit, a number in its shortest exact digits). Returns the name. */
 static const char *key_value(const tui *t, const char *key, char *val, size_t len)
 {
     int p = tui_sim_field(key);
@@ -542,6 +567,8 @@ static const char *key_value(const tui *t, const char *key, char *val, size_t le
     adh_config_get(config(t), key, val, len);
     if (k && k->q != ADH_Q_NONE && adh_parse_quantity(val, ADH_Q_NONE, &v, NULL, 0) == 0)
         fmtq(v, k->q, val, len);
+    else
+        shortest_numbers(val, len);
     return key;
 }
 

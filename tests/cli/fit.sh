@@ -267,6 +267,13 @@ check "--material=sls with adhere fit: exit 2, the flag named ($(cat "$TMP/e20")
 awk 'NR <= 40' "$DATA" >"$TMP/nojump.tsv"
 "$ADHERE" fit --data="$TMP/nojump.tsv" fig1 >/dev/null 2>"$TMP/e5"
 check "a curve cut before its jump is refused with file:lines ($(cat "$TMP/e5"))" grep -q "nojump.tsv:[0-9]*-[0-9]*: no jump in this" "$TMP/e5"
+# a force column of zeros: the jump check divided by a median step of 0
+# and said "0 nN is inf times the median step"
+awk -F'\t' 'NR <= 2 {print; next} {printf "%s\t0\t%s\n", $1, $3}' "$DATA" >"$TMP/zero.tsv"
+"$ADHERE" fit --data="$TMP/zero.tsv" -o "$TMP/zeroout" fig1 >/dev/null 2>"$TMP/e22"
+rc=$?
+check "a curve whose force is 0 everywhere: exit 2, no force steps said, no inf, nothing written ($(cat "$TMP/e22"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'zero.tsv:3-102: no jump in this approach segment: its force is 0 nN at every point: the curve has no force steps; a fit needs a jump into contact, a force step down at least 8 times the median step' '$TMP/e22' && ! grep -q inf '$TMP/e22' && [ ! -e '$TMP/zeroout' ]"
 printf 'h0 (nm)\tF (nN)\n8\t0.1\n7\t-1\n6\t-2\n' >"$TMP/three.tsv"
 "$ADHERE" fit --data="$TMP/three.tsv" -o "$TMP/threeout" fig1 >/dev/null 2>"$TMP/e6"
 rc=$?

@@ -118,6 +118,13 @@ check "the first screen shows sigma 7.503 (Figure 4) and gamma" \
     sh -c "grep -q 'σ 7.503' '$W/start/start.screen' && grep -q 'γ 7.958 mJ/m²' '$W/start/start.screen'"
 check ":set E 1GPa changes sigma" [ "$(sigma "$W/set-e/set-e.screen")" != "$(sigma "$W/start/start.screen")" ]
 check ":set E 1GPa leaves gamma (it has no E in it)" [ "$(gamma "$W/set-e/set-e.screen")" = "$(gamma "$W/start/start.screen")" ]
+# a number said back is compared digit for digit here, not within its last
+# digit: %.17g's 5.0000000999999998e-05 is within that of 5.0000001e-05
+SE=$W/set-echo
+check ":set says a value back in its shortest exact digits, not %.17g's" \
+    sh -c "grep -q '^solver.time_tol = 5.0000001e-05: ' '$SE/set-echo-tol.txt' && ! grep -q '0000000999' '$SE/set-echo-tol.txt'"
+check ":set takes NAME=VALUE and NAME = VALUE, as a scene writes it" \
+    sh -c "grep -q '^solver.time_tol = 0.001: ' '$SE/set-echo-eq.txt' && grep -q '^solver.time_tol = 2.5e-05: ' '$SE/set-echo.screen' && grep -q '^ >E0 *2 GPa' '$SE/set-echo.screen'"
 P=$W/panel-edit
 check "editing R in the panel changes sigma" [ "$(sigma "$P/panel-R.txt")" != "$(sigma "$P/panel-0.txt")" ]
 check "editing z0 in the panel changes sigma" [ "$(sigma "$P/panel-z0.txt")" != "$(sigma "$P/panel-R.txt")" ]

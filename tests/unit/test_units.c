@@ -110,6 +110,18 @@ int main(void)
     adh_format_quantity(-5e-9, ADH_Q_LENGTH, 3, buf, sizeof buf);
     ok(strcmp(buf, "-5 nm") == 0, "-5e-9 m formats as '-5 nm' (got '%s')", buf);
 
+    /* a number said back in the fewest digits that read back exactly:
+     * %.17g wrote 5.0000001e-5 as 5.0000000999999998e-05 */
+    static const struct { double v; const char *want; } sh[] = {
+        { 5.0000001e-5, "5.0000001e-05" }, { 0.1, "0.1" }, { 1e-3, "0.001" }, { 2.5e-5, "2.5e-05" },
+        { -3, "-3" }, { 0, "0" }, { 0.1 + 0.2, "0.30000000000000004" },
+    };
+    for (size_t i = 0; i < sizeof sh / sizeof sh[0]; i++) {
+        adh_format_shortest(sh[i].v, buf, sizeof buf);
+        ok(strcmp(buf, sh[i].want) == 0 && strtod(buf, NULL) == sh[i].v, "%.17g is said back '%s' (got '%s')",
+           sh[i].v, sh[i].want, buf);
+    }
+
     /* every message writes a value through one formatter (issue 28, item 2):
      * an engineering prefix, zero in the prefix its quantity is read in,
      * values past the prefixes in SI with an exponent */
