@@ -13,8 +13,9 @@ T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 G="-N 150 --spacing=2nm -R 1um"
 # tests/cli/fittime.sh's reading of force.tsv (the rows' base and F, at every
-# dx nm of the base, sd nN of seeded noise)
+# dx nm of the base, sd nN of seeded noise from tests/cli/drand48.awk)
 awk '/^cat >"\$TMP\/sample.awk"/ {f = 1; next} /^EOF$/ {f = 0} f' "$(dirname "$0")/../cli/fittime.sh" >"$T/sample.awk"
+DRAND48="$(dirname "$0")/../cli/drand48.awk"
 now() { date +%s.%N; }
 echo "adhere fit --model=time: one curve at 1 nm/s, 0.66 nN noise (z = (value - truth) / standard error)"
 for tau in ${BENCH_FITTIME_TAUS:-0.01 0.1 1 4 10 100}; do
@@ -22,7 +23,7 @@ for tau in ${BENCH_FITTIME_TAUS:-0.01 0.1 1 4 10 100}; do
     "$ADHERE" --batch -q --no-plot --material=sls --E0=1GPa --Einf=3GPa --tau=${tau}s --speed=1nm/s $G --turn=-1nm \
         --allow-unconverged -o "$T/gen$tau" 2>/dev/null
     t1=$(now)
-    awk -v seed=7 -v sd=0.66 -v dx=0.05 -f "$T/sample.awk" "$T/gen$tau/force.tsv" >"$T/c$tau.tsv"
+    awk -v seed=7 -v sd=0.66 -v dx=0.05 -f "$DRAND48" -f "$T/sample.awk" "$T/gen$tau/force.tsv" >"$T/c$tau.tsv"
     start=$(awk -v t="$tau" 'BEGIN {print 0.7 * t}')
     "$ADHERE" fit -q --model=time --data="$T/c$tau.tsv" --material=sls --E0=1.3GPa --Einf=2.5GPa --tau=${start}s \
         -A 0.8e-19J --speed=1nm/s $G --no-plot -o "$T/f$tau" >"$T/f$tau.out" 2>/dev/null
@@ -45,7 +46,7 @@ echo "the standard errors at tau = 1 s over seeds 1001..: rms and largest |z|"
 seed=1001
 last=$((1000 + ${BENCH_FITTIME_SEEDS:-12}))
 while [ $seed -le $last ]; do
-    awk -v seed=$seed -v sd=0.66 -v dx=0.05 -f "$T/sample.awk" "$T/gen/force.tsv" >"$T/s.tsv"
+    awk -v seed=$seed -v sd=0.66 -v dx=0.05 -f "$DRAND48" -f "$T/sample.awk" "$T/gen/force.tsv" >"$T/s.tsv"
     "$ADHERE" fit -q --model=time --data="$T/s.tsv" --material=sls --E0=1.3GPa --Einf=2.5GPa --tau=0.7s -A 0.8e-19J \
         --speed=1nm/s $G --no-plot -o "$T/s$seed" >/dev/null 2>&1
     awk -F'\t' 'BEGIN {t["E0"] = 1e9; t["A"] = 1e-19; t["Einf"] = 3e9; t["tau"] = 1}

@@ -19,20 +19,11 @@ check "the physical-time run that makes the curve ($rc: $(head -c 300 "$TMP/gen.
 # integrator's rows, at every DX nm of the base from the start down to the
 # turn and back (from FROM nm, when given, not the start); SD nN of noise
 # (Box-Muller on drand48's generator, seeded as srand48(SEED) seeds it:
-# X' = (a X + 11) mod 2^48, a = 1502 2^24 + 15525485, its products split
-# at 2^24 so that every one is an exact integer in a double)
+# lib.sh's $DRAND48)
 cat >"$TMP/sample.awk" <<'EOF'
-BEGIN {FS = "\t"; X = seed * 65536 + 13070; print "position (nm)\tF (nN)"}
+BEGIN {FS = "\t"; srand48(seed); print "position (nm)\tF (nN)"}
 /^#/ || $1 == "t" {next}
 {p = $11 + 0; n[p]++; b[p, n[p]] = $2 * 1e9; f[p, n[p]] = $4 * 1e9}
-function mod(x, m) {return x - m * int(x / m)}
-function urand(  lo) {
-    lo = mod(X, 16777216)
-    X = mod(15525485 * lo + 16777216 * mod(1502 * lo + 15525485 * (X - lo) / 16777216, 16777216) + 11,
-            281474976710656)
-    return X / 281474976710656
-}
-function gauss(  u, v) {u = urand(); v = urand(); return sqrt(-2 * log(1 - u)) * cos(6.283185307 * v)}
 function emit(p, x,   i, a, c) {
     for (i = 1; i < n[p]; i++) {
         a = b[p, i]; c = b[p, i + 1]
@@ -50,7 +41,7 @@ END {
     for (k = 1; lo + k * dx <= end + 1e-9; k++) emit(1, lo + k * dx)
 }
 EOF
-awk -v seed=7 -v sd=0.66 -v dx=0.05 -f "$TMP/sample.awk" "$TMP/gen/force.tsv" >"$TMP/curve.tsv"
+awk -v seed=7 -v sd=0.66 -v dx=0.05 -f "$DRAND48" -f "$TMP/sample.awk" "$TMP/gen/force.tsv" >"$TMP/curve.tsv"
 n=$(($(wc -l <"$TMP/curve.tsv") - 1))
 check "the curve: $n points, down to the turn at -1 nm and back" \
     sh -c "[ $n -gt 250 ] && grep -q '^-1.000000	' '$TMP/curve.tsv'"
@@ -82,7 +73,7 @@ done
 rc=$?
 # (the model starts above the curve's first point: its rows from there)
 top=$(sed -n 2p "$TMP/curve.tsv" | cut -f1)
-awk -v seed=1 -v sd=0 -v dx=0.05 -v from="$top" -f "$TMP/sample.awk" "$TMP/rerun/force.tsv" | tail -n +2 >"$TMP/rerun.tsv"
+awk -v seed=1 -v sd=0 -v dx=0.05 -v from="$top" -f "$DRAND48" -f "$TMP/sample.awk" "$TMP/rerun/force.tsv" | tail -n +2 >"$TMP/rerun.tsv"
 awk -F'\t' '!/^#/ && $1 != "file" {printf "%.6f\t%.6f\n", $3 * 1e9, $7 * 1e9}' "$TMP/fit/fit-points.tsv" >"$TMP/model.tsv"
 dmax=$(paste "$TMP/rerun.tsv" "$TMP/model.tsv" | awk -F'\t' '$1 != $3 {bad = 1} {d = $2 - $4; d = d < 0 ? -d : d; m = d > m ? d : m}
     END {print bad ? "positions differ" : m}')

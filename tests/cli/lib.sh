@@ -1,5 +1,8 @@
 # Shared by the shell tests: TAP helpers and the program under test.
 ADHERE=${ADHERE_BIN:-$PWD/adhere}
+# the tests' seeded noise: an awk file of functions (srand48, urand,
+# gauss), the same numbers under any awk; absolute, as tests cd
+DRAND48=$(cd "$(dirname "$0")" && pwd)/drand48.awk
 T=0
 FAILED=0
 ok() { T=$((T + 1)); echo "ok $T - $*"; }
