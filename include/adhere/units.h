@@ -38,8 +38,8 @@ const char *adh_quantity_unit(adh_quantity q);
 void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, size_t len);
 /* value in the fewest significant digits that read back to the same double
  * (5.0000001e-05, not %.17g's 5.0000000999999998e-05): a number echoed to
- * the user as it was typed, and still exact. */
-void adh_format_shortest(double value, char *buf, size_t len);
+ * the user as it was typed, and still exact. Returns buf. */
+const char *adh_format_shortest(double value, char *buf, size_t len);
 
 /* A quantity as text for a sentence, four significant digits with its
  * prefix (adh_format_quantity): the one way every message writes a value.

@@ -132,10 +132,6 @@ typedef struct adh_visco_settings {
 /* 1 when tol is looser than ADH_VISCO_TOL_DEFAULT: its numbers are not
  * promised to 0.5 % (to rounding: the default's own text reads back as it). */
 int adh_visco_tol_loose(double tol);
-/* tol in buf as %g shows it, with the digits %g's six would round away
- * where they alone make it loose: 5.0000001e-5 read "the time tolerance
- * 5e-05 is looser than 5e-05". Returns buf. */
-const char *adh_visco_tol_text(double tol, char *buf, size_t len);
 /* auto takes the Rothe steps up to this Einf/E0: measured beyond (100 and
  * 1000 E0) their error estimate took 2.3 and 8.6 times IDAS's steps and
  * their pull-off lay 0.35 and 1.1 % (dissipation 0.55 and 11 %) off the

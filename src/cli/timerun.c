@@ -10,6 +10,7 @@
 #include "adhere/drive.h"
 #include "adhere/rule_time.h"
 #include "adhere/status.h"
+#include "adhere/units.h"
 #include "scene/text.h"
 
 /* A run in time that ran through, marked unconverged where its numbers
@@ -38,7 +39,7 @@ static void time_mark(int sls, const adh_visco_settings *s, const adh_visco_resu
     if (loose) {
         snprintf(run->why, sizeof run->why, "the time tolerance %s is looser than %g, up to which halving it moves "
                  "the pull-off, the jumps and the hysteresis by under 0.5 %%: these numbers are not promised to 0.5 %%",
-                 adh_visco_tol_text(s->tol, tol, sizeof tol), ADH_VISCO_TOL_DEFAULT);
+                 adh_format_shortest(s->tol, tol, sizeof tol), ADH_VISCO_TOL_DEFAULT);
     } else {
         snprintf(run->why, sizeof run->why, "the energy balance is open by %.2g %% of the hysteresis (over %g %%: "
                  "hysteresis - dissipated - jump_loss - stored_change): the integration did not converge, its numbers "

@@ -245,13 +245,14 @@ void adh_format_quantity(double value, adh_quantity q, int digits, char *buf, si
     snprintf(buf, len, "%.*g %s%s", digits, value / pick[i].f, pick[i].sym, unit_sym[q]);
 }
 
-void adh_format_shortest(double value, char *buf, size_t len)
+const char *adh_format_shortest(double value, char *buf, size_t len)
 {
     for (int digits = 1; digits <= 17; digits++) {
         snprintf(buf, len, "%.*g", digits, value);
         if (!isfinite(value) || strtod(buf, NULL) == value)
-            return;
+            break;
     }
+    return buf;
 }
 
 adh_qtext_buf adh_qtext(double value, adh_quantity q)

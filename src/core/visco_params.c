@@ -121,16 +121,6 @@ int adh_visco_tol_loose(double tol)
     return tol > ADH_VISCO_TOL_DEFAULT * (1 + 1e-12);
 }
 
-const char *adh_visco_tol_text(double tol, char *buf, size_t len)
-{
-    for (int digits = 6; digits <= 17; digits++) {
-        snprintf(buf, len, "%.*g", digits, tol);
-        if (adh_visco_tol_loose(strtod(buf, NULL)) == adh_visco_tol_loose(tol))
-            break;
-    }
-    return buf;
-}
-
 int adh_visco_rothe_applies(const adh_sls *v, const adh_visco_drive *d, const adh_visco_settings *s)
 {
     if (s->integrator == ADH_VISCO_IDAS || isfinite(d->spring))

@@ -32,7 +32,7 @@ void adh_plan_time_print(FILE *f, const adh_config *cfg)
                    "spring; time from the base's travel and the dwells)\n");
     if (s.time.sls && adh_visco_tol_loose(v.s.tol))
         fprintf(f, "tolerance: %s, looser than the default %g, up to which halving it moves the numbers by under "
-                   "0.5 %%: the run will be marked unconverged\n", adh_visco_tol_text(v.s.tol, a, sizeof a),
+                   "0.5 %%: the run will be marked unconverged\n", adh_format_shortest(v.s.tol, a, sizeof a),
                 ADH_VISCO_TOL_DEFAULT);
     adh_format_quantity(v.sls.E0, ADH_Q_PRESSURE, 4, a, sizeof a);
     if (s.time.sls) {

@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "adhere/status.h"
+#include "adhere/units.h"
 #include "adhere/visco.h"
 #include "tui/actions.h"
 #include "tui/keysrc.h"
@@ -368,7 +369,7 @@ static int run_done(tui *t)
         char loose[160] = "", tol[32];
         if (config(t)->spec.time.sls && adh_visco_tol_loose(config(t)->spec.time.tol))
             snprintf(loose, sizeof loose, "; unconverged: the time tolerance %s is looser than %g "
-                     "(:set solver.time_tol)", adh_visco_tol_text(config(t)->spec.time.tol, tol, sizeof tol),
+                     "(:set solver.time_tol)", adh_format_shortest(config(t)->spec.time.tol, tol, sizeof tol),
                      ADH_VISCO_TOL_DEFAULT);
         say(t, 0, "cycle complete after %s (%zu %s, %zu jumps): pull-off %s, hysteresis %s%s", tt,
             t->sim.curve.nrows, config(t)->spec.time.sls ? "steps" : "points", r->jumps, pl, hy, loose);
