@@ -327,9 +327,14 @@ static int one_cycle(const adh_fitdata *fd, char *why, size_t whylen)
         if (i && fd->seg[i] == fd->seg[i - 1])
             continue;
         if (++nseg > 2 || (nseg == 2 && !(prev > 0 && fd->dir[i] < 0))) {
+            /* a first segment that retracts: an approach after it is no
+             * second one ("approach again" said so of data never approached) */
+            int first_out = nseg == 2 && prev < 0 && fd->dir[i] > 0;
             snprintf(why, whylen, "%.1000s:%zu: --model=time runs one cycle from rest, an approach and then its "
-                     "retraction, turned at the deepest point: the data %s here (segment %d); give one cycle",
-                     fd->file[i]->path, fd->line[i], fd->dir[i] > 0 ? "approach again" : "retract again", nseg);
+                     "retraction, turned at the deepest point: the data %s here (segment %d); give one cycle%s",
+                     fd->file[i]->path, fd->line[i],
+                     first_out ? "approach after a retraction" : fd->dir[i] > 0 ? "approach again" : "retract again",
+                     nseg, first_out ? ", its approach first" : "");
             return -1;
         }
         prev = fd->dir[i];

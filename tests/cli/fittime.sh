@@ -120,6 +120,14 @@ awk -F'\t' 'NR == 1 {print; next} {printf "%s\t%.6f\n", $1, $2 + 0.001}' "$TMP/c
 refused "a second cycle with the physical-time model (compared with the first's branches in silence)" \
     "again.tsv:2: --model=time runs one cycle from rest.*approach again here (segment 3); give one cycle" \
     --model=time --data="$TMP/again.tsv" $SLS $G
+# a retraction first, then the approach (the curve's halves swapped): the
+# data never approached before, and were told they "approach again"
+awk -F'\t' 'NR == 1 {print; next} {x[NR] = $0; v[NR] = $1 + 0} END {d = 2; for (i = 3; i <= NR; i++) if (v[i] < v[d]) d = i
+    for (i = d; i <= NR; i++) print x[i]; for (i = 2; i < d; i++) print x[i]}' "$TMP/curve.tsv" >"$TMP/swapped.tsv"
+"$ADHERE" fit -q --model=time --data="$TMP/swapped.tsv" $SLS $G -o "$TMP/swapout" >/dev/null 2>"$TMP/swap.err"
+rc=$?
+check "a retraction before the approach with the physical-time model is said as such, not 'approach again' ($(cat "$TMP/swap.err"))" \
+    sh -c "[ $rc -eq 2 ] && grep -q 'swapped.tsv:[0-9]*: --model=time runs one cycle from rest.*the data approach after a retraction here (segment 2); give one cycle, its approach first' '$TMP/swap.err' && [ ! -e '$TMP/swapout' ]"
 refused "an empty --model names the time model among the models" "--model: '' is not a model: use static, relax or time" \
     --model= $SLS $G
 refused "an empty --free names the solid's parameters among them" "--free: '' names no parameter: .*E0, Einf and tau with --model=time" \
