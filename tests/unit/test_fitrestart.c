@@ -136,8 +136,10 @@ int main(void)
        res.iterations);
     ok(res.status == ADH_SUCCESS, "the fit is converged (status %d: %s)", res.status, adh_strerror(res.status));
     ok(res.gsl_info >= 1 && res.gsl_info <= 4, "its gsl_info is a converged search's (%d)", res.gsl_info);
-    ok(res.chi2 == first.chi2, "and its best point the one the fit without the cap found (chi2 %.6g, %.6g N^2)",
-       res.chi2, first.chi2);
+    /* the same point to well within the model's noise (1e-9 of chi2), not
+     * bit for bit: the cap is not to move the best point, rounding may */
+    ok(fabs(res.chi2 - first.chi2) <= 1e-9 * first.chi2,
+       "and its best point the one the fit without the cap found (chi2 %.6g, %.6g N^2)", res.chi2, first.chi2);
     adh_kernel_free(k);
     adh_grid_free(g);
     return tap_done();
