@@ -77,7 +77,7 @@ typedef struct adh_fit_model adh_fit_model;
 #define ADH_FIT_MODEL_POINTS_FACTOR 8
 
 /* The physical-time model's integrator tolerance, at most (a run's is
- * 5e-5): the fit's 1 % forward differences must stand above the model's
+ * 5e-5): the fit's forward differences must stand above the model's
  * own noise. Measured at tau 10 s on a curve of 4.7 s in contact
  * (docs/fitting.md): at 5e-5 the differences of E0 and tau over a step
  * 10 times shorter were as large as over 1 % (noise, 0.06 nN against
