@@ -10,7 +10,8 @@
  * baseline / |F_JKR| at the start; the physical-time model's solid as
  * log(tau / start) and log of Einf/E0 over its start (Einf >= E0 is the
  * search range's end, ratio 1). The Jacobian is forward differences of
- * the model for E, A, z0, R, Einf and tau (one model evaluation each), and
+ * the model for E, A, z0, R, Einf and tau (one model evaluation each; the
+ * physical-time model's step at most ADH_FIT_MODEL_TIME_FD_STEP), and
  * exact for the offset (the branch's slope) and the baseline (-1). Einf's
  * standard error and correlations are Einf's own (its log is E's and the
  * ratio's together), not the ratio's.

@@ -77,13 +77,21 @@ typedef struct adh_fit_model adh_fit_model;
 #define ADH_FIT_MODEL_POINTS_FACTOR 8
 
 /* The physical-time model's integrator tolerance, at most (a run's is
- * 5e-5): the fit's 1 % forward differences must stand above the model's
+ * 5e-5): the fit's forward differences must stand above the model's
  * own noise. Measured at tau 10 s on a curve of 4.7 s in contact
  * (docs/fitting.md): at 5e-5 the differences of E0 and tau over a step
  * 10 times shorter were as large as over 1 % (noise, 0.06 nN against
  * 0.08), at 1e-5 a tenth of them (0.008 and 0.005 nN), for 1.2 times
  * the CPU time an evaluation. */
 #define ADH_FIT_MODEL_TIME_TOL 1e-5
+
+/* The physical-time model's forward-difference step in log(p), at most
+ * (adh_fit_settings.fd_step's 1e-2 otherwise): its rows land on the data's
+ * positions, so chi2 is smooth below 1 %, and over 12 seeded curves at
+ * tau = 1 s (docs/fitting.md) 1 % differences left the standard errors too
+ * small by about 2 (rms z 1.9-2.2), 0.1 % by 1.2-1.5; 0.01 % met the
+ * model's own noise (1.3-1.6). */
+#define ADH_FIT_MODEL_TIME_FD_STEP 1e-3
 
 /* g and k are borrowed. NULL when out of memory. */
 adh_fit_model *adh_fit_model_alloc(const adh_grid *g, const adh_kernel *k, const adh_fit_model_settings *s);

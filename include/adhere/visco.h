@@ -116,6 +116,9 @@ typedef struct adh_visco_settings {
                             equilibria got lost (ADH_ESTALL beyond) */
     const volatile sig_atomic_t *cancel; /* polled every step: nonzero stops
                             with ADH_EINTR; NULL = never */
+    const double *land;  /* base positions, m, where the steps land a row
+                            (as on a profile's, none stored); NULL none */
+    size_t nland;
 } adh_visco_settings;
 
 #define ADH_ROTHE_TOL_FACTOR 5.0

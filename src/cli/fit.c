@@ -118,7 +118,7 @@ static int fit_ignored(const cli_options *cli, adh_fit_model_kind kind, char *wh
         else if (strcmp(f->key, "solver.time_tol") == 0 && kind == ADH_FIT_MODEL_TIME &&
                  cli->cfg.spec.time.tol > ADH_FIT_MODEL_TIME_TOL)   /* eval_time's fmin: a looser one was dropped */
             snprintf(why, whylen, "adhere fit --model=time integrates its model to a tolerance of %g or tighter "
-                     "(its 1 %% differences must stand above the model's own noise): --time-tol=%.40s would be "
+                     "(its 0.1 %% differences must stand above the model's own noise): --time-tol=%.40s would be "
                      "ignored; leave it out, or give one of %g or less", ADH_FIT_MODEL_TIME_TOL, f->value,
                      ADH_FIT_MODEL_TIME_TOL);
         else if (strcmp(f->key, "solver.eps") == 0 && !relax)
@@ -164,7 +164,7 @@ static void scene_ignored(const adh_config *cfg, adh_fit_model_kind kind, char *
         return;
     char sentence[800], tail[160] = "";
     if (tol)
-        snprintf(tail, sizeof tail, "; the model integrates to a tolerance of %g or tighter, for its 1 %% differences "
+        snprintf(tail, sizeof tail, "; the model integrates to a tolerance of %g or tighter, for its 0.1 %% differences "
                  "to stand above its own noise", ADH_FIT_MODEL_TIME_TOL);
     snprintf(sentence, sizeof sentence, "the fit ignores the scene's %s: its model's curve runs from where the force "
              "is negligible, above the highest position in --data, to a turn %s%s%s%s (the "

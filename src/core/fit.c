@@ -233,7 +233,8 @@ static int gsl_df(const gsl_vector *x, void *params, gsl_matrix *J)
         }
         if (!is_log(k))
             continue;
-        double h = f->s.fd_step;
+        double h = f->s.model.kind == ADH_FIT_MODEL_TIME ? fmin(f->s.fd_step, ADH_FIT_MODEL_TIME_FD_STEP)
+                                                         : f->s.fd_step;
         memcpy(theta, x->data, f->p * sizeof *theta);
         theta[j] += h;
         if (residuals(f, theta, rh, NULL, 1) != 0 && !f->stop) {

@@ -342,9 +342,20 @@ static int eval_time(adh_fit_model *fm, const adh_material *m, const adh_sls *sl
         fm->time_start = fmax(adh_protocol_auto_start(m, ps.step), ps.step * ceil((hi + fm->s.margin) / ps.step));
     ps.nturns = 1;
     adh_fit_model_drive(fm, m, offset, baseline, d, &ps.start, &ps.turns[0]);
+    /* the steps land a row on every point's position: the force there is
+     * the integrator's own, not a line between its rows (whose kinks move
+     * with the parameters and roughen chi2 on the scale of a step) */
+    double *land = malloc(d->n * sizeof *land);
+    if (!land)
+        return ADH_ENOMEM;
+    for (size_t i = 0; i < d->n; i++)
+        land[i] = d->x[i] - offset;
+    vs.s.land = land;
+    vs.s.nland = d->n;
     adh_run run;
     adh_run_init(&run);
     int rc = adh_runner_rule(&adh_rule_visco, fm->g, fm->k, m, &vs, &ps, NULL, NULL, &run);
+    free(land);
     if (rc == ADH_SUCCESS && run.interrupted)
         rc = ADH_EINTR;
     if (rc != ADH_SUCCESS && rc != ADH_EINTR && !run.interrupted) {

@@ -88,6 +88,8 @@ void adh_visco_free(adh_visco *w)
     free(w->egap);
     free(w->shape);
     free(w->ev);
+    free(w->prof);
+    free(w->keep);
     free(w);
 }
 
@@ -444,17 +446,75 @@ static int check_all(const adh_material *m, const adh_sls *v, const adh_visco_dr
     return ADH_SUCCESS;
 }
 
-static void set_protocol(adh_visco *w)
+/* A landing point this close (in z0) to a mark before it, or to a turn,
+ * is dropped: a row lands there already, and a step of next to nothing
+ * between the two would be all it added. */
+#define LAND_MERGE 1e-3
+
+typedef struct { double b; unsigned char keep; } visco_mark;
+
+static int cmp_mark_desc(const void *a, const void *b)
+{
+    double x = ((const visco_mark *)a)->b, y = ((const visco_mark *)b)->b;
+    return x > y ? -1 : x < y;
+}
+
+static int near_turn(const adh_visco *w, double b)
+{
+    for (size_t k = 0; k < w->nturns; k++)
+        if (fabs(b - w->turns[k]) < LAND_MERGE * w->m.z0)
+            return 1;
+    return 0;
+}
+
+/* The profiles (kept) and the landing points (a row only), highest first. */
+static int set_marks(adh_visco *w, const adh_visco_settings *s)
+{
+    size_t n = w->ps.nprofiles + (s->land ? s->nland : 0);
+    visco_mark *mk = malloc((n ? n : 1) * sizeof *mk);
+    if (!mk)
+        return ADH_ENOMEM;
+    for (size_t i = 0; i < n; i++) {
+        int kept = i < w->ps.nprofiles;
+        mk[i].b = kept ? w->ps.profiles[i] : s->land[i - w->ps.nprofiles];
+        mk[i].keep = (unsigned char)kept;
+    }
+    qsort(mk, n, sizeof *mk, cmp_mark_desc);
+    if (n > w->profcap) {
+        double *p = realloc(w->prof, n * sizeof *p);
+        if (p)
+            w->prof = p;
+        unsigned char *k = p ? realloc(w->keep, n) : NULL;
+        if (k)
+            w->keep = k;
+        if (!p || !k) {
+            free(mk);
+            return ADH_ENOMEM;
+        }
+        w->profcap = n;
+    }
+    w->nprof = 0;
+    for (size_t i = 0; i < n; i++) {
+        int close = w->nprof > 0 && w->prof[w->nprof - 1] - mk[i].b < LAND_MERGE * w->m.z0;
+        if (!mk[i].keep && (close || near_turn(w, mk[i].b) || !isfinite(mk[i].b)))
+            continue;
+        w->prof[w->nprof] = mk[i].b;
+        w->keep[w->nprof++] = mk[i].keep;
+    }
+    free(mk);
+    return ADH_SUCCESS;
+}
+
+static int set_protocol(adh_visco *w, const adh_visco_settings *s)
 {
     w->nturns = w->ps.nturns;
     memcpy(w->turns, w->ps.turns, w->nturns * sizeof *w->turns);
     qsort(w->turns, w->nturns, sizeof *w->turns, cmp_desc);
-    w->nprof = w->ps.nprofiles;
-    memcpy(w->prof, w->ps.profiles, w->nprof * sizeof *w->prof);
-    qsort(w->prof, w->nprof, sizeof *w->prof, cmp_desc);
+    int rc = set_marks(w, s);
     w->ti = w->ui = w->pi = 0;
     while (w->pi < w->nprof && w->prof[w->pi] > w->b_start)
         w->pi++;
+    return rc;
 }
 
 /* The next profile position on the current branch (NAN: none left). */
@@ -463,6 +523,13 @@ static double next_profile(const adh_visco *w)
     if (w->seg.branch > 0)
         return w->pi < w->nprof ? w->prof[w->pi] : NAN;
     return w->pi > 0 ? w->prof[w->pi - 1] : NAN;
+}
+
+/* The mark the base has reached is a profile's (else a landing point's). */
+static int profile_here(const adh_visco *w)
+{
+    size_t i = w->seg.branch > 0 ? w->pi : w->pi - 1;
+    return i < w->nprof && w->keep[i];
 }
 
 static void seg_set(adh_visco *w, int kind, double t0, double b0)
@@ -571,7 +638,8 @@ int adh_visco_set(adh_visco *w, const adh_material *m, const adh_sls *v, const a
     }
     w->h0_start = h0;
     w->res.start_base = w->b_start, w->res.start_h0 = h0;
-    set_protocol(w);
+    if ((rc = set_protocol(w, s)) != ADH_SUCCESS)
+        return rc;
     seg_set(w, SEG_LOAD, 0.0, w->b_start);
     w->seg.path = 0;
     run->start = h0;
@@ -1080,7 +1148,7 @@ static int on_roots(adh_visco *w, const int *rf, double t0)
     if (rf[ROOT_PULLOFF] && pulloff_event(w) != ADH_SUCCESS)
         return stop(w, ADH_ENOMEM);
     if (rf[ROOT_PROFILE]) {
-        if (adh_run_push_profile(w->run, w->st, w->seg.branch, w->seg.path) != ADH_SUCCESS)
+        if (profile_here(w) && adh_run_push_profile(w->run, w->st, w->seg.branch, w->seg.path) != ADH_SUCCESS)
             return stop(w, ADH_ENOMEM);
         w->pi += w->seg.branch > 0 ? 1 : -1;
         w->seg.prof = next_profile(w);
@@ -1316,7 +1384,7 @@ static int rothe_iterate(adh_visco *w, double t0)
     if (rothe_pulloff(w) != ADH_SUCCESS)
         return stop(w, ADH_ENOMEM);
     if (hit && !(tl_prof > y[w->IT] * (1 + 1e-12))) {
-        if (adh_run_push_profile(w->run, w->st, w->seg.branch, w->seg.path) != ADH_SUCCESS)
+        if (profile_here(w) && adh_run_push_profile(w->run, w->st, w->seg.branch, w->seg.path) != ADH_SUCCESS)
             return stop(w, ADH_ENOMEM);
         w->pi += w->seg.branch > 0 ? 1 : -1;
         w->seg.prof = next_profile(w);

@@ -154,8 +154,10 @@ struct adh_visco {
     visco_snap snap[ADH_MAX_TURNS];
     size_t ti;           /* loading: the next turn to reach */
     size_t ui;           /* unloading: which turn */
-    double prof[ADH_MAX_PROFILES];  /* base positions, highest first */
-    size_t nprof, pi;    /* profiles; the next one's index on this branch */
+    double *prof;        /* base positions, highest first: the profiles' and
+                            the settings' landing points (s.land) */
+    unsigned char *keep; /* prof[i] stores a profile (else a row lands there) */
+    size_t nprof, pi, profcap; /* marks; the next one's index on this branch */
 
     adh_visco_energy acc;   /* the current path's accounts */
     double qbase[NQUAD];    /* quadratures before this initialisation */
