@@ -84,6 +84,10 @@ typedef struct adh_fit_model adh_fit_model;
  * 0.08), at 1e-5 a tenth of them (0.008 and 0.005 nN), for 1.2 times
  * the CPU time an evaluation. */
 #define ADH_FIT_MODEL_TIME_TOL 1e-5
+/* The tolerance the physical-time model integrates to when the setting
+ * is tol: tol, or ADH_FIT_MODEL_TIME_TOL where tol is looser (the one rule
+ * for the model, its best.scene and the refusal of a setting it drops). */
+double adh_fit_model_time_tol(double tol);
 
 /* The physical-time model's forward-difference step in log(p), at most
  * (adh_fit_settings.fd_step's 1e-2 otherwise): its rows land on the data's

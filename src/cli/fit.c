@@ -116,7 +116,7 @@ static int fit_ignored(const cli_options *cli, adh_fit_model_kind kind, char *wh
                      "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out",
                      f->value);
         else if (strcmp(f->key, "solver.time_tol") == 0 && kind == ADH_FIT_MODEL_TIME &&
-                 cli->cfg.spec.time.tol > ADH_FIT_MODEL_TIME_TOL)   /* eval_time's fmin: a looser one was dropped */
+                 adh_fit_model_time_tol(cli->cfg.spec.time.tol) != cli->cfg.spec.time.tol)   /* dropped */
             snprintf(why, whylen, "adhere fit --model=time integrates its model to a tolerance of %g or tighter "
                      "(its 0.1 %% differences must stand above the model's own noise): --time-tol=%.40s would be "
                      "ignored; leave it out, or give one of %g or less", ADH_FIT_MODEL_TIME_TOL, f->value,
@@ -145,8 +145,8 @@ static void scene_ignored(const adh_config *cfg, adh_fit_model_kind kind, char *
         { "protocol.dwell", cfg->spec.proto.dwell != 0 },
         { "protocol.unload", !cfg->spec.proto.unload },   /* fig1's 'unload = no': the fit unloads */
         { "solver.eps", !relax },
-        /* eval_time's fmin: a looser one is the model's ADH_FIT_MODEL_TIME_TOL */
-        { "solver.time_tol", kind == ADH_FIT_MODEL_TIME && cfg->spec.time.tol > ADH_FIT_MODEL_TIME_TOL },
+        /* a looser one is dropped for the model's own (adh_fit_model_time_tol) */
+        { "solver.time_tol", kind == ADH_FIT_MODEL_TIME && adh_fit_model_time_tol(cfg->spec.time.tol) != cfg->spec.time.tol },
     };
     char list[200] = "";
     size_t n = 0, nkeys = sizeof keys / sizeof keys[0];

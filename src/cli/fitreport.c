@@ -331,7 +331,7 @@ static int write_scene(FILE *f, const void *ctx)
         write_scene_drive(f, r);
         /* the tolerance the model was fitted at (eval_time's), which a
          * rerun at the default 5e-5 left for another model */
-        fprintf(f, "\n[solver]\ntime_tol = %.10g\n", fmin(r->fs->model.visco.s.tol, ADH_FIT_MODEL_TIME_TOL));
+        fprintf(f, "\n[solver]\ntime_tol = %.10g\n", adh_fit_model_time_tol(r->fs->model.visco.s.tol));
     }
     return 0;
 }

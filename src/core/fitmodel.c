@@ -332,7 +332,7 @@ static int eval_time(adh_fit_model *fm, const adh_material *m, const adh_sls *sl
     adh_visco_rule_settings vs = fm->s.visco;
     vs.sls = *sls;
     vs.sls.E0 = m->E;
-    vs.s.tol = fmin(vs.s.tol, ADH_FIT_MODEL_TIME_TOL);
+    vs.s.tol = adh_fit_model_time_tol(vs.s.tol);
     adh_protocol_settings ps = adh_protocol_settings_default();
     ps.step = fm->s.step;
     /* the start is fixed at the first evaluation (adh_fit_model_drive) */
@@ -450,4 +450,9 @@ size_t adh_fit_model_curve(const adh_fit_model *fm, const double **h0, const dou
     *F = fm->F;
     *stable = fm->stable;
     return fm->n;
+}
+
+double adh_fit_model_time_tol(double tol)
+{
+    return fmin(tol, ADH_FIT_MODEL_TIME_TOL);
 }
