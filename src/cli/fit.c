@@ -118,9 +118,9 @@ static int fit_ignored(const cli_options *cli, adh_fit_model_kind kind, char *wh
         else if (strcmp(f->key, "solver.time_tol") == 0 && kind == ADH_FIT_MODEL_TIME &&
                  adh_fit_model_time_tol(cli->cfg.spec.time.tol) != cli->cfg.spec.time.tol)   /* dropped */
             snprintf(why, whylen, "adhere fit --model=time integrates its model to a tolerance of %g or tighter "
-                     "(its 0.1 %% differences must stand above the model's own noise): --time-tol=%.40s would be "
-                     "ignored; leave it out, or give one of %g or less", ADH_FIT_MODEL_TIME_TOL, f->value,
-                     ADH_FIT_MODEL_TIME_TOL);
+                     "(its %g %% differences must stand above the model's own noise): --time-tol=%.40s would be "
+                     "ignored; leave it out, or give one of %g or less", ADH_FIT_MODEL_TIME_TOL,
+                     100 * ADH_FIT_MODEL_TIME_FD_STEP, f->value, ADH_FIT_MODEL_TIME_TOL);
         else if (strcmp(f->key, "solver.eps") == 0 && !relax)
             snprintf(why, whylen, "adhere fit's static model solves each point of the static curve to its own "
                      "tolerance, with no relaxation for --eps to end: --eps=%.40s would be ignored; leave it out, "
@@ -164,8 +164,8 @@ static void scene_ignored(const adh_config *cfg, adh_fit_model_kind kind, char *
         return;
     char sentence[800], tail[160] = "";
     if (tol)
-        snprintf(tail, sizeof tail, "; the model integrates to a tolerance of %g or tighter, for its 0.1 %% differences "
-                 "to stand above its own noise", ADH_FIT_MODEL_TIME_TOL);
+        snprintf(tail, sizeof tail, "; the model integrates to a tolerance of %g or tighter, for its %g %% differences "
+                 "to stand above its own noise", ADH_FIT_MODEL_TIME_TOL, 100 * ADH_FIT_MODEL_TIME_FD_STEP);
     snprintf(sentence, sizeof sentence, "the fit ignores the scene's %s: its model's curve runs from where the force "
              "is negligible, above the highest position in --data, to a turn %s%s%s%s (the "
              "scene's own runs take them)", list, kind == ADH_FIT_MODEL_TIME ? "at the deepest" : "a step below the deepest",
